@@ -1,0 +1,119 @@
+# vor - build, test and benchmark.
+#
+#   make                    host library build/host/libvor.a and CLI build/host/vor
+#   make PORT=cortex-m3     cross-build the library and test firmware for a target
+#                           (cortex-m0, cortex-m3, cortex-m4f, riscv32)
+#   make test               every test, on the host and under QEMU on every target
+#   make demo               the main job on the emulated Cortex-M3
+#   make size               flash, static RAM and worst stack depth per target
+#   make bench-predicates   predicate speed: host ns and target instructions
+#
+# Toolchains and QEMU are installed on demand by tools/install-toolchain.sh.
+
+PORT ?= host
+TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
+
+# SANITIZE=1 builds the host tests with AddressSanitizer and UBSan.
+ifeq ($(SANITIZE),1)
+B := build/$(PORT)-sanitize
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+else
+B := build/$(PORT)
+SAN_FLAGS :=
+endif
+GEN := build/gen
+
+include port/$(PORT)/port.mk
+
+WARNINGS := -Wall -Wextra -Werror -pedantic -Wconversion -Wsign-conversion \
+            -Wcast-align -Wundef -Wshadow
+OPT := -O2
+LIB_CFLAGS := -std=c99 -ffreestanding $(WARNINGS) $(OPT) -ffunction-sections \
+              -fdata-sections -fstack-usage -Iinclude $(ARCH_CFLAGS) $(SAN_FLAGS)
+# Test builds of the library trap on a failed internal assertion.
+CHECKED_DEFS := '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)'
+TEST_CFLAGS := -std=c99 $(WARNINGS) $(OPT) -ffunction-sections -fdata-sections \
+               -Iinclude -Isrc -Iport -Itests -Itests/vectors $(ARCH_CFLAGS) $(SAN_FLAGS)
+HOST_TOOL_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARNINGS) -O2 -Iinclude -Isrc
+
+LIB_SRCS := $(wildcard src/*.c)
+LIB_HDRS := $(wildcard include/*.h src/*.h)
+LIB_OBJS := $(LIB_SRCS:src/%.c=$(B)/lib/%.o)
+CHECKED_OBJS := $(LIB_SRCS:src/%.c=$(B)/checked/%.o)
+TEST_SRCS := $(wildcard tests/*.c)
+TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.o
+PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
+TEST_EXE := $(B)/tests$(EXE)
+
+.PHONY: all lib tests run-tests test demo size bench-predicates clean
+.DELETE_ON_ERROR:
+
+ifeq ($(PORT),host)
+all: lib $(B)/vor
+else
+all: lib tests
+endif
+
+lib: $(B)/libvor.a
+tests: $(TEST_EXE)
+
+$(B)/libvor.a: $(LIB_OBJS)
+	$(AR) rcs $@ $^
+
+$(B)/libvor-checked.a: $(CHECKED_OBJS)
+	$(AR) rcs $@ $^
+
+$(B)/lib/%.o: src/%.c $(LIB_HDRS) | $(B)/lib
+	$(CC) $(LIB_CFLAGS) -c $< -o $@
+
+$(B)/checked/%.o: src/%.c $(LIB_HDRS) | $(B)/checked
+	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -c $< -o $@
+
+$(B)/tests/%.o: tests/%.c $(LIB_HDRS) $(wildcard tests/*.h tests/vectors/*.h) port/port.h | $(B)/tests
+	$(CC) $(TEST_CFLAGS) -c $< -o $@
+
+# The oracle's table is generated, never edited: rebuilt when the generator changes.
+$(GEN)/predicate_vectors.c: tools/gen_predicate_vectors.py tests/vectors/predicate_vectors.h
+	@mkdir -p $(GEN)
+	python3 tools/gen_predicate_vectors.py --out $@
+
+$(B)/tests/predicate_vectors.o: $(GEN)/predicate_vectors.c | $(B)/tests
+	$(CC) $(TEST_CFLAGS) -c $< -o $@
+
+vpath %.c $(sort $(dir $(PORT_SRCS)))
+vpath %.S $(sort $(dir $(PORT_SRCS)))
+$(B)/port/%.o: %.c port/port.h | $(B)/port
+	$(CC) $(TEST_CFLAGS) -c $< -o $@
+$(B)/port/%.o: %.S | $(B)/port
+	$(CC) $(TEST_CFLAGS) -c $< -o $@
+
+$(TEST_EXE): $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a
+	$(CC) $(TEST_CFLAGS) $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+run-tests: $(TEST_EXE)
+	$(RUN) $(TEST_EXE)
+
+# Host command-line tool.
+CLI_SRCS := $(wildcard tools/cli/*.c)
+$(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) $(B)/libvor.a
+	gcc $(HOST_TOOL_CFLAGS) -Itools/cli $(CLI_SRCS) $(B)/libvor.a -o $@
+
+$(B)/lib $(B)/checked $(B)/tests $(B)/port:
+	@mkdir -p $@
+
+# ---------------------------------------------------------------- top level
+
+test:
+	@tools/install-toolchain.sh
+	@tools/run-tests.sh
+
+size:
+	@tools/install-toolchain.sh
+	@tools/size-report.sh $(TARGETS)
+
+bench-predicates:
+	@tools/install-toolchain.sh
+	@tools/bench-predicates.sh
+
+clean:
+	rm -rf build

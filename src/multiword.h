@@ -1,0 +1,174 @@
+/*
+ * multiword.h - fixed-width multi-word integers for the exact predicates
+ * (and, later, exact rational geometry). Private to the library.
+ *
+ * A number is an array of limbs, least significant first. Signed values are
+ * two's complement over the whole array, so addition, subtraction and the
+ * low half of a product are the same for signed and unsigned operands: the
+ * caller picks a width in which the true result fits (each use states its
+ * bound), and the arithmetic is then exact modulo nothing.
+ *
+ * The limb is 32 bits, or 64 where the compiler has a native 64x64->128
+ * multiply (VOR_LIMB_BITS in vor_config.h). Widths are given in bits and
+ * rounded up to limbs with VOR__LIMBS, so one source serves both.
+ */
+#ifndef VOR_MULTIWORD_H
+#define VOR_MULTIWORD_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "vor_config.h"
+
+#if VOR_LIMB_BITS == 64
+typedef uint64_t vor__limb;
+__extension__ typedef unsigned __int128 vor__dlimb;
+#elif VOR_LIMB_BITS == 32
+typedef uint32_t vor__limb;
+typedef uint64_t vor__dlimb;
+#else
+#error "VOR_LIMB_BITS must be 32 or 64"
+#endif
+
+/* Limbs needed to hold a value of the given number of bits (sign included). */
+#define VOR__LIMBS(bits) (((bits) + VOR_LIMB_BITS - 1) / VOR_LIMB_BITS)
+
+/* Limbs of the widest value any predicate needs: 3x3 determinants whose
+ * entries are up to 66 bits wide (docs/design.md, "perturbation"). */
+#define VOR__WIDE_LIMBS VOR__LIMBS(160)
+
+/* 32x32->64 unsigned multiply. ARMv6-M (Cortex-M0) has only a 32x32->32
+ * multiply, and the compiler would call a generic 64x64 library routine;
+ * four 16x16 products are cheaper there. */
+static inline uint64_t vor__mul_u32(uint32_t a, uint32_t b)
+{
+#if defined(__ARM_ARCH_6M__)
+    uint32_t al = a & 0xFFFFu, ah = a >> 16;
+    uint32_t bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t lo = al * bl;
+    uint32_t hi = ah * bh;
+    uint32_t mid1 = al * bh;
+    uint32_t mid2 = ah * bl;
+    uint32_t mid = mid1 + mid2;
+    /* the two middle products may carry out of 32 bits */
+    hi += (mid < mid1) ? 0x10000u : 0u;
+    hi += mid >> 16;
+    uint32_t mid_lo = mid << 16;
+    lo += mid_lo;
+    hi += (lo < mid_lo) ? 1u : 0u;
+    return ((uint64_t)hi << 32) | lo;
+#else
+    return (uint64_t)a * b;
+#endif
+}
+
+/* 32x32->64 signed multiply, through vor__mul_u32 on ARMv6-M. */
+static inline int64_t vor__mul_i32(int32_t a, int32_t b)
+{
+#if defined(__ARM_ARCH_6M__)
+    uint32_t ma = (a < 0) ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t mb = (b < 0) ? 0u - (uint32_t)b : (uint32_t)b;
+    uint64_t m = vor__mul_u32(ma, mb);
+    return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
+#else
+    return (int64_t)a * b;
+#endif
+}
+
+/* Full product of two limbs. */
+static inline vor__dlimb vor__mul_limb(vor__limb a, vor__limb b)
+{
+#if VOR_LIMB_BITS == 32
+    return vor__mul_u32(a, b);
+#else
+    return (vor__dlimb)a * b;
+#endif
+}
+
+/* r[0..n) = v, zero-extended. */
+static inline void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
+{
+    for (size_t i = 0; i < n; i++) {
+#if VOR_LIMB_BITS == 32
+        r[i] = (vor__limb)v;
+        v = (i == 0) ? v >> 32 : 0u;
+#else
+        r[i] = (i == 0) ? v : 0u;
+#endif
+    }
+}
+
+/* r[0..n) = v, sign-extended. */
+static inline void vor__mw_from_i64(vor__limb *r, size_t n, int64_t v)
+{
+    vor__limb fill = (v < 0) ? (vor__limb)~(vor__limb)0 : 0u;
+    vor__mw_from_u64(r, n, (uint64_t)v);
+    /* 64 bits fill one 64-bit limb or two 32-bit limbs; the rest is sign */
+    for (size_t i = 64 / VOR_LIMB_BITS; i < n; i++) {
+        r[i] = fill;
+    }
+}
+
+/* r += a over n limbs (mod 2^(n*VOR_LIMB_BITS)). */
+static inline void vor__mw_add(vor__limb *r, const vor__limb *a, size_t n)
+{
+    vor__limb carry = 0;
+    for (size_t i = 0; i < n; i++) {
+        vor__limb s = r[i] + carry;
+        carry = (s < carry) ? 1u : 0u;
+        s += a[i];
+        carry += (s < a[i]) ? 1u : 0u;
+        r[i] = s;
+    }
+}
+
+/* r -= a over n limbs (mod 2^(n*VOR_LIMB_BITS)). */
+static inline void vor__mw_sub(vor__limb *r, const vor__limb *a, size_t n)
+{
+    vor__limb borrow = 0;
+    for (size_t i = 0; i < n; i++) {
+        vor__limb d = r[i] - a[i];
+        vor__limb b1 = (r[i] < a[i]) ? 1u : 0u;
+        vor__limb b2 = (d < borrow) ? 1u : 0u;
+        r[i] = d - borrow;
+        borrow = b1 | b2;
+    }
+}
+
+/* r[0..nr) = low nr limbs of a[0..na) * b[0..nb). r must not overlap a or b.
+ * Exact for signed (two's complement) operands when the true product fits
+ * in nr limbs and na, nb >= nr or the operands are non-negative. */
+static inline void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
+                               size_t na, const vor__limb *b, size_t nb)
+{
+    for (size_t i = 0; i < nr; i++) {
+        r[i] = 0;
+    }
+    for (size_t i = 0; i < na && i < nr; i++) {
+        vor__limb carry = 0;
+        for (size_t j = 0; j < nb && i + j < nr; j++) {
+            vor__dlimb t = vor__mul_limb(a[i], b[j]) + r[i + j] + carry;
+            r[i + j] = (vor__limb)t;
+            carry = (vor__limb)(t >> VOR_LIMB_BITS);
+        }
+        if (i + nb < nr) {
+            r[i + nb] = carry;
+        }
+    }
+}
+
+/* Sign of a two's complement number: -1, 0 or 1. */
+static inline int vor__mw_sign(const vor__limb *a, size_t n)
+{
+    if ((a[n - 1] >> (VOR_LIMB_BITS - 1)) != 0u) {
+        return -1;
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (a[i] != 0u) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+#endif

@@ -1,0 +1,459 @@
+/*
+ * predicates.c - the exact geometric predicates and their symbolic
+ * perturbation.
+ *
+ * Integer counterpart of the hybrid arithmetic of seed 001: instead of a
+ * floating-point filter with an error bound, each predicate measures the
+ * magnitude of its coordinate differences and evaluates in the narrowest
+ * integer width that cannot overflow for that magnitude. Every tier is
+ * exact; the tiers differ only in cost. The bounds are derived next to
+ * each tier.
+ *
+ * All coordinate differences of int32 values fit in 33 bits signed, so
+ * their magnitudes fit in uint32_t: |d| <= 2^32 - 1.
+ */
+#include <stdbool.h>
+
+#include "vor.h"
+
+#include "multiword.h"
+
+#define COUNT(stats, counter)                                                  \
+    do {                                                                       \
+        if ((stats) != NULL) {                                                 \
+            (stats)->counter++;                                                \
+        }                                                                      \
+    } while (0)
+
+/* (k + 1) mod 3 without a division (Cortex-M0 has no divide instruction) */
+static const unsigned char next_of[3] = {1, 2, 0};
+
+static inline uint32_t magnitude(int64_t d)
+{
+    return (uint32_t)(d < 0 ? -d : d);
+}
+
+static inline int sign_of(int64_t v)
+{
+    return (v > 0) - (v < 0);
+}
+
+/* Sign of a*b - c*d for |a|, |b|, |c|, |d| <= 2^32 - 1, without any value
+ * wider than 64 bits: compare the products' signs, then their magnitudes. */
+static int compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
+{
+    int sp = sign_of(a) * sign_of(b);
+    int sq = sign_of(c) * sign_of(d);
+    if (sp != sq) {
+        return (sp > sq) ? 1 : -1;
+    }
+    if (sp == 0) {
+        return 0;
+    }
+    uint64_t mp = vor__mul_u32(magnitude(a), magnitude(b));
+    uint64_t mq = vor__mul_u32(magnitude(c), magnitude(d));
+    int by_magnitude = (mp > mq) - (mp < mq);
+    return (sp > 0) ? by_magnitude : -by_magnitude;
+}
+
+/* ------------------------------------------------------------------ */
+/* orient2d                                                            */
+
+static int orient2d_exact(const vor_point_t *a, const vor_point_t *b,
+                          const vor_point_t *c, vor_predicate_stats_t *stats)
+{
+    int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
+    int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
+    uint32_t m = magnitude(acx) | magnitude(acy) | magnitude(bcx) | magnitude(bcy);
+    if (m < 0x80000000u) {
+        /* |products| < 2^62, so their difference fits in int64 */
+        COUNT(stats, orient2d[VOR_TIER_NARROW]);
+        int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
+                      vor__mul_i32((int32_t)acy, (int32_t)bcx);
+        return sign_of(det);
+    }
+    COUNT(stats, orient2d[VOR_TIER_WIDE]);
+    return compare_products(acx, bcy, acy, bcx);
+}
+
+int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
+                 const vor_point_t *c, vor_predicate_stats_t *stats)
+{
+    return orient2d_exact(a, b, c, stats);
+}
+
+/* ------------------------------------------------------------------ */
+/* closer                                                              */
+
+int vor_closer(const vor_point_t *q, const vor_point_t *a,
+               const vor_point_t *b, vor_predicate_stats_t *stats)
+{
+    int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
+    int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
+    uint32_t m = magnitude(ax) | magnitude(ay) | magnitude(bx) | magnitude(by);
+    if (m < 0x80000000u) {
+        /* squares < 2^62, sums of two < 2^63: plain uint64 */
+        COUNT(stats, closer[VOR_TIER_NARROW]);
+        uint64_t da = (uint64_t)vor__mul_i32((int32_t)ax, (int32_t)ax) +
+                      (uint64_t)vor__mul_i32((int32_t)ay, (int32_t)ay);
+        uint64_t db = (uint64_t)vor__mul_i32((int32_t)bx, (int32_t)bx) +
+                      (uint64_t)vor__mul_i32((int32_t)by, (int32_t)by);
+        return (da > db) - (da < db);
+    }
+    /* squares < 2^64, sums of two < 2^65: keep the carry as a 65th bit */
+    COUNT(stats, closer[VOR_TIER_WIDE]);
+    uint64_t sa = vor__mul_u32(magnitude(ax), magnitude(ax));
+    uint64_t da = sa + vor__mul_u32(magnitude(ay), magnitude(ay));
+    unsigned ca = (da < sa) ? 1u : 0u;
+    uint64_t sb = vor__mul_u32(magnitude(bx), magnitude(bx));
+    uint64_t db = sb + vor__mul_u32(magnitude(by), magnitude(by));
+    unsigned cb = (db < sb) ? 1u : 0u;
+    if (ca != cb) {
+        return (ca > cb) ? 1 : -1;
+    }
+    return (da > db) - (da < db);
+}
+
+/* ------------------------------------------------------------------ */
+/* incircle                                                            */
+
+/* A value below 2^65 in sign-magnitude form: the lifts and 2x2 cross
+ * products of the incircle determinant. */
+struct u65 {
+    uint64_t low;
+    uint32_t high; /* 0 or 1 */
+    bool negative;
+};
+
+static struct u65 lift(int64_t dx, int64_t dy)
+{
+    struct u65 r;
+    uint64_t sx = vor__mul_u32(magnitude(dx), magnitude(dx));
+    r.low = sx + vor__mul_u32(magnitude(dy), magnitude(dy));
+    r.high = (r.low < sx) ? 1u : 0u;
+    r.negative = false;
+    return r;
+}
+
+/* ux*vy - uy*vx with |u|, |v| components <= 2^32 - 1: |result| < 2^65. */
+static struct u65 cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy)
+{
+    int s1 = sign_of(ux) * sign_of(vy);
+    int s2 = -sign_of(uy) * sign_of(vx);
+    uint64_t m1 = vor__mul_u32(magnitude(ux), magnitude(vy));
+    uint64_t m2 = vor__mul_u32(magnitude(uy), magnitude(vx));
+    struct u65 r = {0u, 0u, false};
+    if (s1 == 0 || s2 == 0) {
+        r.low = (s1 == 0) ? m2 : m1;
+        r.negative = (s1 + s2) < 0;
+    } else if (s1 == s2) {
+        r.low = m1 + m2;
+        r.high = (r.low < m1) ? 1u : 0u;
+        r.negative = s1 < 0;
+    } else if (m1 >= m2) {
+        r.low = m1 - m2;
+        r.negative = s1 < 0;
+    } else {
+        r.low = m2 - m1;
+        r.negative = s2 < 0;
+    }
+    return r;
+}
+
+static inline void u65_to_limbs(vor__limb *r, size_t n, const struct u65 *v)
+{
+    vor__mw_from_u64(r, n, v->low);
+    if (n > 64 / VOR_LIMB_BITS) {
+        r[64 / VOR_LIMB_BITS] = v->high;
+    }
+}
+
+/* lift(a) cross(b,c) + lift(b) cross(c,a) + lift(c) cross(a,b) over
+ * `factor_limbs`-limb factors and a `sum_limbs`-limb sum. The caller picks
+ * limb counts in which the factors and the sum provably fit. d[] holds
+ * a-d, b-d, c-d as x, y pairs. Inlined with constant limb counts. */
+static inline int incircle_multiword(const int64_t d[6], size_t factor_limbs,
+                                     size_t sum_limbs)
+{
+    vor__limb sum[VOR__LIMBS(136)];
+    vor__limb term[VOR__LIMBS(136)];
+    vor__limb lf[VOR__LIMBS(65)], cf[VOR__LIMBS(65)];
+    for (size_t i = 0; i < sum_limbs; i++) {
+        sum[i] = 0;
+    }
+    for (unsigned k = 0; k < 3; k++) {
+        const int64_t *p = &d[2 * k];
+        const int64_t *u = &d[2 * next_of[k]];
+        const int64_t *v = &d[2 * next_of[next_of[k]]];
+        struct u65 l = lift(p[0], p[1]);
+        struct u65 c = cross(u[0], u[1], v[0], v[1]);
+        u65_to_limbs(lf, factor_limbs, &l);
+        u65_to_limbs(cf, factor_limbs, &c);
+        vor__mw_mul(term, sum_limbs, lf, factor_limbs, cf, factor_limbs);
+        if (c.negative) {
+            vor__mw_sub(sum, term, sum_limbs);
+        } else {
+            vor__mw_add(sum, term, sum_limbs);
+        }
+    }
+    return vor__mw_sign(sum, sum_limbs);
+}
+
+static int incircle_exact(const vor_point_t *a, const vor_point_t *b,
+                          const vor_point_t *c, const vor_point_t *dp,
+                          vor_predicate_stats_t *stats)
+{
+    int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
+                    (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
+                    (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
+    uint32_t m = magnitude(d[0]) | magnitude(d[1]) | magnitude(d[2]) |
+                 magnitude(d[3]) | magnitude(d[4]) | magnitude(d[5]);
+    if (m < (1u << 14)) {
+        /* D < 2^14: lifts and crosses < 2^29 fit int32, the three products
+         * < 2^58 and their sum < 2^60 fit int64 */
+        COUNT(stats, incircle[VOR_TIER_NARROW]);
+        int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
+        int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
+        int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+        int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
+        int32_t lc = cx * cx + cy * cy;
+        int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
+                      vor__mul_i32(lb, cx * ay - cy * ax) +
+                      vor__mul_i32(lc, ax * by - ay * bx);
+        return sign_of(det);
+    }
+    if (m < (1u << 30)) {
+        /* D < 2^30: lifts and |crosses| <= 2^61 fit 64 bits, the products
+         * < 2^122 and their sum < 2^124 fit 128 bits */
+        COUNT(stats, incircle[VOR_TIER_MID]);
+        return incircle_multiword(d, VOR__LIMBS(64), VOR__LIMBS(128));
+    }
+    /* D < 2^32: lifts and |crosses| < 2^65, products < 2^130, sum < 2^132:
+     * 65-bit factors and a 133-bit signed sum (136 rounds to whole limbs) */
+    COUNT(stats, incircle[VOR_TIER_WIDE]);
+    return incircle_multiword(d, VOR__LIMBS(65), VOR__LIMBS(136));
+}
+
+int vor_incircle(const vor_point_t *a, const vor_point_t *b,
+                 const vor_point_t *c, const vor_point_t *d,
+                 vor_predicate_stats_t *stats)
+{
+    return incircle_exact(a, b, c, d, stats);
+}
+
+/* ------------------------------------------------------------------ */
+/* Symbolic perturbation                                               */
+/*
+ * Site i moves to (x_i + dx_i, y_i + dy_i) with dy_i = eps^(16^i) and
+ * dx_i = eps^(4 * 16^i). The predicate is the determinant of one row per
+ * site: (x, y, 1) for orient2d, (x, y, x^2 + y^2, 1) for incircle. A row of
+ * a moved site is the sum of the plain row and one row per perturbation
+ * term:
+ *
+ *   ROW_POINT   (x, y, x^2+y^2, 1)   eps^0
+ *   ROW_DY      (0, 1, 2y, 0)        eps^(16^i)      coefficient of dy
+ *   ROW_SQUARE  (0, 0, 1, 0)         eps^(2*16^i)    coefficient of dy^2
+ *   ROW_DX      (1, 0, 2x, 0)        eps^(4*16^i)    coefficient of dx
+ *   (ROW_SQUARE again                eps^(8*16^i)    coefficient of dx^2)
+ *
+ * (orient2d rows stop at the second column and have no ROW_SQUARE). The
+ * determinant is multilinear in rows, so the moved determinant is a sum
+ * over one row kind per site; the term's eps exponent is the sum of the
+ * chosen exponents. Those are distinct powers of two per site and per
+ * kind, so no two terms share an exponent and the sign as eps -> 0 is the
+ * sign of the first nonzero term in increasing exponent order. That order
+ * is lexicographic in the row kinds, the largest index most significant,
+ * kinds ordered as listed. The dx^2 term repeats the dy^2 term's row at a
+ * larger exponent, so it can never be first and is skipped.
+ *
+ * The determinant is translation invariant term by term, so coordinates
+ * are taken relative to the site with the largest index. That site keeps
+ * ROW_POINT in every term examined (a term with ROW_DX, ROW_DY, ROW_SQUARE
+ * on the other rows is +-1 and comes earlier), so its row is (0, ..., 0, 1)
+ * and the determinant reduces to the minor of the others.
+ */
+
+enum row_kind { ROW_POINT, ROW_DY, ROW_SQUARE, ROW_DX, ROW_KINDS };
+
+/* rank[p] = position of ids[p] among ids[0..n) in increasing order;
+ * returns the position of the largest. */
+static size_t rank_sites(const uint32_t ids[], size_t n, size_t rank[])
+{
+    size_t top = 0;
+    for (size_t p = 0; p < n; p++) {
+        rank[p] = 0;
+        for (size_t q = 0; q < n; q++) {
+            VOR_ASSERT(q == p || ids[q] != ids[p]);
+            rank[p] += (ids[q] < ids[p]) ? 1u : 0u;
+        }
+        if (rank[p] == n - 1) {
+            top = p;
+        }
+    }
+    return top;
+}
+
+int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
+                     uint32_t k, vor_predicate_stats_t *stats)
+{
+    int sign = orient2d_exact(&sites[i], &sites[j], &sites[k], stats);
+    if (sign != 0) {
+        return sign;
+    }
+    COUNT(stats, orient2d_perturbed);
+    const uint32_t ids[3] = {i, j, k};
+    size_t rank[3];
+    size_t top = rank_sites(ids, 3, rank);
+    /* rows other than `top`, in call order; their 2x2 minor with cofactor
+     * sign (-1)^top is the determinant */
+    size_t row[2];
+    for (size_t p = 0, n = 0; p < 3; p++) {
+        if (p != top) {
+            row[n++] = p;
+        }
+    }
+    static const enum row_kind kinds[3] = {ROW_POINT, ROW_DY, ROW_DX};
+    /* the rank-1 site's kind is the more significant digit; the first term
+     * (both ROW_POINT) is the exact determinant, known to be 0, and
+     * (ROW_DX, ROW_DY) is +-1, so the loops end by then */
+    for (unsigned hi = 0; hi < 3 && sign == 0; hi++) {
+        for (unsigned lo = (hi == 0) ? 1u : 0u; lo < 3 && sign == 0; lo++) {
+            int64_t e[2][2];
+            for (size_t r = 0; r < 2; r++) {
+                size_t p = row[r];
+                enum row_kind kind = kinds[rank[p] == 0 ? lo : hi];
+                int64_t x = (int64_t)sites[ids[p]].x - sites[ids[top]].x;
+                int64_t y = (int64_t)sites[ids[p]].y - sites[ids[top]].y;
+                e[r][0] = (kind == ROW_DX) ? 1 : (kind == ROW_DY) ? 0 : x;
+                e[r][1] = (kind == ROW_DY) ? 1 : (kind == ROW_DX) ? 0 : y;
+            }
+            sign = compare_products(e[0][0], e[1][1], e[0][1], e[1][0]);
+        }
+    }
+    VOR_ASSERT(sign != 0);
+    return (top == 1) ? -sign : sign;
+}
+
+/* Entries of the incircle expansion: up to 66 bits (x^2 + y^2 of 33-bit
+ * differences); products of three entries from distinct columns < 2^130,
+ * six of them < 2^133: VOR__WIDE_LIMBS (160 bits) holds every value. */
+typedef struct {
+    vor__limb w[VOR__WIDE_LIMBS];
+} wide_t;
+
+static wide_t wide_from(int64_t v)
+{
+    wide_t r;
+    vor__mw_from_i64(r.w, VOR__WIDE_LIMBS, v);
+    return r;
+}
+
+static wide_t wide_mul(const wide_t *a, const wide_t *b)
+{
+    wide_t r;
+    vor__mw_mul(r.w, VOR__WIDE_LIMBS, a->w, VOR__WIDE_LIMBS, b->w,
+                VOR__WIDE_LIMBS);
+    return r;
+}
+
+/* a*d - b*c */
+static wide_t wide_det2(const wide_t *a, const wide_t *b, const wide_t *c,
+                        const wide_t *d)
+{
+    wide_t ad = wide_mul(a, d);
+    wide_t bc = wide_mul(b, c);
+    vor__mw_sub(ad.w, bc.w, VOR__WIDE_LIMBS);
+    return ad;
+}
+
+static int wide_det3_sign(const wide_t *m[3][3])
+{
+    wide_t sum = wide_from(0);
+    for (unsigned c = 0; c < 3; c++) {
+        unsigned c1 = next_of[c], c2 = next_of[c1];
+        wide_t minor = wide_det2(m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
+        wide_t term = wide_mul(m[0][c], &minor);
+        vor__mw_add(sum.w, term.w, VOR__WIDE_LIMBS);
+    }
+    return vor__mw_sign(sum.w, VOR__WIDE_LIMBS);
+}
+
+int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
+                     uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+{
+    int sign = incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], stats);
+    if (sign != 0) {
+        return sign;
+    }
+    COUNT(stats, incircle_perturbed);
+    const uint32_t ids[4] = {i, j, k, l};
+    size_t rank[4];
+    size_t top = rank_sites(ids, 4, rank);
+    size_t row[3];
+    for (size_t p = 0, n = 0; p < 4; p++) {
+        if (p != top) {
+            row[n++] = p;
+        }
+    }
+    /* the entries of every row kind of the three minor rows */
+    static const wide_t zero = {{0}};
+    wide_t one = wide_from(1);
+    wide_t point[3][3], twice[3][2];
+    for (size_t r = 0; r < 3; r++) {
+        const vor_point_t *s = &sites[ids[row[r]]];
+        const vor_point_t *o = &sites[ids[top]];
+        int64_t x = (int64_t)s->x - o->x, y = (int64_t)s->y - o->y;
+        point[r][0] = wide_from(x);
+        point[r][1] = wide_from(y);
+        point[r][2] = wide_mul(&point[r][0], &point[r][0]);
+        wide_t yy = wide_mul(&point[r][1], &point[r][1]);
+        vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
+        twice[r][0] = wide_from(2 * x);
+        twice[r][1] = wide_from(2 * y);
+    }
+    /* term t: digit r of t in base 4 is the kind of the rank-r site, the
+     * rank-2 site most significant. t = 0 is the exact determinant (0);
+     * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
+    for (unsigned t = 1; t < 64; t++) {
+        const wide_t *m[3][3];
+        unsigned squares = 0;
+        for (size_t r = 0; r < 3; r++) {
+            size_t shift = 2 * rank[row[r]];
+            enum row_kind kind = (enum row_kind)((t >> shift) & 3u);
+            switch (kind) {
+            case ROW_POINT:
+                m[r][0] = &point[r][0];
+                m[r][1] = &point[r][1];
+                m[r][2] = &point[r][2];
+                break;
+            case ROW_DY:
+                m[r][0] = &zero;
+                m[r][1] = &one;
+                m[r][2] = &twice[r][1];
+                break;
+            case ROW_SQUARE:
+                m[r][0] = &zero;
+                m[r][1] = &zero;
+                m[r][2] = &one;
+                squares++;
+                break;
+            case ROW_DX:
+            default:
+                m[r][0] = &one;
+                m[r][1] = &zero;
+                m[r][2] = &twice[r][0];
+                break;
+            }
+        }
+        if (squares >= 2) {
+            continue; /* two equal rows: the term is 0 */
+        }
+        sign = wide_det3_sign(m);
+        if (sign != 0) {
+            break;
+        }
+    }
+    VOR_ASSERT(sign != 0);
+    /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */
+    return (top % 2 == 0) ? -sign : sign;
+}

@@ -1,0 +1,42 @@
+/*
+ * test.h - the small test harness shared by every target.
+ *
+ * The same sources run on the host and as firmware under QEMU, so the
+ * harness needs nothing but port/port.h: its own formatter, its own
+ * pseudo-random generator, and counters. A run ends with the line
+ * "N passed, N failed"; main() returns non-zero when anything failed.
+ */
+#ifndef VOR_TEST_H
+#define VOR_TEST_H
+
+#include <stdarg.h>
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "port.h"
+
+/* printf subset: %d %i %u %x %c %s %%, with l / ll / z length modifiers
+ * and an optional width ("%8u", "%08x"). */
+void test_printf(const char *format, ...);
+
+/* Record one check. Prints the message (printf-style) when it fails;
+ * stops printing after many failures so a broken build stays readable. */
+bool test_check(bool ok, const char *file, int line, const char *format, ...);
+
+#define CHECK(ok, ...) test_check((ok), __FILE__, __LINE__, __VA_ARGS__)
+
+/* Deterministic xorshift generator: the same sequence on every target. */
+typedef struct {
+    uint64_t state;
+} test_rng_t;
+
+void test_rng_seed(test_rng_t *rng, uint64_t seed);
+uint32_t test_rng_u32(test_rng_t *rng);
+/* Uniform in [lo, hi], inclusive, for hi - lo < 2^32. */
+int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);
+
+/* The groups of tests, one per part of the library. */
+void test_predicates(void);
+
+#endif

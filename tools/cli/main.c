@@ -1,0 +1,33 @@
+/*
+ * build/host/vor - the host command-line tool (docs/api.md, "CLI").
+ *
+ *   vor predicates            exact orient2d / incircle signs of stdin lines
+ */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+
+static const struct {
+    const char *name;
+    int (*run)(int argc, char **argv);
+    const char *summary;
+} commands[] = {
+    {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
+};
+
+int main(int argc, char **argv)
+{
+    if (argc >= 2) {
+        for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+            if (strcmp(argv[1], commands[i].name) == 0) {
+                return commands[i].run(argc - 2, argv + 2);
+            }
+        }
+    }
+    fprintf(stderr, "usage: vor COMMAND [ARGS]\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        fprintf(stderr, "  %-12s %s\n", commands[i].name, commands[i].summary);
+    }
+    return 2;
+}

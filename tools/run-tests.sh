@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# run-tests.sh - everything `make test` runs, with one summary line at the end.
+#
+# Suites: the host tests, the host tests under AddressSanitizer and UBSan,
+# the same tests as firmware under QEMU for every target, and the check
+# that the Cortex-M0 and Cortex-M3 libraries call no libc or soft-float
+# routine. Each suite ends with "N passed, N failed"; a suite that does not
+# build, does not finish, or prints no such line counts as one failure.
+set -u
+cd "$(dirname "$0")/.."
+jobs=$(nproc 2>/dev/null || echo 2)
+logs=build/test-logs
+mkdir -p "$logs"
+total_passed=0
+total_failed=0
+broken=()
+
+# record NAME LOG STATUS: add the suite's closing counts to the totals.
+record() {
+    local name=$1 log=$2 status=$3 counts passed failed
+    counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+    if [ -z "$counts" ]; then
+        echo "$name: did not run to the end (exit $status); last lines of $log:"
+        tail -n 15 "$log" | sed 's/^/    /'
+        total_failed=$((total_failed + 1))
+        broken+=("$name")
+        return
+    fi
+    passed=${counts%% passed*}
+    failed=${counts#*, }
+    failed=${failed%% failed}
+    if [ "$failed" = 0 ] && [ "$status" != 0 ]; then
+        echo "$name: all checks passed but the program exited with status $status"
+        failed=1
+    fi
+    grep -E '^(FAIL|fatal)' "$log" | head -n 20 | sed "s/^/$name: /"
+    echo "$name: $passed passed, $failed failed"
+    total_passed=$((total_passed + passed))
+    total_failed=$((total_failed + failed))
+    [ "$failed" = 0 ] || broken+=("$name")
+}
+
+# suite NAME MAKE-ARGS...: build and run the test program of one port.
+suite() {
+    local name=$1 log="$logs/$1.log" status
+    shift
+    if make -s -j"$jobs" "$@" tests >"$log" 2>&1; then
+        make -s "$@" run-tests >>"$log" 2>&1
+        status=$?
+    else
+        status=$?
+        echo "(build failed)" >>"$log"
+    fi
+    record "$name" "$log" "$status"
+}
+
+suite host PORT=host
+suite host-sanitize PORT=host SANITIZE=1
+for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
+    suite "$target" PORT="$target"
+done
+
+# The freestanding check, and a proof that it catches what it looks for.
+freestanding() {
+    local log="$logs/freestanding.log" passed=0 failed=0 target nm
+    : >"$log"
+    for target in cortex-m0 cortex-m3; do
+        make -s -j"$jobs" PORT="$target" lib >>"$log" 2>&1
+        if tools/check-freestanding.sh arm-none-eabi-nm "build/$target/libvor.a" >>"$log" 2>&1; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL build/$target/libvor.a calls outside the library" >>"$log"
+            failed=$((failed + 1))
+        fi
+    done
+    # an object that uses float and memcpy must be rejected
+    local bad=build/test-logs/bad
+    mkdir -p "$bad"
+    printf '#include <string.h>\nfloat f(float a, float b, char *d, const char *s) { memcpy(d, s, 40); return a / b; }\n' >"$bad/bad.c"
+    if arm-none-eabi-gcc -mcpu=cortex-m0 -mthumb -O2 -c "$bad/bad.c" -o "$bad/bad.o" >>"$log" 2>&1 &&
+        arm-none-eabi-ar rcs "$bad/libbad.a" "$bad/bad.o" &&
+        ! tools/check-freestanding.sh arm-none-eabi-nm "$bad/libbad.a" >"$bad/out.txt" 2>&1 &&
+        grep -q 'soft-float routine __aeabi_fdiv' "$bad/out.txt" &&
+        grep -q 'libc function memcpy' "$bad/out.txt"; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL the freestanding check did not catch float and memcpy" >>"$log"
+        failed=$((failed + 1))
+    fi
+    echo "$passed passed, $failed failed" >>"$log"
+    record freestanding "$log" 0
+}
+freestanding
+
+if [ ${#broken[@]} -gt 0 ]; then
+    echo "failing: ${broken[*]} (logs in $logs/)"
+fi
+echo "total: $total_passed passed, $total_failed failed"
+[ "$total_failed" = 0 ]
