@@ -43,7 +43,7 @@ CHECKED_OBJS := $(LIB_SRCS:src/%.c=$(B)/checked/%.o)
 TEST_SRCS := $(wildcard tests/*.c)
 TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.o
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
-TEST_EXE := $(B)/tests$(EXE)
+TEST_EXE := $(B)/vor-tests$(EXE)
 
 .PHONY: all lib tests run-tests test demo size bench-predicates clean
 .DELETE_ON_ERROR:
@@ -92,6 +92,15 @@ $(TEST_EXE): $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a
 
 run-tests: $(TEST_EXE)
 	$(RUN) $(TEST_EXE)
+
+# Benchmarks link the release library, like a user's firmware would.
+BENCH_ROUNDS_host := 20000
+BENCH_CFLAGS := $(TEST_CFLAGS) -DBENCH_ROUNDS=$(or $(BENCH_ROUNDS_$(PORT)),8)
+$(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor.a
+	$(CC) $(BENCH_CFLAGS) $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+run-bench-%: $(B)/bench-%$(EXE)
+	$(RUN) $<
 
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)

@@ -102,7 +102,8 @@ int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
  * positive when d lies inside the circle through a, b, c and a, b, c are
  * counterclockwise (negated when they are clockwise), 0 when cocircular.
  * Tiers, with D the largest |coordinate difference| to d: narrow for
- * D < 2^14, mid for D < 2^30, else wide. stats may be NULL. Never fails.
+ * D <= 2^14, mid for D <= 2^30, else wide (differences in [-2^k, 2^k - 1]
+ * count as D <= 2^k). stats may be NULL. Never fails.
  */
 int vor_incircle(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, const vor_point_t *d,

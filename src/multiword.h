@@ -20,6 +20,18 @@
 
 #include "vor_config.h"
 
+/* The helpers below run with constant limb counts on the predicates' hot
+ * paths; forcing them inline lets the compiler unroll the loops. The wider
+ * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
+ * not pay for their registers and stack. */
+#if defined(__GNUC__)
+#define VOR__INLINE static inline __attribute__((always_inline))
+#define VOR__NOINLINE __attribute__((noinline))
+#else
+#define VOR__INLINE static inline
+#define VOR__NOINLINE
+#endif
+
 #if VOR_LIMB_BITS == 64
 typedef uint64_t vor__limb;
 __extension__ typedef unsigned __int128 vor__dlimb;
@@ -40,7 +52,7 @@ typedef uint64_t vor__dlimb;
 /* 32x32->64 unsigned multiply. ARMv6-M (Cortex-M0) has only a 32x32->32
  * multiply, and the compiler would call a generic 64x64 library routine;
  * four 16x16 products are cheaper there. */
-static inline uint64_t vor__mul_u32(uint32_t a, uint32_t b)
+VOR__INLINE uint64_t vor__mul_u32(uint32_t a, uint32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
     uint32_t al = a & 0xFFFFu, ah = a >> 16;
@@ -63,7 +75,7 @@ static inline uint64_t vor__mul_u32(uint32_t a, uint32_t b)
 }
 
 /* 32x32->64 signed multiply, through vor__mul_u32 on ARMv6-M. */
-static inline int64_t vor__mul_i32(int32_t a, int32_t b)
+VOR__INLINE int64_t vor__mul_i32(int32_t a, int32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
     uint32_t ma = (a < 0) ? 0u - (uint32_t)a : (uint32_t)a;
@@ -76,7 +88,7 @@ static inline int64_t vor__mul_i32(int32_t a, int32_t b)
 }
 
 /* Full product of two limbs. */
-static inline vor__dlimb vor__mul_limb(vor__limb a, vor__limb b)
+VOR__INLINE vor__dlimb vor__mul_limb(vor__limb a, vor__limb b)
 {
 #if VOR_LIMB_BITS == 32
     return vor__mul_u32(a, b);
@@ -86,7 +98,7 @@ static inline vor__dlimb vor__mul_limb(vor__limb a, vor__limb b)
 }
 
 /* r[0..n) = v, zero-extended. */
-static inline void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
+VOR__INLINE void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
 {
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 32
@@ -99,7 +111,7 @@ static inline void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
 }
 
 /* r[0..n) = v, sign-extended. */
-static inline void vor__mw_from_i64(vor__limb *r, size_t n, int64_t v)
+VOR__INLINE void vor__mw_from_i64(vor__limb *r, size_t n, int64_t v)
 {
     vor__limb fill = (v < 0) ? (vor__limb)~(vor__limb)0 : 0u;
     vor__mw_from_u64(r, n, (uint64_t)v);
@@ -110,7 +122,7 @@ static inline void vor__mw_from_i64(vor__limb *r, size_t n, int64_t v)
 }
 
 /* r += a over n limbs (mod 2^(n*VOR_LIMB_BITS)). */
-static inline void vor__mw_add(vor__limb *r, const vor__limb *a, size_t n)
+VOR__INLINE void vor__mw_add(vor__limb *r, const vor__limb *a, size_t n)
 {
     vor__limb carry = 0;
     for (size_t i = 0; i < n; i++) {
@@ -123,7 +135,7 @@ static inline void vor__mw_add(vor__limb *r, const vor__limb *a, size_t n)
 }
 
 /* r -= a over n limbs (mod 2^(n*VOR_LIMB_BITS)). */
-static inline void vor__mw_sub(vor__limb *r, const vor__limb *a, size_t n)
+VOR__INLINE void vor__mw_sub(vor__limb *r, const vor__limb *a, size_t n)
 {
     vor__limb borrow = 0;
     for (size_t i = 0; i < n; i++) {
@@ -138,7 +150,7 @@ static inline void vor__mw_sub(vor__limb *r, const vor__limb *a, size_t n)
 /* r[0..nr) = low nr limbs of a[0..na) * b[0..nb). r must not overlap a or b.
  * Exact for signed (two's complement) operands when the true product fits
  * in nr limbs and na, nb >= nr or the operands are non-negative. */
-static inline void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
+VOR__INLINE void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
                                size_t na, const vor__limb *b, size_t nb)
 {
     for (size_t i = 0; i < nr; i++) {
@@ -157,8 +169,26 @@ static inline void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
     }
 }
 
+/* r = -r when mask is all ones, unchanged when mask is 0; no branch, so
+ * random signs cost no mispredictions. */
+VOR__INLINE void vor__mw_negate_if(vor__limb *r, size_t n, vor__limb mask)
+{
+    vor__limb carry = mask & 1u;
+    for (size_t i = 0; i < n; i++) {
+        vor__limb v = (r[i] ^ mask) + carry;
+        carry = (v < carry) ? 1u : 0u;
+        r[i] = v;
+    }
+}
+
+/* All ones when the two's complement number is negative, else 0. */
+VOR__INLINE vor__limb vor__mw_sign_mask(const vor__limb *a, size_t n)
+{
+    return (vor__limb)0 - (a[n - 1] >> (VOR_LIMB_BITS - 1));
+}
+
 /* Sign of a two's complement number: -1, 0 or 1. */
-static inline int vor__mw_sign(const vor__limb *a, size_t n)
+VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
 {
     if ((a[n - 1] >> (VOR_LIMB_BITS - 1)) != 0u) {
         return -1;

@@ -28,19 +28,27 @@
 /* (k + 1) mod 3 without a division (Cortex-M0 has no divide instruction) */
 static const unsigned char next_of[3] = {1, 2, 0};
 
-static inline uint32_t magnitude(int64_t d)
+VOR__INLINE uint32_t magnitude(int64_t d)
 {
     return (uint32_t)(d < 0 ? -d : d);
 }
 
-static inline int sign_of(int64_t v)
+/* |d| rounded down for negative d (~d = -d - 1), two instructions on most
+ * machines: bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1]. The
+ * OR of bounds is below 2^k exactly when every bound is. */
+VOR__INLINE uint64_t bound(int64_t d)
+{
+    return (uint64_t)(d < 0 ? ~d : d);
+}
+
+VOR__INLINE int sign_of(int64_t v)
 {
     return (v > 0) - (v < 0);
 }
 
 /* Sign of a*b - c*d for |a|, |b|, |c|, |d| <= 2^32 - 1, without any value
  * wider than 64 bits: compare the products' signs, then their magnitudes. */
-static int compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
+VOR__NOINLINE static int compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 {
     int sp = sign_of(a) * sign_of(b);
     int sq = sign_of(c) * sign_of(d);
@@ -59,14 +67,14 @@ static int compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 /* ------------------------------------------------------------------ */
 /* orient2d                                                            */
 
-static int orient2d_exact(const vor_point_t *a, const vor_point_t *b,
-                          const vor_point_t *c, vor_predicate_stats_t *stats)
+int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
+                 const vor_point_t *c, vor_predicate_stats_t *stats)
 {
     int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
     int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
-    uint32_t m = magnitude(acx) | magnitude(acy) | magnitude(bcx) | magnitude(bcy);
-    if (m < 0x80000000u) {
-        /* |products| < 2^62, so their difference fits in int64 */
+    if ((bound(acx) | bound(acy) | bound(bcx) | bound(bcy)) < 0x80000000u) {
+        /* the differences fit int32, |products| <= 2^62 and their
+         * difference is below 2^63 */
         COUNT(stats, orient2d[VOR_TIER_NARROW]);
         int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
                       vor__mul_i32((int32_t)acy, (int32_t)bcx);
@@ -74,12 +82,6 @@ static int orient2d_exact(const vor_point_t *a, const vor_point_t *b,
     }
     COUNT(stats, orient2d[VOR_TIER_WIDE]);
     return compare_products(acx, bcy, acy, bcx);
-}
-
-int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, vor_predicate_stats_t *stats)
-{
-    return orient2d_exact(a, b, c, stats);
 }
 
 /* ------------------------------------------------------------------ */
@@ -90,9 +92,9 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
 {
     int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
     int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
-    uint32_t m = magnitude(ax) | magnitude(ay) | magnitude(bx) | magnitude(by);
-    if (m < 0x80000000u) {
-        /* squares < 2^62, sums of two < 2^63: plain uint64 */
+    if ((bound(ax) | bound(ay) | bound(bx) | bound(by)) < 0x80000000u) {
+        /* the differences fit int32: squares <= 2^62, sums of two <= 2^63
+         * fit uint64 */
         COUNT(stats, closer[VOR_TIER_NARROW]);
         uint64_t da = (uint64_t)vor__mul_i32((int32_t)ax, (int32_t)ax) +
                       (uint64_t)vor__mul_i32((int32_t)ay, (int32_t)ay);
@@ -117,100 +119,87 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
 /* ------------------------------------------------------------------ */
 /* incircle                                                            */
 
-/* A value below 2^65 in sign-magnitude form: the lifts and 2x2 cross
- * products of the incircle determinant. */
-struct u65 {
-    uint64_t low;
-    uint32_t high; /* 0 or 1 */
-    bool negative;
-};
-
-static struct u65 lift(int64_t dx, int64_t dy)
+/* sum += lift * cross for a non-negative lift and a signed cross, both
+ * `factor_limbs` wide, in a `sum_limbs`-wide sum: the product of the
+ * magnitudes, negated without a branch when the cross is negative. */
+VOR__INLINE void add_lift_times_cross(vor__limb *sum, size_t sum_limbs,
+                                      const vor__limb *lift, vor__limb *cross,
+                                      size_t factor_limbs)
 {
-    struct u65 r;
-    uint64_t sx = vor__mul_u32(magnitude(dx), magnitude(dx));
-    r.low = sx + vor__mul_u32(magnitude(dy), magnitude(dy));
-    r.high = (r.low < sx) ? 1u : 0u;
-    r.negative = false;
-    return r;
-}
-
-/* ux*vy - uy*vx with |u|, |v| components <= 2^32 - 1: |result| < 2^65. */
-static struct u65 cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy)
-{
-    int s1 = sign_of(ux) * sign_of(vy);
-    int s2 = -sign_of(uy) * sign_of(vx);
-    uint64_t m1 = vor__mul_u32(magnitude(ux), magnitude(vy));
-    uint64_t m2 = vor__mul_u32(magnitude(uy), magnitude(vx));
-    struct u65 r = {0u, 0u, false};
-    if (s1 == 0 || s2 == 0) {
-        r.low = (s1 == 0) ? m2 : m1;
-        r.negative = (s1 + s2) < 0;
-    } else if (s1 == s2) {
-        r.low = m1 + m2;
-        r.high = (r.low < m1) ? 1u : 0u;
-        r.negative = s1 < 0;
-    } else if (m1 >= m2) {
-        r.low = m1 - m2;
-        r.negative = s1 < 0;
-    } else {
-        r.low = m2 - m1;
-        r.negative = s2 < 0;
-    }
-    return r;
-}
-
-static inline void u65_to_limbs(vor__limb *r, size_t n, const struct u65 *v)
-{
-    vor__mw_from_u64(r, n, v->low);
-    if (n > 64 / VOR_LIMB_BITS) {
-        r[64 / VOR_LIMB_BITS] = v->high;
-    }
-}
-
-/* lift(a) cross(b,c) + lift(b) cross(c,a) + lift(c) cross(a,b) over
- * `factor_limbs`-limb factors and a `sum_limbs`-limb sum. The caller picks
- * limb counts in which the factors and the sum provably fit. d[] holds
- * a-d, b-d, c-d as x, y pairs. Inlined with constant limb counts. */
-static inline int incircle_multiword(const int64_t d[6], size_t factor_limbs,
-                                     size_t sum_limbs)
-{
-    vor__limb sum[VOR__LIMBS(136)];
     vor__limb term[VOR__LIMBS(136)];
-    vor__limb lf[VOR__LIMBS(65)], cf[VOR__LIMBS(65)];
-    for (size_t i = 0; i < sum_limbs; i++) {
-        sum[i] = 0;
-    }
+    vor__limb negative = vor__mw_sign_mask(cross, factor_limbs);
+    vor__mw_negate_if(cross, factor_limbs, negative);
+    vor__mw_mul(term, sum_limbs, lift, factor_limbs, cross, factor_limbs);
+    vor__mw_negate_if(term, sum_limbs, negative);
+    vor__mw_add(sum, term, sum_limbs);
+}
+
+/* The product of two coordinate differences (|a|, |b| <= 2^32 - 1) as a
+ * two's complement number of n limbs. */
+VOR__INLINE void product_limbs(vor__limb *r, size_t n, int64_t a, int64_t b)
+{
+    vor__mw_from_u64(r, n, vor__mul_u32(magnitude(a), magnitude(b)));
+    vor__mw_negate_if(r, n, ((a < 0) != (b < 0)) ? ~(vor__limb)0 : 0u);
+}
+
+/* Mid tier, D <= 2^30: the differences fit int32, lifts and |crosses|
+ * <= 2^61 are exact in int64,
+ * the products < 2^122 and their sum < 2^124 fit 128 bits. d[] holds
+ * a-d, b-d, c-d as x, y pairs. */
+VOR__NOINLINE static int incircle_mid(const int64_t d[6])
+{
+    enum { F = VOR__LIMBS(64), S = VOR__LIMBS(128) };
+    vor__limb sum[S], lift[F], cross[F];
+    vor__mw_from_u64(sum, S, 0);
     for (unsigned k = 0; k < 3; k++) {
         const int64_t *p = &d[2 * k];
         const int64_t *u = &d[2 * next_of[k]];
         const int64_t *v = &d[2 * next_of[next_of[k]]];
-        struct u65 l = lift(p[0], p[1]);
-        struct u65 c = cross(u[0], u[1], v[0], v[1]);
-        u65_to_limbs(lf, factor_limbs, &l);
-        u65_to_limbs(cf, factor_limbs, &c);
-        vor__mw_mul(term, sum_limbs, lf, factor_limbs, cf, factor_limbs);
-        if (c.negative) {
-            vor__mw_sub(sum, term, sum_limbs);
-        } else {
-            vor__mw_add(sum, term, sum_limbs);
-        }
+        int32_t px = (int32_t)p[0], py = (int32_t)p[1];
+        int32_t ux = (int32_t)u[0], uy = (int32_t)u[1];
+        int32_t vx = (int32_t)v[0], vy = (int32_t)v[1];
+        vor__mw_from_u64(lift, F, (uint64_t)vor__mul_i32(px, px) +
+                                      (uint64_t)vor__mul_i32(py, py));
+        vor__mw_from_i64(cross, F, vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx));
+        add_lift_times_cross(sum, S, lift, cross, F);
     }
-    return vor__mw_sign(sum, sum_limbs);
+    return vor__mw_sign(sum, S);
 }
 
-static int incircle_exact(const vor_point_t *a, const vor_point_t *b,
-                          const vor_point_t *c, const vor_point_t *dp,
-                          vor_predicate_stats_t *stats)
+/* Wide tier, D < 2^32: lifts < 2^65 and |crosses| < 2^65 (67 bits with
+ * sign), products < 2^130, sum < 2^132 (133 bits with sign). */
+VOR__NOINLINE static int incircle_wide(const int64_t d[6])
+{
+    enum { F = VOR__LIMBS(67), S = VOR__LIMBS(133) };
+    vor__limb sum[S], lift[F], cross[F], other[F];
+    vor__mw_from_u64(sum, S, 0);
+    for (unsigned k = 0; k < 3; k++) {
+        const int64_t *p = &d[2 * k];
+        const int64_t *u = &d[2 * next_of[k]];
+        const int64_t *v = &d[2 * next_of[next_of[k]]];
+        vor__mw_from_u64(lift, F, vor__mul_u32(magnitude(p[0]), magnitude(p[0])));
+        vor__mw_from_u64(other, F, vor__mul_u32(magnitude(p[1]), magnitude(p[1])));
+        vor__mw_add(lift, other, F);
+        product_limbs(cross, F, u[0], v[1]);
+        product_limbs(other, F, u[1], v[0]);
+        vor__mw_sub(cross, other, F);
+        add_lift_times_cross(sum, S, lift, cross, F);
+    }
+    return vor__mw_sign(sum, S);
+}
+
+int vor_incircle(const vor_point_t *a, const vor_point_t *b,
+                 const vor_point_t *c, const vor_point_t *dp,
+                 vor_predicate_stats_t *stats)
 {
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
                     (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint32_t m = magnitude(d[0]) | magnitude(d[1]) | magnitude(d[2]) |
-                 magnitude(d[3]) | magnitude(d[4]) | magnitude(d[5]);
+    uint64_t m = bound(d[0]) | bound(d[1]) | bound(d[2]) | bound(d[3]) |
+                 bound(d[4]) | bound(d[5]);
     if (m < (1u << 14)) {
-        /* D < 2^14: lifts and crosses < 2^29 fit int32, the three products
-         * < 2^58 and their sum < 2^60 fit int64 */
+        /* D <= 2^14: lifts and |crosses| <= 2^29 fit int32, the three
+         * products <= 2^58 and their sum < 2^60 fit int64 */
         COUNT(stats, incircle[VOR_TIER_NARROW]);
         int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
         int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
@@ -223,22 +212,11 @@ static int incircle_exact(const vor_point_t *a, const vor_point_t *b,
         return sign_of(det);
     }
     if (m < (1u << 30)) {
-        /* D < 2^30: lifts and |crosses| <= 2^61 fit 64 bits, the products
-         * < 2^122 and their sum < 2^124 fit 128 bits */
         COUNT(stats, incircle[VOR_TIER_MID]);
-        return incircle_multiword(d, VOR__LIMBS(64), VOR__LIMBS(128));
+        return incircle_mid(d);
     }
-    /* D < 2^32: lifts and |crosses| < 2^65, products < 2^130, sum < 2^132:
-     * 65-bit factors and a 133-bit signed sum (136 rounds to whole limbs) */
     COUNT(stats, incircle[VOR_TIER_WIDE]);
-    return incircle_multiword(d, VOR__LIMBS(65), VOR__LIMBS(136));
-}
-
-int vor_incircle(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, const vor_point_t *d,
-                 vor_predicate_stats_t *stats)
-{
-    return incircle_exact(a, b, c, d, stats);
+    return incircle_wide(d);
 }
 
 /* ------------------------------------------------------------------ */
@@ -296,7 +274,7 @@ static size_t rank_sites(const uint32_t ids[], size_t n, size_t rank[])
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, vor_predicate_stats_t *stats)
 {
-    int sign = orient2d_exact(&sites[i], &sites[j], &sites[k], stats);
+    int sign = vor_orient2d(&sites[i], &sites[j], &sites[k], stats);
     if (sign != 0) {
         return sign;
     }
@@ -381,7 +359,7 @@ static int wide_det3_sign(const wide_t *m[3][3])
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
-    int sign = incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], stats);
+    int sign = vor_incircle(&sites[i], &sites[j], &sites[k], &sites[l], stats);
     if (sign != 0) {
         return sign;
     }

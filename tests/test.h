@@ -26,6 +26,10 @@ bool test_check(bool ok, const char *file, int line, const char *format, ...);
 
 #define CHECK(ok, ...) test_check((ok), __FILE__, __LINE__, __VA_ARGS__)
 
+/* Prints the closing "N passed, N failed" line. */
+void test_summary(void);
+unsigned long test_failures(void);
+
 /* Deterministic xorshift generator: the same sequence on every target. */
 typedef struct {
     uint64_t state;

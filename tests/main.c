@@ -1,0 +1,10 @@
+/* main.c - runs every test group; the port's startup calls it. */
+#include "test.h"
+
+int main(void)
+{
+    vor_port_init();
+    test_predicates();
+    test_summary();
+    return test_failures() == 0 ? 0 : 1;
+}
