@@ -97,6 +97,26 @@ VOR__INLINE vor__dlimb vor__mul_limb(vor__limb a, vor__limb b)
 #endif
 }
 
+/* 64x64->128 unsigned multiply: the low word returned, the high in *high.
+ * One instruction with 64-bit limbs; four limb products with 32-bit ones. */
+VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
+{
+#if VOR_LIMB_BITS == 64
+    vor__dlimb p = (vor__dlimb)a * b;
+    *high = (uint64_t)(p >> 64);
+    return (uint64_t)p;
+#else
+    uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32);
+    uint32_t b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
+    uint64_t p00 = vor__mul_u32(a0, b0), p01 = vor__mul_u32(a0, b1);
+    uint64_t p10 = vor__mul_u32(a1, b0), p11 = vor__mul_u32(a1, b1);
+    /* three values below 2^32 each: no overflow */
+    uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
+    *high = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
+    return (mid << 32) | (uint32_t)p00;
+#endif
+}
+
 /* r[0..n) = v, zero-extended. */
 VOR__INLINE void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
 {
@@ -167,24 +187,6 @@ VOR__INLINE void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
             r[i + nb] = carry;
         }
     }
-}
-
-/* r = -r when mask is all ones, unchanged when mask is 0; no branch, so
- * random signs cost no mispredictions. */
-VOR__INLINE void vor__mw_negate_if(vor__limb *r, size_t n, vor__limb mask)
-{
-    vor__limb carry = mask & 1u;
-    for (size_t i = 0; i < n; i++) {
-        vor__limb v = (r[i] ^ mask) + carry;
-        carry = (v < carry) ? 1u : 0u;
-        r[i] = v;
-    }
-}
-
-/* All ones when the two's complement number is negative, else 0. */
-VOR__INLINE vor__limb vor__mw_sign_mask(const vor__limb *a, size_t n)
-{
-    return (vor__limb)0 - (a[n - 1] >> (VOR_LIMB_BITS - 1));
 }
 
 /* Sign of a two's complement number: -1, 0 or 1. */

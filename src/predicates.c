@@ -119,73 +119,108 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
 /* ------------------------------------------------------------------ */
 /* incircle                                                            */
 
-/* sum += lift * cross for a non-negative lift and a signed cross, both
- * `factor_limbs` wide, in a `sum_limbs`-wide sum: the product of the
- * magnitudes, negated without a branch when the cross is negative. */
-VOR__INLINE void add_lift_times_cross(vor__limb *sum, size_t sum_limbs,
-                                      const vor__limb *lift, vor__limb *cross,
-                                      size_t factor_limbs)
+/*
+ * The mid and wide incircle tiers work on 64-bit words (two limbs with
+ * 32-bit limbs). The determinant is a sum of three products of a lift
+ * (>= 0) and a signed cross product, each factor below 2^65: a word plus
+ * a 65th bit. Positive and negative products are summed apart, as 3-word
+ * (192-bit) unsigned numbers, and compared at the end: no negation, and
+ * the sign only selects an accumulator, which compiles without branches.
+ */
+struct u192 {
+    uint64_t w[3];
+};
+
+/* *acc += (a + a_high 2^64) * (b + b_high 2^64), a_high, b_high in {0, 1}. */
+VOR__INLINE void add_product(struct u192 *acc, uint64_t a, uint64_t a_high,
+                             uint64_t b, uint64_t b_high)
 {
-    vor__limb term[VOR__LIMBS(136)];
-    vor__limb negative = vor__mw_sign_mask(cross, factor_limbs);
-    vor__mw_negate_if(cross, factor_limbs, negative);
-    vor__mw_mul(term, sum_limbs, lift, factor_limbs, cross, factor_limbs);
-    vor__mw_negate_if(term, sum_limbs, negative);
-    vor__mw_add(sum, term, sum_limbs);
+    uint64_t w1, w0 = vor__mul_u64(a, b, &w1);
+    uint64_t w2 = a_high & b_high;
+    uint64_t add = (0u - a_high) & b;
+    w1 += add;
+    w2 += (w1 < add) ? 1u : 0u;
+    add = (0u - b_high) & a;
+    w1 += add;
+    w2 += (w1 < add) ? 1u : 0u;
+    acc->w[0] += w0;
+    uint64_t carry = (acc->w[0] < w0) ? 1u : 0u;
+    w1 += carry;
+    w2 += (w1 < carry) ? 1u : 0u;
+    acc->w[1] += w1;
+    acc->w[2] += w2 + ((acc->w[1] < w1) ? 1u : 0u);
 }
 
-/* The product of two coordinate differences (|a|, |b| <= 2^32 - 1) as a
- * two's complement number of n limbs. */
-VOR__INLINE void product_limbs(vor__limb *r, size_t n, int64_t a, int64_t b)
+/* Sign of p - q. */
+VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
 {
-    vor__mw_from_u64(r, n, vor__mul_u32(magnitude(a), magnitude(b)));
-    vor__mw_negate_if(r, n, ((a < 0) != (b < 0)) ? ~(vor__limb)0 : 0u);
+    for (int i = 2; i >= 0; i--) {
+        if (p->w[i] != q->w[i]) {
+            return (p->w[i] > q->w[i]) ? 1 : -1;
+        }
+    }
+    return 0;
 }
 
-/* Mid tier, D <= 2^30: the differences fit int32, lifts and |crosses|
- * <= 2^61 are exact in int64,
- * the products < 2^122 and their sum < 2^124 fit 128 bits. d[] holds
- * a-d, b-d, c-d as x, y pairs. */
+/* Mid tier term, D <= 2^30: the differences fit int32, the lift and
+ * |cross| <= 2^61 are exact in int64, the product < 2^122. d[] holds a-d,
+ * b-d, c-d as x, y pairs; the term is lift(p) cross(u, v). */
+VOR__INLINE void mid_term(struct u192 sums[2], const int64_t d[6], unsigned p,
+                          unsigned u, unsigned v)
+{
+    int32_t px = (int32_t)d[p], py = (int32_t)d[p + 1];
+    int32_t ux = (int32_t)d[u], uy = (int32_t)d[u + 1];
+    int32_t vx = (int32_t)d[v], vy = (int32_t)d[v + 1];
+    uint64_t lift = (uint64_t)vor__mul_i32(px, px) + (uint64_t)vor__mul_i32(py, py);
+    int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
+    bool negative = cross < 0;
+    uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
+    add_product(&sums[negative], lift, 0u, magnitude_of_cross, 0u);
+}
+
+/* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
+ * < 2^130; each of the two sums stays below 2^132. */
+VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
+                           unsigned u, unsigned v)
+{
+    uint64_t sx = vor__mul_u32(magnitude(d[p]), magnitude(d[p]));
+    uint64_t lift = sx + vor__mul_u32(magnitude(d[p + 1]), magnitude(d[p + 1]));
+    uint64_t lift_high = (lift < sx) ? 1u : 0u;
+    /* cross = ux vy - uy vx = (+-m1) + (+-m2) */
+    bool n1 = (d[u] < 0) != (d[v + 1] < 0);
+    bool n2 = (d[u + 1] < 0) == (d[v] < 0);
+    uint64_t m1 = vor__mul_u32(magnitude(d[u]), magnitude(d[v + 1]));
+    uint64_t m2 = vor__mul_u32(magnitude(d[u + 1]), magnitude(d[v]));
+    uint64_t low, high = 0u;
+    bool negative;
+    if (n1 == n2) { /* same signs: the magnitudes add, up to 65 bits */
+        low = m1 + m2;
+        high = (low < m1) ? 1u : 0u;
+        negative = n1;
+    } else { /* opposite signs: the larger magnitude wins */
+        bool second = m2 > m1;
+        low = second ? m2 - m1 : m1 - m2;
+        negative = second ? n2 : n1;
+    }
+    add_product(&sums[negative], lift, lift_high, low, high);
+}
+
 VOR__NOINLINE static int incircle_mid(const int64_t d[6])
 {
-    enum { F = VOR__LIMBS(64), S = VOR__LIMBS(128) };
-    vor__limb sum[S], lift[F], cross[F];
-    vor__mw_from_u64(sum, S, 0);
-    for (unsigned k = 0; k < 3; k++) {
-        const int64_t *p = &d[2 * k];
-        const int64_t *u = &d[2 * next_of[k]];
-        const int64_t *v = &d[2 * next_of[next_of[k]]];
-        int32_t px = (int32_t)p[0], py = (int32_t)p[1];
-        int32_t ux = (int32_t)u[0], uy = (int32_t)u[1];
-        int32_t vx = (int32_t)v[0], vy = (int32_t)v[1];
-        vor__mw_from_u64(lift, F, (uint64_t)vor__mul_i32(px, px) +
-                                      (uint64_t)vor__mul_i32(py, py));
-        vor__mw_from_i64(cross, F, vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx));
-        add_lift_times_cross(sum, S, lift, cross, F);
-    }
-    return vor__mw_sign(sum, S);
+    struct u192 sums[2] = {{{0u, 0u, 0u}}, {{0u, 0u, 0u}}}; /* positive, negative */
+    mid_term(sums, d, 0, 2, 4);
+    mid_term(sums, d, 2, 4, 0);
+    mid_term(sums, d, 4, 0, 2);
+    return compare_u192(&sums[0], &sums[1]);
 }
 
-/* Wide tier, D < 2^32: lifts < 2^65 and |crosses| < 2^65 (67 bits with
- * sign), products < 2^130, sum < 2^132 (133 bits with sign). */
 VOR__NOINLINE static int incircle_wide(const int64_t d[6])
 {
-    enum { F = VOR__LIMBS(67), S = VOR__LIMBS(133) };
-    vor__limb sum[S], lift[F], cross[F], other[F];
-    vor__mw_from_u64(sum, S, 0);
-    for (unsigned k = 0; k < 3; k++) {
-        const int64_t *p = &d[2 * k];
-        const int64_t *u = &d[2 * next_of[k]];
-        const int64_t *v = &d[2 * next_of[next_of[k]]];
-        vor__mw_from_u64(lift, F, vor__mul_u32(magnitude(p[0]), magnitude(p[0])));
-        vor__mw_from_u64(other, F, vor__mul_u32(magnitude(p[1]), magnitude(p[1])));
-        vor__mw_add(lift, other, F);
-        product_limbs(cross, F, u[0], v[1]);
-        product_limbs(other, F, u[1], v[0]);
-        vor__mw_sub(cross, other, F);
-        add_lift_times_cross(sum, S, lift, cross, F);
-    }
-    return vor__mw_sign(sum, S);
+    struct u192 sums[2] = {{{0u, 0u, 0u}}, {{0u, 0u, 0u}}}; /* positive, negative */
+    wide_term(sums, d, 0, 2, 4);
+    wide_term(sums, d, 2, 4, 0);
+    wide_term(sums, d, 4, 0, 2);
+    return compare_u192(&sums[0], &sums[1]);
 }
 
 int vor_incircle(const vor_point_t *a, const vor_point_t *b,
