@@ -131,6 +131,17 @@ struct u192 {
     uint64_t w[3];
 };
 
+/* Both sums zeroed word by word: an aggregate initializer of this size
+ * becomes a memset call on some targets, and the library calls nothing. */
+VOR__INLINE void clear_sums(struct u192 sums[2])
+{
+    for (unsigned i = 0; i < 2; i++) {
+        sums[i].w[0] = 0u;
+        sums[i].w[1] = 0u;
+        sums[i].w[2] = 0u;
+    }
+}
+
 /* *acc += (a + a_high 2^64) * (b + b_high 2^64), a_high, b_high in {0, 1}. */
 VOR__INLINE void add_product(struct u192 *acc, uint64_t a, uint64_t a_high,
                              uint64_t b, uint64_t b_high)
@@ -207,7 +218,8 @@ VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
 
 VOR__NOINLINE static int incircle_mid(const int64_t d[6])
 {
-    struct u192 sums[2] = {{{0u, 0u, 0u}}, {{0u, 0u, 0u}}}; /* positive, negative */
+    struct u192 sums[2]; /* positive, negative */
+    clear_sums(sums);
     mid_term(sums, d, 0, 2, 4);
     mid_term(sums, d, 2, 4, 0);
     mid_term(sums, d, 4, 0, 2);
@@ -216,7 +228,8 @@ VOR__NOINLINE static int incircle_mid(const int64_t d[6])
 
 VOR__NOINLINE static int incircle_wide(const int64_t d[6])
 {
-    struct u192 sums[2] = {{{0u, 0u, 0u}}, {{0u, 0u, 0u}}}; /* positive, negative */
+    struct u192 sums[2]; /* positive, negative */
+    clear_sums(sums);
     wide_term(sums, d, 0, 2, 4);
     wide_term(sums, d, 2, 4, 0);
     wide_term(sums, d, 4, 0, 2);

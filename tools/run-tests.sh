@@ -4,7 +4,7 @@
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
 # the same tests as firmware under QEMU for every target, and the check
 # that the Cortex-M0 and Cortex-M3 libraries call no libc or soft-float
-# routine. Each suite ends with "N passed, N failed"; a suite that does not
+# routine (checked on every target). Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."
@@ -64,9 +64,11 @@ done
 freestanding() {
     local log="$logs/freestanding.log" passed=0 failed=0 target nm
     : >"$log"
-    for target in cortex-m0 cortex-m3; do
+    for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
+        nm=arm-none-eabi-nm
+        [ "$target" = riscv32 ] && nm=riscv64-unknown-elf-nm
         make -s -j"$jobs" PORT="$target" lib >>"$log" 2>&1
-        if tools/check-freestanding.sh arm-none-eabi-nm "build/$target/libvor.a" >>"$log" 2>&1; then
+        if tools/check-freestanding.sh "$nm" "build/$target/libvor.a" >>"$log" 2>&1; then
             passed=$((passed + 1))
         else
             echo "FAIL build/$target/libvor.a calls outside the library" >>"$log"
