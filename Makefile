@@ -25,6 +25,8 @@ GEN := build/gen
 
 include port/$(PORT)/port.mk
 
+.SECONDEXPANSION:
+
 WARNINGS := -Wall -Wextra -Werror -pedantic -Wconversion -Wsign-conversion \
             -Wcast-align -Wundef -Wshadow
 OPT := -O2
@@ -102,6 +104,13 @@ $(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor.a
 run-bench-%: $(B)/bench-%$(EXE)
 	$(RUN) $<
 
+# Examples: examples/NAME/*.c linked with the port and the release library.
+$(B)/example-%$(EXE): $$(wildcard examples/%/*.c) $(PORT_OBJS) $(B)/libvor.a
+	$(CC) $(TEST_CFLAGS) $(wildcard examples/$*/*.c) $(PORT_OBJS) $(B)/libvor.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+run-example-%: $(B)/example-%$(EXE)
+	$(RUN) $<
+
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)
 $(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) $(B)/libvor.a
@@ -111,6 +120,12 @@ $(B)/lib $(B)/checked $(B)/tests $(B)/port:
 	@mkdir -p $@
 
 # ---------------------------------------------------------------- top level
+
+# The main job: the example firmware on the emulated Cortex-M3.
+DEMO_PORT ?= cortex-m3
+demo:
+	@tools/install-toolchain.sh
+	@$(MAKE) -s PORT=$(DEMO_PORT) run-example-exact_predicates
 
 test:
 	@tools/install-toolchain.sh

@@ -3,8 +3,8 @@
 #
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
 # the same tests as firmware under QEMU for every target, and the check
-# that the Cortex-M0 and Cortex-M3 libraries call no libc or soft-float
-# routine (checked on every target). Each suite ends with "N passed, N failed"; a suite that does not
+# that no target's library calls libc, a soft-float routine or anything
+# else outside itself. Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."

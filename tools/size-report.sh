@@ -67,7 +67,7 @@ for t in "$@"; do
     if ! make -s PORT="$t" lib >&2; then
         echo "size-report: $t: library build failed" >&2
         status=1
-        rows+=("$t|build failed|-|-")
+        rows+=("$t|-|-|-|build failed")
         continue
     fi
     rm -rf "$dir"
@@ -75,7 +75,7 @@ for t in "$@"; do
     if ! make -s PORT="$t" VOR_SIZE_DIR="$dir" --eval "$size_rules" vor-size-build >&2; then
         echo "size-report: $t: call-graph build failed" >&2
         status=1
-        rows+=("$t|build failed|-|-")
+        rows+=("$t|-|-|-|build failed")
         continue
     fi
     size_tool=$(make -s PORT="$t" VOR_SIZE_DIR="$dir" --eval "$size_rules" vor-size-tool)
@@ -101,16 +101,17 @@ for t in "$@"; do
     if [ $verbose -eq 1 ] && [ $rc -le 1 ]; then
         details+=("" "$t:" "$(python3 tools/stack-depth.py "$dir" 2>/dev/null || true)")
     fi
-    rows+=("$t|$((text + data))|$((data + bss))|$stack $function")
+    rows+=("$t|$((text + data))|$((data + bss))|$stack|$function")
 done
 
-printf '%-12s %12s %12s   %s\n' target "flash (B)" "static RAM (B)" "worst stack (B), deepest public call"
+format='%-12s %10s %15s %16s  %s\n'
+printf "$format" target "flash (B)" "static RAM (B)" "worst stack (B)" "deepest public call"
 for row in "${rows[@]}"; do
-    IFS='|' read -r t flash ram stack <<<"$row"
-    printf '%-12s %12s %12s   %s\n' "$t" "$flash" "$ram" "$stack"
+    IFS='|' read -r t flash ram stack function <<<"$row"
+    printf "$format" "$t" "$flash" "$ram" "$stack" "$function"
 done
-echo "flash = text+rodata+data, RAM = data+bss, of all of libvor.a (--gc-sections keeps less);" \
-     "stack = deepest chain of -fstack-usage frames below a public vor_ call, excluding the caller's frame and interrupts."
+echo "Whole libvor.a (--gc-sections keeps less): flash = text+rodata+data, RAM = data+bss;" \
+     "stack = deepest chain of -fstack-usage frames from a public vor_ call (caller and interrupts not included)."
 if [ ${#details[@]} -gt 0 ]; then
     printf '%s\n' "${details[@]}"
 fi
