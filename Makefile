@@ -125,19 +125,19 @@ $(B)/lib $(B)/checked $(B)/tests $(B)/port:
 DEMO_PORT ?= cortex-m3
 demo:
 	@tools/install-toolchain.sh
-	@$(MAKE) -s PORT=$(DEMO_PORT) run-example-exact_predicates
+	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-exact_predicates
 
 test:
 	@tools/install-toolchain.sh
-	@tools/run-tests.sh
+	+@tools/run-tests.sh
 
 size:
 	@tools/install-toolchain.sh
-	@tools/size-report.sh $(TARGETS)
+	+@tools/size-report.sh $(TARGETS)
 
 bench-predicates:
 	@tools/install-toolchain.sh
-	@tools/bench-predicates.sh
+	+@tools/bench-predicates.sh
 
 clean:
 	rm -rf build

@@ -2,6 +2,7 @@
 # run-tests.sh - everything `make test` runs, with one summary line at the end.
 #
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
+# the command-line tool,
 # the same tests as firmware under QEMU for every target, and the check
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself. Each suite ends with "N passed, N failed"; a suite that does not
@@ -56,6 +57,16 @@ suite() {
 
 suite host PORT=host
 suite host-sanitize PORT=host SANITIZE=1
+
+# The host command-line tool, against a Python big-integer oracle.
+cli_log="$logs/cli.log"
+if make -s -j"$jobs" PORT=host all >"$cli_log" 2>&1; then
+    python3 tests/cli/test_cli.py build/host/vor >>"$cli_log" 2>&1
+    record cli "$cli_log" $?
+else
+    record cli "$cli_log" 1
+fi
+
 for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
     suite "$target" PORT="$target"
 done

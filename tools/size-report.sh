@@ -43,6 +43,7 @@ fi
 # $(B)/lib/%.o rule, plus -fcallgraph-info=su (NAME.ci next to NAME.o), and
 # prints the port's size tool. Recipes expand after the Makefile is read,
 # so $(CC) and $(LIB_CFLAGS) are the Makefile's final values.
+# shellcheck disable=SC2016  # make's $(...), not the shell's
 size_rules='
 vor-size-objs := $(patsubst src/%.c,$(VOR_SIZE_DIR)/%.o,$(wildcard src/*.c))
 .PHONY: vor-size-build vor-size-tool
@@ -104,11 +105,11 @@ for t in "$@"; do
     rows+=("$t|$((text + data))|$((data + bss))|$stack|$function")
 done
 
-format='%-12s %10s %15s %16s  %s\n'
-printf "$format" target "flash (B)" "static RAM (B)" "worst stack (B)" "deepest public call"
+line() { printf '%-12s %10s %15s %16s  %s\n' "$@"; }
+line target "flash (B)" "static RAM (B)" "worst stack (B)" "deepest public call"
 for row in "${rows[@]}"; do
     IFS='|' read -r t flash ram stack function <<<"$row"
-    printf "$format" "$t" "$flash" "$ram" "$stack" "$function"
+    line "$t" "$flash" "$ram" "$stack" "$function"
 done
 echo "Whole libvor.a (--gc-sections keeps less): flash = text+rodata+data, RAM = data+bss;" \
      "stack = deepest chain of -fstack-usage frames from a public vor_ call (caller and interrupts not included)."
