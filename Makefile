@@ -95,6 +95,13 @@ $(TEST_EXE): $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a
 run-tests: $(TEST_EXE)
 	$(RUN) $(TEST_EXE)
 
+# Harness self-tests: programs that must fail (tools/run-tests.sh).
+$(B)/selftest-%$(EXE): tests/selftest/%.c $(B)/tests/harness.o $(PORT_OBJS)
+	$(CC) $(TEST_CFLAGS) $< $(B)/tests/harness.o $(PORT_OBJS) $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+run-selftest-%: $(B)/selftest-%$(EXE)
+	$(RUN) $<
+
 # Benchmarks link the release library, like a user's firmware would.
 BENCH_ROUNDS_host := 20000
 BENCH_CFLAGS := $(TEST_CFLAGS) -DBENCH_ROUNDS=$(or $(BENCH_ROUNDS_$(PORT)),8)

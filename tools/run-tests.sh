@@ -71,6 +71,39 @@ for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
     suite "$target" PORT="$target"
 done
 
+# The harness itself: on every port a failing check and a trap must end
+# the run with a non-zero status, so that no broken target can pass.
+harness() {
+    local log="$logs/harness.log" passed=0 failed=0 port status
+    : >"$log"
+    for port in host cortex-m0 cortex-m3 cortex-m4f riscv32; do
+        # make exits 2 for any failed program and names its status as "Error N"
+        make -s PORT="$port" run-selftest-failing_check >"$logs/harness-$port.out" 2>&1
+        status=$(grep -o 'Error [0-9]*' "$logs/harness-$port.out" | tail -n 1)
+        if [ "$status" = "Error 1" ] && grep -qx '0 passed, 1 failed' "$logs/harness-$port.out"; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL $port: a failing check ended with status $status" >>"$log"
+            failed=$((failed + 1))
+        fi
+        make -s PORT="$port" run-selftest-fault >"$logs/harness-$port.out" 2>&1
+        local exited=$?
+        status=$(grep -o 'Error [0-9]*' "$logs/harness-$port.out" | tail -n 1)
+        # targets: the port's fault handler prints "fatal:" and exits 99;
+        # host: the trap kills the process with a signal
+        if { [ "$port" = host ] && [ "$exited" != 0 ] && grep -q 'trapping now' "$logs/harness-$port.out"; } ||
+            { [ "$status" = "Error 99" ] && grep -q 'fatal:' "$logs/harness-$port.out"; }; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL $port: a trap ended with status $status" >>"$log"
+            failed=$((failed + 1))
+        fi
+    done
+    echo "$passed passed, $failed failed" >>"$log"
+    record harness "$log" 0
+}
+harness
+
 # The freestanding check, and a proof that it catches what it looks for.
 freestanding() {
     local log="$logs/freestanding.log" passed=0 failed=0 target nm
