@@ -21,9 +21,10 @@ ARCH_CFLAGS = -march=rv32imac -mabi=ilp32 -mcmodel=medany -ffreestanding \
               -ffunction-sections -fdata-sections
 
 PORT_SRCS = $(VOR_ROOT)port/riscv32/startup.c \
-            $(VOR_ROOT)port/riscv32/semihost.c \
+            $(VOR_ROOT)port/riscv32/semihost_call.c \
             $(VOR_ROOT)port/riscv32/counter.c \
-            $(VOR_ROOT)port/riscv32/mem.c
+            $(VOR_ROOT)port/common/semihost.c \
+            $(VOR_ROOT)port/common/mem.c
 
 FW_LDFLAGS = -nostdlib -nostartfiles -T $(VOR_ROOT)port/riscv32/link.ld \
              -Wl,--gc-sections

@@ -216,7 +216,7 @@ int vor_port_file_open(const char *path)
 {
     (void)path;
     return -1; /* TODO: semihosting SYS_OPEN mode "wb", see
-                  port/cortex-m/semihost.c */
+                  port/common/semihost.c */
 }
 
 /* Write all n bytes: 0 on success, -1 otherwise (n = 0 succeeds). */

@@ -27,9 +27,9 @@ ARCH_CFLAGS = -mcpu=cortex-m0plus -mthumb -ffreestanding \
 # example and benchmark program (never into the library): startup code and
 # vector table, the port.h functions, and memcpy/memset/memmove/memcmp/
 # strlen if no C library provides them (GCC emits calls to them even in
-# freestanding code; port/cortex-m/mem.c has portable weak ones).
+# freestanding code; port/common/mem.c has portable weak ones).
 PORT_SRCS = $(VOR_ROOT)port/template/port.c \
-            $(VOR_ROOT)port/cortex-m/mem.c
+            $(VOR_ROOT)port/common/mem.c
 
 # Link flags: your linker script, no C library or its startup files,
 # unused sections dropped; -lgcc for the compiler's helpers (64-bit

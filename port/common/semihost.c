@@ -1,22 +1,22 @@
 /*
- * port/riscv32/semihost.c - output, exit status and host files through
- * RISC-V semihosting: a0 = operation, a1 = argument block, and the trap
- * sequence
- *     slli x0, x0, 0x1f ; ebreak ; srai x0, x0, 7
- * in uncompressed (norvc) instructions that must not straddle a page,
- * hence the 16-byte alignment. Operations and blocks are ARM's.
+ * port/common/semihost.c - output, exit status and host files for every
+ * target, through semihosting (ARM's operations, which RISC-V reuses). The
+ * trap itself is the architecture's: vor__semihost_call in semihost.h.
  *
  * Under QEMU run with -semihosting-config enable=on,target=native:
  *   - SYS_OPEN ":tt" mode "w" gives the console handle; SYS_WRITE to it
- *     reaches QEMU's stdout (SYS_WRITE0 would reach its stderr).
+ *     reaches QEMU's stdout. (SYS_WRITE0 reaches QEMU's stderr instead, so
+ *     it is not used.)
  *   - SYS_EXIT_EXTENDED with {ADP_Stopped_ApplicationExit, code} makes
- *     QEMU exit with exactly `code`.
+ *     QEMU exit with exactly `code` (plain SYS_EXIT reports only 0 or 1).
  *   - SYS_OPEN of a relative path opens it relative to QEMU's working
  *     directory.
+ *
+ * On real hardware semihosting needs an attached debugger; without one the
+ * trap faults. Replace this file for such a board.
  */
 #include "../port.h"
-
-#include "riscv32.h"
+#include "semihost.h"
 
 #define SYS_OPEN 0x01u
 #define SYS_CLOSE 0x02u
@@ -25,25 +25,6 @@
 #define ADP_STOPPED_APPLICATION_EXIT 0x20026u
 #define OPEN_MODE_W 4u  /* "w"  */
 #define OPEN_MODE_WB 5u /* "wb" */
-
-/* uint32_t vor__rv_semihost(uint32_t op, const void *arg): an ordinary
- * call, so the compiler already assumes it reads and writes memory. */
-uint32_t vor__rv_semihost(uint32_t op, const void *arg);
-__asm__(
-    "  .pushsection .text.vor__rv_semihost,\"ax\",@progbits\n"
-    "  .balign 16\n"
-    "  .globl vor__rv_semihost\n"
-    "  .type vor__rv_semihost, @function\n"
-    "vor__rv_semihost:\n"
-    "  .option push\n"
-    "  .option norvc\n"
-    "  slli x0, x0, 0x1f\n"
-    "  ebreak\n"
-    "  srai x0, x0, 7\n"
-    "  .option pop\n"
-    "  ret\n"
-    "  .size vor__rv_semihost, . - vor__rv_semihost\n"
-    "  .popsection\n");
 
 static size_t string_length(const char *s)
 {
@@ -62,8 +43,8 @@ static int semihost_open(const char *path, uint32_t mode)
     block[0] = (uint32_t)(uintptr_t)path;
     block[1] = mode;
     block[2] = (uint32_t)string_length(path);
-    handle = vor__rv_semihost(SYS_OPEN, block);
-    if (handle > 0x7FFFFFFFu) {
+    handle = vor__semihost_call(SYS_OPEN, block);
+    if (handle == 0xFFFFFFFFu || handle > 0x7FFFFFFFu) {
         return -1;
     }
     return (int)handle;
@@ -76,11 +57,11 @@ static int semihost_write(int handle, const void *data, size_t n)
     block[0] = (uint32_t)handle;
     block[1] = (uint32_t)(uintptr_t)data;
     block[2] = (uint32_t)n;
-    return vor__rv_semihost(SYS_WRITE, block) == 0u ? 0 : -1;
+    return vor__semihost_call(SYS_WRITE, block) == 0u ? 0 : -1;
 }
 
 /* The console handle, opened on first use so that output works even
- * before vor_port_init() (e.g. from the trap handler). -1: not yet open. */
+ * before vor_port_init() (e.g. from a fault handler). -1: not yet open. */
 static int console = -1;
 
 void vor_port_write(const char *text, size_t n)
@@ -102,17 +83,8 @@ void vor_port_exit(int status)
     uint32_t block[2];
     block[0] = ADP_STOPPED_APPLICATION_EXIT;
     block[1] = (uint32_t)status;
-    (void)vor__rv_semihost(SYS_EXIT_EXTENDED, block);
-    vor__rv_test_exit(status); /* not reached under semihosting */
-}
-
-void vor__rv_test_exit(int status)
-{
-    uint32_t code = (uint32_t)status & 0xFFFFu;
-    VOR_RV_VIRT_TEST = code == 0u ? 0x5555u : (code << 16) | 0x3333u;
-    for (;;) { /* not reached on QEMU virt */
-        __asm__ volatile("wfi");
-    }
+    (void)vor__semihost_call(SYS_EXIT_EXTENDED, block);
+    vor__semihost_no_exit(status); /* not reached under semihosting */
 }
 
 int vor_port_file_open(const char *path)
@@ -138,5 +110,5 @@ int vor_port_file_close(int handle)
         return -1;
     }
     block[0] = (uint32_t)handle;
-    return vor__rv_semihost(SYS_CLOSE, block) == 0u ? 0 : -1;
+    return vor__semihost_call(SYS_CLOSE, block) == 0u ? 0 : -1;
 }

@@ -1,5 +1,5 @@
 /*
- * port/riscv32/mem.c - memcpy, memmove, memset, memcmp and strlen for
+ * port/common/mem.c - memcpy, memmove, memset, memcmp and strlen for
  * firmware linked with -nostdlib.
  *
  * GCC may emit calls to these even in freestanding code (structure copies,
