@@ -1,7 +1,7 @@
 /*
  * port/template/port.c - starting point for running vor's tests, examples
  * and benchmarks on a new target. Copy port/template/ to port/<target>/,
- * fill in every TODO, and point port.mk at the copies.
+ * fill in every "PORT:" marker, and point port.mk at the copies.
  *
  * The library itself (src/, include/) needs no port: it is pure
  * computation over caller memory. Only the programs that exercise it call
@@ -66,7 +66,7 @@ void Reset_Handler(void)
     for (dst = __bss_start; dst < __bss_end; dst++) {
         *dst = 0u;
     }
-    /* TODO: FPU on (CPACR) if ARCH_CFLAGS selects a hard-float ABI. */
+    /* PORT: FPU on (CPACR) if ARCH_CFLAGS selects a hard-float ABI. */
     vor_port_exit(main());
 }
 
@@ -106,7 +106,7 @@ const struct vectors vectors = {
  * Output.
  * ------------------------------------------------------------------- */
 
-/* TODO: send one byte, waiting while the transmitter is busy. */
+/* PORT: send one byte, waiting while the transmitter is busy. */
 static void uart_put(char c)
 {
     (void)c;
@@ -122,7 +122,7 @@ void vor_port_init(void)
         return;
     }
     started = 1;
-    /* TODO: clocks, UART pins and baud rate. */
+    /* PORT: clocks, UART pins and baud rate. */
     /* The counter: DWT CYCCNT counts core cycles on Cortex-M3/M4/M7
      * silicon (it reads 0 under QEMU: use SysTick there, see
      * port/cortex-m/systick.c). Enable trace, then the counter. */
@@ -166,7 +166,7 @@ void vor_port_exit(int status)
         uart_put(digits[--n]);
     }
     uart_put('\n');
-    for (;;) { /* TODO: or reset, or bkpt for a debugger */
+    for (;;) { /* PORT: or reset, or bkpt for a debugger */
     }
 }
 
@@ -215,7 +215,7 @@ uint64_t vor_port_counter(void)
 int vor_port_file_open(const char *path)
 {
     (void)path;
-    return -1; /* TODO: semihosting SYS_OPEN mode "wb", see
+    return -1; /* PORT: semihosting SYS_OPEN mode "wb", see
                   port/common/semihost.c */
 }
 
