@@ -111,7 +111,7 @@ int main(void)
     vor_port_init();
     test_rng_t rng;
     test_rng_seed(&rng, 2024);
-    vor_predicate_stats_t stats = {{0}, {0}, {0}, 0, 0};
+    vor_predicate_stats_t stats = {0};
     static const struct {
         const char *tier;
         int32_t span;
@@ -124,7 +124,7 @@ int main(void)
         }
         run("incircle", tiers[t].tier, INCIRCLE, &stats);
     }
-    vor_predicate_stats_t degenerate = {{0}, {0}, {0}, 0, 0};
+    vor_predicate_stats_t degenerate = {0};
     make_degenerate(&rng, 1 << 20, true);
     run("orient2d_sos", "collinear", ORIENT2D_SOS, &degenerate);
     make_degenerate(&rng, 1 << 20, false);

@@ -86,6 +86,11 @@ typedef struct vor_predicate_stats {
     uint32_t closer[VOR_TIERS];
     uint32_t orient2d_perturbed; /* _sos calls decided by the perturbation */
     uint32_t incircle_perturbed;
+    uint32_t closer_perturbed;
+#ifdef VOR_FAULT_INJECTION
+    uint32_t fault_rate; /* test builds: P(wrong _sos sign) = fault_rate / 2^32 */
+    uint64_t fault_state; /* their random generator; nonzero */
+#endif
 } vor_predicate_stats_t;
 
 /*
@@ -132,6 +137,167 @@ int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
  */
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats);
+
+/*
+ * vor_closer of sites[q], sites[a], sites[b] under the symbolic
+ * perturbation: -1 (q~ closer to a~) or 1, never 0. Distinct indices.
+ * Used to find the site nearest to a point that coincides with one.
+ */
+int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
+                   vor_predicate_stats_t *stats);
+
+
+/* ================================================================== */
+/* The diagram: Delaunay triangulation / Voronoi diagram in an arena  */
+/* ================================================================== */
+
+/* Errors: every call returns VOR_OK (0) or one of these, and a failing
+ * call changes nothing (the diagram and arena are exactly as before). */
+enum vor_error {
+    VOR_OK = 0,
+    VOR_ERR_ARG = -1,       /* a NULL pointer, an out-of-range value */
+    VOR_ERR_NOMEM = -2,     /* the arena is smaller than VOR_ARENA_BYTES */
+    VOR_ERR_ALIGN = -3,     /* the arena is not VOR_ARENA_ALIGN-aligned */
+    VOR_ERR_FULL = -4,      /* max_sites sites are in the diagram already */
+    VOR_ERR_DUPLICATE = -5, /* the point is a site already (its id is returned) */
+    VOR_ERR_INVALID = -6    /* vor_validate found a broken invariant */
+};
+
+#if VOR_INDEX_BITS == 16
+typedef uint16_t vor_index_t;
+#define VOR_MAX_SITES 32767u
+#elif VOR_INDEX_BITS == 32
+typedef uint32_t vor_index_t;
+#define VOR_MAX_SITES 2147483646u
+#else
+#error "VOR_INDEX_BITS must be 16 or 32"
+#endif
+
+/* One triangle of the mesh: three vertices counterclockwise and the three
+ * neighbours, neighbour i across the edge opposite vertex i. A vertex is a
+ * site index or the vertex at infinity that closes the convex hull. */
+#define VOR_TRIANGLE_BYTES (6u * sizeof(vor_index_t))
+
+/* Arena bytes for a diagram of up to n sites (a constant expression):
+ * the coordinates, and one triangle for each of the 2n - 2 triangles a
+ * triangulation of n sites has once the hull is closed by a vertex at
+ * infinity (Euler's formula, seed 003 section 1.2). No other memory is
+ * used, and vor_build takes its scratch space from the same arena. */
+#define VOR_ARENA_BYTES(n)                                                     \
+    ((size_t)(n) * sizeof(vor_point_t) +                                       \
+     ((n) >= 2u ? 2u * (size_t)(n) - 2u : 0u) * VOR_TRIANGLE_BYTES)
+
+/* The arena's required alignment (a static uint8_t array needs
+ * _Alignas(4) or __attribute__((aligned(4))); malloc's is enough). */
+#define VOR_ARENA_ALIGN 4u
+
+struct vor__triangle;
+
+/* The diagram object: owned by the caller, fields private. */
+typedef struct vor {
+    vor_point_t *sites;                /* [max_sites], in the arena */
+    struct vor__triangle *triangles;   /* [2 max_sites - 2], in the arena */
+    uint32_t max_sites;
+    uint32_t site_count;   /* site ids handed out: 0 .. site_count - 1 */
+    uint32_t vertex_count; /* of those, the ones in the mesh (not duplicates) */
+    uint32_t last_site;    /* where the next search starts by default */
+    vor_predicate_stats_t stats; /* predicate tiers of every call on it */
+} vor_t;
+
+/*
+ * Prepares d to hold up to max_sites sites in arena.
+ *   VOR_ERR_ARG    d or arena NULL, max_sites 0 or > VOR_MAX_SITES
+ *   VOR_ERR_ALIGN  arena not aligned to VOR_ARENA_ALIGN
+ *   VOR_ERR_NOMEM  arena_bytes < VOR_ARENA_BYTES(max_sites)
+ * Writes only *d (never the arena). The arena must stay valid and
+ * untouched by the caller while d is in use.
+ */
+int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites);
+
+/*
+ * Adds the site (x, y); its id, the next unused one, goes to *site (may be
+ * NULL). The search for its place starts at the last inserted site;
+ * vor_insert_near starts at site `hint` instead (any existing site id).
+ *   VOR_ERR_ARG        d NULL, or hint not a site in the mesh
+ *   VOR_ERR_FULL       max_sites ids are used
+ *   VOR_ERR_DUPLICATE  (x, y) is a site already: its id goes to *site
+ * Cost: the walk from the hint plus O(changed triangles), O(1) expected for
+ * a nearby hint; no recursion, no memory beyond the arena.
+ */
+int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site);
+int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
+
+/* The order in which vor_build inserts the sites. */
+enum vor_order {
+    VOR_ORDER_QUADTREE = 0, /* bucket quadtree order, seed 003 section 2.3 */
+    VOR_ORDER_INPUT = 1     /* as given (a baseline for benchmarks) */
+};
+
+typedef struct vor_build_options {
+    enum vor_order order;
+} vor_build_options_t;
+
+/*
+ * Replaces the contents of d by the diagram of points[0 .. n): site i is
+ * points[i]. A point equal to an earlier one is not a separate site:
+ * duplicate_of[i] (if the array is given, n entries) receives the id of
+ * its first occurrence, and i for every other site. options may be NULL
+ * (VOR_ORDER_QUADTREE).
+ *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown option
+ *   VOR_ERR_FULL n > max_sites
+ * Expected O(n) time for uniform points; scratch space comes from the
+ * arena's unused part, nothing else is touched.
+ */
+int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
+              const vor_build_options_t *options, uint32_t *duplicate_of);
+
+/* What vor_validate checks, in this order; the first failure is reported. */
+enum vor_check {
+    VOR_CHECK_COUNTS,      /* 2 v - 2 triangles for v sites in the mesh */
+    VOR_CHECK_VERTICES,    /* every vertex a valid site or infinity, distinct */
+    VOR_CHECK_NEIGHBOURS,  /* neighbour links symmetric, edges shared */
+    VOR_CHECK_SITES,       /* every site present, its triangles one fan */
+    VOR_CHECK_ORIENTATION, /* every finite triangle counterclockwise */
+    VOR_CHECK_DELAUNAY     /* every edge locally Delaunay (and a convex hull) */
+};
+
+typedef struct vor_violation {
+    enum vor_check check; /* the first check that failed */
+    uint32_t triangle;    /* the triangle slot where it failed */
+    uint32_t site;        /* the site involved, where there is one */
+} vor_violation_t;
+
+/*
+ * Checks every invariant of the mesh: returns VOR_OK, or VOR_ERR_INVALID
+ * with the first violation in *violation (may be NULL); VOR_ERR_ARG if d
+ * is NULL. The first four checks are topological and hold even when the
+ * arithmetic is wrong; the last two hold with exact arithmetic. O(n),
+ * read-only (its predicate calls are not counted in d->stats).
+ */
+int vor_validate(const vor_t *d, vor_violation_t *violation);
+
+typedef struct vor_memory {
+    size_t arena_bytes;    /* VOR_ARENA_BYTES(max_sites) */
+    size_t used_bytes;     /* what the current sites and triangles occupy */
+    uint32_t sites;        /* ids in use */
+    uint32_t triangles;    /* triangles, including those at infinity */
+    uint32_t bytes_per_site_x100; /* used_bytes / sites, in hundredths */
+} vor_memory_t;
+
+/* Memory figures of d. VOR_ERR_ARG if d or memory is NULL. */
+int vor_memory(const vor_t *d, vor_memory_t *memory);
+
+/* Iterator over the finite Delaunay triangles (state on the caller's
+ * stack): each as three site ids, counterclockwise under the perturbation
+ * (collinear sites give triangles of zero area). */
+typedef struct vor_triangle_iter {
+    const vor_t *d;
+    uint32_t next_slot;
+} vor_triangle_iter_t;
+
+void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d);
+/* Returns 1 and fills ids[3] while triangles remain, then 0. */
+int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3]);
 
 #ifdef __cplusplus
 }

@@ -32,4 +32,21 @@
 #endif
 #endif
 
+/* VOR_INDEX_BITS: width of site and triangle indices, 16 or 32. 16 halves
+ * the mesh memory (32 bytes per site, coordinates included) and allows up
+ * to 32,767 sites; 32 allows up to 2^31 - 2. Default: 16 where pointers are
+ * 32 bits or narrower (microcontrollers), 32 on 64-bit hosts. */
+#ifndef VOR_INDEX_BITS
+#if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ > 4
+#define VOR_INDEX_BITS 32
+#else
+#define VOR_INDEX_BITS 16
+#endif
+#endif
+
+/* VOR_FAULT_INJECTION: test builds only. The perturbed predicates that the
+ * diagram uses return a wrong sign with a probability set per diagram
+ * (vor_predicate_stats_t.fault_rate), to show that the topology survives
+ * any arithmetic. Never define it in a release build. */
+
 #endif

@@ -483,3 +483,49 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
     /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */
     return (top % 2 == 0) ? -sign : sign;
 }
+
+/*
+ * vor_closer under the perturbation. With d_i the move of site i,
+ *
+ *   |q~ - a~|^2 - |q~ - b~|^2 = D + 2 (b - a).d_q - 2 (q - a).d_a
+ *       + 2 (q - b).d_b + |d_a|^2 - |d_b|^2 - 2 d_q.d_a + 2 d_q.d_b
+ *
+ * (D the exact value), coordinate by coordinate. In increasing order of
+ * eps exponents the first terms are those of the site L with the smallest
+ * index: its dy term, its dy^2 term, its dx term, then the middle site M's
+ * dy term and the product of M's and L's dy. If L is a or b, its dy^2
+ * coefficient (+1 for a, -1 for b) ends the sequence; if L is q, its own
+ * squares cancel, and M's dy product with L's (-2 for a, +2 for b) ends it.
+ */
+int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
+                   vor_predicate_stats_t *stats)
+{
+    const vor_point_t *pq = &sites[q], *pa = &sites[a], *pb = &sites[b];
+    int sign = vor_closer(pq, pa, pb, stats);
+    if (sign != 0) {
+        return sign;
+    }
+    COUNT(stats, closer_perturbed);
+    VOR_ASSERT(q != a && q != b && a != b);
+    if (a < q || b < q) {
+        bool a_first = a < b;
+        /* L = a: -2 (qy - ay), then +1; L = b: 2 (qy - by), then -1 */
+        int64_t coefficient = a_first ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
+        sign = sign_of(coefficient);
+        return (sign != 0) ? sign : (a_first ? 1 : -1);
+    }
+    /* L = q: 2 (by - ay), 2 (bx - ax), then M's dy and the dy product */
+    sign = sign_of((int64_t)pb->y - pa->y);
+    if (sign == 0) {
+        sign = sign_of((int64_t)pb->x - pa->x);
+    }
+    if (sign == 0) {
+        bool a_middle = a < b;
+        int64_t coefficient = a_middle ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
+        sign = sign_of(coefficient);
+        if (sign == 0) {
+            sign = a_middle ? -1 : 1;
+        }
+    }
+    return sign;
+}

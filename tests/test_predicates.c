@@ -66,7 +66,7 @@ static void check_vectors(void)
     static const unsigned swap01[4] = {1, 0, 2, 3};   /* one transposition */
     static const unsigned swap12[4] = {0, 2, 1, 3};   /* closer: a <-> b */
     static const unsigned rotate[4] = {1, 2, 0, 3};   /* even permutation */
-    vor_predicate_stats_t stats = {{0}, {0}, {0}, 0, 0};
+    vor_predicate_stats_t stats = {0};
     unsigned long calls[3] = {0, 0, 0}, zeros[3] = {0, 0, 0};
     unsigned long families[PF_FAMILIES] = {0};
     unsigned long vector_failures = 0;

@@ -5,12 +5,14 @@
 # malloc, ...), no soft-float routines (__aeabi_f*, __aeabi_d*, __addsf3, ...)
 # and no other compiler runtime helper either, so it links into any firmware
 # with no surprises. Any undefined symbol in ARCHIVE fails the check; the
-# message says which kind each one is. Also fails on floating-point sections
-# or attributes that say the objects use an FPU calling convention for data.
+# message says which kind each one is.
 set -u
 nm_tool=$1
 archive=$2
-undefined=$("$nm_tool" -u "$archive" 2>/dev/null | awk 'NF == 2 && $1 == "U" { print $2 }' | sort -u)
+# undefined in some object and defined in none: calls leaving the library
+defined=$("$nm_tool" --defined-only "$archive" 2>/dev/null | awk 'NF == 3 { print $3 }' | sort -u)
+undefined=$("$nm_tool" -u "$archive" 2>/dev/null | awk 'NF == 2 && $1 == "U" { print $2 }' | sort -u |
+    comm -23 - <(printf '%s\n' "$defined"))
 status=0
 for symbol in $undefined; do
     case "$symbol" in

@@ -55,7 +55,7 @@ int main(void)
         {cx - 1069469830, cy + 0},
         {cx + 641681898, cy - 855575864},
     };
-    vor_predicate_stats_t stats = {{0}, {0}, {0}, 0, 0};
+    vor_predicate_stats_t stats = {0};
     print_sign("incircle of four cocircular points near 2^31:          ",
                vor_incircle(&circle[0], &circle[1], &circle[2], &circle[3], &stats));
     /* moving the fourth point one unit outward puts it outside */

@@ -1,0 +1,403 @@
+/*
+ * incremental.c - the topology-oriented incremental builder (Sugihara and
+ * Iri, seed 003 sections 2.2-3.1): dynamic insertion and the batch build.
+ *
+ * Inserting site p deletes the Voronoi vertices (Delaunay triangles) that
+ * are closer to p than to their own sites and fills the hole with the
+ * triangles around p. Here that is done in place, without a stack:
+ *
+ *   1. locate: walk to the triangle containing p; its Voronoi vertex is
+ *      deleted first (seed 003 section 3.1 (I));
+ *   2. split that triangle into three around p;
+ *   3. walk once around p's star. Across each star edge lies a triangle u
+ *      whose Voronoi vertex is a candidate for deletion: it is deleted,
+ *      i.e. the edge is flipped so that u joins the star, only if
+ *        (a) the deleted set stays a tree: u's far vertex c is not on the
+ *            star yet (seed 003 section 3.1 (II)(a)); and
+ *        (b) the perturbed incircle puts p inside u's circle ((II)(b)).
+ *
+ * Condition (a) is the topological guard: a flip whose far vertex is
+ * already on the star would close a cycle of deleted Voronoi vertices (or
+ * pinch the star), so it is never made, and every flip keeps a valid
+ * triangulation of the sphere whatever the predicates answer. With exact
+ * arithmetic the guard never refuses a flip that (b) accepts, and the
+ * result is the unique Delaunay triangulation under the perturbation.
+ *
+ * Home slots: slot s always holds a triangle incident to site s (mesh.h);
+ * the split and each flip choose which new triangle goes to which of the
+ * slots they reuse so that this stays true.
+ */
+#include "mesh.h"
+
+/* Is slot a home slot of site v (v may be infinity, which has none)? */
+static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
+{
+    return slot == v && v < d->max_sites;
+}
+
+/* ------------------------------------------------------------------ */
+/* Marks: the star's vertices, for guard (a)                           */
+
+static bool marked(const vor_t *d, vor_index_t v, bool infinity_marked)
+{
+    return (v == VOR__INFINITE) ? infinity_marked
+                                : (d->triangles[v].v[0] & VOR__MARK) != 0u;
+}
+
+static void set_mark(vor_t *d, vor_index_t v, bool on, bool *infinity_marked)
+{
+    if (v == VOR__INFINITE) {
+        *infinity_marked = on;
+    } else if (on) {
+        d->triangles[v].v[0] = (vor_index_t)(d->triangles[v].v[0] | VOR__MARK);
+    } else {
+        d->triangles[v].v[0] = (vor_index_t)(d->triangles[v].v[0] & ~VOR__MARK);
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Locate                                                              */
+
+vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t slot = start;
+    /* With exact predicates the visibility walk in a Delaunay triangulation
+     * never revisits a triangle (Edelsbrunner), so it ends within the
+     * triangle count; the bound only matters if the predicates lie. */
+    uint32_t limit = vor__triangle_count(d->vertex_count);
+    unsigned first = 0;
+    for (uint32_t step = 0; step <= limit; step++) {
+        const vor__tri_t *t = &tri[slot];
+        /* an exact zero among this triangle's tests shows in the counter */
+        uint32_t perturbed = d->stats.orient2d_perturbed;
+        *on_line = false;
+        unsigned infinite = vor__vertex_index(t, VOR__INFINITE);
+        if (infinite != 3u) {
+            /* outside the hull edge (a, b): found; else step inside */
+            vor_index_t a = vor__vertex(t, vor__next(infinite));
+            vor_index_t b = vor__vertex(t, vor__prev(infinite));
+            if (vor__orient(d, a, b, p) > 0) {
+                *on_line = d->stats.orient2d_perturbed != perturbed;
+                return slot;
+            }
+            slot = t->n[infinite];
+            continue;
+        }
+        /* leave through the first edge with p strictly outside; starting
+         * at a rotating edge keeps a lying predicate from pinning the walk */
+        first = vor__next(first);
+        unsigned i = first;
+        bool moved = false;
+        do {
+            vor_index_t a = vor__vertex(t, vor__next(i));
+            vor_index_t b = vor__vertex(t, vor__prev(i));
+            if (vor__orient(d, a, b, p) < 0) {
+                slot = t->n[i];
+                moved = true;
+                break;
+            }
+            i = vor__next(i);
+        } while (i != first);
+        if (!moved) {
+            *on_line = d->stats.orient2d_perturbed != perturbed;
+            return slot;
+        }
+    }
+    *on_line = true; /* only if the predicates lie: take the careful path */
+    return slot;
+}
+
+uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p)
+{
+    vor__tri_t *tri = d->triangles;
+    uint32_t site = from;
+    /* each move is to a strictly closer site (a total order under the
+     * perturbation), so at most one visit per site */
+    for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
+        uint32_t best = site;
+        vor_index_t slot = (vor_index_t)site;
+        /* the fan around `site` from its home slot, each neighbour once */
+        for (uint32_t k = 0; k <= d->vertex_count; k++) {
+            const vor__tri_t *t = &tri[slot];
+            unsigned i = vor__vertex_index(t, (vor_index_t)site);
+            vor_index_t next = vor__vertex(t, vor__next(i));
+            if (next != VOR__INFINITE && vor__closer(d, p, next, best) < 0) {
+                best = next;
+            }
+            slot = t->n[vor__prev(i)]; /* across (site, next): counterclockwise */
+            if (slot == (vor_index_t)site) {
+                break;
+            }
+        }
+        if (best == site) {
+            return site;
+        }
+        site = best;
+    }
+    return site;
+}
+
+/* ------------------------------------------------------------------ */
+/* Updating the mesh                                                   */
+
+/* In triangle `slot`, point the link across edge (a, b) at `to`. */
+static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
+                   vor_index_t to)
+{
+    vor__tri_t *t = &tri[slot];
+    for (unsigned i = 0; i < 3u; i++) {
+        vor_index_t v = vor__vertex(t, i);
+        if (v != a && v != b) {
+            t->n[i] = to;
+            return;
+        }
+    }
+}
+
+void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t sa = (vor_index_t)a, sb = (vor_index_t)b;
+    /* fresh slots: clear any mark bits left by earlier contents */
+    tri[a].v[0] = 0;
+    tri[b].v[0] = 0;
+    vor__tri_set(&tri[a], sa, sb, VOR__INFINITE, sb, sb, sb);
+    vor__tri_set(&tri[b], sb, sa, VOR__INFINITE, sa, sa, sa);
+}
+
+/* Flips the edge opposite p in star triangle `x_slot` = (p, x, y) with
+ * its neighbour (y, x, c): the triangles become (p, x, c) and (p, c, y).
+ * Returns the slot of (p, x, c). `apex` is c's index in the neighbour. */
+static vor_index_t flip(vor_t *d, vor_index_t x_slot, unsigned apex)
+{
+    vor__tri_t *tri = d->triangles;
+    vor__tri_t *t = &tri[x_slot];
+    vor_index_t p = vor__vertex(t, 0), x = t->v[1], y = t->v[2];
+    vor_index_t y_slot = t->n[0], nx = t->n[1], ny = t->n[2];
+    vor__tri_t *u = &tri[y_slot];
+    vor_index_t c = vor__vertex(u, apex);
+    vor_index_t across_xc = u->n[vor__next(apex)];
+    vor_index_t across_cy = u->n[vor__prev(apex)];
+    /* keep home slots home: (p, x, c) holds x, (p, c, y) holds y, both c */
+    vor_index_t s1 = x_slot, s2 = y_slot;
+    if (is_home(d, x_slot, y) || is_home(d, y_slot, x)) {
+        s1 = y_slot;
+        s2 = x_slot;
+    }
+    relink(tri, across_xc, x, c, s1);
+    relink(tri, across_cy, c, y, s2);
+    relink(tri, ny, p, x, s1);
+    relink(tri, nx, y, p, s2);
+    vor__tri_set(&tri[s1], p, x, c, across_xc, s2, ny);
+    vor__tri_set(&tri[s2], p, c, y, across_cy, nx, s1);
+    return s1;
+}
+
+void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t sp = (vor_index_t)p;
+    vor__tri_t *r = &tri[root];
+    vor_index_t a = vor__vertex(r, 0), b = r->v[1], c = r->v[2];
+    vor_index_t na = r->n[0], nb = r->n[1], nc = r->n[2];
+
+    /* split into A = (p, b, c), B = (p, c, a), C = (p, a, b) in the root's
+     * slot, p's home slot and one new slot, the root's slot going to a
+     * triangle that holds the site it is home to */
+    vor_index_t extra = (vor_index_t)(d->max_sites + d->vertex_count - 2u);
+    vor_index_t sa = root, sb = sp, sc = extra;
+    if (is_home(d, root, a)) { /* A lacks a; C = (p, a, b) takes the slot */
+        sa = extra;
+        sc = root;
+    }
+    tri[sp].v[0] = 0; /* fresh slots: no stale mark bits */
+    tri[extra].v[0] = 0;
+    relink(tri, na, b, c, sa);
+    relink(tri, nb, c, a, sb);
+    relink(tri, nc, a, b, sc);
+    vor__tri_set(&tri[sa], sp, b, c, na, sb, sc);
+    vor__tri_set(&tri[sb], sp, c, a, nb, sc, sa);
+    vor__tri_set(&tri[sc], sp, a, b, nc, sa, sb);
+
+    /* guard (a) marks: the star's vertices */
+    bool infinity_marked = false;
+    set_mark(d, a, true, &infinity_marked);
+    set_mark(d, b, true, &infinity_marked);
+    set_mark(d, c, true, &infinity_marked);
+
+    /* one counterclockwise pass around p. A refused edge stays refused
+     * (its far triangle is not in conflict, or its far vertex is marked,
+     * and marks only accumulate), so the pass ends when as many edges in
+     * a row were refused as the star has; every flip uses up a triangle
+     * not on the star, so the loop ends even if the predicates lie. */
+    vor_index_t slot = sa;
+    uint32_t star = 3, refused = 0;
+    while (refused < star) {
+        vor__tri_t *t = &tri[slot];
+        vor__tri_t *u = &tri[t->n[0]];
+        unsigned apex = vor__next(vor__vertex_index(u, t->v[1])); /* u = (y, x, c) */
+        vor_index_t far = vor__vertex(u, apex);
+        if (!marked(d, far, infinity_marked) && vor__conflicts(d, u, p)) {
+            slot = flip(d, slot, apex);
+            set_mark(d, far, true, &infinity_marked);
+            star++;
+        } else {
+            refused++;
+            slot = t->n[1]; /* next counterclockwise: across (y, p) */
+        }
+    }
+    /* clear the marks: each star vertex is v[1] of one star triangle */
+    for (uint32_t k = 0; k < star; k++) {
+        set_mark(d, tri[slot].v[1], false, &infinity_marked);
+        slot = tri[slot].n[1];
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Public insertion                                                    */
+
+static bool same_point(const vor_point_t *a, const vor_point_t *b)
+{
+    return a->x == b->x && a->y == b->y;
+}
+
+int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site)
+{
+    if (d == NULL) {
+        return VOR_ERR_ARG;
+    }
+    if (d->vertex_count >= 1u &&
+        (hint >= d->site_count ||
+         (d->vertex_count >= 2u && vor__slot_empty(&d->triangles[hint])))) {
+        return VOR_ERR_ARG;
+    }
+    if (d->site_count >= d->max_sites) {
+        return VOR_ERR_FULL;
+    }
+    uint32_t p = d->site_count;
+    vor_point_t point = {x, y};
+    vor__tri_t *tri = d->triangles;
+
+    if (d->vertex_count == 0u) {
+        d->sites[p] = point;
+        tri[p].v[0] = 0;
+        tri[p].n[0] = VOR__NONE; /* in the mesh, but no triangle yet */
+    } else if (d->vertex_count == 1u) {
+        if (same_point(&d->sites[d->last_site], &point)) {
+            if (site != NULL) {
+                *site = d->last_site;
+            }
+            return VOR_ERR_DUPLICATE;
+        }
+        d->sites[p] = point;
+        vor__make_edge(d, d->last_site, p);
+    } else {
+        /* find p's triangle first: a duplicate must change nothing, so the
+         * coordinates slot and the counters are restored in that case */
+        vor_point_t saved_point = d->sites[p];
+        vor_predicate_stats_t saved_stats;
+        vor__copy_stats(&saved_stats, &d->stats);
+        d->sites[p] = point;
+        bool on_line;
+        vor_index_t root = vor__locate(d, (vor_index_t)hint, p, &on_line);
+        /* strictly inside its triangle (or strictly outside the hull) p can
+         * only coincide with a vertex of it; on an edge line, degenerate
+         * thin triangles can put its twin elsewhere: find the nearest site */
+        uint32_t twin = VOR__NONE, corner = 0;
+        for (unsigned i = 0; i < 3u; i++) {
+            vor_index_t v = vor__vertex(&tri[root], i);
+            if (v != VOR__INFINITE) {
+                corner = v;
+                twin = same_point(&d->sites[v], &point) ? v : twin;
+            }
+        }
+        if (twin == VOR__NONE && on_line) {
+            uint32_t nearest = vor__nearest_site(d, corner, p);
+            twin = same_point(&d->sites[nearest], &point) ? nearest : twin;
+        }
+        if (twin != VOR__NONE) {
+            d->sites[p] = saved_point;
+            vor__copy_stats(&d->stats, &saved_stats);
+            if (site != NULL) {
+                *site = twin;
+            }
+            return VOR_ERR_DUPLICATE;
+        }
+        vor__insert_at(d, root, p);
+    }
+    d->site_count++;
+    d->vertex_count++;
+    d->last_site = p;
+    if (site != NULL) {
+        *site = p;
+    }
+    return VOR_OK;
+}
+
+int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site)
+{
+    if (d == NULL) {
+        return VOR_ERR_ARG;
+    }
+    return vor_insert_near(d, x, y, d->last_site, site);
+}
+
+/* ------------------------------------------------------------------ */
+/* Batch build                                                         */
+
+int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
+              const vor_build_options_t *options, uint32_t *duplicate_of)
+{
+    if (d == NULL || (points == NULL && n > 0u)) {
+        return VOR_ERR_ARG;
+    }
+    enum vor_order order = (options != NULL) ? options->order : VOR_ORDER_QUADTREE;
+    if (order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) {
+        return VOR_ERR_ARG;
+    }
+    if (n > d->max_sites) {
+        return VOR_ERR_FULL;
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        d->sites[s] = points[s];
+    }
+    d->site_count = n;
+    d->vertex_count = 0;
+    d->last_site = 0;
+    if (n <= 1u) {
+        d->vertex_count = n;
+        if (n == 1u && duplicate_of != NULL) {
+            duplicate_of[0] = 0;
+        }
+        return VOR_OK;
+    }
+    /* scratch in the triangle slots, the plan at their very end: triangles
+     * fill the slots from below and never reach a plan entry still to be
+     * read (6 v slot indices per inserted site v against 2 per remaining
+     * plan entry; docs/design.md, "arena") */
+    vor_index_t *base = (vor_index_t *)(void *)d->triangles;
+    size_t entries = (size_t)vor__triangle_count(d->max_sites) * 6u;
+    vor_index_t *plan = base + entries - 2u * (size_t)n;
+    uint32_t distinct = vor__plan(d, n, order, base, plan, duplicate_of);
+
+    vor__tri_t *tri = d->triangles;
+    for (uint32_t i = 0; i < n; i++) {
+        vor_index_t s = plan[2u * i], from = plan[2u * i + 1u];
+        if (i >= distinct) { /* a duplicate: its home slot stays empty */
+            tri[s].v[0] = 0;
+            tri[s].n[0] = VOR__NONE;
+            continue;
+        }
+        if (d->vertex_count == 1u) {
+            vor__make_edge(d, d->last_site, s);
+        } else if (d->vertex_count >= 2u) {
+            vor_index_t start = (from == VOR__NONE) ? (vor_index_t)d->last_site : from;
+            bool on_line;
+            vor__insert_at(d, vor__locate(d, start, s, &on_line), s);
+        }
+        d->vertex_count++;
+        d->last_site = s;
+    }
+    return VOR_OK;
+}

@@ -1,0 +1,303 @@
+/*
+ * insertion_order.c - which site vor_build inserts when, and from where
+ * its search starts: duplicate detection and the bucket quadtree order of
+ * seed 003 section 2.3.
+ *
+ * The bounding square of the sites is cut into 4^k buckets, k =
+ * floor(log4 n), so a bucket holds about one site. The buckets are ranked
+ * by the seed's recurrence for (I(r), J(r)): a quadtree order in which
+ * every run of 4^(k-l) consecutive buckets is one square of level l. Each
+ * square's representative is the first site in that order inside it (the
+ * seed's step (III), storing site numbers from the buckets up to the
+ * root). Sites are then inserted level by level from the root (step (IV)):
+ * a square's representative, unless its parent square already inserted
+ * it, with the search starting at the parent's representative, a site
+ * close by. The remaining sites of each bucket follow, starting at the
+ * bucket's representative. Every walk is then short, and insertion takes
+ * expected O(n) time for uniform sites.
+ *
+ * All scratch arrays live in the arena's still unused triangle slots
+ * (see vor__plan for the budget).
+ */
+#include "mesh.h"
+
+/* (x, y, id) order of sites: equal points end up adjacent, the smallest
+ * id (the first occurrence) first. */
+static bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
+{
+    const vor_point_t *p = &sites[a], *q = &sites[b];
+    if (p->x != q->x) {
+        return p->x < q->x;
+    }
+    if (p->y != q->y) {
+        return p->y < q->y;
+    }
+    return a < b;
+}
+
+static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
+                      uint32_t n)
+{
+    /* each step at least doubles root, so this ends */
+    for (;;) {
+        uint32_t child = 2u * root + 1u;
+        if (child >= n) {
+            return;
+        }
+        if (child + 1u < n && site_less(sites, ids[child], ids[child + 1u])) {
+            child++;
+        }
+        if (!site_less(sites, ids[root], ids[child])) {
+            return;
+        }
+        vor_index_t t = ids[root];
+        ids[root] = ids[child];
+        ids[child] = t;
+        root = child;
+    }
+}
+
+/* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place, no
+ * recursion (one bucket may hold every site when all are duplicates). */
+static void sort_sites(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
+{
+    if (n < 2u) {
+        return;
+    }
+    for (uint32_t i = n / 2u; i-- > 0u;) {
+        sift_down(sites, ids, i, n);
+    }
+    for (uint32_t end = n - 1u; end > 0u; end--) {
+        vor_index_t t = ids[0];
+        ids[0] = ids[end];
+        ids[end] = t;
+        sift_down(sites, ids, 0, end);
+    }
+}
+
+/* The seed's recurrence (seed 003 section 2.3, step (II)) for the cells
+ * (I(r), J(r)) of a 2^k x 2^k grid, r < 4^k. The seed prints I(r - k) in
+ * the first inner loop; I(r - m) is meant (with it the sequence visits
+ * every cell once, which tests check). */
+static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
+{
+    /* c = floor(2^k / 3) without a division: c(t+1) = 2 c(t) + (t odd) */
+    int32_t c = 0;
+    for (unsigned t = 0; t < k; t++) {
+        c = 2 * c + (int32_t)(t & 1u);
+    }
+    int32_t u = (k % 2u == 1u) ? 1 : -1; /* (-1)^(k+1) */
+    int32_t s = 2 * c + u;
+    uint32_t m = 1, r = 0;
+    cell_i[0] = (vor_index_t)c;
+    cell_j[0] = (vor_index_t)c;
+    for (unsigned t = 1; t <= k; t++) {
+        for (uint32_t p = 0; p < m; p++) {
+            r++;
+            cell_i[r] = (vor_index_t)(s - (int32_t)cell_i[r - m]);
+            cell_j[r] = cell_j[r - m];
+        }
+        m *= 2u;
+        for (uint32_t p = 0; p < m; p++) {
+            r++;
+            cell_i[r] = cell_i[r - m];
+            cell_j[r] = (vor_index_t)(s - (int32_t)cell_j[r - m]);
+        }
+        m *= 2u;
+        u *= -2;
+        s += u;
+    }
+}
+
+/* Small inputs: duplicates by comparing all pairs, input order. */
+static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
+                           uint32_t *duplicate_of)
+{
+    uint32_t count = 0, dups = 0;
+    vor_index_t previous = VOR__NONE;
+    for (uint32_t s = 0; s < n; s++) {
+        uint32_t first = s;
+        for (uint32_t e = 0; e < s && first == s; e++) {
+            if (d->sites[e].x == d->sites[s].x && d->sites[e].y == d->sites[s].y) {
+                first = e;
+            }
+        }
+        if (duplicate_of != NULL) {
+            duplicate_of[s] = first;
+        }
+        if (first == s) {
+            plan[2u * count] = (vor_index_t)s;
+            plan[2u * count + 1u] = previous;
+            previous = (vor_index_t)s;
+            count++;
+        } else {
+            dups++;
+        }
+    }
+    /* duplicates after the sites, flagged */
+    uint32_t at = count;
+    for (uint32_t s = 0; s < n && dups > 0u; s++) {
+        uint32_t first = s;
+        for (uint32_t e = 0; e < s && first == s; e++) {
+            if (d->sites[e].x == d->sites[s].x && d->sites[e].y == d->sites[s].y) {
+                first = e;
+            }
+        }
+        if (first != s) {
+            plan[2u * at] = (vor_index_t)s;
+            plan[2u * at + 1u] = (vor_index_t)(first | VOR__MARK);
+            at++;
+        }
+    }
+    return count;
+}
+
+uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
+                   vor_index_t *scratch, vor_index_t *plan, uint32_t *duplicate_of)
+{
+    if (n < 8u) {
+        return plan_small(d, n, plan, duplicate_of);
+    }
+    const vor_point_t *sites = d->sites;
+
+    /* grid: 2^k x 2^k buckets over the bounding square of side 2^shift */
+    unsigned k = 0;
+    while ((4ull << (2u * k)) <= n) {
+        k++;
+    }
+    int32_t xmin = sites[0].x, xmax = xmin, ymin = sites[0].y, ymax = ymin;
+    for (uint32_t s = 1; s < n; s++) {
+        xmin = (sites[s].x < xmin) ? sites[s].x : xmin;
+        xmax = (sites[s].x > xmax) ? sites[s].x : xmax;
+        ymin = (sites[s].y < ymin) ? sites[s].y : ymin;
+        ymax = (sites[s].y > ymax) ? sites[s].y : ymax;
+    }
+    uint64_t span = (uint64_t)((int64_t)xmax - xmin);
+    uint64_t span_y = (uint64_t)((int64_t)ymax - ymin);
+    span = (span_y > span) ? span_y : span;
+    unsigned shift = 0;
+    while ((span >> shift) != 0u) {
+        shift++;
+    }
+    uint32_t buckets = 1u << (2u * k);
+
+    /* scratch: 4 buckets + 2 n + 2 <= 6 n + 2 entries (mesh.h) */
+    vor_index_t *start = scratch;            /* [buckets + 1] */
+    vor_index_t *sorted = start + buckets + 1; /* [n] */
+    vor_index_t *rep = sorted + n;           /* [n] */
+    vor_index_t *cell_i = rep + n;           /* [buckets] */
+    vor_index_t *cell_j = cell_i + buckets;  /* [buckets] */
+    vor_index_t *next = cell_j + buckets;    /* [buckets + 1] */
+
+    /* counting sort of the sites into buckets */
+    for (uint32_t b = 0; b <= buckets; b++) {
+        start[b] = 0;
+    }
+#define BUCKET_OF(s)                                                           \
+    ((uint32_t)(((((uint64_t)((int64_t)sites[s].x - xmin)) << k) >> shift) << k) |   \
+     (uint32_t)((((uint64_t)((int64_t)sites[s].y - ymin)) << k) >> shift))
+    for (uint32_t s = 0; s < n; s++) {
+        start[BUCKET_OF(s) + 1u]++;
+    }
+    for (uint32_t b = 0; b < buckets; b++) {
+        start[b + 1u] = (vor_index_t)(start[b + 1u] + start[b]);
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        uint32_t b = BUCKET_OF(s);
+        sorted[start[b]] = (vor_index_t)s;
+        start[b]++;
+    }
+    for (uint32_t b = buckets; b > 0u; b--) { /* undo the cursor shift */
+        start[b] = start[b - 1u];
+    }
+    start[0] = 0;
+#undef BUCKET_OF
+
+    /* duplicates: equal points are adjacent after sorting a bucket */
+    for (uint32_t b = 0; b < buckets; b++) {
+        sort_sites(sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]));
+        for (uint32_t e = start[b]; e < start[b + 1u]; e++) {
+            vor_index_t s = sorted[e];
+            bool same = e > start[b] &&
+                        sites[sorted[e - 1u]].x == sites[s].x &&
+                        sites[sorted[e - 1u]].y == sites[s].y;
+            rep[s] = same ? rep[sorted[e - 1u]] : s;
+        }
+    }
+    if (duplicate_of != NULL) {
+        for (uint32_t s = 0; s < n; s++) {
+            duplicate_of[s] = rep[s];
+        }
+    }
+
+    uint32_t count = 0;
+    if (order == VOR_ORDER_INPUT) {
+        vor_index_t previous = VOR__NONE;
+        for (uint32_t s = 0; s < n; s++) {
+            if (rep[s] == s) {
+                plan[2u * count] = (vor_index_t)s;
+                plan[2u * count + 1u] = previous;
+                previous = (vor_index_t)s;
+                count++;
+            }
+        }
+    } else {
+        /* bucket rank r -> bucket id, and the first non-empty rank >= r */
+        quadtree_cells(k, cell_i, cell_j);
+        vor_index_t *bucket_at = cell_i; /* overwrites cell_i in place */
+        for (uint32_t r = 0; r < buckets; r++) {
+            bucket_at[r] = (vor_index_t)(((uint32_t)cell_i[r] << k) | cell_j[r]);
+        }
+        next[buckets] = (vor_index_t)buckets;
+        for (uint32_t r = buckets; r-- > 0u;) {
+            uint32_t b = bucket_at[r];
+            next[r] = (start[b + 1u] > start[b]) ? (vor_index_t)r : next[r + 1u];
+        }
+        /* representative of the square of ranks [r0, r0 + size), or NONE */
+#define SQUARE_SITE(r0, size)                                                  \
+        ((next[r0] < (r0) + (size)) ? sorted[start[bucket_at[next[r0]]]] : VOR__NONE)
+        for (unsigned level = 0; level <= k; level++) {
+            uint32_t size = 1u << (2u * (k - level));
+            for (uint32_t r0 = 0; r0 < buckets; r0 += size) {
+                vor_index_t s = SQUARE_SITE(r0, size);
+                if (s == VOR__NONE) {
+                    continue;
+                }
+                vor_index_t parent = VOR__NONE;
+                if (level > 0u) {
+                    uint32_t psize = size * 4u;
+                    parent = SQUARE_SITE(r0 & ~(psize - 1u), psize);
+                }
+                if (s != parent) {
+                    plan[2u * count] = s;
+                    plan[2u * count + 1u] = parent;
+                    count++;
+                }
+            }
+        }
+#undef SQUARE_SITE
+        /* the other sites of each bucket, from the bucket's representative */
+        for (uint32_t r = 0; r < buckets; r++) {
+            uint32_t b = bucket_at[r];
+            for (uint32_t e = start[b] + 1u; e < start[b + 1u]; e++) {
+                vor_index_t s = sorted[e];
+                if (rep[s] == s) {
+                    plan[2u * count] = s;
+                    plan[2u * count + 1u] = sorted[start[b]];
+                    count++;
+                }
+            }
+        }
+    }
+    /* the duplicates last, flagged with their first occurrence */
+    uint32_t at = count;
+    for (uint32_t s = 0; s < n; s++) {
+        if (rep[s] != s) {
+            plan[2u * at] = (vor_index_t)s;
+            plan[2u * at + 1u] = (vor_index_t)(rep[s] | VOR__MARK);
+            at++;
+        }
+    }
+    VOR_ASSERT(at == n);
+    return count;
+}

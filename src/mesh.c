@@ -1,0 +1,348 @@
+/*
+ * mesh.c - the diagram object: arena layout, the predicates as the mesh
+ * uses them, validation, memory figures and triangle iteration.
+ * The builders (incremental.c) change the mesh; this file only reads it.
+ */
+#include "mesh.h"
+
+int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
+{
+    if (d == NULL || arena == NULL || max_sites == 0u || max_sites > VOR_MAX_SITES) {
+        return VOR_ERR_ARG;
+    }
+    if (((uintptr_t)arena % VOR_ARENA_ALIGN) != 0u) {
+        return VOR_ERR_ALIGN;
+    }
+    if (arena_bytes < VOR_ARENA_BYTES(max_sites)) {
+        return VOR_ERR_NOMEM;
+    }
+    /* field by field: no structure copies, which can become memcpy calls */
+    d->sites = (vor_point_t *)arena;
+    /* the triangles follow the coordinates: 8-byte points keep them aligned */
+    d->triangles = (vor__tri_t *)(void *)(d->sites + max_sites);
+    d->max_sites = max_sites;
+    d->site_count = 0;
+    d->vertex_count = 0;
+    d->last_site = 0;
+    vor_predicate_stats_t zero;
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        zero.orient2d[t] = zero.incircle[t] = zero.closer[t] = 0;
+    }
+    zero.orient2d_perturbed = zero.incircle_perturbed = zero.closer_perturbed = 0;
+#ifdef VOR_FAULT_INJECTION
+    zero.fault_rate = 0;
+    zero.fault_state = 1;
+#endif
+    vor__copy_stats(&d->stats, &zero);
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Predicates as the mesh calls them                                   */
+
+#ifdef VOR_FAULT_INJECTION
+/* Test builds: a wrong sign with probability fault_rate / 2^32. */
+static int with_faults(vor_t *d, int sign)
+{
+    if (d->stats.fault_rate == 0u) {
+        return sign;
+    }
+    uint64_t x = d->stats.fault_state;
+    x ^= x << 13;
+    x ^= x >> 7;
+    x ^= x << 17;
+    d->stats.fault_state = x;
+    return ((uint32_t)(x >> 32) < d->stats.fault_rate) ? -sign : sign;
+}
+#else
+#define with_faults(d, sign) (sign)
+#endif
+
+int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c)
+{
+    return with_faults(d, vor_orient2d_sos(d->sites, a, b, c, &d->stats));
+}
+
+int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+{
+    return with_faults(d, vor_incircle_sos(d->sites, a, b, c, p, &d->stats));
+}
+
+int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
+{
+    return with_faults(d, vor_closer_sos(d->sites, p, a, b, &d->stats));
+}
+
+bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p)
+{
+    vor_index_t v0 = vor__vertex(t, 0), v1 = t->v[1], v2 = t->v[2];
+    /* a triangle at infinity (a, b, inf): its "circle" is the open half
+     * plane beyond the hull edge ab, left of a -> b */
+    if (v0 == VOR__INFINITE) {
+        return vor__orient(d, v1, v2, p) > 0;
+    }
+    if (v1 == VOR__INFINITE) {
+        return vor__orient(d, v2, v0, p) > 0;
+    }
+    if (v2 == VOR__INFINITE) {
+        return vor__orient(d, v0, v1, p) > 0;
+    }
+    return vor__incircle(d, v0, v1, v2, p) > 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Validation                                                          */
+
+/* vor__conflicts with the true predicates, uncounted. */
+static bool exact_conflict(const vor_t *d, const vor__tri_t *t, uint32_t p)
+{
+    vor_index_t v0 = vor__vertex(t, 0), v1 = t->v[1], v2 = t->v[2];
+    if (v0 == VOR__INFINITE) {
+        return vor_orient2d_sos(d->sites, v1, v2, p, NULL) > 0;
+    }
+    if (v1 == VOR__INFINITE) {
+        return vor_orient2d_sos(d->sites, v2, v0, p, NULL) > 0;
+    }
+    if (v2 == VOR__INFINITE) {
+        return vor_orient2d_sos(d->sites, v0, v1, p, NULL) > 0;
+    }
+    return vor_incircle_sos(d->sites, v0, v1, v2, p, NULL) > 0;
+}
+
+static int violation(vor_violation_t *out, enum vor_check check, uint32_t triangle,
+                     uint32_t site)
+{
+    if (out != NULL) {
+        out->check = check;
+        out->triangle = triangle;
+        out->site = site;
+    }
+    return VOR_ERR_INVALID;
+}
+
+/* One past the last packed extra slot: v - 2 extras for v >= 2 sites. */
+static uint32_t extra_end(const vor_t *d)
+{
+    return d->max_sites + ((d->vertex_count >= 2u) ? d->vertex_count - 2u : 0u);
+}
+
+/* Slots holding triangles: non-empty home slots of site ids, then the
+ * packed extra slots. Returns the next used slot at or after `slot`, or
+ * extra_end when none is left. */
+static uint32_t next_used_slot(const vor_t *d, uint32_t slot)
+{
+    for (; slot < d->site_count; slot++) {
+        if (!vor__slot_empty(&d->triangles[slot])) {
+            return slot;
+        }
+    }
+    if (slot < d->max_sites) {
+        slot = d->max_sites;
+    }
+    uint32_t end = extra_end(d);
+    return (slot < end) ? slot : end;
+}
+
+static bool slot_in_use(const vor_t *d, uint32_t slot)
+{
+    if (slot < d->max_sites) {
+        return slot < d->site_count && !vor__slot_empty(&d->triangles[slot]);
+    }
+    return slot < extra_end(d);
+}
+
+/* The site's triangles around it from its home slot, counted; 0 when the
+ * fan does not close within `limit` steps or leaves the site. */
+static uint32_t fan_size(const vor_t *d, uint32_t start, vor_index_t site, uint32_t limit)
+{
+    uint32_t slot = start, count = 0;
+    do {
+        const vor__tri_t *t = &d->triangles[slot];
+        unsigned i = vor__vertex_index(t, site);
+        if (i == 3u || count == limit) {
+            return 0;
+        }
+        count++;
+        slot = t->n[vor__next(i)]; /* across the edge (site, next-next): turn clockwise */
+    } while (slot != start);
+    return count;
+}
+
+int vor_validate(const vor_t *d, vor_violation_t *out)
+{
+    if (d == NULL) {
+        return VOR_ERR_ARG;
+    }
+    const vor__tri_t *tri = d->triangles;
+    uint32_t triangles = vor__triangle_count(d->vertex_count);
+    uint32_t end = extra_end(d);
+
+    /* counts: the used slots are exactly 2v - 2 (none below two sites) */
+    if (d->vertex_count > d->site_count || d->site_count > d->max_sites) {
+        return violation(out, VOR_CHECK_COUNTS, 0, d->vertex_count);
+    }
+    if (d->vertex_count < 2u) {
+        return VOR_OK;
+    }
+    uint32_t used = 0, present = 0;
+    for (uint32_t s = 0; s < d->site_count; s++) {
+        present += vor__slot_empty(&tri[s]) ? 0u : 1u;
+    }
+    used = present + (end - d->max_sites);
+    if (used != triangles || present != d->vertex_count) {
+        return violation(out, VOR_CHECK_COUNTS, 0, d->vertex_count);
+    }
+
+    /* vertices: sites in the mesh or infinity, three distinct */
+    for (uint32_t s = next_used_slot(d, 0); s < end; s = next_used_slot(d, s + 1u)) {
+        const vor__tri_t *t = &tri[s];
+        for (unsigned i = 0; i < 3u; i++) {
+            vor_index_t v = vor__vertex(t, i);
+            if (v != VOR__INFINITE &&
+                (v >= d->site_count || vor__slot_empty(&tri[v]))) {
+                return violation(out, VOR_CHECK_VERTICES, s, v);
+            }
+        }
+        if (vor__vertex(t, 0) == t->v[1] || t->v[1] == t->v[2] ||
+            t->v[2] == vor__vertex(t, 0)) {
+            return violation(out, VOR_CHECK_VERTICES, s, t->v[1]);
+        }
+    }
+
+    /* neighbours: in use, pointing back across the same edge */
+    for (uint32_t s = next_used_slot(d, 0); s < end; s = next_used_slot(d, s + 1u)) {
+        const vor__tri_t *t = &tri[s];
+        for (unsigned i = 0; i < 3u; i++) {
+            vor_index_t u = t->n[i];
+            vor_index_t a = vor__vertex(t, vor__next(i)), b = vor__vertex(t, vor__prev(i));
+            if (u == VOR__NONE || !slot_in_use(d, u)) {
+                return violation(out, VOR_CHECK_NEIGHBOURS, s, a);
+            }
+            const vor__tri_t *o = &tri[u];
+            unsigned ia = vor__vertex_index(o, a), ib = vor__vertex_index(o, b);
+            /* in o the edge runs b -> a, and o's neighbour across it is t */
+            if (ia == 3u || ib == 3u || vor__next(ib) != ia ||
+                o->n[vor__next(ia)] != s) {
+                return violation(out, VOR_CHECK_NEIGHBOURS, s, a);
+            }
+        }
+    }
+
+    /* sites: each site's home slot holds one of its triangles, and its
+     * triangles form one fan; all fans together cover each triangle once
+     * per corner */
+    uint32_t corners = 0;
+    for (uint32_t s = 0; s < d->site_count; s++) {
+        if (vor__slot_empty(&tri[s])) {
+            continue;
+        }
+        uint32_t fan = fan_size(d, s, (vor_index_t)s, triangles);
+        if (fan < 2u) {
+            return violation(out, VOR_CHECK_SITES, s, s);
+        }
+        corners += fan;
+    }
+    uint32_t ghost = next_used_slot(d, 0);
+    while (ghost < end && !vor__is_ghost(&tri[ghost])) {
+        ghost = next_used_slot(d, ghost + 1u);
+    }
+    corners += (ghost < end) ? fan_size(d, ghost, VOR__INFINITE, triangles) : 0u;
+    if (corners != 3u * triangles) {
+        return violation(out, VOR_CHECK_SITES, 0, VOR__INFINITE);
+    }
+
+    /* geometry: the exact perturbed predicates, uncounted, so validation
+     * never changes the diagram (nor lies in fault injection builds) */
+    for (uint32_t s = next_used_slot(d, 0); s < end; s = next_used_slot(d, s + 1u)) {
+        const vor__tri_t *t = &tri[s];
+        if (!vor__is_ghost(t) &&
+            vor_orient2d_sos(d->sites, vor__vertex(t, 0), t->v[1], t->v[2], NULL) < 0) {
+            return violation(out, VOR_CHECK_ORIENTATION, s, vor__vertex(t, 0));
+        }
+    }
+    for (uint32_t s = next_used_slot(d, 0); s < end; s = next_used_slot(d, s + 1u)) {
+        const vor__tri_t *t = &tri[s];
+        for (unsigned i = 0; i < 3u; i++) {
+            const vor__tri_t *o = &tri[t->n[i]];
+            vor_index_t a = vor__vertex(t, vor__next(i));
+            vor_index_t apex = vor__vertex(o, vor__next(vor__vertex_index(o, a)));
+            if (apex == VOR__INFINITE || vor__vertex_index(t, apex) != 3u) {
+                continue; /* infinity is never inside a circle; two sites:
+                             both triangles have the same three vertices */
+            }
+            /* the neighbour's far vertex must not conflict with t */
+            if (exact_conflict(d, t, apex)) {
+                return violation(out, VOR_CHECK_DELAUNAY, s, apex);
+            }
+        }
+    }
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Memory and iteration                                                */
+
+/* numerator / denominator by shift and subtract: Cortex-M0 has no divide
+ * instruction and the library calls no runtime routine. 64 steps. */
+static uint64_t divide(uint64_t numerator, uint64_t denominator)
+{
+    uint64_t quotient = 0, remainder = 0;
+    for (int bit = 63; bit >= 0; bit--) {
+        remainder = (remainder << 1) | ((numerator >> bit) & 1u);
+        if (remainder >= denominator) {
+            remainder -= denominator;
+            quotient |= (uint64_t)1 << bit;
+        }
+    }
+    return quotient;
+}
+
+int vor_memory(const vor_t *d, vor_memory_t *memory)
+{
+    if (d == NULL || memory == NULL) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t triangles = vor__triangle_count(d->vertex_count);
+    memory->arena_bytes = VOR_ARENA_BYTES(d->max_sites);
+    memory->used_bytes = (size_t)d->site_count * sizeof(vor_point_t) +
+                         (size_t)triangles * VOR_TRIANGLE_BYTES;
+    memory->sites = d->site_count;
+    memory->triangles = triangles;
+    memory->bytes_per_site_x100 =
+        (d->site_count == 0u)
+            ? 0u
+            : (uint32_t)divide(((uint64_t)memory->used_bytes << 6) +
+                                   ((uint64_t)memory->used_bytes << 5) +
+                                   ((uint64_t)memory->used_bytes << 2) + d->site_count / 2u,
+                               d->site_count); /* x 100 by shifts: no multiply call */
+    return VOR_OK;
+}
+
+void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
+{
+    it->d = d;
+    it->next_slot = 0;
+}
+
+int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
+{
+    const vor_t *d = it->d;
+    if (d->vertex_count < 2u) {
+        return 0;
+    }
+    uint32_t end = extra_end(d);
+    /* each used slot is visited once; the loop ends at `end` */
+    for (uint32_t s = next_used_slot(d, it->next_slot); s < end;
+         s = next_used_slot(d, s + 1u)) {
+        const vor__tri_t *t = &d->triangles[s];
+        if (!vor__is_ghost(t)) {
+            ids[0] = vor__vertex(t, 0);
+            ids[1] = t->v[1];
+            ids[2] = t->v[2];
+            it->next_slot = s + 1u;
+            return 1;
+        }
+    }
+    it->next_slot = end;
+    return 0;
+}

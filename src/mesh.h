@@ -1,0 +1,154 @@
+/*
+ * mesh.h - the triangle mesh behind the diagram, private to the library.
+ *
+ * Triangles live in one array of 2 max_sites - 2 slots (Euler's count with
+ * a vertex at infinity closing the hull, seed 003 section 1.2):
+ *
+ *   slots [0, max_sites)              home slots: slot s always holds a
+ *                                     triangle incident to site s, which is
+ *                                     how a site finds its triangles, at no
+ *                                     memory cost (empty while s is not in
+ *                                     the mesh)
+ *   slots [max_sites, max_sites+v-2)  the remaining v - 2 triangles of a
+ *                                     mesh of v sites, packed
+ *
+ * A triangle's vertices are counterclockwise (under the perturbation);
+ * neighbour i lies across the edge opposite vertex i. The top bit of v[0]
+ * of home slot s is a transient mark on site s, kept by every write to the
+ * slot (vor__tri_set): insertion uses it for the seed's topological guard.
+ */
+#ifndef VOR_MESH_H
+#define VOR_MESH_H
+
+#include <stdbool.h>
+
+#include "vor.h"
+
+struct vor__triangle {
+    vor_index_t v[3];
+    vor_index_t n[3];
+};
+typedef struct vor__triangle vor__tri_t;
+
+#define VOR__MARK ((vor_index_t)1u << (VOR_INDEX_BITS - 1))
+#define VOR__INFINITE ((vor_index_t)(VOR__MARK - 1u)) /* the vertex at infinity */
+#define VOR__NONE ((vor_index_t)~(vor_index_t)0)      /* no neighbour: empty slot */
+
+/* (i + 1) mod 3 and (i + 2) mod 3 without a division */
+static inline unsigned vor__next(unsigned i)
+{
+    return (i == 2u) ? 0u : i + 1u;
+}
+static inline unsigned vor__prev(unsigned i)
+{
+    return (i == 0u) ? 2u : i - 1u;
+}
+
+static inline vor_index_t vor__vertex(const vor__tri_t *t, unsigned i)
+{
+    return (vor_index_t)(t->v[i] & (vor_index_t)~VOR__MARK);
+}
+
+static inline bool vor__slot_empty(const vor__tri_t *t)
+{
+    return t->n[0] == VOR__NONE;
+}
+
+/* Writes a whole triangle into slot t, keeping the slot's site mark. */
+static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
+                                vor_index_t v2, vor_index_t n0, vor_index_t n1,
+                                vor_index_t n2)
+{
+    t->v[0] = (vor_index_t)((t->v[0] & VOR__MARK) | v0);
+    t->v[1] = v1;
+    t->v[2] = v2;
+    t->n[0] = n0;
+    t->n[1] = n1;
+    t->n[2] = n2;
+}
+
+static inline bool vor__is_ghost(const vor__tri_t *t)
+{
+    return vor__vertex(t, 0) == VOR__INFINITE || t->v[1] == VOR__INFINITE ||
+           t->v[2] == VOR__INFINITE;
+}
+
+/* Index (0..2) of neighbour `slot` in t's neighbour list; 3 if absent. */
+static inline unsigned vor__neighbour_index(const vor__tri_t *t, vor_index_t slot)
+{
+    return (t->n[0] == slot) ? 0u : (t->n[1] == slot) ? 1u : (t->n[2] == slot) ? 2u : 3u;
+}
+
+/* Index of vertex v in t; 3 if absent. */
+static inline unsigned vor__vertex_index(const vor__tri_t *t, vor_index_t v)
+{
+    return (vor__vertex(t, 0) == v) ? 0u : (t->v[1] == v) ? 1u : (t->v[2] == v) ? 2u : 3u;
+}
+
+/* Field by field: a structure assignment of this size becomes a memcpy
+ * call on some targets, and the library calls nothing outside itself. */
+static inline void vor__copy_stats(vor_predicate_stats_t *to,
+                                   const vor_predicate_stats_t *from)
+{
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        to->orient2d[t] = from->orient2d[t];
+        to->incircle[t] = from->incircle[t];
+        to->closer[t] = from->closer[t];
+    }
+    to->orient2d_perturbed = from->orient2d_perturbed;
+    to->incircle_perturbed = from->incircle_perturbed;
+    to->closer_perturbed = from->closer_perturbed;
+#ifdef VOR_FAULT_INJECTION
+    to->fault_rate = from->fault_rate;
+    to->fault_state = from->fault_state;
+#endif
+}
+
+/* Slots in use for v sites in the mesh: 2v - 2 for v >= 2, else 0. */
+static inline uint32_t vor__triangle_count(uint32_t vertices)
+{
+    return (vertices >= 2u) ? 2u * vertices - 2u : 0u;
+}
+
+/* The perturbed predicates as the mesh calls them: site ids are the
+ * perturbation's order, the diagram's stats count the tiers (and, in fault
+ * injection builds, flip signs at random). */
+int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c);
+int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p);
+int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b);
+
+/* Does triangle t (finite or at infinity) conflict with site p, i.e. is p
+ * strictly inside its circumcircle (for a hull triangle: strictly outside
+ * its hull edge)? The Voronoi vertex t would be deleted by p. */
+bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p);
+
+/* Places site p in the mesh: returns the slot of the triangle that contains
+ * it (a hull triangle when p is outside the hull), walking from slot start.
+ * *on_line is set when p lies exactly (unperturbed) on the line of one of
+ * that triangle's edges, the only case where p may coincide with a site
+ * that is not a vertex of the triangle. Bounded by the number of triangles
+ * even if the predicates lie. */
+vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line);
+
+/* The site nearest to point p (not in the mesh) under the perturbation,
+ * by a greedy walk over Delaunay neighbours from site `from` (seed 003
+ * section 2.3, the starting-point search). */
+uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p);
+
+/* Inserts site p (coordinates set, not yet in the mesh, v >= 2 sites
+ * present) into the triangle at slot root that contains it. */
+void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p);
+
+/* The first two sites: two triangles at infinity sharing the edge ab. */
+void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);
+
+/* vor_build's plan (insertion_order.c): for the n sites already copied
+ * into d->sites, writes plan[2i] = the i-th site to insert and plan[2i+1]
+ * = the site its search starts from (VOR__NONE: the previous one); the
+ * duplicates come last, with their first occurrence | VOR__MARK. Returns
+ * the number of distinct sites. Writes duplicate_of[] if not NULL. Uses
+ * scratch[0 .. 6n + 2) for n >= 8; scratch and plan must not overlap. */
+uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
+                   vor_index_t *scratch, vor_index_t *plan, uint32_t *duplicate_of);
+
+#endif

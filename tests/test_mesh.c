@@ -1,0 +1,482 @@
+/*
+ * test_mesh.c - the incremental builder and the diagram object.
+ *
+ * Independent references: a brute-force Delaunay triangulation (every
+ * triple whose perturbed circumcircle holds no other site) for small sets;
+ * vor_validate's invariants after every operation; and the uniqueness of
+ * the perturbed Delaunay triangulation, so that the batch build in both
+ * orders and one-by-one insertion must give the same triangles.
+ */
+#include "test.h"
+#include "vor.h"
+
+#define BIG_SITES 3000u
+
+static vor_point_t points[BIG_SITES];
+static uint32_t duplicate_of[BIG_SITES];
+static uint8_t arena_a[VOR_ARENA_BYTES(BIG_SITES)] __attribute__((aligned(8)));
+static uint8_t arena_b[VOR_ARENA_BYTES(BIG_SITES)] __attribute__((aligned(8)));
+static uint8_t snapshot[VOR_ARENA_BYTES(64)] __attribute__((aligned(8)));
+
+/* ------------------------------------------------------------------ */
+/* Triangle sets                                                       */
+
+/* An order-independent fingerprint of a set of triangles: count plus two
+ * sums of mixed hashes of the triangles rotated to start at their
+ * smallest id. Equal sets give equal fingerprints; a difference is missed
+ * with probability about 2^-64. */
+typedef struct {
+    uint32_t count;
+    uint64_t sum1, sum2;
+} fingerprint_t;
+
+static uint64_t mix(uint64_t x)
+{
+    x ^= x >> 31;
+    x *= 0x7FB5D329728EA185ull;
+    x ^= x >> 27;
+    x *= 0x81DADEF4BC2DD44Dull;
+    x ^= x >> 33;
+    return x;
+}
+
+static void add_triangle(fingerprint_t *f, const uint32_t ids[3])
+{
+    unsigned first = 0;
+    for (unsigned i = 1; i < 3; i++) {
+        first = (ids[i] < ids[first]) ? i : first;
+    }
+    uint64_t a = ids[first], b = ids[(first + 1) % 3], c = ids[(first + 2) % 3];
+    uint64_t key = (a << 42) ^ (b << 21) ^ c;
+    f->count++;
+    f->sum1 += mix(key);
+    f->sum2 += mix(key ^ 0x9E3779B97F4A7C15ull);
+}
+
+static fingerprint_t mesh_fingerprint(const vor_t *d)
+{
+    fingerprint_t f = {0, 0, 0};
+    vor_triangle_iter_t it;
+    uint32_t ids[3];
+    vor_triangles_begin(&it, d);
+    while (vor_triangles_next(&it, ids)) {
+        add_triangle(&f, ids);
+    }
+    return f;
+}
+
+static bool same_fingerprint(fingerprint_t a, fingerprint_t b)
+{
+    return a.count == b.count && a.sum1 == b.sum1 && a.sum2 == b.sum2;
+}
+
+/* Brute force: (i, j, k) counterclockwise with no site inside its circle. */
+static fingerprint_t brute_force(const vor_point_t *sites, uint32_t n,
+                                 const uint32_t *dup)
+{
+    fingerprint_t f = {0, 0, 0};
+    for (uint32_t i = 0; i < n; i++) {
+        for (uint32_t j = i + 1; j < n; j++) {
+            for (uint32_t k = j + 1; k < n; k++) {
+                if (dup[i] != i || dup[j] != j || dup[k] != k) {
+                    continue;
+                }
+                uint32_t ids[3] = {i, j, k};
+                if (vor_orient2d_sos(sites, i, j, k, NULL) < 0) {
+                    ids[1] = k;
+                    ids[2] = j;
+                }
+                bool empty = true;
+                for (uint32_t l = 0; l < n && empty; l++) {
+                    if (l != i && l != j && l != k && dup[l] == l) {
+                        empty = vor_incircle_sos(sites, ids[0], ids[1], ids[2], l, NULL) < 0;
+                    }
+                }
+                if (empty) {
+                    add_triangle(&f, ids);
+                }
+            }
+        }
+    }
+    return f;
+}
+
+static bool validate_ok(const vor_t *d, const char *what)
+{
+    vor_violation_t v = {VOR_CHECK_COUNTS, 0, 0};
+    int err = vor_validate(d, &v);
+    return CHECK(err == VOR_OK, "%s: validate %d: check %u, triangle %u, site %u", what, err,
+                 (unsigned)v.check, v.triangle, v.site);
+}
+
+/* ------------------------------------------------------------------ */
+/* Point sets                                                          */
+
+enum family {
+    F_UNIFORM_FULL, F_UNIFORM_SMALL, F_TINY, F_GRID, F_LINE, F_CIRCLE,
+    F_CLUSTER, F_DUPLICATES, F_CORNERS, F_FAMILIES
+};
+static const char *const family_names[F_FAMILIES] = {
+    "uniform full range", "uniform 16-bit", "tiny window", "grid", "line",
+    "circle R=5^13", "cluster", "heavy duplicates", "int32 corners"};
+
+/* Lattice points on x^2 + y^2 = (5^13)^2: (2+i)^a (2-i)^(26-a) and their
+ * rotations by i, R = 1,220,703,125 (about 2^30.2). Returns the count. */
+static uint32_t circle_points(vor_point_t *out, uint32_t max)
+{
+    uint32_t n = 0;
+    for (unsigned a = 0; a <= 26u && n < max; a++) {
+        int64_t re = 1, im = 0;
+        for (unsigned k = 0; k < 26u; k++) {
+            int64_t sign = (k < a) ? 1 : -1; /* 2 + i or 2 - i */
+            int64_t r2 = 2 * re - sign * im, i2 = 2 * im + sign * re;
+            re = r2;
+            im = i2;
+        }
+        for (unsigned rot = 0; rot < 4u && n < max; rot++) {
+            int64_t t = re;
+            re = -im;
+            im = t;
+            vor_point_t p = {(int32_t)re, (int32_t)im};
+            bool seen = false;
+            for (uint32_t e = 0; e < n; e++) {
+                seen |= out[e].x == p.x && out[e].y == p.y;
+            }
+            if (!seen) {
+                out[n++] = p;
+            }
+        }
+    }
+    return n;
+}
+
+/* Approximately normal with sigma ~ 3 (sum of uniforms). */
+static int32_t cluster_offset(test_rng_t *rng)
+{
+    int32_t s = 0;
+    for (int k = 0; k < 6; k++) {
+        s += test_rng_range(rng, -5, 5);
+    }
+    return s / 2;
+}
+
+static uint32_t make_family(enum family f, uint32_t n, test_rng_t *rng, vor_point_t *out)
+{
+    static const int32_t corners[] = {INT32_MIN, INT32_MIN + 1, -1, 0, 1,
+                                      INT32_MAX - 1, INT32_MAX};
+    uint32_t side = 1;
+    while ((side + 1u) * (side + 1u) <= n) {
+        side++;
+    }
+    switch (f) {
+    case F_CIRCLE:
+        return circle_points(out, n);
+    case F_GRID:
+        n = side * side;
+        break;
+    default:
+        break;
+    }
+    int32_t cx = test_rng_range(rng, -1000000, 1000000), cy = test_rng_range(rng, -1000000, 1000000);
+    for (uint32_t i = 0; i < n; i++) {
+        vor_point_t p = {0, 0};
+        switch (f) {
+        case F_UNIFORM_FULL:
+            p.x = (int32_t)test_rng_u32(rng);
+            p.y = (int32_t)test_rng_u32(rng);
+            break;
+        case F_UNIFORM_SMALL:
+            p.x = test_rng_range(rng, -32768, 32767);
+            p.y = test_rng_range(rng, -32768, 32767);
+            break;
+        case F_TINY:
+            p.x = test_rng_range(rng, -4, 4);
+            p.y = test_rng_range(rng, -4, 4);
+            break;
+        case F_GRID:
+            p.x = (int32_t)(i % side) * 1000 - 500000;
+            p.y = (int32_t)(i / side) * 1000 + 7;
+            break;
+        case F_LINE: {
+            int32_t t = test_rng_range(rng, -100000, 100000);
+            p.x = 3 * t + 17;
+            p.y = -7 * t + 5;
+            break;
+        }
+        case F_CLUSTER:
+            p.x = cx + cluster_offset(rng);
+            p.y = cy + cluster_offset(rng);
+            break;
+        case F_DUPLICATES:
+            p.x = test_rng_range(rng, 0, 5) * 1000003;
+            p.y = test_rng_range(rng, 0, 4) * -999983;
+            break;
+        case F_CORNERS:
+        default:
+            p.x = corners[test_rng_u32(rng) % 7u];
+            p.y = corners[test_rng_u32(rng) % 7u];
+            break;
+        }
+        out[i] = p;
+    }
+    return n;
+}
+
+/* ------------------------------------------------------------------ */
+/* Tests                                                               */
+
+static void check_init(void)
+{
+    vor_t d;
+    static uint8_t small[VOR_ARENA_BYTES(10) + 8] __attribute__((aligned(8)));
+    CHECK(vor_init(NULL, small, sizeof small, 10) == VOR_ERR_ARG, "init NULL diagram");
+    CHECK(vor_init(&d, NULL, sizeof small, 10) == VOR_ERR_ARG, "init NULL arena");
+    CHECK(vor_init(&d, small, sizeof small, 0) == VOR_ERR_ARG, "init 0 sites");
+    CHECK(vor_init(&d, small, sizeof small, VOR_MAX_SITES + 1u) == VOR_ERR_ARG,
+          "init too many sites");
+    CHECK(vor_init(&d, small + 1, sizeof small - 1, 10) == VOR_ERR_ALIGN, "init misaligned");
+    CHECK(vor_init(&d, small, VOR_ARENA_BYTES(10) - 1u, 10) == VOR_ERR_NOMEM,
+          "init one byte short");
+    /* init never writes the arena */
+    for (size_t i = 0; i < sizeof small; i++) {
+        small[i] = (uint8_t)(i * 7u + 3u);
+    }
+    CHECK(vor_init(&d, small, VOR_ARENA_BYTES(10), 10) == VOR_OK, "init exact size");
+    bool untouched = true;
+    for (size_t i = 0; i < sizeof small; i++) {
+        untouched &= small[i] == (uint8_t)(i * 7u + 3u);
+    }
+    CHECK(untouched, "init wrote the arena");
+    CHECK(VOR_ARENA_BYTES(500) == 500u * 8u + 998u * VOR_TRIANGLE_BYTES,
+          "VOR_ARENA_BYTES follows Euler's count");
+}
+
+/* 0 to 3 sites, by insertion and by build */
+static void check_tiny(void)
+{
+    vor_t d;
+    static const vor_point_t three[3] = {{0, 0}, {10, 0}, {0, 10}};
+    for (uint32_t n = 0; n <= 3u; n++) {
+        CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(3), 3) == VOR_OK, "init 3");
+        CHECK(vor_build(&d, three, n, NULL, duplicate_of) == VOR_OK, "build %u sites", n);
+        fingerprint_t f = mesh_fingerprint(&d);
+        CHECK(f.count == (n == 3u ? 1u : 0u), "%u sites: %u triangles", n, f.count);
+        validate_ok(&d, "tiny build");
+        vor_memory_t m;
+        CHECK(vor_memory(&d, &m) == VOR_OK && m.sites == n &&
+                  m.triangles == (n >= 2u ? 2u * n - 2u : 0u),
+              "memory of %u sites: %u triangles", n, m.triangles);
+    }
+    /* one site: a second identical one is a duplicate */
+    CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(3), 3) == VOR_OK, "init");
+    uint32_t id = 99;
+    CHECK(vor_insert(&d, 5, 5, &id) == VOR_OK && id == 0, "first insert");
+    CHECK(vor_insert(&d, 5, 5, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of one site");
+    CHECK(vor_insert(&d, 6, 5, &id) == VOR_OK && id == 1, "second site");
+    validate_ok(&d, "two sites");
+    CHECK(vor_insert(&d, 5, 5, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of two");
+    CHECK(vor_insert(&d, 7, 5, &id) == VOR_OK && id == 2, "third site, collinear");
+    validate_ok(&d, "three collinear sites");
+    CHECK(mesh_fingerprint(&d).count == 1u, "three collinear sites: one perturbed triangle");
+    CHECK(vor_insert(&d, 8, 5, &id) == VOR_ERR_FULL, "full");
+}
+
+/* Small random sets against brute force, validating after every insert. */
+static void check_brute_force(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 11);
+    vor_point_t sites[16];
+    uint32_t dup[16];
+    for (unsigned round = 0; round < 60u; round++) {
+        uint32_t n = 3u + round % 14u;
+        int32_t range = (round % 3u == 0u) ? 2 : (round % 3u == 1u) ? 1000 : INT32_MAX;
+        vor_t d;
+        CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(16), 16) == VOR_OK, "init");
+        uint32_t inserted = 0;
+        bool valid = true;
+        for (uint32_t i = 0; i < n; i++) {
+            int32_t x = test_rng_range(&rng, -range, range);
+            int32_t y = test_rng_range(&rng, -range, range);
+            uint32_t id;
+            int err = vor_insert(&d, x, y, &id);
+            if (err == VOR_OK) {
+                sites[inserted] = (vor_point_t){x, y};
+                dup[inserted] = inserted;
+                inserted++;
+            } else {
+                CHECK(err == VOR_ERR_DUPLICATE && d.sites[id].x == x && d.sites[id].y == y,
+                      "round %u: insert %d", round, err);
+            }
+            valid &= validate_ok(&d, "brute-force round");
+        }
+        fingerprint_t expect = brute_force(sites, inserted, dup);
+        CHECK(valid && same_fingerprint(mesh_fingerprint(&d), expect),
+              "round %u (%u sites, range %d): %u triangles, brute force %u", round, inserted,
+              range, mesh_fingerprint(&d).count, expect.count);
+    }
+}
+
+/* Every family: build (quadtree and input order) and one-by-one insertion
+ * give the same triangulation, and it is valid. */
+static void check_families(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 23);
+    static const uint32_t sizes[] = {40, 700, BIG_SITES};
+    for (unsigned f = 0; f < F_FAMILIES; f++) {
+        for (unsigned s = 0; s < 3u; s++) {
+            uint32_t n = make_family((enum family)f, sizes[s], &rng, points);
+            vor_t a, b, c;
+            CHECK(vor_init(&a, arena_a, sizeof arena_a, BIG_SITES) == VOR_OK, "init");
+            CHECK(vor_init(&b, arena_b, sizeof arena_b, BIG_SITES) == VOR_OK, "init");
+            CHECK(vor_build(&a, points, n, NULL, duplicate_of) == VOR_OK, "build");
+            bool ok = validate_ok(&a, family_names[f]);
+            uint32_t distinct = 0;
+            bool dup_ok = true;
+            for (uint32_t i = 0; i < n; i++) {
+                uint32_t first = duplicate_of[i];
+                distinct += (first == i) ? 1u : 0u;
+                dup_ok &= first <= i && points[first].x == points[i].x &&
+                          points[first].y == points[i].y && duplicate_of[first] == first;
+            }
+            CHECK(dup_ok && a.vertex_count == distinct, "%s: duplicates reported wrongly",
+                  family_names[f]);
+            fingerprint_t quadtree = mesh_fingerprint(&a);
+            /* unique sites: the triangulation has 2v - 2 - h triangles */
+            CHECK(quadtree.count + 2u <= 2u * distinct || distinct < 3u,
+                  "%s: %u triangles for %u sites", family_names[f], quadtree.count, distinct);
+
+            vor_build_options_t input = {VOR_ORDER_INPUT};
+            CHECK(vor_build(&b, points, n, &input, NULL) == VOR_OK, "build in input order");
+            fingerprint_t in_input_order = mesh_fingerprint(&b);
+            ok &= validate_ok(&b, "input order") && same_fingerprint(in_input_order, quadtree);
+
+            /* one by one, skipping duplicates: ids shift, so map them back */
+            CHECK(vor_init(&c, arena_b, sizeof arena_b, BIG_SITES) == VOR_OK, "init");
+            fingerprint_t one_by_one = {0, 0, 0};
+            if (s < 2u) { /* the big sets are covered by the two builds */
+                static uint32_t id_to_point[BIG_SITES];
+                for (uint32_t i = 0; i < n; i++) {
+                    uint32_t id;
+                    int err = vor_insert(&c, points[i].x, points[i].y, &id);
+                    if (err == VOR_OK) {
+                        id_to_point[id] = i;
+                    }
+                }
+                ok &= validate_ok(&c, "one by one");
+                vor_triangle_iter_t it;
+                uint32_t ids[3];
+                vor_triangles_begin(&it, &c);
+                while (vor_triangles_next(&it, ids)) {
+                    uint32_t mapped[3] = {id_to_point[ids[0]], id_to_point[ids[1]],
+                                          id_to_point[ids[2]]};
+                    add_triangle(&one_by_one, mapped);
+                }
+                /* ids keep their order, so the perturbation is the same */
+                ok &= same_fingerprint(one_by_one, quadtree);
+            }
+            CHECK(ok, "%s, %u sites: builds disagree (%u / %u / %u triangles)",
+                  family_names[f], n, quadtree.count, in_input_order.count, one_by_one.count);
+        }
+    }
+}
+
+/* Memory: every site costs at most the documented bytes. */
+static void check_memory(void)
+{
+    vor_t d;
+    vor_memory_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, 5);
+    uint32_t n = make_family(F_UNIFORM_FULL, BIG_SITES, &rng, points);
+    CHECK(vor_init(&d, arena_a, sizeof arena_a, BIG_SITES) == VOR_OK, "init");
+    CHECK(vor_build(&d, points, n, NULL, NULL) == VOR_OK, "build");
+    CHECK(vor_memory(&d, &m) == VOR_OK, "memory");
+    uint32_t limit = (VOR_INDEX_BITS == 16) ? 3200u : 5600u;
+    CHECK(m.bytes_per_site_x100 <= limit && m.used_bytes <= m.arena_bytes,
+          "%u.%02u bytes per site", m.bytes_per_site_x100 / 100u, m.bytes_per_site_x100 % 100u);
+    test_printf("mesh: %u.%02u bytes per site (%u-bit indices)\n", m.bytes_per_site_x100 / 100u,
+                m.bytes_per_site_x100 % 100u, (unsigned)VOR_INDEX_BITS);
+}
+
+/* Failing calls change nothing: the diagram object and every arena byte
+ * are compared before and after, at every step until the diagram is full
+ * (littlefs runs its tests with the power cut at every write). */
+static bool unchanged(const vor_t *d, const vor_t *before, size_t bytes)
+{
+    const uint8_t *a = (const uint8_t *)d, *b = (const uint8_t *)before;
+    for (size_t i = 0; i < sizeof *d; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    for (size_t i = 0; i < bytes; i++) {
+        if (arena_a[i] != snapshot[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static void check_failures_change_nothing(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 41);
+    unsigned bad = 0, tried = 0;
+    for (uint32_t max = 1; max <= 40u; max++) {
+        vor_t d;
+        size_t bytes = VOR_ARENA_BYTES(max);
+        CHECK(vor_init(&d, arena_a, bytes, max) == VOR_OK, "init %u", max);
+        for (uint32_t step = 0; step <= max; step++) {
+            vor_t before = d;
+            for (size_t i = 0; i < bytes; i++) {
+                snapshot[i] = arena_a[i];
+            }
+            /* a duplicate of an existing site, or any point when full */
+            int32_t x = test_rng_range(&rng, -3, 3), y = test_rng_range(&rng, -3, 3);
+            if (step > 0u && step % 2u == 0u) {
+                uint32_t k = test_rng_u32(&rng) % d.site_count;
+                x = d.sites[k].x;
+                y = d.sites[k].y;
+            }
+            uint32_t id;
+            int err = vor_insert(&d, x, y, &id);
+            if (err != VOR_OK) {
+                tried++;
+                bad += unchanged(&d, &before, bytes) ? 0u : 1u;
+                bad += (err == VOR_ERR_FULL || err == VOR_ERR_DUPLICATE) ? 0u : 1u;
+            } else if (!validate_ok(&d, "capacity steps")) {
+                bad++;
+            }
+            /* a failing build: more points than room */
+            before = d;
+            for (size_t i = 0; i < bytes; i++) {
+                snapshot[i] = arena_a[i];
+            }
+            err = vor_build(&d, points, max + 1u, NULL, NULL);
+            tried++;
+            bad += (err == VOR_ERR_FULL && unchanged(&d, &before, bytes)) ? 0u : 1u;
+        }
+        /* bad arguments */
+        vor_t before = d;
+        CHECK(vor_insert_near(&d, 1, 1, d.site_count + 5u, NULL) == VOR_ERR_ARG ||
+                  d.site_count == max,
+              "bad hint accepted");
+        vor_build_options_t weird = {(enum vor_order)7};
+        CHECK(vor_build(&d, points, 1, &weird, NULL) == VOR_ERR_ARG &&
+                  unchanged(&d, &before, 0),
+              "unknown order accepted");
+    }
+    CHECK(bad == 0 && tried > 60u, "%u of %u failing calls changed the diagram", bad, tried);
+}
+
+void test_mesh(void)
+{
+    check_init();
+    check_tiny();
+    check_brute_force();
+    check_families();
+    check_memory();
+    check_failures_change_nothing();
+}
