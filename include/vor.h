@@ -281,7 +281,8 @@ typedef struct vor_memory {
     size_t used_bytes;     /* what the current sites and triangles occupy */
     uint32_t sites;        /* ids in use */
     uint32_t triangles;    /* triangles, including those at infinity */
-    uint32_t bytes_per_site_x100; /* used_bytes / sites, in hundredths */
+    uint32_t bytes_per_site_x100; /* used_bytes / sites, in hundredths
+                                     (exact while used_bytes < SIZE_MAX / 100) */
 } vor_memory_t;
 
 /* Memory figures of d. VOR_ERR_ARG if d or memory is NULL. */

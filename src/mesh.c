@@ -311,10 +311,8 @@ int vor_memory(const vor_t *d, vor_memory_t *memory)
     memory->bytes_per_site_x100 =
         (d->site_count == 0u)
             ? 0u
-            : (uint32_t)divide(((uint64_t)memory->used_bytes << 6) +
-                                   ((uint64_t)memory->used_bytes << 5) +
-                                   ((uint64_t)memory->used_bytes << 2) + d->site_count / 2u,
-                               d->site_count); /* x 100 by shifts: no multiply call */
+            : (uint32_t)divide(memory->used_bytes * 100u + d->site_count / 2u,
+                               d->site_count); /* size_t: a native multiply */
     return VOR_OK;
 }
 

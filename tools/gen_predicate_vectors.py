@@ -43,26 +43,28 @@ NPOINTS = {OP_ORIENT2D: 3, OP_INCIRCLE: 4, OP_CLOSER: 3}
 
 FAMILY_NAMES = ["PF_RANDOM_FULL", "PF_RANDOM_SMALL", "PF_RANDOM_MID",
                 "PF_COLLINEAR", "PF_COCIRCULAR", "PF_OFF_BY_ONE",
-                "PF_CORNERS", "PF_PERTURBED"]
+                "PF_CORNERS", "PF_PERTURBED", "PF_TIER_EDGE"]
 (PF_RANDOM_FULL, PF_RANDOM_SMALL, PF_RANDOM_MID, PF_COLLINEAR, PF_COCIRCULAR,
- PF_OFF_BY_ONE, PF_CORNERS, PF_PERTURBED) = range(len(FAMILY_NAMES))
+ PF_OFF_BY_ONE, PF_CORNERS, PF_PERTURBED, PF_TIER_EDGE) = range(len(FAMILY_NAMES))
 
 DEFAULT_SEED = 1
 
-# How many cases of each (op, family).  Totals: orient2d 4200 (35%),
-# incircle 5400 (45%), closer 2400 (20%); PF_PERTURBED = 1770 cases.
+# How many cases of each (op, family).  Totals: orient2d 4392 (35%),
+# incircle 5656 (45%), closer 2552 (20%); PF_PERTURBED = 1770 cases,
+# PF_TIER_EDGE = 600 (generated last, so the other families' cases do not
+# depend on it; its counts are multiples of the 8 TIER_CLASSES).
 # The PF_PERTURBED counts are multiples of the per-configuration fan-out
 # (6 rank permutations for orient2d; 24 or 4 for incircle, see below).
 PLAN = {
     OP_ORIENT2D: {PF_RANDOM_FULL: 600, PF_RANDOM_SMALL: 700, PF_RANDOM_MID: 400,
                   PF_COLLINEAR: 600, PF_COCIRCULAR: 300, PF_OFF_BY_ONE: 400,
-                  PF_CORNERS: 390, PF_PERTURBED: 810},
+                  PF_CORNERS: 390, PF_PERTURBED: 810, PF_TIER_EDGE: 192},
     OP_INCIRCLE: {PF_RANDOM_FULL: 700, PF_RANDOM_SMALL: 800, PF_RANDOM_MID: 500,
                   PF_COLLINEAR: 600, PF_COCIRCULAR: 900, PF_OFF_BY_ONE: 600,
-                  PF_CORNERS: 340, PF_PERTURBED: 960},
+                  PF_CORNERS: 340, PF_PERTURBED: 960, PF_TIER_EDGE: 256},
     OP_CLOSER: {PF_RANDOM_FULL: 400, PF_RANDOM_SMALL: 400, PF_RANDOM_MID: 300,
                 PF_COLLINEAR: 500, PF_COCIRCULAR: 200, PF_OFF_BY_ONE: 300,
-                PF_CORNERS: 300},
+                PF_CORNERS: 300, PF_TIER_EDGE: 152},
 }
 
 CORNER_VALUES = [INT32_MIN, INT32_MIN + 1, INT32_MIN + 2, -2, -1, 0, 1, 2,
@@ -332,6 +334,130 @@ CIRCLES_SMALL = [
     Circle({2: 1, 5: 1, 13: 1, 17: 1, 29: 1, 37: 1, 41: 1}, half=True),
     Circle({5: 2, 13: 2, 17: 2, 29: 2, 37: 2, 41: 2}),  # R = 48612265
 ]
+
+
+# ---------------------------------------------------------------------------
+# PF_TIER_EDGE helpers.
+#
+# src/predicates.c picks an integer width from the magnitudes of the
+# coordinate differences to one reference point (c for orient2d, d for
+# incircle, q for closer), measured as bound(v) = v for v >= 0, -v - 1 for
+# v < 0 (so bound(v) < 2^k exactly when v lies in [-2^k, 2^k - 1]).  The
+# family's cases fall in classes that fix the largest bound exactly, at each
+# side of the tier limits 2^14 (incircle narrow), 2^30 (incircle mid) and
+# 2^31 (orient2d and closer narrow), plus 2^15 (where the incircle narrow
+# arithmetic would first overflow) and the extremes above 2^31:
+#
+#   ("in", k)   largest bound 2^k - 1: differences -2^k or 2^k - 1 occur
+#   ("out", k)  largest bound 2^k: differences 2^k or -2^k - 1 occur
+#   ("ext", 32) largest bound above 2^31 (differences up to 2^32 - 1)
+#
+# Only the choice of the configurations looks at the tiers; every expected
+# sign still comes from exact_sign() and perturbed_sign().
+
+L32 = (1 << 32) - 1  # the largest difference of two int32 coordinates
+
+TIER_CLASSES = [("in", 14), ("out", 14), ("in", 15), ("in", 30), ("out", 30),
+                ("in", 31), ("out", 31), ("ext", 32)]
+
+
+def tier_bound(v):
+    return -v - 1 if v < 0 else v
+
+
+def reference_diffs(op, pts):
+    """Differences to the reference point, in call order of the others."""
+    if op == OP_ORIENT2D:
+        ref, others = pts[2], pts[:2]
+    elif op == OP_INCIRCLE:
+        ref, others = pts[3], pts[:3]
+    else:
+        ref, others = pts[0], pts[1:]
+    return [(x - ref[0], y - ref[1]) for x, y in others]
+
+
+def max_bound(op, pts):
+    return max(tier_bound(c) for p in reference_diffs(op, pts) for c in p)
+
+
+def class_meets(cls, m):
+    """Whether m is the largest bound class cls asks for."""
+    kind, k = cls
+    if kind == "in":
+        return m == (1 << k) - 1
+    if kind == "out":
+        return m == 1 << k
+    return m > 1 << 31
+
+
+def cross2(u, v):
+    return u[0] * v[1] - u[1] * v[0]
+
+
+def incircle_terms(rel):
+    """The three terms lift(p) * cross(q, r) whose sum is the incircle
+    determinant of rel = [a - d, b - d, c - d] (Laplace along the lifts)."""
+    a, b, c = rel
+    lift = [x * x + y * y for x, y in rel]
+    return [lift[0] * cross2(b, c), lift[1] * cross2(c, a), lift[2] * cross2(a, b)]
+
+
+def egcd(a, b):
+    """(g, x, y) with a x + b y = g = gcd(a, b) >= 0."""
+    x0, y0, x1, y1 = 1, 0, 0, 1
+    while b:
+        q = a // b
+        a, b = b, a - q * b
+        x0, x1 = x1, x0 - q * x1
+        y0, y1 = y1, y0 - q * y1
+    if a < 0:
+        a, x0, y0 = -a, -x0, -y0
+    return a, x0, y0
+
+
+def factorize(n):
+    """Trial division; meant for n up to about 2^33."""
+    f = {}
+    p = 2
+    while p * p <= n:
+        while n % p == 0:
+            f[p] = f.get(p, 0) + 1
+            n //= p
+        p += 1 if p == 2 else 2
+    if n > 1:
+        f[n] = f.get(n, 0) + 1
+    return f
+
+
+# Circle radii R per class whose R^2 has many lattice points (R a product of
+# primes 1 mod 4, times small factors) and for which R^2 - 1 = (R-1)(R+1) is
+# a sum of two squares too.  All 2R + 1 fit the class: 2R < 2^14, 2^30, 2^31,
+# 2^32 - 1.  A point d at squared distance R^2 +- 1 from the centre has power
+# -+1, so the incircle determinant is -+orient2d(a, b, c) (up to sign) while
+# its terms are near the class maximum.
+TIER_CIRCLE_RADII = {("in", 14): 7395, ("in", 30): 517917699,
+                     ("in", 31): 1063667305, ("ext", 32): 2129098881}
+
+
+def _merge_factors(*fs):
+    out = {}
+    for f in fs:
+        for p, e in f.items():
+            out[p] = out.get(p, 0) + e
+    return out
+
+
+_TIER_CIRCLES = {}
+
+
+def tier_circles(R):
+    """(Circle of R^2, Circle of R^2 - 1), built once."""
+    if R not in _TIER_CIRCLES:
+        fr = factorize(R)
+        on = Circle({p: 2 * e for p, e in fr.items()})
+        inside = Circle(_merge_factors(factorize(R - 1), factorize(R + 1)))
+        _TIER_CIRCLES[R] = (on, inside)
+    return _TIER_CIRCLES[R]
 
 
 # ---------------------------------------------------------------------------
@@ -691,6 +817,491 @@ class Generator:
             made += len(rank_sets)
             i += 1
 
+    # PF_TIER_EDGE: the largest differences each tier of src/predicates.c
+    # admits and the smallest it must refuse (see TIER_CLASSES), arranged so
+    # that products, lifts and cross products are near their largest for
+    # the class: points at the corners and edges of the box of allowed
+    # differences, the reference point (c, d or q) at the origin.  Cases
+    # cycle through the classes; within a class through the constructions of
+    # the op, and each construction's variants, the first time each variant
+    # comes up with no jitter at all (the exact box corners).
+
+    TIER_KINDS = {OP_ORIENT2D: ["max", "max", "zero", "pm1", "bare", "max"],
+                  OP_INCIRCLE: ["max", "max", "zero", "near", "max", "bare", "zero", "near"],
+                  OP_CLOSER: ["near", "zero", "pm1", "bare"]}
+    TIER_VARIANTS = {"max": 4, "zero": 4, "pm1": 2, "near": 4, "bare": 1}
+
+    def tier_box(self, cls, interior=False, corner=False):
+        """Per axis (lo, hi): the differences class cls allows; interior
+        keeps the reference point off the sides of an ext box, corner puts
+        it at a corner of the int32 square."""
+        kind, k = cls
+        if kind == "in":
+            return [(-(1 << k), (1 << k) - 1)] * 2
+        if kind == "out" and k < 31:
+            return [(-(1 << k) - 1, 1 << k)] * 2
+        if kind == "out":  # int32 spans at most 2^32 - 1: one end short
+            return [self.rng.choice([(-(1 << 31) - 1, (1 << 31) - 2),
+                                     (-(1 << 31) + 1, 1 << 31)]) for _ in range(2)]
+        box = []  # ext: the reference point anywhere in a 2^32 - 1 box
+        for _ in range(2):
+            u = self.rng.uniform(0.6 if interior else 0, 0.6 if corner and not interior else 1)
+            if u < 0.3:
+                s = 0
+            elif u < 0.6:
+                s = L32
+            elif u < 0.8:
+                s = self.rng.randint(L32 // 8, 3 * L32 // 8)
+            else:
+                s = self.rng.randint(5 * L32 // 8, 7 * L32 // 8)
+            box.append((-s, L32 - s))
+        return box
+
+    @staticmethod
+    def tier_edges(cls, axis_box):
+        """The values of one axis of the box whose bound is the class's."""
+        kind, k = cls
+        lo, hi = axis_box
+        if kind == "in":
+            vals = (-(1 << k), (1 << k) - 1)
+        elif kind == "out":
+            vals = (-(1 << k) - 1, 1 << k)
+        else:
+            vals = tuple(v for v in (lo, hi) if tier_bound(v) > 1 << 31)
+        return [v for v in vals if lo <= v <= hi]
+
+    def tier_jitter(self, k, pure):
+        """How far a box coordinate moves inwards: mostly not at all."""
+        u = self.rng.random()
+        if pure or u < 0.5:
+            return 0
+        if u < 0.8:
+            return self.rng.randint(1, 3)
+        return self.rng.randint(4, 1 << (k - 10))
+
+    def tier_value(self, axis_box, label, k, pure):
+        """label 0: the low end, 2: the high end, 1: the middle half."""
+        lo, hi = axis_box
+        if label == 0:
+            return lo + self.tier_jitter(k, pure)
+        if label == 2:
+            return hi - self.tier_jitter(k, pure)
+        if pure:
+            return (lo + hi) // 2
+        q = (hi - lo) // 4
+        return self.rng.randint(lo + q, hi - q)
+
+    def tier_point(self, box, labels, k, pure):
+        return tuple(self.tier_value(box[a], labels[a], k, pure) for a in (0, 1))
+
+    @staticmethod
+    def in_box(box, p):
+        return all(box[a][0] <= p[a] <= box[a][1] for a in (0, 1))
+
+    @staticmethod
+    def rotate_labels(labels, r):
+        """Labels turned by r quarter turns about the middle of the box."""
+        for _ in range(r):
+            labels = [(2 - ly, lx) for lx, ly in labels]
+        return labels
+
+    # -- orient2d: u = a - c, v = b - c ---------------------------------------
+
+    def tier_orient_max(self, box, k, pure, variant):
+        corners = [(0, 0), (2, 0), (2, 2), (0, 2)]
+        i = self.rng.randrange(4)
+        if variant == 0:    # adjacent corners: the products' signs differ
+            pair = [corners[i], corners[(i + 1) % 4]]
+        elif variant == 1:  # opposite corners: nearly collinear with c
+            pair = [corners[i], corners[(i + 2) % 4]]
+        elif variant == 2:  # a corner and the middle of a far edge
+            pair = [corners[i], self.rng.choice([(1, 2 - corners[i][1]),
+                                                 (2 - corners[i][0], 1)])]
+        else:
+            grid = [(x, y) for x in range(3) for y in range(3) if (x, y) != (1, 1)]
+            pair = self.rng.sample(grid, 2)
+        return [self.tier_point(box, lab, k, pure) for lab in pair]
+
+    def tier_orient_zero(self, box, cls, k, pure, variant):
+        """u and v on one line through c, as far out as the box allows."""
+        if variant == 3 and cls in (("out", 31), ("ext", 32)):
+            variant = self.rng.randrange(3)  # a - b would span over 2^32 - 1
+        if variant == 3:  # c is the midpoint of a and b
+            u = self.tier_point(box, (self.rng.choice([0, 2]), self.rng.choice([0, 2])),
+                                k, pure)
+            v = (-u[0], -u[1])
+            return [u, v] if self.in_box(box, v) else None
+        # towards the far corner of the box, when c is not in its middle
+        far = [1 if hi + lo > 0 else -1 if hi + lo < 0 else self.rng.choice([-1, 1])
+               for lo, hi in box]
+        if variant == 0:
+            w = (far[0], far[1]) if self.rng.random() < 0.75 else (far[0], -far[1])
+        elif variant == 1:
+            w = self.rng.choice([(1, 0), (0, 1)])
+        else:  # a power of two on one axis: its multiples reach +-2^k
+            i = self.rng.randint(1, k - 2)
+            o = self.rng.randrange(1, 1 << i, 2)
+            w = (1 << i, o) if self.rng.random() < 0.5 else (o, 1 << i)
+            w = (w[0] * far[0], w[1] * far[1])
+        mlo, mhi = -(1 << 40), 1 << 40
+        for a in (0, 1):
+            lo, hi = box[a]
+            if w[a] > 0:
+                mlo, mhi = max(mlo, -(-lo // w[a])), min(mhi, hi // w[a])
+            elif w[a] < 0:
+                mlo, mhi = max(mlo, -(hi // -w[a])), min(mhi, (-lo) // -w[a])
+        if mhi - mlo < 2:
+            return None
+        m1 = mlo if self.rng.random() < 0.5 else mhi
+        m2 = mlo + mhi - m1  # the other end, unless c is at an end
+        u = self.rng.random()
+        if m2 == 0 or (not pure and u < 0.5):
+            # next to m1 (products near their largest), or anywhere
+            near = pure or u < 0.75
+            m2 = m1 - sgn(m1) * self.rng.randint(1, 3) if near else self.rng.randint(mlo, mhi)
+        if m1 == m2 or m1 == 0 or m2 == 0:
+            return None
+        return [(m1 * w[0], m1 * w[1]), (m2 * w[0], m2 * w[1])]
+
+    def tier_orient_pm1(self, box, cls, k, pure, variant):
+        """cross(u, v) = +-1: u has a coordinate at the class's edge, v is
+        on the lattice line next to the line through c and a, where its
+        products with u are largest; variant 0 keeps the best of 16 u."""
+        ea = self.rng.randrange(2)
+        edges = self.tier_edges(cls, box[ea])
+        if not edges:
+            return None
+        target = self.rng.choice([-1, 1])
+        best = None
+        for _ in range(16 if variant == 0 or pure else 1):
+            found = self.tier_orient_pm1_try(box, ea, edges, k, target,
+                                             variant == 0 or pure)
+            if found is not None:
+                size = min(abs(found[0][0] * found[1][1]), abs(found[0][1] * found[1][0]))
+                if best is None or size > best[0]:
+                    best = (size, found)
+        return None if best is None else best[1]
+
+    def tier_orient_pm1_try(self, box, ea, edges, k, target, far):
+        """One u, the other coordinate near an end of the box (far: the
+        end further from c); None if u is not primitive."""
+        oa = 1 - ea
+        u = [0, 0]
+        u[ea] = self.rng.choice(edges)
+        lo, hi = box[oa]
+        span = 1 << (k - 6)
+        low_end = -lo > hi if far else self.rng.random() < 0.5
+        u[oa] = lo + self.rng.randint(0, span) if low_end else hi - self.rng.randint(0, span)
+        g, x, y = egcd(u[0], -u[1])
+        if g != 1:
+            return None
+        v0 = (y * target, x * target)  # u0 * v0y - u1 * v0x = target
+        klo, khi = -(1 << 40), 1 << 40
+        for a in (0, 1):
+            alo, ahi = box[a][0] - v0[a], box[a][1] - v0[a]
+            if u[a] > 0:
+                klo, khi = max(klo, -(-alo // u[a])), min(khi, ahi // u[a])
+            elif u[a] < 0:
+                klo, khi = max(klo, -(ahi // -u[a])), min(khi, (-alo) // -u[a])
+            elif not alo <= 0 <= ahi:
+                return None
+        if klo > khi:
+            return None
+
+        def size(kk):
+            v = (v0[0] + kk * u[0], v0[1] + kk * u[1])
+            return min(abs(u[0] * v[1]), abs(u[1] * v[0]))
+        kk = max(range(klo, min(khi, klo + 8) + 1), key=size)  # the largest products
+        v = (v0[0] + kk * u[0], v0[1] + kk * u[1])
+        assert cross2(u, v) == target
+        return [tuple(u), v]
+
+    # -- incircle: a - d, b - d, c - d ----------------------------------------
+
+    def tier_incircle_max(self, box, k, pure, variant):
+        """d inside a triangle spanned by box corners and edges: the three
+        terms share a sign (with three corners, d lies on or next to the
+        diagonal and one term is about 0: the largest determinant)."""
+        corners = [(0, 0), (2, 0), (2, 2), (0, 2)]
+        if variant == 0:
+            labels = self.rng.sample(corners, 3)
+        elif variant == 1:
+            labels = self.rotate_labels([(0, 0), (2, 0), (1, 2)], self.rng.randrange(4))
+        elif variant == 2:
+            labels = self.rotate_labels([(0, 0), (2, 1), (1, 2)], self.rng.randrange(4))
+        else:
+            labels = self.rotate_labels([(0, 0), (2, self.rng.randrange(3)),
+                                         (self.rng.randrange(3), 2)], self.rng.randrange(4))
+        rel = [self.tier_point(box, lab, k, pure) for lab in labels]
+        if all(lo < 0 < hi for lo, hi in box):
+            signs = {sgn(t) for t in incircle_terms(rel)}
+            if variant == 0:
+                if {-1, 1} <= signs:
+                    return None
+            elif len(signs) != 1 or 0 in signs:
+                return None
+        return rel
+
+    def tier_incircle_zero(self, box, k, pure, variant):
+        """Cocircular through d, symmetric: a rectangle, an isosceles
+        trapezoid, or a trapezoid symmetric about a diagonal line."""
+        X = self.tier_value(box[0], self.rng.choice([0, 2]), k, pure)
+        Y = self.tier_value(box[1], self.rng.choice([0, 2]), k, pure)
+        if variant == 0:
+            return [(X, 0), (X, Y), (0, Y)]
+        if variant == 1:  # symmetric about x = X / 2
+            lo, hi = box[0]
+            dlo, dhi = max(lo, X - hi), min(hi, X - lo)
+            delta = self.rng.choice([dlo, dhi, self.rng.randint(dlo, dhi)])
+            rel = [(X, 0), (delta, Y), (X - delta, Y)]
+            if self.rng.random() < 0.5 and box[0] == box[1]:
+                rel = [(y, x) for x, y in rel]
+            return rel
+        # symmetric about y = x + s (variant 2) or y = -x + s (variant 3);
+        # class ("in", 15) wants (-2^15, -2^15), which only the second
+        # mirror can pair with another point of the box
+        if variant == 2 and k != 15:
+            mirror = lambda p, s: (p[1] - s, p[0] + s)
+        else:
+            mirror = lambda p, s: (s - p[1], s - p[0])
+        a = (X, Y)
+        for _ in range(20):
+            s = self.rng.randint(-(1 << k), 1 << k)
+            if self.rng.random() < 0.3:
+                s = self.rng.choice([-1, 0, 1]) + (X - Y if variant == 2 else 0)
+            rel = [a, mirror(a, s), mirror((0, 0), s)]
+            if all(self.in_box(box, p) for p in rel):
+                return rel
+        return None
+
+    def tier_incircle_near(self, box, cls, k, pure, variant):
+        if variant % 2 == 0 or cls not in TIER_CIRCLE_RADII:
+            # a symmetric cocircular case with one coordinate moved by 1
+            rel = self.tier_incircle_zero(box, k, pure, self.rng.randrange(4))
+            if rel is None:
+                return None
+            rel = [list(p) for p in rel]
+            i, a = self.rng.randrange(3), self.rng.randrange(2)
+            step = self.rng.choice([-1, 1])
+            if not box[a][0] <= rel[i][a] + step <= box[a][1]:
+                step = -step
+            rel[i][a] += step
+            rel = [tuple(p) for p in rel]
+            return rel if sum(incircle_terms(rel)) != 0 else None
+        return self.tier_incircle_power(cls, variant)
+
+    def tier_incircle_power(self, cls, variant):
+        """a, b, c on a lattice circle of radius R about O, d at squared
+        distance R^2 + 1 (variant 1) or R^2 - 1 (variant 3) from O."""
+        R = TIER_CIRCLE_RADII[cls]
+        on, inside = tier_circles(R)
+        if variant == 1:
+            r = _gmul((R, self.rng.choice([-1, 1])), _gpow((0, 1), self.rng.randrange(4)))
+        else:
+            r = inside.point(self.rng)
+        pool = {on.point(self.rng) for _ in range(24)}
+        pool.discard(r)
+        pool = sorted(pool)
+        if self.rng.random() < 0.5:  # a, b, c close together, opposite d
+            pool.sort(key=lambda p: (p[0] + r[0]) ** 2 + (p[1] + r[1]) ** 2)
+            abc = pool[:3]
+        else:
+            abc = self.rng.sample(pool, 3)
+        return [(x - r[0], y - r[1]) for x, y in abc]
+
+    # -- closer: a - q, b - q -------------------------------------------------
+
+    SYMMETRIES = [lambda p: (p[1], p[0]), lambda p: (-p[0], p[1]),
+                  lambda p: (p[0], -p[1]), lambda p: (-p[1], p[0]),
+                  lambda p: (p[1], -p[0]), lambda p: (-p[0], -p[1])]
+
+    def tier_closer_mirror(self, box, k, pure, exact):
+        """B the image of A under a symmetry of the square (|A| = |B|),
+        then (exact False) moved by a few units: near-ties."""
+        labels = (self.rng.choice([0, 1, 2, 2]), self.rng.choice([0, 2]))
+        if self.rng.random() < 0.5:
+            labels = labels[::-1]
+        A = self.tier_point(box, labels, k, pure)
+        B = self.rng.choice(self.SYMMETRIES)(A)
+        if not exact:
+            while True:
+                dx, dy = self.rng.randint(-3, 3), self.rng.randint(-3, 3)
+                if dx or dy:
+                    break
+            B = (B[0] + dx, B[1] + dy)
+        if A == B or not self.in_box(box, B):
+            return None
+        return [A, B]
+
+    def tier_closer_edge_pair(self, box, cls, k, target, pure):
+        """A = (e, t), B = (e', t') (or transposed), e at the class's edge,
+        e' = e moved inwards by 1..3: e^2 - e'^2 + t^2 - t'^2 = target."""
+        ea = self.rng.randrange(2)
+        edges = self.tier_edges(cls, box[ea])
+        if not edges:
+            return None
+        e = self.rng.choice(edges)
+        delta = self.rng.choice([1, 1, 2, 3])
+        e2 = e - delta if e > 0 else e + delta
+        n = e * e - e2 * e2 - target  # t'^2 - t^2, positive
+        assert n > 0
+        # n = f g with f = t' - t, g = t' + t of one parity
+        fs = [f for f in range(1, min(4096, math.isqrt(n)) + 1)
+              if n % f == 0 and (f - n // f) % 2 == 0]
+        lo, hi = box[1 - ea]
+        fits = []
+        for f in fs:
+            g = n // f
+            t2, t = (g + f) // 2, (g - f) // 2
+            for s2 in (-1, 1):
+                for s in (-1, 1):
+                    if lo <= s2 * t2 <= hi and lo <= s * t <= hi:
+                        fits.append((t, s * t, s2 * t2))
+        if not fits:
+            return None
+        if pure or self.rng.random() < 0.5:  # the largest t that fits
+            best = max(f[0] for f in fits)
+            fits = [f for f in fits if f[0] == best]
+        _, t, t2 = self.rng.choice(fits)
+        A, B = [e, t], [e2, t2]
+        if ea == 1:
+            A, B = A[::-1], B[::-1]
+        return [tuple(A), tuple(B)]
+
+    def tier_closer_corner_pm1(self, box, k, target):
+        """|A|^2 - |B|^2 = (A - B).(A + B) = target with A, B near a box
+        corner: w = A - B short and nearly perpendicular to the corner
+        direction, z = A + B on the lattice line w.z = target."""
+        margin = 1 << self.rng.randint((k + 1) // 2 + 3, (k + 1) // 2 + 6)
+        P = tuple(box[a][0] + margin if self.rng.random() < 0.5 else box[a][1] - margin
+                  for a in (0, 1))
+        size = math.isqrt(P[0] ** 2 + P[1] ** 2) + 1
+        scale = 8 * size // margin + 1
+        wx = -P[1] * scale // size + self.rng.randint(-2, 2)
+        wy = P[0] * scale // size + self.rng.randint(-2, 2)
+        g, x, y = egcd(wx, wy)
+        if g != 1 or (wx + wy) % 2 == 0:
+            return None
+        z0 = (x * target, y * target)
+        p = (-wy, wx)
+        kk = ((2 * P[0] - z0[0]) * p[0] + (2 * P[1] - z0[1]) * p[1]) // (wx * wx + wy * wy)
+        for dk in (0, 1, -1, 2, -2):
+            z = (z0[0] + (kk + dk) * p[0], z0[1] + (kk + dk) * p[1])
+            if (z[0] - wx) % 2 == 0 and (z[1] - wy) % 2 == 0:
+                break
+        else:
+            return None
+        A = ((z[0] + wx) // 2, (z[1] + wy) // 2)
+        B = ((z[0] - wx) // 2, (z[1] - wy) // 2)
+        if not (self.in_box(box, A) and self.in_box(box, B)):
+            return None
+        assert A[0] ** 2 + A[1] ** 2 - B[0] ** 2 - B[1] ** 2 == target
+        return [A, B]
+
+    # -- all ops --------------------------------------------------------------
+
+    def tier_bare(self, op, box, cls, pure):
+        """Every difference 0, -1 or at the class's edge (bound 0 or the
+        class's): a bitwise OR of the bounds then equals the largest one.
+        Where the edge is 2^31 or -2^31 - 1, the differences wrapped to
+        int32 (2^31 -> -2^31, -2^31 - 1 -> 2^31 - 1) give the opposite
+        sign for many such cases; the pure ones are picked to be among
+        them: orient2d (0, -1), (E, 0); incircle (0, -1), (0, E'), (E, 0);
+        closer (E, 0), (0, E') with E = -E' - 1 (the edges of a closer
+        case lie on different sides, and its two big differences on
+        different axes, whenever the box allows)."""
+        if op == OP_CLOSER and cls == ("out", 31):
+            box = self.rng.sample([(-(1 << 31) - 1, (1 << 31) - 2),
+                                   (-(1 << 31) + 1, 1 << 31)], 2)
+        edges = [self.tier_edges(cls, box[a]) for a in (0, 1)]
+        if op == OP_CLOSER:
+            E = self.rng.choice(edges[0])
+            opposite = [v for v in edges[1] if (v < 0) != (E < 0)]
+            E2 = self.rng.choice(opposite or edges[1])
+            if pure or self.rng.random() < 0.5:
+                small = [0, 0] if pure else [self.rng.choice([0, -1]) for _ in range(2)]
+                small = [s if box[1 - a][0] <= s else 0 for a, s in enumerate(small)]
+                return [(E, small[0]), (small[1], E2)]
+        elif pure and cls != ("in", 15):
+            E, E2 = self.rng.choice(edges[0]), self.rng.choice(edges[1])
+            if op == OP_ORIENT2D:
+                return [(0, -1), (E, 0)] if box[1][0] < 0 else [(0, 1), (E, 0)]
+            if box[1][0] < 0:
+                return [(0, -1), (0, E2), (E, 0)]
+        values = [[v for v in [0, -1] + edges[a] if box[a][0] <= v <= box[a][1]]
+                  for a in (0, 1)]
+        n = NPOINTS[op] - 1
+        return [(self.rng.choice(values[0]), self.rng.choice(values[1]))
+                for _ in range(n)]
+
+    # -- driver -----------------------------------------------------------
+
+    def tier_relative(self, op, cls, kind, variant, pure):
+        """The points other than the reference, relative to it, or None."""
+        interior = op == OP_INCIRCLE and kind == "max" and variant > 0
+        corner = pure and (op != OP_INCIRCLE or (kind == "max" and variant == 0))
+        box = self.tier_box(cls, interior, corner)
+        k = cls[1]
+        if kind == "bare":
+            return self.tier_bare(op, box, cls, pure)
+        if op == OP_ORIENT2D:
+            if kind == "max":
+                return self.tier_orient_max(box, k, pure, variant)
+            if kind == "zero":
+                return self.tier_orient_zero(box, cls, k, pure, variant)
+            return self.tier_orient_pm1(box, cls, k, pure, variant)
+        if op == OP_INCIRCLE:
+            if kind == "max":
+                return self.tier_incircle_max(box, k, pure, variant)
+            if kind == "zero":
+                return self.tier_incircle_zero(box, k, pure, variant)
+            return self.tier_incircle_near(box, cls, k, pure, variant)
+        if kind == "near":
+            return self.tier_closer_mirror(box, k, pure, exact=False)
+        if kind == "zero":
+            if variant % 2 == 0:
+                return self.tier_closer_mirror(box, k, pure, exact=True)
+            return self.tier_closer_edge_pair(box, cls, k, 0, pure)
+        target = self.rng.choice([-1, 1])
+        if variant == 0:
+            return self.tier_closer_edge_pair(box, cls, k, target, pure)
+        return self.tier_closer_corner_pm1(box, k, target)
+
+    def tier_case(self, op, cls, kind, variant, pure):
+        # the power-of-a-point incircle cases and the closer +-1 cases near
+        # a corner lie inside the class's box, not on its edge
+        exact_class = not ((op == OP_INCIRCLE and kind == "near" and variant % 2 == 1
+                            and cls in TIER_CIRCLE_RADII)
+                           or (op == OP_CLOSER and kind == "pm1" and variant == 1))
+        for _attempt in range(1000):
+            rel = self.tier_relative(op, cls, kind, variant, pure)
+            if rel is None or (0, 0) in rel:
+                continue
+            spans = [max(0, *(p[a] for p in rel)) - min(0, *(p[a] for p in rel))
+                     for a in (0, 1)]
+            assert max(spans) <= L32, (op, cls, kind, variant, rel)
+            if exact_class and not class_meets(cls, max(tier_bound(c) for p in rel for c in p)):
+                continue
+            if op == OP_INCIRCLE and cls == ("in", 15) and (-(1 << 15), -(1 << 15)) not in rel:
+                continue  # lift 2^31: the first that int32 cannot hold
+            self.rng.shuffle(rel)
+            pts = self.translate_into_range([(0, 0)] + rel)
+            ref, others = pts[0], pts[1:]
+            return [ref] + others if op == OP_CLOSER else others + [ref]
+        raise AssertionError(("no tier-edge case", op, cls, kind, variant))
+
+    def gen_tier_edge(self, op, count):
+        kinds = self.TIER_KINDS[op]
+        for i in range(count):
+            cls = TIER_CLASSES[i % len(TIER_CLASSES)]
+            n = i // len(TIER_CLASSES)
+            kind = kinds[n % len(kinds)]
+            # occurrence of this kind within the class
+            m = sum(1 for j in range(n) if kinds[j % len(kinds)] == kind)
+            variants = self.TIER_VARIANTS[kind]
+            pts = self.tier_case(op, cls, kind, m % variants, m < variants)
+            self.add(op, pts, PF_TIER_EDGE)
+
     def generate(self):
         runners = {PF_RANDOM_FULL: self.gen_random_full,
                    PF_RANDOM_SMALL: self.gen_random_small,
@@ -699,7 +1310,8 @@ class Generator:
                    PF_COCIRCULAR: self.gen_cocircular,
                    PF_OFF_BY_ONE: self.gen_off_by_one,
                    PF_CORNERS: self.gen_corners,
-                   PF_PERTURBED: self.gen_perturbed}
+                   PF_PERTURBED: self.gen_perturbed,
+                   PF_TIER_EDGE: self.gen_tier_edge}
         for family in range(len(FAMILY_NAMES)):
             for op in (OP_ORIENT2D, OP_INCIRCLE, OP_CLOSER):
                 count = PLAN[op].get(family, 0)
@@ -767,6 +1379,109 @@ def check_coverage(cases):
     extreme_zero = [c for c in cases if c[2] == 0 and c[1] != OP_CLOSER
                     and any(v in (INT32_MIN, INT32_MAX) for v in c[0])]
     assert extreme_zero, "no exact zero at the int32 extremes"
+
+
+def tier_edge_facts(cases):
+    """Measure what PF_TIER_EDGE reaches: counts of cases per largest
+    bound, and the largest intermediate values of each predicate."""
+    facts = {"bound": {}, "zeros_at": {}, "shared": {}, "in15_corner": 0,
+             "incircle_det": 0, "mid_cross_det": 0, "lift_65": 0,
+             "incircle_cancel": 0, "orient_narrow_det": 0,
+             "orient_pm1_narrow": 0, "orient_pm1_wide": 0, "orient_zero_wide": 0,
+             "closer_narrow_sum": 0, "closer_pm1_narrow": 0, "closer_pm1_wide": 0,
+             "closer_zero_wide": 0}
+
+    def bump(key, sub):
+        facts[key][sub] = facts[key].get(sub, 0) + 1
+
+    for xy, op, exact, _, _, family in cases:
+        if family != PF_TIER_EDGE:
+            continue
+        pts = [(xy[2 * k], xy[2 * k + 1]) for k in range(NPOINTS[op])]
+        rel = reference_diffs(op, pts)
+        m = max_bound(op, pts)
+        cls = next((c for c in TIER_CLASSES if class_meets(c, m)), None)
+        bump("bound", (op, cls))
+        if exact == 0:
+            bump("zeros_at", (op, cls))
+        if op == OP_INCIRCLE:
+            terms = incircle_terms(rel)
+            det = abs(sum(terms))
+            assert sgn(sum(terms)) == exact
+            if len({sgn(t) for t in terms}) == 1 and terms[0] != 0:
+                bump("shared", cls)
+            if cls == ("in", 15) and (-(1 << 15), -(1 << 15)) in rel:
+                facts["in15_corner"] += 1
+            facts["incircle_det"] = max(facts["incircle_det"], det)
+            crosses = [abs(cross2(p, q)) for p, q in itertools.combinations(rel, 2)]
+            if (1 << 30) <= m < (1 << 31) and max(crosses) > 1 << 62:
+                facts["mid_cross_det"] = max(facts["mid_cross_det"], det)
+            if max(x * x + y * y for x, y in rel) >= 1 << 64:
+                facts["lift_65"] += 1
+            if 0 < det <= 1 << 64 and max(abs(t) for t in terms) >= 1 << 120:
+                facts["incircle_cancel"] += 1
+        elif op == OP_ORIENT2D:
+            (ux, uy), (vx, vy) = rel
+            det = ux * vy - uy * vx
+            products = max(abs(ux * vy), abs(uy * vx))
+            if m < 1 << 31:
+                facts["orient_narrow_det"] = max(facts["orient_narrow_det"], abs(det))
+            # the largest product of a +-1 case per tier, of a 0 case above
+            key = None
+            if abs(det) == 1:
+                key = "orient_pm1_narrow" if m < 1 << 31 else "orient_pm1_wide"
+            elif det == 0 and m >= 1 << 31:
+                key = "orient_zero_wide"
+            if key:
+                facts[key] = max(facts[key], products)
+        else:
+            sums = [x * x + y * y for x, y in rel]
+            diff = sums[0] - sums[1]
+            if m < 1 << 31:
+                facts["closer_narrow_sum"] = max(facts["closer_narrow_sum"], *sums)
+            key = None
+            if abs(diff) == 1:
+                key = "closer_pm1_narrow" if m < 1 << 31 else "closer_pm1_wide"
+            elif diff == 0 and m >= 1 << 31:
+                key = "closer_zero_wide"
+            if key:
+                facts[key] = max(facts[key], min(sums))
+    return facts
+
+
+def check_tier_edge(cases):
+    """Proof that PF_TIER_EDGE hits the tier limits: asserts on the cases
+    themselves (run on every generated table)."""
+    f = tier_edge_facts(cases)
+    for op, least in ((OP_ORIENT2D, 20), (OP_INCIRCLE, 24), (OP_CLOSER, 15)):
+        for cls in TIER_CLASSES:  # largest bound exactly 2^30 - 1, 2^30, 2^31 - 1, ...
+            assert f["bound"].get((op, cls), 0) >= least, ("tier edge", op, cls)
+            assert f["zeros_at"].get((op, cls), 0) >= 3, ("tier edge zeros", op, cls)
+    for cls in TIER_CLASSES:  # three terms of one sign: the sum is largest
+        assert f["shared"].get(cls, 0) >= 9, cls
+    assert f["in15_corner"] >= 20  # a lift of 2^31, the first int32 cannot hold
+    # Four points in a box of side L have |incircle| <= L^4 / 2 or so (three
+    # corners and d at the centre; a numerical search found nothing
+    # larger), so with L = 2^32 - 1 the determinant stays below 2^127: ask
+    # for that maximum to within a factor 1 - 2^-29.
+    assert f["incircle_det"] >= (1 << 127) - (1 << 98)
+    # bound in [2^30, 2^31), a cross product above 2^62, |det| above 2^126:
+    # what the mid tier would hold if its limit were 2^31
+    assert f["mid_cross_det"] > 1 << 126
+    assert f["lift_65"] >= 8  # lifts of 65 bits in the wide tier
+    assert f["incircle_cancel"] >= 4  # terms >= 2^120 summing to <= 2^64
+    # orient2d: narrow-tier products up to 2^62 whose difference nears 2^63;
+    # +-1 and 0 with the largest products each tier allows
+    assert f["orient_narrow_det"] >= (1 << 63) - (1 << 33)
+    assert f["orient_pm1_narrow"] >= 3 << 60 and f["orient_pm1_wide"] >= 1 << 63
+    assert f["orient_zero_wide"] >= 3 << 62
+    # closer: narrow-tier sums reaching 2^63; +-1 and 0 with sums near 2^63
+    # in the narrow tier and above 2^64 (a 65th bit) in the wide one
+    assert f["closer_narrow_sum"] >= (1 << 63) - (1 << 33)
+    assert f["closer_pm1_narrow"] >= (1 << 63) - (1 << 58)
+    assert f["closer_pm1_wide"] >= 1 << 64
+    assert f["closer_zero_wide"] >= (1 << 65) - (1 << 36)
+    return f
 
 
 # ---------------------------------------------------------------------------
@@ -855,6 +1570,7 @@ def main(argv=None):
     gen = Generator(args.seed)
     cases = gen.generate()
     check_coverage(cases)
+    facts = check_tier_edge(cases)
     # Echo the command as given (--seed only if it was passed) so the header
     # names exactly what produced the file; the seed is recorded either way.
     command = "python3 tools/gen_predicate_vectors.py --out %s" % args.out
@@ -873,6 +1589,11 @@ def main(argv=None):
         print(summarize(cases)[0])
         print("expansions: %d degenerate, %d nondegenerate self-checks; %.2f s"
               % (gen.expansions, gen.expansion_checks, time.perf_counter() - t0))
+        print("tier edge: |incircle| up to 2^%.6f, mid-bound 2^%.6f; orient2d "
+              "narrow |det| 2^%.6f; closer narrow sum 2^%.6f" % tuple(
+                  math.log2(facts[key]) for key in ("incircle_det", "mid_cross_det",
+                                                    "orient_narrow_det",
+                                                    "closer_narrow_sum")))
     return 0
 
 

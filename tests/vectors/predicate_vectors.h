@@ -29,7 +29,9 @@ struct predicate_vector {
 
 enum predicate_family {
     PF_RANDOM_FULL, PF_RANDOM_SMALL, PF_RANDOM_MID, PF_COLLINEAR,
-    PF_COCIRCULAR, PF_OFF_BY_ONE, PF_CORNERS, PF_PERTURBED, PF_FAMILIES
+    PF_COCIRCULAR, PF_OFF_BY_ONE, PF_CORNERS, PF_PERTURBED,
+    PF_TIER_EDGE, /* differences at the evaluation tiers' limits */
+    PF_FAMILIES
 };
 
 extern const struct predicate_vector predicate_vectors[];
