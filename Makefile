@@ -24,6 +24,7 @@ endif
 GEN := build/gen
 
 include port/$(PORT)/port.mk
+include tools/bench/bench.mk
 
 .SECONDEXPANSION:
 
@@ -42,12 +43,13 @@ LIB_SRCS := $(wildcard src/*.c)
 LIB_HDRS := $(wildcard include/*.h src/*.h)
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(B)/lib/%.o)
 CHECKED_OBJS := $(LIB_SRCS:src/%.c=$(B)/checked/%.o)
+FAULTY_OBJS := $(LIB_SRCS:src/%.c=$(B)/faulty/%.o)
 TEST_SRCS := $(wildcard tests/*.c)
 TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.o
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests test demo size bench-predicates clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests test demo size bench-predicates clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -70,6 +72,20 @@ $(B)/lib/%.o: src/%.c $(LIB_HDRS) | $(B)/lib
 
 $(B)/checked/%.o: src/%.c $(LIB_HDRS) | $(B)/checked
 	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -c $< -o $@
+
+# Fault injection (tests/faults): predicates that lie, never in a release.
+$(B)/libvor-faulty.a: $(FAULTY_OBJS)
+	$(AR) rcs $@ $^
+
+$(B)/faulty/%.o: src/%.c $(LIB_HDRS) | $(B)/faulty
+	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -DVOR_FAULT_INJECTION -c $< -o $@
+
+$(B)/vor-fault-tests$(EXE): tests/faults/test_faults.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a
+	$(CC) $(TEST_CFLAGS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+fault-tests: $(B)/vor-fault-tests$(EXE)
+run-fault-tests: $(B)/vor-fault-tests$(EXE)
+	$(RUN) $<
 
 $(B)/tests/%.o: tests/%.c $(LIB_HDRS) $(wildcard tests/*.h tests/vectors/*.h) port/port.h | $(B)/tests
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
@@ -123,7 +139,7 @@ CLI_SRCS := $(wildcard tools/cli/*.c)
 $(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) $(B)/libvor.a
 	gcc $(HOST_TOOL_CFLAGS) -Itools/cli $(CLI_SRCS) $(B)/libvor.a -o $@
 
-$(B)/lib $(B)/checked $(B)/tests $(B)/port:
+$(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
 	@mkdir -p $@
 
 # ---------------------------------------------------------------- top level

@@ -2,7 +2,8 @@
 # run-tests.sh - everything `make test` runs, with one summary line at the end.
 #
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
-# the command-line tool,
+# the fault injection test (wrong predicate signs) on every port, the
+# command-line tool,
 # the same tests as firmware under QEMU for every target, and the check
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself. Each suite ends with "N passed, N failed"; a suite that does not
@@ -41,12 +42,13 @@ record() {
     [ "$failed" = 0 ] || broken+=("$name")
 }
 
-# suite NAME MAKE-ARGS...: build and run the test program of one port.
+# suite NAME PROGRAM MAKE-ARGS...: build and run a test program of one port
+# (PROGRAM tests: the test suite; fault-tests: the fault injection test).
 suite() {
-    local name=$1 log="$logs/$1.log" status
-    shift
-    if make -s -j"$jobs" "$@" tests >"$log" 2>&1; then
-        make -s "$@" run-tests >>"$log" 2>&1
+    local name=$1 program=$2 log="$logs/$1.log" status
+    shift 2
+    if make -s -j"$jobs" "$@" "$program" >"$log" 2>&1; then
+        make -s "$@" "run-$program" >>"$log" 2>&1
         status=$?
     else
         status=$?
@@ -55,8 +57,9 @@ suite() {
     record "$name" "$log" "$status"
 }
 
-suite host PORT=host
-suite host-sanitize PORT=host SANITIZE=1
+suite host tests PORT=host
+suite host-sanitize tests PORT=host SANITIZE=1
+suite host-faults fault-tests PORT=host SANITIZE=1
 
 # The host command-line tool, against a Python big-integer oracle.
 cli_log="$logs/cli.log"
@@ -68,7 +71,8 @@ else
 fi
 
 for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
-    suite "$target" PORT="$target"
+    suite "$target" tests PORT="$target"
+    suite "$target-faults" fault-tests PORT="$target"
 done
 
 # The harness itself: on every port a failing check and a trap must end

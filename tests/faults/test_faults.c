@@ -1,0 +1,82 @@
+/*
+ * test_faults.c - the topology survives wrong arithmetic (seed 003 section
+ * 3, fig. 6; seed 000 section 5).
+ *
+ * Built with VOR_FAULT_INJECTION: the diagram's perturbed predicates return
+ * the wrong sign with probability p. For p in {0.01, 0.1, 0.5} and 10,000
+ * sites, building (and inserting one by one) must finish and leave a mesh
+ * whose topological invariants all hold: counts from Euler's formula,
+ * valid distinct vertices, symmetric neighbours, every site present with
+ * one fan of triangles. Only the geometric checks (orientation, Delaunay)
+ * may fail. The host runs this under AddressSanitizer too, so an
+ * out-of-bounds access would also fail it.
+ */
+#include "test.h"
+#include "vor.h"
+
+#ifndef VOR_FAULT_INJECTION
+#error "build with -DVOR_FAULT_INJECTION"
+#endif
+
+#define SITES 10000u
+
+static vor_point_t points[SITES];
+static uint8_t arena[VOR_ARENA_BYTES(SITES)] __attribute__((aligned(8)));
+
+static const char *const check_names[] = {"counts", "vertices", "neighbours", "sites",
+                                          "orientation", "delaunay"};
+
+static void check_topology(const vor_t *d, const char *what, uint32_t rate_percent,
+                           uint32_t expected_sites)
+{
+    vor_violation_t v = {VOR_CHECK_COUNTS, 0, 0};
+    int err = vor_validate(d, &v);
+    bool topology_ok = err == VOR_OK || v.check >= VOR_CHECK_ORIENTATION;
+    CHECK(topology_ok, "%s, p = %u%%: %s check failed at triangle %u, site %u", what,
+          rate_percent, check_names[v.check], v.triangle, v.site);
+    CHECK(d->vertex_count == expected_sites, "%s, p = %u%%: %u of %u sites in the mesh", what,
+          rate_percent, d->vertex_count, expected_sites);
+    test_printf("%s, p = %u%%: topology %s, geometry %s\n", what, rate_percent,
+                topology_ok ? "consistent" : "BROKEN",
+                err == VOR_OK ? "exact" : check_names[v.check]);
+}
+
+int main(void)
+{
+    vor_port_init();
+    static const uint32_t percents[] = {1, 10, 50};
+    test_rng_t rng;
+    test_rng_seed(&rng, 2026);
+    for (uint32_t i = 0; i < SITES; i++) {
+        points[i].x = test_rng_range(&rng, -1000000, 1000000);
+        points[i].y = test_rng_range(&rng, -1000000, 1000000);
+    }
+    for (unsigned k = 0; k < 3u; k++) {
+        uint32_t rate = (uint32_t)(((uint64_t)percents[k] << 32) / 100u);
+        vor_t d;
+        static uint32_t dup[SITES];
+        /* batch build */
+        CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
+        d.stats.fault_rate = rate;
+        d.stats.fault_state = 0x9E3779B97F4A7C15ull + k;
+        CHECK(vor_build(&d, points, SITES, NULL, dup) == VOR_OK, "build");
+        uint32_t distinct = 0;
+        for (uint32_t i = 0; i < SITES; i++) {
+            distinct += (dup[i] == i) ? 1u : 0u;
+        }
+        check_topology(&d, "build of 10000 sites", percents[k], distinct);
+        /* one by one: the dynamic path, with its duplicate search */
+        CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
+        d.stats.fault_rate = rate;
+        d.stats.fault_state = 0x5851F42D4C957F2Dull + k;
+        uint32_t inserted = 0;
+        for (uint32_t i = 0; i < 3000u; i++) {
+            int err = vor_insert(&d, points[i].x / 1000, points[i].y / 1000, NULL);
+            inserted += (err == VOR_OK) ? 1u : 0u;
+            CHECK(err == VOR_OK || err == VOR_ERR_DUPLICATE, "insert %u: %d", i, err);
+        }
+        check_topology(&d, "3000 inserts (many degenerate)", percents[k], inserted);
+    }
+    test_summary();
+    return test_failures() == 0 ? 0 : 1;
+}
