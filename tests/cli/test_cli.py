@@ -61,6 +61,65 @@ def predicates_cases(rng):
     return lines, expected
 
 
+def brute_delaunay(pts):
+    """Empty-circumcircle triangles of points in general position, each
+    counterclockwise and rotated to its smallest index."""
+    n, out = len(pts), set()
+    for i in range(n):
+        for j in range(i + 1, n):
+            for k in range(j + 1, n):
+                o = orient(pts[i], pts[j], pts[k])
+                assert o != 0, "test set not in general position"
+                a, b, c = (i, j, k) if o > 0 else (i, k, j)
+                inside = [incircle(pts[a], pts[b], pts[c], pts[l]) for l in range(n) if l not in (i, j, k)]
+                assert 0 not in inside, "test set not in general position"
+                if all(v < 0 for v in inside):
+                    out.add((a, b, c))
+    return out
+
+
+def delaunay_cases(rng):
+    # random full-range sets: exact predicates decide everything
+    for n in (3, 4, 7, 15, 30):
+        pts = [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(n)]
+        text = "# random\n" + "\n".join(f"{x} {y}" for x, y in pts) + "\n"
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 0, f"delaunay n={n}: status {r.returncode} {r.stderr}")
+        got = set()
+        for line in r.stdout.splitlines():
+            f = line.split()
+            check(f[0] == "t" and len(f) == 4, f"delaunay n={n}: line {line!r}")
+            got.add(tuple(int(v) for v in f[1:]))
+        check(got == brute_delaunay(pts), f"delaunay n={n}: {len(got)} triangles differ from brute force")
+        lines = r.stdout.splitlines()
+        check(lines == sorted(lines, key=lambda l: tuple(int(v) for v in l.split()[1:])),
+              f"delaunay n={n}: output not sorted")
+    # duplicates: "d i j" for a repeated site, j its first occurrence
+    pts = [(0, 0), (100, 0), (0, 100), (100, 0), (0, 0), (100, 100)]
+    r = run(["delaunay", "-"], "\n".join(f"{x} {y}" for x, y in pts) + "\n")
+    dups = [l for l in r.stdout.splitlines() if l.startswith("d ")]
+    check(dups == ["d 3 1", "d 4 0"], f"duplicates: {dups}")
+    tris = [l for l in r.stdout.splitlines() if l.startswith("t ")]
+    check(len(tris) == 2, f"square with duplicates: {tris}")
+    # --stats on stderr, output unchanged
+    r2 = run(["delaunay", "--stats", "-"], "\n".join(f"{x} {y}" for x, y in pts) + "\n")
+    check(r2.stdout == r.stdout, "--stats changed stdout")
+    check(r2.stderr.startswith("sites=6 triangles=2 bytes=") and "seconds=" in r2.stderr
+          and "incircle narrow=" in r2.stderr, f"--stats line: {r2.stderr!r}")
+    # collinear sites: perturbed triangles of zero area, each site used
+    r = run(["delaunay", "-"], "".join(f"{3 * t} {5 * t}\n" for t in range(6)))
+    tris = [l for l in r.stdout.splitlines() if l.startswith("t ")]
+    used = {int(v) for l in tris for v in l.split()[1:]}
+    check(r.returncode == 0 and used == set(range(6)), f"collinear: {tris}")
+    # bad input
+    for text, line in (("0 0\n1 2 3\n", 2), ("0 0\n\n1 x\n", 3), ("2147483648 0\n", 1)):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: line {line}: "),
+              f"delaunay bad input {text!r}: {r.returncode} {r.stderr!r}")
+    r = run(["delaunay", "/no/such/file"], "")
+    check(r.returncode == 2 and r.stdout == "", "missing file: status 2")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -91,6 +150,7 @@ def main():
               f"bad input {text!r}: stderr {r.stderr!r}")
     r = run(["predicates"], "o -2147483648 -2147483648 0 0 2147483647 2147483647\n")
     check(r.stdout == "0\n", f"full-range collinear: {r.stdout!r}")
+    delaunay_cases(rng)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 void cli_error(const char *message)
 {
@@ -164,4 +165,45 @@ void cli_flush(cli_output_t *out)
     free(out->data);
     out->data = NULL;
     out->length = out->capacity = 0;
+}
+
+vor_point_t *cli_read_sites(const char *path, uint32_t *count)
+{
+    cli_input_t in;
+    cli_open(&in, path);
+    vor_point_t *sites = NULL;
+    size_t n = 0, capacity = 0;
+    const char *line;
+    while ((line = cli_next_line(&in)) != NULL) {
+        vor_point_t p;
+        const char *why;
+        const char *cursor = line;
+        if (!cli_int32_field(&cursor, &p.x, &why) || !cli_int32_field(&cursor, &p.y, &why)) {
+            cli_line_error(&in, why);
+        }
+        if (!cli_at_end(cursor)) {
+            cli_line_error(&in, "too many fields (expected x y)");
+        }
+        if (n == VOR_MAX_SITES) {
+            cli_line_error(&in, "more sites than VOR_MAX_SITES");
+        }
+        if (n == capacity) {
+            capacity = capacity ? 2 * capacity : 1024;
+            sites = realloc(sites, capacity * sizeof *sites);
+            if (sites == NULL) {
+                cli_error("out of memory");
+            }
+        }
+        sites[n++] = p;
+    }
+    cli_close(&in);
+    *count = (uint32_t)n;
+    return sites;
+}
+
+double cli_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }

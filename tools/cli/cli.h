@@ -11,6 +11,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "vor.h"
+
 /* Input read line by line; blank lines and lines starting with '#' are
  * skipped, and line numbers count every physical line from 1. */
 typedef struct {
@@ -68,8 +70,17 @@ void cli_append(cli_output_t *out, const char *format, ...)
 /* Writes everything to stdout and frees the buffer. */
 void cli_flush(cli_output_t *out);
 
+/* Reads a site file ("x y" per line, blank and '#' lines skipped; site i
+ * is the i-th site line) from path ("-": stdin). Exits with status 2 on a
+ * bad line. The array is malloc'd; *count receives the number of sites. */
+vor_point_t *cli_read_sites(const char *path, uint32_t *count);
+
+/* Seconds from a monotonic clock, for --stats. */
+double cli_seconds(void);
+
 /* Subcommands: each takes its arguments after the subcommand name and
  * returns the process exit status. */
 int cli_predicates(int argc, char **argv);
+int cli_delaunay(int argc, char **argv);
 
 #endif

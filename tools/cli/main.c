@@ -2,6 +2,7 @@
  * build/host/vor - the host command-line tool (docs/api.md, "CLI").
  *
  *   vor predicates            exact orient2d / incircle signs of stdin lines
+ *   vor delaunay FILE         the Delaunay triangulation of a site file
  */
 #include <stdio.h>
 #include <string.h>
@@ -14,6 +15,7 @@ static const struct {
     const char *summary;
 } commands[] = {
     {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
+    {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
 };
 
 int main(int argc, char **argv)

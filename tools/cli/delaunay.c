@@ -1,0 +1,112 @@
+/*
+ * vor delaunay [--stats] [--order=quadtree|input] FILE
+ *
+ * The Delaunay triangulation of the sites in FILE ("-": stdin): one line
+ * "t i j k" per finite triangle, counterclockwise, rotated to start at its
+ * smallest id and sorted; then "d i j" for each site i that duplicates an
+ * earlier site j. --stats prints sizes, time and predicate tiers to stderr.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+static int compare_triangles(const void *a, const void *b)
+{
+    const uint32_t *x = a, *y = b;
+    for (int i = 0; i < 3; i++) {
+        if (x[i] != y[i]) {
+            return (x[i] < y[i]) ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+int cli_delaunay(int argc, char **argv)
+{
+    bool stats = false;
+    vor_build_options_t options = {VOR_ORDER_QUADTREE};
+    const char *path = NULL;
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--stats") == 0) {
+            stats = true;
+        } else if (strcmp(argv[i], "--order=quadtree") == 0) {
+            options.order = VOR_ORDER_QUADTREE;
+        } else if (strcmp(argv[i], "--order=input") == 0) {
+            options.order = VOR_ORDER_INPUT;
+        } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
+            path = argv[i];
+        } else {
+            cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] FILE");
+        }
+    }
+    if (path == NULL) {
+        cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] FILE");
+    }
+    uint32_t n;
+    vor_point_t *sites = cli_read_sites(path, &n);
+    uint32_t capacity = (n < 1u) ? 1u : n;
+    void *arena = malloc(VOR_ARENA_BYTES(capacity));
+    uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
+    if (arena == NULL || duplicate_of == NULL) {
+        cli_error("out of memory");
+    }
+    vor_t d;
+    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK) {
+        cli_error("cannot set up the diagram");
+    }
+    double start = cli_seconds();
+    if (vor_build(&d, sites, n, &options, duplicate_of) != VOR_OK) {
+        cli_error("build failed");
+    }
+    double seconds = cli_seconds() - start;
+
+    /* triangles, rotated to their smallest id and sorted */
+    vor_memory_t memory;
+    vor_memory(&d, &memory);
+    uint32_t (*triangles)[3] = malloc(((size_t)memory.triangles + 1u) * sizeof *triangles);
+    if (triangles == NULL) {
+        cli_error("out of memory");
+    }
+    size_t count = 0;
+    vor_triangle_iter_t it;
+    uint32_t ids[3];
+    vor_triangles_begin(&it, &d);
+    while (vor_triangles_next(&it, ids)) {
+        unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
+        first = (ids[2] < ids[first]) ? 2u : first;
+        for (unsigned k = 0; k < 3u; k++) {
+            triangles[count][k] = ids[(first + k) % 3u];
+        }
+        count++;
+    }
+    qsort(triangles, count, sizeof *triangles, compare_triangles);
+    cli_output_t out = {NULL, 0, 0};
+    for (size_t t = 0; t < count; t++) {
+        cli_append(&out, "t %u %u %u\n", triangles[t][0], triangles[t][1], triangles[t][2]);
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        if (duplicate_of[i] != i) {
+            cli_append(&out, "d %u %u\n", i, duplicate_of[i]);
+        }
+    }
+    cli_flush(&out);
+    if (stats) {
+        const vor_predicate_stats_t *s = &d.stats;
+        fprintf(stderr, "sites=%u triangles=%zu bytes=%zu bytes_per_site=%u.%02u seconds=%.6f\n",
+                n, count, memory.used_bytes, memory.bytes_per_site_x100 / 100u,
+                memory.bytes_per_site_x100 % 100u, seconds);
+        fprintf(stderr,
+                "orient2d narrow=%u wide=%u perturbed=%u incircle narrow=%u mid=%u wide=%u "
+                "perturbed=%u closer narrow=%u wide=%u perturbed=%u\n",
+                s->orient2d[VOR_TIER_NARROW], s->orient2d[VOR_TIER_WIDE], s->orient2d_perturbed,
+                s->incircle[VOR_TIER_NARROW], s->incircle[VOR_TIER_MID],
+                s->incircle[VOR_TIER_WIDE], s->incircle_perturbed, s->closer[VOR_TIER_NARROW],
+                s->closer[VOR_TIER_WIDE], s->closer_perturbed);
+    }
+    free(triangles);
+    free(duplicate_of);
+    free(arena);
+    free(sites);
+    return 0;
+}
