@@ -23,7 +23,7 @@
  *
  *   Each call evaluates in the narrowest width that is provably exact for
  *   its operands (a "tier"): int64 when the coordinate differences are
- *   small, 128 bits for mid-size differences, and full multi-word width
+ *   small, 128-bit products when they fit int32, and full multi-word width
  *   (133-bit results for incircle) otherwise. The widths are fixed by
  *   bounds, not by error estimates, so there is no fallback that could
  *   miss: every result is exact. Pass a vor_predicate_stats_t to count how
@@ -106,9 +106,8 @@ int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
  * Exact sign of det of the rows (x, y, x^2 + y^2, 1) of a, b, c, d:
  * positive when d lies inside the circle through a, b, c and a, b, c are
  * counterclockwise (negated when they are clockwise), 0 when cocircular.
- * Tiers, with D the largest |coordinate difference| to d: narrow for
- * D <= 2^14, mid for D <= 2^30, else wide (differences in [-2^k, 2^k - 1]
- * count as D <= 2^k). stats may be NULL. Never fails.
+ * Tiers, by the coordinate differences to d: narrow when they lie in
+ * [-2^14, 2^14 - 1], mid when they fit int32, else wide. stats may be NULL. Never fails.
  */
 int vor_incircle(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, const vor_point_t *d,
@@ -160,7 +159,8 @@ enum vor_error {
     VOR_ERR_ALIGN = -3,     /* the arena is not VOR_ARENA_ALIGN-aligned */
     VOR_ERR_FULL = -4,      /* max_sites sites are in the diagram already */
     VOR_ERR_DUPLICATE = -5, /* the point is a site already (its id is returned) */
-    VOR_ERR_INVALID = -6    /* vor_validate found a broken invariant */
+    VOR_ERR_INVALID = -6,   /* vor_validate found a broken invariant */
+    VOR_ERR_EMPTY = -7      /* a query on a diagram without sites */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -299,6 +299,39 @@ typedef struct vor_triangle_iter {
 void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d);
 /* Returns 1 and fills ids[3] while triangles remain, then 0. */
 int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3]);
+
+/* Iterator over the Delaunay neighbours of one site (the sites whose
+ * Voronoi cells share an edge with its cell, plus those of the perturbed
+ * triangulation where cells meet at a point), turning around the site.
+ * Yields nothing for a duplicate's id or a diagram of one site. */
+typedef struct vor_neighbour_iter {
+    const vor_t *d;
+    uint32_t site;
+    uint32_t slot;
+    uint32_t left;
+} vor_neighbour_iter_t;
+
+void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site);
+/* Returns 1 and sets *neighbour while neighbours remain, then 0. */
+int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour);
+
+/* ================================================================== */
+/* Queries (read-only: safe from several threads on one diagram)      */
+/* ================================================================== */
+
+#define VOR_NO_HINT 0xFFFFFFFFu
+
+/*
+ * The site nearest to (x, y), any int32 point, by exact distance; of
+ * several at the same distance, the smallest id. hint: a site to start
+ * from (the previous answer, for a moving query), or VOR_NO_HINT (the
+ * last inserted site). A duplicate is never answered: its first occurrence
+ * is the site. Cost: O(steps from the hint x neighbours), O(1) for a hint
+ * near the answer.
+ *   VOR_ERR_ARG    d or site NULL, hint not a site in the mesh
+ *   VOR_ERR_EMPTY  the diagram has no sites
+ */
+int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
 
 #ifdef __cplusplus
 }

@@ -110,28 +110,20 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
 
 uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p)
 {
-    vor__tri_t *tri = d->triangles;
-    uint32_t site = from;
+    uint32_t site = from, n;
+    vor_neighbour_iter_t it;
     /* each move is to a strictly closer site (a total order under the
      * perturbation), so at most one visit per site */
     for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
         uint32_t best = site;
-        vor_index_t slot = (vor_index_t)site;
-        /* the fan around `site` from its home slot, each neighbour once */
-        for (uint32_t k = 0; k <= d->vertex_count; k++) {
-            const vor__tri_t *t = &tri[slot];
-            unsigned i = vor__vertex_index(t, (vor_index_t)site);
-            vor_index_t next = vor__vertex(t, vor__next(i));
-            if (next != VOR__INFINITE && vor__closer(d, p, next, best) < 0) {
-                best = next;
-            }
-            slot = t->n[vor__prev(i)]; /* across (site, next): counterclockwise */
-            if (slot == (vor_index_t)site) {
-                break;
+        vor_neighbours_begin(&it, d, site);
+        while (vor_neighbours_next(&it, &n)) {
+            if (vor__closer(d, p, n, best) < 0) {
+                best = n;
             }
         }
         if (best == site) {
-            return site;
+            break;
         }
         site = best;
     }

@@ -173,9 +173,11 @@ VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
     return 0;
 }
 
-/* Mid tier term, D <= 2^30: the differences fit int32, the lift and
- * |cross| <= 2^61 are exact in int64, the product < 2^122. d[] holds a-d,
- * b-d, c-d as x, y pairs; the term is lift(p) cross(u, v). */
+/* Mid tier term, differences in int32 ([-2^31, 2^31 - 1]): the lift
+ * <= 2^63 fits uint64, the cross product <= 2^63 - 2^31 fits int64 (its
+ * two products cannot both reach 2^62 with opposite signs), the product of
+ * the two < 2^126. d[] holds a-d, b-d, c-d as x, y pairs; the term is
+ * lift(p) cross(u, v). */
 VOR__INLINE void mid_term(struct u192 sums[2], const int64_t d[6], unsigned p,
                           unsigned u, unsigned v)
 {
@@ -259,7 +261,7 @@ int vor_incircle(const vor_point_t *a, const vor_point_t *b,
                       vor__mul_i32(lc, ax * by - ay * bx);
         return sign_of(det);
     }
-    if (m < (1u << 30)) {
+    if (m < 0x80000000u) {
         COUNT(stats, incircle[VOR_TIER_MID]);
         return incircle_mid(d);
     }

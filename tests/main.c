@@ -6,6 +6,7 @@ int main(void)
     vor_port_init();
     test_predicates();
     test_mesh();
+    test_queries();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

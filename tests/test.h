@@ -43,5 +43,6 @@ int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);
 /* The groups of tests, one per part of the library. */
 void test_predicates(void);
 void test_mesh(void);
+void test_queries(void);
 
 #endif

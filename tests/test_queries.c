@@ -1,0 +1,180 @@
+/*
+ * test_queries.c - nearest-site queries and neighbour iteration against
+ * brute force: exact squared distances in 64-bit integers over every site,
+ * ties to the smallest id, duplicates answered by their first occurrence.
+ */
+#include "test.h"
+#include "vor.h"
+
+#define QUERY_SITES 1200u
+
+static vor_point_t sites[QUERY_SITES];
+static uint32_t first_of[QUERY_SITES];
+static uint8_t arena[VOR_ARENA_BYTES(QUERY_SITES)] __attribute__((aligned(8)));
+
+/* |q - p|^2 exactly: differences up to 2^32 - 1, so compare as unsigned
+ * 65-bit values (a 64-bit sum plus a carry). */
+static int compare_distance(vor_point_t q, vor_point_t a, vor_point_t b)
+{
+    uint64_t da[2] = {0, 0}, db[2] = {0, 0};
+    int64_t d[4] = {(int64_t)a.x - q.x, (int64_t)a.y - q.y, (int64_t)b.x - q.x,
+                    (int64_t)b.y - q.y};
+    for (int k = 0; k < 4; k++) {
+        uint64_t m = (uint64_t)(d[k] < 0 ? -d[k] : d[k]);
+        uint64_t sq = m * m; /* m < 2^32 */
+        uint64_t *acc = (k < 2) ? da : db;
+        acc[0] += sq;
+        acc[1] += (acc[0] < sq) ? 1u : 0u;
+    }
+    if (da[1] != db[1]) {
+        return (da[1] < db[1]) ? -1 : 1;
+    }
+    return (da[0] < db[0]) ? -1 : (da[0] > db[0]) ? 1 : 0;
+}
+
+static uint32_t brute_nearest(uint32_t n, vor_point_t q)
+{
+    uint32_t best = VOR_NO_HINT;
+    for (uint32_t i = 0; i < n; i++) {
+        if (first_of[i] == i &&
+            (best == VOR_NO_HINT || compare_distance(q, sites[i], sites[best]) < 0)) {
+            best = i; /* strictly closer only: ties keep the smaller id */
+        }
+    }
+    return best;
+}
+
+static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_point_t *extra,
+                      uint32_t extras)
+{
+    vor_t d;
+    CHECK(vor_init(&d, arena, sizeof arena, QUERY_SITES) == VOR_OK, "init");
+    CHECK(vor_build(&d, sites, n, NULL, first_of) == VOR_OK, "%s: build", name);
+    unsigned wrong = 0, queries = 0;
+    uint32_t hint = VOR_NO_HINT;
+    for (uint32_t k = 0; k < 400u + extras; k++) {
+        vor_point_t q;
+        if (k < extras) {
+            q = extra[k];
+        } else if (k % 4u == 0u) { /* near a site */
+            q = sites[test_rng_u32(rng) % n];
+            q.x += test_rng_range(rng, -2, 2);
+            q.y += test_rng_range(rng, -2, 2);
+        } else if (k % 4u == 1u) { /* anywhere, far outside too */
+            q.x = (int32_t)test_rng_u32(rng);
+            q.y = (int32_t)test_rng_u32(rng);
+        } else { /* between two sites: on bisectors when coordinates allow */
+            vor_point_t a = sites[test_rng_u32(rng) % n], b = sites[test_rng_u32(rng) % n];
+            q.x = (int32_t)(((int64_t)a.x + b.x) / 2);
+            q.y = (int32_t)(((int64_t)a.y + b.y) / 2);
+        }
+        /* alternate hints: the previous answer, none, a random site */
+        uint32_t h = (k % 3u == 0u) ? hint : (k % 3u == 1u) ? VOR_NO_HINT
+                                                             : first_of[test_rng_u32(rng) % n];
+        uint32_t got = VOR_NO_HINT;
+        int err = vor_nearest(&d, q.x, q.y, h, &got);
+        uint32_t expect = brute_nearest(n, q);
+        queries++;
+        if (err != VOR_OK || got != expect) {
+            wrong++;
+            if (wrong <= 3u) {
+                CHECK(false, "%s: nearest(%d, %d) = %u (err %d), brute force %u", name, q.x, q.y,
+                      got, err, expect);
+            }
+        }
+        hint = got;
+    }
+    CHECK(wrong == 0, "%s: %u of %u nearest queries wrong", name, wrong, queries);
+
+    /* neighbours are symmetric, and every edge is seen twice */
+    uint32_t seen = 0, asymmetric = 0;
+    for (uint32_t s = 0; s < n; s++) {
+        vor_neighbour_iter_t it, back;
+        uint32_t t, u;
+        vor_neighbours_begin(&it, &d, s);
+        while (vor_neighbours_next(&it, &t)) {
+            seen++;
+            bool found = false;
+            vor_neighbours_begin(&back, &d, t);
+            while (vor_neighbours_next(&back, &u)) {
+                found |= u == s;
+            }
+            asymmetric += found ? 0u : 1u;
+        }
+    }
+    vor_memory_t m;
+    vor_memory(&d, &m);
+    uint32_t hull = 0; /* finite edges = 3 (v+1) - 6 - hull edges at infinity */
+    vor_triangle_iter_t ti;
+    uint32_t ids[3];
+    uint32_t finite = 0;
+    vor_triangles_begin(&ti, &d);
+    while (vor_triangles_next(&ti, ids)) {
+        finite++;
+    }
+    hull = m.triangles - finite;
+    uint32_t edges = (d.vertex_count >= 2u) ? (3u * m.triangles / 2u - hull) : 0u;
+    CHECK(asymmetric == 0 && seen == 2u * edges, "%s: %u asymmetric neighbours, %u of %u edges",
+          name, asymmetric, seen / 2u, edges);
+}
+
+void test_queries(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    /* uniform, full range */
+    for (uint32_t i = 0; i < QUERY_SITES; i++) {
+        sites[i].x = (int32_t)test_rng_u32(&rng);
+        sites[i].y = (int32_t)test_rng_u32(&rng);
+    }
+    vor_point_t corners[4] = {{INT32_MIN, INT32_MIN}, {INT32_MAX, INT32_MIN},
+                              {INT32_MIN, INT32_MAX}, {INT32_MAX, INT32_MAX}};
+    check_set("uniform", QUERY_SITES, &rng, corners, 4);
+    /* a grid: cell centres are equidistant from four sites */
+    vor_point_t centres[64];
+    for (uint32_t i = 0; i < 30u * 30u; i++) {
+        sites[i].x = (int32_t)(i % 30u) * 10;
+        sites[i].y = (int32_t)(i / 30u) * 10;
+    }
+    for (uint32_t k = 0; k < 64u; k++) {
+        centres[k].x = (int32_t)(k % 8u) * 30 + 5;
+        centres[k].y = (int32_t)(k / 8u) * 30 + 5;
+    }
+    check_set("grid", 900, &rng, centres, 64);
+    /* a circle around the origin: the centre ties with every site */
+    uint32_t n = 0;
+    for (int32_t x = -25; x <= 25; x++) {
+        for (int32_t y = -25; y <= 25; y++) {
+            if (x * x + y * y == 625 && n < QUERY_SITES) {
+                sites[n].x = x * 1000;
+                sites[n].y = y * 1000;
+                n++;
+            }
+        }
+    }
+    /* shuffle so that the smallest id is not the first one around */
+    for (uint32_t i = n; i > 1u; i--) {
+        uint32_t j = test_rng_u32(&rng) % i;
+        vor_point_t t = sites[i - 1u];
+        sites[i - 1u] = sites[j];
+        sites[j] = t;
+    }
+    vor_point_t origin[1] = {{0, 0}};
+    check_set("circle", n, &rng, origin, 1);
+    /* collinear sites, duplicates among them */
+    for (uint32_t i = 0; i < 300u; i++) {
+        int32_t t = test_rng_range(&rng, -200, 200);
+        sites[i].x = 5 * t;
+        sites[i].y = 2 * t;
+    }
+    check_set("collinear with duplicates", 300, &rng, origin, 1);
+    /* errors */
+    vor_t d;
+    uint32_t got;
+    CHECK(vor_init(&d, arena, sizeof arena, 10) == VOR_OK, "init");
+    CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &got) == VOR_ERR_EMPTY, "empty diagram");
+    CHECK(vor_insert(&d, 7, 7, NULL) == VOR_OK, "insert");
+    CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &got) == VOR_OK && got == 0, "one site");
+    CHECK(vor_nearest(&d, 0, 0, 5, &got) == VOR_ERR_ARG, "hint out of range");
+    CHECK(vor_nearest(&d, 0, 0, 0, NULL) == VOR_ERR_ARG, "NULL result");
+}
