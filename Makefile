@@ -144,11 +144,11 @@ $(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
 
 # ---------------------------------------------------------------- top level
 
-# The main job: the example firmware on the emulated Cortex-M3.
+# The main job: examples/voronoi on the emulated Cortex-M3.
 DEMO_PORT ?= cortex-m3
 demo:
 	@tools/install-toolchain.sh
-	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-exact_predicates
+	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-voronoi
 
 test:
 	@tools/install-toolchain.sh
