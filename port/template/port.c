@@ -26,7 +26,7 @@
  *   4. a deliberate fault (load from an unmapped address) ends the run
  *      with a "fatal:" line and status 99, not a hang.
  *   5. vor_port_counter: time a loop of known length (see below).
- *   6. `make PORT=<target> test`.
+ *   6. `make PORT=<target> tests run-tests`.
  */
 #include "../port.h"
 

@@ -20,7 +20,7 @@ OBJCOPY = $(CROSS)objcopy
 #   -ffreestanding              there is no C library (vor needs none)
 #   -ffunction-sections -fdata-sections   so --gc-sections can drop what a
 #                               program does not use
-ARCH_CFLAGS = -mcpu=cortex-m0plus -mthumb -ffreestanding \
+ARCH_CFLAGS = -mcpu=cortex-m4 -mthumb -ffreestanding \
               -ffunction-sections -fdata-sections
 
 # The port's sources, compiled with ARCH_CFLAGS and linked into every test,
