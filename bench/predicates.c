@@ -127,8 +127,10 @@ int main(void)
     vor_predicate_stats_t degenerate = {0};
     make_degenerate(&rng, 1 << 20, true);
     run("orient2d_sos", "collinear", ORIENT2D_SOS, &degenerate);
+    make_degenerate(&rng, 1 << 10, false); /* differences below 2^14 */
+    run("incircle_sos", "cocircular-small", INCIRCLE_SOS, &degenerate);
     make_degenerate(&rng, 1 << 20, false);
-    run("incircle_sos", "cocircular", INCIRCLE_SOS, &degenerate);
+    run("incircle_sos", "cocircular-large", INCIRCLE_SOS, &degenerate);
     /* every timed call landed in the tier its row names */
     uint32_t per_row = BENCH_ROUNDS * INPUTS;
     bool tiers_ok = true;
@@ -138,7 +140,7 @@ int main(void)
         tiers_ok &= stats.closer[t] == ((t == VOR_TIER_MID) ? 0u : per_row);
     }
     tiers_ok &= degenerate.orient2d_perturbed == per_row &&
-                degenerate.incircle_perturbed == per_row;
+                degenerate.incircle_perturbed == 2u * per_row;
     test_printf("bench tiers %s\n", tiers_ok ? "ok" : "MISMATCH");
     return tiers_ok ? 0 : 1;
 }

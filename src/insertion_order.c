@@ -21,18 +21,28 @@
  */
 #include "mesh.h"
 
-/* (x, y, id) order of sites: equal points end up adjacent, the smallest
- * id (the first occurrence) first. */
+/* Is the highest set bit of a below that of b? */
+static inline bool lower_top_bit(uint32_t a, uint32_t b)
+{
+    return a < b && a < (a ^ b);
+}
+
+/* Z-order (Morton order) of sites, ids breaking ties: consecutive sites
+ * are close to each other, and equal points end up adjacent with the
+ * smallest id (the first occurrence) first. The coordinate whose values
+ * differ in the higher bit decides (Chan's comparison, no interleaving). */
 static bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
 {
-    const vor_point_t *p = &sites[a], *q = &sites[b];
-    if (p->x != q->x) {
-        return p->x < q->x;
+    /* flipping the sign bit maps int32 order onto uint32 order */
+    uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u, ay = (uint32_t)sites[a].y ^ 0x80000000u;
+    uint32_t bx = (uint32_t)sites[b].x ^ 0x80000000u, by = (uint32_t)sites[b].y ^ 0x80000000u;
+    if (ax == bx && ay == by) {
+        return a < b;
     }
-    if (p->y != q->y) {
-        return p->y < q->y;
+    if (lower_top_bit(ax ^ bx, ay ^ by)) {
+        return ay < by;
     }
-    return a < b;
+    return ax < bx;
 }
 
 static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
@@ -276,14 +286,18 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
             }
         }
 #undef SQUARE_SITE
-        /* the other sites of each bucket, from the bucket's representative */
+        /* the other sites of each bucket, each walking from the one before
+         * it in Z-order, the first from the bucket's representative:
+         * crowded buckets (clustered sites) then take short walks too */
         for (uint32_t r = 0; r < buckets; r++) {
             uint32_t b = bucket_at[r];
+            vor_index_t previous = sorted[start[b]];
             for (uint32_t e = start[b] + 1u; e < start[b + 1u]; e++) {
                 vor_index_t s = sorted[e];
                 if (rep[s] == s) {
                     plan[2u * count] = s;
-                    plan[2u * count + 1u] = sorted[start[b]];
+                    plan[2u * count + 1u] = previous;
+                    previous = s;
                     count++;
                 }
             }

@@ -38,59 +38,6 @@ int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
 }
 
 /* ------------------------------------------------------------------ */
-/* Predicates as the mesh calls them                                   */
-
-#ifdef VOR_FAULT_INJECTION
-/* Test builds: a wrong sign with probability fault_rate / 2^32. */
-static int with_faults(vor_t *d, int sign)
-{
-    if (d->stats.fault_rate == 0u) {
-        return sign;
-    }
-    uint64_t x = d->stats.fault_state;
-    x ^= x << 13;
-    x ^= x >> 7;
-    x ^= x << 17;
-    d->stats.fault_state = x;
-    return ((uint32_t)(x >> 32) < d->stats.fault_rate) ? -sign : sign;
-}
-#else
-#define with_faults(d, sign) (sign)
-#endif
-
-int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c)
-{
-    return with_faults(d, vor_orient2d_sos(d->sites, a, b, c, &d->stats));
-}
-
-int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
-{
-    return with_faults(d, vor_incircle_sos(d->sites, a, b, c, p, &d->stats));
-}
-
-int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
-{
-    return with_faults(d, vor_closer_sos(d->sites, p, a, b, &d->stats));
-}
-
-bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p)
-{
-    vor_index_t v0 = vor__vertex(t, 0), v1 = t->v[1], v2 = t->v[2];
-    /* a triangle at infinity (a, b, inf): its "circle" is the open half
-     * plane beyond the hull edge ab, left of a -> b */
-    if (v0 == VOR__INFINITE) {
-        return vor__orient(d, v1, v2, p) > 0;
-    }
-    if (v1 == VOR__INFINITE) {
-        return vor__orient(d, v2, v0, p) > 0;
-    }
-    if (v2 == VOR__INFINITE) {
-        return vor__orient(d, v0, v1, p) > 0;
-    }
-    return vor__incircle(d, v0, v1, v2, p) > 0;
-}
-
-/* ------------------------------------------------------------------ */
 /* Validation                                                          */
 
 /* vor__conflicts with the true predicates, uncounted. */

@@ -22,6 +22,7 @@
 
 #include <stdbool.h>
 
+#include "predicates.h"
 #include "vor.h"
 
 struct vor__triangle {
@@ -111,16 +112,69 @@ static inline uint32_t vor__triangle_count(uint32_t vertices)
 }
 
 /* The perturbed predicates as the mesh calls them: site ids are the
- * perturbation's order, the diagram's stats count the tiers (and, in fault
- * injection builds, flip signs at random). */
-int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c);
-int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p);
-int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b);
+ * perturbation's order, the diagram's stats count the tiers, and the
+ * narrow tiers are inlined. In fault injection builds (tests only) a sign
+ * is flipped with probability fault_rate / 2^32. */
+static inline int vor__with_faults(vor_t *d, int sign)
+{
+#ifdef VOR_FAULT_INJECTION
+    if (d->stats.fault_rate != 0u) {
+        uint64_t x = d->stats.fault_state;
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        d->stats.fault_state = x;
+        return ((uint32_t)(x >> 32) < d->stats.fault_rate) ? -sign : sign;
+    }
+#else
+    (void)d;
+#endif
+    return sign;
+}
+
+static inline int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c)
+{
+    const vor_point_t *s = d->sites;
+    int sign = vor__orient2d_exact(&s[a], &s[b], &s[c], &d->stats);
+    if (sign == 0) {
+        sign = vor__orient2d_perturbed(s, a, b, c, &d->stats);
+    }
+    return vor__with_faults(d, sign);
+}
+
+static inline int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+{
+    const vor_point_t *s = d->sites;
+    int sign = vor__incircle_exact(&s[a], &s[b], &s[c], &s[p], &d->stats);
+    if (sign == 0) {
+        sign = vor__incircle_perturbed(s, a, b, c, p, &d->stats);
+    }
+    return vor__with_faults(d, sign);
+}
+
+static inline int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
+{
+    return vor__with_faults(d, vor_closer_sos(d->sites, p, a, b, &d->stats));
+}
 
 /* Does triangle t (finite or at infinity) conflict with site p, i.e. is p
  * strictly inside its circumcircle (for a hull triangle: strictly outside
- * its hull edge)? The Voronoi vertex t would be deleted by p. */
-bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p);
+ * its hull edge, left of a -> b in (a, b, inf))? The Voronoi vertex t would
+ * be deleted by p. */
+static inline bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p)
+{
+    vor_index_t v0 = vor__vertex(t, 0), v1 = t->v[1], v2 = t->v[2];
+    if (v0 == VOR__INFINITE) {
+        return vor__orient(d, v1, v2, p) > 0;
+    }
+    if (v1 == VOR__INFINITE) {
+        return vor__orient(d, v2, v0, p) > 0;
+    }
+    if (v2 == VOR__INFINITE) {
+        return vor__orient(d, v0, v1, p) > 0;
+    }
+    return vor__incircle(d, v0, v1, v2, p) > 0;
+}
 
 /* Places site p in the mesh: returns the slot of the triangle that contains
  * it (a hull triangle when p is outside the hull), walking from slot start.

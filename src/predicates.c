@@ -16,14 +16,7 @@
 
 #include "vor.h"
 
-#include "multiword.h"
-
-#define COUNT(stats, counter)                                                  \
-    do {                                                                       \
-        if ((stats) != NULL) {                                                 \
-            (stats)->counter++;                                                \
-        }                                                                      \
-    } while (0)
+#include "predicates.h"
 
 /* (k + 1) mod 3 without a division (Cortex-M0 has no divide instruction) */
 static const unsigned char next_of[3] = {1, 2, 0};
@@ -33,22 +26,9 @@ VOR__INLINE uint32_t magnitude(int64_t d)
     return (uint32_t)(d < 0 ? -d : d);
 }
 
-/* |d| rounded down for negative d (~d = -d - 1), two instructions on most
- * machines: bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1]. The
- * OR of bounds is below 2^k exactly when every bound is. */
-VOR__INLINE uint64_t bound(int64_t d)
-{
-    return (uint64_t)(d < 0 ? ~d : d);
-}
-
-VOR__INLINE int sign_of(int64_t v)
-{
-    return (v > 0) - (v < 0);
-}
-
 /* Sign of a*b - c*d for |a|, |b|, |c|, |d| <= 2^32 - 1, without any value
  * wider than 64 bits: compare the products' signs, then their magnitudes. */
-VOR__NOINLINE static int compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
+int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 {
     int sp = sign_of(a) * sign_of(b);
     int sq = sign_of(c) * sign_of(d);
@@ -70,18 +50,7 @@ VOR__NOINLINE static int compare_products(int64_t a, int64_t b, int64_t c, int64
 int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, vor_predicate_stats_t *stats)
 {
-    int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
-    int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
-    if ((bound(acx) | bound(acy) | bound(bcx) | bound(bcy)) < 0x80000000u) {
-        /* the differences fit int32, |products| <= 2^62 and their
-         * difference is below 2^63 */
-        COUNT(stats, orient2d[VOR_TIER_NARROW]);
-        int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
-                      vor__mul_i32((int32_t)acy, (int32_t)bcx);
-        return sign_of(det);
-    }
-    COUNT(stats, orient2d[VOR_TIER_WIDE]);
-    return compare_products(acx, bcy, acy, bcx);
+    return vor__orient2d_exact(a, b, c, stats);
 }
 
 /* ------------------------------------------------------------------ */
@@ -218,7 +187,7 @@ VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
     add_product(&sums[negative], lift, lift_high, low, high);
 }
 
-VOR__NOINLINE static int incircle_mid(const int64_t d[6])
+int vor__incircle_mid(const int64_t d[6])
 {
     struct u192 sums[2]; /* positive, negative */
     clear_sums(sums);
@@ -228,7 +197,7 @@ VOR__NOINLINE static int incircle_mid(const int64_t d[6])
     return compare_u192(&sums[0], &sums[1]);
 }
 
-VOR__NOINLINE static int incircle_wide(const int64_t d[6])
+int vor__incircle_wide(const int64_t d[6])
 {
     struct u192 sums[2]; /* positive, negative */
     clear_sums(sums);
@@ -239,34 +208,10 @@ VOR__NOINLINE static int incircle_wide(const int64_t d[6])
 }
 
 int vor_incircle(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, const vor_point_t *dp,
+                 const vor_point_t *c, const vor_point_t *d,
                  vor_predicate_stats_t *stats)
 {
-    int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
-                    (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
-                    (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint64_t m = bound(d[0]) | bound(d[1]) | bound(d[2]) | bound(d[3]) |
-                 bound(d[4]) | bound(d[5]);
-    if (m < (1u << 14)) {
-        /* D <= 2^14: lifts and |crosses| <= 2^29 fit int32, the three
-         * products <= 2^58 and their sum < 2^60 fit int64 */
-        COUNT(stats, incircle[VOR_TIER_NARROW]);
-        int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
-        int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
-        int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
-        int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
-        int32_t lc = cx * cx + cy * cy;
-        int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
-                      vor__mul_i32(lb, cx * ay - cy * ax) +
-                      vor__mul_i32(lc, ax * by - ay * bx);
-        return sign_of(det);
-    }
-    if (m < 0x80000000u) {
-        COUNT(stats, incircle[VOR_TIER_MID]);
-        return incircle_mid(d);
-    }
-    COUNT(stats, incircle[VOR_TIER_WIDE]);
-    return incircle_wide(d);
+    return vor__incircle_exact(a, b, c, d, stats);
 }
 
 /* ------------------------------------------------------------------ */
@@ -324,10 +269,14 @@ static size_t rank_sites(const uint32_t ids[], size_t n, size_t rank[])
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, vor_predicate_stats_t *stats)
 {
-    int sign = vor_orient2d(&sites[i], &sites[j], &sites[k], stats);
-    if (sign != 0) {
-        return sign;
-    }
+    int sign = vor__orient2d_exact(&sites[i], &sites[j], &sites[k], stats);
+    return (sign != 0) ? sign : vor__orient2d_perturbed(sites, i, j, k, stats);
+}
+
+int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
+                            uint32_t k, vor_predicate_stats_t *stats)
+{
+    int sign = 0;
     COUNT(stats, orient2d_perturbed);
     const uint32_t ids[3] = {i, j, k};
     size_t rank[3];
@@ -355,7 +304,7 @@ int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                 e[r][0] = (kind == ROW_DX) ? 1 : (kind == ROW_DY) ? 0 : x;
                 e[r][1] = (kind == ROW_DY) ? 1 : (kind == ROW_DX) ? 0 : y;
             }
-            sign = compare_products(e[0][0], e[1][1], e[0][1], e[1][0]);
+            sign = vor__compare_products(e[0][0], e[1][1], e[0][1], e[1][0]);
         }
     }
     VOR_ASSERT(sign != 0);
@@ -409,10 +358,14 @@ static int wide_det3_sign(const wide_t *m[3][3])
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
-    int sign = vor_incircle(&sites[i], &sites[j], &sites[k], &sites[l], stats);
-    if (sign != 0) {
-        return sign;
-    }
+    int sign = vor__incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], stats);
+    return (sign != 0) ? sign : vor__incircle_perturbed(sites, i, j, k, l, stats);
+}
+
+int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
+                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+{
+    int sign = 0;
     COUNT(stats, incircle_perturbed);
     const uint32_t ids[4] = {i, j, k, l};
     size_t rank[4];
@@ -423,60 +376,97 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
             row[n++] = p;
         }
     }
-    /* the entries of every row kind of the three minor rows */
-    static const wide_t zero = {{0}};
-    wide_t one = wide_from(1);
-    wide_t point[3][3], twice[3][2];
+    /* the minor rows' coordinates relative to the top site */
+    int64_t x[3], y[3];
+    uint64_t m = 0;
     for (size_t r = 0; r < 3; r++) {
         const vor_point_t *s = &sites[ids[row[r]]];
         const vor_point_t *o = &sites[ids[top]];
-        int64_t x = (int64_t)s->x - o->x, y = (int64_t)s->y - o->y;
-        point[r][0] = wide_from(x);
-        point[r][1] = wide_from(y);
-        point[r][2] = wide_mul(&point[r][0], &point[r][0]);
-        wide_t yy = wide_mul(&point[r][1], &point[r][1]);
-        vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
-        twice[r][0] = wide_from(2 * x);
-        twice[r][1] = wide_from(2 * y);
+        x[r] = (int64_t)s->x - o->x;
+        y[r] = (int64_t)s->y - o->y;
+        m |= bound(x[r]) | bound(y[r]);
+    }
+    /* Small coordinates (the usual degeneracy: grids, nearby cocircular
+     * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
+     * entry per column <= 2^57, six of them < 2^60: int64. Else 160 bits. */
+    bool narrow = m < (1u << 14);
+    static const wide_t zero = {{0}};
+    wide_t one = wide_from(1);
+    wide_t point[3][3], twice[3][2];
+    if (!narrow) {
+        for (size_t r = 0; r < 3; r++) {
+            point[r][0] = wide_from(x[r]);
+            point[r][1] = wide_from(y[r]);
+            point[r][2] = wide_mul(&point[r][0], &point[r][0]);
+            wide_t yy = wide_mul(&point[r][1], &point[r][1]);
+            vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
+            twice[r][0] = wide_from(2 * x[r]);
+            twice[r][1] = wide_from(2 * y[r]);
+        }
     }
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
     for (unsigned t = 1; t < 64; t++) {
-        const wide_t *m[3][3];
+        const wide_t *w[3][3];
+        int32_t e[3][3];
         unsigned squares = 0;
         for (size_t r = 0; r < 3; r++) {
             size_t shift = 2 * rank[row[r]];
             enum row_kind kind = (enum row_kind)((t >> shift) & 3u);
             switch (kind) {
             case ROW_POINT:
-                m[r][0] = &point[r][0];
-                m[r][1] = &point[r][1];
-                m[r][2] = &point[r][2];
+                e[r][0] = (int32_t)x[r];
+                e[r][1] = (int32_t)y[r];
+                e[r][2] = narrow ? (int32_t)(x[r] * x[r] + y[r] * y[r]) : 0;
+                w[r][0] = &point[r][0];
+                w[r][1] = &point[r][1];
+                w[r][2] = &point[r][2];
                 break;
             case ROW_DY:
-                m[r][0] = &zero;
-                m[r][1] = &one;
-                m[r][2] = &twice[r][1];
+                e[r][0] = 0;
+                e[r][1] = 1;
+                e[r][2] = (int32_t)(2 * y[r]);
+                w[r][0] = &zero;
+                w[r][1] = &one;
+                w[r][2] = &twice[r][1];
                 break;
             case ROW_SQUARE:
-                m[r][0] = &zero;
-                m[r][1] = &zero;
-                m[r][2] = &one;
+                e[r][0] = 0;
+                e[r][1] = 0;
+                e[r][2] = 1;
+                w[r][0] = &zero;
+                w[r][1] = &zero;
+                w[r][2] = &one;
                 squares++;
                 break;
             case ROW_DX:
             default:
-                m[r][0] = &one;
-                m[r][1] = &zero;
-                m[r][2] = &twice[r][0];
+                e[r][0] = 1;
+                e[r][1] = 0;
+                e[r][2] = (int32_t)(2 * x[r]);
+                w[r][0] = &one;
+                w[r][1] = &zero;
+                w[r][2] = &twice[r][0];
                 break;
             }
         }
         if (squares >= 2) {
             continue; /* two equal rows: the term is 0 */
         }
-        sign = wide_det3_sign(m);
+        if (narrow) {
+            /* entries fit int32 (<= 2^29); minors <= 2^44; terms <= 2^58 */
+            int64_t det = 0;
+            for (unsigned c = 0; c < 3; c++) {
+                unsigned c1 = next_of[c], c2 = next_of[c1];
+                int64_t minor = vor__mul_i32(e[1][c1], e[2][c2]) -
+                                vor__mul_i32(e[1][c2], e[2][c1]);
+                det += vor__mul_i64_i32(minor, e[0][c]);
+            }
+            sign = sign_of(det);
+        } else {
+            sign = wide_det3_sign(w);
+        }
         if (sign != 0) {
             break;
         }
