@@ -6,6 +6,8 @@
 #   make test               every test, on the host and under QEMU on every target
 #   make demo               the main job on the emulated Cortex-M3
 #   make size               flash, static RAM and worst stack depth per target
+#   make bench              Delaunay build: vor against CGAL and Boost.Polygon,
+#                           and target instructions per inserted site
 #   make bench-predicates   predicate speed: host ns and target instructions
 #
 # Toolchains and QEMU are installed on demand by tools/install-toolchain.sh.

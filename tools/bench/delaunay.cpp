@@ -1,0 +1,611 @@
+// tools/bench/delaunay.cpp - `make bench`, host part: the Delaunay build of
+// vor against CGAL Delaunay_triangulation_2 (Epick, range insert) and Boost
+// Polygon construct_voronoi, on identical inputs in one process run.
+//
+//   delaunay-host [--sizes N,N,..] [--reps R] [--input-order-max N]
+//                 [--out FILE] [--no-mem]
+//   delaunay-host --mem LIB KIND N     (internal: one memory measurement)
+//
+// For every input kind (uniform full-range int32, uniform 16-bit, grid,
+// clustered) and size it prints one Markdown table row: the best of R
+// wall-clock times of each library (the libraries take turns within each
+// repetition), their ratios, and bytes per site. Input generation and the
+// conversion to each library's point type are not timed; allocation of the
+// structure and its page faults are (vor: malloc of VOR_ARENA_BYTES(n),
+// vor_init, vor_build; CGAL: construct and range-insert; Boost: construct
+// the diagram and construct_voronoi); destruction is not.
+//
+// Memory: each library runs once more in a fresh child process
+// (--mem), which generates the same input, resets its peak-RSS mark
+// (writing 5 to /proc/self/clear_refs), runs the library and reports
+// VmHWM minus the RSS just before the run, and the peak of live heap bytes
+// (global operator new/delete and vor's arena malloc, counted with
+// malloc_usable_size).
+//
+// Light correctness checks on every row: vor_validate passes; vor's
+// distinct sites equal CGAL's number_of_vertices() and Boost's cells; vor's
+// finite triangles of nonzero area equal CGAL's number_of_faces(); and for
+// inputs with no four cocircular sites (uniform full-range) Boost's Voronoi
+// vertices too.
+// A failed check marks the row and makes the exit status 1.
+
+#include "vor.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <boost/polygon/voronoi.hpp>
+
+#include <malloc.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <string>
+#include <vector>
+
+// ------------------------------------------------------------ heap counter
+
+// gcc warns that the replaced operator delete frees what operator new
+// returned: both are ours and use malloc/free, so that is right.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
+// Counting is switched on only in --mem children, so timed runs pay
+// nothing but one predictable branch per allocation.
+static bool heap_counting;
+static long long heap_live, heap_peak; // signed: frees of older blocks may come first
+
+static void heap_add(void *p)
+{
+    if (heap_counting && p != nullptr) {
+        heap_live += (long long)malloc_usable_size(p);
+        heap_peak = std::max(heap_peak, heap_live);
+    }
+}
+
+static void heap_sub(void *p)
+{
+    if (heap_counting && p != nullptr) {
+        heap_live -= (long long)malloc_usable_size(p);
+    }
+}
+
+void *operator new(size_t n)
+{
+    void *p = std::malloc(n != 0 ? n : 1);
+    if (p == nullptr) {
+        throw std::bad_alloc();
+    }
+    heap_add(p);
+    return p;
+}
+void *operator new[](size_t n) { return operator new(n); }
+void operator delete(void *p) noexcept
+{
+    heap_sub(p);
+    std::free(p);
+}
+void operator delete[](void *p) noexcept { operator delete(p); }
+void operator delete(void *p, size_t) noexcept { operator delete(p); }
+void operator delete[](void *p, size_t) noexcept { operator delete(p); }
+
+static void *counted_malloc(size_t n)
+{
+    void *p = std::malloc(n);
+    heap_add(p);
+    return p;
+}
+
+static void counted_free(void *p)
+{
+    heap_sub(p);
+    std::free(p);
+}
+
+// ------------------------------------------------------------------ inputs
+
+enum kind { UNIFORM, U16, GRID, CLUSTERED, KINDS };
+static const char *const kind_name[KINDS] = {"uniform", "u16", "grid", "clustered"};
+static const char *const kind_label[KINDS] = {"uniform int32", "uniform 16-bit", "grid",
+                                              "clustered"};
+
+struct rng {
+    uint64_t s;
+    uint64_t next() // splitmix64
+    {
+        uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    double unit() { return (double)((next() >> 11) + 1) * 0x1p-53; } // (0, 1]
+    uint64_t below(uint64_t m) { return next() % m; }
+};
+
+static const int32_t GRID_SPACING = 1000;
+static const unsigned CLUSTERS = 300;
+static const double CLUSTER_SIGMA = 300.0;
+static const int32_t CLUSTER_SPREAD = 1 << 24; // centres in [-2^24, 2^24]
+
+// Deterministic: the same kind and n give the same points in every process.
+static std::vector<vor_point_t> make_input(kind k, uint32_t n)
+{
+    rng r{0x5EEDull * 1000003u + (uint64_t)k * 7919u + n};
+    std::vector<vor_point_t> p(n);
+    switch (k) {
+    case UNIFORM:
+        for (auto &q : p) {
+            uint64_t v = r.next();
+            q.x = (int32_t)(uint32_t)v;
+            q.y = (int32_t)(uint32_t)(v >> 32);
+        }
+        break;
+    case U16:
+        for (auto &q : p) {
+            uint64_t v = r.next();
+            q.x = (int16_t)(uint16_t)v;
+            q.y = (int16_t)(uint16_t)(v >> 16);
+        }
+        break;
+    case GRID: { // first n points of a ceil(sqrt n)^2 lattice, shuffled
+        uint32_t side = (uint32_t)std::ceil(std::sqrt((double)n));
+        for (uint32_t i = 0; i < n; i++) {
+            p[i].x = ((int32_t)(i % side) - (int32_t)(side / 2)) * GRID_SPACING;
+            p[i].y = ((int32_t)(i / side) - (int32_t)(side / 2)) * GRID_SPACING;
+        }
+        for (uint32_t i = n; i > 1; i--) {
+            std::swap(p[i - 1], p[r.below(i)]);
+        }
+        break;
+    }
+    case CLUSTERED: {
+        std::vector<vor_point_t> centre(CLUSTERS);
+        for (auto &c : centre) {
+            c.x = (int32_t)((int64_t)r.below(2u * CLUSTER_SPREAD + 1) - CLUSTER_SPREAD);
+            c.y = (int32_t)((int64_t)r.below(2u * CLUSTER_SPREAD + 1) - CLUSTER_SPREAD);
+        }
+        for (auto &q : p) { // a random cluster each, Box-Muller offsets
+            const vor_point_t &c = centre[r.below(CLUSTERS)];
+            double radius = CLUSTER_SIGMA * std::sqrt(-2.0 * std::log(r.unit()));
+            double angle = 2.0 * M_PI * r.unit();
+            q.x = c.x + (int32_t)std::lround(radius * std::cos(angle));
+            q.y = c.y + (int32_t)std::lround(radius * std::sin(angle));
+        }
+        break;
+    }
+    default:
+        break;
+    }
+    return p;
+}
+
+// --------------------------------------------------------------- libraries
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Cgal_dt = CGAL::Delaunay_triangulation_2<Epick>;
+using Boost_point = boost::polygon::point_data<int32_t>;
+using Boost_vd = boost::polygon::voronoi_diagram<double>;
+
+struct inputs {
+    std::vector<vor_point_t> vor;
+    std::vector<Epick::Point_2> cgal;
+    std::vector<Boost_point> boost;
+};
+
+static void convert(inputs &in, bool cgal, bool boost)
+{
+    if (cgal) {
+        in.cgal.reserve(in.vor.size());
+        for (const auto &q : in.vor) {
+            in.cgal.emplace_back((double)q.x, (double)q.y); // exact: |x| < 2^53
+        }
+    }
+    if (boost) {
+        in.boost.reserve(in.vor.size());
+        for (const auto &q : in.vor) {
+            in.boost.emplace_back(q.x, q.y);
+        }
+    }
+}
+
+struct vor_run {
+    void *arena = nullptr;
+    vor_t d;
+    ~vor_run() { counted_free(arena); }
+};
+
+static double now_ms()
+{
+    using namespace std::chrono;
+    return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+static void die(const char *what)
+{
+    std::fprintf(stderr, "delaunay-host: %s\n", what);
+    std::exit(2);
+}
+
+static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_order order)
+{
+    uint32_t n = (uint32_t)p.size();
+    size_t bytes = VOR_ARENA_BYTES(n);
+    v.arena = counted_malloc(bytes);
+    if (v.arena == nullptr) {
+        die("out of memory");
+    }
+    vor_build_options_t opt;
+    opt.order = order;
+    if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK ||
+        vor_build(&v.d, p.data(), n, &opt, nullptr) != VOR_OK) {
+        die("vor_build failed");
+    }
+}
+
+// -------------------------------------------------------- memory (--mem)
+
+static long status_kb(const char *field)
+{
+    FILE *f = std::fopen("/proc/self/status", "r");
+    if (f == nullptr) {
+        return -1;
+    }
+    char line[256];
+    long kb = -1;
+    size_t len = std::strlen(field);
+    while (std::fgets(line, sizeof line, f) != nullptr) {
+        if (std::strncmp(line, field, len) == 0 && line[len] == ':') {
+            kb = std::strtol(line + len + 1, nullptr, 10);
+            break;
+        }
+    }
+    std::fclose(f);
+    return kb;
+}
+
+// Resets VmHWM to the current RSS (Linux >= 4.0); false if unsupported.
+static bool reset_peak_rss()
+{
+    FILE *f = std::fopen("/proc/self/clear_refs", "w");
+    if (f == nullptr) {
+        return false;
+    }
+    bool ok = std::fputs("5", f) >= 0;
+    ok &= std::fclose(f) == 0;
+    return ok;
+}
+
+static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
+{
+    int k = 0;
+    while (k < KINDS && std::strcmp(kind_name[k], kind_arg) != 0) {
+        k++;
+    }
+    if (k == KINDS) {
+        die("unknown input kind");
+    }
+    inputs in;
+    in.vor = make_input((kind)k, n);
+    bool is_cgal = std::strcmp(lib, "cgal") == 0, is_boost = std::strcmp(lib, "boost") == 0;
+    if (!is_cgal && !is_boost && std::strcmp(lib, "vor") != 0) {
+        die("unknown library (vor, cgal or boost)");
+    }
+    convert(in, is_cgal, is_boost);
+    bool exact = reset_peak_rss();
+    long before = exact ? status_kb("VmRSS") : status_kb("VmHWM");
+    heap_live = heap_peak = 0; // what the build allocates from here on
+    heap_counting = true;
+    if (is_cgal) {
+        Cgal_dt *dt = new Cgal_dt;
+        dt->insert(in.cgal.begin(), in.cgal.end());
+        std::printf("check %zu\n", dt->number_of_faces());
+    } else if (is_boost) {
+        Boost_vd *vd = new Boost_vd;
+        boost::polygon::construct_voronoi(in.boost.begin(), in.boost.end(), vd);
+        std::printf("check %zu\n", vd->num_cells());
+    } else {
+        static vor_run v; // kept: its memory must stay in use until the end
+        build_vor(v, in.vor, VOR_ORDER_QUADTREE);
+        std::printf("check %u\n", v.d.vertex_count);
+    }
+    long after = status_kb("VmHWM");
+    if (before < 0 || after < 0) {
+        die("no /proc/self/status");
+    }
+    std::printf("rss %ld\nheap %lld\nexact %d\n", (after - before) * 1024, heap_peak,
+                exact ? 1 : 0);
+    std::fflush(stdout);
+    std::_Exit(0); // skip destructors: nothing left to measure
+}
+
+struct mem_result {
+    double rss = -1, heap = -1; // bytes
+};
+
+static std::string self_exe;
+
+static mem_result measure_memory(const char *lib, kind k, uint32_t n)
+{
+    mem_result m;
+    std::string cmd = "'" + self_exe + "' --mem " + lib + " " + kind_name[k] + " " +
+                      std::to_string(n);
+    FILE *f = popen(cmd.c_str(), "r");
+    if (f == nullptr) {
+        return m;
+    }
+    char line[128];
+    while (std::fgets(line, sizeof line, f) != nullptr) {
+        double v;
+        if (std::sscanf(line, "rss %lf", &v) == 1) {
+            m.rss = v;
+        } else if (std::sscanf(line, "heap %lf", &v) == 1) {
+            m.heap = v;
+        }
+    }
+    if (pclose(f) != 0) {
+        m.rss = m.heap = -1;
+    }
+    return m;
+}
+
+// ------------------------------------------------------------- the table
+
+struct row {
+    std::string input;
+    uint32_t n = 0;
+    uint32_t distinct = 0;
+    double vor_ms = 1e300, cgal_ms = 1e300, boost_ms = 1e300, vor_input_ms = -1;
+    double vor_arena = 0;
+    mem_result vor_mem, cgal_mem, boost_mem;
+    std::string check = "ok";
+    uint32_t flat = 0;            // vor's zero-area triangles
+    vor_predicate_stats_t stats{}; // of vor's first build
+};
+
+static std::string fmt(const char *format, double v)
+{
+    if (v < 0) {
+        return "-";
+    }
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
+}
+
+static std::string with_commas(uint32_t n)
+{
+    std::string s = std::to_string(n), out;
+    for (size_t i = 0; i < s.size(); i++) {
+        if (i != 0 && (s.size() - i) % 3 == 0) {
+            out += ',';
+        }
+        out += s[i];
+    }
+    return out;
+}
+
+static std::string per_site(double bytes, uint32_t n)
+{
+    return bytes < 0 ? "-" : fmt("%.1f", bytes / n);
+}
+
+static std::string table(const std::vector<row> &rows)
+{
+    std::string t;
+    t += "| input | n | vor ms | CGAL ms | Boost ms | CGAL/vor | Boost/vor | vor B/site | "
+         "CGAL B/site | Boost B/site | vor input-order ms |\n";
+    t += "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const row &r : rows) {
+        t += "| " + r.input + " | " + with_commas(r.n) + " | " + fmt("%.2f", r.vor_ms) + " | " +
+             fmt("%.2f", r.cgal_ms) + " | " + fmt("%.2f", r.boost_ms) + " | " +
+             fmt("%.2f", r.cgal_ms / r.vor_ms) + " | " + fmt("%.2f", r.boost_ms / r.vor_ms) +
+             " | " + per_site(r.vor_arena, r.n) + " | " + per_site(r.cgal_mem.rss, r.n) + " | " +
+             per_site(r.boost_mem.rss, r.n) + " | " + fmt("%.2f", r.vor_input_ms) + " |";
+        if (r.check != "ok") {
+            t += " **check: " + r.check + "**";
+        }
+        t += "\n";
+    }
+    return t;
+}
+
+static std::string memory_table(const std::vector<row> &rows)
+{
+    std::string t;
+    t += "| input | n | distinct | vor arena | vor RSS | vor heap | CGAL RSS | CGAL heap | "
+         "Boost RSS | Boost heap |\n";
+    t += "|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const row &r : rows) {
+        t += "| " + r.input + " | " + with_commas(r.n) + " | " + with_commas(r.distinct) +
+             " | " + per_site(r.vor_arena, r.n) + " | " + per_site(r.vor_mem.rss, r.n) + " | " +
+             per_site(r.vor_mem.heap, r.n) + " | " + per_site(r.cgal_mem.rss, r.n) + " | " +
+             per_site(r.cgal_mem.heap, r.n) + " | " + per_site(r.boost_mem.rss, r.n) + " | " +
+             per_site(r.boost_mem.heap, r.n) + " |\n";
+    }
+    return t;
+}
+
+static void add_check(row &r, bool ok, const std::string &what)
+{
+    if (!ok) {
+        r.check = (r.check == "ok") ? what : r.check + ", " + what;
+    }
+}
+
+static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, bool mem)
+{
+    row r;
+    r.input = kind_label[k];
+    r.n = n;
+    inputs in;
+    in.vor = make_input(k, n);
+    convert(in, true, true);
+
+    size_t cgal_faces = 0, cgal_vertices = 0, boost_cells = 0, boost_vertices = 0;
+    uint32_t vor_triangles = 0;
+    bool vor_valid = true;
+    for (unsigned rep = 0; rep < reps; rep++) {
+        { // vor, default (quadtree) order
+            vor_run v;
+            double t0 = now_ms();
+            build_vor(v, in.vor, VOR_ORDER_QUADTREE);
+            r.vor_ms = std::min(r.vor_ms, now_ms() - t0);
+            if (rep == 0) {
+                vor_valid = vor_validate(&v.d, nullptr) == VOR_OK;
+                r.distinct = v.d.vertex_count;
+                vor_triangle_iter_t it;
+                uint32_t ids[3];
+                vor_triangles_begin(&it, &v.d);
+                while (vor_triangles_next(&it, ids)) {
+                    // under the perturbation, collinear sites on the hull
+                    // (grid sides) close triangles of zero area that CGAL,
+                    // which has no perturbation, leaves out
+                    const vor_point_t *s = v.d.sites;
+                    if (vor_orient2d(&s[ids[0]], &s[ids[1]], &s[ids[2]], nullptr) != 0) {
+                        vor_triangles++;
+                    } else {
+                        r.flat++;
+                    }
+                }
+                r.stats = v.d.stats;
+                vor_memory_t m;
+                vor_memory(&v.d, &m);
+                r.vor_arena = (double)m.arena_bytes;
+            }
+        }
+        {
+            double t0 = now_ms();
+            Cgal_dt *dt = new Cgal_dt;
+            dt->insert(in.cgal.begin(), in.cgal.end());
+            r.cgal_ms = std::min(r.cgal_ms, now_ms() - t0);
+            cgal_faces = dt->number_of_faces();
+            cgal_vertices = dt->number_of_vertices();
+            delete dt;
+        }
+        {
+            double t0 = now_ms();
+            Boost_vd *vd = new Boost_vd;
+            boost::polygon::construct_voronoi(in.boost.begin(), in.boost.end(), vd);
+            r.boost_ms = std::min(r.boost_ms, now_ms() - t0);
+            boost_cells = vd->num_cells();
+            boost_vertices = vd->num_vertices();
+            delete vd;
+        }
+    }
+    if (n <= input_order_max) { // once: slow by design, and its walks dominate
+        vor_run v;
+        double t0 = now_ms();
+        build_vor(v, in.vor, VOR_ORDER_INPUT);
+        r.vor_input_ms = now_ms() - t0;
+        add_check(r, v.d.vertex_count == r.distinct, "input order sites");
+    }
+    add_check(r, vor_valid, "vor_validate");
+    add_check(r, r.distinct == cgal_vertices, "sites vs CGAL");
+    add_check(r, r.distinct == boost_cells, "sites vs Boost");
+    add_check(r, vor_triangles == cgal_faces, "triangles vs CGAL");
+    if (k == UNIFORM) {
+        add_check(r, vor_triangles == boost_vertices, "triangles vs Boost");
+    }
+    if (mem) {
+        r.vor_mem = measure_memory("vor", k, n);
+        r.cgal_mem = measure_memory("cgal", k, n);
+        r.boost_mem = measure_memory("boost", k, n);
+        add_check(r, r.vor_mem.rss >= 0 && r.cgal_mem.rss >= 0 && r.boost_mem.rss >= 0,
+                  "memory child");
+    }
+    return r;
+}
+
+static std::vector<uint32_t> parse_sizes(const char *s)
+{
+    std::vector<uint32_t> out;
+    while (*s != '\0') {
+        char *end;
+        unsigned long v = std::strtoul(s, &end, 10);
+        if (end == s || v < 2 || v > 100000000ul) {
+            die("bad --sizes");
+        }
+        out.push_back((uint32_t)v);
+        s = (*end == ',') ? end + 1 : end;
+    }
+    return out;
+}
+
+int main(int argc, char **argv)
+{
+    char exe[4096];
+    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    self_exe = (len > 0) ? std::string(exe, (size_t)len) : std::string(argv[0]);
+
+    if (argc == 5 && std::strcmp(argv[1], "--mem") == 0) {
+        return mem_main(argv[2], argv[3], (uint32_t)std::strtoul(argv[4], nullptr, 10));
+    }
+    std::vector<uint32_t> sizes = {10000, 100000, 1000000};
+    unsigned reps = 3;
+    uint32_t input_order_max = 100000; // input order is O(n^1.5): 10^6 takes a minute
+    const char *out = nullptr;
+    bool mem = true;
+    for (int i = 1; i < argc; i++) {
+        std::string a = argv[i];
+        if (a == "--sizes" && i + 1 < argc) {
+            sizes = parse_sizes(argv[++i]);
+        } else if (a == "--reps" && i + 1 < argc) {
+            reps = (unsigned)std::max(1l, std::strtol(argv[++i], nullptr, 10));
+        } else if (a == "--input-order-max" && i + 1 < argc) {
+            input_order_max = (uint32_t)std::strtoul(argv[++i], nullptr, 10);
+        } else if (a == "--out" && i + 1 < argc) {
+            out = argv[++i];
+        } else if (a == "--no-mem") {
+            mem = false;
+        } else {
+            std::fprintf(stderr,
+                         "usage: %s [--sizes N,N,..] [--reps R] [--input-order-max N] "
+                         "[--out FILE] [--no-mem]\n",
+                         argv[0]);
+            return 2;
+        }
+    }
+
+    std::vector<row> rows;
+    bool ok = true;
+    for (uint32_t n : sizes) {
+        for (int k = 0; k < KINDS; k++) {
+            rows.push_back(run_row((kind)k, n, reps, input_order_max, mem));
+            const row &r = rows.back();
+            ok &= r.check == "ok";
+            const vor_predicate_stats_t &st = r.stats;
+            std::fprintf(stderr,
+                         "bench: %-14s %8u  vor %9.2f  CGAL %9.2f  Boost %9.2f ms  %s\n"
+                         "       per site: orient2d %.1f (%.1f perturbed), incircle narrow "
+                         "%.1f mid %.1f wide %.1f (%.1f perturbed); flat triangles %u\n",
+                         r.input.c_str(), n, r.vor_ms, r.cgal_ms, r.boost_ms, r.check.c_str(),
+                         (double)(st.orient2d[0] + st.orient2d[1] + st.orient2d[2]) / n,
+                         (double)st.orient2d_perturbed / n, (double)st.incircle[0] / n,
+                         (double)st.incircle[1] / n, (double)st.incircle[2] / n,
+                         (double)st.incircle_perturbed / n, r.flat);
+        }
+    }
+    std::string text = table(rows);
+    if (mem) {
+        text += "\nMemory detail, bytes per site: vor arena = VOR_ARENA_BYTES(n) / n; RSS = "
+                "peak RSS growth during the build in a fresh process; heap = peak live "
+                "heap bytes (malloc_usable_size).\n\n" +
+                memory_table(rows);
+    }
+    std::fputs(text.c_str(), stdout);
+    if (out != nullptr) {
+        FILE *f = std::fopen(out, "w");
+        if (f == nullptr || std::fputs(text.c_str(), f) < 0 || std::fclose(f) != 0) {
+            die("cannot write --out file");
+        }
+    }
+    if (!ok) {
+        std::fprintf(stderr, "delaunay-host: a correctness check failed (see the table)\n");
+    }
+    return ok ? 0 : 1;
+}
