@@ -35,6 +35,15 @@ typedef struct vor__triangle vor__tri_t;
 #define VOR__INFINITE ((vor_index_t)(VOR__MARK - 1u)) /* the vertex at infinity */
 #define VOR__NONE ((vor_index_t)~(vor_index_t)0)      /* no neighbour: empty slot */
 
+/* A hint to the cache: site ids are input positions, so the next sites'
+ * coordinates and home slots lie anywhere in the arena (no effect without
+ * GCC or clang, and none on cores without a cache). */
+#if defined(__GNUC__)
+#define VOR__PREFETCH(address) __builtin_prefetch(address)
+#else
+#define VOR__PREFETCH(address) ((void)(address))
+#endif
+
 /* (i + 1) mod 3 and (i + 2) mod 3 without a division */
 static inline unsigned vor__next(unsigned i)
 {
