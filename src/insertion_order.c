@@ -286,18 +286,29 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
             }
         }
 #undef SQUARE_SITE
-        /* the other sites of each bucket, each walking from the one before
-         * it in Z-order, the first from the bucket's representative:
-         * crowded buckets (clustered sites) then take short walks too */
+        /* the other sites of each bucket, coarse to fine along its Z-order
+         * as the levels above did across buckets: positions step, 3 step,
+         * 5 step, ... for halving steps, each walking from the site one
+         * step back, already inserted (a crowded bucket, as with clustered
+         * sites, then gets short walks and small cavities too) */
         for (uint32_t r = 0; r < buckets; r++) {
             uint32_t b = bucket_at[r];
-            vor_index_t previous = sorted[start[b]];
-            for (uint32_t e = start[b] + 1u; e < start[b + 1u]; e++) {
-                vor_index_t s = sorted[e];
-                if (rep[s] == s) {
+            uint32_t size = (uint32_t)(start[b + 1u] - start[b]);
+            const vor_index_t *in = &sorted[start[b]];
+            uint32_t step = 1;
+            while (2u * step < size) {
+                step *= 2u;
+            }
+            for (; step > 0u && size > 1u; step /= 2u) {
+                for (uint32_t pos = step; pos < size; pos += 2u * step) {
+                    vor_index_t s = in[pos], from = in[pos - step];
+                    if (rep[s] != s) {
+                        continue;
+                    }
                     plan[2u * count] = s;
-                    plan[2u * count + 1u] = previous;
-                    previous = s;
+                    /* a duplicate is not in the mesh: start at the bucket's
+                     * representative instead */
+                    plan[2u * count + 1u] = (rep[from] == from) ? from : in[0];
                     count++;
                 }
             }

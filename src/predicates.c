@@ -145,9 +145,13 @@ VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
 /* Mid tier term, differences in int32 ([-2^31, 2^31 - 1]): the lift
  * <= 2^63 fits uint64, the cross product <= 2^63 - 2^31 fits int64 (its
  * two products cannot both reach 2^62 with opposite signs), the product of
- * the two < 2^126. d[] holds a-d, b-d, c-d as x, y pairs; the term is
- * lift(p) cross(u, v). */
-VOR__INLINE void mid_term(struct u192 sums[2], const int64_t d[6], unsigned p,
+ * the two < 2^126, and each sum of up to three such < 2^128: two words.
+ * d[] holds a-d, b-d, c-d as x, y pairs; the term is lift(p) cross(u, v). */
+struct u128 {
+    uint64_t low, high;
+};
+
+VOR__INLINE void mid_term(struct u128 sums[2], const int64_t d[6], unsigned p,
                           unsigned u, unsigned v)
 {
     int32_t px = (int32_t)d[p], py = (int32_t)d[p + 1];
@@ -157,7 +161,10 @@ VOR__INLINE void mid_term(struct u192 sums[2], const int64_t d[6], unsigned p,
     int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
     bool negative = cross < 0;
     uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
-    add_product(&sums[negative], lift, 0u, magnitude_of_cross, 0u);
+    uint64_t high, low = vor__mul_u64(lift, magnitude_of_cross, &high);
+    struct u128 *acc = &sums[negative];
+    acc->low += low;
+    acc->high += high + ((acc->low < low) ? 1u : 0u);
 }
 
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
@@ -189,12 +196,15 @@ VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
 
 int vor__incircle_mid(const int64_t d[6])
 {
-    struct u192 sums[2]; /* positive, negative */
-    clear_sums(sums);
+    struct u128 sums[2]; /* positive, negative */
+    sums[0].low = sums[0].high = sums[1].low = sums[1].high = 0u;
     mid_term(sums, d, 0, 2, 4);
     mid_term(sums, d, 2, 4, 0);
     mid_term(sums, d, 4, 0, 2);
-    return compare_u192(&sums[0], &sums[1]);
+    if (sums[0].high != sums[1].high) {
+        return (sums[0].high > sums[1].high) ? 1 : -1;
+    }
+    return (sums[0].low > sums[1].low) - (sums[0].low < sums[1].low);
 }
 
 int vor__incircle_wide(const int64_t d[6])
