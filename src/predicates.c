@@ -299,22 +299,29 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
             row[n++] = p;
         }
     }
+    /* the rows relative to the top site */
+    int64_t x[2], y[2];
+    for (size_t r = 0; r < 2; r++) {
+        x[r] = (int64_t)sites[ids[row[r]]].x - sites[ids[top]].x;
+        y[r] = (int64_t)sites[ids[row[r]]].y - sites[ids[top]].y;
+    }
     static const enum row_kind kinds[3] = {ROW_POINT, ROW_DY, ROW_DX};
     /* the rank-1 site's kind is the more significant digit; the first term
      * (both ROW_POINT) is the exact determinant, known to be 0, and
-     * (ROW_DX, ROW_DY) is +-1, so the loops end by then */
+     * (ROW_DX, ROW_DY) is +-1, so the loops end by then. Every term has a
+     * unit row, (0, 1) or (1, 0), so its 2x2 determinant is +-x, +-y or +-1
+     * of the other row: no product is needed. */
     for (unsigned hi = 0; hi < 3 && sign == 0; hi++) {
         for (unsigned lo = (hi == 0) ? 1u : 0u; lo < 3 && sign == 0; lo++) {
-            int64_t e[2][2];
-            for (size_t r = 0; r < 2; r++) {
-                size_t p = row[r];
-                enum row_kind kind = kinds[rank[p] == 0 ? lo : hi];
-                int64_t x = (int64_t)sites[ids[p]].x - sites[ids[top]].x;
-                int64_t y = (int64_t)sites[ids[p]].y - sites[ids[top]].y;
-                e[r][0] = (kind == ROW_DX) ? 1 : (kind == ROW_DY) ? 0 : x;
-                e[r][1] = (kind == ROW_DY) ? 1 : (kind == ROW_DX) ? 0 : y;
+            enum row_kind first = kinds[rank[row[0]] == 0 ? lo : hi];
+            enum row_kind second = kinds[rank[row[1]] == 0 ? lo : hi];
+            if (first == ROW_POINT) { /* (x, y) over (0, 1) or (1, 0) */
+                sign = sign_of((second == ROW_DY) ? x[0] : -y[0]);
+            } else if (second == ROW_POINT) { /* (0, 1) or (1, 0) over (x, y) */
+                sign = sign_of((first == ROW_DY) ? -x[1] : y[1]);
+            } else { /* two unit rows */
+                sign = (first == second) ? 0 : (first == ROW_DX) ? 1 : -1;
             }
-            sign = vor__compare_products(e[0][0], e[1][1], e[0][1], e[1][0]);
         }
     }
     VOR_ASSERT(sign != 0);
@@ -400,71 +407,27 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
      * entry per column <= 2^57, six of them < 2^60: int64. Else 160 bits. */
     bool narrow = m < (1u << 14);
-    static const wide_t zero = {{0}};
-    wide_t one = wide_from(1);
-    wide_t point[3][3], twice[3][2];
-    if (!narrow) {
-        for (size_t r = 0; r < 3; r++) {
-            point[r][0] = wide_from(x[r]);
-            point[r][1] = wide_from(y[r]);
-            point[r][2] = wide_mul(&point[r][0], &point[r][0]);
-            wide_t yy = wide_mul(&point[r][1], &point[r][1]);
-            vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
-            twice[r][0] = wide_from(2 * x[r]);
-            twice[r][1] = wide_from(2 * y[r]);
-        }
-    }
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
-    for (unsigned t = 1; t < 64; t++) {
-        const wide_t *w[3][3];
-        int32_t e[3][3];
-        unsigned squares = 0;
-        for (size_t r = 0; r < 3; r++) {
-            size_t shift = 2 * rank[row[r]];
-            enum row_kind kind = (enum row_kind)((t >> shift) & 3u);
-            switch (kind) {
-            case ROW_POINT:
-                e[r][0] = (int32_t)x[r];
-                e[r][1] = (int32_t)y[r];
-                e[r][2] = narrow ? (int32_t)(x[r] * x[r] + y[r] * y[r]) : 0;
-                w[r][0] = &point[r][0];
-                w[r][1] = &point[r][1];
-                w[r][2] = &point[r][2];
-                break;
-            case ROW_DY:
-                e[r][0] = 0;
-                e[r][1] = 1;
-                e[r][2] = (int32_t)(2 * y[r]);
-                w[r][0] = &zero;
-                w[r][1] = &one;
-                w[r][2] = &twice[r][1];
-                break;
-            case ROW_SQUARE:
-                e[r][0] = 0;
-                e[r][1] = 0;
-                e[r][2] = 1;
-                w[r][0] = &zero;
-                w[r][1] = &zero;
-                w[r][2] = &one;
-                squares++;
-                break;
-            case ROW_DX:
-            default:
-                e[r][0] = 1;
-                e[r][1] = 0;
-                e[r][2] = (int32_t)(2 * x[r]);
-                w[r][0] = &one;
-                w[r][1] = &zero;
-                w[r][2] = &twice[r][0];
-                break;
+    if (narrow) {
+        for (unsigned t = 1; t < 64 && sign == 0; t++) {
+            int32_t e[3][3];
+            unsigned squares = 0;
+            for (size_t r = 0; r < 3; r++) {
+                enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
+                int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
+                e[r][0] = (kind == ROW_POINT) ? xr : (kind == ROW_DX) ? 1 : 0;
+                e[r][1] = (kind == ROW_POINT) ? yr : (kind == ROW_DY) ? 1 : 0;
+                e[r][2] = (kind == ROW_POINT) ? xr * xr + yr * yr
+                          : (kind == ROW_DY)  ? 2 * yr
+                          : (kind == ROW_DX)  ? 2 * xr
+                                              : 1;
+                squares += (kind == ROW_SQUARE) ? 1u : 0u;
             }
-        }
-        if (squares >= 2) {
-            continue; /* two equal rows: the term is 0 */
-        }
-        if (narrow) {
+            if (squares >= 2) {
+                continue; /* two equal rows: the term is 0 */
+            }
             /* entries fit int32 (<= 2^29); minors <= 2^44; terms <= 2^58 */
             int64_t det = 0;
             for (unsigned c = 0; c < 3; c++) {
@@ -474,11 +437,36 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                 det += vor__mul_i64_i32(minor, e[0][c]);
             }
             sign = sign_of(det);
-        } else {
-            sign = wide_det3_sign(w);
         }
-        if (sign != 0) {
-            break;
+    } else {
+        static const wide_t zero = {{0}};
+        wide_t one = wide_from(1);
+        wide_t point[3][3], twice[3][2];
+        for (size_t r = 0; r < 3; r++) {
+            point[r][0] = wide_from(x[r]);
+            point[r][1] = wide_from(y[r]);
+            point[r][2] = wide_mul(&point[r][0], &point[r][0]);
+            wide_t yy = wide_mul(&point[r][1], &point[r][1]);
+            vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
+            twice[r][0] = wide_from(2 * x[r]);
+            twice[r][1] = wide_from(2 * y[r]);
+        }
+        for (unsigned t = 1; t < 64 && sign == 0; t++) {
+            const wide_t *w[3][3];
+            unsigned squares = 0;
+            for (size_t r = 0; r < 3; r++) {
+                enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
+                w[r][0] = (kind == ROW_POINT) ? &point[r][0] : (kind == ROW_DX) ? &one : &zero;
+                w[r][1] = (kind == ROW_POINT) ? &point[r][1] : (kind == ROW_DY) ? &one : &zero;
+                w[r][2] = (kind == ROW_POINT) ? &point[r][2]
+                          : (kind == ROW_DY)  ? &twice[r][1]
+                          : (kind == ROW_DX)  ? &twice[r][0]
+                                              : &one;
+                squares += (kind == ROW_SQUARE) ? 1u : 0u;
+            }
+            if (squares < 2) { /* else two equal rows: the term is 0 */
+                sign = wide_det3_sign(w);
+            }
         }
     }
     VOR_ASSERT(sign != 0);
