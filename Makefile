@@ -103,7 +103,7 @@ $(B)/tests/predicate_vectors.o: $(GEN)/predicate_vectors.c | $(B)/tests
 vpath %.c $(sort $(dir $(PORT_SRCS)))
 vpath %.S $(sort $(dir $(PORT_SRCS)))
 $(B)/port/%.o: %.c port/port.h | $(B)/port
-	$(CC) $(TEST_CFLAGS) -c $< -o $@
+	$(CC) $(TEST_CFLAGS) $(PORT_CFLAGS) -c $< -o $@
 $(B)/port/%.o: %.S | $(B)/port
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
 

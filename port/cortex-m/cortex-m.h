@@ -19,8 +19,8 @@
 #define VOR_PORT_USED
 #endif
 
-/* SysTick ticks since vor_port_init(), 64 bits, monotonic (systick.c).
- * Each target's board.c scales them into vor_port_counter(). */
+/* SysTick ticks since vor_port_init(), 64 bits, monotonic (systick.c),
+ * scaled into vor_port_counter() there. */
 uint64_t vor__cm_systick_ticks(void);
 
 /* Keeps the compiler from moving memory accesses across a counter read. */

@@ -1,5 +1,6 @@
 # port/cortex-m/cortex-m.mk - what every Cortex-M target shares. A target's
-# port.mk sets TARGET_NAME, CPU_CFLAGS and QEMU_MACHINE, then includes this.
+# port.mk sets TARGET_NAME, CPU_CFLAGS, QEMU_MACHINE and HALF_NS_PER_TICK
+# (its SysTick period under QEMU, in half nanoseconds), then includes this.
 # Every path is relative to the repository root, or to $(VOR_ROOT) when set.
 
 EXE = .elf
@@ -21,7 +22,10 @@ PORT_SRCS = $(VOR_ROOT)port/cortex-m/startup.c \
             $(VOR_ROOT)port/cortex-m/systick.c \
             $(VOR_ROOT)port/common/semihost.c \
             $(VOR_ROOT)port/common/mem.c \
-            $(VOR_ROOT)port/$(TARGET_NAME)/board.c
+            $(VOR_ROOT)port/common/fault_line.c
+
+# For the port's own sources only (the Makefile's port object rule).
+PORT_CFLAGS = -DVOR_PORT_HALF_NS_PER_TICK=$(HALF_NS_PER_TICK)
 
 FW_LDFLAGS = -nostdlib -nostartfiles -T $(VOR_ROOT)port/$(TARGET_NAME)/link.ld \
              -Wl,--gc-sections

@@ -32,6 +32,7 @@
  * and the section .vectors must be KEEP()ed at the reset vector address.
  */
 #include "../port.h"
+#include "../common/fault_line.h"
 
 #include "cortex-m.h"
 
@@ -195,25 +196,6 @@ static const char *exception_name(uint32_t number)
     }
 }
 
-static size_t append(char *line, size_t n, const char *text)
-{
-    for (; *text != '\0' && n < 110u; text++) { /* bounded by the line */
-        line[n++] = *text;
-    }
-    return n;
-}
-
-static size_t append_hex(char *line, size_t n, const char *label,
-                         uint32_t value)
-{
-    static const char digits[] = "0123456789abcdef";
-    int shift;
-    n = append(line, n, label);
-    for (shift = 28; shift >= 0; shift -= 4) {
-        line[n++] = digits[(value >> (unsigned)shift) & 0xFu];
-    }
-    return n;
-}
 
 /*
  * Print one line and exit with VOR_PORT_FAULT_STATUS:
@@ -234,18 +216,18 @@ void vor__cm_fault(uint32_t pc, uint32_t lr, uint32_t sp)
     }
     reporting = 1;
     __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
-    n = append(line, n, "fatal: ");
-    n = append(line, n, exception_name(ipsr & 0x1FFu));
+    n = vor__line_text(line, n, sizeof line, "fatal: ");
+    n = vor__line_text(line, n, sizeof line, exception_name(ipsr & 0x1FFu));
     if (pc == 0u && lr == 0u) {
-        n = append_hex(line, n, " sp=0x", sp);
-        n = append(line, n, " outside the stack (overflow)");
+        n = vor__line_hex(line, n, sizeof line, " sp=0x", sp);
+        n = vor__line_text(line, n, sizeof line, " outside the stack (overflow)");
     } else {
-        n = append_hex(line, n, " pc=0x", pc);
-        n = append_hex(line, n, " lr=0x", lr);
-        n = append_hex(line, n, " sp=0x", sp);
+        n = vor__line_hex(line, n, sizeof line, " pc=0x", pc);
+        n = vor__line_hex(line, n, sizeof line, " lr=0x", lr);
+        n = vor__line_hex(line, n, sizeof line, " sp=0x", sp);
     }
 #if VOR_PORT_HAVE_CFSR
-    n = append_hex(line, n, " cfsr=0x", SCB_CFSR);
+    n = vor__line_hex(line, n, sizeof line, " cfsr=0x", SCB_CFSR);
 #endif
     line[n++] = '\n';
     vor_port_write(line, n);

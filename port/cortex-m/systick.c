@@ -1,6 +1,6 @@
 /*
- * port/cortex-m/systick.c - vor_port_init and a 64-bit SysTick tick count
- * for Cortex-M targets (board.c scales it into vor_port_counter).
+ * port/cortex-m/systick.c - vor_port_init and vor_port_counter for every
+ * Cortex-M target: a 64-bit SysTick tick count, scaled to instructions.
  *
  * DWT CYCCNT reads 0 in QEMU, so the counter is SysTick on the processor
  * clock (CLKSOURCE = 1) with the longest reload, 2^24 ticks a period, and
@@ -8,10 +8,11 @@
  * -icount shift=0,align=off,sleep=off advances its virtual clock by exactly
  * 1 ns per executed instruction, so
  *     instructions = ticks * (ns per tick)
- * where ns per tick = 10^9 / SysTick clock. Each target's board.c turns
- * vor__cm_systick_ticks() into vor_port_counter() with its own constant
- * (mps2: 25 MHz, 40 ns; nRF51 in QEMU: 16 MHz, 62.5 ns), so the count moves
- * in steps of one tick: 40 or 62.5 instructions, repeatable run to run.
+ * where ns per tick = 10^9 / SysTick clock. Each target's port.mk gives it,
+ * in half nanoseconds, as VOR_PORT_HALF_NS_PER_TICK (mps2: 25 MHz, 40 ns;
+ * nRF51 in QEMU: 16 MHz, 62.5 ns), so the count moves in steps of one tick:
+ * 40 or 62.5 instructions, repeatable run to run (calibrated with loops of
+ * known length: exact to one tick).
  *
  * On real silicon the ticks are core clock cycles: report them unscaled
  * with the unit "cycles" there (see port/template/port.c).
@@ -19,6 +20,12 @@
 #include "../port.h"
 
 #include "cortex-m.h"
+
+#ifndef VOR_PORT_HALF_NS_PER_TICK
+#error "the target's port.mk must define VOR_PORT_HALF_NS_PER_TICK"
+#endif
+
+const char vor_port_counter_unit[] = "instructions";
 
 #define SYST_CSR (*(volatile uint32_t *)0xE000E010u)
 #define SYST_RVR (*(volatile uint32_t *)0xE000E014u)
@@ -85,4 +92,13 @@ uint64_t vor__cm_systick_ticks(void)
      * 0, RELOAD, RELOAD - 1, ..., 1 are ticks 0, 1, 2, ..., RELOAD of it. */
     return (uint64_t)n * PERIOD
            + (value == 0u ? 0u : PERIOD - (uint64_t)value);
+}
+
+uint64_t vor_port_counter(void)
+{
+    uint64_t ticks;
+    VOR_PORT_BARRIER();
+    ticks = vor__cm_systick_ticks();
+    VOR_PORT_BARRIER();
+    return (ticks * VOR_PORT_HALF_NS_PER_TICK) >> 1;
 }

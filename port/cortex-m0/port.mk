@@ -4,4 +4,7 @@ TARGET_NAME = cortex-m0
 CPU_CFLAGS = -mcpu=cortex-m0 -mthumb
 QEMU_MACHINE = -M microbit -cpu cortex-m0 \
                -global nrf51-soc.sram-size=2097152 -global nrf51-soc.flash-size=4194304
+# QEMU gives the nRF51 a SysTick on its 16 MHz HCLK (real nRF51 silicon has
+# none: use TIMER0 there): 62.5 ns per tick.
+HALF_NS_PER_TICK = 125
 include $(VOR_ROOT)port/cortex-m/cortex-m.mk

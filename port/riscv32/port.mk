@@ -24,7 +24,8 @@ PORT_SRCS = $(VOR_ROOT)port/riscv32/startup.c \
             $(VOR_ROOT)port/riscv32/semihost_call.c \
             $(VOR_ROOT)port/riscv32/counter.c \
             $(VOR_ROOT)port/common/semihost.c \
-            $(VOR_ROOT)port/common/mem.c
+            $(VOR_ROOT)port/common/mem.c \
+            $(VOR_ROOT)port/common/fault_line.c
 
 FW_LDFLAGS = -nostdlib -nostartfiles -T $(VOR_ROOT)port/riscv32/link.ld \
              -Wl,--gc-sections

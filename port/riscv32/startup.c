@@ -28,6 +28,7 @@
  * and the section .text.vor__rv_start must come first, at the reset address.
  */
 #include "../port.h"
+#include "../common/fault_line.h"
 
 #include "riscv32.h"
 
@@ -79,25 +80,6 @@ __asm__(
     "  .size vor__rv_trap_entry, . - vor__rv_trap_entry\n"
     "  .popsection\n");
 
-static size_t append(char *line, size_t n, const char *text)
-{
-    for (; *text != '\0' && n < 150u; text++) { /* bounded by the line */
-        line[n++] = *text;
-    }
-    return n;
-}
-
-static size_t append_hex(char *line, size_t n, const char *label,
-                         uint32_t value)
-{
-    static const char digits[] = "0123456789abcdef";
-    int shift;
-    n = append(line, n, label);
-    for (shift = 28; shift >= 0; shift -= 4) {
-        line[n++] = digits[(value >> (unsigned)shift) & 0xFu];
-    }
-    return n;
-}
 
 static const char *cause_name(uint32_t mcause)
 {
@@ -137,15 +119,15 @@ void vor__rv_trap(uint32_t sp)
     VOR_RV_CSR_READ(VOR_RV_CSR_MCAUSE, mcause);
     VOR_RV_CSR_READ(VOR_RV_CSR_MEPC, mepc);
     VOR_RV_CSR_READ(VOR_RV_CSR_MTVAL, mtval);
-    n = append_hex(line, n, "fatal: trap mcause=0x", mcause);
-    n = append(line, n, " (");
-    n = append(line, n, cause_name(mcause));
-    n = append_hex(line, n, ") mepc=0x", mepc);
-    n = append_hex(line, n, " mtval=0x", mtval);
-    n = append_hex(line, n, " sp=0x", sp);
+    n = vor__line_hex(line, n, sizeof line, "fatal: trap mcause=0x", mcause);
+    n = vor__line_text(line, n, sizeof line, " (");
+    n = vor__line_text(line, n, sizeof line, cause_name(mcause));
+    n = vor__line_hex(line, n, sizeof line, ") mepc=0x", mepc);
+    n = vor__line_hex(line, n, sizeof line, " mtval=0x", mtval);
+    n = vor__line_hex(line, n, sizeof line, " sp=0x", sp);
     if (sp < (uint32_t)(uintptr_t)__stack_bottom
         || sp > (uint32_t)(uintptr_t)__stack_top) {
-        n = append(line, n, " outside the stack (overflow)");
+        n = vor__line_text(line, n, sizeof line, " outside the stack (overflow)");
     }
     line[n++] = '\n';
     vor_port_write(line, n);

@@ -8,10 +8,9 @@
  * the functions below (declared in port/port.h).
  *
  * Shortcuts:
- *   - Any Cortex-M under a debugger or QEMU: use port/cortex-m/startup.c,
- *     semihost.c, systick.c and mem.c unchanged and write only a board.c
- *     with vor_port_counter (see port/cortex-m3/); the startup code there
- *     also reports faults and guards the stack.
+ *   - Any Cortex-M under a debugger or QEMU: copy port/cortex-m3/ (a
+ *     port.mk and a link.ld); port/cortex-m/ and port/common/ supply the
+ *     rest unchanged, including fault reports and the stack guard.
  *   - RISC-V in machine mode: start from port/riscv32/.
  * This file is the other case: a board with a UART and no debugger, with
  * the startup code written out so that every piece is visible. It is
