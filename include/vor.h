@@ -168,15 +168,17 @@ typedef uint16_t vor_index_t;
 #define VOR_MAX_SITES 32767u
 #elif VOR_INDEX_BITS == 32
 typedef uint32_t vor_index_t;
-#define VOR_MAX_SITES 2147483646u
+#define VOR_MAX_SITES 2097150u /* vertex ids are packed in 21 bits */
 #else
 #error "VOR_INDEX_BITS must be 16 or 32"
 #endif
 
 /* One triangle of the mesh: three vertices counterclockwise and the three
  * neighbours, neighbour i across the edge opposite vertex i. A vertex is a
- * site index or the vertex at infinity that closes the convex hull. */
-#define VOR_TRIANGLE_BYTES (6u * sizeof(vor_index_t))
+ * site index or the vertex at infinity that closes the convex hull. 12
+ * bytes with 16-bit indices; 20 with 32-bit ones (vertices packed in 21
+ * bits each, neighbours in 32). */
+#define VOR_TRIANGLE_BYTES ((VOR_INDEX_BITS == 16) ? 12u : 20u)
 
 /* Arena bytes for a diagram of up to n sites (a constant expression):
  * the coordinates, and one triangle for each of the 2n - 2 triangles a

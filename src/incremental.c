@@ -40,18 +40,15 @@ static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 
 static bool marked(const vor_t *d, vor_index_t v, bool infinity_marked)
 {
-    return (v == VOR__INFINITE) ? infinity_marked
-                                : (d->triangles[v].v[0] & VOR__MARK) != 0u;
+    return (v == VOR__INFINITE) ? infinity_marked : vor__marked(&d->triangles[v]);
 }
 
 static void set_mark(vor_t *d, vor_index_t v, bool on, bool *infinity_marked)
 {
     if (v == VOR__INFINITE) {
         *infinity_marked = on;
-    } else if (on) {
-        d->triangles[v].v[0] = (vor_index_t)(d->triangles[v].v[0] | VOR__MARK);
     } else {
-        d->triangles[v].v[0] = (vor_index_t)(d->triangles[v].v[0] & ~VOR__MARK);
+        vor__set_mark(&d->triangles[v], on);
     }
 }
 
@@ -152,8 +149,8 @@ void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
     vor__tri_t *tri = d->triangles;
     vor_index_t sa = (vor_index_t)a, sb = (vor_index_t)b;
     /* fresh slots: clear any mark bits left by earlier contents */
-    tri[a].v[0] = 0;
-    tri[b].v[0] = 0;
+    vor__tri_fresh(&tri[a]);
+    vor__tri_fresh(&tri[b]);
     vor__tri_set(&tri[a], sa, sb, VOR__INFINITE, sb, sb, sb);
     vor__tri_set(&tri[b], sb, sa, VOR__INFINITE, sa, sa, sa);
 }
@@ -165,7 +162,7 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, unsigned apex)
 {
     vor__tri_t *tri = d->triangles;
     vor__tri_t *t = &tri[x_slot];
-    vor_index_t p = vor__vertex(t, 0), x = t->v[1], y = t->v[2];
+    vor_index_t p = vor__vertex(t, 0), x = vor__vertex(t, 1), y = vor__vertex(t, 2);
     vor_index_t y_slot = t->n[0], nx = t->n[1], ny = t->n[2];
     vor__tri_t *u = &tri[y_slot];
     vor_index_t c = vor__vertex(u, apex);
@@ -191,7 +188,7 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
     vor__tri_t *r = &tri[root];
-    vor_index_t a = vor__vertex(r, 0), b = r->v[1], c = r->v[2];
+    vor_index_t a = vor__vertex(r, 0), b = vor__vertex(r, 1), c = vor__vertex(r, 2);
     vor_index_t na = r->n[0], nb = r->n[1], nc = r->n[2];
 
     /* split into A = (p, b, c), B = (p, c, a), C = (p, a, b) in the root's
@@ -203,8 +200,8 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
         sa = extra;
         sc = root;
     }
-    tri[sp].v[0] = 0; /* fresh slots: no stale mark bits */
-    tri[extra].v[0] = 0;
+    vor__tri_fresh(&tri[sp]);
+    vor__tri_fresh(&tri[extra]);
     relink(tri, na, b, c, sa);
     relink(tri, nb, c, a, sb);
     relink(tri, nc, a, b, sc);
@@ -228,7 +225,13 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     while (refused < star) {
         vor__tri_t *t = &tri[slot];
         vor__tri_t *u = &tri[t->n[0]];
-        unsigned apex = vor__next(vor__vertex_index(u, t->v[1])); /* u = (y, x, c) */
+        unsigned ix = vor__vertex_index(u, vor__vertex(t, 1));
+        if (ix == 3u) { /* only on a corrupted mesh: never index past it */
+            refused++;
+            slot = t->n[1];
+            continue;
+        }
+        unsigned apex = vor__next(ix); /* u = (y, x, c) */
         vor_index_t far = vor__vertex(u, apex);
         if (!marked(d, far, infinity_marked) && vor__conflicts(d, u, p)) {
             slot = flip(d, slot, apex);
@@ -241,7 +244,7 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     }
     /* clear the marks: each star vertex is v[1] of one star triangle */
     for (uint32_t k = 0; k < star; k++) {
-        set_mark(d, tri[slot].v[1], false, &infinity_marked);
+        set_mark(d, vor__vertex(&tri[slot], 1), false, &infinity_marked);
         slot = tri[slot].n[1];
     }
 }
@@ -272,9 +275,9 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     vor__tri_t *tri = d->triangles;
 
     if (d->vertex_count == 0u) {
+        /* no triangle yet: with max_sites 1 the arena has no triangle
+         * slots at all, so none is touched */
         d->sites[p] = point;
-        tri[p].v[0] = 0;
-        tri[p].n[0] = VOR__NONE; /* in the mesh, but no triangle yet */
     } else if (d->vertex_count == 1u) {
         if (same_point(&d->sites[d->last_site], &point)) {
             if (site != NULL) {
@@ -366,10 +369,11 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     }
     /* scratch in the triangle slots, the plan at their very end: triangles
      * fill the slots from below and never reach a plan entry still to be
-     * read (6 v slot indices per inserted site v against 2 per remaining
-     * plan entry; docs/design.md, "arena") */
+     * read (5 or 6 indices per triangle against 2 per remaining plan
+     * entry; docs/design.md, "Batch build") */
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
-    size_t entries = (size_t)vor__triangle_count(d->max_sites) * 6u;
+    size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
+                     sizeof(vor_index_t);
     vor_index_t *plan = base + entries - 2u * (size_t)n;
     uint32_t distinct = vor__plan(d, n, order, base, plan, duplicate_of);
 
@@ -386,7 +390,7 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
             }
         }
         if (i >= distinct) { /* a duplicate: its home slot stays empty */
-            tri[s].v[0] = 0;
+            vor__tri_fresh(&tri[s]);
             tri[s].n[0] = VOR__NONE;
             continue;
         }

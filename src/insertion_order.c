@@ -144,7 +144,7 @@ static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
             dups++;
         }
     }
-    /* duplicates after the sites, flagged */
+    /* duplicates after the sites, with their first occurrence */
     uint32_t at = count;
     for (uint32_t s = 0; s < n && dups > 0u; s++) {
         uint32_t first = s;
@@ -155,7 +155,7 @@ static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
         }
         if (first != s) {
             plan[2u * at] = (vor_index_t)s;
-            plan[2u * at + 1u] = (vor_index_t)(first | VOR__MARK);
+            plan[2u * at + 1u] = (vor_index_t)first;
             at++;
         }
     }
@@ -314,12 +314,12 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
             }
         }
     }
-    /* the duplicates last, flagged with their first occurrence */
+    /* the duplicates last, with their first occurrence */
     uint32_t at = count;
     for (uint32_t s = 0; s < n; s++) {
         if (rep[s] != s) {
             plan[2u * at] = (vor_index_t)s;
-            plan[2u * at + 1u] = (vor_index_t)(rep[s] | VOR__MARK);
+            plan[2u * at + 1u] = rep[s];
             at++;
         }
     }

@@ -43,7 +43,7 @@ int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
 /* vor__conflicts with the true predicates, uncounted. */
 static bool exact_conflict(const vor_t *d, const vor__tri_t *t, uint32_t p)
 {
-    vor_index_t v0 = vor__vertex(t, 0), v1 = t->v[1], v2 = t->v[2];
+    vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);
     if (v0 == VOR__INFINITE) {
         return vor_orient2d_sos(d->sites, v1, v2, p, NULL) > 0;
     }
@@ -150,9 +150,9 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
                 return violation(out, VOR_CHECK_VERTICES, s, v);
             }
         }
-        if (vor__vertex(t, 0) == t->v[1] || t->v[1] == t->v[2] ||
-            t->v[2] == vor__vertex(t, 0)) {
-            return violation(out, VOR_CHECK_VERTICES, s, t->v[1]);
+        if (vor__vertex(t, 0) == vor__vertex(t, 1) || vor__vertex(t, 1) == vor__vertex(t, 2) ||
+            vor__vertex(t, 2) == vor__vertex(t, 0)) {
+            return violation(out, VOR_CHECK_VERTICES, s, vor__vertex(t, 1));
         }
     }
 
@@ -203,7 +203,8 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
     for (uint32_t s = next_used_slot(d, 0); s < end; s = next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &tri[s];
         if (!vor__is_ghost(t) &&
-            vor_orient2d_sos(d->sites, vor__vertex(t, 0), t->v[1], t->v[2], NULL) < 0) {
+            vor_orient2d_sos(d->sites, vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2),
+                             NULL) < 0) {
             return violation(out, VOR_CHECK_ORIENTATION, s, vor__vertex(t, 0));
         }
     }
@@ -282,8 +283,8 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
         const vor__tri_t *t = &d->triangles[s];
         if (!vor__is_ghost(t)) {
             ids[0] = vor__vertex(t, 0);
-            ids[1] = t->v[1];
-            ids[2] = t->v[2];
+            ids[1] = vor__vertex(t, 1);
+            ids[2] = vor__vertex(t, 2);
             it->next_slot = s + 1u;
             return 1;
         }

@@ -13,9 +13,9 @@
  *                                     mesh of v sites, packed
  *
  * A triangle's vertices are counterclockwise (under the perturbation);
- * neighbour i lies across the edge opposite vertex i. The top bit of v[0]
- * of home slot s is a transient mark on site s, kept by every write to the
- * slot (vor__tri_set): insertion uses it for the seed's topological guard.
+ * neighbour i lies across the edge opposite vertex i. A spare bit of home
+ * slot s is a transient mark on site s, kept by every write to the slot
+ * (vor__tri_set): insertion uses it for the seed's topological guard.
  */
 #ifndef VOR_MESH_H
 #define VOR_MESH_H
@@ -25,15 +25,33 @@
 #include "predicates.h"
 #include "vor.h"
 
+/* A triangle: three vertices and three neighbour slots. With 16-bit
+ * indices the vertices are three uint16_t; with 32-bit indices they are
+ * packed 21 bits each into two words (20 bytes a triangle instead of 24,
+ * so 48 bytes per site with the coordinates; up to 2^21 - 2 sites). The
+ * slot's site mark is the top bit of the vertex words. Only the accessors
+ * below look inside. */
 struct vor__triangle {
+#if VOR_INDEX_BITS == 16
     vor_index_t v[3];
+#else
+    uint32_t v[2];
+#endif
     vor_index_t n[3];
 };
 typedef struct vor__triangle vor__tri_t;
 
-#define VOR__MARK ((vor_index_t)1u << (VOR_INDEX_BITS - 1))
-#define VOR__INFINITE ((vor_index_t)(VOR__MARK - 1u)) /* the vertex at infinity */
-#define VOR__NONE ((vor_index_t)~(vor_index_t)0)      /* no neighbour: empty slot */
+/* the arena size macro in vor.h must match the layout */
+typedef char vor__triangle_size_check[(sizeof(vor__tri_t) == VOR_TRIANGLE_BYTES) ? 1 : -1];
+
+#if VOR_INDEX_BITS == 16
+#define VOR__INFINITE ((vor_index_t)0x7FFFu) /* the vertex at infinity */
+#define VOR__MARK_BIT 0x8000u                /* in v[0] */
+#else
+#define VOR__INFINITE ((vor_index_t)0x1FFFFFu)
+#define VOR__MARK_BIT 0x80000000u            /* in v[1] */
+#endif
+#define VOR__NONE ((vor_index_t)~(vor_index_t)0) /* no neighbour: empty slot */
 
 /* A hint to the cache: site ids are input positions, so the next sites'
  * coordinates and home slots lie anywhere in the arena (no effect without
@@ -56,7 +74,32 @@ static inline unsigned vor__prev(unsigned i)
 
 static inline vor_index_t vor__vertex(const vor__tri_t *t, unsigned i)
 {
-    return (vor_index_t)(t->v[i] & (vor_index_t)~VOR__MARK);
+#if VOR_INDEX_BITS == 16
+    return (vor_index_t)(t->v[i] & 0x7FFFu);
+#else
+    return (i == 0u)   ? (t->v[0] & 0x1FFFFFu)
+           : (i == 1u) ? ((t->v[0] >> 21) | ((t->v[1] & 0x3FFu) << 11))
+                       : ((t->v[1] >> 10) & 0x1FFFFFu);
+#endif
+}
+
+/* The transient site mark of a home slot (incremental.c). */
+static inline bool vor__marked(const vor__tri_t *t)
+{
+#if VOR_INDEX_BITS == 16
+    return (t->v[0] & VOR__MARK_BIT) != 0u;
+#else
+    return (t->v[1] & VOR__MARK_BIT) != 0u;
+#endif
+}
+
+static inline void vor__set_mark(vor__tri_t *t, bool on)
+{
+#if VOR_INDEX_BITS == 16
+    t->v[0] = (vor_index_t)(on ? (t->v[0] | VOR__MARK_BIT) : (t->v[0] & ~VOR__MARK_BIT));
+#else
+    t->v[1] = on ? (t->v[1] | VOR__MARK_BIT) : (t->v[1] & ~VOR__MARK_BIT);
+#endif
 }
 
 static inline bool vor__slot_empty(const vor__tri_t *t)
@@ -69,18 +112,30 @@ static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
                                 vor_index_t v2, vor_index_t n0, vor_index_t n1,
                                 vor_index_t n2)
 {
-    t->v[0] = (vor_index_t)((t->v[0] & VOR__MARK) | v0);
+#if VOR_INDEX_BITS == 16
+    t->v[0] = (vor_index_t)((t->v[0] & VOR__MARK_BIT) | v0);
     t->v[1] = v1;
     t->v[2] = v2;
+#else
+    t->v[0] = v0 | (v1 << 21);
+    t->v[1] = (t->v[1] & VOR__MARK_BIT) | (v1 >> 11) | (v2 << 10);
+#endif
     t->n[0] = n0;
     t->n[1] = n1;
     t->n[2] = n2;
 }
 
+/* A slot about to get its first triangle: clears whatever mark bit its
+ * earlier contents (scratch space, an old triangle) left. */
+static inline void vor__tri_fresh(vor__tri_t *t)
+{
+    vor__set_mark(t, false);
+}
+
 static inline bool vor__is_ghost(const vor__tri_t *t)
 {
-    return vor__vertex(t, 0) == VOR__INFINITE || t->v[1] == VOR__INFINITE ||
-           t->v[2] == VOR__INFINITE;
+    return vor__vertex(t, 0) == VOR__INFINITE || vor__vertex(t, 1) == VOR__INFINITE ||
+           vor__vertex(t, 2) == VOR__INFINITE;
 }
 
 /* Index (0..2) of neighbour `slot` in t's neighbour list; 3 if absent. */
@@ -92,7 +147,10 @@ static inline unsigned vor__neighbour_index(const vor__tri_t *t, vor_index_t slo
 /* Index of vertex v in t; 3 if absent. */
 static inline unsigned vor__vertex_index(const vor__tri_t *t, vor_index_t v)
 {
-    return (vor__vertex(t, 0) == v) ? 0u : (t->v[1] == v) ? 1u : (t->v[2] == v) ? 2u : 3u;
+    return (vor__vertex(t, 0) == v)   ? 0u
+           : (vor__vertex(t, 1) == v) ? 1u
+           : (vor__vertex(t, 2) == v) ? 2u
+                                      : 3u;
 }
 
 /* Field by field: a structure assignment of this size becomes a memcpy
@@ -172,7 +230,7 @@ static inline int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
  * be deleted by p. */
 static inline bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p)
 {
-    vor_index_t v0 = vor__vertex(t, 0), v1 = t->v[1], v2 = t->v[2];
+    vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);
     if (v0 == VOR__INFINITE) {
         return vor__orient(d, v1, v2, p) > 0;
     }
@@ -208,7 +266,7 @@ void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);
 /* vor_build's plan (insertion_order.c): for the n sites already copied
  * into d->sites, writes plan[2i] = the i-th site to insert and plan[2i+1]
  * = the site its search starts from (VOR__NONE: the previous one); the
- * duplicates come last, with their first occurrence | VOR__MARK. Returns
+ * duplicates come last, with their first occurrence. Returns
  * the number of distinct sites. Writes duplicate_of[] if not NULL. Uses
  * scratch[0 .. 6n + 2) for n >= 8; scratch and plan must not overlap. */
 uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
