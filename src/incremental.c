@@ -130,19 +130,22 @@ uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p)
 /* ------------------------------------------------------------------ */
 /* Updating the mesh                                                   */
 
-/* In triangle `slot`, point the link across edge (a, b), which pointed at
- * `from`, at `to`. Comparing links is cheaper than decoding vertices; only
- * the two-site mesh, two triangles sharing all three edges, needs the edge's
- * vertices to tell its links apart. */
-static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_index_t a,
-                   vor_index_t b, vor_index_t to)
+/* In triangle `slot`, point the link that pointed at `from` at `to`. */
+static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_index_t to)
 {
     vor__tri_t *t = &tri[slot];
-    int links = (t->n[0] == from) + (t->n[1] == from) + (t->n[2] == from);
-    if (links == 1) {
-        t->n[vor__neighbour_index(t, from)] = to;
-        return;
+    unsigned i = vor__neighbour_index(t, from);
+    if (i != 3u) { /* always found in a valid mesh */
+        t->n[i] = to;
     }
+}
+
+/* The same for the two-site mesh, whose two triangles share all three
+ * edges: the link is told apart by the edge (a, b) it crosses. */
+static void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
+                        vor_index_t to)
+{
+    vor__tri_t *t = &tri[slot];
     for (unsigned i = 0; i < 3u; i++) {
         vor_index_t v = vor__vertex(t, i);
         if (v != a && v != b) {
@@ -182,10 +185,12 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, unsigned apex)
         s1 = y_slot;
         s2 = x_slot;
     }
-    relink(tri, across_xc, y_slot, x, c, s1);
-    relink(tri, across_cy, y_slot, c, y, s2);
-    relink(tri, ny, x_slot, p, x, s1);
-    relink(tri, nx, x_slot, y, p, s2);
+    /* four distinct triangles, each linked once to x_slot or y_slot:
+     * the star has at least three vertices besides p when flips happen */
+    relink(tri, across_xc, y_slot, s1);
+    relink(tri, across_cy, y_slot, s2);
+    relink(tri, ny, x_slot, s1);
+    relink(tri, nx, x_slot, s2);
     vor__tri_set(&tri[s1], p, x, c, across_xc, s2, ny);
     vor__tri_set(&tri[s2], p, c, y, across_cy, nx, s1);
     return s1;
@@ -210,9 +215,15 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     }
     vor__tri_fresh(&tri[sp]);
     vor__tri_fresh(&tri[extra]);
-    relink(tri, na, root, b, c, sa);
-    relink(tri, nb, root, c, a, sb);
-    relink(tri, nc, root, a, b, sc);
+    if (d->vertex_count == 2u) { /* the root's neighbour is one triangle */
+        relink_edge(tri, na, b, c, sa);
+        relink_edge(tri, nb, c, a, sb);
+        relink_edge(tri, nc, a, b, sc);
+    } else {
+        relink(tri, na, root, sa);
+        relink(tri, nb, root, sb);
+        relink(tri, nc, root, sc);
+    }
     vor__tri_set(&tri[sa], sp, b, c, na, sb, sc);
     vor__tri_set(&tri[sb], sp, c, a, nb, sc, sa);
     vor__tri_set(&tri[sc], sp, a, b, nc, sa, sb);
