@@ -385,8 +385,12 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     int sign = 0;
     COUNT(stats, incircle_perturbed);
     const uint32_t ids[4] = {i, j, k, l};
-    size_t rank[4];
-    size_t top = rank_sites(ids, 4, rank);
+    /* the site with the largest index is the origin; the three others, in
+     * call order, are the minor's rows */
+    size_t top = 0;
+    for (size_t p = 1; p < 4; p++) {
+        top = (ids[p] > ids[top]) ? p : top;
+    }
     size_t row[3];
     for (size_t p = 0, n = 0; p < 4; p++) {
         if (p != top) {
@@ -407,6 +411,30 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
      * entry per column <= 2^57, six of them < 2^60: int64. Else 160 bits. */
     bool narrow = m < (1u << 14);
+    /* The first term (t = 1) nearly always decides: the smallest index's
+     * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
+     * points. Along that row, with it at minor row `low`:
+     *   det = (-1)^(low+1) (xP zQ - zP xQ) + (-1)^low 2y (xP yQ - yP xQ)
+     * In the narrow case every product fits int64. */
+    size_t low = 0;
+    for (size_t r = 1; r < 3; r++) {
+        low = (ids[row[r]] < ids[row[low]]) ? r : low;
+    }
+    if (narrow) {
+        size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
+        int32_t xp = (int32_t)x[rp], yp = (int32_t)y[rp];
+        int32_t xq = (int32_t)x[rq], yq = (int32_t)y[rq];
+        int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
+        int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
+        int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+        int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
+        sign = sign_of((low % 2u == 0u) ? det : -det);
+        if (sign != 0) {
+            return (top % 2 == 0) ? -sign : sign;
+        }
+    }
+    size_t rank[4];
+    (void)rank_sites(ids, 4, rank);
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
