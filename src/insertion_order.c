@@ -67,9 +67,8 @@ static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
     }
 }
 
-/* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place, no
- * recursion (one bucket may hold every site when all are duplicates). */
-static void sort_sites(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
+/* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place. */
+static void heap_sort(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
 {
     if (n < 2u) {
         return;
@@ -82,6 +81,88 @@ static void sort_sites(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
         ids[0] = ids[end];
         ids[end] = t;
         sift_down(sites, ids, 0, end);
+    }
+}
+
+static void swap_ids(vor_index_t *ids, uint32_t a, uint32_t b)
+{
+    vor_index_t t = ids[a];
+    ids[a] = ids[b];
+    ids[b] = t;
+}
+
+/* Introsort of ids[0..n) by site_less (a total order: ids break ties):
+ * median-of-three quicksort on an explicit stack, smaller part first so
+ * the stack holds at most log2(n) ranges; insertion sort below 16; and
+ * heapsort for a range that goes deeper than 2 log2(n), so the worst case
+ * stays O(n log n) (crowded buckets of clustered sites hold thousands). */
+static void sort_sites(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
+{
+    struct range {
+        uint32_t first, count, depth;
+    } stack[64];
+    unsigned top = 0, log2n = 0;
+    while ((1ull << log2n) < n) {
+        log2n++;
+    }
+    stack[top++] = (struct range){0, n, 0};
+    while (top > 0u) {
+        struct range r = stack[--top];
+        vor_index_t *a = ids + r.first;
+        if (r.count < 16u) {
+            for (uint32_t i = 1; i < r.count; i++) {
+                vor_index_t v = a[i];
+                uint32_t j = i;
+                while (j > 0u && site_less(sites, v, a[j - 1u])) {
+                    a[j] = a[j - 1u];
+                    j--;
+                }
+                a[j] = v;
+            }
+            continue;
+        }
+        if (r.depth > 2u * log2n) {
+            heap_sort(sites, a, r.count);
+            continue;
+        }
+        /* median of three to a[0], then Hoare partition around it */
+        uint32_t mid = r.count / 2u, last = r.count - 1u;
+        if (site_less(sites, a[mid], a[0])) {
+            swap_ids(a, mid, 0);
+        }
+        if (site_less(sites, a[last], a[0])) {
+            swap_ids(a, last, 0);
+        }
+        if (site_less(sites, a[last], a[mid])) {
+            swap_ids(a, last, mid);
+        }
+        swap_ids(a, 0, mid);
+        vor_index_t pivot = a[0];
+        uint32_t i = 0, j = r.count;
+        for (;;) { /* i and j move toward each other: ends within count steps */
+            do {
+                i++;
+            } while (i < r.count && site_less(sites, a[i], pivot));
+            do {
+                j--;
+            } while (site_less(sites, pivot, a[j]));
+            if (i >= j) {
+                break;
+            }
+            swap_ids(a, i, j);
+        }
+        swap_ids(a, 0, j);
+        /* [0, j) before the pivot, [j + 1, count) after: push the larger
+         * first so that the smaller is sorted next */
+        struct range left = {r.first, j, r.depth + 1u};
+        struct range right = {r.first + j + 1u, r.count - j - 1u, r.depth + 1u};
+        if (left.count > right.count) {
+            stack[top++] = left;
+            stack[top++] = right;
+        } else {
+            stack[top++] = right;
+            stack[top++] = left;
+        }
     }
 }
 
