@@ -288,17 +288,16 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 {
     int sign = 0;
     COUNT(stats, orient2d_perturbed);
+    VOR_ASSERT(i != j && j != k && i != k);
     const uint32_t ids[3] = {i, j, k};
-    size_t rank[3];
-    size_t top = rank_sites(ids, 3, rank);
+    /* the largest index is the origin; of the other two rows (call order),
+     * `low` has the smaller index: rank 0 */
+    size_t top = (ids[1] > ids[0]) ? 1u : 0u;
+    top = (ids[2] > ids[top]) ? 2u : top;
     /* rows other than `top`, in call order; their 2x2 minor with cofactor
      * sign (-1)^top is the determinant */
-    size_t row[2];
-    for (size_t p = 0, n = 0; p < 3; p++) {
-        if (p != top) {
-            row[n++] = p;
-        }
-    }
+    size_t row[2] = {(top == 0) ? 1u : 0u, (top == 2) ? 1u : 2u};
+    size_t low = (ids[row[0]] < ids[row[1]]) ? 0u : 1u;
     /* the rows relative to the top site */
     int64_t x[2], y[2];
     for (size_t r = 0; r < 2; r++) {
@@ -313,8 +312,8 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      * of the other row: no product is needed. */
     for (unsigned hi = 0; hi < 3 && sign == 0; hi++) {
         for (unsigned lo = (hi == 0) ? 1u : 0u; lo < 3 && sign == 0; lo++) {
-            enum row_kind first = kinds[rank[row[0]] == 0 ? lo : hi];
-            enum row_kind second = kinds[rank[row[1]] == 0 ? lo : hi];
+            enum row_kind first = kinds[low == 0u ? lo : hi];
+            enum row_kind second = kinds[low == 1u ? lo : hi];
             if (first == ROW_POINT) { /* (x, y) over (0, 1) or (1, 0) */
                 sign = sign_of((second == ROW_DY) ? x[0] : -y[0]);
             } else if (second == ROW_POINT) { /* (0, 1) or (1, 0) over (x, y) */
