@@ -169,14 +169,13 @@ void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
 /* Flips the edge opposite p in star triangle `x_slot` = (p, x, y) with
  * its neighbour (y, x, c): the triangles become (p, x, c) and (p, c, y).
  * Returns the slot of (p, x, c). `apex` is c's index in the neighbour. */
-static vor_index_t flip(vor_t *d, vor_index_t x_slot, unsigned apex)
+static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t x,
+                        vor_index_t y, unsigned apex, vor_index_t c)
 {
     vor__tri_t *tri = d->triangles;
     vor__tri_t *t = &tri[x_slot];
-    vor_index_t p = vor__vertex(t, 0), x = vor__vertex(t, 1), y = vor__vertex(t, 2);
     vor_index_t y_slot = t->n[0], nx = t->n[1], ny = t->n[2];
     vor__tri_t *u = &tri[y_slot];
-    vor_index_t c = vor__vertex(u, apex);
     vor_index_t across_xc = u->n[vor__next(apex)];
     vor_index_t across_cy = u->n[vor__prev(apex)];
     /* keep home slots home: (p, x, c) holds x, (p, c, y) holds y, both c */
@@ -243,17 +242,19 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     uint32_t star = 3, refused = 0;
     while (refused < star) {
         vor__tri_t *t = &tri[slot];
-        vor__tri_t *u = &tri[t->n[0]];
-        unsigned ix = vor__vertex_index(u, vor__vertex(t, 1));
+        vor_index_t tv[3], uv[3]; /* t = (p, x, y), u = (y, x, c) */
+        vor__vertices(t, tv);
+        vor__vertices(&tri[t->n[0]], uv);
+        unsigned ix = (uv[0] == tv[1]) ? 0u : (uv[1] == tv[1]) ? 1u : (uv[2] == tv[1]) ? 2u : 3u;
         if (ix == 3u) { /* only on a corrupted mesh: never index past it */
             refused++;
             slot = t->n[1];
             continue;
         }
-        unsigned apex = vor__next(ix); /* u = (y, x, c) */
-        vor_index_t far = vor__vertex(u, apex);
-        if (!marked(d, far, infinity_marked) && vor__conflicts(d, u, p)) {
-            slot = flip(d, slot, apex);
+        unsigned apex = vor__next(ix);
+        vor_index_t far = uv[apex];
+        if (!marked(d, far, infinity_marked) && vor__conflicts(d, uv[0], uv[1], uv[2], p)) {
+            slot = flip(d, slot, sp, tv[1], tv[2], apex, far);
             set_mark(d, far, true, &infinity_marked);
             star++;
         } else {

@@ -83,6 +83,21 @@ static inline vor_index_t vor__vertex(const vor__tri_t *t, unsigned i)
 #endif
 }
 
+/* All three vertices at once (one read of the packed words). */
+static inline void vor__vertices(const vor__tri_t *t, vor_index_t v[3])
+{
+#if VOR_INDEX_BITS == 16
+    v[0] = (vor_index_t)(t->v[0] & 0x7FFFu);
+    v[1] = t->v[1];
+    v[2] = t->v[2];
+#else
+    uint32_t w0 = t->v[0], w1 = t->v[1];
+    v[0] = w0 & 0x1FFFFFu;
+    v[1] = (w0 >> 21) | ((w1 & 0x3FFu) << 11);
+    v[2] = (w1 >> 10) & 0x1FFFFFu;
+#endif
+}
+
 /* The transient site mark of a home slot (incremental.c). */
 static inline bool vor__marked(const vor__tri_t *t)
 {
@@ -224,13 +239,13 @@ static inline int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
     return vor__with_faults(d, vor_closer_sos(d->sites, p, a, b, &d->stats));
 }
 
-/* Does triangle t (finite or at infinity) conflict with site p, i.e. is p
- * strictly inside its circumcircle (for a hull triangle: strictly outside
- * its hull edge, left of a -> b in (a, b, inf))? The Voronoi vertex t would
- * be deleted by p. */
-static inline bool vor__conflicts(vor_t *d, const vor__tri_t *t, uint32_t p)
+/* Does the triangle (v0, v1, v2) (finite or at infinity) conflict with
+ * site p, i.e. is p strictly inside its circumcircle (for a hull triangle:
+ * strictly outside its hull edge, left of a -> b in (a, b, inf))? The
+ * Voronoi vertex it stands for would be deleted by p. */
+static inline bool vor__conflicts(vor_t *d, vor_index_t v0, vor_index_t v1, vor_index_t v2,
+                                  uint32_t p)
 {
-    vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);
     if (v0 == VOR__INFINITE) {
         return vor__orient(d, v1, v2, p) > 0;
     }
