@@ -6,7 +6,8 @@
 #
 # Quiet and exit 0 when everything is present; safe to run any number of
 # times. When something is missing: as root, installs the packages with
-# apt-get; otherwise prints the command to run and exits 1.
+# apt-get; otherwise prints the command to run and exits 1
+# (tools/apt-install.sh).
 set -eu
 
 PACKAGES="gcc-arm-none-eabi libnewlib-arm-none-eabi picolibc-arm-none-eabi \
@@ -24,16 +25,8 @@ missing=$(missing_tools)
 [ -z "$missing" ] && exit 0
 
 echo "install-toolchain: missing: $missing" >&2
-if [ "$(id -u)" -ne 0 ]; then
-    echo "install-toolchain: run as root, or:" >&2
-    # python3 is listed too so that one command covers every tool.
-    echo "  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y $PACKAGES python3" >&2
-    exit 1
-fi
-
-apt-get update
 # shellcheck disable=SC2086  # PACKAGES is a word list on purpose
-DEBIAN_FRONTEND=noninteractive apt-get install -y $PACKAGES python3
+"$(dirname "$0")/apt-install.sh" install-toolchain $PACKAGES python3
 
 missing=$(missing_tools)
 if [ -n "$missing" ]; then

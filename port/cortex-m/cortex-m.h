@@ -8,16 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Exit status of a program stopped by a fault or unexpected exception. */
-#define VOR_PORT_FAULT_STATUS 99
-
-#if defined(__GNUC__)
-#define VOR_PORT_NORETURN __attribute__((noreturn))
-#define VOR_PORT_USED __attribute__((used))
-#else
-#define VOR_PORT_NORETURN
-#define VOR_PORT_USED
-#endif
+#include "../common/fault_line.h"
 
 /* SysTick ticks since vor_port_init(), 64 bits, monotonic (systick.c),
  * scaled into vor_port_counter() there. */

@@ -7,16 +7,7 @@
 
 #include <stdint.h>
 
-/* Exit status of a program stopped by a trap. */
-#define VOR_PORT_FAULT_STATUS 99
-
-#if defined(__GNUC__)
-#define VOR_PORT_NORETURN __attribute__((noreturn))
-#define VOR_PORT_USED __attribute__((used))
-#else
-#define VOR_PORT_NORETURN
-#define VOR_PORT_USED
-#endif
+#include "../common/fault_line.h"
 
 /*
  * CSR access without the Zicsr extension in -march: -march=rv32imac_zicsr

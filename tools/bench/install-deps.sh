@@ -7,8 +7,8 @@
 #   tools/bench/install-deps.sh     check; install what is missing
 #
 # Quiet and exit 0 when both are present. When something is missing: as
-# root, installs the packages with apt-get (running apt-get update first if
-# the install fails); otherwise prints the command to run and exits 1.
+# root, installs the packages with apt-get; otherwise prints the command to
+# run and exits 1 (tools/apt-install.sh).
 set -eu
 
 PACKAGES="libcgal-dev libboost-dev"
@@ -23,18 +23,8 @@ missing=$(missing_headers)
 [ -z "$missing" ] && exit 0
 
 echo "install-deps: missing: $missing" >&2
-if [ "$(id -u)" -ne 0 ]; then
-    echo "install-deps: run as root, or:" >&2
-    echo "  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y $PACKAGES g++" >&2
-    exit 1
-fi
-
-export DEBIAN_FRONTEND=noninteractive
 # shellcheck disable=SC2086  # PACKAGES is a word list on purpose
-if ! apt-get install -y $PACKAGES g++; then
-    apt-get update
-    apt-get install -y $PACKAGES g++
-fi
+"$(dirname "$0")/../apt-install.sh" install-deps $PACKAGES g++
 
 missing=$(missing_headers)
 if [ -n "$missing" ]; then

@@ -1,0 +1,15 @@
+#!/bin/sh
+# tools/apt-install.sh WHO PACKAGE... - install Debian packages for one of
+# the project's scripts: as root, apt-get update then install; otherwise
+# print the exact command to run and exit 1. WHO names the caller in the
+# messages.
+set -eu
+who=$1
+shift
+if [ "$(id -u)" -ne 0 ]; then
+    echo "$who: run as root, or:" >&2
+    echo "  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y $*" >&2
+    exit 1
+fi
+apt-get update
+DEBIAN_FRONTEND=noninteractive apt-get install -y "$@"
