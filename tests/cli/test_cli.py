@@ -120,6 +120,43 @@ def delaunay_cases(rng):
     check(r.returncode == 2 and r.stdout == "", "missing file: status 2")
 
 
+def nearest_cases(rng, tmp):
+    """vor nearest against brute force: exact squared distances, ties to
+    the smaller index, duplicates answered by their first occurrence."""
+    import os
+    sets = {
+        "random": [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(300)],
+        "grid": [(x * 10, y * 10) for x in range(12) for y in range(12)],
+        "duplicates": [(rng.randint(0, 5) * 7, rng.randint(0, 5) * 7) for _ in range(120)],
+        "collinear": [(3 * t, 5 * t) for t in (rng.randint(-50, 50) for _ in range(60))],
+    }
+    for name, sites in sets.items():
+        queries = [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(50)]
+        lo_x, hi_x = min(x for x, _ in sites), max(x for x, _ in sites)
+        lo_y, hi_y = min(y for _, y in sites), max(y for _, y in sites)
+        queries += [(rng.randint(lo_x - 3, hi_x + 3), rng.randint(lo_y - 3, hi_y + 3)) for _ in range(250)]
+        queries += [(x + 5, y + 5) for x, y in sites[:40]] + sites[:20]
+        sp, qp = os.path.join(tmp, name + ".sites"), os.path.join(tmp, name + ".queries")
+        with open(sp, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in sites))
+        with open(qp, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in queries))
+        r = run(["nearest", sp, qp], "")
+        check(r.returncode == 0, f"nearest {name}: status {r.returncode} {r.stderr}")
+        got = r.stdout.split()
+        check(len(got) == len(queries), f"nearest {name}: {len(got)} answers for {len(queries)}")
+        wrong = 0
+        for (qx, qy), g in zip(queries, got):
+            best = min(range(len(sites)), key=lambda i: ((sites[i][0] - qx) ** 2 + (sites[i][1] - qy) ** 2, i))
+            wrong += int(g) != best
+        check(wrong == 0, f"nearest {name}: {wrong} of {len(queries)} answers differ from brute force")
+    with open(os.path.join(tmp, "bad"), "w") as f:
+        f.write("1 2\n3\n")
+    r = run(["nearest", os.path.join(tmp, "grid.sites"), os.path.join(tmp, "bad")], "")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: line 2: "),
+          f"nearest bad query line: {r.returncode} {r.stderr!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -151,6 +188,9 @@ def main():
     r = run(["predicates"], "o -2147483648 -2147483648 0 0 2147483647 2147483647\n")
     check(r.stdout == "0\n", f"full-range collinear: {r.stdout!r}")
     delaunay_cases(rng)
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        nearest_cases(rng, tmp)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

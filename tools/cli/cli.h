@@ -82,5 +82,6 @@ double cli_seconds(void);
  * returns the process exit status. */
 int cli_predicates(int argc, char **argv);
 int cli_delaunay(int argc, char **argv);
+int cli_nearest(int argc, char **argv);
 
 #endif
