@@ -46,10 +46,33 @@
  *   Identical points with different indices are separated too, but the
  *   diagram builders report them as duplicates instead of relying on it.
  *
+ * THE DIAGRAM
+ *   A vor_t holds the Delaunay triangulation of its sites (the dual of
+ *   their Voronoi diagram) in one arena the caller provides:
+ *
+ *       static uint8_t arena[VOR_ARENA_BYTES(500)];   // 32 B/site (16-bit ids)
+ *       vor_t d;
+ *       vor_init(&d, arena, sizeof arena, 500);       // or VOR_ERR_*
+ *       vor_build(&d, points, n, NULL, duplicate_of); // site i = points[i]
+ *       vor_insert(&d, x, y, &id);                    // one more site
+ *       vor_nearest(&d, qx, qy, VOR_NO_HINT, &id);    // exact, ties to smaller id
+ *
+ *   Every call returns VOR_OK or a negative enum vor_error, and a failing
+ *   call changes nothing. Nothing is allocated: VOR_ARENA_BYTES(n) is the
+ *   whole memory of n sites (Euler: 2n - 2 triangles), a compile-time
+ *   constant. Insertion is Sugihara and Iri's topology-oriented update:
+ *   the structure stays a valid triangulation whatever the arithmetic
+ *   does, and with these exact predicates it is the unique Delaunay
+ *   triangulation under the perturbation. vor_validate checks every
+ *   invariant; iterators list triangles and neighbours.
+ *
  * COST (docs/benchmarks.md has the measured table)
- *   No call allocates, recurses or loops over data. A degenerate input to an
- *   _sos predicate evaluates at most 5 (orient2d) or 27 (incircle) small
- *   determinants; typical degeneracies are decided by the first one.
+ *   No predicate allocates, recurses or loops over data. A degenerate input
+ *   to an _sos predicate evaluates at most 5 (orient2d) or 27 (incircle)
+ *   small determinants; typical degeneracies are decided by the first one.
+ *   Building n uniform sites takes expected O(n) time (about 0.55 us a
+ *   site on a 2.45 GHz host at n = 10^6; about 4,500 instructions a site on
+ *   Cortex-M3).
  *
  * CONFIGURATION: vor_config.h.  DESIGN: docs/design.md.  API: docs/api.md.
  */
