@@ -94,12 +94,18 @@ int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *s
      * within vertex_count steps */
     vor_neighbour_iter_t it;
     uint32_t n, best = hint;
+    bool tie = false; /* a neighbour of `best` as close as it */
     for (uint32_t step = 0; step < d->vertex_count; step++) {
         uint32_t from = best;
+        tie = false;
         vor_neighbours_begin(&it, d, from);
         while (vor_neighbours_next(&it, &n)) {
-            if (vor_closer(&q, &s[n], &s[best], NULL) < 0) {
+            int c = vor_closer(&q, &s[n], &s[best], NULL);
+            if (c < 0) {
                 best = n;
+                tie = false;
+            } else if (c == 0) {
+                tie = true;
             }
         }
         if (best == from) {
@@ -107,9 +113,11 @@ int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *s
         }
     }
 
-    /* ties: around the empty circle through `best`, smallest index */
+    /* ties: around the empty circle through `best`, smallest index. Only
+     * when the last round saw one: every site on that circle is then a
+     * neighbour of another, so a tie shows up among best's neighbours. */
     uint32_t smallest = best, current = best;
-    for (uint32_t step = 0; step < d->vertex_count; step++) {
+    for (uint32_t step = 0; tie && step < d->vertex_count; step++) {
         uint32_t next = VOR__NONE;
         vor_neighbours_begin(&it, d, current);
         while (vor_neighbours_next(&it, &n)) {
