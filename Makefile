@@ -129,9 +129,10 @@ $(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor.a
 run-bench-%: $(B)/bench-%$(EXE)
 	$(RUN) $<
 
-# Examples: examples/NAME/*.c linked with the port and the release library.
-$(B)/example-%$(EXE): $$(wildcard examples/%/*.c) $(PORT_OBJS) $(B)/libvor.a
-	$(CC) $(TEST_CFLAGS) $(wildcard examples/$*/*.c) $(PORT_OBJS) $(B)/libvor.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+# Examples: examples/NAME/*.c and examples/common/*.c, linked with the port
+# and the release library.
+$(B)/example-%$(EXE): $$(wildcard examples/%/*.c) $(wildcard examples/common/*) $(PORT_OBJS) $(B)/libvor.a
+	$(CC) $(TEST_CFLAGS) -Iexamples/common $(wildcard examples/$*/*.c) $(wildcard examples/common/*.c) $(PORT_OBJS) $(B)/libvor.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 run-example-%: $(B)/example-%$(EXE)
 	$(RUN) $<

@@ -6,44 +6,20 @@
  * Copy from here: a predicate call needs nothing but the points; pass a
  * vor_predicate_stats_t to see which evaluation width each call needed.
  */
+#include "example_io.h"
 #include "port.h"
 #include "vor.h"
 
-/* Minimal output helpers: this firmware links no C library. */
-static void print(const char *s)
-{
-    size_t n = 0;
-    while (s[n] != '\0') {
-        n++;
-    }
-    vor_port_write(s, n);
-}
-
-static void print_int(long long v)
-{
-    char buf[24];
-    size_t n = sizeof buf;
-    unsigned long long m = (v < 0) ? 0ull - (unsigned long long)v : (unsigned long long)v;
-    do {
-        buf[--n] = (char)('0' + (int)(m % 10u));
-        m /= 10u;
-    } while (m != 0u);
-    if (v < 0) {
-        buf[--n] = '-';
-    }
-    vor_port_write(buf + n, sizeof buf - n);
-}
-
 static void print_sign(const char *label, int sign)
 {
-    print(label);
-    print(sign > 0 ? "+1\n" : sign < 0 ? "-1\n" : " 0\n");
+    example_print(label);
+    example_print(sign > 0 ? "+1\n" : sign < 0 ? "-1\n" : " 0\n");
 }
 
 int main(void)
 {
     vor_port_init();
-    print("vor: exact predicates on inputs that break floating point\n\n");
+    example_print("vor: exact predicates on inputs that break floating point\n\n");
 
     /* Four lattice points on the circle x^2 + y^2 = R^2 with R = 1,069,469,830
      * (about 2^30), shifted towards INT32_MAX: exactly cocircular, which
@@ -76,15 +52,15 @@ int main(void)
                vor_orient2d_sos(line, 0, 1, 2, &stats));
 
     /* which widths were needed */
-    print("\nincircle calls by width: narrow ");
-    print_int(stats.incircle[VOR_TIER_NARROW]);
-    print(", mid ");
-    print_int(stats.incircle[VOR_TIER_MID]);
-    print(", wide ");
-    print_int(stats.incircle[VOR_TIER_WIDE]);
-    print("; decided by the perturbation: ");
-    print_int(stats.incircle_perturbed);
-    print("\n");
+    example_print("\nincircle calls by width: narrow ");
+    example_print_int(stats.incircle[VOR_TIER_NARROW]);
+    example_print(", mid ");
+    example_print_int(stats.incircle[VOR_TIER_MID]);
+    example_print(", wide ");
+    example_print_int(stats.incircle[VOR_TIER_WIDE]);
+    example_print("; decided by the perturbation: ");
+    example_print_int(stats.incircle_perturbed);
+    example_print("\n");
 
     /* cost of one full-range incircle */
     uint64_t start = vor_port_counter();
@@ -93,10 +69,10 @@ int main(void)
         sink += vor_incircle(&circle[0], &circle[1], &circle[2], &nudged, NULL);
     }
     uint64_t spent = vor_port_counter() - start;
-    print("full-range incircle: ");
-    print_int((long long)(spent / 100u));
-    print(" ");
-    print(vor_port_counter_unit);
-    print(" per call\n");
+    example_print("full-range incircle: ");
+    example_print_int((long long)(spent / 100u));
+    example_print(" ");
+    example_print(vor_port_counter_unit);
+    example_print(" per call\n");
     return sink == -100 ? 0 : 1; /* the nudged point is outside every time */
 }
