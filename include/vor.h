@@ -203,14 +203,20 @@ typedef uint32_t vor_index_t;
  * bits each, neighbours in 32). */
 #define VOR_TRIANGLE_BYTES ((VOR_INDEX_BITS == 16) ? 12u : 20u)
 
+/* Buckets of the coarse grid that finds a starting site for a query
+ * without a hint: one site id per 16 sites (a constant expression). */
+#define VOR_BUCKETS(n) (((size_t)(n) + 15u) / 16u)
+
 /* Arena bytes for a diagram of up to n sites (a constant expression):
- * the coordinates, and one triangle for each of the 2n - 2 triangles a
+ * the coordinates, one triangle for each of the 2n - 2 triangles a
  * triangulation of n sites has once the hull is closed by a vertex at
- * infinity (Euler's formula, seed 003 section 1.2). No other memory is
- * used, and vor_build takes its scratch space from the same arena. */
+ * infinity (Euler's formula, seed 003 section 1.2), and the bucket grid.
+ * No other memory is used, and vor_build takes its scratch space from the
+ * same arena. */
 #define VOR_ARENA_BYTES(n)                                                     \
     ((size_t)(n) * sizeof(vor_point_t) +                                       \
-     ((n) >= 2u ? 2u * (size_t)(n) - 2u : 0u) * VOR_TRIANGLE_BYTES)
+     ((n) >= 2u ? 2u * (size_t)(n) - 2u : 0u) * VOR_TRIANGLE_BYTES +           \
+     VOR_BUCKETS(n) * sizeof(vor_index_t))
 
 /* The arena's required alignment (a static uint8_t array needs
  * _Alignas(4) or __attribute__((aligned(4))); malloc's is enough). */
@@ -226,6 +232,14 @@ typedef struct vor {
     uint32_t site_count;   /* site ids handed out: 0 .. site_count - 1 */
     uint32_t vertex_count; /* of those, the ones in the mesh (not duplicates) */
     uint32_t last_site;    /* where the next search starts by default */
+    vor_point_t low, high; /* bounding box of the sites in the mesh */
+    /* The bucket grid (queries without a hint start at the site of the
+     * query's bucket): square buckets of side 2^bucket_shift from
+     * bucket_origin, bucket_columns x bucket_rows of them, row by row. */
+    vor_index_t *buckets;  /* [VOR_BUCKETS(max_sites)], in the arena */
+    vor_point_t bucket_origin;
+    uint32_t bucket_columns, bucket_rows, bucket_shift;
+    uint32_t bucket_rebuild_at; /* site count at which the grid is redrawn */
     vor_predicate_stats_t stats; /* predicate tiers of every call on it */
 } vor_t;
 
@@ -282,6 +296,8 @@ enum vor_check {
     VOR_CHECK_VERTICES,    /* every vertex a valid site or infinity, distinct */
     VOR_CHECK_NEIGHBOURS,  /* neighbour links symmetric, edges shared */
     VOR_CHECK_SITES,       /* every site present, its triangles one fan */
+    VOR_CHECK_BUCKETS,     /* the bounding box holds every site, and every
+                              bucket of the grid names a site in the mesh */
     VOR_CHECK_ORIENTATION, /* every finite triangle counterclockwise */
     VOR_CHECK_DELAUNAY     /* every edge locally Delaunay (and a convex hull) */
 };
@@ -357,6 +373,20 @@ int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour);
  *   VOR_ERR_EMPTY  the diagram has no sites
  */
 int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
+
+/*
+ * The k sites nearest to (x, y), nearest first, by exact distance and, at
+ * equal distances, smaller id first, into nearest[0 .. k). *found receives
+ * min(k, number of sites): duplicates are not sites, their first
+ * occurrences are. hint as for vor_nearest. Cost: the walk of vor_nearest,
+ * then O(k^2) neighbour visits (each listed site's neighbours are scanned
+ * for the next one); no memory beyond nearest[].
+ *   VOR_ERR_ARG    d or found NULL, nearest NULL with k > 0, a bad hint
+ *   VOR_ERR_EMPTY  the diagram has no sites
+ * On failure nothing is written.
+ */
+int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t k,
+                  uint32_t *nearest, uint32_t *found);
 
 #ifdef __cplusplus
 }

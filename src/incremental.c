@@ -341,9 +341,13 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
         }
         vor__insert_at(d, root, p);
     }
+    vor__box_add(d, &point, d->vertex_count == 0u);
     d->site_count++;
     d->vertex_count++;
     d->last_site = p;
+    if (d->vertex_count >= 2u) {
+        vor__grid_add(d, p);
+    }
     if (site != NULL) {
         *site = p;
     }
@@ -374,12 +378,14 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     if (n > d->max_sites) {
         return VOR_ERR_FULL;
     }
-    for (uint32_t s = 0; s < n; s++) {
-        d->sites[s] = points[s];
-    }
     d->site_count = n;
     d->vertex_count = 0;
     d->last_site = 0;
+    d->bucket_rebuild_at = 2; /* the grid of earlier sites is void */
+    for (uint32_t s = 0; s < n; s++) {
+        d->sites[s] = points[s];
+        vor__box_add(d, &points[s], s == 0u);
+    }
     if (n <= 1u) {
         d->vertex_count = n;
         if (n == 1u && duplicate_of != NULL) {
@@ -424,5 +430,6 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
         d->vertex_count++;
         d->last_site = s;
     }
+    vor__grid_rebuild(d);
     return VOR_OK;
 }

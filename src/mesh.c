@@ -20,10 +20,16 @@ int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
     d->sites = (vor_point_t *)arena;
     /* the triangles follow the coordinates: 8-byte points keep them aligned */
     d->triangles = (vor__tri_t *)(void *)(d->sites + max_sites);
+    /* the bucket grid follows the triangles (4-byte multiples) */
+    d->buckets = (vor_index_t *)(void *)(d->triangles + vor__triangle_count(max_sites));
     d->max_sites = max_sites;
     d->site_count = 0;
     d->vertex_count = 0;
     d->last_site = 0;
+    d->low.x = d->low.y = d->high.x = d->high.y = 0;
+    d->bucket_origin.x = d->bucket_origin.y = 0;
+    d->bucket_columns = d->bucket_rows = d->bucket_shift = 0;
+    d->bucket_rebuild_at = 2;
     vor_predicate_stats_t zero;
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         zero.orient2d[t] = zero.incircle[t] = zero.closer[t] = 0;
@@ -198,6 +204,25 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
         return violation(out, VOR_CHECK_SITES, 0, VOR__INFINITE);
     }
 
+    /* the query index: a box around every site, buckets naming sites */
+    for (uint32_t s = 0; s < d->site_count; s++) {
+        const vor_point_t *p = &d->sites[s];
+        if (!vor__slot_empty(&tri[s]) && (p->x < d->low.x || p->x > d->high.x ||
+                                          p->y < d->low.y || p->y > d->high.y)) {
+            return violation(out, VOR_CHECK_BUCKETS, s, s);
+        }
+    }
+    uint64_t buckets = vor__mul_u32(d->bucket_columns, d->bucket_rows);
+    if (buckets == 0u || buckets > VOR_BUCKETS(d->max_sites)) {
+        return violation(out, VOR_CHECK_BUCKETS, 0, VOR__INFINITE);
+    }
+    for (uint32_t b = 0; b < (uint32_t)buckets; b++) {
+        vor_index_t s = d->buckets[b];
+        if (s >= d->site_count || vor__slot_empty(&tri[s])) {
+            return violation(out, VOR_CHECK_BUCKETS, b, s);
+        }
+    }
+
     /* geometry: the exact perturbed predicates, uncounted, so validation
      * never changes the diagram (nor lies in fault injection builds) */
     for (uint32_t s = next_used_slot(d, 0); s < end; s = next_used_slot(d, s + 1u)) {
@@ -252,8 +277,10 @@ int vor_memory(const vor_t *d, vor_memory_t *memory)
     }
     uint32_t triangles = vor__triangle_count(d->vertex_count);
     memory->arena_bytes = VOR_ARENA_BYTES(d->max_sites);
+    uint32_t buckets = (d->vertex_count >= 2u) ? d->bucket_columns * d->bucket_rows : 0u;
     memory->used_bytes = (size_t)d->site_count * sizeof(vor_point_t) +
-                         (size_t)triangles * VOR_TRIANGLE_BYTES;
+                         (size_t)triangles * VOR_TRIANGLE_BYTES +
+                         (size_t)buckets * sizeof(vor_index_t);
     memory->sites = d->site_count;
     memory->triangles = triangles;
     memory->bytes_per_site_x100 =

@@ -278,6 +278,28 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p);
 /* The first two sites: two triangles at infinity sharing the edge ab. */
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);
 
+/* Grows the sites' bounding box to hold p (the first site sets it). */
+static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
+{
+    if (first) {
+        d->low.x = d->high.x = p->x;
+        d->low.y = d->high.y = p->y;
+        return;
+    }
+    d->low.x = (p->x < d->low.x) ? p->x : d->low.x;
+    d->low.y = (p->y < d->low.y) ? p->y : d->low.y;
+    d->high.x = (p->x > d->high.x) ? p->x : d->high.x;
+    d->high.y = (p->y > d->high.y) ? p->y : d->high.y;
+}
+
+/* The bucket grid (bucket_grid.c), for meshes of two or more sites:
+ * vor__grid_rebuild draws it over the bounding box and fills it;
+ * vor__grid_add records a site just inserted (and redraws the grid when
+ * the site count has doubled); vor__grid_start is a site near (x, y). */
+void vor__grid_rebuild(vor_t *d);
+void vor__grid_add(vor_t *d, uint32_t site);
+uint32_t vor__grid_start(const vor_t *d, int32_t x, int32_t y);
+
 /* vor_build's plan (insertion_order.c): for the n sites already copied
  * into d->sites, writes plan[2i] = the i-th site to insert and plan[2i+1]
  * = the site its search starts from (VOR__NONE: the previous one); the

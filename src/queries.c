@@ -66,72 +66,231 @@ static bool before(const vor_t *d, const vor_point_t *q, uint32_t from, uint32_t
     return vor_orient2d(q, &s[t], &s[u], NULL) > 0;
 }
 
+/* The site after `current` going counterclockwise around the empty circle
+ * centred on q through `best` (the sites nearest to q, all neighbours of
+ * their successors on the circle); `current` itself when it is alone. */
+static uint32_t next_on_circle(const vor_t *d, const vor_point_t *q, uint32_t best,
+                               uint32_t current)
+{
+    vor_neighbour_iter_t it;
+    uint32_t n, next = current;
+    vor_neighbours_begin(&it, d, current);
+    while (vor_neighbours_next(&it, &n)) {
+        if (vor_closer(q, &d->sites[n], &d->sites[best], NULL) == 0 &&
+            (next == current || before(d, q, current, n, next))) {
+            next = n;
+        }
+    }
+    return next;
+}
+
+/* Checks a query's diagram and hint; on success *start is where to begin. */
+static int query_start(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *start)
+{
+    if (d->vertex_count == 0u) {
+        return VOR_ERR_EMPTY;
+    }
+    if (hint == VOR_NO_HINT) {
+        *start = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
+        return VOR_OK;
+    }
+    if (hint >= d->site_count ||
+        (d->vertex_count >= 2u && vor__slot_empty(&d->triangles[hint]))) {
+        return VOR_ERR_ARG; /* not an id, or a duplicate's id: not in the mesh */
+    }
+    *start = (d->vertex_count >= 2u) ? hint : d->last_site;
+    return VOR_OK;
+}
+
+/* Can the greedy walk for query q compare distances in int64 alone? Yes
+ * when the sites' box spans less than 2^30 on each axis and every site s
+ * has q - s in int32: then for a neighbour n of s, with d = n - s and
+ * e = q - s,
+ *     |q - n|^2 - |q - s|^2 = |d|^2 - e.(2d),
+ * where |d|^2 < 2^61 and |e.(2d)| < 2 * 2^31 * 2^31 = 2^63: both int64,
+ * compared without subtracting. */
+static bool walk_is_narrow(const vor_t *d, int32_t x, int32_t y)
+{
+    const int64_t reach = INT32_MAX;
+    return (uint32_t)d->high.x - (uint32_t)d->low.x < (1u << 30) &&
+           (uint32_t)d->high.y - (uint32_t)d->low.y < (1u << 30) &&
+           (int64_t)x - d->high.x >= -reach && (int64_t)x - d->low.x <= reach &&
+           (int64_t)y - d->high.y >= -reach && (int64_t)y - d->low.y <= reach;
+}
+
+/* Sign of |q - n|^2 - |q - s|^2 in the narrow case above (e = q - s). */
+static inline int narrow_closer(int32_t ex, int32_t ey, const vor_point_t *s,
+                                const vor_point_t *n)
+{
+    int32_t dx = n->x - s->x, dy = n->y - s->y; /* |.| < 2^30 */
+    int64_t square = vor__mul_i32(dx, dx) + vor__mul_i32(dy, dy);
+    int64_t twice_dot = vor__mul_i32(ex, 2 * dx) + vor__mul_i32(ey, 2 * dy);
+    return (square < twice_dot) ? -1 : (square > twice_dot) ? 1 : 0;
+}
+
+/* Greedy walk (seed 003 section 2.3) from site `from` to a site nearest
+ * to q; *tie is set when another site at the same distance was seen
+ * among the last site's neighbours. Each move strictly decreases the
+ * exact distance, so there are fewer than vertex_count moves; each fan
+ * walk is bounded by vertex_count + 1 triangles even on a broken mesh. */
+static uint32_t walk_to_nearest(const vor_t *d, const vor_point_t *q, uint32_t from, bool *tie)
+{
+    const vor_point_t *s = d->sites;
+    const vor__tri_t *tri = d->triangles;
+    bool narrow = walk_is_narrow(d, q->x, q->y);
+    uint32_t best = from;
+    for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
+        const vor_point_t *at = &s[best];
+        int32_t ex = narrow ? q->x - at->x : 0, ey = narrow ? q->y - at->y : 0;
+        uint32_t slot = best, closer = best;
+        *tie = false;
+        for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
+            const vor__tri_t *t = &tri[slot];
+            unsigned i = vor__vertex_index(t, (vor_index_t)best);
+            if (i == 3u) {
+                break; /* only on a broken mesh */
+            }
+            vor_index_t n = vor__vertex(t, vor__next(i));
+            slot = t->n[vor__prev(i)];
+            if (n != VOR__INFINITE) {
+                int c = narrow ? narrow_closer(ex, ey, at, &s[n]) : vor_closer(q, &s[n], at, NULL);
+                if (c < 0) {
+                    closer = n;
+                    break;
+                }
+                *tie = *tie || c == 0;
+            }
+            if (slot == best) {
+                break;
+            }
+        }
+        if (closer == best) {
+            break;
+        }
+        best = closer;
+    }
+    return best;
+}
+
 int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site)
 {
     if (d == NULL || site == NULL) {
         return VOR_ERR_ARG;
     }
-    if (d->vertex_count == 0u) {
-        return VOR_ERR_EMPTY;
-    }
-    if (hint == VOR_NO_HINT) {
-        hint = d->last_site;
-    }
-    if (hint >= d->site_count) {
-        return VOR_ERR_ARG;
-    }
-    if (d->vertex_count == 1u) {
-        *site = d->last_site;
-        return VOR_OK;
-    }
-    if (vor__slot_empty(&d->triangles[hint])) {
-        return VOR_ERR_ARG; /* a duplicate's id: not in the mesh */
+    uint32_t best;
+    int err = query_start(d, x, y, hint, &best);
+    if (err != VOR_OK || d->vertex_count == 1u) {
+        *site = (err == VOR_OK) ? best : *site;
+        return err;
     }
     const vor_point_t q = {x, y};
-    const vor_point_t *s = d->sites;
-
-    /* greedy: each step strictly decreases the exact distance, so it ends
-     * within vertex_count steps */
-    vor_neighbour_iter_t it;
-    uint32_t n, best = hint;
-    bool tie = false; /* a neighbour of `best` as close as it */
-    for (uint32_t step = 0; step < d->vertex_count; step++) {
-        uint32_t from = best;
-        tie = false;
-        vor_neighbours_begin(&it, d, from);
-        while (vor_neighbours_next(&it, &n)) {
-            int c = vor_closer(&q, &s[n], &s[best], NULL);
-            if (c < 0) {
-                best = n;
-                tie = false;
-            } else if (c == 0) {
-                tie = true;
-            }
-        }
-        if (best == from) {
-            break;
-        }
-    }
-
-    /* ties: around the empty circle through `best`, smallest index. Only
-     * when the last round saw one: every site on that circle is then a
-     * neighbour of another, so a tie shows up among best's neighbours. */
-    uint32_t smallest = best, current = best;
-    for (uint32_t step = 0; tie && step < d->vertex_count; step++) {
-        uint32_t next = VOR__NONE;
-        vor_neighbours_begin(&it, d, current);
-        while (vor_neighbours_next(&it, &n)) {
-            if (vor_closer(&q, &s[n], &s[best], NULL) == 0 &&
-                (next == VOR__NONE || before(d, &q, current, n, next))) {
-                next = n;
-            }
-        }
-        if (next == VOR__NONE || next == best) {
-            break;
-        }
-        smallest = (next < smallest) ? next : smallest;
-        current = next;
+    bool tie = false;
+    best = walk_to_nearest(d, &q, best, &tie);
+    /* ties: around the empty circle through `best`, the smallest index.
+     * Only when the last fan saw one: every site on that circle is a
+     * neighbour of the next one around it, so a tie shows among best's
+     * neighbours. The walk visits each circle site once. */
+    uint32_t smallest = best;
+    uint32_t current = tie ? next_on_circle(d, &q, best, best) : best;
+    for (uint32_t steps = 0; current != best && steps < d->vertex_count; steps++) {
+        smallest = (current < smallest) ? current : smallest;
+        current = next_on_circle(d, &q, best, current);
     }
     *site = smallest;
+    return VOR_OK;
+}
+
+/* Is site a before site b in the order of the k nearest: strictly closer
+ * to q, or as close and a smaller id? */
+static bool ranks_before(const vor_t *d, const vor_point_t *q, uint32_t a, uint32_t b)
+{
+    int c = vor_closer(q, &d->sites[a], &d->sites[b], NULL);
+    return c < 0 || (c == 0 && a < b);
+}
+
+static bool listed(const uint32_t *list, uint32_t count, uint32_t site)
+{
+    for (uint32_t i = 0; i < count; i++) {
+        if (list[i] == site) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/*
+ * The k nearest sites in order. All sites at the smallest distance lie on
+ * an empty circle around q and come first, by id, read off that circle.
+ * Every later site p is a Delaunay neighbour of a site strictly closer to
+ * q, hence of one already listed: shrink the disk around q through p
+ * towards p, keeping p on its boundary, until its interior is empty. Its
+ * circle then holds p and sites strictly inside the first disk, and p's
+ * neighbours around that empty circle are Delaunay neighbours of p. So
+ * the next site is the best unlisted neighbour of the listed ones.
+ */
+int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t k,
+                  uint32_t *nearest, uint32_t *found)
+{
+    if (d == NULL || (nearest == NULL && k > 0u) || found == NULL) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t best;
+    int err = query_start(d, x, y, hint, &best);
+    if (err != VOR_OK) {
+        return err;
+    }
+    if (k == 0u || d->vertex_count == 1u) {
+        if (k > 0u) {
+            nearest[0] = best;
+        }
+        *found = (k > 0u) ? 1u : 0u;
+        return VOR_OK;
+    }
+    const vor_point_t q = {x, y};
+    bool tie = false;
+    best = walk_to_nearest(d, &q, best, &tie);
+
+    /* the nearest circle, by id: each round walks it once for the smallest
+     * id above the last one listed (at most vertex_count steps a round) */
+    uint32_t count = 0, last = 0;
+    bool any = false;
+    while (count < k) {
+        uint32_t pick = VOR__NONE, current = best;
+        for (uint32_t steps = 0; steps <= d->vertex_count; steps++) {
+            if ((!any || current > last) && (pick == VOR__NONE || current < pick)) {
+                pick = current;
+            }
+            current = tie ? next_on_circle(d, &q, best, current) : best;
+            if (current == best) {
+                break;
+            }
+        }
+        if (pick == VOR__NONE) {
+            break;
+        }
+        nearest[count++] = pick;
+        last = pick;
+        any = true;
+    }
+
+    /* then the best unlisted neighbour of a listed site, each round */
+    while (count < k) {
+        uint32_t pick = VOR__NONE, n;
+        for (uint32_t i = 0; i < count; i++) {
+            vor_neighbour_iter_t it;
+            vor_neighbours_begin(&it, d, nearest[i]);
+            while (vor_neighbours_next(&it, &n)) {
+                if ((pick == VOR__NONE || ranks_before(d, &q, n, pick)) &&
+                    !listed(nearest, count, n)) {
+                    pick = n;
+                }
+            }
+        }
+        if (pick == VOR__NONE) {
+            break; /* every site is listed */
+        }
+        nearest[count++] = pick;
+    }
+    *found = count;
     return VOR_OK;
 }

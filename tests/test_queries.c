@@ -8,6 +8,8 @@
 
 #define QUERY_SITES 1200u
 
+#define KMAX 64u /* the largest k asked */
+
 static vor_point_t sites[QUERY_SITES];
 static uint32_t first_of[QUERY_SITES];
 static uint8_t arena[VOR_ARENA_BYTES(QUERY_SITES)] __attribute__((aligned(8)));
@@ -42,6 +44,43 @@ static uint32_t brute_nearest(uint32_t n, vor_point_t q)
         }
     }
     return best;
+}
+
+/* Is site a before site b in the k-nearest order: closer, or as close
+ * and a smaller id? */
+static bool ranks_before(vor_point_t q, uint32_t a, uint32_t b)
+{
+    int c = compare_distance(q, sites[a], sites[b]);
+    return c < 0 || (c == 0 && a < b);
+}
+
+/* vor_nearest_k against a selection over all sites, k from 1 to 16 and
+ * one more than there are sites. */
+static unsigned check_k_nearest(const vor_t *d, uint32_t n, vor_point_t q, uint32_t k,
+                                uint32_t hint)
+{
+    uint32_t got[KMAX], expect[KMAX], found = 0, count = 0;
+    if (vor_nearest_k(d, q.x, q.y, hint, k, got, &found) != VOR_OK) {
+        return 1;
+    }
+    while (count < k) { /* the next site after expect[count - 1] */
+        uint32_t pick = VOR_NO_HINT;
+        for (uint32_t i = 0; i < n; i++) {
+            bool after = count == 0u || ranks_before(q, expect[count - 1u], i);
+            if (first_of[i] == i && after && (pick == VOR_NO_HINT || ranks_before(q, i, pick))) {
+                pick = i;
+            }
+        }
+        if (pick == VOR_NO_HINT) {
+            break;
+        }
+        expect[count++] = pick;
+    }
+    unsigned wrong = (found != count) ? 1u : 0u;
+    for (uint32_t i = 0; i < count && i < found; i++) {
+        wrong += (got[i] != expect[i]) ? 1u : 0u;
+    }
+    return wrong;
 }
 
 static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_point_t *extra,
@@ -82,9 +121,17 @@ static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_p
                       got, err, expect);
             }
         }
+        if (k % 4u == 0u || k < extras) {
+            uint32_t want = (k < extras) ? KMAX : 1u + k % 16u;
+            unsigned bad = check_k_nearest(&d, n, q, want, h);
+            CHECK(bad == 0, "%s: %u-nearest of (%d, %d): %u wrong", name, want, q.x, q.y, bad);
+        }
         hint = got;
     }
     CHECK(wrong == 0, "%s: %u of %u nearest queries wrong", name, wrong, queries);
+    vor_violation_t violation;
+    CHECK(vor_validate(&d, &violation) == VOR_OK, "%s: validate: check %d", name,
+          (int)violation.check);
 
     /* neighbours are symmetric, and every edge is seen twice */
     uint32_t seen = 0, asymmetric = 0;
@@ -177,4 +224,29 @@ void test_queries(void)
     CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &got) == VOR_OK && got == 0, "one site");
     CHECK(vor_nearest(&d, 0, 0, 5, &got) == VOR_ERR_ARG, "hint out of range");
     CHECK(vor_nearest(&d, 0, 0, 0, NULL) == VOR_ERR_ARG, "NULL result");
+    uint32_t list[3] = {9, 9, 9}, found = 9;
+    CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 3, list, &found) == VOR_OK && found == 1 &&
+              list[0] == 0 && list[1] == 9,
+          "k-nearest of one site");
+    CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 0, NULL, &found) == VOR_OK && found == 0,
+          "0-nearest");
+    CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG, "NULL found");
+    CHECK(vor_nearest_k(&d, 0, 0, 4, 3, list, &found) == VOR_ERR_ARG, "k-nearest bad hint");
+
+    /* sites inserted one by one: the bucket grid is redrawn as they double,
+     * and cold queries start from it */
+    CHECK(vor_init(&d, arena, sizeof arena, QUERY_SITES) == VOR_OK, "init");
+    for (uint32_t i = 0; i < 700u; i++) {
+        sites[i].x = test_rng_range(&rng, -5000, 5000) + (int32_t)i * 50;
+        sites[i].y = test_rng_range(&rng, -5000, 5000);
+        first_of[i] = i;
+        CHECK(vor_insert(&d, sites[i].x, sites[i].y, NULL) == VOR_OK, "insert %u", i);
+        if ((i & (i + 1u)) == 0u || i % 97u == 0u) { /* around each redraw */
+            CHECK(vor_validate(&d, NULL) == VOR_OK, "grid after %u inserts", i + 1u);
+            vor_point_t q = {test_rng_range(&rng, -6000, 40000), test_rng_range(&rng, -6000, 6000)};
+            CHECK(vor_nearest(&d, q.x, q.y, VOR_NO_HINT, &got) == VOR_OK &&
+                      got == brute_nearest(i + 1u, q),
+                  "cold query after %u inserts", i + 1u);
+        }
+    }
 }
