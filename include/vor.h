@@ -240,6 +240,7 @@ typedef struct vor {
     vor_point_t bucket_origin;
     uint32_t bucket_columns, bucket_rows, bucket_shift;
     uint32_t bucket_rebuild_at; /* site count at which the grid is redrawn */
+    uint32_t revision;     /* counts the changes: trackers notice them */
     vor_predicate_stats_t stats; /* predicate tiers of every call on it */
 } vor_t;
 
@@ -387,6 +388,50 @@ int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *s
  */
 int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t k,
                   uint32_t *nearest, uint32_t *found);
+
+/*
+ * A tracker follows a moving query point, such as a robot: it keeps the
+ * last answer's Voronoi cell as a few bisector tests (VOR_TRACKER_EDGES at
+ * most), so while the point stays in that cell an answer costs one
+ * multiply-accumulate pair per edge, with no walk through the mesh. When
+ * the point leaves the cell, or the diagram changed, it asks vor_nearest
+ * with the last answer as the hint and caches the new cell. Answers are
+ * exactly those of vor_nearest. The tracker belongs to the caller (its
+ * size is a constant, about 16 bytes per cached edge); the diagram is
+ * only read, so any number of trackers may follow one diagram at once.
+ */
+typedef struct vor_tracker_edge {
+    int32_t twice_dx, twice_dy; /* 2 (neighbour - site), |.| < 2^31 */
+    int64_t square;             /* |neighbour - site|^2 < 2^61 */
+} vor_tracker_edge_t;
+
+typedef struct vor_tracker {
+    const vor_t *d;
+    uint32_t revision;  /* d->revision when the cell was cached */
+    uint32_t site;      /* the last answer; VOR_NO_HINT before the first */
+    uint32_t edges;     /* the cached cell's edges, when cached */
+    int cached;         /* 1: the cell below is the site's whole cell */
+    vor_point_t at;     /* the site's coordinates */
+    vor_point_t low, high; /* where the int64 tests are exact (q - at fits int32) */
+    vor_tracker_edge_t edge[VOR_TRACKER_EDGES];
+} vor_tracker_t;
+
+/* Starts a tracker on diagram d (no answer yet, nothing cached). Begin it
+ * again after vor_init of the same vor_t. */
+void vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d);
+
+/*
+ * The site nearest to (x, y) as vor_nearest answers it (exact, ties to
+ * the smaller id), starting from the tracker's last answer. Cost: about
+ * two multiplies per cached edge while (x, y) stays in the last answer's
+ * cell; otherwise vor_nearest from the last answer, plus caching the new
+ * cell (its edges are exact in int64 when the cell's neighbours lie within
+ * 2^30 of its site on each axis; otherwise nothing is cached).
+ *   VOR_ERR_ARG    tracker, its diagram or site NULL
+ *   VOR_ERR_EMPTY  the diagram has no sites
+ * On failure the tracker is unchanged.
+ */
+int vor_track(vor_tracker_t *tracker, int32_t x, int32_t y, uint32_t *site);
 
 #ifdef __cplusplus
 }

@@ -44,6 +44,14 @@
 #endif
 #endif
 
+/* VOR_TRACKER_EDGES: the most Voronoi edges a vor_tracker_t caches for
+ * the cell it is in (16 bytes each). A cell with more edges is still
+ * answered exactly, through vor_nearest, just not from the cache. Cells of
+ * uniform sites have 6 edges on average and rarely more than 10. */
+#ifndef VOR_TRACKER_EDGES
+#define VOR_TRACKER_EDGES 12
+#endif
+
 /* VOR_FAULT_INJECTION: test builds only. The perturbed predicates that the
  * diagram uses return a wrong sign with a probability set per diagram
  * (vor_predicate_stats_t.fault_rate), to show that the topology survives

@@ -345,6 +345,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     d->site_count++;
     d->vertex_count++;
     d->last_site = p;
+    d->revision++;
     if (d->vertex_count >= 2u) {
         vor__grid_add(d, p);
     }
@@ -382,6 +383,7 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     d->vertex_count = 0;
     d->last_site = 0;
     d->bucket_rebuild_at = 2; /* the grid of earlier sites is void */
+    d->revision++;
     for (uint32_t s = 0; s < n; s++) {
         d->sites[s] = points[s];
         vor__box_add(d, &points[s], s == 0u);

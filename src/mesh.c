@@ -30,6 +30,7 @@ int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
     d->bucket_origin.x = d->bucket_origin.y = 0;
     d->bucket_columns = d->bucket_rows = d->bucket_shift = 0;
     d->bucket_rebuild_at = 2;
+    d->revision = 0;
     vor_predicate_stats_t zero;
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         zero.orient2d[t] = zero.incircle[t] = zero.closer[t] = 0;

@@ -294,3 +294,92 @@ int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t 
     *found = count;
     return VOR_OK;
 }
+
+void vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
+{
+    tracker->d = d;
+    tracker->revision = 0;
+    tracker->site = VOR_NO_HINT;
+    tracker->edges = 0;
+    tracker->cached = 0;
+}
+
+/* Caches the cell of `site` as its bisector tests, when they are exact in
+ * int64: for a neighbour n with d = n - s within 2^30 of s on each axis,
+ * and a query q with e = q - s in int32, q is strictly closer to s than to
+ * n exactly when |d|^2 > e.(2d) (bounds at walk_is_narrow). */
+static void cache_cell(vor_tracker_t *tracker, uint32_t site)
+{
+    const vor_t *d = tracker->d;
+    const vor_point_t *s = &d->sites[site];
+    tracker->site = site;
+    tracker->revision = d->revision;
+    tracker->edges = 0;
+    tracker->cached = 0;
+    tracker->at.x = s->x;
+    tracker->at.y = s->y;
+    const int64_t reach = INT32_MAX;
+    tracker->low.x = (int32_t)((s->x >= 0) ? s->x - reach : INT32_MIN);
+    tracker->low.y = (int32_t)((s->y >= 0) ? s->y - reach : INT32_MIN);
+    tracker->high.x = (int32_t)((s->x >= 0) ? INT32_MAX : s->x + reach);
+    tracker->high.y = (int32_t)((s->y >= 0) ? INT32_MAX : s->y + reach);
+
+    vor_neighbour_iter_t it;
+    uint32_t n, edges = 0;
+    vor_neighbours_begin(&it, d, site);
+    while (vor_neighbours_next(&it, &n)) {
+        int64_t dx = (int64_t)d->sites[n].x - s->x, dy = (int64_t)d->sites[n].y - s->y;
+        const int64_t limit = (int64_t)1 << 30;
+        if (edges == VOR_TRACKER_EDGES || dx <= -limit || dx >= limit || dy <= -limit ||
+            dy >= limit) {
+            return; /* not cached: vor_nearest answers */
+        }
+        vor_tracker_edge_t *e = &tracker->edge[edges++];
+        e->twice_dx = (int32_t)(2 * dx);
+        e->twice_dy = (int32_t)(2 * dy);
+        e->square = vor__mul_i32((int32_t)dx, (int32_t)dx) + vor__mul_i32((int32_t)dy, (int32_t)dy);
+    }
+    tracker->edges = edges;
+    tracker->cached = 1;
+}
+
+/* The point left the cached cell (or there is none): vor_nearest from the
+ * last answer, and the new answer's cell cached. Out of line, so that the
+ * cached path pays for no registers of it. */
+static VOR__NOINLINE int track_by_walk(vor_tracker_t *tracker, int32_t x, int32_t y,
+                                       uint32_t *site)
+{
+    const vor_t *d = tracker->d;
+    bool current = tracker->revision == d->revision && tracker->site != VOR_NO_HINT;
+    uint32_t answer;
+    int err = vor_nearest(d, x, y, current ? tracker->site : VOR_NO_HINT, &answer);
+    if (err != VOR_OK) {
+        return err;
+    }
+    cache_cell(tracker, answer);
+    *site = answer;
+    return VOR_OK;
+}
+
+int vor_track(vor_tracker_t *tracker, int32_t x, int32_t y, uint32_t *site)
+{
+    if (tracker == NULL || tracker->d == NULL || site == NULL) {
+        return VOR_ERR_ARG;
+    }
+    if (tracker->cached && tracker->revision == tracker->d->revision &&
+        x >= tracker->low.x && x <= tracker->high.x && y >= tracker->low.y &&
+        y <= tracker->high.y) {
+        int32_t ex = x - tracker->at.x, ey = y - tracker->at.y;
+        const vor_tracker_edge_t *edge = tracker->edge, *end = edge + tracker->edges;
+        /* strictly inside the cell: every neighbour strictly farther */
+        while (edge != end &&
+               edge->square > vor__mul_i32(ex, edge->twice_dx) + vor__mul_i32(ey, edge->twice_dy)) {
+            edge++;
+        }
+        if (edge == end) {
+            *site = tracker->site;
+            return VOR_OK;
+        }
+    }
+    return track_by_walk(tracker, x, y, site);
+}

@@ -129,6 +129,36 @@ static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_p
         hint = got;
     }
     CHECK(wrong == 0, "%s: %u of %u nearest queries wrong", name, wrong, queries);
+
+    /* a tracker on a random walk through the sites' box, steps of 1/64 of
+     * it, some crossing cells, some staying */
+    int64_t low_x = sites[0].x, high_x = sites[0].x, low_y = sites[0].y, high_y = sites[0].y;
+    for (uint32_t i = 0; i < n; i++) {
+        low_x = (sites[i].x < low_x) ? sites[i].x : low_x;
+        high_x = (sites[i].x > high_x) ? sites[i].x : high_x;
+        low_y = (sites[i].y < low_y) ? sites[i].y : low_y;
+        high_y = (sites[i].y > high_y) ? sites[i].y : high_y;
+    }
+    int32_t step_x = (int32_t)((high_x - low_x) / 64 + 1), step_y = (int32_t)((high_y - low_y) / 64 + 1);
+    vor_tracker_t tracker;
+    vor_tracker_begin(&tracker, &d);
+    int64_t x = sites[0].x, y = sites[0].y;
+    unsigned tracked_wrong = 0;
+    for (uint32_t k = 0; k < 300u; k++) {
+        x += test_rng_range(rng, -step_x, step_x) / ((k % 3u == 0u) ? 1 : 16);
+        y += test_rng_range(rng, -step_y, step_y) / ((k % 3u == 0u) ? 1 : 16);
+        x = (x < low_x) ? low_x : (x > high_x) ? high_x : x;
+        y = (y < low_y) ? low_y : (y > high_y) ? high_y : y;
+        vor_point_t q = {(int32_t)x, (int32_t)y};
+        uint32_t got = VOR_NO_HINT;
+        if (k % 50u == 0u) { /* a grid centre or circle centre: a tie */
+            q = (extras > 0u) ? extra[k % extras] : q;
+        }
+        if (vor_track(&tracker, q.x, q.y, &got) != VOR_OK || got != brute_nearest(n, q)) {
+            tracked_wrong++;
+        }
+    }
+    CHECK(tracked_wrong == 0, "%s: %u of 300 tracked queries wrong", name, tracked_wrong);
     vor_violation_t violation;
     CHECK(vor_validate(&d, &violation) == VOR_OK, "%s: validate: check %d", name,
           (int)violation.check);
@@ -233,13 +263,26 @@ void test_queries(void)
     CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG, "NULL found");
     CHECK(vor_nearest_k(&d, 0, 0, 4, 3, list, &found) == VOR_ERR_ARG, "k-nearest bad hint");
 
+    vor_tracker_t tracker, unused;
+    vor_tracker_begin(&unused, NULL);
+    CHECK(vor_track(&unused, 0, 0, &got) == VOR_ERR_ARG, "tracker without a diagram");
+    vor_tracker_begin(&tracker, &d);
+    CHECK(vor_track(&tracker, 0, 0, NULL) == VOR_ERR_ARG, "tracker, NULL result");
+    CHECK(vor_track(NULL, 0, 0, &got) == VOR_ERR_ARG, "NULL tracker");
+
     /* sites inserted one by one: the bucket grid is redrawn as they double,
-     * and cold queries start from it */
+     * cold queries start from it, and a tracker notices every insertion */
     CHECK(vor_init(&d, arena, sizeof arena, QUERY_SITES) == VOR_OK, "init");
+    vor_tracker_begin(&tracker, &d);
+    CHECK(vor_track(&tracker, 0, 0, &got) == VOR_ERR_EMPTY, "tracker on an empty diagram");
     for (uint32_t i = 0; i < 700u; i++) {
         sites[i].x = test_rng_range(&rng, -5000, 5000) + (int32_t)i * 50;
         sites[i].y = test_rng_range(&rng, -5000, 5000);
         first_of[i] = i;
+        /* the tracker stands where the next site lands: the cell it caches
+         * there is out of date after the insertion */
+        vor_point_t here = {sites[i].x + 1, sites[i].y};
+        CHECK(i == 0u || vor_track(&tracker, here.x, here.y, &got) == VOR_OK, "track");
         CHECK(vor_insert(&d, sites[i].x, sites[i].y, NULL) == VOR_OK, "insert %u", i);
         if ((i & (i + 1u)) == 0u || i % 97u == 0u) { /* around each redraw */
             CHECK(vor_validate(&d, NULL) == VOR_OK, "grid after %u inserts", i + 1u);
@@ -248,5 +291,8 @@ void test_queries(void)
                       got == brute_nearest(i + 1u, q),
                   "cold query after %u inserts", i + 1u);
         }
+        CHECK(vor_track(&tracker, here.x, here.y, &got) == VOR_OK &&
+                  got == brute_nearest(i + 1u, here),
+              "tracker after %u inserts", i + 1u);
     }
 }
