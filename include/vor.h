@@ -50,12 +50,17 @@
  *   A vor_t holds the Delaunay triangulation of its sites (the dual of
  *   their Voronoi diagram) in one arena the caller provides:
  *
- *       static uint8_t arena[VOR_ARENA_BYTES(500)];   // 32 B/site (16-bit ids)
+ *       static uint8_t arena[VOR_ARENA_BYTES(500)];   // 32.1 B/site (16-bit ids)
  *       vor_t d;
  *       vor_init(&d, arena, sizeof arena, 500);       // or VOR_ERR_*
  *       vor_build(&d, points, n, NULL, duplicate_of); // site i = points[i]
  *       vor_insert(&d, x, y, &id);                    // one more site
  *       vor_nearest(&d, qx, qy, VOR_NO_HINT, &id);    // exact, ties to smaller id
+ *       vor_nearest_k(&d, qx, qy, hint, k, ids, &found); // k nearest, in order
+ *
+ *       vor_tracker_t robot;                          // a moving query point:
+ *       vor_tracker_begin(&robot, &d);                // caches its current cell
+ *       vor_track(&robot, rx, ry, &id);               // ~2 multiplies per cell edge
  *
  *   Every call returns VOR_OK or a negative enum vor_error, and a failing
  *   call changes nothing. Nothing is allocated: VOR_ARENA_BYTES(n) is the
@@ -64,7 +69,9 @@
  *   the structure stays a valid triangulation whatever the arithmetic
  *   does, and with these exact predicates it is the unique Delaunay
  *   triangulation under the perturbation. vor_validate checks every
- *   invariant; iterators list triangles and neighbours.
+ *   invariant; iterators list triangles and neighbours. A query without a
+ *   hint starts from a coarse bucket grid kept in the arena (one site id
+ *   per 16 sites), so it takes O(1) expected steps on uniform sites.
  *
  * COST (docs/benchmarks.md has the measured table)
  *   No predicate allocates, recurses or loops over data. A degenerate input
