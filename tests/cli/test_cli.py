@@ -150,6 +150,20 @@ def nearest_cases(rng, tmp):
             best = min(range(len(sites)), key=lambda i: ((sites[i][0] - qx) ** 2 + (sites[i][1] - qy) ** 2, i))
             wrong += int(g) != best
         check(wrong == 0, f"nearest {name}: {wrong} of {len(queries)} answers differ from brute force")
+        # the k nearest: distinct sites (first occurrences) by (distance, index)
+        k = 7
+        r = run(["nearest", f"--k={k}", sp, qp], "")
+        lines = r.stdout.splitlines()
+        check(r.returncode == 0 and len(lines) == len(queries), f"nearest --k {name}: {r.returncode} {r.stderr}")
+        first = {}
+        for i, p in enumerate(sites):
+            first.setdefault(p, i)
+        distinct = sorted(first.values())
+        wrong = 0
+        for (qx, qy), line in zip(queries, lines):
+            ranked = sorted(distinct, key=lambda i: ((sites[i][0] - qx) ** 2 + (sites[i][1] - qy) ** 2, i))
+            wrong += [int(v) for v in line.split()] != ranked[:k]
+        check(wrong == 0, f"nearest --k={k} {name}: {wrong} of {len(queries)} lists differ from brute force")
     with open(os.path.join(tmp, "bad"), "w") as f:
         f.write("1 2\n3\n")
     r = run(["nearest", os.path.join(tmp, "grid.sites"), os.path.join(tmp, "bad")], "")

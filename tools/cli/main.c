@@ -3,7 +3,7 @@
  *
  *   vor predicates            exact orient2d / incircle signs of stdin lines
  *   vor delaunay FILE         the Delaunay triangulation of a site file
- *   vor nearest SITES QUERIES the nearest site to each query point
+ *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
  */
 #include <stdio.h>
 #include <string.h>
@@ -17,7 +17,7 @@ static const struct {
 } commands[] = {
     {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
-    {"nearest", cli_nearest, "nearest site to each query point (SITES QUERIES)"},
+    {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
 };
 
 int main(int argc, char **argv)
