@@ -241,11 +241,11 @@ typedef struct vor {
     uint32_t last_site;    /* where the next search starts by default */
     vor_point_t low, high; /* bounding box of the sites in the mesh */
     /* The bucket grid (queries without a hint start at the site of the
-     * query's bucket): square buckets of side 2^bucket_shift from
+     * query's bucket): square buckets of side 2^32 / bucket_scale from
      * bucket_origin, bucket_columns x bucket_rows of them, row by row. */
     vor_index_t *buckets;  /* [VOR_BUCKETS(max_sites)], in the arena */
     vor_point_t bucket_origin;
-    uint32_t bucket_columns, bucket_rows, bucket_shift;
+    uint32_t bucket_columns, bucket_rows, bucket_scale;
     uint32_t bucket_rebuild_at; /* site count at which the grid is redrawn */
     uint32_t revision;     /* counts the changes: trackers notice them */
     vor_predicate_stats_t stats; /* predicate tiers of every call on it */

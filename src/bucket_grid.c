@@ -3,41 +3,64 @@
  * nearby site to start from, so that a cold nearest-site query takes O(1)
  * expected steps on uniform sites instead of a walk across the diagram.
  *
- * The grid covers the sites' bounding box with square buckets of side
- * 2^shift, the smallest power of two for which the buckets fit in
- * VOR_BUCKETS(max_sites) entries (one per 16 sites: about 16 sites a
- * bucket when the diagram is full, so a walk from any of them to the
+ * The grid covers the sites' bounding box with square buckets, as many as
+ * fit in VOR_BUCKETS(max_sites) entries (one per 16 sites: about 16 sites
+ * a bucket when the diagram is full, so a walk from any of them to the
  * nearest site of a point in the bucket takes a few steps). Each bucket
  * holds one site in it, or, when it has none, a site of the nearest
  * non-empty bucket before it in row order (after it, for leading empty
  * buckets): any site is a correct start, a near one is a fast start.
- * Powers of two make the bucket of a point two shifts, with no division.
+ *
+ * A coordinate's bucket is floor(offset * scale / 2^32), where offset is
+ * its distance from the grid's origin and scale = 2^32 / (bucket side):
+ * one 32x32->64 multiply, no division (Cortex-M0 has no divider). The
+ * rebuild picks the largest scale whose grid fits, by bisection.
  */
 #include "mesh.h"
 
-/* x >> shift for shifts up to 32 (a 32-bit shift by 32 is undefined in C) */
-static uint32_t shift_right(uint32_t x, uint32_t shift)
+/* The bucket column (or row) of an offset from the origin. */
+static uint32_t line_of(uint32_t offset, uint32_t scale)
 {
-    return (shift >= 32u) ? 0u : x >> shift;
+    return (uint32_t)(vor__mul_u32(offset, scale) >> 32);
 }
 
 /* The column (or row) of coordinate c: clamped to the grid, so a point
  * outside the box starts from the border bucket nearest to it. */
-static uint32_t bucket_line(int32_t c, int32_t origin, uint32_t shift, uint32_t count)
+static uint32_t bucket_line(int32_t c, int32_t origin, uint32_t scale, uint32_t count)
 {
     if (c <= origin) {
         return 0;
     }
     /* c > origin: the difference is below 2^32 in unsigned arithmetic */
-    uint32_t line = shift_right((uint32_t)c - (uint32_t)origin, shift);
+    uint32_t line = line_of((uint32_t)c - (uint32_t)origin, scale);
     return (line < count) ? line : count - 1u;
 }
 
 static uint32_t bucket_of(const vor_t *d, int32_t x, int32_t y)
 {
-    return bucket_line(y, d->bucket_origin.y, d->bucket_shift, d->bucket_rows) *
+    return bucket_line(y, d->bucket_origin.y, d->bucket_scale, d->bucket_rows) *
                d->bucket_columns +
-           bucket_line(x, d->bucket_origin.x, d->bucket_shift, d->bucket_columns);
+           bucket_line(x, d->bucket_origin.x, d->bucket_scale, d->bucket_columns);
+}
+
+/* How far a site lies from its bucket's centre, as a fraction of the
+ * bucket's side (times 2^32, the larger of the two axes): the low word of
+ * offset * scale is the position inside the bucket. */
+static uint32_t off_centre(const vor_t *d, const vor_point_t *p)
+{
+    uint32_t fx = (uint32_t)vor__mul_u32((uint32_t)p->x - (uint32_t)d->bucket_origin.x,
+                                         d->bucket_scale);
+    uint32_t fy = (uint32_t)vor__mul_u32((uint32_t)p->y - (uint32_t)d->bucket_origin.y,
+                                         d->bucket_scale);
+    uint32_t dx = (fx >= 0x80000000u) ? fx - 0x80000000u : 0x80000000u - fx;
+    uint32_t dy = (fy >= 0x80000000u) ? fy - 0x80000000u : 0x80000000u - fy;
+    return (dx > dy) ? dx : dy;
+}
+
+/* Buckets of the grid of this scale over a box of the given extent. */
+static uint64_t grid_size(uint32_t width, uint32_t height, uint32_t scale)
+{
+    return vor__mul_u32(line_of(width, scale) + 1u, line_of(height, scale) + 1u);
 }
 
 void vor__grid_rebuild(vor_t *d)
@@ -45,21 +68,18 @@ void vor__grid_rebuild(vor_t *d)
     uint32_t capacity = (uint32_t)VOR_BUCKETS(d->max_sites);
     uint32_t width = (uint32_t)d->high.x - (uint32_t)d->low.x; /* < 2^32 */
     uint32_t height = (uint32_t)d->high.y - (uint32_t)d->low.y;
-    /* the smallest shift whose grid fits; shift 32 is a single bucket, and
-     * the count only shrinks as the shift grows, so the loop finds one */
-    uint32_t shift = 0, columns = 1, rows = 1;
-    for (; shift <= 32u; shift++) {
-        uint32_t last_column = shift_right(width, shift), last_row = shift_right(height, shift);
-        if (last_column < capacity && last_row < capacity && /* no overflow below */
-            vor__mul_u32(last_column + 1u, last_row + 1u) <= (uint64_t)capacity) {
-            columns = last_column + 1u;
-            rows = last_row + 1u;
-            break;
+    /* the largest scale whose grid fits: scale 0 is one bucket, and the
+     * count grows with the scale; 32 halvings of [0, 2^32) */
+    uint32_t fits = 0, step = 0x80000000u;
+    for (; step != 0u; step >>= 1) {
+        if (grid_size(width, height, fits | step) <= capacity) {
+            fits |= step;
         }
     }
+    uint32_t columns = line_of(width, fits) + 1u, rows = line_of(height, fits) + 1u;
     d->bucket_origin.x = d->low.x;
     d->bucket_origin.y = d->low.y;
-    d->bucket_shift = shift;
+    d->bucket_scale = fits;
     d->bucket_columns = columns;
     d->bucket_rows = rows;
     d->bucket_rebuild_at = 2u * d->vertex_count;
@@ -69,10 +89,16 @@ void vor__grid_rebuild(vor_t *d)
     for (uint32_t b = 0; b < count; b++) {
         bucket[b] = VOR__NONE;
     }
+    /* each bucket keeps its site nearest to its centre: walks from there
+     * are shortest on average */
     for (uint32_t s = 0; s < d->site_count; s++) {
         if (!vor__slot_empty(&d->triangles[s])) { /* in the mesh, not a duplicate */
-            uint32_t b = bucket_of(d, d->sites[s].x, d->sites[s].y);
-            bucket[b] = (bucket[b] == VOR__NONE) ? (vor_index_t)s : bucket[b];
+            const vor_point_t *p = &d->sites[s];
+            uint32_t b = bucket_of(d, p->x, p->y);
+            if (bucket[b] == VOR__NONE ||
+                off_centre(d, p) < off_centre(d, &d->sites[bucket[b]])) {
+                bucket[b] = (vor_index_t)s;
+            }
         }
     }
     /* empty buckets borrow from the last filled one before them, the

@@ -28,7 +28,7 @@ int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
     d->last_site = 0;
     d->low.x = d->low.y = d->high.x = d->high.y = 0;
     d->bucket_origin.x = d->bucket_origin.y = 0;
-    d->bucket_columns = d->bucket_rows = d->bucket_shift = 0;
+    d->bucket_columns = d->bucket_rows = d->bucket_scale = 0;
     d->bucket_rebuild_at = 2;
     d->revision = 0;
     vor_predicate_stats_t zero;
