@@ -9,6 +9,8 @@
 #   make bench              Delaunay build: vor against CGAL and Boost.Polygon,
 #                           and target instructions per inserted site
 #   make bench-predicates   predicate speed: host ns and target instructions
+#   make bench-query        nearest-site queries: vor against nanoflann and CGAL,
+#                           and target instructions per coherent query
 #
 # Toolchains and QEMU are installed on demand by tools/install-toolchain.sh.
 

@@ -1,31 +1,44 @@
-# tools/bench/bench.mk - `make bench`: the Delaunay build of vor against
-# CGAL and Boost.Polygon on the host, and instructions per inserted site on
-# Cortex-M0, Cortex-M3 and RISC-V 32 (bench/delaunay.c under QEMU).
+# tools/bench/bench.mk - the host benchmarks against other libraries, each
+# with its target figures (tools/bench/run.sh runs both halves):
+#   make bench         the Delaunay build of vor against CGAL and
+#                      Boost.Polygon, and instructions per inserted site on
+#                      Cortex-M0, Cortex-M3 and RISC-V 32 (bench/delaunay.c
+#                      under QEMU);
+#   make bench-query   nearest-site queries (coherent and random) against
+#                      nanoflann's kd-tree and CGAL's nearest_vertex, and
+#                      instructions per coherent query on Cortex-M3
+#                      (examples/robot_nearest under QEMU).
 # Included by the top-level Makefile after the port's port.mk.
 #
-# CGAL and Boost are used by this host benchmark only, never by the library.
-# tools/bench/install-deps.sh installs them (libcgal-dev, libboost-dev).
+# CGAL, Boost and nanoflann are used by these host benchmarks only, never by
+# the library. tools/bench/install-deps.sh installs them (libcgal-dev,
+# libboost-dev, libnanoflann-dev).
 
 # Keep the Makefile's own default goal: this file is included before it.
 BENCH_SAVED_GOAL := $(.DEFAULT_GOAL)
 
-BENCH_HOST := build/bench/delaunay-host
 BENCH_CXX ?= g++
 BENCH_CXXFLAGS ?= -std=c++17 -O2 -DNDEBUG -Wall -Wextra
 # CGAL 5 is header-only; Epick's exact fallback may pull in GMP and MPFR.
 BENCH_LDLIBS ?= -lgmp -lmpfr
 
-.PHONY: bench
+.PHONY: bench bench-query
 
 bench:
-	@tools/bench/install-deps.sh
+	@tools/bench/install-deps.sh libcgal-dev libboost-dev
 	@tools/install-toolchain.sh
-	+@tools/bench/run.sh
+	+@tools/bench/run.sh delaunay
 
-# The host program links the host release library, so it is built with
-# PORT=host (run.sh does that); other ports have no rule for it.
+bench-query:
+	@tools/bench/install-deps.sh libcgal-dev libnanoflann-dev
+	@tools/install-toolchain.sh
+	+@tools/bench/run.sh query
+
+# A host program, build/bench/NAME-host from tools/bench/NAME.cpp, links the
+# host release library, so it is built with PORT=host (run.sh does that);
+# other ports have no rule for it.
 ifeq ($(B),build/host)
-$(BENCH_HOST): tools/bench/delaunay.cpp $(LIB_HDRS_BENCH) $(B)/libvor.a
+build/bench/%-host: tools/bench/%.cpp $(LIB_HDRS_BENCH) $(B)/libvor.a
 	@mkdir -p $(@D)
 	$(BENCH_CXX) $(BENCH_CXXFLAGS) -Iinclude $< $(B)/libvor.a $(BENCH_LDLIBS) -o $@
 endif

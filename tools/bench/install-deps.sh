@@ -1,32 +1,50 @@
 #!/bin/sh
-# tools/bench/install-deps.sh - make sure the host benchmark's peers are
-# installed: CGAL (libcgal-dev, header-only in CGAL 5) and Boost.Polygon
-# (libboost-dev), both from Debian packages. Only tools/bench uses them;
-# the library never does.
+# tools/bench/install-deps.sh - make sure the host benchmarks' peers are
+# installed, all from Debian packages: CGAL (libcgal-dev, header-only in
+# CGAL 5), Boost.Polygon (libboost-dev) and nanoflann (libnanoflann-dev).
+# Only tools/bench uses them; the library never does.
 #
-#   tools/bench/install-deps.sh     check; install what is missing
+#   tools/bench/install-deps.sh [PACKAGE...]   check; install what is missing
 #
-# Quiet and exit 0 when both are present. When something is missing: as
+# PACKAGE is one of the three above; without any, the two that `make bench`
+# needs (libcgal-dev libboost-dev). `make bench-query` asks for
+# libcgal-dev libnanoflann-dev.
+#
+# Quiet and exit 0 when all are present. When something is missing: as
 # root, installs the packages with apt-get; otherwise prints the command to
 # run and exits 1 (tools/apt-install.sh).
 set -eu
 
-PACKAGES="libcgal-dev libboost-dev"
+[ $# -gt 0 ] || set -- libcgal-dev libboost-dev
 
-missing_headers() {
-    [ -f /usr/include/CGAL/Delaunay_triangulation_2.h ] || printf 'libcgal-dev '
-    [ -f /usr/include/boost/polygon/voronoi.hpp ] || printf 'libboost-dev '
+# The header that shows each package is installed.
+header_of() {
+    case $1 in
+    libcgal-dev) echo /usr/include/CGAL/Delaunay_triangulation_2.h ;;
+    libboost-dev) echo /usr/include/boost/polygon/voronoi.hpp ;;
+    libnanoflann-dev) echo /usr/include/nanoflann.hpp ;;
+    *)
+        echo "install-deps: unknown package $1" >&2
+        exit 2
+        ;;
+    esac
+}
+
+missing_packages() {
+    for package in "$@"; do
+        [ -f "$(header_of "$package")" ] || printf '%s ' "$package"
+    done
     command -v g++ >/dev/null 2>&1 || printf 'g++ '
 }
 
-missing=$(missing_headers)
+for package in "$@"; do header_of "$package" >/dev/null; done
+missing=$(missing_packages "$@")
 [ -z "$missing" ] && exit 0
 
 echo "install-deps: missing: $missing" >&2
-# shellcheck disable=SC2086  # PACKAGES is a word list on purpose
-"$(dirname "$0")/../apt-install.sh" install-deps $PACKAGES g++
+"$(dirname "$0")/../apt-install.sh" install-deps "$@" g++
 
-missing=$(missing_headers)
+missing=$(missing_packages "$@")
 if [ -n "$missing" ]; then
     echo "install-deps: still missing after install: $missing" >&2
     exit 1

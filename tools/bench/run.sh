@@ -1,52 +1,81 @@
 #!/usr/bin/env bash
-# tools/bench/run.sh - `make bench`: the Delaunay build benchmark.
+# tools/bench/run.sh - the benchmarks against other libraries, each a host
+# program and a target program:
 #
-#   1. host: build/bench/delaunay-host (tools/bench/delaunay.cpp, linked with
-#      build/host/libvor.a) times vor, CGAL and Boost.Polygon on 10^4, 10^5
-#      and 10^6 sites of four input kinds and measures their memory;
-#   2. targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
-#      and RISC-V 32 gives instructions per inserted site for 1,000 and
-#      10,000 sites.
+#   run.sh [delaunay] [ARGS...]   `make bench`: the Delaunay build.
+#       host: build/bench/delaunay-host (tools/bench/delaunay.cpp) times
+#       vor, CGAL and Boost.Polygon on 10^4, 10^5 and 10^6 sites of four
+#       input kinds and measures their memory;
+#       targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
+#       and RISC-V 32 gives instructions per inserted site for 1,000 and
+#       10,000 sites.
+#   run.sh query [ARGS...]        `make bench-query`: nearest-site queries.
+#       host: build/bench/query-host (tools/bench/query.cpp) times vor,
+#       nanoflann and CGAL on coherent and random queries over 10^3 to 10^6
+#       sites and checks that their answers agree;
+#       target: examples/robot_nearest under QEMU -icount on Cortex-M3
+#       gives instructions per coherent query among 500 sites.
 #
-# Prints both tables and writes them to build/bench/delaunay.md. Extra
-# arguments go to the host program (e.g. --sizes 10000,100000 --reps 1).
-# Dependencies: tools/bench/install-deps.sh and tools/install-toolchain.sh
-# (`make bench` runs both first). Exit status 1 if a check failed.
+# Both host programs link build/host/libvor.a. Prints the tables and writes
+# them to build/bench/NAME.md. ARGS go to the host program (e.g. --sizes
+# 10000,100000 --reps 1). Dependencies: tools/bench/install-deps.sh and
+# tools/install-toolchain.sh (make runs both first). Exit status 1 if a
+# check failed.
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/bench
 mkdir -p "$out"
-ports="cortex-m0 cortex-m3 riscv32"
+
+bench=delaunay
+case ${1:-} in
+delaunay | query)
+    bench=$1
+    shift
+    ;;
+esac
+
+# The target program (build/PORT/$target.elf, run by `make run-$target`),
+# the ports it runs on, and the line its output must have.
+case $bench in
+delaunay)
+    target=bench-delaunay
+    ports="cortex-m0 cortex-m3 riscv32"
+    target_ok='^bench valid ok'
+    ;;
+query)
+    target=example-robot_nearest
+    ports="cortex-m3"
+    target_ok='brute force: all agree$'
+    ;;
+esac
+host=build/bench/$bench-host
 
 # Build everything first, so that nothing compiles while the clock runs.
 # SANITIZE= : benchmarks use the release builds even under `make SANITIZE=1 bench`.
-make -s -j"$(nproc)" PORT=host SANITIZE= build/host/libvor.a build/bench/delaunay-host
+make -s -j"$(nproc)" PORT=host SANITIZE= build/host/libvor.a "$host"
 for port in $ports; do
-    make -s -j"$(nproc)" PORT="$port" SANITIZE= "build/$port/bench-delaunay.elf"
+    make -s -j"$(nproc)" PORT="$port" SANITIZE= "build/$port/$target.elf"
 done
 
 status=0
 for port in $ports; do
-    if ! make -s PORT="$port" SANITIZE= run-bench-delaunay >"$out/delaunay-$port.txt" ||
-        ! grep -q '^bench valid ok' "$out/delaunay-$port.txt"; then
-        echo "error: $port: bench-delaunay failed:" >&2
-        cat "$out/delaunay-$port.txt" >&2
+    if ! make -s PORT="$port" SANITIZE= "run-$target" >"$out/$bench-$port.txt" ||
+        ! grep -q "$target_ok" "$out/$bench-$port.txt"; then
+        echo "error: $port: $target failed:" >&2
+        cat "$out/$bench-$port.txt" >&2
         status=1
     fi
 done
 
-rm -f "$out/delaunay-host.md" "$out/delaunay.md" # never report a stale table
+rm -f "$out/$bench-host.md" "$out/$bench.md" # never report a stale table
 host_status=0
-build/bench/delaunay-host --out "$out/delaunay-host.md" "$@" \
-    2> >(tee "$out/delaunay-host.log" >&2) >/dev/null || host_status=$?
-[ -f "$out/delaunay-host.md" ] || exit 1
+"$host" --out "$out/$bench-host.md" "$@" \
+    2> >(tee "$out/$bench-host.log" >&2) >/dev/null || host_status=$?
+[ -f "$out/$bench-host.md" ] || exit 1
 [ "$host_status" -eq 0 ] || status=1
 
-{
-    echo "Host (\`build/bench/delaunay-host\`, $(date -u +%F)):"
-    echo
-    cat "$out/delaunay-host.md"
-    echo
+# The target table of each benchmark, from "$out/$bench-PORT.txt".
+delaunay_targets() {
     echo "Targets, vor_build instructions per inserted site (uniform full-range int32, QEMU -icount):"
     echo
     # shellcheck disable=SC2086  # ports is a word list on purpose
@@ -69,6 +98,32 @@ for key in sorted(rows, key=lambda k: (k[1], k[0])):
     cells = [f"{key[1]:,}", order.get(key[0], key[0])] + [value.get((key, p), "-") for p in ports]
     print("| " + " | ".join(cells) + " |")
 PY
-} >"$out/delaunay.md"
-cat "$out/delaunay.md"
+}
+
+query_targets() {
+    echo "Targets, instructions per coherent query (examples/robot_nearest: 500 sites, each query hinted by the previous answer, QEMU -icount):"
+    echo
+    echo "| port | instructions per query | issue 4 target | status |"
+    echo "|---|---|---|---|"
+    for port in $ports; do
+        count=$(sed -n 's/^ *\([0-9][0-9]*\) instructions per query.*/\1/p' "$out/query-$port.txt")
+        verdict="**not met**"
+        if [ -z "$count" ]; then
+            count="-" verdict="no figure"
+            status=1
+        elif [ "$count" -le 150 ]; then
+            verdict="met"
+        fi
+        echo "| $port | $count | <= 150 | $verdict |"
+    done
+}
+
+{
+    echo "Host (\`$host\`, $(date -u +%F)):"
+    echo
+    cat "$out/$bench-host.md"
+    echo
+    "${bench}_targets"
+} >"$out/$bench.md"
+cat "$out/$bench.md"
 exit "$status"
