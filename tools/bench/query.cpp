@@ -13,10 +13,12 @@
 //   coherent  a smooth random walk through the square: every step is F
 //             times the mean site spacing 2^25 / sqrt(n) long (default
 //             0.1), the heading turns by up to 0.1 radian a step, and the
-//             walk bounces off the sides. vor and CGAL are hinted with the
-//             previous answer (vor: its site id; CGAL: a face of its
-//             vertex); a kd-tree has nothing to be hinted with, so
-//             nanoflann searches from its root every time.
+//             walk bounces off the sides. vor follows it twice: with a
+//             vor_tracker_t (its way for a moving point), and with
+//             vor_nearest hinted by the previous answer. CGAL is hinted
+//             with a face of the previous answer's vertex; a kd-tree has
+//             nothing to be hinted with, so nanoflann searches from its
+//             root every time.
 //   random    uniform in the square. vor gets VOR_NO_HINT, CGAL no face.
 //
 // For each size and kind it prints one Markdown table row: queries per
@@ -193,22 +195,33 @@ static void die(const char *what)
 
 // The timed loops. Each stores its answers, read only after the clock stops.
 
-static double run_vor(const vor_t *d, const std::vector<vor_point_t> &q, bool hinted,
+// How vor is asked: a tracker following the query (vor_track), vor_nearest
+// hinted with the previous answer, or vor_nearest without a hint.
+enum class vor_way { tracked, hinted, cold };
+
+static double run_vor(const vor_t *d, const std::vector<vor_point_t> &q, vor_way way,
                       std::vector<uint32_t> &answer)
 {
     uint32_t hint = VOR_NO_HINT, site = 0;
     int failed = 0;
+    vor_tracker_t tracker;
+    vor_tracker_begin(&tracker, d);
     double t0 = now_s();
-    for (size_t i = 0; i < q.size(); i++) {
-        failed |= vor_nearest(d, q[i].x, q[i].y, hint, &site);
-        answer[i] = site;
-        if (hinted) {
-            hint = site;
+    if (way == vor_way::tracked) {
+        for (size_t i = 0; i < q.size(); i++) {
+            failed |= vor_track(&tracker, q[i].x, q[i].y, &site);
+            answer[i] = site;
+        }
+    } else {
+        for (size_t i = 0; i < q.size(); i++) {
+            failed |= vor_nearest(d, q[i].x, q[i].y, hint, &site);
+            answer[i] = site;
+            hint = (way == vor_way::hinted) ? site : VOR_NO_HINT;
         }
     }
     double t = now_s() - t0;
     if (failed != VOR_OK) {
-        die("vor_nearest failed");
+        die("vor query failed");
     }
     return t;
 }
@@ -248,6 +261,7 @@ static double run_cgal(const Cgal_dt &dt, const std::vector<Epick::Point_2> &q, 
 
 struct row {
     const char *kind = "";
+    vor_way way = vor_way::cold;
     uint32_t n = 0, queries = 0;
     double vor_s = 1e300, nanoflann_s = 1e300, cgal_s = 1e300; // best time
     uint64_t nanoflann_wrong = 0, cgal_wrong = 0, brute_wrong = 0;
@@ -264,11 +278,12 @@ struct structures {
     const Cgal_dt *dt;
 };
 
-static row run_row(const char *kind, bool coherent, const structures &s,
+static row run_row(const char *kind, vor_way way, const structures &s,
                    const std::vector<vor_point_t> &q, unsigned reps, double min_time)
 {
     row r;
     r.kind = kind;
+    r.way = way;
     r.n = (uint32_t)s.sites->size();
     r.queries = (uint32_t)q.size();
     std::vector<double> q_nanoflann(2 * q.size());
@@ -293,7 +308,7 @@ static row run_row(const char *kind, bool coherent, const structures &s,
             break;
         }
         if (more[0]) {
-            double t = run_vor(s.vor, q, coherent, vor_answer);
+            double t = run_vor(s.vor, q, way, vor_answer);
             r.vor_s = std::min(r.vor_s, t);
             total[0] += t;
             r.vor_reps = rep + 1;
@@ -304,7 +319,7 @@ static row run_row(const char *kind, bool coherent, const structures &s,
             total[1] += t;
         }
         if (more[2]) {
-            double t = run_cgal(*s.dt, q_cgal, coherent, cgal_answer);
+            double t = run_cgal(*s.dt, q_cgal, way != vor_way::cold, cgal_answer);
             r.cgal_s = std::min(r.cgal_s, t);
             total[2] += t;
         }
@@ -385,8 +400,10 @@ static std::string targets(const std::vector<row> &rows)
     double coherent_min = 1e300, random_min = 1e300;
     for (const row &r : rows) {
         double ratio = r.nanoflann_s / r.vor_s;
-        double &m = (r.kind[0] == 'c') ? coherent_min : random_min;
-        m = std::min(m, ratio);
+        if (r.way != vor_way::hinted) { /* the tracker is vor's way for a moving point */
+            double &m = (r.way == vor_way::tracked) ? coherent_min : random_min;
+            m = std::min(m, ratio);
+        }
     }
     std::string t;
     t += "| target | measured (smallest nanoflann/vor over the sizes) | status |\n";
@@ -491,14 +508,17 @@ int main(int argc, char **argv)
         dt.insert(cgal_sites.begin(), cgal_sites.end());
 
         structures s{&sites, &d, &tree, &dt};
-        rows.push_back(run_row("coherent", true, s,
-                               make_trajectory(n, coherent_count, step_fraction), reps, min_time));
-        rows.push_back(
-            run_row("random", false, s, make_random_queries(n, random_count), reps, min_time));
-        for (size_t i = rows.size() - 2; i < rows.size(); i++) {
+        std::vector<vor_point_t> trajectory = make_trajectory(n, coherent_count, step_fraction);
+        rows.push_back(run_row("coherent, vor_track", vor_way::tracked, s, trajectory, reps,
+                               min_time));
+        rows.push_back(run_row("coherent, vor_nearest hinted", vor_way::hinted, s, trajectory,
+                               reps, min_time));
+        rows.push_back(run_row("random, vor_nearest no hint", vor_way::cold, s,
+                               make_random_queries(n, random_count), reps, min_time));
+        for (size_t i = rows.size() - 3; i < rows.size(); i++) {
             const row &r = rows[i];
             std::fprintf(stderr,
-                         "bench: %-8s %8u sites %8u queries x %3u  ns/query: vor %8.1f  "
+                         "bench: %-28s %8u sites %8u queries x %3u  ns/query: vor %8.1f  "
                          "nanoflann %8.1f  CGAL %8.1f\n"
                          "       answer changed on %.3f of queries; wrong: nanoflann %llu, CGAL "
                          "%llu, vor vs brute force %llu of %u\n",
@@ -510,8 +530,8 @@ int main(int argc, char **argv)
         }
         std::free(arena);
     }
-    std::sort(rows.begin(), rows.end(), [](const row &a, const row &b) {
-        return a.kind[0] != b.kind[0] ? a.kind[0] < b.kind[0] : a.n < b.n;
+    std::stable_sort(rows.begin(), rows.end(), [](const row &a, const row &b) {
+        return a.way != b.way ? a.way < b.way : a.n < b.n;
     });
 
     bool ok = true;
