@@ -9,6 +9,8 @@
 #   make bench              Delaunay build: vor against CGAL and Boost.Polygon,
 #                           and target instructions per inserted site
 #   make bench-predicates   predicate speed: host ns and target instructions
+#   make bench-raster       vor_raster: host Mpx/s and target instructions per
+#                           pixel, against the brute-force path
 #
 # Toolchains and QEMU are installed on demand by tools/install-toolchain.sh.
 
@@ -51,7 +53,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests test demo size bench-predicates clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests test demo size bench-predicates bench-raster clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -164,6 +166,10 @@ size:
 bench-predicates:
 	@tools/install-toolchain.sh
 	+@tools/bench-predicates.sh
+
+bench-raster:
+	@tools/install-toolchain.sh
+	+@tools/bench/raster.sh
 
 clean:
 	rm -rf build

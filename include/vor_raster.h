@@ -137,11 +137,11 @@ typedef struct vor_raster_output {
      : (kind) == VOR_RASTER_LABEL32 || (kind) == VOR_RASTER_DISTANCE ? 4u      \
                                                                      : 0u)
 
-/* Work memory for up to n sites and frames up to width pixels wide: 40
+/* Work memory for up to n sites and frames up to width pixels wide: 48
  * bytes per site (sort orders, candidates, envelopes) and 16 per pixel of
  * width (two rows of runs), plus alignment slack. A constant expression. */
 #define VOR_RASTER_WORK_BYTES(n, width)                                        \
-    ((size_t)(n) * 40u + (size_t)(width) * 16u + 64u)
+    ((size_t)(n) * 48u + (size_t)(width) * 16u + 64u)
 #define VOR_RASTER_WORK_ALIGN 8u
 
 /*

@@ -101,6 +101,22 @@ static uint32_t produce(producer_t *p, uint32_t j, vor__run_t *runs)
     return brute_row(p->frame, p->sites, j, runs);
 }
 
+/* px[from .. to) = value, four pixels per step (the hot loop of RGB565
+ * output: a run is usually tens of pixels). */
+static void fill16(uint16_t *px, uint32_t from, uint32_t to, uint16_t value)
+{
+    uint32_t i = from;
+    for (; i + 4u <= to; i += 4u) {
+        px[i] = value;
+        px[i + 1u] = value;
+        px[i + 2u] = value;
+        px[i + 3u] = value;
+    }
+    for (; i < to; i++) {
+        px[i] = value;
+    }
+}
+
 /* Writes row j (runs) into dst in the output's kind. below: the runs of
  * row j + 1 (BOUNDARY only; NULL on the last row). */
 static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
@@ -122,10 +138,8 @@ static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *
     case VOR_RASTER_LABEL16: {
         uint16_t *px = dst;
         for (uint32_t r = 0; r < count; r++) {
-            uint16_t label = (uint16_t)runs[r].site;
-            for (; i < runs[r].end; i++) {
-                px[i] = label;
-            }
+            fill16(px, i, runs[r].end, (uint16_t)runs[r].site);
+            i = runs[r].end;
         }
         break;
     }
@@ -141,10 +155,8 @@ static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *
     case VOR_RASTER_RGB565: {
         uint16_t *px = dst;
         for (uint32_t r = 0; r < count; r++) {
-            uint16_t colour = out->palette565[runs[r].site];
-            for (; i < runs[r].end; i++) {
-                px[i] = colour;
-            }
+            fill16(px, i, runs[r].end, out->palette565[runs[r].site]);
+            i = runs[r].end;
         }
         break;
     }
@@ -313,7 +325,9 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     euclid.stack = words + 4u * (size_t)n;
     euclid.left = words + 5u * (size_t)n;
     euclid.right = words + 6u * (size_t)n;
-    euclid.mark = (uint8_t *)(void *)(words + 7u * (size_t)n);
+    euclid.sorted_x = (int32_t *)(void *)(words + 7u * (size_t)n);
+    euclid.sorted_y = (int32_t *)(void *)(words + 8u * (size_t)n);
+    euclid.mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
 
     producer_t producer;
     producer.frame = frame;

@@ -28,6 +28,8 @@ typedef struct vor__euclid {
     int32_t origin_x, origin_y;
     uint32_t *by_x;       /* site ids sorted by (x, id) */
     uint32_t *by_y;       /* site ids sorted by (y, id) */
+    int32_t *sorted_x;    /* relative x of by_x[p] */
+    int32_t *sorted_y;    /* relative y of by_x[p] */
     uint8_t *mark;        /* candidate flags of the current band */
     uint32_t *cand;       /* candidates of the band, sorted by (x, id) */
     int32_t *key;         /* slope keys of the lines being enveloped */
@@ -40,6 +42,7 @@ typedef struct vor__euclid {
     uint32_t band_first, band_last; /* rows of the current culling band */
     uint32_t inside_next;           /* by_y position: first site not yet below the band */
     int band_valid;
+    int narrow;          /* the envelope tests fit 32x32 products */
 } vor__euclid_t;
 
 /* i * step for a pixel index i < 2^31 and a step in (0, 2^31): below

@@ -37,6 +37,18 @@
 
 #define BUDGET ((int64_t)1 << 29)
 
+/* A 32-bit division instruction (Cortex-M3/M4, RV32IM, 64-bit hosts):
+ * then run lengths come from one division. Without one (Cortex-M0) the
+ * compiler would call a library routine, so the walk steps pixel by
+ * pixel instead. */
+#if defined(__ARM_FEATURE_IDIV) || defined(__riscv_div) || defined(__x86_64__) ||              \
+    defined(__aarch64__)
+#define HARDWARE_DIVIDE 1
+#else
+#define HARDWARE_DIVIDE 0
+#endif
+#define NARROW ((int32_t)1 << 14)
+
 int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n)
 {
     if (vor__offset(frame->width - 1u, frame->step_x) >= BUDGET ||
@@ -141,7 +153,14 @@ static int wide_greater(wide_t p, wide_t q)
  * the positions of the kept lines; their crossing points do not decrease.
  * Keys fit in (-2^29, 2^29) (differences < 2^30), values in [0, 2^61).
  */
-static uint32_t envelope(const int32_t *key, const int64_t *val, uint32_t m, uint32_t *stack)
+#if defined(__GNUC__)
+#define ENVELOPE_INLINE static inline __attribute__((always_inline))
+#else
+#define ENVELOPE_INLINE static inline
+#endif
+
+ENVELOPE_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uint32_t m,
+                                       uint32_t *stack, int narrow)
 {
     uint32_t top = 0;
     uint32_t p = 0;
@@ -159,9 +178,17 @@ static uint32_t envelope(const int32_t *key, const int64_t *val, uint32_t m, uin
          * strictly right of its crossing with rep: then j is never lowest */
         while (top >= 2u) {
             uint32_t i = stack[top - 2u], j = stack[top - 1u];
-            wide_t left = wide_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
-            wide_t right = wide_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
-            if (!wide_greater(left, right)) {
+            int greater;
+            if (narrow) { /* value differences fit int32, key ones 2^15 */
+                int64_t left = vor__mul_i32((int32_t)(val[j] - val[i]), key[rep] - key[j]);
+                int64_t right = vor__mul_i32((int32_t)(val[rep] - val[j]), key[j] - key[i]);
+                greater = left > right;
+            } else {
+                wide_t left = wide_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
+                wide_t right = wide_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
+                greater = wide_greater(left, right);
+            }
+            if (!greater) {
                 break;
             }
             top--;
@@ -169,6 +196,16 @@ static uint32_t envelope(const int32_t *key, const int64_t *val, uint32_t m, uin
         stack[top++] = rep;
     }
     return top;
+}
+
+/* The narrow tier holds when every relative coordinate and pixel offset
+ * is below 2^14 in magnitude: values < 2^28 + 2^30 < 2^31, so a value
+ * difference fits int32 and its product with a key difference (< 2^15)
+ * fits int64 from one 32x32 multiply. */
+static uint32_t envelope(const vor__euclid_t *e, const int32_t *key, const int64_t *val,
+                         uint32_t m, uint32_t *stack)
+{
+    return e->narrow ? envelope_impl(key, val, m, stack, 1) : envelope_impl(key, val, m, stack, 0);
 }
 
 /* Does the crossing t* of lines i and j (key_i < key_j) satisfy
@@ -217,7 +254,7 @@ static uint32_t vertical_envelope(vor__euclid_t *e, int32_t u_edge, uint32_t *ou
         e->key[p] = rel_y(e, id);
         e->val[p] = vertical_val(e, id, u_edge);
     }
-    uint32_t count = envelope(e->key, e->val, e->n, e->stack);
+    uint32_t count = envelope(e, e->key, e->val, e->n, e->stack);
     for (uint32_t t = 0; t < count; t++) {
         out[t] = e->stack[t];
     }
@@ -228,8 +265,20 @@ void vor__euclid_prepare(vor__euclid_t *e)
 {
     sort_ids(e->by_x, e->n, e->points, 0);
     sort_ids(e->by_y, e->n, e->points, 1);
+    for (uint32_t p = 0; p < e->n; p++) {
+        e->sorted_x[p] = rel_x(e, e->by_x[p]);
+        e->sorted_y[p] = rel_y(e, e->by_x[p]);
+    }
     for (uint32_t k = 0; k < e->n; k++) {
         e->mark[k] = 0;
+    }
+    e->narrow = vor__offset(e->width - 1u, e->step_x) < NARROW &&
+                vor__offset(e->height - 1u, e->step_y) < NARROW;
+    for (uint32_t k = 0; k < e->n; k++) {
+        int32_t a = rel_x(e, k), b = rel_y(e, k);
+        if (a <= -NARROW || a >= NARROW || b <= -NARROW || b >= NARROW) {
+            e->narrow = 0;
+        }
     }
     e->left_count = vertical_envelope(e, 0, e->left);
     e->right_count = vertical_envelope(e, frame_u(e), e->right);
@@ -250,19 +299,17 @@ typedef struct edge_lines {
 
 static int32_t edge_key(const edge_lines_t *l, uint32_t pos)
 {
-    uint32_t id = l->order[pos];
-    return l->vertical ? rel_y(l->e, id) : rel_x(l->e, id);
+    return l->vertical ? rel_y(l->e, l->order[pos]) : l->e->sorted_x[pos];
 }
 
 static int64_t edge_val(const edge_lines_t *l, uint32_t pos)
 {
-    uint32_t id = l->order[pos];
-    return l->vertical ? vertical_val(l->e, id, l->fixed)
-                       : square(rel_x(l->e, id)) + square(rel_y(l->e, id) - l->fixed);
+    return l->vertical ? vertical_val(l->e, l->order[pos], l->fixed)
+                       : l->e->val[pos]; /* mark_horizontal's values */
 }
 
 static void mark_pieces(vor__euclid_t *e, const edge_lines_t *l, const uint32_t *hull,
-                        uint32_t count, int32_t lo, int32_t hi)
+                        uint32_t count, int32_t lo, int32_t hi, uint8_t flags)
 {
     for (uint32_t t = 0; t < count; t++) {
         uint32_t pos = hull[t];
@@ -289,63 +336,72 @@ static void mark_pieces(vor__euclid_t *e, const edge_lines_t *l, const uint32_t 
         }
         for (uint32_t q = first; q < e->n && edge_key(l, q) == key; q++) {
             if (edge_val(l, q) == val) {
-                e->mark[l->order[q]] = 1;
+                e->mark[l->order[q]] |= flags;
             }
         }
     }
 }
 
-/* Envelope of the horizontal edge at row offset v, marked over [0, U]. */
-static void mark_horizontal(vor__euclid_t *e, int32_t v)
+/* Envelope of the horizontal edge at row offset v, marked over [0, U]
+ * with flags (bit 0: this band, bit 1: the next band). The keys are the
+ * sites' relative x in by_x order (sorted_x), kept from prepare. */
+static void mark_horizontal(vor__euclid_t *e, int32_t v, uint8_t flags)
 {
+    const int32_t *ax = e->sorted_x, *by = e->sorted_y;
     for (uint32_t p = 0; p < e->n; p++) {
-        uint32_t id = e->by_x[p];
-        int32_t a = rel_x(e, id);
-        e->key[p] = a;
-        e->val[p] = square(a) + square(rel_y(e, id) - v);
+        e->val[p] = square(ax[p]) + square(by[p] - v);
     }
-    uint32_t count = envelope(e->key, e->val, e->n, e->stack);
+    uint32_t count = envelope(e, ax, e->val, e->n, e->stack);
     edge_lines_t l = {e, e->by_x, 0, v};
-    mark_pieces(e, &l, e->stack, count, 0, frame_u(e));
+    mark_pieces(e, &l, e->stack, count, 0, frame_u(e), flags);
 }
 
-/* Candidates of the band of rows [first, last]. */
+/* Candidates of the band of rows [first, last]. Its rectangle reaches
+ * down to the next band's first row (when there is one), so that its
+ * bottom edge is the next band's top edge: that envelope is computed once
+ * and marks both bands (bit 1 of a mark carries over to the next band). */
 static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last)
 {
     int32_t v0 = (int32_t)(vor__offset(first, e->step_y));
-    int32_t v1 = (int32_t)(vor__offset(last, e->step_y));
+    uint32_t bottom_row = (last + 1u < e->height) ? last + 1u : last;
+    int32_t v1 = (int32_t)(vor__offset(bottom_row, e->step_y));
     int32_t u1 = frame_u(e);
-    mark_horizontal(e, v0);
+    if (first == 0u) {
+        mark_horizontal(e, v0, 1u);
+    }
     if (v1 != v0) {
-        mark_horizontal(e, v1);
+        mark_horizontal(e, v1, 3u);
     }
     edge_lines_t left = {e, e->by_y, 1, 0};
-    mark_pieces(e, &left, e->left, e->left_count, v0, v1);
+    mark_pieces(e, &left, e->left, e->left_count, v0, v1, 1u);
     edge_lines_t right = {e, e->by_y, 1, u1};
-    mark_pieces(e, &right, e->right, e->right_count, v0, v1);
+    mark_pieces(e, &right, e->right, e->right_count, v0, v1, 1u);
     /* sites inside the band's rectangle; bands come in increasing order,
-     * so sites above this band's top are never needed again */
+     * so sites above the next band's top (v1) are never needed again */
     uint32_t p = e->inside_next;
     while (p < e->n && rel_y(e, e->by_y[p]) < v0) {
         p++;
     }
+    uint32_t next = p;
     while (p < e->n && rel_y(e, e->by_y[p]) <= v1) {
         uint32_t id = e->by_y[p];
         int32_t a = rel_x(e, id);
         if (a >= 0 && a <= u1) {
-            e->mark[id] = 1;
+            e->mark[id] |= 1u;
         }
+        next += rel_y(e, id) < v1 ? 1u : 0u;
         p++;
     }
-    e->inside_next = p;
+    e->inside_next = next;
     /* gather in (x, id) order, clearing the marks for the next band */
     uint32_t m = 0;
     for (uint32_t q = 0; q < e->n; q++) {
         uint32_t id = e->by_x[q];
-        if (e->mark[id] != 0u) {
-            e->mark[id] = 0;
+        uint8_t flags = e->mark[id];
+        e->mark[id] = (uint8_t)(flags >> 1);
+        if ((flags & 1u) != 0u) {
             e->cand[m] = id;
-            e->key[m] = rel_x(e, id);
+            e->key[m] = e->sorted_x[q];
             m++;
         }
     }
@@ -385,7 +441,7 @@ uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
         val[q] = square(key[q]) + square(rel_y(e, e->cand[q]) - v);
     }
     const uint32_t *hull = e->stack;
-    const uint32_t hull_count = envelope(key, val, m, e->stack);
+    const uint32_t hull_count = envelope(e, key, val, m, e->stack);
 
     /* walk the pixels: k is the envelope line of the current pixel */
     const uint32_t width = e->width;
@@ -434,6 +490,17 @@ uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
         /* d < 0; it grows by 2 (key_next - key_k) step per pixel
          * (< 2^60 when width >= 2, < 2^62 otherwise: no overflow) */
         const int64_t grow = 2 * vor__mul_i32(key[hull[k + 1u]] - key[hull[k]], step);
+#if HARDWARE_DIVIDE
+        if (e->narrow && width > 1u) {
+            /* narrow: 0 < -d < 2^32 and grow < 2^31, so the first pixel
+             * t >= 1 steps on with d + t grow >= 0 is t = (-d - 1) / grow
+             * + 1, one 32-bit hardware division */
+            uint32_t t = (uint32_t)(-d - 1) / (uint32_t)grow + 1u;
+            i = (t < width - i) ? i + t : width;
+            count = emit(runs, count, i, site);
+            continue;
+        }
+#endif
         do {
             i++;
             d += grow;
