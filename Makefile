@@ -151,9 +151,15 @@ $(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
 
 # The main job: examples/voronoi on the emulated Cortex-M3.
 DEMO_PORT ?= cortex-m3
+# It also renders a 320x240 RGB565 frame in 16-row bands and streams it
+# to build/demo.rgb565 through semihosting; the host turns it into
+# build/demo.png.
 demo:
 	@tools/install-toolchain.sh
+	@mkdir -p build
 	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-voronoi
+	@python3 tools/rgb565_to_png.py build/demo.rgb565 320 240 build/demo.png
+	@echo "frame:     build/demo.png"
 
 test:
 	@tools/install-toolchain.sh

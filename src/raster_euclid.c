@@ -47,7 +47,8 @@
 #else
 #define HARDWARE_DIVIDE 0
 #endif
-#define NARROW ((int32_t)1 << 14)
+#define NARROW ((int64_t)1 << 14)
+#define MID ((int64_t)1 << 19)
 
 int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n)
 {
@@ -179,9 +180,13 @@ ENVELOPE_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, u
         while (top >= 2u) {
             uint32_t i = stack[top - 2u], j = stack[top - 1u];
             int greater;
-            if (narrow) { /* value differences fit int32, key ones 2^15 */
+            if (narrow == 1) { /* value differences fit int32, key ones 2^15 */
                 int64_t left = vor__mul_i32((int32_t)(val[j] - val[i]), key[rep] - key[j]);
                 int64_t right = vor__mul_i32((int32_t)(val[rep] - val[j]), key[j] - key[i]);
+                greater = left > right;
+            } else if (narrow == 2) { /* values < 2^41, key differences < 2^20 */
+                int64_t left = vor__mul_i64_i32(val[j] - val[i], key[rep] - key[j]);
+                int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
                 greater = left > right;
             } else {
                 wide_t left = wide_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
@@ -198,14 +203,22 @@ ENVELOPE_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, u
     return top;
 }
 
-/* The narrow tier holds when every relative coordinate and pixel offset
- * is below 2^14 in magnitude: values < 2^28 + 2^30 < 2^31, so a value
+/* Tiers of the envelope test, by the largest relative coordinate or pixel
+ * offset M. Narrow (1), M < 2^14: values < 2^28 + 2^30 < 2^31, so a value
  * difference fits int32 and its product with a key difference (< 2^15)
- * fits int64 from one 32x32 multiply. */
+ * fits int64 from one 32x32 multiply. Mid (2), M < 2^19: values < 2^38 +
+ * 2^40 < 2^41, key differences < 2^20, products < 2^61 in int64. Wide
+ * (0), M < 2^29: 96-bit products (wide_mul). */
 static uint32_t envelope(const vor__euclid_t *e, const int32_t *key, const int64_t *val,
                          uint32_t m, uint32_t *stack)
 {
-    return e->narrow ? envelope_impl(key, val, m, stack, 1) : envelope_impl(key, val, m, stack, 0);
+    if (e->narrow == 1) {
+        return envelope_impl(key, val, m, stack, 1);
+    }
+    if (e->narrow == 2) {
+        return envelope_impl(key, val, m, stack, 2);
+    }
+    return envelope_impl(key, val, m, stack, 0);
 }
 
 /* Does the crossing t* of lines i and j (key_i < key_j) satisfy
@@ -272,14 +285,17 @@ void vor__euclid_prepare(vor__euclid_t *e)
     for (uint32_t k = 0; k < e->n; k++) {
         e->mark[k] = 0;
     }
-    e->narrow = vor__offset(e->width - 1u, e->step_x) < NARROW &&
-                vor__offset(e->height - 1u, e->step_y) < NARROW;
+    int64_t reach = vor__offset(e->width - 1u, e->step_x);
+    int64_t tall = vor__offset(e->height - 1u, e->step_y);
+    int64_t most = reach > tall ? reach : tall;
     for (uint32_t k = 0; k < e->n; k++) {
-        int32_t a = rel_x(e, k), b = rel_y(e, k);
-        if (a <= -NARROW || a >= NARROW || b <= -NARROW || b >= NARROW) {
-            e->narrow = 0;
-        }
+        int64_t a = rel_x(e, k), b = rel_y(e, k);
+        a = a < 0 ? -a : a;
+        b = b < 0 ? -b : b;
+        most = a > most ? a : most;
+        most = b > most ? b : most;
     }
+    e->narrow = most < NARROW ? 1 : most < MID ? 2 : 0;
     e->left_count = vertical_envelope(e, 0, e->left);
     e->right_count = vertical_envelope(e, frame_u(e), e->right);
     e->band_valid = 0;
@@ -491,10 +507,10 @@ uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
          * (< 2^60 when width >= 2, < 2^62 otherwise: no overflow) */
         const int64_t grow = 2 * vor__mul_i32(key[hull[k + 1u]] - key[hull[k]], step);
 #if HARDWARE_DIVIDE
-        if (e->narrow && width > 1u) {
-            /* narrow: 0 < -d < 2^32 and grow < 2^31, so the first pixel
-             * t >= 1 steps on with d + t grow >= 0 is t = (-d - 1) / grow
-             * + 1, one 32-bit hardware division */
+        if (d >= -(int64_t)0xFFFFFFFF && grow <= (int64_t)0xFFFFFFFF) {
+            /* 0 < -d < 2^32 and 0 < grow < 2^32 (always so in the narrow
+             * tier): the first pixel t >= 1 steps on with d + t grow >= 0
+             * is t = (-d - 1) / grow + 1, one 32-bit hardware division */
             uint32_t t = (uint32_t)(-d - 1) / (uint32_t)grow + 1u;
             i = (t < width - i) ? i + t : width;
             count = emit(runs, count, i, site);
