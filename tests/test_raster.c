@@ -312,6 +312,29 @@ static void adversarial_cases(test_rng_t *rng)
     }
     check_frame("far", &f, 40);
 
+    /* the mid envelope tier: coordinates between 2^14 and 2^19 */
+    f = make_frame(-20000, 30000, 997, 1009, 41, 40);
+    for (uint32_t k = 0; k < 50u; k++) {
+        sites[k].x = f.origin_x + test_rng_range(rng, -200000, 240000);
+        sites[k].y = f.origin_y + test_rng_range(rng, -200000, 240000);
+    }
+    check_frame("mid", &f, 50);
+    /* a lattice with four-way ties at pixel centres, in the mid tier */
+    f = make_frame(0, 0, 1000, 1000, 41, 40);
+    n = 0;
+    for (int32_t y = 0; y <= 40; y += 8) {
+        for (int32_t x = 4; x <= 44; x += 8) {
+            sites[MAX_SITES - 1u - n].x = x * 1000;
+            sites[MAX_SITES - 1u - n].y = y * 1000 + 4000;
+            n++;
+        }
+    }
+    for (uint32_t k = 0; k < MAX_SITES - n; k++) {
+        sites[k].x = 300000 + (int32_t)k;
+        sites[k].y = -200000;
+    }
+    check_frame("mid-lattice", &f, MAX_SITES);
+
     /* the whole int32 range: the exact fallback */
     f = make_frame(INT32_MIN, INT32_MIN, 107374182, 110127366, 41, 40);
     for (uint32_t k = 0; k < 30u; k++) {
