@@ -11,6 +11,8 @@
 #   make bench-predicates   predicate speed: host ns and target instructions
 #   make bench-query        nearest-site queries: vor against nanoflann and CGAL,
 #                           and target instructions per coherent query
+#   make bench-raster       vor_raster: host Mpx/s and target instructions per
+#                           pixel, against the brute-force path
 #
 # Toolchains and QEMU are installed on demand by tools/install-toolchain.sh.
 
@@ -53,7 +55,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests test demo size bench-predicates clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests test demo size bench-predicates bench-raster clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -151,9 +153,15 @@ $(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
 
 # The main job: examples/voronoi on the emulated Cortex-M3.
 DEMO_PORT ?= cortex-m3
+# It also renders a 320x240 RGB565 frame in 16-row bands and streams it
+# to build/demo.rgb565 through semihosting; the host turns it into
+# build/demo.png.
 demo:
 	@tools/install-toolchain.sh
+	@mkdir -p build
 	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-voronoi
+	@python3 tools/rgb565_to_png.py build/demo.rgb565 320 240 build/demo.png
+	@echo "frame:     build/demo.png"
 
 test:
 	@tools/install-toolchain.sh
@@ -166,6 +174,10 @@ size:
 bench-predicates:
 	@tools/install-toolchain.sh
 	+@tools/bench-predicates.sh
+
+bench-raster:
+	@tools/install-toolchain.sh
+	+@tools/bench/raster.sh
 
 clean:
 	rm -rf build

@@ -171,6 +171,63 @@ def nearest_cases(rng, tmp):
           f"nearest bad query line: {r.returncode} {r.stderr!r}")
 
 
+def raster_cases(rng, tmp):
+    """vor raster --labels against a Python brute force: exact squared
+    distances in big integers, ties to the smaller index."""
+    import os
+    import struct
+    cases = []
+    for n in range(8):
+        w, h = rng.randint(1, 23), rng.randint(1, 19)
+        ox, oy = rng.randint(-40, 40), rng.randint(-40, 40)
+        sx, sy = rng.randint(1, 4), rng.randint(1, 4)
+        k = rng.randint(1, 30)
+        sites = [(ox + rng.randint(-10, w * sx + 10), oy + rng.randint(-10, h * sy + 10)) for _ in range(k)]
+        cases.append((f"random{n}", w, h, ox, oy, sx, sy, sites, rng.choice([1, 3, 16])))
+    lattice = [(x, y) for y in range(0, 21, 4) for x in range(0, 21, 4)][::-1]
+    cases.append(("lattice-ties", 21, 21, 0, 0, 1, 1, lattice + lattice[:5], 4))
+    huge = [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(12)] + [(MAX, MIN), (MIN, MAX)]
+    cases.append(("huge", 9, 7, MIN, MIN, 2**29 - 1, 2**29 + 7, huge, 2))
+    for name, w, h, ox, oy, sx, sy, sites, band in cases:
+        sp = os.path.join(tmp, name + ".sites")
+        with open(sp, "w") as f:
+            f.write("# sites\n\n" + "".join(f"{x} {y}\n" for x, y in sites))
+        out = os.path.join(tmp, name + ".raw")
+        r = run(["raster", "--size", str(w), str(h), "--origin", str(ox), str(oy), "--step", str(sx), str(sy),
+                 "--band", str(band), sp, "--labels", out], "")
+        check(r.returncode == 0, f"raster {name}: status {r.returncode} {r.stderr}")
+        if r.returncode != 0:
+            continue
+        data = open(out, "rb").read()
+        check(len(data) == 4 * w * h, f"raster {name}: {len(data)} bytes for {w}x{h}")
+        got = struct.unpack(f"<{w * h}I", data[:4 * w * h]) if len(data) >= 4 * w * h else ()
+        wrong = 0
+        for j in range(h):
+            for i in range(w):
+                qx, qy = ox + i * sx, oy + j * sy
+                d = [(x - qx) ** 2 + (y - qy) ** 2 for x, y in sites]
+                want = d.index(min(d))
+                wrong += got[j * w + i] != want if got else 1
+        check(wrong == 0, f"raster {name}: {wrong} of {w * h} labels differ from brute force")
+    # bad input: status 2 and the line number
+    bp = os.path.join(tmp, "bad.sites")
+    with open(bp, "w") as f:
+        f.write("1 2\n\n3\n")
+    r = run(["raster", "--size", "4", "4", "--origin", "0", "0", "--step", "1", "1", bp, "--labels",
+             os.path.join(tmp, "bad.raw")], "")
+    check(r.returncode == 2 and r.stderr.startswith("error: line 3: "), f"raster bad line: {r.returncode} {r.stderr!r}")
+    for args in (["--size", "0", "4"], ["--size", "4", "4", "--step", "0", "1"], ["--size", "4", "4", "--origin", "2147483647", "0"]):
+        r = run(["raster"] + args + [os.path.join(tmp, "huge.sites"), "--labels", os.path.join(tmp, "x.raw")], "")
+        check(r.returncode == 2 and r.stderr.startswith("error: "), f"raster bad frame {args}: {r.returncode} {r.stderr!r}")
+    png = os.path.join(tmp, "out.png")
+    r = run(["raster", "--size", "30", "20", "--origin", "0", "0", "--step", "1", "1",
+             os.path.join(tmp, "lattice-ties.sites"), "--png", png], "")
+    if os.path.exists("/usr/include/stb/stb_image_write.h"):
+        check(r.returncode == 0 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"raster --png: {r.returncode} {r.stderr!r}")
+    else:
+        check(r.returncode == 2 and "libstb-dev" in r.stderr, f"raster --png without stb: {r.stderr!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -205,6 +262,7 @@ def main():
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         nearest_cases(rng, tmp)
+        raster_cases(rng, tmp)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

@@ -4,6 +4,7 @@
  *   vor predicates            exact orient2d / incircle signs of stdin lines
  *   vor delaunay FILE         the Delaunay triangulation of a site file
  *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
+ *   vor raster ... SITES      the discrete Voronoi diagram of a frame
  */
 #include <stdio.h>
 #include <string.h>
@@ -18,6 +19,7 @@ static const struct {
     {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
+    {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
 };
 
 int main(int argc, char **argv)

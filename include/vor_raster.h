@@ -1,0 +1,169 @@
+/*
+ * vor_raster.h - exact discrete Voronoi diagrams, rendered in bands.
+ *
+ * A frame is a grid of pixels with integer world centres: pixel (i, j) is
+ * at (origin_x + i * step_x, origin_y + j * step_y), i < width, j < height,
+ * steps > 0. Each pixel gets the index of its nearest site; of several at
+ * the same distance, the smallest index (Definition 2.2 of seed 002, the
+ * discrete Voronoi diagram). Every decision is exact integer arithmetic:
+ * no square root, no floating point, no sampling of the distance, so each
+ * pixel equals a brute-force search with exact distances.
+ *
+ *     static uint16_t band[16 * 320];               // 16 rows of RGB565
+ *     static uint8_t work[VOR_RASTER_WORK_BYTES(256, 320)]
+ *         __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
+ *     vor_raster_frame_t frame = {0, 0, 1, 1, 320, 240};
+ *     vor_raster_sites_t set = {0};                // VOR_METRIC_EUCLID
+ *     set.points = sites; set.count = 256;
+ *     vor_raster_output_t out = {0};
+ *     out.kind = VOR_RASTER_RGB565; out.palette565 = colours;
+ *     out.band = band; out.band_bytes = sizeof band; out.band_rows = 16;
+ *     out.flush = send_to_display; out.user = &lcd;
+ *     int err = vor_raster(&frame, &set, &out, work, sizeof work);
+ *
+ * BANDS
+ *   The caller's buffer holds band_rows rows of width pixels; the rows are
+ *   filled top (j = 0) down and handed to flush(user, first_row, rows,
+ *   pixels) once per band, like the partial rendering of display
+ *   libraries. No full frame is ever needed. flush returns 0 to go on; any
+ *   other value stops the render and vor_raster returns it.
+ *
+ * OUTPUT KINDS (pixel layout in the band, row-major, row stride = width)
+ *   VOR_RASTER_LABEL8 / 16 / 32  the site index as uint8_t / uint16_t /
+ *                                uint32_t (8 and 16 need count <= 256 /
+ *                                65,536)
+ *   VOR_RASTER_RGB565            uint16_t palette565[site] (swap the
+ *                                palette's bytes for a big-endian display)
+ *   VOR_RASTER_RGB888            3 bytes R, G, B of palette888[site]
+ *                                (0xRRGGBB)
+ *   VOR_RASTER_BOUNDARY          uint8_t 1 where the right or lower
+ *                                neighbour has another label, else 0
+ *                                (correct across band seams)
+ *   VOR_RASTER_DISTANCE          uint32_t distance to the pixel's site,
+ *                                rounded down, saturated at UINT32_MAX
+ *   Any kind can also count each site's pixels (areas[count], optional).
+ *
+ * SPEED
+ *   VOR_RASTER_FAST (the default) finds, per band of 16 rows, the sites
+ *   whose cells can reach the band (exact envelopes of the band's edges),
+ *   then per row the lower envelope of their distance functions, and walks
+ *   the pixels with one 64-bit addition each: O(pixels + n) per band row
+ *   group, never a test of every site at every pixel. It applies when
+ *   every site lies within 2^29 of the first pixel and the frame spans
+ *   less than 2^29 in each direction; otherwise (and with
+ *   VOR_RASTER_BRUTE) each pixel is compared with every site, equally
+ *   exact. docs/design.md, "Rasterizer", has the bound arguments.
+ *
+ * MEMORY
+ *   work: VOR_RASTER_WORK_BYTES(count, width) bytes, aligned to
+ *   VOR_RASTER_WORK_ALIGN, a compile-time constant. Nothing else is used
+ *   besides the band buffer and a small stack frame.
+ *
+ * API: docs/api.md, "Raster".
+ */
+#ifndef VOR_RASTER_H
+#define VOR_RASTER_H
+
+#include "vor.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* The pixel grid: pixel (i, j) has the world centre
+ * (origin_x + i * step_x, origin_y + j * step_y). Every centre must be an
+ * int32 point; steps and sizes are positive. */
+typedef struct vor_raster_frame {
+    int32_t origin_x;
+    int32_t origin_y;
+    int32_t step_x;
+    int32_t step_y;
+    uint32_t width;
+    uint32_t height;
+} vor_raster_frame_t;
+
+/* The distance a pixel is assigned by. */
+enum vor_metric {
+    VOR_METRIC_EUCLID = 0 /* point sites, Euclidean distance (full int32 range) */
+};
+
+/* The sites of a frame. Fields a metric does not use are ignored. */
+typedef struct vor_raster_sites {
+    enum vor_metric metric;
+    const vor_point_t *points; /* point sites: site k = points[k] */
+    uint32_t count;            /* sites, >= 1 */
+} vor_raster_sites_t;
+
+enum vor_raster_kind {
+    VOR_RASTER_LABEL8 = 0,
+    VOR_RASTER_LABEL16 = 1,
+    VOR_RASTER_LABEL32 = 2,
+    VOR_RASTER_RGB565 = 3,
+    VOR_RASTER_RGB888 = 4,
+    VOR_RASTER_BOUNDARY = 5,
+    VOR_RASTER_DISTANCE = 6
+};
+
+enum vor_raster_method {
+    VOR_RASTER_FAST = 0, /* culling and envelopes where the bit budget allows */
+    VOR_RASTER_BRUTE = 1 /* every site at every pixel (a baseline) */
+};
+
+/* flush(user, first_row, rows, pixels): rows [first_row, first_row + rows)
+ * are in pixels (the band buffer). Return 0 to go on; anything else stops
+ * the render and becomes vor_raster's return value. */
+typedef int (*vor_raster_flush_t)(void *user, uint32_t first_row, uint32_t rows,
+                                  const void *pixels);
+
+/* Where and how the frame goes. Zero-initialise, then set what is used. */
+typedef struct vor_raster_output {
+    enum vor_raster_kind kind;
+    void *band;          /* band_rows * width pixels of the kind */
+    size_t band_bytes;
+    uint32_t band_rows;  /* >= 1 */
+    vor_raster_flush_t flush;
+    void *user;                  /* handed to flush */
+    const uint16_t *palette565;  /* RGB565: colour of site k */
+    const uint32_t *palette888;  /* RGB888: 0xRRGGBB of site k */
+    uint32_t *areas;             /* optional: pixels of each site, [count] */
+    enum vor_raster_method method;
+} vor_raster_output_t;
+
+/* Bytes per pixel of a kind (0 for an unknown kind). */
+#define VOR_RASTER_PIXEL_BYTES(kind)                                           \
+    ((kind) == VOR_RASTER_LABEL8 || (kind) == VOR_RASTER_BOUNDARY ? 1u         \
+     : (kind) == VOR_RASTER_LABEL16 || (kind) == VOR_RASTER_RGB565 ? 2u        \
+     : (kind) == VOR_RASTER_RGB888                                 ? 3u        \
+     : (kind) == VOR_RASTER_LABEL32 || (kind) == VOR_RASTER_DISTANCE ? 4u      \
+                                                                     : 0u)
+
+/* Work memory for up to n sites and frames up to width pixels wide: 48
+ * bytes per site (sort orders, candidates, envelopes) and 16 per pixel of
+ * width (two rows of runs), plus alignment slack. A constant expression. */
+#define VOR_RASTER_WORK_BYTES(n, width)                                        \
+    ((size_t)(n) * 48u + (size_t)(width) * 16u + 64u)
+#define VOR_RASTER_WORK_ALIGN 8u
+
+/*
+ * Renders the discrete Voronoi diagram of sites over frame, band by band,
+ * into out. Everything is checked before the first pixel:
+ *   VOR_ERR_ARG    a NULL pointer, a zero size or step, a pixel centre
+ *                  outside int32, an unknown metric, kind or method, a
+ *                  missing palette, LABEL8 with > 256 or LABEL16 with
+ *                  > 65,536 sites
+ *   VOR_ERR_EMPTY  sites->count == 0
+ *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes, or
+ *                  work_bytes < VOR_RASTER_WORK_BYTES(count, width)
+ *   VOR_ERR_ALIGN  work not aligned to VOR_RASTER_WORK_ALIGN
+ *   flush's value  a flush that returned nonzero (bands before it were
+ *                  delivered; areas then hold the rows done so far)
+ * On an error before the first pixel, nothing is written (areas included).
+ */
+int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+               const vor_raster_output_t *out, void *work, size_t work_bytes);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,70 @@
+/*
+ * raster.h - what the band driver (raster.c) and the row producers share.
+ * Private to the library.
+ *
+ * A row of labels travels as runs: run k covers pixels [end of run k-1,
+ * end of run k) and belongs to one site. Consecutive runs have different
+ * sites, so a row of width W has at most W runs.
+ */
+#ifndef VOR_RASTER_PRIVATE_H
+#define VOR_RASTER_PRIVATE_H
+
+#include "vor_raster.h"
+
+#include "multiword.h"
+
+typedef struct vor__run {
+    uint32_t end;  /* one past the last pixel of the run */
+    uint32_t site;
+} vor__run_t;
+
+/* The fast Euclidean producer (raster_euclid.c): its state lives in the
+ * caller's work memory. */
+typedef struct vor__euclid {
+    const vor_point_t *points;
+    uint32_t n;
+    uint32_t width, height;
+    int32_t step_x, step_y;
+    int32_t origin_x, origin_y;
+    uint32_t *by_x;       /* site ids sorted by (x, id) */
+    uint32_t *by_y;       /* site ids sorted by (y, id) */
+    int32_t *sorted_x;    /* relative x of by_x[p] */
+    int32_t *sorted_y;    /* relative y of by_x[p] */
+    uint8_t *mark;        /* candidate flags of the current band */
+    uint32_t *cand;       /* candidates of the band, sorted by (x, id) */
+    int32_t *key;         /* slope keys of the lines being enveloped */
+    int64_t *val;         /* their values at 0 */
+    uint32_t *stack;      /* envelope: positions into key/val */
+    uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
+    uint32_t *right;      /* and of the right edge */
+    uint32_t left_count, right_count;
+    uint32_t cand_count;
+    uint32_t band_first, band_last; /* rows of the current culling band */
+    uint32_t inside_next;           /* by_y position: first site not yet below the band */
+    int band_valid;
+    int narrow;          /* the envelope tests fit 32x32 products */
+} vor__euclid_t;
+
+/* i * step for a pixel index i < 2^31 and a step in (0, 2^31): below
+ * 2^62, and without a 64-bit multiply call on Cortex-M0. */
+static inline int64_t vor__offset(uint32_t i, int32_t step)
+{
+    return (int64_t)vor__mul_u32(i, (uint32_t)step);
+}
+
+/* Rows per culling band of the fast path. */
+#define VOR__CULL_ROWS 16u
+
+/* True when the fast path's bit budget holds: every site within 2^29 of
+ * the first pixel centre, (width - 1) * step_x and (height - 1) * step_y
+ * below 2^29. */
+int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n);
+
+/* Sorts the sites and envelopes the frame's left and right edges. The
+ * arrays of e must be set; frame checked; vor__euclid_fits true. */
+void vor__euclid_prepare(vor__euclid_t *e);
+
+/* Runs of row j (rows requested in increasing order); returns their count. */
+uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs);
+
+#endif

@@ -1,0 +1,37 @@
+/*
+ * raster_reference.h - the brute-force reference of the rasterizer tests,
+ * written apart from the library: distances are exact values held as
+ * unsigned multi-word integers (fractions where a metric divides), and the
+ * nearest site is the first of the smallest values. Nothing here calls the
+ * library's predicates.
+ */
+#ifndef VOR_RASTER_REFERENCE_H
+#define VOR_RASTER_REFERENCE_H
+
+#include <stdint.h>
+
+#include "vor_raster.h"
+
+/* An unsigned integer of REF_LIMBS 32-bit limbs, least significant first. */
+#define REF_LIMBS 8
+typedef struct {
+    uint32_t limb[REF_LIMBS];
+} ref_big_t;
+
+void ref_big_set(ref_big_t *r, uint64_t v);
+/* r = a * b (the product must fit). */
+void ref_big_mul(ref_big_t *r, const ref_big_t *a, const ref_big_t *b);
+void ref_big_add(ref_big_t *r, const ref_big_t *a);
+int ref_big_compare(const ref_big_t *a, const ref_big_t *b);
+
+/* Exact squared Euclidean distance between two int32 points. */
+void ref_euclid_square(ref_big_t *r, int32_t qx, int32_t qy, const vor_point_t *s);
+
+/* The nearest site to (qx, qy) under sites' metric; ties: smaller index. */
+uint32_t ref_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy);
+
+/* floor of the distance from (qx, qy) to site k, saturated at UINT32_MAX
+ * (by search: the largest r with r^2 <= d^2). */
+uint32_t ref_distance(const vor_raster_sites_t *sites, uint32_t k, int32_t qx, int32_t qy);
+
+#endif

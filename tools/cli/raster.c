@@ -1,0 +1,216 @@
+/*
+ * vor raster --size W H --origin OX OY --step SX SY [--metric euclid]
+ *            [--band R] SITES (--labels OUT.raw | --png OUT.png)
+ *
+ * Renders the exact discrete Voronoi diagram of SITES ("x y" per line)
+ * with vor_raster in bands of R rows (default 16). --labels writes W*H
+ * little-endian uint32 labels, row-major, row 0 (j = 0) first, each the
+ * index of the pixel's nearest site as in `vor delaunay` (ties: the
+ * smaller index). --png writes an RGB picture, one colour per site and
+ * black boundaries (needs Debian's libstb-dev when built). Bad input:
+ * "error: line N: reason" or "error: reason", exit 2.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "vor_raster.h"
+
+#if defined(__has_include)
+#if __has_include(<stb/stb_image_write.h>)
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wsign-conversion"
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wcast-align"
+#pragma GCC diagnostic ignored "-Wpedantic"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_image_write.h>
+#pragma GCC diagnostic pop
+#define HAVE_STB 1
+#endif
+#endif
+
+typedef struct collect {
+    uint8_t *frame;
+    size_t row_bytes;
+} collect_t;
+
+static int collect_band(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    collect_t *c = user;
+    memcpy(c->frame + (size_t)first_row * c->row_bytes, pixels, (size_t)rows * c->row_bytes);
+    return 0;
+}
+
+static int32_t int_arg(const char *text, const char *what)
+{
+    const char *cursor = text, *why = NULL;
+    int32_t v;
+    if (!cli_int32_field(&cursor, &v, &why) || !cli_at_end(cursor)) {
+        char message[160];
+        snprintf(message, sizeof message, "%s: '%s' is not an int32", what, text);
+        cli_error(message);
+    }
+    return v;
+}
+
+/* Renders one kind into a whole frame (the host has the memory). */
+static uint8_t *render(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                       enum vor_raster_kind kind, uint32_t band_rows, const uint32_t *palette888)
+{
+    size_t bytes = VOR_RASTER_PIXEL_BYTES(kind);
+    collect_t c;
+    c.row_bytes = (size_t)frame->width * bytes;
+    c.frame = malloc(c.row_bytes * frame->height);
+    void *band = malloc(c.row_bytes * band_rows);
+    size_t work_bytes = VOR_RASTER_WORK_BYTES(sites->count, frame->width);
+    void *work = malloc(work_bytes);
+    if (c.frame == NULL || band == NULL || work == NULL) {
+        cli_error("out of memory");
+    }
+    vor_raster_output_t out;
+    memset(&out, 0, sizeof out);
+    out.kind = kind;
+    out.band = band;
+    out.band_bytes = c.row_bytes * band_rows;
+    out.band_rows = band_rows;
+    out.flush = collect_band;
+    out.user = &c;
+    out.palette888 = palette888;
+    int err = vor_raster(frame, sites, &out, work, work_bytes);
+    if (err != VOR_OK) {
+        char message[120];
+        snprintf(message, sizeof message, "the frame cannot be rendered (vor_raster error %d)", err);
+        cli_error(message);
+    }
+    free(work);
+    free(band);
+    return c.frame;
+}
+
+int cli_raster(int argc, char **argv)
+{
+    const char *usage = "usage: vor raster --size W H --origin OX OY --step SX SY "
+                        "[--metric euclid] [--band R] SITES (--labels OUT.raw | --png OUT.png)";
+    vor_raster_frame_t frame = {0, 0, 1, 1, 0, 0};
+    int have_size = 0;
+    uint32_t band_rows = 16;
+    const char *sites_path = NULL, *labels_path = NULL, *png_path = NULL;
+    for (int a = 0; a < argc; a++) {
+        const char *o = argv[a];
+        int more = argc - a - 1;
+        if (strcmp(o, "--size") == 0 && more >= 2) {
+            int32_t w = int_arg(argv[a + 1], "--size"), h = int_arg(argv[a + 2], "--size");
+            if (w <= 0 || h <= 0) {
+                cli_error("--size: width and height must be positive");
+            }
+            frame.width = (uint32_t)w;
+            frame.height = (uint32_t)h;
+            have_size = 1;
+            a += 2;
+        } else if (strcmp(o, "--origin") == 0 && more >= 2) {
+            frame.origin_x = int_arg(argv[a + 1], "--origin");
+            frame.origin_y = int_arg(argv[a + 2], "--origin");
+            a += 2;
+        } else if (strcmp(o, "--step") == 0 && more >= 2) {
+            frame.step_x = int_arg(argv[a + 1], "--step");
+            frame.step_y = int_arg(argv[a + 2], "--step");
+            if (frame.step_x <= 0 || frame.step_y <= 0) {
+                cli_error("--step: steps must be positive");
+            }
+            a += 2;
+        } else if (strcmp(o, "--metric") == 0 && more >= 1) {
+            if (strcmp(argv[a + 1], "euclid") != 0) {
+                cli_error("--metric: only 'euclid' is implemented in this build");
+            }
+            a += 1;
+        } else if (strcmp(o, "--band") == 0 && more >= 1) {
+            int32_t r = int_arg(argv[a + 1], "--band");
+            if (r <= 0) {
+                cli_error("--band: rows must be positive");
+            }
+            band_rows = (uint32_t)r;
+            a += 1;
+        } else if (strcmp(o, "--labels") == 0 && more >= 1) {
+            labels_path = argv[++a];
+        } else if (strcmp(o, "--png") == 0 && more >= 1) {
+            png_path = argv[++a];
+        } else if (o[0] != '-' && sites_path == NULL) {
+            sites_path = o;
+        } else {
+            cli_error(usage);
+        }
+    }
+    if (!have_size || sites_path == NULL || (labels_path == NULL) == (png_path == NULL)) {
+        cli_error(usage);
+    }
+    if (band_rows > frame.height) {
+        band_rows = frame.height;
+    }
+    uint32_t n;
+    vor_point_t *points = cli_read_sites(sites_path, &n);
+    if (n == 0u) {
+        cli_error("no sites");
+    }
+    if ((uint64_t)frame.width * frame.height > 0x10000000u) {
+        cli_error("--size: frame larger than 2^28 pixels");
+    }
+    vor_raster_sites_t sites;
+    memset(&sites, 0, sizeof sites);
+    sites.metric = VOR_METRIC_EUCLID;
+    sites.points = points;
+    sites.count = n;
+    size_t pixels = (size_t)frame.width * frame.height;
+    if (labels_path != NULL) {
+        uint8_t *labels = render(&frame, &sites, VOR_RASTER_LABEL32, band_rows, NULL);
+        FILE *f = fopen(labels_path, "wb");
+        if (f == NULL) {
+            cli_error("cannot write the labels file");
+        }
+        for (size_t p = 0; p < pixels; p++) { /* little-endian whatever the host */
+            uint32_t v;
+            memcpy(&v, labels + 4u * p, 4);
+            uint8_t le[4] = {(uint8_t)v, (uint8_t)(v >> 8), (uint8_t)(v >> 16), (uint8_t)(v >> 24)};
+            fwrite(le, 1, 4, f);
+        }
+        if (fclose(f) != 0) {
+            cli_error("cannot write the labels file");
+        }
+        free(labels);
+    } else {
+#ifdef HAVE_STB
+        uint32_t *palette = malloc((size_t)n * sizeof *palette);
+        if (palette == NULL) {
+            cli_error("out of memory");
+        }
+        for (uint32_t k = 0; k < n; k++) { /* light, well-spread colours */
+            uint32_t h = (k + 1u) * 2654435761u;
+            palette[k] = ((0x80u | (h >> 25)) << 16) | ((0x80u | ((h >> 17) & 0x7Fu)) << 8) |
+                         (0x80u | ((h >> 9) & 0x7Fu));
+        }
+        uint8_t *rgb = render(&frame, &sites, VOR_RASTER_RGB888, band_rows, palette);
+        uint8_t *edges = render(&frame, &sites, VOR_RASTER_BOUNDARY, band_rows, NULL);
+        for (size_t p = 0; p < pixels; p++) {
+            if (edges[p] != 0u) {
+                rgb[3u * p] = rgb[3u * p + 1u] = rgb[3u * p + 2u] = 0;
+            }
+        }
+        if (!stbi_write_png(png_path, (int)frame.width, (int)frame.height, 3, rgb,
+                            (int)(frame.width * 3u))) {
+            cli_error("cannot write the PNG file");
+        }
+        free(edges);
+        free(rgb);
+        free(palette);
+#else
+        cli_error("--png needs stb_image_write (Debian's libstb-dev: tools/cli/install-stb.sh), "
+                  "then rebuild");
+#endif
+    }
+    free(points);
+    return 0;
+}
