@@ -211,8 +211,10 @@ typedef uint32_t vor_index_t;
 #define VOR_TRIANGLE_BYTES ((VOR_INDEX_BITS == 16) ? 12u : 20u)
 
 /* Buckets of the coarse grid that finds a starting site for a query
- * without a hint: one site id per 16 sites (a constant expression). */
-#define VOR_BUCKETS(n) (((size_t)(n) + 15u) / 16u)
+ * without a hint: one site id per VOR_SITES_PER_BUCKET sites (vor_config.h),
+ * a constant expression. */
+#define VOR_BUCKETS(n)                                                         \
+    (((size_t)(n) + (VOR_SITES_PER_BUCKET - 1u)) / VOR_SITES_PER_BUCKET)
 
 /* Arena bytes for a diagram of up to n sites (a constant expression):
  * the coordinates, one triangle for each of the 2n - 2 triangles a

@@ -44,6 +44,16 @@
 #endif
 #endif
 
+/* VOR_SITES_PER_BUCKET: the density of the bucket grid that starts
+ * queries without a hint: VOR_BUCKETS(n) = ceil(n / VOR_SITES_PER_BUCKET)
+ * site ids in the arena. Fewer sites per bucket: shorter walks for cold
+ * queries, more memory (4 / VOR_SITES_PER_BUCKET bytes per site with
+ * 32-bit ids, half that with 16-bit ones). A power of two keeps the
+ * macro's division a shift. */
+#ifndef VOR_SITES_PER_BUCKET
+#define VOR_SITES_PER_BUCKET 16u
+#endif
+
 /* VOR_TRACKER_EDGES: the most Voronoi edges a vor_tracker_t caches for
  * the cell it is in (16 bytes each). A cell with more edges is still
  * answered exactly, through vor_nearest, just not from the cache. Cells of
