@@ -341,6 +341,82 @@ void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t sit
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour);
 
 /* ================================================================== */
+/* Voronoi geometry (read-only: safe from several threads)            */
+/* ================================================================== */
+
+/*
+ * The geometry is that of the true Voronoi diagram of the distinct sites,
+ * computed exactly (multi-word rationals) and rounded only on output: a
+ * coordinate v becomes floor(v + 1/2), the nearest integer with halves
+ * toward +infinity. docs/design.md, "Voronoi geometry", has the widths.
+ */
+
+/* What a rounded vertex is. */
+enum vor_vertex_status {
+    VOR_VERTEX_IN_RANGE = 0,    /* point is the rounded exact vertex */
+    VOR_VERTEX_OUT_OF_RANGE = 1, /* a rounded coordinate is outside int32: that
+                                    coordinate is saturated to INT32_MIN or
+                                    INT32_MAX (never wrapped), the other is
+                                    rounded if it fits */
+    VOR_VERTEX_AT_INFINITY = 2  /* collinear sites: no vertex; point is (0, 0) */
+};
+
+typedef struct vor_vertex {
+    vor_point_t point;
+    enum vor_vertex_status status;
+} vor_vertex_t;
+
+/*
+ * The centre of the circle through a, b, c (their Voronoi vertex), rounded
+ * as above; AT_INFINITY when they are collinear (or two coincide).
+ *   VOR_ERR_ARG  a pointer is NULL
+ */
+int vor_circumcentre(const vor_point_t *a, const vor_point_t *b,
+                     const vor_point_t *c, vor_vertex_t *out);
+
+/*
+ * vor_circumcentre of sites a, b, c of d (e.g. a triangle from
+ * vor_triangles_next).
+ *   VOR_ERR_ARG  d or out NULL, an id >= the number of site ids
+ */
+int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c,
+                       vor_vertex_t *out);
+
+enum vor_edge_kind {
+    VOR_EDGE_SEGMENT = 0, /* from `from` to `to` */
+    VOR_EDGE_RAY = 1,     /* from `from` in direction (dx, dy), without end */
+    VOR_EDGE_LINE = 2     /* the whole bisector: through `from` (the rounded
+                             midpoint of the sites), direction (dx, dy) */
+};
+
+/* One edge of the Voronoi diagram: the part of the bisector of two sites
+ * that is nearer to them than to any other site. Walking it from `from`
+ * in direction (dx, dy), the cell of sites[0] is on the left and the cell
+ * of sites[1] on the right. (dx, dy) is exact: sites[1] - sites[0] turned
+ * a quarter counterclockwise. `to` is AT_INFINITY except for segments. */
+typedef struct vor_edge {
+    uint32_t sites[2];
+    enum vor_edge_kind kind;
+    vor_vertex_t from;
+    vor_vertex_t to;
+    int64_t dx, dy;
+} vor_edge_t;
+
+/* Iterator over the edges of the Voronoi diagram: each edge of positive
+ * length exactly once (cocircular sites give no zero-length edges). With
+ * all sites collinear the edges are parallel lines; with one site, none.
+ * Two exact endpoints of a segment may round to the same point. */
+typedef struct vor_edge_iter {
+    const vor_t *d;
+    uint32_t slot;
+    uint32_t edge;
+} vor_edge_iter_t;
+
+void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d);
+/* Returns 1 and fills *edge while edges remain, then 0. */
+int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge);
+
+/* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */
 /* ================================================================== */
 

@@ -7,6 +7,7 @@ int main(void)
     test_predicates();
     test_mesh();
     test_queries();
+    test_geometry();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

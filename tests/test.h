@@ -44,5 +44,6 @@ int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);
 void test_predicates(void);
 void test_mesh(void);
 void test_queries(void);
+void test_geometry(void);
 
 #endif

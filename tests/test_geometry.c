@@ -1,0 +1,577 @@
+/*
+ * test_geometry.c - Voronoi vertices, edges against
+ * independent references:
+ *   - vertices: the seed's untranslated circumcentre formula (003 (2.1.4))
+ *     in the test's own 256-bit integers, and the rounding rule checked as
+ *     an exact inequality;
+ *   - edges: brute force over every pair of sites, each bisector cut by
+ *     every other site with exact predicates.
+ */
+#include "test.h"
+#include "vor.h"
+
+#define GEO_SITES 48u
+#ifndef GEO_DEGENERATE_ROUNDS
+#define GEO_DEGENERATE_ROUNDS 40u
+#endif
+
+static vor_point_t sites[GEO_SITES];
+static uint32_t first_of[GEO_SITES];
+static uint8_t arena[VOR_ARENA_BYTES(GEO_SITES)] __attribute__((aligned(8)));
+
+/* ------------------------------------------------------------------ */
+/* 256-bit two's complement integers, for the reference formulas       */
+
+#define BIG_LIMBS 8u
+typedef struct {
+    uint32_t v[BIG_LIMBS];
+} big_t;
+
+static big_t big_from(int64_t x)
+{
+    big_t r;
+    uint64_t u = (uint64_t)x;
+    for (unsigned i = 0; i < BIG_LIMBS; i++) {
+        r.v[i] = (i == 0) ? (uint32_t)u : (i == 1) ? (uint32_t)(u >> 32) : (x < 0 ? ~0u : 0u);
+    }
+    return r;
+}
+
+static big_t big_add(big_t a, big_t b)
+{
+    uint64_t carry = 0;
+    for (unsigned i = 0; i < BIG_LIMBS; i++) {
+        uint64_t s = (uint64_t)a.v[i] + b.v[i] + carry;
+        a.v[i] = (uint32_t)s;
+        carry = s >> 32;
+    }
+    return a;
+}
+
+static big_t big_neg(big_t a)
+{
+    for (unsigned i = 0; i < BIG_LIMBS; i++) {
+        a.v[i] = ~a.v[i];
+    }
+    return big_add(a, big_from(1));
+}
+
+static big_t big_sub(big_t a, big_t b)
+{
+    return big_add(a, big_neg(b));
+}
+
+static big_t big_mul(big_t a, big_t b)
+{
+    big_t r = big_from(0);
+    for (unsigned i = 0; i < BIG_LIMBS; i++) {
+        uint64_t carry = 0;
+        for (unsigned j = 0; i + j < BIG_LIMBS; j++) {
+            uint64_t t = (uint64_t)a.v[i] * b.v[j] + r.v[i + j] + carry;
+            r.v[i + j] = (uint32_t)t;
+            carry = t >> 32;
+        }
+    }
+    return r;
+}
+
+static int big_sign(big_t a)
+{
+    if (a.v[BIG_LIMBS - 1] >> 31) {
+        return -1;
+    }
+    for (unsigned i = 0; i < BIG_LIMBS; i++) {
+        if (a.v[i] != 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int big_compare(big_t a, big_t b)
+{
+    return big_sign(big_sub(a, b));
+}
+
+/* det [[1 a1 a2] [1 b1 b2] [1 c1 c2]] of raw entries */
+static big_t det3(big_t a1, big_t a2, big_t b1, big_t b2, big_t c1, big_t c2)
+{
+    big_t r = big_sub(big_mul(b1, c2), big_mul(c1, b2));
+    r = big_sub(r, big_sub(big_mul(a1, c2), big_mul(c1, a2)));
+    return big_add(r, big_sub(big_mul(a1, b2), big_mul(b1, a2)));
+}
+
+/* Expected rounding of the coordinate num / den (den > 0) to
+ * floor(v + 1/2): -1 below int32, 1 above, else 0 with *value. Here
+ * num / den = 2v, the form of the seed's formula. */
+static int expected_round(big_t twice_num, big_t den, int32_t *value)
+{
+    /* v + 1/2 >= 2^31  <=>  2v >= 2^32 - 1 */
+    if (big_compare(twice_num, big_mul(big_from(4294967295ll), den)) >= 0) {
+        return 1;
+    }
+    /* v + 1/2 < -2^31  <=>  2v < -2^32 - 1 */
+    if (big_compare(twice_num, big_mul(big_from(-4294967297ll), den)) < 0) {
+        return -1;
+    }
+    /* binary search for X with (2X - 1) den <= 2v den < (2X + 1) den */
+    int64_t lo = INT32_MIN, hi = INT32_MAX;
+    while (lo < hi) {
+        int64_t mid = lo + (hi - lo + 1) / 2;
+        if (big_compare(big_mul(big_from(2 * mid - 1), den), twice_num) <= 0) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    *value = (int32_t)lo;
+    return 0;
+}
+
+/* The circumcentre by the seed's formula (2.1.4), (-B / 2A, C / 2A) with
+ * A, B, C 3x3 determinants of the raw coordinates, checked against
+ * vor_circumcentre: the rounding inequality, or the flag. */
+static bool check_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, const char *what)
+{
+    vor_vertex_t got;
+    int err = vor_circumcentre(&a, &b, &c, &got);
+    const vor_point_t *p[3] = {&a, &b, &c};
+    big_t x[3], y[3], l[3];
+    for (unsigned i = 0; i < 3; i++) {
+        x[i] = big_from(p[i]->x);
+        y[i] = big_from(p[i]->y);
+        l[i] = big_add(big_mul(x[i], x[i]), big_mul(y[i], y[i]));
+    }
+    big_t A = det3(x[0], y[0], x[1], y[1], x[2], y[2]);
+    big_t B = det3(y[0], l[0], y[1], l[1], y[2], l[2]);
+    big_t C = det3(x[0], l[0], x[1], l[1], x[2], l[2]);
+    if (big_sign(A) == 0) {
+        return CHECK(err == VOR_OK && got.status == VOR_VERTEX_AT_INFINITY,
+                     "%s: collinear (%d,%d) (%d,%d) (%d,%d): status %d", what, a.x, a.y, b.x, b.y,
+                     c.x, c.y, (int)got.status);
+    }
+    if (big_sign(A) < 0) {
+        A = big_neg(A);
+        B = big_neg(B);
+        C = big_neg(C);
+    }
+    /* 2 cx = -B / A, 2 cy = C / A */
+    int32_t ex = 0, ey = 0;
+    int rx = expected_round(big_neg(B), A, &ex);
+    int ry = expected_round(C, A, &ey);
+    bool ok = err == VOR_OK;
+    if (rx == 0 && ry == 0) {
+        ok = ok && got.status == VOR_VERTEX_IN_RANGE && got.point.x == ex && got.point.y == ey;
+    } else {
+        ok = ok && got.status == VOR_VERTEX_OUT_OF_RANGE;
+        ok = ok && got.point.x == (rx > 0 ? INT32_MAX : rx < 0 ? INT32_MIN : ex);
+        ok = ok && got.point.y == (ry > 0 ? INT32_MAX : ry < 0 ? INT32_MIN : ey);
+    }
+    return CHECK(ok, "%s: circumcentre of (%d,%d) (%d,%d) (%d,%d): got (%d,%d) status %d, "
+                     "expected (%d,%d) range %d %d",
+                 what, a.x, a.y, b.x, b.y, c.x, c.y, got.point.x, got.point.y, (int)got.status, ex,
+                 ey, rx, ry);
+}
+
+static void test_vertices(test_rng_t *rng)
+{
+    unsigned failures = 0;
+    for (unsigned k = 0; k < 1500u && failures < 5u; k++) {
+        vor_point_t p[3];
+        unsigned family = k % 6u;
+        for (unsigned i = 0; i < 3; i++) {
+            switch (family) {
+            case 0: /* anywhere */
+                p[i].x = (int32_t)test_rng_u32(rng);
+                p[i].y = (int32_t)test_rng_u32(rng);
+                break;
+            case 1: /* small: halves of .5 are frequent */
+                p[i].x = test_rng_range(rng, -4, 4);
+                p[i].y = test_rng_range(rng, -4, 4);
+                break;
+            case 2: /* nearly collinear, far out: vertices out of range */
+                p[i].x = (int32_t)test_rng_u32(rng);
+                p[i].y = (int32_t)(p[i].x / 2 + test_rng_range(rng, -1, 1));
+                break;
+            case 3: /* corners of the range */
+                p[i].x = (test_rng_u32(rng) & 1u) ? INT32_MAX - test_rng_range(rng, 0, 2)
+                                                  : INT32_MIN + test_rng_range(rng, 0, 2);
+                p[i].y = (test_rng_u32(rng) & 1u) ? INT32_MAX - test_rng_range(rng, 0, 2)
+                                                  : INT32_MIN + test_rng_range(rng, 0, 2);
+                break;
+            case 4: /* a small triangle far from the origin */
+                p[i].x = 2000000000 + test_rng_range(rng, -1000, 1000);
+                p[i].y = -2000000000 + test_rng_range(rng, -1000, 1000);
+                break;
+            default: /* exactly collinear */
+                p[i].x = 3 * test_rng_range(rng, -100000, 100000);
+                p[i].y = -7 * (p[i].x / 3) + 11;
+                break;
+            }
+        }
+        failures += check_circumcentre(p[0], p[1], p[2], "random") ? 0u : 1u;
+    }
+    /* exact halves round up (toward +infinity): (0,0) (1,0) (0,1) -> (1/2, 1/2) */
+    vor_point_t a = {0, 0}, b = {1, 0}, c = {0, 1};
+    vor_vertex_t v;
+    CHECK(vor_circumcentre(&a, &b, &c, &v) == VOR_OK && v.point.x == 1 && v.point.y == 1 &&
+              v.status == VOR_VERTEX_IN_RANGE,
+          "(1/2, 1/2) rounds to (1, 1): (%d, %d)", v.point.x, v.point.y);
+    a.x = -1; /* (-1,0) (0,0)... centre (-1/2, 1/2) */
+    b.x = 0;
+    c.x = -1;
+    CHECK(vor_circumcentre(&a, &b, &c, &v) == VOR_OK && v.point.x == 0 && v.point.y == 1,
+          "(-1/2, 1/2) rounds to (0, 1): (%d, %d)", v.point.x, v.point.y);
+    CHECK(vor_circumcentre(NULL, &b, &c, &v) == VOR_ERR_ARG, "NULL point");
+    CHECK(vor_circumcentre(&a, &b, &c, NULL) == VOR_ERR_ARG, "NULL result");
+    vor_point_t far1 = {INT32_MIN, INT32_MIN}, far2 = {INT32_MAX, INT32_MIN + 1},
+                far3 = {INT32_MAX, INT32_MIN};
+    check_circumcentre(far1, far2, far3, "thin, out of range");
+}
+
+/* ------------------------------------------------------------------ */
+/* Edges                                                               */
+
+static bool strictly_inside(vor_point_t a, vor_point_t m, vor_point_t b)
+{
+    /* m on segment ab (collinear), not an end: by coordinates */
+    int64_t lo_x = a.x < b.x ? a.x : b.x, hi_x = a.x < b.x ? b.x : a.x;
+    int64_t lo_y = a.y < b.y ? a.y : b.y, hi_y = a.y < b.y ? b.y : a.y;
+    bool ends = (m.x == a.x && m.y == a.y) || (m.x == b.x && m.y == b.y);
+    return !ends && m.x >= lo_x && m.x <= hi_x && m.y >= lo_y && m.y <= hi_y;
+}
+
+static int orient(uint32_t a, uint32_t b, uint32_t c)
+{
+    return vor_orient2d(&sites[a], &sites[b], &sites[c], NULL);
+}
+
+static bool same_vertex(vor_vertex_t a, vor_vertex_t b)
+{
+    return a.status == b.status && a.point.x == b.point.x && a.point.y == b.point.y;
+}
+
+/* The brute-force Voronoi edge of sites p, q: the bisector, cut by every
+ * other site r: on the left of p -> q, the edge ends where the circle
+ * through p, q grows over r (the first such r: incircle); on the right it
+ * starts at the last. Returns false when nothing of positive length is
+ * left. The edge is put in the library's orientation. */
+static bool brute_edge(uint32_t n, uint32_t p, uint32_t q, vor_edge_t *e)
+{
+    uint32_t lo = GEO_SITES, hi = GEO_SITES;
+    for (uint32_t r = 0; r < n; r++) {
+        if (first_of[r] != r || r == p || r == q) {
+            continue;
+        }
+        int o = orient(p, q, r);
+        if (o == 0) {
+            if (strictly_inside(sites[p], sites[r], sites[q])) {
+                return false;
+            }
+        } else if (o > 0) {
+            if (hi == GEO_SITES || vor_incircle(&sites[p], &sites[q], &sites[hi], &sites[r], NULL) > 0) {
+                hi = r;
+            }
+        } else if (lo == GEO_SITES ||
+                   vor_incircle(&sites[q], &sites[p], &sites[lo], &sites[r], NULL) > 0) {
+            lo = r;
+        }
+    }
+    if (lo != GEO_SITES && hi != GEO_SITES &&
+        vor_incircle(&sites[p], &sites[q], &sites[hi], &sites[lo], NULL) >= 0) {
+        return false; /* empty or a single point */
+    }
+    if (lo == GEO_SITES && hi != GEO_SITES) { /* a ray from its end: turn round */
+        uint32_t t = p;
+        p = q;
+        q = t;
+        lo = hi;
+        hi = GEO_SITES;
+    }
+    e->sites[0] = p;
+    e->sites[1] = q;
+    e->dx = -((int64_t)sites[q].y - sites[p].y);
+    e->dy = (int64_t)sites[q].x - sites[p].x;
+    e->to.status = VOR_VERTEX_AT_INFINITY;
+    e->to.point.x = e->to.point.y = 0;
+    if (lo == GEO_SITES) {
+        e->kind = VOR_EDGE_LINE;
+        /* floor((p + q) / 2 + 1/2), computed with a plain division */
+        int64_t sx = (int64_t)sites[p].x + sites[q].x + 1, sy = (int64_t)sites[p].y + sites[q].y + 1;
+        e->from.point.x = (int32_t)((sx >= 0) ? sx / 2 : -((-sx + 1) / 2));
+        e->from.point.y = (int32_t)((sy >= 0) ? sy / 2 : -((-sy + 1) / 2));
+        e->from.status = VOR_VERTEX_IN_RANGE;
+        return true;
+    }
+    vor_circumcentre(&sites[p], &sites[q], &sites[lo], &e->from);
+    if (hi != GEO_SITES) {
+        e->kind = VOR_EDGE_SEGMENT;
+        vor_circumcentre(&sites[p], &sites[q], &sites[hi], &e->to);
+    } else {
+        e->kind = VOR_EDGE_RAY;
+    }
+    return true;
+}
+
+/* Segments and lines in the order sites[0] < sites[1]. */
+static void normalise_edge(vor_edge_t *e)
+{
+    if (e->kind != VOR_EDGE_RAY && e->sites[0] > e->sites[1]) {
+        uint32_t t = e->sites[0];
+        e->sites[0] = e->sites[1];
+        e->sites[1] = t;
+        e->dx = -e->dx;
+        e->dy = -e->dy;
+        if (e->kind == VOR_EDGE_SEGMENT) {
+            vor_vertex_t v = e->from;
+            e->from = e->to;
+            e->to = v;
+        }
+    }
+}
+
+static bool same_edge(const vor_edge_t *a, const vor_edge_t *b)
+{
+    return a->sites[0] == b->sites[0] && a->sites[1] == b->sites[1] && a->kind == b->kind &&
+           same_vertex(a->from, b->from) && same_vertex(a->to, b->to) && a->dx == b->dx &&
+           a->dy == b->dy;
+}
+
+static void check_edges(const vor_t *d, uint32_t n, const char *name)
+{
+    static vor_edge_t expected[3u * GEO_SITES];
+    static bool matched[3u * GEO_SITES];
+    uint32_t count = 0;
+    for (uint32_t p = 0; p < n; p++) {
+        for (uint32_t q = p + 1u; q < n; q++) {
+            if (first_of[p] == p && first_of[q] == q && count < 3u * GEO_SITES &&
+                brute_edge(n, p, q, &expected[count])) {
+                normalise_edge(&expected[count]);
+                matched[count] = false;
+                count++;
+            }
+        }
+    }
+    vor_edge_iter_t it;
+    vor_edge_t e;
+    uint32_t got = 0, wrong = 0;
+    vor_edges_begin(&it, d);
+    while (vor_edges_next(&it, &e)) {
+        got++;
+        bool direction_ok = e.dx == -((int64_t)sites[e.sites[1]].y - sites[e.sites[0]].y) &&
+                            e.dy == (int64_t)sites[e.sites[1]].x - sites[e.sites[0]].x;
+        normalise_edge(&e);
+        bool found = false;
+        for (uint32_t k = 0; k < count && !found; k++) {
+            if (!matched[k] && same_edge(&e, &expected[k])) {
+                matched[k] = found = true;
+            }
+        }
+        if (!found || !direction_ok) {
+            wrong++;
+            if (wrong <= 2u) {
+                CHECK(false, "%s: edge %u-%u kind %d from (%d,%d)/%d to (%d,%d)/%d not brute force",
+                      name, e.sites[0], e.sites[1], (int)e.kind, e.from.point.x, e.from.point.y,
+                      (int)e.from.status, e.to.point.x, e.to.point.y, (int)e.to.status);
+            }
+        }
+    }
+    CHECK(wrong == 0 && got == count, "%s: %u edges, %u expected, %u wrong", name, got, count,
+          wrong);
+}
+
+/* stand-in for the cell box of the later tests: the sets keep their boxes */
+typedef struct {
+    int32_t x0, y0, x1, y1;
+} vor_box_t;
+
+static bool build(vor_t *d, uint32_t n)
+{
+    return CHECK(vor_init(d, arena, sizeof arena, GEO_SITES) == VOR_OK &&
+                     vor_build(d, sites, n, NULL, first_of) == VOR_OK,
+                 "build %u sites", n);
+}
+
+static void check_all(uint32_t n, vor_box_t box, const char *name)
+{
+    vor_t d;
+    (void)box;
+    if (!build(&d, n)) {
+        return;
+    }
+    check_edges(&d, n, name);
+}
+
+static void test_sets(test_rng_t *rng)
+{
+    vor_box_t box = {-(1 << 21), -(1 << 21), 1 << 21, 1 << 21};
+    for (unsigned round = 0; round < 6u; round++) {
+        uint32_t n = 3u + round * 8u;
+        for (uint32_t i = 0; i < n; i++) {
+            sites[i].x = test_rng_range(rng, -(1 << 20), 1 << 20);
+            sites[i].y = test_rng_range(rng, -(1 << 20), 1 << 20);
+        }
+        check_all(n, box, "random");
+    }
+    /* small degenerate sets, scaled: lattices (cocircular), lines
+     * (collinear, also along the hull), circles, duplicates */
+    for (unsigned round = 0; round < GEO_DEGENERATE_ROUNDS; round++) {
+        uint32_t n = 2u + test_rng_u32(rng) % 16u;
+        int32_t a = test_rng_range(rng, -3, 3), b = test_rng_range(rng, -3, 3);
+        static const int32_t circle[12][2] = {{5, 0}, {4, 3}, {3, 4}, {0, 5}, {-3, 4}, {-4, 3},
+                                              {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+        for (uint32_t i = 0; i < n; i++) {
+            int32_t t = test_rng_range(rng, -5, 5);
+            uint32_t c = test_rng_u32(rng) % 12u;
+            switch (round % 4u) {
+            case 0:
+                sites[i].x = test_rng_range(rng, -4, 4);
+                sites[i].y = test_rng_range(rng, -4, 4);
+                break;
+            case 1:
+                sites[i].x = a * t + ((test_rng_u32(rng) % 4u == 0u) ? 1 : 0);
+                sites[i].y = b * t;
+                break;
+            case 2:
+                sites[i].x = circle[c][0];
+                sites[i].y = circle[c][1];
+                break;
+            default:
+                sites[i].x = test_rng_range(rng, 0, 6);
+                sites[i].y = (test_rng_u32(rng) % 2u == 0u) ? 0 : test_rng_range(rng, 0, 3);
+                break;
+            }
+            sites[i].x *= 1000;
+            sites[i].y *= 1000;
+        }
+        vor_box_t b2 = {test_rng_range(rng, -9000, -1000), test_rng_range(rng, -9000, -1000),
+                        test_rng_range(rng, 1000, 9000), test_rng_range(rng, 1000, 9000)};
+        check_all(n, b2, "degenerate");
+    }
+    /* a grid: cocircular squares, duplicates */
+    for (uint32_t i = 0; i < 36u; i++) {
+        sites[i].x = (int32_t)(i % 6u) * 1000 - 2500;
+        sites[i].y = (int32_t)(i / 6u) * 1000 - 2500;
+    }
+    for (uint32_t i = 36; i < 40u; i++) {
+        sites[i] = sites[test_rng_u32(rng) % 36u];
+    }
+    vor_box_t grid_box = {-4000, -3500, 3100, 3000};
+    check_all(40, grid_box, "grid");
+    /* collinear with duplicates: strips */
+    for (uint32_t i = 0; i < 20u; i++) {
+        int32_t t = test_rng_range(rng, -50, 50);
+        sites[i].x = 7 * t;
+        sites[i].y = -3 * t + 5;
+    }
+    vor_box_t line_box = {-400, -200, 400, 200};
+    check_all(20, line_box, "collinear");
+    {
+        vor_t d;
+        sites[0].x = 0, sites[0].y = 0;
+        sites[1].x = 10, sites[1].y = 0;
+        sites[2].x = 30, sites[2].y = 0;
+        if (build(&d, 3)) {
+            vor_edge_iter_t it;
+            vor_edge_t e;
+            uint32_t lines = 0;
+            vor_edges_begin(&it, &d);
+            while (vor_edges_next(&it, &e)) {
+                lines += (e.kind == VOR_EDGE_LINE) ? 1u : 100u;
+            }
+            CHECK(lines == 2u, "strips: two line edges (%u)", lines);
+        }
+    }
+    /* a cross of four cocircular sites: four rays from the origin */
+    {
+        vor_t d;
+        vor_point_t cross[4] = {{10, 0}, {0, 10}, {-10, 0}, {0, -10}};
+        for (uint32_t i = 0; i < 4u; i++) {
+            sites[i] = cross[i];
+        }
+        if (build(&d, 4)) {
+            vor_box_t b = {-20, -20, 20, 20};
+            check_all(4, b, "cross");
+        }
+    }
+    /* sites on a circle: every Voronoi edge is a ray from its centre */
+    {
+        uint32_t n = 0;
+        for (int32_t x = -25; x <= 25 && n < GEO_SITES; x++) {
+            for (int32_t y = -25; y <= 25 && n < GEO_SITES; y++) {
+                if (x * x + y * y == 625) {
+                    sites[n].x = x * 40;
+                    sites[n].y = y * 40;
+                    n++;
+                }
+            }
+        }
+        vor_box_t b = {-3000, -2000, 2500, 3000};
+        check_all(n, b, "circle");
+    }
+    /* huge coordinates: vertices far outside int32 */
+    {
+        vor_point_t huge[6] = {{INT32_MIN, INT32_MIN}, {INT32_MAX, INT32_MIN},
+                               {INT32_MIN, INT32_MAX}, {INT32_MAX, INT32_MAX - 1},
+                               {0, INT32_MIN + 1},     {1, INT32_MIN}};
+        for (uint32_t i = 0; i < 6u; i++) {
+            sites[i] = huge[i];
+        }
+        vor_t d;
+        if (build(&d, 6)) {
+            check_edges(&d, 6, "huge");
+            vor_edge_iter_t it;
+            vor_edge_t e;
+            uint32_t out = 0;
+            vor_edges_begin(&it, &d);
+            while (vor_edges_next(&it, &e)) {
+                out += (e.from.status == VOR_VERTEX_OUT_OF_RANGE ||
+                        e.to.status == VOR_VERTEX_OUT_OF_RANGE) ? 1u : 0u;
+            }
+            CHECK(out > 0u, "huge: some vertex is out of range and flagged");
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Small diagrams and errors                                           */
+
+static void test_errors(void)
+{
+    vor_t d;
+    uint32_t s;
+    CHECK(vor_init(&d, arena, sizeof arena, GEO_SITES) == VOR_OK, "init");
+    /* no sites: nothing anywhere */
+    vor_edge_iter_t ei;
+    vor_edge_t e;
+    vor_edges_begin(&ei, &d);
+    CHECK(vor_edges_next(&ei, &e) == 0, "no sites: no edges");
+    (void)s;
+    /* one site (and its duplicate): no edges */
+    vor_point_t points[4] = {{40, 60}, {40, 60}, {60, 40}, {90, 95}};
+    CHECK(vor_build(&d, points, 2, NULL, NULL) == VOR_OK, "build one site");
+    vor_edges_begin(&ei, &d);
+    CHECK(vor_edges_next(&ei, &e) == 0, "one site: no edges");
+    /* two sites: a line */
+    CHECK(vor_build(&d, points, 3, NULL, NULL) == VOR_OK, "build two sites");
+    vor_edges_begin(&ei, &d);
+    CHECK(vor_edges_next(&ei, &e) == 1 && e.kind == VOR_EDGE_LINE && e.from.point.x == 50 &&
+              e.from.point.y == 50 && vor_edges_next(&ei, &e) == 0,
+          "two sites: one line");
+    CHECK(vor_build(&d, points, 4, NULL, NULL) == VOR_OK, "build three sites");
+    vor_vertex_t v;
+    CHECK(vor_voronoi_vertex(&d, 0, 2, 3, &v) == VOR_OK && v.status == VOR_VERTEX_IN_RANGE,
+          "vertex of three sites");
+    CHECK(vor_voronoi_vertex(&d, 0, 2, 4, &v) == VOR_ERR_ARG, "vertex of an unknown id");
+    CHECK(vor_voronoi_vertex(&d, 0, 1, 2, &v) == VOR_OK && v.status == VOR_VERTEX_AT_INFINITY,
+          "a duplicate's vertex is at infinity");
+}
+
+void test_geometry(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 4242);
+    test_vertices(&rng);
+    test_errors();
+    test_sets(&rng);
+}
