@@ -416,6 +416,24 @@ void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d);
 /* Returns 1 and fills *edge while edges remain, then 0. */
 int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge);
 
+/* Iterator over the sites on the boundary of the convex hull,
+ * counterclockwise, each once, starting at the lowest one (smallest y,
+ * then smallest x). Sites in the middle of a hull edge are included: their
+ * cells are unbounded too. All sites collinear: every site, in order along
+ * the line from the lowest end; one site: that site. */
+typedef struct vor_hull_iter {
+    const vor_t *d;
+    uint32_t ghost; /* the current hull edge's triangle at infinity */
+    uint32_t site;  /* the next site to return */
+    uint32_t first;
+    uint32_t left;  /* at most this many sites remain */
+    uint32_t collinear;
+} vor_hull_iter_t;
+
+void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d);
+/* Returns 1 and sets *site while hull sites remain, then 0. */
+int vor_hull_next(vor_hull_iter_t *it, uint32_t *site);
+
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */
 /* ================================================================== */

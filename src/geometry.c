@@ -1,6 +1,7 @@
 /*
  * geometry.c - the Voronoi diagram's geometry, read from the Delaunay mesh:
- * vertices (circumcentres) and edges. Read-only, like queries.c.
+ * vertices (circumcentres), edges and the convex hull. Read-only, like
+ * queries.c.
  *
  * The geometry is that of the true Voronoi diagram of the distinct sites,
  * while the mesh is the Delaunay triangulation under the symbolic
@@ -371,4 +372,140 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
     it->slot = end;
     it->edge = 0;
     return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Convex hull                                                         */
+
+static bool lower(const vor_point_t *a, const vor_point_t *b)
+{
+    return a->y < b->y || (a->y == b->y && a->x < b->x);
+}
+
+/* The triangle at infinity in `slot` is (u, w, infinity) in counterclockwise
+ * order, so the outside is left of u -> w and the hull runs w -> u
+ * counterclockwise. The next hull edge's triangle (x, u, infinity) shares
+ * the edge (u, infinity), opposite w. */
+static void ghost_edge(const vor_t *d, uint32_t slot, uint32_t *w, uint32_t *u, uint32_t *next)
+{
+    const vor__tri_t *g = &d->triangles[slot];
+    unsigned k = vor__vertex_index(g, VOR__INFINITE);
+    *u = vor__vertex(g, vor__next(k));
+    *w = vor__vertex(g, vor__prev(k));
+    *next = g->n[vor__prev(k)];
+}
+
+/* The site with the smallest (y, x): from any site, step to a lower
+ * neighbour while there is one. In a triangulation a site that is not the
+ * lowest has a lower neighbour (the direction to the lowest site lies in
+ * one of its triangles), and each step is strictly lower, so this ends
+ * within vertex_count steps at the lowest site. */
+static uint32_t lowest_site(const vor_t *d)
+{
+    const vor_point_t *s = d->sites;
+    uint32_t best = d->last_site;
+    for (uint32_t step = 0; step < d->vertex_count; step++) {
+        uint32_t from = best, n;
+        vor_neighbour_iter_t it;
+        vor_neighbours_begin(&it, d, from);
+        while (vor_neighbours_next(&it, &n)) {
+            if (lower(&s[n], &s[best])) {
+                best = n;
+            }
+        }
+        if (best == from) {
+            break;
+        }
+    }
+    return best;
+}
+
+void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
+{
+    it->d = d;
+    it->left = 0;
+    it->ghost = VOR__NONE;
+    it->collinear = 0;
+    it->site = it->first = d->last_site;
+    if (d->vertex_count < 2u) {
+        it->left = d->vertex_count; /* one site: itself */
+        return;
+    }
+    const vor_point_t *s = d->sites;
+    uint32_t low = lowest_site(d);
+    /* its hull edge low -> u: the triangle (u, low, infinity) of its fan,
+     * found turning around it (fan size <= vertex_count) */
+    uint32_t slot = low;
+    for (uint32_t step = 0; step <= d->vertex_count; step++) {
+        const vor__tri_t *t = &d->triangles[slot];
+        unsigned i = vor__vertex_index(t, (vor_index_t)low);
+        if (i == 3u) {
+            return; /* only on a broken mesh */
+        }
+        if (vor__vertex(t, vor__next(i)) == VOR__INFINITE) {
+            it->ghost = slot;
+            break;
+        }
+        slot = t->n[vor__next(i)];
+    }
+    if (it->ghost == VOR__NONE) {
+        return;
+    }
+    /* all sites are collinear exactly when the hull's corners are: one
+     * turn around the hull (at most vertex_count edges) */
+    uint32_t w, u, next, g = it->ghost;
+    ghost_edge(d, g, &w, &u, &next);
+    uint32_t second = u;
+    it->collinear = 1;
+    for (uint32_t step = 0; step < d->vertex_count && it->collinear; step++) {
+        ghost_edge(d, next, &w, &u, &next);
+        if (vor_orient2d(&s[low], &s[second], &s[u], NULL) != 0) {
+            it->collinear = 0;
+        }
+        if (next == g) {
+            break;
+        }
+    }
+    it->site = it->first = low;
+    /* collinear: every site once, up the line; else back to the start */
+    it->left = it->collinear ? d->vertex_count : d->vertex_count + 1u;
+}
+
+int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
+{
+    const vor_t *d = it->d;
+    if (it->left == 0u) {
+        return 0;
+    }
+    *site = it->site;
+    it->left--;
+    if (it->ghost == VOR__NONE) {
+        it->left = 0;
+        return 1;
+    }
+    /* advance: along the hull edge w -> u, the next site between site and u
+     * on the segment (a Delaunay neighbour: consecutive sites on a hull
+     * edge have a Voronoi ray in common), else u and the next hull edge */
+    const vor_point_t *s = d->sites;
+    uint32_t w, u, next, n, best = VOR__NONE;
+    ghost_edge(d, it->ghost, &w, &u, &next);
+    vor_neighbour_iter_t ni;
+    vor_neighbours_begin(&ni, d, it->site);
+    while (vor_neighbours_next(&ni, &n)) {
+        if (n != u && vor_orient2d(&s[it->site], &s[u], &s[n], NULL) == 0 &&
+            strictly_between(&s[it->site], &s[n], &s[u]) &&
+            (best == VOR__NONE || strictly_between(&s[it->site], &s[n], &s[best]))) {
+            best = n;
+        }
+    }
+    if (best != VOR__NONE) {
+        it->site = best;
+    } else {
+        it->site = u;
+        it->ghost = next;
+    }
+    if (!it->collinear && it->site == it->first) {
+        it->left = 0;
+    }
+    return 1;
 }

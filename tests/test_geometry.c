@@ -1,11 +1,13 @@
 /*
- * test_geometry.c - Voronoi vertices, edges against
+ * test_geometry.c - Voronoi vertices, edges, hull against
  * independent references:
  *   - vertices: the seed's untranslated circumcentre formula (003 (2.1.4))
  *     in the test's own 256-bit integers, and the rounding rule checked as
  *     an exact inequality;
  *   - edges: brute force over every pair of sites, each bisector cut by
- *     every other site with exact predicates.
+ *     every other site with exact predicates;
+ *   - hull: brute force over every pair (a supporting line) and the
+ *     order checked edge by edge.
  */
 #include "test.h"
 #include "vor.h"
@@ -380,6 +382,107 @@ static void check_edges(const vor_t *d, uint32_t n, const char *name)
           wrong);
 }
 
+/* ------------------------------------------------------------------ */
+/* Hull                                                                */
+
+static bool lower_point(vor_point_t a, vor_point_t b)
+{
+    return a.y < b.y || (a.y == b.y && a.x < b.x);
+}
+
+static void check_hull(const vor_t *d, uint32_t n, const char *name)
+{
+    /* brute force: s is on the boundary when it lies on a segment ab with
+     * every site on one closed side of line ab */
+    static bool on_hull[GEO_SITES];
+    uint32_t expected = 0, distinct = 0;
+    bool all_collinear = true;
+    uint32_t any_a = GEO_SITES, any_b = GEO_SITES;
+    for (uint32_t i = 0; i < n; i++) {
+        on_hull[i] = false;
+        if (first_of[i] != i) {
+            continue;
+        }
+        distinct++;
+        if (any_a == GEO_SITES) {
+            any_a = i;
+        } else if (any_b == GEO_SITES) {
+            any_b = i;
+        } else if (orient(any_a, any_b, i) != 0) {
+            all_collinear = false;
+        }
+    }
+    for (uint32_t a = 0; a < n; a++) {
+        for (uint32_t b = 0; b < n; b++) {
+            if (a == b || first_of[a] != a || first_of[b] != b) {
+                continue;
+            }
+            bool supporting = true;
+            for (uint32_t x = 0; x < n && supporting; x++) {
+                supporting = first_of[x] != x || orient(a, b, x) >= 0;
+            }
+            for (uint32_t s = 0; s < n && supporting; s++) {
+                if (first_of[s] == s && (s == a || s == b ||
+                                         (orient(a, b, s) == 0 && strictly_inside(sites[a], sites[s], sites[b])))) {
+                    on_hull[s] = true;
+                }
+            }
+        }
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        expected += on_hull[i] ? 1u : 0u;
+    }
+    if (distinct == 1u) {
+        expected = 1u;
+        on_hull[any_a] = true;
+    }
+    vor_hull_iter_t it;
+    uint32_t s, count = 0, previous = GEO_SITES, first = GEO_SITES, bad = 0;
+    static bool seen[GEO_SITES];
+    for (uint32_t i = 0; i < n; i++) {
+        seen[i] = false;
+    }
+    vor_hull_begin(&it, d);
+    while (vor_hull_next(&it, &s) && count <= n) {
+        count++;
+        if (s >= n || !on_hull[s] || seen[s]) {
+            bad++;
+            continue;
+        }
+        seen[s] = true;
+        if (first == GEO_SITES) {
+            first = s;
+            for (uint32_t i = 0; i < n; i++) { /* starts at the lowest */
+                bad += (first_of[i] == i && lower_point(sites[i], sites[s])) ? 1u : 0u;
+            }
+        } else {
+            /* consecutive: no site strictly between; turning left
+             * (everything on the left of or on previous -> s) */
+            for (uint32_t x = 0; x < n; x++) {
+                if (first_of[x] != x) {
+                    continue;
+                }
+                int o = orient(previous, s, x);
+                bad += (!all_collinear && o < 0) ? 1u : 0u;
+                bad += (o == 0 && strictly_inside(sites[previous], sites[x], sites[s])) ? 1u : 0u;
+            }
+        }
+        previous = s;
+    }
+    if (!all_collinear && count > 1u) { /* closing edge */
+        for (uint32_t x = 0; x < n; x++) {
+            if (first_of[x] == x) {
+                int o = orient(previous, first, x);
+                bad += (o < 0 || (o == 0 && strictly_inside(sites[previous], sites[x], sites[first])))
+                           ? 1u
+                           : 0u;
+            }
+        }
+    }
+    CHECK(bad == 0 && count == expected, "%s: hull of %u sites, %u expected, %u wrong", name,
+          count, expected, bad);
+}
+
 /* stand-in for the cell box of the later tests: the sets keep their boxes */
 typedef struct {
     int32_t x0, y0, x1, y1;
@@ -400,6 +503,7 @@ static void check_all(uint32_t n, vor_box_t box, const char *name)
         return;
     }
     check_edges(&d, n, name);
+    check_hull(&d, n, name);
 }
 
 static void test_sets(test_rng_t *rng)
@@ -520,6 +624,7 @@ static void test_sets(test_rng_t *rng)
         vor_t d;
         if (build(&d, 6)) {
             check_edges(&d, 6, "huge");
+            check_hull(&d, 6, "huge");
             vor_edge_iter_t it;
             vor_edge_t e;
             uint32_t out = 0;
@@ -546,18 +651,29 @@ static void test_errors(void)
     vor_edge_t e;
     vor_edges_begin(&ei, &d);
     CHECK(vor_edges_next(&ei, &e) == 0, "no sites: no edges");
-    (void)s;
+    vor_hull_iter_t hi;
+    vor_hull_begin(&hi, &d);
+    CHECK(vor_hull_next(&hi, &s) == 0, "no sites: no hull");
     /* one site (and its duplicate): no edges */
     vor_point_t points[4] = {{40, 60}, {40, 60}, {60, 40}, {90, 95}};
     CHECK(vor_build(&d, points, 2, NULL, NULL) == VOR_OK, "build one site");
     vor_edges_begin(&ei, &d);
     CHECK(vor_edges_next(&ei, &e) == 0, "one site: no edges");
+    vor_hull_begin(&hi, &d);
+    CHECK(vor_hull_next(&hi, &s) == 1 && s == 0 && vor_hull_next(&hi, &s) == 0, "one site: hull");
     /* two sites: a line */
     CHECK(vor_build(&d, points, 3, NULL, NULL) == VOR_OK, "build two sites");
     vor_edges_begin(&ei, &d);
     CHECK(vor_edges_next(&ei, &e) == 1 && e.kind == VOR_EDGE_LINE && e.from.point.x == 50 &&
               e.from.point.y == 50 && vor_edges_next(&ei, &e) == 0,
           "two sites: one line");
+    uint32_t order[2], k = 0;
+    vor_hull_begin(&hi, &d);
+    while (k < 2u && vor_hull_next(&hi, &order[k])) {
+        k++;
+    }
+    CHECK(k == 2u && order[0] == 2u && order[1] == 0u && vor_hull_next(&hi, &s) == 0,
+          "two sites: hull from the lowest");
     CHECK(vor_build(&d, points, 4, NULL, NULL) == VOR_OK, "build three sites");
     vor_vertex_t v;
     CHECK(vor_voronoi_vertex(&d, 0, 2, 3, &v) == VOR_OK && v.status == VOR_VERTEX_IN_RANGE,
