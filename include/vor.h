@@ -183,7 +183,8 @@ enum vor_error {
     VOR_ERR_FULL = -4,      /* max_sites sites are in the diagram already */
     VOR_ERR_DUPLICATE = -5, /* the point is a site already (its id is returned) */
     VOR_ERR_INVALID = -6,   /* vor_validate found a broken invariant */
-    VOR_ERR_EMPTY = -7      /* a query on a diagram without sites */
+    VOR_ERR_EMPTY = -7,     /* a query on a diagram without sites */
+    VOR_ERR_BUFFER = -8     /* the caller's buffer is too small (the size needed is returned) */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -433,6 +434,50 @@ typedef struct vor_hull_iter {
 void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d);
 /* Returns 1 and sets *site while hull sites remain, then 0. */
 int vor_hull_next(vor_hull_iter_t *it, uint32_t *site);
+
+/* A closed axis-aligned box [x0, x1] x [y0, y1]. */
+typedef struct vor_box {
+    int32_t x0, y0, x1, y1;
+} vor_box_t;
+
+/* Most vertices a clipped cell of a diagram of n sites can have (a
+ * constant expression for static buffers): one per neighbour and four. */
+#define VOR_CELL_MAX_VERTICES(n) ((uint32_t)(n) + 3u)
+
+/*
+ * The Voronoi cell of `site` clipped to `box`: its vertices,
+ * counterclockwise, starting at the lowest (smallest y, then smallest x),
+ * go to vertices[0 .. *count). Computed exactly and rounded on output, so
+ * every vertex lies in the box; vertices that coincide exactly are written
+ * once (distinct ones may round to the same point). A cell that meets the
+ * box in less than an area (nothing, a point, a segment) gives *count = 0,
+ * as does any box of zero width or height. With all sites collinear cells
+ * are strips; with one site, the cell is the whole box.
+ * Cost: O(neighbours of the site).
+ *   VOR_ERR_ARG     d, box or count NULL; vertices NULL with capacity > 0;
+ *                   box->x0 > box->x1 or box->y0 > box->y1; site not a
+ *                   site in the mesh (unknown, or a duplicate's id)
+ *   VOR_ERR_BUFFER  more than `capacity` vertices: *count = the number
+ *                   needed, nothing written to vertices
+ */
+int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box,
+             vor_point_t *vertices, uint32_t capacity, uint32_t *count);
+
+/* Iterator over the clipped cells of every site in the mesh (duplicates'
+ * ids are skipped), in increasing id order. */
+typedef struct vor_cell_iter {
+    const vor_t *d;
+    vor_box_t box;
+    uint32_t next_site;
+} vor_cell_iter_t;
+
+void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box);
+/* Returns 1 with the next cell (as vor_cell) in *site, vertices[0 ..
+ * *count), 0 at the end, or an error of vor_cell: VOR_ERR_BUFFER leaves
+ * the iterator on that site (with *site and the needed *count set), so
+ * that a retry with a larger buffer gets it. */
+int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
+                   uint32_t capacity, uint32_t *count);
 
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */

@@ -1,7 +1,7 @@
 /*
  * geometry.c - the Voronoi diagram's geometry, read from the Delaunay mesh:
- * vertices (circumcentres), edges and the convex hull. Read-only, like
- * queries.c.
+ * vertices (circumcentres), edges, the convex hull and cells clipped to a
+ * box. Read-only, like queries.c.
  *
  * The geometry is that of the true Voronoi diagram of the distinct sites,
  * while the mesh is the Delaunay triangulation under the symbolic
@@ -92,6 +92,46 @@ static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
     vor__mw_add(l->c, t, GEO_LIMBS); /* < 2^65 */
 }
 
+/* Box sides in counterclockwise order, each with its outward normal:
+ * 0 bottom (0, -1), 1 right (1, 0), 2 top (0, 1), 3 left (-1, 0). */
+static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, unsigned side)
+{
+    int64_t c;
+    switch (side) {
+    case 0:
+        l->a = 0;
+        l->b = -1;
+        c = -2 * ((int64_t)box->y0 - s->y);
+        break;
+    case 1:
+        l->a = 1;
+        l->b = 0;
+        c = 2 * ((int64_t)box->x1 - s->x);
+        break;
+    case 2:
+        l->a = 0;
+        l->b = 1;
+        c = 2 * ((int64_t)box->y1 - s->y);
+        break;
+    default:
+        l->a = -1;
+        l->b = 0;
+        c = -2 * ((int64_t)box->x0 - s->x);
+        break;
+    }
+    vor__mw_from_i64(l->c, GEO_LIMBS, c); /* |c| < 2^33 */
+    l->px = l->a * c; /* unit normal: (a c, b c) is on the line */
+    l->py = l->b * c;
+}
+
+/* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
+ * (-b1, a1) (counterclockwise around the cell) increases line 2's
+ * a x + b y, i.e. line 2 bounds line 1 from above. */
+static int direction(const geo_line_t *l1, const geo_line_t *l2)
+{
+    return vor__compare_products(l1->a, l2->b, l2->a, l1->b);
+}
+
 /* The point where l1 and l2 meet; false when they are parallel. */
 static bool intersect(geo_point_t *p, const geo_line_t *l1, const geo_line_t *l2)
 {
@@ -115,6 +155,30 @@ static bool intersect(geo_point_t *p, const geo_line_t *l1, const geo_line_t *l2
         vor__mw_neg(p->w, GEO_LIMBS);
     }
     return true;
+}
+
+/* Sign of a x + b y - c w: 1 when p is strictly outside l's half-plane,
+ * 0 on the line, -1 strictly inside. */
+static int side_of(const geo_line_t *l, const geo_point_t *p)
+{
+    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    mul_i64(sum, p->x, l->a);
+    mul_i64(t, p->y, l->b);
+    vor__mw_add(sum, t, GEO_LIMBS);
+    vor__mw_mul(t, GEO_LIMBS, l->c, GEO_LIMBS, p->w, GEO_LIMBS);
+    vor__mw_sub(sum, t, GEO_LIMBS);
+    return vor__mw_sign(sum, GEO_LIMBS);
+}
+
+/* side_of for the integer point of line `on` (|px|, |py| < 2^34). */
+static int side_of_line(const geo_line_t *l, const geo_line_t *on)
+{
+    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    mul_i64_i64(sum, on->px, l->a);
+    mul_i64_i64(t, on->py, l->b);
+    vor__mw_add(sum, t, GEO_LIMBS);
+    vor__mw_sub(sum, l->c, GEO_LIMBS);
+    return vor__mw_sign(sum, GEO_LIMBS);
 }
 
 /* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
@@ -507,5 +571,420 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     if (!it->collinear && it->site == it->first) {
         it->left = 0;
     }
+    return 1;
+}
+
+/* ------------------------------------------------------------------ */
+/* Cells                                                               */
+
+/* Lines of a cell are named by a site id or a box side (BOX_LINE + k). */
+#define BOX_LINE 0xFFFFFFF0u
+#define NO_LINE 0xFFFFFFFFu
+
+typedef struct cell {
+    const vor_t *d;
+    uint32_t site;
+    const vor_point_t *s; /* the site's point: the frame's origin */
+    const vor_box_t *box;
+    uint32_t start_slot; /* the fan triangle where the edges' angles begin */
+    uint32_t degree;     /* Delaunay neighbours */
+    uint32_t side_lo[4], side_hi[4]; /* each box side's part in the cell */
+    bool side_empty[4];
+} cell_t;
+
+static void make_line(const cell_t *c, uint32_t name, geo_line_t *l)
+{
+    if (name >= BOX_LINE) {
+        box_side(l, c->box, c->s, name - BOX_LINE);
+    } else {
+        bisector(l, c->s, &c->d->sites[name]);
+    }
+}
+
+/* Angle classes of an outward normal e = n - s, counterclockwise from
+ * (0, -1), the bottom side's normal: quadrant k begins at box side k's
+ * normal. */
+static unsigned quadrant(int64_t x, int64_t y)
+{
+    if (x >= 0 && y < 0) {
+        return 0;
+    }
+    if (x > 0 && y >= 0) {
+        return 1;
+    }
+    if (x <= 0 && y > 0) {
+        return 2;
+    }
+    return 3;
+}
+
+static unsigned quadrant_of(const cell_t *c, uint32_t n)
+{
+    const vor_point_t *p = &c->d->sites[n];
+    return quadrant((int64_t)p->x - c->s->x, (int64_t)p->y - c->s->y);
+}
+
+/* Is the direction to neighbour a strictly before that to b, in angle
+ * from (0, -1) counterclockwise? */
+static bool angle_before(const cell_t *c, uint32_t a, uint32_t b)
+{
+    unsigned qa = quadrant_of(c, a), qb = quadrant_of(c, b);
+    if (qa != qb) {
+        return qa < qb;
+    }
+    /* within a quadrant (less than a half turn): b turns left of a */
+    return vor_orient2d(c->s, &c->d->sites[a], &c->d->sites[b], NULL) > 0;
+}
+
+/* A step around the fan of c->site counterclockwise: the triangle at
+ * `slot` is (site, x, y); the edge (site, y) comes next, with x on its
+ * right and the next triangle's third vertex on its left. */
+static void fan_triangle(const cell_t *c, uint32_t slot, uint32_t *x, uint32_t *y, uint32_t *next)
+{
+    const vor__tri_t *t = &c->d->triangles[slot];
+    unsigned i = vor__vertex_index(t, (vor_index_t)c->site);
+    VOR_ASSERT(i != 3u);
+    *x = vor__vertex(t, vor__next(i));
+    *y = vor__vertex(t, vor__prev(i));
+    *next = t->n[vor__next(i)]; /* across (site, y) */
+}
+
+/* The fan's size, and where the angles of the edge normals wrap around:
+ * around a site the neighbours come in counterclockwise order, so their
+ * angles from (0, -1) rise except at one step (unless all are equal).
+ * The walk from there meets the edges in the order of the box sides'
+ * normals too. The fan closes within vertex_count steps on a valid mesh. */
+VOR__NOINLINE static void find_start(cell_t *c)
+{
+    const vor_t *d = c->d;
+    uint32_t slot = c->site, x, y, next;
+    uint32_t first = VOR__NONE, first_slot = slot, previous = VOR__NONE;
+    c->start_slot = slot;
+    c->degree = 0;
+    bool found = false;
+    for (uint32_t step = 0; step <= d->vertex_count; step++) {
+        fan_triangle(c, slot, &x, &y, &next);
+        if (y != VOR__INFINITE) {
+            c->degree++;
+            if (first == VOR__NONE) {
+                first = y;
+                first_slot = slot;
+            } else if (!found && angle_before(c, y, previous)) {
+                c->start_slot = slot;
+                found = true;
+            }
+            previous = y;
+        }
+        slot = next;
+        if (slot == c->site) {
+            break;
+        }
+    }
+    if (!found) { /* the wrap is at the first neighbour, or nowhere */
+        c->start_slot = first_slot;
+    }
+}
+
+/* The part of box side k inside the cell: clipped by the half-plane of
+ * every Delaunay neighbour (the cell is their intersection; neighbours of
+ * the perturbed mesh that are no true neighbours add true, redundant
+ * constraints). Along the side in its direction, a constraint bounds from
+ * below or above (direction()), or is parallel. */
+VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
+{
+    const vor_t *d = c->d;
+    geo_line_t side, line;
+    geo_point_t lo, hi;
+    box_side(&side, c->box, c->s, k);
+    c->side_lo[k] = BOX_LINE + ((k + 3u) & 3u);
+    c->side_hi[k] = BOX_LINE + ((k + 1u) & 3u);
+    c->side_empty[k] = false;
+    make_line(c, c->side_lo[k], &line);
+    intersect(&lo, &side, &line);
+    make_line(c, c->side_hi[k], &line);
+    intersect(&hi, &side, &line);
+    if (d->vertex_count >= 2u) {
+        uint32_t slot = c->site, x, y, next;
+        for (uint32_t step = 0; step <= d->vertex_count; step++) {
+            fan_triangle(c, slot, &x, &y, &next);
+            if (y != VOR__INFINITE) {
+                bisector(&line, c->s, &d->sites[y]);
+                int g = direction(&side, &line);
+                if (g == 0) {
+                    if (side_of_line(&line, &side) > 0) {
+                        c->side_empty[k] = true;
+                        return;
+                    }
+                } else if (g > 0) {
+                    if (side_of(&line, &hi) > 0) {
+                        c->side_hi[k] = y;
+                        intersect(&hi, &side, &line);
+                    }
+                } else if (side_of(&line, &lo) > 0) {
+                    c->side_lo[k] = y;
+                    intersect(&lo, &side, &line);
+                }
+            }
+            slot = next;
+            if (slot == c->site) {
+                break;
+            }
+        }
+    }
+    make_line(c, c->side_hi[k], &line);
+    c->side_empty[k] = side_of(&line, &lo) > 0;
+}
+
+/* The output: distinct exact points in order, each compared with the
+ * previous one (and the last with the first), rounded when confirmed. The
+ * first two are held back so that a result of fewer than three (no area)
+ * writes nothing. Three point buffers rotate, so nothing is copied. */
+typedef struct emitter {
+    const cell_t *c;
+    vor_point_t *out; /* NULL: only count */
+    uint32_t count;
+    vor_point_t held[2];
+    geo_point_t pool[3];
+    uint32_t names[3][2]; /* the two lines through each pooled point */
+    int first, last;      /* pool indices, -1 while empty */
+} emitter_t;
+
+static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
+{
+    geo_line_t l;
+    make_line(e->c, e->names[a][0], &l);
+    if (side_of(&l, p) != 0) {
+        return false;
+    }
+    make_line(e->c, e->names[a][1], &l);
+    return side_of(&l, p) == 0;
+}
+
+static void confirm(emitter_t *e, int index)
+{
+    vor_vertex_t v;
+    round_point(&e->pool[index], e->c->s, &v);
+    VOR_ASSERT(v.status == VOR_VERTEX_IN_RANGE); /* inside the box */
+    if (e->out != NULL) {
+        if (e->count < 2u) {
+            e->held[e->count].x = v.point.x;
+            e->held[e->count].y = v.point.y;
+        } else {
+            if (e->count == 2u) {
+                for (unsigned i = 0; i < 2u; i++) {
+                    e->out[i].x = e->held[i].x;
+                    e->out[i].y = e->held[i].y;
+                }
+            }
+            e->out[e->count].x = v.point.x;
+            e->out[e->count].y = v.point.y;
+        }
+    }
+    e->count++;
+}
+
+/* The pool slot a new point may be computed into. */
+static int scratch(const emitter_t *e)
+{
+    int i = 0;
+    while (i == e->first || i == e->last) {
+        i++;
+    }
+    return i;
+}
+
+/* The new point in pool[scratch(e)], on lines a and b. */
+static void emit(emitter_t *e, uint32_t a, uint32_t b)
+{
+    int i = scratch(e);
+    e->names[i][0] = a;
+    e->names[i][1] = b;
+    if (e->last >= 0 && same_point(e, e->last, &e->pool[i])) {
+        return;
+    }
+    if (e->first < 0) {
+        e->first = e->last = i;
+        return;
+    }
+    confirm(e, e->last);
+    e->last = i;
+}
+
+VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
+{
+    const cell_t *c = e->c;
+    if (c->side_empty[k]) {
+        return;
+    }
+    geo_line_t side, line;
+    box_side(&side, c->box, c->s, k);
+    make_line(c, c->side_lo[k], &line);
+    intersect(&e->pool[scratch(e)], &side, &line);
+    emit(e, BOX_LINE + k, c->side_lo[k]);
+}
+
+/* The Voronoi edge with neighbour n (r: its start's third site, l: its
+ * end's, NO_LINE for an unbounded end) clipped to the box; emits its
+ * start if anything is left. */
+VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32_t l)
+{
+    const cell_t *c = e->c;
+    geo_line_t edge, line;
+    geo_point_t hi;
+    geo_point_t *lo = &e->pool[scratch(e)];
+    uint32_t lo_name = NO_LINE, hi_name = NO_LINE;
+    uint32_t bounds[6] = {r, l, BOX_LINE, BOX_LINE + 1u, BOX_LINE + 2u, BOX_LINE + 3u};
+    bisector(&edge, c->s, &c->d->sites[n]);
+    for (unsigned k = 0; k < 6u; k++) {
+        if (bounds[k] == NO_LINE) {
+            continue;
+        }
+        make_line(c, bounds[k], &line);
+        int g = direction(&edge, &line);
+        if (g == 0) {
+            if (side_of_line(&line, &edge) > 0) {
+                return;
+            }
+        } else if (g > 0) {
+            if (hi_name == NO_LINE || side_of(&line, &hi) > 0) {
+                hi_name = bounds[k];
+                intersect(&hi, &edge, &line);
+            }
+        } else if (lo_name == NO_LINE || side_of(&line, lo) > 0) {
+            lo_name = bounds[k];
+            intersect(lo, &edge, &line);
+        }
+    }
+    /* two opposite box sides are never both parallel to a line */
+    VOR_ASSERT(lo_name != NO_LINE && hi_name != NO_LINE);
+    if (lo_name == NO_LINE || hi_name == NO_LINE) {
+        return;
+    }
+    make_line(c, hi_name, &line);
+    if (side_of(&line, lo) > 0) {
+        return; /* starts after it ends: outside the box */
+    }
+    emit(e, n, lo_name);
+}
+
+/* One pass over the cell's boundary: the pieces of box sides and Voronoi
+ * edges in the angular order of their outward normals, from (0, -1). That
+ * is the order of a convex polygon's edges, and the first one's start is
+ * the lowest vertex. Returns the number of vertices. */
+static uint32_t trace(const cell_t *c, vor_point_t *out)
+{
+    const vor_t *d = c->d;
+    emitter_t e;
+    e.c = c;
+    e.out = out;
+    e.count = 0;
+    e.first = e.last = -1;
+    unsigned next_side = 0;
+    if (d->vertex_count >= 2u) {
+        uint32_t slot = c->start_slot, x, y, next, z, dummy;
+        for (uint32_t step = 0; step <= d->vertex_count; step++) {
+            fan_triangle(c, slot, &x, &y, &next);
+            if (y != VOR__INFINITE) {
+                fan_triangle(c, next, &dummy, &z, &dummy);
+                for (unsigned q = quadrant_of(c, y); next_side <= q; next_side++) {
+                    emit_side(&e, next_side);
+                }
+                bool has_start, has_end;
+                if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
+                    emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
+                }
+            }
+            slot = next;
+            if (slot == c->start_slot) {
+                break;
+            }
+        }
+    }
+    for (; next_side < 4u; next_side++) {
+        emit_side(&e, next_side);
+    }
+    if (e.last >= 0 && e.last != e.first && !same_point(&e, e.first, &e.pool[e.last])) {
+        confirm(&e, e.last);
+    }
+    return (e.count >= 3u) ? e.count : 0u;
+}
+
+static bool in_mesh(const vor_t *d, uint32_t site)
+{
+    if (site >= d->site_count) {
+        return false;
+    }
+    if (d->vertex_count == 1u) {
+        return site == d->last_site;
+    }
+    return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
+}
+
+int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
+             uint32_t capacity, uint32_t *count)
+{
+    if (d == NULL || box == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
+        box->x0 > box->x1 || box->y0 > box->y1 || !in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    if (box->x0 == box->x1 || box->y0 == box->y1) {
+        *count = 0;
+        return VOR_OK;
+    }
+    cell_t c;
+    c.d = d;
+    c.site = site;
+    c.s = &d->sites[site];
+    c.box = box;
+    c.start_slot = site;
+    c.degree = 0;
+    if (d->vertex_count >= 2u) {
+        find_start(&c);
+    }
+    for (unsigned k = 0; k < 4u; k++) {
+        clip_side(&c, k);
+    }
+    /* at most one vertex per neighbour and per box side: write at once
+     * when that fits, else count first */
+    if (capacity < c.degree + 4u) {
+        uint32_t needed = trace(&c, NULL);
+        if (needed > capacity) {
+            *count = needed;
+            return VOR_ERR_BUFFER;
+        }
+    }
+    *count = trace(&c, vertices);
+    return VOR_OK;
+}
+
+void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
+{
+    it->d = d;
+    it->next_site = 0;
+    it->box.x0 = box->x0;
+    it->box.y0 = box->y0;
+    it->box.x1 = box->x1;
+    it->box.y1 = box->y1;
+}
+
+int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, uint32_t capacity,
+                   uint32_t *count)
+{
+    const vor_t *d = it->d;
+    if (site == NULL) {
+        return VOR_ERR_ARG;
+    }
+    while (it->next_site < d->site_count && !in_mesh(d, it->next_site)) {
+        it->next_site++;
+    }
+    if (it->next_site >= d->site_count) {
+        return 0;
+    }
+    *site = it->next_site;
+    int err = vor_cell(d, it->next_site, &it->box, vertices, capacity, count);
+    if (err != VOR_OK) {
+        return err;
+    }
+    it->next_site++;
     return 1;
 }

@@ -1,5 +1,5 @@
 /*
- * test_geometry.c - Voronoi vertices, edges, hull against
+ * test_geometry.c - Voronoi vertices, edges, hull and cells against
  * independent references:
  *   - vertices: the seed's untranslated circumcentre formula (003 (2.1.4))
  *     in the test's own 256-bit integers, and the rounding rule checked as
@@ -7,12 +7,18 @@
  *   - edges: brute force over every pair of sites, each bisector cut by
  *     every other site with exact predicates;
  *   - hull: brute force over every pair (a supporting line) and the
- *     order checked edge by edge.
+ *     order checked edge by edge;
+ *   - cells: exact known polygons (grids, strips, crosses), and sample
+ *     points of the box, each in the cell of its brute-force nearest site
+ *     (exact winding numbers of the rounded polygons, with a margin that
+ *     covers the rounding).
+ * tests/cli/test_cli.py checks the exact area tiling with rationals.
  */
 #include "test.h"
 #include "vor.h"
 
 #define GEO_SITES 48u
+#define CELL_POOL 4096u
 #ifndef GEO_DEGENERATE_ROUNDS
 #define GEO_DEGENERATE_ROUNDS 40u
 #endif
@@ -483,10 +489,132 @@ static void check_hull(const vor_t *d, uint32_t n, const char *name)
           count, expected, bad);
 }
 
-/* stand-in for the cell box of the later tests: the sets keep their boxes */
-typedef struct {
-    int32_t x0, y0, x1, y1;
-} vor_box_t;
+/* ------------------------------------------------------------------ */
+/* Cells                                                               */
+
+static vor_point_t pool[CELL_POOL];
+static uint32_t cell_start[GEO_SITES + 1u], cell_count[GEO_SITES];
+
+/* Winding number of the polygon around p (not on it), by crossings. */
+static int winding(const vor_point_t *v, uint32_t m, vor_point_t p)
+{
+    int w = 0;
+    for (uint32_t i = 0; i < m; i++) {
+        vor_point_t a = v[i], b = v[(i + 1u == m) ? 0u : i + 1u];
+        int64_t cross = ((int64_t)b.x - a.x) * ((int64_t)p.y - a.y) -
+                        ((int64_t)p.x - a.x) * ((int64_t)b.y - a.y);
+        if (a.y <= p.y && b.y > p.y && cross > 0) {
+            w++;
+        } else if (a.y > p.y && b.y <= p.y && cross < 0) {
+            w--;
+        }
+    }
+    return w;
+}
+
+static int64_t distance2(vor_point_t a, vor_point_t b)
+{
+    int64_t dx = (int64_t)a.x - b.x, dy = (int64_t)a.y - b.y;
+    return dx * dx + dy * dy;
+}
+
+static int64_t abs64(int64_t v)
+{
+    return v < 0 ? -v : v;
+}
+
+/* Every cell of the box; then sample points at least 1 from the box's
+ * boundary and from every bisector they are near: such a point is at
+ * least 1 from its nearest site's cell boundary, the rounded polygons are
+ * within sqrt(2)/2 of the exact ones, so its winding number is exactly 1
+ * in its nearest site's rounded cell and 0 in every other. Coordinates
+ * stay below 2^29 here so that the squares fit int64. */
+static void check_cells(const vor_t *d, uint32_t n, vor_box_t box, const char *name)
+{
+    uint32_t used = 0, wrong = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        cell_start[i] = used;
+        cell_count[i] = 0;
+        if (first_of[i] != i) {
+            uint32_t c;
+            CHECK(vor_cell(d, i, &box, pool, 4, &c) == VOR_ERR_ARG, "%s: a duplicate's cell", name);
+            continue;
+        }
+        uint32_t c = 0;
+        int err = vor_cell(d, i, &box, pool + used, CELL_POOL - used, &c);
+        if (!CHECK(err == VOR_OK && c <= VOR_CELL_MAX_VERTICES(n), "%s: cell %u: %d, %u vertices",
+                   name, i, err, c)) {
+            return;
+        }
+        cell_count[i] = c;
+        for (uint32_t k = 0; k < c; k++) {
+            vor_point_t v = pool[used + k];
+            wrong += (v.x < box.x0 || v.x > box.x1 || v.y < box.y0 || v.y > box.y1) ? 1u : 0u;
+            /* starts at the lowest: rounding keeps y's order weakly */
+            wrong += (v.y < pool[used].y) ? 1u : 0u;
+        }
+        used += c;
+    }
+    CHECK(wrong == 0, "%s: %u cell vertices outside the box or before the lowest", name, wrong);
+    /* sample points */
+    uint32_t samples = 0, misplaced = 0;
+    for (uint32_t gx = 0; gx <= 16u; gx++) {
+        for (uint32_t gy = 0; gy <= 16u; gy++) {
+            vor_point_t p;
+            p.x = (int32_t)(box.x0 + 1 + (((int64_t)box.x1 - box.x0 - 2) * gx) / 16);
+            p.y = (int32_t)(box.y0 + 1 + (((int64_t)box.y1 - box.y0 - 2) * gy) / 16);
+            uint32_t best = GEO_SITES;
+            for (uint32_t i = 0; i < n; i++) {
+                if (first_of[i] == i && (best == GEO_SITES || distance2(p, sites[i]) < distance2(p, sites[best]))) {
+                    best = i;
+                }
+            }
+            bool margin = true;
+            for (uint32_t i = 0; i < n && margin; i++) {
+                if (first_of[i] == i && i != best) {
+                    /* distance to the bisector >= 1 when the difference of
+                     * squared distances is >= 2 |s_i - s_best| (L1 bounds it) */
+                    int64_t diff = distance2(p, sites[i]) - distance2(p, sites[best]);
+                    margin = diff >= 2 * (abs64((int64_t)sites[i].x - sites[best].x) +
+                                          abs64((int64_t)sites[i].y - sites[best].y));
+                }
+            }
+            if (!margin) {
+                continue;
+            }
+            samples++;
+            for (uint32_t i = 0; i < n; i++) {
+                if (first_of[i] == i) {
+                    int w = winding(pool + cell_start[i], cell_count[i], p);
+                    if (w != (i == best ? 1 : 0)) {
+                        misplaced++;
+                        if (misplaced <= 2u) {
+                            CHECK(false, "%s: (%d,%d), nearest %u, winds %d in cell %u", name, p.x,
+                                  p.y, best, w, i);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    CHECK(misplaced == 0 && samples > 100u, "%s: %u of %u sample points misplaced", name,
+          misplaced, samples);
+}
+
+/* One site's cell equals the given polygon exactly. */
+static void expect_cell(const vor_t *d, uint32_t site, vor_box_t box, const vor_point_t *want,
+                        uint32_t m, const char *name)
+{
+    vor_point_t got[16];
+    uint32_t c = 99;
+    int err = vor_cell(d, site, &box, got, 16, &c);
+    bool ok = err == VOR_OK && c == m;
+    for (uint32_t k = 0; ok && k < m; k++) {
+        ok = got[k].x == want[k].x && got[k].y == want[k].y;
+    }
+    CHECK(ok, "%s: cell %u: err %d, %u vertices (%d,%d) (%d,%d) (%d,%d) ..., expected %u", name,
+          site, err, c, got[0].x, got[0].y, got[1].x, got[1].y, got[2].x, got[2].y, m);
+}
 
 static bool build(vor_t *d, uint32_t n)
 {
@@ -498,12 +626,32 @@ static bool build(vor_t *d, uint32_t n)
 static void check_all(uint32_t n, vor_box_t box, const char *name)
 {
     vor_t d;
-    (void)box;
     if (!build(&d, n)) {
         return;
     }
     check_edges(&d, n, name);
     check_hull(&d, n, name);
+    check_cells(&d, n, box, name);
+    /* the cell iterator gives the same cells */
+    vor_cell_iter_t it;
+    uint32_t site, count, cells = 0, differ = 0;
+    vor_point_t buffer[GEO_SITES + 4u];
+    vor_cells_begin(&it, &d, &box);
+    int r;
+    while ((r = vor_cells_next(&it, &site, buffer, GEO_SITES + 4u, &count)) == 1) {
+        cells++;
+        differ += (site >= n || first_of[site] != site || count != cell_count[site]) ? 1u : 0u;
+        for (uint32_t k = 0; k < count && differ == 0; k++) {
+            vor_point_t want = pool[cell_start[site] + k];
+            differ += (buffer[k].x != want.x || buffer[k].y != want.y) ? 1u : 0u;
+        }
+    }
+    uint32_t distinct = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        distinct += (first_of[i] == i) ? 1u : 0u;
+    }
+    CHECK(r == 0 && cells == distinct && differ == 0, "%s: cell iterator: %d, %u cells of %u, %u differ",
+          name, r, cells, distinct, differ);
 }
 
 static void test_sets(test_rng_t *rng)
@@ -562,6 +710,31 @@ static void test_sets(test_rng_t *rng)
     }
     vor_box_t grid_box = {-4000, -3500, 3100, 3000};
     check_all(40, grid_box, "grid");
+    /* a grid whose cells are all inside the box: exact squares */
+    {
+        vor_t d;
+        for (uint32_t i = 0; i < 25u; i++) {
+            sites[i].x = (int32_t)(i % 5u) * 10;
+            sites[i].y = (int32_t)(i / 5u) * 10;
+        }
+        if (build(&d, 25)) {
+            vor_box_t b = {-5, -5, 45, 45};
+            for (uint32_t i = 0; i < 25u; i++) {
+                int32_t x = sites[i].x, y = sites[i].y;
+                vor_point_t square[4] = {{x - 5, y - 5}, {x + 5, y - 5}, {x + 5, y + 5}, {x - 5, y + 5}};
+                expect_cell(&d, i, b, square, 4, "grid squares");
+            }
+            /* a box along bisectors: the cells beyond it touch it in segments */
+            vor_box_t inner = {5, 5, 15, 15};
+            vor_point_t middle[4] = {{5, 5}, {15, 5}, {15, 15}, {5, 15}};
+            expect_cell(&d, 6, inner, middle, 4, "box on bisectors");
+            for (uint32_t i = 0; i < 25u; i++) {
+                uint32_t c = 99;
+                CHECK(i == 6u || (vor_cell(&d, i, &inner, NULL, 0, &c) == VOR_OK && c == 0u),
+                      "box on bisectors: cell %u has %u vertices", i, c);
+            }
+        }
+    }
     /* collinear with duplicates: strips */
     for (uint32_t i = 0; i < 20u; i++) {
         int32_t t = test_rng_range(rng, -50, 50);
@@ -576,6 +749,13 @@ static void test_sets(test_rng_t *rng)
         sites[1].x = 10, sites[1].y = 0;
         sites[2].x = 30, sites[2].y = 0;
         if (build(&d, 3)) {
+            vor_box_t b = {-10, -10, 50, 10};
+            vor_point_t s0[4] = {{-10, -10}, {5, -10}, {5, 10}, {-10, 10}};
+            vor_point_t s1[4] = {{5, -10}, {20, -10}, {20, 10}, {5, 10}};
+            vor_point_t s2[4] = {{20, -10}, {50, -10}, {50, 10}, {20, 10}};
+            expect_cell(&d, 0, b, s0, 4, "strips");
+            expect_cell(&d, 1, b, s1, 4, "strips");
+            expect_cell(&d, 2, b, s2, 4, "strips");
             vor_edge_iter_t it;
             vor_edge_t e;
             uint32_t lines = 0;
@@ -595,6 +775,10 @@ static void test_sets(test_rng_t *rng)
         }
         if (build(&d, 4)) {
             vor_box_t b = {-20, -20, 20, 20};
+            vor_point_t east[3] = {{20, -20}, {20, 20}, {0, 0}};
+            vor_point_t south[3] = {{-20, -20}, {20, -20}, {0, 0}};
+            expect_cell(&d, 0, b, east, 3, "cross");
+            expect_cell(&d, 3, b, south, 3, "cross");
             check_all(4, b, "cross");
         }
     }
@@ -625,6 +809,15 @@ static void test_sets(test_rng_t *rng)
         if (build(&d, 6)) {
             check_edges(&d, 6, "huge");
             check_hull(&d, 6, "huge");
+            vor_box_t full = {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX};
+            uint32_t c, total = 0;
+            vor_point_t buffer[16];
+            bool ok = true;
+            for (uint32_t i = 0; i < 6u; i++) {
+                ok = ok && vor_cell(&d, i, &full, buffer, 16, &c) == VOR_OK && c >= 3u;
+                total += c;
+            }
+            CHECK(ok, "huge: every cell has an area in the full box (%u vertices)", total);
             vor_edge_iter_t it;
             vor_edge_t e;
             uint32_t out = 0;
@@ -644,7 +837,9 @@ static void test_sets(test_rng_t *rng)
 static void test_errors(void)
 {
     vor_t d;
-    uint32_t s;
+    vor_box_t box = {0, 0, 100, 100};
+    vor_point_t buffer[8];
+    uint32_t c, s;
     CHECK(vor_init(&d, arena, sizeof arena, GEO_SITES) == VOR_OK, "init");
     /* no sites: nothing anywhere */
     vor_edge_iter_t ei;
@@ -654,19 +849,25 @@ static void test_errors(void)
     vor_hull_iter_t hi;
     vor_hull_begin(&hi, &d);
     CHECK(vor_hull_next(&hi, &s) == 0, "no sites: no hull");
-    /* one site (and its duplicate): no edges */
+    CHECK(vor_cell(&d, 0, &box, buffer, 8, &c) == VOR_ERR_ARG, "no sites: no cell");
+    /* one site (and its duplicate): its cell is the box, no edges, the
+     * hull is itself */
     vor_point_t points[4] = {{40, 60}, {40, 60}, {60, 40}, {90, 95}};
     CHECK(vor_build(&d, points, 2, NULL, NULL) == VOR_OK, "build one site");
+    vor_point_t whole[4] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}};
+    expect_cell(&d, 0, box, whole, 4, "one site");
     vor_edges_begin(&ei, &d);
     CHECK(vor_edges_next(&ei, &e) == 0, "one site: no edges");
     vor_hull_begin(&hi, &d);
     CHECK(vor_hull_next(&hi, &s) == 1 && s == 0 && vor_hull_next(&hi, &s) == 0, "one site: hull");
-    /* two sites: a line */
+    /* two sites: a line and two half-planes */
     CHECK(vor_build(&d, points, 3, NULL, NULL) == VOR_OK, "build two sites");
     vor_edges_begin(&ei, &d);
     CHECK(vor_edges_next(&ei, &e) == 1 && e.kind == VOR_EDGE_LINE && e.from.point.x == 50 &&
               e.from.point.y == 50 && vor_edges_next(&ei, &e) == 0,
           "two sites: one line");
+    vor_point_t upper[3] = {{0, 0}, {100, 100}, {0, 100}};
+    expect_cell(&d, 0, box, upper, 3, "two sites");
     uint32_t order[2], k = 0;
     vor_hull_begin(&hi, &d);
     while (k < 2u && vor_hull_next(&hi, &order[k])) {
@@ -675,6 +876,44 @@ static void test_errors(void)
     CHECK(k == 2u && order[0] == 2u && order[1] == 0u && vor_hull_next(&hi, &s) == 0,
           "two sites: hull from the lowest");
     CHECK(vor_build(&d, points, 4, NULL, NULL) == VOR_OK, "build three sites");
+    /* arguments */
+    vor_box_t bad = {10, 0, 9, 100}, thin = {10, 0, 10, 100}, away = {1000, 1000, 2000, 2000};
+    CHECK(vor_cell(&d, 0, &bad, buffer, 8, &c) == VOR_ERR_ARG, "x0 > x1");
+    CHECK(vor_cell(&d, 0, &thin, buffer, 8, &c) == VOR_OK && c == 0, "zero-width box");
+    CHECK(vor_cell(&d, 0, &away, buffer, 8, &c) == VOR_OK && c == 0, "cell misses the box");
+    CHECK(vor_cell(&d, 1, &box, buffer, 8, &c) == VOR_ERR_ARG, "a duplicate's id");
+    CHECK(vor_cell(&d, 9, &box, buffer, 8, &c) == VOR_ERR_ARG, "an unknown id");
+    CHECK(vor_cell(NULL, 0, &box, buffer, 8, &c) == VOR_ERR_ARG, "NULL diagram");
+    CHECK(vor_cell(&d, 0, NULL, buffer, 8, &c) == VOR_ERR_ARG, "NULL box");
+    CHECK(vor_cell(&d, 0, &box, buffer, 8, NULL) == VOR_ERR_ARG, "NULL count");
+    CHECK(vor_cell(&d, 0, &box, NULL, 8, &c) == VOR_ERR_ARG, "NULL buffer");
+    /* capacity: the count needed, nothing written */
+    uint32_t needed = 0;
+    CHECK(vor_cell(&d, 0, &box, NULL, 0, &needed) == VOR_ERR_BUFFER && needed >= 3u,
+          "capacity 0: the count needed (%u)", needed);
+    for (uint32_t i = 0; i < 8u; i++) {
+        buffer[i].x = buffer[i].y = 12345;
+    }
+    c = 0;
+    bool untouched = true;
+    CHECK(vor_cell(&d, 0, &box, buffer, needed - 1u, &c) == VOR_ERR_BUFFER && c == needed,
+          "capacity one short");
+    for (uint32_t i = 0; i < 8u; i++) {
+        untouched = untouched && buffer[i].x == 12345 && buffer[i].y == 12345;
+    }
+    CHECK(untouched, "capacity one short: nothing written");
+    CHECK(vor_cell(&d, 0, &box, buffer, needed, &c) == VOR_OK && c == needed, "exact capacity");
+    /* the cell iterator: a short buffer stops it on the site, a retry goes on */
+    vor_cell_iter_t it;
+    vor_cells_begin(&it, &d, &box);
+    CHECK(vor_cells_next(&it, &s, buffer, 2, &c) == VOR_ERR_BUFFER && s == 0 && c == needed,
+          "iterator: short buffer");
+    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 1 && s == 0, "iterator: retry");
+    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 1 && s == 2, "iterator: skips the duplicate");
+    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 1 && s == 3, "iterator: last");
+    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 0, "iterator: end");
+    vor_cells_begin(&it, &d, &bad);
+    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == VOR_ERR_ARG, "iterator: bad box");
     vor_vertex_t v;
     CHECK(vor_voronoi_vertex(&d, 0, 2, 3, &v) == VOR_OK && v.status == VOR_VERTEX_IN_RANGE,
           "vertex of three sites");
