@@ -83,5 +83,6 @@ double cli_seconds(void);
 int cli_predicates(int argc, char **argv);
 int cli_delaunay(int argc, char **argv);
 int cli_nearest(int argc, char **argv);
+int cli_cells(int argc, char **argv);
 
 #endif

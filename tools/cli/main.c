@@ -4,6 +4,7 @@
  *   vor predicates            exact orient2d / incircle signs of stdin lines
  *   vor delaunay FILE         the Delaunay triangulation of a site file
  *   vor nearest SITES QUERIES the nearest site to each query point
+ *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
  */
 #include <stdio.h>
 #include <string.h>
@@ -18,6 +19,7 @@ static const struct {
     {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
     {"nearest", cli_nearest, "nearest site to each query point (SITES QUERIES)"},
+    {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
 };
 
 int main(int argc, char **argv)
