@@ -66,6 +66,23 @@
  *   triangulation under the perturbation. vor_validate checks every
  *   invariant; iterators list triangles and neighbours.
  *
+ * VORONOI GEOMETRY
+ *   The geometry of the true Voronoi diagram of the distinct sites is read
+ *   from the mesh, exactly: vertices are circumcentres computed as
+ *   multi-word rationals and rounded only on output (to the nearest
+ *   integer, halves toward +infinity; outside int32 flagged, never
+ *   wrapped); degenerate sites give no zero-length edges.
+ *
+ *       vor_edges_begin(&ei, &d);                    // segments, rays, lines
+ *       while (vor_edges_next(&ei, &edge)) { ... }
+ *       vor_box_t box = {0, 0, 1000, 1000};
+ *       vor_cell(&d, id, &box, poly, VOR_CELL_MAX_VERTICES(500), &m);
+ *       vor_hull_begin(&hi, &d);                     // hull sites, CCW
+ *
+ *   A cell is clipped to the caller's box, counterclockwise, into the
+ *   caller's buffer (VOR_ERR_BUFFER and the size needed when it is too
+ *   small: nothing is written).
+ *
  * COST (docs/benchmarks.md has the measured table)
  *   No predicate allocates, recurses or loops over data. A degenerate input
  *   to an _sos predicate evaluates at most 5 (orient2d) or 27 (incircle)
