@@ -73,6 +73,23 @@
  *   hint starts from a coarse bucket grid kept in the arena (one site id
  *   per 16 sites), so it takes O(1) expected steps on uniform sites.
  *
+ * VORONOI GEOMETRY
+ *   The geometry of the true Voronoi diagram of the distinct sites is read
+ *   from the mesh, exactly: vertices are circumcentres computed as
+ *   multi-word rationals and rounded only on output (to the nearest
+ *   integer, halves toward +infinity; outside int32 flagged, never
+ *   wrapped); degenerate sites give no zero-length edges.
+ *
+ *       vor_edges_begin(&ei, &d);                    // segments, rays, lines
+ *       while (vor_edges_next(&ei, &edge)) { ... }
+ *       vor_box_t box = {0, 0, 1000, 1000};
+ *       vor_cell(&d, id, &box, poly, VOR_CELL_MAX_VERTICES(500), &m);
+ *       vor_hull_begin(&hi, &d);                     // hull sites, CCW
+ *
+ *   A cell is clipped to the caller's box, counterclockwise, into the
+ *   caller's buffer (VOR_ERR_BUFFER and the size needed when it is too
+ *   small: nothing is written).
+ *
  * COST (docs/benchmarks.md has the measured table)
  *   No predicate allocates, recurses or loops over data. A degenerate input
  *   to an _sos predicate evaluates at most 5 (orient2d) or 27 (incircle)
@@ -190,7 +207,8 @@ enum vor_error {
     VOR_ERR_FULL = -4,      /* max_sites sites are in the diagram already */
     VOR_ERR_DUPLICATE = -5, /* the point is a site already (its id is returned) */
     VOR_ERR_INVALID = -6,   /* vor_validate found a broken invariant */
-    VOR_ERR_EMPTY = -7      /* a query on a diagram without sites */
+    VOR_ERR_EMPTY = -7,     /* a query on a diagram without sites */
+    VOR_ERR_BUFFER = -8     /* the caller's buffer is too small (the size needed is returned) */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -365,6 +383,144 @@ typedef struct vor_neighbour_iter {
 void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site);
 /* Returns 1 and sets *neighbour while neighbours remain, then 0. */
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour);
+
+/* ================================================================== */
+/* Voronoi geometry (read-only: safe from several threads)            */
+/* ================================================================== */
+
+/*
+ * The geometry is that of the true Voronoi diagram of the distinct sites,
+ * computed exactly (multi-word rationals) and rounded only on output: a
+ * coordinate v becomes floor(v + 1/2), the nearest integer with halves
+ * toward +infinity. docs/design.md, "Voronoi geometry", has the widths.
+ */
+
+/* What a rounded vertex is. */
+enum vor_vertex_status {
+    VOR_VERTEX_IN_RANGE = 0,    /* point is the rounded exact vertex */
+    VOR_VERTEX_OUT_OF_RANGE = 1, /* a rounded coordinate is outside int32: that
+                                    coordinate is saturated to INT32_MIN or
+                                    INT32_MAX (never wrapped), the other is
+                                    rounded if it fits */
+    VOR_VERTEX_AT_INFINITY = 2  /* collinear sites: no vertex; point is (0, 0) */
+};
+
+typedef struct vor_vertex {
+    vor_point_t point;
+    enum vor_vertex_status status;
+} vor_vertex_t;
+
+/*
+ * The centre of the circle through a, b, c (their Voronoi vertex), rounded
+ * as above; AT_INFINITY when they are collinear (or two coincide).
+ *   VOR_ERR_ARG  a pointer is NULL
+ */
+int vor_circumcentre(const vor_point_t *a, const vor_point_t *b,
+                     const vor_point_t *c, vor_vertex_t *out);
+
+/*
+ * vor_circumcentre of sites a, b, c of d (e.g. a triangle from
+ * vor_triangles_next).
+ *   VOR_ERR_ARG  d or out NULL, an id >= the number of site ids
+ */
+int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c,
+                       vor_vertex_t *out);
+
+enum vor_edge_kind {
+    VOR_EDGE_SEGMENT = 0, /* from `from` to `to` */
+    VOR_EDGE_RAY = 1,     /* from `from` in direction (dx, dy), without end */
+    VOR_EDGE_LINE = 2     /* the whole bisector: through `from` (the rounded
+                             midpoint of the sites), direction (dx, dy) */
+};
+
+/* One edge of the Voronoi diagram: the part of the bisector of two sites
+ * that is nearer to them than to any other site. Walking it from `from`
+ * in direction (dx, dy), the cell of sites[0] is on the left and the cell
+ * of sites[1] on the right. (dx, dy) is exact: sites[1] - sites[0] turned
+ * a quarter counterclockwise. `to` is AT_INFINITY except for segments. */
+typedef struct vor_edge {
+    uint32_t sites[2];
+    enum vor_edge_kind kind;
+    vor_vertex_t from;
+    vor_vertex_t to;
+    int64_t dx, dy;
+} vor_edge_t;
+
+/* Iterator over the edges of the Voronoi diagram: each edge of positive
+ * length exactly once (cocircular sites give no zero-length edges). With
+ * all sites collinear the edges are parallel lines; with one site, none.
+ * Two exact endpoints of a segment may round to the same point. */
+typedef struct vor_edge_iter {
+    const vor_t *d;
+    uint32_t slot;
+    uint32_t edge;
+} vor_edge_iter_t;
+
+void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d);
+/* Returns 1 and fills *edge while edges remain, then 0. */
+int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge);
+
+/* Iterator over the sites on the boundary of the convex hull,
+ * counterclockwise, each once, starting at the lowest one (smallest y,
+ * then smallest x). Sites in the middle of a hull edge are included: their
+ * cells are unbounded too. All sites collinear: every site, in order along
+ * the line from the lowest end; one site: that site. */
+typedef struct vor_hull_iter {
+    const vor_t *d;
+    uint32_t ghost; /* the current hull edge's triangle at infinity */
+    uint32_t site;  /* the next site to return */
+    uint32_t first;
+    uint32_t left;  /* at most this many sites remain */
+    uint32_t collinear;
+} vor_hull_iter_t;
+
+void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d);
+/* Returns 1 and sets *site while hull sites remain, then 0. */
+int vor_hull_next(vor_hull_iter_t *it, uint32_t *site);
+
+/* A closed axis-aligned box [x0, x1] x [y0, y1]. */
+typedef struct vor_box {
+    int32_t x0, y0, x1, y1;
+} vor_box_t;
+
+/* Most vertices a clipped cell of a diagram of n sites can have (a
+ * constant expression for static buffers): one per neighbour and four. */
+#define VOR_CELL_MAX_VERTICES(n) ((uint32_t)(n) + 3u)
+
+/*
+ * The Voronoi cell of `site` clipped to `box`: its vertices,
+ * counterclockwise, starting at the lowest (smallest y, then smallest x),
+ * go to vertices[0 .. *count). Computed exactly and rounded on output, so
+ * every vertex lies in the box; vertices that coincide exactly are written
+ * once (distinct ones may round to the same point). A cell that meets the
+ * box in less than an area (nothing, a point, a segment) gives *count = 0,
+ * as does any box of zero width or height. With all sites collinear cells
+ * are strips; with one site, the cell is the whole box.
+ * Cost: O(neighbours of the site).
+ *   VOR_ERR_ARG     d, box or count NULL; vertices NULL with capacity > 0;
+ *                   box->x0 > box->x1 or box->y0 > box->y1; site not a
+ *                   site in the mesh (unknown, or a duplicate's id)
+ *   VOR_ERR_BUFFER  more than `capacity` vertices: *count = the number
+ *                   needed, nothing written to vertices
+ */
+int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box,
+             vor_point_t *vertices, uint32_t capacity, uint32_t *count);
+
+/* Iterator over the clipped cells of every site in the mesh (duplicates'
+ * ids are skipped), in increasing id order. */
+typedef struct vor_cell_iter {
+    const vor_t *d;
+    vor_box_t box;
+    uint32_t next_site;
+} vor_cell_iter_t;
+
+void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box);
+/* Returns 1 with the next cell (as vor_cell) in *site, vertices[0 ..
+ * *count), 0 at the end, or an error of vor_cell: VOR_ERR_BUFFER leaves
+ * the iterator on that site (with *site and the needed *count set), so
+ * that a retry with a larger buffer gets it. */
+int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
+                   uint32_t capacity, uint32_t *count);
 
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */

@@ -97,6 +97,16 @@ static uint32_t next_used_slot(const vor_t *d, uint32_t slot)
     return (slot < end) ? slot : end;
 }
 
+uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot)
+{
+    return next_used_slot(d, slot);
+}
+
+uint32_t vor__used_slots_end(const vor_t *d)
+{
+    return extra_end(d);
+}
+
 static bool slot_in_use(const vor_t *d, uint32_t slot)
 {
     if (slot < d->max_sites) {

@@ -187,6 +187,12 @@ static inline void vor__copy_stats(vor_predicate_stats_t *to,
 #endif
 }
 
+/* Used triangle slots in increasing order (geometry.c walks them like the
+ * triangle iterator): the next used slot at or after `slot`, or
+ * vor__used_slots_end(d) when none is left. */
+uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot);
+uint32_t vor__used_slots_end(const vor_t *d);
+
 /* Slots in use for v sites in the mesh: 2v - 2 for v >= 2, else 0. */
 static inline uint32_t vor__triangle_count(uint32_t vertices)
 {

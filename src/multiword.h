@@ -217,4 +217,44 @@ VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
     return 0;
 }
 
+/* r = -r over n limbs (two's complement). */
+VOR__INLINE void vor__mw_neg(vor__limb *r, size_t n)
+{
+    vor__limb carry = 1;
+    for (size_t i = 0; i < n; i++) {
+        vor__limb v = (vor__limb)~r[i] + carry;
+        carry = (v < carry) ? 1u : 0u;
+        r[i] = v;
+    }
+}
+
+/* Compares a and b as unsigned n-limb numbers: -1, 0 or 1. */
+VOR__INLINE int vor__mw_compare(const vor__limb *a, const vor__limb *b, size_t n)
+{
+    for (size_t i = n; i-- > 0;) {
+        if (a[i] != b[i]) {
+            return (a[i] < b[i]) ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+/* r <<= 1 over n limbs (the top bit is lost). */
+VOR__INLINE void vor__mw_shl1(vor__limb *r, size_t n)
+{
+    for (size_t i = n; i-- > 1;) {
+        r[i] = (vor__limb)((r[i] << 1) | (r[i - 1] >> (VOR_LIMB_BITS - 1)));
+    }
+    r[0] = (vor__limb)(r[0] << 1);
+}
+
+/* r >>= 1 over n limbs, as an unsigned number. */
+VOR__INLINE void vor__mw_shr1(vor__limb *r, size_t n)
+{
+    for (size_t i = 0; i + 1 < n; i++) {
+        r[i] = (vor__limb)((r[i] >> 1) | (r[i + 1] << (VOR_LIMB_BITS - 1)));
+    }
+    r[n - 1] >>= 1;
+}
+
 #endif

@@ -226,6 +226,120 @@ def raster_cases(rng, tmp):
         check(r.returncode == 0 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"raster --png: {r.returncode} {r.stderr!r}")
     else:
         check(r.returncode == 2 and "libstb-dev" in r.stderr, f"raster --png without stb: {r.stderr!r}")
+def clip_half_plane(poly, a, b, c):
+    """Sutherland-Hodgman: the part of the convex polygon with a x + b y <= c."""
+    out = []
+    for k in range(len(poly)):
+        p, q = poly[k], poly[(k + 1) % len(poly)]
+        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
+        if fp <= 0:
+            out.append(p)
+        if (fp < 0 < fq) or (fq < 0 < fp):
+            t = fp / (fp - fq)
+            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+    return out
+
+
+def polygon_area2(poly):
+    """Twice the signed area (shoelace)."""
+    return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
+               for k in range(len(poly)))
+
+
+def brute_cell(sites, i, box):
+    """Cell of sites[i] in the box, exactly: the box clipped by the closed
+    half-plane |p - s|^2 <= |p - n|^2 of every other distinct site n, with
+    coinciding vertices merged; [] when no area is left. Rotated to start
+    at the lowest vertex (smallest y, then x)."""
+    from fractions import Fraction as F
+    x0, y0, x1, y1 = (F(v) for v in box)
+    poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    sx, sy = sites[i]
+    for j, (nx, ny) in enumerate(sites):
+        if (nx, ny) != (sx, sy) and poly:
+            poly = clip_half_plane(poly, 2 * (nx - sx), 2 * (ny - sy), nx * nx + ny * ny - sx * sx - sy * sy)
+    merged = []
+    for p in poly:
+        if not merged or merged[-1] != p:
+            merged.append(p)
+    while len(merged) > 1 and merged[0] == merged[-1]:
+        merged.pop()
+    if len(merged) < 3 or polygon_area2(merged) == 0:
+        return []
+    start = min(range(len(merged)), key=lambda k: (merged[k][1], merged[k][0]))
+    return merged[start:] + merged[:start]
+
+
+def round_half_up(v):
+    import math
+    from fractions import Fraction as F
+    return math.floor(v + F(1, 2))
+
+
+def cells_cases(rng, tmp):
+    """vor cells against brute-force clipping with exact rationals: the
+    rounded vertices equal vor's, and the exact cells tile the box (their
+    areas add up to the box's exactly)."""
+    import os
+    big = 2**31 - 1
+    sets = [
+        ("random", [(rng.randint(-1000, 1000), rng.randint(-1000, 1000)) for _ in range(40)], (-1200, -900, 1100, 1300)),
+        ("random full range", [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(30)], (MIN, MIN, MAX, MAX)),
+        ("random partial box", [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(30)],
+         (-2**30, -2**29, 2**30 + 12345, 2**30)),
+        ("grid", [(x * 10, y * 10) for x in range(7) for y in range(6)] + [(20, 30), (0, 0)], (-5, -7, 55, 45)),
+        ("grid on bisectors", [(x * 10, y * 10) for x in range(5) for y in range(5)], (5, 5, 35, 25)),
+        ("circle", [(x * 7, y * 7) for x in range(-25, 26) for y in range(-25, 26) if x * x + y * y == 625],
+         (-200, -300, 250, 180)),
+        ("collinear", [(3 * t, -5 * t + 2) for t in (rng.randint(-40, 40) for _ in range(25))], (-150, -200, 130, 220)),
+        ("collinear big", [(t * 2**24, t * 2**23 - 7) for t in (rng.randint(-127, 127) for _ in range(15))],
+         (MIN, MIN, MAX, MAX)),
+        ("hull collinear", [(x, 0) for x in range(0, 50, 7)] + [(rng.randint(0, 49), rng.randint(1, 40)) for _ in range(12)],
+         (-10, -10, 60, 50)),
+        ("corners", [(MIN, MIN), (MAX, MIN), (MIN, MAX), (MAX, MAX), (0, 0), (1, -1), (MAX, 0)], (MIN, MIN, MAX, MAX)),
+        ("two sites", [(3, 4), (-7, 11)], (-20, -20, 20, 20)),
+        ("one site", [(5, 5), (5, 5)], (0, 0, 3, 9)),
+        ("far from the box", [(1000, 1000), (1010, 1000), (1000, 1020)], (0, 0, 10, 10)),
+        ("zero width", [(0, 0), (10, 0)], (5, -5, 5, 5)),
+    ]
+    for name, sites, box in sets:
+        path = os.path.join(tmp, "cells.sites")
+        with open(path, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in sites))
+        r = run(["cells", "--box", *map(str, box), path], "")
+        check(r.returncode == 0, f"cells {name}: status {r.returncode} {r.stderr}")
+        first = {}
+        for k, p in enumerate(sites):
+            first.setdefault(p, k)
+        distinct = [k for k, p in enumerate(sites) if first[p] == k]
+        unique = [sites[k] for k in distinct]
+        lines = r.stdout.splitlines()
+        check(len(lines) == len(distinct), f"cells {name}: {len(lines)} lines for {len(distinct)} sites")
+        area2, wrong = 0, 0
+        for k, line in zip(distinct, lines):
+            cell = brute_cell(unique, unique.index(sites[k]), box)
+            area2 += polygon_area2(cell) if cell else 0
+            expected = [k, len(cell)] + [round_half_up(c) for p in cell for c in p]
+            got = line.split()
+            if got[0] != "c" or [int(v) for v in got[1:]] != expected:
+                wrong += 1
+                if wrong <= 2:
+                    check(False, f"cells {name}: {line!r}, brute force {expected}")
+        check(wrong == 0, f"cells {name}: {wrong} of {len(distinct)} cells differ from brute force")
+        box_area2 = 2 * (box[2] - box[0]) * (box[3] - box[1])
+        check(area2 == box_area2, f"cells {name}: areas add up to {area2}/2, the box has {box_area2}/2")
+    # bad input: nothing on stdout, status 2
+    path = os.path.join(tmp, "cells.sites")
+    with open(path, "w") as f:
+        f.write("0 0\n1 1\n2\n")
+    r = run(["cells", "--box", "0", "0", "9", "9", path], "")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: line 3: "),
+          f"cells bad site line: {r.returncode} {r.stderr!r}")
+    for args in (["--box", "5", "0", "4", "9", "-"], ["--box", "0", "0", "9", "x", "-"],
+                 ["--box", "0", "0", "9", "2147483648", "-"], ["--box", "0", "0", "9", "-"], ["-"]):
+        r = run(["cells", *args], "0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: "),
+              f"cells {args}: {r.returncode} {r.stderr!r}")
 
 
 def main():
@@ -263,6 +377,7 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         nearest_cases(rng, tmp)
         raster_cases(rng, tmp)
+        cells_cases(rng, tmp)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

@@ -5,6 +5,7 @@
  *   vor delaunay FILE         the Delaunay triangulation of a site file
  *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
  *   vor raster ... SITES      the discrete Voronoi diagram of a frame
+ *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
  */
 #include <stdio.h>
 #include <string.h>
@@ -20,6 +21,7 @@ static const struct {
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
+    {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
 };
 
 int main(int argc, char **argv)

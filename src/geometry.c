@@ -1,0 +1,990 @@
+/*
+ * geometry.c - the Voronoi diagram's geometry, read from the Delaunay mesh:
+ * vertices (circumcentres), edges, the convex hull and cells clipped to a
+ * box. Read-only, like queries.c.
+ *
+ * The geometry is that of the true Voronoi diagram of the distinct sites,
+ * while the mesh is the Delaunay triangulation under the symbolic
+ * perturbation. The two differ only where sites are degenerate, and each
+ * difference is decided from the mesh with exact predicates:
+ *   - cocircular sites: several triangles share one circumcentre, and the
+ *     edges between them have length 0 (incircle = 0): skipped;
+ *   - collinear sites on the hull: triangles of zero area, whose
+ *     circumcentre is at infinity, and edges joining two of those sites
+ *     past a third between them, whose Voronoi edge is empty.
+ * docs/design.md ("Voronoi geometry") has the proofs.
+ *
+ * Arithmetic (seed 003 section 2.1: translate to one of the sites first,
+ * here so that the widths stay small). Around a site s, coordinates are
+ * taken relative to s and doubled, so that every line of a cell has integer
+ * coefficients: a line is a x + b y = c, its half-plane a x + b y <= c.
+ *   bisector of s and n (e = n - s):  a = e.x, b = e.y, c = |e|^2
+ *       |a|, |b| <= 2^32 - 1 (differences of int32), 0 <= c < 2^65
+ *   box side, e.g. x >= x0:           a = -1, b = 0, c = -2 (x0 - s.x)
+ *       |c| < 2^33
+ * Two lines meet at (x / w, y / w) with w = a1 b2 - a2 b1 (|w| < 2^65),
+ * x = c1 b2 - c2 b1 and y = a1 c2 - a2 c1 (|x|, |y| < 2 2^65 2^32 = 2^98).
+ * A point is inside a third line's half-plane when a x + b y - c w <= 0
+ * (w > 0): |a x|, |b y|, |c w| < 2^130, the sum < 2^132. Every value
+ * therefore fits in 160-bit two's complement (GEO_LIMBS), and each
+ * decision is the exact sign of a 3x3 determinant of line coefficients.
+ */
+#include "mesh.h"
+
+#define GEO_LIMBS VOR__LIMBS(160)
+#define U64_LIMBS VOR__LIMBS(64)
+
+/* A line a x + b y = c in a site's doubled frame, with an integer point
+ * (px, py) on it for the test of a parallel line. */
+typedef struct geo_line {
+    int64_t a, b;
+    vor__limb c[GEO_LIMBS];
+    int64_t px, py;
+} geo_line_t;
+
+/* A point (x / w, y / w), w > 0, in the same frame. */
+typedef struct geo_point {
+    vor__limb x[GEO_LIMBS];
+    vor__limb y[GEO_LIMBS];
+    vor__limb w[GEO_LIMBS];
+} geo_point_t;
+
+static inline uint32_t magnitude32(int64_t v)
+{
+    /* |v| <= 2^32 - 1 for a difference of two int32 */
+    return (uint32_t)(v < 0 ? -v : v);
+}
+
+/* r = x * k over GEO_LIMBS, exact when the product fits: |k| goes into
+ * limbs as a non-negative number, x is two's complement at full width. */
+static void mul_i64(vor__limb *r, const vor__limb *x, int64_t k)
+{
+    uint64_t m = (k < 0) ? 0u - (uint64_t)k : (uint64_t)k;
+    vor__limb limbs[U64_LIMBS];
+    vor__mw_from_u64(limbs, U64_LIMBS, m);
+    vor__mw_mul(r, GEO_LIMBS, x, GEO_LIMBS, limbs, U64_LIMBS);
+    if (k < 0) {
+        vor__mw_neg(r, GEO_LIMBS);
+    }
+}
+
+/* r = a * b over GEO_LIMBS for int64 a, b with |a b| < 2^159. */
+static void mul_i64_i64(vor__limb *r, int64_t a, int64_t b)
+{
+    vor__limb t[GEO_LIMBS];
+    vor__mw_from_i64(t, GEO_LIMBS, a);
+    mul_i64(r, t, b);
+}
+
+/* The bisector of s and n, the half-plane of points at least as close to
+ * s as to n: 2 e.p <= |e|^2 for p relative to s, e.p' <= |e|^2 doubled. */
+static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
+{
+    int64_t ex = (int64_t)n->x - s->x, ey = (int64_t)n->y - s->y;
+    uint32_t mx = magnitude32(ex), my = magnitude32(ey);
+    vor__limb t[GEO_LIMBS];
+    l->a = ex;
+    l->b = ey;
+    l->px = ex; /* the midpoint of s and n, doubled: e */
+    l->py = ey;
+    vor__mw_from_u64(l->c, GEO_LIMBS, vor__mul_u32(mx, mx));
+    vor__mw_from_u64(t, GEO_LIMBS, vor__mul_u32(my, my));
+    vor__mw_add(l->c, t, GEO_LIMBS); /* < 2^65 */
+}
+
+/* Box sides in counterclockwise order, each with its outward normal:
+ * 0 bottom (0, -1), 1 right (1, 0), 2 top (0, 1), 3 left (-1, 0). */
+static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, unsigned side)
+{
+    int64_t c;
+    switch (side) {
+    case 0:
+        l->a = 0;
+        l->b = -1;
+        c = -2 * ((int64_t)box->y0 - s->y);
+        break;
+    case 1:
+        l->a = 1;
+        l->b = 0;
+        c = 2 * ((int64_t)box->x1 - s->x);
+        break;
+    case 2:
+        l->a = 0;
+        l->b = 1;
+        c = 2 * ((int64_t)box->y1 - s->y);
+        break;
+    default:
+        l->a = -1;
+        l->b = 0;
+        c = -2 * ((int64_t)box->x0 - s->x);
+        break;
+    }
+    vor__mw_from_i64(l->c, GEO_LIMBS, c); /* |c| < 2^33 */
+    l->px = l->a * c; /* unit normal: (a c, b c) is on the line */
+    l->py = l->b * c;
+}
+
+/* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
+ * (-b1, a1) (counterclockwise around the cell) increases line 2's
+ * a x + b y, i.e. line 2 bounds line 1 from above. */
+static int direction(const geo_line_t *l1, const geo_line_t *l2)
+{
+    return vor__compare_products(l1->a, l2->b, l2->a, l1->b);
+}
+
+/* The point where l1 and l2 meet; false when they are parallel. */
+static bool intersect(geo_point_t *p, const geo_line_t *l1, const geo_line_t *l2)
+{
+    vor__limb t[GEO_LIMBS];
+    mul_i64_i64(p->w, l1->a, l2->b);
+    mul_i64_i64(t, l2->a, l1->b);
+    vor__mw_sub(p->w, t, GEO_LIMBS);
+    int sign = vor__mw_sign(p->w, GEO_LIMBS);
+    if (sign == 0) {
+        return false;
+    }
+    mul_i64(p->x, l1->c, l2->b);
+    mul_i64(t, l2->c, l1->b);
+    vor__mw_sub(p->x, t, GEO_LIMBS);
+    mul_i64(p->y, l2->c, l1->a);
+    mul_i64(t, l1->c, l2->a);
+    vor__mw_sub(p->y, t, GEO_LIMBS);
+    if (sign < 0) {
+        vor__mw_neg(p->x, GEO_LIMBS);
+        vor__mw_neg(p->y, GEO_LIMBS);
+        vor__mw_neg(p->w, GEO_LIMBS);
+    }
+    return true;
+}
+
+/* Sign of a x + b y - c w: 1 when p is strictly outside l's half-plane,
+ * 0 on the line, -1 strictly inside. */
+static int side_of(const geo_line_t *l, const geo_point_t *p)
+{
+    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    mul_i64(sum, p->x, l->a);
+    mul_i64(t, p->y, l->b);
+    vor__mw_add(sum, t, GEO_LIMBS);
+    vor__mw_mul(t, GEO_LIMBS, l->c, GEO_LIMBS, p->w, GEO_LIMBS);
+    vor__mw_sub(sum, t, GEO_LIMBS);
+    return vor__mw_sign(sum, GEO_LIMBS);
+}
+
+/* side_of for the integer point of line `on` (|px|, |py| < 2^34). */
+static int side_of_line(const geo_line_t *l, const geo_line_t *on)
+{
+    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    mul_i64_i64(sum, on->px, l->a);
+    mul_i64_i64(t, on->py, l->b);
+    vor__mw_add(sum, t, GEO_LIMBS);
+    vor__mw_sub(sum, l->c, GEO_LIMBS);
+    return vor__mw_sign(sum, GEO_LIMBS);
+}
+
+/* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
+ * site's doubled frame, |v| < 2^98, 0 < w < 2^65. Returns false, with the
+ * result saturated, when it is outside int32. The quotient is found by
+ * shift and subtract (no divide instruction anywhere): if it fits in int32
+ * after adding origin, its magnitude is below 2^33, so 33 steps decide it
+ * and a larger one is out of range. */
+static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
+                             int32_t *out)
+{
+    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
+    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        rest[i] = v[i];
+        step[i] = w[i];
+    }
+    vor__mw_add(rest, w, GEO_LIMBS);
+    bool negative = vor__mw_sign(rest, GEO_LIMBS) < 0;
+    if (negative) {
+        vor__mw_neg(rest, GEO_LIMBS);
+    }
+    for (unsigned k = 0; k < 34u; k++) { /* 2w 2^33 < 2^99 */
+        vor__mw_shl1(step, GEO_LIMBS);
+    }
+    int64_t q;
+    if (vor__mw_compare(rest, step, GEO_LIMBS) >= 0) {
+        q = negative ? -((int64_t)1 << 33) - 1 : ((int64_t)1 << 33); /* |q| >= 2^33 */
+    } else {
+        uint64_t quotient = 0;
+        for (unsigned k = 0; k < 33u; k++) { /* quotient bits 32 .. 0 */
+            vor__mw_shr1(step, GEO_LIMBS);
+            quotient <<= 1;
+            if (vor__mw_compare(rest, step, GEO_LIMBS) >= 0) {
+                vor__mw_sub(rest, step, GEO_LIMBS);
+                quotient |= 1u;
+            }
+        }
+        bool exact = vor__mw_sign(rest, GEO_LIMBS) == 0;
+        /* floor of a negative quotient: -ceil(|n| / d) */
+        q = negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
+    }
+    int64_t r = origin + q;
+    if (r < INT32_MIN) {
+        *out = INT32_MIN;
+        return false;
+    }
+    if (r > INT32_MAX) {
+        *out = INT32_MAX;
+        return false;
+    }
+    *out = (int32_t)r;
+    return true;
+}
+
+/* The rounded vertex of p (in the frame of `origin`). */
+static void round_point(const geo_point_t *p, const vor_point_t *origin, vor_vertex_t *out)
+{
+    bool x_ok = round_coordinate(p->x, p->w, origin->x, &out->point.x);
+    bool y_ok = round_coordinate(p->y, p->w, origin->y, &out->point.y);
+    out->status = (x_ok && y_ok) ? VOR_VERTEX_IN_RANGE : VOR_VERTEX_OUT_OF_RANGE;
+}
+
+/* ------------------------------------------------------------------ */
+/* Vertices                                                            */
+
+int vor_circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                     vor_vertex_t *out)
+{
+    if (a == NULL || b == NULL || c == NULL || out == NULL) {
+        return VOR_ERR_ARG;
+    }
+    geo_line_t lb, lc;
+    geo_point_t p;
+    bisector(&lb, a, b);
+    bisector(&lc, a, c);
+    /* the bisectors of a with b and c are parallel exactly when a, b, c
+     * are collinear (w = cross(b - a, c - a)) */
+    if (!intersect(&p, &lb, &lc)) {
+        out->point.x = 0;
+        out->point.y = 0;
+        out->status = VOR_VERTEX_AT_INFINITY;
+        return VOR_OK;
+    }
+    round_point(&p, a, out);
+    return VOR_OK;
+}
+
+int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_vertex_t *out)
+{
+    if (d == NULL || out == NULL || a >= d->site_count || b >= d->site_count ||
+        c >= d->site_count) {
+        return VOR_ERR_ARG;
+    }
+    return vor_circumcentre(&d->sites[a], &d->sites[b], &d->sites[c], out);
+}
+
+/* ------------------------------------------------------------------ */
+/* The true Voronoi edge of a Delaunay edge                            */
+
+static int sign64(int64_t v)
+{
+    return (v > 0) - (v < 0);
+}
+
+/* For collinear a, m, b: does m lie strictly inside the segment ab? Then
+ * the steps a -> m and m -> b point the way a -> b does, coordinate by
+ * coordinate (no products needed). */
+static bool strictly_between(const vor_point_t *a, const vor_point_t *m, const vor_point_t *b)
+{
+    int sx = sign64((int64_t)b->x - a->x), sy = sign64((int64_t)b->y - a->y);
+    return sign64((int64_t)m->x - a->x) == sx && sign64((int64_t)m->y - a->y) == sy &&
+           sign64((int64_t)b->x - m->x) == sx && sign64((int64_t)b->y - m->y) == sy;
+}
+
+/*
+ * The Delaunay edge p -> q with r the third vertex of the triangle on its
+ * right and l of the one on its left (VOR__INFINITE at the hull). Its
+ * Voronoi edge runs along the bisector in direction (q - p) turned left,
+ * from the circumcentre of (q, p, r) to that of (p, q, l). Returns false
+ * when the true edge is empty or a single point; else sets *has_start and
+ * *has_end, which say whether those ends are finite vertices.
+ *   - r at infinity: nothing bounds the edge on that side.
+ *   - r collinear with p, q (a zero-area triangle, on the hull): if r is
+ *     between p and q, it is strictly closer than p and q on the whole
+ *     bisector, so the edge is empty; otherwise it does not bound it.
+ *   - r strictly right: the edge starts at the circumcentre.
+ *   - both ends finite: they coincide exactly when p, q, r, l are
+ *     cocircular (a zero-length edge of the perturbed mesh).
+ */
+static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, uint32_t l,
+                      bool *has_start, bool *has_end)
+{
+    *has_start = false;
+    *has_end = false;
+    if (r != VOR__INFINITE) {
+        int o = vor_orient2d(&s[p], &s[q], &s[r], NULL);
+        VOR_ASSERT(o <= 0);
+        if (o != 0) {
+            *has_start = true;
+        } else if (strictly_between(&s[p], &s[r], &s[q])) {
+            return false;
+        }
+    }
+    if (l != VOR__INFINITE) {
+        int o = vor_orient2d(&s[p], &s[q], &s[l], NULL);
+        VOR_ASSERT(o >= 0);
+        if (o != 0) {
+            *has_end = true;
+        } else if (strictly_between(&s[p], &s[l], &s[q])) {
+            return false;
+        }
+    }
+    if (*has_start && *has_end && vor_incircle(&s[p], &s[q], &s[l], &s[r], NULL) == 0) {
+        return false;
+    }
+    return true;
+}
+
+/* The third vertex of triangle t besides p and q. */
+static uint32_t third_vertex(const vor__tri_t *t, uint32_t p, uint32_t q)
+{
+    vor_index_t v[3];
+    vor__vertices(t, v);
+    for (unsigned i = 0; i < 2u; i++) {
+        if (v[i] != p && v[i] != q) {
+            return v[i];
+        }
+    }
+    return v[2];
+}
+
+/* floor(v / 2) for the rounded midpoint, without a shift of a negative */
+static int32_t floor_half(int64_t v)
+{
+    return (int32_t)((v - (int64_t)((uint64_t)v & 1u)) / 2);
+}
+
+static void fill_edge(const vor_t *d, vor_edge_t *e, uint32_t p, uint32_t q, uint32_t r,
+                      uint32_t l, bool has_start, bool has_end)
+{
+    const vor_point_t *s = d->sites;
+    if (!has_start && has_end) { /* a ray starts at its vertex: turn it round */
+        uint32_t t = p;
+        p = q;
+        q = t;
+        r = l;
+        has_start = true;
+        has_end = false;
+    }
+    e->sites[0] = p;
+    e->sites[1] = q;
+    e->dx = -((int64_t)s[q].y - s[p].y);
+    e->dy = (int64_t)s[q].x - s[p].x;
+    e->to.point.x = 0;
+    e->to.point.y = 0;
+    e->to.status = VOR_VERTEX_AT_INFINITY;
+    if (has_start) {
+        vor_circumcentre(&s[p], &s[q], &s[r], &e->from);
+        if (has_end) {
+            vor_circumcentre(&s[p], &s[q], &s[l], &e->to);
+        }
+        e->kind = has_end ? VOR_EDGE_SEGMENT : VOR_EDGE_RAY;
+    } else {
+        e->kind = VOR_EDGE_LINE;
+        e->from.point.x = floor_half((int64_t)s[p].x + s[q].x + 1);
+        e->from.point.y = floor_half((int64_t)s[p].y + s[q].y + 1);
+        e->from.status = VOR_VERTEX_IN_RANGE;
+    }
+}
+
+void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
+{
+    it->d = d;
+    it->slot = 0;
+    it->edge = 0;
+}
+
+int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
+{
+    const vor_t *d = it->d;
+    if (d->vertex_count < 2u) {
+        return 0;
+    }
+    uint32_t end = vor__used_slots_end(d);
+    /* each used slot once, each of its three edges once: ends at `end` */
+    for (uint32_t slot = vor__next_used_slot(d, it->slot); slot < end;
+         slot = vor__next_used_slot(d, slot + 1u)) {
+        const vor__tri_t *t = &d->triangles[slot];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned first = (slot == it->slot) ? it->edge : 0u;
+        for (unsigned i = first; i < 3u; i++) {
+            uint32_t p = v[vor__next(i)], q = v[vor__prev(i)], l = v[i];
+            if (p == VOR__INFINITE || q == VOR__INFINITE) {
+                continue;
+            }
+            uint32_t other = t->n[i];
+            uint32_t r = third_vertex(&d->triangles[other], p, q);
+            /* each edge once: from its finite side, or the smaller slot */
+            bool ghost_here = l == VOR__INFINITE, ghost_there = r == VOR__INFINITE;
+            if (ghost_here != ghost_there ? ghost_here : other < slot) {
+                continue;
+            }
+            bool has_start, has_end;
+            if (!true_edge(d->sites, p, q, r, l, &has_start, &has_end)) {
+                continue;
+            }
+            fill_edge(d, edge, p, q, r, l, has_start, has_end);
+            it->slot = slot;
+            it->edge = i + 1u;
+            return 1;
+        }
+    }
+    it->slot = end;
+    it->edge = 0;
+    return 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* Convex hull                                                         */
+
+static bool lower(const vor_point_t *a, const vor_point_t *b)
+{
+    return a->y < b->y || (a->y == b->y && a->x < b->x);
+}
+
+/* The triangle at infinity in `slot` is (u, w, infinity) in counterclockwise
+ * order, so the outside is left of u -> w and the hull runs w -> u
+ * counterclockwise. The next hull edge's triangle (x, u, infinity) shares
+ * the edge (u, infinity), opposite w. */
+static void ghost_edge(const vor_t *d, uint32_t slot, uint32_t *w, uint32_t *u, uint32_t *next)
+{
+    const vor__tri_t *g = &d->triangles[slot];
+    unsigned k = vor__vertex_index(g, VOR__INFINITE);
+    *u = vor__vertex(g, vor__next(k));
+    *w = vor__vertex(g, vor__prev(k));
+    *next = g->n[vor__prev(k)];
+}
+
+/* The site with the smallest (y, x): from any site, step to a lower
+ * neighbour while there is one. In a triangulation a site that is not the
+ * lowest has a lower neighbour (the direction to the lowest site lies in
+ * one of its triangles), and each step is strictly lower, so this ends
+ * within vertex_count steps at the lowest site. */
+static uint32_t lowest_site(const vor_t *d)
+{
+    const vor_point_t *s = d->sites;
+    uint32_t best = d->last_site;
+    for (uint32_t step = 0; step < d->vertex_count; step++) {
+        uint32_t from = best, n;
+        vor_neighbour_iter_t it;
+        vor_neighbours_begin(&it, d, from);
+        while (vor_neighbours_next(&it, &n)) {
+            if (lower(&s[n], &s[best])) {
+                best = n;
+            }
+        }
+        if (best == from) {
+            break;
+        }
+    }
+    return best;
+}
+
+void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
+{
+    it->d = d;
+    it->left = 0;
+    it->ghost = VOR__NONE;
+    it->collinear = 0;
+    it->site = it->first = d->last_site;
+    if (d->vertex_count < 2u) {
+        it->left = d->vertex_count; /* one site: itself */
+        return;
+    }
+    const vor_point_t *s = d->sites;
+    uint32_t low = lowest_site(d);
+    /* its hull edge low -> u: the triangle (u, low, infinity) of its fan,
+     * found turning around it (fan size <= vertex_count) */
+    uint32_t slot = low;
+    for (uint32_t step = 0; step <= d->vertex_count; step++) {
+        const vor__tri_t *t = &d->triangles[slot];
+        unsigned i = vor__vertex_index(t, (vor_index_t)low);
+        if (i == 3u) {
+            return; /* only on a broken mesh */
+        }
+        if (vor__vertex(t, vor__next(i)) == VOR__INFINITE) {
+            it->ghost = slot;
+            break;
+        }
+        slot = t->n[vor__next(i)];
+    }
+    if (it->ghost == VOR__NONE) {
+        return;
+    }
+    /* all sites are collinear exactly when the hull's corners are: one
+     * turn around the hull (at most vertex_count edges) */
+    uint32_t w, u, next, g = it->ghost;
+    ghost_edge(d, g, &w, &u, &next);
+    uint32_t second = u;
+    it->collinear = 1;
+    for (uint32_t step = 0; step < d->vertex_count && it->collinear; step++) {
+        ghost_edge(d, next, &w, &u, &next);
+        if (vor_orient2d(&s[low], &s[second], &s[u], NULL) != 0) {
+            it->collinear = 0;
+        }
+        if (next == g) {
+            break;
+        }
+    }
+    it->site = it->first = low;
+    /* collinear: every site once, up the line; else back to the start */
+    it->left = it->collinear ? d->vertex_count : d->vertex_count + 1u;
+}
+
+int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
+{
+    const vor_t *d = it->d;
+    if (it->left == 0u) {
+        return 0;
+    }
+    *site = it->site;
+    it->left--;
+    if (it->ghost == VOR__NONE) {
+        it->left = 0;
+        return 1;
+    }
+    /* advance: along the hull edge w -> u, the next site between site and u
+     * on the segment (a Delaunay neighbour: consecutive sites on a hull
+     * edge have a Voronoi ray in common), else u and the next hull edge */
+    const vor_point_t *s = d->sites;
+    uint32_t w, u, next, n, best = VOR__NONE;
+    ghost_edge(d, it->ghost, &w, &u, &next);
+    vor_neighbour_iter_t ni;
+    vor_neighbours_begin(&ni, d, it->site);
+    while (vor_neighbours_next(&ni, &n)) {
+        if (n != u && vor_orient2d(&s[it->site], &s[u], &s[n], NULL) == 0 &&
+            strictly_between(&s[it->site], &s[n], &s[u]) &&
+            (best == VOR__NONE || strictly_between(&s[it->site], &s[n], &s[best]))) {
+            best = n;
+        }
+    }
+    if (best != VOR__NONE) {
+        it->site = best;
+    } else {
+        it->site = u;
+        it->ghost = next;
+    }
+    if (!it->collinear && it->site == it->first) {
+        it->left = 0;
+    }
+    return 1;
+}
+
+/* ------------------------------------------------------------------ */
+/* Cells                                                               */
+
+/* Lines of a cell are named by a site id or a box side (BOX_LINE + k). */
+#define BOX_LINE 0xFFFFFFF0u
+#define NO_LINE 0xFFFFFFFFu
+
+typedef struct cell {
+    const vor_t *d;
+    uint32_t site;
+    const vor_point_t *s; /* the site's point: the frame's origin */
+    const vor_box_t *box;
+    uint32_t start_slot; /* the fan triangle where the edges' angles begin */
+    uint32_t degree;     /* Delaunay neighbours */
+    uint32_t side_lo[4], side_hi[4]; /* each box side's part in the cell */
+    bool side_empty[4];
+} cell_t;
+
+static void make_line(const cell_t *c, uint32_t name, geo_line_t *l)
+{
+    if (name >= BOX_LINE) {
+        box_side(l, c->box, c->s, name - BOX_LINE);
+    } else {
+        bisector(l, c->s, &c->d->sites[name]);
+    }
+}
+
+/* Angle classes of an outward normal e = n - s, counterclockwise from
+ * (0, -1), the bottom side's normal: quadrant k begins at box side k's
+ * normal. */
+static unsigned quadrant(int64_t x, int64_t y)
+{
+    if (x >= 0 && y < 0) {
+        return 0;
+    }
+    if (x > 0 && y >= 0) {
+        return 1;
+    }
+    if (x <= 0 && y > 0) {
+        return 2;
+    }
+    return 3;
+}
+
+static unsigned quadrant_of(const cell_t *c, uint32_t n)
+{
+    const vor_point_t *p = &c->d->sites[n];
+    return quadrant((int64_t)p->x - c->s->x, (int64_t)p->y - c->s->y);
+}
+
+/* Is the direction to neighbour a strictly before that to b, in angle
+ * from (0, -1) counterclockwise? */
+static bool angle_before(const cell_t *c, uint32_t a, uint32_t b)
+{
+    unsigned qa = quadrant_of(c, a), qb = quadrant_of(c, b);
+    if (qa != qb) {
+        return qa < qb;
+    }
+    /* within a quadrant (less than a half turn): b turns left of a */
+    return vor_orient2d(c->s, &c->d->sites[a], &c->d->sites[b], NULL) > 0;
+}
+
+/* A step around the fan of c->site counterclockwise: the triangle at
+ * `slot` is (site, x, y); the edge (site, y) comes next, with x on its
+ * right and the next triangle's third vertex on its left. */
+static void fan_triangle(const cell_t *c, uint32_t slot, uint32_t *x, uint32_t *y, uint32_t *next)
+{
+    const vor__tri_t *t = &c->d->triangles[slot];
+    unsigned i = vor__vertex_index(t, (vor_index_t)c->site);
+    VOR_ASSERT(i != 3u);
+    *x = vor__vertex(t, vor__next(i));
+    *y = vor__vertex(t, vor__prev(i));
+    *next = t->n[vor__next(i)]; /* across (site, y) */
+}
+
+/* The fan's size, and where the angles of the edge normals wrap around:
+ * around a site the neighbours come in counterclockwise order, so their
+ * angles from (0, -1) rise except at one step (unless all are equal).
+ * The walk from there meets the edges in the order of the box sides'
+ * normals too. The fan closes within vertex_count steps on a valid mesh. */
+VOR__NOINLINE static void find_start(cell_t *c)
+{
+    const vor_t *d = c->d;
+    uint32_t slot = c->site, x, y, next;
+    uint32_t first = VOR__NONE, first_slot = slot, previous = VOR__NONE;
+    c->start_slot = slot;
+    c->degree = 0;
+    bool found = false;
+    for (uint32_t step = 0; step <= d->vertex_count; step++) {
+        fan_triangle(c, slot, &x, &y, &next);
+        if (y != VOR__INFINITE) {
+            c->degree++;
+            if (first == VOR__NONE) {
+                first = y;
+                first_slot = slot;
+            } else if (!found && angle_before(c, y, previous)) {
+                c->start_slot = slot;
+                found = true;
+            }
+            previous = y;
+        }
+        slot = next;
+        if (slot == c->site) {
+            break;
+        }
+    }
+    if (!found) { /* the wrap is at the first neighbour, or nowhere */
+        c->start_slot = first_slot;
+    }
+}
+
+/* The part of box side k inside the cell: clipped by the half-plane of
+ * every Delaunay neighbour (the cell is their intersection; neighbours of
+ * the perturbed mesh that are no true neighbours add true, redundant
+ * constraints). Along the side in its direction, a constraint bounds from
+ * below or above (direction()), or is parallel. */
+VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
+{
+    const vor_t *d = c->d;
+    geo_line_t side, line;
+    geo_point_t lo, hi;
+    box_side(&side, c->box, c->s, k);
+    c->side_lo[k] = BOX_LINE + ((k + 3u) & 3u);
+    c->side_hi[k] = BOX_LINE + ((k + 1u) & 3u);
+    c->side_empty[k] = false;
+    make_line(c, c->side_lo[k], &line);
+    intersect(&lo, &side, &line);
+    make_line(c, c->side_hi[k], &line);
+    intersect(&hi, &side, &line);
+    if (d->vertex_count >= 2u) {
+        uint32_t slot = c->site, x, y, next;
+        for (uint32_t step = 0; step <= d->vertex_count; step++) {
+            fan_triangle(c, slot, &x, &y, &next);
+            if (y != VOR__INFINITE) {
+                bisector(&line, c->s, &d->sites[y]);
+                int g = direction(&side, &line);
+                if (g == 0) {
+                    if (side_of_line(&line, &side) > 0) {
+                        c->side_empty[k] = true;
+                        return;
+                    }
+                } else if (g > 0) {
+                    if (side_of(&line, &hi) > 0) {
+                        c->side_hi[k] = y;
+                        intersect(&hi, &side, &line);
+                    }
+                } else if (side_of(&line, &lo) > 0) {
+                    c->side_lo[k] = y;
+                    intersect(&lo, &side, &line);
+                }
+            }
+            slot = next;
+            if (slot == c->site) {
+                break;
+            }
+        }
+    }
+    make_line(c, c->side_hi[k], &line);
+    c->side_empty[k] = side_of(&line, &lo) > 0;
+}
+
+/* The output: distinct exact points in order, each compared with the
+ * previous one (and the last with the first), rounded when confirmed. The
+ * first two are held back so that a result of fewer than three (no area)
+ * writes nothing. Three point buffers rotate, so nothing is copied. */
+typedef struct emitter {
+    const cell_t *c;
+    vor_point_t *out; /* NULL: only count */
+    uint32_t count;
+    vor_point_t held[2];
+    geo_point_t pool[3];
+    uint32_t names[3][2]; /* the two lines through each pooled point */
+    int first, last;      /* pool indices, -1 while empty */
+} emitter_t;
+
+static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
+{
+    geo_line_t l;
+    make_line(e->c, e->names[a][0], &l);
+    if (side_of(&l, p) != 0) {
+        return false;
+    }
+    make_line(e->c, e->names[a][1], &l);
+    return side_of(&l, p) == 0;
+}
+
+static void confirm(emitter_t *e, int index)
+{
+    vor_vertex_t v;
+    round_point(&e->pool[index], e->c->s, &v);
+    VOR_ASSERT(v.status == VOR_VERTEX_IN_RANGE); /* inside the box */
+    if (e->out != NULL) {
+        if (e->count < 2u) {
+            e->held[e->count].x = v.point.x;
+            e->held[e->count].y = v.point.y;
+        } else {
+            if (e->count == 2u) {
+                for (unsigned i = 0; i < 2u; i++) {
+                    e->out[i].x = e->held[i].x;
+                    e->out[i].y = e->held[i].y;
+                }
+            }
+            e->out[e->count].x = v.point.x;
+            e->out[e->count].y = v.point.y;
+        }
+    }
+    e->count++;
+}
+
+/* The pool slot a new point may be computed into. */
+static int scratch(const emitter_t *e)
+{
+    int i = 0;
+    while (i == e->first || i == e->last) {
+        i++;
+    }
+    return i;
+}
+
+/* The new point in pool[scratch(e)], on lines a and b. */
+static void emit(emitter_t *e, uint32_t a, uint32_t b)
+{
+    int i = scratch(e);
+    e->names[i][0] = a;
+    e->names[i][1] = b;
+    if (e->last >= 0 && same_point(e, e->last, &e->pool[i])) {
+        return;
+    }
+    if (e->first < 0) {
+        e->first = e->last = i;
+        return;
+    }
+    confirm(e, e->last);
+    e->last = i;
+}
+
+VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
+{
+    const cell_t *c = e->c;
+    if (c->side_empty[k]) {
+        return;
+    }
+    geo_line_t side, line;
+    box_side(&side, c->box, c->s, k);
+    make_line(c, c->side_lo[k], &line);
+    intersect(&e->pool[scratch(e)], &side, &line);
+    emit(e, BOX_LINE + k, c->side_lo[k]);
+}
+
+/* The Voronoi edge with neighbour n (r: its start's third site, l: its
+ * end's, NO_LINE for an unbounded end) clipped to the box; emits its
+ * start if anything is left. */
+VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32_t l)
+{
+    const cell_t *c = e->c;
+    geo_line_t edge, line;
+    geo_point_t hi;
+    geo_point_t *lo = &e->pool[scratch(e)];
+    uint32_t lo_name = NO_LINE, hi_name = NO_LINE;
+    uint32_t bounds[6] = {r, l, BOX_LINE, BOX_LINE + 1u, BOX_LINE + 2u, BOX_LINE + 3u};
+    bisector(&edge, c->s, &c->d->sites[n]);
+    for (unsigned k = 0; k < 6u; k++) {
+        if (bounds[k] == NO_LINE) {
+            continue;
+        }
+        make_line(c, bounds[k], &line);
+        int g = direction(&edge, &line);
+        if (g == 0) {
+            if (side_of_line(&line, &edge) > 0) {
+                return;
+            }
+        } else if (g > 0) {
+            if (hi_name == NO_LINE || side_of(&line, &hi) > 0) {
+                hi_name = bounds[k];
+                intersect(&hi, &edge, &line);
+            }
+        } else if (lo_name == NO_LINE || side_of(&line, lo) > 0) {
+            lo_name = bounds[k];
+            intersect(lo, &edge, &line);
+        }
+    }
+    /* two opposite box sides are never both parallel to a line */
+    VOR_ASSERT(lo_name != NO_LINE && hi_name != NO_LINE);
+    if (lo_name == NO_LINE || hi_name == NO_LINE) {
+        return;
+    }
+    make_line(c, hi_name, &line);
+    if (side_of(&line, lo) > 0) {
+        return; /* starts after it ends: outside the box */
+    }
+    emit(e, n, lo_name);
+}
+
+/* One pass over the cell's boundary: the pieces of box sides and Voronoi
+ * edges in the angular order of their outward normals, from (0, -1). That
+ * is the order of a convex polygon's edges, and the first one's start is
+ * the lowest vertex. Returns the number of vertices. */
+static uint32_t trace(const cell_t *c, vor_point_t *out)
+{
+    const vor_t *d = c->d;
+    emitter_t e;
+    e.c = c;
+    e.out = out;
+    e.count = 0;
+    e.first = e.last = -1;
+    unsigned next_side = 0;
+    if (d->vertex_count >= 2u) {
+        uint32_t slot = c->start_slot, x, y, next, z, dummy;
+        for (uint32_t step = 0; step <= d->vertex_count; step++) {
+            fan_triangle(c, slot, &x, &y, &next);
+            if (y != VOR__INFINITE) {
+                fan_triangle(c, next, &dummy, &z, &dummy);
+                for (unsigned q = quadrant_of(c, y); next_side <= q; next_side++) {
+                    emit_side(&e, next_side);
+                }
+                bool has_start, has_end;
+                if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
+                    emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
+                }
+            }
+            slot = next;
+            if (slot == c->start_slot) {
+                break;
+            }
+        }
+    }
+    for (; next_side < 4u; next_side++) {
+        emit_side(&e, next_side);
+    }
+    if (e.last >= 0 && e.last != e.first && !same_point(&e, e.first, &e.pool[e.last])) {
+        confirm(&e, e.last);
+    }
+    return (e.count >= 3u) ? e.count : 0u;
+}
+
+static bool in_mesh(const vor_t *d, uint32_t site)
+{
+    if (site >= d->site_count) {
+        return false;
+    }
+    if (d->vertex_count == 1u) {
+        return site == d->last_site;
+    }
+    return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
+}
+
+int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
+             uint32_t capacity, uint32_t *count)
+{
+    if (d == NULL || box == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
+        box->x0 > box->x1 || box->y0 > box->y1 || !in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    if (box->x0 == box->x1 || box->y0 == box->y1) {
+        *count = 0;
+        return VOR_OK;
+    }
+    cell_t c;
+    c.d = d;
+    c.site = site;
+    c.s = &d->sites[site];
+    c.box = box;
+    c.start_slot = site;
+    c.degree = 0;
+    if (d->vertex_count >= 2u) {
+        find_start(&c);
+    }
+    for (unsigned k = 0; k < 4u; k++) {
+        clip_side(&c, k);
+    }
+    /* at most one vertex per neighbour and per box side: write at once
+     * when that fits, else count first */
+    if (capacity < c.degree + 4u) {
+        uint32_t needed = trace(&c, NULL);
+        if (needed > capacity) {
+            *count = needed;
+            return VOR_ERR_BUFFER;
+        }
+    }
+    *count = trace(&c, vertices);
+    return VOR_OK;
+}
+
+void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
+{
+    it->d = d;
+    it->next_site = 0;
+    it->box.x0 = box->x0;
+    it->box.y0 = box->y0;
+    it->box.x1 = box->x1;
+    it->box.y1 = box->y1;
+}
+
+int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, uint32_t capacity,
+                   uint32_t *count)
+{
+    const vor_t *d = it->d;
+    if (site == NULL) {
+        return VOR_ERR_ARG;
+    }
+    while (it->next_site < d->site_count && !in_mesh(d, it->next_site)) {
+        it->next_site++;
+    }
+    if (it->next_site >= d->site_count) {
+        return 0;
+    }
+    *site = it->next_site;
+    int err = vor_cell(d, it->next_site, &it->box, vertices, capacity, count);
+    if (err != VOR_OK) {
+        return err;
+    }
+    it->next_site++;
+    return 1;
+}

@@ -1,0 +1,90 @@
+/*
+ * vor cells --box X0 Y0 X1 Y1 SITES
+ *
+ * For each site i of SITES (counted like `vor delaunay`) that is not a
+ * duplicate of an earlier one, one line "c i m x1 y1 ... xm ym": its
+ * Voronoi cell clipped to the box [X0, X1] x [Y0, Y1], counterclockwise
+ * from the lowest vertex, computed exactly and rounded to the nearest
+ * integer (halves up); m = 0 when the cell meets the box in no area.
+ * Bad input: "error: line N: reason" (or "error: reason" for the
+ * arguments), exit 2, nothing on stdout.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define USAGE "usage: vor cells --box X0 Y0 X1 Y1 SITES"
+
+static int32_t box_field(const char *text)
+{
+    const char *cursor = text, *why = "";
+    int32_t value;
+    if (!cli_int32_field(&cursor, &value, &why) || !cli_at_end(cursor)) {
+        fprintf(stderr, "error: --box: %s: %s\n", text, why[0] ? why : "not a decimal integer");
+        exit(2);
+    }
+    return value;
+}
+
+int cli_cells(int argc, char **argv)
+{
+    vor_box_t box = {0, 0, 0, 0};
+    bool have_box = false;
+    const char *path = NULL;
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--box") == 0 && i + 4 < argc) {
+            box.x0 = box_field(argv[i + 1]);
+            box.y0 = box_field(argv[i + 2]);
+            box.x1 = box_field(argv[i + 3]);
+            box.y1 = box_field(argv[i + 4]);
+            have_box = true;
+            i += 4;
+        } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
+            path = argv[i];
+        } else {
+            cli_error(USAGE);
+        }
+    }
+    if (!have_box || path == NULL) {
+        cli_error(USAGE);
+    }
+    if (box.x0 > box.x1 || box.y0 > box.y1) {
+        cli_error("--box: X0 > X1 or Y0 > Y1");
+    }
+    uint32_t n;
+    vor_point_t *sites = cli_read_sites(path, &n);
+    uint32_t capacity = (n < 1u) ? 1u : n;
+    void *arena = malloc(VOR_ARENA_BYTES(capacity));
+    uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
+    vor_point_t *vertices = malloc((size_t)VOR_CELL_MAX_VERTICES(capacity) * sizeof *vertices);
+    if (arena == NULL || duplicate_of == NULL || vertices == NULL) {
+        cli_error("out of memory");
+    }
+    vor_t d;
+    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK ||
+        vor_build(&d, sites, n, NULL, duplicate_of) != VOR_OK) {
+        cli_error("cannot build the diagram");
+    }
+    cli_output_t out = {NULL, 0, 0};
+    for (uint32_t i = 0; i < n; i++) {
+        if (duplicate_of[i] != i) {
+            continue;
+        }
+        uint32_t count;
+        if (vor_cell(&d, i, &box, vertices, VOR_CELL_MAX_VERTICES(capacity), &count) != VOR_OK) {
+            cli_error("cell computation failed");
+        }
+        cli_append(&out, "c %u %u", i, count);
+        for (uint32_t k = 0; k < count; k++) {
+            cli_append(&out, " %d %d", vertices[k].x, vertices[k].y);
+        }
+        cli_append(&out, "\n");
+    }
+    cli_flush(&out);
+    free(vertices);
+    free(duplicate_of);
+    free(arena);
+    free(sites);
+    return 0;
+}
