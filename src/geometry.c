@@ -467,7 +467,10 @@ static void ghost_edge(const vor_t *d, uint32_t slot, uint32_t *w, uint32_t *u, 
 static uint32_t lowest_site(const vor_t *d)
 {
     const vor_point_t *s = d->sites;
-    uint32_t best = d->last_site;
+    /* start at the bucket grid's bottom row, below the middle of the box,
+     * a few steps from the lowest site for uniform sites */
+    int32_t middle = (int32_t)((uint32_t)d->low.x + (((uint32_t)d->high.x - (uint32_t)d->low.x) >> 1));
+    uint32_t best = vor__grid_start(d, middle, d->low.y);
     for (uint32_t step = 0; step < d->vertex_count; step++) {
         uint32_t from = best, n;
         vor_neighbour_iter_t it;
