@@ -38,7 +38,7 @@ bench-query:
 # host release library, so it is built with PORT=host (run.sh does that);
 # other ports have no rule for it.
 ifeq ($(B),build/host)
-build/bench/%-host: tools/bench/%.cpp $(LIB_HDRS_BENCH) $(B)/libvor.a
+build/bench/%-host: tools/bench/%.cpp tools/bench/bench_common.hpp $(LIB_HDRS_BENCH) $(B)/libvor.a
 	@mkdir -p $(@D)
 	$(BENCH_CXX) $(BENCH_CXXFLAGS) -Iinclude $< $(B)/libvor.a $(BENCH_LDLIBS) -o $@
 endif

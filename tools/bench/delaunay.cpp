@@ -31,6 +31,8 @@
 
 #include "vor.h"
 
+#include "bench_common.hpp"
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <boost/polygon/voronoi.hpp>
@@ -114,15 +116,7 @@ static const char *const kind_name[KINDS] = {"uniform", "u16", "grid", "clustere
 static const char *const kind_label[KINDS] = {"uniform int32", "uniform 16-bit", "grid",
                                               "clustered"};
 
-struct rng {
-    uint64_t s;
-    uint64_t next() // splitmix64
-    {
-        uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
+struct rng : splitmix64 {
     double unit() { return (double)((next() >> 11) + 1) * 0x1p-53; } // (0, 1]
     uint64_t below(uint64_t m) { return next() % m; }
 };
@@ -366,28 +360,6 @@ struct row {
     uint32_t flat = 0;            // vor's zero-area triangles
     vor_predicate_stats_t stats{}; // of vor's first build
 };
-
-static std::string fmt(const char *format, double v)
-{
-    if (v < 0) {
-        return "-";
-    }
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-
-static std::string with_commas(uint32_t n)
-{
-    std::string s = std::to_string(n), out;
-    for (size_t i = 0; i < s.size(); i++) {
-        if (i != 0 && (s.size() - i) % 3 == 0) {
-            out += ',';
-        }
-        out += s[i];
-    }
-    return out;
-}
 
 static std::string per_site(double bytes, uint32_t n)
 {

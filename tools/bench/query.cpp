@@ -53,6 +53,8 @@
 
 #include "vor.h"
 
+#include "bench_common.hpp"
+
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <nanoflann.hpp>
@@ -69,15 +71,7 @@
 static const double SIDE = 33554432.0; // 2^25: sites and queries in [0, 2^25)
 static const unsigned MAX_REPS = 100;
 
-struct rng {
-    uint64_t s;
-    uint64_t next() // splitmix64
-    {
-        uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-        return z ^ (z >> 31);
-    }
+struct rng : splitmix64 {
     int32_t coordinate() { return (int32_t)(next() >> 39); } // [0, 2^25)
     double unit() { return (double)(next() >> 11) * 0x1p-53; } // [0, 1)
 };
@@ -346,25 +340,6 @@ static row run_row(const char *kind, vor_way way, const structures &s,
 }
 
 // ------------------------------------------------------------------- table
-
-static std::string fmt(const char *format, double v)
-{
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-
-static std::string with_commas(uint64_t n)
-{
-    std::string s = std::to_string(n), out;
-    for (size_t i = 0; i < s.size(); i++) {
-        if (i != 0 && (s.size() - i) % 3 == 0) {
-            out += ',';
-        }
-        out += s[i];
-    }
-    return out;
-}
 
 // Millions of queries per second, three significant digits.
 static std::string mqps(const row &r, double seconds)
