@@ -20,7 +20,10 @@ lower bound, ">=N"):
   - a frame GCC marks "dynamic" or "dynamic,bounded" (alloca, VLA);
   - a call to a function outside the graph (memset/memcpy emitted by GCC,
     a libgcc helper such as __aeabi_ldivmod, anything else undefined);
-  - an indirect call (function pointer).
+  - an indirect call (function pointer), except where a public function
+    calls back into its caller's code (CALLER_CALLBACKS below): that stack
+    is the caller's, like the caller's own frame, and is left out with a
+    note.
 A cycle in the call graph (recursion) has no bound at all: it is reported
 and nothing else is printed.
 
@@ -39,6 +42,9 @@ ATTR = re.compile(r'(\w+)\s*:\s*("(?:[^"\\]|\\.)*"|[^\s}]+)')
 ITEM = re.compile(r"^\s*(node|edge)\s*:\s*\{(.*)\}\s*$")
 FRAME = re.compile(r"^(\d+) bytes \(([^)]*)\)$")
 INDIRECT = "__indirect_call"
+# Public functions whose only indirect calls are to a callback the caller
+# passes in (its stack is the caller's): name -> what is called.
+CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback"}
 
 
 class Input(Exception):
@@ -222,6 +228,13 @@ def main(argv):
     except Input as e:
         print(f"stack-depth: {e}", file=sys.stderr)
         return 2
+
+    for title in frames:
+        if short(title) in CALLER_CALLBACKS and INDIRECT in edges.get(title, ()):
+            edges[title] = edges[title] - {INDIRECT}
+            print(f"stack-depth: note: {short(title)} calls "
+                  f"{CALLER_CALLBACKS[short(title)]}; its stack is not counted",
+                  file=sys.stderr)
 
     cycle = find_cycle(frames, edges)
     if cycle:
