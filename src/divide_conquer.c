@@ -486,9 +486,13 @@ static void single(component_t *c, vor_index_t s)
 /* The classical x-split: the sorted sites [0, v) halved down to single
  * sites, merged bottom-up (seed 000 section 3.2, horizontal merges only).
  * An explicit stack replaces the recursion: depth <= log2(v) + 1. */
-static void build_split(builder_t *b, const vor_index_t *order, uint32_t v)
+static void build_split(builder_t *b, const vor_index_t *order, uint32_t v, component_t *out)
 {
     struct frame frames[40];
+    if (v == 0u) {
+        out->count = 0;
+        return;
+    }
     component_t parts[40];
     unsigned top = 0, done = 0;
     push_frame(frames, &top, 0, v);
@@ -515,11 +519,116 @@ static void build_split(builder_t *b, const vor_index_t *order, uint32_t v)
             top--;
         }
     }
+    copy_component(out, &parts[0]);
+}
+
+/* F and S merged, either possibly empty. */
+static void combine(builder_t *b, const component_t *f, const component_t *s, unsigned axis,
+                    component_t *out)
+{
+    if (f->count == 0u) {
+        copy_component(out, s);
+    } else if (s->count == 0u) {
+        copy_component(out, f);
+    } else {
+        component_t merged;
+        merge(b, f, s, axis, &merged);
+        copy_component(out, &merged);
+    }
+}
+
+/* The bucket (cell) of a site in the 2^k x 2^k grid over the bounding
+ * square, as a Z-order index: bit pairs (row bit, column bit) from the
+ * top level down, so every quadtree square is a run of indices and a
+ * square's four children come in the order bottom-left, bottom-right,
+ * top-left, top-right. */
+static uint32_t cell_of(const vor_t *d, vor_index_t s, unsigned k, unsigned shift)
+{
+    uint32_t cx = (uint32_t)((((uint64_t)((int64_t)d->sites[s].x - d->low.x)) << k) >> shift);
+    uint32_t cy = (uint32_t)((((uint64_t)((int64_t)d->sites[s].y - d->low.y)) << k) >> shift);
+    uint32_t z = 0;
+    for (unsigned bit = 0; bit < k; bit++) {
+        z |= ((cx >> bit) & 1u) << (2u * bit);
+        z |= ((cy >> bit) & 1u) << (2u * bit + 1u);
+    }
+    return z;
+}
+
+/* Katajainen and Koppinen's bucket merging in quadtree order (seed 000
+ * sections 1, 3.1): about two sites a bucket, each bucket built by the
+ * x-split, then every square of four merged from its children: bottom
+ * pair and top pair horizontally, then the two halves vertically (the
+ * horizontal merge turned by 90 degrees). order[0, v) is lexicographic;
+ * it is regrouped by bucket here (a stable counting sort, so each bucket
+ * stays lexicographic) with scratch below it in the triangle slots. The
+ * buckets are visited in Z order with one list of up to four finished
+ * children per level, like the digits of a base-4 counter. */
+static void build_quadtree(builder_t *b, vor_index_t *order, uint32_t v, vor_index_t *scratch,
+                           component_t *out)
+{
+    vor_t *d = b->d;
+    unsigned k = 0;
+    while (k < 12u && (8ull << (2u * k)) <= v) {
+        k++;
+    }
+    uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
+    uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
+    span = (span_y > span) ? span_y : span;
+    unsigned shift = 0;
+    while ((span >> shift) != 0u) {
+        shift++;
+    }
+    uint32_t cells = 1u << (2u * k);
+    vor_index_t *start = scratch;          /* [cells + 1], cells <= v / 2 */
+    vor_index_t *grouped = scratch + cells + 1u; /* [v] */
+    for (uint32_t c = 0; c <= cells; c++) {
+        start[c] = 0;
+    }
+    for (uint32_t i = 0; i < v; i++) {
+        start[cell_of(d, order[i], k, shift) + 1u]++;
+    }
+    for (uint32_t c = 0; c < cells; c++) {
+        start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
+    }
+    for (uint32_t i = 0; i < v; i++) {
+        uint32_t c = cell_of(d, order[i], k, shift);
+        grouped[start[c]] = order[i];
+        start[c]++;
+    }
+    for (uint32_t i = 0; i < v; i++) {
+        order[i] = grouped[i];
+    }
+    /* from here on the scratch below the order may be overwritten */
+    component_t children[13][4];
+    unsigned filled[13];
+    for (unsigned level = 0; level <= k; level++) {
+        filled[level] = 0;
+    }
+    uint32_t pos = 0;
+    for (uint32_t c = 0; c < cells; c++) {
+        uint32_t end = pos;
+        while (end < v && cell_of(d, order[end], k, shift) == c) {
+            end++;
+        }
+        unsigned level = k;
+        build_split(b, order + pos, end - pos, &children[level][filled[level]++]);
+        pos = end;
+        /* a full set of four children becomes one square a level up */
+        while (level > 0u && filled[level] == 4u) {
+            component_t bottom, top;
+            component_t *q = children[level];
+            combine(b, &q[0], &q[1], 0, &bottom);
+            combine(b, &q[2], &q[3], 0, &top);
+            filled[level] = 0;
+            level--;
+            combine(b, &top, &bottom, 1, &children[level][filled[level]++]);
+        }
+    }
+    copy_component(out, &children[0][0]);
 }
 
 void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
 {
-    (void)algorithm;
     vor__tri_t *tri = d->triangles;
     /* the order at the top of the triangle slots: sorted in place, then the
      * distinct sites packed at the very end. It is read front to back while
@@ -580,7 +689,14 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
         return;
     }
     vor_index_t last = order[v - 1u];
-    build_split(&b, order, v);
+    component_t all;
+    if (algorithm == VOR_ALGO_DC_QUADTREE && v >= 8u) {
+        /* its scratch right below the order: above the home slots (a
+         * duplicate's must stay empty) for v >= 8 (cells <= v / 2) */
+        build_quadtree(&b, ids + w, v, ids + w - (v + v / 2u + 1u), &all);
+    } else {
+        build_split(&b, order, v, &all);
+    }
     d->vertex_count = v;
     d->last_site = last;
     vor__grid_rebuild(d);
