@@ -37,9 +37,10 @@
  *   C1 connectivity: a deletion is a flip, so the endpoints of a deleted
  *      edge stay joined through c2 and no deletion can disconnect the
  *      graph: C1 holds by construction and needs no test.
- *   C2 crossing: an F-F edge whose two endpoints are both endpoints of
- *      F-S edges already drawn is never deleted. l is one (the base), and
- *      the only other F endpoint still on the pocket is l0.
+ *   C2 crossing: an F-F edge of a finished cross triangle (its two ends
+ *      joined to one S site by drawn F-S edges) is never deleted: the
+ *      triangle beyond the candidate edge must be F-F-F (its far vertex
+ *      c2 in F). (docs/design.md: why not "both ends have F-S edges".)
  *   C3 parallel edges: an F-S edge that exists already is never drawn
  *      (a walk around one endpoint); if both candidates fail, the merge
  *      ends.
@@ -49,12 +50,8 @@
  *   C5 no backtracking: the F end only ever moves clockwise, the S end
  *      counterclockwise.
  * and two guards the triangle representation needs beyond them:
- *   T1 (the deleted region stays a disk): a deletion flip is made only if
- *      the far vertex c2 is a site of F (the triangle is F-F-F, not a
- *      ghost or a cross triangle) that is not on the fan around infinity
- *      (marked) and has not been a base endpoint in this merge. Otherwise
- *      the flip would add a second edge (c2, inf) or bring a finished
- *      site back into the pocket (incremental.c's guard (a), here).
+ *   T1 the triangle beyond a deleted edge is finite (a two-site F has
+ *      ghosts on both sides of its edge): covered by the test of C2.
  *   T2 (no vertex twice on the hull): if the zipper would stop before
  *      either end of the base has moved, l0 (or r0) would be on the fan
  *      around infinity twice; that end is advanced once regardless (C3
@@ -64,11 +61,6 @@
  * advance turns one ghost into a cross triangle, and cross triangles are
  * never flipped again; so a merge makes fewer than 2v deletions and
  * 4v + hull advances.
- *
- * Marks (the home slot's mark bit, mesh.h): a site is marked while it is
- * on the fan around infinity, and base endpoints stay marked until the
- * end of their merge (T1). After a merge only the hull is marked; the
- * builder clears every mark at the end.
  *
  * Memory: nothing beyond the arena. The sorted site order lives at the
  * top of the triangle slots and is read front to back while triangles
