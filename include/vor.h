@@ -300,8 +300,20 @@ enum vor_order {
     VOR_ORDER_INPUT = 1     /* as given (a baseline for benchmarks) */
 };
 
+/* How vor_build constructs the mesh. Every algorithm gives the same
+ * triangulation (the perturbed Delaunay triangulation is unique) in the
+ * same structure, so every other call works on either. */
+enum vor_algorithm {
+    VOR_ALGO_INCREMENTAL = 0, /* topology-oriented insertion, seed 003 */
+    VOR_ALGO_DC = 1,          /* divide and conquer, x-split, O(n log n):
+                                 Oishi and Sugihara's guarded merge, seed 000 */
+    VOR_ALGO_DC_QUADTREE = 2  /* divide and conquer merging buckets in quadtree
+                                 order (Katajainen and Koppinen), seed 000 */
+};
+
 typedef struct vor_build_options {
-    enum vor_order order;
+    enum vor_order order;         /* incremental only */
+    enum vor_algorithm algorithm; /* zero: VOR_ALGO_INCREMENTAL */
 } vor_build_options_t;
 
 /*
@@ -309,7 +321,9 @@ typedef struct vor_build_options {
  * points[i]. A point equal to an earlier one is not a separate site:
  * duplicate_of[i] (if the array is given, n entries) receives the id of
  * its first occurrence, and i for every other site. options may be NULL
- * (VOR_ORDER_QUADTREE).
+ * (VOR_ORDER_QUADTREE, VOR_ALGO_INCREMENTAL). The divide-and-conquer
+ * algorithms need no memory beyond the arena either (docs/design.md,
+ * "Divide and conquer").
  *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown option
  *   VOR_ERR_FULL n > max_sites
  * Expected O(n) time for uniform points; scratch space comes from the

@@ -373,7 +373,11 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
         return VOR_ERR_ARG;
     }
     enum vor_order order = (options != NULL) ? options->order : VOR_ORDER_QUADTREE;
-    if (order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) {
+    enum vor_algorithm algorithm =
+        (options != NULL) ? options->algorithm : VOR_ALGO_INCREMENTAL;
+    if ((order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) ||
+        (algorithm != VOR_ALGO_INCREMENTAL && algorithm != VOR_ALGO_DC &&
+         algorithm != VOR_ALGO_DC_QUADTREE)) {
         return VOR_ERR_ARG;
     }
     if (n > d->max_sites) {
@@ -393,6 +397,10 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
         if (n == 1u && duplicate_of != NULL) {
             duplicate_of[0] = 0;
         }
+        return VOR_OK;
+    }
+    if (algorithm != VOR_ALGO_INCREMENTAL) {
+        vor__build_dc(d, n, algorithm, duplicate_of);
         return VOR_OK;
     }
     /* scratch in the triangle slots, the plan at their very end: triangles

@@ -31,7 +31,7 @@ static inline bool lower_top_bit(uint32_t a, uint32_t b)
  * are close to each other, and equal points end up adjacent with the
  * smallest id (the first occurrence) first. The coordinate whose values
  * differ in the higher bit decides (Chan's comparison, no interleaving). */
-static bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
+static bool z_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
 {
     /* flipping the sign bit maps int32 order onto uint32 order */
     uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u, ay = (uint32_t)sites[a].y ^ 0x80000000u;
@@ -46,7 +46,7 @@ static bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
 }
 
 static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
-                      uint32_t n)
+                      uint32_t n, vor__site_less_t site_less)
 {
     /* each step at least doubles root, so this ends */
     for (;;) {
@@ -68,19 +68,20 @@ static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
 }
 
 /* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place. */
-static void heap_sort(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
+static void heap_sort(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
+                      vor__site_less_t site_less)
 {
     if (n < 2u) {
         return;
     }
     for (uint32_t i = n / 2u; i-- > 0u;) {
-        sift_down(sites, ids, i, n);
+        sift_down(sites, ids, i, n, site_less);
     }
     for (uint32_t end = n - 1u; end > 0u; end--) {
         vor_index_t t = ids[0];
         ids[0] = ids[end];
         ids[end] = t;
-        sift_down(sites, ids, 0, end);
+        sift_down(sites, ids, 0, end, site_less);
     }
 }
 
@@ -91,12 +92,14 @@ static void swap_ids(vor_index_t *ids, uint32_t a, uint32_t b)
     ids[b] = t;
 }
 
-/* Introsort of ids[0..n) by site_less (a total order: ids break ties):
+/* Introsort of ids[0..n) by site_less (a total order: ids break ties;
+ * the divide-and-conquer builder sorts with it too):
  * median-of-three quicksort on an explicit stack, smaller part first so
  * the stack holds at most log2(n) ranges; insertion sort below 16; and
  * heapsort for a range that goes deeper than 2 log2(n), so the worst case
  * stays O(n log n) (crowded buckets of clustered sites hold thousands). */
-static void sort_sites(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
+void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
+                   vor__site_less_t site_less)
 {
     struct range {
         uint32_t first, count, depth;
@@ -122,7 +125,7 @@ static void sort_sites(const vor_point_t *sites, vor_index_t *ids, uint32_t n)
             continue;
         }
         if (r.depth > 2u * log2n) {
-            heap_sort(sites, a, r.count);
+            heap_sort(sites, a, r.count, site_less);
             continue;
         }
         /* median of three to a[0], then Hoare partition around it */
@@ -306,7 +309,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
 
     /* duplicates: equal points are adjacent after sorting a bucket */
     for (uint32_t b = 0; b < buckets; b++) {
-        sort_sites(sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]));
+        vor__sort_ids(sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]), z_less);
         for (uint32_t e = start[b]; e < start[b + 1u]; e++) {
             vor_index_t s = sorted[e];
             bool same = e > start[b] &&

@@ -118,6 +118,20 @@ def delaunay_cases(rng):
               f"delaunay bad input {text!r}: {r.returncode} {r.stderr!r}")
     r = run(["delaunay", "/no/such/file"], "")
     check(r.returncode == 2 and r.stdout == "", "missing file: status 2")
+    # --algo: every builder prints the same triangles and duplicates as the
+    # default one, checked against brute force above (small range: many
+    # duplicates, collinear and cocircular sites)
+    for n in (3, 9, 40, 300):
+        pts = [(rng.randint(-20, 20), rng.randint(-20, 20)) for _ in range(n)]
+        text = "\n".join(f"{x} {y}" for x, y in pts) + "\n"
+        ref = run(["delaunay", "-"], text)
+        check(ref.returncode == 0 and ref.stdout.startswith("t "), f"delaunay n={n}: {ref.stderr}")
+        for algo in ("incremental", "dc", "dc-quadtree"):
+            r = run(["delaunay", f"--algo={algo}", "-"], text)
+            check(r.returncode == 0 and r.stdout == ref.stdout,
+                  f"--algo={algo} n={n}: output differs from the default build")
+    r = run(["delaunay", "--algo=sweep", "-"], "0 0\n")
+    check(r.returncode == 2 and "usage" in r.stderr, f"unknown --algo: {r.returncode}")
 
 
 def nearest_cases(rng, tmp):

@@ -4,7 +4,8 @@
  *
  * Built with VOR_FAULT_INJECTION: the diagram's perturbed predicates return
  * the wrong sign with probability p. For p in {0.01, 0.1, 0.5} and 10,000
- * sites, building (and inserting one by one) must finish and leave a mesh
+ * sites, building (incrementally and by divide and conquer, and
+ * inserting one by one) must finish and leave a mesh
  * whose topological invariants all hold: counts from Euler's formula,
  * valid distinct vertices, symmetric neighbours, every site present with
  * one fan of triangles. Only the geometric checks (orientation, Delaunay)
@@ -65,6 +66,28 @@ int main(void)
             distinct += (dup[i] == i) ? 1u : 0u;
         }
         check_topology(&d, "build of 10000 sites", percents[k], distinct);
+        /* the divide-and-conquer builds (issue 6): guards C1-C5, T1, T2 */
+        for (unsigned algo = VOR_ALGO_DC; algo <= VOR_ALGO_DC_QUADTREE; algo++) {
+            vor_build_options_t dc = {VOR_ORDER_QUADTREE, (enum vor_algorithm)algo};
+            CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
+            d.stats.fault_rate = rate;
+            d.stats.fault_state = 0x2545F4914F6CDD1Dull + k * 3u + algo;
+            CHECK(vor_build(&d, points, SITES, &dc, dup) == VOR_OK, "d&c build");
+            check_topology(&d, algo == VOR_ALGO_DC ? "d&c build of 10000 sites"
+                                                   : "d&c quadtree build of 10000 sites",
+                           percents[k], distinct);
+            /* degenerate input: a grid (collinear and cocircular sites) */
+            static vor_point_t grid[2500];
+            for (uint32_t i = 0; i < 2500u; i++) {
+                grid[i].x = (int32_t)(i % 50u) * 7;
+                grid[i].y = (int32_t)(i / 50u) * 7;
+            }
+            CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
+            d.stats.fault_rate = rate;
+            d.stats.fault_state = 0x9E3779B97F4A7C15ull ^ (k * 7u + algo);
+            CHECK(vor_build(&d, grid, 2500, &dc, NULL) == VOR_OK, "d&c grid build");
+            check_topology(&d, "d&c build of a 50x50 grid", percents[k], 2500);
+        }
         /* one by one: the dynamic path, with its duplicate search */
         CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
         d.stats.fault_rate = rate;

@@ -233,7 +233,7 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     if (v.arena == nullptr) {
         die("out of memory");
     }
-    vor_build_options_t opt;
+    vor_build_options_t opt = {};
     opt.order = order;
     if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK ||
         vor_build(&v.d, p.data(), n, &opt, nullptr) != VOR_OK) {

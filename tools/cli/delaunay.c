@@ -1,10 +1,11 @@
 /*
- * vor delaunay [--stats] [--order=quadtree|input] FILE
+ * vor delaunay [--stats] [--order=quadtree|input] [--algo=incremental|dc|dc-quadtree] FILE
  *
  * The Delaunay triangulation of the sites in FILE ("-": stdin): one line
  * "t i j k" per finite triangle, counterclockwise, rotated to start at its
  * smallest id and sorted; then "d i j" for each site i that duplicates an
  * earlier site j. --stats prints sizes, time and predicate tiers to stderr.
+ * --algo picks the builder (the output is the same for every one).
  */
 #include <stdlib.h>
 #include <string.h>
@@ -25,7 +26,7 @@ static int compare_triangles(const void *a, const void *b)
 int cli_delaunay(int argc, char **argv)
 {
     bool stats = false;
-    vor_build_options_t options = {VOR_ORDER_QUADTREE};
+    vor_build_options_t options = {VOR_ORDER_QUADTREE, VOR_ALGO_INCREMENTAL};
     const char *path = NULL;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--stats") == 0) {
@@ -34,14 +35,22 @@ int cli_delaunay(int argc, char **argv)
             options.order = VOR_ORDER_QUADTREE;
         } else if (strcmp(argv[i], "--order=input") == 0) {
             options.order = VOR_ORDER_INPUT;
+        } else if (strcmp(argv[i], "--algo=incremental") == 0) {
+            options.algorithm = VOR_ALGO_INCREMENTAL;
+        } else if (strcmp(argv[i], "--algo=dc") == 0) {
+            options.algorithm = VOR_ALGO_DC;
+        } else if (strcmp(argv[i], "--algo=dc-quadtree") == 0) {
+            options.algorithm = VOR_ALGO_DC_QUADTREE;
         } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
             path = argv[i];
         } else {
-            cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] FILE");
+            cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] "
+                      "[--algo=incremental|dc|dc-quadtree] FILE");
         }
     }
     if (path == NULL) {
-        cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] FILE");
+        cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] "
+                      "[--algo=incremental|dc|dc-quadtree] FILE");
     }
     uint32_t n;
     vor_point_t *sites = cli_read_sites(path, &n);
