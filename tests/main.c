@@ -8,6 +8,7 @@ int main(void)
     test_mesh();
     test_queries();
     test_raster();
+    test_raster_metrics();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -45,5 +45,6 @@ void test_predicates(void);
 void test_mesh(void);
 void test_queries(void);
 void test_raster(void);
+void test_raster_metrics(void);
 
 #endif
