@@ -54,6 +54,17 @@
  *   VOR_RASTER_BRUTE) each pixel is compared with every site, equally
  *   exact. docs/design.md, "Rasterizer", has the bound arguments.
  *
+ * OTHER METRICS
+ *   sites->metric also takes L1, L-infinity, Lp (p = 1..8), elliptic
+ *   (a dx^2 + 2b dx dy + c dy^2), multiplicative, additive and compound
+ *   weights, the farthest-point diagram, Hausdorff point sets, segments
+ *   and filled polygons (vor_raster_sites_t says which fields each uses).
+ *   Each is compared exactly, over all int32 coordinates and weights: no
+ *   valid input is out of budget. VOR_RASTER_FAST culls sites per tile of
+ *   16 x 16 pixels with exact bounds of each site's distance over the
+ *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
+ *   VOR_RASTER_DISTANCE is for Euclidean point sites only.
+ *
  * MEMORY
  *   work: VOR_RASTER_WORK_BYTES(count, width) bytes, aligned to
  *   VOR_RASTER_WORK_ALIGN, a compile-time constant. Nothing else is used
