@@ -244,8 +244,36 @@ static size_t align8(size_t x)
     return (x + 7u) & ~(size_t)7u;
 }
 
-/* Produces, writes and flushes every row (everything checked). */
-static int render(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
+/* Carves the fast Euclidean path's arrays and the two rows of runs from
+ * the work memory: 8-byte arrays first, then 4-byte ones, then bytes, so
+ * that every array is aligned (total within VOR_RASTER_WORK_BYTES). */
+static void carve_euclid(vor__euclid_t *e, uint8_t *base, uint32_t n, uint32_t width,
+                         vor__run_t **rows)
+{
+    size_t at = 0;
+    e->val = (int64_t *)(void *)(base + at);
+    at = align8(at + (size_t)n * sizeof(int64_t));
+    rows[0] = (vor__run_t *)(void *)(base + at);
+    at = align8(at + (size_t)width * sizeof(vor__run_t));
+    rows[1] = (vor__run_t *)(void *)(base + at);
+    at = align8(at + (size_t)width * sizeof(vor__run_t));
+    uint32_t *words = (uint32_t *)(void *)(base + at);
+    e->by_x = words;
+    e->by_y = words + n;
+    e->cand = words + 2u * (size_t)n;
+    e->key = (int32_t *)(void *)(words + 3u * (size_t)n);
+    e->stack = words + 4u * (size_t)n;
+    e->left = words + 5u * (size_t)n;
+    e->right = words + 6u * (size_t)n;
+    e->sorted_x = (int32_t *)(void *)(words + 7u * (size_t)n);
+    e->sorted_y = (int32_t *)(void *)(words + 8u * (size_t)n);
+    e->mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
+}
+
+/* Produces, writes and flushes every row (everything checked). Inlined
+ * into vor_raster, so that the flush callback is called from there (the
+ * stack-depth tool counts the caller's callback apart). */
+VOR__INLINE int render(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
                   const vor_raster_sites_t *sites, producer_t *producer, vor__run_t *const *rows,
                   size_t row_bytes)
 {
@@ -371,6 +399,7 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     producer.metric = NULL;
     vor__run_t *rows[2];
     vor__metric_t metric;
+    vor__euclid_t euclid;
     if (!euclid_metric) {
         /* the two rows of runs, then the culling pool: at least 12 n + 14
          * words (the macro's 48 n + 64 bytes, less alignment) */
@@ -381,43 +410,20 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                             (uint32_t *)(void *)(base + 2u * row_bytes8),
                             (work_bytes - 2u * row_bytes8) / sizeof(uint32_t));
         producer.metric = &metric;
-        return render(out, frame, sites, &producer, rows, row_bytes);
+    } else {
+        carve_euclid(&euclid, base, n, frame->width, rows);
+        if (out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n)) {
+            euclid.points = sites->points;
+            euclid.n = n;
+            euclid.width = frame->width;
+            euclid.height = frame->height;
+            euclid.step_x = frame->step_x;
+            euclid.step_y = frame->step_y;
+            euclid.origin_x = frame->origin_x;
+            euclid.origin_y = frame->origin_y;
+            vor__euclid_prepare(&euclid);
+            producer.euclid = &euclid;
+        }
     }
-
-    /* carve the work memory: 8-byte arrays first, then 4-byte ones, then
-     * bytes, so that every array is aligned (total within the macro) */
-    size_t at = 0;
-    vor__euclid_t euclid;
-    euclid.val = (int64_t *)(void *)(base + at);
-    at = align8(at + (size_t)n * sizeof(int64_t));
-    rows[0] = (vor__run_t *)(void *)(base + at);
-    at = align8(at + (size_t)frame->width * sizeof(vor__run_t));
-    rows[1] = (vor__run_t *)(void *)(base + at);
-    at = align8(at + (size_t)frame->width * sizeof(vor__run_t));
-    uint32_t *words = (uint32_t *)(void *)(base + at);
-    euclid.by_x = words;
-    euclid.by_y = words + n;
-    euclid.cand = words + 2u * (size_t)n;
-    euclid.key = (int32_t *)(void *)(words + 3u * (size_t)n);
-    euclid.stack = words + 4u * (size_t)n;
-    euclid.left = words + 5u * (size_t)n;
-    euclid.right = words + 6u * (size_t)n;
-    euclid.sorted_x = (int32_t *)(void *)(words + 7u * (size_t)n);
-    euclid.sorted_y = (int32_t *)(void *)(words + 8u * (size_t)n);
-    euclid.mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
-
-    if (out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n)) {
-        euclid.points = sites->points;
-        euclid.n = n;
-        euclid.width = frame->width;
-        euclid.height = frame->height;
-        euclid.step_x = frame->step_x;
-        euclid.step_y = frame->step_y;
-        euclid.origin_x = frame->origin_x;
-        euclid.origin_y = frame->origin_y;
-        vor__euclid_prepare(&euclid);
-        producer.euclid = &euclid;
-    }
-
     return render(out, frame, sites, &producer, rows, row_bytes);
 }
