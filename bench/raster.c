@@ -1,20 +1,29 @@
 /*
- * bench/raster.c - speed of vor_raster, on any port.
+ * bench/raster.c - speed of vor_raster, on any port, for every metric.
  *
  * Renders frames of uniform random sites (a fixed generator: the same
  * sites on every target) and prints one line per case:
  *
  *   bench raster METRIC W H N fast F brute B ratio R UNIT
  *
- * F and B are the cost per pixel of the fast path and of the brute-force
- * path (VOR_RASTER_BRUTE, every site at every pixel): instructions per
- * pixel under QEMU -icount on targets, and megapixels per second on the
- * host (best of a few runs). R = how many times faster the fast path is.
- * Targets render 320x240 RGB565 in 16-row bands; the host also renders
- * 1920x1080. The brute path is timed on the first 16 rows only (its cost
- * per pixel does not depend on the row). Every fast frame is checked
- * against the brute-force frame on those rows; "bench valid ok" ends a
- * good run. tools/bench/raster.sh turns the lines into docs/benchmarks.md.
+ * F and B are the cost per pixel of the fast path (the Euclidean
+ * envelopes, or per-tile culling for the other metrics) and of the
+ * brute-force path (VOR_RASTER_BRUTE, every site at every pixel with the
+ * same exact comparison): instructions per pixel under QEMU -icount on
+ * targets, and megapixels per second on the host (best of a few runs).
+ * R = how many times faster the fast path is. The host renders 320x240
+ * and 1920x1080 with 16, 256 and 4,096 sites for every metric; targets
+ * render 320x240, Euclidean sites at every count and the other metrics at
+ * 16 and 256 sites. The brute path is timed on the first 16 rows (the
+ * first row only at 4,096 sites; its cost per pixel does not depend on
+ * the row), and every fast frame is checked against the brute-force
+ * frame on those rows; "bench valid ok" ends a good run.
+ * tools/bench/raster.sh turns the lines into docs/benchmarks.md.
+ *
+ * Sites of the other metrics: weights mult 1..4, add 0..s/4, compound
+ * w1 1..4 and w2 0..s/8 (s: the mean site spacing); the form (2, 1, 3);
+ * p = 3; Hausdorff sets of 3 points, segments and polygons (3 to 5
+ * vertices, convex or not) within s/2 of their random centre.
  */
 #include "test.h"
 #include "vor_raster.h"
@@ -29,7 +38,11 @@
 #define BAND_ROWS 16u
 #define HOST_RUNS 5u
 
-static vor_point_t points[MAX_SITES];
+#define MAX_POINTS (5u * MAX_SITES)
+
+static vor_point_t points[MAX_POINTS];
+static int32_t mult_weights[MAX_SITES], add_weights[MAX_SITES];
+static uint32_t offsets[MAX_SITES + 1u];
 static uint16_t palette[MAX_SITES];
 static uint16_t band[BAND_ROWS * MAX_WIDTH];
 static uint16_t first_band[BAND_ROWS * MAX_WIDTH];
@@ -42,6 +55,7 @@ typedef struct sink {
     int keep_first;     /* copy the first band to first_band */
     uint32_t mismatches;
     uint32_t width;
+    uint32_t check_rows; /* rows of first_band to compare */
 } sink_t;
 
 static int flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
@@ -54,7 +68,7 @@ static int flush(void *user, uint32_t first_row, uint32_t rows, const void *pixe
                 first_band[k] = px[k];
             }
         } else {
-            for (uint32_t k = 0; k < rows * s->width; k++) {
+            for (uint32_t k = 0; k < s->check_rows * s->width; k++) {
                 s->mismatches += first_band[k] != px[k];
             }
         }
@@ -66,23 +80,22 @@ static int flush(void *user, uint32_t first_row, uint32_t rows, const void *pixe
     return 0;
 }
 
-static uint64_t render(uint32_t w, uint32_t h, uint32_t n, enum vor_raster_method method,
-                       sink_t *s)
+static uint64_t render(const vor_raster_sites_t *sites, uint32_t w, uint32_t h,
+                       enum vor_raster_method method, sink_t *s)
 {
     vor_raster_frame_t frame = {0, 0, 1, 1, w, h};
-    vor_raster_sites_t sites = {VOR_METRIC_EUCLID, points, n};
     vor_raster_output_t out = {0};
     out.kind = VOR_RASTER_RGB565;
     out.band = band;
     out.band_bytes = sizeof band;
-    out.band_rows = BAND_ROWS;
+    out.band_rows = s->stop_rows != 0u ? s->stop_rows : BAND_ROWS;
     out.flush = flush;
     out.user = s;
     out.palette565 = palette;
     out.method = method;
     uint64_t start = vor_port_counter();
     __asm__ volatile("" ::: "memory");
-    int err = vor_raster(&frame, &sites, &out, work, sizeof work);
+    int err = vor_raster(&frame, sites, &out, work, sizeof work);
     __asm__ volatile("" ::: "memory");
     uint64_t spent = vor_port_counter() - start;
     return (err == VOR_OK || (err == 1 && s->stop_rows != 0u)) ? spent : 0u;
@@ -101,32 +114,81 @@ static void print_cost(const char *label, uint64_t spent, uint64_t pixels, int h
     }
 }
 
-static bool run(uint32_t w, uint32_t h, uint32_t n)
+static const char *const metric_names[] = {"euclid", "l1",       "linf",      "lp3",
+                                           "ellip",  "mult",     "add",       "comp",
+                                           "farthest", "hausdorff", "segment", "polygon"};
+
+/* The sites of one case: n sites of the metric over a w x h frame. */
+static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n)
 {
-    const int host = vor_port_counter_unit[0] == 'n';
-    const unsigned runs = host ? HOST_RUNS : 1u;
     test_rng_t rng;
     test_rng_seed(&rng, 7000u + n);
-    for (uint32_t k = 0; k < n; k++) {
-        points[k].x = test_rng_range(&rng, 0, (int32_t)w - 1);
-        points[k].y = test_rng_range(&rng, 0, (int32_t)h - 1);
-        palette[k] = (uint16_t)(k * 2654435761u >> 16);
+    /* the mean spacing s = sqrt(w h / n), by search (no float) */
+    int32_t spacing = 1;
+    while ((uint64_t)(spacing + 1) * (uint64_t)(spacing + 1) * n <= (uint64_t)w * h) {
+        spacing++;
     }
+    int32_t radius = spacing / 2 > 1 ? spacing / 2 : 1;
+    uint32_t at = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        int32_t x = test_rng_range(&rng, 0, (int32_t)w - 1);
+        int32_t y = test_rng_range(&rng, 0, (int32_t)h - 1);
+        palette[k] = (uint16_t)(k * 2654435761u >> 16);
+        mult_weights[k] = 1 + test_rng_range(&rng, 0, 3);
+        add_weights[k] = test_rng_range(&rng, 0, spacing / 4);
+        if (metric == VOR_METRIC_COMPOUND) {
+            add_weights[k] = test_rng_range(&rng, 0, spacing / 8);
+        }
+        offsets[k] = at;
+        uint32_t size = metric == VOR_METRIC_HAUSDORFF   ? 3u
+                        : metric == VOR_METRIC_SEGMENT ? 2u
+                        : metric == VOR_METRIC_POLYGON ? 3u + (uint32_t)test_rng_range(&rng, 0, 2)
+                                                       : 1u;
+        for (uint32_t i = 0; i < size; i++) {
+            points[at].x = x + (size > 1u ? test_rng_range(&rng, -radius, radius) : 0);
+            points[at].y = y + (size > 1u ? test_rng_range(&rng, -radius, radius) : 0);
+            at++;
+        }
+    }
+    offsets[n] = at;
+    vor_raster_sites_t sites = {0};
+    sites.metric = metric;
+    sites.points = points;
+    sites.count = n;
+    sites.mult_weights = mult_weights;
+    sites.add_weights = add_weights;
+    sites.offsets = offsets;
+    sites.lp_exponent = 3;
+    sites.form_a = 2;
+    sites.form_b = 1;
+    sites.form_c = 3;
+    return sites;
+}
+
+static bool run(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n)
+{
+    const int host = vor_port_counter_unit[0] == 'n';
+    vor_raster_sites_t sites = make_sites(metric, w, h, n);
+    /* best of 5 on the host; of 2 for the slow large frames */
+    const unsigned runs = !host ? 1u : (metric != VOR_METRIC_EUCLID && w > 320u) ? 2u : HOST_RUNS;
+    const uint32_t brute_rows = n >= MAX_SITES && metric != VOR_METRIC_EUCLID ? 1u : BAND_ROWS;
     uint64_t fast = UINT64_MAX, brute = UINT64_MAX;
-    sink_t s = {0, BAND_ROWS, 1, 0, w};
+    sink_t s = {0, brute_rows, 1, 0, w, brute_rows};
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = render(w, h, n, VOR_RASTER_BRUTE, &s);
+        uint64_t spent = render(&sites, w, h, VOR_RASTER_BRUTE, &s);
         brute = spent < brute ? spent : brute;
     }
     s.keep_first = 0;
     s.stop_rows = 0;
+    s.check_rows = brute_rows;
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = render(w, h, n, VOR_RASTER_FAST, &s);
+        uint64_t spent = render(&sites, w, h, VOR_RASTER_FAST, &s);
         fast = spent < fast ? spent : fast;
     }
-    uint64_t fast_px = (uint64_t)w * h, brute_px = (uint64_t)w * BAND_ROWS;
+    uint64_t fast_px = (uint64_t)w * h, brute_px = (uint64_t)w * brute_rows;
     bool ok = fast != 0u && brute != 0u && s.mismatches == 0u;
-    test_printf("bench raster euclid %u %u %u", (unsigned)w, (unsigned)h, (unsigned)n);
+    test_printf("bench raster %s %u %u %u", metric_names[metric], (unsigned)w, (unsigned)h,
+                (unsigned)n);
     print_cost("fast", fast, fast_px, host);
     print_cost("brute", brute, brute_px, host);
     /* ratio of the per-pixel costs, one decimal */
@@ -142,14 +204,21 @@ int main(void)
     vor_port_init();
     static const uint32_t sizes[] = {16u, 256u, MAX_SITES};
     bool ok = true;
-    for (unsigned i = 0; i < 3u; i++) {
-        ok &= run(320, 240, sizes[i]);
-    }
-#ifdef BENCH_HOST_FRAMES
-    for (unsigned i = 0; i < 3u; i++) {
-        ok &= run(1920, 1080, sizes[i]);
-    }
+    for (int metric = VOR_METRIC_EUCLID; metric <= VOR_METRIC_POLYGON; metric++) {
+        for (unsigned i = 0; i < 3u; i++) {
+#ifndef BENCH_HOST_FRAMES
+            if (metric != VOR_METRIC_EUCLID && sizes[i] > 256u) {
+                continue; /* targets: the other metrics up to 256 sites */
+            }
 #endif
+            ok &= run((enum vor_metric)metric, 320, 240, sizes[i]);
+        }
+#ifdef BENCH_HOST_FRAMES
+        for (unsigned i = 0; i < 3u; i++) {
+            ok &= run((enum vor_metric)metric, 1920, 1080, sizes[i]);
+        }
+#endif
+    }
     test_printf("bench valid %s\n", ok ? "ok" : "FAILED");
     return ok ? 0 : 1;
 }

@@ -54,6 +54,17 @@
  *   VOR_RASTER_BRUTE) each pixel is compared with every site, equally
  *   exact. docs/design.md, "Rasterizer", has the bound arguments.
  *
+ * OTHER METRICS
+ *   sites->metric also takes L1, L-infinity, Lp (p = 1..8), elliptic
+ *   (a dx^2 + 2b dx dy + c dy^2), multiplicative, additive and compound
+ *   weights, the farthest-point diagram, Hausdorff point sets, segments
+ *   and filled polygons (vor_raster_sites_t says which fields each uses).
+ *   Each is compared exactly, over all int32 coordinates and weights: no
+ *   valid input is out of budget. VOR_RASTER_FAST culls sites per tile of
+ *   16 x 16 pixels with exact bounds of each site's distance over the
+ *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
+ *   VOR_RASTER_DISTANCE is for Euclidean point sites only.
+ *
  * MEMORY
  *   work: VOR_RASTER_WORK_BYTES(count, width) bytes, aligned to
  *   VOR_RASTER_WORK_ALIGN, a compile-time constant. Nothing else is used
@@ -82,16 +93,45 @@ typedef struct vor_raster_frame {
     uint32_t height;
 } vor_raster_frame_t;
 
-/* The distance a pixel is assigned by. */
+/* The distance a pixel is assigned by (seed 002 section 2.3 and chapter
+ * 5). Every metric is decided exactly over the whole int32 range of
+ * coordinates and weights; the comparison widths are in docs/design.md. */
 enum vor_metric {
-    VOR_METRIC_EUCLID = 0 /* point sites, Euclidean distance (full int32 range) */
+    VOR_METRIC_EUCLID = 0,    /* point sites, Euclidean distance */
+    VOR_METRIC_L1 = 1,        /* point sites, |dx| + |dy| */
+    VOR_METRIC_LINF = 2,      /* point sites, max(|dx|, |dy|) */
+    VOR_METRIC_LP = 3,        /* point sites, (|dx|^p + |dy|^p)^(1/p), p = lp_exponent */
+    VOR_METRIC_ELLIPTIC = 4,  /* point sites, sqrt(a dx^2 + 2b dx dy + c dy^2), form_* */
+    VOR_METRIC_MULT = 5,      /* point sites, |q - s| / w, w = mult_weights[k] >= 1 */
+    VOR_METRIC_ADD = 6,       /* point sites, |q - s| - w, w = add_weights[k] */
+    VOR_METRIC_COMPOUND = 7,  /* point sites, |q - s| / w1 - w2 (both weight arrays) */
+    VOR_METRIC_FARTHEST = 8,  /* point sites, the farthest site wins */
+    VOR_METRIC_HAUSDORFF = 9, /* point sets, distance to the set's farthest point */
+    VOR_METRIC_SEGMENT = 10,  /* line segments, Euclidean distance to the segment */
+    VOR_METRIC_POLYGON = 11   /* filled polygons, 0 inside, else to the boundary */
 };
 
-/* The sites of a frame. Fields a metric does not use are ignored. */
+/* The sites of a frame. Fields a metric does not use are ignored, so a
+ * zeroed struct with metric, points and count set is a Euclidean frame.
+ *
+ *   point sites (EUCLID, L1, LINF, LP, ELLIPTIC, MULT, ADD, COMPOUND,
+ *   FARTHEST): site k is points[k].
+ *   SEGMENT: site k is the segment points[2k] - points[2k + 1] (equal
+ *   ends: a point).
+ *   HAUSDORFF, POLYGON: site k is points[offsets[k]] .. points[offsets[k+1]
+ *   - 1], at least one point (offsets has count + 1 increasing entries).
+ *   A polygon's vertices go around it in either direction; 1 vertex is a
+ *   point, 2 a segment, 3 or more a closed polygon whose inside (nonzero
+ *   winding number) and boundary are at distance 0. */
 typedef struct vor_raster_sites {
     enum vor_metric metric;
-    const vor_point_t *points; /* point sites: site k = points[k] */
-    uint32_t count;            /* sites, >= 1 */
+    const vor_point_t *points;
+    uint32_t count;                 /* sites, >= 1 */
+    const int32_t *mult_weights;    /* MULT, COMPOUND: [count], each >= 1 */
+    const int32_t *add_weights;     /* ADD, COMPOUND: [count], any int32 */
+    const uint32_t *offsets;        /* HAUSDORFF, POLYGON: [count + 1] */
+    uint32_t lp_exponent;           /* LP: p in 1 .. 8 */
+    int32_t form_a, form_b, form_c; /* ELLIPTIC: a > 0 and a c > b^2 */
 } vor_raster_sites_t;
 
 enum vor_raster_kind {

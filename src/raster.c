@@ -91,10 +91,14 @@ typedef struct producer {
     const vor_raster_frame_t *frame;
     const vor_raster_sites_t *sites;
     vor__euclid_t *euclid; /* NULL: brute force */
+    vor__metric_t *metric; /* the other metrics (raster_metrics.c) */
 } producer_t;
 
 static uint32_t produce(producer_t *p, uint32_t j, vor__run_t *runs)
 {
+    if (p->metric != NULL) {
+        return vor__metric_row(p->metric, j, runs);
+    }
     if (p->euclid != NULL) {
         return vor__euclid_row(p->euclid, j, runs);
     }
@@ -240,6 +244,84 @@ static size_t align8(size_t x)
     return (x + 7u) & ~(size_t)7u;
 }
 
+/* Carves the fast Euclidean path's arrays and the two rows of runs from
+ * the work memory: 8-byte arrays first, then 4-byte ones, then bytes, so
+ * that every array is aligned (total within VOR_RASTER_WORK_BYTES). */
+static void carve_euclid(vor__euclid_t *e, uint8_t *base, uint32_t n, uint32_t width,
+                         vor__run_t **rows)
+{
+    size_t at = 0;
+    e->val = (int64_t *)(void *)(base + at);
+    at = align8(at + (size_t)n * sizeof(int64_t));
+    rows[0] = (vor__run_t *)(void *)(base + at);
+    at = align8(at + (size_t)width * sizeof(vor__run_t));
+    rows[1] = (vor__run_t *)(void *)(base + at);
+    at = align8(at + (size_t)width * sizeof(vor__run_t));
+    uint32_t *words = (uint32_t *)(void *)(base + at);
+    e->by_x = words;
+    e->by_y = words + n;
+    e->cand = words + 2u * (size_t)n;
+    e->key = (int32_t *)(void *)(words + 3u * (size_t)n);
+    e->stack = words + 4u * (size_t)n;
+    e->left = words + 5u * (size_t)n;
+    e->right = words + 6u * (size_t)n;
+    e->sorted_x = (int32_t *)(void *)(words + 7u * (size_t)n);
+    e->sorted_y = (int32_t *)(void *)(words + 8u * (size_t)n);
+    e->mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
+}
+
+/* Produces, writes and flushes every row (everything checked). Inlined
+ * into vor_raster, so that the flush callback is called from there (the
+ * stack-depth tool counts the caller's callback apart). */
+VOR__INLINE int render(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
+                  const vor_raster_sites_t *sites, producer_t *producer, vor__run_t *const *rows,
+                  size_t row_bytes)
+{
+    if (out->areas != NULL) {
+        for (uint32_t k = 0; k < sites->count; k++) {
+            out->areas[k] = 0;
+        }
+    }
+    const int boundary = out->kind == VOR_RASTER_BOUNDARY;
+    uint8_t *band = out->band;
+    uint32_t cur = 0;
+    uint32_t count = produce(producer, 0, rows[cur]);
+    uint32_t band_first = 0;
+    for (uint32_t j = 0; j < frame->height; j++) {
+        uint32_t below_count = 0;
+        const vor__run_t *below = NULL;
+        if (boundary && j + 1u < frame->height) {
+            below_count = produce(producer, j + 1u, rows[cur ^ 1u]);
+            below = rows[cur ^ 1u];
+        }
+        write_row(out, frame, sites, j, rows[cur], count, below, below_count,
+                  band + (size_t)(j - band_first) * row_bytes);
+        if (out->areas != NULL) {
+            uint32_t start = 0;
+            for (uint32_t r = 0; r < count; r++) {
+                out->areas[rows[cur][r].site] += rows[cur][r].end - start;
+                start = rows[cur][r].end;
+            }
+        }
+        if (j + 1u == frame->height || j + 1u - band_first == out->band_rows) {
+            int status = out->flush(out->user, band_first, j + 1u - band_first, band);
+            if (status != 0) {
+                return status;
+            }
+            band_first = j + 1u;
+        }
+        if (j + 1u < frame->height) {
+            if (boundary) {
+                cur ^= 1u;
+                count = below_count;
+            } else {
+                count = produce(producer, j + 1u, rows[cur]);
+            }
+        }
+    }
+    return VOR_OK;
+}
+
 int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                const vor_raster_output_t *out, void *work, size_t work_bytes)
 {
@@ -249,10 +331,14 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     if (sites->count == 0u) {
         return VOR_ERR_EMPTY;
     }
-    if (sites->metric != VOR_METRIC_EUCLID || sites->points == NULL || out->band == NULL ||
+    if (sites->points == NULL || out->band == NULL ||
         out->flush == NULL || out->band_rows == 0u ||
         (out->method != VOR_RASTER_FAST && out->method != VOR_RASTER_BRUTE)) {
         return VOR_ERR_ARG;
+    }
+    const int euclid_metric = sites->metric == VOR_METRIC_EUCLID;
+    if (!euclid_metric && (vor__metric_check(sites) != VOR_OK || out->kind == VOR_RASTER_DISTANCE)) {
+        return VOR_ERR_ARG; /* DISTANCE: Euclidean point sites only */
     }
     const uint32_t n = sites->count;
     size_t pixel_bytes;
@@ -305,88 +391,39 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
         return VOR_ERR_ALIGN;
     }
 
-    /* carve the work memory: 8-byte arrays first, then 4-byte ones, then
-     * bytes, so that every array is aligned (total within the macro) */
     uint8_t *base = work;
-    size_t at = 0;
-    vor__run_t *rows[2];
-    vor__euclid_t euclid;
-    euclid.val = (int64_t *)(void *)(base + at);
-    at = align8(at + (size_t)n * sizeof(int64_t));
-    rows[0] = (vor__run_t *)(void *)(base + at);
-    at = align8(at + (size_t)frame->width * sizeof(vor__run_t));
-    rows[1] = (vor__run_t *)(void *)(base + at);
-    at = align8(at + (size_t)frame->width * sizeof(vor__run_t));
-    uint32_t *words = (uint32_t *)(void *)(base + at);
-    euclid.by_x = words;
-    euclid.by_y = words + n;
-    euclid.cand = words + 2u * (size_t)n;
-    euclid.key = (int32_t *)(void *)(words + 3u * (size_t)n);
-    euclid.stack = words + 4u * (size_t)n;
-    euclid.left = words + 5u * (size_t)n;
-    euclid.right = words + 6u * (size_t)n;
-    euclid.sorted_x = (int32_t *)(void *)(words + 7u * (size_t)n);
-    euclid.sorted_y = (int32_t *)(void *)(words + 8u * (size_t)n);
-    euclid.mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
-
     producer_t producer;
     producer.frame = frame;
     producer.sites = sites;
     producer.euclid = NULL;
-    if (out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n)) {
-        euclid.points = sites->points;
-        euclid.n = n;
-        euclid.width = frame->width;
-        euclid.height = frame->height;
-        euclid.step_x = frame->step_x;
-        euclid.step_y = frame->step_y;
-        euclid.origin_x = frame->origin_x;
-        euclid.origin_y = frame->origin_y;
-        vor__euclid_prepare(&euclid);
-        producer.euclid = &euclid;
-    }
-
-    if (out->areas != NULL) {
-        for (uint32_t k = 0; k < n; k++) {
-            out->areas[k] = 0;
+    producer.metric = NULL;
+    vor__run_t *rows[2];
+    vor__metric_t metric;
+    vor__euclid_t euclid;
+    if (!euclid_metric) {
+        /* the two rows of runs, then the culling pool: at least 12 n + 14
+         * words (the macro's 48 n + 64 bytes, less alignment) */
+        size_t row_bytes8 = align8((size_t)frame->width * sizeof(vor__run_t));
+        rows[0] = (vor__run_t *)(void *)base;
+        rows[1] = (vor__run_t *)(void *)(base + row_bytes8);
+        vor__metric_prepare(&metric, frame, sites, out->method == VOR_RASTER_BRUTE,
+                            (uint32_t *)(void *)(base + 2u * row_bytes8),
+                            (work_bytes - 2u * row_bytes8) / sizeof(uint32_t));
+        producer.metric = &metric;
+    } else {
+        carve_euclid(&euclid, base, n, frame->width, rows);
+        if (out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n)) {
+            euclid.points = sites->points;
+            euclid.n = n;
+            euclid.width = frame->width;
+            euclid.height = frame->height;
+            euclid.step_x = frame->step_x;
+            euclid.step_y = frame->step_y;
+            euclid.origin_x = frame->origin_x;
+            euclid.origin_y = frame->origin_y;
+            vor__euclid_prepare(&euclid);
+            producer.euclid = &euclid;
         }
     }
-    const int boundary = out->kind == VOR_RASTER_BOUNDARY;
-    uint8_t *band = out->band;
-    uint32_t cur = 0;
-    uint32_t count = produce(&producer, 0, rows[cur]);
-    uint32_t band_first = 0;
-    for (uint32_t j = 0; j < frame->height; j++) {
-        uint32_t below_count = 0;
-        const vor__run_t *below = NULL;
-        if (boundary && j + 1u < frame->height) {
-            below_count = produce(&producer, j + 1u, rows[cur ^ 1u]);
-            below = rows[cur ^ 1u];
-        }
-        write_row(out, frame, sites, j, rows[cur], count, below, below_count,
-                  band + (size_t)(j - band_first) * row_bytes);
-        if (out->areas != NULL) {
-            uint32_t start = 0;
-            for (uint32_t r = 0; r < count; r++) {
-                out->areas[rows[cur][r].site] += rows[cur][r].end - start;
-                start = rows[cur][r].end;
-            }
-        }
-        if (j + 1u == frame->height || j + 1u - band_first == out->band_rows) {
-            int status = out->flush(out->user, band_first, j + 1u - band_first, band);
-            if (status != 0) {
-                return status;
-            }
-            band_first = j + 1u;
-        }
-        if (j + 1u < frame->height) {
-            if (boundary) {
-                cur ^= 1u;
-                count = below_count;
-            } else {
-                count = produce(&producer, j + 1u, rows[cur]);
-            }
-        }
-    }
-    return VOR_OK;
+    return render(out, frame, sites, &producer, rows, row_bytes);
 }

@@ -67,4 +67,38 @@ void vor__euclid_prepare(vor__euclid_t *e);
 /* Runs of row j (rows requested in increasing order); returns their count. */
 uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs);
 
+/* The other metrics (raster_metrics.c): exact per-metric comparisons,
+ * the brute-force search, and the culling of sites per tile. */
+typedef struct vor__metric {
+    const vor_raster_sites_t *sites;
+    enum vor_metric metric;
+    uint32_t n;
+    uint32_t width, height;
+    int32_t origin_x, origin_y, step_x, step_y;
+    uint32_t limbs;      /* limbs of the wide comparisons of this frame */
+    int lp_narrow;       /* LP: every sum below 2^128 */
+    uint64_t det;        /* ELLIPTIC: a c - b^2 */
+    uint32_t trace;      /* ELLIPTIC: a + c */
+    int brute;           /* every site at every pixel, no culling */
+    uint32_t *pool;      /* culling: the block list, then the tile lists */
+    size_t pool_words;
+    uint32_t tile_width; /* columns per tile (a power of two, >= 16) */
+    uint32_t tiles;
+    uint32_t band_first; /* rows of the current culling band */
+    int band_valid;
+} vor__metric_t;
+
+/* VOR_OK when the metric's fields are usable (weights, exponent, form,
+ * offsets); else VOR_ERR_ARG. Reads every site once. */
+int vor__metric_check(const vor_raster_sites_t *sites);
+
+/* Sets m up for frame (checked) and sites (checked by vor__metric_check),
+ * with pool_words words of culling memory (at least 2 count + 2). */
+void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
+                         const vor_raster_sites_t *sites, int brute, uint32_t *pool,
+                         size_t pool_words);
+
+/* Runs of row j (rows requested in increasing order); returns their count. */
+uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs);
+
 #endif

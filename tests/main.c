@@ -9,6 +9,7 @@ int main(void)
     test_queries();
     test_raster();
     test_geometry();
+    test_raster_metrics();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -13,7 +13,7 @@
 #include "vor_raster.h"
 
 /* An unsigned integer of REF_LIMBS 32-bit limbs, least significant first. */
-#define REF_LIMBS 8
+#define REF_LIMBS 20
 typedef struct {
     uint32_t limb[REF_LIMBS];
 } ref_big_t;
@@ -22,12 +22,20 @@ void ref_big_set(ref_big_t *r, uint64_t v);
 /* r = a * b (the product must fit). */
 void ref_big_mul(ref_big_t *r, const ref_big_t *a, const ref_big_t *b);
 void ref_big_add(ref_big_t *r, const ref_big_t *a);
+/* r -= a (r >= a). */
+void ref_big_sub(ref_big_t *r, const ref_big_t *a);
 int ref_big_compare(const ref_big_t *a, const ref_big_t *b);
 
 /* Exact squared Euclidean distance between two int32 points. */
 void ref_euclid_square(ref_big_t *r, int32_t qx, int32_t qy, const vor_point_t *s);
 
-/* The nearest site to (qx, qy) under sites' metric; ties: smaller index. */
+/* The nearest site to (qx, qy) under sites' metric (the farthest for
+ * VOR_METRIC_FARTHEST); ties: smaller index. Every metric of vor_raster.h.
+ * *undecided (may be NULL) is set when a weighted comparison could not be
+ * decided within the reference's precision (a test must then fail). */
+uint32_t ref_nearest_metric(const vor_raster_sites_t *sites, int32_t qx, int32_t qy, int *undecided);
+
+/* The nearest site to (qx, qy), Euclidean point sites; ties: smaller index. */
 uint32_t ref_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy);
 
 /* floor of the distance from (qx, qy) to site k, saturated at UINT32_MAX

@@ -46,5 +46,6 @@ void test_mesh(void);
 void test_queries(void);
 void test_raster(void);
 void test_geometry(void);
+void test_raster_metrics(void);
 
 #endif

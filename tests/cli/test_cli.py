@@ -356,6 +356,170 @@ def cells_cases(rng, tmp):
               f"cells {args}: {r.returncode} {r.stderr!r}")
 
 
+def weighted_compare(a, b):
+    """Exact order of sqrt(D)/w1 - w2 for a = (D, w1, w2), b likewise:
+    brackets of sqrt(D * 4^t) with growing t (equality only when the
+    weights' terms cancel or both roots are integers)."""
+    from fractions import Fraction
+    from math import isqrt
+    (da, w1a, w2a), (db, w1b, w2b) = a, b
+    if w2a == w2b and da * w1b * w1b == db * w1a * w1a:
+        return 0
+    ra, rb = isqrt(da), isqrt(db)
+    if ra * ra == da and rb * rb == db:
+        return sign(Fraction(ra, w1a) - w2a - Fraction(rb, w1b) + w2b)
+    t = 0
+    while True:
+        sa, sb = isqrt(da << (2 * t)), isqrt(db << (2 * t))
+        lo_a, hi_a = Fraction(sa, w1a) - (w2a << t), Fraction(sa + 1, w1a) - (w2a << t)
+        lo_b, hi_b = Fraction(sb, w1b) - (w2b << t), Fraction(sb + 1, w1b) - (w2b << t)
+        if hi_a <= lo_b:
+            return -1
+        if hi_b <= lo_a:
+            return 1
+        t += 8
+
+
+def segment_square(q, a, b):
+    """Squared distance from q to segment a-b, through the clamped
+    parameter of the nearest point (a Fraction)."""
+    from fractions import Fraction
+    ex, ey = b[0] - a[0], b[1] - a[1]
+    length = ex * ex + ey * ey
+    t = Fraction(0) if length == 0 else min(max(Fraction((q[0] - a[0]) * ex + (q[1] - a[1]) * ey, length), 0), 1)
+    px, py = a[0] + t * ex, a[1] + t * ey
+    return (q[0] - px) ** 2 + (q[1] - py) ** 2
+
+
+def polygon_square(q, poly):
+    """0 inside (nonzero winding number, counted on a ray towards +x) or on
+    the boundary, else the squared distance to the nearest edge."""
+    k = len(poly)
+    if k >= 3:
+        winding = 0
+        for i in range(k):
+            a, b = poly[i], poly[(i + 1) % k]
+            if a[1] <= q[1] < b[1] and orient(a, b, q) > 0:
+                winding += 1
+            elif b[1] <= q[1] < a[1] and orient(a, b, q) < 0:
+                winding -= 1
+        if winding != 0:
+            return 0
+    edges = [(poly[0], poly[0])] if k == 1 else [(poly[i], poly[(i + 1) % k]) for i in range(k if k >= 3 else 1)]
+    return min(segment_square(q, a, b) for a, b in edges)
+
+
+def metric_nearest(metric, param, sites, q):
+    """Index of the first-ranked site at q (ties: the smaller index)."""
+    def key(site):
+        if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp"):
+            dx, dy = abs(site[0] - q[0]), abs(site[1] - q[1])
+        if metric == "l1":
+            return dx + dy
+        if metric == "linf":
+            return max(dx, dy)
+        if metric == "lp":
+            return dx ** param + dy ** param
+        if metric == "ellip":
+            a, b, c = param
+            sx, sy = q[0] - site[0], q[1] - site[1]
+            return a * sx * sx + 2 * b * sx * sy + c * sy * sy
+        if metric == "farthest":
+            return -(dx * dx + dy * dy)
+        if metric == "hausdorff":
+            return max((x - q[0]) ** 2 + (y - q[1]) ** 2 for x, y in site)
+        if metric == "segment":
+            return segment_square(q, site[0], site[1])
+        if metric == "polygon":
+            return polygon_square(q, site)
+        d = dx * dx + dy * dy
+        return (d, site[2] if metric != "add" else 1, site[-1] if metric != "mult" else 0)
+    best = 0
+    best_key = key(sites[0])
+    for k in range(1, len(sites)):
+        kk = key(sites[k])
+        better = weighted_compare(kk, best_key) < 0 if metric in ("mult", "add", "comp") else kk < best_key
+        if better:
+            best, best_key = k, kk
+    return best
+
+
+def raster_metric_cases(rng, tmp):
+    """vor raster --metric M --labels against metric_nearest, for every
+    metric: random sites, sites on pixel centres with ties, and bad input."""
+    import os
+    import struct
+    def site_line(metric, site):
+        if metric in ("hausdorff", "polygon"):
+            return " ".join(f"{x} {y}" for x, y in site)
+        if metric == "segment":
+            return f"{site[0][0]} {site[0][1]} {site[1][0]} {site[1][1]}"
+        return " ".join(str(v) for v in site)
+    metrics = [("l1", None, "l1"), ("linf", None, "linf"), ("lp", 3, "lp:3"), ("lp", 8, "lp:8"),
+               ("ellip", (3, -1, 2), "ellip:3,-1,2"), ("mult", None, "mult"), ("add", None, "add"),
+               ("comp", None, "comp"), ("farthest", None, "farthest"), ("hausdorff", None, "hausdorff"),
+               ("segment", None, "segment"), ("polygon", None, "polygon")]
+    for metric, param, arg in metrics:
+        for n in range(3):
+            w, h = rng.randint(1, 21), rng.randint(1, 19)
+            ox, oy, sx, sy = rng.randint(-20, 20), rng.randint(-20, 20), rng.randint(1, 3), rng.randint(1, 3)
+            def pt(on_centre):
+                if on_centre:
+                    return (ox + sx * rng.randint(0, w - 1), oy + sy * rng.randint(0, h - 1))
+                return (ox + rng.randint(-8, w * sx + 8), oy + rng.randint(-8, h * sy + 8))
+            sites = []
+            for k in range(rng.randint(1, 14)):
+                p = pt(n == 1)
+                if metric == "mult":
+                    sites.append(p + (rng.randint(1, 3),))
+                elif metric == "add":
+                    sites.append(p + (rng.randint(-4, 4) if n != 1 else 5 * (k % 2),))
+                elif metric == "comp":
+                    sites.append(p + (rng.randint(1, 3), rng.randint(-4, 4)))
+                elif metric == "segment":
+                    sites.append((p, pt(n == 1) if k % 3 else p))
+                elif metric in ("hausdorff", "polygon"):
+                    sites.append([p] + [(p[0] + rng.randint(-6, 6), p[1] + rng.randint(-6, 6)) for _ in range(rng.randint(0, 4))])
+                else:
+                    sites.append(p)
+            if n == 1 and len(sites) > 1:
+                sites.append(sites[0])  # a duplicate: never owns a pixel
+            name = f"{metric}{param if param is not None else ''}-{n}"
+            sp = os.path.join(tmp, name + ".sites")
+            with open(sp, "w") as f:
+                f.write("# " + name + "\n" + "".join(site_line(metric, s) + "\n" for s in sites))
+            out = os.path.join(tmp, name + ".raw")
+            r = run(["raster", "--size", str(w), str(h), "--origin", str(ox), str(oy), "--step", str(sx), str(sy),
+                     "--metric", arg, "--band", str(rng.choice([1, 5, 16])), sp, "--labels", out], "")
+            check(r.returncode == 0, f"raster {name}: status {r.returncode} {r.stderr}")
+            if r.returncode != 0:
+                continue
+            data = open(out, "rb").read()
+            got = struct.unpack(f"<{w * h}I", data) if len(data) == 4 * w * h else None
+            check(got is not None, f"raster {name}: {len(data)} bytes for {w}x{h}")
+            wrong = 0
+            for j in range(h):
+                for i in range(w):
+                    want = metric_nearest(metric, param, sites, (ox + i * sx, oy + j * sy))
+                    wrong += got is None or got[j * w + i] != want
+            check(wrong == 0, f"raster {name}: {wrong} of {w * h} labels differ from brute force")
+    # bad site lines and metric arguments: status 2 and the line number
+    bad = [("mult", "1 2 3\n4 5 0\n", 2), ("mult", "1 2\n", 1), ("comp", "# c\n1 2 3\n", 2),
+           ("comp", "1 2 -1 5\n", 1), ("add", "1 2 3 4\n", 1), ("segment", "1 2 3\n", 1),
+           ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1)]
+    for metric, text, line in bad:
+        bp = os.path.join(tmp, "bad.sites")
+        with open(bp, "w") as f:
+            f.write(text)
+        r = run(["raster", "--size", "4", "4", "--metric", metric, bp, "--labels", os.path.join(tmp, "bad.raw")], "")
+        check(r.returncode == 2 and r.stderr.startswith(f"error: line {line}: "),
+              f"raster --metric {metric} bad line {text!r}: {r.returncode} {r.stderr!r}")
+    for arg in ("lp:0", "lp:9", "lp:x", "ellip:1,2,3", "ellip:0,0,1", "ellip:1,2", "manhattan"):
+        r = run(["raster", "--size", "4", "4", "--metric", arg, os.path.join(tmp, "l1-0.sites"), "--labels",
+                 os.path.join(tmp, "bad.raw")], "")
+        check(r.returncode == 2 and r.stderr.startswith("error: --metric"), f"raster --metric {arg}: {r.returncode} {r.stderr!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -392,6 +556,7 @@ def main():
         nearest_cases(rng, tmp)
         raster_cases(rng, tmp)
         cells_cases(rng, tmp)
+        raster_metric_cases(rng, tmp)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

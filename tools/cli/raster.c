@@ -1,14 +1,23 @@
 /*
- * vor raster --size W H --origin OX OY --step SX SY [--metric euclid]
+ * vor raster --size W H --origin OX OY --step SX SY
+ *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
+ *                      hausdorff|segment|polygon]
  *            [--band R] SITES (--labels OUT.raw | --png OUT.png)
  *
- * Renders the exact discrete Voronoi diagram of SITES ("x y" per line)
- * with vor_raster in bands of R rows (default 16). --labels writes W*H
- * little-endian uint32 labels, row-major, row 0 (j = 0) first, each the
- * index of the pixel's nearest site as in `vor delaunay` (ties: the
- * smaller index). --png writes an RGB picture, one colour per site and
- * black boundaries (needs Debian's libstb-dev when built). Bad input:
- * "error: line N: reason" or "error: reason", exit 2.
+ * Renders the exact discrete Voronoi diagram of SITES with vor_raster in
+ * bands of R rows (default 16). SITES has one site per line (blank and
+ * '#' lines skipped):
+ *   euclid, l1, linf, lp, ellip, farthest   x y
+ *   mult, add                               x y w       (mult: w >= 1)
+ *   comp                                    x y w1 w2   (w1 >= 1)
+ *   segment                                 x1 y1 x2 y2
+ *   hausdorff, polygon                      x1 y1 [x2 y2 ...] (a point set;
+ *                                           a polygon's vertices in order)
+ * --labels writes W*H little-endian uint32 labels, row-major, row 0
+ * (j = 0) first, each the index of the pixel's nearest site (farthest for
+ * farthest; ties: the smaller index). --png writes an RGB picture, one
+ * colour per site and black boundaries (needs Debian's libstb-dev when
+ * built). Bad input: "error: line N: reason" or "error: reason", exit 2.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -92,11 +101,181 @@ static uint8_t *render(const vor_raster_frame_t *frame, const vor_raster_sites_t
     return c.frame;
 }
 
+/* The sites of one metric, read from path. Arrays are malloc'd. */
+typedef struct site_file {
+    vor_point_t *points;
+    size_t point_count, point_capacity;
+    int32_t *mult, *add;
+    uint32_t *offsets;
+    size_t count, capacity;
+} site_file_t;
+
+static void push_point(site_file_t *f, int32_t x, int32_t y)
+{
+    if (f->point_count == f->point_capacity) {
+        f->point_capacity = f->point_capacity ? 2 * f->point_capacity : 1024;
+        f->points = realloc(f->points, f->point_capacity * sizeof *f->points);
+        if (f->points == NULL) {
+            cli_error("out of memory");
+        }
+    }
+    f->points[f->point_count].x = x;
+    f->points[f->point_count].y = y;
+    f->point_count++;
+}
+
+/* Reads SITES for metric into f and sets up sites (weights, offsets). */
+static void read_metric_sites(const char *path, enum vor_metric metric, site_file_t *f)
+{
+    cli_input_t in;
+    cli_open(&in, path);
+    const char *line;
+    memset(f, 0, sizeof *f);
+    while ((line = cli_next_line(&in)) != NULL) {
+        const char *cursor = line, *why = "";
+        int32_t v[4];
+        if (f->count == f->capacity) {
+            f->capacity = f->capacity ? 2 * f->capacity : 1024;
+            f->mult = realloc(f->mult, f->capacity * sizeof *f->mult);
+            f->add = realloc(f->add, f->capacity * sizeof *f->add);
+            f->offsets = realloc(f->offsets, (f->capacity + 1) * sizeof *f->offsets);
+            if (f->mult == NULL || f->add == NULL || f->offsets == NULL) {
+                cli_error("out of memory");
+            }
+        }
+        if (f->count >= 0x07FFFFFFu || f->point_count >= 0xFFFFFFF0u) {
+            cli_line_error(&in, "too many sites");
+        }
+        f->offsets[f->count] = (uint32_t)f->point_count;
+        f->mult[f->count] = 1;
+        f->add[f->count] = 0;
+        int fields = 2;
+        const char *shape = "x y";
+        if (metric == VOR_METRIC_MULT || metric == VOR_METRIC_ADD) {
+            fields = 3;
+            shape = "x y w";
+        } else if (metric == VOR_METRIC_COMPOUND) {
+            fields = 4;
+            shape = "x y w1 w2";
+        } else if (metric == VOR_METRIC_SEGMENT) {
+            fields = 4;
+            shape = "x1 y1 x2 y2";
+        }
+        if (metric == VOR_METRIC_HAUSDORFF || metric == VOR_METRIC_POLYGON) {
+            /* pairs until the end of the line, at least one */
+            do {
+                if (!cli_int32_field(&cursor, &v[0], &why) || !cli_int32_field(&cursor, &v[1], &why)) {
+                    cli_line_error(&in, why);
+                }
+                push_point(f, v[0], v[1]);
+            } while (!cli_at_end(cursor));
+        } else {
+            for (int i = 0; i < fields; i++) {
+                if (!cli_int32_field(&cursor, &v[i], &why)) {
+                    char message[120];
+                    snprintf(message, sizeof message, "%s (expected %s)", why, shape);
+                    cli_line_error(&in, message);
+                }
+            }
+            if (!cli_at_end(cursor)) {
+                char message[120];
+                snprintf(message, sizeof message, "too many fields (expected %s)", shape);
+                cli_line_error(&in, message);
+            }
+            push_point(f, v[0], v[1]);
+            if (metric == VOR_METRIC_SEGMENT) {
+                push_point(f, v[2], v[3]);
+            } else if (metric == VOR_METRIC_MULT) {
+                f->mult[f->count] = v[2];
+            } else if (metric == VOR_METRIC_ADD) {
+                f->add[f->count] = v[2];
+            } else if (metric == VOR_METRIC_COMPOUND) {
+                f->mult[f->count] = v[2];
+                f->add[f->count] = v[3];
+            }
+            if ((metric == VOR_METRIC_MULT || metric == VOR_METRIC_COMPOUND) && f->mult[f->count] < 1) {
+                cli_line_error(&in, "the multiplicative weight must be >= 1");
+            }
+        }
+        f->count++;
+        f->offsets[f->count] = (uint32_t)f->point_count;
+    }
+    cli_close(&in);
+}
+
+/* Parses "A,B,C" of --metric ellip:A,B,C. */
+static void parse_form(const char *text, vor_raster_sites_t *sites)
+{
+    char buffer[120];
+    snprintf(buffer, sizeof buffer, "%s", text);
+    for (char *c = buffer; *c != '\0'; c++) {
+        if (*c == ',') {
+            *c = ' ';
+        }
+    }
+    const char *cursor = buffer, *why;
+    int32_t v[3];
+    for (int i = 0; i < 3; i++) {
+        if (!cli_int32_field(&cursor, &v[i], &why)) {
+            cli_error("--metric: ellip:A,B,C needs three int32 coefficients");
+        }
+    }
+    if (!cli_at_end(cursor)) {
+        cli_error("--metric: ellip:A,B,C needs three int32 coefficients");
+    }
+    if (v[0] <= 0 || (int64_t)v[0] * v[2] <= (int64_t)v[1] * v[1]) {
+        cli_error("--metric: ellip:A,B,C needs A > 0 and A*C > B^2");
+    }
+    sites->form_a = v[0];
+    sites->form_b = v[1];
+    sites->form_c = v[2];
+}
+
+/* Sets sites->metric (and its parameters) from the --metric argument. */
+static void parse_metric(const char *text, vor_raster_sites_t *sites)
+{
+    static const struct {
+        const char *name;
+        enum vor_metric metric;
+    } names[] = {{"euclid", VOR_METRIC_EUCLID},       {"l1", VOR_METRIC_L1},
+                 {"linf", VOR_METRIC_LINF},           {"mult", VOR_METRIC_MULT},
+                 {"add", VOR_METRIC_ADD},             {"comp", VOR_METRIC_COMPOUND},
+                 {"farthest", VOR_METRIC_FARTHEST},   {"hausdorff", VOR_METRIC_HAUSDORFF},
+                 {"segment", VOR_METRIC_SEGMENT},     {"polygon", VOR_METRIC_POLYGON}};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        if (strcmp(text, names[i].name) == 0) {
+            sites->metric = names[i].metric;
+            return;
+        }
+    }
+    if (strncmp(text, "lp:", 3) == 0) {
+        const char *cursor = text + 3, *why;
+        int32_t p;
+        if (!cli_int32_field(&cursor, &p, &why) || !cli_at_end(cursor) || p < 1 || p > 8) {
+            cli_error("--metric: lp:P needs an integer P from 1 to 8");
+        }
+        sites->metric = VOR_METRIC_LP;
+        sites->lp_exponent = (uint32_t)p;
+        return;
+    }
+    if (strncmp(text, "ellip:", 6) == 0) {
+        sites->metric = VOR_METRIC_ELLIPTIC;
+        parse_form(text + 6, sites);
+        return;
+    }
+    cli_error("--metric: expected euclid, l1, linf, lp:P, ellip:A,B,C, mult, add, comp, "
+              "farthest, hausdorff, segment or polygon");
+}
+
 int cli_raster(int argc, char **argv)
 {
     const char *usage = "usage: vor raster --size W H --origin OX OY --step SX SY "
-                        "[--metric euclid] [--band R] SITES (--labels OUT.raw | --png OUT.png)";
+                        "[--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|"
+                        "hausdorff|segment|polygon] [--band R] SITES (--labels OUT.raw | --png OUT.png)";
     vor_raster_frame_t frame = {0, 0, 1, 1, 0, 0};
+    vor_raster_sites_t sites;
+    memset(&sites, 0, sizeof sites);
+    sites.metric = VOR_METRIC_EUCLID;
     int have_size = 0;
     uint32_t band_rows = 16;
     const char *sites_path = NULL, *labels_path = NULL, *png_path = NULL;
@@ -124,9 +303,7 @@ int cli_raster(int argc, char **argv)
             }
             a += 2;
         } else if (strcmp(o, "--metric") == 0 && more >= 1) {
-            if (strcmp(argv[a + 1], "euclid") != 0) {
-                cli_error("--metric: only 'euclid' is implemented in this build");
-            }
+            parse_metric(argv[a + 1], &sites);
             a += 1;
         } else if (strcmp(o, "--band") == 0 && more >= 1) {
             int32_t r = int_arg(argv[a + 1], "--band");
@@ -151,19 +328,20 @@ int cli_raster(int argc, char **argv)
     if (band_rows > frame.height) {
         band_rows = frame.height;
     }
-    uint32_t n;
-    vor_point_t *points = cli_read_sites(sites_path, &n);
+    site_file_t file;
+    read_metric_sites(sites_path, sites.metric, &file);
+    uint32_t n = (uint32_t)file.count;
     if (n == 0u) {
         cli_error("no sites");
     }
     if ((uint64_t)frame.width * frame.height > 0x10000000u) {
         cli_error("--size: frame larger than 2^28 pixels");
     }
-    vor_raster_sites_t sites;
-    memset(&sites, 0, sizeof sites);
-    sites.metric = VOR_METRIC_EUCLID;
-    sites.points = points;
+    sites.points = file.points;
     sites.count = n;
+    sites.mult_weights = file.mult;
+    sites.add_weights = file.add;
+    sites.offsets = file.offsets;
     size_t pixels = (size_t)frame.width * frame.height;
     if (labels_path != NULL) {
         uint8_t *labels = render(&frame, &sites, VOR_RASTER_LABEL32, band_rows, NULL);
@@ -211,6 +389,9 @@ int cli_raster(int argc, char **argv)
                   "then rebuild");
 #endif
     }
-    free(points);
+    free(file.points);
+    free(file.mult);
+    free(file.add);
+    free(file.offsets);
     return 0;
 }

@@ -1,0 +1,962 @@
+/*
+ * raster_metrics.c - vor_raster for every metric but Euclidean point
+ * sites: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
+ * compound), farthest-point, Hausdorff point sets, segments and filled
+ * polygons (seed 002: section 2.3 defines the generalised diagrams,
+ * chapter 5 the distances). Each pixel takes the site of smallest distance
+ * (largest for the farthest-point diagram), ties to the smaller index:
+ * Definition 2.2 with another distance.
+ *
+ * Distances are never computed, only compared, each through a "key" that
+ * holds an exact integer (or rational) image of the distance, and one
+ * exact comparison per metric (key_compare). docs/design.md, "Other
+ * metrics", derives each comparison and its width.
+ *
+ * Culling: the frame is cut into tiles of 16 rows by tile_width columns.
+ * For a tile R and a site, bounds() gives a key no larger than the site's
+ * key at any pixel of R (its best case) and one no smaller (its worst
+ * case). A site whose best case is strictly worse than some site's worst
+ * case is strictly farther than that site at every pixel of R, so it can
+ * be neither nearest nor tied for nearest there, and is skipped. Blocks
+ * of 8 tiles are culled from all sites first, and their tiles from the
+ * block's survivors, so a band costs O(n) bounds per block.
+ */
+#include "raster.h"
+
+#include "multiword.h"
+
+/* ------------------------------------------------------------ 128 bits */
+
+typedef struct u128 {
+    uint64_t lo, hi;
+} u128_t;
+
+/* A signed 128-bit value as sign and magnitude (neg is 0 for zero). */
+typedef struct s128 {
+    u128_t mag;
+    int neg;
+} s128_t;
+
+VOR__INLINE u128_t u128_of(uint64_t v)
+{
+    u128_t r;
+    r.lo = v;
+    r.hi = 0;
+    return r;
+}
+
+VOR__INLINE u128_t u128_mul(uint64_t a, uint64_t b)
+{
+    u128_t r;
+    r.lo = vor__mul_u64(a, b, &r.hi);
+    return r;
+}
+
+/* a * b, for a product known to be below 2^128. */
+VOR__INLINE u128_t u128_mul64(u128_t a, uint64_t b)
+{
+    u128_t r = u128_mul(a.lo, b);
+    uint64_t ignored;
+    r.hi += vor__mul_u64(a.hi, b, &ignored);
+    return r;
+}
+
+VOR__INLINE u128_t u128_add(u128_t a, u128_t b)
+{
+    u128_t r;
+    r.lo = a.lo + b.lo;
+    r.hi = a.hi + b.hi + (r.lo < a.lo ? 1u : 0u);
+    return r;
+}
+
+/* a - b for a >= b. */
+VOR__INLINE u128_t u128_sub(u128_t a, u128_t b)
+{
+    u128_t r;
+    r.lo = a.lo - b.lo;
+    r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
+    return r;
+}
+
+VOR__INLINE int u128_cmp(u128_t a, u128_t b)
+{
+    if (a.hi != b.hi) {
+        return a.hi < b.hi ? -1 : 1;
+    }
+    if (a.lo != b.lo) {
+        return a.lo < b.lo ? -1 : 1;
+    }
+    return 0;
+}
+
+VOR__INLINE int u128_is_zero(u128_t a)
+{
+    return a.lo == 0u && a.hi == 0u;
+}
+
+/* |d| for the difference of two int32 values: below 2^32. */
+VOR__INLINE uint32_t magnitude(int64_t d)
+{
+    return (uint32_t)(d < 0 ? -d : d);
+}
+
+/* x * y for |x|, |y| < 2^32. */
+VOR__INLINE s128_t s128_product(int64_t x, int64_t y)
+{
+    s128_t r;
+    r.mag = u128_of(vor__mul_u32(magnitude(x), magnitude(y)));
+    r.neg = (x < 0) != (y < 0) && !u128_is_zero(r.mag);
+    return r;
+}
+
+/* a + b, for sums below 2^128 in magnitude. */
+VOR__INLINE s128_t s128_add(s128_t a, s128_t b)
+{
+    s128_t r;
+    if (a.neg == b.neg) {
+        r.mag = u128_add(a.mag, b.mag);
+        r.neg = a.neg;
+    } else if (u128_cmp(a.mag, b.mag) >= 0) {
+        r.mag = u128_sub(a.mag, b.mag);
+        r.neg = a.neg;
+    } else {
+        r.mag = u128_sub(b.mag, a.mag);
+        r.neg = b.neg;
+    }
+    r.neg = r.neg && !u128_is_zero(r.mag);
+    return r;
+}
+
+/* ax^2 + ay^2 < 2^65. */
+VOR__INLINE u128_t square_sum(uint32_t ax, uint32_t ay)
+{
+    return u128_add(u128_of(vor__mul_u32(ax, ax)), u128_of(vor__mul_u32(ay, ay)));
+}
+
+/* Bit length of v (0 for 0). */
+static uint32_t bit_length(uint64_t v)
+{
+    uint32_t bits = 0;
+    while (v != 0u) { /* at most 64 steps */
+        v >>= 1;
+        bits++;
+    }
+    return bits;
+}
+
+/* ------------------------------------------------------ multi-word */
+
+/* Widest comparison: the compound weights' squares, 318 bits (below). */
+#define MAX_LIMBS VOR__LIMBS(320)
+/* Lp sums: |dx|^8 + |dy|^8 < 2^257. */
+#define LP_LIMBS VOR__LIMBS(258)
+
+static void limbs_from_u128(vor__limb *r, size_t n, u128_t v)
+{
+    for (size_t i = 0; i < n; i++) {
+#if VOR_LIMB_BITS == 64
+        r[i] = i == 0u ? v.lo : i == 1u ? v.hi : 0u;
+#else
+        r[i] = i == 0u   ? (uint32_t)v.lo
+               : i == 1u ? (uint32_t)(v.lo >> 32)
+               : i == 2u ? (uint32_t)v.hi
+               : i == 3u ? (uint32_t)(v.hi >> 32)
+                         : 0u;
+#endif
+    }
+}
+
+/* Unsigned comparison of two n-limb numbers. */
+static int mw_ucompare(const vor__limb *a, const vor__limb *b, size_t n)
+{
+    for (size_t i = n; i-- > 0u;) {
+        if (a[i] != b[i]) {
+            return a[i] < b[i] ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+static void mw_copy(vor__limb *r, const vor__limb *a, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        r[i] = a[i];
+    }
+}
+
+/* r = 4 a (the caller's width holds it). */
+static void mw_times4(vor__limb *r, const vor__limb *a, size_t n)
+{
+    vor__limb carry = 0;
+    for (size_t i = 0; i < n; i++) {
+        r[i] = (vor__limb)(a[i] << 2) | carry;
+        carry = a[i] >> (VOR_LIMB_BITS - 2);
+    }
+}
+
+/* ------------------------------------------------------------ keys */
+
+/*
+ * The exact image of one site's distance at one point. Which fields hold
+ * it depends on the metric:
+ *   L1, LINF, HAUSDORFF, FARTHEST   num = the distance (L1, LINF) or its
+ *                                    square (the others)
+ *   LP                               num = |dx|^p + |dy|^p (lp_narrow), else wide
+ *   MULT, ADD, COMPOUND              num = squared Euclidean distance,
+ *                                    w1, w2 = the site's weights
+ *   ELLIPTIC, SEGMENT, POLYGON       the rational (squared ? num^2 : num) / den
+ */
+typedef struct key {
+    u128_t num;
+    u128_t den;
+    int squared;
+    int32_t w1, w2;
+    vor__limb wide[LP_LIMBS];
+} rank_key_t;
+
+static void set_unit(rank_key_t *k, u128_t v)
+{
+    k->num = v;
+    k->den = u128_of(1);
+    k->squared = 0;
+}
+
+/* x^p for x^p < 2^128. */
+VOR__INLINE u128_t power128(uint32_t x, uint32_t p)
+{
+    u128_t r = u128_of(x);
+    for (uint32_t i = 1; i < p; i++) {
+        r = u128_mul64(r, x);
+    }
+    return r;
+}
+
+/* r[0..n) = x^p (n limbs hold it). */
+static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
+{
+    vor__limb base[1] = {x};
+    vor__limb product[LP_LIMBS];
+    vor__mw_from_u64(r, n, x);
+    for (uint32_t i = 1; i < p; i++) {
+        vor__mw_mul(product, n, r, n, base, 1);
+        mw_copy(r, product, n);
+    }
+}
+
+/* The key of a point site at offsets of magnitude (ax, ay): every metric
+ * whose distance grows with |dx| and with |dy|. */
+static void point_key(const vor__metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
+{
+    const vor_raster_sites_t *s = m->sites;
+    switch (m->metric) {
+    case VOR_METRIC_L1:
+        k->num = u128_of((uint64_t)ax + ay);
+        break;
+    case VOR_METRIC_LINF:
+        k->num = u128_of(ax > ay ? ax : ay);
+        break;
+    case VOR_METRIC_LP:
+        if (m->lp_narrow) {
+            k->num = u128_add(power128(ax, s->lp_exponent), power128(ay, s->lp_exponent));
+        } else {
+            vor__limb other[LP_LIMBS];
+            power_limbs(k->wide, m->limbs, ax, s->lp_exponent);
+            power_limbs(other, m->limbs, ay, s->lp_exponent);
+            vor__mw_add(k->wide, other, m->limbs);
+        }
+        break;
+    default: /* MULT, ADD, COMPOUND, FARTHEST, HAUSDORFF */
+        k->num = square_sum(ax, ay);
+        if (m->metric == VOR_METRIC_MULT || m->metric == VOR_METRIC_COMPOUND) {
+            k->w1 = s->mult_weights[site];
+        }
+        if (m->metric == VOR_METRIC_ADD || m->metric == VOR_METRIC_COMPOUND) {
+            k->w2 = s->add_weights[site];
+        }
+        break;
+    }
+}
+
+/* a dx^2 + 2 b dx dy + c dy^2 for |dx|, |dy| < 2^32: each term is below
+ * 2^96 and the form is positive definite, so every step fits 128 bits. */
+VOR__INLINE u128_t elliptic_form(const vor_raster_sites_t *s, int64_t dx, int64_t dy)
+{
+    uint32_t ax = magnitude(dx), ay = magnitude(dy);
+    u128_t sum = u128_add(u128_mul(vor__mul_u32(ax, ax), (uint32_t)s->form_a),
+                          u128_mul(vor__mul_u32(ay, ay), (uint32_t)s->form_c));
+    if (s->form_b == 0 || ax == 0u || ay == 0u) {
+        return sum;
+    }
+    /* |b| < 2^31 since b^2 < a c < 2^62 */
+    u128_t cross = u128_mul(vor__mul_u32(ax, ay), 2u * magnitude(s->form_b));
+    int negative = (s->form_b < 0) != ((dx < 0) != (dy < 0));
+    return negative ? u128_sub(sum, cross) : u128_add(sum, cross);
+}
+
+/* The squared distance from q to the segment a-b, as the rational key
+ * (squared ? num^2 : num) / den: the projection of q onto the segment's
+ * line falls before a (then |q - a|^2), after b (|q - b|^2), or between
+ * (cross^2 / |b - a|^2, cross = (q - a) x (b - a)). */
+static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, int32_t qy,
+                        rank_key_t *k)
+{
+    int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
+    int64_t ux = (int64_t)qx - a->x, uy = (int64_t)qy - a->y;
+    u128_t length = square_sum(magnitude(ex), magnitude(ey));
+    s128_t along = s128_add(s128_product(ux, ex), s128_product(uy, ey));
+    if (u128_is_zero(length) || along.neg || u128_is_zero(along.mag)) {
+        set_unit(k, square_sum(magnitude(ux), magnitude(uy)));
+        return;
+    }
+    if (u128_cmp(along.mag, length) >= 0) {
+        set_unit(k, square_sum(magnitude((int64_t)qx - b->x), magnitude((int64_t)qy - b->y)));
+        return;
+    }
+    s128_t cross = s128_product(uy, ex);
+    cross.neg = !cross.neg && !u128_is_zero(cross.mag);
+    cross = s128_add(s128_product(ux, ey), cross);
+    k->num = cross.mag; /* |cross| < 2^65 */
+    k->den = length;    /* < 2^65 */
+    k->squared = 1;
+}
+
+/* (squared ? num^2 : num) / den compared exactly: a / b < c / d iff
+ * a d < c b (denominators >= 1). Numerators are below 2^130, denominators
+ * below 2^65, so the cross products stay below 2^195. */
+static int rational_compare(const rank_key_t *a, const rank_key_t *b)
+{
+    int a_unit = !a->squared && a->den.lo == 1u && a->den.hi == 0u;
+    int b_unit = !b->squared && b->den.lo == 1u && b->den.hi == 0u;
+    if (a_unit && b_unit) {
+        return u128_cmp(a->num, b->num);
+    }
+    int a_small = a->den.hi == 0u && a->num.hi == 0u && (!a->squared || a->num.lo >> 32 == 0u);
+    int b_small = b->den.hi == 0u && b->num.hi == 0u && (!b->squared || b->num.lo >> 32 == 0u);
+    if (a_small && b_small) { /* numerators and denominators below 2^64 */
+        uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
+        uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
+        return u128_cmp(u128_mul(an, b->den.lo), u128_mul(bn, a->den.lo));
+    }
+    enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(256) };
+    vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
+    limbs_from_u128(num, NUM, a->num);
+    if (a->squared) {
+        vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
+    } else {
+        limbs_from_u128(square, SQUARE, a->num);
+    }
+    limbs_from_u128(den, NUM, b->den);
+    vor__mw_mul(left, CROSS, square, SQUARE, den, NUM);
+    limbs_from_u128(num, NUM, b->num);
+    if (b->squared) {
+        vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
+    } else {
+        limbs_from_u128(square, SQUARE, b->num);
+    }
+    limbs_from_u128(den, NUM, a->den);
+    vor__mw_mul(right, CROSS, square, SQUARE, den, NUM);
+    return mw_ucompare(left, right, CROSS);
+}
+
+/*
+ * Sign of (sqrt(A) - sqrt(B)) - delta for A, B >= 0: the additively
+ * weighted comparison (docs/design.md, "Additive weights"). With
+ * delta >= 0 it is the sign of E - 2 delta sqrt(B), E = A - B - delta^2;
+ * with delta = -g < 0, the sign of 2 g sqrt(A) - F, F = B - A - g^2. Both
+ * sides are squared only when they are known non-negative. n limbs hold
+ * E^2, F^2, 4 delta^2 A and 4 delta^2 B (the caller's bound) and the sign
+ * of E and F.
+ */
+static int additive_sign(size_t n, const u128_t *big_a, const u128_t *big_b,
+                         const s128_t *delta)
+{
+    if (u128_is_zero(delta->mag)) {
+        return u128_cmp(*big_a, *big_b);
+    }
+    vor__limb a[MAX_LIMBS], b[MAX_LIMBS], d[MAX_LIMBS], d2[MAX_LIMBS], e[MAX_LIMBS];
+    vor__limb product[MAX_LIMBS], left[MAX_LIMBS], right[MAX_LIMBS];
+    limbs_from_u128(a, n, *big_a);
+    limbs_from_u128(b, n, *big_b);
+    limbs_from_u128(d, n, delta->mag);
+    vor__mw_mul(d2, n, d, n, d, n);
+    if (!delta->neg) {
+        mw_copy(e, a, n);
+        vor__mw_sub(e, b, n);
+        vor__mw_sub(e, d2, n);
+        int sign = vor__mw_sign(e, n);
+        if (sign < 0) {
+            return -1; /* E < 0 <= 2 delta sqrt(B) */
+        }
+        if (sign == 0) {
+            return u128_is_zero(*big_b) ? 0 : -1;
+        }
+        vor__mw_mul(left, n, e, n, e, n);
+        vor__mw_mul(product, n, d2, n, b, n);
+        mw_times4(right, product, n);
+        return mw_ucompare(left, right, n);
+    }
+    mw_copy(e, b, n);
+    vor__mw_sub(e, a, n);
+    vor__mw_sub(e, d2, n);
+    int sign = vor__mw_sign(e, n);
+    if (sign < 0) {
+        return 1; /* 2 g sqrt(A) >= 0 > F */
+    }
+    if (sign == 0) {
+        return u128_is_zero(*big_a) ? 0 : 1;
+    }
+    vor__mw_mul(product, n, d2, n, a, n);
+    mw_times4(left, product, n);
+    vor__mw_mul(right, n, e, n, e, n);
+    return mw_ucompare(left, right, n);
+}
+
+/* Negative when key a ranks before key b (nearer; farther for FARTHEST),
+ * 0 when they tie. */
+static int key_compare(const vor__metric_t *m, const rank_key_t *a, const rank_key_t *b)
+{
+    switch (m->metric) {
+    case VOR_METRIC_LP:
+        if (!m->lp_narrow) {
+            return mw_ucompare(a->wide, b->wide, m->limbs);
+        }
+        return u128_cmp(a->num, b->num);
+    case VOR_METRIC_FARTHEST:
+        return u128_cmp(b->num, a->num);
+    case VOR_METRIC_ELLIPTIC:
+    case VOR_METRIC_SEGMENT:
+    case VOR_METRIC_POLYGON:
+        return rational_compare(a, b);
+    case VOR_METRIC_MULT: {
+        /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
+        uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
+        uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
+        return u128_cmp(u128_mul64(a->num, wb2), u128_mul64(b->num, wa2));
+    }
+    case VOR_METRIC_ADD: {
+        s128_t delta; /* wa - wb, below 2^32 */
+        int64_t diff = (int64_t)a->w2 - b->w2;
+        delta.mag = u128_of(diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
+        delta.neg = diff < 0;
+        return additive_sign(m->limbs, &a->num, &b->num, &delta);
+    }
+    case VOR_METRIC_COMPOUND: {
+        /* sqrt(A)/wa1 - wa2 vs sqrt(B)/wb1 - wb2, times wa1 wb1 > 0:
+         * sqrt(A wb1^2) - sqrt(B wa1^2) vs (wa2 - wb2) wa1 wb1 */
+        uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
+        uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
+        int64_t diff = (int64_t)a->w2 - b->w2;
+        s128_t delta;
+        delta.mag = u128_mul(diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
+                             vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
+        delta.neg = diff < 0;
+        u128_t big_a = u128_mul64(a->num, wb2), big_b = u128_mul64(b->num, wa2);
+        return additive_sign(m->limbs, &big_a, &big_b, &delta);
+    }
+    default: /* L1, LINF, HAUSDORFF */
+        return u128_cmp(a->num, b->num);
+    }
+}
+
+/* Nonzero winding number of the closed polygon p[0..count) around q
+ * (q not on its boundary; on the boundary the distance is 0 anyway). */
+static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t *q)
+{
+    int64_t winding = 0;
+    for (uint32_t i = 0; i < count; i++) {
+        const vor_point_t *a = &p[i], *b = &p[i + 1u == count ? 0u : i + 1u];
+        if (a->y <= q->y) {
+            if (b->y > q->y && vor_orient2d(a, b, q, NULL) > 0) {
+                winding++; /* an upward edge with q on its left */
+            }
+        } else if (b->y <= q->y && vor_orient2d(a, b, q, NULL) < 0) {
+            winding--; /* a downward edge with q on its right */
+        }
+    }
+    return winding != 0;
+}
+
+/* The key of site `site` at the pixel centre (qx, qy). */
+static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
+{
+    const vor_raster_sites_t *s = m->sites;
+    switch (m->metric) {
+    case VOR_METRIC_ELLIPTIC: {
+        const vor_point_t *p = &s->points[site];
+        set_unit(k, elliptic_form(s, (int64_t)qx - p->x, (int64_t)qy - p->y));
+        break;
+    }
+    case VOR_METRIC_HAUSDORFF: {
+        u128_t far = u128_of(0);
+        for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
+            u128_t d = square_sum(magnitude((int64_t)qx - s->points[i].x),
+                                  magnitude((int64_t)qy - s->points[i].y));
+            if (u128_cmp(d, far) > 0) {
+                far = d;
+            }
+        }
+        k->num = far;
+        break;
+    }
+    case VOR_METRIC_SEGMENT:
+        segment_key(&s->points[2u * site], &s->points[2u * site + 1u], qx, qy, k);
+        break;
+    case VOR_METRIC_POLYGON: {
+        const vor_point_t *p = &s->points[s->offsets[site]];
+        uint32_t count = s->offsets[site + 1u] - s->offsets[site];
+        vor_point_t q;
+        q.x = qx;
+        q.y = qy;
+        if (count >= 3u && winds_around(p, count, &q)) {
+            set_unit(k, u128_of(0));
+            break;
+        }
+        segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
+        rank_key_t edge;
+        for (uint32_t i = 1; count >= 3u && i < count; i++) {
+            segment_key(&p[i], &p[i + 1u == count ? 0u : i + 1u], qx, qy, &edge);
+            if (rational_compare(&edge, k) < 0) {
+                /* member by member: no struct copy (memcpy on Cortex-M0) */
+                k->num.lo = edge.num.lo;
+                k->num.hi = edge.num.hi;
+                k->den.lo = edge.den.lo;
+                k->den.hi = edge.den.hi;
+                k->squared = edge.squared;
+            }
+        }
+        break;
+    }
+    default: {
+        const vor_point_t *p = &s->points[site];
+        point_key(m, site, magnitude((int64_t)qx - p->x), magnitude((int64_t)qy - p->y), k);
+        break;
+    }
+    }
+}
+
+/* ------------------------------------------------------------ bounds */
+
+/* A rectangle of pixel centres, corners included. */
+typedef struct rect {
+    int32_t x0, x1, y0, y1;
+} rect_t;
+
+/* Distance from v to [lo, hi], and to the farther end. */
+static uint32_t gap(int32_t v, int32_t lo, int32_t hi)
+{
+    return v < lo ? (uint32_t)lo - (uint32_t)v : v > hi ? (uint32_t)v - (uint32_t)hi : 0u;
+}
+
+static uint32_t reach(int32_t v, int32_t lo, int32_t hi)
+{
+    uint32_t a = magnitude((int64_t)v - lo), b = magnitude((int64_t)v - hi);
+    return a > b ? a : b;
+}
+
+/* Distance between the intervals [lo1, hi1] and [lo2, hi2]. */
+static uint32_t interval_gap(int32_t lo1, int32_t hi1, int32_t lo2, int32_t hi2)
+{
+    return lo1 > hi2 ? (uint32_t)lo1 - (uint32_t)hi2 : lo2 > hi1 ? (uint32_t)lo2 - (uint32_t)hi1 : 0u;
+}
+
+/* The squared distance from p to the farthest corner of r. */
+VOR__INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
+{
+    return square_sum(reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1));
+}
+
+/*
+ * A key bounding the site's key over every pixel centre of r: its best
+ * case (worst == 0: ranks no later than the site at any pixel of r) or
+ * its worst case (ranks no earlier). The arguments, per metric:
+ *   monotone point metrics: the distance grows with |dx| and |dy|, so the
+ *     nearest point of r (per axis) and the farthest corner bound it;
+ *   ELLIPTIC: the form is convex, so its largest value on r is at a
+ *     corner; below, Q(v) >= (ac - b^2) / (a + c) |v|^2 (the smaller
+ *     eigenvalue is det / larger >= det / trace);
+ *   HAUSDORFF: the largest of the points' bounds;
+ *   SEGMENT, POLYGON: the site lies in its bounding box, so the gap
+ *     between that box and r is a lower bound; the distance to one of its
+ *     points (an end, the first vertex) an upper one.
+ */
+static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
+{
+    const vor_raster_sites_t *s = m->sites;
+    switch (m->metric) {
+    case VOR_METRIC_ELLIPTIC: {
+        const vor_point_t *p = &s->points[site];
+        if (!worst) {
+            u128_t near = square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
+            k->num = u128_mul64(near, m->det); /* < 2^65 * 2^62 */
+            k->den = u128_of(m->trace);
+            k->squared = 0;
+            break;
+        }
+        u128_t top = u128_of(0);
+        for (int corner = 0; corner < 4; corner++) {
+            int32_t x = (corner & 1) ? r->x1 : r->x0, y = (corner & 2) ? r->y1 : r->y0;
+            u128_t q = elliptic_form(s, (int64_t)x - p->x, (int64_t)y - p->y);
+            if (u128_cmp(q, top) > 0) {
+                top = q;
+            }
+        }
+        set_unit(k, top);
+        break;
+    }
+    case VOR_METRIC_HAUSDORFF: {
+        u128_t top = u128_of(0);
+        for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
+            const vor_point_t *p = &s->points[i];
+            u128_t d = worst ? farthest_corner(p, r)
+                             : square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
+            if (u128_cmp(d, top) > 0) {
+                top = d;
+            }
+        }
+        k->num = top;
+        break;
+    }
+    case VOR_METRIC_SEGMENT:
+    case VOR_METRIC_POLYGON: {
+        const vor_point_t *p;
+        uint32_t count;
+        if (m->metric == VOR_METRIC_SEGMENT) {
+            p = &s->points[2u * site];
+            count = 2;
+        } else {
+            p = &s->points[s->offsets[site]];
+            count = s->offsets[site + 1u] - s->offsets[site];
+        }
+        if (worst) {
+            u128_t d = farthest_corner(&p[0], r);
+            if (m->metric == VOR_METRIC_SEGMENT) {
+                u128_t other = farthest_corner(&p[1], r);
+                d = u128_cmp(other, d) < 0 ? other : d;
+            }
+            set_unit(k, d);
+            break;
+        }
+        int32_t x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
+        for (uint32_t i = 1; i < count; i++) {
+            x0 = p[i].x < x0 ? p[i].x : x0;
+            x1 = p[i].x > x1 ? p[i].x : x1;
+            y0 = p[i].y < y0 ? p[i].y : y0;
+            y1 = p[i].y > y1 ? p[i].y : y1;
+        }
+        set_unit(k, square_sum(interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1)));
+        break;
+    }
+    default: {
+        const vor_point_t *p = &s->points[site];
+        /* FARTHEST ranks larger distances first: its best case is far */
+        int far = (m->metric == VOR_METRIC_FARTHEST) ? !worst : worst;
+        if (far) {
+            point_key(m, site, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1), k);
+        } else {
+            point_key(m, site, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1), k);
+        }
+        break;
+    }
+    }
+}
+
+/* ----------------------------------------------------------- culling */
+
+#define ALL_SITES 0xFFFFFFFFu
+#define TILES_PER_BLOCK 8u
+
+/* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
+ * first (alone or tied) at some pixel of r, in index order, into out;
+ * returns their number, or ALL_SITES when more than capacity survive. */
+static uint32_t select_sites(const vor__metric_t *m, const rect_t *r, const uint32_t *list,
+                             uint32_t count, uint32_t *out, size_t capacity)
+{
+    rank_key_t keys[2], best_case;
+    uint32_t slot = 0;
+    bounds(m, list != NULL ? list[0] : 0u, r, 1, &keys[0]);
+    for (uint32_t c = 1; c < count; c++) {
+        bounds(m, list != NULL ? list[c] : c, r, 1, &keys[slot ^ 1u]);
+        if (key_compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
+            slot ^= 1u;
+        }
+    }
+    /* keys[slot]: the best worst case, reached at every pixel of r */
+    uint32_t kept = 0;
+    for (uint32_t c = 0; c < count; c++) {
+        uint32_t site = list != NULL ? list[c] : c;
+        bounds(m, site, r, 0, &best_case);
+        if (key_compare(m, &best_case, &keys[slot]) <= 0) {
+            if (kept == capacity) {
+                return ALL_SITES;
+            }
+            out[kept++] = site;
+        }
+    }
+    return kept;
+}
+
+static rect_t columns_rect(const vor__metric_t *m, uint32_t first, uint32_t last, int32_t y0,
+                           int32_t y1)
+{
+    rect_t r;
+    r.x0 = (int32_t)(m->origin_x + vor__offset(first, m->step_x));
+    r.x1 = (int32_t)(m->origin_x + vor__offset(last, m->step_x));
+    r.y0 = y0;
+    r.y1 = y1;
+    return r;
+}
+
+/* Fills the pool with the tile lists of the band starting at band_first:
+ * per tile, a count (or ALL_SITES) and that many site ids. */
+static void cull_band(vor__metric_t *m)
+{
+    uint32_t last_row = m->band_first + VOR__CULL_ROWS - 1u;
+    if (last_row >= m->height) {
+        last_row = m->height - 1u;
+    }
+    int32_t y0 = (int32_t)(m->origin_y + vor__offset(m->band_first, m->step_y));
+    int32_t y1 = (int32_t)(m->origin_y + vor__offset(last_row, m->step_y));
+    uint32_t *block = m->pool;
+    uint32_t *lists = m->pool + m->n;
+    size_t room = m->pool_words - m->n; /* >= tiles (vor__metric_prepare) */
+    size_t at = 0;
+    uint32_t tile = 0;
+    uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
+    for (uint32_t first = 0; first < m->width; first += block_columns) {
+        uint32_t end = m->width - first > block_columns ? first + block_columns : m->width;
+        rect_t r = columns_rect(m, first, end - 1u, y0, y1);
+        uint32_t block_count = select_sites(m, &r, NULL, m->n, block, m->n);
+        for (uint32_t column = first; column < end; column += m->tile_width) {
+            uint32_t tile_end = end - column > m->tile_width ? column + m->tile_width : end;
+            rect_t t = columns_rect(m, column, tile_end - 1u, y0, y1);
+            size_t later = m->tiles - tile - 1u; /* one word kept for each later tile */
+            size_t capacity = room - at - 1u - later;
+            uint32_t kept = select_sites(m, &t, block, block_count, lists + at + 1u, capacity);
+            lists[at] = kept;
+            at += 1u + (kept == ALL_SITES ? 0u : kept);
+            tile++;
+        }
+    }
+}
+
+/* The first-ranked site at (qx, qy) among list[0..count) (NULL: all),
+ * which is in increasing index order: a later site takes over only when
+ * strictly better, so ties stay with the smaller index. */
+static uint32_t nearest(const vor__metric_t *m, const uint32_t *list, uint32_t count, int32_t qx,
+                        int32_t qy)
+{
+    rank_key_t keys[2];
+    uint32_t slot = 0;
+    uint32_t best = list != NULL ? list[0] : 0u;
+    site_key(m, best, qx, qy, &keys[0]);
+    for (uint32_t c = 1; c < count; c++) {
+        uint32_t site = list != NULL ? list[c] : c;
+        site_key(m, site, qx, qy, &keys[slot ^ 1u]);
+        if (key_compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
+            slot ^= 1u;
+            best = site;
+        }
+    }
+    return best;
+}
+
+uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
+{
+    if (!m->brute && (!m->band_valid || j >= m->band_first + VOR__CULL_ROWS)) {
+        m->band_first = j - j % VOR__CULL_ROWS;
+        m->band_valid = 1;
+        cull_band(m);
+    }
+    int32_t qy = (int32_t)(m->origin_y + vor__offset(j, m->step_y));
+    const uint32_t *lists = m->pool + m->n;
+    size_t at = 0;
+    uint32_t count = 0;
+    uint32_t span = m->brute ? m->width : m->tile_width;
+    for (uint32_t first = 0; first < m->width; first += span) {
+        uint32_t end = m->width - first > span ? first + span : m->width;
+        const uint32_t *list = NULL;
+        uint32_t candidates = m->n;
+        if (!m->brute) {
+            if (lists[at] != ALL_SITES) {
+                list = lists + at + 1u;
+                candidates = lists[at];
+            }
+            at += 1u + (list != NULL ? candidates : 0u);
+        }
+        for (uint32_t i = first; i < end; i++) {
+            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
+            uint32_t site = nearest(m, list, candidates, qx, qy);
+            if (count > 0u && runs[count - 1u].site == site) {
+                runs[count - 1u].end = i + 1u;
+            } else {
+                runs[count].end = i + 1u;
+                runs[count].site = site;
+                count++;
+            }
+        }
+    }
+    return count;
+}
+
+/* ------------------------------------------------------------ set up */
+
+int vor__metric_check(const vor_raster_sites_t *s)
+{
+    switch (s->metric) {
+    case VOR_METRIC_L1:
+    case VOR_METRIC_LINF:
+    case VOR_METRIC_FARTHEST:
+    case VOR_METRIC_SEGMENT:
+        return VOR_OK;
+    case VOR_METRIC_LP:
+        return s->lp_exponent >= 1u && s->lp_exponent <= 8u ? VOR_OK : VOR_ERR_ARG;
+    case VOR_METRIC_ELLIPTIC:
+        /* positive definite: a > 0 and a c - b^2 > 0 (each product < 2^62) */
+        return s->form_a > 0 &&
+                       vor__mul_i32(s->form_a, s->form_c) > vor__mul_i32(s->form_b, s->form_b)
+                   ? VOR_OK
+                   : VOR_ERR_ARG;
+    case VOR_METRIC_MULT:
+    case VOR_METRIC_ADD:
+    case VOR_METRIC_COMPOUND:
+        if ((s->metric != VOR_METRIC_ADD && s->mult_weights == NULL) ||
+            (s->metric != VOR_METRIC_MULT && s->add_weights == NULL)) {
+            return VOR_ERR_ARG;
+        }
+        for (uint32_t k = 0; s->metric != VOR_METRIC_ADD && k < s->count; k++) {
+            if (s->mult_weights[k] < 1) {
+                return VOR_ERR_ARG;
+            }
+        }
+        return VOR_OK;
+    case VOR_METRIC_HAUSDORFF:
+    case VOR_METRIC_POLYGON:
+        if (s->offsets == NULL) {
+            return VOR_ERR_ARG;
+        }
+        for (uint32_t k = 0; k < s->count; k++) {
+            if (s->offsets[k] >= s->offsets[k + 1u]) {
+                return VOR_ERR_ARG; /* every site has a point */
+            }
+        }
+        return VOR_OK;
+    default:
+        return VOR_ERR_ARG;
+    }
+}
+
+/* Widens [lo, hi] to hold v. */
+static void widen(int32_t v, int32_t *lo, int32_t *hi)
+{
+    *lo = v < *lo ? v : *lo;
+    *hi = v > *hi ? v : *hi;
+}
+
+/* Limbs holding the additive comparison of square roots of values below
+ * 2^a_bits with a weight term below 2^delta_bits: E^2 < 2^(2 a_bits),
+ * 4 delta^2 B < 2^(2 + 2 delta_bits + a_bits), and E, F in signed form
+ * (below 2^(max(a_bits, 2 delta_bits) + 1)), plus a sign bit. */
+static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
+{
+    uint32_t bits = 2u * a_bits;
+    if (2u + 2u * delta_bits + a_bits > bits) {
+        bits = 2u + 2u * delta_bits + a_bits;
+    }
+    if (2u * delta_bits + 2u > bits) {
+        bits = 2u * delta_bits + 2u;
+    }
+    return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+}
+
+void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
+                         const vor_raster_sites_t *s, int brute, uint32_t *pool, size_t pool_words)
+{
+    m->sites = s;
+    m->metric = s->metric;
+    m->n = s->count;
+    m->width = frame->width;
+    m->height = frame->height;
+    m->origin_x = frame->origin_x;
+    m->origin_y = frame->origin_y;
+    m->step_x = frame->step_x;
+    m->step_y = frame->step_y;
+    m->brute = brute;
+    m->pool = pool;
+    m->pool_words = pool_words;
+    m->band_valid = 0;
+    m->band_first = 0;
+    m->limbs = 1;
+    m->lp_narrow = 1;
+    m->det = 0;
+    m->trace = 0;
+
+    /* span: the largest coordinate difference between any two of the
+     * site points and pixel centres (< 2^32); it sets the widths */
+    int32_t x0 = frame->origin_x, y0 = frame->origin_y;
+    int32_t x1 = (int32_t)(frame->origin_x + vor__offset(frame->width - 1u, frame->step_x));
+    int32_t y1 = (int32_t)(frame->origin_y + vor__offset(frame->height - 1u, frame->step_y));
+    uint32_t first = 0, end = s->count;
+    if (s->metric == VOR_METRIC_SEGMENT) {
+        end = 2u * s->count;
+    }
+    for (uint32_t k = 0; k < s->count; k++) {
+        if (s->metric == VOR_METRIC_HAUSDORFF || s->metric == VOR_METRIC_POLYGON) {
+            first = s->offsets[k];
+            end = s->offsets[k + 1u];
+        } else if (k > 0u) {
+            break; /* the points are one array: walked once below */
+        }
+        for (uint32_t i = first; i < end; i++) {
+            widen(s->points[i].x, &x0, &x1);
+            widen(s->points[i].y, &y0, &y1);
+        }
+    }
+    uint64_t span_x = (uint64_t)((int64_t)x1 - x0), span_y = (uint64_t)((int64_t)y1 - y0);
+    uint32_t span_bits = bit_length(span_x > span_y ? span_x : span_y); /* <= 32 */
+
+    switch (s->metric) {
+    case VOR_METRIC_LP: {
+        uint32_t bits = s->lp_exponent * span_bits + 1u; /* |dx|^p + |dy|^p < 2^bits */
+        m->lp_narrow = bits <= 128u;
+        m->limbs = (bits + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+        break;
+    }
+    case VOR_METRIC_ELLIPTIC:
+        m->det = (uint64_t)(vor__mul_i32(s->form_a, s->form_c) - vor__mul_i32(s->form_b, s->form_b));
+        m->trace = (uint32_t)s->form_a + (uint32_t)s->form_c; /* < 2^32 */
+        break;
+    case VOR_METRIC_ADD:
+    case VOR_METRIC_COMPOUND: {
+        int32_t lo = s->add_weights[0], hi = s->add_weights[0];
+        int32_t heaviest = 1;
+        for (uint32_t k = 0; k < s->count; k++) {
+            widen(s->add_weights[k], &lo, &hi);
+            if (s->metric == VOR_METRIC_COMPOUND && s->mult_weights[k] > heaviest) {
+                heaviest = s->mult_weights[k];
+            }
+        }
+        /* squared distances < 2^(2 span_bits + 1); weight differences
+         * < 2^delta_bits; COMPOUND multiplies by the w1 products */
+        uint32_t a_bits = 2u * span_bits + 1u;
+        uint32_t delta_bits = bit_length((uint64_t)((int64_t)hi - lo));
+        if (s->metric == VOR_METRIC_COMPOUND) {
+            uint32_t w_bits = bit_length((uint32_t)heaviest);
+            a_bits += 2u * w_bits;
+            delta_bits += 2u * w_bits;
+        }
+        m->limbs = additive_limbs(a_bits, delta_bits);
+        break;
+    }
+    default:
+        break;
+    }
+
+    /* tiles: 16 columns, wider when the pool could not hold one count
+     * word per tile after the block list */
+    uint32_t shift = 4;
+    while ((size_t)((frame->width + (1u << shift) - 1u) >> shift) > pool_words - m->n) {
+        shift++;
+    }
+    m->tile_width = 1u << shift;
+    m->tiles = (frame->width + m->tile_width - 1u) >> shift;
+}

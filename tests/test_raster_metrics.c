@@ -1,0 +1,630 @@
+/*
+ * test_raster_metrics.c - vor_raster with every metric but Euclidean
+ * point sites, against the brute-force reference of raster_reference.c
+ * (ref_nearest_metric: its own arithmetic and formulas), pixel by pixel
+ * and area by area, with both methods (culled and brute force) and
+ * several band heights; random and adversarial inputs per metric (sites on
+ * pixel centres, exact ties, equal weights, duplicates, zero-length
+ * segments, degenerate and overlapping polygons, the full int32 range);
+ * a culling pool too small for the tiles; and the metric errors.
+ */
+#include "raster_reference.h"
+#include "test.h"
+#include "vor_raster.h"
+
+#define MAX_W 40u
+#define MAX_H 36u
+#define MAX_PIXELS 1440u
+#define MAX_SITES 40u
+#define MAX_POINTS 160u
+
+static vor_point_t points[MAX_POINTS];
+static int32_t mult[MAX_SITES], add[MAX_SITES];
+static uint32_t offsets[MAX_SITES + 1u];
+static uint32_t expect_label[MAX_PIXELS];
+static uint32_t frame_labels[MAX_PIXELS];
+static uint8_t band_memory[MAX_PIXELS * 4u] __attribute__((aligned(8)));
+static uint8_t work[VOR_RASTER_WORK_BYTES(MAX_SITES, 400u)] __attribute__((aligned(8)));
+static uint32_t areas[MAX_SITES];
+
+static const char *const metric_names[] = {"euclid", "l1",       "linf",      "lp",
+                                           "ellip",  "mult",     "add",       "comp",
+                                           "farthest", "hausdorff", "segment", "polygon"};
+
+typedef struct capture {
+    uint32_t next_row;
+    uint32_t width;
+    int bad;
+    int boundary;
+} capture_t;
+
+static int capture_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    capture_t *c = user;
+    if (first_row != c->next_row) {
+        c->bad = 1;
+        return 0;
+    }
+    for (uint32_t p = 0; p < rows * c->width; p++) {
+        frame_labels[first_row * c->width + p] =
+            c->boundary ? ((const uint8_t *)pixels)[p] : ((const uint32_t *)pixels)[p];
+    }
+    c->next_row = first_row + rows;
+    return 0;
+}
+
+static vor_raster_frame_t make_frame(int32_t ox, int32_t oy, int32_t sx, int32_t sy, uint32_t w,
+                                     uint32_t h)
+{
+    vor_raster_frame_t f;
+    f.origin_x = ox;
+    f.origin_y = oy;
+    f.step_x = sx;
+    f.step_y = sy;
+    f.width = w;
+    f.height = h;
+    return f;
+}
+
+static int32_t centre_x(const vor_raster_frame_t *f, uint32_t i)
+{
+    return (int32_t)(f->origin_x + (int64_t)i * f->step_x);
+}
+
+static int32_t centre_y(const vor_raster_frame_t *f, uint32_t j)
+{
+    return (int32_t)(f->origin_y + (int64_t)j * f->step_y);
+}
+
+/* One render of kind LABEL32 (or BOUNDARY), compared with the reference. */
+static void render_and_compare(const char *name, const vor_raster_frame_t *f,
+                               const vor_raster_sites_t *set, enum vor_raster_method method,
+                               uint32_t band_rows, int boundary)
+{
+    capture_t cap = {0, f->width, 0, boundary};
+    vor_raster_output_t out = {0};
+    out.kind = boundary ? VOR_RASTER_BOUNDARY : VOR_RASTER_LABEL32;
+    out.band = band_memory;
+    out.band_bytes = (size_t)f->width * band_rows * (boundary ? 1u : 4u);
+    out.band_rows = band_rows;
+    out.flush = capture_flush;
+    out.user = &cap;
+    out.areas = areas;
+    out.method = method;
+    for (uint32_t k = 0; k < set->count; k++) {
+        areas[k] = 0xDEADu;
+    }
+    /* exactly the documented work memory */
+    int err = vor_raster(f, set, &out, work, VOR_RASTER_WORK_BYTES(set->count, f->width));
+    const char *how = method == VOR_RASTER_FAST ? "fast" : "brute";
+    const char *metric = metric_names[set->metric];
+    if (!CHECK(err == VOR_OK && !cap.bad && cap.next_row == f->height,
+               "%s %s %s rows %u: err %d", metric, name, how, band_rows, err)) {
+        return;
+    }
+    uint32_t wrong = 0, w = f->width;
+    for (uint32_t j = 0; j < f->height; j++) {
+        for (uint32_t i = 0; i < w; i++) {
+            uint32_t label = expect_label[j * w + i];
+            uint32_t want = label;
+            if (boundary) {
+                want = (i + 1u < w && expect_label[j * w + i + 1u] != label) ||
+                       (j + 1u < f->height && expect_label[(j + 1u) * w + i] != label);
+            }
+            uint32_t got = frame_labels[j * w + i];
+            if (want != got && wrong++ < 3u) {
+                CHECK(false, "%s %s %s rows %u: pixel (%u, %u) = %u, reference %u", metric, name,
+                      how, band_rows, i, j, got, want);
+            }
+        }
+    }
+    CHECK(wrong == 0, "%s %s %s rows %u%s: %u pixels wrong", metric, name, how, band_rows,
+          boundary ? " boundary" : "", wrong);
+    uint32_t bad_area = 0;
+    for (uint32_t k = 0; k < set->count; k++) {
+        uint32_t count = 0;
+        for (uint32_t p = 0; p < w * f->height; p++) {
+            count += expect_label[p] == k;
+        }
+        bad_area += count != areas[k];
+    }
+    CHECK(bad_area == 0, "%s %s %s: %u areas wrong", metric, name, how, bad_area);
+}
+
+static uint32_t case_number;
+
+/* The reference labels, then the fast and brute renders. */
+static void check_frame(const char *name, const vor_raster_frame_t *f,
+                        const vor_raster_sites_t *set)
+{
+    int undecided = 0;
+    for (uint32_t j = 0; j < f->height; j++) {
+        for (uint32_t i = 0; i < f->width; i++) {
+            expect_label[j * f->width + i] =
+                ref_nearest_metric(set, centre_x(f, i), centre_y(f, j), &undecided);
+        }
+    }
+    CHECK(!undecided, "%s %s: the reference could not decide a comparison",
+          metric_names[set->metric], name);
+    static const uint32_t band_heights[] = {1, 5, 16, 36};
+    case_number++;
+    uint32_t rows = band_heights[case_number % 4u];
+    render_and_compare(name, f, set, VOR_RASTER_FAST, rows, 0);
+    render_and_compare(name, f, set, VOR_RASTER_BRUTE, band_heights[(case_number + 1u) % 4u], 0);
+    if (case_number % 3u == 0u) {
+        render_and_compare(name, f, set, VOR_RASTER_FAST, band_heights[(case_number + 2u) % 4u], 1);
+    }
+}
+
+static vor_raster_sites_t point_set(enum vor_metric metric, uint32_t n)
+{
+    vor_raster_sites_t set = {0};
+    set.metric = metric;
+    set.points = points;
+    set.count = n;
+    set.mult_weights = mult;
+    set.add_weights = add;
+    set.offsets = offsets;
+    set.lp_exponent = 3;
+    set.form_a = 2;
+    set.form_b = 1;
+    set.form_c = 3;
+    return set;
+}
+
+/* n random points in the frame's box widened by margin. */
+static void random_points(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t n, int32_t margin)
+{
+    for (uint32_t k = 0; k < n; k++) {
+        points[k].x = f->origin_x + test_rng_range(rng, -margin, (int32_t)f->width * f->step_x + margin);
+        points[k].y = f->origin_y + test_rng_range(rng, -margin, (int32_t)f->height * f->step_y + margin);
+    }
+}
+
+/* Pixel centres only, with repeats. */
+static void centre_points(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t n)
+{
+    for (uint32_t k = 0; k < n; k++) {
+        points[k].x = centre_x(f, (uint32_t)test_rng_range(rng, 0, (int32_t)f->width - 1));
+        points[k].y = centre_y(f, (uint32_t)test_rng_range(rng, 0, (int32_t)f->height - 1));
+    }
+}
+
+static void random_frame(test_rng_t *rng, vor_raster_frame_t *f)
+{
+    uint32_t w = 8u + test_rng_u32(rng) % 27u, h = 6u + test_rng_u32(rng) % 23u;
+    *f = make_frame(test_rng_range(rng, -60, 60), test_rng_range(rng, -60, 60),
+                    1 + (int32_t)(test_rng_u32(rng) % 3u), 1 + (int32_t)(test_rng_u32(rng) % 3u),
+                    w, h);
+}
+
+/* ------------------------------------------------------- point metrics */
+
+static void point_metric_cases(test_rng_t *rng)
+{
+    static const enum vor_metric metrics[] = {VOR_METRIC_L1,       VOR_METRIC_LINF,
+                                              VOR_METRIC_LP,       VOR_METRIC_ELLIPTIC,
+                                              VOR_METRIC_MULT,     VOR_METRIC_ADD,
+                                              VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST};
+    vor_raster_frame_t f;
+    for (unsigned m = 0; m < sizeof metrics / sizeof metrics[0]; m++) {
+        for (uint32_t round = 0; round < 3u; round++) {
+            random_frame(rng, &f);
+            uint32_t n = 1u + test_rng_u32(rng) % 24u;
+            random_points(rng, &f, n, 30);
+            for (uint32_t k = 0; k < n; k++) {
+                mult[k] = 1 + test_rng_range(rng, 0, 6);
+                add[k] = test_rng_range(rng, -15, 15);
+            }
+            vor_raster_sites_t set = point_set(metrics[m], n);
+            set.lp_exponent = 3u + round;
+            set.form_b = test_rng_range(rng, -3, 3);
+            set.form_a = 1 + test_rng_range(rng, 0, 4);
+            set.form_c = (set.form_b * set.form_b) / set.form_a + 1 + test_rng_range(rng, 0, 3);
+            check_frame("random", &f, &set);
+
+            /* on pixel centres, with duplicates and equal weights */
+            centre_points(rng, &f, n);
+            for (uint32_t k = 0; k < n; k++) {
+                mult[k] = 1 + (int32_t)(k % 2u);
+                add[k] = 3 * (int32_t)(k % 3u);
+            }
+            if (n > 2u) {
+                points[n - 1u] = points[0];
+                mult[n - 1u] = mult[0];
+                add[n - 1u] = add[0];
+            }
+            check_frame("centres", &f, &set);
+        }
+    }
+
+    /* Lp for every exponent, 1 (= L1) and 2 (= Euclid) included */
+    f = make_frame(-5, -4, 1, 1, 31, 23);
+    for (uint32_t p = 1; p <= 8u; p++) {
+        random_points(rng, &f, 20, 10);
+        vor_raster_sites_t set = point_set(VOR_METRIC_LP, 20);
+        set.lp_exponent = p;
+        check_frame("exponent", &f, &set);
+    }
+    /* a lattice: ties along the diagonals and at cell corners */
+    uint32_t n = 0;
+    for (int32_t y = 0; y <= 36; y += 6) {
+        for (int32_t x = 0; x <= 40; x += 10) {
+            points[n].x = x;
+            points[n].y = y;
+            mult[n] = 2;
+            add[n] = 5;
+            n++;
+        }
+    }
+    f = make_frame(0, 0, 1, 1, 40, 36);
+    static const enum vor_metric lattice[] = {VOR_METRIC_L1, VOR_METRIC_LINF, VOR_METRIC_LP,
+                                              VOR_METRIC_ELLIPTIC, VOR_METRIC_MULT, VOR_METRIC_ADD,
+                                              VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST};
+    for (unsigned m = 0; m < sizeof lattice / sizeof lattice[0]; m++) {
+        vor_raster_sites_t set = point_set(lattice[m], n);
+        set.form_a = 1;
+        set.form_b = 0;
+        set.form_c = 1;
+        check_frame("lattice", &f, &set);
+    }
+}
+
+/* Exact ties of weighted distances on pixel centres: 3-4-5 triangles
+ * make sqrt(D) integers, so d - w and d / w tie exactly. */
+static void weighted_tie_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f = make_frame(-20, -20, 1, 1, 40, 36);
+    /* additive: |q - a| - wa = |q - b| - wb at the pixels where the
+     * difference of distances is wa - wb; sites at integer distances */
+    static const int32_t xs[] = {0, 3, -4, 0, 12, -5, 8, 0};
+    static const int32_t ys[] = {0, 4, 3, -5, 5, 12, -6, 10};
+    for (uint32_t k = 0; k < 8u; k++) {
+        points[k].x = xs[k];
+        points[k].y = ys[k];
+        add[k] = (int32_t)(k % 3u) * 5;
+        mult[k] = 1 + (int32_t)(k % 2u);
+    }
+    vor_raster_sites_t set = point_set(VOR_METRIC_ADD, 8);
+    check_frame("ties", &f, &set);
+    set.metric = VOR_METRIC_MULT;
+    check_frame("ties", &f, &set);
+    set.metric = VOR_METRIC_COMPOUND;
+    check_frame("ties", &f, &set);
+    /* weights that swallow sites: one weight beats every distance */
+    random_points(rng, &f, 16, 10);
+    for (uint32_t k = 0; k < 16u; k++) {
+        add[k] = test_rng_range(rng, -3, 3);
+        mult[k] = 1 + test_rng_range(rng, 0, 2);
+    }
+    add[7] = 60;
+    mult[9] = 50;
+    set = point_set(VOR_METRIC_ADD, 16);
+    check_frame("dominant", &f, &set);
+    set.metric = VOR_METRIC_MULT;
+    check_frame("dominant", &f, &set);
+    set.metric = VOR_METRIC_COMPOUND;
+    check_frame("dominant", &f, &set);
+    /* negative additive weights and weights equal everywhere */
+    for (uint32_t k = 0; k < 16u; k++) {
+        add[k] = -7;
+        mult[k] = 3;
+    }
+    set.metric = VOR_METRIC_ADD;
+    check_frame("equal-weights", &f, &set);
+    set.metric = VOR_METRIC_COMPOUND;
+    check_frame("equal-weights", &f, &set);
+}
+
+/* --------------------------------------------------------- shaped sites */
+
+static void hausdorff_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f;
+    for (uint32_t round = 0; round < 4u; round++) {
+        random_frame(rng, &f);
+        uint32_t n = 1u + test_rng_u32(rng) % 16u, at = 0;
+        for (uint32_t k = 0; k < n; k++) {
+            offsets[k] = at;
+            uint32_t size = 1u + test_rng_u32(rng) % 4u;
+            int32_t cx = centre_x(&f, test_rng_u32(rng) % f.width);
+            int32_t cy = centre_y(&f, test_rng_u32(rng) % f.height);
+            for (uint32_t i = 0; i < size; i++) {
+                points[at].x = cx + test_rng_range(rng, -12, 12);
+                points[at].y = cy + test_rng_range(rng, -12, 12);
+                at++;
+            }
+        }
+        offsets[n] = at;
+        vor_raster_sites_t set = point_set(VOR_METRIC_HAUSDORFF, n);
+        check_frame(round % 2u ? "random" : "random-b", &f, &set);
+    }
+    /* single points (= farthest-free Euclid) and mirrored pairs: ties */
+    f = make_frame(0, 0, 1, 1, 33, 30);
+    for (uint32_t k = 0; k < 10u; k++) {
+        offsets[k] = 2u * k;
+        int32_t x = test_rng_range(rng, 0, 32), y = test_rng_range(rng, 0, 29);
+        points[2u * k].x = x;
+        points[2u * k].y = y;
+        points[2u * k + 1u].x = 32 - x;
+        points[2u * k + 1u].y = 29 - y;
+    }
+    offsets[10] = 20;
+    vor_raster_sites_t set = point_set(VOR_METRIC_HAUSDORFF, 10);
+    check_frame("mirrored", &f, &set);
+}
+
+static void segment_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f;
+    for (uint32_t round = 0; round < 4u; round++) {
+        random_frame(rng, &f);
+        uint32_t n = 1u + test_rng_u32(rng) % 20u;
+        random_points(rng, &f, 2u * n, 20);
+        vor_raster_sites_t set = point_set(VOR_METRIC_SEGMENT, n);
+        check_frame("random", &f, &set);
+    }
+    /* zero-length, shared ends, collinear overlaps, axis-parallel, on
+     * pixel centres */
+    f = make_frame(0, 0, 1, 1, 40, 36);
+    static const int32_t s[][4] = {
+        {5, 5, 5, 5},     {5, 5, 20, 5},   {20, 5, 20, 25}, {10, 5, 30, 5},  {0, 30, 39, 30},
+        {39, 30, 0, 30},  {3, 12, 12, 21}, {12, 21, 3, 12}, {30, 10, 36, 4}, {25, 18, 25, 18},
+        {-40, 0, 80, 36}, {15, 15, 16, 16}};
+    for (uint32_t k = 0; k < 12u; k++) {
+        points[2u * k].x = s[k][0];
+        points[2u * k].y = s[k][1];
+        points[2u * k + 1u].x = s[k][2];
+        points[2u * k + 1u].y = s[k][3];
+    }
+    vor_raster_sites_t set = point_set(VOR_METRIC_SEGMENT, 12);
+    check_frame("degenerate", &f, &set);
+    /* a grid of unit segments: equal distances everywhere */
+    uint32_t n = 0;
+    for (int32_t y = 2; y < 36 && n < MAX_SITES; y += 7) {
+        for (int32_t x = 2; x < 40 && n < MAX_SITES; x += 9) {
+            points[2u * n].x = x;
+            points[2u * n].y = y;
+            points[2u * n + 1u].x = x + (int32_t)(n % 2u) * 3;
+            points[2u * n + 1u].y = y + (int32_t)((n + 1u) % 2u) * 3;
+            n++;
+        }
+    }
+    set.count = n;
+    check_frame("grid", &f, &set);
+}
+
+static void polygon_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f;
+    for (uint32_t round = 0; round < 4u; round++) {
+        random_frame(rng, &f);
+        uint32_t n = 1u + test_rng_u32(rng) % 12u, at = 0;
+        for (uint32_t k = 0; k < n; k++) {
+            offsets[k] = at;
+            uint32_t size = 1u + test_rng_u32(rng) % 6u; /* 1 .. 6 vertices, any shape */
+            int32_t cx = centre_x(&f, test_rng_u32(rng) % f.width);
+            int32_t cy = centre_y(&f, test_rng_u32(rng) % f.height);
+            for (uint32_t i = 0; i < size; i++) {
+                points[at].x = cx + test_rng_range(rng, -10, 10);
+                points[at].y = cy + test_rng_range(rng, -10, 10);
+                at++;
+            }
+        }
+        offsets[n] = at;
+        vor_raster_sites_t set = point_set(VOR_METRIC_POLYGON, n);
+        check_frame("random", &f, &set);
+    }
+    /* squares overlapping (ties at 0 go to the smaller index), nested,
+     * clockwise and counterclockwise; a bowtie; a collinear triangle; a
+     * polygon with repeated vertices; a point; a segment */
+    f = make_frame(0, 0, 1, 1, 40, 36);
+    static const int32_t v[] = {
+        /* site 0: square, counterclockwise */ 4, 4, 16, 4, 16, 16, 4, 16,
+        /* site 1: overlapping square, clockwise */ 10, 10, 10, 22, 22, 22, 22, 10,
+        /* site 2: nested inside site 1 */ 12, 12, 14, 12, 14, 14,
+        /* site 3: bowtie */ 26, 2, 38, 14, 38, 2, 26, 14,
+        /* site 4: collinear triangle */ 2, 30, 10, 30, 20, 30,
+        /* site 5: repeated vertices */ 30, 20, 30, 20, 36, 26, 36, 26, 30, 32,
+        /* site 6: a point */ 24, 30,
+        /* site 7: a segment */ 0, 35, 39, 35,
+        /* site 8: a concave polygon with a pocket */ 20, 24, 28, 24, 28, 34, 24, 28, 20, 34};
+    static const uint32_t sizes[] = {4, 4, 3, 4, 3, 5, 1, 2, 5};
+    uint32_t at = 0;
+    for (uint32_t i = 0; i < sizeof v / sizeof v[0] / 2u; i++) {
+        points[i].x = v[2u * i];
+        points[i].y = v[2u * i + 1u];
+    }
+    for (uint32_t k = 0; k < 9u; k++) {
+        offsets[k] = at;
+        at += sizes[k];
+    }
+    offsets[9] = at;
+    vor_raster_sites_t set = point_set(VOR_METRIC_POLYGON, 9);
+    check_frame("shapes", &f, &set);
+    /* the frame inside one polygon: every pixel at distance 0 */
+    f = make_frame(6, 6, 1, 1, 9, 9);
+    check_frame("inside", &f, &set);
+}
+
+/* ----------------------------------------------- huge and overflowing */
+
+/* Coordinates and weights over the whole int32 range: the widest
+ * comparisons of every metric. */
+static void huge_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f = make_frame(INT32_MIN, INT32_MIN, 390451572, 477218588, 12, 10);
+    static const enum vor_metric metrics[] = {
+        VOR_METRIC_L1,       VOR_METRIC_LINF,     VOR_METRIC_LP,       VOR_METRIC_ELLIPTIC,
+        VOR_METRIC_MULT,     VOR_METRIC_ADD,      VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST,
+        VOR_METRIC_HAUSDORFF, VOR_METRIC_SEGMENT, VOR_METRIC_POLYGON};
+    for (unsigned m = 0; m < sizeof metrics / sizeof metrics[0]; m++) {
+        uint32_t n = 12;
+        for (uint32_t k = 0; k < 3u * n; k++) {
+            points[k].x = (int32_t)test_rng_u32(rng);
+            points[k].y = (int32_t)test_rng_u32(rng);
+        }
+        points[0].x = INT32_MAX;
+        points[0].y = INT32_MIN;
+        points[1].x = INT32_MIN;
+        points[1].y = INT32_MAX;
+        for (uint32_t k = 0; k < n; k++) {
+            mult[k] = (int32_t)(test_rng_u32(rng) >> 1) | 1;
+            add[k] = (int32_t)test_rng_u32(rng);
+            offsets[k] = 3u * k;
+        }
+        mult[2] = INT32_MAX;
+        add[3] = INT32_MIN;
+        add[4] = INT32_MAX;
+        offsets[n] = 3u * n;
+        vor_raster_sites_t set = point_set(metrics[m], n);
+        set.lp_exponent = 8;
+        set.form_a = INT32_MAX;
+        set.form_b = -2147483000;
+        set.form_c = INT32_MAX;
+        check_frame("huge", &f, &set);
+    }
+    /* weights large against small distances: the compound comparison's
+     * widest terms in a small frame */
+    f = make_frame(-10, -10, 1, 1, 24, 20);
+    random_points(rng, &f, 10, 5);
+    for (uint32_t k = 0; k < 10u; k++) {
+        mult[k] = (int32_t)(test_rng_u32(rng) >> 1) | 1;
+        add[k] = (int32_t)(test_rng_u32(rng) >> 20) - 2048;
+    }
+    vor_raster_sites_t set = point_set(VOR_METRIC_COMPOUND, 10);
+    check_frame("heavy", &f, &set);
+}
+
+/* A wide frame with few sites that all stay candidates everywhere: the
+ * pool of the documented work memory cannot list every tile, and tiles
+ * fall back to all sites. */
+static void pool_overflow_case(void)
+{
+    vor_raster_frame_t f = make_frame(0, 0, 1, 1, 400, 3);
+    vor_raster_sites_t set = point_set(VOR_METRIC_L1, 3);
+    for (uint32_t k = 0; k < 3u; k++) {
+        points[k].x = 200;
+        points[k].y = 100000 + (int32_t)k; /* far away: bounds overlap */
+    }
+    check_frame("pool", &f, &set);
+    set.metric = VOR_METRIC_FARTHEST;
+    check_frame("pool", &f, &set);
+}
+
+static int quiet_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    (void)first_row;
+    (void)rows;
+    (void)pixels;
+    (*(uint32_t *)user)++;
+    return 0;
+}
+
+static void error_cases(void)
+{
+    vor_raster_frame_t f = make_frame(0, 0, 1, 1, 10, 10);
+    for (uint32_t k = 0; k < 8u; k++) {
+        points[k].x = (int32_t)k;
+        points[k].y = (int32_t)(k * 3u % 7u);
+        mult[k] = 1;
+        add[k] = 0;
+        offsets[k] = k;
+    }
+    offsets[8] = 8;
+    uint32_t flushes = 0;
+    vor_raster_output_t out = {0};
+    out.kind = VOR_RASTER_LABEL8;
+    out.band = band_memory;
+    out.band_bytes = 100;
+    out.band_rows = 10;
+    out.flush = quiet_flush;
+    out.user = &flushes;
+    size_t bytes = VOR_RASTER_WORK_BYTES(8, 10);
+    for (int m = VOR_METRIC_L1; m <= VOR_METRIC_POLYGON; m++) {
+        vor_raster_sites_t set = point_set((enum vor_metric)m, 4);
+        CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors %s: valid base",
+              metric_names[m]);
+        vor_raster_output_t d = out;
+        d.kind = VOR_RASTER_DISTANCE;
+        d.band_bytes = 400;
+        CHECK(vor_raster(&f, &set, &d, work, bytes) == VOR_ERR_ARG, "errors %s: DISTANCE kind",
+              metric_names[m]);
+        set.points = NULL;
+        CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors %s: NULL points",
+              metric_names[m]);
+        set.points = points;
+        CHECK(vor_raster(&f, &set, &out, work, VOR_RASTER_WORK_BYTES(4, 10) - 1u) ==
+                  VOR_ERR_NOMEM,
+              "errors %s: small work", metric_names[m]);
+    }
+    flushes = 0;
+    vor_raster_sites_t set = point_set(VOR_METRIC_LP, 4);
+    set.lp_exponent = 0;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: p = 0");
+    set.lp_exponent = 9;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: p = 9");
+    set.lp_exponent = 8;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors: p = 8");
+    flushes = 0;
+    set = point_set(VOR_METRIC_ELLIPTIC, 4);
+    set.form_a = 0;
+    set.form_b = 0;
+    set.form_c = 1;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: a = 0");
+    set.form_a = 2;
+    set.form_b = 2;
+    set.form_c = 2;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: ac = b^2");
+    set.form_a = -1;
+    set.form_b = 0;
+    set.form_c = -1;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: negative definite");
+    set.form_a = INT32_MAX;
+    set.form_b = INT32_MIN;
+    set.form_c = INT32_MAX;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: b = INT32_MIN");
+    set = point_set(VOR_METRIC_MULT, 4);
+    mult[2] = 0;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: weight 0");
+    set.metric = VOR_METRIC_COMPOUND;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: compound weight 0");
+    mult[2] = -5;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: negative weight");
+    mult[2] = 1;
+    set.add_weights = NULL;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: compound without w2");
+    set.metric = VOR_METRIC_ADD;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: add without weights");
+    set.add_weights = add;
+    set.mult_weights = NULL;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors: add needs no w1");
+    flushes = 0;
+    set.metric = VOR_METRIC_MULT;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: mult without weights");
+    set = point_set(VOR_METRIC_POLYGON, 4);
+    offsets[2] = offsets[1];
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty polygon");
+    set.metric = VOR_METRIC_HAUSDORFF;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty point set");
+    offsets[2] = 2;
+    set.offsets = NULL;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: no offsets");
+    set.metric = (enum vor_metric)12;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: metric 12");
+    CHECK(flushes == 0, "errors: a failed call flushed %u bands", flushes);
+}
+
+void test_raster_metrics(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 5005);
+    error_cases();
+    point_metric_cases(&rng);
+    weighted_tie_cases(&rng);
+    hausdorff_cases(&rng);
+    segment_cases(&rng);
+    polygon_cases(&rng);
+    huge_cases(&rng);
+    pool_overflow_case();
+}
