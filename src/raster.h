@@ -31,10 +31,10 @@ typedef struct vor__euclid {
     int32_t *sorted_x;    /* relative x of by_x[p] */
     int32_t *sorted_y;    /* relative y of by_x[p] */
     uint8_t *mark;        /* per site: candidate flags of this band and the next */
-    uint32_t *cand;       /* the band's candidates: by_x positions, in order */
-    int32_t *key;         /* scratch: edge envelope keys; row stack slopes */
-    int64_t *val;         /* scratch: edge envelope values; row stack values */
-    uint32_t *stack;      /* scratch: edge envelope stack; row stack offsets */
+    uint32_t *cand;       /* the band's list: sites in (x, id) order (also scratch) */
+    int64_t *val;         /* the list's lines, packed (also scratch: edge values) */
+    int32_t *key;         /* scratch: edge envelope keys */
+    uint32_t *stack;      /* scratch: edge envelope stack */
     uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
     uint32_t *right;      /* and of the right edge */
     uint32_t left_count, right_count;
@@ -43,6 +43,8 @@ typedef struct vor__euclid {
     uint32_t band_first, band_last; /* rows of the current culling band */
     uint32_t inside_next;           /* by_y position: first site not yet below the band */
     uint32_t quotient_bits;         /* 2^quotient_bits >= width */
+    uint32_t reach_row;             /* the last row of the previous band ... */
+    uint64_t reach_most;            /* ... and its largest squared distance to a site */
     int band_valid;
     int narrow;          /* tier: 1 narrow (< 2^14), 2 mid (< 2^19), 0 wide */
 } vor__euclid_t;

@@ -24,8 +24,11 @@
  * left and right edges (computed once). R reaches down to the next band's
  * first row, so the bottom edge of one band is the top edge of the next:
  * each band envelopes one new edge, and that from few sites (select_band):
- * the sites above it that are already candidates, plus those below it
- * that lie within the largest distance from the edge to the candidates.
+ * the candidates found so far, plus the sites below the edge within the
+ * largest distance to a site on the last row rendered, plus the rows in
+ * between. Per frame: two sorts and two vertical envelopes, O(n log n);
+ * per band, O(n) for the marks and O(candidates) for the edge; per row,
+ * O(candidates) for the envelope and nothing per pixel.
  *
  * Bit budget (vor__euclid_fits): every relative coordinate a, b lies in
  * (-2^29, 2^29) and every pixel offset u, v in [0, 2^29). Then |v - b| <
@@ -107,51 +110,67 @@ static int32_t frame_u(const vor__euclid_t *e)
 /* ---------------------------------------------------------------- sort */
 
 /*
- * Sorts the pairs (value[k], id[k]) by value, stably, with tmp_value and
- * tmp_id as scratch: a bottom-up merge sort (no recursion, n log n
- * comparisons of plain integers). Started from ids in increasing order,
- * it orders by (value, id). Each pass doubles the width of the sorted
- * runs, so it ends after ceil(log2 n) passes.
+ * ids[0 .. n) = 0 .. n-1 sorted by (value[id], id), with tmp[n] as
+ * scratch: insertion sort of blocks of 8, then a bottom-up merge sort
+ * (no recursion). Both are stable and start from ids in increasing
+ * order, so equal values keep id order. The merge keeps the two heads in
+ * registers; each pass doubles the sorted runs, so there are at most
+ * ceil(log2(n / 8)) passes; the insertion sort moves an id at most 7
+ * places.
  */
-static void sort_pairs(int32_t *value, uint32_t *id, int32_t *tmp_value, uint32_t *tmp_id,
-                       uint32_t n)
+#define SORT_BLOCK 8u
+static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_t n)
 {
-    int32_t *from_v = value, *to_v = tmp_value;
-    uint32_t *from_i = id, *to_i = tmp_id;
-    for (uint32_t width = 1; width < n; width *= 2u) { /* n < 2^27: no overflow */
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t block = k - (k % SORT_BLOCK), p = k;
+        int32_t v = value[k];
+        while (p > block && value[ids[p - 1u]] > v) {
+            ids[p] = ids[p - 1u];
+            p--;
+        }
+        ids[p] = k;
+    }
+    uint32_t *from = ids, *to = tmp;
+    for (uint32_t width = SORT_BLOCK; width < n; width *= 2u) { /* n < 2^27: no overflow */
         for (uint32_t lo = 0; lo < n; lo += 2u * width) {
-            uint32_t mid = (n - lo > width) ? lo + width : n;
-            uint32_t hi = (n - mid > width) ? mid + width : n;
+            const uint32_t mid = (n - lo > width) ? lo + width : n;
+            const uint32_t hi = (n - mid > width) ? mid + width : n;
             uint32_t i = lo, j = mid, k = lo;
-            while (i < mid && j < hi) {
-                if (from_v[j] < from_v[i]) { /* equal values: the left run first */
-                    to_v[k] = from_v[j];
-                    to_i[k++] = from_i[j++];
-                } else {
-                    to_v[k] = from_v[i];
-                    to_i[k++] = from_i[i++];
+            if (j < hi) {
+                uint32_t id_i = from[i], id_j = from[j];
+                int32_t v_i = value[id_i], v_j = value[id_j];
+                for (;;) {
+                    if (v_j < v_i) { /* equal values: the left run first */
+                        to[k++] = id_j;
+                        if (++j == hi) {
+                            break;
+                        }
+                        id_j = from[j];
+                        v_j = value[id_j];
+                    } else {
+                        to[k++] = id_i;
+                        if (++i == mid) {
+                            break;
+                        }
+                        id_i = from[i];
+                        v_i = value[id_i];
+                    }
                 }
             }
-            for (; i < mid; i++, k++) {
-                to_v[k] = from_v[i];
-                to_i[k] = from_i[i];
+            for (; i < mid; i++) {
+                to[k++] = from[i];
             }
-            for (; j < hi; j++, k++) {
-                to_v[k] = from_v[j];
-                to_i[k] = from_i[j];
+            for (; j < hi; j++) {
+                to[k++] = from[j];
             }
         }
-        int32_t *sv = from_v;
-        from_v = to_v;
-        to_v = sv;
-        uint32_t *si = from_i;
-        from_i = to_i;
-        to_i = si;
+        uint32_t *t = from;
+        from = to;
+        to = t;
     }
-    if (from_v != value) {
+    if (from != ids) {
         for (uint32_t k = 0; k < n; k++) {
-            value[k] = from_v[k];
-            id[k] = from_i[k];
+            ids[k] = from[k];
         }
     }
 }
@@ -384,12 +403,15 @@ static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t fla
 void vor__euclid_prepare(vor__euclid_t *e)
 {
     const uint32_t n = e->n;
-    /* y order first: sorted_y holds the y of by_y until the x sort */
+    /* y order first: sorted_y holds the y of by_y until the x sort
+     * (sorted_x the y of each site while sorting) */
     for (uint32_t k = 0; k < n; k++) {
-        e->by_y[k] = k;
-        e->sorted_y[k] = rel_y(e, k);
+        e->sorted_x[k] = rel_y(e, k);
     }
-    sort_pairs(e->sorted_y, e->by_y, e->key, e->cand, n);
+    sort_ids(e->by_y, e->cand, e->sorted_x, n);
+    for (uint32_t p = 0; p < n; p++) {
+        e->sorted_y[p] = e->sorted_x[e->by_y[p]];
+    }
 
     int64_t reach = vor__offset(e->width - 1u, e->step_x);
     int64_t tall = vor__offset(e->height - 1u, e->step_y);
@@ -405,13 +427,15 @@ void vor__euclid_prepare(vor__euclid_t *e)
     e->left_count = vertical_envelope(e, 0, e->left);
     e->right_count = vertical_envelope(e, frame_u(e), e->right);
 
+    /* x order (key: the x of each site while sorting) */
     for (uint32_t k = 0; k < n; k++) {
-        e->by_x[k] = k;
-        e->sorted_x[k] = rel_x(e, k);
+        e->key[k] = rel_x(e, k);
     }
-    sort_pairs(e->sorted_x, e->by_x, e->key, e->cand, n);
+    sort_ids(e->by_x, e->cand, e->key, n);
     for (uint32_t p = 0; p < n; p++) {
-        e->sorted_y[p] = rel_y(e, e->by_x[p]);
+        uint32_t id = e->by_x[p];
+        e->sorted_x[p] = e->key[id];
+        e->sorted_y[p] = rel_y(e, id);
         e->mark[p] = 0;
     }
     /* quotients of the row envelope stay below width: bits enough */
@@ -424,6 +448,8 @@ void vor__euclid_prepare(vor__euclid_t *e)
     e->inside_next = 0;
     e->left_next = 0;
     e->right_next = 0;
+    e->reach_row = 0;
+    e->reach_most = 0;
 }
 
 /* ---------------------------------------------------------------- rows */
@@ -471,38 +497,11 @@ static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
 #endif
 }
 
-/*
- * The discrete lower envelope of row offset v over the band's list
- * (cand[q] = site, val[q] = pack_line(a, b), q < cand_count, in (a, site)
- * order, at least one line): which line is lowest at each pixel centre, ties to the smallest
- * site. Returns the count of stack entries; entry t owns the pixels from
- * runs[t].end (its first pixel, for now) up to the next entry's first
- * pixel, and runs[t].site is its site.
- *
- * Line l beats line j at pixel i when g_l < g_j at u_i = i step, or they
- * are equal and l has the smaller index. For slope(l) >= slope(j) the
- * difference D(i) = g_j(u_i) - g_l(u_i) = val_j - val_l + 2 (a_l - a_j) u_i
- * does not decrease with i, so l beats j on a suffix of the pixels, and l
- * beats every earlier line (the lowest at each pixel being a minimum in a
- * total order) on a suffix too. Lines come in slope order, so a new line
- * l pops each top entry j it beats at j's first pixel (then on all of j's
- * pixels), and otherwise starts where it first beats j: the smallest t >=
- * 1 with D(s_j) + 2 (a_l - a_j) step t > -bias, bias 1 when l has the
- * smaller index. If that is past the last pixel (or the slopes are
- * equal), l is lowest nowhere and is dropped. Stack entries thus own
- * non-empty runs in order, at most min(lines, width) of them. The top
- * entry lives in registers; the stack in memory is runs[t] = (first
- * pixel, list position), and a popped-to entry's line is looked up again.
- *
- * Bounds: narrow (every coordinate and offset below 2^14): values <
- * 2^28 + 2^30 < 2^31, D is a difference of squared distances below 2^31,
- * 2 (a_l - a_j) u_i < 2^16 2^14, everything in int32. Otherwise (below
- * 2^29): values < 2^61, |D| < 2^61, 2 (a_l - a_j) < 2^31 fits int32 and
- * its product with an offset is < 2^60, everything in int64. The quotient
- * is below width (2^quotient_bits).
- */
-/* A list line: relative (a, b) packed in one int64, each biased by 2^29
- * into (0, 2^30), so that both halves come back with one load. */
+/* ---------------------------------------------------------- row lists */
+
+/* A band's candidates are a list of lines in (a, site) order: cand[q] =
+ * site and val[q] = the line's (a, b) packed. Mid and wide tiers: a and b
+ * each biased by 2^29 into (0, 2^30), one int64 below 2^62. */
 static int64_t pack_line(int32_t a, int32_t b)
 {
     uint64_t lo = (uint32_t)(a + (int32_t)BUDGET), hi = (uint32_t)(b + (int32_t)BUDGET);
@@ -520,8 +519,123 @@ ALWAYS_INLINE int32_t line_dy(int64_t line, int32_t v_biased)
     return v_biased - (int32_t)(line >> 32);
 }
 
-ALWAYS_INLINE uint32_t row_envelope_impl(const vor__euclid_t *e, int32_t v, vor__run_t *runs,
-                                         int narrow)
+/* Narrow tier: a and b biased by 2^14 into 15 bits each, and the site,
+ * in one int64 below 2^59: one load gives all three. */
+#define NARROW_BIAS 16384
+static int64_t pack_narrow(int32_t a, int32_t b, uint32_t id)
+{
+    uint32_t lo = (uint32_t)(a + NARROW_BIAS) | ((uint32_t)(b + NARROW_BIAS) << 16);
+    return (int64_t)(((uint64_t)id << 32) | lo);
+}
+
+/* Sets list line q. */
+static void set_line(vor__euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32_t b)
+{
+    e->cand[q] = id;
+    e->val[q] = e->narrow == 1 ? pack_narrow(a, b, id) : pack_line(a, b);
+}
+
+/*
+ * The discrete lower envelope of row offset v over the band's list (q <
+ * cand_count, at least one line): which line is lowest at each pixel
+ * centre, ties to the smallest site. Returns the count of stack
+ * entries; entry t owns the pixels from runs[t].end (its first pixel, for
+ * now) up to the next entry's first pixel, and runs[t].site is its list
+ * position (cand[] maps it to the site).
+ *
+ * Line l beats line j at pixel i when g_l < g_j at u_i = i step, or they
+ * are equal and l has the smaller index. For slope(l) >= slope(j) the
+ * difference D(i) = g_j(u_i) - g_l(u_i) = val_j - val_l + 2 (a_l - a_j) u_i
+ * does not decrease with i, so l beats j on a suffix of the pixels, and l
+ * beats every earlier line (the lowest at each pixel being a minimum in a
+ * total order) on a suffix too. Lines come in slope order, so a new line
+ * l pops each top entry j it beats at j's first pixel (then on all of j's
+ * pixels), and otherwise starts where it first beats j: the smallest t >=
+ * 1 with D(s_j) + 2 (a_l - a_j) step t > -bias, bias 1 when l has the
+ * smaller index. If that is past the last pixel (or the slopes are
+ * equal), l is lowest nowhere and is dropped. Stack entries thus own
+ * non-empty runs in order, at most min(lines, width) of them. The top
+ * entry lives in registers; the stack in memory is runs[t] = (first
+ * pixel, list position), and a popped-to entry's line is looked up again.
+ * One function per tier: the narrow one in 32 bits, the other in 64.
+ *
+ * Bounds: narrow (every coordinate and offset below 2^14): values <
+ * 2^28 + 2^30 < 2^31, D is a difference of squared distances below 2^31,
+ * 2 (a_l - a_j) u_i < 2^16 2^14, everything in int32. Otherwise (below
+ * 2^29): values < 2^61, |D| < 2^61, 2 (a_l - a_j) < 2^31 fits int32 and
+ * its product with an offset is < 2^60, everything in int64. The quotient
+ * is below width (2^quotient_bits).
+ */
+static uint32_t row_envelope_narrow(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+{
+    const int64_t *line = e->val;
+    const uint32_t m = e->cand_count;
+    const uint32_t step = (uint32_t)e->step_x;
+    const uint32_t last_u = (uint32_t)frame_u(e);
+    const uint32_t bits = e->quotient_bits;
+    const int32_t vb = v + NARROW_BIAS;
+    /* the top entry: slope, value, first pixel and its offset, site */
+    uint64_t x = (uint64_t)line[0];
+    int32_t top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
+    int32_t top_dy = vb - (int32_t)((uint32_t)x >> 16);
+    int32_t top_val = top_a * top_a + top_dy * top_dy;
+    uint32_t top_start = 0, top_site = (uint32_t)(x >> 32);
+    uint32_t top_u = 0;
+    runs[0].end = 0;
+    runs[0].site = 0;
+    uint32_t top = 1; /* entries */
+    for (uint32_t q = 1; q < m; q++) {
+        x = (uint64_t)line[q];
+        const int32_t a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
+        const int32_t dy = vb - (int32_t)((uint32_t)x >> 16);
+        const uint32_t id = (uint32_t)(x >> 32);
+        const int32_t val = a * a + dy * dy;
+        uint32_t start;
+        for (;;) {
+            const int32_t da = a - top_a; /* >= 0: slope order */
+            const int32_t d = (top_val - val) + 2 * da * (int32_t)top_u;
+            if (d > 0 || (d == 0 && id < top_site)) {
+                goto pop; /* l beats the top on all of its pixels */
+            }
+            /* l wins from the first t >= 1 with d + 2 da step t > -bias */
+            const uint32_t r = (uint32_t)-d - (id < top_site ? 1u : 0u);
+            const uint32_t g = 2u * (uint32_t)da;
+            if (da == 0 || r >= g * (last_u - top_u)) {
+                goto dropped; /* l never beats the top within the row */
+            }
+            const uint32_t skip = quotient32(r, g * step, bits);
+            start = top_start + skip + 1u;
+            break;
+        pop:
+            top--;
+            if (top == 0u) {
+                start = 0; /* l starts at pixel 0 */
+                break;
+            }
+            { /* the entry below becomes the top again */
+                x = (uint64_t)line[runs[top - 1u].site];
+                top_start = runs[top - 1u].end;
+                top_u = top_start * step;
+                top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
+                top_site = (uint32_t)(x >> 32);
+                top_dy = vb - (int32_t)((uint32_t)x >> 16);
+                top_val = top_a * top_a + top_dy * top_dy;
+            }
+        }
+        runs[top].end = start;
+        runs[top].site = q;
+        top++;
+        top_a = a;
+        top_val = val;
+        top_start = start;
+        top_u = start * step;
+        top_site = id;
+    dropped:;
+    }
+    return top;
+}
+
+static uint32_t row_envelope_wide(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
 {
     const uint32_t *site = e->cand;
     const int64_t *line = e->val;
@@ -530,91 +644,63 @@ ALWAYS_INLINE uint32_t row_envelope_impl(const vor__euclid_t *e, int32_t v, vor_
     const int32_t last_u = frame_u(e);
     const uint32_t bits = e->quotient_bits;
     const int32_t vb = v + (int32_t)BUDGET;
-    /* the top entry: slope, value, first pixel, site; the first line
-     * starts at pixel 0 */
+    /* the top entry: slope, value, first pixel and its offset, site */
     int32_t top_a = line_a(line[0]);
     int32_t top_dy = line_dy(line[0], vb);
-    int32_t top_val32 = narrow ? top_a * top_a + top_dy * top_dy : 0;
-    int64_t top_val = narrow ? 0 : square(top_a) + square(top_dy);
+    int64_t top_val = square(top_a) + square(top_dy);
     uint32_t top_start = 0, top_site = site[0];
+    int32_t top_u = 0;
     runs[0].end = 0;
     runs[0].site = 0;
-    uint32_t top = 1;
+    uint32_t top = 1; /* entries */
     for (uint32_t q = 1; q < m; q++) {
         const int64_t l = line[q];
         const int32_t a = line_a(l);
         const int32_t dy = line_dy(l, vb);
         const uint32_t id = site[q];
-        int32_t val32 = 0;
-        int64_t val = 0;
-        if (narrow) {
-            val32 = a * a + dy * dy;
-        } else {
-            val = square(a) + square(dy);
-        }
+        const int64_t val = square(a) + square(dy);
         uint32_t start;
         for (;;) {
             const int32_t da = a - top_a; /* >= 0: slope order */
-            const int32_t top_u = (int32_t)vor__offset(top_start, step);
-            const int32_t bias = id < top_site ? 1 : 0;
-            uint32_t skip; /* pixels after top_start before l wins */
-            if (narrow) {
-                const int32_t d = (top_val32 - val32) + 2 * da * top_u;
-                if (d >= 1 - bias) {
-                    goto pop; /* l beats the top on all of its pixels */
-                }
-                const uint32_t r = (uint32_t)(-d - bias);
-                const uint32_t g = 2u * (uint32_t)da;
-                if (da == 0 || r >= g * (uint32_t)(last_u - top_u)) {
-                    goto dropped; /* l never beats the top within the row */
-                }
-                skip = quotient32(r, g * (uint32_t)step, bits);
-            } else {
-                const int32_t da2 = 2 * da;
-                const int64_t d = (top_val - val) + vor__mul_i32(da2, top_u);
-                if (d >= 1 - bias) {
-                    goto pop;
-                }
-                const uint64_t r = (uint64_t)(-d - bias);
-                if (da == 0 || r >= (uint64_t)vor__mul_i32(da2, last_u - top_u)) {
-                    goto dropped;
-                }
-                skip = quotient64(r, (uint64_t)vor__mul_i32(da2, step), bits);
+            const int32_t da2 = 2 * da;
+            const int64_t d = (top_val - val) + vor__mul_i32(da2, top_u);
+            if (d > 0 || (d == 0 && id < top_site)) {
+                goto pop; /* l beats the top on all of its pixels */
             }
+            /* l wins from the first t >= 1 with d + 2 da step t > -bias */
+            const uint64_t r = (uint64_t)-d - (id < top_site ? 1u : 0u);
+            if (da == 0 || r >= (uint64_t)vor__mul_i32(da2, last_u - top_u)) {
+                goto dropped; /* l never beats the top within the row */
+            }
+            const uint32_t skip = quotient64(r, (uint64_t)vor__mul_i32(da2, step), bits);
             start = top_start + skip + 1u;
             break;
         pop:
             top--;
             if (top == 0u) {
-                start = 0;
+                start = 0; /* l starts at pixel 0 */
                 break;
             }
             { /* the entry below becomes the top again */
                 const uint32_t below = runs[top - 1u].site;
                 const int64_t bl = line[below];
                 top_start = runs[top - 1u].end;
+                top_u = (int32_t)vor__offset(top_start, step);
                 top_a = line_a(bl);
                 top_site = site[below];
                 const int32_t below_dy = line_dy(bl, vb);
-                if (narrow) {
-                    top_val32 = top_a * top_a + below_dy * below_dy;
-                } else {
-                    top_val = square(top_a) + square(below_dy);
-                }
+                top_val = square(top_a) + square(below_dy);
             }
         }
         runs[top].end = start;
         runs[top].site = q;
         top++;
         top_a = a;
-        top_val32 = val32;
         top_val = val;
         top_start = start;
+        top_u = (int32_t)vor__offset(start, step);
         top_site = id;
     dropped:;
-    }
-    for (uint32_t t = 0; t < top; t++) {
-        runs[t].site = site[runs[t].site];
     }
     return top;
 }
@@ -622,9 +708,9 @@ ALWAYS_INLINE uint32_t row_envelope_impl(const vor__euclid_t *e, int32_t v, vor_
 static uint32_t row_envelope(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
 {
     if (e->narrow == 1) {
-        return row_envelope_impl(e, v, runs, 1);
+        return row_envelope_narrow(e, v, runs);
     }
-    return row_envelope_impl(e, v, runs, 0);
+    return row_envelope_wide(e, v, runs);
 }
 
 /* --------------------------------------------------------------- bands */
@@ -637,9 +723,7 @@ static uint32_t gather_lines(vor__euclid_t *e, uint8_t flags)
     for (uint32_t p = 0; p < e->n; p++) {
         uint32_t id = e->by_x[p];
         if ((e->mark[id] & flags) != 0u) {
-            e->cand[m] = id;
-            e->val[m] = pack_line(e->sorted_x[p], e->sorted_y[p]);
-            m++;
+            set_line(e, m++, id, e->sorted_x[p], e->sorted_y[p]);
         }
     }
     return m;
@@ -658,6 +742,26 @@ static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
     return m;
 }
 
+/* The largest squared distance from a pixel centre of row offset v to
+ * its site, from the row's stack (first pixels, list positions): along a
+ * run it is largest at one of the run's ends. */
+static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *runs,
+                         uint32_t count)
+{
+    uint64_t most = 0;
+    for (uint32_t t = 0; t < count; t++) {
+        uint32_t id = e->cand[runs[t].site];
+        uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->width;
+        int32_t a = rel_x(e, id);
+        int64_t dy2 = square(rel_y(e, id) - v);
+        int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->step_x) - a) + dy2;
+        int64_t d2 = square((int32_t)vor__offset(end - 1u, e->step_x) - a) + dy2;
+        uint64_t d = (uint64_t)(d1 > d2 ? d1 : d2);
+        most = d > most ? d : most;
+    }
+    return most;
+}
+
 /*
  * Candidates of the band of rows [first, last] (the list the rows take).
  * Its rectangle R = [0, U] x [v0, v1] reaches down to the next band's first
@@ -667,15 +771,17 @@ static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
  *
  * The bottom edge from few sites: a site whose closed cell meets the
  * bottom edge at p either lies below the edge (b > v1), or is already a
- * candidate (inside R, or its cell crosses the top, left or right edge
- * on the way from its site to p: convexity). One below lies within the
- * distance from p to any site set T, here the candidates T found so far:
- * b - v1 <= |p - s| <= dist(p, T). dist(., T) changes by at most the
- * distance moved, and every p of the edge lies within step/2 of a pixel
- * centre, where the discrete envelope of T gives dist exactly; so with E
- * the largest squared distance at those centres, b - v1 - ceil(step/2) <=
- * sqrt(E). The sites below are taken in y order while that holds, and the
- * edge's envelope is computed over them and T.
+ * candidate (inside R, or its cell crosses the top, left or right edge on
+ * the way from its site to p: convexity). One below has b - v1 <= |p - s|
+ * = dist(p, S) <= dist(p', S) + |p - p'| for any point p'. The previous
+ * band's last row (offset v') was rendered exactly, so dist(., S) is known
+ * at its pixel centres, and every p of the edge lies within step_x / 2 +
+ * (v1 - v') of one of them: with E the largest squared distance there,
+ * b - v1 - ceil(step_x / 2) - (v1 - v') <= sqrt(E). The first band has no
+ * row above; there E comes from the candidates T found so far, at the
+ * edge's own pixel centres (dist(p, S) <= dist(p, T), v' = v1). The sites
+ * below are taken in y order while that holds, and the edge's envelope is
+ * computed over them and the candidates.
  */
 static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__run_t *runs)
 {
@@ -714,24 +820,20 @@ static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__ru
     if (v1 == v0) { /* a last band of one row: no bottom edge */
         m = gather_positions(e, 1u);
     } else {
-        /* E: the largest squared distance from a pixel centre of the edge
-         * to the candidates so far; a run's largest is at one of its ends */
-        e->cand_count = gather_lines(e, 1u);
-        uint32_t count = row_envelope(e, v1, runs);
-        uint64_t most = 0;
-        for (uint32_t t = 0; t < count; t++) {
-            uint32_t id = runs[t].site;
-            uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->width;
-            int32_t a = rel_x(e, id);
-            int64_t dy2 = square(rel_y(e, id) - v1);
-            int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->step_x) - a) + dy2;
-            int64_t d2 = square((int32_t)vor__offset(end - 1u, e->step_x) - a) + dy2;
-            uint64_t d = (uint64_t)(d1 > d2 ? d1 : d2);
-            most = d > most ? d : most;
+        /* E and the distance v1 - v' from its row to the edge (above) */
+        uint64_t most;
+        int64_t extra = 0;
+        if (first > 0u && e->reach_row + 1u == first) {
+            most = e->reach_most;
+            extra = (int64_t)v1 - vor__offset(e->reach_row, e->step_y);
+        } else {
+            e->cand_count = gather_lines(e, 1u);
+            uint32_t count = row_envelope(e, v1, runs);
+            most = farthest(e, v1, runs, count);
         }
         /* the sites below the edge, in y order, while b - v1 - h <= sqrt(E)
-         * (b - v1 - h < 2^30: its square fits) */
-        const int64_t h = (int64_t)(((uint32_t)e->step_x + 1u) / 2u);
+         * (d below 2^30 when positive: its square fits) */
+        const int64_t h = (int64_t)(((uint32_t)e->step_x + 1u) / 2u) + extra;
         for (; p < n; p++) {
             uint32_t id = e->by_y[p];
             int64_t d = (int64_t)rel_y(e, id) - v1 - h;
@@ -752,9 +854,7 @@ static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__ru
         uint8_t flags = e->mark[id];
         e->mark[id] = (uint8_t)((flags >> 1) & 1u);
         if ((flags & 1u) != 0u) {
-            e->cand[kept] = id;
-            e->val[kept] = pack_line(e->sorted_x[pos], e->sorted_y[pos]);
-            kept++;
+            set_line(e, kept++, id, e->sorted_x[pos], e->sorted_y[pos]);
         }
     }
     e->cand_count = kept;
@@ -772,11 +872,19 @@ uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
         }
         select_band(e, j, last, runs);
     }
-    const uint32_t count = row_envelope(e, (int32_t)(vor__offset(j, e->step_y)), runs);
-    /* first pixels to ends */
+    const int32_t v = (int32_t)(vor__offset(j, e->step_y));
+    const uint32_t count = row_envelope(e, v, runs);
+    if (j == e->band_last && j + 1u < e->height) { /* for the next band's bottom edge */
+        e->reach_most = farthest(e, v, runs, count);
+        e->reach_row = j;
+    }
+    /* (first pixel, list position) to (end, site) */
+    const uint32_t *site = e->cand;
     for (uint32_t t = 0; t + 1u < count; t++) {
         runs[t].end = runs[t + 1u].end;
+        runs[t].site = site[runs[t].site];
     }
     runs[count - 1u].end = e->width;
+    runs[count - 1u].site = site[runs[count - 1u].site];
     return count;
 }

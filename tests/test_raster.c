@@ -466,7 +466,19 @@ static void band_cases(test_rng_t *rng)
                                   : test_rng_range(rng, 2 * (int32_t)BIG_H - 10, 2 * (int32_t)BIG_H + 300);
     }
     check_bands("bands-sparse", &f, 9, 7);
+    /* five sites above and below an empty frame (found by search): the
+     * cells that reach a band's bottom edge from below come from farther
+     * than the largest distance on the last row above, and the search for
+     * them must add the rows in between */
+    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    static const int32_t gap_sites[5][2] = {{-16, 153}, {99, -5}, {11, -18}, {-16, 136}, {52, 145}};
+    for (uint32_t k = 0; k < 5u; k++) {
+        big_sites[k].x = gap_sites[k][0];
+        big_sites[k].y = gap_sites[k][1];
+    }
+    check_bands("bands-gap", &f, 5, 16);
     /* one site far below, all others in one cluster near the top */
+    f = make_frame(0, 0, 3, 2, BIG_W, BIG_H);
     for (uint32_t k = 0; k < 40u; k++) {
         big_sites[k].x = test_rng_range(rng, 100, 140);
         big_sites[k].y = test_rng_range(rng, 0, 12);
