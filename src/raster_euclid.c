@@ -742,6 +742,20 @@ static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
     return m;
 }
 
+/* The last row of the band that starts at row first, and the row of its
+ * rectangle's bottom edge: the next band's first row, if any. */
+static uint32_t band_last_row(const vor__euclid_t *e, uint32_t first)
+{
+    uint32_t last = first + (VOR__CULL_ROWS - 1u);
+    return (last >= e->height || last < first) ? e->height - 1u : last;
+}
+
+static uint32_t band_bottom(const vor__euclid_t *e, uint32_t first)
+{
+    uint32_t last = band_last_row(e, first);
+    return (last + 1u < e->height) ? last + 1u : last;
+}
+
 /* The largest squared distance from a pixel centre of row offset v to
  * its site, from the row's stack (first pixels, list positions): along a
  * run it is largest at one of the run's ends. */
@@ -773,21 +787,21 @@ static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *ru
  * bottom edge at p either lies below the edge (b > v1), or is already a
  * candidate (inside R, or its cell crosses the top, left or right edge on
  * the way from its site to p: convexity). One below has b - v1 <= |p - s|
- * = dist(p, S) <= dist(p', S) + |p - p'| for any point p'. The previous
- * band's last row (offset v') was rendered exactly, so dist(., S) is known
- * at its pixel centres, and every p of the edge lies within step_x / 2 +
- * (v1 - v') of one of them: with E the largest squared distance there,
- * b - v1 - ceil(step_x / 2) - (v1 - v') <= sqrt(E). The first band has no
- * row above; there E comes from the candidates T found so far, at the
- * edge's own pixel centres (dist(p, S) <= dist(p, T), v' = v1). The sites
- * below are taken in y order while that holds, and the edge's envelope is
- * computed over them and the candidates.
+ * = dist(p, S) <= |p_i - s_i| + |p - p_i| for any pixel centre p_i of the
+ * edge and any site s_i. Every p of the edge lies within step_x / 2 of
+ * some p_i, and for s_i the site that won the pixel above p_i on the
+ * previous band's last row (rendered just before) serves: with E the
+ * largest |p_i - s_i|^2, b - v1 - ceil(step_x / 2) <= sqrt(E). The first
+ * band has no row above; there s_i is the nearest of the candidates found
+ * so far (their discrete envelope at the edge's row). The sites below are
+ * taken in y order while that holds, and the edge's envelope is computed
+ * over them and the candidates.
  */
-static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__run_t *runs)
+static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
 {
+    const uint32_t last = band_last_row(e, first);
     const int32_t v0 = (int32_t)(vor__offset(first, e->step_y));
-    const uint32_t bottom_row = (last + 1u < e->height) ? last + 1u : last;
-    const int32_t v1 = (int32_t)(vor__offset(bottom_row, e->step_y));
+    const int32_t v1 = (int32_t)(vor__offset(band_bottom(e, first), e->step_y));
     const int32_t u1 = frame_u(e);
     const uint32_t n = e->n;
     if (first == 0u) { /* the frame's top edge, over every site */
@@ -820,12 +834,10 @@ static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__ru
     if (v1 == v0) { /* a last band of one row: no bottom edge */
         m = gather_positions(e, 1u);
     } else {
-        /* E and the distance v1 - v' from its row to the edge (above) */
+        /* E (see above) */
         uint64_t most;
-        int64_t extra = 0;
         if (first > 0u && e->reach_row + 1u == first) {
             most = e->reach_most;
-            extra = (int64_t)v1 - vor__offset(e->reach_row, e->step_y);
         } else {
             e->cand_count = gather_lines(e, 1u);
             uint32_t count = row_envelope(e, v1, runs);
@@ -833,7 +845,7 @@ static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__ru
         }
         /* the sites below the edge, in y order, while b - v1 - h <= sqrt(E)
          * (d below 2^30 when positive: its square fits) */
-        const int64_t h = (int64_t)(((uint32_t)e->step_x + 1u) / 2u) + extra;
+        const int64_t h = (int64_t)(((uint32_t)e->step_x + 1u) / 2u);
         for (; p < n; p++) {
             uint32_t id = e->by_y[p];
             int64_t d = (int64_t)rel_y(e, id) - v1 - h;
@@ -866,16 +878,14 @@ static void select_band(vor__euclid_t *e, uint32_t first, uint32_t last, vor__ru
 uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
 {
     if (!e->band_valid || j > e->band_last) {
-        uint32_t last = j + (VOR__CULL_ROWS - 1u);
-        if (last >= e->height || last < j) {
-            last = e->height - 1u;
-        }
-        select_band(e, j, last, runs);
+        select_band(e, j, runs);
     }
     const int32_t v = (int32_t)(vor__offset(j, e->step_y));
     const uint32_t count = row_envelope(e, v, runs);
-    if (j == e->band_last && j + 1u < e->height) { /* for the next band's bottom edge */
-        e->reach_most = farthest(e, v, runs, count);
+    if (j == e->band_last && j + 1u < e->height) {
+        /* this row's sites, at the next band's bottom edge */
+        uint32_t bottom = band_bottom(e, j + 1u);
+        e->reach_most = farthest(e, (int32_t)vor__offset(bottom, e->step_y), runs, count);
         e->reach_row = j;
     }
     /* (first pixel, list position) to (end, site) */
