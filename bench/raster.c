@@ -11,7 +11,9 @@
  * pixel under QEMU -icount on targets, and megapixels per second on the
  * host (best of a few runs). R = how many times faster the fast path is.
  * Targets render 320x240 RGB565 in 16-row bands; the host also renders
- * 1920x1080. The brute path is timed on the first 16 rows only (its cost
+ * 1920x1080. METRIC euclid-mm is the frame of make demo: sites in
+ * millimetres on a 100 m floor, 312 x 416 mm per pixel (coordinates up to
+ * 10^5, the fast path's mid tier). The brute path is timed on the first 16 rows only (its cost
  * per pixel does not depend on the row). Every fast frame is checked
  * against the brute-force frame on those rows; "bench valid ok" ends a
  * good run. tools/bench/raster.sh turns the lines into docs/benchmarks.md.
@@ -66,10 +68,10 @@ static int flush(void *user, uint32_t first_row, uint32_t rows, const void *pixe
     return 0;
 }
 
-static uint64_t render(uint32_t w, uint32_t h, uint32_t n, enum vor_raster_method method,
+static uint64_t render(const vor_raster_frame_t *f, uint32_t n, enum vor_raster_method method,
                        sink_t *s)
 {
-    vor_raster_frame_t frame = {0, 0, 1, 1, w, h};
+    vor_raster_frame_t frame = *f;
     vor_raster_sites_t sites = {VOR_METRIC_EUCLID, points, n};
     vor_raster_output_t out = {0};
     out.kind = VOR_RASTER_RGB565;
@@ -101,32 +103,47 @@ static void print_cost(const char *label, uint64_t spent, uint64_t pixels, int h
     }
 }
 
-static bool run(uint32_t w, uint32_t h, uint32_t n)
+/* millimetres: true for the demo's frame (w x h pixels over a 100 m
+ * floor), false for one unit per pixel */
+static bool run(uint32_t w, uint32_t h, uint32_t n, bool millimetres)
 {
     const int host = vor_port_counter_unit[0] == 'n';
     const unsigned runs = host ? HOST_RUNS : 1u;
+    vor_raster_frame_t frame = {0, 0, 1, 1, w, h};
+    if (millimetres) {
+        frame.origin_x = -49844;
+        frame.origin_y = -49792;
+        frame.step_x = 312;
+        frame.step_y = 416;
+    }
     test_rng_t rng;
     test_rng_seed(&rng, 7000u + n);
     for (uint32_t k = 0; k < n; k++) {
-        points[k].x = test_rng_range(&rng, 0, (int32_t)w - 1);
-        points[k].y = test_rng_range(&rng, 0, (int32_t)h - 1);
+        if (millimetres) {
+            points[k].x = test_rng_range(&rng, -50000, 49999);
+            points[k].y = test_rng_range(&rng, -50000, 49999);
+        } else {
+            points[k].x = test_rng_range(&rng, 0, (int32_t)w - 1);
+            points[k].y = test_rng_range(&rng, 0, (int32_t)h - 1);
+        }
         palette[k] = (uint16_t)(k * 2654435761u >> 16);
     }
     uint64_t fast = UINT64_MAX, brute = UINT64_MAX;
     sink_t s = {0, BAND_ROWS, 1, 0, w};
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = render(w, h, n, VOR_RASTER_BRUTE, &s);
+        uint64_t spent = render(&frame, n, VOR_RASTER_BRUTE, &s);
         brute = spent < brute ? spent : brute;
     }
     s.keep_first = 0;
     s.stop_rows = 0;
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = render(w, h, n, VOR_RASTER_FAST, &s);
+        uint64_t spent = render(&frame, n, VOR_RASTER_FAST, &s);
         fast = spent < fast ? spent : fast;
     }
     uint64_t fast_px = (uint64_t)w * h, brute_px = (uint64_t)w * BAND_ROWS;
     bool ok = fast != 0u && brute != 0u && s.mismatches == 0u;
-    test_printf("bench raster euclid %u %u %u", (unsigned)w, (unsigned)h, (unsigned)n);
+    test_printf("bench raster %s %u %u %u", millimetres ? "euclid-mm" : "euclid", (unsigned)w,
+                (unsigned)h, (unsigned)n);
     print_cost("fast", fast, fast_px, host);
     print_cost("brute", brute, brute_px, host);
     /* ratio of the per-pixel costs, one decimal */
@@ -143,11 +160,12 @@ int main(void)
     static const uint32_t sizes[] = {16u, 256u, MAX_SITES};
     bool ok = true;
     for (unsigned i = 0; i < 3u; i++) {
-        ok &= run(320, 240, sizes[i]);
+        ok &= run(320, 240, sizes[i], false);
     }
+    ok &= run(320, 240, 256, true);
 #ifdef BENCH_HOST_FRAMES
     for (unsigned i = 0; i < 3u; i++) {
-        ok &= run(1920, 1080, sizes[i]);
+        ok &= run(1920, 1080, sizes[i], false);
     }
 #endif
     test_printf("bench valid %s\n", ok ? "ok" : "FAILED");
