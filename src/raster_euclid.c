@@ -458,17 +458,12 @@ void vor__euclid_prepare(vor__euclid_t *e)
  * both fit 32 bits, else restoring division, one quotient bit per step
  * (bits steps). (r >> b) >= g exactly when r >= g 2^b, and g 2^b <= r
  * never overflows. */
-static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
+static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
 {
-#if HARDWARE_DIVIDE64
-    (void)bits;
-    return (uint32_t)(r / g);
-#else
 #if HARDWARE_DIVIDE
-    if ((r >> 32) == 0u && (g >> 32) == 0u) {
-        return (uint32_t)r / (uint32_t)g;
-    }
-#endif
+    (void)bits;
+    return r / g;
+#else
     uint32_t q = 0;
     for (uint32_t b = bits; b-- > 0u;) {
         if ((r >> b) >= g) {
@@ -480,12 +475,15 @@ static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
 #endif
 }
 
-static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
+static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
 {
-#if HARDWARE_DIVIDE
+#if HARDWARE_DIVIDE64
     (void)bits;
-    return r / g;
+    return (uint32_t)(r / g);
 #else
+    if ((r >> 32) == 0u && (g >> 32) == 0u) {
+        return quotient32((uint32_t)r, (uint32_t)g, bits);
+    }
     uint32_t q = 0;
     for (uint32_t b = bits; b-- > 0u;) {
         if ((r >> b) >= g) {

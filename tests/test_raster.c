@@ -468,8 +468,8 @@ static void band_cases(test_rng_t *rng)
     check_bands("bands-sparse", &f, 9, 7);
     /* five sites above and below an empty frame (found by search): the
      * cells that reach a band's bottom edge from below come from farther
-     * than the largest distance on the last row above, and the search for
-     * them must add the rows in between */
+     * than the largest distance to a site on the last row above: the
+     * search radius must be measured at the edge itself */
     f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
     static const int32_t gap_sites[5][2] = {{-16, 153}, {99, -5}, {11, -18}, {-16, 136}, {52, 145}};
     for (uint32_t k = 0; k < 5u; k++) {
