@@ -14,7 +14,9 @@
  * R = how many times faster the fast path is. The host renders 320x240
  * and 1920x1080 with 16, 256 and 4,096 sites for every metric; targets
  * render 320x240, Euclidean sites at every count and the other metrics at
- * 16 and 256 sites. The brute path is timed on the first 16 rows (the
+ * 16 and 256 sites. METRIC euclid-mm is the frame of make demo: 256
+ * Euclidean sites in millimetres on a 100 m floor, 312 x 416 mm per pixel
+ * (coordinates up to 10^5, the fast path's mid tier). The brute path is timed on the first 16 rows (the
  * first row only at 4,096 sites; its cost per pixel does not depend on
  * the row), and every fast frame is checked against the brute-force
  * frame on those rows; "bench valid ok" ends a good run.
@@ -80,10 +82,9 @@ static int flush(void *user, uint32_t first_row, uint32_t rows, const void *pixe
     return 0;
 }
 
-static uint64_t render(const vor_raster_sites_t *sites, uint32_t w, uint32_t h,
+static uint64_t render(const vor_raster_sites_t *sites, const vor_raster_frame_t *frame,
                        enum vor_raster_method method, sink_t *s)
 {
-    vor_raster_frame_t frame = {0, 0, 1, 1, w, h};
     vor_raster_output_t out = {0};
     out.kind = VOR_RASTER_RGB565;
     out.band = band;
@@ -95,7 +96,7 @@ static uint64_t render(const vor_raster_sites_t *sites, uint32_t w, uint32_t h,
     out.method = method;
     uint64_t start = vor_port_counter();
     __asm__ volatile("" ::: "memory");
-    int err = vor_raster(&frame, sites, &out, work, sizeof work);
+    int err = vor_raster(frame, sites, &out, work, sizeof work);
     __asm__ volatile("" ::: "memory");
     uint64_t spent = vor_port_counter() - start;
     return (err == VOR_OK || (err == 1 && s->stop_rows != 0u)) ? spent : 0u;
@@ -118,8 +119,10 @@ static const char *const metric_names[] = {"euclid", "l1",       "linf",      "l
                                            "ellip",  "mult",     "add",       "comp",
                                            "farthest", "hausdorff", "segment", "polygon"};
 
-/* The sites of one case: n sites of the metric over a w x h frame. */
-static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n)
+/* The sites of one case: n sites of the metric over a w x h frame (in
+ * millimetres: over the demo's 100 m floor). */
+static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n,
+                                     bool millimetres)
 {
     test_rng_t rng;
     test_rng_seed(&rng, 7000u + n);
@@ -131,8 +134,10 @@ static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_
     int32_t radius = spacing / 2 > 1 ? spacing / 2 : 1;
     uint32_t at = 0;
     for (uint32_t k = 0; k < n; k++) {
-        int32_t x = test_rng_range(&rng, 0, (int32_t)w - 1);
-        int32_t y = test_rng_range(&rng, 0, (int32_t)h - 1);
+        int32_t x = millimetres ? test_rng_range(&rng, -50000, 49999)
+                                : test_rng_range(&rng, 0, (int32_t)w - 1);
+        int32_t y = millimetres ? test_rng_range(&rng, -50000, 49999)
+                                : test_rng_range(&rng, 0, (int32_t)h - 1);
         palette[k] = (uint16_t)(k * 2654435761u >> 16);
         mult_weights[k] = 1 + test_rng_range(&rng, 0, 3);
         add_weights[k] = test_rng_range(&rng, 0, spacing / 4);
@@ -165,30 +170,37 @@ static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_
     return sites;
 }
 
-static bool run(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n)
+static bool run(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n, bool millimetres)
 {
     const int host = vor_port_counter_unit[0] == 'n';
-    vor_raster_sites_t sites = make_sites(metric, w, h, n);
+    vor_raster_sites_t sites = make_sites(metric, w, h, n, millimetres);
+    vor_raster_frame_t frame = {0, 0, 1, 1, w, h};
+    if (millimetres) {
+        frame.origin_x = -49844;
+        frame.origin_y = -49792;
+        frame.step_x = 312;
+        frame.step_y = 416;
+    }
     /* best of 5 on the host; of 2 for the slow large frames */
     const unsigned runs = !host ? 1u : (metric != VOR_METRIC_EUCLID && w > 320u) ? 2u : HOST_RUNS;
     const uint32_t brute_rows = n >= MAX_SITES && metric != VOR_METRIC_EUCLID ? 1u : BAND_ROWS;
     uint64_t fast = UINT64_MAX, brute = UINT64_MAX;
     sink_t s = {0, brute_rows, 1, 0, w, brute_rows};
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = render(&sites, w, h, VOR_RASTER_BRUTE, &s);
+        uint64_t spent = render(&sites, &frame, VOR_RASTER_BRUTE, &s);
         brute = spent < brute ? spent : brute;
     }
     s.keep_first = 0;
     s.stop_rows = 0;
     s.check_rows = brute_rows;
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = render(&sites, w, h, VOR_RASTER_FAST, &s);
+        uint64_t spent = render(&sites, &frame, VOR_RASTER_FAST, &s);
         fast = spent < fast ? spent : fast;
     }
     uint64_t fast_px = (uint64_t)w * h, brute_px = (uint64_t)w * brute_rows;
     bool ok = fast != 0u && brute != 0u && s.mismatches == 0u;
-    test_printf("bench raster %s %u %u %u", metric_names[metric], (unsigned)w, (unsigned)h,
-                (unsigned)n);
+    test_printf("bench raster %s%s %u %u %u", metric_names[metric], millimetres ? "-mm" : "",
+                (unsigned)w, (unsigned)h, (unsigned)n);
     print_cost("fast", fast, fast_px, host);
     print_cost("brute", brute, brute_px, host);
     /* ratio of the per-pixel costs, one decimal */
@@ -211,11 +223,14 @@ int main(void)
                 continue; /* targets: the other metrics up to 256 sites */
             }
 #endif
-            ok &= run((enum vor_metric)metric, 320, 240, sizes[i]);
+            ok &= run((enum vor_metric)metric, 320, 240, sizes[i], false);
+        }
+        if (metric == VOR_METRIC_EUCLID) {
+            ok &= run(VOR_METRIC_EUCLID, 320, 240, 256, true); /* the demo's frame */
         }
 #ifdef BENCH_HOST_FRAMES
         for (unsigned i = 0; i < 3u; i++) {
-            ok &= run((enum vor_metric)metric, 1920, 1080, sizes[i]);
+            ok &= run((enum vor_metric)metric, 1920, 1080, sizes[i], false);
         }
 #endif
     }

@@ -46,9 +46,10 @@
  * SPEED
  *   VOR_RASTER_FAST (the default) finds, per band of 16 rows, the sites
  *   whose cells can reach the band (exact envelopes of the band's edges),
- *   then per row the lower envelope of their distance functions, and walks
- *   the pixels with one 64-bit addition each: O(pixels + n) per band row
- *   group, never a test of every site at every pixel. It applies when
+ *   then per row the lower envelope of their distance functions at the
+ *   pixel centres, which is the row's runs (one division per run): O(n)
+ *   per band and O(candidates) per row, never a test of every site at
+ *   every pixel. It applies when
  *   every site lies within 2^29 of the first pixel and the frame spans
  *   less than 2^29 in each direction; otherwise (and with
  *   VOR_RASTER_BRUTE) each pixel is compared with every site, equally

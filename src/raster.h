@@ -19,7 +19,7 @@ typedef struct vor__run {
 } vor__run_t;
 
 /* The fast Euclidean producer (raster_euclid.c): its state lives in the
- * caller's work memory. */
+ * caller's work memory (n entries per array). */
 typedef struct vor__euclid {
     const vor_point_t *points;
     uint32_t n;
@@ -30,19 +30,23 @@ typedef struct vor__euclid {
     uint32_t *by_y;       /* site ids sorted by (y, id) */
     int32_t *sorted_x;    /* relative x of by_x[p] */
     int32_t *sorted_y;    /* relative y of by_x[p] */
-    uint8_t *mark;        /* candidate flags of the current band */
-    uint32_t *cand;       /* candidates of the band, sorted by (x, id) */
-    int32_t *key;         /* slope keys of the lines being enveloped */
-    int64_t *val;         /* their values at 0 */
-    uint32_t *stack;      /* envelope: positions into key/val */
+    uint8_t *mark;        /* per site: candidate flags of this band and the next */
+    uint32_t *cand;       /* the band's list: sites in (x, id) order (also scratch) */
+    int64_t *val;         /* the list's lines, packed (also scratch: edge values) */
+    int32_t *key;         /* scratch: edge envelope keys */
+    uint32_t *stack;      /* scratch: edge envelope stack */
     uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
     uint32_t *right;      /* and of the right edge */
     uint32_t left_count, right_count;
+    uint32_t left_next, right_next; /* first pieces that may meet the next band */
     uint32_t cand_count;
     uint32_t band_first, band_last; /* rows of the current culling band */
     uint32_t inside_next;           /* by_y position: first site not yet below the band */
+    uint32_t quotient_bits;         /* 2^quotient_bits >= width */
+    uint32_t reach_row;             /* the last row of the previous band ... */
+    uint64_t reach_most;            /* ... and its largest squared distance to a site */
     int band_valid;
-    int narrow;          /* the envelope tests fit 32x32 products */
+    int narrow;          /* tier: 1 narrow (< 2^14), 2 mid (< 2^19), 0 wide */
 } vor__euclid_t;
 
 /* i * step for a pixel index i < 2^31 and a step in (0, 2^31): below

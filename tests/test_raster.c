@@ -355,6 +355,220 @@ static void adversarial_cases(test_rng_t *rng)
     check_frame("budget", &f, 30);
 }
 
+/* ---- many bands: the fast path's band-to-band selection ------------ */
+
+#define BIG_W 96u
+#define BIG_H 100u
+#define BIG_SITES 260u
+
+static vor_point_t big_sites[BIG_SITES];
+static uint32_t big_labels[BIG_W * BIG_H];
+static uint8_t bands_work[VOR_RASTER_WORK_BYTES(BIG_SITES, BIG_W)] __attribute__((aligned(8)));
+
+typedef struct big_capture {
+    uint32_t width, next_row;
+    int bad_order;
+} big_capture_t;
+
+static int big_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    big_capture_t *c = user;
+    if (first_row != c->next_row) {
+        c->bad_order = 1;
+        return 0;
+    }
+    const uint32_t *px = pixels;
+    for (uint32_t k = 0; k < rows * c->width; k++) {
+        big_labels[first_row * c->width + k] = px[k];
+    }
+    c->next_row = first_row + rows;
+    return 0;
+}
+
+/* The nearest site by plain int64 squares (coordinates below 2^30 here,
+ * so squares and their sums stay below 2^63), ties to the smaller index:
+ * a brute force of its own, cheaper than the multi-word reference. */
+static uint32_t plain_nearest(uint32_t n, int64_t qx, int64_t qy)
+{
+    uint32_t best = 0;
+    int64_t best_d = -1;
+    for (uint32_t k = 0; k < n; k++) {
+        int64_t dx = qx - big_sites[k].x, dy = qy - big_sites[k].y;
+        int64_t d = dx * dx + dy * dy;
+        if (best_d < 0 || d < best_d) {
+            best_d = d;
+            best = k;
+        }
+    }
+    return best;
+}
+
+/* Renders labels with the fast path in bands of band_rows and compares
+ * every pixel with plain_nearest. */
+static void check_bands(const char *name, const vor_raster_frame_t *f, uint32_t n,
+                        uint32_t band_rows)
+{
+    static uint32_t band[BIG_W * 20u];
+    /* the fast path's budget (vor_raster.h, SPEED): every site within
+     * 2^29 of the first pixel, the frame less than 2^29 across */
+    const int64_t budget = (int64_t)1 << 29;
+    bool fast = (int64_t)(f->width - 1u) * f->step_x < budget &&
+                (int64_t)(f->height - 1u) * f->step_y < budget;
+    for (uint32_t k = 0; k < n; k++) {
+        int64_t a = (int64_t)big_sites[k].x - f->origin_x, b = (int64_t)big_sites[k].y - f->origin_y;
+        fast = fast && a > -budget && a < budget && b > -budget && b < budget;
+    }
+    CHECK(fast, "%s: the case is within the fast path's budget", name);
+    big_capture_t cap = {f->width, 0, 0};
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, big_sites, n};
+    vor_raster_output_t out = {0};
+    out.kind = VOR_RASTER_LABEL32;
+    out.band = band;
+    out.band_bytes = sizeof band;
+    out.band_rows = band_rows;
+    out.flush = big_flush;
+    out.user = &cap;
+    int err = vor_raster(f, &set, &out, bands_work, sizeof bands_work);
+    if (!CHECK(err == VOR_OK && !cap.bad_order && cap.next_row == f->height,
+               "%s: err %d, rows %u", name, err, cap.next_row)) {
+        return;
+    }
+    uint32_t wrong = 0;
+    for (uint32_t j = 0; j < f->height; j++) {
+        for (uint32_t i = 0; i < f->width; i++) {
+            uint32_t want = plain_nearest(n, f->origin_x + (int64_t)i * f->step_x,
+                                          f->origin_y + (int64_t)j * f->step_y);
+            uint32_t got = big_labels[j * f->width + i];
+            if (want != got && wrong++ < 3u) {
+                CHECK(false, "%s: pixel (%u, %u) = %u, brute force %u", name, i, j, got, want);
+            }
+        }
+    }
+    CHECK(wrong == 0, "%s: %u of %u pixels wrong", name, wrong, f->width * f->height);
+}
+
+static void band_cases(test_rng_t *rng)
+{
+    /* uniform random sites, some outside, over seven culling bands */
+    vor_raster_frame_t f = make_frame(-40, 25, 1, 1, BIG_W, BIG_H);
+    for (uint32_t k = 0; k < BIG_SITES; k++) {
+        big_sites[k].x = f.origin_x + test_rng_range(rng, -15, (int32_t)BIG_W + 15);
+        big_sites[k].y = f.origin_y + test_rng_range(rng, -15, (int32_t)BIG_H + 15);
+    }
+    check_bands("bands-uniform", &f, BIG_SITES, 16);
+
+    /* sparse sites, large empty regions: cells that reach up across
+     * several bands from far below, and down from above the frame */
+    f = make_frame(0, 0, 3, 2, BIG_W, BIG_H);
+    for (uint32_t k = 0; k < 9u; k++) {
+        big_sites[k].x = test_rng_range(rng, -30, 3 * (int32_t)BIG_W + 30);
+        big_sites[k].y = (k < 3u) ? test_rng_range(rng, -40, 10)
+                                  : test_rng_range(rng, 2 * (int32_t)BIG_H - 10, 2 * (int32_t)BIG_H + 300);
+    }
+    check_bands("bands-sparse", &f, 9, 7);
+    /* five sites above and below an empty frame (found by search): the
+     * cells that reach a band's bottom edge from below come from farther
+     * than the largest distance to a site on the last row above: the
+     * search radius must be measured at the edge itself */
+    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    static const int32_t gap_sites[5][2] = {{-16, 153}, {99, -5}, {11, -18}, {-16, 136}, {52, 145}};
+    for (uint32_t k = 0; k < 5u; k++) {
+        big_sites[k].x = gap_sites[k][0];
+        big_sites[k].y = gap_sites[k][1];
+    }
+    check_bands("bands-gap", &f, 5, 16);
+    /* one site far below, all others in one cluster near the top */
+    f = make_frame(0, 0, 3, 2, BIG_W, BIG_H);
+    for (uint32_t k = 0; k < 40u; k++) {
+        big_sites[k].x = test_rng_range(rng, 100, 140);
+        big_sites[k].y = test_rng_range(rng, 0, 12);
+    }
+    big_sites[40].x = 150;
+    big_sites[40].y = 900;
+    check_bands("bands-cluster", &f, 41, 16);
+
+    /* sites in a row above the frame and a row below it: long vertical
+     * cells, whose pieces of the left and right frame edges each span
+     * several bands */
+    f = make_frame(-42, 44, 1, 1, BIG_W, BIG_H);
+    for (uint32_t k = 0; k < BIG_SITES; k++) {
+        big_sites[k].x = f.origin_x + test_rng_range(rng, -(int32_t)BIG_W, 2 * (int32_t)BIG_W);
+        big_sites[k].y = f.origin_y + ((k % 2u == 0u) ? test_rng_range(rng, -5, -1)
+                                                      : test_rng_range(rng, 103, 107));
+    }
+    check_bands("bands-strips", &f, BIG_SITES, 16);
+    /* three sites (found by search): the cell of (116, 0) enters through
+     * the right frame edge at v = 51.9, in the fourth band, below its top
+     * edge, and leaves it at v = 69.8: that band must take its piece of
+     * the right edge's envelope, though the pieces before it ended in
+     * earlier bands */
+    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    big_sites[0].x = 116;
+    big_sites[0].y = 0;
+    big_sites[1].x = 106;
+    big_sites[1].y = -3;
+    big_sites[2].x = 38;
+    big_sites[2].y = 115;
+    check_bands("bands-side-wedge", &f, 3, 16);
+
+    /* a lattice whose bisectors run along the band seams (rows 16k) and
+     * through pixel centres and midpoints, indices reversed, duplicates */
+    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    uint32_t n = 0;
+    for (int32_t y = -8; y <= (int32_t)BIG_H + 8 && n + 1u < BIG_SITES; y += 16) {
+        for (int32_t x = -3; x <= (int32_t)BIG_W + 3 && n + 1u < BIG_SITES; x += 7) {
+            big_sites[BIG_SITES - 1u - n].x = x;
+            big_sites[BIG_SITES - 1u - n].y = y;
+            n++;
+        }
+    }
+    uint32_t lattice = n;
+    for (uint32_t k = 0; k < BIG_SITES - lattice; k++) { /* duplicates, larger first */
+        big_sites[k] = big_sites[BIG_SITES - 1u - (k * 7u) % lattice];
+    }
+    check_bands("bands-lattice", &f, BIG_SITES, 16);
+    /* mirror pairs across the seam rows: equal lines on bottom edges */
+    n = 0;
+    for (int32_t seam = 16; seam < (int32_t)BIG_H && n + 6u <= BIG_SITES; seam += 16) {
+        for (int32_t t = 1; t <= 3; t++) {
+            int32_t x = test_rng_range(rng, -5, (int32_t)BIG_W + 5);
+            big_sites[n].x = x;
+            big_sites[n++].y = seam + t * 5;
+            big_sites[n].x = x;
+            big_sites[n++].y = seam - t * 5;
+        }
+    }
+    check_bands("bands-mirrors", &f, n, 16);
+    /* columns of sites (equal slopes), with equal x across many rows */
+    for (uint32_t k = 0; k < 120u; k++) {
+        big_sites[k].x = 4 + 11 * (int32_t)(k % 9u);
+        big_sites[k].y = test_rng_range(rng, -20, (int32_t)BIG_H + 20);
+    }
+    check_bands("bands-columns", &f, 120, 5);
+
+    /* the mid tier, the demo's scale: a 100 m floor in millimetres */
+    f = make_frame(-49844, -49792, 1247, 1011, BIG_W, BIG_H);
+    for (uint32_t k = 0; k < 200u; k++) {
+        big_sites[k].x = test_rng_range(rng, -50000, 70000);
+        big_sites[k].y = test_rng_range(rng, -50000, 60000);
+    }
+    check_bands("bands-mid", &f, 200, 16);
+    /* the wide tier: quotients of more than 32 bits (Cortex-M3 and
+     * RISC-V then divide step by step), few sites, far apart */
+    f = make_frame(-200000000, -100000000, 3000001, 4100003, 80, BIG_H);
+    for (uint32_t k = 0; k < 60u; k++) {
+        big_sites[k].x = test_rng_range(rng, -260000000, 260000000);
+        big_sites[k].y = test_rng_range(rng, -260000000, 260000000);
+    }
+    check_bands("bands-wide", &f, 60, 16);
+    /* wide, with sites on pixel centres (exact ties at pixels) */
+    for (uint32_t k = 0; k < 60u; k++) {
+        big_sites[k].x = f.origin_x + 3000001 * test_rng_range(rng, 0, 79);
+        big_sites[k].y = f.origin_y + 4100003 * test_rng_range(rng, 0, (int32_t)BIG_H - 1);
+    }
+    check_bands("bands-wide-centres", &f, 60, 11);
+}
+
 static int quiet_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
 {
     (void)first_row;
@@ -488,4 +702,5 @@ void test_raster(void)
     error_cases();
     random_cases(&rng);
     adversarial_cases(&rng);
+    band_cases(&rng);
 }
