@@ -420,7 +420,7 @@ static void check_bands(const char *name, const vor_raster_frame_t *f, uint32_t 
     }
     CHECK(fast, "%s: the case is within the fast path's budget", name);
     big_capture_t cap = {f->width, 0, 0};
-    vor_raster_sites_t set = {VOR_METRIC_EUCLID, big_sites, n};
+    vor_raster_sites_t set = {.metric = VOR_METRIC_EUCLID, .points = big_sites, .count = n};
     vor_raster_output_t out = {0};
     out.kind = VOR_RASTER_LABEL32;
     out.band = band;

@@ -75,7 +75,7 @@ static int render_frame(void)
     }
     /* the 100 m floor over 320x240 pixels: 312 mm by 416 mm each */
     vor_raster_frame_t frame = {-49844, -49792, 312, 416, FRAME_W, FRAME_H};
-    vor_raster_sites_t set = {VOR_METRIC_EUCLID, sites, FRAME_SITES};
+    vor_raster_sites_t set = {.metric = VOR_METRIC_EUCLID, .points = sites, .count = FRAME_SITES};
     stream_t stream = {vor_port_file_open("build/demo.rgb565"), 0, 0, 0};
     vor_raster_output_t out = {VOR_RASTER_RGB565, band, sizeof band, BAND_ROWS, send_band,
                                &stream, colours, NULL, NULL, VOR_RASTER_FAST};
