@@ -593,6 +593,7 @@ typedef struct vor_tracker {
     vor_point_t at;     /* the site's coordinates */
     vor_point_t low, high; /* where the int64 tests are exact (q - at fits int32) */
     vor_tracker_edge_t edge[VOR_TRACKER_EDGES];
+    vor_index_t neighbour[VOR_TRACKER_EDGES]; /* the site across each edge */
 } vor_tracker_t;
 
 /* Starts a tracker on diagram d (no answer yet, nothing cached). Begin it

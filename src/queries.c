@@ -334,6 +334,7 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
             dy >= limit) {
             return; /* not cached: vor_nearest answers */
         }
+        tracker->neighbour[edges] = (vor_index_t)n;
         vor_tracker_edge_t *e = &tracker->edge[edges++];
         e->twice_dx = (int32_t)(2 * dx);
         e->twice_dy = (int32_t)(2 * dy);
@@ -347,12 +348,12 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
  * last answer, and the new answer's cell cached. Out of line, so that the
  * cached path pays for no registers of it. */
 static VOR__NOINLINE int track_by_walk(vor_tracker_t *tracker, int32_t x, int32_t y,
-                                       uint32_t *site)
+                                       uint32_t hint, uint32_t *site)
 {
     const vor_t *d = tracker->d;
     bool current = tracker->revision == d->revision && tracker->site != VOR_NO_HINT;
     uint32_t answer;
-    int err = vor_nearest(d, x, y, current ? tracker->site : VOR_NO_HINT, &answer);
+    int err = vor_nearest(d, x, y, current ? hint : VOR_NO_HINT, &answer);
     if (err != VOR_OK) {
         return err;
     }
@@ -380,6 +381,9 @@ int vor_track(vor_tracker_t *tracker, int32_t x, int32_t y, uint32_t *site)
             *site = tracker->site;
             return VOR_OK;
         }
+        /* the site across the edge is at least as close: the walk starts
+         * there, and skips the fan of the cell just left */
+        return track_by_walk(tracker, x, y, tracker->neighbour[edge - tracker->edge], site);
     }
-    return track_by_walk(tracker, x, y, site);
+    return track_by_walk(tracker, x, y, tracker->site, site);
 }
