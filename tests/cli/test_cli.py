@@ -432,6 +432,10 @@ def metric_nearest(metric, param, sites, q):
             return segment_square(q, site[0], site[1])
         if metric == "polygon":
             return polygon_square(q, site)
+        if metric == "polyline":
+            pts = site[1:]
+            edges = [(pts[0], pts[0])] if len(pts) == 1 else list(zip(pts, pts[1:]))
+            return min(segment_square(q, a, b) for a, b in edges) / (site[0] * site[0])
         d = dx * dx + dy * dy
         return (d, site[2] if metric != "add" else 1, site[-1] if metric != "mult" else 0)
     best = 0
@@ -452,13 +456,16 @@ def raster_metric_cases(rng, tmp):
     def site_line(metric, site):
         if metric in ("hausdorff", "polygon"):
             return " ".join(f"{x} {y}" for x, y in site)
+        if metric == "polyline":
+            return f"{site[0]} " + " ".join(f"{x} {y}" for x, y in site[1:])
         if metric == "segment":
             return f"{site[0][0]} {site[0][1]} {site[1][0]} {site[1][1]}"
         return " ".join(str(v) for v in site)
     metrics = [("l1", None, "l1"), ("linf", None, "linf"), ("lp", 3, "lp:3"), ("lp", 8, "lp:8"),
                ("ellip", (3, -1, 2), "ellip:3,-1,2"), ("mult", None, "mult"), ("add", None, "add"),
                ("comp", None, "comp"), ("farthest", None, "farthest"), ("hausdorff", None, "hausdorff"),
-               ("segment", None, "segment"), ("polygon", None, "polygon")]
+               ("segment", None, "segment"), ("polygon", None, "polygon"),
+               ("polyline", None, "polyline")]
     for metric, param, arg in metrics:
         for n in range(3):
             w, h = rng.randint(1, 21), rng.randint(1, 19)
@@ -478,6 +485,8 @@ def raster_metric_cases(rng, tmp):
                     sites.append(p + (rng.randint(1, 3), rng.randint(-4, 4)))
                 elif metric == "segment":
                     sites.append((p, pt(n == 1) if k % 3 else p))
+                elif metric == "polyline":
+                    sites.append([rng.randint(1, 4), p] + [(p[0] + rng.randint(-6, 6), p[1] + rng.randint(-6, 6)) for _ in range(rng.randint(0, 4))])
                 elif metric in ("hausdorff", "polygon"):
                     sites.append([p] + [(p[0] + rng.randint(-6, 6), p[1] + rng.randint(-6, 6)) for _ in range(rng.randint(0, 4))])
                 else:
@@ -506,7 +515,8 @@ def raster_metric_cases(rng, tmp):
     # bad site lines and metric arguments: status 2 and the line number
     bad = [("mult", "1 2 3\n4 5 0\n", 2), ("mult", "1 2\n", 1), ("comp", "# c\n1 2 3\n", 2),
            ("comp", "1 2 -1 5\n", 1), ("add", "1 2 3 4\n", 1), ("segment", "1 2 3\n", 1),
-           ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1)]
+           ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1),
+           ("polyline", "2 1 2 3 4\n0 5 6\n", 2), ("polyline", "1 1 2 3\n", 1)]
     for metric, text, line in bad:
         bp = os.path.join(tmp, "bad.sites")
         with open(bp, "w") as f:
