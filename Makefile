@@ -11,6 +11,7 @@
 #   make bench-predicates   predicate speed: host ns and target instructions
 #   make bench-query        nearest-site queries: vor against nanoflann and CGAL,
 #                           and target instructions per coherent query
+#   make run-example-contours  contour interpolation (host): build/contours.png
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #

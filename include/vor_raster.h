@@ -58,8 +58,9 @@
  * OTHER METRICS
  *   sites->metric also takes L1, L-infinity, Lp (p = 1..8), elliptic
  *   (a dx^2 + 2b dx dy + c dy^2), multiplicative, additive and compound
- *   weights, the farthest-point diagram, Hausdorff point sets, segments
- *   and filled polygons (vor_raster_sites_t says which fields each uses).
+ *   weights, the farthest-point diagram, Hausdorff point sets, segments,
+ *   filled polygons and (weighted) polylines (vor_raster_sites_t says
+ *   which fields each uses).
  *   Each is compared exactly, over all int32 coordinates and weights: no
  *   valid input is out of budget. VOR_RASTER_FAST culls sites per tile of
  *   16 x 16 pixels with exact bounds of each site's distance over the
@@ -109,7 +110,8 @@ enum vor_metric {
     VOR_METRIC_FARTHEST = 8,  /* point sites, the farthest site wins */
     VOR_METRIC_HAUSDORFF = 9, /* point sets, distance to the set's farthest point */
     VOR_METRIC_SEGMENT = 10,  /* line segments, Euclidean distance to the segment */
-    VOR_METRIC_POLYGON = 11   /* filled polygons, 0 inside, else to the boundary */
+    VOR_METRIC_POLYGON = 11,  /* filled polygons, 0 inside, else to the boundary */
+    VOR_METRIC_POLYLINE = 12  /* open polylines, distance to the nearest point / w */
 };
 
 /* The sites of a frame. Fields a metric does not use are ignored, so a
@@ -119,18 +121,24 @@ enum vor_metric {
  *   FARTHEST): site k is points[k].
  *   SEGMENT: site k is the segment points[2k] - points[2k + 1] (equal
  *   ends: a point).
- *   HAUSDORFF, POLYGON: site k is points[offsets[k]] .. points[offsets[k+1]
- *   - 1], at least one point (offsets has count + 1 increasing entries).
+ *   HAUSDORFF, POLYGON, POLYLINE: site k is points[offsets[k]] ..
+ *   points[offsets[k+1] - 1], at least one point (offsets has count + 1
+ *   increasing entries).
  *   A polygon's vertices go around it in either direction; 1 vertex is a
  *   point, 2 a segment, 3 or more a closed polygon whose inside (nonzero
- *   winding number) and boundary are at distance 0. */
+ *   winding number) and boundary are at distance 0.
+ *   POLYLINE: the vertices joined in order, not closed (a closed curve
+ *   repeats its first vertex at the end); 1 vertex is a point. With
+ *   mult_weights (optional, NULL: every weight 1) the distance to site k
+ *   is divided by mult_weights[k] >= 1: multiplicatively weighted curves,
+ *   the contour interpolation of seed 002 chapter 6. */
 typedef struct vor_raster_sites {
     enum vor_metric metric;
     const vor_point_t *points;
     uint32_t count;                 /* sites, >= 1 */
-    const int32_t *mult_weights;    /* MULT, COMPOUND: [count], each >= 1 */
+    const int32_t *mult_weights;    /* MULT, COMPOUND (, POLYLINE): [count], each >= 1 */
     const int32_t *add_weights;     /* ADD, COMPOUND: [count], any int32 */
-    const uint32_t *offsets;        /* HAUSDORFF, POLYGON: [count + 1] */
+    const uint32_t *offsets;        /* HAUSDORFF, POLYGON, POLYLINE: [count + 1] */
     uint32_t lp_exponent;           /* LP: p in 1 .. 8 */
     int32_t form_a, form_b, form_c; /* ELLIPTIC: a > 0 and a c > b^2 */
 } vor_raster_sites_t;

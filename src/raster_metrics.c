@@ -1,8 +1,8 @@
 /*
  * raster_metrics.c - vor_raster for every metric but Euclidean point
  * sites: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
- * compound), farthest-point, Hausdorff point sets, segments and filled
- * polygons (seed 002: section 2.3 defines the generalised diagrams,
+ * compound), farthest-point, Hausdorff point sets, segments, filled
+ * polygons and multiplicatively weighted polylines (seed 002: section 2.3 defines the generalised diagrams,
  * chapter 5 the distances). Each pixel takes the site of smallest distance
  * (largest for the farthest-point diagram), ties to the smaller index:
  * Definition 2.2 with another distance.
@@ -204,7 +204,8 @@ static void mw_times4(vor__limb *r, const vor__limb *a, size_t n)
  *   LP                               num = |dx|^p + |dy|^p (lp_narrow), else wide
  *   MULT, ADD, COMPOUND              num = squared Euclidean distance,
  *                                    w1, w2 = the site's weights
- *   ELLIPTIC, SEGMENT, POLYGON       the rational (squared ? num^2 : num) / den
+ *   ELLIPTIC, SEGMENT, POLYGON,      the rational (squared ? num^2 : num) / den
+ *   POLYLINE                         (POLYLINE: den includes the weight^2)
  */
 typedef struct key {
     u128_t num;
@@ -322,7 +323,9 @@ static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, 
 
 /* (squared ? num^2 : num) / den compared exactly: a / b < c / d iff
  * a d < c b (denominators >= 1). Numerators are below 2^130, denominators
- * below 2^65, so the cross products stay below 2^195. */
+ * below 2^65 (segments, polygons), 2^127 (weighted polylines: 2^65 times
+ * a squared weight below 2^62) or 2^32 (elliptic bounds), so the cross
+ * products stay below 2^257. */
 static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 {
     int a_unit = !a->squared && a->den.lo == 1u && a->den.hi == 0u;
@@ -337,7 +340,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
         return u128_cmp(u128_mul(an, b->den.lo), u128_mul(bn, a->den.lo));
     }
-    enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(256) };
+    enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
     vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
     limbs_from_u128(num, NUM, a->num);
     if (a->squared) {
@@ -426,6 +429,7 @@ static int key_compare(const vor__metric_t *m, const rank_key_t *a, const rank_k
     case VOR_METRIC_ELLIPTIC:
     case VOR_METRIC_SEGMENT:
     case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE:
         return rational_compare(a, b);
     case VOR_METRIC_MULT: {
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
@@ -476,6 +480,30 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
     return winding != 0;
 }
 
+/* k = edge when edge is smaller, member by member: no struct copy (memcpy
+ * on Cortex-M0). */
+static void keep_smaller(rank_key_t *k, const rank_key_t *edge)
+{
+    if (rational_compare(edge, k) < 0) {
+        k->num.lo = edge->num.lo;
+        k->num.hi = edge->num.hi;
+        k->den.lo = edge->den.lo;
+        k->den.hi = edge->den.hi;
+        k->squared = edge->squared;
+    }
+}
+
+/* The squared weight of polyline site `site` (1 without weights): below
+ * 2^62. */
+static uint64_t polyline_weight2(const vor_raster_sites_t *s, uint32_t site)
+{
+    if (s->mult_weights == NULL) {
+        return 1u;
+    }
+    uint32_t w = (uint32_t)s->mult_weights[site];
+    return vor__mul_u32(w, w);
+}
+
 /* The key of site `site` at the pixel centre (qx, qy). */
 static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
 {
@@ -515,15 +543,22 @@ static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t 
         rank_key_t edge;
         for (uint32_t i = 1; count >= 3u && i < count; i++) {
             segment_key(&p[i], &p[i + 1u == count ? 0u : i + 1u], qx, qy, &edge);
-            if (rational_compare(&edge, k) < 0) {
-                /* member by member: no struct copy (memcpy on Cortex-M0) */
-                k->num.lo = edge.num.lo;
-                k->num.hi = edge.num.hi;
-                k->den.lo = edge.den.lo;
-                k->den.hi = edge.den.hi;
-                k->squared = edge.squared;
-            }
+            keep_smaller(k, &edge);
         }
+        break;
+    }
+    case VOR_METRIC_POLYLINE: {
+        /* the smallest segment key (unweighted: one weight per site), then
+         * divided by w^2: the denominator stays below 2^65 * 2^62 */
+        const vor_point_t *p = &s->points[s->offsets[site]];
+        uint32_t count = s->offsets[site + 1u] - s->offsets[site];
+        segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
+        rank_key_t edge;
+        for (uint32_t i = 1; i + 1u < count; i++) {
+            segment_key(&p[i], &p[i + 1u], qx, qy, &edge);
+            keep_smaller(k, &edge);
+        }
+        k->den = u128_mul64(k->den, polyline_weight2(s, site));
         break;
     }
     default: {
@@ -577,7 +612,9 @@ VOR__INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
  *   HAUSDORFF: the largest of the points' bounds;
  *   SEGMENT, POLYGON: the site lies in its bounding box, so the gap
  *     between that box and r is a lower bound; the distance to one of its
- *     points (an end, the first vertex) an upper one.
+ *     points (an end, the first vertex) an upper one;
+ *   POLYLINE: the same bounding-box gap below, the nearest vertex's
+ *     farthest corner above, both divided by the site's w^2.
  */
 static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
 {
@@ -617,7 +654,8 @@ static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int w
         break;
     }
     case VOR_METRIC_SEGMENT:
-    case VOR_METRIC_POLYGON: {
+    case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE: {
         const vor_point_t *p;
         uint32_t count;
         if (m->metric == VOR_METRIC_SEGMENT) {
@@ -629,11 +667,17 @@ static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int w
         }
         if (worst) {
             u128_t d = farthest_corner(&p[0], r);
-            if (m->metric == VOR_METRIC_SEGMENT) {
-                u128_t other = farthest_corner(&p[1], r);
+            uint32_t reached = m->metric == VOR_METRIC_SEGMENT    ? 2u
+                               : m->metric == VOR_METRIC_POLYLINE ? count
+                                                                  : 1u;
+            for (uint32_t i = 1; i < reached; i++) {
+                u128_t other = farthest_corner(&p[i], r);
                 d = u128_cmp(other, d) < 0 ? other : d;
             }
             set_unit(k, d);
+            if (m->metric == VOR_METRIC_POLYLINE) {
+                k->den = u128_of(polyline_weight2(s, site));
+            }
             break;
         }
         int32_t x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
@@ -644,6 +688,9 @@ static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int w
             y1 = p[i].y > y1 ? p[i].y : y1;
         }
         set_unit(k, square_sum(interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1)));
+        if (m->metric == VOR_METRIC_POLYLINE) {
+            k->den = u128_of(polyline_weight2(s, site));
+        }
         break;
     }
     default: {
@@ -831,12 +878,17 @@ int vor__metric_check(const vor_raster_sites_t *s)
         return VOR_OK;
     case VOR_METRIC_HAUSDORFF:
     case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE:
         if (s->offsets == NULL) {
             return VOR_ERR_ARG;
         }
         for (uint32_t k = 0; k < s->count; k++) {
             if (s->offsets[k] >= s->offsets[k + 1u]) {
                 return VOR_ERR_ARG; /* every site has a point */
+            }
+            if (s->metric == VOR_METRIC_POLYLINE && s->mult_weights != NULL &&
+                s->mult_weights[k] < 1) {
+                return VOR_ERR_ARG;
             }
         }
         return VOR_OK;
@@ -900,7 +952,8 @@ void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
         end = 2u * s->count;
     }
     for (uint32_t k = 0; k < s->count; k++) {
-        if (s->metric == VOR_METRIC_HAUSDORFF || s->metric == VOR_METRIC_POLYGON) {
+        if (s->metric == VOR_METRIC_HAUSDORFF || s->metric == VOR_METRIC_POLYGON ||
+            s->metric == VOR_METRIC_POLYLINE) {
             first = s->offsets[k];
             end = s->offsets[k + 1u];
         } else if (k > 0u) {

@@ -357,6 +357,26 @@ static void polygon_square(ref_ratio_t *r, int32_t qx, int32_t qy, const vor_poi
     }
 }
 
+/* Squared distance to an open polyline divided by its squared weight: the
+ * smallest over its segments (one vertex: the point), den times w^2. */
+static void polyline_square(ref_ratio_t *r, int32_t qx, int32_t qy, const vor_point_t *p,
+                            uint32_t count, int64_t weight)
+{
+    segment_square(r, qx, qy, &p[0], &p[count > 1u ? 1u : 0u]);
+    for (uint32_t i = 1; i + 1u < count; i++) {
+        ref_ratio_t e;
+        segment_square(&e, qx, qy, &p[i], &p[i + 1u]);
+        if (ratio_compare(&e, r) < 0) {
+            *r = e;
+        }
+    }
+    ref_big_t w, w2, den;
+    ref_big_set(&w, (uint64_t)weight);
+    ref_big_mul(&w2, &w, &w);
+    ref_big_mul(&den, &r->den, &w2);
+    r->den = den;
+}
+
 /* a * (a Q) = (a dx + b dy)^2 + (a c - b^2) dy^2: the elliptic form
  * completed to a square, times a > 0 (the same factor for every site). */
 static void elliptic_scaled(ref_big_t *r, const vor_raster_sites_t *s, int32_t qx, int32_t qy,
@@ -602,11 +622,16 @@ uint32_t ref_nearest_metric(const vor_raster_sites_t *s, int32_t qx, int32_t qy,
         return best;
     }
     case VOR_METRIC_SEGMENT:
-    case VOR_METRIC_POLYGON: {
+    case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE: {
         ref_ratio_t best_r, r;
         for (uint32_t k = 0; k < s->count; k++) {
             if (s->metric == VOR_METRIC_SEGMENT) {
                 segment_square(&r, qx, qy, &s->points[2u * k], &s->points[2u * k + 1u]);
+            } else if (s->metric == VOR_METRIC_POLYLINE) {
+                polyline_square(&r, qx, qy, &s->points[s->offsets[k]],
+                                s->offsets[k + 1u] - s->offsets[k],
+                                s->mult_weights != NULL ? s->mult_weights[k] : 1);
             } else {
                 polygon_square(&r, qx, qy, &s->points[s->offsets[k]],
                                s->offsets[k + 1u] - s->offsets[k]);

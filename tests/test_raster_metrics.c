@@ -29,7 +29,8 @@ static uint32_t areas[MAX_SITES];
 
 static const char *const metric_names[] = {"euclid", "l1",       "linf",      "lp",
                                            "ellip",  "mult",     "add",       "comp",
-                                           "farthest", "hausdorff", "segment", "polygon"};
+                                           "farthest", "hausdorff", "segment", "polygon",
+                                           "polyline"};
 
 typedef struct capture {
     uint32_t next_row;
@@ -447,6 +448,71 @@ static void polygon_cases(test_rng_t *rng)
     check_frame("inside", &f, &set);
 }
 
+/* Weighted polylines (contour interpolation, seed 002 chapter 6): random
+ * ones with and without weights; nested closed curves and open ones with
+ * the ratios 1 : 3, 2 : 2, 3 : 1 whose boundaries pass through pixel
+ * centres (exact ties); a point and repeated vertices. */
+static void polyline_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f;
+    for (uint32_t round = 0; round < 6u; round++) {
+        random_frame(rng, &f);
+        uint32_t n = 1u + test_rng_u32(rng) % 10u, at = 0;
+        for (uint32_t k = 0; k < n; k++) {
+            offsets[k] = at;
+            uint32_t size = 1u + test_rng_u32(rng) % 8u;
+            int32_t x = centre_x(&f, test_rng_u32(rng) % f.width);
+            int32_t y = centre_y(&f, test_rng_u32(rng) % f.height);
+            for (uint32_t i = 0; i < size; i++) {
+                points[at].x = x;
+                points[at].y = y;
+                x += test_rng_range(rng, -12, 12);
+                y += test_rng_range(rng, -12, 12);
+                at++;
+            }
+            mult[k] = 1 + (int32_t)(test_rng_u32(rng) % 7u);
+        }
+        offsets[n] = at;
+        vor_raster_sites_t set = point_set(VOR_METRIC_POLYLINE, n);
+        if (round % 3u == 2u) {
+            set.mult_weights = NULL;
+        }
+        check_frame("random", &f, &set);
+    }
+    /* nested squares 2 .. 37 and 14 .. 25 (closed by repeating the first
+     * vertex), a horizontal open line, a point, a repeated vertex */
+    f = make_frame(0, 0, 1, 1, 40, 36);
+    static const int32_t v[] = {
+        /* site 0 */ 2, 2, 37, 2, 37, 33, 2, 33, 2, 2,
+        /* site 1 */ 14, 14, 25, 14, 25, 25, 14, 25, 14, 14,
+        /* site 2 */ 18, 18,
+        /* site 3 */ 0, 35, 20, 35, 20, 35, 39, 35};
+    static const uint32_t sizes[] = {5, 5, 1, 4};
+    for (uint32_t i = 0; i < sizeof v / sizeof v[0] / 2u; i++) {
+        points[i].x = v[2u * i];
+        points[i].y = v[2u * i + 1u];
+    }
+    uint32_t at = 0;
+    for (uint32_t k = 0; k < 4u; k++) {
+        offsets[k] = at;
+        at += sizes[k];
+    }
+    offsets[4] = at;
+    vor_raster_sites_t set = point_set(VOR_METRIC_POLYLINE, 4);
+    static const int32_t ratios[][4] = {{1, 3, 2, 1}, {2, 2, 1, 5}, {3, 1, 4, 4}, {6, 2, 1, 3}};
+    for (uint32_t r = 0; r < 4u; r++) {
+        for (uint32_t k = 0; k < 4u; k++) {
+            mult[k] = ratios[r][k];
+        }
+        check_frame("nested", &f, &set);
+    }
+    /* only the two squares: the interpolation's pairwise diagram */
+    set.count = 2;
+    mult[0] = 1;
+    mult[1] = 3;
+    check_frame("pair", &f, &set);
+}
+
 /* ----------------------------------------------- huge and overflowing */
 
 /* Coordinates and weights over the whole int32 range: the widest
@@ -457,7 +523,7 @@ static void huge_cases(test_rng_t *rng)
     static const enum vor_metric metrics[] = {
         VOR_METRIC_L1,       VOR_METRIC_LINF,     VOR_METRIC_LP,       VOR_METRIC_ELLIPTIC,
         VOR_METRIC_MULT,     VOR_METRIC_ADD,      VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST,
-        VOR_METRIC_HAUSDORFF, VOR_METRIC_SEGMENT, VOR_METRIC_POLYGON};
+        VOR_METRIC_HAUSDORFF, VOR_METRIC_SEGMENT, VOR_METRIC_POLYGON, VOR_METRIC_POLYLINE};
     for (unsigned m = 0; m < sizeof metrics / sizeof metrics[0]; m++) {
         uint32_t n = 12;
         for (uint32_t k = 0; k < 3u * n; k++) {
@@ -541,7 +607,7 @@ static void error_cases(void)
     out.flush = quiet_flush;
     out.user = &flushes;
     size_t bytes = VOR_RASTER_WORK_BYTES(8, 10);
-    for (int m = VOR_METRIC_L1; m <= VOR_METRIC_POLYGON; m++) {
+    for (int m = VOR_METRIC_L1; m <= VOR_METRIC_POLYLINE; m++) {
         vor_raster_sites_t set = point_set((enum vor_metric)m, 4);
         CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors %s: valid base",
               metric_names[m]);
@@ -607,11 +673,19 @@ static void error_cases(void)
     CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty polygon");
     set.metric = VOR_METRIC_HAUSDORFF;
     CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty point set");
+    set.metric = VOR_METRIC_POLYLINE;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty polyline");
     offsets[2] = 2;
+    mult[3] = 0;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: polyline weight 0");
+    set.mult_weights = NULL;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors: polyline needs no weights");
+    flushes = 0;
+    mult[3] = 1;
     set.offsets = NULL;
     CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: no offsets");
-    set.metric = (enum vor_metric)12;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: metric 12");
+    set.metric = (enum vor_metric)13;
+    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: metric 13");
     CHECK(flushes == 0, "errors: a failed call flushed %u bands", flushes);
 }
 
@@ -625,6 +699,7 @@ void test_raster_metrics(void)
     hausdorff_cases(&rng);
     segment_cases(&rng);
     polygon_cases(&rng);
+    polyline_cases(&rng);
     huge_cases(&rng);
     pool_overflow_case();
 }

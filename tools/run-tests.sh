@@ -61,9 +61,10 @@ suite host tests PORT=host
 suite host-sanitize tests PORT=host SANITIZE=1
 suite host-faults fault-tests PORT=host SANITIZE=1
 
-# The host command-line tool, against a Python big-integer oracle.
+# The host command-line tool and examples/contours, against a Python
+# big-integer oracle.
 cli_log="$logs/cli.log"
-if make -s -j"$jobs" PORT=host all >"$cli_log" 2>&1; then
+if make -s -j"$jobs" PORT=host all build/host/example-contours >"$cli_log" 2>&1; then
     python3 tests/cli/test_cli.py build/host/vor >>"$cli_log" 2>&1
     record cli "$cli_log" $?
 else

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Tests of the host command-line tool build/host/vor.
+"""Tests of the host command-line tool build/host/vor (and of
+examples/contours, build/host/example-contours beside it).
 
 Expected answers come from Python's big integers, independently of the C
 code. Prints failures and ends with "N passed, N failed"; exit status 1 if
@@ -432,6 +433,10 @@ def metric_nearest(metric, param, sites, q):
             return segment_square(q, site[0], site[1])
         if metric == "polygon":
             return polygon_square(q, site)
+        if metric == "polyline":
+            pts = site[1:]
+            edges = [(pts[0], pts[0])] if len(pts) == 1 else list(zip(pts, pts[1:]))
+            return min(segment_square(q, a, b) for a, b in edges) / (site[0] * site[0])
         d = dx * dx + dy * dy
         return (d, site[2] if metric != "add" else 1, site[-1] if metric != "mult" else 0)
     best = 0
@@ -452,13 +457,16 @@ def raster_metric_cases(rng, tmp):
     def site_line(metric, site):
         if metric in ("hausdorff", "polygon"):
             return " ".join(f"{x} {y}" for x, y in site)
+        if metric == "polyline":
+            return f"{site[0]} " + " ".join(f"{x} {y}" for x, y in site[1:])
         if metric == "segment":
             return f"{site[0][0]} {site[0][1]} {site[1][0]} {site[1][1]}"
         return " ".join(str(v) for v in site)
     metrics = [("l1", None, "l1"), ("linf", None, "linf"), ("lp", 3, "lp:3"), ("lp", 8, "lp:8"),
                ("ellip", (3, -1, 2), "ellip:3,-1,2"), ("mult", None, "mult"), ("add", None, "add"),
                ("comp", None, "comp"), ("farthest", None, "farthest"), ("hausdorff", None, "hausdorff"),
-               ("segment", None, "segment"), ("polygon", None, "polygon")]
+               ("segment", None, "segment"), ("polygon", None, "polygon"),
+               ("polyline", None, "polyline")]
     for metric, param, arg in metrics:
         for n in range(3):
             w, h = rng.randint(1, 21), rng.randint(1, 19)
@@ -478,6 +486,8 @@ def raster_metric_cases(rng, tmp):
                     sites.append(p + (rng.randint(1, 3), rng.randint(-4, 4)))
                 elif metric == "segment":
                     sites.append((p, pt(n == 1) if k % 3 else p))
+                elif metric == "polyline":
+                    sites.append([rng.randint(1, 4), p] + [(p[0] + rng.randint(-6, 6), p[1] + rng.randint(-6, 6)) for _ in range(rng.randint(0, 4))])
                 elif metric in ("hausdorff", "polygon"):
                     sites.append([p] + [(p[0] + rng.randint(-6, 6), p[1] + rng.randint(-6, 6)) for _ in range(rng.randint(0, 4))])
                 else:
@@ -506,7 +516,8 @@ def raster_metric_cases(rng, tmp):
     # bad site lines and metric arguments: status 2 and the line number
     bad = [("mult", "1 2 3\n4 5 0\n", 2), ("mult", "1 2\n", 1), ("comp", "# c\n1 2 3\n", 2),
            ("comp", "1 2 -1 5\n", 1), ("add", "1 2 3 4\n", 1), ("segment", "1 2 3\n", 1),
-           ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1)]
+           ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1),
+           ("polyline", "2 1 2 3 4\n0 5 6\n", 2), ("polyline", "1 1 2 3\n", 1)]
     for metric, text, line in bad:
         bp = os.path.join(tmp, "bad.sites")
         with open(bp, "w") as f:
@@ -518,6 +529,114 @@ def raster_metric_cases(rng, tmp):
         r = run(["raster", "--size", "4", "4", "--metric", arg, os.path.join(tmp, "l1-0.sites"), "--labels",
                  os.path.join(tmp, "bad.raw")], "")
         check(r.returncode == 2 and r.stderr.startswith("error: --metric"), f"raster --metric {arg}: {r.returncode} {r.stderr!r}")
+
+
+def contour_labels(contours, frame, alpha):
+    """examples/contours' pairwise rule (its top comment), brute force with
+    exact fractions: per step i = 1 .. alpha - 1, the label grid."""
+    (ox, oy, sx, sy, w, h) = frame
+    cs = [pts for _, pts in sorted(contours, key=lambda c: c[0])]
+    n = len(cs)
+    def sq(q, pts):
+        edges = [(pts[0], pts[0])] if len(pts) == 1 else list(zip(pts, pts[1:]))
+        return min(segment_square(q, a, b) for a, b in edges)
+    def closed(pts):
+        return len(pts) >= 4 and pts[0] == pts[-1]
+    def inside(pts, q):
+        winding = 0
+        for a, b in zip(pts, pts[1:]):
+            if a[1] <= q[1] < b[1] and orient(a, b, q) > 0:
+                winding += 1
+            elif b[1] <= q[1] < a[1] and orient(a, b, q) < 0:
+                winding -= 1
+        return winding != 0
+    grids = [[[0] * w for _ in range(h)] for _ in range(alpha - 1)]
+    for y in range(h):
+        for x in range(w):
+            q = (ox + x * sx, oy + y * sy)
+            d = [sq(q, c) for c in cs]
+            k = min(range(n), key=lambda t: (d[t], t))
+            lower, upper = k > 0, k + 1 < n
+            if closed(cs[k]):
+                side = inside(cs[k], q)
+                tl = lower and inside(cs[k], cs[k - 1][0]) == side
+                tu = upper and inside(cs[k], cs[k + 1][0]) == side
+                if not tl and not tu and lower and upper:
+                    tl = tu = True
+                lower, upper = tl, tu
+            if lower and upper:
+                lower, upper = d[k - 1] <= d[k + 1], d[k - 1] > d[k + 1]
+            j = k - 1 if lower else k if upper else None
+            for i in range(1, alpha):
+                if j is None:
+                    grids[i - 1][y][x] = k
+                else:
+                    # c_j (weight i) wins ties against c_(j+1) (weight alpha - i)
+                    grids[i - 1][y][x] = j if d[j] * (alpha - i) ** 2 <= d[j + 1] * i * i else j + 1
+    return grids
+
+
+def contours_cases(rng, tmp):
+    """examples/contours --labels against contour_labels: the sample on a
+    coarse frame, random nested rings with an open contour, two hills."""
+    import os
+    example = os.path.join(os.path.dirname(VOR), "example-contours")
+    def ring(cx, cy, r, m):
+        pts = [(cx + round(r * [1, 0, -1, 0][t % 4] + rng.randint(-1, 1)),
+                cy + round(r * [0, 1, 0, -1][t % 4] + rng.randint(-1, 1))) for t in range(m)]
+        return pts + [pts[0]]
+    sample = []
+    for line in open("examples/contours/sample.txt"):
+        f = line.split()
+        if not f or f[0].startswith("#"):
+            continue
+        if f[0] == "contour":
+            sample.append((int(f[1]), []))
+        else:
+            sample[-1][1].append((int(f[0]), int(f[1])))
+    cases = [("sample", sample, (4, 4, 8, 8, 32, 32), 4)]
+    for t in range(3):
+        cx, cy = rng.randint(14, 20), rng.randint(12, 16)
+        cs = [(30, ring(cx, cy, 10, 4)), (40, ring(cx + 1, cy, 6, 4)), (50, ring(cx, cy + 1, 2, 4)),
+              (20, [(0, 26), (5, 29), (9, 31)])]
+        if t == 2:  # non-nested: two hills inside one ring, and a point summit
+            cs = [(10, ring(17, 15, 14, 4)), (20, ring(10, 15, 4, 4)), (30, ring(25, 15, 4, 4)), (40, [(25, 15)])]
+        cases.append((f"rings{t}", cs, (0, 0, 1, 1, 34, 32), 3 + t))
+    for name, cs, frame, alpha in cases:
+        cp = os.path.join(tmp, name + ".contours")
+        with open(cp, "w") as f:
+            for height, pts in cs:
+                f.write(f"contour {height}\n" + "".join(f"{x} {y}\n" for x, y in pts))
+        lp, pp = os.path.join(tmp, name + ".labels"), os.path.join(tmp, name + ".png")
+        (ox, oy, sx, sy, w, h) = frame
+        r = subprocess.run([example, cp, pp, "--size", str(w), str(h), "--origin", str(ox), str(oy),
+                            "--step", str(sx), str(sy), "--alpha", str(alpha), "--labels", lp],
+                           capture_output=True, text=True)
+        check(r.returncode == 0, f"contours {name}: status {r.returncode} {r.stderr}")
+        if r.returncode != 0:
+            continue
+        check(open(pp, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"contours {name}: not a PNG")
+        got, grid = [], None
+        for line in open(lp):
+            if line.startswith("step"):
+                grid = []
+                got.append(grid)
+            else:
+                grid.append([int(v) for v in line.split()])
+        want = contour_labels(cs, frame, alpha)
+        check(len(got) == alpha - 1, f"contours {name}: {len(got)} steps for alpha {alpha}")
+        for i, (g, e) in enumerate(zip(got, want)):
+            wrong = sum(g[y][x] != e[y][x] for y in range(h) for x in range(w)) if len(g) == h else w * h
+            check(wrong == 0, f"contours {name} step {i + 1}: {wrong} of {w * h} labels differ from brute force")
+            # the intermediate contour exists: some label changes inside a pair
+            edges = sum(e[y][x] != e[y][x + 1] for y in range(h) for x in range(w - 1))
+            check(edges > 0, f"contours {name} step {i + 1}: no boundary to compare")
+    bp = os.path.join(tmp, "bad.contours")
+    for text in ("1 2\n", "contour 5\n1 2\ncontour 6\n1 x\n", "contour 5\n1 2\n"):
+        with open(bp, "w") as f:
+            f.write(text)
+        r = subprocess.run([example, bp, os.path.join(tmp, "bad.png")], capture_output=True, text=True)
+        check(r.returncode == 2 and r.stderr.startswith("error: "), f"contours bad input {text!r}: {r.returncode} {r.stderr!r}")
 
 
 def main():
@@ -557,6 +676,7 @@ def main():
         raster_cases(rng, tmp)
         cells_cases(rng, tmp)
         raster_metric_cases(rng, tmp)
+        contours_cases(rng, tmp)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

@@ -1,7 +1,7 @@
 /*
  * vor raster --size W H --origin OX OY --step SX SY
  *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
- *                      hausdorff|segment|polygon]
+ *                      hausdorff|segment|polygon|polyline]
  *            [--band R] SITES (--labels OUT.raw | --png OUT.png)
  *
  * Renders the exact discrete Voronoi diagram of SITES with vor_raster in
@@ -13,6 +13,8 @@
  *   segment                                 x1 y1 x2 y2
  *   hausdorff, polygon                      x1 y1 [x2 y2 ...] (a point set;
  *                                           a polygon's vertices in order)
+ *   polyline                                w x1 y1 [x2 y2 ...] (w >= 1, the
+ *                                           vertices in order, open)
  * --labels writes W*H little-endian uint32 labels, row-major, row 0
  * (j = 0) first, each the index of the pixel's nearest site (farthest for
  * farthest; ties: the smaller index). --png writes an RGB picture, one
@@ -161,7 +163,17 @@ static void read_metric_sites(const char *path, enum vor_metric metric, site_fil
             fields = 4;
             shape = "x1 y1 x2 y2";
         }
-        if (metric == VOR_METRIC_HAUSDORFF || metric == VOR_METRIC_POLYGON) {
+        if (metric == VOR_METRIC_HAUSDORFF || metric == VOR_METRIC_POLYGON ||
+            metric == VOR_METRIC_POLYLINE) {
+            if (metric == VOR_METRIC_POLYLINE) {
+                if (!cli_int32_field(&cursor, &v[0], &why)) {
+                    cli_line_error(&in, why);
+                }
+                if (v[0] < 1) {
+                    cli_line_error(&in, "the multiplicative weight must be >= 1");
+                }
+                f->mult[f->count] = v[0];
+            }
             /* pairs until the end of the line, at least one */
             do {
                 if (!cli_int32_field(&cursor, &v[0], &why) || !cli_int32_field(&cursor, &v[1], &why)) {
@@ -241,7 +253,8 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
                  {"linf", VOR_METRIC_LINF},           {"mult", VOR_METRIC_MULT},
                  {"add", VOR_METRIC_ADD},             {"comp", VOR_METRIC_COMPOUND},
                  {"farthest", VOR_METRIC_FARTHEST},   {"hausdorff", VOR_METRIC_HAUSDORFF},
-                 {"segment", VOR_METRIC_SEGMENT},     {"polygon", VOR_METRIC_POLYGON}};
+                 {"segment", VOR_METRIC_SEGMENT},     {"polygon", VOR_METRIC_POLYGON},
+                 {"polyline", VOR_METRIC_POLYLINE}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         if (strcmp(text, names[i].name) == 0) {
             sites->metric = names[i].metric;
@@ -264,14 +277,14 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
         return;
     }
     cli_error("--metric: expected euclid, l1, linf, lp:P, ellip:A,B,C, mult, add, comp, "
-              "farthest, hausdorff, segment or polygon");
+              "farthest, hausdorff, segment, polygon or polyline");
 }
 
 int cli_raster(int argc, char **argv)
 {
     const char *usage = "usage: vor raster --size W H --origin OX OY --step SX SY "
                         "[--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|"
-                        "hausdorff|segment|polygon] [--band R] SITES (--labels OUT.raw | --png OUT.png)";
+                        "hausdorff|segment|polygon|polyline] [--band R] SITES (--labels OUT.raw | --png OUT.png)";
     vor_raster_frame_t frame = {0, 0, 1, 1, 0, 0};
     vor_raster_sites_t sites;
     memset(&sites, 0, sizeof sites);
