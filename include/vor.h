@@ -71,7 +71,8 @@
  *   triangulation under the perturbation. vor_validate checks every
  *   invariant; iterators list triangles and neighbours. A query without a
  *   hint starts from a coarse bucket grid kept in the arena (one site id
- *   per 16 sites), so it takes O(1) expected steps on uniform sites.
+ *   per VOR_SITES_PER_BUCKET = 4 sites), so it takes O(1) expected steps
+ *   on uniform sites.
  *
  * VORONOI GEOMETRY
  *   The geometry of the true Voronoi diagram of the distinct sites is read

@@ -49,9 +49,11 @@
  * site ids in the arena. Fewer sites per bucket: shorter walks for cold
  * queries, more memory (4 / VOR_SITES_PER_BUCKET bytes per site with
  * 32-bit ids, half that with 16-bit ones). A power of two keeps the
- * macro's division a shift. */
+ * macro's division a shift. At 4, cold queries at 10^5 and 10^6 sites
+ * keep pace with a kd-tree (docs/benchmarks.md); 16 saves 0.75 bytes a
+ * site on the host for walks about twice as long. */
 #ifndef VOR_SITES_PER_BUCKET
-#define VOR_SITES_PER_BUCKET 16u
+#define VOR_SITES_PER_BUCKET 4u
 #endif
 
 /* VOR_TRACKER_EDGES: the most Voronoi edges a vor_tracker_t caches for

@@ -4,9 +4,10 @@
  * expected steps on uniform sites instead of a walk across the diagram.
  *
  * The grid covers the sites' bounding box with square buckets, as many as
- * fit in VOR_BUCKETS(max_sites) entries (one per 16 sites: about 16 sites
- * a bucket when the diagram is full, so a walk from any of them to the
- * nearest site of a point in the bucket takes a few steps). Each bucket
+ * fit in VOR_BUCKETS(max_sites) entries (one per VOR_SITES_PER_BUCKET
+ * sites, 4 by default: about that many sites a bucket when the diagram is
+ * full, so a walk from its site to the nearest site of a point in the
+ * bucket takes a step or two). Each bucket
  * holds one site in it, or, when it has none, a site of the nearest
  * non-empty bucket before it in row order (after it, for leading empty
  * buckets): any site is a correct start, a near one is a fast start.

@@ -247,9 +247,11 @@ static void check_init(void)
         untouched &= small[i] == (uint8_t)(i * 7u + 3u);
     }
     CHECK(untouched, "init wrote the arena");
-    CHECK(VOR_ARENA_BYTES(500) == 500u * 8u + 998u * VOR_TRIANGLE_BYTES +
-                                      32u * sizeof(vor_index_t),
-          "VOR_ARENA_BYTES follows Euler's count, plus one bucket per 16 sites");
+    CHECK(VOR_ARENA_BYTES(500) ==
+              500u * 8u + 998u * VOR_TRIANGLE_BYTES +
+                  (500u + VOR_SITES_PER_BUCKET - 1u) / VOR_SITES_PER_BUCKET * sizeof(vor_index_t),
+          "VOR_ARENA_BYTES follows Euler's count, plus one bucket per %u sites",
+          (unsigned)VOR_SITES_PER_BUCKET);
 }
 
 /* 0 to 3 sites, by insertion and by build */
@@ -411,8 +413,11 @@ static void check_memory(void)
     CHECK(vor_init(&d, arena_a, sizeof arena_a, BIG_SITES) == VOR_OK, "init");
     CHECK(vor_build(&d, points, n, NULL, NULL) == VOR_OK, "build");
     CHECK(vor_memory(&d, &m) == VOR_OK, "memory");
-    /* issue 3's mesh budget, plus the bucket grid: one id per 16 sites */
-    uint32_t limit = (VOR_INDEX_BITS == 16) ? 3200u + 13u : 4800u + 25u;
+    /* issue 3's mesh budget, plus the bucket grid: one id per
+     * VOR_SITES_PER_BUCKET sites */
+    uint32_t limit = ((VOR_INDEX_BITS == 16) ? 3200u : 4800u) +
+                     (uint32_t)((100u * sizeof(vor_index_t) + VOR_SITES_PER_BUCKET - 1u) /
+                                VOR_SITES_PER_BUCKET);
     CHECK(m.bytes_per_site_x100 <= limit && m.used_bytes <= m.arena_bytes,
           "%u.%02u bytes per site", m.bytes_per_site_x100 / 100u, m.bytes_per_site_x100 % 100u);
     test_printf("mesh: %u.%02u bytes per site (%u-bit indices)\n", m.bytes_per_site_x100 / 100u,
