@@ -197,7 +197,7 @@ static bool is_single(const builder_t *b, vor_index_t part)
 }
 
 /* The vertex of triangle t that is neither a nor c. */
-static vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
+static inline vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
@@ -207,7 +207,7 @@ static vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
 /* In triangle `slot`, point the link across the edge {a, b} at `to`. By
  * vertices, not by the old slot: a two-site mesh's triangles are each
  * other's neighbour across all three edges. */
-static void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
+static inline void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
                         vor_index_t to)
 {
     vor__tri_t *t = &tri[slot];
@@ -230,7 +230,7 @@ static bool is_home(const builder_t *b, vor_index_t slot, vor_index_t v)
  * T2 = (a, e, c), in the two slots chosen so that each home slot still
  * holds a triangle of its site (incremental.c's flip, with infinity
  * allowed anywhere). Returns T1's slot in *t1 and T2's in *t2. */
-static void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *t1, vor_index_t *t2)
+static inline void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *t1, vor_index_t *t2)
 {
     vor__tri_t *tri = b->tri;
     vor__tri_t *t = &tri[s1];
@@ -638,6 +638,12 @@ static vor_index_t build_quadtree(builder_t *b, const vor_index_t *order, uint32
         while (end < v && cell_of(d, order[end], k, shift) == c) {
             end++;
         }
+        /* sites are numbered in input order, so the next buckets' sites
+         * and home slots lie anywhere in the arena */
+        for (uint32_t ahead = end; ahead < end + 4u && ahead + 12u < v; ahead++) {
+            VOR__PREFETCH(&d->sites[order[ahead + 12u]]);
+            VOR__PREFETCH(&b->tri[order[ahead + 12u]]);
+        }
         vor_index_t part = (end > pos) ? build_split(b, order + pos, end - pos) : VOR__NONE;
         pos = end;
         /* the children of one square are the squares of side 2^(k -
@@ -678,6 +684,45 @@ static vor_index_t build_quadtree(builder_t *b, const vor_index_t *order, uint32
     return root;
 }
 
+/* For the sorted ids[from, to) (equal points adjacent, the first
+ * occurrence first): reports the duplicates and empties their home slots,
+ * and packs the distinct ids right below ids[*w], back to front, lowering
+ * *w (in place when *w >= to). Returns their number. */
+static uint32_t take_distinct(vor_t *d, vor_index_t *ids, uint32_t from, uint32_t to,
+                              uint32_t *w, uint32_t *duplicate_of)
+{
+    const vor_point_t *p = d->sites;
+    vor__tri_t *tri = d->triangles;
+    if (from == to) {
+        return 0;
+    }
+    vor_index_t head = ids[from];
+    for (uint32_t i = from; i < to; i++) {
+        vor_index_t s = ids[i];
+        if (i > from && p[s].x == p[head].x && p[s].y == p[head].y) {
+            if (duplicate_of != NULL) {
+                duplicate_of[s] = head;
+            }
+            vor__tri_fresh(&tri[s]); /* a duplicate's home slot stays empty */
+            tri[s].n[0] = VOR__NONE;
+        } else {
+            head = s;
+            if (duplicate_of != NULL) {
+                duplicate_of[s] = s;
+            }
+        }
+    }
+    uint32_t count = 0;
+    for (uint32_t i = to; i-- > from;) {
+        vor_index_t s = ids[i];
+        if (i == from || p[ids[i - 1u]].x != p[s].x || p[ids[i - 1u]].y != p[s].y) {
+            ids[--*w] = s;
+            count++;
+        }
+    }
+    return count;
+}
+
 void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
 {
     vor__tri_t *tri = d->triangles;
@@ -704,6 +749,7 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
                      sizeof(vor_index_t);
     vor_index_t *ids = base + entries - n;
     bool quadtree = algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u;
+    uint32_t v = 0, w = n; /* distinct sites; they are ids[w, n) */
     if (quadtree) {
         /* buckets of two to eight sites: 2^k x 2^k, n / 8 < 4^k <= n / 2,
          * over the bounding square of side 2^shift */
@@ -737,44 +783,23 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
             ids[start[c]] = (vor_index_t)s;
             start[c]++;
         }
-        /* start[c] is now the end of bucket c */
-        for (uint32_t c = 0, from = 0; c < cells; c++) {
-            vor__sort_ids(p, ids + from, start[c] - from, VOR__SORT_LEX);
-            from = start[c];
+        /* start[c] is now the end of bucket c. Last bucket first, each
+         * sorted, its duplicates found and its distinct ids packed at the
+         * end, back to front, while its sites are in the cache (in place:
+         * a bucket's ids are written at or above where they are read) */
+        for (uint32_t c = cells; c-- > 0u;) {
+            uint32_t from = (c > 0u) ? start[c - 1u] : 0u;
+            if (start[c] - from > 1u) {
+                vor__sort_ids(p, ids + from, start[c] - from, VOR__SORT_LEX);
+            }
+            v += take_distinct(d, ids, from, start[c], &w, duplicate_of);
         }
     } else {
         for (uint32_t s = 0; s < n; s++) {
             ids[s] = (vor_index_t)s;
         }
         vor__sort_ids(p, ids, n, VOR__SORT_LEX);
-    }
-    /* duplicates: equal points are adjacent, the first occurrence first */
-    vor_index_t head = ids[0];
-    uint32_t v = 0;
-    for (uint32_t i = 0; i < n; i++) {
-        vor_index_t s = ids[i];
-        if (i > 0u && p[s].x == p[head].x && p[s].y == p[head].y) {
-            if (duplicate_of != NULL) {
-                duplicate_of[s] = head;
-            }
-            vor__tri_fresh(&tri[s]); /* a duplicate's home slot stays empty */
-            tri[s].n[0] = VOR__NONE;
-        } else {
-            head = s;
-            v++;
-            if (duplicate_of != NULL) {
-                duplicate_of[s] = s;
-            }
-        }
-    }
-    /* pack the distinct ones at the end, back to front (in place) */
-    uint32_t w = n;
-    for (uint32_t i = n; i-- > 0u;) {
-        vor_index_t s = ids[i];
-        bool first = i == 0u || p[ids[i - 1u]].x != p[s].x || p[ids[i - 1u]].y != p[s].y;
-        if (first) {
-            ids[--w] = s;
-        }
+        v = take_distinct(d, ids, 0, n, &w, duplicate_of);
     }
     const vor_index_t *order = ids + w;
 
