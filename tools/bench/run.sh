@@ -4,8 +4,11 @@
 #
 #   run.sh [delaunay] [ARGS...]   `make bench`: the Delaunay build.
 #       host: build/bench/delaunay-host (tools/bench/delaunay.cpp) times
-#       vor, CGAL and Boost.Polygon on 10^4, 10^5 and 10^6 sites of four
-#       input kinds and measures their memory;
+#       vor (incremental and both divide-and-conquer variants), CGAL and
+#       Boost.Polygon on 10^4, 10^5 and 10^6 sites of four input kinds and
+#       measures their memory, then time per site for uniform n = 2^7 ...
+#       2^20, plotted by tools/bench/plot_scaling.py into
+#       build/bench/delaunay-scaling.png;
 #       targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
 #       and RISC-V 32 gives instructions per inserted site for 1,000 and
 #       10,000 sites.
@@ -68,11 +71,21 @@ for port in $ports; do
 done
 
 rm -f "$out/$bench-host.md" "$out/$bench.md" # never report a stale table
+host_args=()
+if [ "$bench" = delaunay ]; then
+    rm -f "$out/delaunay-scaling.csv" "$out/delaunay-scaling.png"
+    host_args=(--scaling-csv "$out/delaunay-scaling.csv")
+fi
 host_status=0
-"$host" --out "$out/$bench-host.md" "$@" \
+"$host" --out "$out/$bench-host.md" "${host_args[@]}" "$@" \
     2> >(tee "$out/$bench-host.log" >&2) >/dev/null || host_status=$?
 [ -f "$out/$bench-host.md" ] || exit 1
 [ "$host_status" -eq 0 ] || status=1
+# time per site against log2 n, as a plot (docs/delaunay-scaling.png is one)
+if [ -f "$out/delaunay-scaling.csv" ]; then
+    python3 tools/bench/plot_scaling.py "$out/delaunay-scaling.csv" \
+        "$out/delaunay-scaling.png" || status=1
+fi
 
 # The target table of each benchmark, from "$out/$bench-PORT.txt".
 delaunay_targets() {
