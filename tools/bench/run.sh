@@ -11,7 +11,7 @@
 #       build/bench/delaunay-scaling.png;
 #       targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
 #       and RISC-V 32 gives instructions per inserted site for 1,000 and
-#       10,000 sites.
+#       10,000 sites (incremental in both orders, both D&C variants).
 #   run.sh query [ARGS...]        `make bench-query`: nearest-site queries.
 #       host: build/bench/query-host (tools/bench/query.cpp) times vor,
 #       nanoflann and CGAL on coherent and random queries over 10^3 to 10^6
@@ -104,10 +104,11 @@ for port in ports:
             if key not in rows:
                 rows.append(key)
             value[key, port] = f[3]
-order = {"build": "quadtree (default)", "build-input": "input order"}
+order = {"build": "quadtree (default)", "build-input": "input order",
+         "build-dc": "D&C x-split", "build-dc-quadtree": "D&C quadtree"}
 print("| sites | order | " + " | ".join(ports) + " |")
 print("|---|---|" + "---|" * len(ports))
-for key in sorted(rows, key=lambda k: (k[1], k[0])):
+for key in sorted(rows, key=lambda k: (k[1], list(order).index(k[0]) if k[0] in order else 9)):
     cells = [f"{key[1]:,}", order.get(key[0], key[0])] + [value.get((key, p), "-") for p in ports]
     print("| " + " | ".join(cells) + " |")
 PY
