@@ -567,9 +567,10 @@ struct pending {
  * single parts; after the i-th (1-based) the two top parts are merged once
  * for every trailing zero bit of i (equal sizes, 2^j each), and the rest
  * right to left at the end. The stack then holds one part per set bit of
- * i plus one: at most 23 for v < 2^22 (32-bit ids stop at 2^21). */
-#define SPLIT_STACK 24u
-static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
+ * i plus one, i < VOR_MAX_SITES: at most 15 with 16-bit ids (i < 2^15),
+ * 22 with 32-bit ids (i < 2^21). */
+#define SPLIT_STACK ((VOR_INDEX_BITS == 16) ? 15u : 22u)
+VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
 {
     struct pending stack[SPLIT_STACK];
     unsigned top = 0;
@@ -613,7 +614,9 @@ static vor_index_t combine(builder_t *b, vor_index_t f, vor_index_t s, unsigned 
  * buckets are visited in Z order, a base-4 counter: at each level the
  * finished bottom pair (or its first child) and the third child wait,
  * two words a level. */
-#define QUADTREE_LEVELS 13u /* k <= 12 */
+/* levels 0..k, 8 4^k <= n <= VOR_MAX_SITES: k <= 5 with 16-bit ids,
+ * k <= 8 with 32-bit ids */
+#define QUADTREE_LEVELS ((VOR_INDEX_BITS == 16) ? 6u : 9u)
 
 /* The least coordinate (x on axis 0, y on axis 1) in grid column (row)
  * `index` or beyond: (c - low) 2^k / 2^shift >= index iff
@@ -625,7 +628,7 @@ static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned
     return (int64_t)((axis == 0u) ? d->low.x : d->low.y) + (int64_t)offset;
 }
 
-static vor_index_t build_quadtree(builder_t *b, const vor_index_t *order, uint32_t v)
+VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, const vor_index_t *order, uint32_t v)
 {
     vor_t *d = b->d;
     unsigned k = b->k, shift = b->shift;
@@ -723,63 +726,46 @@ static uint32_t take_distinct(vor_t *d, vor_index_t *ids, uint32_t from, uint32_
     return count;
 }
 
-void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
+/* Sorts and deduplicates the site ids into the top of the triangle slots
+ * (see vor__build_dc), returning the number v of distinct sites; they are
+ * ids[*w, n). Out of line: its frame is not on the merges' stack. */
+VOR__NOINLINE static uint32_t order_sites(builder_t *b, vor_index_t *ids, uint32_t n,
+                                          bool quadtree, uint32_t *duplicate_of,
+                                          uint32_t *w_out)
 {
-    vor__tri_t *tri = d->triangles;
+    vor_t *d = b->d;
     const vor_point_t *p = d->sites;
-    builder_t b;
-    b.d = d;
-    b.tri = tri;
-    b.next_extra = d->max_sites;
-    b.axis = 0;
-    b.by_line = false;
-    b.f_above = false;
-    b.split = 0;
-    b.line = 0;
-    b.k = 0;
-    b.shift = 0;
-    /* the order at the top of the triangle slots: sorted in place, then the
-     * distinct sites packed at the very end. It is read front to back while
-     * merges fill extra slots from below: after the first i sites at most
-     * i - 2 extras are used, and (v - i) index entries fit above them
-     * because an index is smaller than a triangle; and it starts above the
-     * home slots for max_sites >= 3 (a two-slot mesh is read first). */
-    vor_index_t *base = (vor_index_t *)(void *)tri;
-    size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
-                     sizeof(vor_index_t);
-    vor_index_t *ids = base + entries - n;
-    bool quadtree = algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u;
     uint32_t v = 0, w = n; /* distinct sites; they are ids[w, n) */
     if (quadtree) {
         /* buckets of two to eight sites: 2^k x 2^k, n / 8 < 4^k <= n / 2,
          * over the bounding square of side 2^shift */
-        while (b.k < 12u && (8ull << (2u * b.k)) <= n) {
-            b.k++;
+        while (b->k + 1u < QUADTREE_LEVELS && (8ull << (2u * b->k)) <= n) {
+            b->k++;
         }
         uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
         uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
         span = (span_y > span) ? span_y : span;
-        while ((span >> b.shift) != 0u) {
-            b.shift++;
+        while ((span >> b->shift) != 0u) {
+            b->shift++;
         }
         /* a counting sort by bucket into ids, its counters right below
          * (cells + 1 <= n / 2 + 1 entries: above the home slots for
          * max_sites >= 3, and free until the build starts), then each
          * bucket sorted lexicographically: expected O(n) for spread-out
          * sites, and the equal points are adjacent as below */
-        uint32_t cells = 1u << (2u * b.k);
+        uint32_t cells = 1u << (2u * b->k);
         vor_index_t *start = ids - (cells + 1u);
         for (uint32_t c = 0; c <= cells; c++) {
             start[c] = 0;
         }
         for (uint32_t s = 0; s < n; s++) {
-            start[cell_of(d, (vor_index_t)s, b.k, b.shift) + 1u]++;
+            start[cell_of(d, (vor_index_t)s, b->k, b->shift) + 1u]++;
         }
         for (uint32_t c = 0; c < cells; c++) {
             start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
         }
         for (uint32_t s = 0; s < n; s++) {
-            uint32_t c = cell_of(d, (vor_index_t)s, b.k, b.shift);
+            uint32_t c = cell_of(d, (vor_index_t)s, b->k, b->shift);
             ids[start[c]] = (vor_index_t)s;
             start[c]++;
         }
@@ -801,6 +787,36 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
         vor__sort_ids(p, ids, n, VOR__SORT_LEX);
         v = take_distinct(d, ids, 0, n, &w, duplicate_of);
     }
+    *w_out = w;
+    return v;
+}
+
+void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
+{
+    builder_t b;
+    b.d = d;
+    b.tri = d->triangles;
+    b.next_extra = d->max_sites;
+    b.axis = 0;
+    b.by_line = false;
+    b.f_above = false;
+    b.split = 0;
+    b.line = 0;
+    b.k = 0;
+    b.shift = 0;
+    /* the order at the top of the triangle slots: sorted in place, then the
+     * distinct sites packed at the very end. It is read front to back while
+     * merges fill extra slots from below: after the first i sites at most
+     * i - 2 extras are used, and (v - i) index entries fit above them
+     * because an index is smaller than a triangle; and it starts above the
+     * home slots for max_sites >= 3 (a two-slot mesh is read first). */
+    vor_index_t *base = (vor_index_t *)(void *)d->triangles;
+    size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
+                     sizeof(vor_index_t);
+    vor_index_t *ids = base + entries - n;
+    bool quadtree = algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u;
+    uint32_t w;
+    uint32_t v = order_sites(&b, ids, n, quadtree, duplicate_of, &w);
     const vor_index_t *order = ids + w;
 
     b.bound = 2u * v + 2u;
