@@ -76,65 +76,128 @@
  * order of the plane turned by an infinitesimal angle, so the two halves
  * of a split are separated by a line and the leftmost site of a set is a
  * hull vertex even when many sites share an x. */
-static bool lex_less(const vor_point_t *s, vor_index_t a, vor_index_t b)
+static inline bool lex_less(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
     return s[a].x < s[b].x || (s[a].x == s[b].x && s[a].y < s[b].y);
 }
 
 /* The same turned by 90 degrees, (x', y') = (-y, x): top to bottom, for
  * vertical merges (seed 000 section 3.2: "rotate the algorithm"). */
-static bool lex_less_rotated(const vor_point_t *s, vor_index_t a, vor_index_t b)
+static inline bool lex_less_rotated(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
     return s[a].y > s[b].y || (s[a].y == s[b].y && s[a].x < s[b].x);
 }
 
-/* With ids breaking ties, for the sort (equal points adjacent, the first
- * occurrence first). */
-static bool lex_less_id(const vor_point_t *s, vor_index_t a, vor_index_t b)
+/* Axis 0: lex_less; axis 1: lex_less_rotated. */
+static inline bool axis_less(const vor_point_t *s, vor_index_t a, vor_index_t b, unsigned axis)
 {
-    if (s[a].x != s[b].x) {
-        return s[a].x < s[b].x;
-    }
-    if (s[a].y != s[b].y) {
-        return s[a].y < s[b].y;
-    }
-    return a < b;
+    return (axis == 0u) ? lex_less(s, a, b) : lex_less_rotated(s, a, b);
 }
 
 /* ------------------------------------------------------------------ */
-/* Components and the builder's state                                  */
+/* Parts and the builder's state                                       */
 
-/* A finished sub-triangulation: its size, its extreme sites in both
- * orders (axis 0: lex_less, axis 1: lex_less_rotated) and one of its
- * ghost triangles (count >= 2; a single site has no triangles). Slots of
- * other components never change during a merge, so the ghost stays. */
-typedef struct {
-    uint32_t count;
-    vor_index_t first[2], last[2]; /* the least and greatest site per axis */
-    vor_index_t ghost;
-} component_t;
-
+/* A finished sub-triangulation (a "part") is named by one index, so the
+ * explicit recursion stacks hold one or two words a level:
+ *   VOR__NONE        no sites (an empty quadtree bucket);
+ *   an empty slot    one site, whose home slot it is (single() empties it:
+ *                    a lone site has no triangle, its home slot is free);
+ *   any other slot   one of its ghost triangles. Slots of other parts never
+ *                    change during a merge, so the ghost stays one; and a
+ *                    merge returns its lower ghost, which its zipper never
+ *                    flips (the pocket beyond it would need a far vertex on
+ *                    the other side).
+ * Its extreme sites are read off its hull when it is merged
+ * (hull_extremes), not stored. */
 typedef struct {
     vor_t *d;
     vor__tri_t *tri;
     uint32_t next_extra; /* the next unused extra slot */
-    bool (*less)(const vor_point_t *, vor_index_t, vor_index_t); /* this merge's axis */
-    vor_index_t split;   /* the least site of S: v is in F iff v < split */
+    unsigned axis;       /* this merge's order: F before S on it */
+    /* Which side of this merge a site is on, exactly (guard C2 relies on
+     * it), by one of two rules:
+     *   by_line false: F = the sites before `split` on the axis (the
+     *     x-split: split = the least site of S);
+     *   by_line true: F = the sites whose coordinate (x on axis 0, y on
+     *     axis 1) is below `line`, or at or above it if f_above (quadtree
+     *     merges: the children are separated by a grid line). */
+    bool by_line, f_above;
+    vor_index_t split;
+    int64_t line;
+    unsigned k, shift;   /* the bucket grid (cell_of) */
     uint32_t bound;      /* step bound for walks around a vertex */
 } builder_t;
 
-static bool in_f(const builder_t *b, vor_index_t v)
+/* Spreads the low 16 bits of x to the even bit positions. */
+static inline uint32_t spread_bits(uint32_t x)
 {
-    return v != VOR__INFINITE && b->less(b->d->sites, v, b->split);
+    x &= 0xFFFFu;
+    x = (x | (x << 8)) & 0x00FF00FFu;
+    x = (x | (x << 4)) & 0x0F0F0F0Fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
 }
 
-static bool in_s(const builder_t *b, vor_index_t v)
+/* The inverse: the even bits of x, packed. */
+static inline uint32_t compact_bits(uint32_t x)
 {
-    return v != VOR__INFINITE && !b->less(b->d->sites, v, b->split);
+    x &= 0x55555555u;
+    x = (x | (x >> 1)) & 0x33333333u;
+    x = (x | (x >> 2)) & 0x0F0F0F0Fu;
+    x = (x | (x >> 4)) & 0x00FF00FFu;
+    x = (x | (x >> 8)) & 0x0000FFFFu;
+    return x;
+}
+
+/* The bucket (cell) of a site in the 2^k x 2^k grid over the bounding
+ * square of side 2^shift, as a Z-order index: bit pairs (row bit, column
+ * bit) from the top level down, so every quadtree square is a run of
+ * indices and a square's four children come in the order bottom-left,
+ * bottom-right, top-left, top-right. The column (x - low.x) 2^k / 2^shift
+ * never decreases with x, so a lower column means a smaller x (and the
+ * same for rows and y). k <= 12. */
+static inline uint32_t cell_of(const vor_t *d, vor_index_t s, unsigned k, unsigned shift)
+{
+    uint32_t cx = (uint32_t)((((uint64_t)((int64_t)d->sites[s].x - d->low.x)) << k) >> shift);
+    uint32_t cy = (uint32_t)((((uint64_t)((int64_t)d->sites[s].y - d->low.y)) << k) >> shift);
+    return spread_bits(cx) | (spread_bits(cy) << 1);
+}
+
+static inline bool in_f_finite(const builder_t *b, vor_index_t v)
+{
+    if (b->by_line) {
+        const vor_point_t *p = &b->d->sites[v];
+        return ((int64_t)((b->axis == 0u) ? p->x : p->y) < b->line) != b->f_above;
+    }
+    return axis_less(b->d->sites, v, b->split, b->axis);
+}
+
+static inline bool in_f(const builder_t *b, vor_index_t v)
+{
+    return v != VOR__INFINITE && in_f_finite(b, v);
+}
+
+static inline bool in_s(const builder_t *b, vor_index_t v)
+{
+    return v != VOR__INFINITE && !in_f_finite(b, v);
+}
+
+/* One site as a part: its home slot, emptied. */
+static vor_index_t single(builder_t *b, vor_index_t s)
+{
+    vor__tri_fresh(&b->tri[s]);
+    b->tri[s].n[0] = VOR__NONE;
+    return s;
+}
+
+static bool is_single(const builder_t *b, vor_index_t part)
+{
+    return vor__slot_empty(&b->tri[part]);
 }
 
 /* The vertex of triangle t that is neither a nor c. */
-static vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
+static inline vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
@@ -144,7 +207,7 @@ static vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
 /* In triangle `slot`, point the link across the edge {a, b} at `to`. By
  * vertices, not by the old slot: a two-site mesh's triangles are each
  * other's neighbour across all three edges. */
-static void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
+static inline void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
                         vor_index_t to)
 {
     vor__tri_t *t = &tri[slot];
@@ -167,7 +230,7 @@ static bool is_home(const builder_t *b, vor_index_t slot, vor_index_t v)
  * T2 = (a, e, c), in the two slots chosen so that each home slot still
  * holds a triangle of its site (incremental.c's flip, with infinity
  * allowed anywhere). Returns T1's slot in *t1 and T2's in *t2. */
-static void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *t1, vor_index_t *t2)
+static inline void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *t1, vor_index_t *t2)
 {
     vor__tri_t *tri = b->tri;
     vor__tri_t *t = &tri[s1];
@@ -195,7 +258,7 @@ static void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *t1, vor
 }
 
 /* Is q a neighbour of site p? A walk around p from its home slot (C3;
- * seed 000 section 3.3: one endpoint's edges, O(1) on average). */
+ * seed 000 section 3.3: one endpoint's edges). */
 static bool has_edge(const builder_t *b, vor_index_t p, vor_index_t q)
 {
     vor_index_t slot = p;
@@ -216,26 +279,14 @@ static bool has_edge(const builder_t *b, vor_index_t p, vor_index_t q)
     return false;
 }
 
-/* The ghost (p, w, inf) at hull site p (w: p's clockwise neighbour on the
- * hull), by a walk around p; VOR__NONE if p is not on the hull. */
-static vor_index_t ghost_after(const builder_t *b, vor_index_t p)
+/* C3 for the F-S edge (p, q) of the current merge. Every F-S edge drawn so
+ * far has both ends marked (each end of the base is marked when it becomes
+ * one, and F-S edges are only ever drawn as the base), so an unmarked p
+ * has none and needs no walk: with exact predicates the candidates are
+ * never marked, and the check costs one bit. */
+static bool joined(const builder_t *b, vor_index_t p, vor_index_t q)
 {
-    vor_index_t slot = p;
-    for (uint32_t step = 0; step < b->bound; step++) {
-        const vor__tri_t *t = &b->tri[slot];
-        unsigned i = vor__vertex_index(t, p);
-        if (i == 3u) {
-            return VOR__NONE;
-        }
-        if (vor__vertex(t, vor__prev(i)) == VOR__INFINITE) {
-            return slot;
-        }
-        slot = t->n[vor__next(i)];
-        if (slot == p) {
-            break;
-        }
-    }
-    return VOR__NONE;
+    return vor__marked(&b->tri[p]) && has_edge(b, p, q);
 }
 
 /* Writes a fresh triangle into an unused slot (clearing what scratch data
@@ -247,61 +298,94 @@ static void put(vor__tri_t *tri, vor_index_t slot, vor_index_t v0, vor_index_t v
     vor__tri_set(&tri[slot], v0, v1, v2, n0, n1, n2);
 }
 
+/* The least and greatest hull sites of a part on an axis, the ghosts
+ * (site, w, inf) at them, and the hull's length: one walk around the fan
+ * of ghosts at infinity from the part's ghost g (at most v ghosts; the
+ * bound only matters on a corrupted mesh). Only coordinates are compared,
+ * exactly. With exact predicates the least and greatest sites of the part
+ * are hull sites, so these are its extremes (the tangent search starts
+ * there, seed 000 section 4.1); if earlier signs lied they are still hull
+ * sites, which is all the search and guards C4 and C5 need. */
+typedef struct {
+    vor_index_t least, least_ghost, most, most_ghost;
+    uint32_t length;
+} extremes_t;
+
+static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extremes_t *e)
+{
+    const vor__tri_t *tri = b->tri;
+    const vor_point_t *s = b->d->sites;
+    unsigned i = vor__vertex_index(&tri[g], VOR__INFINITE);
+    i = (i == 3u) ? 2u : i; /* never: a part's ghost is a ghost */
+    vor_index_t a = vor__vertex(&tri[g], vor__next(i));
+    e->least = e->most = a;
+    e->least_ghost = e->most_ghost = g;
+    e->length = 1;
+    /* the next ghost (w, x, inf) lies across (w, inf) from (a, w, inf) */
+    vor_index_t slot = tri[g].n[vor__next(i)];
+    while (slot != g && e->length < b->bound) {
+        const vor__tri_t *t = &tri[slot];
+        i = vor__vertex_index(t, VOR__INFINITE);
+        if (i == 3u) {
+            break; /* only on a corrupted mesh */
+        }
+        a = vor__vertex(t, vor__next(i));
+        if (axis_less(s, a, e->least, axis)) {
+            e->least = a;
+            e->least_ghost = slot;
+        } else if (axis_less(s, e->most, a, axis)) {
+            e->most = a;
+            e->most_ghost = slot;
+        }
+        e->length++;
+        slot = t->n[vor__next(i)];
+    }
+}
+
 /* ------------------------------------------------------------------ */
 /* Merge                                                               */
 
-/* Merges F and S (every site of F before every site of S on `axis`) into
- * *out. Both are marked on their hulls; so is the result. */
-static void merge(builder_t *b, const component_t *f, const component_t *s, unsigned axis,
-                  component_t *out)
+/* Merges the parts F and S (every site of F before every site of S on
+ * `axis`; b->by_cell, split etc. set for in_f), neither empty, into one;
+ * returns it. */
+static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
 {
     vor_t *d = b->d;
     vor__tri_t *tri = b->tri;
-    b->less = (axis == 0u) ? lex_less : lex_less_rotated;
-    b->split = s->first[axis];
-    for (unsigned k = 0; k < 2u; k++) {
-        bool (*order)(const vor_point_t *, vor_index_t, vor_index_t) =
-            (k == 0u) ? lex_less : lex_less_rotated;
-        out->first[k] = order(d->sites, f->first[k], s->first[k]) ? f->first[k] : s->first[k];
-        out->last[k] = order(d->sites, f->last[k], s->last[k]) ? s->last[k] : f->last[k];
-    }
-    out->count = f->count + s->count;
-
-    if (f->count == 1u && s->count == 1u) {
-        vor_index_t a = f->first[0], c = s->first[0];
-        vor__make_edge(d, a, c);
-        out->ghost = a;
-        return;
+    b->axis = axis;
+    bool f_single = is_single(b, f), s_single = is_single(b, s);
+    if (f_single && s_single) {
+        vor__make_edge(d, f, s);
+        return f;
     }
 
     /* 1. lower common tangent (seed 000 section 4), from R1 and L2 */
-    vor_index_t l = f->last[axis], r = s->first[axis];
+    vor_index_t l = f, r = s, l_stop = f, r_stop = s;
     vor_index_t g1 = VOR__NONE, g2 = VOR__NONE; /* (l, w, inf) and (u, r, inf) */
-    if (f->count >= 2u) {
-        g1 = ghost_after(b, l);
-        if (g1 == VOR__NONE) { /* only if earlier signs lied: any hull site */
-            g1 = f->ghost;
-            unsigned i = vor__vertex_index(&tri[g1], VOR__INFINITE);
-            l = vor__vertex(&tri[g1], vor__next(i));
-        }
+    uint32_t f_hull = 1, s_hull = 1;
+    extremes_t e;
+    if (!f_single) {
+        hull_extremes(b, f, axis, &e);
+        l = e.most; /* R1 */
+        g1 = e.most_ghost;
+        l_stop = e.least; /* L1 */
+        f_hull = e.length;
     }
-    if (s->count >= 2u) {
-        vor_index_t h = ghost_after(b, r);
-        if (h == VOR__NONE) {
-            h = s->ghost;
-            unsigned i = vor__vertex_index(&tri[h], VOR__INFINITE);
-            r = vor__vertex(&tri[h], vor__next(i));
-        }
+    if (!s_single) {
+        hull_extremes(b, s, axis, &e);
+        r = e.least; /* L2 */
+        r_stop = e.most; /* R2 */
+        s_hull = e.length;
         /* (r, w, inf) -> the ghost before it, (u, r, inf), across (inf, r) */
-        unsigned i = vor__vertex_index(&tri[h], r);
-        g2 = tri[h].n[vor__next(i)];
+        vor_index_t h = e.least_ghost;
+        g2 = tri[h].n[vor__next(vor__vertex_index(&tri[h], r))];
     }
     uint32_t moves1 = 0, moves2 = 0;
     for (;;) {
         /* C4: the F end stays between R1 and L1 (clockwise), the S end
          * between L2 and R2 (counterclockwise); C5: no move back. The
          * move counts bound the walks if the hulls are not convex. */
-        if (g1 != VOR__NONE && l != f->first[axis] && moves1 < f->count) {
+        if (g1 != VOR__NONE && l != l_stop && moves1 < f_hull) {
             unsigned i = vor__vertex_index(&tri[g1], l);
             vor_index_t w = vor__vertex(&tri[g1], vor__next(i));
             if (vor__orient(d, l, r, w) < 0) {
@@ -311,7 +395,7 @@ static void merge(builder_t *b, const component_t *f, const component_t *s, unsi
                 continue;
             }
         }
-        if (g2 != VOR__NONE && r != s->last[axis] && moves2 < s->count) {
+        if (g2 != VOR__NONE && r != r_stop && moves2 < s_hull) {
             unsigned i = vor__vertex_index(&tri[g2], r);
             vor_index_t u = vor__vertex(&tri[g2], vor__prev(i));
             if (vor__orient(d, l, r, u) < 0) {
@@ -336,9 +420,9 @@ static void merge(builder_t *b, const component_t *f, const component_t *s, unsi
         ha = tri[g2].n[vor__prev(i)];
     }
     vor_index_t lower, cap;
-    if (f->count == 1u) {
+    if (f_single) {
         lower = l0; /* the single site's home slot */
-    } else if (s->count == 1u) {
+    } else if (s_single) {
         lower = r0;
     } else {
         lower = (vor_index_t)b->next_extra++;
@@ -356,25 +440,30 @@ static void merge(builder_t *b, const component_t *f, const component_t *s, unsi
         relink_edge(tri, hb, r0, VOR__INFINITE, lower);
         relink_edge(tri, ha, r0, VOR__INFINITE, cap);
     }
+    /* the base's ends are marked (joined()); both home slots hold
+     * triangles now */
+    vor__set_mark(&tri[l0], true);
+    vor__set_mark(&tri[r0], true);
 
     /* 3. zipper, bottom to top (seed 000 section 3.2, fig. 3.1). Bounded
      * by the counts in the header comment; `steps` is a last resort. */
     bool l_moved = false, r_moved = false;
-    uint32_t steps_left = 8u * out->count + 16u;
+    uint32_t steps_left = 4u * b->bound + 16u, advances = 0;
     while (steps_left-- > 0u) {
         /* left deletions: pocket ghost (c1, l, inf), F triangle (l, c1, c2) */
         vor_index_t c1, e1;
+        bool lvalid, rvalid; /* the candidates above the base */
         for (;;) {
             vor_index_t pf = tri[cap].n[vor__vertex_index(&tri[cap], r)];
             c1 = third(&tri[pf], l, VOR__INFINITE);
-            if (!in_f(b, c1) || vor__orient(d, l, r, c1) <= 0) {
+            lvalid = in_f(b, c1) && vor__orient(d, l, r, c1) > 0;
+            if (!lvalid) {
                 break;
             }
             unsigned at = vor__vertex_index(&tri[pf], VOR__INFINITE);
             vor_index_t c2 = third(&tri[tri[pf].n[at]], l, c1);
             /* C2 and T1: the triangle beyond is F-F-F */
-            if (!in_f(b, c2) ||
-                vor__incircle(d, l, r, c1, c2) <= 0) {
+            if (!in_f(b, c2) || vor__incircle(d, l, r, c1, c2) <= 0) {
                 break;
             }
             vor_index_t x1, x2;
@@ -384,38 +473,37 @@ static void merge(builder_t *b, const component_t *f, const component_t *s, unsi
         for (;;) {
             vor_index_t ps = tri[cap].n[vor__vertex_index(&tri[cap], l)];
             e1 = third(&tri[ps], r, VOR__INFINITE);
-            if (!in_s(b, e1) || vor__orient(d, l, r, e1) <= 0) {
+            rvalid = in_s(b, e1) && vor__orient(d, l, r, e1) > 0;
+            if (!rvalid) {
                 break;
             }
             unsigned at = vor__vertex_index(&tri[ps], VOR__INFINITE);
             vor_index_t e2 = third(&tri[tri[ps].n[at]], r, e1);
-            if (!in_s(b, e2) ||
-                vor__incircle(d, l, r, e1, e2) <= 0) {
+            if (!in_s(b, e2) || vor__incircle(d, l, r, e1, e2) <= 0) {
                 break;
             }
             vor_index_t x1, x2;
             flip(b, ps, at, &x1, &x2);
         }
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
-         * other candidate outside its triangle's circle */
-        bool lvalid = in_f(b, c1) && vor__orient(d, l, r, c1) > 0;
-        bool rvalid = in_s(b, e1) && vor__orient(d, l, r, e1) > 0;
+         * other candidate outside its triangle's circle (the deletions on
+         * one side leave the other side's candidate as it was) */
         bool left = lvalid && (!rvalid || vor__incircle(d, l, r, c1, e1) < 0);
         bool right = rvalid && !left;
         /* C3: never a parallel edge; then the other candidate, if valid */
-        if (left && has_edge(b, c1, r)) {
+        if (left && joined(b, c1, r)) {
             left = false;
-            right = rvalid && !has_edge(b, e1, l);
-        } else if (right && has_edge(b, e1, l)) {
+            right = rvalid && !joined(b, e1, l);
+        } else if (right && joined(b, e1, l)) {
             right = false;
-            left = lvalid && !has_edge(b, c1, r);
+            left = lvalid && !joined(b, c1, r);
         }
         if (!left && !right) {
             /* T2: each end moves at least once (never needed when the
              * signs are right) */
-            if (!l_moved && in_f(b, c1) && !has_edge(b, c1, r)) {
+            if (!l_moved && in_f(b, c1) && !joined(b, c1, r)) {
                 left = true;
-            } else if (!r_moved && in_s(b, e1) && !has_edge(b, e1, l)) {
+            } else if (!r_moved && in_s(b, e1) && !joined(b, e1, l)) {
                 right = true;
             } else {
                 break;
@@ -433,216 +521,188 @@ static void merge(builder_t *b, const component_t *f, const component_t *s, unsi
             r = e1;
             r_moved = true;
         }
+        vor__set_mark(&tri[left ? l : r], true);
+        advances++;
     }
 
-    out->ghost = lower;
+    /* clear the marks: the base's ends were the vertices of the strip of
+     * cross triangles from (l0, r0) up to the cap. Cross triangles are
+     * never flipped (deletions flip F-F-F and S-S-S triangles, advances the
+     * cap), so the strip is intact: from base (l, r) the triangle above is
+     * (l, r, c), and the next base is (c, r) if c is in F, else (l, c). One
+     * step per advance. */
+    l = l0;
+    r = r0;
+    vor__set_mark(&tri[l], false);
+    vor__set_mark(&tri[r], false);
+    vor_index_t t = tri[lower].n[vor__vertex_index(&tri[lower], VOR__INFINITE)];
+    for (uint32_t k = 0; k < advances; k++) {
+        vor_index_t c = third(&tri[t], l, r);
+        if (c == VOR__INFINITE) {
+            break;
+        }
+        vor__set_mark(&tri[c], false);
+        if (in_f(b, c)) { /* across (c, r), opposite l */
+            t = tri[t].n[vor__vertex_index(&tri[t], l)];
+            l = c;
+        } else {
+            t = tri[t].n[vor__vertex_index(&tri[t], r)];
+            r = c;
+        }
+    }
+    return lower;
 }
 
 /* ------------------------------------------------------------------ */
 /* The builders                                                        */
 
-/* A range of sorted sites still to build (state 0), with its first half
- * built (1), or both (2). */
-struct frame {
-    uint32_t lo, hi;
-    unsigned state;
+/* Pending parts of the x-split, the least site of each for in_f. */
+struct pending {
+    vor_index_t part, least;
 };
 
-/* Field by field: a structure assignment may become a memcpy call. */
-static void copy_component(component_t *to, const component_t *from)
+/* The classical x-split of the sorted sites order[0, v), v >= 1: a merge
+ * of two halves, the recursion unrolled into a binary counter (seed 000
+ * section 3.2, horizontal merges only). Sites enter left to right as
+ * single parts; after the i-th (1-based) the two top parts are merged once
+ * for every trailing zero bit of i (equal sizes, 2^j each), and the rest
+ * right to left at the end. The stack then holds one part per set bit of
+ * i plus one, i < VOR_MAX_SITES: at most 15 with 16-bit ids (i < 2^15),
+ * 22 with 32-bit ids (i < 2^21). */
+#define SPLIT_STACK ((VOR_INDEX_BITS == 16) ? 15u : 22u)
+VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
 {
-    to->count = from->count;
-    for (unsigned k = 0; k < 2u; k++) {
-        to->first[k] = from->first[k];
-        to->last[k] = from->last[k];
-    }
-    to->ghost = from->ghost;
-}
-
-static void push_frame(struct frame *frames, unsigned *top, uint32_t lo, uint32_t hi)
-{
-    frames[*top].lo = lo;
-    frames[*top].hi = hi;
-    frames[*top].state = 0;
-    (*top)++;
-}
-
-/* One site as a component (no triangles yet). */
-static void single(component_t *c, vor_index_t s)
-{
-    c->count = 1;
-    c->first[0] = c->last[0] = c->first[1] = c->last[1] = s;
-    c->ghost = VOR__NONE;
-}
-
-/* The classical x-split: the sorted sites [0, v) halved down to single
- * sites, merged bottom-up (seed 000 section 3.2, horizontal merges only).
- * An explicit stack replaces the recursion: depth <= log2(v) + 1. */
-static void build_split(builder_t *b, const vor_index_t *order, uint32_t v, component_t *out)
-{
-    struct frame frames[40];
-    if (v == 0u) {
-        out->count = 0;
-        return;
-    }
-    component_t parts[40];
-    unsigned top = 0, done = 0;
-    push_frame(frames, &top, 0, v);
-    while (top > 0u) {
-        struct frame *f = &frames[top - 1u];
-        uint32_t size = f->hi - f->lo;
-        if (size == 1u) {
-            single(&parts[done++], order[f->lo]);
-            top--;
-            continue;
+    struct pending stack[SPLIT_STACK];
+    unsigned top = 0;
+    for (uint32_t i = 0; i < v || top > 1u; i++) {
+        if (i < v) {
+            VOR_ASSERT(top < SPLIT_STACK);
+            stack[top].part = single(b, order[i]);
+            stack[top].least = order[i];
+            top++;
         }
-        uint32_t mid = f->lo + size / 2u;
-        if (f->state == 0u) {
-            f->state = 1;
-            push_frame(frames, &top, f->lo, mid);
-        } else if (f->state == 1u) {
-            f->state = 2;
-            push_frame(frames, &top, mid, f->hi);
-        } else {
-            component_t merged;
-            merge(b, &parts[done - 2u], &parts[done - 1u], 0, &merged);
-            done--;
-            copy_component(&parts[done - 1u], &merged);
+        /* merge pairs of equal size; once every site is in, all pairs */
+        for (uint32_t c = i + 1u; top > 1u && (i + 1u >= v || (c & 1u) == 0u); c >>= 1) {
+            b->by_line = false;
+            b->split = stack[top - 1u].least;
+            stack[top - 2u].part = merge(b, stack[top - 2u].part, stack[top - 1u].part, 0);
             top--;
         }
     }
-    copy_component(out, &parts[0]);
+    return stack[0].part;
 }
 
-/* F and S merged, either possibly empty. */
-static void combine(builder_t *b, const component_t *f, const component_t *s, unsigned axis,
-                    component_t *out)
+/* F and S merged on an axis (in_f set up by the caller), either possibly
+ * empty (VOR__NONE). */
+static vor_index_t combine(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
 {
-    if (f->count == 0u) {
-        copy_component(out, s);
-    } else if (s->count == 0u) {
-        copy_component(out, f);
-    } else {
-        component_t merged;
-        merge(b, f, s, axis, &merged);
-        copy_component(out, &merged);
+    if (f == VOR__NONE) {
+        return s;
     }
-}
-
-/* The bucket (cell) of a site in the 2^k x 2^k grid over the bounding
- * square, as a Z-order index: bit pairs (row bit, column bit) from the
- * top level down, so every quadtree square is a run of indices and a
- * square's four children come in the order bottom-left, bottom-right,
- * top-left, top-right. */
-static uint32_t cell_of(const vor_t *d, vor_index_t s, unsigned k, unsigned shift)
-{
-    uint32_t cx = (uint32_t)((((uint64_t)((int64_t)d->sites[s].x - d->low.x)) << k) >> shift);
-    uint32_t cy = (uint32_t)((((uint64_t)((int64_t)d->sites[s].y - d->low.y)) << k) >> shift);
-    uint32_t z = 0;
-    for (unsigned bit = 0; bit < k; bit++) {
-        z |= ((cx >> bit) & 1u) << (2u * bit);
-        z |= ((cy >> bit) & 1u) << (2u * bit + 1u);
+    if (s == VOR__NONE) {
+        return f;
     }
-    return z;
+    return merge(b, f, s, axis);
 }
 
 /* Katajainen and Koppinen's bucket merging in quadtree order (seed 000
  * sections 1, 3.1): about two sites a bucket, each bucket built by the
  * x-split, then every square of four merged from its children: bottom
  * pair and top pair horizontally, then the two halves vertically (the
- * horizontal merge turned by 90 degrees). order[0, v) is lexicographic;
- * it is regrouped by bucket here (a stable counting sort, so each bucket
- * stays lexicographic) with scratch below it in the triangle slots. The
- * buckets are visited in Z order with one list of up to four finished
- * children per level, like the digits of a base-4 counter. */
-static void build_quadtree(builder_t *b, vor_index_t *order, uint32_t v, vor_index_t *scratch,
-                           component_t *out)
+ * horizontal merge turned by 90 degrees). order[0, v) is grouped by
+ * bucket in Z order, each bucket lexicographic (vor__build_dc). The
+ * buckets are visited in Z order, a base-4 counter: at each level the
+ * finished bottom pair (or its first child) and the third child wait,
+ * two words a level. */
+/* levels 0..k, 8 4^k <= n <= VOR_MAX_SITES: k <= 5 with 16-bit ids,
+ * k <= 8 with 32-bit ids */
+#define QUADTREE_LEVELS ((VOR_INDEX_BITS == 16) ? 6u : 9u)
+
+/* The least coordinate (x on axis 0, y on axis 1) in grid column (row)
+ * `index` or beyond: (c - low) 2^k / 2^shift >= index iff
+ * c - low >= ceil(index 2^shift / 2^k); index <= 2^12, shift <= 33. */
+static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned k,
+                         unsigned shift)
+{
+    uint64_t offset = (((uint64_t)index << shift) + ((1ull << k) - 1u)) >> k;
+    return (int64_t)((axis == 0u) ? d->low.x : d->low.y) + (int64_t)offset;
+}
+
+VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, const vor_index_t *order, uint32_t v)
 {
     vor_t *d = b->d;
-    unsigned k = 0;
-    while (k < 12u && (8ull << (2u * k)) <= v) {
-        k++;
-    }
-    uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
-    uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
-    span = (span_y > span) ? span_y : span;
-    unsigned shift = 0;
-    while ((span >> shift) != 0u) {
-        shift++;
-    }
+    unsigned k = b->k, shift = b->shift;
     uint32_t cells = 1u << (2u * k);
-    vor_index_t *start = scratch;          /* [cells + 1], cells <= v / 2 */
-    vor_index_t *grouped = scratch + cells + 1u; /* [v] */
-    for (uint32_t c = 0; c <= cells; c++) {
-        start[c] = 0;
-    }
-    for (uint32_t i = 0; i < v; i++) {
-        start[cell_of(d, order[i], k, shift) + 1u]++;
-    }
-    for (uint32_t c = 0; c < cells; c++) {
-        start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
-    }
-    for (uint32_t i = 0; i < v; i++) {
-        uint32_t c = cell_of(d, order[i], k, shift);
-        grouped[start[c]] = order[i];
-        start[c]++;
-    }
-    for (uint32_t i = 0; i < v; i++) {
-        order[i] = grouped[i];
-    }
-    /* from here on the scratch below the order may be overwritten */
-    component_t children[13][4];
-    unsigned filled[13];
-    for (unsigned level = 0; level <= k; level++) {
-        filled[level] = 0;
-    }
+    vor_index_t bottom[QUADTREE_LEVELS], third_child[QUADTREE_LEVELS];
+    vor_index_t root = VOR__NONE;
     uint32_t pos = 0;
     for (uint32_t c = 0; c < cells; c++) {
         uint32_t end = pos;
         while (end < v && cell_of(d, order[end], k, shift) == c) {
             end++;
         }
-        unsigned level = k;
-        build_split(b, order + pos, end - pos, &children[level][filled[level]++]);
+        /* sites are numbered in input order, so the next buckets' sites
+         * and home slots lie anywhere in the arena */
+        for (uint32_t ahead = end; ahead < end + 4u && ahead + 12u < v; ahead++) {
+            VOR__PREFETCH(&d->sites[order[ahead + 12u]]);
+            VOR__PREFETCH(&b->tri[order[ahead + 12u]]);
+        }
+        vor_index_t part = (end > pos) ? build_split(b, order + pos, end - pos) : VOR__NONE;
         pos = end;
-        /* a full set of four children becomes one square a level up */
-        while (level > 0u && filled[level] == 4u) {
-            component_t bottom, top;
-            component_t *q = children[level];
-            combine(b, &q[0], &q[1], 0, &bottom);
-            combine(b, &q[2], &q[3], 0, &top);
-            filled[level] = 0;
-            level--;
-            combine(b, &top, &bottom, 1, &children[level][filled[level]++]);
+        /* the children of one square are the squares of side 2^(k -
+         * level) cells in it; the one just finished is child number
+         * `child` of its parent, which starts at cell z0 */
+        for (unsigned level = k;; level--) {
+            if (level == 0u) {
+                root = part;
+                break;
+            }
+            unsigned side_log = k - level;
+            uint32_t z0 = (c >> (2u * side_log + 2u)) << (2u * side_log + 2u);
+            unsigned child = (c >> (2u * side_log)) & 3u;
+            if (child == 0u) {
+                bottom[level] = part;
+                break;
+            }
+            if (child == 2u) {
+                third_child[level] = part;
+                break;
+            }
+            /* left and right children: F left of the middle column */
+            b->by_line = true;
+            b->f_above = false;
+            b->line = grid_line(d, compact_bits(z0) + (1u << side_log), 0, k, shift);
+            if (child == 1u) {
+                bottom[level] = combine(b, bottom[level], part, 0);
+                break;
+            }
+            vor_index_t top = combine(b, third_child[level], part, 0);
+            /* top and bottom halves: F = the top, rows from the middle on */
+            b->by_line = true;
+            b->f_above = true;
+            b->line = grid_line(d, compact_bits(z0 >> 1) + (1u << side_log), 1, k, shift);
+            part = combine(b, top, bottom[level], 1);
         }
     }
-    copy_component(out, &children[0][0]);
+    return root;
 }
 
-void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
+/* For the sorted ids[from, to) (equal points adjacent, the first
+ * occurrence first): reports the duplicates and empties their home slots,
+ * and packs the distinct ids right below ids[*w], back to front, lowering
+ * *w (in place when *w >= to). Returns their number. */
+static uint32_t take_distinct(vor_t *d, vor_index_t *ids, uint32_t from, uint32_t to,
+                              uint32_t *w, uint32_t *duplicate_of)
 {
-    vor__tri_t *tri = d->triangles;
-    /* the order at the top of the triangle slots: sorted in place, then the
-     * distinct sites packed at the very end. It is read front to back while
-     * merges fill extra slots from below: after the first i sites at most
-     * i - 2 extras are used, and (v - i) index entries fit above them
-     * because an index is smaller than a triangle; and it starts above the
-     * home slots for max_sites >= 3 (a two-slot mesh is read first). */
-    vor_index_t *base = (vor_index_t *)(void *)tri;
-    size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
-                     sizeof(vor_index_t);
-    vor_index_t *ids = base + entries - n;
-    for (uint32_t s = 0; s < n; s++) {
-        ids[s] = (vor_index_t)s;
-    }
-    vor__sort_ids(d->sites, ids, n, lex_less_id);
     const vor_point_t *p = d->sites;
-    /* duplicates: equal points are adjacent, the first occurrence first */
-    vor_index_t head = ids[0];
-    uint32_t v = 0;
-    for (uint32_t i = 0; i < n; i++) {
+    vor__tri_t *tri = d->triangles;
+    if (from == to) {
+        return 0;
+    }
+    vor_index_t head = ids[from];
+    for (uint32_t i = from; i < to; i++) {
         vor_index_t s = ids[i];
-        if (i > 0u && p[s].x == p[head].x && p[s].y == p[head].y) {
+        if (i > from && p[s].x == p[head].x && p[s].y == p[head].y) {
             if (duplicate_of != NULL) {
                 duplicate_of[s] = head;
             }
@@ -650,29 +710,115 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
             tri[s].n[0] = VOR__NONE;
         } else {
             head = s;
-            v++;
             if (duplicate_of != NULL) {
                 duplicate_of[s] = s;
             }
         }
     }
-    /* pack the distinct ones at the end, back to front (in place) */
-    uint32_t w = n;
-    for (uint32_t i = n; i-- > 0u;) {
+    uint32_t count = 0;
+    for (uint32_t i = to; i-- > from;) {
         vor_index_t s = ids[i];
-        bool first = i == 0u || p[ids[i - 1u]].x != p[s].x || p[ids[i - 1u]].y != p[s].y;
-        if (first) {
-            ids[--w] = s;
+        if (i == from || p[ids[i - 1u]].x != p[s].x || p[ids[i - 1u]].y != p[s].y) {
+            ids[--*w] = s;
+            count++;
         }
     }
-    const vor_index_t *order = ids + w;
+    return count;
+}
 
+/* Sorts and deduplicates the site ids into the top of the triangle slots
+ * (see vor__build_dc), returning the number v of distinct sites; they are
+ * ids[*w, n). Out of line: its frame is not on the merges' stack. */
+VOR__NOINLINE static uint32_t order_sites(builder_t *b, vor_index_t *ids, uint32_t n,
+                                          bool quadtree, uint32_t *duplicate_of,
+                                          uint32_t *w_out)
+{
+    vor_t *d = b->d;
+    const vor_point_t *p = d->sites;
+    uint32_t v = 0, w = n; /* distinct sites; they are ids[w, n) */
+    if (quadtree) {
+        /* buckets of two to eight sites: 2^k x 2^k, n / 8 < 4^k <= n / 2,
+         * over the bounding square of side 2^shift */
+        while (b->k + 1u < QUADTREE_LEVELS && (8ull << (2u * b->k)) <= n) {
+            b->k++;
+        }
+        uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
+        uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
+        span = (span_y > span) ? span_y : span;
+        while ((span >> b->shift) != 0u) {
+            b->shift++;
+        }
+        /* a counting sort by bucket into ids, its counters right below
+         * (cells + 1 <= n / 2 + 1 entries: above the home slots for
+         * max_sites >= 3, and free until the build starts), then each
+         * bucket sorted lexicographically: expected O(n) for spread-out
+         * sites, and the equal points are adjacent as below */
+        uint32_t cells = 1u << (2u * b->k);
+        vor_index_t *start = ids - (cells + 1u);
+        for (uint32_t c = 0; c <= cells; c++) {
+            start[c] = 0;
+        }
+        for (uint32_t s = 0; s < n; s++) {
+            start[cell_of(d, (vor_index_t)s, b->k, b->shift) + 1u]++;
+        }
+        for (uint32_t c = 0; c < cells; c++) {
+            start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
+        }
+        for (uint32_t s = 0; s < n; s++) {
+            uint32_t c = cell_of(d, (vor_index_t)s, b->k, b->shift);
+            ids[start[c]] = (vor_index_t)s;
+            start[c]++;
+        }
+        /* start[c] is now the end of bucket c. Last bucket first, each
+         * sorted, its duplicates found and its distinct ids packed at the
+         * end, back to front, while its sites are in the cache (in place:
+         * a bucket's ids are written at or above where they are read) */
+        for (uint32_t c = cells; c-- > 0u;) {
+            uint32_t from = (c > 0u) ? start[c - 1u] : 0u;
+            if (start[c] - from > 1u) {
+                vor__sort_ids(p, ids + from, start[c] - from, VOR__SORT_LEX);
+            }
+            v += take_distinct(d, ids, from, start[c], &w, duplicate_of);
+        }
+    } else {
+        for (uint32_t s = 0; s < n; s++) {
+            ids[s] = (vor_index_t)s;
+        }
+        vor__sort_ids(p, ids, n, VOR__SORT_LEX);
+        v = take_distinct(d, ids, 0, n, &w, duplicate_of);
+    }
+    *w_out = w;
+    return v;
+}
+
+void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
+{
     builder_t b;
     b.d = d;
-    b.tri = tri;
+    b.tri = d->triangles;
     b.next_extra = d->max_sites;
-    b.less = lex_less;
+    b.axis = 0;
+    b.by_line = false;
+    b.f_above = false;
     b.split = 0;
+    b.line = 0;
+    b.k = 0;
+    b.shift = 0;
+    /* the order at the top of the triangle slots: sorted in place, then the
+     * distinct sites packed at the very end. It is read front to back while
+     * merges fill extra slots from below: after the first i sites at most
+     * i - 2 extras are used, and (v - i) index entries fit above them
+     * because an index is smaller than a triangle; and it starts above the
+     * home slots for max_sites >= 3 (a two-slot mesh is read first). */
+    vor_index_t *base = (vor_index_t *)(void *)d->triangles;
+    size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
+                     sizeof(vor_index_t);
+    vor_index_t *ids = base + entries - n;
+    bool quadtree = algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u;
+    uint32_t w;
+    uint32_t v = order_sites(&b, ids, n, quadtree, duplicate_of, &w);
+    const vor_index_t *order = ids + w;
+
     b.bound = 2u * v + 2u;
     if (v == 1u) { /* as the incremental build leaves it */
         d->vertex_count = 1;
@@ -681,13 +827,10 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
         return;
     }
     vor_index_t last = order[v - 1u];
-    component_t all;
-    if (algorithm == VOR_ALGO_DC_QUADTREE && v >= 8u) {
-        /* its scratch right below the order: above the home slots (a
-         * duplicate's must stay empty) for v >= 8 (cells <= v / 2) */
-        build_quadtree(&b, ids + w, v, ids + w - (v + v / 2u + 1u), &all);
+    if (quadtree) {
+        (void)build_quadtree(&b, order, v);
     } else {
-        build_split(&b, order, v, &all);
+        (void)build_split(&b, order, v);
     }
     d->vertex_count = v;
     d->last_site = last;

@@ -31,7 +31,7 @@ static inline bool lower_top_bit(uint32_t a, uint32_t b)
  * are close to each other, and equal points end up adjacent with the
  * smallest id (the first occurrence) first. The coordinate whose values
  * differ in the higher bit decides (Chan's comparison, no interleaving). */
-static bool z_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
+static inline bool z_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
 {
     /* flipping the sign bit maps int32 order onto uint32 order */
     uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u, ay = (uint32_t)sites[a].y ^ 0x80000000u;
@@ -45,8 +45,29 @@ static bool z_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
     return ax < bx;
 }
 
+/* Lexicographic (x, y), ids breaking ties (the divide-and-conquer order). */
+static inline bool lex_less_id(const vor_point_t *s, vor_index_t a, vor_index_t b)
+{
+    if (s[a].x != s[b].x) {
+        return s[a].x < s[b].x;
+    }
+    if (s[a].y != s[b].y) {
+        return s[a].y < s[b].y;
+    }
+    return a < b;
+}
+
+/* The sort's comparison, chosen by a constant rather than a function
+ * pointer: the call graph stays static, so the stack depth stays known
+ * (tools/stack-depth.py), and each branch inlines. */
+static inline bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_t b,
+                             enum vor__sort_key key)
+{
+    return (key == VOR__SORT_LEX) ? lex_less_id(sites, a, b) : z_less(sites, a, b);
+}
+
 static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
-                      uint32_t n, vor__site_less_t site_less)
+                      uint32_t n, enum vor__sort_key key)
 {
     /* each step at least doubles root, so this ends */
     for (;;) {
@@ -54,10 +75,10 @@ static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
         if (child >= n) {
             return;
         }
-        if (child + 1u < n && site_less(sites, ids[child], ids[child + 1u])) {
+        if (child + 1u < n && site_less(sites, ids[child], ids[child + 1u], key)) {
             child++;
         }
-        if (!site_less(sites, ids[root], ids[child])) {
+        if (!site_less(sites, ids[root], ids[child], key)) {
             return;
         }
         vor_index_t t = ids[root];
@@ -69,19 +90,19 @@ static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
 
 /* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place. */
 static void heap_sort(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
-                      vor__site_less_t site_less)
+                      enum vor__sort_key key)
 {
     if (n < 2u) {
         return;
     }
     for (uint32_t i = n / 2u; i-- > 0u;) {
-        sift_down(sites, ids, i, n, site_less);
+        sift_down(sites, ids, i, n, key);
     }
     for (uint32_t end = n - 1u; end > 0u; end--) {
         vor_index_t t = ids[0];
         ids[0] = ids[end];
         ids[end] = t;
-        sift_down(sites, ids, 0, end, site_less);
+        sift_down(sites, ids, 0, end, key);
     }
 }
 
@@ -95,15 +116,17 @@ static void swap_ids(vor_index_t *ids, uint32_t a, uint32_t b)
 /* Introsort of ids[0..n) by site_less (a total order: ids break ties;
  * the divide-and-conquer builder sorts with it too):
  * median-of-three quicksort on an explicit stack, smaller part first so
- * the stack holds at most log2(n) ranges; insertion sort below 16; and
+ * the stack holds at most log2(n) + 2 <= 34 ranges (each range below the
+ * top is the larger sibling of an ancestor of the range being sorted, and
+ * those ancestors at least halve in size); insertion sort below 16; and
  * heapsort for a range that goes deeper than 2 log2(n), so the worst case
  * stays O(n log n) (crowded buckets of clustered sites hold thousands). */
 void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
-                   vor__site_less_t site_less)
+                   enum vor__sort_key key)
 {
     struct range {
         uint32_t first, count, depth;
-    } stack[64];
+    } stack[34];
     unsigned top = 0, log2n = 0;
     while ((1ull << log2n) < n) {
         log2n++;
@@ -116,7 +139,7 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
             for (uint32_t i = 1; i < r.count; i++) {
                 vor_index_t v = a[i];
                 uint32_t j = i;
-                while (j > 0u && site_less(sites, v, a[j - 1u])) {
+                while (j > 0u && site_less(sites, v, a[j - 1u], key)) {
                     a[j] = a[j - 1u];
                     j--;
                 }
@@ -125,18 +148,18 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
             continue;
         }
         if (r.depth > 2u * log2n) {
-            heap_sort(sites, a, r.count, site_less);
+            heap_sort(sites, a, r.count, key);
             continue;
         }
         /* median of three to a[0], then Hoare partition around it */
         uint32_t mid = r.count / 2u, last = r.count - 1u;
-        if (site_less(sites, a[mid], a[0])) {
+        if (site_less(sites, a[mid], a[0], key)) {
             swap_ids(a, mid, 0);
         }
-        if (site_less(sites, a[last], a[0])) {
+        if (site_less(sites, a[last], a[0], key)) {
             swap_ids(a, last, 0);
         }
-        if (site_less(sites, a[last], a[mid])) {
+        if (site_less(sites, a[last], a[mid], key)) {
             swap_ids(a, last, mid);
         }
         swap_ids(a, 0, mid);
@@ -145,10 +168,10 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
         for (;;) { /* i and j move toward each other: ends within count steps */
             do {
                 i++;
-            } while (i < r.count && site_less(sites, a[i], pivot));
+            } while (i < r.count && site_less(sites, a[i], pivot, key));
             do {
                 j--;
-            } while (site_less(sites, pivot, a[j]));
+            } while (site_less(sites, pivot, a[j], key));
             if (i >= j) {
                 break;
             }
@@ -159,6 +182,7 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
          * first so that the smaller is sorted next */
         struct range left = {r.first, j, r.depth + 1u};
         struct range right = {r.first + j + 1u, r.count - j - 1u, r.depth + 1u};
+        VOR_ASSERT(top + 2u <= sizeof stack / sizeof stack[0]);
         if (left.count > right.count) {
             stack[top++] = left;
             stack[top++] = right;
@@ -309,7 +333,8 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
 
     /* duplicates: equal points are adjacent after sorting a bucket */
     for (uint32_t b = 0; b < buckets; b++) {
-        vor__sort_ids(sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]), z_less);
+        vor__sort_ids(sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]),
+                      VOR__SORT_Z);
         for (uint32_t e = start[b]; e < start[b + 1u]; e++) {
             vor_index_t s = sorted[e];
             bool same = e > start[b] &&

@@ -3,13 +3,16 @@
 // Polygon construct_voronoi, on identical inputs in one process run.
 //
 //   delaunay-host [--sizes N,N,..] [--reps R] [--input-order-max N]
-//                 [--out FILE] [--no-mem]
+//                 [--out FILE] [--no-mem] [--scaling-reps R] [--scaling-csv FILE]
 //   delaunay-host --mem LIB KIND N     (internal: one memory measurement)
 //
 // For every input kind (uniform full-range int32, uniform 16-bit, grid,
 // clustered) and size it prints one Markdown table row: the best of R
 // wall-clock times of each library (the libraries take turns within each
-// repetition), their ratios, and bytes per site. Input generation and the
+// repetition; vor's incremental build and both divide-and-conquer
+// variants), their ratios, and bytes per site. Then a table of time per
+// site for uniform n = 2^7 ... 2^20 (scaling(); --scaling-reps 0 skips it),
+// also written as CSV for tools/bench/plot_scaling.py. Input generation and the
 // conversion to each library's point type are not timed; allocation of the
 // structure and its page faults are (vor: malloc of VOR_ARENA_BYTES(n),
 // vor_init, vor_build; CGAL: construct and range-insert; Boost: construct
@@ -225,7 +228,8 @@ static void die(const char *what)
     std::exit(2);
 }
 
-static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_order order)
+static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_order order,
+                      enum vor_algorithm algorithm = VOR_ALGO_INCREMENTAL)
 {
     uint32_t n = (uint32_t)p.size();
     size_t bytes = VOR_ARENA_BYTES(n);
@@ -235,6 +239,7 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     }
     vor_build_options_t opt = {};
     opt.order = order;
+    opt.algorithm = algorithm;
     if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK ||
         vor_build(&v.d, p.data(), n, &opt, nullptr) != VOR_OK) {
         die("vor_build failed");
@@ -354,6 +359,7 @@ struct row {
     uint32_t n = 0;
     uint32_t distinct = 0;
     double vor_ms = 1e300, cgal_ms = 1e300, boost_ms = 1e300, vor_input_ms = -1;
+    double dc_ms = 1e300, dcq_ms = 1e300; // vor's divide and conquer: x-split, quadtree
     double vor_arena = 0;
     mem_result vor_mem, cgal_mem, boost_mem;
     std::string check = "ok";
@@ -370,14 +376,16 @@ static std::string table(const std::vector<row> &rows)
 {
     std::string t;
     t += "| input | n | vor ms | CGAL ms | Boost ms | CGAL/vor | Boost/vor | vor B/site | "
-         "CGAL B/site | Boost B/site | vor input-order ms |\n";
-    t += "|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "CGAL B/site | Boost B/site | vor input-order ms | vor D&C ms | "
+         "vor D&C quadtree ms |\n";
+    t += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const row &r : rows) {
         t += "| " + r.input + " | " + with_commas(r.n) + " | " + fmt("%.2f", r.vor_ms) + " | " +
              fmt("%.2f", r.cgal_ms) + " | " + fmt("%.2f", r.boost_ms) + " | " +
              fmt("%.2f", r.cgal_ms / r.vor_ms) + " | " + fmt("%.2f", r.boost_ms / r.vor_ms) +
              " | " + per_site(r.vor_arena, r.n) + " | " + per_site(r.cgal_mem.rss, r.n) + " | " +
-             per_site(r.boost_mem.rss, r.n) + " | " + fmt("%.2f", r.vor_input_ms) + " |";
+             per_site(r.boost_mem.rss, r.n) + " | " + fmt("%.2f", r.vor_input_ms) + " | " +
+             fmt("%.2f", r.dc_ms) + " | " + fmt("%.2f", r.dcq_ms) + " |";
         if (r.check != "ok") {
             t += " **check: " + r.check + "**";
         }
@@ -450,6 +458,25 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
                 r.vor_arena = (double)m.arena_bytes;
             }
         }
+        for (int algo = 0; algo < 2; algo++) { // vor, divide and conquer
+            vor_run v;
+            enum vor_algorithm a = (algo == 0) ? VOR_ALGO_DC : VOR_ALGO_DC_QUADTREE;
+            double t0 = now_ms();
+            build_vor(v, in.vor, VOR_ORDER_QUADTREE, a);
+            double &best = (algo == 0) ? r.dc_ms : r.dcq_ms;
+            best = std::min(best, now_ms() - t0);
+            if (rep == 0) { // the same mesh as the incremental build's
+                add_check(r, vor_validate(&v.d, nullptr) == VOR_OK, "D&C vor_validate");
+                add_check(r, v.d.vertex_count == r.distinct, "D&C sites");
+                uint32_t count = 0, ids[3];
+                vor_triangle_iter_t it;
+                vor_triangles_begin(&it, &v.d);
+                while (vor_triangles_next(&it, ids)) {
+                    count++;
+                }
+                add_check(r, count == vor_triangles + r.flat, "D&C triangles");
+            }
+        }
         {
             double t0 = now_ms();
             Cgal_dt *dt = new Cgal_dt;
@@ -493,6 +520,92 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
     return r;
 }
 
+// ------------------------------------------------ scaling (time per site)
+
+// Uniform full-range sites, n = 2^7 ... 2^20 (the axes of seed 000's
+// Fig. 5.1): the best over `reps` rounds of each library's mean build time
+// per site, where a round repeats the build until 20 ms have been timed
+// (small n) and times each build alone (allocation and build, as in the
+// main table; destruction is not timed). The libraries take turns within a
+// round. Writes a Markdown table and, if csv is set, "log2n,library,ns".
+static const char *const scaling_libs[] = {"vor incremental", "vor D&C", "vor D&C quadtree",
+                                           "CGAL", "Boost"};
+enum { SCALING_LIBS = 5 };
+
+static double time_one(int lib, const inputs &in)
+{
+    double t0 = now_ms(), ms;
+    if (lib < 3) {
+        vor_run v;
+        enum vor_algorithm a = (lib == 0)   ? VOR_ALGO_INCREMENTAL
+                               : (lib == 1) ? VOR_ALGO_DC
+                                            : VOR_ALGO_DC_QUADTREE;
+        build_vor(v, in.vor, VOR_ORDER_QUADTREE, a);
+        ms = now_ms() - t0;
+    } else if (lib == 3) {
+        Cgal_dt *dt = new Cgal_dt;
+        dt->insert(in.cgal.begin(), in.cgal.end());
+        ms = now_ms() - t0;
+        delete dt;
+    } else {
+        Boost_vd *vd = new Boost_vd;
+        boost::polygon::construct_voronoi(in.boost.begin(), in.boost.end(), vd);
+        ms = now_ms() - t0;
+        delete vd;
+    }
+    return ms;
+}
+
+static std::string scaling(unsigned reps, const char *csv)
+{
+    std::string t = "| log2 n | n |";
+    for (const char *name : scaling_libs) {
+        t += std::string(" ") + name + " ns/site |";
+    }
+    t += "\n|---|---|";
+    for (int lib = 0; lib < SCALING_LIBS; lib++) {
+        t += "---|";
+    }
+    t += "\n";
+    std::string lines = "log2n,library,ns_per_site\n";
+    for (unsigned l = 7; l <= 20; l++) {
+        uint32_t n = 1u << l;
+        inputs in;
+        in.vor = make_input(UNIFORM, n);
+        convert(in, true, true);
+        double best[SCALING_LIBS];
+        for (double &b : best) {
+            b = 1e300;
+        }
+        for (unsigned rep = 0; rep < reps; rep++) {
+            for (int lib = 0; lib < SCALING_LIBS; lib++) {
+                double total = 0;
+                unsigned count = 0;
+                while (count == 0 || total < 20.0) {
+                    total += time_one(lib, in);
+                    count++;
+                }
+                best[lib] = std::min(best[lib], total * 1e6 / count / n);
+            }
+        }
+        t += "| " + std::to_string(l) + " | " + with_commas(n) + " |";
+        for (int lib = 0; lib < SCALING_LIBS; lib++) {
+            t += " " + fmt("%.0f", best[lib]) + " |";
+            lines += std::to_string(l) + "," + scaling_libs[lib] + "," + fmt("%.1f", best[lib]) +
+                     "\n";
+        }
+        t += "\n";
+        std::fprintf(stderr, "scaling: 2^%u done\n", l);
+    }
+    if (csv != nullptr) {
+        FILE *f = std::fopen(csv, "w");
+        if (f == nullptr || std::fputs(lines.c_str(), f) < 0 || std::fclose(f) != 0) {
+            die("cannot write --scaling-csv file");
+        }
+    }
+    return t;
+}
+
 static std::vector<uint32_t> parse_sizes(const char *s)
 {
     std::vector<uint32_t> out;
@@ -520,8 +633,9 @@ int main(int argc, char **argv)
     std::vector<uint32_t> sizes = {10000, 100000, 1000000};
     unsigned reps = 3;
     uint32_t input_order_max = 100000; // input order is O(n^1.5): 10^6 takes a minute
-    const char *out = nullptr;
+    const char *out = nullptr, *scaling_csv = nullptr;
     bool mem = true;
+    unsigned scaling_reps = 2; // 0: no scaling table
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--sizes" && i + 1 < argc) {
@@ -534,10 +648,14 @@ int main(int argc, char **argv)
             out = argv[++i];
         } else if (a == "--no-mem") {
             mem = false;
+        } else if (a == "--scaling-reps" && i + 1 < argc) {
+            scaling_reps = (unsigned)std::max(0l, std::strtol(argv[++i], nullptr, 10));
+        } else if (a == "--scaling-csv" && i + 1 < argc) {
+            scaling_csv = argv[++i];
         } else {
             std::fprintf(stderr,
                          "usage: %s [--sizes N,N,..] [--reps R] [--input-order-max N] "
-                         "[--out FILE] [--no-mem]\n",
+                         "[--out FILE] [--no-mem] [--scaling-reps R] [--scaling-csv FILE]\n",
                          argv[0]);
             return 2;
         }
@@ -568,6 +686,10 @@ int main(int argc, char **argv)
                 "peak RSS growth during the build in a fresh process; heap = peak live "
                 "heap bytes (malloc_usable_size).\n\n" +
                 memory_table(rows);
+    }
+    if (scaling_reps > 0) {
+        text += "\nTime per site against n, uniform full-range int32 sites (best of " +
+                std::to_string(scaling_reps) + " rounds):\n\n" + scaling(scaling_reps, scaling_csv);
     }
     std::fputs(text.c_str(), stdout);
     if (out != nullptr) {

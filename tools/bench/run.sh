@@ -4,11 +4,14 @@
 #
 #   run.sh [delaunay] [ARGS...]   `make bench`: the Delaunay build.
 #       host: build/bench/delaunay-host (tools/bench/delaunay.cpp) times
-#       vor, CGAL and Boost.Polygon on 10^4, 10^5 and 10^6 sites of four
-#       input kinds and measures their memory;
+#       vor (incremental and both divide-and-conquer variants), CGAL and
+#       Boost.Polygon on 10^4, 10^5 and 10^6 sites of four input kinds and
+#       measures their memory, then time per site for uniform n = 2^7 ...
+#       2^20, plotted by tools/bench/plot_scaling.py into
+#       build/bench/delaunay-scaling.png;
 #       targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
 #       and RISC-V 32 gives instructions per inserted site for 1,000 and
-#       10,000 sites.
+#       10,000 sites (incremental in both orders, both D&C variants).
 #   run.sh query [ARGS...]        `make bench-query`: nearest-site queries.
 #       host: build/bench/query-host (tools/bench/query.cpp) times vor,
 #       nanoflann and CGAL on coherent and random queries over 10^3 to 10^6
@@ -68,11 +71,21 @@ for port in $ports; do
 done
 
 rm -f "$out/$bench-host.md" "$out/$bench.md" # never report a stale table
+host_args=()
+if [ "$bench" = delaunay ]; then
+    rm -f "$out/delaunay-scaling.csv" "$out/delaunay-scaling.png"
+    host_args=(--scaling-csv "$out/delaunay-scaling.csv")
+fi
 host_status=0
-"$host" --out "$out/$bench-host.md" "$@" \
+"$host" --out "$out/$bench-host.md" "${host_args[@]}" "$@" \
     2> >(tee "$out/$bench-host.log" >&2) >/dev/null || host_status=$?
 [ -f "$out/$bench-host.md" ] || exit 1
 [ "$host_status" -eq 0 ] || status=1
+# time per site against log2 n, as a plot (docs/delaunay-scaling.png is one)
+if [ -f "$out/delaunay-scaling.csv" ]; then
+    python3 tools/bench/plot_scaling.py "$out/delaunay-scaling.csv" \
+        "$out/delaunay-scaling.png" || status=1
+fi
 
 # The target table of each benchmark, from "$out/$bench-PORT.txt".
 delaunay_targets() {
@@ -91,10 +104,11 @@ for port in ports:
             if key not in rows:
                 rows.append(key)
             value[key, port] = f[3]
-order = {"build": "quadtree (default)", "build-input": "input order"}
+order = {"build": "quadtree (default)", "build-input": "input order",
+         "build-dc": "D&C x-split", "build-dc-quadtree": "D&C quadtree"}
 print("| sites | order | " + " | ".join(ports) + " |")
 print("|---|---|" + "---|" * len(ports))
-for key in sorted(rows, key=lambda k: (k[1], k[0])):
+for key in sorted(rows, key=lambda k: (k[1], list(order).index(k[0]) if k[0] in order else 9)):
     cells = [f"{key[1]:,}", order.get(key[0], key[0])] + [value.get((key, p), "-") for p in ports]
     print("| " + " | ".join(cells) + " |")
 PY
