@@ -39,9 +39,35 @@
  *   VOR_RASTER_BOUNDARY          uint8_t 1 where the right or lower
  *                                neighbour has another label, else 0
  *                                (correct across band seams)
- *   VOR_RASTER_DISTANCE          uint32_t distance to the pixel's site,
- *                                rounded down, saturated at UINT32_MAX
+ *   VOR_RASTER_DISTANCE          uint32_t distance to the pixel's site
+ *                                under the metric (the one that decided
+ *                                the label), rounded down (floor),
+ *                                saturated at UINT32_MAX; ADD and
+ *                                COMPOUND: int32_t (two's complement),
+ *                                saturated at INT32_MAX (see DISTANCE
+ *                                VALUES)
  *   Any kind can also count each site's pixels (areas[count], optional).
+ *
+ * DISTANCE VALUES (exact integer floors; dx, dy = pixel - site point,
+ * D = dx^2 + dy^2, isqrt(x) = floor(sqrt(x)))
+ *   EUCLID, FARTHEST    isqrt(D) (FARTHEST: to the pixel's farthest site)
+ *   L1                  |dx| + |dy|
+ *   LINF                max(|dx|, |dy|)
+ *   LP                  floor((|dx|^p + |dy|^p)^(1/p))
+ *   ELLIPTIC            isqrt(a dx^2 + 2b dx dy + c dy^2)
+ *   MULT                floor(sqrt(D) / w) = floor(isqrt(D) / w)
+ *   ADD                 floor(sqrt(D) - w) = isqrt(D) - w, int32
+ *   COMPOUND            floor(sqrt(D) / w1 - w2) = floor(isqrt(D) / w1) - w2,
+ *                       int32
+ *   HAUSDORFF           isqrt of the largest D over the set's points
+ *   SEGMENT, POLYGON    the floor of the distance to the segment, or the
+ *                       polygon's boundary (0 inside or on it)
+ *   POLYLINE            floor(distance to the polyline / w)
+ *   Saturation: unsigned values from 2^32 on read UINT32_MAX (only L1, Lp,
+ *   elliptic forms and far Euclidean-type distances reach it); ADD and
+ *   COMPOUND values above INT32_MAX read INT32_MAX (they are always above
+ *   -2^31, since w2 < 2^31). The value costs a few integer roots per
+ *   pixel (docs/design.md, "Distance output").
  *
  * SPEED
  *   VOR_RASTER_FAST (the default) finds, per band of 16 rows, the sites
@@ -65,7 +91,7 @@
  *   valid input is out of budget. VOR_RASTER_FAST culls sites per tile of
  *   16 x 16 pixels with exact bounds of each site's distance over the
  *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
- *   VOR_RASTER_DISTANCE is for Euclidean point sites only.
+ *   VOR_RASTER_DISTANCE works with every metric (DISTANCE VALUES).
  *
  * MEMORY
  *   work: VOR_RASTER_WORK_BYTES(count, width) bytes, aligned to

@@ -122,10 +122,12 @@ static void fill16(uint16_t *px, uint32_t from, uint32_t to, uint16_t value)
 }
 
 /* Writes row j (runs) into dst in the output's kind. below: the runs of
- * row j + 1 (BOUNDARY only; NULL on the last row). */
+ * row j + 1 (BOUNDARY only; NULL on the last row). metric: the other
+ * metrics' state (DISTANCE; NULL for Euclidean point sites). */
 static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
-                      const vor_raster_sites_t *sites, uint32_t j, const vor__run_t *runs,
-                      uint32_t count, const vor__run_t *below, uint32_t below_count, void *dst)
+                      const vor_raster_sites_t *sites, const vor__metric_t *metric, uint32_t j,
+                      const vor__run_t *runs, uint32_t count, const vor__run_t *below,
+                      uint32_t below_count, void *dst)
 {
     uint32_t i = 0;
     switch (out->kind) {
@@ -213,10 +215,10 @@ static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *
         uint32_t *px = dst;
         int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
         for (uint32_t r = 0; r < count; r++) {
-            const vor_point_t *s = &sites->points[runs[r].site];
             for (; i < runs[r].end; i++) {
                 int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
-                px[i] = euclid_distance(qx, qy, s);
+                px[i] = metric != NULL ? vor__metric_distance(metric, runs[r].site, qx, qy)
+                                       : euclid_distance(qx, qy, &sites->points[runs[r].site]);
             }
         }
         break;
@@ -294,7 +296,7 @@ VOR__INLINE int render(const vor_raster_output_t *out, const vor_raster_frame_t 
             below_count = produce(producer, j + 1u, rows[cur ^ 1u]);
             below = rows[cur ^ 1u];
         }
-        write_row(out, frame, sites, j, rows[cur], count, below, below_count,
+        write_row(out, frame, sites, producer->metric, j, rows[cur], count, below, below_count,
                   band + (size_t)(j - band_first) * row_bytes);
         if (out->areas != NULL) {
             uint32_t start = 0;
@@ -337,8 +339,8 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
         return VOR_ERR_ARG;
     }
     const int euclid_metric = sites->metric == VOR_METRIC_EUCLID;
-    if (!euclid_metric && (vor__metric_check(sites) != VOR_OK || out->kind == VOR_RASTER_DISTANCE)) {
-        return VOR_ERR_ARG; /* DISTANCE: Euclidean point sites only */
+    if (!euclid_metric && vor__metric_check(sites) != VOR_OK) {
+        return VOR_ERR_ARG;
     }
     const uint32_t n = sites->count;
     size_t pixel_bytes;

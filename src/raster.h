@@ -105,4 +105,9 @@ void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
 /* Runs of row j (rows requested in increasing order); returns their count. */
 uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs);
 
+/* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
+ * (qx, qy): the floor of its distance under m's metric, saturated (ADD
+ * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
+uint32_t vor__metric_distance(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy);
+
 #endif

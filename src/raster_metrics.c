@@ -7,10 +7,12 @@
  * (largest for the farthest-point diagram), ties to the smaller index:
  * Definition 2.2 with another distance.
  *
- * Distances are never computed, only compared, each through a "key" that
- * holds an exact integer (or rational) image of the distance, and one
- * exact comparison per metric (key_compare). docs/design.md, "Other
- * metrics", derives each comparison and its width.
+ * To rank sites, distances are never computed, only compared, each
+ * through a "key" that holds an exact integer (or rational) image of the
+ * distance, and one exact comparison per metric (key_compare).
+ * docs/design.md, "Other metrics", derives each comparison and its width.
+ * Only the DISTANCE output turns the winning key into the floor of the
+ * distance (vor__metric_distance, "Distance output").
  *
  * Culling: the frame is cut into tiles of 16 rows by tile_width columns.
  * For a tile R and a site, bounds() gives a key no larger than the site's
@@ -566,6 +568,222 @@ static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t 
         point_key(m, site, magnitude((int64_t)qx - p->x), magnitude((int64_t)qy - p->y), k);
         break;
     }
+    }
+}
+
+/* --------------------------------------------------------- distances */
+
+/*
+ * VOR_RASTER_DISTANCE (vor_raster.h, OUTPUT KINDS): the floor of the
+ * pixel's own site's distance, from the same key that ranked it, so the
+ * value is the distance that decided the label. Every root and quotient
+ * is an integer one, by these identities (r, w integers, w >= 1, X >= 0):
+ *   floor(sqrt(X))            = isqrt(floor(X))       (r^2 <= X iff r^2 <= floor(X))
+ *   floor(sqrt(X / D))        = isqrt(floor(X / D))   (the same, D > 0)
+ *   floor(sqrt(A) / w)        = floor(isqrt(A) / w)   (r w <= sqrt(A) iff r w <= isqrt(A))
+ *   floor(v - w)              = floor(v) - w
+ * docs/design.md, "Distance output", has the bounds.
+ */
+
+VOR__INLINE u128_t u128_shr1(u128_t a)
+{
+    u128_t r;
+    r.lo = (a.lo >> 1) | (a.hi << 63);
+    r.hi = a.hi >> 1;
+    return r;
+}
+
+VOR__INLINE u128_t u128_shr2(u128_t a)
+{
+    u128_t r;
+    r.lo = (a.lo >> 2) | (a.hi << 62);
+    r.hi = a.hi >> 2;
+    return r;
+}
+
+/* floor(sqrt(x)) (< 2^64) by the bit-by-bit method: bit runs over the
+ * even powers of two down from 2^126, two places a step, so at most 64
+ * steps; root + bit < 2^128 throughout. Constant shifts only (no shift
+ * call on Cortex-M0). */
+static uint64_t isqrt128(u128_t x)
+{
+    u128_t root = u128_of(0), bit;
+    bit.lo = 0;
+    bit.hi = (uint64_t)1 << 62;
+    while (u128_cmp(bit, x) > 0) {
+        bit = u128_shr2(bit);
+    }
+    while (!u128_is_zero(bit)) {
+        u128_t trial = u128_add(root, bit);
+        if (u128_cmp(x, trial) >= 0) {
+            x = u128_sub(x, trial);
+            root = u128_add(u128_shr1(root), bit);
+        } else {
+            root = u128_shr1(root);
+        }
+        bit = u128_shr2(bit);
+    }
+    return root.lo;
+}
+
+/* floor(a / d) for d >= 1, by shift and subtract (no divider on
+ * Cortex-M0): 64 steps, the remainder stays below 2 d < 2^33. */
+static uint64_t divide_u64(uint64_t a, uint32_t d)
+{
+    uint64_t quotient = 0, rest = 0;
+    for (int step = 0; step < 64; step++) {
+        rest = (rest << 1) | (a >> 63);
+        a <<= 1;
+        quotient <<= 1;
+        if (rest >= d) {
+            rest -= d;
+            quotient |= 1u;
+        }
+    }
+    return quotient;
+}
+
+/* Limbs of the rational distances: numerators below 2^130, denominators
+ * below 2^127, so a remainder shifted once stays below 2^128. */
+#define DIV_LIMBS VOR__LIMBS(192)
+
+/* q = floor(a / d) over DIV_LIMBS limbs, d >= 1 and below 2^127: long
+ * division bit by bit from a's top limb (at most 192 steps). */
+static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
+{
+    vor__limb rest[DIV_LIMBS];
+    for (size_t i = 0; i < DIV_LIMBS; i++) {
+        rest[i] = 0;
+        q[i] = 0;
+    }
+    size_t top = DIV_LIMBS;
+    while (top > 0u && a[top - 1u] == 0u) {
+        top--;
+    }
+    for (size_t i = top; i-- > 0u;) {
+        for (uint32_t bit = VOR_LIMB_BITS; bit-- > 0u;) {
+            vor__mw_shl1(rest, DIV_LIMBS);
+            rest[0] |= (a[i] >> bit) & 1u;
+            if (mw_ucompare(rest, d, DIV_LIMBS) >= 0) {
+                vor__mw_sub(rest, d, DIV_LIMBS);
+                q[i] |= (vor__limb)1 << bit;
+            }
+        }
+    }
+}
+
+static u128_t u128_from_limbs(const vor__limb *a)
+{
+    u128_t r;
+#if VOR_LIMB_BITS == 64
+    r.lo = a[0];
+    r.hi = a[1];
+#else
+    r.lo = a[0] | ((uint64_t)a[1] << 32);
+    r.hi = a[2] | ((uint64_t)a[3] << 32);
+#endif
+    return r;
+}
+
+VOR__INLINE uint32_t saturate_u32(uint64_t v)
+{
+    return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
+}
+
+/* v - w as an int32 bit pattern, saturated at INT32_MAX: v < 2^34 and
+ * w >= -2^31, so v - w < 2^35; w < 2^31 keeps it above -2^31. */
+VOR__INLINE uint32_t signed_distance(uint64_t v, int32_t w)
+{
+    int64_t d = (int64_t)v - w;
+    return d > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)d;
+}
+
+/* floor((ax^p + ay^p)^(1/p)) (the key's sum), saturated: the root is
+ * >= 2^32 iff the sum is >= 2^(32 p). Otherwise bisection on the root
+ * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
+ * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
+ * at most 33 steps, each one power below 2^256. */
+static uint32_t lp_distance(const vor__metric_t *m, const rank_key_t *k, uint32_t ax,
+                            uint32_t ay)
+{
+    uint32_t p = m->sites->lp_exponent;
+    vor__limb sum[LP_LIMBS], power[LP_LIMBS];
+    if (m->lp_narrow) {
+        limbs_from_u128(sum, LP_LIMBS, k->num);
+    } else {
+        for (size_t i = 0; i < LP_LIMBS; i++) {
+            sum[i] = i < m->limbs ? k->wide[i] : 0u;
+        }
+    }
+    for (size_t i = 0; i < LP_LIMBS; i++) {
+        power[i] = 0;
+    }
+    power[(32u * p) / VOR_LIMB_BITS] = (vor__limb)1 << ((32u * p) % VOR_LIMB_BITS);
+    if (mw_ucompare(sum, power, LP_LIMBS) >= 0) {
+        return 0xFFFFFFFFu;
+    }
+    uint64_t lo = ax > ay ? ax : ay;
+    uint64_t hi = (uint64_t)ax + ay + 1u;
+    hi = hi > ((uint64_t)1 << 32) ? (uint64_t)1 << 32 : hi;
+    while (hi - lo > 1u) {
+        uint32_t mid = (uint32_t)(lo + ((hi - lo) >> 1));
+        power_limbs(power, LP_LIMBS, mid, p);
+        if (mw_ucompare(power, sum, LP_LIMBS) <= 0) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    return (uint32_t)lo;
+}
+
+/* floor(sqrt((squared ? num^2 : num) / den)) of a rational key: the
+ * squared distance's floor, then its integer root. The true squared
+ * distance is below 2^65 (at most a vertex's), so the root saturates only
+ * from 2^64 on. */
+static uint32_t rational_distance(const rank_key_t *k)
+{
+    if (!k->squared && k->den.lo == 1u && k->den.hi == 0u) {
+        return saturate_u32(isqrt128(k->num));
+    }
+    vor__limb num[DIV_LIMBS], x[DIV_LIMBS], den[DIV_LIMBS], q[DIV_LIMBS];
+    limbs_from_u128(num, DIV_LIMBS, k->num);
+    if (k->squared) {
+        vor__mw_mul(x, DIV_LIMBS, num, DIV_LIMBS, num, DIV_LIMBS); /* < 2^130 */
+    } else {
+        mw_copy(x, num, DIV_LIMBS);
+    }
+    limbs_from_u128(den, DIV_LIMBS, k->den);
+    mw_divide(q, x, den);
+    return saturate_u32(isqrt128(u128_from_limbs(q)));
+}
+
+uint32_t vor__metric_distance(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy)
+{
+    rank_key_t k;
+    site_key(m, site, qx, qy, &k);
+    const vor_raster_sites_t *s = m->sites;
+    switch (m->metric) {
+    case VOR_METRIC_L1:   /* ax + ay < 2^33 */
+    case VOR_METRIC_LINF: /* < 2^32 */
+        return saturate_u32(k.num.lo);
+    case VOR_METRIC_LP: {
+        const vor_point_t *p = &s->points[site];
+        return lp_distance(m, &k, magnitude((int64_t)qx - p->x), magnitude((int64_t)qy - p->y));
+    }
+    case VOR_METRIC_MULT: /* isqrt(A) < 2^33 */
+        return saturate_u32(divide_u64(isqrt128(k.num), (uint32_t)k.w1));
+    case VOR_METRIC_ADD:
+        return signed_distance(isqrt128(k.num), k.w2);
+    case VOR_METRIC_COMPOUND:
+        return signed_distance(divide_u64(isqrt128(k.num), (uint32_t)k.w1), k.w2);
+    case VOR_METRIC_ELLIPTIC:
+    case VOR_METRIC_SEGMENT:
+    case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE:
+        return rational_distance(&k);
+    default: /* FARTHEST, HAUSDORFF: the squared distance */
+        return saturate_u32(isqrt128(k.num));
     }
 }
 

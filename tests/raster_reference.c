@@ -659,3 +659,110 @@ uint32_t ref_nearest_metric(const vor_raster_sites_t *s, int32_t qx, int32_t qy,
     }
     }
 }
+
+/* ------------------------------------------------- distance values */
+
+/* What "the distance is at least r" means for one site at one pixel:
+ *   power:    r^p den <= num (r >= 0): L1, L-infinity (p = 1), Lp, and
+ *             every squared distance as a fraction (p = 2)
+ *   shifted:  r + w2 < 0, or ((r + w2) w1)^2 <= num: sqrt(num) / w1 - w2
+ *             >= r, for the additive and compound weights (signed r) */
+typedef struct {
+    int shifted;
+    uint32_t p;
+    ref_big_t num, den;
+    int64_t w1, w2;
+} ref_floor_t;
+
+static int reaches(const ref_floor_t *d, int64_t r)
+{
+    ref_big_t v, t, f;
+    if (d->shifted) {
+        int64_t base = r + d->w2; /* |base| < 2^33 */
+        if (base < 0) {
+            return 1;
+        }
+        ref_big_set(&v, (uint64_t)base);
+        big_scale(&v, &v, (uint64_t)d->w1);
+        ref_big_mul(&t, &v, &v);
+        return ref_big_compare(&t, &d->num) <= 0;
+    }
+    ref_big_set(&f, (uint64_t)r);
+    big_copy(&v, &d->den);
+    for (uint32_t i = 0; i < d->p; i++) {
+        ref_big_mul(&t, &v, &f);
+        big_copy(&v, &t);
+    }
+    return ref_big_compare(&v, &d->num) <= 0;
+}
+
+uint32_t ref_distance_metric(const vor_raster_sites_t *s, uint32_t k, int32_t qx, int32_t qy)
+{
+    ref_floor_t d;
+    d.shifted = 0;
+    d.p = 2;
+    d.w1 = 1;
+    d.w2 = 0;
+    ref_big_set(&d.den, 1);
+    const vor_point_t *p = &s->points[k];
+    switch (s->metric) {
+    case VOR_METRIC_L1:
+    case VOR_METRIC_LINF:
+        d.p = 1;
+        plain_value(&d.num, s, k, qx, qy);
+        break;
+    case VOR_METRIC_LP:
+        d.p = s->lp_exponent;
+        plain_value(&d.num, s, k, qx, qy);
+        break;
+    case VOR_METRIC_ELLIPTIC: /* r^2 <= Q iff r^2 a <= a Q */
+        elliptic_scaled(&d.num, s, qx, qy, p);
+        ref_big_set(&d.den, (uint64_t)s->form_a);
+        break;
+    case VOR_METRIC_MULT: /* r <= sqrt(D) / w iff r^2 w^2 <= D */
+        ref_euclid_square(&d.num, qx, qy, p);
+        ref_big_set(&d.den, (uint64_t)s->mult_weights[k]);
+        big_scale(&d.den, &d.den, (uint64_t)s->mult_weights[k]);
+        break;
+    case VOR_METRIC_ADD:
+    case VOR_METRIC_COMPOUND:
+        d.shifted = 1;
+        ref_euclid_square(&d.num, qx, qy, p);
+        d.w1 = s->metric == VOR_METRIC_COMPOUND ? s->mult_weights[k] : 1;
+        d.w2 = s->add_weights[k];
+        break;
+    case VOR_METRIC_SEGMENT:
+    case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE: {
+        ref_ratio_t r;
+        if (s->metric == VOR_METRIC_SEGMENT) {
+            segment_square(&r, qx, qy, &s->points[2u * k], &s->points[2u * k + 1u]);
+        } else if (s->metric == VOR_METRIC_POLYLINE) {
+            polyline_square(&r, qx, qy, &s->points[s->offsets[k]],
+                            s->offsets[k + 1u] - s->offsets[k],
+                            s->mult_weights != NULL ? s->mult_weights[k] : 1);
+        } else {
+            polygon_square(&r, qx, qy, &s->points[s->offsets[k]],
+                           s->offsets[k + 1u] - s->offsets[k]);
+        }
+        big_copy(&d.num, &r.num);
+        big_copy(&d.den, &r.den);
+        break;
+    }
+    default: /* EUCLID, FARTHEST, HAUSDORFF: integer squared distances */
+        plain_value(&d.num, s, k, qx, qy);
+        break;
+    }
+    /* the largest r of the output's range that the distance reaches
+     * (saturation: the range's top); the bottom always holds */
+    int64_t lo = d.shifted ? INT32_MIN : 0, hi = d.shifted ? INT32_MAX : (int64_t)UINT32_MAX;
+    while (lo < hi) {
+        int64_t mid = lo + (hi - lo + 1) / 2;
+        if (reaches(&d, mid)) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    return (uint32_t)lo;
+}

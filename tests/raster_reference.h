@@ -42,4 +42,11 @@ uint32_t ref_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy);
  * (by search: the largest r with r^2 <= d^2). */
 uint32_t ref_distance(const vor_raster_sites_t *sites, uint32_t k, int32_t qx, int32_t qy);
 
+/* The VOR_RASTER_DISTANCE value of site k at (qx, qy) under sites'
+ * metric: the largest r of the output range (0 .. UINT32_MAX; ADD and
+ * COMPOUND: INT32_MIN .. INT32_MAX, returned as its bit pattern) that the
+ * true distance reaches, found by bisection on exact checks "distance >=
+ * r" (r^p <= |dx|^p + |dy|^p, r^2 den <= num, (r + w2) w1 <= sqrt(D)). */
+uint32_t ref_distance_metric(const vor_raster_sites_t *sites, uint32_t k, int32_t qx, int32_t qy);
+
 #endif

@@ -22,6 +22,7 @@ static vor_point_t points[MAX_POINTS];
 static int32_t mult[MAX_SITES], add[MAX_SITES];
 static uint32_t offsets[MAX_SITES + 1u];
 static uint32_t expect_label[MAX_PIXELS];
+static uint32_t expect_distance[MAX_PIXELS];
 static uint32_t frame_labels[MAX_PIXELS];
 static uint8_t band_memory[MAX_PIXELS * 4u] __attribute__((aligned(8)));
 static uint8_t work[VOR_RASTER_WORK_BYTES(MAX_SITES, 400u)] __attribute__((aligned(8)));
@@ -77,14 +78,16 @@ static int32_t centre_y(const vor_raster_frame_t *f, uint32_t j)
     return (int32_t)(f->origin_y + (int64_t)j * f->step_y);
 }
 
-/* One render of kind LABEL32 (or BOUNDARY), compared with the reference. */
+/* One render of kind LABEL32, BOUNDARY or DISTANCE, compared with the
+ * reference (expect_distance: the reference's distances). */
 static void render_and_compare(const char *name, const vor_raster_frame_t *f,
                                const vor_raster_sites_t *set, enum vor_raster_method method,
-                               uint32_t band_rows, int boundary)
+                               uint32_t band_rows, enum vor_raster_kind kind)
 {
+    int boundary = kind == VOR_RASTER_BOUNDARY;
     capture_t cap = {0, f->width, 0, boundary};
     vor_raster_output_t out = {0};
-    out.kind = boundary ? VOR_RASTER_BOUNDARY : VOR_RASTER_LABEL32;
+    out.kind = kind;
     out.band = band_memory;
     out.band_bytes = (size_t)f->width * band_rows * (boundary ? 1u : 4u);
     out.band_rows = band_rows;
@@ -111,6 +114,8 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
             if (boundary) {
                 want = (i + 1u < w && expect_label[j * w + i + 1u] != label) ||
                        (j + 1u < f->height && expect_label[(j + 1u) * w + i] != label);
+            } else if (kind == VOR_RASTER_DISTANCE) {
+                want = expect_distance[j * w + i];
             }
             uint32_t got = frame_labels[j * w + i];
             if (want != got && wrong++ < 3u) {
@@ -120,7 +125,7 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
         }
     }
     CHECK(wrong == 0, "%s %s %s rows %u%s: %u pixels wrong", metric, name, how, band_rows,
-          boundary ? " boundary" : "", wrong);
+          boundary ? " boundary" : kind == VOR_RASTER_DISTANCE ? " distance" : "", wrong);
     uint32_t bad_area = 0;
     for (uint32_t k = 0; k < set->count; k++) {
         uint32_t count = 0;
@@ -134,7 +139,23 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
 
 static uint32_t case_number;
 
-/* The reference labels, then the fast and brute renders. */
+/* Every pixel's reference distance to its reference site. */
+static void reference_distances(const vor_raster_frame_t *f, const vor_raster_sites_t *set)
+{
+    for (uint32_t j = 0; j < f->height; j++) {
+        for (uint32_t i = 0; i < f->width; i++) {
+            uint32_t p = j * f->width + i;
+            expect_distance[p] =
+                ref_distance_metric(set, expect_label[p], centre_x(f, i), centre_y(f, j));
+        }
+    }
+}
+
+/* Set by a case that must check distances at every frame (adversarial
+ * values); otherwise every other frame does (the reference is slow). */
+static int always_distance;
+
+/* The reference labels, then the fast and brute renders (and DISTANCE). */
 static void check_frame(const char *name, const vor_raster_frame_t *f,
                         const vor_raster_sites_t *set)
 {
@@ -150,10 +171,17 @@ static void check_frame(const char *name, const vor_raster_frame_t *f,
     static const uint32_t band_heights[] = {1, 5, 16, 36};
     case_number++;
     uint32_t rows = band_heights[case_number % 4u];
-    render_and_compare(name, f, set, VOR_RASTER_FAST, rows, 0);
-    render_and_compare(name, f, set, VOR_RASTER_BRUTE, band_heights[(case_number + 1u) % 4u], 0);
+    render_and_compare(name, f, set, VOR_RASTER_FAST, rows, VOR_RASTER_LABEL32);
+    render_and_compare(name, f, set, VOR_RASTER_BRUTE, band_heights[(case_number + 1u) % 4u],
+                       VOR_RASTER_LABEL32);
     if (case_number % 3u == 0u) {
-        render_and_compare(name, f, set, VOR_RASTER_FAST, band_heights[(case_number + 2u) % 4u], 1);
+        render_and_compare(name, f, set, VOR_RASTER_FAST, band_heights[(case_number + 2u) % 4u],
+                           VOR_RASTER_BOUNDARY);
+    }
+    if (always_distance || case_number % 2u == 0u) {
+        reference_distances(f, set);
+        render_and_compare(name, f, set, case_number % 4u < 2u ? VOR_RASTER_FAST : VOR_RASTER_BRUTE,
+                           band_heights[(case_number + 3u) % 4u], VOR_RASTER_DISTANCE);
     }
 }
 
@@ -562,6 +590,135 @@ static void huge_cases(test_rng_t *rng)
     check_frame("heavy", &f, &set);
 }
 
+/* ------------------------------------------------- distance values */
+
+static uint32_t one_pixel;
+
+static int one_pixel_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    (void)user;
+    (void)first_row;
+    (void)rows;
+    one_pixel = *(const uint32_t *)pixels;
+    return 0;
+}
+
+/* The DISTANCE value of site 0 (the only one) at the single pixel (qx, qy). */
+static uint32_t distance_at(const vor_raster_sites_t *set, int32_t qx, int32_t qy)
+{
+    vor_raster_frame_t f = make_frame(qx, qy, 1, 1, 1, 1);
+    vor_raster_output_t out = {0};
+    out.kind = VOR_RASTER_DISTANCE;
+    out.band = band_memory;
+    out.band_bytes = 4;
+    out.band_rows = 1;
+    out.flush = one_pixel_flush;
+    one_pixel = 0xDEADBEEFu;
+    int err = vor_raster(&f, set, &out, work, sizeof work);
+    return err == VOR_OK ? one_pixel : 0xDEADBEEFu;
+}
+
+/* Values worked out by hand (and the saturation points): the pixel
+ * (3, 4) against a site at the origin, |q - s| = 5. */
+static void distance_value_cases(void)
+{
+    static const struct {
+        enum vor_metric metric;
+        uint32_t p;                /* LP exponent */
+        int32_t a, b, c;           /* ELLIPTIC form */
+        int32_t w1, w2;            /* weights */
+        int32_t sx, sy, qx, qy;    /* site and pixel */
+        uint32_t want;
+    } cases[] = {
+        {VOR_METRIC_L1, 3, 1, 0, 1, 1, 0, 0, 0, 3, 4, 7},
+        {VOR_METRIC_LINF, 3, 1, 0, 1, 1, 0, 0, 0, 3, 4, 4},
+        {VOR_METRIC_LP, 1, 1, 0, 1, 1, 0, 0, 0, 3, 4, 7},
+        {VOR_METRIC_LP, 2, 1, 0, 1, 1, 0, 0, 0, 3, 4, 5},
+        {VOR_METRIC_LP, 3, 1, 0, 1, 1, 0, 0, 0, 3, 4, 4},            /* 91^(1/3) = 4.50 */
+        {VOR_METRIC_ELLIPTIC, 3, 1, 0, 1, 1, 0, 0, 0, 3, 4, 5},
+        {VOR_METRIC_ELLIPTIC, 3, 2, 1, 3, 1, 0, 0, 0, 3, 4, 9},      /* sqrt(90) */
+        {VOR_METRIC_MULT, 3, 1, 0, 1, 2, 0, 0, 0, 3, 4, 2},          /* 2.5 */
+        {VOR_METRIC_MULT, 3, 1, 0, 1, 5, 0, 0, 0, 3, 4, 1},          /* exactly 1 */
+        {VOR_METRIC_ADD, 3, 1, 0, 1, 1, 7, 0, 0, 3, 4, 0xFFFFFFFEu}, /* -2 */
+        {VOR_METRIC_ADD, 3, 1, 0, 1, 1, -3, 0, 0, 3, 4, 8},
+        {VOR_METRIC_COMPOUND, 3, 1, 0, 1, 2, -1, 0, 0, 3, 4, 3},     /* 3.5 */
+        {VOR_METRIC_COMPOUND, 3, 1, 0, 1, 2, 3, 0, 0, 3, 4, 0xFFFFFFFFu}, /* floor(-0.5) */
+        {VOR_METRIC_FARTHEST, 3, 1, 0, 1, 1, 0, 0, 0, 3, 4, 5},
+        {VOR_METRIC_HAUSDORFF, 3, 1, 0, 1, 1, 0, 0, 0, 3, 4, 5},
+        /* on the site */
+        {VOR_METRIC_ADD, 3, 1, 0, 1, 1, 9, 7, 7, 7, 7, 0xFFFFFFF7u},
+        {VOR_METRIC_LP, 8, 1, 0, 1, 1, 0, 7, 7, 7, 7, 0},
+        /* saturation and the largest exact values */
+        {VOR_METRIC_L1, 3, 1, 0, 1, 1, 0, INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX, 0xFFFFFFFFu},
+        {VOR_METRIC_L1, 3, 1, 0, 1, 1, 0, INT32_MIN, 0, INT32_MAX, 0, 0xFFFFFFFFu},
+        {VOR_METRIC_LINF, 3, 1, 0, 1, 1, 0, INT32_MIN, 5, INT32_MAX, 0, 0xFFFFFFFFu},
+        {VOR_METRIC_LP, 8, 1, 0, 1, 1, 0, INT32_MIN, INT32_MIN, 0, 0, 2341847523u},
+        {VOR_METRIC_LP, 8, 1, 0, 1, 1, 0, INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX, 0xFFFFFFFFu},
+        {VOR_METRIC_LP, 8, 1, 0, 1, 1, 0, INT32_MIN, 0, INT32_MAX, 0, 0xFFFFFFFFu},
+        {VOR_METRIC_LP, 3, 1, 0, 1, 1, 0, INT32_MIN, 0, INT32_MAX, 0, 0xFFFFFFFFu},
+        {VOR_METRIC_FARTHEST, 3, 1, 0, 1, 1, 0, INT32_MIN, 0, INT32_MAX, 0, 0xFFFFFFFFu},
+        {VOR_METRIC_FARTHEST, 3, 1, 0, 1, 1, 0, INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX,
+         0xFFFFFFFFu},
+        {VOR_METRIC_MULT, 3, 1, 0, 1, 2, 0, INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX,
+         3037000499u}, /* floor((2^32 - 1) sqrt(2) / 2) */
+        {VOR_METRIC_ELLIPTIC, 3, INT32_MAX, -2147483000, INT32_MAX, 1, 0, 0, 0, 1000, 1000, 35972},
+        {VOR_METRIC_ELLIPTIC, 3, INT32_MAX, -2147483000, INT32_MAX, 1, 0, INT32_MIN, INT32_MAX,
+         INT32_MAX, INT32_MIN, 0xFFFFFFFFu},
+        {VOR_METRIC_ADD, 3, 1, 0, 1, 1, INT32_MIN, 0, 0, 0, 0, 0x7FFFFFFFu},
+        {VOR_METRIC_ADD, 3, 1, 0, 1, 1, INT32_MAX, 0, 0, 0, 0, 0x80000001u},
+        {VOR_METRIC_ADD, 3, 1, 0, 1, 1, -1, INT32_MIN, 0, INT32_MAX, 0, 0x7FFFFFFFu},
+        {VOR_METRIC_COMPOUND, 3, 1, 0, 1, INT32_MAX, INT32_MIN, 0, 0, 0, 0, 0x7FFFFFFFu},
+        {VOR_METRIC_COMPOUND, 3, 1, 0, 1, 3, INT32_MAX, INT32_MIN, 0, INT32_MAX, 0,
+         0xD5555556u}, /* floor((2^32 - 1) / 3) - (2^31 - 1) = -715827882 */
+    };
+    for (uint32_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        points[0].x = cases[c].sx;
+        points[0].y = cases[c].sy;
+        mult[0] = cases[c].w1;
+        add[0] = cases[c].w2;
+        offsets[0] = 0;
+        offsets[1] = 1;
+        vor_raster_sites_t set = point_set(cases[c].metric, 1);
+        set.lp_exponent = cases[c].p;
+        set.form_a = cases[c].a;
+        set.form_b = cases[c].b;
+        set.form_c = cases[c].c;
+        uint32_t got = distance_at(&set, cases[c].qx, cases[c].qy);
+        uint32_t ref = ref_distance_metric(&set, 0, cases[c].qx, cases[c].qy);
+        CHECK(got == cases[c].want && ref == cases[c].want,
+              "distance value %u (%s): %u, reference %u, by hand %u", c,
+              metric_names[cases[c].metric], got, ref, cases[c].want);
+    }
+    /* shaped sites: a segment (0, 0)-(10, 0), the polyline of it weighted
+     * 3, a square around the pixel (inside: 0), a point polygon */
+    static const vor_point_t shapes[] = {{0, 0}, {10, 0}, {-1, -1}, {9, -1}, {9, 9}, {-1, 9}};
+    for (uint32_t i = 0; i < 6u; i++) {
+        points[i] = shapes[i];
+    }
+    vor_raster_sites_t set = point_set(VOR_METRIC_SEGMENT, 1);
+    CHECK(distance_at(&set, 3, 4) == 4u, "distance value: segment");
+    CHECK(distance_at(&set, 13, 4) == 5u, "distance value: segment end");
+    set.metric = VOR_METRIC_POLYLINE;
+    offsets[0] = 0;
+    offsets[1] = 2;
+    mult[0] = 3;
+    CHECK(distance_at(&set, 3, 4) == 1u, "distance value: weighted polyline 4 / 3");
+    CHECK(distance_at(&set, -6, -8) == 3u, "distance value: weighted polyline 10 / 3");
+    set.metric = VOR_METRIC_POLYGON;
+    offsets[0] = 2;
+    offsets[1] = 6;
+    CHECK(distance_at(&set, 3, 4) == 0u, "distance value: inside a polygon");
+    CHECK(distance_at(&set, 9, 4) == 0u, "distance value: on a polygon's edge");
+    CHECK(distance_at(&set, 12, 13) == 5u, "distance value: outside a polygon (3-4-5)");
+    /* a slanted segment: the perpendicular distance 7 sqrt(2) / 2 = 4.95 */
+    points[0].x = 0;
+    points[0].y = 0;
+    points[1].x = 10;
+    points[1].y = 10;
+    set = point_set(VOR_METRIC_SEGMENT, 1);
+    CHECK(distance_at(&set, 1, 8) == 4u, "distance value: slanted segment");
+}
+
 /* A wide frame with few sites that all stay candidates everywhere: the
  * pool of the documented work memory cannot list every tile, and tiles
  * fall back to all sites. */
@@ -614,7 +771,7 @@ static void error_cases(void)
         vor_raster_output_t d = out;
         d.kind = VOR_RASTER_DISTANCE;
         d.band_bytes = 400;
-        CHECK(vor_raster(&f, &set, &d, work, bytes) == VOR_ERR_ARG, "errors %s: DISTANCE kind",
+        CHECK(vor_raster(&f, &set, &d, work, bytes) == VOR_OK, "errors %s: DISTANCE kind",
               metric_names[m]);
         set.points = NULL;
         CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors %s: NULL points",
@@ -694,12 +851,17 @@ void test_raster_metrics(void)
     test_rng_t rng;
     test_rng_seed(&rng, 5005);
     error_cases();
+    distance_value_cases();
     point_metric_cases(&rng);
+    always_distance = 1; /* exact ties and integer distances */
     weighted_tie_cases(&rng);
+    always_distance = 0;
     hausdorff_cases(&rng);
     segment_cases(&rng);
     polygon_cases(&rng);
     polyline_cases(&rng);
+    always_distance = 1; /* saturation and the widest values */
     huge_cases(&rng);
+    always_distance = 0;
     pool_overflow_case();
 }
