@@ -144,7 +144,7 @@ run-example-%: $(B)/example-%$(EXE)
 
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)
-$(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) $(B)/libvor.a
+$(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) tools/png_write.h $(B)/libvor.a
 	gcc $(HOST_TOOL_CFLAGS) -Itools/cli $(CLI_SRCS) $(B)/libvor.a -o $@
 
 $(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:

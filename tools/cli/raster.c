@@ -28,22 +28,7 @@
 #include "cli.h"
 #include "vor_raster.h"
 
-#if defined(__has_include)
-#if __has_include(<stb/stb_image_write.h>)
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wconversion"
-#pragma GCC diagnostic ignored "-Wsign-conversion"
-#pragma GCC diagnostic ignored "-Wshadow"
-#pragma GCC diagnostic ignored "-Wcast-align"
-#pragma GCC diagnostic ignored "-Wpedantic"
-#pragma GCC diagnostic ignored "-Wunused-function"
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-#include <stb/stb_image_write.h>
-#pragma GCC diagnostic pop
-#define HAVE_STB 1
-#endif
-#endif
+#include "../png_write.h"
 
 typedef struct collect {
     uint8_t *frame;
