@@ -96,12 +96,28 @@ void vor__grid_rebuild(vor_t *d)
         if (!vor__slot_empty(&d->triangles[s])) { /* in the mesh, not a duplicate */
             const vor_point_t *p = &d->sites[s];
             uint32_t b = bucket_of(d, p->x, p->y);
+#if VOR_INDEX_BITS == 32
+            /* ids take 21 bits (VOR_MAX_SITES < 2^21): while the grid is
+             * filled, the 11 bits above hold the site's distance from the
+             * centre (off_centre < 2^31, in steps of 2^20), so that the
+             * comparison reads no coordinates from elsewhere in the arena:
+             * on a cached host those reads were most of the rebuild. An
+             * empty bucket, VOR__NONE, is above every packed entry. */
+            vor_index_t packed = (off_centre(d, p) >> 20) << 21 | s;
+            bucket[b] = (packed < bucket[b]) ? packed : bucket[b];
+#else
             if (bucket[b] == VOR__NONE ||
                 off_centre(d, p) < off_centre(d, &d->sites[bucket[b]])) {
                 bucket[b] = (vor_index_t)s;
             }
+#endif
         }
     }
+#if VOR_INDEX_BITS == 32
+    for (uint32_t b = 0; b < count; b++) {
+        bucket[b] = (bucket[b] == VOR__NONE) ? VOR__NONE : (bucket[b] & 0x1FFFFFu);
+    }
+#endif
     /* empty buckets borrow from the last filled one before them, the
      * leading ones from the first filled one */
     vor_index_t last = VOR__NONE;
