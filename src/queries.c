@@ -334,6 +334,9 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
             dy >= limit) {
             return; /* not cached: vor_nearest answers */
         }
+        /* the cell the point moves into next is one of these: its first
+         * triangle (the neighbour's home slot) is fetched meanwhile */
+        VOR__PREFETCH(&d->triangles[n]);
         tracker->neighbour[edges] = (vor_index_t)n;
         vor_tracker_edge_t *e = &tracker->edge[edges++];
         e->twice_dx = (int32_t)(2 * dx);
