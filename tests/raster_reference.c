@@ -766,3 +766,26 @@ uint32_t ref_distance_metric(const vor_raster_sites_t *s, uint32_t k, int32_t qx
     }
     return (uint32_t)lo;
 }
+
+vor_raster_frame_t ref_frame(int32_t ox, int32_t oy, int32_t sx, int32_t sy, uint32_t w,
+                             uint32_t h)
+{
+    vor_raster_frame_t f;
+    f.origin_x = ox;
+    f.origin_y = oy;
+    f.step_x = sx;
+    f.step_y = sy;
+    f.width = w;
+    f.height = h;
+    return f;
+}
+
+int32_t ref_centre_x(const vor_raster_frame_t *f, uint32_t i)
+{
+    return (int32_t)(f->origin_x + (int64_t)i * f->step_x);
+}
+
+int32_t ref_centre_y(const vor_raster_frame_t *f, uint32_t j)
+{
+    return (int32_t)(f->origin_y + (int64_t)j * f->step_y);
+}

@@ -12,6 +12,13 @@
 
 #include "vor_raster.h"
 
+/* The frame (origin, steps, size) and its pixel centres, for the tests
+ * that set up frames and compare pixels. */
+vor_raster_frame_t ref_frame(int32_t ox, int32_t oy, int32_t sx, int32_t sy, uint32_t w,
+                             uint32_t h);
+int32_t ref_centre_x(const vor_raster_frame_t *f, uint32_t i);
+int32_t ref_centre_y(const vor_raster_frame_t *f, uint32_t j);
+
 /* An unsigned integer of REF_LIMBS 32-bit limbs, least significant first. */
 #define REF_LIMBS 20
 typedef struct {

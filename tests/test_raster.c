@@ -68,8 +68,8 @@ static uint32_t expected_value(const vor_raster_frame_t *f, const vor_raster_sit
                (j + 1u < f->height && expect_label[(j + 1u) * w + i] != label);
     case VOR_RASTER_DISTANCE:
         return ref_distance(set, label,
-                            (int32_t)(f->origin_x + (int64_t)i * f->step_x),
-                            (int32_t)(f->origin_y + (int64_t)j * f->step_y));
+                            ref_centre_x(f, i),
+                            ref_centre_y(f, j));
     default:
         return label;
     }
@@ -158,8 +158,8 @@ static void check_frame(const char *name, const vor_raster_frame_t *f, uint32_t 
     for (uint32_t j = 0; j < f->height; j++) {
         for (uint32_t i = 0; i < f->width; i++) {
             expect_label[j * f->width + i] =
-                ref_nearest(&set, (int32_t)(f->origin_x + (int64_t)i * f->step_x),
-                            (int32_t)(f->origin_y + (int64_t)j * f->step_y));
+                ref_nearest(&set, ref_centre_x(f, i),
+                            ref_centre_y(f, j));
         }
     }
     for (uint32_t k = 0; k < n; k++) {
@@ -180,26 +180,13 @@ static void check_frame(const char *name, const vor_raster_frame_t *f, uint32_t 
     }
 }
 
-static vor_raster_frame_t make_frame(int32_t ox, int32_t oy, int32_t sx, int32_t sy, uint32_t w,
-                                     uint32_t h)
-{
-    vor_raster_frame_t f;
-    f.origin_x = ox;
-    f.origin_y = oy;
-    f.step_x = sx;
-    f.step_y = sy;
-    f.width = w;
-    f.height = h;
-    return f;
-}
-
 static void random_cases(test_rng_t *rng)
 {
     for (uint32_t round = 0; round < 12u; round++) {
         uint32_t n = 1u + test_rng_u32(rng) % MAX_SITES;
         uint32_t w = 1u + test_rng_u32(rng) % MAX_W, h = 1u + test_rng_u32(rng) % MAX_H;
         int32_t sx = 1 + (int32_t)(test_rng_u32(rng) % 5u), sy = 1 + (int32_t)(test_rng_u32(rng) % 5u);
-        vor_raster_frame_t f = make_frame(test_rng_range(rng, -50, 50), test_rng_range(rng, -50, 50),
+        vor_raster_frame_t f = ref_frame(test_rng_range(rng, -50, 50), test_rng_range(rng, -50, 50),
                                           sx, sy, w, h);
         /* sites around the frame, some outside it */
         for (uint32_t k = 0; k < n; k++) {
@@ -213,7 +200,7 @@ static void random_cases(test_rng_t *rng)
 static void adversarial_cases(test_rng_t *rng)
 {
     /* sites on pixel centres, with duplicates */
-    vor_raster_frame_t f = make_frame(-7, 11, 3, 2, 33, 37);
+    vor_raster_frame_t f = ref_frame(-7, 11, 3, 2, 33, 37);
     for (uint32_t k = 0; k < 60u; k++) {
         sites[k].x = f.origin_x + 3 * test_rng_range(rng, 0, 32);
         sites[k].y = f.origin_y + 2 * test_rng_range(rng, 0, 36);
@@ -225,7 +212,7 @@ static void adversarial_cases(test_rng_t *rng)
 
     /* a square lattice, indices reversed: bisectors through pixel centres,
      * four-way ties at cell corners */
-    f = make_frame(0, 0, 1, 1, 41, 40);
+    f = ref_frame(0, 0, 1, 1, 41, 40);
     uint32_t n = 0;
     for (int32_t y = 0; y <= 40; y += 8) {
         for (int32_t x = 0; x <= 40; x += 8) {
@@ -249,7 +236,7 @@ static void adversarial_cases(test_rng_t *rng)
 
     /* pairs mirrored across the rows at band seams (rows 15, 16, 31, 32):
      * equal lines along the edges of culling bands */
-    f = make_frame(0, 0, 1, 1, 30, 40);
+    f = ref_frame(0, 0, 1, 1, 30, 40);
     n = 0;
     static const int32_t seams[] = {15, 16, 31, 32, 0, 39};
     for (uint32_t s = 0; s < 6u; s++) {
@@ -276,7 +263,7 @@ static void adversarial_cases(test_rng_t *rng)
     check_frame("mirrors-x", &f, n);
 
     /* collinear sites: a vertical line (equal slopes), then a horizontal one */
-    f = make_frame(-3, -3, 1, 1, 20, 20);
+    f = ref_frame(-3, -3, 1, 1, 20, 20);
     for (uint32_t k = 0; k < 16u; k++) {
         sites[k].x = 7;
         sites[k].y = test_rng_range(rng, -10, 30);
@@ -296,15 +283,15 @@ static void adversarial_cases(test_rng_t *rng)
         sites[k].x = test_rng_range(rng, -30, 30);
         sites[k].y = test_rng_range(rng, -30, 30);
     }
-    f = make_frame(2, 2, 7, 9, 1, 1);
+    f = ref_frame(2, 2, 7, 9, 1, 1);
     check_frame("one-pixel", &f, 10);
-    f = make_frame(-20, 2, 1, 9, 41, 1);
+    f = ref_frame(-20, 2, 1, 9, 41, 1);
     check_frame("one-row", &f, 10);
-    f = make_frame(2, -20, 9, 1, 1, 40);
+    f = ref_frame(2, -20, 9, 1, 1, 40);
     check_frame("one-column", &f, 10);
 
     /* far sites, inside the fast path's budget (2^29) */
-    f = make_frame(1000, -2000, 17, 13, 30, 30);
+    f = ref_frame(1000, -2000, 17, 13, 30, 30);
     for (uint32_t k = 0; k < 40u; k++) {
         int32_t far = (k % 3u == 0u) ? 500000000 : 300;
         sites[k].x = f.origin_x + test_rng_range(rng, -far, far);
@@ -313,14 +300,14 @@ static void adversarial_cases(test_rng_t *rng)
     check_frame("far", &f, 40);
 
     /* the mid envelope tier: coordinates between 2^14 and 2^19 */
-    f = make_frame(-20000, 30000, 997, 1009, 41, 40);
+    f = ref_frame(-20000, 30000, 997, 1009, 41, 40);
     for (uint32_t k = 0; k < 50u; k++) {
         sites[k].x = f.origin_x + test_rng_range(rng, -200000, 240000);
         sites[k].y = f.origin_y + test_rng_range(rng, -200000, 240000);
     }
     check_frame("mid", &f, 50);
     /* a lattice with four-way ties at pixel centres, in the mid tier */
-    f = make_frame(0, 0, 1000, 1000, 41, 40);
+    f = ref_frame(0, 0, 1000, 1000, 41, 40);
     n = 0;
     for (int32_t y = 0; y <= 40; y += 8) {
         for (int32_t x = 4; x <= 44; x += 8) {
@@ -336,7 +323,7 @@ static void adversarial_cases(test_rng_t *rng)
     check_frame("mid-lattice", &f, MAX_SITES);
 
     /* the whole int32 range: the exact fallback */
-    f = make_frame(INT32_MIN, INT32_MIN, 107374182, 110127366, 41, 40);
+    f = ref_frame(INT32_MIN, INT32_MIN, 107374182, 110127366, 41, 40);
     for (uint32_t k = 0; k < 30u; k++) {
         sites[k].x = (int32_t)test_rng_u32(rng);
         sites[k].y = (int32_t)test_rng_u32(rng);
@@ -347,7 +334,7 @@ static void adversarial_cases(test_rng_t *rng)
     sites[31].y = INT32_MAX;
     check_frame("huge", &f, 32);
     /* huge steps just inside the budget: (w - 1) * step < 2^29 */
-    f = make_frame(-268435456, -268435456, 13421772, 13765920, 41, 40);
+    f = ref_frame(-268435456, -268435456, 13421772, 13765920, 41, 40);
     for (uint32_t k = 0; k < 30u; k++) {
         sites[k].x = f.origin_x + test_rng_range(rng, 0, 536870911);
         sites[k].y = f.origin_y + test_rng_range(rng, 0, 536870911);
@@ -450,7 +437,7 @@ static void check_bands(const char *name, const vor_raster_frame_t *f, uint32_t 
 static void band_cases(test_rng_t *rng)
 {
     /* uniform random sites, some outside, over seven culling bands */
-    vor_raster_frame_t f = make_frame(-40, 25, 1, 1, BIG_W, BIG_H);
+    vor_raster_frame_t f = ref_frame(-40, 25, 1, 1, BIG_W, BIG_H);
     for (uint32_t k = 0; k < BIG_SITES; k++) {
         big_sites[k].x = f.origin_x + test_rng_range(rng, -15, (int32_t)BIG_W + 15);
         big_sites[k].y = f.origin_y + test_rng_range(rng, -15, (int32_t)BIG_H + 15);
@@ -459,7 +446,7 @@ static void band_cases(test_rng_t *rng)
 
     /* sparse sites, large empty regions: cells that reach up across
      * several bands from far below, and down from above the frame */
-    f = make_frame(0, 0, 3, 2, BIG_W, BIG_H);
+    f = ref_frame(0, 0, 3, 2, BIG_W, BIG_H);
     for (uint32_t k = 0; k < 9u; k++) {
         big_sites[k].x = test_rng_range(rng, -30, 3 * (int32_t)BIG_W + 30);
         big_sites[k].y = (k < 3u) ? test_rng_range(rng, -40, 10)
@@ -470,7 +457,7 @@ static void band_cases(test_rng_t *rng)
      * cells that reach a band's bottom edge from below come from farther
      * than the largest distance to a site on the last row above: the
      * search radius must be measured at the edge itself */
-    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    f = ref_frame(0, 0, 1, 1, BIG_W, BIG_H);
     static const int32_t gap_sites[5][2] = {{-16, 153}, {99, -5}, {11, -18}, {-16, 136}, {52, 145}};
     for (uint32_t k = 0; k < 5u; k++) {
         big_sites[k].x = gap_sites[k][0];
@@ -478,7 +465,7 @@ static void band_cases(test_rng_t *rng)
     }
     check_bands("bands-gap", &f, 5, 16);
     /* one site far below, all others in one cluster near the top */
-    f = make_frame(0, 0, 3, 2, BIG_W, BIG_H);
+    f = ref_frame(0, 0, 3, 2, BIG_W, BIG_H);
     for (uint32_t k = 0; k < 40u; k++) {
         big_sites[k].x = test_rng_range(rng, 100, 140);
         big_sites[k].y = test_rng_range(rng, 0, 12);
@@ -490,7 +477,7 @@ static void band_cases(test_rng_t *rng)
     /* sites in a row above the frame and a row below it: long vertical
      * cells, whose pieces of the left and right frame edges each span
      * several bands */
-    f = make_frame(-42, 44, 1, 1, BIG_W, BIG_H);
+    f = ref_frame(-42, 44, 1, 1, BIG_W, BIG_H);
     for (uint32_t k = 0; k < BIG_SITES; k++) {
         big_sites[k].x = f.origin_x + test_rng_range(rng, -(int32_t)BIG_W, 2 * (int32_t)BIG_W);
         big_sites[k].y = f.origin_y + ((k % 2u == 0u) ? test_rng_range(rng, -5, -1)
@@ -502,7 +489,7 @@ static void band_cases(test_rng_t *rng)
      * edge, and leaves it at v = 69.8: that band must take its piece of
      * the right edge's envelope, though the pieces before it ended in
      * earlier bands */
-    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    f = ref_frame(0, 0, 1, 1, BIG_W, BIG_H);
     big_sites[0].x = 116;
     big_sites[0].y = 0;
     big_sites[1].x = 106;
@@ -513,7 +500,7 @@ static void band_cases(test_rng_t *rng)
 
     /* a lattice whose bisectors run along the band seams (rows 16k) and
      * through pixel centres and midpoints, indices reversed, duplicates */
-    f = make_frame(0, 0, 1, 1, BIG_W, BIG_H);
+    f = ref_frame(0, 0, 1, 1, BIG_W, BIG_H);
     uint32_t n = 0;
     for (int32_t y = -8; y <= (int32_t)BIG_H + 8 && n + 1u < BIG_SITES; y += 16) {
         for (int32_t x = -3; x <= (int32_t)BIG_W + 3 && n + 1u < BIG_SITES; x += 7) {
@@ -547,7 +534,7 @@ static void band_cases(test_rng_t *rng)
     check_bands("bands-columns", &f, 120, 5);
 
     /* the mid tier, the demo's scale: a 100 m floor in millimetres */
-    f = make_frame(-49844, -49792, 1247, 1011, BIG_W, BIG_H);
+    f = ref_frame(-49844, -49792, 1247, 1011, BIG_W, BIG_H);
     for (uint32_t k = 0; k < 200u; k++) {
         big_sites[k].x = test_rng_range(rng, -50000, 70000);
         big_sites[k].y = test_rng_range(rng, -50000, 60000);
@@ -555,7 +542,7 @@ static void band_cases(test_rng_t *rng)
     check_bands("bands-mid", &f, 200, 16);
     /* the wide tier: quotients of more than 32 bits (Cortex-M3 and
      * RISC-V then divide step by step), few sites, far apart */
-    f = make_frame(-200000000, -100000000, 3000001, 4100003, 80, BIG_H);
+    f = ref_frame(-200000000, -100000000, 3000001, 4100003, 80, BIG_H);
     for (uint32_t k = 0; k < 60u; k++) {
         big_sites[k].x = test_rng_range(rng, -260000000, 260000000);
         big_sites[k].y = test_rng_range(rng, -260000000, 260000000);
@@ -584,7 +571,7 @@ static void error_cases(void)
         sites[k].x = (int32_t)k;
         sites[k].y = (int32_t)(k * 7u % 13u);
     }
-    vor_raster_frame_t f = make_frame(0, 0, 1, 1, 10, 10);
+    vor_raster_frame_t f = ref_frame(0, 0, 1, 1, 10, 10);
     vor_raster_sites_t set = {0};
     set.points = sites;
     set.count = 5;

@@ -55,29 +55,6 @@ static int capture_flush(void *user, uint32_t first_row, uint32_t rows, const vo
     return 0;
 }
 
-static vor_raster_frame_t make_frame(int32_t ox, int32_t oy, int32_t sx, int32_t sy, uint32_t w,
-                                     uint32_t h)
-{
-    vor_raster_frame_t f;
-    f.origin_x = ox;
-    f.origin_y = oy;
-    f.step_x = sx;
-    f.step_y = sy;
-    f.width = w;
-    f.height = h;
-    return f;
-}
-
-static int32_t centre_x(const vor_raster_frame_t *f, uint32_t i)
-{
-    return (int32_t)(f->origin_x + (int64_t)i * f->step_x);
-}
-
-static int32_t centre_y(const vor_raster_frame_t *f, uint32_t j)
-{
-    return (int32_t)(f->origin_y + (int64_t)j * f->step_y);
-}
-
 /* One render of kind LABEL32, BOUNDARY or DISTANCE, compared with the
  * reference (expect_distance: the reference's distances). */
 static void render_and_compare(const char *name, const vor_raster_frame_t *f,
@@ -146,7 +123,7 @@ static void reference_distances(const vor_raster_frame_t *f, const vor_raster_si
         for (uint32_t i = 0; i < f->width; i++) {
             uint32_t p = j * f->width + i;
             expect_distance[p] =
-                ref_distance_metric(set, expect_label[p], centre_x(f, i), centre_y(f, j));
+                ref_distance_metric(set, expect_label[p], ref_centre_x(f, i), ref_centre_y(f, j));
         }
     }
 }
@@ -163,7 +140,7 @@ static void check_frame(const char *name, const vor_raster_frame_t *f,
     for (uint32_t j = 0; j < f->height; j++) {
         for (uint32_t i = 0; i < f->width; i++) {
             expect_label[j * f->width + i] =
-                ref_nearest_metric(set, centre_x(f, i), centre_y(f, j), &undecided);
+                ref_nearest_metric(set, ref_centre_x(f, i), ref_centre_y(f, j), &undecided);
         }
     }
     CHECK(!undecided, "%s %s: the reference could not decide a comparison",
@@ -214,15 +191,15 @@ static void random_points(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t
 static void centre_points(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t n)
 {
     for (uint32_t k = 0; k < n; k++) {
-        points[k].x = centre_x(f, (uint32_t)test_rng_range(rng, 0, (int32_t)f->width - 1));
-        points[k].y = centre_y(f, (uint32_t)test_rng_range(rng, 0, (int32_t)f->height - 1));
+        points[k].x = ref_centre_x(f, (uint32_t)test_rng_range(rng, 0, (int32_t)f->width - 1));
+        points[k].y = ref_centre_y(f, (uint32_t)test_rng_range(rng, 0, (int32_t)f->height - 1));
     }
 }
 
 static void random_frame(test_rng_t *rng, vor_raster_frame_t *f)
 {
     uint32_t w = 8u + test_rng_u32(rng) % 27u, h = 6u + test_rng_u32(rng) % 23u;
-    *f = make_frame(test_rng_range(rng, -60, 60), test_rng_range(rng, -60, 60),
+    *f = ref_frame(test_rng_range(rng, -60, 60), test_rng_range(rng, -60, 60),
                     1 + (int32_t)(test_rng_u32(rng) % 3u), 1 + (int32_t)(test_rng_u32(rng) % 3u),
                     w, h);
 }
@@ -268,7 +245,7 @@ static void point_metric_cases(test_rng_t *rng)
     }
 
     /* Lp for every exponent, 1 (= L1) and 2 (= Euclid) included */
-    f = make_frame(-5, -4, 1, 1, 31, 23);
+    f = ref_frame(-5, -4, 1, 1, 31, 23);
     for (uint32_t p = 1; p <= 8u; p++) {
         random_points(rng, &f, 20, 10);
         vor_raster_sites_t set = point_set(VOR_METRIC_LP, 20);
@@ -286,7 +263,7 @@ static void point_metric_cases(test_rng_t *rng)
             n++;
         }
     }
-    f = make_frame(0, 0, 1, 1, 40, 36);
+    f = ref_frame(0, 0, 1, 1, 40, 36);
     static const enum vor_metric lattice[] = {VOR_METRIC_L1, VOR_METRIC_LINF, VOR_METRIC_LP,
                                               VOR_METRIC_ELLIPTIC, VOR_METRIC_MULT, VOR_METRIC_ADD,
                                               VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST};
@@ -303,7 +280,7 @@ static void point_metric_cases(test_rng_t *rng)
  * make sqrt(D) integers, so d - w and d / w tie exactly. */
 static void weighted_tie_cases(test_rng_t *rng)
 {
-    vor_raster_frame_t f = make_frame(-20, -20, 1, 1, 40, 36);
+    vor_raster_frame_t f = ref_frame(-20, -20, 1, 1, 40, 36);
     /* additive: |q - a| - wa = |q - b| - wb at the pixels where the
      * difference of distances is wa - wb; sites at integer distances */
     static const int32_t xs[] = {0, 3, -4, 0, 12, -5, 8, 0};
@@ -356,8 +333,8 @@ static void hausdorff_cases(test_rng_t *rng)
         for (uint32_t k = 0; k < n; k++) {
             offsets[k] = at;
             uint32_t size = 1u + test_rng_u32(rng) % 4u;
-            int32_t cx = centre_x(&f, test_rng_u32(rng) % f.width);
-            int32_t cy = centre_y(&f, test_rng_u32(rng) % f.height);
+            int32_t cx = ref_centre_x(&f, test_rng_u32(rng) % f.width);
+            int32_t cy = ref_centre_y(&f, test_rng_u32(rng) % f.height);
             for (uint32_t i = 0; i < size; i++) {
                 points[at].x = cx + test_rng_range(rng, -12, 12);
                 points[at].y = cy + test_rng_range(rng, -12, 12);
@@ -369,7 +346,7 @@ static void hausdorff_cases(test_rng_t *rng)
         check_frame(round % 2u ? "random" : "random-b", &f, &set);
     }
     /* single points (= farthest-free Euclid) and mirrored pairs: ties */
-    f = make_frame(0, 0, 1, 1, 33, 30);
+    f = ref_frame(0, 0, 1, 1, 33, 30);
     for (uint32_t k = 0; k < 10u; k++) {
         offsets[k] = 2u * k;
         int32_t x = test_rng_range(rng, 0, 32), y = test_rng_range(rng, 0, 29);
@@ -395,7 +372,7 @@ static void segment_cases(test_rng_t *rng)
     }
     /* zero-length, shared ends, collinear overlaps, axis-parallel, on
      * pixel centres */
-    f = make_frame(0, 0, 1, 1, 40, 36);
+    f = ref_frame(0, 0, 1, 1, 40, 36);
     static const int32_t s[][4] = {
         {5, 5, 5, 5},     {5, 5, 20, 5},   {20, 5, 20, 25}, {10, 5, 30, 5},  {0, 30, 39, 30},
         {39, 30, 0, 30},  {3, 12, 12, 21}, {12, 21, 3, 12}, {30, 10, 36, 4}, {25, 18, 25, 18},
@@ -432,8 +409,8 @@ static void polygon_cases(test_rng_t *rng)
         for (uint32_t k = 0; k < n; k++) {
             offsets[k] = at;
             uint32_t size = 1u + test_rng_u32(rng) % 6u; /* 1 .. 6 vertices, any shape */
-            int32_t cx = centre_x(&f, test_rng_u32(rng) % f.width);
-            int32_t cy = centre_y(&f, test_rng_u32(rng) % f.height);
+            int32_t cx = ref_centre_x(&f, test_rng_u32(rng) % f.width);
+            int32_t cy = ref_centre_y(&f, test_rng_u32(rng) % f.height);
             for (uint32_t i = 0; i < size; i++) {
                 points[at].x = cx + test_rng_range(rng, -10, 10);
                 points[at].y = cy + test_rng_range(rng, -10, 10);
@@ -447,7 +424,7 @@ static void polygon_cases(test_rng_t *rng)
     /* squares overlapping (ties at 0 go to the smaller index), nested,
      * clockwise and counterclockwise; a bowtie; a collinear triangle; a
      * polygon with repeated vertices; a point; a segment */
-    f = make_frame(0, 0, 1, 1, 40, 36);
+    f = ref_frame(0, 0, 1, 1, 40, 36);
     static const int32_t v[] = {
         /* site 0: square, counterclockwise */ 4, 4, 16, 4, 16, 16, 4, 16,
         /* site 1: overlapping square, clockwise */ 10, 10, 10, 22, 22, 22, 22, 10,
@@ -472,7 +449,7 @@ static void polygon_cases(test_rng_t *rng)
     vor_raster_sites_t set = point_set(VOR_METRIC_POLYGON, 9);
     check_frame("shapes", &f, &set);
     /* the frame inside one polygon: every pixel at distance 0 */
-    f = make_frame(6, 6, 1, 1, 9, 9);
+    f = ref_frame(6, 6, 1, 1, 9, 9);
     check_frame("inside", &f, &set);
 }
 
@@ -489,8 +466,8 @@ static void polyline_cases(test_rng_t *rng)
         for (uint32_t k = 0; k < n; k++) {
             offsets[k] = at;
             uint32_t size = 1u + test_rng_u32(rng) % 8u;
-            int32_t x = centre_x(&f, test_rng_u32(rng) % f.width);
-            int32_t y = centre_y(&f, test_rng_u32(rng) % f.height);
+            int32_t x = ref_centre_x(&f, test_rng_u32(rng) % f.width);
+            int32_t y = ref_centre_y(&f, test_rng_u32(rng) % f.height);
             for (uint32_t i = 0; i < size; i++) {
                 points[at].x = x;
                 points[at].y = y;
@@ -509,7 +486,7 @@ static void polyline_cases(test_rng_t *rng)
     }
     /* nested squares 2 .. 37 and 14 .. 25 (closed by repeating the first
      * vertex), a horizontal open line, a point, a repeated vertex */
-    f = make_frame(0, 0, 1, 1, 40, 36);
+    f = ref_frame(0, 0, 1, 1, 40, 36);
     static const int32_t v[] = {
         /* site 0 */ 2, 2, 37, 2, 37, 33, 2, 33, 2, 2,
         /* site 1 */ 14, 14, 25, 14, 25, 25, 14, 25, 14, 14,
@@ -547,7 +524,7 @@ static void polyline_cases(test_rng_t *rng)
  * comparisons of every metric. */
 static void huge_cases(test_rng_t *rng)
 {
-    vor_raster_frame_t f = make_frame(INT32_MIN, INT32_MIN, 390451572, 477218588, 12, 10);
+    vor_raster_frame_t f = ref_frame(INT32_MIN, INT32_MIN, 390451572, 477218588, 12, 10);
     static const enum vor_metric metrics[] = {
         VOR_METRIC_L1,       VOR_METRIC_LINF,     VOR_METRIC_LP,       VOR_METRIC_ELLIPTIC,
         VOR_METRIC_MULT,     VOR_METRIC_ADD,      VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST,
@@ -580,7 +557,7 @@ static void huge_cases(test_rng_t *rng)
     }
     /* weights large against small distances: the compound comparison's
      * widest terms in a small frame */
-    f = make_frame(-10, -10, 1, 1, 24, 20);
+    f = ref_frame(-10, -10, 1, 1, 24, 20);
     random_points(rng, &f, 10, 5);
     for (uint32_t k = 0; k < 10u; k++) {
         mult[k] = (int32_t)(test_rng_u32(rng) >> 1) | 1;
@@ -606,7 +583,7 @@ static int one_pixel_flush(void *user, uint32_t first_row, uint32_t rows, const 
 /* The DISTANCE value of site 0 (the only one) at the single pixel (qx, qy). */
 static uint32_t distance_at(const vor_raster_sites_t *set, int32_t qx, int32_t qy)
 {
-    vor_raster_frame_t f = make_frame(qx, qy, 1, 1, 1, 1);
+    vor_raster_frame_t f = ref_frame(qx, qy, 1, 1, 1, 1);
     vor_raster_output_t out = {0};
     out.kind = VOR_RASTER_DISTANCE;
     out.band = band_memory;
@@ -724,7 +701,7 @@ static void distance_value_cases(void)
  * fall back to all sites. */
 static void pool_overflow_case(void)
 {
-    vor_raster_frame_t f = make_frame(0, 0, 1, 1, 400, 3);
+    vor_raster_frame_t f = ref_frame(0, 0, 1, 1, 400, 3);
     vor_raster_sites_t set = point_set(VOR_METRIC_L1, 3);
     for (uint32_t k = 0; k < 3u; k++) {
         points[k].x = 200;
@@ -746,7 +723,7 @@ static int quiet_flush(void *user, uint32_t first_row, uint32_t rows, const void
 
 static void error_cases(void)
 {
-    vor_raster_frame_t f = make_frame(0, 0, 1, 1, 10, 10);
+    vor_raster_frame_t f = ref_frame(0, 0, 1, 1, 10, 10);
     for (uint32_t k = 0; k < 8u; k++) {
         points[k].x = (int32_t)k;
         points[k].y = (int32_t)(k * 3u % 7u);
