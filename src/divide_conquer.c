@@ -204,22 +204,6 @@ static inline vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t 
     return (v[0] != a && v[0] != c) ? v[0] : (v[1] != a && v[1] != c) ? v[1] : v[2];
 }
 
-/* In triangle `slot`, point the link across the edge {a, b} at `to`. By
- * vertices, not by the old slot: a two-site mesh's triangles are each
- * other's neighbour across all three edges. */
-static inline void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
-                        vor_index_t to)
-{
-    vor__tri_t *t = &tri[slot];
-    for (unsigned i = 0; i < 3u; i++) {
-        vor_index_t v = vor__vertex(t, i);
-        if (v != a && v != b) {
-            t->n[i] = to;
-            return;
-        }
-    }
-}
-
 static bool is_home(const builder_t *b, vor_index_t slot, vor_index_t v)
 {
     return slot == v && v < b->d->max_sites;
@@ -247,10 +231,10 @@ static inline void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *
         x1 = s2;
         x2 = s1;
     }
-    relink_edge(tri, nab, a, bb, x1);
-    relink_edge(tri, nbe, bb, e, x1);
-    relink_edge(tri, nec, e, c, x2);
-    relink_edge(tri, nca, c, a, x2);
+    vor__relink_edge(tri, nab, a, bb, x1);
+    vor__relink_edge(tri, nbe, bb, e, x1);
+    vor__relink_edge(tri, nec, e, c, x2);
+    vor__relink_edge(tri, nca, c, a, x2);
     vor__tri_set(&tri[x1], a, bb, e, nbe, x2, nab);
     vor__tri_set(&tri[x2], a, e, c, nec, nca, x1);
     *t1 = x1;
@@ -433,12 +417,12 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     put(tri, cap, l0, r0, VOR__INFINITE, (ha != VOR__NONE) ? ha : lower,
         (gb != VOR__NONE) ? gb : lower, lower);
     if (ga != VOR__NONE) {
-        relink_edge(tri, ga, l0, VOR__INFINITE, lower);
-        relink_edge(tri, gb, l0, VOR__INFINITE, cap);
+        vor__relink_edge(tri, ga, l0, VOR__INFINITE, lower);
+        vor__relink_edge(tri, gb, l0, VOR__INFINITE, cap);
     }
     if (hb != VOR__NONE) {
-        relink_edge(tri, hb, r0, VOR__INFINITE, lower);
-        relink_edge(tri, ha, r0, VOR__INFINITE, cap);
+        vor__relink_edge(tri, hb, r0, VOR__INFINITE, lower);
+        vor__relink_edge(tri, ha, r0, VOR__INFINITE, cap);
     }
     /* the base's ends are marked (joined()); both home slots hold
      * triangles now */

@@ -140,21 +140,6 @@ static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_inde
     }
 }
 
-/* The same for the two-site mesh, whose two triangles share all three
- * edges: the link is told apart by the edge (a, b) it crosses. */
-static void relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a, vor_index_t b,
-                        vor_index_t to)
-{
-    vor__tri_t *t = &tri[slot];
-    for (unsigned i = 0; i < 3u; i++) {
-        vor_index_t v = vor__vertex(t, i);
-        if (v != a && v != b) {
-            t->n[i] = to;
-            return;
-        }
-    }
-}
-
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
 {
     vor__tri_t *tri = d->triangles;
@@ -215,9 +200,9 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     vor__tri_fresh(&tri[sp]);
     vor__tri_fresh(&tri[extra]);
     if (d->vertex_count == 2u) { /* the root's neighbour is one triangle */
-        relink_edge(tri, na, b, c, sa);
-        relink_edge(tri, nb, c, a, sb);
-        relink_edge(tri, nc, a, b, sc);
+        vor__relink_edge(tri, na, b, c, sa);
+        vor__relink_edge(tri, nb, c, a, sb);
+        vor__relink_edge(tri, nc, a, b, sc);
     } else {
         relink(tri, na, root, sa);
         relink(tri, nb, root, sb);

@@ -122,6 +122,22 @@ static inline bool vor__slot_empty(const vor__tri_t *t)
     return t->n[0] == VOR__NONE;
 }
 
+/* In triangle `slot`, points the link across the edge {a, b} at `to`. By
+ * vertices, not by the old link: a two-site mesh's two triangles are each
+ * other's neighbour across all three edges. */
+static inline void vor__relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a,
+                                    vor_index_t b, vor_index_t to)
+{
+    vor__tri_t *t = &tri[slot];
+    for (unsigned i = 0; i < 3u; i++) {
+        vor_index_t v = vor__vertex(t, i);
+        if (v != a && v != b) {
+            t->n[i] = to;
+            return;
+        }
+    }
+}
+
 /* Writes a whole triangle into slot t, keeping the slot's site mark. */
 static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
                                 vor_index_t v2, vor_index_t n0, vor_index_t n1,

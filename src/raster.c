@@ -73,14 +73,7 @@ static uint32_t brute_row(const vor_raster_frame_t *frame, const vor_raster_site
     uint32_t count = 0;
     for (uint32_t i = 0; i < frame->width; i++) {
         q.x = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
-        uint32_t site = brute_nearest(sites, &q);
-        if (count > 0u && runs[count - 1u].site == site) {
-            runs[count - 1u].end = i + 1u;
-        } else {
-            runs[count].end = i + 1u;
-            runs[count].site = site;
-            count++;
-        }
+        count = vor__run_push(runs, count, i, brute_nearest(sites, &q));
     }
     return count;
 }

@@ -18,6 +18,19 @@ typedef struct vor__run {
     uint32_t site;
 } vor__run_t;
 
+/* Adds pixel i, labelled site, to the row's runs (count of them so far):
+ * it extends the last run when the label repeats. Returns the new count. */
+static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t i, uint32_t site)
+{
+    if (count > 0u && runs[count - 1u].site == site) {
+        runs[count - 1u].end = i + 1u;
+        return count;
+    }
+    runs[count].end = i + 1u;
+    runs[count].site = site;
+    return count + 1u;
+}
+
 /* The fast Euclidean producer (raster_euclid.c): its state lives in the
  * caller's work memory (n entries per array). */
 typedef struct vor__euclid {

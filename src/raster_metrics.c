@@ -1050,14 +1050,7 @@ uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
         }
         for (uint32_t i = first; i < end; i++) {
             int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
-            uint32_t site = nearest(m, list, candidates, qx, qy);
-            if (count > 0u && runs[count - 1u].site == site) {
-                runs[count - 1u].end = i + 1u;
-            } else {
-                runs[count].end = i + 1u;
-                runs[count].site = site;
-                count++;
-            }
+            count = vor__run_push(runs, count, i, nearest(m, list, candidates, qx, qy));
         }
     }
     return count;
