@@ -112,7 +112,10 @@ static inline bool axis_less(const vor_point_t *s, vor_index_t a, vor_index_t b,
 typedef struct {
     vor_t *d;
     vor__tri_t *tri;
+    uint32_t *duplicate_of; /* vor_build's, or NULL */
     uint32_t next_extra; /* the next unused extra slot */
+    uint32_t distinct;   /* distinct sites built so far */
+    vor_index_t last;    /* the last of them */
     unsigned axis;       /* this merge's order: F before S on it */
     /* Which side of this merge a site is on, exactly (guard C2 relies on
      * it), by one of two rules:
@@ -196,11 +199,15 @@ static bool is_single(const builder_t *b, vor_index_t part)
     return vor__slot_empty(&b->tri[part]);
 }
 
-/* The vertex of triangle t that is neither a nor c. */
-static inline vor_index_t third(const vor__tri_t *t, vor_index_t a, vor_index_t c)
+/* Index of x among decoded vertices v, or 3. */
+static inline unsigned find(const vor_index_t v[3], vor_index_t x)
 {
-    vor_index_t v[3];
-    vor__vertices(t, v);
+    return (v[0] == x) ? 0u : (v[1] == x) ? 1u : (v[2] == x) ? 2u : 3u;
+}
+
+/* The vertex among decoded vertices v that is neither a nor c. */
+static inline vor_index_t third(const vor_index_t v[3], vor_index_t a, vor_index_t c)
+{
     return (v[0] != a && v[0] != c) ? v[0] : (v[1] != a && v[1] != c) ? v[1] : v[2];
 }
 
@@ -210,21 +217,25 @@ static bool is_home(const builder_t *b, vor_index_t slot, vor_index_t v)
 }
 
 /* Flips the edge opposite vertex i1 of the triangle in slot s1 = (a, b, c)
- * with its neighbour (c, b, e): they become T1 = (a, b, e) and
- * T2 = (a, e, c), in the two slots chosen so that each home slot still
- * holds a triangle of its site (incremental.c's flip, with infinity
- * allowed anywhere). Returns T1's slot in *t1 and T2's in *t2. */
-static inline void flip(builder_t *b, vor_index_t s1, unsigned i1, vor_index_t *t1, vor_index_t *t2)
+ * (its vertices decoded in tv) with its neighbour (c, b, e): they become
+ * T1 = (a, b, e) and T2 = (a, e, c), in the two slots chosen so that each
+ * home slot still holds a triangle of its site (incremental.c's flip, with
+ * infinity allowed anywhere). Returns T1's slot in *t1 and T2's in *t2.
+ * Each triangle is decoded once: the packed vertex words are the builder's
+ * main cost after the predicates. */
+static inline void flip(builder_t *b, vor_index_t s1, const vor_index_t tv[3], unsigned i1,
+                        vor_index_t *t1, vor_index_t *t2)
 {
     vor__tri_t *tri = b->tri;
     vor__tri_t *t = &tri[s1];
-    vor_index_t a = vor__vertex(t, i1), bb = vor__vertex(t, vor__next(i1)),
-                c = vor__vertex(t, vor__prev(i1));
+    vor_index_t a = tv[i1], bb = tv[vor__next(i1)], c = tv[vor__prev(i1)];
     vor_index_t s2 = t->n[i1], nab = t->n[vor__prev(i1)], nca = t->n[vor__next(i1)];
     vor__tri_t *u = &tri[s2];
-    unsigned ib = vor__vertex_index(u, bb);
+    vor_index_t uv[3];
+    vor__vertices(u, uv);
+    unsigned ib = find(uv, bb);
     ib = (ib == 3u) ? 0u : ib; /* always found: the two share the edge */
-    vor_index_t e = vor__vertex(u, vor__next(ib));
+    vor_index_t e = uv[vor__next(ib)];
     vor_index_t nbe = u->n[vor__prev(ib)], nec = u->n[ib];
     vor_index_t x1 = s1, x2 = s2;
     if (is_home(b, s1, c) || is_home(b, s2, bb)) {
@@ -248,11 +259,13 @@ static bool has_edge(const builder_t *b, vor_index_t p, vor_index_t q)
     vor_index_t slot = p;
     for (uint32_t step = 0; step < b->bound; step++) {
         const vor__tri_t *t = &b->tri[slot];
-        unsigned i = vor__vertex_index(t, p);
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned i = find(v, p);
         if (i == 3u) {
             return true; /* only on a corrupted mesh: refuse the edge */
         }
-        if (vor__vertex(t, vor__next(i)) == q || vor__vertex(t, vor__prev(i)) == q) {
+        if (v[vor__next(i)] == q || v[vor__prev(i)] == q) {
             return true;
         }
         slot = t->n[vor__next(i)];
@@ -299,9 +312,11 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
 {
     const vor__tri_t *tri = b->tri;
     const vor_point_t *s = b->d->sites;
-    unsigned i = vor__vertex_index(&tri[g], VOR__INFINITE);
+    vor_index_t v[3];
+    vor__vertices(&tri[g], v);
+    unsigned i = find(v, VOR__INFINITE);
     i = (i == 3u) ? 2u : i; /* never: a part's ghost is a ghost */
-    vor_index_t a = vor__vertex(&tri[g], vor__next(i));
+    vor_index_t a = v[vor__next(i)];
     e->least = e->most = a;
     e->least_ghost = e->most_ghost = g;
     e->length = 1;
@@ -309,11 +324,12 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
     vor_index_t slot = tri[g].n[vor__next(i)];
     while (slot != g && e->length < b->bound) {
         const vor__tri_t *t = &tri[slot];
-        i = vor__vertex_index(t, VOR__INFINITE);
+        vor__vertices(t, v);
+        i = find(v, VOR__INFINITE);
         if (i == 3u) {
             break; /* only on a corrupted mesh */
         }
-        a = vor__vertex(t, vor__next(i));
+        a = v[vor__next(i)];
         if (axis_less(s, a, e->least, axis)) {
             e->least = a;
             e->least_ghost = slot;
@@ -330,12 +346,13 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
 /* Merge                                                               */
 
 /* Merges the parts F and S (every site of F before every site of S on
- * `axis`; b->by_cell, split etc. set for in_f), neither empty, into one;
+ * `axis`; b->by_line, split etc. set for in_f), neither empty, into one;
  * returns it. */
 static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
 {
     vor_t *d = b->d;
     vor__tri_t *tri = b->tri;
+    vor_index_t v[3]; /* the decoded vertices of the triangle at hand */
     b->axis = axis;
     bool f_single = is_single(b, f), s_single = is_single(b, s);
     if (f_single && s_single) {
@@ -362,7 +379,8 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         s_hull = e.length;
         /* (r, w, inf) -> the ghost before it, (u, r, inf), across (inf, r) */
         vor_index_t h = e.least_ghost;
-        g2 = tri[h].n[vor__next(vor__vertex_index(&tri[h], r))];
+        vor__vertices(&tri[h], v);
+        g2 = tri[h].n[vor__next(find(v, r))];
     }
     uint32_t moves1 = 0, moves2 = 0;
     for (;;) {
@@ -370,8 +388,9 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
          * between L2 and R2 (counterclockwise); C5: no move back. The
          * move counts bound the walks if the hulls are not convex. */
         if (g1 != VOR__NONE && l != l_stop && moves1 < f_hull) {
-            unsigned i = vor__vertex_index(&tri[g1], l);
-            vor_index_t w = vor__vertex(&tri[g1], vor__next(i));
+            vor__vertices(&tri[g1], v);
+            unsigned i = find(v, l);
+            vor_index_t w = v[vor__next(i)];
             if (vor__orient(d, l, r, w) < 0) {
                 g1 = tri[g1].n[i];
                 l = w;
@@ -380,8 +399,9 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
             }
         }
         if (g2 != VOR__NONE && r != r_stop && moves2 < s_hull) {
-            unsigned i = vor__vertex_index(&tri[g2], r);
-            vor_index_t u = vor__vertex(&tri[g2], vor__prev(i));
+            vor__vertices(&tri[g2], v);
+            unsigned i = find(v, r);
+            vor_index_t u = v[vor__prev(i)];
             if (vor__orient(d, l, r, u) < 0) {
                 g2 = tri[g2].n[i];
                 r = u;
@@ -396,12 +416,12 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     /* 2. glue: the lower ghost (r0, l0, inf) and the cap (l0, r0, inf) */
     vor_index_t ga = g1, gb = VOR__NONE, ha = VOR__NONE, hb = g2;
     if (g1 != VOR__NONE) { /* (u, l0, inf), across (inf, l0) from (l0, w, inf) */
-        unsigned i = vor__vertex_index(&tri[g1], l0);
-        gb = tri[g1].n[vor__next(i)];
+        vor__vertices(&tri[g1], v);
+        gb = tri[g1].n[vor__next(find(v, l0))];
     }
     if (g2 != VOR__NONE) { /* (r0, w, inf), across (r0, inf) from (u, r0, inf) */
-        unsigned i = vor__vertex_index(&tri[g2], r0);
-        ha = tri[g2].n[vor__prev(i)];
+        vor__vertices(&tri[g2], v);
+        ha = tri[g2].n[vor__prev(find(v, r0))];
     }
     vor_index_t lower, cap;
     if (f_single) {
@@ -430,44 +450,68 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     vor__set_mark(&tri[r0], true);
 
     /* 3. zipper, bottom to top (seed 000 section 3.2, fig. 3.1). Bounded
-     * by the counts in the header comment; `steps` is a last resort. */
+     * by the counts in the header comment; `steps` is a last resort. The
+     * cap (l, r, inf) is always written by put() or flip() in a known
+     * rotation: cv holds its vertices, with l at cv[il] and r at cv[ir];
+     * the F pocket ghost lies across (l, inf), the S one across (inf, r). */
+    vor_index_t cv[3] = {l0, r0, VOR__INFINITE};
+    unsigned il = 0, ir = 1;
     bool l_moved = false, r_moved = false;
     uint32_t steps_left = 4u * b->bound + 16u, advances = 0;
     while (steps_left-- > 0u) {
-        /* left deletions: pocket ghost (c1, l, inf), F triangle (l, c1, c2) */
-        vor_index_t c1, e1;
+        /* left deletions: pocket ghost pf = (c1, l, inf), F triangle
+         * (l, c1, c2) across its edge (c1, l) */
+        vor_index_t pf = tri[cap].n[ir], pv[3], c1, e1;
+        vor__vertices(&tri[pf], pv);
+        unsigned pf_inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
+        c1 = pv[vor__next(pf_inf)];
         bool lvalid, rvalid; /* the candidates above the base */
         for (;;) {
-            vor_index_t pf = tri[cap].n[vor__vertex_index(&tri[cap], r)];
-            c1 = third(&tri[pf], l, VOR__INFINITE);
             lvalid = in_f(b, c1) && vor__orient(d, l, r, c1) > 0;
             if (!lvalid) {
                 break;
             }
-            unsigned at = vor__vertex_index(&tri[pf], VOR__INFINITE);
-            vor_index_t c2 = third(&tri[tri[pf].n[at]], l, c1);
+            vor__vertices(&tri[tri[pf].n[pf_inf]], v);
+            vor_index_t c2 = third(v, l, c1);
             /* C2 and T1: the triangle beyond is F-F-F */
             if (!in_f(b, c2) || vor__incircle(d, l, r, c1, c2) <= 0) {
                 break;
             }
             vor_index_t x1, x2;
-            flip(b, pf, at, &x1, &x2);
+            flip(b, pf, pv, pf_inf, &x1, &x2);
+            /* x2 = (inf, c2, l): the next pocket ghost */
+            pf = x2;
+            pv[0] = VOR__INFINITE;
+            pv[1] = c2;
+            pv[2] = l;
+            pf_inf = 0;
+            c1 = c2;
         }
-        /* right deletions: pocket ghost (r, d1, inf), S triangle (d1, r, d2) */
+        /* right deletions: pocket ghost ps = (r, e1, inf), S triangle
+         * (e1, r, e2) across its edge (r, e1) */
+        vor_index_t ps = tri[cap].n[il], sv[3];
+        vor__vertices(&tri[ps], sv);
+        unsigned ps_inf = find(sv, VOR__INFINITE);
+        e1 = sv[vor__prev(ps_inf)];
         for (;;) {
-            vor_index_t ps = tri[cap].n[vor__vertex_index(&tri[cap], l)];
-            e1 = third(&tri[ps], r, VOR__INFINITE);
             rvalid = in_s(b, e1) && vor__orient(d, l, r, e1) > 0;
             if (!rvalid) {
                 break;
             }
-            unsigned at = vor__vertex_index(&tri[ps], VOR__INFINITE);
-            vor_index_t e2 = third(&tri[tri[ps].n[at]], r, e1);
+            vor__vertices(&tri[tri[ps].n[ps_inf]], v);
+            vor_index_t e2 = third(v, r, e1);
             if (!in_s(b, e2) || vor__incircle(d, l, r, e1, e2) <= 0) {
                 break;
             }
             vor_index_t x1, x2;
-            flip(b, ps, at, &x1, &x2);
+            flip(b, ps, sv, ps_inf, &x1, &x2);
+            /* x1 = (inf, r, e2): the next pocket ghost */
+            ps = x1;
+            sv[0] = VOR__INFINITE;
+            sv[1] = r;
+            sv[2] = e2;
+            ps_inf = 0;
+            e1 = e2;
         }
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
          * other candidate outside its triangle's circle (the deletions on
@@ -494,15 +538,25 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
             }
         }
         vor_index_t x1, x2;
-        if (left) { /* cap (l, r, inf) + (c1, l, inf) -> (c1, r, inf) + (l, r, c1) */
-            flip(b, cap, vor__vertex_index(&tri[cap], r), &x1, &x2);
+        if (left) { /* cap (l, r, inf) + (c1, l, inf) -> (r, inf, c1) + (r, c1, l) */
+            flip(b, cap, cv, ir, &x1, &x2);
             cap = x1;
             l = c1;
+            cv[0] = r;
+            cv[1] = VOR__INFINITE;
+            cv[2] = l;
+            il = 2;
+            ir = 0;
             l_moved = true;
         } else { /* cap + (r, e1, inf) -> (l, r, e1) + (l, e1, inf) */
-            flip(b, cap, vor__vertex_index(&tri[cap], l), &x1, &x2);
+            flip(b, cap, cv, il, &x1, &x2);
             cap = x2;
             r = e1;
+            cv[0] = l;
+            cv[1] = r;
+            cv[2] = VOR__INFINITE;
+            il = 0;
+            ir = 1;
             r_moved = true;
         }
         vor__set_mark(&tri[left ? l : r], true);
@@ -519,18 +573,20 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     r = r0;
     vor__set_mark(&tri[l], false);
     vor__set_mark(&tri[r], false);
-    vor_index_t t = tri[lower].n[vor__vertex_index(&tri[lower], VOR__INFINITE)];
+    vor__vertices(&tri[lower], v);
+    vor_index_t t = tri[lower].n[find(v, VOR__INFINITE)];
     for (uint32_t k = 0; k < advances; k++) {
-        vor_index_t c = third(&tri[t], l, r);
+        vor__vertices(&tri[t], v);
+        vor_index_t c = third(v, l, r);
         if (c == VOR__INFINITE) {
             break;
         }
         vor__set_mark(&tri[c], false);
         if (in_f(b, c)) { /* across (c, r), opposite l */
-            t = tri[t].n[vor__vertex_index(&tri[t], l)];
+            t = tri[t].n[find(v, l)];
             l = c;
         } else {
-            t = tri[t].n[vor__vertex_index(&tri[t], r)];
+            t = tri[t].n[find(v, r)];
             r = c;
         }
     }
@@ -545,28 +601,64 @@ struct pending {
     vor_index_t part, least;
 };
 
+/* Three sites as a part: the triangle (p, q, r) or (p, r, q), whichever
+ * the orientation test calls counterclockwise, and its three ghosts
+ * (Guibas and Stolfi's base case: whatever the sign, a closed
+ * triangulation of the sphere). The ghost (y, x, inf) behind the hull
+ * edge (x, y) takes x's home slot, the finite triangle an extra slot.
+ * Returns p's slot, a ghost. */
+static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r)
+{
+    vor__tri_t *tri = b->tri;
+    if (vor__orient(b->d, p, q, r) < 0) {
+        vor_index_t swap = q;
+        q = r;
+        r = swap;
+    }
+    vor_index_t t = (vor_index_t)b->next_extra++;
+    put(tri, t, p, q, r, q, r, p);
+    put(tri, p, q, p, VOR__INFINITE, r, q, t);
+    put(tri, q, r, q, VOR__INFINITE, p, r, t);
+    put(tri, r, p, r, VOR__INFINITE, q, p, t);
+    return p;
+}
+
 /* The classical x-split of the sorted sites order[0, v), v >= 1: a merge
  * of two halves, the recursion unrolled into a binary counter (seed 000
- * section 3.2, horizontal merges only). Sites enter left to right as
- * single parts; after the i-th (1-based) the two top parts are merged once
- * for every trailing zero bit of i (equal sizes, 2^j each), and the rest
- * right to left at the end. The stack then holds one part per set bit of
- * i plus one, i < VOR_MAX_SITES: at most 15 with 16-bit ids (i < 2^15),
- * 22 with 32-bit ids (i < 2^21). */
+ * section 3.2, horizontal merges only). The sites enter left to right in
+ * leaves of three (two at the end if needed: 3 + 1 is 2 + 2; a lone site
+ * only when v = 1), built directly; after the i-th leaf (1-based) the two
+ * top parts are merged once for every trailing zero bit of i (equal
+ * sizes, 2^j leaves each), and the rest right to left at the end. The
+ * stack then holds one part per set bit of i plus one, i < VOR_MAX_SITES /
+ * 3: at most 15 with 16-bit ids, 22 with 32-bit ids. */
 #define SPLIT_STACK ((VOR_INDEX_BITS == 16) ? 15u : 22u)
 VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
 {
     struct pending stack[SPLIT_STACK];
     unsigned top = 0;
-    for (uint32_t i = 0; i < v || top > 1u; i++) {
-        if (i < v) {
+    uint32_t pos = 0;
+    for (uint32_t i = 0; pos < v || top > 1u; i++) {
+        if (pos < v) {
             VOR_ASSERT(top < SPLIT_STACK);
-            stack[top].part = single(b, order[i]);
-            stack[top].least = order[i];
+            uint32_t left = v - pos;
+            const vor_index_t *leaf = order + pos;
+            if (left == 1u) {
+                stack[top].part = single(b, leaf[0]);
+                pos += 1u;
+            } else if (left == 2u || left == 4u) {
+                vor__make_edge(b->d, leaf[0], leaf[1]);
+                stack[top].part = leaf[0];
+                pos += 2u;
+            } else {
+                stack[top].part = triangle(b, leaf[0], leaf[1], leaf[2]);
+                pos += 3u;
+            }
+            stack[top].least = leaf[0];
             top++;
         }
-        /* merge pairs of equal size; once every site is in, all pairs */
-        for (uint32_t c = i + 1u; top > 1u && (i + 1u >= v || (c & 1u) == 0u); c >>= 1) {
+        /* merge pairs of equal size; once every leaf is in, all pairs */
+        for (uint32_t c = i + 1u; top > 1u && (pos == v || (c & 1u) == 0u); c >>= 1) {
             b->by_line = false;
             b->split = stack[top - 1u].least;
             stack[top - 2u].part = merge(b, stack[top - 2u].part, stack[top - 1u].part, 0);
@@ -574,6 +666,47 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
         }
     }
     return stack[0].part;
+}
+
+/* For the lexicographically sorted ids[0, count) (equal points adjacent,
+ * the first occurrence first): reports the duplicates, empties their home
+ * slots, and moves the distinct ids to the front, keeping their order.
+ * Returns their number. */
+static uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
+{
+    const vor_point_t *p = b->d->sites;
+    uint32_t m = 0;
+    for (uint32_t i = 0; i < count; i++) {
+        vor_index_t s = ids[i];
+        vor_index_t first = (m > 0u) ? ids[m - 1u] : s;
+        if (m > 0u && p[s].x == p[first].x && p[s].y == p[first].y) {
+            vor__tri_fresh(&b->tri[s]); /* a duplicate's home slot stays empty */
+            b->tri[s].n[0] = VOR__NONE;
+        } else {
+            ids[m++] = s;
+            first = s;
+        }
+        if (b->duplicate_of != NULL) {
+            b->duplicate_of[s] = first;
+        }
+    }
+    return m;
+}
+
+/* Sorts the sites ids[0, count), drops the duplicates and builds the
+ * rest by the x-split; returns the part (VOR__NONE if count is 0). */
+static vor_index_t build_sites(builder_t *b, vor_index_t *ids, uint32_t count)
+{
+    if (count == 0u) {
+        return VOR__NONE;
+    }
+    if (count > 1u) {
+        vor__sort_ids(b->d->sites, ids, count, VOR__SORT_LEX);
+    }
+    uint32_t m = keep_distinct(b, ids, count);
+    b->distinct += m;
+    b->last = ids[m - 1u];
+    return build_split(b, ids, m);
 }
 
 /* F and S merged on an axis (in_f set up by the caller), either possibly
@@ -612,7 +745,7 @@ static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned
     return (int64_t)((axis == 0u) ? d->low.x : d->low.y) + (int64_t)offset;
 }
 
-VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, const vor_index_t *order, uint32_t v)
+VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, uint32_t n)
 {
     vor_t *d = b->d;
     unsigned k = b->k, shift = b->shift;
@@ -622,16 +755,17 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, const vor_index_t 
     uint32_t pos = 0;
     for (uint32_t c = 0; c < cells; c++) {
         uint32_t end = pos;
-        while (end < v && cell_of(d, order[end], k, shift) == c) {
+        while (end < n && cell_of(d, ids[end], k, shift) == c) {
             end++;
         }
         /* sites are numbered in input order, so the next buckets' sites
          * and home slots lie anywhere in the arena */
-        for (uint32_t ahead = end; ahead < end + 4u && ahead + 12u < v; ahead++) {
-            VOR__PREFETCH(&d->sites[order[ahead + 12u]]);
-            VOR__PREFETCH(&b->tri[order[ahead + 12u]]);
+        for (uint32_t ahead = end; ahead < end + 4u && ahead + 12u < n; ahead++) {
+            VOR__PREFETCH(&d->sites[ids[ahead + 12u]]);
+            VOR__PREFETCH(&b->tri[ids[ahead + 12u]]);
         }
-        vor_index_t part = (end > pos) ? build_split(b, order + pos, end - pos) : VOR__NONE;
+        /* each bucket is sorted and built while its sites are in the cache */
+        vor_index_t part = build_sites(b, ids + pos, end - pos);
         pos = end;
         /* the children of one square are the squares of side 2^(k -
          * level) cells in it; the one just finished is child number
@@ -671,108 +805,40 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, const vor_index_t 
     return root;
 }
 
-/* For the sorted ids[from, to) (equal points adjacent, the first
- * occurrence first): reports the duplicates and empties their home slots,
- * and packs the distinct ids right below ids[*w], back to front, lowering
- * *w (in place when *w >= to). Returns their number. */
-static uint32_t take_distinct(vor_t *d, vor_index_t *ids, uint32_t from, uint32_t to,
-                              uint32_t *w, uint32_t *duplicate_of)
-{
-    const vor_point_t *p = d->sites;
-    vor__tri_t *tri = d->triangles;
-    if (from == to) {
-        return 0;
-    }
-    vor_index_t head = ids[from];
-    for (uint32_t i = from; i < to; i++) {
-        vor_index_t s = ids[i];
-        if (i > from && p[s].x == p[head].x && p[s].y == p[head].y) {
-            if (duplicate_of != NULL) {
-                duplicate_of[s] = head;
-            }
-            vor__tri_fresh(&tri[s]); /* a duplicate's home slot stays empty */
-            tri[s].n[0] = VOR__NONE;
-        } else {
-            head = s;
-            if (duplicate_of != NULL) {
-                duplicate_of[s] = s;
-            }
-        }
-    }
-    uint32_t count = 0;
-    for (uint32_t i = to; i-- > from;) {
-        vor_index_t s = ids[i];
-        if (i == from || p[ids[i - 1u]].x != p[s].x || p[ids[i - 1u]].y != p[s].y) {
-            ids[--*w] = s;
-            count++;
-        }
-    }
-    return count;
-}
-
-/* Sorts and deduplicates the site ids into the top of the triangle slots
- * (see vor__build_dc), returning the number v of distinct sites; they are
- * ids[*w, n). Out of line: its frame is not on the merges' stack. */
-VOR__NOINLINE static uint32_t order_sites(builder_t *b, vor_index_t *ids, uint32_t n,
-                                          bool quadtree, uint32_t *duplicate_of,
-                                          uint32_t *w_out)
+/* Groups the ids[0, n) of the sites by quadtree bucket (n >= 8): a
+ * counting sort into 4^k buckets of two to eight sites, n / 8 < 4^k <=
+ * n / 2, over the bounding square of side 2^shift; sets b->k and
+ * b->shift. Its counters lie right below ids (4^k + 1 <= n / 2 + 1
+ * entries: above the home slots for max_sites >= 3, and free until the
+ * build starts). Out of line: its frame is not on the merges' stack. */
+VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
 {
     vor_t *d = b->d;
-    const vor_point_t *p = d->sites;
-    uint32_t v = 0, w = n; /* distinct sites; they are ids[w, n) */
-    if (quadtree) {
-        /* buckets of two to eight sites: 2^k x 2^k, n / 8 < 4^k <= n / 2,
-         * over the bounding square of side 2^shift */
-        while (b->k + 1u < QUADTREE_LEVELS && (8ull << (2u * b->k)) <= n) {
-            b->k++;
-        }
-        uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
-        uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
-        span = (span_y > span) ? span_y : span;
-        while ((span >> b->shift) != 0u) {
-            b->shift++;
-        }
-        /* a counting sort by bucket into ids, its counters right below
-         * (cells + 1 <= n / 2 + 1 entries: above the home slots for
-         * max_sites >= 3, and free until the build starts), then each
-         * bucket sorted lexicographically: expected O(n) for spread-out
-         * sites, and the equal points are adjacent as below */
-        uint32_t cells = 1u << (2u * b->k);
-        vor_index_t *start = ids - (cells + 1u);
-        for (uint32_t c = 0; c <= cells; c++) {
-            start[c] = 0;
-        }
-        for (uint32_t s = 0; s < n; s++) {
-            start[cell_of(d, (vor_index_t)s, b->k, b->shift) + 1u]++;
-        }
-        for (uint32_t c = 0; c < cells; c++) {
-            start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
-        }
-        for (uint32_t s = 0; s < n; s++) {
-            uint32_t c = cell_of(d, (vor_index_t)s, b->k, b->shift);
-            ids[start[c]] = (vor_index_t)s;
-            start[c]++;
-        }
-        /* start[c] is now the end of bucket c. Last bucket first, each
-         * sorted, its duplicates found and its distinct ids packed at the
-         * end, back to front, while its sites are in the cache (in place:
-         * a bucket's ids are written at or above where they are read) */
-        for (uint32_t c = cells; c-- > 0u;) {
-            uint32_t from = (c > 0u) ? start[c - 1u] : 0u;
-            if (start[c] - from > 1u) {
-                vor__sort_ids(p, ids + from, start[c] - from, VOR__SORT_LEX);
-            }
-            v += take_distinct(d, ids, from, start[c], &w, duplicate_of);
-        }
-    } else {
-        for (uint32_t s = 0; s < n; s++) {
-            ids[s] = (vor_index_t)s;
-        }
-        vor__sort_ids(p, ids, n, VOR__SORT_LEX);
-        v = take_distinct(d, ids, 0, n, &w, duplicate_of);
+    while (b->k + 1u < QUADTREE_LEVELS && (8ull << (2u * b->k)) <= n) {
+        b->k++;
     }
-    *w_out = w;
-    return v;
+    uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
+    uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
+    span = (span_y > span) ? span_y : span;
+    while ((span >> b->shift) != 0u) {
+        b->shift++;
+    }
+    uint32_t cells = 1u << (2u * b->k);
+    vor_index_t *start = ids - (cells + 1u);
+    for (uint32_t c = 0; c <= cells; c++) {
+        start[c] = 0;
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        start[cell_of(d, (vor_index_t)s, b->k, b->shift) + 1u]++;
+    }
+    for (uint32_t c = 0; c < cells; c++) {
+        start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        uint32_t c = cell_of(d, (vor_index_t)s, b->k, b->shift);
+        ids[start[c]] = (vor_index_t)s;
+        start[c]++;
+    }
 }
 
 void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
@@ -780,7 +846,10 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
     builder_t b;
     b.d = d;
     b.tri = d->triangles;
+    b.duplicate_of = duplicate_of;
     b.next_extra = d->max_sites;
+    b.distinct = 0;
+    b.last = 0;
     b.axis = 0;
     b.by_line = false;
     b.f_above = false;
@@ -788,35 +857,29 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
     b.line = 0;
     b.k = 0;
     b.shift = 0;
-    /* the order at the top of the triangle slots: sorted in place, then the
-     * distinct sites packed at the very end. It is read front to back while
-     * merges fill extra slots from below: after the first i sites at most
-     * i - 2 extras are used, and (v - i) index entries fit above them
-     * because an index is smaller than a triangle; and it starts above the
-     * home slots for max_sites >= 3 (a two-slot mesh is read first). */
+    b.bound = 2u * n + 2u;
+    /* The site ids at the top of the triangle slots, read front to back
+     * while triangles fill the slots from below: once the first i ids are
+     * read, at most i - 2 extra slots are in use (one fewer per duplicate
+     * among them), and the n - i ids still to be read fit above them
+     * because an id is smaller than a triangle. For max_sites >= 3 they
+     * start above the home slots (a two-slot mesh is read first). Each
+     * bucket (or, for the x-split, the whole array) is sorted in place and
+     * its distinct ids moved to its front before it is built. */
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
     vor_index_t *ids = base + entries - n;
-    bool quadtree = algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u;
-    uint32_t w;
-    uint32_t v = order_sites(&b, ids, n, quadtree, duplicate_of, &w);
-    const vor_index_t *order = ids + w;
-
-    b.bound = 2u * v + 2u;
-    if (v == 1u) { /* as the incremental build leaves it */
-        d->vertex_count = 1;
-        d->last_site = order[0];
-        vor__grid_rebuild(d);
-        return;
-    }
-    vor_index_t last = order[v - 1u];
-    if (quadtree) {
-        (void)build_quadtree(&b, order, v);
+    if (algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u) {
+        group_by_bucket(&b, ids, n);
+        (void)build_quadtree(&b, ids, n);
     } else {
-        (void)build_split(&b, order, v);
+        for (uint32_t s = 0; s < n; s++) {
+            ids[s] = (vor_index_t)s;
+        }
+        (void)build_sites(&b, ids, n);
     }
-    d->vertex_count = v;
-    d->last_site = last;
+    d->vertex_count = b.distinct;
+    d->last_site = b.last;
     vor__grid_rebuild(d);
 }

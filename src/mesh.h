@@ -129,12 +129,14 @@ static inline void vor__relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index
                                     vor_index_t b, vor_index_t to)
 {
     vor__tri_t *t = &tri[slot];
-    for (unsigned i = 0; i < 3u; i++) {
-        vor_index_t v = vor__vertex(t, i);
-        if (v != a && v != b) {
-            t->n[i] = to;
-            return;
-        }
+    vor_index_t v[3];
+    vor__vertices(t, v);
+    unsigned i = (v[0] != a && v[0] != b)   ? 0u
+                 : (v[1] != a && v[1] != b) ? 1u
+                 : (v[2] != a && v[2] != b) ? 2u
+                                            : 3u;
+    if (i != 3u) { /* always found in a valid mesh */
+        t->n[i] = to;
     }
 }
 
