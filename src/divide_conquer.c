@@ -242,10 +242,10 @@ static inline void flip(builder_t *b, vor_index_t s1, const vor_index_t tv[3], u
         x1 = s2;
         x2 = s1;
     }
-    vor__relink_edge(tri, nab, a, bb, x1);
-    vor__relink_edge(tri, nbe, bb, e, x1);
-    vor__relink_edge(tri, nec, e, c, x2);
-    vor__relink_edge(tri, nca, c, a, x2);
+    vor__relink_before(tri, nab, a, x1);
+    vor__relink_before(tri, nbe, bb, x1);
+    vor__relink_before(tri, nec, e, x2);
+    vor__relink_before(tri, nca, c, x2);
     vor__tri_set(&tri[x1], a, bb, e, nbe, x2, nab);
     vor__tri_set(&tri[x2], a, e, c, nec, nca, x1);
     *t1 = x1;
@@ -437,12 +437,12 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     put(tri, cap, l0, r0, VOR__INFINITE, (ha != VOR__NONE) ? ha : lower,
         (gb != VOR__NONE) ? gb : lower, lower);
     if (ga != VOR__NONE) {
-        vor__relink_edge(tri, ga, l0, VOR__INFINITE, lower);
-        vor__relink_edge(tri, gb, l0, VOR__INFINITE, cap);
+        vor__relink_before(tri, ga, l0, lower);
+        vor__relink_before(tri, gb, VOR__INFINITE, cap);
     }
     if (hb != VOR__NONE) {
-        vor__relink_edge(tri, hb, r0, VOR__INFINITE, lower);
-        vor__relink_edge(tri, ha, r0, VOR__INFINITE, cap);
+        vor__relink_before(tri, hb, VOR__INFINITE, lower);
+        vor__relink_before(tri, ha, r0, cap);
     }
     /* the base's ends are marked (joined()); both home slots hold
      * triangles now */
@@ -731,9 +731,9 @@ static vor_index_t combine(builder_t *b, vor_index_t f, vor_index_t s, unsigned 
  * buckets are visited in Z order, a base-4 counter: at each level the
  * finished bottom pair (or its first child) and the third child wait,
  * two words a level. */
-/* levels 0..k, 8 4^k <= n <= VOR_MAX_SITES: k <= 5 with 16-bit ids,
- * k <= 8 with 32-bit ids */
-#define QUADTREE_LEVELS ((VOR_INDEX_BITS == 16) ? 6u : 9u)
+/* levels 0..k, 2 4^k <= n <= VOR_MAX_SITES: k <= 6 with 16-bit ids,
+ * k <= 9 with 32-bit ids */
+#define QUADTREE_LEVELS ((VOR_INDEX_BITS == 16) ? 7u : 10u)
 
 /* The least coordinate (x on axis 0, y on axis 1) in grid column (row)
  * `index` or beyond: (c - low) 2^k / 2^shift >= index iff

@@ -200,9 +200,9 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     vor__tri_fresh(&tri[sp]);
     vor__tri_fresh(&tri[extra]);
     if (d->vertex_count == 2u) { /* the root's neighbour is one triangle */
-        vor__relink_edge(tri, na, b, c, sa);
-        vor__relink_edge(tri, nb, c, a, sb);
-        vor__relink_edge(tri, nc, a, b, sc);
+        vor__relink_before(tri, na, b, sa);
+        vor__relink_before(tri, nb, c, sb);
+        vor__relink_before(tri, nc, a, sc);
     } else {
         relink(tri, na, root, sa);
         relink(tri, nb, root, sb);

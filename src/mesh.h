@@ -122,21 +122,20 @@ static inline bool vor__slot_empty(const vor__tri_t *t)
     return t->n[0] == VOR__NONE;
 }
 
-/* In triangle `slot`, points the link across the edge {a, b} at `to`. By
- * vertices, not by the old link: a two-site mesh's two triangles are each
- * other's neighbour across all three edges. */
-static inline void vor__relink_edge(vor__tri_t *tri, vor_index_t slot, vor_index_t a,
-                                    vor_index_t b, vor_index_t to)
+/* In triangle `slot`, points the link across its edge that ends at
+ * vertex a (x -> a, x the vertex before a) at `to`, which runs that edge
+ * a -> x. By vertices, not by the old link: a two-site mesh's two
+ * triangles are each other's neighbour across all three edges. a's
+ * position is data, so it is found without a branch on it. */
+static inline void vor__relink_before(vor__tri_t *tri, vor_index_t slot, vor_index_t a,
+                                      vor_index_t to)
 {
     vor__tri_t *t = &tri[slot];
     vor_index_t v[3];
     vor__vertices(t, v);
-    unsigned i = (v[0] != a && v[0] != b)   ? 0u
-                 : (v[1] != a && v[1] != b) ? 1u
-                 : (v[2] != a && v[2] != b) ? 2u
-                                            : 3u;
-    if (i != 3u) { /* always found in a valid mesh */
-        t->n[i] = to;
+    unsigned i = (unsigned)(v[1] == a) | ((unsigned)(v[2] == a) << 1);
+    if (v[i] == a) { /* always in a valid mesh */
+        t->n[vor__next(i)] = to;
     }
 }
 
@@ -248,7 +247,7 @@ static inline int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c)
     return vor__with_faults(d, sign);
 }
 
-static inline int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+VOR__INLINE int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
 {
     const vor_point_t *s = d->sites;
     int sign = vor__incircle_exact(&s[a], &s[b], &s[c], &s[p], &d->stats);
