@@ -457,6 +457,13 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     vor_index_t cv[3] = {l0, r0, VOR__INFINITE};
     unsigned il = 0, ir = 1;
     bool l_moved = false, r_moved = false;
+    /* A candidate that stayed while the other side advanced by the circle
+     * test is still above the new base, exactly: were the S candidate e
+     * below (c, r) after the base (l, r) moved to (c, r), it would lie in
+     * the triangle (l, r, c), which its circle contains, or beyond (c, l),
+     * where the segment (r, e) crosses (l, c) and no line could separate
+     * F from S (mirrored for F). Its test is skipped. */
+    bool l_still_valid = false, r_still_valid = false;
     uint32_t steps_left = 4u * b->bound + 16u, advances = 0;
     while (steps_left-- > 0u) {
         /* left deletions: pocket ghost pf = (c1, l, inf), F triangle
@@ -467,7 +474,8 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         c1 = pv[vor__next(pf_inf)];
         bool lvalid, rvalid; /* the candidates above the base */
         for (;;) {
-            lvalid = in_f(b, c1) && vor__orient(d, l, r, c1) > 0;
+            lvalid = in_f(b, c1) && (l_still_valid || vor__orient(d, l, r, c1) > 0);
+            l_still_valid = false;
             if (!lvalid) {
                 break;
             }
@@ -494,7 +502,8 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         unsigned ps_inf = find(sv, VOR__INFINITE);
         e1 = sv[vor__prev(ps_inf)];
         for (;;) {
-            rvalid = in_s(b, e1) && vor__orient(d, l, r, e1) > 0;
+            rvalid = in_s(b, e1) && (r_still_valid || vor__orient(d, l, r, e1) > 0);
+            r_still_valid = false;
             if (!rvalid) {
                 break;
             }
@@ -516,7 +525,9 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
          * other candidate outside its triangle's circle (the deletions on
          * one side leave the other side's candidate as it was) */
-        bool left = lvalid && (!rvalid || vor__incircle(d, l, r, c1, e1) < 0);
+        bool circle_left = lvalid && rvalid && vor__incircle(d, l, r, c1, e1) < 0;
+        bool circle_right = lvalid && rvalid && !circle_left;
+        bool left = lvalid && (!rvalid || circle_left);
         bool right = rvalid && !left;
         /* C3: never a parallel edge; then the other candidate, if valid */
         if (left && joined(b, c1, r)) {
@@ -537,6 +548,8 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
                 break;
             }
         }
+        r_still_valid = left && circle_left;
+        l_still_valid = right && circle_right;
         vor_index_t x1, x2;
         if (left) { /* cap (l, r, inf) + (c1, l, inf) -> (r, inf, c1) + (r, c1, l) */
             flip(b, cap, cv, ir, &x1, &x2);
