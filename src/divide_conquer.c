@@ -735,6 +735,127 @@ static vor_index_t combine(builder_t *b, vor_index_t f, vor_index_t s, unsigned 
     return merge(b, f, s, axis);
 }
 
+/* A bucket of more than CROWDED sites (a cluster) is not built by the
+ * x-split, which would cut it into thin strips, but by its own quadtree,
+ * subdivided where the sites are: the quadtree order down to squares of at
+ * most CROWDED sites, at most CROWDED_LEVELS levels deep (then the
+ * x-split, which is correct at any size). */
+#define CROWDED 8u
+#define CROWDED_LEVELS 20u
+
+/* Moves the ids[0, count) whose coordinate (x on axis 0, y on axis 1) is
+ * below `line` to the front; returns their number. */
+static uint32_t partition_below(const vor_point_t *p, vor_index_t *ids, uint32_t count,
+                                unsigned axis, int64_t line)
+{
+    uint32_t i = 0, j = count;
+    while (i < j) {
+        const vor_point_t *q = &p[ids[i]];
+        if ((int64_t)((axis == 0u) ? q->x : q->y) < line) {
+            i++;
+        } else {
+            j--;
+            vor_index_t swap = ids[i];
+            ids[i] = ids[j];
+            ids[j] = swap;
+        }
+    }
+    return i;
+}
+
+/* Is site q in the square with corner (ox, oy) and side 2^s? */
+static inline bool in_square(const vor_point_t *q, int64_t ox, int64_t oy, unsigned s)
+{
+    return (((uint64_t)((int64_t)q->x - ox) | (uint64_t)((int64_t)q->y - oy)) >> s) == 0u;
+}
+
+/* Builds the crowded bucket ids[0, count) (count > CROWDED): over the
+ * bounding square of its sites, a square of more than CROWDED sites is
+ * split in four (its ids partitioned in place: bottom left, bottom right,
+ * top left, top right, so each child is a run) and its children are
+ * merged like the grid's; smaller squares are built by build_sites. The
+ * squares are visited depth first; each level holds its child index, the
+ * finished bottom pair (or first child) and the third child. */
+VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, uint32_t count)
+{
+    const vor_point_t *p = b->d->sites;
+    int64_t ox = p[ids[0]].x, oy = p[ids[0]].y, hx = ox, hy = oy;
+    for (uint32_t i = 1; i < count; i++) {
+        const vor_point_t *q = &p[ids[i]];
+        ox = (q->x < ox) ? q->x : ox;
+        oy = (q->y < oy) ? q->y : oy;
+        hx = (q->x > hx) ? q->x : hx;
+        hy = (q->y > hy) ? q->y : hy;
+    }
+    uint64_t span = (uint64_t)(((hx - ox) > (hy - oy)) ? (hx - ox) : (hy - oy));
+    unsigned s = 0; /* the current square: corner (ox, oy), side 2^s */
+    while ((span >> s) != 0u) {
+        s++;
+    }
+    vor_index_t bottom[CROWDED_LEVELS], third_child[CROWDED_LEVELS];
+    uint8_t child[CROWDED_LEVELS];
+    unsigned level = 0;
+    uint32_t pos = 0;
+    for (;;) {
+        uint32_t end = pos;
+        while (end < count && in_square(&p[ids[end]], ox, oy, s)) {
+            end++;
+        }
+        if (end - pos > CROWDED && s > 0u && level + 1u < CROWDED_LEVELS) {
+            /* split it and go on with its first child */
+            s--;
+            int64_t side = (int64_t)1 << s;
+            uint32_t lower = partition_below(p, ids + pos, end - pos, 1, oy + side);
+            (void)partition_below(p, ids + pos, lower, 0, ox + side);
+            (void)partition_below(p, ids + pos + lower, end - pos - lower, 0, ox + side);
+            level++;
+            child[level] = 0;
+            continue;
+        }
+        vor_index_t part = build_sites(b, ids + pos, end - pos);
+        pos = end;
+        /* the square is finished: on to its next sibling, merging the
+         * parent (and further up) when it was the last child */
+        for (;;) {
+            if (level == 0u) {
+                return part;
+            }
+            int64_t side = (int64_t)1 << s;
+            unsigned c = child[level];
+            if (c == 0u || c == 2u) {
+                if (c == 0u) {
+                    bottom[level] = part;
+                } else {
+                    third_child[level] = part;
+                }
+                ox += side;
+                break;
+            }
+            /* right child: F left of its left edge */
+            b->by_line = true;
+            b->f_above = false;
+            b->line = ox;
+            if (c == 1u) {
+                bottom[level] = combine(b, bottom[level], part, 0);
+                ox -= side;
+                oy += side;
+                break;
+            }
+            vor_index_t top = combine(b, third_child[level], part, 0);
+            /* top over bottom: F from its lower edge up */
+            b->by_line = true;
+            b->f_above = true;
+            b->line = oy;
+            part = combine(b, top, bottom[level], 1);
+            ox -= side;
+            oy -= side;
+            s++;
+            level--;
+        }
+        child[level]++;
+    }
+}
+
 /* Katajainen and Koppinen's bucket merging in quadtree order (seed 000
  * sections 1, 3.1): about two sites a bucket, each bucket built by the
  * x-split, then every square of four merged from its children: bottom
@@ -778,7 +899,8 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
             VOR__PREFETCH(&b->tri[ids[ahead + 12u]]);
         }
         /* each bucket is sorted and built while its sites are in the cache */
-        vor_index_t part = build_sites(b, ids + pos, end - pos);
+        vor_index_t part = (end - pos > CROWDED) ? build_crowded(b, ids + pos, end - pos)
+                                                 : build_sites(b, ids + pos, end - pos);
         pos = end;
         /* the children of one square are the squares of side 2^(k -
          * level) cells in it; the one just finished is child number
