@@ -857,16 +857,16 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
 }
 
 /* Katajainen and Koppinen's bucket merging in quadtree order (seed 000
- * sections 1, 3.1): about two sites a bucket, each bucket built by the
- * x-split, then every square of four merged from its children: bottom
- * pair and top pair horizontally, then the two halves vertically (the
- * horizontal merge turned by 90 degrees). order[0, v) is grouped by
- * bucket in Z order, each bucket lexicographic (vor__build_dc). The
- * buckets are visited in Z order, a base-4 counter: at each level the
- * finished bottom pair (or its first child) and the third child wait,
- * two words a level. */
-/* levels 0..k, 2 4^k <= n <= VOR_MAX_SITES: k <= 6 with 16-bit ids,
- * k <= 9 with 32-bit ids */
+ * sections 1, 3.1): two to eight sites a bucket, each bucket built by the
+ * x-split (or, when crowded, by build_crowded), then every square of four
+ * merged from its children: bottom pair and top pair horizontally, then
+ * the two halves vertically (the horizontal merge turned by 90 degrees).
+ * ids[0, n) are grouped by bucket in Z order (group_by_bucket); each
+ * bucket is sorted just before it is built. The buckets are visited in Z
+ * order, a base-4 counter: at each level the finished bottom pair (or its
+ * first child) and the third child wait, two words a level. */
+/* levels 0..k with 8 4^(k-1) <= n <= VOR_MAX_SITES: k <= 6 with 16-bit
+ * ids, k <= 9 with 32-bit ids */
 #define QUADTREE_LEVELS ((VOR_INDEX_BITS == 16) ? 7u : 10u)
 
 /* The least coordinate (x on axis 0, y on axis 1) in grid column (row)
