@@ -109,6 +109,14 @@
 
 #include "vor_config.h"
 
+/* The library's version (semantic versioning; CHANGELOG.md says what each
+ * release changed). This is the one place that sets it: the CMake package
+ * and the CLI's --version read it from here. */
+#define VOR_VERSION_MAJOR 0
+#define VOR_VERSION_MINOR 2
+#define VOR_VERSION_PATCH 0
+#define VOR_VERSION_STRING "0.2.0"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
