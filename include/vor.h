@@ -246,7 +246,7 @@ typedef uint32_t vor_index_t;
 /* Arena bytes for a diagram of up to n sites (a constant expression):
  * the coordinates, one triangle for each of the 2n - 2 triangles a
  * triangulation of n sites has once the hull is closed by a vertex at
- * infinity (Euler's formula, seed 003 section 1.2), and the bucket grid.
+ * infinity (Euler's formula), and the bucket grid.
  * No other memory is used, and vor_build takes its scratch space from the
  * same arena. */
 #define VOR_ARENA_BYTES(n)                                                     \
@@ -305,7 +305,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
 
 /* The order in which vor_build inserts the sites. */
 enum vor_order {
-    VOR_ORDER_QUADTREE = 0, /* bucket quadtree order, seed 003 section 2.3 */
+    VOR_ORDER_QUADTREE = 0, /* Ohya, Iri and Murota's bucket order */
     VOR_ORDER_INPUT = 1     /* as given (a baseline for benchmarks) */
 };
 
@@ -313,11 +313,11 @@ enum vor_order {
  * triangulation (the perturbed Delaunay triangulation is unique) in the
  * same structure, so every other call works on either. */
 enum vor_algorithm {
-    VOR_ALGO_INCREMENTAL = 0, /* topology-oriented insertion, seed 003 */
+    VOR_ALGO_INCREMENTAL = 0, /* Sugihara and Iri's topology-oriented insertion */
     VOR_ALGO_DC = 1,          /* divide and conquer, x-split, O(n log n):
-                                 Oishi and Sugihara's guarded merge, seed 000 */
+                                 Oishi and Sugihara's guarded merge */
     VOR_ALGO_DC_QUADTREE = 2  /* divide and conquer merging buckets in quadtree
-                                 order (Katajainen and Koppinen), seed 000 */
+                                 order (Katajainen and Koppinen) */
 };
 
 typedef struct vor_build_options {

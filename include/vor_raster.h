@@ -4,7 +4,7 @@
  * A frame is a grid of pixels with integer world centres: pixel (i, j) is
  * at (origin_x + i * step_x, origin_y + j * step_y), i < width, j < height,
  * steps > 0. Each pixel gets the index of its nearest site; of several at
- * the same distance, the smallest index (Definition 2.2 of seed 002, the
+ * the same distance, the smallest index (Teramoto, Definition 2.2, the
  * discrete Voronoi diagram). Every decision is exact integer arithmetic:
  * no square root, no floating point, no sampling of the distance, so each
  * pixel equals a brute-force search with exact distances.
@@ -121,7 +121,7 @@ typedef struct vor_raster_frame {
     uint32_t height;
 } vor_raster_frame_t;
 
-/* The distance a pixel is assigned by (seed 002 section 2.3 and chapter
+/* The distance a pixel is assigned by (Teramoto, section 2.3 and chapter
  * 5). Every metric is decided exactly over the whole int32 range of
  * coordinates and weights; the comparison widths are in docs/design.md. */
 enum vor_metric {
@@ -157,7 +157,7 @@ enum vor_metric {
  *   repeats its first vertex at the end); 1 vertex is a point. With
  *   mult_weights (optional, NULL: every weight 1) the distance to site k
  *   is divided by mult_weights[k] >= 1: multiplicatively weighted curves,
- *   the contour interpolation of seed 002 chapter 6. */
+ *   the contour interpolation of Teramoto, chapter 6. */
 typedef struct vor_raster_sites {
     enum vor_metric metric;
     const vor_point_t *points;

@@ -1,7 +1,7 @@
 /*
  * divide_conquer.c - the divide-and-conquer builder (Guibas and Stolfi,
  * Lee and Schachter), made unbreakable by numerical error with Oishi and
- * Sugihara's topological guards (seed 000 sections 3-4).
+ * Sugihara's topological guards (Oishi and Sugihara, sections 3-4).
  *
  * It works on the same triangle mesh as the incremental builder (mesh.h):
  * a sub-triangulation of two or more sites is a closed triangulation of
@@ -12,13 +12,13 @@
  *
  *   1. the lower common tangent (l0, r0) of F (left) and S (right) is
  *      found on the hulls, from the rightmost site of F and the leftmost
- *      of S (seed 000 section 4.1), guarded by C4 and C5;
+ *      of S (Oishi and Sugihara, section 4.1), guarded by C4 and C5;
  *   2. glue: the two spheres are joined at the vertex at infinity by two
  *      new triangles, the lower ghost (r0, l0, inf) and the "cap"
  *      (l0, r0, inf) over the base edge (l0, r0). The ghosts of both hulls
  *      plus the cap now form one fan around infinity; the hull chains
  *      between the cap and the lower ghost are the pocket still to fill;
- *   3. zipper (seed 000 section 3.2, fig. 3.1), with base (l, r) = the
+ *   3. zipper (Oishi and Sugihara, section 3.2, fig. 3.1), with base (l, r) = the
  *      cap's finite edge:
  *        - deleting the F-F edge (l, c1) is the flip of (l, c1) between
  *          the pocket ghost (c1, l, inf) and the F triangle (l, c1, c2):
@@ -82,7 +82,7 @@ static inline bool lex_less(const vor_point_t *s, vor_index_t a, vor_index_t b)
 }
 
 /* The same turned by 90 degrees, (x', y') = (-y, x): top to bottom, for
- * vertical merges (seed 000 section 3.2: "rotate the algorithm"). */
+ * vertical merges (Oishi and Sugihara, section 3.2: "rotate the algorithm"). */
 static inline bool lex_less_rotated(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
     return s[a].y > s[b].y || (s[a].y == s[b].y && s[a].x < s[b].x);
@@ -253,7 +253,7 @@ static inline void flip(builder_t *b, vor_index_t s1, const vor_index_t tv[3], u
 }
 
 /* Is q a neighbour of site p? A walk around p from its home slot (C3;
- * seed 000 section 3.3: one endpoint's edges). */
+ * Oishi and Sugihara, section 3.3: one endpoint's edges). */
 static bool has_edge(const builder_t *b, vor_index_t p, vor_index_t q)
 {
     vor_index_t slot = p;
@@ -301,7 +301,7 @@ static void put(vor__tri_t *tri, vor_index_t slot, vor_index_t v0, vor_index_t v
  * bound only matters on a corrupted mesh). Only coordinates are compared,
  * exactly. With exact predicates the least and greatest sites of the part
  * are hull sites, so these are its extremes (the tangent search starts
- * there, seed 000 section 4.1); if earlier signs lied they are still hull
+ * there, Oishi and Sugihara, section 4.1); if earlier signs lied they are still hull
  * sites, which is all the search and guards C4 and C5 need. */
 typedef struct {
     vor_index_t least, least_ghost, most, most_ghost;
@@ -360,7 +360,7 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         return f;
     }
 
-    /* 1. lower common tangent (seed 000 section 4), from R1 and L2 */
+    /* 1. lower common tangent (Oishi and Sugihara, section 4), from R1 and L2 */
     vor_index_t l = f, r = s, l_stop = f, r_stop = s;
     vor_index_t g1 = VOR__NONE, g2 = VOR__NONE; /* (l, w, inf) and (u, r, inf) */
     uint32_t f_hull = 1, s_hull = 1;
@@ -449,7 +449,7 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     vor__set_mark(&tri[l0], true);
     vor__set_mark(&tri[r0], true);
 
-    /* 3. zipper, bottom to top (seed 000 section 3.2, fig. 3.1). Bounded
+    /* 3. zipper, bottom to top (Oishi and Sugihara, section 3.2, fig. 3.1). Bounded
      * by the counts in the header comment; `steps` is a last resort. The
      * cap (l, r, inf) is always written by put() or flip() in a known
      * rotation: cv holds its vertices, with l at cv[il] and r at cv[ir];
@@ -637,8 +637,8 @@ static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_inde
 }
 
 /* The classical x-split of the sorted sites order[0, v), v >= 1: a merge
- * of two halves, the recursion unrolled into a binary counter (seed 000
- * section 3.2, horizontal merges only). The sites enter left to right in
+ * of two halves, the recursion unrolled into a binary counter (Oishi and
+ * Sugihara, section 3.2, horizontal merges only). The sites enter left to right in
  * leaves of three (two at the end if needed: 3 + 1 is 2 + 2; a lone site
  * only when v = 1), built directly; after the i-th leaf (1-based) the two
  * top parts are merged once for every trailing zero bit of i (equal
@@ -856,8 +856,8 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
     }
 }
 
-/* Katajainen and Koppinen's bucket merging in quadtree order (seed 000
- * sections 1, 3.1): two to eight sites a bucket, each bucket built by the
+/* Katajainen and Koppinen's bucket merging in quadtree order (Oishi and
+ * Sugihara, sections 1, 3.1): two to eight sites a bucket, each bucket built by the
  * x-split (or, when crowded, by build_crowded), then every square of four
  * merged from its children: bottom pair and top pair horizontally, then
  * the two halves vertically (the horizontal merge turned by 90 degrees).

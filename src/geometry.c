@@ -14,8 +14,8 @@
  *     past a third between them, whose Voronoi edge is empty.
  * docs/design.md ("Voronoi geometry") has the proofs.
  *
- * Arithmetic (seed 003 section 2.1: translate to one of the sites first,
- * here so that the widths stay small). Around a site s, coordinates are
+ * Arithmetic (as in Sugihara's textbook: translate to one of the sites
+ * first, here so that the widths stay small). Around a site s, coordinates are
  * taken relative to s and doubled, so that every line of a cell has integer
  * coefficients: a line is a x + b y = c, its half-plane a x + b y <= c.
  *   bisector of s and n (e = n - s):  a = e.x, b = e.y, c = |e|^2

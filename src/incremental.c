@@ -1,20 +1,20 @@
 /*
  * incremental.c - the topology-oriented incremental builder (Sugihara and
- * Iri, seed 003 sections 2.2-3.1): dynamic insertion and the batch build.
+ * Iri; the insertion order of Ohya, Iri and Murota): dynamic insertion and the batch build.
  *
  * Inserting site p deletes the Voronoi vertices (Delaunay triangles) that
  * are closer to p than to their own sites and fills the hole with the
  * triangles around p. Here that is done in place, without a stack:
  *
  *   1. locate: walk to the triangle containing p; its Voronoi vertex is
- *      deleted first (seed 003 section 3.1 (I));
+ *      deleted first;
  *   2. split that triangle into three around p;
  *   3. walk once around p's star. Across each star edge lies a triangle u
  *      whose Voronoi vertex is a candidate for deletion: it is deleted,
  *      i.e. the edge is flipped so that u joins the star, only if
  *        (a) the deleted set stays a tree: u's far vertex c is not on the
- *            star yet (seed 003 section 3.1 (II)(a)); and
- *        (b) the perturbed incircle puts p inside u's circle ((II)(b)).
+ *            star yet (Sugihara and Iri's tree condition); and
+ *        (b) the perturbed incircle puts p inside u's circle.
  *
  * Condition (a) is the topological guard: a flip whose far vertex is
  * already on the star would close a cycle of deleted Voronoi vertices (or

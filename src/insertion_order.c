@@ -1,15 +1,15 @@
 /*
  * insertion_order.c - which site vor_build inserts when, and from where
  * its search starts: duplicate detection and the bucket quadtree order of
- * seed 003 section 2.3.
+ * Ohya, Iri and Murota.
  *
  * The bounding square of the sites is cut into 4^k buckets, k =
  * floor(log4 n), so a bucket holds about one site. The buckets are ranked
- * by the seed's recurrence for (I(r), J(r)): a quadtree order in which
+ * by Ohya, Iri and Murota's recurrence for (I(r), J(r)): a quadtree order in which
  * every run of 4^(k-l) consecutive buckets is one square of level l. Each
- * square's representative is the first site in that order inside it (the
- * seed's step (III), storing site numbers from the buckets up to the
- * root). Sites are then inserted level by level from the root (step (IV)):
+ * square's representative is the first site in that order inside it (stored
+ * from the buckets up to the root). Sites are then inserted level by
+ * level from the root:
  * a square's representative, unless its parent square already inserted
  * it, with the search starting at the parent's representative, a site
  * close by. The remaining sites of each bucket follow, starting at the
@@ -193,8 +193,8 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
     }
 }
 
-/* The seed's recurrence (seed 003 section 2.3, step (II)) for the cells
- * (I(r), J(r)) of a 2^k x 2^k grid, r < 4^k. The seed prints I(r - k) in
+/* Ohya, Iri and Murota's recurrence for the cells (I(r), J(r)) of a
+ * 2^k x 2^k grid, r < 4^k. A transcription we read prints I(r - k) in
  * the first inner loop; I(r - m) is meant (with it the sequence visits
  * every cell once, which tests check). */
 static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)

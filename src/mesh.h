@@ -2,7 +2,7 @@
  * mesh.h - the triangle mesh behind the diagram, private to the library.
  *
  * Triangles live in one array of 2 max_sites - 2 slots (Euler's count with
- * a vertex at infinity closing the hull, seed 003 section 1.2):
+ * a vertex at infinity closing the hull):
  *
  *   slots [0, max_sites)              home slots: slot s always holds a
  *                                     triangle incident to site s, which is
@@ -15,7 +15,7 @@
  * A triangle's vertices are counterclockwise (under the perturbation);
  * neighbour i lies across the edge opposite vertex i. A spare bit of home
  * slot s is a transient mark on site s, kept by every write to the slot
- * (vor__tri_set): insertion uses it for the seed's topological guard.
+ * (vor__tri_set): insertion uses it for Sugihara and Iri's topological guard.
  */
 #ifndef VOR_MESH_H
 #define VOR_MESH_H
@@ -290,8 +290,8 @@ static inline bool vor__conflicts(vor_t *d, vor_index_t v0, vor_index_t v1, vor_
 vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line);
 
 /* The site nearest to point p (not in the mesh) under the perturbation,
- * by a greedy walk over Delaunay neighbours from site `from` (seed 003
- * section 2.3, the starting-point search). */
+ * by a greedy walk over Delaunay neighbours from site `from` (the
+ * starting-point search of Ohya, Iri and Murota). */
 uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p);
 
 /* Inserts site p (coordinates set, not yet in the mesh, v >= 2 sites

@@ -2,7 +2,7 @@
  * predicates.c - the exact geometric predicates and their symbolic
  * perturbation.
  *
- * Integer counterpart of the hybrid arithmetic of seed 001: instead of a
+ * Integer counterpart of the hybrid arithmetic of Kanda, sections 4-5: instead of a
  * floating-point filter with an error bound, each predicate measures the
  * magnitude of its coordinate differences and evaluates in the narrowest
  * integer width that cannot overflow for that magnitude. Every tier is

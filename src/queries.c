@@ -2,7 +2,7 @@
  * queries.c - questions asked of a built diagram. Read-only: no query
  * writes the diagram, so several threads may query one diagram at once.
  *
- * Nearest site (seed 003 section 2.3, the starting-point search): from a
+ * Nearest site (the starting-point search of Ohya, Iri and Murota): from a
  * hint, step to a Delaunay neighbour strictly closer to the query, with
  * exact distance comparisons, until none is. That reaches the smallest
  * distance d: if a site s is not nearest, the segment from s to the query
@@ -128,7 +128,7 @@ static inline int narrow_closer(int32_t ex, int32_t ey, const vor_point_t *s,
     return (square < twice_dot) ? -1 : (square > twice_dot) ? 1 : 0;
 }
 
-/* Greedy walk (seed 003 section 2.3) from site `from` to a site nearest
+/* Greedy walk (Ohya, Iri and Murota) from site `from` to a site nearest
  * to q; *tie is set when another site at the same distance was seen
  * among the last site's neighbours. Each move strictly decreases the
  * exact distance, so there are fewer than vertex_count moves; each fan

@@ -2,8 +2,8 @@
  * raster.c - the band driver of vor_raster: checks the request, carves the
  * work memory, asks a row producer (the fast Euclidean path, or the
  * brute-force search) for each row's runs of labels, writes them in the
- * output kind, and flushes full bands. Seed 002 renders the discrete
- * Voronoi diagram (its Definition 2.2) with distance cones in a Z-buffer;
+ * output kind, and flushes full bands. Teramoto renders the discrete
+ * Voronoi diagram (section 2.2, Definition 2.2) with distance cones in a Z-buffer;
  * here the same diagram is computed exactly, one row at a time, so that
  * only a band of rows ever needs memory.
  */

@@ -2,8 +2,8 @@
  * raster_metrics.c - vor_raster for every metric but Euclidean point
  * sites: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
  * compound), farthest-point, Hausdorff point sets, segments, filled
- * polygons and multiplicatively weighted polylines (seed 002: section 2.3 defines the generalised diagrams,
- * chapter 5 the distances). Each pixel takes the site of smallest distance
+ * polygons and multiplicatively weighted polylines (Teramoto: section 2.3
+ * defines the generalised diagrams, chapter 5 the distances). Each pixel takes the site of smallest distance
  * (largest for the farthest-point diagram), ties to the smaller index:
  * Definition 2.2 with another distance.
  *
