@@ -115,7 +115,11 @@
 #define VOR_VERSION_MAJOR 0
 #define VOR_VERSION_MINOR 2
 #define VOR_VERSION_PATCH 0
-#define VOR_VERSION_STRING "0.2.0"
+#define VOR__STRINGIFY(x) #x
+#define VOR__VERSION_TEXT(major, minor, patch) \
+    VOR__STRINGIFY(major) "." VOR__STRINGIFY(minor) "." VOR__STRINGIFY(patch)
+#define VOR_VERSION_STRING \
+    VOR__VERSION_TEXT(VOR_VERSION_MAJOR, VOR_VERSION_MINOR, VOR_VERSION_PATCH)
 
 #ifdef __cplusplus
 extern "C" {

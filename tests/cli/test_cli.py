@@ -639,6 +639,21 @@ def contours_cases(rng, tmp):
         check(r.returncode == 2 and r.stderr.startswith("error: "), f"contours bad input {text!r}: {r.returncode} {r.stderr!r}")
 
 
+def version_cases():
+    # The expected string is read from the header's three numeric macros,
+    # so a STRING that disagrees with MAJOR/MINOR/PATCH fails too.
+    import os
+    import re
+    header = open(os.path.join(os.path.dirname(__file__), "..", "..", "include", "vor.h")).read()
+    parts = [re.search(rf"#define VOR_VERSION_{p} (\d+)\b", header) for p in ("MAJOR", "MINOR", "PATCH")]
+    check(all(parts), "vor.h defines VOR_VERSION_MAJOR, _MINOR and _PATCH")
+    if all(parts):
+        expected = "vor " + ".".join(m.group(1) for m in parts) + "\n"
+        r = run(["--version"], "")
+        check(r.returncode == 0 and r.stdout == expected and r.stderr == "",
+              f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -677,6 +692,7 @@ def main():
         cells_cases(rng, tmp)
         raster_metric_cases(rng, tmp)
         contours_cases(rng, tmp)
+    version_cases()
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

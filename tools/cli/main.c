@@ -6,11 +6,13 @@
  *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
  *   vor raster ... SITES      the discrete Voronoi diagram of a frame
  *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
+ *   vor --version             the library version the tool was built with
  */
 #include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
+#include "vor.h"
 
 static const struct {
     const char *name;
@@ -26,6 +28,10 @@ static const struct {
 
 int main(int argc, char **argv)
 {
+    if (argc == 2 && strcmp(argv[1], "--version") == 0) {
+        printf("vor %s\n", VOR_VERSION_STRING);
+        return 0;
+    }
     if (argc >= 2) {
         for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
             if (strcmp(argv[1], commands[i].name) == 0) {
@@ -37,5 +43,6 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
         fprintf(stderr, "  %-12s %s\n", commands[i].name, commands[i].summary);
     }
+    fprintf(stderr, "  %-12s %s\n", "--version", "print the library version");
     return 2;
 }
