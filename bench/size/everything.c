@@ -12,8 +12,9 @@ int main(void)
     vor_t d;
     uint32_t site = 0, count = 0, found = 0;
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
-    vor_build_options_t options = {(enum vor_order)size_x(6), (enum vor_algorithm)size_x(7)};
+    vor_build_options_t options = {(enum vor_order)size_x(6)};
     acc |= vor_build(&d, raster_points, SIZE_SITES / 2u, &options, ids);
+    acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7), ids);
     acc |= vor_insert(&d, size_x(1), size_y(1), &site);
     acc |= vor_insert_near(&d, size_x(2), size_y(2), site, &site);
     acc |= vor_nearest(&d, size_x(3), size_y(3), VOR_NO_HINT, &site);
