@@ -17,14 +17,55 @@
 # and $(TEST_CFLAGS) (tools/size-features.mk includes the Makefile), with
 # OPT set per level.
 #
-# Exit status: 0 all good; 1 a build failed or a stack depth is unknown.
+# tools/size-features.sh --check TARGET (`make test`): links the programs
+# at -Os and checks that each keeps only the library files its feature
+# set needs (the table of LINKS below); prints "N passed, N failed".
+#
+# Exit status: 0 all good; 1 a build failed, a stack depth is unknown or
+# a check failed.
 set -eu
 cd "$(dirname "$0")/.."
 
+check=0
+if [ "${1-}" = "--check" ]; then
+    check=1
+    shift
+fi
 if [ $# -eq 0 ]; then
-    echo "usage: tools/size-features.sh TARGET..." >&2
+    echo "usage: tools/size-features.sh [--check] TARGET..." >&2
     exit 2
 fi
+
+# The library files (src/NAME.c) each program may link; any other file in
+# its image is a dependency that should not be there, and every listed
+# file must be there (so the list stays true). everything: all of src/.
+ALL_FILES=$(cd src && ls ./*.c | sed 's|^\./||; s|\.c$||' | tr '\n' ' ')
+links() {
+    case $1 in
+    insert_nearest) echo "bucket_grid incremental mesh predicates queries" ;;
+    build_nearest)  echo "bucket_grid incremental insertion_order mesh predicates queries" ;;
+    geometry)       echo "bucket_grid geometry incremental insertion_order mesh predicates queries" ;;
+    raster_euclid)  echo "raster raster_euclid" ;;
+    raster_all)     echo "predicates raster raster_euclid raster_metrics" ;;
+    everything)     echo "$ALL_FILES" ;;
+    esac
+}
+
+# The library files (without .c) with bytes in a linked image, from its map.
+map_files() {
+    python3 - "$1" <<'PY'
+import re, sys
+files = set()
+kept = False
+for line in open(sys.argv[1]):
+    if line.startswith("Linker script and memory map"):
+        kept = True
+    m = re.search(r"0x[0-9a-f]+\s+0x([0-9a-f]+)\s+\S*size-lib\.a\((\w+)\.o\)", line)
+    if kept and m and int(m.group(1), 16) > 0:
+        files.add(m.group(2))
+print(" ".join(sorted(files)))
+PY
+}
 # In the order of the table: from the smallest firmware to everything.
 FEATURES="insert_nearest build_nearest geometry raster_euclid raster_all everything"
 LEVELS="-Os -O2"
@@ -66,6 +107,32 @@ PY
 }
 
 status=0
+if [ $check -eq 1 ]; then
+    passed=0
+    failed=0
+    for t in "$@"; do
+        dir=build/size-features/$t-Os
+        if ! make -s -f tools/size-features.mk PORT="$t" OPT=-Os B="$dir" vor-features; then
+            echo "FAIL $t: the feature programs did not build"
+            failed=$((failed + 1))
+            continue
+        fi
+        for f in $FEATURES; do
+            got=$(map_files "$dir/size-$f.map")
+            want=$(tr ' ' '\n' <<<"$(links "$f")" | sed '/^$/d' | sort | tr '\n' ' ')
+            if [ "$got " = "$want" ]; then
+                passed=$((passed + 1))
+            else
+                echo "FAIL $t $f links: $got; expected: $want"
+                failed=$((failed + 1))
+            fi
+        done
+    done
+    echo "$passed passed, $failed failed"
+    [ "$failed" = 0 ]
+    exit
+fi
+
 rows=()
 for t in "$@"; do
     for level in $LEVELS; do

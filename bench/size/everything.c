@@ -58,5 +58,5 @@ int main(void)
     acc += vor_orient2d_sos(raster_points, 0, 1, 2, NULL);
     acc += vor_incircle_sos(raster_points, 0, 1, 2, 3, NULL);
     acc += vor_closer_sos(raster_points, 0, 1, 2, NULL);
-    return acc + raster_render((enum vor_metric)size_x(5)) + (int)raster_sum;
+    return acc + raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
 }

@@ -4,5 +4,5 @@
 
 int main(void)
 {
-    return raster_render((enum vor_metric)size_x(5)) + (int)raster_sum;
+    return raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
 }

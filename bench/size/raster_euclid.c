@@ -4,5 +4,5 @@
 
 int main(void)
 {
-    return raster_render(VOR_METRIC_EUCLID) + (int)raster_sum;
+    return raster_render(vor_raster_euclid, VOR_METRIC_EUCLID) + (int)raster_sum;
 }
