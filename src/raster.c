@@ -40,29 +40,24 @@ static uint32_t magnitude(int64_t d)
     return (uint32_t)(d < 0 ? -d : d); /* |d| < 2^32 for int32 differences */
 }
 
-/* |q - s|^2 exactly, as high (0 or 1) and low 64 bits: each square is
- * below 2^64 for int32 coordinates, their sum below 2^65. */
-typedef struct square65 {
-    uint64_t low;
-    uint32_t high;
-} square65_t;
-
-static square65_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s)
+/* |q - s|^2 exactly, as *high (0 or 1) and the low 64 bits returned:
+ * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
+static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
 {
     uint64_t dx2 = vor__mul_u32(magnitude((int64_t)qx - s->x), magnitude((int64_t)qx - s->x));
     uint64_t dy2 = vor__mul_u32(magnitude((int64_t)qy - s->y), magnitude((int64_t)qy - s->y));
-    square65_t d;
-    d.low = dx2 + dy2;
-    d.high = d.low < dx2 ? 1u : 0u;
-    return d;
+    uint64_t low = dx2 + dy2;
+    *high = low < dx2 ? 1u : 0u;
+    return low;
 }
 
 /* floor(|q - s|), saturated at UINT32_MAX: from 2^64 on the root is
  * >= 2^32. */
 static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
 {
-    square65_t d = squared_distance(qx, qy, s);
-    return d.high != 0u ? 0xFFFFFFFFu : isqrt64(d.low);
+    uint32_t high;
+    uint64_t low = squared_distance(qx, qy, s, &high);
+    return high != 0u ? 0xFFFFFFFFu : isqrt64(low);
 }
 
 /* ---------------------------------------------------------- brute force */
@@ -71,13 +66,15 @@ static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
  * index. */
 static uint32_t brute_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy)
 {
-    uint32_t best = 0;
-    square65_t best_d = squared_distance(qx, qy, &sites->points[0]);
+    uint32_t best = 0, best_high;
+    uint64_t best_low = squared_distance(qx, qy, &sites->points[0], &best_high);
     for (uint32_t k = 1; k < sites->count; k++) {
-        square65_t d = squared_distance(qx, qy, &sites->points[k]);
-        if (d.high < best_d.high || (d.high == best_d.high && d.low < best_d.low)) {
+        uint32_t high;
+        uint64_t low = squared_distance(qx, qy, &sites->points[k], &high);
+        if (high < best_high || (high == best_high && low < best_low)) {
             best = k;
-            best_d = d;
+            best_high = high;
+            best_low = low;
         }
     }
     return best;
