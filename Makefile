@@ -5,7 +5,8 @@
 #                           (cortex-m0, cortex-m3, cortex-m4f, riscv32)
 #   make test               every test, on the host and under QEMU on every target
 #   make demo               the main job on the emulated Cortex-M3
-#   make size               flash, static RAM and worst stack depth per target
+#   make size               flash, static RAM and worst stack depth per target,
+#                           and per feature set a firmware links (bench/size/)
 #   make bench              Delaunay build: vor against CGAL and Boost.Polygon,
 #                           and target instructions per inserted site
 #   make bench-predicates   predicate speed: host ns and target instructions
@@ -171,6 +172,7 @@ test:
 size:
 	@tools/install-toolchain.sh
 	+@tools/size-report.sh $(TARGETS)
+	+@tools/size-features.sh cortex-m0 cortex-m3 riscv32
 
 bench-predicates:
 	@tools/install-toolchain.sh

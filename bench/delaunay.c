@@ -7,8 +7,8 @@
  *
  *   bench build N COST UNIT          default (quadtree) insertion order
  *   bench build-input N COST UNIT    VOR_ORDER_INPUT, as a baseline
- *   bench build-dc N COST UNIT       divide and conquer, x-split (VOR_ALGO_DC)
- *   bench build-dc-quadtree N COST UNIT   VOR_ALGO_DC_QUADTREE
+ *   bench build-dc N COST UNIT       vor_build_dc, VOR_DC_XSPLIT
+ *   bench build-dc-quadtree N COST UNIT   vor_build_dc, VOR_DC_QUADTREE
  *
  * where COST is the vor_port_counter() delta of one vor_init + vor_build
  * divided by N, with one decimal: instructions under QEMU -icount on
@@ -37,26 +37,33 @@ static void make_points(uint32_t n)
     }
 }
 
+/* vor_build in an order, or vor_build_dc with a split. */
+enum builder { INCREMENTAL, DC_XSPLIT, DC_QUADTREE };
+
 /* The counter delta of one build, or 0 on an error. */
-static uint64_t build(uint32_t n, enum vor_order order, enum vor_algorithm algorithm)
+static uint64_t build(uint32_t n, enum vor_order order, enum builder builder)
 {
-    vor_build_options_t options = {order, algorithm};
+    vor_build_options_t options = {order};
     uint64_t start = vor_port_counter();
-    if (vor_init(&diagram, arena, sizeof arena, n) != VOR_OK ||
-        vor_build(&diagram, points, n, &options, NULL) != VOR_OK) {
+    if (vor_init(&diagram, arena, sizeof arena, n) != VOR_OK) {
+        return 0u;
+    }
+    int err = (builder == INCREMENTAL) ? vor_build(&diagram, points, n, &options, NULL)
+              : vor_build_dc(&diagram, points, n,
+                             builder == DC_XSPLIT ? VOR_DC_XSPLIT : VOR_DC_QUADTREE, NULL);
+    if (err != VOR_OK) {
         return 0u;
     }
     return vor_port_counter() - start;
 }
 
-static bool run(const char *name, uint32_t n, enum vor_order order,
-                enum vor_algorithm algorithm)
+static bool run(const char *name, uint32_t n, enum vor_order order, enum builder builder)
 {
     /* the host's counter is wall time: keep the best of a few runs */
     unsigned runs = (vor_port_counter_unit[0] == 'n') ? HOST_RUNS : 1u;
     uint64_t best = UINT64_MAX;
     for (unsigned r = 0; r < runs; r++) {
-        uint64_t spent = build(n, order, algorithm);
+        uint64_t spent = build(n, order, builder);
         if (spent == 0u || vor_validate(&diagram, NULL) != VOR_OK ||
             diagram.vertex_count != n) {
             test_printf("bench %s %u FAILED\n", name, (unsigned)n);
@@ -77,10 +84,10 @@ int main(void)
     bool ok = true;
     for (unsigned i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
         make_points(sizes[i]);
-        ok &= run("build", sizes[i], VOR_ORDER_QUADTREE, VOR_ALGO_INCREMENTAL);
-        ok &= run("build-input", sizes[i], VOR_ORDER_INPUT, VOR_ALGO_INCREMENTAL);
-        ok &= run("build-dc", sizes[i], VOR_ORDER_QUADTREE, VOR_ALGO_DC);
-        ok &= run("build-dc-quadtree", sizes[i], VOR_ORDER_QUADTREE, VOR_ALGO_DC_QUADTREE);
+        ok &= run("build", sizes[i], VOR_ORDER_QUADTREE, INCREMENTAL);
+        ok &= run("build-input", sizes[i], VOR_ORDER_INPUT, INCREMENTAL);
+        ok &= run("build-dc", sizes[i], VOR_ORDER_QUADTREE, DC_XSPLIT);
+        ok &= run("build-dc-quadtree", sizes[i], VOR_ORDER_QUADTREE, DC_QUADTREE);
     }
     test_printf("bench valid %s\n", ok ? "ok" : "FAILED");
     return ok ? 0 : 1;

@@ -313,37 +313,45 @@ enum vor_order {
     VOR_ORDER_INPUT = 1     /* as given (a baseline for benchmarks) */
 };
 
-/* How vor_build constructs the mesh. Every algorithm gives the same
- * triangulation (the perturbed Delaunay triangulation is unique) in the
- * same structure, so every other call works on either. */
-enum vor_algorithm {
-    VOR_ALGO_INCREMENTAL = 0, /* Sugihara and Iri's topology-oriented insertion */
-    VOR_ALGO_DC = 1,          /* divide and conquer, x-split, O(n log n):
-                                 Oishi and Sugihara's guarded merge */
-    VOR_ALGO_DC_QUADTREE = 2  /* divide and conquer merging buckets in quadtree
-                                 order (Katajainen and Koppinen) */
-};
-
 typedef struct vor_build_options {
-    enum vor_order order;         /* incremental only */
-    enum vor_algorithm algorithm; /* zero: VOR_ALGO_INCREMENTAL */
+    enum vor_order order;
 } vor_build_options_t;
 
 /*
- * Replaces the contents of d by the diagram of points[0 .. n): site i is
- * points[i]. A point equal to an earlier one is not a separate site:
- * duplicate_of[i] (if the array is given, n entries) receives the id of
- * its first occurrence, and i for every other site. options may be NULL
- * (VOR_ORDER_QUADTREE, VOR_ALGO_INCREMENTAL). The divide-and-conquer
- * algorithms need no memory beyond the arena either (docs/design.md,
- * "Divide and conquer").
- *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown option
+ * Replaces the contents of d by the diagram of points[0 .. n), by Sugihara
+ * and Iri's topology-oriented insertion: site i is points[i]. A point
+ * equal to an earlier one is not a separate site: duplicate_of[i] (if the
+ * array is given, n entries) receives the id of its first occurrence, and
+ * i for every other site. options may be NULL (VOR_ORDER_QUADTREE).
+ *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown order
  *   VOR_ERR_FULL n > max_sites
  * Expected O(n) time for uniform points; scratch space comes from the
- * arena's unused part, nothing else is touched.
+ * arena's unused part, nothing else is touched. Links no code of the
+ * divide-and-conquer builder.
  */
 int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
               const vor_build_options_t *options, uint32_t *duplicate_of);
+
+/* How vor_build_dc splits the sites. */
+enum vor_dc_split {
+    VOR_DC_QUADTREE = 0, /* buckets merged in quadtree order (Katajainen and
+                            Koppinen): expected O(n) for uniform points */
+    VOR_DC_XSPLIT = 1    /* the classical halving by x, O(n log n) */
+};
+
+/*
+ * vor_build by divide and conquer with Oishi and Sugihara's topological
+ * guards: the same result in the same structure (the perturbed Delaunay
+ * triangulation is unique), so every other call works on either. No
+ * memory beyond the arena and no recursion (an explicit stack of
+ * O(log n) frames on the C stack; docs/design.md, "Divide and conquer").
+ * A separate entry point so that a firmware using only vor_build does not
+ * link this builder.
+ *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown split
+ *   VOR_ERR_FULL n > max_sites
+ */
+int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
+                 enum vor_dc_split split, uint32_t *duplicate_of);
 
 /* What vor_validate checks, in this order; the first failure is reported. */
 enum vor_check {

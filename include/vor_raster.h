@@ -237,6 +237,16 @@ typedef struct vor_raster_output {
 int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                const vor_raster_output_t *out, void *work, size_t work_bytes);
 
+/*
+ * vor_raster for Euclidean point sites only (sites->metric must be
+ * VOR_METRIC_EUCLID, else VOR_ERR_ARG): the same pixels, errors and
+ * memory, and a firmware that calls only this links none of the other
+ * metrics (about 10 KB less on Cortex-M3 at -Os). vor_raster hands
+ * Euclidean frames to it.
+ */
+int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                      const vor_raster_output_t *out, void *work, size_t work_bytes);
+
 #ifdef __cplusplus
 }
 #endif

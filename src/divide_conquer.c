@@ -64,7 +64,7 @@
  *
  * Memory: nothing beyond the arena. The sorted site order lives at the
  * top of the triangle slots and is read front to back while triangles
- * fill the slots from below (see vor__build_dc); the recursion is an
+ * fill the slots from below (see vor_build_dc); the recursion is an
  * explicit stack of O(log n) frames.
  */
 #include "mesh.h"
@@ -976,8 +976,16 @@ VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32
     }
 }
 
-void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t *duplicate_of)
+int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
+                 enum vor_dc_split split, uint32_t *duplicate_of)
 {
+    if (split != VOR_DC_QUADTREE && split != VOR_DC_XSPLIT) {
+        return VOR_ERR_ARG;
+    }
+    int status = vor__build_start(d, points, n, duplicate_of);
+    if (status != VOR__BUILD_MESH) {
+        return status;
+    }
     builder_t b;
     b.d = d;
     b.tri = d->triangles;
@@ -1005,7 +1013,7 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
     vor_index_t *ids = base + entries - n;
-    if (algorithm == VOR_ALGO_DC_QUADTREE && n >= 8u) {
+    if (split == VOR_DC_QUADTREE && n >= 8u) {
         group_by_bucket(&b, ids, n);
         (void)build_quadtree(&b, ids, n);
     } else {
@@ -1017,4 +1025,5 @@ void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm, uint32_t 
     d->vertex_count = b.distinct;
     d->last_site = b.last;
     vor__grid_rebuild(d);
+    return VOR_OK;
 }

@@ -140,17 +140,6 @@ static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_inde
     }
 }
 
-void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
-{
-    vor__tri_t *tri = d->triangles;
-    vor_index_t sa = (vor_index_t)a, sb = (vor_index_t)b;
-    /* fresh slots: clear any mark bits left by earlier contents */
-    vor__tri_fresh(&tri[a]);
-    vor__tri_fresh(&tri[b]);
-    vor__tri_set(&tri[a], sa, sb, VOR__INFINITE, sb, sb, sb);
-    vor__tri_set(&tri[b], sb, sa, VOR__INFINITE, sa, sa, sa);
-}
-
 /* Flips the edge opposite p in star triangle `x_slot` = (p, x, y) with
  * its neighbour (y, x, c): the triangles become (p, x, c) and (p, c, y).
  * Returns the slot of (p, x, c). `apex` is c's index in the neighbour. */
@@ -354,39 +343,13 @@ int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site)
 int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
               const vor_build_options_t *options, uint32_t *duplicate_of)
 {
-    if (d == NULL || (points == NULL && n > 0u)) {
-        return VOR_ERR_ARG;
-    }
     enum vor_order order = (options != NULL) ? options->order : VOR_ORDER_QUADTREE;
-    enum vor_algorithm algorithm =
-        (options != NULL) ? options->algorithm : VOR_ALGO_INCREMENTAL;
-    if ((order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) ||
-        (algorithm != VOR_ALGO_INCREMENTAL && algorithm != VOR_ALGO_DC &&
-         algorithm != VOR_ALGO_DC_QUADTREE)) {
+    if (order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) {
         return VOR_ERR_ARG;
     }
-    if (n > d->max_sites) {
-        return VOR_ERR_FULL;
-    }
-    d->site_count = n;
-    d->vertex_count = 0;
-    d->last_site = 0;
-    d->bucket_rebuild_at = 2; /* the grid of earlier sites is void */
-    d->revision++;
-    for (uint32_t s = 0; s < n; s++) {
-        d->sites[s] = points[s];
-        vor__box_add(d, &points[s], s == 0u);
-    }
-    if (n <= 1u) {
-        d->vertex_count = n;
-        if (n == 1u && duplicate_of != NULL) {
-            duplicate_of[0] = 0;
-        }
-        return VOR_OK;
-    }
-    if (algorithm != VOR_ALGO_INCREMENTAL) {
-        vor__build_dc(d, n, algorithm, duplicate_of);
-        return VOR_OK;
+    int status = vor__build_start(d, points, n, duplicate_of);
+    if (status != VOR__BUILD_MESH) {
+        return status;
     }
     /* scratch in the triangle slots, the plan at their very end: triangles
      * fill the slots from below and never reach a plan entry still to be

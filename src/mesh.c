@@ -48,6 +48,45 @@ int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
 /* Validation                                                          */
 
 /* vor__conflicts with the true predicates, uncounted. */
+void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t sa = (vor_index_t)a, sb = (vor_index_t)b;
+    /* fresh slots: clear any mark bits left by earlier contents */
+    vor__tri_fresh(&tri[a]);
+    vor__tri_fresh(&tri[b]);
+    vor__tri_set(&tri[a], sa, sb, VOR__INFINITE, sb, sb, sb);
+    vor__tri_set(&tri[b], sb, sa, VOR__INFINITE, sa, sa, sa);
+}
+
+int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
+                     uint32_t *duplicate_of)
+{
+    if (d == NULL || (points == NULL && n > 0u)) {
+        return VOR_ERR_ARG;
+    }
+    if (n > d->max_sites) {
+        return VOR_ERR_FULL;
+    }
+    d->site_count = n;
+    d->vertex_count = 0;
+    d->last_site = 0;
+    d->bucket_rebuild_at = 2; /* the grid of earlier sites is void */
+    d->revision++;
+    for (uint32_t s = 0; s < n; s++) {
+        d->sites[s] = points[s];
+        vor__box_add(d, &points[s], s == 0u);
+    }
+    if (n <= 1u) {
+        d->vertex_count = n;
+        if (n == 1u && duplicate_of != NULL) {
+            duplicate_of[0] = 0;
+        }
+        return VOR_OK;
+    }
+    return VOR__BUILD_MESH;
+}
+
 static bool exact_conflict(const vor_t *d, const vor__tri_t *t, uint32_t p)
 {
     vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);

@@ -298,8 +298,17 @@ uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p);
  * present) into the triangle at slot root that contains it. */
 void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p);
 
-/* The first two sites: two triangles at infinity sharing the edge ab. */
+/* The first two sites: two triangles at infinity sharing the edge ab
+ * (mesh.c). */
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);
+
+/* What every builder does first (mesh.c): checks d, points and n, then
+ * replaces d's contents by the n sites, copied, with their bounding box.
+ * Returns a negative error (nothing changed), VOR_OK when n <= 1 (done),
+ * or VOR__BUILD_MESH: the builder must now mesh sites 0 .. n - 1. */
+#define VOR__BUILD_MESH 1
+int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
+                     uint32_t *duplicate_of);
 
 /* Grows the sites' bounding box to hold p (the first site sets it). */
 static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
@@ -341,12 +350,6 @@ enum vor__sort_key { VOR__SORT_Z, VOR__SORT_LEX };
 void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
                    enum vor__sort_key key);
 
-/* The divide-and-conquer builder (divide_conquer.c): builds the mesh of
- * the n >= 2 sites already copied into d->sites (bounding box set),
- * writing duplicate_of[] if not NULL; the arena's triangle slots are its
- * scratch. */
-void vor__build_dc(vor_t *d, uint32_t n, enum vor_algorithm algorithm,
-                   uint32_t *duplicate_of);
 
 #endif
 

@@ -24,7 +24,11 @@
  * paths; forcing them inline lets the compiler unroll the loops. The wider
  * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
  * not pay for their registers and stack. */
-#if defined(__GNUC__)
+#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
+/* -Os: the compiler weighs size, so it decides what to inline */
+#define VOR__INLINE static inline
+#define VOR__NOINLINE __attribute__((noinline))
+#elif defined(__GNUC__)
 #define VOR__INLINE static inline __attribute__((always_inline))
 #define VOR__NOINLINE __attribute__((noinline))
 #else

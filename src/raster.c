@@ -1,8 +1,10 @@
 /*
- * raster.c - the band driver of vor_raster: checks the request, carves the
- * work memory, asks a row producer (the fast Euclidean path, or the
- * brute-force search) for each row's runs of labels, writes them in the
- * output kind, and flushes full bands. Teramoto renders the discrete
+ * raster.c - what every raster entry point shares: the checks of a
+ * request, and the band writer, which turns each row's runs of labels into
+ * pixels of the output kind and hands out full bands; and the Euclidean
+ * entry point, vor_raster_euclid, whose rows come from the fast Euclidean
+ * path (raster_euclid.c) or the brute-force search. It links none of the
+ * other metrics (vor_raster, raster_metrics.c). Teramoto renders the discrete
  * Voronoi diagram (section 2.2, Definition 2.2) with distance cones in a Z-buffer;
  * here the same diagram is computed exactly, one row at a time, so that
  * only a band of rows ever needs memory.
@@ -38,28 +40,41 @@ static uint32_t magnitude(int64_t d)
     return (uint32_t)(d < 0 ? -d : d); /* |d| < 2^32 for int32 differences */
 }
 
-/* floor(|q - s|), saturated at UINT32_MAX. The squared distance is below
- * 2^65; from 2^64 on the root is >= 2^32 and saturates. */
-static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
+/* |q - s|^2 exactly, as *high (0 or 1) and the low 64 bits returned:
+ * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
+static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
 {
     uint64_t dx2 = vor__mul_u32(magnitude((int64_t)qx - s->x), magnitude((int64_t)qx - s->x));
     uint64_t dy2 = vor__mul_u32(magnitude((int64_t)qy - s->y), magnitude((int64_t)qy - s->y));
-    uint64_t sum = dx2 + dy2;
-    if (sum < dx2) {
-        return 0xFFFFFFFFu;
-    }
-    return isqrt64(sum);
+    uint64_t low = dx2 + dy2;
+    *high = low < dx2 ? 1u : 0u;
+    return low;
+}
+
+/* floor(|q - s|), saturated at UINT32_MAX: from 2^64 on the root is
+ * >= 2^32. */
+static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
+{
+    uint32_t high;
+    uint64_t low = squared_distance(qx, qy, s, &high);
+    return high != 0u ? 0xFFFFFFFFu : isqrt64(low);
 }
 
 /* ---------------------------------------------------------- brute force */
 
-static uint32_t brute_nearest(const vor_raster_sites_t *sites, const vor_point_t *q)
+/* The nearest site to q by exact squared distances, ties to the smaller
+ * index. */
+static uint32_t brute_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy)
 {
-    uint32_t best = 0;
+    uint32_t best = 0, best_high;
+    uint64_t best_low = squared_distance(qx, qy, &sites->points[0], &best_high);
     for (uint32_t k = 1; k < sites->count; k++) {
-        /* strictly closer only: ties stay with the smaller index */
-        if (vor_closer(q, &sites->points[k], &sites->points[best], NULL) < 0) {
+        uint32_t high;
+        uint64_t low = squared_distance(qx, qy, &sites->points[k], &high);
+        if (high < best_high || (high == best_high && low < best_low)) {
             best = k;
+            best_high = high;
+            best_low = low;
         }
     }
     return best;
@@ -68,35 +83,16 @@ static uint32_t brute_nearest(const vor_raster_sites_t *sites, const vor_point_t
 static uint32_t brute_row(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                           uint32_t j, vor__run_t *runs)
 {
-    vor_point_t q;
-    q.y = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
+    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
     uint32_t count = 0;
     for (uint32_t i = 0; i < frame->width; i++) {
-        q.x = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
-        count = vor__run_push(runs, count, i, brute_nearest(sites, &q));
+        int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
+        count = vor__run_push(runs, count, i, brute_nearest(sites, qx, qy));
     }
     return count;
 }
 
 /* -------------------------------------------------------------- output */
-
-typedef struct producer {
-    const vor_raster_frame_t *frame;
-    const vor_raster_sites_t *sites;
-    vor__euclid_t *euclid; /* NULL: brute force */
-    vor__metric_t *metric; /* the other metrics (raster_metrics.c) */
-} producer_t;
-
-static uint32_t produce(producer_t *p, uint32_t j, vor__run_t *runs)
-{
-    if (p->metric != NULL) {
-        return vor__metric_row(p->metric, j, runs);
-    }
-    if (p->euclid != NULL) {
-        return vor__euclid_row(p->euclid, j, runs);
-    }
-    return brute_row(p->frame, p->sites, j, runs);
-}
 
 /* px[from .. to) = value, four pixels per step (the hot loop of RGB565
  * output: a run is usually tens of pixels). */
@@ -114,13 +110,11 @@ static void fill16(uint16_t *px, uint32_t from, uint32_t to, uint16_t value)
     }
 }
 
-/* Writes row j (runs) into dst in the output's kind. below: the runs of
- * row j + 1 (BOUNDARY only; NULL on the last row). metric: the other
- * metrics' state (DISTANCE; NULL for Euclidean point sites). */
-static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
-                      const vor_raster_sites_t *sites, const vor__metric_t *metric, uint32_t j,
-                      const vor__run_t *runs, uint32_t count, const vor__run_t *below,
-                      uint32_t below_count, void *dst)
+/* Writes a row (runs) into dst in the output's kind, except DISTANCE,
+ * which the entry point writes (it knows the metric). below: the runs of
+ * the next row (BOUNDARY only; NULL on the last row). */
+static void write_row(const vor_raster_output_t *out, uint32_t width, const vor__run_t *runs,
+                      uint32_t count, const vor__run_t *below, uint32_t below_count, void *dst)
 {
     uint32_t i = 0;
     switch (out->kind) {
@@ -175,7 +169,7 @@ static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *
     }
     case VOR_RASTER_BOUNDARY: {
         uint8_t *px = dst;
-        for (i = 0; i < frame->width; i++) {
+        for (i = 0; i < width; i++) {
             px[i] = 0;
         }
         /* right neighbour: the last pixel of every run but the final one */
@@ -186,7 +180,7 @@ static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *
         if (below != NULL) {
             uint32_t r = 0, s = 0;
             i = 0;
-            while (i < frame->width) { /* each step ends a run of one row */
+            while (i < width) { /* each step ends a run of one row */
                 uint32_t end = runs[r].end < below[s].end ? runs[r].end : below[s].end;
                 if (runs[r].site != below[s].site) {
                     for (; i < end; i++) {
@@ -204,19 +198,80 @@ static void write_row(const vor_raster_output_t *out, const vor_raster_frame_t *
         }
         break;
     }
-    case VOR_RASTER_DISTANCE: {
-        uint32_t *px = dst;
-        int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
-        for (uint32_t r = 0; r < count; r++) {
-            for (; i < runs[r].end; i++) {
-                int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
-                px[i] = metric != NULL ? vor__metric_distance(metric, runs[r].site, qx, qy)
-                                       : euclid_distance(qx, qy, &sites->points[runs[r].site]);
-            }
-        }
+    case VOR_RASTER_DISTANCE:
         break;
     }
+}
+
+/* ---------------------------------------------------------------- bands */
+
+void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
+                      const vor_raster_output_t *out, vor__run_t *const rows[2], size_t row_bytes)
+{
+    if (out->areas != NULL) {
+        for (uint32_t k = 0; k < sites; k++) {
+            out->areas[k] = 0;
+        }
     }
+    b->out = out;
+    b->width = frame->width;
+    b->height = frame->height;
+    b->row_bytes = row_bytes;
+    b->rows[0] = rows[0];
+    b->rows[1] = rows[1];
+    b->counts[0] = b->counts[1] = 0;
+    b->cur = 0;
+    b->next = 0;
+    b->written = 0;
+    b->band_first = 0;
+    b->flush_first = 0;
+    b->hold = out->kind == VOR_RASTER_BOUNDARY;
+}
+
+void *vor__bands_pixels(const vor__bands_t *b)
+{
+    return (uint8_t *)b->out->band + (size_t)(b->next - b->band_first) * b->row_bytes;
+}
+
+uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
+{
+    const vor_raster_output_t *out = b->out;
+    const uint32_t j = b->next;
+    uint8_t *band = out->band;
+    if (j < b->height) {
+        const vor__run_t *runs = b->rows[b->cur];
+        b->counts[b->cur] = count;
+        if (out->areas != NULL) {
+            uint32_t start = 0;
+            for (uint32_t r = 0; r < count; r++) {
+                out->areas[runs[r].site] += runs[r].end - start;
+                start = runs[r].end;
+            }
+        }
+    }
+    if (b->hold) {
+        /* row j - 1 is written now that the row below it is known */
+        uint32_t held = b->cur ^ 1u;
+        if (j > 0u) {
+            write_row(out, b->width, b->rows[held], b->counts[held],
+                      j < b->height ? b->rows[b->cur] : NULL, count,
+                      band + (size_t)(j - 1u - b->band_first) * b->row_bytes);
+            b->written = j;
+        }
+        b->cur = held;
+    } else if (j < b->height) {
+        write_row(out, b->width, b->rows[b->cur], count, NULL, 0,
+                  band + (size_t)(j - b->band_first) * b->row_bytes);
+        b->written = j + 1u;
+    }
+    b->next = j + 1u;
+    uint32_t rows = b->written - b->band_first;
+    if (rows == out->band_rows || (b->written == b->height && rows > 0u)) {
+        b->flush_first = b->band_first;
+        b->band_first = b->written;
+        return rows;
+    }
+    return 0;
 }
 
 /* -------------------------------------------------------------- checks */
@@ -265,60 +320,9 @@ static void carve_euclid(vor__euclid_t *e, uint8_t *base, uint32_t n, uint32_t w
     e->mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
 }
 
-/* Produces, writes and flushes every row (everything checked). Inlined
- * into vor_raster, so that the flush callback is called from there (the
- * stack-depth tool counts the caller's callback apart). */
-VOR__INLINE int render(const vor_raster_output_t *out, const vor_raster_frame_t *frame,
-                  const vor_raster_sites_t *sites, producer_t *producer, vor__run_t *const *rows,
-                  size_t row_bytes)
-{
-    if (out->areas != NULL) {
-        for (uint32_t k = 0; k < sites->count; k++) {
-            out->areas[k] = 0;
-        }
-    }
-    const int boundary = out->kind == VOR_RASTER_BOUNDARY;
-    uint8_t *band = out->band;
-    uint32_t cur = 0;
-    uint32_t count = produce(producer, 0, rows[cur]);
-    uint32_t band_first = 0;
-    for (uint32_t j = 0; j < frame->height; j++) {
-        uint32_t below_count = 0;
-        const vor__run_t *below = NULL;
-        if (boundary && j + 1u < frame->height) {
-            below_count = produce(producer, j + 1u, rows[cur ^ 1u]);
-            below = rows[cur ^ 1u];
-        }
-        write_row(out, frame, sites, producer->metric, j, rows[cur], count, below, below_count,
-                  band + (size_t)(j - band_first) * row_bytes);
-        if (out->areas != NULL) {
-            uint32_t start = 0;
-            for (uint32_t r = 0; r < count; r++) {
-                out->areas[rows[cur][r].site] += rows[cur][r].end - start;
-                start = rows[cur][r].end;
-            }
-        }
-        if (j + 1u == frame->height || j + 1u - band_first == out->band_rows) {
-            int status = out->flush(out->user, band_first, j + 1u - band_first, band);
-            if (status != 0) {
-                return status;
-            }
-            band_first = j + 1u;
-        }
-        if (j + 1u < frame->height) {
-            if (boundary) {
-                cur ^= 1u;
-                count = below_count;
-            } else {
-                count = produce(producer, j + 1u, rows[cur]);
-            }
-        }
-    }
-    return VOR_OK;
-}
-
-int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-               const vor_raster_output_t *out, void *work, size_t work_bytes)
+int vor__raster_check(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                      const vor_raster_output_t *out, const void *work, size_t work_bytes,
+                      size_t *row_bytes)
 {
     if (frame == NULL || sites == NULL || out == NULL || work == NULL || !frame_ok(frame)) {
         return VOR_ERR_ARG;
@@ -329,10 +333,6 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     if (sites->points == NULL || out->band == NULL ||
         out->flush == NULL || out->band_rows == 0u ||
         (out->method != VOR_RASTER_FAST && out->method != VOR_RASTER_BRUTE)) {
-        return VOR_ERR_ARG;
-    }
-    const int euclid_metric = sites->metric == VOR_METRIC_EUCLID;
-    if (!euclid_metric && vor__metric_check(sites) != VOR_OK) {
         return VOR_ERR_ARG;
     }
     const uint32_t n = sites->count;
@@ -375,8 +375,8 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     if (n > 0x07FFFFFFu || frame->width > 0x07FFFFFFu) {
         return VOR_ERR_ARG; /* the work size below must not overflow */
     }
-    const size_t row_bytes = (size_t)frame->width * pixel_bytes;
-    if ((uint64_t)out->band_bytes < vor__mul_u32((uint32_t)row_bytes, out->band_rows)) {
+    *row_bytes = (size_t)frame->width * pixel_bytes;
+    if ((uint64_t)out->band_bytes < vor__mul_u32((uint32_t)*row_bytes, out->band_rows)) {
         return VOR_ERR_NOMEM;
     }
     if (work_bytes < VOR_RASTER_WORK_BYTES(n, frame->width)) {
@@ -385,40 +385,68 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     if (((uintptr_t)work & (VOR_RASTER_WORK_ALIGN - 1u)) != 0u) {
         return VOR_ERR_ALIGN;
     }
+    return VOR_OK;
+}
 
-    uint8_t *base = work;
-    producer_t producer;
-    producer.frame = frame;
-    producer.sites = sites;
-    producer.euclid = NULL;
-    producer.metric = NULL;
-    vor__run_t *rows[2];
-    vor__metric_t metric;
-    vor__euclid_t euclid;
-    if (!euclid_metric) {
-        /* the two rows of runs, then the culling pool: at least 12 n + 14
-         * words (the macro's 48 n + 64 bytes, less alignment) */
-        size_t row_bytes8 = align8((size_t)frame->width * sizeof(vor__run_t));
-        rows[0] = (vor__run_t *)(void *)base;
-        rows[1] = (vor__run_t *)(void *)(base + row_bytes8);
-        vor__metric_prepare(&metric, frame, sites, out->method == VOR_RASTER_BRUTE,
-                            (uint32_t *)(void *)(base + 2u * row_bytes8),
-                            (work_bytes - 2u * row_bytes8) / sizeof(uint32_t));
-        producer.metric = &metric;
-    } else {
-        carve_euclid(&euclid, base, n, frame->width, rows);
-        if (out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n)) {
-            euclid.points = sites->points;
-            euclid.n = n;
-            euclid.width = frame->width;
-            euclid.height = frame->height;
-            euclid.step_x = frame->step_x;
-            euclid.step_y = frame->step_y;
-            euclid.origin_x = frame->origin_x;
-            euclid.origin_y = frame->origin_y;
-            vor__euclid_prepare(&euclid);
-            producer.euclid = &euclid;
+size_t vor__raster_rows(const vor_raster_frame_t *frame, void *work, vor__run_t *rows[2])
+{
+    size_t row_bytes8 = align8((size_t)frame->width * sizeof(vor__run_t));
+    rows[0] = (vor__run_t *)work;
+    rows[1] = (vor__run_t *)(void *)((uint8_t *)work + row_bytes8);
+    return 2u * row_bytes8;
+}
+
+/* The DISTANCE pixels of row j: floor(|q - s|) of each pixel's site. */
+static void euclid_distances(const vor_raster_frame_t *frame, const vor_point_t *points,
+                             uint32_t j, const vor__run_t *runs, uint32_t count, uint32_t *px)
+{
+    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        for (; i < runs[r].end; i++) {
+            int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
+            px[i] = euclid_distance(qx, qy, &points[runs[r].site]);
         }
     }
-    return render(out, frame, sites, &producer, rows, row_bytes);
+}
+
+int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                      const vor_raster_output_t *out, void *work, size_t work_bytes)
+{
+    size_t row_bytes;
+    int status = vor__raster_check(frame, sites, out, work, work_bytes, &row_bytes);
+    if (status != VOR_OK) {
+        return status;
+    }
+    if (sites->metric != VOR_METRIC_EUCLID) {
+        return VOR_ERR_ARG;
+    }
+    const uint32_t n = sites->count;
+    vor__run_t *rows[2];
+    vor__euclid_t euclid;
+    carve_euclid(&euclid, work, n, frame->width, rows);
+    int fast = out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n);
+    if (fast) {
+        vor__euclid_prepare(&euclid, frame, sites->points, n);
+    }
+    vor__bands_t bands;
+    vor__bands_begin(&bands, frame, n, out, rows, row_bytes);
+    for (uint32_t j = 0; j <= frame->height; j++) { /* j = height: the end */
+        uint32_t count = 0;
+        if (j < frame->height) {
+            vor__run_t *runs = vor__bands_runs(&bands);
+            count = fast ? vor__euclid_row(&euclid, j, runs) : brute_row(frame, sites, j, runs);
+            if (out->kind == VOR_RASTER_DISTANCE) {
+                euclid_distances(frame, sites->points, j, runs, count, vor__bands_pixels(&bands));
+            }
+        }
+        uint32_t flush_rows = vor__bands_put(&bands, count);
+        if (flush_rows != 0u) {
+            status = out->flush(out->user, bands.flush_first, flush_rows, out->band);
+            if (status != 0) {
+                return status;
+            }
+        }
+    }
+    return VOR_OK;
 }

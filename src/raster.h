@@ -1,5 +1,6 @@
 /*
- * raster.h - what the band driver (raster.c) and the row producers share.
+ * raster.h - what the band writer (raster.c), the entry points and the
+ * row producers share.
  * Private to the library.
  *
  * A row of labels travels as runs: run k covers pixels [end of run k-1,
@@ -30,6 +31,55 @@ static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t 
     runs[count].site = site;
     return count + 1u;
 }
+
+/* The checks every entry point makes (raster.c), all but the metric's
+ * own fields: VOR_OK with the bytes of one output row in *row_bytes, or
+ * the error vor_raster documents. */
+int vor__raster_check(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                      const vor_raster_output_t *out, const void *work, size_t work_bytes,
+                      size_t *row_bytes);
+
+/* Two rows of runs at the start of the work memory; returns the bytes
+ * they take (8-aligned). */
+size_t vor__raster_rows(const vor_raster_frame_t *frame, void *work, vor__run_t *rows[2]);
+
+/* The band writer (raster.c). An entry point produces the rows top down
+ * into vor__bands_runs (and, for DISTANCE, writes their pixels at
+ * vor__bands_pixels itself), hands each to vor__bands_put, then calls
+ * vor__bands_put once more with no row (the end). Whenever put returns
+ * a row count, the entry point calls the output's flush with
+ * flush_first and that count: the flush is the caller's code, called
+ * from the public function. BOUNDARY rows are written one row late, when
+ * the row below is known. */
+typedef struct vor__bands {
+    const vor_raster_output_t *out;
+    uint32_t width, height;
+    size_t row_bytes;
+    vor__run_t *rows[2];
+    uint32_t counts[2];
+    uint32_t cur;         /* rows[cur] receives the next row */
+    uint32_t next;        /* the next row to receive */
+    uint32_t written;     /* rows [0, written) are in bands */
+    uint32_t band_first;  /* the first row of the band being filled */
+    uint32_t flush_first; /* the first row of the band put returned */
+    int hold;             /* BOUNDARY: a row waits for the one below */
+} vor__bands_t;
+
+/* Starts the rows of frame; zeroes out->areas[0 .. sites). */
+void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
+                      const vor_raster_output_t *out, vor__run_t *const rows[2], size_t row_bytes);
+
+static inline vor__run_t *vor__bands_runs(const vor__bands_t *b)
+{
+    return b->rows[b->cur];
+}
+
+/* Where the next row's pixels go in the band (not for BOUNDARY). */
+void *vor__bands_pixels(const vor__bands_t *b);
+
+/* Takes the next row (count runs; the end when all rows were put).
+ * Returns the rows of a band to flush now, or 0. */
+uint32_t vor__bands_put(vor__bands_t *b, uint32_t count);
 
 /* The fast Euclidean producer (raster_euclid.c): its state lives in the
  * caller's work memory (n entries per array). */
@@ -77,50 +127,13 @@ static inline int64_t vor__offset(uint32_t i, int32_t step)
  * below 2^29. */
 int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n);
 
-/* Sorts the sites and envelopes the frame's left and right edges. The
- * arrays of e must be set; frame checked; vor__euclid_fits true. */
-void vor__euclid_prepare(vor__euclid_t *e);
+/* Sets e up for frame and the n points: sorts the sites and envelopes
+ * the frame's left and right edges. The arrays of e must be set; frame
+ * checked; vor__euclid_fits true. */
+void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
+                         const vor_point_t *points, uint32_t n);
 
 /* Runs of row j (rows requested in increasing order); returns their count. */
 uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs);
-
-/* The other metrics (raster_metrics.c): exact per-metric comparisons,
- * the brute-force search, and the culling of sites per tile. */
-typedef struct vor__metric {
-    const vor_raster_sites_t *sites;
-    enum vor_metric metric;
-    uint32_t n;
-    uint32_t width, height;
-    int32_t origin_x, origin_y, step_x, step_y;
-    uint32_t limbs;      /* limbs of the wide comparisons of this frame */
-    int lp_narrow;       /* LP: every sum below 2^128 */
-    uint64_t det;        /* ELLIPTIC: a c - b^2 */
-    uint32_t trace;      /* ELLIPTIC: a + c */
-    int brute;           /* every site at every pixel, no culling */
-    uint32_t *pool;      /* culling: the block list, then the tile lists */
-    size_t pool_words;
-    uint32_t tile_width; /* columns per tile (a power of two, >= 16) */
-    uint32_t tiles;
-    uint32_t band_first; /* rows of the current culling band */
-    int band_valid;
-} vor__metric_t;
-
-/* VOR_OK when the metric's fields are usable (weights, exponent, form,
- * offsets); else VOR_ERR_ARG. Reads every site once. */
-int vor__metric_check(const vor_raster_sites_t *sites);
-
-/* Sets m up for frame (checked) and sites (checked by vor__metric_check),
- * with pool_words words of culling memory (at least 2 count + 2). */
-void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
-                         const vor_raster_sites_t *sites, int brute, uint32_t *pool,
-                         size_t pool_words);
-
-/* Runs of row j (rows requested in increasing order); returns their count. */
-uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs);
-
-/* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
- * (qx, qy): the floor of its distance under m's metric, saturated (ADD
- * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
-uint32_t vor__metric_distance(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy);
 
 #endif

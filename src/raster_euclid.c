@@ -400,9 +400,17 @@ static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t fla
 
 /* ------------------------------------------------------------- prepare */
 
-void vor__euclid_prepare(vor__euclid_t *e)
+void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
+                         const vor_point_t *points, uint32_t n)
 {
-    const uint32_t n = e->n;
+    e->points = points;
+    e->n = n;
+    e->width = frame->width;
+    e->height = frame->height;
+    e->step_x = frame->step_x;
+    e->step_y = frame->step_y;
+    e->origin_x = frame->origin_x;
+    e->origin_y = frame->origin_y;
     /* y order first: sorted_y holds the y of by_y until the x sort
      * (sorted_x the y of each site while sorting) */
     for (uint32_t k = 0; k < n; k++) {

@@ -1,6 +1,6 @@
 /*
- * raster_metrics.c - vor_raster for every metric but Euclidean point
- * sites: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
+ * raster_metrics.c - vor_raster: every metric. Euclidean point sites go
+ * to vor_raster_euclid (raster.c); this file does the others: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
  * compound), farthest-point, Hausdorff point sets, segments, filled
  * polygons and multiplicatively weighted polylines (Teramoto: section 2.3
  * defines the generalised diagrams, chapter 5 the distances). Each pixel takes the site of smallest distance
@@ -12,7 +12,7 @@
  * distance, and one exact comparison per metric (key_compare).
  * docs/design.md, "Other metrics", derives each comparison and its width.
  * Only the DISTANCE output turns the winning key into the floor of the
- * distance (vor__metric_distance, "Distance output").
+ * distance (metric_distance, "Distance output").
  *
  * Culling: the frame is cut into tiles of 16 rows by tile_width columns.
  * For a tile R and a site, bounds() gives a key no larger than the site's
@@ -26,6 +26,27 @@
 #include "raster.h"
 
 #include "multiword.h"
+
+/* The state of a frame: the exact per-metric comparisons, the brute-force
+ * search, and the culling of sites per tile. */
+typedef struct metric_frame {
+    const vor_raster_sites_t *sites;
+    enum vor_metric metric;
+    uint32_t n;
+    uint32_t width, height;
+    int32_t origin_x, origin_y, step_x, step_y;
+    uint32_t limbs;      /* limbs of the wide comparisons of this frame */
+    int lp_narrow;       /* LP: every sum below 2^128 */
+    uint64_t det;        /* ELLIPTIC: a c - b^2 */
+    uint32_t trace;      /* ELLIPTIC: a + c */
+    int brute;           /* every site at every pixel, no culling */
+    uint32_t *pool;      /* culling: the block list, then the tile lists */
+    size_t pool_words;
+    uint32_t tile_width; /* columns per tile (a power of two, >= 16) */
+    uint32_t tiles;
+    uint32_t band_first; /* rows of the current culling band */
+    int band_valid;
+} metric_frame_t;
 
 /* ------------------------------------------------------------ 128 bits */
 
@@ -248,7 +269,7 @@ static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
 
 /* The key of a point site at offsets of magnitude (ax, ay): every metric
  * whose distance grows with |dx| and with |dy|. */
-static void point_key(const vor__metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
+static void point_key(const metric_frame_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -418,7 +439,7 @@ static int additive_sign(size_t n, const u128_t *big_a, const u128_t *big_b,
 
 /* Negative when key a ranks before key b (nearer; farther for FARTHEST),
  * 0 when they tie. */
-static int key_compare(const vor__metric_t *m, const rank_key_t *a, const rank_key_t *b)
+static int key_compare(const metric_frame_t *m, const rank_key_t *a, const rank_key_t *b)
 {
     switch (m->metric) {
     case VOR_METRIC_LP:
@@ -507,7 +528,7 @@ static uint64_t polyline_weight2(const vor_raster_sites_t *s, uint32_t site)
 }
 
 /* The key of site `site` at the pixel centre (qx, qy). */
-static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
+static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -703,7 +724,7 @@ VOR__INLINE uint32_t signed_distance(uint64_t v, int32_t w)
  * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
  * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
  * at most 33 steps, each one power below 2^256. */
-static uint32_t lp_distance(const vor__metric_t *m, const rank_key_t *k, uint32_t ax,
+static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32_t ax,
                             uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
@@ -758,7 +779,10 @@ static uint32_t rational_distance(const rank_key_t *k)
     return saturate_u32(isqrt128(u128_from_limbs(q)));
 }
 
-uint32_t vor__metric_distance(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy)
+/* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
+ * (qx, qy): the floor of its distance under m's metric, saturated (ADD
+ * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
+static uint32_t metric_distance(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
     site_key(m, site, qx, qy, &k);
@@ -834,7 +858,7 @@ VOR__INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
  *   POLYLINE: the same bounding-box gap below, the nearest vertex's
  *     farthest corner above, both divided by the site's w^2.
  */
-static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
+static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -933,7 +957,7 @@ static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int w
 /* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
  * first (alone or tied) at some pixel of r, in index order, into out;
  * returns their number, or ALL_SITES when more than capacity survive. */
-static uint32_t select_sites(const vor__metric_t *m, const rect_t *r, const uint32_t *list,
+static uint32_t select_sites(const metric_frame_t *m, const rect_t *r, const uint32_t *list,
                              uint32_t count, uint32_t *out, size_t capacity)
 {
     rank_key_t keys[2], best_case;
@@ -960,7 +984,7 @@ static uint32_t select_sites(const vor__metric_t *m, const rect_t *r, const uint
     return kept;
 }
 
-static rect_t columns_rect(const vor__metric_t *m, uint32_t first, uint32_t last, int32_t y0,
+static rect_t columns_rect(const metric_frame_t *m, uint32_t first, uint32_t last, int32_t y0,
                            int32_t y1)
 {
     rect_t r;
@@ -973,7 +997,7 @@ static rect_t columns_rect(const vor__metric_t *m, uint32_t first, uint32_t last
 
 /* Fills the pool with the tile lists of the band starting at band_first:
  * per tile, a count (or ALL_SITES) and that many site ids. */
-static void cull_band(vor__metric_t *m)
+static void cull_band(metric_frame_t *m)
 {
     uint32_t last_row = m->band_first + VOR__CULL_ROWS - 1u;
     if (last_row >= m->height) {
@@ -983,7 +1007,7 @@ static void cull_band(vor__metric_t *m)
     int32_t y1 = (int32_t)(m->origin_y + vor__offset(last_row, m->step_y));
     uint32_t *block = m->pool;
     uint32_t *lists = m->pool + m->n;
-    size_t room = m->pool_words - m->n; /* >= tiles (vor__metric_prepare) */
+    size_t room = m->pool_words - m->n; /* >= tiles (metric_prepare) */
     size_t at = 0;
     uint32_t tile = 0;
     uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
@@ -1007,7 +1031,7 @@ static void cull_band(vor__metric_t *m)
 /* The first-ranked site at (qx, qy) among list[0..count) (NULL: all),
  * which is in increasing index order: a later site takes over only when
  * strictly better, so ties stay with the smaller index. */
-static uint32_t nearest(const vor__metric_t *m, const uint32_t *list, uint32_t count, int32_t qx,
+static uint32_t nearest(const metric_frame_t *m, const uint32_t *list, uint32_t count, int32_t qx,
                         int32_t qy)
 {
     rank_key_t keys[2];
@@ -1025,7 +1049,8 @@ static uint32_t nearest(const vor__metric_t *m, const uint32_t *list, uint32_t c
     return best;
 }
 
-uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
+/* Runs of row j (rows requested in increasing order); returns their count. */
+static uint32_t metric_row(metric_frame_t *m, uint32_t j, vor__run_t *runs)
 {
     if (!m->brute && (!m->band_valid || j >= m->band_first + VOR__CULL_ROWS)) {
         m->band_first = j - j % VOR__CULL_ROWS;
@@ -1058,7 +1083,9 @@ uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
 
 /* ------------------------------------------------------------ set up */
 
-int vor__metric_check(const vor_raster_sites_t *s)
+/* VOR_OK when the metric's fields are usable (weights, exponent, form,
+ * offsets); else VOR_ERR_ARG. Reads every site once. */
+static int metric_check(const vor_raster_sites_t *s)
 {
     switch (s->metric) {
     case VOR_METRIC_L1:
@@ -1131,8 +1158,10 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
-void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
-                         const vor_raster_sites_t *s, int brute, uint32_t *pool, size_t pool_words)
+/* Sets m up for frame (checked) and sites (checked by metric_check),
+ * with pool_words words of culling memory (at least 2 count + 2). */
+static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
+                           const vor_raster_sites_t *s, int brute, uint32_t *pool, size_t pool_words)
 {
     m->sites = s;
     m->metric = s->metric;
@@ -1223,4 +1252,64 @@ void vor__metric_prepare(vor__metric_t *m, const vor_raster_frame_t *frame,
     }
     m->tile_width = 1u << shift;
     m->tiles = (frame->width + m->tile_width - 1u) >> shift;
+}
+
+/* ------------------------------------------------------- entry point */
+
+/* The DISTANCE pixels of row j under m's metric. */
+static void metric_distances(const metric_frame_t *m, uint32_t j, const vor__run_t *runs,
+                             uint32_t count, uint32_t *px)
+{
+    int32_t qy = (int32_t)(m->origin_y + vor__offset(j, m->step_y));
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        for (; i < runs[r].end; i++) {
+            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
+            px[i] = metric_distance(m, runs[r].site, qx, qy);
+        }
+    }
+}
+
+int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+               const vor_raster_output_t *out, void *work, size_t work_bytes)
+{
+    if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
+        return vor_raster_euclid(frame, sites, out, work, work_bytes);
+    }
+    size_t row_bytes;
+    int status = vor__raster_check(frame, sites, out, work, work_bytes, &row_bytes);
+    if (status != VOR_OK) {
+        return status;
+    }
+    if (metric_check(sites) != VOR_OK) {
+        return VOR_ERR_ARG;
+    }
+    /* the two rows of runs, then the culling pool: at least 12 n + 14
+     * words (the macro's 48 n + 64 bytes, less alignment) */
+    vor__run_t *rows[2];
+    size_t rows_bytes = vor__raster_rows(frame, work, rows);
+    metric_frame_t m;
+    metric_prepare(&m, frame, sites, out->method == VOR_RASTER_BRUTE,
+                   (uint32_t *)(void *)((uint8_t *)work + rows_bytes),
+                   (work_bytes - rows_bytes) / sizeof(uint32_t));
+    vor__bands_t bands;
+    vor__bands_begin(&bands, frame, sites->count, out, rows, row_bytes);
+    for (uint32_t j = 0; j <= frame->height; j++) { /* j = height: the end */
+        uint32_t count = 0;
+        if (j < frame->height) {
+            vor__run_t *runs = vor__bands_runs(&bands);
+            count = metric_row(&m, j, runs);
+            if (out->kind == VOR_RASTER_DISTANCE) {
+                metric_distances(&m, j, runs, count, vor__bands_pixels(&bands));
+            }
+        }
+        uint32_t flush_rows = vor__bands_put(&bands, count);
+        if (flush_rows != 0u) {
+            status = out->flush(out->user, bands.flush_first, flush_rows, out->band);
+            if (status != 0) {
+                return status;
+            }
+        }
+    }
+    return VOR_OK;
 }

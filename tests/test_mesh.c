@@ -350,26 +350,27 @@ static void check_families(void)
             CHECK(quadtree.count + 2u <= 2u * distinct || distinct < 3u,
                   "%s: %u triangles for %u sites", family_names[f], quadtree.count, distinct);
 
-            vor_build_options_t input = {VOR_ORDER_INPUT, VOR_ALGO_INCREMENTAL};
+            vor_build_options_t input = {VOR_ORDER_INPUT};
             CHECK(vor_build(&b, points, n, &input, NULL) == VOR_OK, "build in input order");
             fingerprint_t in_input_order = mesh_fingerprint(&b);
             ok &= validate_ok(&b, "input order") && same_fingerprint(in_input_order, quadtree);
 
-            /* divide and conquer, both variants: the same triangles, the
-             * same duplicates (issue 6) */
-            for (unsigned algo = VOR_ALGO_DC; algo <= VOR_ALGO_DC_QUADTREE; algo++) {
+            /* divide and conquer, both splits: the same triangles, the
+             * same duplicates */
+            for (unsigned split = VOR_DC_QUADTREE; split <= VOR_DC_XSPLIT; split++) {
                 static uint32_t dc_duplicate_of[BIG_SITES];
-                vor_build_options_t dc = {VOR_ORDER_QUADTREE, (enum vor_algorithm)algo};
-                CHECK(vor_build(&b, points, n, &dc, dc_duplicate_of) == VOR_OK, "build d&c");
+                CHECK(vor_build_dc(&b, points, n, (enum vor_dc_split)split, dc_duplicate_of) ==
+                          VOR_OK,
+                      "build d&c");
                 bool same_dups = b.vertex_count == a.vertex_count;
                 for (uint32_t i = 0; i < n; i++) {
                     same_dups &= dc_duplicate_of[i] == duplicate_of[i];
                 }
                 fingerprint_t dcf = mesh_fingerprint(&b);
-                CHECK(validate_ok(&b, algo == VOR_ALGO_DC ? "d&c" : "d&c quadtree") &&
+                CHECK(validate_ok(&b, split == VOR_DC_XSPLIT ? "d&c" : "d&c quadtree") &&
                           same_dups && same_fingerprint(dcf, quadtree),
-                      "%s, %u sites: d&c variant %u differs (%u / %u triangles)",
-                      family_names[f], n, algo, dcf.count, quadtree.count);
+                      "%s, %u sites: d&c split %u differs (%u / %u triangles)",
+                      family_names[f], n, split, dcf.count, quadtree.count);
             }
 
             /* one by one, skipping duplicates: ids shift, so map them back */
@@ -481,16 +482,22 @@ static void check_failures_change_nothing(void)
             err = vor_build(&d, points, max + 1u, NULL, NULL);
             tried++;
             bad += (err == VOR_ERR_FULL && unchanged(&d, &before, bytes)) ? 0u : 1u;
+            err = vor_build_dc(&d, points, max + 1u, VOR_DC_QUADTREE, NULL);
+            tried++;
+            bad += (err == VOR_ERR_FULL && unchanged(&d, &before, bytes)) ? 0u : 1u;
         }
         /* bad arguments */
         vor_t before = d;
         CHECK(vor_insert_near(&d, 1, 1, d.site_count + 5u, NULL) == VOR_ERR_ARG ||
                   d.site_count == max,
               "bad hint accepted");
-        vor_build_options_t weird = {(enum vor_order)7, VOR_ALGO_INCREMENTAL};
+        vor_build_options_t weird = {(enum vor_order)7};
         CHECK(vor_build(&d, points, 1, &weird, NULL) == VOR_ERR_ARG &&
                   unchanged(&d, &before, 0),
               "unknown order accepted");
+        CHECK(vor_build_dc(&d, points, 1, (enum vor_dc_split)2, NULL) == VOR_ERR_ARG &&
+                  unchanged(&d, &before, 0),
+              "unknown split accepted");
     }
     CHECK(bad == 0 && tried > 60u, "%u of %u failing calls changed the diagram", bad, tried);
 }

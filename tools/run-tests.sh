@@ -4,9 +4,10 @@
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
 # the fault injection test (wrong predicate signs) on every port, the
 # command-line tool,
-# the same tests as firmware under QEMU for every target, and the check
+# the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
-# else outside itself. Each suite ends with "N passed, N failed"; a suite that does not
+# else outside itself, and the check that a firmware links only the
+# library files of the features it calls. Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."
@@ -142,6 +143,14 @@ freestanding() {
     record freestanding "$log" 0
 }
 freestanding
+
+# A firmware links only what it calls: the bench/size/ programs, linked
+# at -Os with --gc-sections, keep only the library files of their feature
+# set (no divide and conquer under vor_build, no other metric under
+# vor_raster_euclid, no geometry under the queries).
+linking_log="$logs/linking.log"
+tools/size-features.sh --check cortex-m0 cortex-m3 riscv32 >"$linking_log" 2>&1
+record linking "$linking_log" $?
 
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"

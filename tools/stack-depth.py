@@ -44,7 +44,8 @@ FRAME = re.compile(r"^(\d+) bytes \(([^)]*)\)$")
 INDIRECT = "__indirect_call"
 # Public functions whose only indirect calls are to a callback the caller
 # passes in (its stack is the caller's): name -> what is called.
-CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback"}
+CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback",
+                    "vor_raster_euclid": "the caller's flush callback"}
 
 
 class Input(Exception):

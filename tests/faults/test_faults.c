@@ -66,15 +66,15 @@ int main(void)
             distinct += (dup[i] == i) ? 1u : 0u;
         }
         check_topology(&d, "build of 10000 sites", percents[k], distinct);
-        /* the divide-and-conquer builds (issue 6): guards C1-C5, T1, T2 */
-        for (unsigned algo = VOR_ALGO_DC; algo <= VOR_ALGO_DC_QUADTREE; algo++) {
-            vor_build_options_t dc = {VOR_ORDER_QUADTREE, (enum vor_algorithm)algo};
+        /* the divide-and-conquer builds: guards C1-C5, T1, T2 */
+        for (unsigned split = VOR_DC_QUADTREE; split <= VOR_DC_XSPLIT; split++) {
             CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
             d.stats.fault_rate = rate;
-            d.stats.fault_state = 0x2545F4914F6CDD1Dull + k * 3u + algo;
-            CHECK(vor_build(&d, points, SITES, &dc, dup) == VOR_OK, "d&c build");
-            check_topology(&d, algo == VOR_ALGO_DC ? "d&c build of 10000 sites"
-                                                   : "d&c quadtree build of 10000 sites",
+            d.stats.fault_state = 0x2545F4914F6CDD1Dull + k * 3u + 2u - split;
+            CHECK(vor_build_dc(&d, points, SITES, (enum vor_dc_split)split, dup) == VOR_OK,
+                  "d&c build");
+            check_topology(&d, split == VOR_DC_XSPLIT ? "d&c build of 10000 sites"
+                                                      : "d&c quadtree build of 10000 sites",
                            percents[k], distinct);
             /* degenerate input: a grid (collinear and cocircular sites) */
             static vor_point_t grid[2500];
@@ -84,8 +84,9 @@ int main(void)
             }
             CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
             d.stats.fault_rate = rate;
-            d.stats.fault_state = 0x9E3779B97F4A7C15ull ^ (k * 7u + algo);
-            CHECK(vor_build(&d, grid, 2500, &dc, NULL) == VOR_OK, "d&c grid build");
+            d.stats.fault_state = 0x9E3779B97F4A7C15ull ^ (k * 7u + 2u - split);
+            CHECK(vor_build_dc(&d, grid, 2500, (enum vor_dc_split)split, NULL) == VOR_OK,
+                  "d&c grid build");
             check_topology(&d, "d&c build of a 50x50 grid", percents[k], 2500);
         }
         /* one by one: the dynamic path, with its duplicate search */

@@ -228,8 +228,11 @@ static void die(const char *what)
     std::exit(2);
 }
 
+// vor_build in an order, or vor_build_dc with a split.
+enum vor_builder { VOR_INCREMENTAL, VOR_DC_X, VOR_DC_Q };
+
 static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_order order,
-                      enum vor_algorithm algorithm = VOR_ALGO_INCREMENTAL)
+                      enum vor_builder builder = VOR_INCREMENTAL)
 {
     uint32_t n = (uint32_t)p.size();
     size_t bytes = VOR_ARENA_BYTES(n);
@@ -239,9 +242,14 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     }
     vor_build_options_t opt = {};
     opt.order = order;
-    opt.algorithm = algorithm;
-    if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK ||
-        vor_build(&v.d, p.data(), n, &opt, nullptr) != VOR_OK) {
+    if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK) {
+        die("vor_init failed");
+    }
+    int err = (builder == VOR_INCREMENTAL)
+                  ? vor_build(&v.d, p.data(), n, &opt, nullptr)
+                  : vor_build_dc(&v.d, p.data(), n,
+                                 builder == VOR_DC_X ? VOR_DC_XSPLIT : VOR_DC_QUADTREE, nullptr);
+    if (err != VOR_OK) {
         die("vor_build failed");
     }
 }
@@ -460,7 +468,7 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
         }
         for (int algo = 0; algo < 2; algo++) { // vor, divide and conquer
             vor_run v;
-            enum vor_algorithm a = (algo == 0) ? VOR_ALGO_DC : VOR_ALGO_DC_QUADTREE;
+            enum vor_builder a = (algo == 0) ? VOR_DC_X : VOR_DC_Q;
             double t0 = now_ms();
             build_vor(v, in.vor, VOR_ORDER_QUADTREE, a);
             double &best = (algo == 0) ? r.dc_ms : r.dcq_ms;
@@ -537,9 +545,9 @@ static double time_one(int lib, const inputs &in)
     double t0 = now_ms(), ms;
     if (lib < 3) {
         vor_run v;
-        enum vor_algorithm a = (lib == 0)   ? VOR_ALGO_INCREMENTAL
-                               : (lib == 1) ? VOR_ALGO_DC
-                                            : VOR_ALGO_DC_QUADTREE;
+        enum vor_builder a = (lib == 0)   ? VOR_INCREMENTAL
+                             : (lib == 1) ? VOR_DC_X
+                                          : VOR_DC_Q;
         build_vor(v, in.vor, VOR_ORDER_QUADTREE, a);
         ms = now_ms() - t0;
     } else if (lib == 3) {

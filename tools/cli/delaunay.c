@@ -26,7 +26,9 @@ static int compare_triangles(const void *a, const void *b)
 int cli_delaunay(int argc, char **argv)
 {
     bool stats = false;
-    vor_build_options_t options = {VOR_ORDER_QUADTREE, VOR_ALGO_INCREMENTAL};
+    vor_build_options_t options = {VOR_ORDER_QUADTREE};
+    bool dc = false; /* vor_build_dc instead of vor_build */
+    enum vor_dc_split split = VOR_DC_QUADTREE;
     const char *path = NULL;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--stats") == 0) {
@@ -36,11 +38,13 @@ int cli_delaunay(int argc, char **argv)
         } else if (strcmp(argv[i], "--order=input") == 0) {
             options.order = VOR_ORDER_INPUT;
         } else if (strcmp(argv[i], "--algo=incremental") == 0) {
-            options.algorithm = VOR_ALGO_INCREMENTAL;
+            dc = false;
         } else if (strcmp(argv[i], "--algo=dc") == 0) {
-            options.algorithm = VOR_ALGO_DC;
+            dc = true;
+            split = VOR_DC_XSPLIT;
         } else if (strcmp(argv[i], "--algo=dc-quadtree") == 0) {
-            options.algorithm = VOR_ALGO_DC_QUADTREE;
+            dc = true;
+            split = VOR_DC_QUADTREE;
         } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
             path = argv[i];
         } else {
@@ -65,7 +69,9 @@ int cli_delaunay(int argc, char **argv)
         cli_error("cannot set up the diagram");
     }
     double start = cli_seconds();
-    if (vor_build(&d, sites, n, &options, duplicate_of) != VOR_OK) {
+    int built = dc ? vor_build_dc(&d, sites, n, split, duplicate_of)
+                   : vor_build(&d, sites, n, &options, duplicate_of);
+    if (built != VOR_OK) {
         cli_error("build failed");
     }
     double seconds = cli_seconds() - start;

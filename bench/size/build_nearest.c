@@ -1,0 +1,21 @@
+/* bench/size/build_nearest.c - the batch build (incremental, quadtree
+ * order) and nearest-site queries. */
+#include "common.h"
+
+static vor_point_t points[SIZE_SITES];
+
+SIZE_ARENA(size_arena);
+
+int main(void)
+{
+    vor_t d;
+    uint32_t site = 0;
+    for (uint32_t i = 0; i < SIZE_SITES; i++) {
+        points[i].x = size_x(i);
+        points[i].y = size_y(i);
+    }
+    int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
+    acc |= vor_build(&d, points, SIZE_SITES, NULL, NULL);
+    acc |= vor_nearest(&d, size_x(0), size_y(1), VOR_NO_HINT, &site);
+    return acc + (int)site;
+}

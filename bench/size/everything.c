@@ -1,0 +1,62 @@
+/* bench/size/everything.c - every public function of vor.h and
+ * vor_raster.h reachable: the whole library as one firmware keeps it. */
+#include "raster_common.h"
+
+static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
+static uint32_t ids[SIZE_SITES];
+
+SIZE_ARENA(size_arena);
+
+int main(void)
+{
+    vor_t d;
+    uint32_t site = 0, count = 0, found = 0;
+    int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
+    vor_build_options_t options = {(enum vor_order)size_x(6)};
+    acc |= vor_build(&d, raster_points, SIZE_SITES / 2u, &options, ids);
+    acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7), ids);
+    acc |= vor_insert(&d, size_x(1), size_y(1), &site);
+    acc |= vor_insert_near(&d, size_x(2), size_y(2), site, &site);
+    acc |= vor_nearest(&d, size_x(3), size_y(3), VOR_NO_HINT, &site);
+    acc |= vor_nearest_k(&d, size_x(3), size_y(3), site, 4, ids, &found);
+    vor_tracker_t tracker;
+    vor_tracker_begin(&tracker, &d);
+    acc |= vor_track(&tracker, size_x(4), size_y(4), &site);
+    vor_violation_t violation;
+    acc |= vor_validate(&d, &violation);
+    vor_memory_t memory;
+    acc |= vor_memory(&d, &memory);
+    vor_triangle_iter_t triangles;
+    vor_triangles_begin(&triangles, &d);
+    while (vor_triangles_next(&triangles, ids) > 0) {
+        acc++;
+    }
+    vor_neighbour_iter_t neighbours;
+    vor_neighbours_begin(&neighbours, &d, site);
+    while (vor_neighbours_next(&neighbours, &site) > 0) {
+        acc++;
+    }
+    vor_hull_iter_t hull;
+    vor_hull_begin(&hull, &d);
+    while (vor_hull_next(&hull, &site) > 0) {
+        acc++;
+    }
+    vor_edge_iter_t edges;
+    vor_edge_t edge;
+    vor_edges_begin(&edges, &d);
+    while (vor_edges_next(&edges, &edge) > 0) {
+        acc++;
+    }
+    vor_box_t box = {size_x(2), size_y(2), size_x(3), size_y(3)};
+    acc |= vor_cell(&d, site, &box, cell, VOR_CELL_MAX_VERTICES(SIZE_SITES), &count);
+    vor_vertex_t centre;
+    acc |= vor_circumcentre(&raster_points[0], &raster_points[1], &raster_points[2], &centre);
+    acc |= vor_voronoi_vertex(&d, 0, 1, 2, &centre);
+    acc += vor_orient2d(&raster_points[0], &raster_points[1], &raster_points[2], NULL);
+    acc += vor_incircle(&raster_points[0], &raster_points[1], &raster_points[2], &raster_points[3], NULL);
+    acc += vor_closer(&raster_points[0], &raster_points[1], &raster_points[2], NULL);
+    acc += vor_orient2d_sos(raster_points, 0, 1, 2, NULL);
+    acc += vor_incircle_sos(raster_points, 0, 1, 2, 3, NULL);
+    acc += vor_closer_sos(raster_points, 0, 1, 2, NULL);
+    return acc + raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
+}
