@@ -16,7 +16,8 @@
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #
-# Toolchains and QEMU are installed on demand by tools/install-toolchain.sh.
+# Everything a build needs (compilers, QEMU, python3, libstb-dev) is installed
+# on demand by tools/install-deps.sh, so these work on a fresh Debian machine.
 
 PORT ?= host
 TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
@@ -101,6 +102,7 @@ $(B)/tests/%.o: tests/%.c $(LIB_HDRS) $(wildcard tests/*.h tests/vectors/*.h) po
 # The oracle's table is generated, never edited: rebuilt when the generator changes.
 $(GEN)/predicate_vectors.c: tools/gen_predicate_vectors.py tests/vectors/predicate_vectors.h
 	@mkdir -p $(GEN)
+	@tools/install-deps.sh python
 	python3 tools/gen_predicate_vectors.py --out $@
 
 $(B)/tests/predicate_vectors.o: $(GEN)/predicate_vectors.c | $(B)/tests
@@ -151,6 +153,20 @@ $(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) tools/png_write.h $(B)/libvor.a
 $(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
 	@mkdir -p $@
 
+# On demand, before the first object: the port's compiler
+# (tools/install-deps.sh); a quiet check when it is there.
+.PHONY: install-deps
+install-deps:
+	@tools/install-deps.sh $(if $(filter host,$(PORT)),host,toolchains)
+$(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port: | install-deps
+
+# The host programs that write PNGs require stb_image_write.h; when it is
+# missing this rule installs it (after install-deps: one apt-get at a time).
+STB_HEADER := /usr/include/stb/stb_image_write.h
+$(STB_HEADER): | install-deps
+	@tools/install-deps.sh cli
+$(B)/vor $(B)/example-contours$(EXE): $(STB_HEADER)
+
 # ---------------------------------------------------------------- top level
 
 # The main job: examples/voronoi on the emulated Cortex-M3.
@@ -159,27 +175,27 @@ DEMO_PORT ?= cortex-m3
 # to build/demo.rgb565 through semihosting; the host turns it into
 # build/demo.png.
 demo:
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh toolchains python
 	@mkdir -p build
 	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-voronoi
 	@python3 tools/rgb565_to_png.py build/demo.rgb565 320 240 build/demo.png
 	@echo "frame:     build/demo.png"
 
 test:
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh host cli python toolchains
 	+@tools/run-tests.sh
 
 size:
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh python toolchains
 	+@tools/size-report.sh $(TARGETS)
 	+@tools/size-features.sh cortex-m0 cortex-m3 riscv32
 
 bench-predicates:
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh host python toolchains
 	+@tools/bench-predicates.sh
 
 bench-raster:
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh host python toolchains
 	+@tools/bench/raster.sh
 
 clean:

@@ -50,7 +50,8 @@
  *   A vor_t holds the Delaunay triangulation of its sites (the dual of
  *   their Voronoi diagram) in one arena the caller provides:
  *
- *       static uint8_t arena[VOR_ARENA_BYTES(500)];   // 32.1 B/site (16-bit ids)
+ *       static uint8_t arena[VOR_ARENA_BYTES(500)]    // 32.45 B/site with
+ *           __attribute__((aligned(4)));              // 16-bit ids; 4-aligned
  *       vor_t d;
  *       vor_init(&d, arena, sizeof arena, 500);       // or VOR_ERR_*
  *       vor_build(&d, points, n, NULL, duplicate_of); // site i = points[i]
@@ -567,7 +568,7 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
  * The site nearest to (x, y), any int32 point, by exact distance; of
  * several at the same distance, the smallest id. hint: a site to start
  * from (the previous answer, for a moving query), or VOR_NO_HINT (the
- * last inserted site). A duplicate is never answered: its first occurrence
+ * site the bucket grid holds for (x, y)'s bucket). A duplicate is never answered: its first occurrence
  * is the site. Cost: O(steps from the hint x neighbours), O(1) for a hint
  * near the answer.
  *   VOR_ERR_ARG    d or site NULL, hint not a site in the mesh

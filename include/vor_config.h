@@ -33,8 +33,9 @@
 #endif
 
 /* VOR_INDEX_BITS: width of site and triangle indices, 16 or 32. 16 gives
- * 32 bytes per site (coordinates included) for up to 32,767 sites; 32
- * gives 48 bytes per site for up to 2,097,150 sites. Default: 16 where
+ * about 32.5 bytes per site (coordinates and bucket grid included) for up
+ * to 32,767 sites; 32 gives about 49 bytes per site for up to 2,097,150
+ * sites (VOR_ARENA_BYTES, docs/porting.md). Default: 16 where
  * pointers are 32 bits or narrower (microcontrollers), 32 on 64-bit hosts. */
 #ifndef VOR_INDEX_BITS
 #if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ > 4

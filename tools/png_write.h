@@ -1,16 +1,14 @@
 /*
  * tools/png_write.h - PNG output for the host programs (the CLI's
  * `vor raster --png`, examples/contours), through stb_image_write from
- * Debian's libstb-dev (tools/cli/install-stb.sh). Without it the programs
- * still build, HAVE_STB stays undefined, and they say which package is
- * missing. Include it from one source file per program: it holds stb's
- * implementation.
+ * Debian's libstb-dev. It is required, not optional, so a program never
+ * silently lacks PNG output: the Makefile installs the package before it
+ * builds either program (tools/install-deps.sh cli). Include it from one
+ * source file per program: it holds stb's implementation.
  */
 #ifndef VOR_TOOLS_PNG_WRITE_H
 #define VOR_TOOLS_PNG_WRITE_H
 
-#if defined(__has_include)
-#if __has_include(<stb/stb_image_write.h>)
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 /* stb's code is not written for this project's warning flags */
 #pragma GCC diagnostic push
@@ -23,8 +21,5 @@
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
-#define HAVE_STB 1
-#endif
-#endif
 
 #endif

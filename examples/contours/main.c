@@ -441,14 +441,9 @@ int main(int argc, char **argv)
         fail("cannot write the labels file");
     }
     draw_contours(&m, &frame, rgb);
-#ifdef HAVE_STB
     if (!stbi_write_png(png_path, (int)frame.width, (int)frame.height, 3, rgb, (int)frame.width * 3)) {
         fail("cannot write the PNG");
     }
     printf("contours: %u, alpha %ld: %s\n", (unsigned)m.n, alpha, png_path);
-#else
-    (void)png_path;
-    fail("built without stb_image_write (Debian's libstb-dev: tools/cli/install-stb.sh)");
-#endif
     return 0;
 }

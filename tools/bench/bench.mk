@@ -11,8 +11,8 @@
 # Included by the top-level Makefile after the port's port.mk.
 #
 # CGAL, Boost and nanoflann are used by these host benchmarks only, never by
-# the library. tools/bench/install-deps.sh installs them (libcgal-dev,
-# libboost-dev, libnanoflann-dev).
+# the library. tools/install-deps.sh installs them (groups bench and
+# bench-query: libcgal-dev, libboost-dev, libnanoflann-dev).
 
 # Keep the Makefile's own default goal: this file is included before it.
 BENCH_SAVED_GOAL := $(.DEFAULT_GOAL)
@@ -25,13 +25,11 @@ BENCH_LDLIBS ?= -lgmp -lmpfr
 .PHONY: bench bench-query
 
 bench:
-	@tools/bench/install-deps.sh libcgal-dev libboost-dev
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh bench host python toolchains
 	+@tools/bench/run.sh delaunay
 
 bench-query:
-	@tools/bench/install-deps.sh libcgal-dev libnanoflann-dev
-	@tools/install-toolchain.sh
+	@tools/install-deps.sh bench-query host python toolchains
 	+@tools/bench/run.sh query
 
 # A host program, build/bench/NAME-host from tools/bench/NAME.cpp, links the

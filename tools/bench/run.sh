@@ -21,9 +21,9 @@
 #
 # Both host programs link build/host/libvor.a. Prints the tables and writes
 # them to build/bench/NAME.md. ARGS go to the host program (e.g. --sizes
-# 10000,100000 --reps 1). Dependencies: tools/bench/install-deps.sh and
-# tools/install-toolchain.sh (make runs both first). Exit status 1 if a
-# check failed.
+# 10000,100000 --reps 1). Dependencies: tools/install-deps.sh groups bench
+# or bench-query, host, python, toolchains (make runs it first). Exit status
+# 1 if a check failed.
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/bench

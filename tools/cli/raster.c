@@ -18,8 +18,8 @@
  * --labels writes W*H little-endian uint32 labels, row-major, row 0
  * (j = 0) first, each the index of the pixel's nearest site (farthest for
  * farthest; ties: the smaller index). --png writes an RGB picture, one
- * colour per site and black boundaries (needs Debian's libstb-dev when
- * built). Bad input: "error: line N: reason" or "error: reason", exit 2.
+ * colour per site and black boundaries (stb_image_write: tools/png_write.h).
+ * Bad input: "error: line N: reason" or "error: reason", exit 2.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -358,7 +358,6 @@ int cli_raster(int argc, char **argv)
         }
         free(labels);
     } else {
-#ifdef HAVE_STB
         uint32_t *palette = malloc((size_t)n * sizeof *palette);
         if (palette == NULL) {
             cli_error("out of memory");
@@ -382,10 +381,6 @@ int cli_raster(int argc, char **argv)
         free(edges);
         free(rgb);
         free(palette);
-#else
-        cli_error("--png needs stb_image_write (Debian's libstb-dev: tools/cli/install-stb.sh), "
-                  "then rebuild");
-#endif
     }
     free(file.points);
     free(file.mult);

@@ -1,0 +1,91 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# tools/install-deps.sh GROUP... - make sure the Debian/Ubuntu packages a
+# build needs are installed; the Makefile runs it before each build that
+# needs them, so `make`, `make demo` and `make test` work on a fresh machine.
+#
+#   host        the host C compiler (make: library, CLI, host tests)
+#   cli         stb_image_write.h from libstb-dev (the CLI's PNG output
+#               and examples/contours; host programs only, never the library)
+#   python      python3 (test vectors, CLI tests, the demo's PNG)
+#   toolchains  the cross compilers and QEMU of every target
+#   bench       the Delaunay benchmark's peers, CGAL and Boost.Polygon
+#   bench-query the query benchmark's peers, CGAL and nanoflann
+#
+# Quiet and exit 0 when every package of the named groups is present; safe
+# to run any number of times. When something is missing: as root, installs
+# all missing packages with one apt-get call; otherwise prints the command
+# to run and exits 1 (tools/apt-install.sh). A new group is one more case
+# in members().
+set -eu
+
+# members GROUP: one "PACKAGE PROBE" line per package of GROUP. The probe
+# shows the package is installed: a command on PATH, or the absolute path
+# of a file it installs.
+members() {
+    case $1 in
+    host) echo "gcc gcc" ;;
+    cli) echo "libstb-dev /usr/include/stb/stb_image_write.h" ;;
+    python) echo "python3 python3" ;;
+    toolchains)
+        echo "gcc-arm-none-eabi arm-none-eabi-gcc"
+        echo "libnewlib-arm-none-eabi /usr/lib/arm-none-eabi/newlib"
+        echo "picolibc-arm-none-eabi /usr/lib/picolibc/arm-none-eabi/picolibc.specs"
+        echo "gcc-riscv64-unknown-elf riscv64-unknown-elf-gcc"
+        echo "picolibc-riscv64-unknown-elf /usr/lib/picolibc/riscv64-unknown-elf/picolibc.specs"
+        echo "qemu-system-arm qemu-system-arm"
+        echo "qemu-system-misc qemu-system-riscv32"
+        ;;
+    bench)
+        echo "g++ g++"
+        echo "libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h"
+        echo "libboost-dev /usr/include/boost/polygon/voronoi.hpp"
+        ;;
+    bench-query)
+        echo "g++ g++"
+        echo "libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h"
+        echo "libnanoflann-dev /usr/include/nanoflann.hpp"
+        ;;
+    *)
+        echo "install-deps: unknown group $1" >&2
+        exit 2
+        ;;
+    esac
+}
+
+present() {
+    case $1 in
+    /*) [ -e "$1" ] ;;
+    *) command -v "$1" >/dev/null 2>&1 ;;
+    esac
+}
+
+# missing_packages GROUP...: the packages whose probe fails, each once.
+missing_packages() {
+    for group in "$@"; do
+        members "$group"
+    done | while read -r package probe; do
+        present "$probe" || echo "$package"
+    done | sort -u | tr '\n' ' '
+}
+
+if [ $# -eq 0 ]; then
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains bench bench-query)" >&2
+    exit 2
+fi
+# an unknown group is an error even when nothing is missing
+for group in "$@"; do members "$group" >/dev/null; done
+
+missing=$(missing_packages "$@")
+[ -z "$missing" ] && exit 0
+
+echo "install-deps: missing: $missing" >&2
+# shellcheck disable=SC2086  # missing is a word list on purpose
+"$(dirname "$0")/apt-install.sh" install-deps $missing
+
+missing=$(missing_packages "$@")
+if [ -n "$missing" ]; then
+    echo "install-deps: still missing after install: $missing" >&2
+    exit 1
+fi
+echo "install-deps: installed what $* need" >&2

@@ -1,0 +1,111 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""memory-tables.py - the two memory tables of docs/porting.md, measured.
+
+    tools/memory-tables.py            print both tables (Markdown)
+    tools/memory-tables.py --check F  exit 1 unless file F holds each verbatim
+
+1. Stack per public call and target: tools/size-report.sh -v (the deepest
+   chain of -fstack-usage frames below each public vor_ function).
+2. Sites per RAM budget and target: the most sites n whose arena
+   VOR_ARENA_BYTES(n) (tools/ram_budget.c, per VOR_INDEX_BITS), the vor_t
+   (sizeof from the target compiler) and the library's worst stack fit in
+   8, 16, 32, 64 and 256 KB.
+"""
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+TARGETS = ["cortex-m0", "cortex-m3", "cortex-m4f", "riscv32"]
+BUDGETS_KB = [8, 16, 32, 64, 256]
+ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+
+
+def run(args, **kwargs):
+    return subprocess.run(args, cwd=ROOT, check=True, capture_output=True, text=True, **kwargs).stdout
+
+
+def stack_depths():
+    """{target: {public function: bytes}} from size-report's -v chains."""
+    depths, target = {}, None
+    for line in run(["tools/size-report.sh", "-v"] + TARGETS).splitlines():
+        if line.endswith(":") and line[:-1] in TARGETS:
+            target = line[:-1]
+            depths[target] = {}
+        elif target and re.match(r"vor_\w+\s+\d+\s", line):
+            name, size = line.split()[:2]
+            depths[target][name] = int(size)
+    missing = [t for t in TARGETS if not depths.get(t)]
+    if missing:
+        sys.exit(f"memory-tables: no stack depths for {' '.join(missing)}")
+    return depths
+
+
+def vor_t_bytes(target, tmp):
+    """sizeof(vor_t) as the target compiler lays it out: the size nm gives
+    a vor_t object compiled with the library's own flags."""
+    # the Makefile's final $(CC), $(LIB_CFLAGS) and $(NM), as tools/size-report.sh reads them
+    rules = "vor-probe-cc:\n\t@echo $(CC) $(LIB_CFLAGS)\nvor-probe-nm:\n\t@echo $(NM)"
+    cc = run(["make", "-s", f"PORT={target}", "--eval", rules, "vor-probe-cc"]).split()
+    nm = run(["make", "-s", f"PORT={target}", "--eval", rules, "vor-probe-nm"]).strip()
+    source, obj = os.path.join(tmp, "probe.c"), os.path.join(tmp, f"probe-{target}.o")
+    with open(source, "w") as f:
+        f.write('#include "vor.h"\nvor_t vor_size_probe;\n')
+    run(cc + ["-fno-common", "-c", source, "-o", obj])
+    for line in run([nm, "-S", obj]).splitlines():
+        fields = line.split()
+        if fields[-1] == "vor_size_probe":
+            return int(fields[1], 16)
+    sys.exit(f"memory-tables: no vor_size_probe in {obj}")
+
+
+def most_sites(tmp, index_bits, overhead):
+    """{budget KB: sites} for one index width."""
+    exe = os.path.join(tmp, f"ram_budget{index_bits}")
+    run(["gcc", "-std=c99", "-O2", "-Iinclude", f"-DVOR_INDEX_BITS={index_bits}",
+         "tools/ram_budget.c", "-o", exe])
+    lines = run([exe, str(overhead)] + [str(kb * 1024) for kb in BUDGETS_KB]).splitlines()
+    return {int(b) // 1024: int(n) for b, n in (line.split() for line in lines)}
+
+
+def tables():
+    """The two tables, each a Markdown string."""
+    depths = stack_depths()
+    header = ["| {} | " + " | ".join(TARGETS) + " |", "|---|" + "---:|" * len(TARGETS)]
+    stack = [header[0].format("public call"), header[1]]
+    for call in sorted(depths[TARGETS[0]], key=lambda c: (-depths[TARGETS[0]][c], c)):
+        stack.append(f"| `{call}` | " + " | ".join(f"{depths[t].get(call, '-'):,}" for t in TARGETS) + " |")
+    with tempfile.TemporaryDirectory() as tmp:
+        fixed = {t: (vor_t_bytes(t, tmp), max(depths[t].values())) for t in TARGETS}
+        sites = {(t, bits): most_sites(tmp, bits, sum(fixed[t]))
+                 for t in TARGETS for bits in (16, 32)}
+    ram = [header[0].format("RAM"), header[1],
+           "| vor_t + worst stack (B) | " +
+           " | ".join(f"{fixed[t][0]} + {fixed[t][1]:,}" for t in TARGETS) + " |"]
+    for kb in BUDGETS_KB:
+        ram.append(f"| {kb} KB | " +
+                   " | ".join(f"{sites[t, 16][kb]:,} / {sites[t, 32][kb]:,}" for t in TARGETS) + " |")
+    return ["\n".join(stack) + "\n", "\n".join(ram) + "\n"]
+
+
+def main():
+    measured = tables()
+    if len(sys.argv) == 3 and sys.argv[1] == "--check":
+        with open(sys.argv[2]) as f:
+            doc = f.read()
+        stale = [table for table in measured if table not in doc]
+        for table in stale:
+            print(f"FAIL {sys.argv[2]} does not hold this measured table:\n{table}")
+        print(f"{len(measured) - len(stale)} passed, {len(stale)} failed")
+        return 1 if stale else 0
+    if len(sys.argv) != 1:
+        sys.exit("usage: tools/memory-tables.py [--check FILE]")
+    sys.stdout.write("\n".join(measured))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
