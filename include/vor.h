@@ -350,7 +350,12 @@ enum vor_check {
     VOR_CHECK_BUCKETS,     /* the bounding box holds every site, and every
                               bucket of the grid names a site in the mesh */
     VOR_CHECK_ORIENTATION, /* every finite triangle counterclockwise */
-    VOR_CHECK_DELAUNAY     /* every edge locally Delaunay (and a convex hull) */
+    VOR_CHECK_DELAUNAY,    /* every edge locally Delaunay (and a convex hull) */
+    VOR_CHECK_TRUE_OUTPUT  /* the iterators report the true triangulation:
+                              2 v - h - 2 triangles of nonzero area, CCW,
+                              bounded by a convex polygon through the h hull
+                              sites; none and a path of neighbours when all
+                              sites are collinear; neighbours = its edges */
 };
 
 typedef struct vor_violation {
