@@ -399,6 +399,17 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
     for (uint32_t s = next_used_slot(d, it->next_slot); s < end;
          s = next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &d->triangles[s];
+        if (s + 4u < end) {
+            /* the sites of a triangle ahead, fetched while this one's are
+             * compared: site ids are input positions, anywhere in memory */
+            vor_index_t ahead[3];
+            vor__vertices(&d->triangles[s + 4u], ahead);
+            for (unsigned k = 0; k < 3u; k++) {
+                if (ahead[k] != VOR__INFINITE) {
+                    VOR__PREFETCH(&d->sites[ahead[k]]);
+                }
+            }
+        }
         if (vor__reported(d->sites, t)) {
             ids[0] = vor__vertex(t, 0);
             ids[1] = vor__vertex(t, 1);
