@@ -370,7 +370,7 @@ typedef struct vor_violation {
  * Checks every invariant of the mesh: returns VOR_OK, or VOR_ERR_INVALID
  * with the first violation in *violation (may be NULL); VOR_ERR_ARG if d
  * is NULL. The first four checks are topological and hold even when the
- * arithmetic is wrong; the last two hold with exact arithmetic. O(n),
+ * arithmetic is wrong; the last three hold with exact arithmetic. O(n),
  * read-only (its predicate calls are not counted in d->stats).
  */
 int vor_validate(const vor_t *d, vor_violation_t *violation);

@@ -196,9 +196,9 @@ static void make_reference(const vor_t *d, const uint32_t *dup)
 static uint32_t triangles_at[MAX_SITES];
 static uint64_t joined[MATRIX_SITES]; /* bit j of row i: a triangle has edge i-j */
 
-static bool is_site(const reference_t *r, const uint32_t *dup, uint32_t id, uint32_t count)
+/* A distinct site's id: below count, and not a duplicate's. */
+static bool is_site(const uint32_t *dup, uint32_t id, uint32_t count)
 {
-    (void)r;
     return id < count && (dup == NULL || dup[id] == id);
 }
 
@@ -322,8 +322,8 @@ static void check_diagram(const vor_t *d, const uint32_t *dup, const char *set, 
     vor_triangles_begin(&it, d);
     while (vor_triangles_next(&it, t)) {
         count++;
-        if (!is_site(&ref, dup, t[0], d->site_count) || !is_site(&ref, dup, t[1], d->site_count) ||
-            !is_site(&ref, dup, t[2], d->site_count) || t[0] == t[1] || t[1] == t[2] ||
+        if (!is_site(dup, t[0], d->site_count) || !is_site(dup, t[1], d->site_count) ||
+            !is_site(dup, t[2], d->site_count) || t[0] == t[1] || t[1] == t[2] ||
             t[2] == t[0]) {
             bad++;
             continue;
@@ -360,7 +360,7 @@ static void check_diagram(const vor_t *d, const uint32_t *dup, const char *set, 
         vor_neighbours_begin(&ni, d, site);
         while (vor_neighbours_next(&ni, &n) && degree <= d->site_count) {
             degree++;
-            if (!is_site(&ref, dup, n, d->site_count) || n == site) {
+            if (!is_site(dup, n, d->site_count) || n == site) {
                 wrong_pair++;
                 continue;
             }
@@ -375,7 +375,7 @@ static void check_diagram(const vor_t *d, const uint32_t *dup, const char *set, 
             }
         }
         uint32_t want;
-        if (!is_site(&ref, dup, site, d->site_count) || ref.n < 2u) {
+        if (!is_site(dup, site, d->site_count) || ref.n < 2u) {
             want = 0;
         } else if (ref.collinear) {
             want = (site == ref.first || site == ref.last) ? 1u : 2u;
@@ -487,14 +487,12 @@ static void check_lines(test_rng_t *rng)
     };
     for (unsigned k = 0; k < sizeof directions / sizeof directions[0]; k++) {
         int32_t dx = directions[k][0], dy = directions[k][1];
-        int64_t big = (dx < 0 ? -(int64_t)dx : dx) > (dy < 0 ? -(int64_t)dy : dy)
-                          ? (dx < 0 ? -(int64_t)dx : dx)
-                          : (dy < 0 ? -(int64_t)dy : dy);
+        int64_t ax = (dx < 0) ? -(int64_t)dx : dx, ay = (dy < 0) ? -(int64_t)dy : dy;
+        int64_t big = (ax > ay) ? ax : ay;
         uint32_t n = 3u + test_rng_u32(rng) % 40u;
-        /* steps up to 3 a point: the line spans at most 3 n steps, centred
-         * on the origin, or from a corner when the steps are large */
-        int32_t reach = (int32_t)((int64_t)INT32_MAX / (big * (int64_t)(3u * n + 3u)));
-        if (reach > 0) {
+        /* steps of up to 3 a point: a line through the origin spans at
+         * most 3 n + 3 steps, when they fit in int32 */
+        if (big * (int64_t)(3u * n + 3u) <= INT32_MAX) {
             line(0, 0, dx, dy, -(int32_t)(3u * n / 2u), n, rng);
             check_set("line through 0 of direction", dx, dy, n, rng);
         }
