@@ -70,10 +70,12 @@
  *   the structure stays a valid triangulation whatever the arithmetic
  *   does, and with these exact predicates it is the unique Delaunay
  *   triangulation under the perturbation. vor_validate checks every
- *   invariant; iterators list triangles and neighbours. A query without a
- *   hint starts from a coarse bucket grid kept in the arena (one site id
- *   per VOR_SITES_PER_BUCKET = 4 sites), so it takes O(1) expected steps
- *   on uniform sites.
+ *   invariant. The iterators list the true Delaunay triangulation of the
+ *   distinct sites, not that perturbed mesh: 2n - h - 2 triangles, none of
+ *   zero area (none at all for collinear sites), and neighbours whose
+ *   cells touch. A query without a hint starts from a coarse bucket grid
+ *   kept in the arena (one site id per VOR_SITES_PER_BUCKET = 4 sites), so
+ *   it takes O(1) expected steps on uniform sites.
  *
  * VORONOI GEOMETRY
  *   The geometry of the true Voronoi diagram of the distinct sites is read
@@ -363,7 +365,12 @@ enum vor_check {
     VOR_CHECK_BUCKETS,     /* the bounding box holds every site, and every
                               bucket of the grid names a site in the mesh */
     VOR_CHECK_ORIENTATION, /* every finite triangle counterclockwise */
-    VOR_CHECK_DELAUNAY     /* every edge locally Delaunay (and a convex hull) */
+    VOR_CHECK_DELAUNAY,    /* every edge locally Delaunay (and a convex hull) */
+    VOR_CHECK_TRUE_OUTPUT  /* the iterators report the true triangulation:
+                              2 v - h - 2 triangles of nonzero area, CCW,
+                              bounded by a convex polygon through the h hull
+                              sites; none and a path of neighbours when all
+                              sites are collinear; neighbours = its edges */
 };
 
 typedef struct vor_violation {
@@ -376,7 +383,7 @@ typedef struct vor_violation {
  * Checks every invariant of the mesh: returns VOR_OK, or VOR_ERR_INVALID
  * with the first violation in *violation (may be NULL); VOR_ERR_ARG if d
  * is NULL. The first four checks are topological and hold even when the
- * arithmetic is wrong; the last two hold with exact arithmetic. O(n),
+ * arithmetic is wrong; the last three hold with exact arithmetic. O(n),
  * read-only (its predicate calls are not counted in d->stats).
  */
 int vor_validate(const vor_t *d, vor_violation_t *violation);
@@ -393,9 +400,13 @@ typedef struct vor_memory {
 /* Memory figures of d. VOR_ERR_ARG if d or memory is NULL. */
 int vor_memory(const vor_t *d, vor_memory_t *memory);
 
-/* Iterator over the finite Delaunay triangles (state on the caller's
- * stack): each as three site ids, counterclockwise under the perturbation
- * (collinear sites give triangles of zero area). */
+/* Iterator over the triangles of the true Delaunay triangulation of the
+ * distinct sites (state on the caller's stack): each as three site ids,
+ * counterclockwise, of positive area. They cover the convex hull, with
+ * every site on a hull edge a vertex: 2n - h - 2 triangles for n distinct
+ * sites, h of them on the hull's boundary; none when all sites are
+ * collinear. Cocircular ties are broken by the perturbation, the same way
+ * by every builder. Cost: one exact orientation test a triangle. */
 typedef struct vor_triangle_iter {
     const vor_t *d;
     uint32_t next_slot;
@@ -405,10 +416,13 @@ void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d);
 /* Returns 1 and fills ids[3] while triangles remain, then 0. */
 int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3]);
 
-/* Iterator over the Delaunay neighbours of one site (the sites whose
- * Voronoi cells share an edge with its cell, plus those of the perturbed
- * triangulation where cells meet at a point), turning around the site.
- * Yields nothing for a duplicate's id or a diagram of one site. */
+/* Iterator over the neighbours of one site, turning around it: its edges
+ * in the triangulation above, i.e. the sites whose Voronoi cells share an
+ * edge with its cell, plus the diagonals the triangulation picked where
+ * cocircular sites' cells meet in one point. With all sites collinear,
+ * the nearest site on each side along the line. Yields nothing for a
+ * duplicate's id or a diagram of one site. Cost: O(its mesh neighbours),
+ * one or two exact orientation tests each. */
 typedef struct vor_neighbour_iter {
     const vor_t *d;
     uint32_t site;

@@ -279,21 +279,6 @@ int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_v
 /* ------------------------------------------------------------------ */
 /* The true Voronoi edge of a Delaunay edge                            */
 
-static int sign64(int64_t v)
-{
-    return (v > 0) - (v < 0);
-}
-
-/* For collinear a, m, b: does m lie strictly inside the segment ab? Then
- * the steps a -> m and m -> b point the way a -> b does, coordinate by
- * coordinate (no products needed). */
-static bool strictly_between(const vor_point_t *a, const vor_point_t *m, const vor_point_t *b)
-{
-    int sx = sign64((int64_t)b->x - a->x), sy = sign64((int64_t)b->y - a->y);
-    return sign64((int64_t)m->x - a->x) == sx && sign64((int64_t)m->y - a->y) == sy &&
-           sign64((int64_t)b->x - m->x) == sx && sign64((int64_t)b->y - m->y) == sy;
-}
-
 /*
  * The Delaunay edge p -> q with r the third vertex of the triangle on its
  * right and l of the one on its left (VOR__INFINITE at the hull). Its
@@ -319,7 +304,7 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
         VOR_ASSERT(o <= 0);
         if (o != 0) {
             *has_start = true;
-        } else if (strictly_between(&s[p], &s[r], &s[q])) {
+        } else if (vor__strictly_between(&s[p], &s[r], &s[q])) {
             return false;
         }
     }
@@ -328,7 +313,7 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
         VOR_ASSERT(o >= 0);
         if (o != 0) {
             *has_end = true;
-        } else if (strictly_between(&s[p], &s[l], &s[q])) {
+        } else if (vor__strictly_between(&s[p], &s[l], &s[q])) {
             return false;
         }
     }
@@ -560,8 +545,8 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     vor_neighbours_begin(&ni, d, it->site);
     while (vor_neighbours_next(&ni, &n)) {
         if (n != u && vor_orient2d(&s[it->site], &s[u], &s[n], NULL) == 0 &&
-            strictly_between(&s[it->site], &s[n], &s[u]) &&
-            (best == VOR__NONE || strictly_between(&s[it->site], &s[n], &s[best]))) {
+            vor__strictly_between(&s[it->site], &s[n], &s[u]) &&
+            (best == VOR__NONE || vor__strictly_between(&s[it->site], &s[n], &s[best]))) {
             best = n;
         }
     }

@@ -107,14 +107,14 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
 
 uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p)
 {
-    uint32_t site = from, n;
+    uint32_t site = from, n, third;
     vor_neighbour_iter_t it;
     /* each move is to a strictly closer site (a total order under the
      * perturbation), so at most one visit per site */
     for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
         uint32_t best = site;
-        vor_neighbours_begin(&it, d, site);
-        while (vor_neighbours_next(&it, &n)) {
+        vor__fan_begin(&it, d, site);
+        while (vor__fan_next(&it, &n, &third)) {
             if (vor__closer(d, p, n, best) < 0) {
                 best = n;
             }

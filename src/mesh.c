@@ -171,6 +171,86 @@ static uint32_t fan_size(const vor_t *d, uint32_t start, vor_index_t site, uint3
     return count;
 }
 
+/* The site after b on the boundary of the reported triangles, turning
+ * clockwise around b from the reported triangle at `slot` that has the
+ * boundary edge a -> b; VOR__INFINITE if the turn does not end within
+ * vertex_count + 1 steps (only on a broken mesh). */
+static uint32_t boundary_after(const vor_t *d, uint32_t slot, vor_index_t b)
+{
+    for (uint32_t step = 0; step <= d->vertex_count; step++) {
+        const vor__tri_t *t = &d->triangles[slot];
+        unsigned j = vor__vertex_index(t, b);
+        if (j == 3u) {
+            break;
+        }
+        slot = t->n[vor__prev(j)]; /* across the edge b -> the vertex after b */
+        if (!vor__reported(d->sites, &d->triangles[slot])) {
+            return vor__vertex(t, vor__next(j));
+        }
+    }
+    return VOR__INFINITE;
+}
+
+/* What the iterators report, against the counts of a triangulation of the
+ * v distinct sites whose boundary is the convex hull through all h sites
+ * on it (Euler: 2 v - h - 2 triangles, 3 t + h edge ends), or of a path
+ * when all sites are collinear (no triangle, v - 1 edges). */
+static int check_true_output(const vor_t *d, vor_violation_t *out)
+{
+    const vor_point_t *s = d->sites;
+    const vor__tri_t *tri = d->triangles;
+    uint32_t end = extra_end(d), reported = 0, boundary = 0;
+    for (uint32_t slot = next_used_slot(d, 0); slot < end; slot = next_used_slot(d, slot + 1u)) {
+        const vor__tri_t *t = &tri[slot];
+        if (!vor__reported(s, t)) {
+            continue;
+        }
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        if (vor_orient2d(&s[v[0]], &s[v[1]], &s[v[2]], NULL) <= 0) {
+            return violation(out, VOR_CHECK_TRUE_OUTPUT, slot, v[0]);
+        }
+        reported++;
+        for (unsigned i = 0; i < 3u; i++) {
+            if (vor__reported(s, &tri[t->n[i]])) {
+                continue;
+            }
+            /* a boundary edge a -> b: the boundary turns left (or goes
+             * straight on, past a hull site) at b */
+            vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
+            uint32_t c = boundary_after(d, slot, b);
+            if (c == VOR__INFINITE || c == a || vor_orient2d(&s[a], &s[b], &s[c], NULL) < 0) {
+                return violation(out, VOR_CHECK_TRUE_OUTPUT, slot, b);
+            }
+            boundary++;
+        }
+    }
+    uint32_t v = d->vertex_count;
+    if (reported != 0u && reported + boundary + 2u != 2u * v) {
+        return violation(out, VOR_CHECK_TRUE_OUTPUT, 0, v);
+    }
+    uint32_t ends = 0;
+    for (uint32_t site = 0; site < d->site_count; site++) {
+        if (vor__slot_empty(&tri[site])) {
+            continue;
+        }
+        vor_neighbour_iter_t it;
+        uint32_t n, degree = 0;
+        vor__fan_begin(&it, d, site);
+        while (vor__true_neighbour_next(&it, &n)) {
+            degree++;
+        }
+        if (degree == 0u || (reported == 0u && degree > 2u)) {
+            return violation(out, VOR_CHECK_TRUE_OUTPUT, site, site);
+        }
+        ends += degree;
+    }
+    if (ends != ((reported != 0u) ? 3u * reported + boundary : 2u * (v - 1u))) {
+        return violation(out, VOR_CHECK_TRUE_OUTPUT, 0, v);
+    }
+    return VOR_OK;
+}
+
 int vor_validate(const vor_t *d, vor_violation_t *out)
 {
     if (d == NULL) {
@@ -299,7 +379,7 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
             }
         }
     }
-    return VOR_OK;
+    return check_true_output(d, out);
 }
 
 /* ------------------------------------------------------------------ */
@@ -358,7 +438,18 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
     for (uint32_t s = next_used_slot(d, it->next_slot); s < end;
          s = next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &d->triangles[s];
-        if (!vor__is_ghost(t)) {
+        if (s + 4u < end) {
+            /* the sites of a triangle ahead, fetched while this one's are
+             * compared: site ids are input positions, anywhere in memory */
+            vor_index_t ahead[3];
+            vor__vertices(&d->triangles[s + 4u], ahead);
+            for (unsigned k = 0; k < 3u; k++) {
+                if (ahead[k] != VOR__INFINITE) {
+                    VOR__PREFETCH(&d->sites[ahead[k]]);
+                }
+            }
+        }
+        if (vor__reported(d->sites, t)) {
             ids[0] = vor__vertex(t, 0);
             ids[1] = vor__vertex(t, 1);
             ids[2] = vor__vertex(t, 2);

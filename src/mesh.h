@@ -170,6 +170,66 @@ static inline bool vor__is_ghost(const vor__tri_t *t)
            vor__vertex(t, 2) == VOR__INFINITE;
 }
 
+/* What the iterators report is the true Delaunay triangulation of the
+ * distinct sites, not the perturbed mesh (docs/design.md, "What the
+ * iterators report"): a finite triangle is reported exactly when its
+ * three sites are not collinear (unperturbed). A flat triangle's perturbed
+ * circumcircle is a half-plane in the limit, empty only on a side of a
+ * hull line, so dropping those leaves a triangulation of the hull. */
+static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
+{
+    vor_index_t v[3];
+    vor__vertices(t, v);
+    return v[0] != VOR__INFINITE && v[1] != VOR__INFINITE && v[2] != VOR__INFINITE &&
+           vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
+}
+
+static inline int vor__sign64(int64_t v)
+{
+    return (v > 0) - (v < 0);
+}
+
+/* For collinear a, m, b: does m lie strictly inside the segment ab? Then
+ * the steps a -> m and m -> b point the way a -> b does, coordinate by
+ * coordinate (no products needed). */
+static inline bool vor__strictly_between(const vor_point_t *a, const vor_point_t *m,
+                                         const vor_point_t *b)
+{
+    int sx = vor__sign64((int64_t)b->x - a->x), sy = vor__sign64((int64_t)b->y - a->y);
+    return vor__sign64((int64_t)m->x - a->x) == sx && vor__sign64((int64_t)m->y - a->y) == sy &&
+           vor__sign64((int64_t)b->x - m->x) == sx && vor__sign64((int64_t)b->y - m->y) == sy;
+}
+
+/* Does site c (VOR__INFINITE for a triangle at infinity), the third vertex
+ * of a triangle on the mesh edge a-b, lie exactly on the segment between
+ * a and b? Then a and b are not Delaunay neighbours: c is strictly closer
+ * than both on their whole bisector. */
+static inline bool vor__splits_edge(const vor_point_t *s, uint32_t a, uint32_t b, uint32_t c)
+{
+    return c != VOR__INFINITE && vor__orient2d_exact(&s[a], &s[b], &s[c], NULL) == 0 &&
+           vor__strictly_between(&s[a], &s[c], &s[b]);
+}
+
+/* Is the mesh edge a-b, between the triangles with third vertices c and e
+ * (either may be VOR__INFINITE), an edge of the true triangulation, or on
+ * all-collinear input a pair of sites adjacent along the line? When a
+ * triangle on it is reported, yes. Otherwise both are flat or at infinity,
+ * and a-b is a true edge unless one of them has its third vertex between
+ * a and b: a site strictly between a and b but on neither triangle would
+ * lie, under the perturbation, on one side of the edge, where the
+ * triangle's circumcircle (a half-plane through a and b in the limit, or
+ * the outside of the hull) contains the segment's neighbourhood. And a
+ * reported triangle never sits beside a splitting one: its circumcircle
+ * would hold the splitting site on its chord a-b. */
+static inline bool vor__true_edge(const vor_point_t *s, uint32_t a, uint32_t b, uint32_t c,
+                                  uint32_t e)
+{
+    if (c != VOR__INFINITE && vor__orient2d_exact(&s[a], &s[b], &s[c], NULL) != 0) {
+        return true;
+    }
+    return !vor__splits_edge(s, a, b, c) && !vor__splits_edge(s, a, b, e);
+}
+
 /* Index (0..2) of neighbour `slot` in t's neighbour list; 3 if absent. */
 static inline unsigned vor__neighbour_index(const vor__tri_t *t, vor_index_t slot)
 {
@@ -202,6 +262,64 @@ static inline void vor__copy_stats(vor_predicate_stats_t *to,
     to->fault_rate = from->fault_rate;
     to->fault_state = from->fault_state;
 #endif
+}
+
+/* The mesh neighbours of a site, turning around it from its home slot:
+ * one per triangle of its fan, flat triangles included. The builders and
+ * the queries walk these (their proofs hold on the perturbed triangulation,
+ * and they pay no extra predicate); vor_neighbours_next reports the true
+ * ones among them. `left` bounds the turn even on a broken mesh. Sets *third to the third vertex of the triangle after the edge. */
+static inline void vor__fan_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
+{
+    it->d = d;
+    it->site = site;
+    it->slot = site;
+    /* no triangles: one site, or a duplicate's id */
+    it->left = (d->vertex_count >= 2u && site < d->site_count &&
+                !vor__slot_empty(&d->triangles[site]))
+                   ? d->vertex_count + 1u
+                   : 0u;
+}
+
+static inline bool vor__fan_next(vor_neighbour_iter_t *it, uint32_t *neighbour, uint32_t *third)
+{
+    const vor_t *d = it->d;
+    while (it->left > 0u) {
+        const vor__tri_t *t = &d->triangles[it->slot];
+        unsigned i = vor__vertex_index(t, (vor_index_t)it->site);
+        if (i == 3u) { /* not in this triangle: only on a broken mesh */
+            it->left = 0;
+            return false;
+        }
+        vor_index_t n = vor__vertex(t, vor__next(i));
+        *third = vor__vertex(t, vor__prev(i));
+        it->slot = t->n[vor__prev(i)];
+        it->left = (it->slot == it->site) ? 0u : it->left - 1u;
+        if (n != VOR__INFINITE) {
+            *neighbour = n;
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The next mesh neighbour that is a true one (vor__true_edge): the
+ * triangle just passed lies on one side of the edge, the fan's next (in
+ * it->slot) on the other. What vor_neighbours_next reports. */
+static inline bool vor__true_neighbour_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
+{
+    const vor_t *d = it->d;
+    uint32_t n, third;
+    while (vor__fan_next(it, &n, &third)) {
+        const vor__tri_t *after = &d->triangles[it->slot];
+        unsigned j = vor__vertex_index(after, (vor_index_t)it->site);
+        uint32_t other = (j == 3u) ? VOR__INFINITE : vor__vertex(after, vor__next(j));
+        if (vor__true_edge(d->sites, it->site, n, third, other)) {
+            *neighbour = n;
+            return true;
+        }
+    }
+    return false;
 }
 
 /* Used triangle slots in increasing order (geometry.c walks them like the

@@ -20,37 +20,12 @@
 
 void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
 {
-    it->d = d;
-    it->site = site;
-    it->slot = site;
-    /* no triangles: one site, or a duplicate's id */
-    it->left = (d->vertex_count >= 2u && site < d->site_count &&
-                !vor__slot_empty(&d->triangles[site]))
-                   ? d->vertex_count + 1u
-                   : 0u;
+    vor__fan_begin(it, d, site);
 }
 
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
 {
-    const vor_t *d = it->d;
-    /* turning around the site from its home slot: one neighbour per
-     * triangle of its fan; `left` bounds the turn even on a broken mesh */
-    while (it->left > 0u) {
-        const vor__tri_t *t = &d->triangles[it->slot];
-        unsigned i = vor__vertex_index(t, (vor_index_t)it->site);
-        if (i == 3u) { /* not in this triangle: only on a broken mesh */
-            it->left = 0;
-            return 0;
-        }
-        vor_index_t n = vor__vertex(t, vor__next(i));
-        it->slot = t->n[vor__prev(i)];
-        it->left = (it->slot == it->site) ? 0u : it->left - 1u;
-        if (n != VOR__INFINITE) {
-            *neighbour = n;
-            return 1;
-        }
-    }
-    return 0;
+    return vor__true_neighbour_next(it, neighbour) ? 1 : 0;
 }
 
 /* Is t before u going counterclockwise around q from `from` (all three on
@@ -73,9 +48,9 @@ static uint32_t next_on_circle(const vor_t *d, const vor_point_t *q, uint32_t be
                                uint32_t current)
 {
     vor_neighbour_iter_t it;
-    uint32_t n, next = current;
-    vor_neighbours_begin(&it, d, current);
-    while (vor_neighbours_next(&it, &n)) {
+    uint32_t n, third, next = current;
+    vor__fan_begin(&it, d, current);
+    while (vor__fan_next(&it, &n, &third)) {
         if (vor_closer(q, &d->sites[n], &d->sites[best], NULL) == 0 &&
             (next == current || before(d, q, current, n, next))) {
             next = n;
@@ -275,11 +250,11 @@ int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t 
 
     /* then the best unlisted neighbour of a listed site, each round */
     while (count < k) {
-        uint32_t pick = VOR__NONE, n;
+        uint32_t pick = VOR__NONE, n, third;
         for (uint32_t i = 0; i < count; i++) {
             vor_neighbour_iter_t it;
-            vor_neighbours_begin(&it, d, nearest[i]);
-            while (vor_neighbours_next(&it, &n)) {
+            vor__fan_begin(&it, d, nearest[i]);
+            while (vor__fan_next(&it, &n, &third)) {
                 if ((pick == VOR__NONE || ranks_before(d, &q, n, pick)) &&
                     !listed(nearest, count, n)) {
                     pick = n;
@@ -325,9 +300,9 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
     tracker->high.y = (int32_t)((s->y >= 0) ? INT32_MAX : s->y + reach);
 
     vor_neighbour_iter_t it;
-    uint32_t n, edges = 0;
-    vor_neighbours_begin(&it, d, site);
-    while (vor_neighbours_next(&it, &n)) {
+    uint32_t n, third, edges = 0;
+    vor__fan_begin(&it, d, site);
+    while (vor__fan_next(&it, &n, &third)) {
         int64_t dx = (int64_t)d->sites[n].x - s->x, dy = (int64_t)d->sites[n].y - s->y;
         const int64_t limit = (int64_t)1 << 30;
         if (edges == VOR_TRACKER_EDGES || dx <= -limit || dx >= limit || dy <= -limit ||

@@ -10,6 +10,7 @@ int main(void)
     test_raster();
     test_geometry();
     test_raster_metrics();
+    test_true_output();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

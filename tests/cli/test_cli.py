@@ -107,11 +107,23 @@ def delaunay_cases(rng):
     check(r2.stdout == r.stdout, "--stats changed stdout")
     check(r2.stderr.startswith("sites=6 triangles=2 bytes=") and "seconds=" in r2.stderr
           and "incircle narrow=" in r2.stderr, f"--stats line: {r2.stderr!r}")
-    # collinear sites: perturbed triangles of zero area, each site used
+    # collinear sites: no triangle (the true triangulation, not the
+    # perturbed mesh's zero-area ones)
     r = run(["delaunay", "-"], "".join(f"{3 * t} {5 * t}\n" for t in range(6)))
     tris = [l for l in r.stdout.splitlines() if l.startswith("t ")]
-    used = {int(v) for l in tris for v in l.split()[1:]}
-    check(r.returncode == 0 and used == set(range(6)), f"collinear: {tris}")
+    check(r.returncode == 0 and tris == [], f"collinear: {tris}")
+    # grids: 2n - h - 2 counterclockwise triangles of nonzero area (h the
+    # sites on the hull's boundary) whose areas add up to the hull's
+    for cols, rows in ((2, 3), (4, 4), (7, 5)):
+        pts = [(1000 * x, 1000 * y) for y in range(rows) for x in range(cols)]
+        r = run(["delaunay", "-"], "".join(f"{x} {y}\n" for x, y in pts))
+        tris = [tuple(int(v) for v in l.split()[1:]) for l in r.stdout.splitlines()]
+        n, h = cols * rows, 2 * (cols + rows) - 4
+        areas = [(pts[b][0] - pts[a][0]) * (pts[c][1] - pts[a][1]) -
+                 (pts[b][1] - pts[a][1]) * (pts[c][0] - pts[a][0]) for a, b, c in tris]
+        check(r.returncode == 0 and len(tris) == 2 * n - h - 2 and min(areas) > 0 and
+              sum(areas) == 2 * 1000 ** 2 * (cols - 1) * (rows - 1),
+              f"{cols} x {rows} grid: {len(tris)} triangles, areas {areas}")
     # bad input
     for text, line in (("0 0\n1 2 3\n", 2), ("0 0\n\n1 x\n", 3), ("2147483648 0\n", 1)):
         r = run(["delaunay", "-"], text)
