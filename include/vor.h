@@ -217,7 +217,9 @@ enum vor_error {
     VOR_ERR_DUPLICATE = -5, /* the point is a site already (its id is returned) */
     VOR_ERR_INVALID = -6,   /* vor_validate found a broken invariant */
     VOR_ERR_EMPTY = -7,     /* a query on a diagram without sites */
-    VOR_ERR_BUFFER = -8     /* the caller's buffer is too small (the size needed is returned) */
+    VOR_ERR_BUFFER = -8,    /* the caller's buffer is too small (the size needed is returned) */
+    VOR_ERR_CONFIG = -9     /* library and application were compiled with different
+                               vor_config.h options (VOR_CONFIG_FINGERPRINT) */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -282,13 +284,22 @@ typedef struct vor {
 
 /*
  * Prepares d to hold up to max_sites sites in arena.
+ *   VOR_ERR_CONFIG the library was compiled with other vor_config.h
+ *                  options than this file (checked first)
  *   VOR_ERR_ARG    d or arena NULL, max_sites 0 or > VOR_MAX_SITES
  *   VOR_ERR_ALIGN  arena not aligned to VOR_ARENA_ALIGN
  *   VOR_ERR_NOMEM  arena_bytes < VOR_ARENA_BYTES(max_sites)
- * Writes only *d (never the arena). The arena must stay valid and
- * untouched by the caller while d is in use.
+ * Writes only *d (never the arena), and nothing on failure. The arena
+ * must stay valid and untouched by the caller while d is in use.
+ * vor_init_checked is the library's symbol: the inline vor_init passes
+ * it the application's VOR_CONFIG_FINGERPRINT.
  */
-int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites);
+int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites,
+                     uint32_t config);
+static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
+{
+    return vor_init_checked(d, arena, arena_bytes, max_sites, VOR_CONFIG_FINGERPRINT);
+}
 
 /*
  * Adds the site (x, y); its id, the next unused one, goes to *site (may be
@@ -606,8 +617,17 @@ typedef struct vor_tracker {
 } vor_tracker_t;
 
 /* Starts a tracker on diagram d (no answer yet, nothing cached). Begin it
- * again after vor_init of the same vor_t. */
-void vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d);
+ * again after vor_init of the same vor_t.
+ *   VOR_ERR_CONFIG the library was compiled with another VOR_TRACKER_EDGES
+ *                  (or other vor_config.h options) than this file
+ *   VOR_ERR_ARG    tracker or d NULL
+ * On failure *tracker is unchanged. vor_tracker_begin_checked is the
+ * library's symbol, called with the application's VOR_CONFIG_FINGERPRINT. */
+int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t config);
+static inline int vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
+{
+    return vor_tracker_begin_checked(tracker, d, VOR_CONFIG_FINGERPRINT);
+}
 
 /*
  * The site nearest to (x, y) as vor_nearest answers it (exact, ties to

@@ -20,11 +20,14 @@
 
 void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
 {
+    if (it == NULL) {
+        return;
+    }
     it->d = d;
     it->site = site;
     it->slot = site;
     /* no triangles: one site, or a duplicate's id */
-    it->left = (d->vertex_count >= 2u && site < d->site_count &&
+    it->left = (d != NULL && d->vertex_count >= 2u && site < d->site_count &&
                 !vor__slot_empty(&d->triangles[site]))
                    ? d->vertex_count + 1u
                    : 0u;
@@ -32,6 +35,10 @@ void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t sit
 
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
 {
+    /* a zeroed iterator, or one begun on no diagram, is at its end */
+    if (it == NULL || it->d == NULL || neighbour == NULL) {
+        return 0;
+    }
     const vor_t *d = it->d;
     /* turning around the site from its home slot: one neighbour per
      * triangle of its fan; `left` bounds the turn even on a broken mesh */
@@ -94,11 +101,10 @@ static int query_start(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint
         *start = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
         return VOR_OK;
     }
-    if (hint >= d->site_count ||
-        (d->vertex_count >= 2u && vor__slot_empty(&d->triangles[hint]))) {
+    if (!vor__site_in_mesh(d, hint)) {
         return VOR_ERR_ARG; /* not an id, or a duplicate's id: not in the mesh */
     }
-    *start = (d->vertex_count >= 2u) ? hint : d->last_site;
+    *start = hint;
     return VOR_OK;
 }
 
@@ -295,13 +301,20 @@ int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t 
     return VOR_OK;
 }
 
-void vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
+int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t config)
 {
+    if (config != VOR_CONFIG_FINGERPRINT) {
+        return VOR_ERR_CONFIG; /* *tracker may be smaller than this library's */
+    }
+    if (tracker == NULL || d == NULL) {
+        return VOR_ERR_ARG;
+    }
     tracker->d = d;
     tracker->revision = 0;
     tracker->site = VOR_NO_HINT;
     tracker->edges = 0;
     tracker->cached = 0;
+    return VOR_OK;
 }
 
 /* Caches the cell of `site` as its bisector tests, when they are exact in
