@@ -10,6 +10,7 @@ int main(void)
     test_raster();
     test_geometry();
     test_raster_metrics();
+    test_api_safety();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

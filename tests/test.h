@@ -47,5 +47,6 @@ void test_queries(void);
 void test_raster(void);
 void test_geometry(void);
 void test_raster_metrics(void);
+void test_api_safety(void);
 
 #endif
