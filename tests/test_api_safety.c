@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_api_safety.c - every public call of vor.h and vor_raster.h with
  * each bad argument: a NULL pointer, a wrong configuration fingerprint, a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * main.c - the configuration contract test (tests/config/mismatch.c): an
  * application compiled with other vor_config.h options than its library

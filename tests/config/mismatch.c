@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mismatch.c - one side of the configuration contract (include/vor_config.h),
  * compiled once per case with the application's options on the command
