@@ -508,6 +508,49 @@ static void check_raster(void)
           "raster: the good call");
 }
 
+/* A vor_t that vor_init never saw, zeroed as static storage is: no room,
+ * no sites. Every call treats it as an empty, full diagram. */
+static void check_zeroed_diagram(void)
+{
+    static vor_t zeroed;
+    uint32_t out = 77, found = 77, list[2] = {77, 77}, ids[3], count = 77;
+    vor_point_t poly[4];
+    vor_box_t box = {0, 0, 10, 10};
+    vor_vertex_t vertex;
+    vor_memory_t memory;
+    unsigned bad = 0;
+    bad += vor_insert(&zeroed, 1, 1, &out) != VOR_ERR_FULL;
+    bad += vor_insert_near(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_FULL;
+    bad += vor_build(&zeroed, points, 1, NULL, NULL) != VOR_ERR_FULL;
+    bad += vor_nearest(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
+    bad += vor_nearest_k(&zeroed, 1, 1, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
+    bad += vor_cell(&zeroed, 0, &box, poly, 4, &count) != VOR_ERR_ARG;
+    bad += vor_voronoi_vertex(&zeroed, 0, 1, 2, &vertex) != VOR_ERR_ARG;
+    bad += vor_validate(&zeroed, NULL) != VOR_OK;
+    bad += (vor_memory(&zeroed, &memory) != VOR_OK || memory.sites != 0u);
+    bad += (out != 77 || found != 77 || list[0] != 77 || count != 77);
+    vor_triangle_iter_t triangles;
+    vor_triangles_begin(&triangles, &zeroed);
+    bad += vor_triangles_next(&triangles, ids) != 0;
+    vor_neighbour_iter_t neighbours;
+    vor_neighbours_begin(&neighbours, &zeroed, 0);
+    bad += vor_neighbours_next(&neighbours, &out) != 0;
+    vor_edge_iter_t edges;
+    vor_edge_t edge;
+    vor_edges_begin(&edges, &zeroed);
+    bad += vor_edges_next(&edges, &edge) != 0;
+    vor_hull_iter_t hull;
+    vor_hull_begin(&hull, &zeroed);
+    bad += vor_hull_next(&hull, &out) != 0;
+    vor_cell_iter_t cells;
+    vor_cells_begin(&cells, &zeroed, &box);
+    bad += vor_cells_next(&cells, &out, poly, 4, &count) != 0;
+    vor_tracker_t tracker;
+    bad += (vor_tracker_begin(&tracker, &zeroed) != VOR_OK ||
+            vor_track(&tracker, 0, 0, &out) != VOR_ERR_EMPTY);
+    CHECK(bad == 0 && out == 77, "a never-initialised diagram: %u wrong answers", bad);
+}
+
 void test_api_safety(void)
 {
     test_rng_t rng;
@@ -520,4 +563,5 @@ void test_api_safety(void)
     check_reads();
     check_iterators();
     check_raster();
+    check_zeroed_diagram();
 }
