@@ -58,7 +58,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests test demo size bench-predicates bench-raster clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo size bench-predicates bench-raster clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -127,6 +127,39 @@ $(B)/selftest-%$(EXE): tests/selftest/%.c $(B)/tests/harness.o $(PORT_OBJS)
 
 run-selftest-%: $(B)/selftest-%$(EXE)
 	$(RUN) $<
+
+# Configuration contract (tests/config): application objects compiled
+# with other vor_config.h options than their library, which is the release
+# build with VOR_TRACKER_EDGES=24. Each case changes one option.
+CONTRACT_LIB_DEFS := -DVOR_TRACKER_EDGES=24
+OTHER_INDEX_BITS := $(if $(filter host,$(PORT)),16,32)
+CONFIG_CASES := same tracker_edges index_bits sites_per_bucket
+CONFIG_DEFS_same := $(CONTRACT_LIB_DEFS) -DCONFIG_EXPECT=VOR_OK
+CONFIG_DEFS_tracker_edges := -DCONFIG_EXPECT=VOR_ERR_CONFIG
+CONFIG_DEFS_index_bits := $(CONTRACT_LIB_DEFS) -DVOR_INDEX_BITS=$(OTHER_INDEX_BITS) \
+                          -DCONFIG_EXPECT=VOR_ERR_CONFIG
+CONFIG_DEFS_sites_per_bucket := $(CONTRACT_LIB_DEFS) -DVOR_SITES_PER_BUCKET=16u \
+                                -DCONFIG_EXPECT=VOR_ERR_CONFIG
+CONTRACT_OBJS := $(LIB_SRCS:src/%.c=$(B)/contract/%.o)
+
+$(B)/libvor-contract.a: $(CONTRACT_OBJS)
+	$(AR) rcs $@ $^
+
+$(B)/contract/%.o: src/%.c $(LIB_HDRS) | $(B)/contract
+	$(CC) $(LIB_CFLAGS) $(CONTRACT_LIB_DEFS) -c $< -o $@
+
+$(B)/config/%.o: tests/config/mismatch.c $(LIB_HDRS) tests/test.h | $(B)/config
+	$(CC) $(TEST_CFLAGS) $(CONFIG_DEFS_$*) -DCONFIG_CASE=config_$* -c $< -o $@
+
+$(B)/config-tests$(EXE): tests/config/main.c $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a
+	$(CC) $(TEST_CFLAGS) $< $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+config-tests: $(B)/config-tests$(EXE)
+run-config-tests: $(B)/config-tests$(EXE)
+	$(RUN) $<
+
+$(B)/contract $(B)/config:
+	@mkdir -p $@
 
 # Benchmarks link the release library, like a user's firmware would.
 BENCH_ROUNDS_host := 20000

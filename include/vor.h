@@ -160,7 +160,7 @@ typedef struct vor_predicate_stats {
  * Exact sign (-1, 0 or 1) of det[[ax ay 1][bx by 1][cx cy 1]]:
  * positive when a, b, c turn counterclockwise (x right, y up).
  * Tiers: narrow when every coordinate difference fits in int32, else wide.
- * stats may be NULL. Never fails.
+ * stats may be NULL. Never fails; 0 when a, b or c is NULL.
  */
 int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, vor_predicate_stats_t *stats);
@@ -170,7 +170,8 @@ int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
  * positive when d lies inside the circle through a, b, c and a, b, c are
  * counterclockwise (negated when they are clockwise), 0 when cocircular.
  * Tiers, by the coordinate differences to d: narrow when they lie in
- * [-2^14, 2^14 - 1], mid when they fit int32, else wide. stats may be NULL. Never fails.
+ * [-2^14, 2^14 - 1], mid when they fit int32, else wide. stats may be NULL.
+ * Never fails; 0 when a point is NULL.
  */
 int vor_incircle(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, const vor_point_t *d,
@@ -180,7 +181,7 @@ int vor_incircle(const vor_point_t *a, const vor_point_t *b,
  * Exact sign of |q-a|^2 - |q-b|^2: -1 when q is strictly closer to a,
  * 1 when strictly closer to b, 0 on the bisector.
  * Tiers: narrow when every difference to q fits in int32, else wide.
- * stats may be NULL. Never fails.
+ * stats may be NULL. Never fails; 0 when a point is NULL.
  */
 int vor_closer(const vor_point_t *q, const vor_point_t *a,
                const vor_point_t *b, vor_predicate_stats_t *stats);
@@ -188,22 +189,25 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
 /*
  * vor_orient2d of sites[i], sites[j], sites[k] under the symbolic
  * perturbation described at the top of this file: -1 or 1, never 0.
- * i, j, k must be distinct (indices order the perturbation).
+ * i, j, k must be distinct (indices order the perturbation) and index
+ * sites[]: 0, the only 0 it returns, when sites is NULL or two indices
+ * are equal (an index past the array cannot be detected).
  */
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, vor_predicate_stats_t *stats);
 
 /*
  * vor_incircle of sites[i], sites[j], sites[k], sites[l] under the
- * symbolic perturbation: -1 or 1, never 0. Indices must be distinct.
+ * symbolic perturbation: -1 or 1. Indices must be distinct: 0 when sites
+ * is NULL or two are equal.
  */
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats);
 
 /*
  * vor_closer of sites[q], sites[a], sites[b] under the symbolic
- * perturbation: -1 (q~ closer to a~) or 1, never 0. Distinct indices.
- * Used to find the site nearest to a point that coincides with one.
+ * perturbation: -1 (q~ closer to a~) or 1. Distinct indices: 0 when
+ * sites is NULL or two are equal. Used to find the site nearest to a point that coincides with one.
  */
 int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
                    vor_predicate_stats_t *stats);
@@ -224,7 +228,9 @@ enum vor_error {
     VOR_ERR_DUPLICATE = -5, /* the point is a site already (its id is returned) */
     VOR_ERR_INVALID = -6,   /* vor_validate found a broken invariant */
     VOR_ERR_EMPTY = -7,     /* a query on a diagram without sites */
-    VOR_ERR_BUFFER = -8     /* the caller's buffer is too small (the size needed is returned) */
+    VOR_ERR_BUFFER = -8,    /* the caller's buffer is too small (the size needed is returned) */
+    VOR_ERR_CONFIG = -9     /* library and application were compiled with different
+                               vor_config.h options (VOR_CONFIG_FINGERPRINT) */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -289,21 +295,34 @@ typedef struct vor {
 
 /*
  * Prepares d to hold up to max_sites sites in arena.
+ *   VOR_ERR_CONFIG the library was compiled with other vor_config.h
+ *                  options than this file (checked first)
  *   VOR_ERR_ARG    d or arena NULL, max_sites 0 or > VOR_MAX_SITES
  *   VOR_ERR_ALIGN  arena not aligned to VOR_ARENA_ALIGN
  *   VOR_ERR_NOMEM  arena_bytes < VOR_ARENA_BYTES(max_sites)
- * Writes only *d (never the arena). The arena must stay valid and
- * untouched by the caller while d is in use.
+ * Writes only *d (never the arena), and nothing on failure. The arena
+ * must stay valid and untouched by the caller while d is in use.
+ * vor_init_checked is the library's symbol: the inline vor_init passes
+ * it the application's VOR_CONFIG_FINGERPRINT.
  */
-int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites);
+int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites,
+                     uint32_t config);
+static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
+{
+    return vor_init_checked(d, arena, arena_bytes, max_sites, VOR_CONFIG_FINGERPRINT);
+}
 
 /*
  * Adds the site (x, y); its id, the next unused one, goes to *site (may be
  * NULL). The search for its place starts at the last inserted site;
- * vor_insert_near starts at site `hint` instead (any existing site id).
- *   VOR_ERR_ARG        d NULL, or hint not a site in the mesh
- *   VOR_ERR_FULL       max_sites ids are used
+ * vor_insert_near starts at site `hint` instead (a site in the mesh, or
+ * VOR_NO_HINT: the bucket grid's site near (x, y), as vor_nearest).
+ *   VOR_ERR_ARG        d NULL, or hint neither VOR_NO_HINT nor a site in
+ *                      the mesh (an unused id, a duplicate's id)
  *   VOR_ERR_DUPLICATE  (x, y) is a site already: its id goes to *site
+ *                      (also when the diagram is full)
+ *   VOR_ERR_FULL       max_sites ids are used
+ * On failure the diagram is unchanged.
  * Cost: the walk from the hint plus O(changed triangles), O(1) expected for
  * a nearby hint; no recursion, no memory beyond the arena.
  */
@@ -399,6 +418,15 @@ typedef struct vor_memory {
 
 /* Memory figures of d. VOR_ERR_ARG if d or memory is NULL. */
 int vor_memory(const vor_t *d, vor_memory_t *memory);
+
+/* ITERATORS (triangles, neighbours, edges, hull, cells): the state lives
+ * in a struct on the caller's stack. An iterator is either begun or
+ * zero-initialised ("closed"): a zeroed one, one begun on a NULL diagram,
+ * and one that reported its end all report the end again, so next never
+ * reads through a NULL pointer. begin with a NULL iterator does nothing;
+ * next with a NULL iterator or output returns 0 (cells: VOR_ERR_ARG for
+ * a NULL output) and writes nothing. An iterator must not outlive a
+ * change of its diagram. */
 
 /* Iterator over the triangles of the true Delaunay triangulation of the
  * distinct sites (state on the caller's stack): each as three site ids,
@@ -568,7 +596,9 @@ void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box);
 /* Returns 1 with the next cell (as vor_cell) in *site, vertices[0 ..
  * *count), 0 at the end, or an error of vor_cell: VOR_ERR_BUFFER leaves
  * the iterator on that site (with *site and the needed *count set), so
- * that a retry with a larger buffer gets it. */
+ * that a retry with a larger buffer gets it. VOR_ERR_ARG, writing
+ * nothing: site or count NULL, vertices NULL with capacity > 0, or the
+ * box given to begin NULL or inverted (x0 > x1 or y0 > y1). */
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
                    uint32_t capacity, uint32_t *count);
 
@@ -585,8 +615,10 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
  * site the bucket grid holds for (x, y)'s bucket). A duplicate is never answered: its first occurrence
  * is the site. Cost: O(steps from the hint x neighbours), O(1) for a hint
  * near the answer.
- *   VOR_ERR_ARG    d or site NULL, hint not a site in the mesh
+ *   VOR_ERR_ARG    d or site NULL, hint neither VOR_NO_HINT nor a site
+ *                  in the mesh (an unused id, a duplicate's id)
  *   VOR_ERR_EMPTY  the diagram has no sites
+ * On failure nothing is written.
  */
 int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
 
@@ -633,8 +665,17 @@ typedef struct vor_tracker {
 } vor_tracker_t;
 
 /* Starts a tracker on diagram d (no answer yet, nothing cached). Begin it
- * again after vor_init of the same vor_t. */
-void vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d);
+ * again after vor_init of the same vor_t.
+ *   VOR_ERR_CONFIG the library was compiled with another VOR_TRACKER_EDGES
+ *                  (or other vor_config.h options) than this file
+ *   VOR_ERR_ARG    tracker or d NULL
+ * On failure *tracker is unchanged. vor_tracker_begin_checked is the
+ * library's symbol, called with the application's VOR_CONFIG_FINGERPRINT. */
+int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t config);
+static inline int vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
+{
+    return vor_tracker_begin_checked(tracker, d, VOR_CONFIG_FINGERPRINT);
+}
 
 /*
  * The site nearest to (x, y) as vor_nearest answers it (exact, ties to

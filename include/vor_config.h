@@ -70,4 +70,38 @@
  * (vor_predicate_stats_t.fault_rate), to show that the topology survives
  * any arithmetic. Never define it in a release build. */
 
+/* The configuration contract. The options above that change a size or a
+ * layout the application sees (VOR_INDEX_BITS: vor_index_t, the arena;
+ * VOR_SITES_PER_BUCKET: VOR_ARENA_BYTES; VOR_TRACKER_EDGES:
+ * vor_tracker_t; VOR_FAULT_INJECTION: vor_predicate_stats_t inside vor_t)
+ * are packed into VOR_CONFIG_FINGERPRINT with the layout version of the
+ * public structures. vor_init and vor_tracker_begin are inline wrappers
+ * that hand the application's fingerprint to the library, which returns
+ * VOR_ERR_CONFIG, touching nothing, when it was compiled with another.
+ * VOR_ASSERT and VOR_LIMB_BITS change only the library's code: not part
+ * of it. Bump VOR_LAYOUT_VERSION whenever a public structure changes. */
+#define VOR_LAYOUT_VERSION 1u
+
+#if VOR_SITES_PER_BUCKET < 1 || VOR_SITES_PER_BUCKET > 2047
+#error "VOR_SITES_PER_BUCKET must be 1 .. 2047"
+#endif
+#if VOR_TRACKER_EDGES < 1 || VOR_TRACKER_EDGES > 2047
+#error "VOR_TRACKER_EDGES must be 1 .. 2047"
+#endif
+
+#ifdef VOR_FAULT_INJECTION
+#define VOR__CONFIG_FAULTS 1u
+#else
+#define VOR__CONFIG_FAULTS 0u
+#endif
+
+/* One bit per choice, 11 bits per count (exact within the ranges above):
+ * two configurations have the same fingerprint only when they agree. */
+#define VOR_CONFIG_FINGERPRINT                                                 \
+    ((uint32_t)(VOR_LAYOUT_VERSION << 24 |                                     \
+                (VOR_INDEX_BITS == 32 ? 1u : 0u) << 23 |                       \
+                VOR__CONFIG_FAULTS << 22 |                                     \
+                (uint32_t)(VOR_SITES_PER_BUCKET) << 11 |                       \
+                (uint32_t)(VOR_TRACKER_EDGES)))
+
 #endif

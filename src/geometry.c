@@ -377,6 +377,9 @@ static void fill_edge(const vor_t *d, vor_edge_t *e, uint32_t p, uint32_t q, uin
 
 void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
 {
+    if (it == NULL) {
+        return;
+    }
     it->d = d;
     it->slot = 0;
     it->edge = 0;
@@ -384,6 +387,10 @@ void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
 
 int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
 {
+    /* a zeroed iterator, or one begun on no diagram, is at its end */
+    if (it == NULL || it->d == NULL || edge == NULL) {
+        return 0;
+    }
     const vor_t *d = it->d;
     if (d->vertex_count < 2u) {
         return 0;
@@ -474,10 +481,17 @@ static uint32_t lowest_site(const vor_t *d)
 
 void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
 {
+    if (it == NULL) {
+        return;
+    }
     it->d = d;
     it->left = 0;
     it->ghost = VOR__NONE;
     it->collinear = 0;
+    it->site = it->first = 0;
+    if (d == NULL) {
+        return; /* left = 0: at the end */
+    }
     it->site = it->first = d->last_site;
     if (d->vertex_count < 2u) {
         it->left = d->vertex_count; /* one site: itself */
@@ -525,6 +539,10 @@ void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
 
 int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
 {
+    /* a zeroed iterator, or one begun on no diagram, is at its end */
+    if (it == NULL || it->d == NULL || site == NULL) {
+        return 0;
+    }
     const vor_t *d = it->d;
     if (it->left == 0u) {
         return 0;
@@ -947,19 +965,27 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
 
 void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
 {
+    if (it == NULL) {
+        return;
+    }
     it->d = d;
     it->next_site = 0;
-    it->box.x0 = box->x0;
-    it->box.y0 = box->y0;
-    it->box.x1 = box->x1;
-    it->box.y1 = box->y1;
+    /* no box: an inverted one, which vor_cells_next reports as VOR_ERR_ARG */
+    it->box.x0 = (box != NULL) ? box->x0 : 1;
+    it->box.y0 = (box != NULL) ? box->y0 : 1;
+    it->box.x1 = (box != NULL) ? box->x1 : 0;
+    it->box.y1 = (box != NULL) ? box->y1 : 0;
 }
 
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, uint32_t capacity,
                    uint32_t *count)
 {
+    if (it == NULL || it->d == NULL) {
+        return 0; /* a zeroed iterator, or one begun on no diagram */
+    }
     const vor_t *d = it->d;
-    if (site == NULL) {
+    if (site == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
+        it->box.x0 > it->box.x1 || it->box.y0 > it->box.y1) {
         return VOR_ERR_ARG;
     }
     while (it->next_site < d->site_count && !in_mesh(d, it->next_site)) {

@@ -253,15 +253,23 @@ static bool same_point(const vor_point_t *a, const vor_point_t *b)
 
 int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site)
 {
-    if (d == NULL) {
+    if (d == NULL || (hint != VOR_NO_HINT && !vor__site_in_mesh(d, hint))) {
         return VOR_ERR_ARG;
     }
-    if (d->vertex_count >= 1u &&
-        (hint >= d->site_count ||
-         (d->vertex_count >= 2u && vor__slot_empty(&d->triangles[hint])))) {
-        return VOR_ERR_ARG;
+    if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
+        hint = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
     }
     if (d->site_count >= d->max_sites) {
+        /* no free coordinates slot to locate from: a read-only query
+         * tells a duplicate, which needs no slot, from a new site */
+        uint32_t nearest;
+        if (vor_nearest(d, x, y, hint, &nearest) == VOR_OK && d->sites[nearest].x == x &&
+            d->sites[nearest].y == y) {
+            if (site != NULL) {
+                *site = nearest;
+            }
+            return VOR_ERR_DUPLICATE;
+        }
         return VOR_ERR_FULL;
     }
     uint32_t p = d->site_count;
@@ -334,7 +342,8 @@ int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site)
     if (d == NULL) {
         return VOR_ERR_ARG;
     }
-    return vor_insert_near(d, x, y, d->last_site, site);
+    /* the last inserted site, once there is one */
+    return vor_insert_near(d, x, y, (d->vertex_count >= 1u) ? d->last_site : VOR_NO_HINT, site);
 }
 
 /* ------------------------------------------------------------------ */

@@ -5,8 +5,12 @@
  */
 #include "mesh.h"
 
-int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites)
+int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites,
+                     uint32_t config)
 {
+    if (config != VOR_CONFIG_FINGERPRINT) {
+        return VOR_ERR_CONFIG; /* *d and the arena are laid out differently */
+    }
     if (d == NULL || arena == NULL || max_sites == 0u || max_sites > VOR_MAX_SITES) {
         return VOR_ERR_ARG;
     }
@@ -423,12 +427,19 @@ int vor_memory(const vor_t *d, vor_memory_t *memory)
 
 void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
 {
+    if (it == NULL) {
+        return;
+    }
     it->d = d;
     it->next_slot = 0;
 }
 
 int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
 {
+    /* a zeroed iterator, or one begun on no diagram, is at its end */
+    if (it == NULL || it->d == NULL || ids == NULL) {
+        return 0;
+    }
     const vor_t *d = it->d;
     if (d->vertex_count < 2u) {
         return 0;

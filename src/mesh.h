@@ -122,6 +122,19 @@ static inline bool vor__slot_empty(const vor__tri_t *t)
     return t->n[0] == VOR__NONE;
 }
 
+/* Is `site` a site of the mesh (an id handed out, not a duplicate's)? A
+ * mesh of one vertex has no triangles: its only site is the last one. */
+static inline bool vor__site_in_mesh(const vor_t *d, uint32_t site)
+{
+    if (site >= d->site_count) {
+        return false;
+    }
+    if (d->vertex_count == 1u) {
+        return site == d->last_site;
+    }
+    return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
+}
+
 /* In triangle `slot`, points the link across its edge that ends at
  * vertex a (x -> a, x the vertex before a) at `to`, which runs that edge
  * a -> x. By vertices, not by the old link: a two-site mesh's two
@@ -275,7 +288,7 @@ static inline void vor__fan_begin(vor_neighbour_iter_t *it, const vor_t *d, uint
     it->site = site;
     it->slot = site;
     /* no triangles: one site, or a duplicate's id */
-    it->left = (d->vertex_count >= 2u && site < d->site_count &&
+    it->left = (d != NULL && d->vertex_count >= 2u && site < d->site_count &&
                 !vor__slot_empty(&d->triangles[site]))
                    ? d->vertex_count + 1u
                    : 0u;

@@ -50,6 +50,9 @@ int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, vor_predicate_stats_t *stats)
 {
+    if (a == NULL || b == NULL || c == NULL) {
+        return 0; /* no sign to give: documented as 0 */
+    }
     return vor__orient2d_exact(a, b, c, stats);
 }
 
@@ -59,6 +62,9 @@ int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
 int vor_closer(const vor_point_t *q, const vor_point_t *a,
                const vor_point_t *b, vor_predicate_stats_t *stats)
 {
+    if (q == NULL || a == NULL || b == NULL) {
+        return 0;
+    }
     int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
     int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
     if ((bound(ax) | bound(ay) | bound(bx) | bound(by)) < 0x80000000u) {
@@ -221,6 +227,9 @@ int vor_incircle(const vor_point_t *a, const vor_point_t *b,
                  const vor_point_t *c, const vor_point_t *d,
                  vor_predicate_stats_t *stats)
 {
+    if (a == NULL || b == NULL || c == NULL || d == NULL) {
+        return 0;
+    }
     return vor__incircle_exact(a, b, c, d, stats);
 }
 
@@ -279,6 +288,9 @@ static size_t rank_sites(const uint32_t ids[], size_t n, size_t rank[])
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, vor_predicate_stats_t *stats)
 {
+    if (sites == NULL || i == j || j == k || i == k) {
+        return 0; /* the only 0 it returns: no perturbation orders these */
+    }
     int sign = vor__orient2d_exact(&sites[i], &sites[j], &sites[k], stats);
     return (sign != 0) ? sign : vor__orient2d_perturbed(sites, i, j, k, stats);
 }
@@ -374,6 +386,9 @@ static int wide_det3_sign(const wide_t *m[3][3])
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
+    if (sites == NULL || i == j || i == k || i == l || j == k || j == l || k == l) {
+        return 0; /* the only 0 it returns: no perturbation orders these */
+    }
     int sign = vor__incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], stats);
     return (sign != 0) ? sign : vor__incircle_perturbed(sites, i, j, k, l, stats);
 }
@@ -517,6 +532,9 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
                    vor_predicate_stats_t *stats)
 {
+    if (sites == NULL || q == a || q == b || a == b) {
+        return 0; /* the only 0 it returns: no perturbation orders these */
+    }
     const vor_point_t *pq = &sites[q], *pa = &sites[a], *pb = &sites[b];
     int sign = vor_closer(pq, pa, pb, stats);
     if (sign != 0) {

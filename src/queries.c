@@ -20,11 +20,18 @@
 
 void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
 {
+    if (it == NULL) {
+        return;
+    }
     vor__fan_begin(it, d, site);
 }
 
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
 {
+    /* a zeroed iterator, or one begun on no diagram, is at its end */
+    if (it == NULL || it->d == NULL || neighbour == NULL) {
+        return 0;
+    }
     return vor__true_neighbour_next(it, neighbour) ? 1 : 0;
 }
 
@@ -69,11 +76,10 @@ static int query_start(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint
         *start = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
         return VOR_OK;
     }
-    if (hint >= d->site_count ||
-        (d->vertex_count >= 2u && vor__slot_empty(&d->triangles[hint]))) {
+    if (!vor__site_in_mesh(d, hint)) {
         return VOR_ERR_ARG; /* not an id, or a duplicate's id: not in the mesh */
     }
-    *start = (d->vertex_count >= 2u) ? hint : d->last_site;
+    *start = hint;
     return VOR_OK;
 }
 
@@ -270,13 +276,20 @@ int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t 
     return VOR_OK;
 }
 
-void vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
+int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t config)
 {
+    if (config != VOR_CONFIG_FINGERPRINT) {
+        return VOR_ERR_CONFIG; /* *tracker may be smaller than this library's */
+    }
+    if (tracker == NULL || d == NULL) {
+        return VOR_ERR_ARG;
+    }
     tracker->d = d;
     tracker->revision = 0;
     tracker->site = VOR_NO_HINT;
     tracker->edges = 0;
     tracker->cached = 0;
+    return VOR_OK;
 }
 
 /* Caches the cell of `site` as its bisector tests, when they are exact in

@@ -11,6 +11,7 @@ int main(void)
     test_geometry();
     test_raster_metrics();
     test_true_output();
+    test_api_safety();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -48,5 +48,6 @@ void test_raster(void);
 void test_geometry(void);
 void test_raster_metrics(void);
 void test_true_output(void);
+void test_api_safety(void);
 
 #endif

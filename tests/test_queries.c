@@ -263,10 +263,12 @@ void test_queries(void)
     CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG, "NULL found");
     CHECK(vor_nearest_k(&d, 0, 0, 4, 3, list, &found) == VOR_ERR_ARG, "k-nearest bad hint");
 
-    vor_tracker_t tracker, unused;
-    vor_tracker_begin(&unused, NULL);
-    CHECK(vor_track(&unused, 0, 0, &got) == VOR_ERR_ARG, "tracker without a diagram");
-    vor_tracker_begin(&tracker, &d);
+    vor_tracker_t tracker;
+    static vor_tracker_t zeroed; /* never begun: no diagram */
+    CHECK(vor_tracker_begin(&zeroed, NULL) == VOR_ERR_ARG && zeroed.d == NULL,
+          "tracker begun without a diagram");
+    CHECK(vor_track(&zeroed, 0, 0, &got) == VOR_ERR_ARG, "tracker without a diagram");
+    CHECK(vor_tracker_begin(&tracker, &d) == VOR_OK, "tracker begin");
     CHECK(vor_track(&tracker, 0, 0, NULL) == VOR_ERR_ARG, "tracker, NULL result");
     CHECK(vor_track(NULL, 0, 0, &got) == VOR_ERR_ARG, "NULL tracker");
 

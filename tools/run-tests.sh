@@ -3,6 +3,8 @@
 #
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
 # the fault injection test (wrong predicate signs) on every port, the
+# configuration contract (an application and a library compiled with
+# different vor_config.h options get VOR_ERR_CONFIG) on every port, the
 # command-line tool,
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
@@ -44,7 +46,8 @@ record() {
 }
 
 # suite NAME PROGRAM MAKE-ARGS...: build and run a test program of one port
-# (PROGRAM tests: the test suite; fault-tests: the fault injection test).
+# (PROGRAM tests: the test suite; fault-tests: the fault injection test;
+# config-tests: the configuration contract).
 suite() {
     local name=$1 program=$2 log="$logs/$1.log" status
     shift 2
@@ -61,6 +64,7 @@ suite() {
 suite host tests PORT=host
 suite host-sanitize tests PORT=host SANITIZE=1
 suite host-faults fault-tests PORT=host SANITIZE=1
+suite host-config config-tests PORT=host SANITIZE=1
 
 # The host command-line tool and examples/contours, against a Python
 # big-integer oracle.
@@ -75,6 +79,7 @@ fi
 for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
     suite "$target" tests PORT="$target"
     suite "$target-faults" fault-tests PORT="$target"
+    suite "$target-config" config-tests PORT="$target"
 done
 
 # The harness itself: on every port a failing check and a trap must end

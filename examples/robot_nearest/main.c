@@ -34,8 +34,10 @@ int main(void)
         beacons[i].y = (int32_t)(example_random(&random_state) % 200000u) - 100000;
     }
     vor_t map;
+    vor_tracker_t tracker;
     if (vor_init(&map, arena, sizeof arena, BEACONS) != VOR_OK ||
-        vor_build(&map, beacons, BEACONS, NULL, NULL) != VOR_OK) {
+        vor_build(&map, beacons, BEACONS, NULL, NULL) != VOR_OK ||
+        vor_tracker_begin(&tracker, &map) != VOR_OK) {
         example_print("building the beacon map failed\n");
         return 1;
     }
@@ -43,8 +45,6 @@ int main(void)
     /* a robot on a wandering course: Q16.16 millimetres, 12 mm a step */
     int64_t x = 0, y = 0;
     int32_t heading_x = 12 << 16, heading_y = 0;
-    vor_tracker_t tracker;
-    vor_tracker_begin(&tracker, &map);
     uint32_t hint = VOR_NO_HINT, changes = 0, checked = 0, wrong = 0, answer = 0, hinted = 0;
     uint64_t spent = 0, spent_hinted = 0;
     for (uint32_t step = 0; step < STEPS; step++) {

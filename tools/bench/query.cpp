@@ -197,9 +197,8 @@ static double run_vor(const vor_t *d, const std::vector<vor_point_t> &q, vor_way
                       std::vector<uint32_t> &answer)
 {
     uint32_t hint = VOR_NO_HINT, site = 0;
-    int failed = 0;
     vor_tracker_t tracker;
-    vor_tracker_begin(&tracker, d);
+    int failed = vor_tracker_begin(&tracker, d);
     double t0 = now_s();
     if (way == vor_way::tracked) {
         for (size_t i = 0; i < q.size(); i++) {

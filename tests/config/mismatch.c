@@ -1,0 +1,104 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * mismatch.c - one side of the configuration contract (include/vor_config.h),
+ * compiled once per case with the application's options on the command
+ * line (Makefile, "Configuration contract"), all linked into one program
+ * against a library built with -DVOR_TRACKER_EDGES=24:
+ *   CONFIG_CASE     the name of this case's function
+ *   CONFIG_EXPECT   VOR_ERR_CONFIG when the options differ from the
+ *                   library's, VOR_OK when they agree
+ * Every object the library could write is surrounded by canary bytes, and
+ * the objects themselves hold the same pattern: a refused call must leave
+ * every byte as it was; an accepted one must keep the canaries.
+ */
+#include "test.h"
+#include "vor.h"
+
+#define CANARY 32u
+#define CONFIG_SITES 40u
+#define PATTERN 0xC3u
+
+static struct {
+    uint8_t before[CANARY];
+    vor_t d;
+    uint8_t after[CANARY];
+} guarded_diagram __attribute__((aligned(8)));
+
+static struct {
+    uint8_t before[CANARY];
+    uint8_t arena[VOR_ARENA_BYTES(CONFIG_SITES)];
+    uint8_t after[CANARY];
+} guarded_arena __attribute__((aligned(8)));
+
+static struct {
+    uint8_t before[CANARY];
+    vor_tracker_t t;
+    uint8_t after[CANARY];
+} guarded_tracker __attribute__((aligned(8)));
+
+static void fill(void *to, size_t n)
+{
+    uint8_t *t = to;
+    for (size_t i = 0; i < n; i++) {
+        t[i] = PATTERN;
+    }
+}
+
+/* Bytes of [from, from + n) that are no longer the pattern. */
+static uint32_t changed(const void *from, size_t n)
+{
+    const uint8_t *f = from;
+    uint32_t count = 0;
+    for (size_t i = 0; i < n; i++) {
+        count += (f[i] != PATTERN) ? 1u : 0u;
+    }
+    return count;
+}
+
+static uint32_t canaries_changed(void)
+{
+    return changed(guarded_diagram.before, CANARY) + changed(guarded_diagram.after, CANARY) +
+           changed(guarded_arena.before, CANARY) + changed(guarded_arena.after, CANARY) +
+           changed(guarded_tracker.before, CANARY) + changed(guarded_tracker.after, CANARY);
+}
+
+void CONFIG_CASE(const char *name)
+{
+    fill(&guarded_diagram, sizeof guarded_diagram);
+    fill(&guarded_arena, sizeof guarded_arena);
+    fill(&guarded_tracker, sizeof guarded_tracker);
+    int err = vor_init(&guarded_diagram.d, guarded_arena.arena, sizeof guarded_arena.arena,
+                       CONFIG_SITES);
+    CHECK(err == CONFIG_EXPECT, "%s: vor_init returned %d, expected %d", name, err,
+          CONFIG_EXPECT);
+    if (CONFIG_EXPECT == VOR_ERR_CONFIG) {
+        err = vor_tracker_begin(&guarded_tracker.t, &guarded_diagram.d);
+        CHECK(err == VOR_ERR_CONFIG, "%s: vor_tracker_begin returned %d", name, err);
+        uint32_t written = changed(&guarded_diagram, sizeof guarded_diagram) +
+                           changed(&guarded_arena, sizeof guarded_arena) +
+                           changed(&guarded_tracker, sizeof guarded_tracker);
+        CHECK(written == 0u, "%s: a refused call wrote %u bytes", name, written);
+        return;
+    }
+    /* the options agree: the diagram works, and tracking a point across
+     * every cell writes nothing outside the tracker */
+    test_rng_t rng;
+    test_rng_seed(&rng, 0xC0F1);
+    for (uint32_t i = 0; i < CONFIG_SITES; i++) {
+        err |= vor_insert(&guarded_diagram.d, test_rng_range(&rng, -1000, 1000),
+                          test_rng_range(&rng, -1000, 1000), NULL);
+    }
+    err |= vor_tracker_begin(&guarded_tracker.t, &guarded_diagram.d);
+    uint32_t wrong = 0;
+    for (int32_t y = -1100; y <= 1100; y += 50) {
+        for (int32_t x = -1100; x <= 1100; x += 50) {
+            uint32_t tracked = 0, nearest = 1;
+            err |= vor_track(&guarded_tracker.t, x, y, &tracked);
+            err |= vor_nearest(&guarded_diagram.d, x, y, VOR_NO_HINT, &nearest);
+            wrong += (tracked != nearest) ? 1u : 0u;
+        }
+    }
+    CHECK(err == VOR_OK && wrong == 0u, "%s: %u tracked answers wrong (err %d)", name, wrong,
+          err);
+    CHECK(canaries_changed() == 0u, "%s: %u canary bytes overwritten", name, canaries_changed());
+}

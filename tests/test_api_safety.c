@@ -1,0 +1,589 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_api_safety.c - every public call of vor.h and vor_raster.h with
+ * each bad argument: a NULL pointer, a wrong configuration fingerprint, a
+ * zeroed or closed iterator, an id that is not a site (out of range, or a
+ * duplicate's), an inverted or empty box, a full diagram. Each call must
+ * return its documented code, and the diagram, its arena and the output
+ * buffers must be byte for byte as before (compared with copies taken
+ * just before the call). Expected ids come from how the input was made
+ * (which points are copies of which), never from the library.
+ */
+#include "test.h"
+#include "vor.h"
+#include "vor_raster.h"
+
+#define SAFE_SITES 32u
+#define COPIES 5u /* the one-point diagram: five copies of one point */
+
+static vor_point_t points[SAFE_SITES];
+static uint8_t arena[VOR_ARENA_BYTES(SAFE_SITES)] __attribute__((aligned(8)));
+static uint8_t saved_arena[sizeof arena];
+static vor_t diagram, saved_diagram;
+
+static void copy_bytes(void *to, const void *from, size_t n)
+{
+    uint8_t *t = to;
+    const uint8_t *f = from;
+    for (size_t i = 0; i < n; i++) {
+        t[i] = f[i];
+    }
+}
+
+static bool same_bytes(const void *a, const void *b, size_t n)
+{
+    const uint8_t *x = a, *y = b;
+    for (size_t i = 0; i < n; i++) {
+        if (x[i] != y[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static void fill(void *to, size_t n, uint8_t value)
+{
+    uint8_t *t = to;
+    for (size_t i = 0; i < n; i++) {
+        t[i] = value;
+    }
+}
+
+/* The diagram and its whole arena, before a call that must fail. */
+static void snapshot(void)
+{
+    copy_bytes(&saved_diagram, &diagram, sizeof diagram);
+    copy_bytes(saved_arena, arena, sizeof arena);
+}
+
+static bool unchanged(void)
+{
+    return same_bytes(&saved_diagram, &diagram, sizeof diagram) &&
+           same_bytes(saved_arena, arena, sizeof arena);
+}
+
+/* SAFE_SITES distinct random points (distinct by construction: a grid
+ * cell each, jittered inside it). */
+static void make_points(test_rng_t *rng)
+{
+    for (uint32_t i = 0; i < SAFE_SITES; i++) {
+        points[i].x = (int32_t)(i % 8u) * 1000 + test_rng_range(rng, 0, 999);
+        points[i].y = (int32_t)(i / 8u) * 1000 + test_rng_range(rng, 0, 999);
+    }
+}
+
+static bool build_all(uint32_t max_sites)
+{
+    return vor_init(&diagram, arena, sizeof arena, max_sites) == VOR_OK &&
+           vor_build(&diagram, points, SAFE_SITES < max_sites ? SAFE_SITES : max_sites, NULL,
+                     NULL) == VOR_OK;
+}
+
+static void check_config(void)
+{
+    /* a fingerprint that differs in any bit is refused before anything */
+    static vor_tracker_t tracker;
+    fill(&diagram, sizeof diagram, 0xA5);
+    fill(&tracker, sizeof tracker, 0x5A);
+    snapshot();
+    vor_tracker_t tracker_before;
+    copy_bytes(&tracker_before, &tracker, sizeof tracker);
+    unsigned bad = 0;
+    for (unsigned bit = 0; bit < 32u; bit++) {
+        uint32_t other = VOR_CONFIG_FINGERPRINT ^ (1u << bit);
+        bad += vor_init_checked(&diagram, arena, sizeof arena, SAFE_SITES, other) ==
+                       VOR_ERR_CONFIG && unchanged() ? 0u : 1u;
+        bad += vor_tracker_begin_checked(&tracker, &diagram, other) == VOR_ERR_CONFIG &&
+                       same_bytes(&tracker, &tracker_before, sizeof tracker)
+                   ? 0u
+                   : 1u;
+    }
+    CHECK(bad == 0, "%u mismatched fingerprints accepted or wrote", bad);
+    CHECK(VOR_ERR_CONFIG < 0, "VOR_ERR_CONFIG is negative");
+}
+
+static void check_init(void)
+{
+    fill(&diagram, sizeof diagram, 0xA5);
+    snapshot();
+    CHECK(vor_init(NULL, arena, sizeof arena, 4) == VOR_ERR_ARG, "init: NULL diagram");
+    CHECK(vor_init(&diagram, NULL, sizeof arena, 4) == VOR_ERR_ARG && unchanged(),
+          "init: NULL arena");
+    CHECK(vor_init(&diagram, arena, sizeof arena, 0) == VOR_ERR_ARG && unchanged(),
+          "init: no sites");
+    CHECK(vor_init(&diagram, arena, sizeof arena, VOR_MAX_SITES + 1u) == VOR_ERR_ARG &&
+              unchanged(),
+          "init: too many sites");
+    CHECK(vor_init(&diagram, arena + 1, sizeof arena - 1u, 4) == VOR_ERR_ALIGN && unchanged(),
+          "init: misaligned arena");
+    CHECK(vor_init(&diagram, arena, VOR_ARENA_BYTES(SAFE_SITES) - 1u, SAFE_SITES) ==
+                  VOR_ERR_NOMEM &&
+              unchanged(),
+          "init: arena one byte short");
+}
+
+/* Diagrams whose mesh has 0 or 1 vertices take no hint but a site of the
+ * mesh or VOR_NO_HINT (issue 15: a duplicate's id was taken). */
+static void check_small_hints(void)
+{
+    uint32_t out = 77, found = 77, list[4] = {77, 77, 77, 77};
+    CHECK(vor_init(&diagram, arena, sizeof arena, SAFE_SITES) == VOR_OK, "init");
+    snapshot();
+    CHECK(vor_insert_near(&diagram, 5, 5, 0, &out) == VOR_ERR_ARG && unchanged() && out == 77,
+          "empty diagram: hint 0 is not a site");
+    CHECK(vor_nearest(&diagram, 5, 5, VOR_NO_HINT, &out) == VOR_ERR_EMPTY && out == 77,
+          "empty diagram: nearest");
+    CHECK(vor_insert_near(&diagram, 5, 5, VOR_NO_HINT, &out) == VOR_OK && out == 0u,
+          "empty diagram: VOR_NO_HINT accepted");
+
+    vor_point_t same[COPIES];
+    uint32_t duplicate_of[COPIES];
+    for (uint32_t i = 0; i < COPIES; i++) {
+        same[i].x = -40;
+        same[i].y = 1234;
+    }
+    CHECK(vor_build(&diagram, same, COPIES, NULL, duplicate_of) == VOR_OK, "five copies");
+    snapshot();
+    unsigned bad = 0;
+    for (uint32_t hint = 1; hint < COPIES + 2u; hint++) { /* copies, then unused ids */
+        out = found = 77;
+        list[0] = 77;
+        bad += vor_insert_near(&diagram, 9, 9, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_nearest(&diagram, 9, 9, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_nearest_k(&diagram, 9, 9, hint, 2, list, &found) == VOR_ERR_ARG ? 0u : 1u;
+        bad += (out == 77 && found == 77 && list[0] == 77 && unchanged()) ? 0u : 1u;
+    }
+    CHECK(bad == 0, "one-vertex diagram: %u non-site hints accepted or wrote", bad);
+    CHECK(vor_nearest(&diagram, 9, 9, 0, &out) == VOR_OK && out == 0u &&
+              vor_nearest_k(&diagram, 9, 9, 0, 2, list, &found) == VOR_OK && found == 1u &&
+              list[0] == 0u,
+          "one-vertex diagram: its site as the hint");
+    CHECK(vor_insert_near(&diagram, -40, 1234, VOR_NO_HINT, &out) == VOR_ERR_DUPLICATE &&
+              out == 0u && unchanged(),
+          "one-vertex diagram: a copy again");
+    CHECK(vor_insert_near(&diagram, 9, 9, 0, &out) == VOR_OK && out == COPIES &&
+              vor_validate(&diagram, NULL) == VOR_OK,
+          "one-vertex diagram: insert from its site");
+}
+
+static void check_insert_and_build(test_rng_t *rng)
+{
+    uint32_t out = 77;
+    /* full: every point again is a duplicate with its own id, a new one FULL */
+    for (uint32_t max_sites = 1; max_sites <= SAFE_SITES; max_sites += (max_sites < 4u) ? 1u : 9u) {
+        CHECK(build_all(max_sites), "build %u", max_sites);
+        snapshot();
+        unsigned bad = 0;
+        for (uint32_t i = 0; i < max_sites; i++) {
+            out = 77;
+            bad += (vor_insert(&diagram, points[i].x, points[i].y, &out) == VOR_ERR_DUPLICATE &&
+                    out == i && unchanged())
+                       ? 0u
+                       : 1u;
+            out = 77;
+            bad += (vor_insert_near(&diagram, points[i].x, points[i].y, VOR_NO_HINT, &out) ==
+                        VOR_ERR_DUPLICATE &&
+                    out == i && unchanged())
+                       ? 0u
+                       : 1u;
+        }
+        out = 77;
+        bad += (vor_insert(&diagram, -1, -1, &out) == VOR_ERR_FULL && out == 77 && unchanged())
+                   ? 0u
+                   : 1u;
+        CHECK(bad == 0, "full diagram of %u: %u wrong answers", max_sites, bad);
+    }
+
+    CHECK(vor_init(&diagram, arena, sizeof arena, SAFE_SITES) == VOR_OK, "init");
+    /* a copy of site 3, so that id SAFE_SITES - 4 is a duplicate's */
+    vor_point_t more[SAFE_SITES - 3u];
+    uint32_t duplicate_of[SAFE_SITES - 3u];
+    copy_bytes(more, points, sizeof more);
+    more[SAFE_SITES - 4u] = points[3];
+    CHECK(vor_build(&diagram, more, SAFE_SITES - 3u, NULL, duplicate_of) == VOR_OK &&
+              duplicate_of[SAFE_SITES - 4u] == 3u,
+          "build with a copy");
+    snapshot();
+    uint32_t bad_hints[] = {SAFE_SITES - 4u, SAFE_SITES - 3u, SAFE_SITES, 0xFFFFFFFEu};
+    unsigned bad = 0;
+    for (unsigned h = 0; h < sizeof bad_hints / sizeof bad_hints[0]; h++) {
+        out = 77;
+        bad += (vor_insert_near(&diagram, 1, 2, bad_hints[h], &out) == VOR_ERR_ARG && out == 77 &&
+                unchanged())
+                   ? 0u
+                   : 1u;
+    }
+    CHECK(bad == 0, "insert_near: %u bad hints accepted", bad);
+    CHECK(vor_insert(NULL, 1, 2, &out) == VOR_ERR_ARG &&
+              vor_insert_near(NULL, 1, 2, 0, &out) == VOR_ERR_ARG && out == 77,
+          "insert: NULL diagram");
+
+    vor_build_options_t bad_order = {(enum vor_order)9};
+    uint32_t dup_out[SAFE_SITES + 1u];
+    fill(dup_out, sizeof dup_out, 0xEE);
+    uint32_t dup_before[SAFE_SITES + 1u];
+    copy_bytes(dup_before, dup_out, sizeof dup_out);
+    CHECK(vor_build(NULL, points, 3, NULL, dup_out) == VOR_ERR_ARG, "build: NULL diagram");
+    CHECK(vor_build(&diagram, NULL, 3, NULL, dup_out) == VOR_ERR_ARG && unchanged(),
+          "build: NULL points");
+    CHECK(vor_build(&diagram, points, 3, &bad_order, dup_out) == VOR_ERR_ARG && unchanged(),
+          "build: unknown order");
+    CHECK(vor_build(&diagram, points, SAFE_SITES + 1u, NULL, dup_out) == VOR_ERR_FULL &&
+              unchanged(),
+          "build: more points than room");
+    CHECK(vor_build_dc(NULL, points, 3, VOR_DC_QUADTREE, dup_out) == VOR_ERR_ARG,
+          "build_dc: NULL diagram");
+    CHECK(vor_build_dc(&diagram, NULL, 3, VOR_DC_XSPLIT, dup_out) == VOR_ERR_ARG && unchanged(),
+          "build_dc: NULL points");
+    CHECK(vor_build_dc(&diagram, points, 3, (enum vor_dc_split)9, dup_out) == VOR_ERR_ARG &&
+              unchanged(),
+          "build_dc: unknown split");
+    CHECK(vor_build_dc(&diagram, points, SAFE_SITES + 1u, VOR_DC_QUADTREE, dup_out) ==
+                  VOR_ERR_FULL &&
+              unchanged(),
+          "build_dc: more points than room");
+    CHECK(same_bytes(dup_out, dup_before, sizeof dup_out), "failed builds wrote duplicate_of");
+
+    /* VOR_NO_HINT inserts land where vor_insert puts them */
+    CHECK(vor_init(&diagram, arena, sizeof arena, SAFE_SITES) == VOR_OK, "init");
+    bad = 0;
+    for (uint32_t i = 0; i < SAFE_SITES; i++) {
+        uint32_t hint = (test_rng_u32(rng) & 1u) ? VOR_NO_HINT : (i > 0u ? i - 1u : VOR_NO_HINT);
+        bad += (vor_insert_near(&diagram, points[i].x, points[i].y, hint, &out) == VOR_OK &&
+                out == i)
+                   ? 0u
+                   : 1u;
+    }
+    CHECK(bad == 0 && vor_validate(&diagram, NULL) == VOR_OK, "inserts with VOR_NO_HINT");
+}
+
+static void check_reads(void)
+{
+    CHECK(build_all(SAFE_SITES), "build");
+    snapshot();
+    vor_violation_t violation;
+    fill(&violation, sizeof violation, 0x33);
+    vor_violation_t violation_before = violation;
+    CHECK(vor_validate(NULL, &violation) == VOR_ERR_ARG &&
+              same_bytes(&violation, &violation_before, sizeof violation),
+          "validate: NULL diagram");
+    vor_memory_t memory;
+    fill(&memory, sizeof memory, 0x33);
+    vor_memory_t memory_before = memory;
+    CHECK(vor_memory(NULL, &memory) == VOR_ERR_ARG &&
+              vor_memory(&diagram, NULL) == VOR_ERR_ARG &&
+              same_bytes(&memory, &memory_before, sizeof memory) && unchanged(),
+          "memory: NULL");
+
+    /* the predicates: 0 for a NULL point or a repeated index */
+    vor_point_t a = {0, 0}, b = {1, 0}, c = {0, 1};
+    CHECK(vor_orient2d(NULL, &b, &c, NULL) == 0 && vor_orient2d(&a, NULL, &c, NULL) == 0 &&
+              vor_orient2d(&a, &b, NULL, NULL) == 0,
+          "orient2d: NULL point");
+    CHECK(vor_incircle(NULL, &b, &c, &a, NULL) == 0 && vor_incircle(&a, &b, &c, NULL, NULL) == 0,
+          "incircle: NULL point");
+    CHECK(vor_closer(NULL, &b, &c, NULL) == 0 && vor_closer(&a, &b, NULL, NULL) == 0,
+          "closer: NULL point");
+    CHECK(vor_orient2d_sos(NULL, 0, 1, 2, NULL) == 0 &&
+              vor_orient2d_sos(points, 0, 1, 1, NULL) == 0 &&
+              vor_orient2d_sos(points, 2, 1, 2, NULL) == 0,
+          "orient2d_sos: NULL sites, repeated index");
+    CHECK(vor_incircle_sos(NULL, 0, 1, 2, 3, NULL) == 0 &&
+              vor_incircle_sos(points, 0, 1, 2, 0, NULL) == 0 &&
+              vor_incircle_sos(points, 0, 3, 2, 3, NULL) == 0,
+          "incircle_sos: NULL sites, repeated index");
+    CHECK(vor_closer_sos(NULL, 0, 1, 2, NULL) == 0 && vor_closer_sos(points, 1, 1, 2, NULL) == 0 &&
+              vor_closer_sos(points, 0, 2, 2, NULL) == 0,
+          "closer_sos: NULL sites, repeated index");
+
+    vor_vertex_t vertex;
+    fill(&vertex, sizeof vertex, 0x44);
+    vor_vertex_t vertex_before = vertex;
+    CHECK(vor_circumcentre(NULL, &b, &c, &vertex) == VOR_ERR_ARG &&
+              vor_circumcentre(&a, &b, NULL, &vertex) == VOR_ERR_ARG &&
+              vor_circumcentre(&a, &b, &c, NULL) == VOR_ERR_ARG &&
+              vor_voronoi_vertex(NULL, 0, 1, 2, &vertex) == VOR_ERR_ARG &&
+              vor_voronoi_vertex(&diagram, 0, 1, 2, NULL) == VOR_ERR_ARG &&
+              vor_voronoi_vertex(&diagram, 0, 1, SAFE_SITES, &vertex) == VOR_ERR_ARG &&
+              vor_voronoi_vertex(&diagram, VOR_NO_HINT, 1, 2, &vertex) == VOR_ERR_ARG &&
+              same_bytes(&vertex, &vertex_before, sizeof vertex) && unchanged(),
+          "vertices: NULL, ids out of range");
+
+    uint32_t out = 77, found = 77, list[3] = {77, 77, 77};
+    CHECK(vor_nearest(NULL, 0, 0, VOR_NO_HINT, &out) == VOR_ERR_ARG &&
+              vor_nearest(&diagram, 0, 0, VOR_NO_HINT, NULL) == VOR_ERR_ARG &&
+              vor_nearest(&diagram, 0, 0, SAFE_SITES, &out) == VOR_ERR_ARG &&
+              vor_nearest_k(NULL, 0, 0, VOR_NO_HINT, 3, list, &found) == VOR_ERR_ARG &&
+              vor_nearest_k(&diagram, 0, 0, VOR_NO_HINT, 3, NULL, &found) == VOR_ERR_ARG &&
+              vor_nearest_k(&diagram, 0, 0, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG &&
+              vor_nearest_k(&diagram, 0, 0, SAFE_SITES + 7u, 3, list, &found) == VOR_ERR_ARG &&
+              out == 77 && found == 77 && list[0] == 77 && list[2] == 77 && unchanged(),
+          "nearest: NULL, bad hints");
+
+    static vor_tracker_t zeroed;
+    vor_tracker_t tracker;
+    fill(&tracker, sizeof tracker, 0x66);
+    vor_tracker_t tracker_before;
+    copy_bytes(&tracker_before, &tracker, sizeof tracker);
+    CHECK(vor_tracker_begin(NULL, &diagram) == VOR_ERR_ARG &&
+              vor_tracker_begin(&tracker, NULL) == VOR_ERR_ARG &&
+              same_bytes(&tracker, &tracker_before, sizeof tracker) &&
+              vor_track(&zeroed, 0, 0, &out) == VOR_ERR_ARG &&
+              vor_track(NULL, 0, 0, &out) == VOR_ERR_ARG && out == 77,
+          "tracker: NULL, never begun");
+    CHECK(vor_tracker_begin(&tracker, &diagram) == VOR_OK &&
+              vor_track(&tracker, 0, 0, NULL) == VOR_ERR_ARG && unchanged(),
+          "track: NULL result");
+}
+
+/* Every iterator: begin with a NULL iterator, begin on a NULL diagram,
+ * never begun (zeroed), NULL outputs, and after its end. */
+static void check_iterators(void)
+{
+    CHECK(build_all(SAFE_SITES), "build");
+    snapshot();
+    uint32_t ids[3] = {77, 77, 77}, site = 77, count = 77;
+    unsigned bad = 0;
+
+    static vor_triangle_iter_t zero_triangles;
+    vor_triangle_iter_t triangles;
+    vor_triangles_begin(NULL, &diagram);
+    bad += vor_triangles_next(&zero_triangles, ids) + vor_triangles_next(NULL, ids) != 0;
+    vor_triangles_begin(&triangles, NULL);
+    bad += vor_triangles_next(&triangles, ids) != 0;
+    vor_triangles_begin(&triangles, &diagram);
+    bad += vor_triangles_next(&triangles, NULL) != 0;
+    bad += (ids[0] != 77 || ids[2] != 77);
+    while (vor_triangles_next(&triangles, ids)) {
+    }
+    bad += vor_triangles_next(&triangles, ids) != 0;
+    CHECK(bad == 0 && unchanged(), "triangle iterator: %u wrong", bad);
+
+    bad = 0;
+    static vor_neighbour_iter_t zero_neighbours;
+    vor_neighbour_iter_t neighbours;
+    vor_neighbours_begin(NULL, &diagram, 0);
+    bad += vor_neighbours_next(&zero_neighbours, &site) + vor_neighbours_next(NULL, &site) != 0;
+    vor_neighbours_begin(&neighbours, NULL, 0);
+    bad += vor_neighbours_next(&neighbours, &site) != 0;
+    vor_neighbours_begin(&neighbours, &diagram, SAFE_SITES);
+    bad += vor_neighbours_next(&neighbours, &site) != 0;
+    vor_neighbours_begin(&neighbours, &diagram, VOR_NO_HINT);
+    bad += vor_neighbours_next(&neighbours, &site) != 0;
+    vor_neighbours_begin(&neighbours, &diagram, 0);
+    bad += vor_neighbours_next(&neighbours, NULL) != 0;
+    bad += site != 77;
+    while (vor_neighbours_next(&neighbours, &site)) {
+    }
+    bad += vor_neighbours_next(&neighbours, &site) != 0;
+    CHECK(bad == 0 && unchanged(), "neighbour iterator: %u wrong", bad);
+
+    bad = 0;
+    static vor_edge_iter_t zero_edges;
+    vor_edge_iter_t edges;
+    vor_edge_t edge;
+    fill(&edge, sizeof edge, 0x77);
+    vor_edge_t edge_before = edge;
+    vor_edges_begin(NULL, &diagram);
+    bad += vor_edges_next(&zero_edges, &edge) + vor_edges_next(NULL, &edge) != 0;
+    vor_edges_begin(&edges, NULL);
+    bad += vor_edges_next(&edges, &edge) != 0;
+    vor_edges_begin(&edges, &diagram);
+    bad += vor_edges_next(&edges, NULL) != 0;
+    bad += !same_bytes(&edge, &edge_before, sizeof edge);
+    while (vor_edges_next(&edges, &edge)) {
+    }
+    bad += vor_edges_next(&edges, &edge) != 0;
+    CHECK(bad == 0 && unchanged(), "edge iterator: %u wrong", bad);
+
+    bad = 0;
+    site = 77;
+    static vor_hull_iter_t zero_hull;
+    vor_hull_iter_t hull;
+    vor_hull_begin(NULL, &diagram);
+    bad += vor_hull_next(&zero_hull, &site) + vor_hull_next(NULL, &site) != 0;
+    vor_hull_begin(&hull, NULL);
+    bad += vor_hull_next(&hull, &site) != 0;
+    vor_hull_begin(&hull, &diagram);
+    bad += vor_hull_next(&hull, NULL) != 0;
+    bad += site != 77;
+    while (vor_hull_next(&hull, &site)) {
+    }
+    bad += vor_hull_next(&hull, &site) != 0;
+    CHECK(bad == 0 && unchanged(), "hull iterator: %u wrong", bad);
+
+    /* cells: a missing or inverted box is VOR_ERR_ARG at every step */
+    bad = 0;
+    site = count = 77;
+    vor_point_t poly[VOR_CELL_MAX_VERTICES(SAFE_SITES)];
+    fill(poly, sizeof poly, 0x88);
+    vor_point_t poly_before[VOR_CELL_MAX_VERTICES(SAFE_SITES)];
+    copy_bytes(poly_before, poly, sizeof poly);
+    uint32_t capacity = VOR_CELL_MAX_VERTICES(SAFE_SITES);
+    static vor_cell_iter_t zero_cells;
+    vor_cell_iter_t cells;
+    vor_box_t box = {-10, -10, 9000, 5000};
+    vor_box_t inverted_x = {10, 0, 9, 100}, inverted_y = {0, 10, 100, 9}, flat = {0, 7, 9000, 7};
+    vor_cells_begin(NULL, &diagram, &box);
+    bad += vor_cells_next(&zero_cells, &site, poly, capacity, &count) != 0;
+    bad += vor_cells_next(NULL, &site, poly, capacity, &count) != 0;
+    vor_cells_begin(&cells, NULL, &box);
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
+    vor_cells_begin(&cells, &diagram, NULL);
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
+    vor_cells_begin(&cells, &diagram, &inverted_x);
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
+    vor_cells_begin(&cells, &diagram, &inverted_y);
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
+    vor_cells_begin(&cells, &diagram, &box);
+    bad += vor_cells_next(&cells, NULL, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, poly, capacity, NULL) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, NULL, capacity, &count) != VOR_ERR_ARG;
+    bad += (site != 77 || count != 77 || !same_bytes(poly, poly_before, sizeof poly));
+    CHECK(bad == 0 && unchanged(), "cell iterator, bad arguments: %u wrong", bad);
+
+    /* an empty (flat) box: every site's cell, each with no vertices */
+    uint32_t listed = 0;
+    bad = 0;
+    vor_cells_begin(&cells, &diagram, &flat);
+    while (vor_cells_next(&cells, &site, poly, capacity, &count) == 1) {
+        bad += (site != listed++ || count != 0u);
+    }
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
+    CHECK(bad == 0 && listed == SAFE_SITES && unchanged(), "cells of a flat box: %u wrong", bad);
+
+    bad = 0;
+    count = 77;
+    bad += vor_cell(NULL, 0, &box, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, 0, NULL, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, 0, &box, poly, capacity, NULL) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, 0, &box, NULL, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, 0, &inverted_x, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, 0, &inverted_y, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, SAFE_SITES, &box, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cell(&diagram, VOR_NO_HINT, &box, poly, capacity, &count) != VOR_ERR_ARG;
+    bad += (count != 77 || !same_bytes(poly, poly_before, sizeof poly));
+    CHECK(bad == 0 && unchanged(), "cell: %u bad arguments accepted or wrote", bad);
+}
+
+static int never_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    (void)first_row;
+    (void)rows;
+    (void)pixels;
+    *(unsigned *)user += 1u;
+    return 0;
+}
+
+static void check_raster(void)
+{
+    static uint8_t work[VOR_RASTER_WORK_BYTES(SAFE_SITES, 8)]
+        __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
+    uint8_t band[8 * 4], band_before[sizeof band];
+    uint32_t areas[SAFE_SITES], areas_before[SAFE_SITES];
+    fill(band, sizeof band, 0x99);
+    fill(areas, sizeof areas, 0x99);
+    copy_bytes(band_before, band, sizeof band);
+    copy_bytes(areas_before, areas, sizeof areas);
+    unsigned flushes = 0;
+    vor_raster_frame_t frame = {0, 0, 100, 100, 8, 4};
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
+    vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
+                               NULL, NULL, areas, VOR_RASTER_FAST};
+    vor_raster_frame_t empty = frame, inverted = frame;
+    empty.width = 0;
+    inverted.step_x = -100;
+    vor_raster_output_t no_band = out, no_flush = out;
+    no_band.band = NULL;
+    no_flush.flush = NULL;
+    vor_raster_sites_t no_points = set;
+    no_points.points = NULL;
+    vor_raster_sites_t l1 = set;
+    l1.metric = VOR_METRIC_L1;
+    /* both entry points; vor_raster_euclid also refuses another metric */
+    int (*const entries[2])(const vor_raster_frame_t *, const vor_raster_sites_t *,
+                            const vor_raster_output_t *, void *, size_t) = {vor_raster,
+                                                                            vor_raster_euclid};
+    for (unsigned e = 0; e < 2u; e++) {
+        unsigned bad = 0;
+        bad += entries[e](NULL, &set, &out, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, NULL, &out, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &out, NULL, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &no_points, &out, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &no_band, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &no_flush, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&empty, &set, &out, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&inverted, &set, &out, work, sizeof work) != VOR_ERR_ARG;
+        if (e == 1u) {
+            bad += vor_raster_euclid(&frame, &l1, &out, work, sizeof work) != VOR_ERR_ARG;
+        }
+        bad += (flushes != 0u || !same_bytes(band, band_before, sizeof band) ||
+                !same_bytes(areas, areas_before, sizeof areas));
+        CHECK(bad == 0, "raster entry %u: %u bad arguments accepted or wrote", e, bad);
+    }
+    CHECK(vor_raster(&frame, &set, &out, work, sizeof work) == VOR_OK && flushes == 1u,
+          "raster: the good call");
+    CHECK(vor_raster_euclid(&frame, &set, &out, work, sizeof work) == VOR_OK && flushes == 2u,
+          "raster_euclid: the good call");
+}
+
+/* A vor_t that vor_init never saw, zeroed as static storage is: no room,
+ * no sites. Every call treats it as an empty, full diagram. */
+static void check_zeroed_diagram(void)
+{
+    static vor_t zeroed;
+    uint32_t out = 77, found = 77, list[2] = {77, 77}, ids[3], count = 77;
+    vor_point_t poly[4];
+    vor_box_t box = {0, 0, 10, 10};
+    vor_vertex_t vertex;
+    vor_memory_t memory;
+    unsigned bad = 0;
+    bad += vor_insert(&zeroed, 1, 1, &out) != VOR_ERR_FULL;
+    bad += vor_insert_near(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_FULL;
+    bad += vor_build(&zeroed, points, 1, NULL, NULL) != VOR_ERR_FULL;
+    bad += vor_build_dc(&zeroed, points, 1, VOR_DC_QUADTREE, NULL) != VOR_ERR_FULL;
+    bad += vor_nearest(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
+    bad += vor_nearest_k(&zeroed, 1, 1, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
+    bad += vor_cell(&zeroed, 0, &box, poly, 4, &count) != VOR_ERR_ARG;
+    bad += vor_voronoi_vertex(&zeroed, 0, 1, 2, &vertex) != VOR_ERR_ARG;
+    bad += vor_validate(&zeroed, NULL) != VOR_OK;
+    bad += (vor_memory(&zeroed, &memory) != VOR_OK || memory.sites != 0u);
+    bad += (out != 77 || found != 77 || list[0] != 77 || count != 77);
+    vor_triangle_iter_t triangles;
+    vor_triangles_begin(&triangles, &zeroed);
+    bad += vor_triangles_next(&triangles, ids) != 0;
+    vor_neighbour_iter_t neighbours;
+    vor_neighbours_begin(&neighbours, &zeroed, 0);
+    bad += vor_neighbours_next(&neighbours, &out) != 0;
+    vor_edge_iter_t edges;
+    vor_edge_t edge;
+    vor_edges_begin(&edges, &zeroed);
+    bad += vor_edges_next(&edges, &edge) != 0;
+    vor_hull_iter_t hull;
+    vor_hull_begin(&hull, &zeroed);
+    bad += vor_hull_next(&hull, &out) != 0;
+    vor_cell_iter_t cells;
+    vor_cells_begin(&cells, &zeroed, &box);
+    bad += vor_cells_next(&cells, &out, poly, 4, &count) != 0;
+    vor_tracker_t tracker;
+    bad += (vor_tracker_begin(&tracker, &zeroed) != VOR_OK ||
+            vor_track(&tracker, 0, 0, &out) != VOR_ERR_EMPTY);
+    CHECK(bad == 0 && out == 77, "a never-initialised diagram: %u wrong answers", bad);
+}
+
+void test_api_safety(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 0x5AFE);
+    make_points(&rng);
+    check_config();
+    check_init();
+    check_small_hints();
+    check_insert_and_build(&rng);
+    check_reads();
+    check_iterators();
+    check_raster();
+    check_zeroed_diagram();
+}
