@@ -143,6 +143,11 @@ freestanding() {
 }
 freestanding
 
+# vor as a CMake package (add_subdirectory, find_package after an install)
+# on the host and on the emulated Cortex-M3.
+tools/test-consumers.sh >"$logs/consumers.log" 2>&1
+record consumers "$logs/consumers.log" $?
+
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"
 fi
