@@ -143,6 +143,11 @@ freestanding() {
 }
 freestanding
 
+# The build-system manifests (CMake, Zephyr, ESP-IDF, PlatformIO) name
+# files that exist, the version of vor.h and every vor_config.h option.
+python3 tools/check-manifests.py >"$logs/manifests.log" 2>&1
+record manifests "$logs/manifests.log" $?
+
 # vor as a CMake package (add_subdirectory, find_package after an install)
 # on the host and on the emulated Cortex-M3.
 tools/test-consumers.sh >"$logs/consumers.log" 2>&1
