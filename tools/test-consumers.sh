@@ -83,6 +83,35 @@ check host-package-build consumer host-pkg 16 -DVOR_CONSUME=package \
     -DCMAKE_PREFIX_PATH="$root/$work/host-vor-prefix"
 check host-package-run run_consumer "$work/host-pkg"
 
+check host-fetchcontent-build consumer host-fetch 16 -DVOR_CONSUME=fetchcontent
+check host-fetchcontent-run run_consumer "$work/host-fetch"
+
+# The ESP-IDF and Zephyr glue with their Kconfig values, under stand-ins
+# for the build-system functions they call (the real tools are not here).
+check esp-idf-mock-build consumer host-esp 16 -DVOR_CONSUME=esp-idf-mock
+check esp-idf-mock-run run_consumer "$work/host-esp"
+check esp-idf-mock-options grep -q 'VOR_TRACKER_EDGES=16' "$work/host-esp/vor/CMakeFiles/idf_vor.dir/flags.make"
+check zephyr-mock-build consumer host-zephyr 16 -DVOR_CONSUME=zephyr-mock
+check zephyr-mock-run run_consumer "$work/host-zephyr"
+check zephyr-mock-options grep -q 'VOR_LIMB_BITS=32' "$work/host-zephyr/CMakeFiles/consumer.dir/flags.make"
+# ESP-IDF first reads the file in script mode for its requirements.
+esp_idf_early_expansion() {
+    cat >"$work/early.cmake" <<'SCRIPT'
+set(CMAKE_BUILD_EARLY_EXPANSION 1)
+macro(idf_component_register)
+    cmake_parse_arguments(arg "" "" "SRCS;INCLUDE_DIRS" ${ARGN})
+    message("SRCS ${arg_SRCS}")
+    message("INCLUDE_DIRS ${arg_INCLUDE_DIRS}")
+endmacro()
+include("${VOR_ROOT}/CMakeLists.txt")
+SCRIPT
+    cmake -DVOR_ROOT="$root" -P "$work/early.cmake" >"$work/early.out" 2>&1 || return 1
+    cat "$work/early.out"
+    grep -qx "SRCS $(grep '^src/' sources.txt | paste -sd ';')" "$work/early.out" &&
+        grep -qx 'INCLUDE_DIRS include' "$work/early.out"
+}
+check esp-idf-early-expansion esp_idf_early_expansion
+
 # Cortex-M3: the default is 16-bit indices, so ask for 32.
 check m3-subdirectory-build consumer m3-sub 32 -DVOR_CONSUME=subdirectory \
     -DCONSUMER_PORT=cortex-m3 "$m3_toolchain"
