@@ -4,9 +4,10 @@
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
 # the fault injection test (wrong predicate signs) on every port, the
 # command-line tool,
-# the same tests as firmware under QEMU for every target, and the check
+# the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
-# else outside itself. Each suite ends with "N passed, N failed"; a suite that does not
+# else outside itself, the build-system manifests, and the CMake package
+# in consumer programs (tools/test-consumers.sh). Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."

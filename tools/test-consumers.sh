@@ -121,6 +121,12 @@ check m3-package-build consumer m3-pkg 32 -DVOR_CONSUME=package -DCONSUMER_PORT=
     -DCMAKE_PREFIX_PATH="$root/$work/m3-vor-prefix" "$m3_toolchain"
 check m3-package-run run_consumer "$work/m3-pkg" "${qemu_m3[@]}"
 
+# The other toolchain files build the library.
+for toolchain in arm-none-eabi-cortex-m0 arm-none-eabi-cortex-m4f riscv32; do
+    check "toolchain-$toolchain" install_vor "$toolchain" "" \
+        -DCMAKE_TOOLCHAIN_FILE="$root/cmake/toolchains/$toolchain.cmake"
+done
+
 # The installed package: version from vor.h, the option recorded for the
 # application, and a request for an incompatible version refused.
 version=$(sed -n 's/^#define VOR_VERSION_STRING "\(.*\)"$/\1/p' include/vor.h)
