@@ -48,7 +48,8 @@ TEST_CFLAGS := -std=c99 $(WARNINGS) $(OPT) -ffunction-sections -fdata-sections \
                -Iinclude -Isrc -Iport -Itests -Itests/vectors $(ARCH_CFLAGS) $(SAN_FLAGS)
 HOST_TOOL_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARNINGS) -O2 -Iinclude -Isrc
 
-LIB_SRCS := $(wildcard src/*.c)
+# sources.txt is the one list of library sources (CMake reads it too).
+LIB_SRCS := $(filter src/%.c,$(file < sources.txt))
 LIB_HDRS := $(wildcard include/*.h src/*.h)
 LIB_OBJS := $(LIB_SRCS:src/%.c=$(B)/lib/%.o)
 CHECKED_OBJS := $(LIB_SRCS:src/%.c=$(B)/checked/%.o)

@@ -8,8 +8,10 @@
 # command-line tool,
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
-# else outside itself, and the check that a firmware links only the
-# library files of the features it calls. Each suite ends with "N passed, N failed"; a suite that does not
+# else outside itself, the check that a firmware links only the
+# library files of the features it calls, the memory tables of the docs,
+# the build-system manifests, and the CMake package in consumer programs
+# (tools/test-consumers.sh). Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."
@@ -162,6 +164,16 @@ record linking "$linking_log" $?
 memory_log="$logs/memory-tables.log"
 python3 tools/memory-tables.py --check docs/porting.md >"$memory_log" 2>&1
 record memory-tables "$memory_log" $?
+
+# The build-system manifests (CMake, Zephyr, ESP-IDF, PlatformIO) name
+# files that exist, the version of vor.h and every vor_config.h option.
+python3 tools/check-manifests.py >"$logs/manifests.log" 2>&1
+record manifests "$logs/manifests.log" $?
+
+# vor as a CMake package (add_subdirectory, find_package after an install)
+# on the host and on the emulated Cortex-M3.
+tools/test-consumers.sh >"$logs/consumers.log" 2>&1
+record consumers "$logs/consumers.log" $?
 
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"

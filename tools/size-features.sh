@@ -38,8 +38,9 @@ fi
 
 # The library files (src/NAME.c) each program may link; any other file in
 # its image is a dependency that should not be there, and every listed
-# file must be there (so the list stays true). everything: all of src/.
-ALL_FILES=$(cd src && ls ./*.c | sed 's|^\./||; s|\.c$||' | tr '\n' ' ')
+# file must be there (so the list stays true). everything: all of
+# sources.txt.
+ALL_FILES=$(sed -n 's|^src/\(.*\)\.c$|\1|p' sources.txt | tr '\n' ' ')
 links() {
     case $1 in
     insert_nearest) echo "bucket_grid incremental mesh predicates queries" ;;

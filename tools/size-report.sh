@@ -45,7 +45,7 @@ fi
 # so $(CC) and $(LIB_CFLAGS) are the Makefile's final values.
 # shellcheck disable=SC2016  # make's $(...), not the shell's
 size_rules='
-vor-size-objs := $(patsubst src/%.c,$(VOR_SIZE_DIR)/%.o,$(wildcard src/*.c))
+vor-size-objs := $(patsubst src/%.c,$(VOR_SIZE_DIR)/%.o,$(filter src/%.c,$(file < sources.txt)))
 .PHONY: vor-size-build vor-size-tool
 vor-size-build: $(vor-size-objs)
 $(VOR_SIZE_DIR)/%.o: src/%.c

@@ -1,0 +1,5 @@
+# SPDX-License-Identifier: MIT
+# Cortex-M3 with arm-none-eabi-gcc; the flags of port/cortex-m3/port.mk.
+#   cmake -B build -DCMAKE_TOOLCHAIN_FILE=path/to/vor/cmake/toolchains/arm-none-eabi-cortex-m3.cmake
+set(vor_cpu_flags "-mcpu=cortex-m3 -mthumb")
+include(${CMAKE_CURRENT_LIST_DIR}/arm-none-eabi.cmake)
