@@ -62,10 +62,13 @@ typedef char vor__triangle_size_check[(sizeof(vor__tri_t) == VOR_TRIANGLE_BYTES)
 #define VOR__PREFETCH(address) ((void)(address))
 #endif
 
-/* (i + 1) mod 3 and (i + 2) mod 3 without a division */
+/* (i + 1) mod 3 and (i + 2) mod 3 without a division. ">= 2" rather
+ * than "== 2": the result is then provably below 3 even for the "not
+ * found" index 3 of vor__vertex_index, which keeps gcc -O3's array-bounds
+ * analysis quiet at no cost (one compare either way). */
 static inline unsigned vor__next(unsigned i)
 {
-    return (i == 2u) ? 0u : i + 1u;
+    return (i >= 2u) ? 0u : i + 1u;
 }
 static inline unsigned vor__prev(unsigned i)
 {
