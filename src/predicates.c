@@ -342,8 +342,9 @@ static void wide_from(wide_t *r, int64_t v)
     vor__mw_from_i64(r->w, VOR__WIDE_LIMBS, v);
 }
 
-/* r = a * b; r overlaps neither */
-static void wide_mul(wide_t *r, const wide_t *a, const wide_t *b)
+/* r = a * b; r overlaps neither (restrict: the product's stores then need
+ * no reloads of a and b) */
+static void wide_mul(wide_t *restrict r, const wide_t *a, const wide_t *b)
 {
     vor__mw_mul(r->w, VOR__WIDE_LIMBS, a->w, VOR__WIDE_LIMBS, b->w,
                 VOR__WIDE_LIMBS);

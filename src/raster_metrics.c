@@ -156,16 +156,16 @@ static uint32_t bit_length(uint64_t v)
 /* v by pointer: a structure passed by value is a memcpy call at -Os. */
 static void limbs_from_u128(vor__limb *r, size_t n, const u128_t *v)
 {
-    /* an array, not a choice on i: a chain of choices becomes a jump table,
-     * which is a runtime call on Cortex-M0 at -Os */
-#if VOR_LIMB_BITS == 64
-    const vor__limb words[2] = {v->lo, v->hi};
-#else
-    const vor__limb words[4] = {(uint32_t)v->lo, (uint32_t)(v->lo >> 32), (uint32_t)v->hi,
-                                (uint32_t)(v->hi >> 32)};
-#endif
     for (size_t i = 0; i < n; i++) {
-        r[i] = (i < sizeof words / sizeof words[0]) ? words[i] : 0u;
+#if VOR_LIMB_BITS == 64
+        r[i] = i == 0u ? v->lo : i == 1u ? v->hi : 0u;
+#else
+        r[i] = i == 0u   ? (uint32_t)v->lo
+               : i == 1u ? (uint32_t)(v->lo >> 32)
+               : i == 2u ? (uint32_t)v->hi
+               : i == 3u ? (uint32_t)(v->hi >> 32)
+                         : 0u;
+#endif
     }
 }
 
