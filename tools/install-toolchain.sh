@@ -1,6 +1,7 @@
 #!/bin/sh
 # tools/install-toolchain.sh - make sure the cross toolchains and emulators
-# vor's target builds and tests need are installed (Debian/Ubuntu).
+# vor's target builds and tests need are installed (Debian/Ubuntu); clang
+# for the freestanding check, which compiles the library with it too.
 #
 #   tools/install-toolchain.sh        check; install what is missing
 #
@@ -12,11 +13,11 @@ set -eu
 
 PACKAGES="gcc-arm-none-eabi libnewlib-arm-none-eabi picolibc-arm-none-eabi \
 gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf \
-qemu-system-arm qemu-system-misc"
+qemu-system-arm qemu-system-misc clang"
 
 missing_tools() {
     for tool in arm-none-eabi-gcc riscv64-unknown-elf-gcc \
-                qemu-system-arm qemu-system-riscv32 python3; do
+                qemu-system-arm qemu-system-riscv32 python3 clang; do
         command -v "$tool" >/dev/null 2>&1 || printf '%s ' "$tool"
     done
 }
