@@ -162,10 +162,8 @@ static inline uint32_t compact_bits(uint32_t x)
  * same for rows and y). k <= 12. */
 static inline uint32_t cell_of(const vor_t *d, vor_index_t s, unsigned k, unsigned shift)
 {
-    uint64_t dx = (uint64_t)((int64_t)d->sites[s].x - d->low.x);
-    uint64_t dy = (uint64_t)((int64_t)d->sites[s].y - d->low.y);
-    uint32_t cx = (uint32_t)vor__shr_u64(vor__shl_u64(dx, k), shift);
-    uint32_t cy = (uint32_t)vor__shr_u64(vor__shl_u64(dy, k), shift);
+    uint32_t cx = vor__grid_cell(d->sites[s].x, d->low.x, k, shift);
+    uint32_t cy = vor__grid_cell(d->sites[s].y, d->low.y, k, shift);
     return spread_bits(cx) | (spread_bits(cy) << 1);
 }
 

@@ -312,8 +312,8 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
         start[b] = 0;
     }
 #define BUCKET_OF(s)                                                           \
-    (((uint32_t)vor__shr_u64(vor__shl_u64((uint64_t)((int64_t)sites[s].x - xmin), k), shift) << k) | \
-     (uint32_t)vor__shr_u64(vor__shl_u64((uint64_t)((int64_t)sites[s].y - ymin), k), shift))
+    ((vor__grid_cell(sites[s].x, xmin, k, shift) << k) |                       \
+     vor__grid_cell(sites[s].y, ymin, k, shift))
     for (uint32_t s = 0; s < n; s++) {
         start[BUCKET_OF(s) + 1u]++;
     }

@@ -335,6 +335,20 @@ uint32_t vor__grid_start(const vor_t *d, int32_t x, int32_t y);
 uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
                    vor_index_t *scratch, vor_index_t *plan, uint32_t *duplicate_of);
 
+/* The column (row) of coordinate c in a 2^k x 2^k grid over a square of
+ * side 2^shift from low: floor((c - low) 2^k / 2^shift), for low <= c and
+ * c - low < 2^shift (k <= 12, shift <= 32). c - low < 2^32, so this is one
+ * 32-bit shift, by shift - k or, in a square smaller than the grid, left
+ * by k - shift: no 64-bit shift, which is a runtime call on some targets. */
+static inline uint32_t vor__grid_cell(int32_t c, int32_t low, unsigned k, unsigned shift)
+{
+    uint32_t offset = (uint32_t)((int64_t)c - low);
+    if (shift < k) {
+        return offset << (k - shift); /* < 2^k */
+    }
+    return (shift - k < 32u) ? offset >> (shift - k) : 0u;
+}
+
 /* Introsort of ids[0..n) by a strict total order on site ids, ids breaking
  * ties: Z-order for the plan, lexicographic (x, y) for the divide-and-conquer
  * builder. O(n log n) worst case, in place, a stack of 34 ranges
