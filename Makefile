@@ -216,7 +216,7 @@ demo:
 	@echo "frame:     build/demo.png"
 
 test:
-	@tools/install-deps.sh host cli python toolchains
+	@tools/install-deps.sh host cli python toolchains clang cmake
 	+@tools/run-tests.sh
 
 size:

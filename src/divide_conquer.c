@@ -162,8 +162,8 @@ static inline uint32_t compact_bits(uint32_t x)
  * same for rows and y). k <= 12. */
 static inline uint32_t cell_of(const vor_t *d, vor_index_t s, unsigned k, unsigned shift)
 {
-    uint32_t cx = (uint32_t)((((uint64_t)((int64_t)d->sites[s].x - d->low.x)) << k) >> shift);
-    uint32_t cy = (uint32_t)((((uint64_t)((int64_t)d->sites[s].y - d->low.y)) << k) >> shift);
+    uint32_t cx = vor__grid_cell(d->sites[s].x, d->low.x, k, shift);
+    uint32_t cy = vor__grid_cell(d->sites[s].y, d->low.y, k, shift);
     return spread_bits(cx) | (spread_bits(cy) << 1);
 }
 
@@ -766,7 +766,7 @@ static uint32_t partition_below(const vor_point_t *p, vor_index_t *ids, uint32_t
 /* Is site q in the square with corner (ox, oy) and side 2^s? */
 static inline bool in_square(const vor_point_t *q, int64_t ox, int64_t oy, unsigned s)
 {
-    return (((uint64_t)((int64_t)q->x - ox) | (uint64_t)((int64_t)q->y - oy)) >> s) == 0u;
+    return vor__shr_u64((uint64_t)((int64_t)q->x - ox) | (uint64_t)((int64_t)q->y - oy), s) == 0u;
 }
 
 /* Builds the crowded bucket ids[0, count) (count > CROWDED): over the
@@ -789,7 +789,7 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
     }
     uint64_t span = (uint64_t)(((hx - ox) > (hy - oy)) ? (hx - ox) : (hy - oy));
     unsigned s = 0; /* the current square: corner (ox, oy), side 2^s */
-    while ((span >> s) != 0u) {
+    while (vor__shr_u64(span, s) != 0u) {
         s++;
     }
     vor_index_t bottom[CROWDED_LEVELS], third_child[CROWDED_LEVELS];
@@ -804,7 +804,7 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
         if (end - pos > CROWDED && s > 0u && level + 1u < CROWDED_LEVELS) {
             /* split it and go on with its first child */
             s--;
-            int64_t side = (int64_t)1 << s;
+            int64_t side = (int64_t)vor__shl_u64(1u, s);
             uint32_t lower = partition_below(p, ids + pos, end - pos, 1, oy + side);
             (void)partition_below(p, ids + pos, lower, 0, ox + side);
             (void)partition_below(p, ids + pos + lower, end - pos - lower, 0, ox + side);
@@ -820,7 +820,7 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
             if (level == 0u) {
                 return part;
             }
-            int64_t side = (int64_t)1 << s;
+            int64_t side = (int64_t)vor__shl_u64(1u, s);
             unsigned c = child[level];
             if (c == 0u || c == 2u) {
                 if (c == 0u) {
@@ -875,7 +875,7 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
 static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned k,
                          unsigned shift)
 {
-    uint64_t offset = (((uint64_t)index << shift) + ((1ull << k) - 1u)) >> k;
+    uint64_t offset = vor__shr_u64(vor__shl_u64(index, shift) + ((1u << k) - 1u), k);
     return (int64_t)((axis == 0u) ? d->low.x : d->low.y) + (int64_t)offset;
 }
 
@@ -949,13 +949,13 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
 VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
 {
     vor_t *d = b->d;
-    while (b->k + 1u < QUADTREE_LEVELS && (8ull << (2u * b->k)) <= n) {
+    while (b->k + 1u < QUADTREE_LEVELS && vor__shl_u64(8u, 2u * b->k) <= n) {
         b->k++;
     }
     uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
     uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
     span = (span_y > span) ? span_y : span;
-    while ((span >> b->shift) != 0u) {
+    while (vor__shr_u64(span, b->shift) != 0u) {
         b->shift++;
     }
     uint32_t cells = 1u << (2u * b->k);

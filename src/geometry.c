@@ -92,36 +92,46 @@ static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
     vor__mw_add(l->c, t, GEO_LIMBS); /* < 2^65 */
 }
 
+/* u c for u in {-1, 0, 1}, by selection: a 64-bit multiply is a runtime
+ * call on Cortex-M0. */
+static int64_t unit_times(int64_t u, int64_t c)
+{
+    return (u == 0) ? 0 : (u > 0) ? c : -c;
+}
+
 /* Box sides in counterclockwise order, each with its outward normal:
  * 0 bottom (0, -1), 1 right (1, 0), 2 top (0, 1), 3 left (-1, 0). */
 static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, unsigned side)
 {
-    int64_t c;
+    int64_t distance; /* signed, along the outward normal */
     switch (side) {
     case 0:
         l->a = 0;
         l->b = -1;
-        c = -2 * ((int64_t)box->y0 - s->y);
+        distance = (int64_t)s->y - box->y0;
         break;
     case 1:
         l->a = 1;
         l->b = 0;
-        c = 2 * ((int64_t)box->x1 - s->x);
+        distance = (int64_t)box->x1 - s->x;
         break;
     case 2:
         l->a = 0;
         l->b = 1;
-        c = 2 * ((int64_t)box->y1 - s->y);
+        distance = (int64_t)box->y1 - s->y;
         break;
     default:
         l->a = -1;
         l->b = 0;
-        c = -2 * ((int64_t)box->x0 - s->x);
+        distance = (int64_t)s->x - box->x0;
         break;
     }
+    /* doubled frame; a sum, as 2 * distance may become a 64-bit multiply
+     * call on Cortex-M0 */
+    int64_t c = distance + distance;
     vor__mw_from_i64(l->c, GEO_LIMBS, c); /* |c| < 2^33 */
-    l->px = l->a * c; /* unit normal: (a c, b c) is on the line */
-    l->py = l->b * c;
+    l->px = unit_times(l->a, c); /* unit normal: (a c, b c) is on the line */
+    l->py = unit_times(l->b, c);
 }
 
 /* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
@@ -336,10 +346,14 @@ static uint32_t third_vertex(const vor__tri_t *t, uint32_t p, uint32_t q)
     return v[2];
 }
 
-/* floor(v / 2) for the rounded midpoint, without a shift of a negative */
+/* floor(v / 2) for the rounded midpoint (|v| <= 2^32 + 1): v + 2^33 is
+ * non-negative and halved by an unsigned shift, as a shift of a negative is
+ * implementation-defined and a 64-bit division may become a runtime call
+ * (clang -Oz). */
 static int32_t floor_half(int64_t v)
 {
-    return (int32_t)((v - (int64_t)((uint64_t)v & 1u)) / 2);
+    uint64_t biased = (uint64_t)v + ((uint64_t)1 << 33);
+    return (int32_t)((int64_t)(biased >> 1) - ((int64_t)1 << 32));
 }
 
 static void fill_edge(const vor_t *d, vor_edge_t *e, uint32_t p, uint32_t q, uint32_t r,

@@ -128,7 +128,7 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
         uint32_t first, count, depth;
     } stack[34];
     unsigned top = 0, log2n = 0;
-    while ((1ull << log2n) < n) {
+    while (vor__shl_u64(1u, log2n) < n) {
         log2n++;
     }
     stack[top++] = (struct range){0, n, 0};
@@ -280,7 +280,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
 
     /* grid: 2^k x 2^k buckets over the bounding square of side 2^shift */
     unsigned k = 0;
-    while ((4ull << (2u * k)) <= n) {
+    while (vor__shl_u64(4u, 2u * k) <= n) {
         k++;
     }
     int32_t xmin = sites[0].x, xmax = xmin, ymin = sites[0].y, ymax = ymin;
@@ -294,7 +294,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     uint64_t span_y = (uint64_t)((int64_t)ymax - ymin);
     span = (span_y > span) ? span_y : span;
     unsigned shift = 0;
-    while ((span >> shift) != 0u) {
+    while (vor__shr_u64(span, shift) != 0u) {
         shift++;
     }
     uint32_t buckets = 1u << (2u * k);
@@ -312,8 +312,8 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
         start[b] = 0;
     }
 #define BUCKET_OF(s)                                                           \
-    ((uint32_t)(((((uint64_t)((int64_t)sites[s].x - xmin)) << k) >> shift) << k) |   \
-     (uint32_t)((((uint64_t)((int64_t)sites[s].y - ymin)) << k) >> shift))
+    ((vor__grid_cell(sites[s].x, xmin, k, shift) << k) |                       \
+     vor__grid_cell(sites[s].y, ymin, k, shift))
     for (uint32_t s = 0; s < n; s++) {
         start[BUCKET_OF(s) + 1u]++;
     }

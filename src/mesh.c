@@ -390,15 +390,19 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
 /* Memory and iteration                                                */
 
 /* numerator / denominator by shift and subtract: Cortex-M0 has no divide
- * instruction and the library calls no runtime routine. 64 steps. */
+ * instruction and the library calls no runtime routine. 64 steps, each
+ * moving the numerator's top bit into the remainder and one quotient bit
+ * in at the bottom (shifts by constants only: no shift routine either). */
 static uint64_t divide(uint64_t numerator, uint64_t denominator)
 {
     uint64_t quotient = 0, remainder = 0;
-    for (int bit = 63; bit >= 0; bit--) {
-        remainder = (remainder << 1) | ((numerator >> bit) & 1u);
+    for (unsigned step = 0; step < 64u; step++) {
+        remainder = (remainder << 1) | (numerator >> 63);
+        numerator <<= 1;
+        quotient <<= 1;
         if (remainder >= denominator) {
             remainder -= denominator;
-            quotient |= (uint64_t)1 << bit;
+            quotient |= 1u;
         }
     }
     return quotient;

@@ -62,10 +62,13 @@ typedef char vor__triangle_size_check[(sizeof(vor__tri_t) == VOR_TRIANGLE_BYTES)
 #define VOR__PREFETCH(address) ((void)(address))
 #endif
 
-/* (i + 1) mod 3 and (i + 2) mod 3 without a division */
+/* (i + 1) mod 3 and (i + 2) mod 3 without a division. ">= 2" rather
+ * than "== 2": the result is then provably below 3 even for the "not
+ * found" index 3 of vor__vertex_index, which keeps gcc -O3's array-bounds
+ * analysis quiet at no cost (one compare either way). */
 static inline unsigned vor__next(unsigned i)
 {
-    return (i == 2u) ? 0u : i + 1u;
+    return (i >= 2u) ? 0u : i + 1u;
 }
 static inline unsigned vor__prev(unsigned i)
 {
@@ -471,6 +474,20 @@ uint32_t vor__grid_start(const vor_t *d, int32_t x, int32_t y);
  * scratch[0 .. 6n + 2) for n >= 8; scratch and plan must not overlap. */
 uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
                    vor_index_t *scratch, vor_index_t *plan, uint32_t *duplicate_of);
+
+/* The column (row) of coordinate c in a 2^k x 2^k grid over a square of
+ * side 2^shift from low: floor((c - low) 2^k / 2^shift), for low <= c and
+ * c - low < 2^shift (k <= 12, shift <= 32). c - low < 2^32, so this is one
+ * 32-bit shift, by shift - k or, in a square smaller than the grid, left
+ * by k - shift: no 64-bit shift, which is a runtime call on some targets. */
+static inline uint32_t vor__grid_cell(int32_t c, int32_t low, unsigned k, unsigned shift)
+{
+    uint32_t offset = (uint32_t)((int64_t)c - low);
+    if (shift < k) {
+        return offset << (k - shift); /* < 2^k */
+    }
+    return (shift - k < 32u) ? offset >> (shift - k) : 0u;
+}
 
 /* Introsort of ids[0..n) by a strict total order on site ids, ids breaking
  * ties: Z-order for the plan, lexicographic (x, y) for the divide-and-conquer

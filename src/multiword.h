@@ -135,6 +135,44 @@ VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
 #endif
 }
 
+/* v << s and v >> s for 0 <= s < 64. On a 32-bit machine a 64-bit shift by
+ * a variable amount becomes a runtime call (__aeabi_llsl, __ashldi3, ...)
+ * at -Os, and with clang always on ARMv6-M, so it is done here on the two
+ * 32-bit halves; with 64-bit limbs the machine shifts natively. */
+VOR__INLINE uint64_t vor__shl_u64(uint64_t v, unsigned s)
+{
+#if VOR_LIMB_BITS == 64
+    return v << s;
+#else
+    uint32_t lo = (uint32_t)v, hi = (uint32_t)(v >> 32);
+    if (s >= 32u) {
+        hi = lo << (s - 32u);
+        lo = 0;
+    } else if (s != 0u) { /* lo >> 32 would be undefined */
+        hi = (hi << s) | (lo >> (32u - s));
+        lo <<= s;
+    }
+    return ((uint64_t)hi << 32) | lo;
+#endif
+}
+
+VOR__INLINE uint64_t vor__shr_u64(uint64_t v, unsigned s)
+{
+#if VOR_LIMB_BITS == 64
+    return v >> s;
+#else
+    uint32_t lo = (uint32_t)v, hi = (uint32_t)(v >> 32);
+    if (s >= 32u) {
+        lo = hi >> (s - 32u);
+        hi = 0;
+    } else if (s != 0u) {
+        lo = (lo >> s) | (hi << (32u - s));
+        hi >>= s;
+    }
+    return ((uint64_t)hi << 32) | lo;
+#endif
+}
+
 /* r[0..n) = v, zero-extended. */
 VOR__INLINE void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
 {

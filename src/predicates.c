@@ -346,38 +346,40 @@ typedef struct {
     vor__limb w[VOR__WIDE_LIMBS];
 } wide_t;
 
-static wide_t wide_from(int64_t v)
+/* Results go out through a pointer: a returned or assigned structure of
+ * this size becomes a memcpy call at -Os, and the library calls nothing
+ * outside itself. */
+static void wide_from(wide_t *r, int64_t v)
 {
-    wide_t r;
-    vor__mw_from_i64(r.w, VOR__WIDE_LIMBS, v);
-    return r;
+    vor__mw_from_i64(r->w, VOR__WIDE_LIMBS, v);
 }
 
-static wide_t wide_mul(const wide_t *a, const wide_t *b)
+/* r = a * b; r overlaps neither (restrict: the product's stores then need
+ * no reloads of a and b) */
+static void wide_mul(wide_t *restrict r, const wide_t *a, const wide_t *b)
 {
-    wide_t r;
-    vor__mw_mul(r.w, VOR__WIDE_LIMBS, a->w, VOR__WIDE_LIMBS, b->w,
+    vor__mw_mul(r->w, VOR__WIDE_LIMBS, a->w, VOR__WIDE_LIMBS, b->w,
                 VOR__WIDE_LIMBS);
-    return r;
 }
 
-/* a*d - b*c */
-static wide_t wide_det2(const wide_t *a, const wide_t *b, const wide_t *c,
-                        const wide_t *d)
+/* r = a*d - b*c */
+static void wide_det2(wide_t *r, const wide_t *a, const wide_t *b, const wide_t *c,
+                      const wide_t *d)
 {
-    wide_t ad = wide_mul(a, d);
-    wide_t bc = wide_mul(b, c);
-    vor__mw_sub(ad.w, bc.w, VOR__WIDE_LIMBS);
-    return ad;
+    wide_t bc;
+    wide_mul(r, a, d);
+    wide_mul(&bc, b, c);
+    vor__mw_sub(r->w, bc.w, VOR__WIDE_LIMBS);
 }
 
 static int wide_det3_sign(const wide_t *m[3][3])
 {
-    wide_t sum = wide_from(0);
+    wide_t sum, minor, term;
+    wide_from(&sum, 0);
     for (unsigned c = 0; c < 3; c++) {
         unsigned c1 = next_of[c], c2 = next_of[c1];
-        wide_t minor = wide_det2(m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
-        wide_t term = wide_mul(m[0][c], &minor);
+        wide_det2(&minor, m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
+        wide_mul(&term, m[0][c], &minor);
         vor__mw_add(sum.w, term.w, VOR__WIDE_LIMBS);
     }
     return vor__mw_sign(sum.w, VOR__WIDE_LIMBS);
@@ -482,16 +484,17 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         }
     } else {
         static const wide_t zero = {{0}};
-        wide_t one = wide_from(1);
+        wide_t one, yy;
         wide_t point[3][3], twice[3][2];
+        wide_from(&one, 1);
         for (size_t r = 0; r < 3; r++) {
-            point[r][0] = wide_from(x[r]);
-            point[r][1] = wide_from(y[r]);
-            point[r][2] = wide_mul(&point[r][0], &point[r][0]);
-            wide_t yy = wide_mul(&point[r][1], &point[r][1]);
+            wide_from(&point[r][0], x[r]);
+            wide_from(&point[r][1], y[r]);
+            wide_mul(&point[r][2], &point[r][0], &point[r][0]);
+            wide_mul(&yy, &point[r][1], &point[r][1]);
             vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
-            twice[r][0] = wide_from(2 * x[r]);
-            twice[r][1] = wide_from(2 * y[r]);
+            wide_from(&twice[r][0], 2 * x[r]);
+            wide_from(&twice[r][1], 2 * y[r]);
         }
         for (unsigned t = 1; t < 64 && sign == 0; t++) {
             const wide_t *w[3][3];

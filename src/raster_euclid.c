@@ -494,8 +494,8 @@ static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
     }
     uint32_t q = 0;
     for (uint32_t b = bits; b-- > 0u;) {
-        if ((r >> b) >= g) {
-            r -= g << b;
+        if (vor__shr_u64(r, b) >= g) {
+            r -= vor__shl_u64(g, b);
             q |= (uint32_t)1 << b;
         }
     }

@@ -174,16 +174,17 @@ static uint32_t bit_length(uint64_t v)
 /* Lp sums: |dx|^8 + |dy|^8 < 2^257. */
 #define LP_LIMBS VOR__LIMBS(258)
 
-static void limbs_from_u128(vor__limb *r, size_t n, u128_t v)
+/* v by pointer: a structure passed by value is a memcpy call at -Os. */
+static void limbs_from_u128(vor__limb *r, size_t n, const u128_t *v)
 {
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 64
-        r[i] = i == 0u ? v.lo : i == 1u ? v.hi : 0u;
+        r[i] = i == 0u ? v->lo : i == 1u ? v->hi : 0u;
 #else
-        r[i] = i == 0u   ? (uint32_t)v.lo
-               : i == 1u ? (uint32_t)(v.lo >> 32)
-               : i == 2u ? (uint32_t)v.hi
-               : i == 3u ? (uint32_t)(v.hi >> 32)
+        r[i] = i == 0u   ? (uint32_t)v->lo
+               : i == 1u ? (uint32_t)(v->lo >> 32)
+               : i == 2u ? (uint32_t)v->hi
+               : i == 3u ? (uint32_t)(v->hi >> 32)
                          : 0u;
 #endif
     }
@@ -238,7 +239,9 @@ typedef struct key {
     vor__limb wide[LP_LIMBS];
 } rank_key_t;
 
-static void set_unit(rank_key_t *k, u128_t v)
+/* Inline: a 16-byte structure passed by value to a called function is a
+ * memcpy call on RV32 at -Os (the ABI passes a copy by reference). */
+VOR__INLINE void set_unit(rank_key_t *k, u128_t v)
 {
     k->num = v;
     k->den = u128_of(1);
@@ -365,21 +368,21 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     }
     enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
     vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
-    limbs_from_u128(num, NUM, a->num);
+    limbs_from_u128(num, NUM, &a->num);
     if (a->squared) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
-        limbs_from_u128(square, SQUARE, a->num);
+        limbs_from_u128(square, SQUARE, &a->num);
     }
-    limbs_from_u128(den, NUM, b->den);
+    limbs_from_u128(den, NUM, &b->den);
     vor__mw_mul(left, CROSS, square, SQUARE, den, NUM);
-    limbs_from_u128(num, NUM, b->num);
+    limbs_from_u128(num, NUM, &b->num);
     if (b->squared) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
-        limbs_from_u128(square, SQUARE, b->num);
+        limbs_from_u128(square, SQUARE, &b->num);
     }
-    limbs_from_u128(den, NUM, a->den);
+    limbs_from_u128(den, NUM, &a->den);
     vor__mw_mul(right, CROSS, square, SQUARE, den, NUM);
     return mw_ucompare(left, right, CROSS);
 }
@@ -401,9 +404,9 @@ static int additive_sign(size_t n, const u128_t *big_a, const u128_t *big_b,
     }
     vor__limb a[MAX_LIMBS], b[MAX_LIMBS], d[MAX_LIMBS], d2[MAX_LIMBS], e[MAX_LIMBS];
     vor__limb product[MAX_LIMBS], left[MAX_LIMBS], right[MAX_LIMBS];
-    limbs_from_u128(a, n, *big_a);
-    limbs_from_u128(b, n, *big_b);
-    limbs_from_u128(d, n, delta->mag);
+    limbs_from_u128(a, n, big_a);
+    limbs_from_u128(b, n, big_b);
+    limbs_from_u128(d, n, &delta->mag);
     vor__mw_mul(d2, n, d, n, d, n);
     if (!delta->neg) {
         mw_copy(e, a, n);
@@ -626,9 +629,11 @@ VOR__INLINE u128_t u128_shr2(u128_t a)
  * even powers of two down from 2^126, two places a step, so at most 64
  * steps; root + bit < 2^128 throughout. Constant shifts only (no shift
  * call on Cortex-M0). */
-static uint64_t isqrt128(u128_t x)
+static uint64_t isqrt128(const u128_t *value)
 {
-    u128_t root = u128_of(0), bit;
+    u128_t x, root = u128_of(0), bit;
+    x.lo = value->lo; /* field by field: a structure copy may be a memcpy call */
+    x.hi = value->hi;
     bit.lo = 0;
     bit.hi = (uint64_t)1 << 62;
     while (u128_cmp(bit, x) > 0) {
@@ -730,7 +735,7 @@ static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32
     uint32_t p = m->sites->lp_exponent;
     vor__limb sum[LP_LIMBS], power[LP_LIMBS];
     if (m->lp_narrow) {
-        limbs_from_u128(sum, LP_LIMBS, k->num);
+        limbs_from_u128(sum, LP_LIMBS, &k->num);
     } else {
         for (size_t i = 0; i < LP_LIMBS; i++) {
             sum[i] = i < m->limbs ? k->wide[i] : 0u;
@@ -765,18 +770,19 @@ static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32
 static uint32_t rational_distance(const rank_key_t *k)
 {
     if (!k->squared && k->den.lo == 1u && k->den.hi == 0u) {
-        return saturate_u32(isqrt128(k->num));
+        return saturate_u32(isqrt128(&k->num));
     }
     vor__limb num[DIV_LIMBS], x[DIV_LIMBS], den[DIV_LIMBS], q[DIV_LIMBS];
-    limbs_from_u128(num, DIV_LIMBS, k->num);
+    limbs_from_u128(num, DIV_LIMBS, &k->num);
     if (k->squared) {
         vor__mw_mul(x, DIV_LIMBS, num, DIV_LIMBS, num, DIV_LIMBS); /* < 2^130 */
     } else {
         mw_copy(x, num, DIV_LIMBS);
     }
-    limbs_from_u128(den, DIV_LIMBS, k->den);
+    limbs_from_u128(den, DIV_LIMBS, &k->den);
     mw_divide(q, x, den);
-    return saturate_u32(isqrt128(u128_from_limbs(q)));
+    u128_t quotient = u128_from_limbs(q);
+    return saturate_u32(isqrt128(&quotient));
 }
 
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
@@ -796,18 +802,18 @@ static uint32_t metric_distance(const metric_frame_t *m, uint32_t site, int32_t 
         return lp_distance(m, &k, magnitude((int64_t)qx - p->x), magnitude((int64_t)qy - p->y));
     }
     case VOR_METRIC_MULT: /* isqrt(A) < 2^33 */
-        return saturate_u32(divide_u64(isqrt128(k.num), (uint32_t)k.w1));
+        return saturate_u32(divide_u64(isqrt128(&k.num), (uint32_t)k.w1));
     case VOR_METRIC_ADD:
-        return signed_distance(isqrt128(k.num), k.w2);
+        return signed_distance(isqrt128(&k.num), k.w2);
     case VOR_METRIC_COMPOUND:
-        return signed_distance(divide_u64(isqrt128(k.num), (uint32_t)k.w1), k.w2);
+        return signed_distance(divide_u64(isqrt128(&k.num), (uint32_t)k.w1), k.w2);
     case VOR_METRIC_ELLIPTIC:
     case VOR_METRIC_SEGMENT:
     case VOR_METRIC_POLYGON:
     case VOR_METRIC_POLYLINE:
         return rational_distance(&k);
     default: /* FARTHEST, HAUSDORFF: the squared distance */
-        return saturate_u32(isqrt128(k.num));
+        return saturate_u32(isqrt128(&k.num));
     }
 }
 

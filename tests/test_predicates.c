@@ -162,6 +162,30 @@ static void check_multiply(void)
     CHECK(bad_i == 0, "vor__mul_i32 wrong %u times", bad_i);
 }
 
+/* The 64-bit shifts on 32-bit halves, against the compiler's own shift
+ * (on 32-bit targets a libgcc routine or its inline code), for every
+ * amount 0..63 on edge and random values. */
+static void check_shift(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 11);
+    static const uint64_t edges[] = {0u, 1u, 0xFFFFFFFFu, 0x100000000u, 0x8000000000000000u,
+                                     0xFFFFFFFFFFFFFFFFu};
+    unsigned bad_left = 0, bad_right = 0;
+    for (unsigned n = 0; n < 64; n++) {
+        uint64_t v = (n < 6) ? edges[n]
+                             : ((uint64_t)test_rng_u32(&rng) << 32) | test_rng_u32(&rng);
+        for (unsigned s = 0; s < 64; s++) {
+            volatile uint64_t wv = v; /* keep the reference a real variable shift */
+            volatile unsigned ws = s;
+            bad_left += (vor__shl_u64(v, s) != wv << ws) ? 1u : 0u;
+            bad_right += (vor__shr_u64(v, s) != wv >> ws) ? 1u : 0u;
+        }
+    }
+    CHECK(bad_left == 0, "vor__shl_u64 wrong %u times", bad_left);
+    CHECK(bad_right == 0, "vor__shr_u64 wrong %u times", bad_right);
+}
+
 /* Perturbed signs of every ordered triple and quadruple of a 3x3 grid with
  * a repeated point: antisymmetric in the order of the arguments, the
  * defining property the perturbation must keep for any index order. */
@@ -206,6 +230,7 @@ static void check_grid_antisymmetry(void)
 void test_predicates(void)
 {
     check_multiply();
+    check_shift();
     check_vectors();
     check_grid_antisymmetry();
 }

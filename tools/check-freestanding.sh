@@ -9,6 +9,11 @@
 set -u
 nm_tool=$1
 archive=$2
+# nm prints nothing for a missing archive, which must not pass
+if [ ! -f "$archive" ]; then
+    echo "$archive: no such archive"
+    exit 1
+fi
 # undefined in some object and defined in none: calls leaving the library
 defined=$("$nm_tool" --defined-only "$archive" 2>/dev/null | awk 'NF == 3 { print $3 }' | sort -u)
 undefined=$("$nm_tool" -u "$archive" 2>/dev/null | awk 'NF == 2 && $1 == "U" { print $2 }' | sort -u |

@@ -9,6 +9,9 @@
 #               and examples/contours; host programs only, never the library)
 #   python      python3 (test vectors, CLI tests, the demo's PNG)
 #   toolchains  the cross compilers and QEMU of every target
+#   clang       clang, for make test's freestanding check (the library
+#               compiled with a second compiler at every level)
+#   cmake       cmake, for make test's consumers of the CMake package
 #   bench       the Delaunay benchmark's peers, CGAL and Boost.Polygon
 #   bench-query the query benchmark's peers, CGAL and nanoflann
 #
@@ -36,6 +39,8 @@ members() {
         echo "qemu-system-arm qemu-system-arm"
         echo "qemu-system-misc qemu-system-riscv32"
         ;;
+    clang) echo "clang clang" ;;
+    cmake) echo "cmake cmake" ;;
     bench)
         echo "g++ g++"
         echo "libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h"
@@ -70,7 +75,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains bench bench-query)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

@@ -8,7 +8,7 @@
 # command-line tool,
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
-# else outside itself, the check that a firmware links only the
+# else outside itself (also built with GCC and clang at -O1 to -Oz), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
 # the build-system manifests, and the CMake package in consumer programs
 # (tools/test-consumers.sh). Each suite ends with "N passed, N failed"; a suite that does not
@@ -132,6 +132,44 @@ freestanding() {
             failed=$((failed + 1))
         fi
     done
+    # The sources as a firmware may compile them: Cortex-M0 and RISC-V 32,
+    # with GCC and clang, at every optimisation level, warnings as errors.
+    # GCC on ARMv6-M gets -fno-jump-tables, the one flag the promise needs
+    # (docs/porting.md); without it only libgcc's case helpers may appear.
+    local compiler level dir opt
+    local -a args
+    for target in cortex-m0 riscv32; do
+        nm=arm-none-eabi-nm
+        [ "$target" = riscv32 ] && nm=riscv64-unknown-elf-nm
+        for compiler in gcc clang; do
+            for level in -O1 -O2 -O3 -Os -Oz; do
+                dir=build/freestanding/$compiler-$target$level
+                opt=$level
+                args=(PORT="$target" B="$dir")
+                case $compiler-$target in
+                    gcc-cortex-m0) opt="$level -fno-jump-tables" ;;
+                    clang-cortex-m0) args+=(CC="clang --target=armv6m-none-eabi") ;;
+                    clang-riscv32) args+=(CC="clang --target=riscv32-unknown-elf") ;;
+                esac
+                if make -s -j"$jobs" "${args[@]}" OPT="$opt" lib >>"$log" 2>&1 &&
+                    tools/check-freestanding.sh "$nm" "$dir/libvor.a" >>"$log" 2>&1; then
+                    passed=$((passed + 1))
+                else
+                    echo "FAIL $compiler $target $opt: a warning, or a call outside the library" >>"$log"
+                    failed=$((failed + 1))
+                fi
+            done
+        done
+    done
+    dir=build/freestanding/gcc-cortex-m0-Os-jump-tables
+    if make -s -j"$jobs" PORT=cortex-m0 B="$dir" OPT=-Os lib >>"$log" 2>&1 &&
+        ! tools/check-freestanding.sh arm-none-eabi-nm "$dir/libvor.a" 2>&1 |
+            grep -v 'calls external symbol __gnu_thumb1_case_' | tee -a "$log" | grep -q .; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL gcc cortex-m0 -Os with jump tables calls more than __gnu_thumb1_case_*" >>"$log"
+        failed=$((failed + 1))
+    fi
     # an object that uses float and memcpy must be rejected
     local bad=build/test-logs/bad
     mkdir -p "$bad"

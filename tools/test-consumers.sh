@@ -19,7 +19,7 @@ rm -rf "$work"
 mkdir -p "$work"
 
 if ! command -v cmake >/dev/null 2>&1; then
-    tools/apt-install.sh test-consumers cmake || { echo "cmake is missing"; echo "0 passed, 1 failed"; exit 1; }
+    tools/install-deps.sh cmake || { echo "cmake is missing"; echo "0 passed, 1 failed"; exit 1; }
 fi
 
 # The Cortex-M3 runner of port/cortex-m3/port.mk.
