@@ -24,17 +24,21 @@
  * paths; forcing them inline lets the compiler unroll the loops. The wider
  * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
  * not pay for their registers and stack. */
-#if defined(__GNUC__) && defined(__OPTIMIZE_SIZE__)
-/* -Os: the compiler weighs size, so it decides what to inline (a third
- * less flash for the predicates) */
-#define VOR__INLINE static inline
-#define VOR__NOINLINE __attribute__((noinline))
-#elif defined(__GNUC__)
-#define VOR__INLINE static inline __attribute__((always_inline))
+#if defined(__GNUC__)
+#define VOR__ALWAYS_INLINE static inline __attribute__((always_inline))
 #define VOR__NOINLINE __attribute__((noinline))
 #else
-#define VOR__INLINE static inline
+#define VOR__ALWAYS_INLINE static inline
 #define VOR__NOINLINE
+#endif
+/* At -Os the compiler weighs size, so it decides what to inline (a third
+ * less flash for the predicates). Helpers that take or return structures
+ * by value use VOR__ALWAYS_INLINE: out of line, their copies would be
+ * memcpy calls. */
+#if defined(__OPTIMIZE_SIZE__)
+#define VOR__INLINE static inline
+#else
+#define VOR__INLINE VOR__ALWAYS_INLINE
 #endif
 
 #if VOR_LIMB_BITS == 64

@@ -60,7 +60,7 @@ typedef struct s128 {
     int neg;
 } s128_t;
 
-VOR__INLINE u128_t u128_of(uint64_t v)
+VOR__ALWAYS_INLINE u128_t u128_of(uint64_t v)
 {
     u128_t r;
     r.lo = v;
@@ -68,7 +68,7 @@ VOR__INLINE u128_t u128_of(uint64_t v)
     return r;
 }
 
-VOR__INLINE u128_t u128_mul(uint64_t a, uint64_t b)
+VOR__ALWAYS_INLINE u128_t u128_mul(uint64_t a, uint64_t b)
 {
     u128_t r;
     uint64_t high; /* not &r.hi: r stays in registers, no memcpy */
@@ -78,7 +78,7 @@ VOR__INLINE u128_t u128_mul(uint64_t a, uint64_t b)
 }
 
 /* a * b, for a product known to be below 2^128. */
-VOR__INLINE u128_t u128_mul64(u128_t a, uint64_t b)
+VOR__ALWAYS_INLINE u128_t u128_mul64(u128_t a, uint64_t b)
 {
     u128_t r = u128_mul(a.lo, b);
     uint64_t ignored;
@@ -86,7 +86,7 @@ VOR__INLINE u128_t u128_mul64(u128_t a, uint64_t b)
     return r;
 }
 
-VOR__INLINE u128_t u128_add(u128_t a, u128_t b)
+VOR__ALWAYS_INLINE u128_t u128_add(u128_t a, u128_t b)
 {
     u128_t r;
     r.lo = a.lo + b.lo;
@@ -95,7 +95,7 @@ VOR__INLINE u128_t u128_add(u128_t a, u128_t b)
 }
 
 /* a - b for a >= b. */
-VOR__INLINE u128_t u128_sub(u128_t a, u128_t b)
+VOR__ALWAYS_INLINE u128_t u128_sub(u128_t a, u128_t b)
 {
     u128_t r;
     r.lo = a.lo - b.lo;
@@ -103,7 +103,7 @@ VOR__INLINE u128_t u128_sub(u128_t a, u128_t b)
     return r;
 }
 
-VOR__INLINE int u128_cmp(u128_t a, u128_t b)
+VOR__ALWAYS_INLINE int u128_cmp(u128_t a, u128_t b)
 {
     if (a.hi != b.hi) {
         return a.hi < b.hi ? -1 : 1;
@@ -114,19 +114,19 @@ VOR__INLINE int u128_cmp(u128_t a, u128_t b)
     return 0;
 }
 
-VOR__INLINE int u128_is_zero(u128_t a)
+VOR__ALWAYS_INLINE int u128_is_zero(u128_t a)
 {
     return a.lo == 0u && a.hi == 0u;
 }
 
 /* |d| for the difference of two int32 values: below 2^32. */
-VOR__INLINE uint32_t magnitude(int64_t d)
+VOR__ALWAYS_INLINE uint32_t magnitude(int64_t d)
 {
     return (uint32_t)(d < 0 ? -d : d);
 }
 
 /* x * y for |x|, |y| < 2^32. */
-VOR__INLINE s128_t s128_product(int64_t x, int64_t y)
+VOR__ALWAYS_INLINE s128_t s128_product(int64_t x, int64_t y)
 {
     s128_t r;
     r.mag = u128_of(vor__mul_u32(magnitude(x), magnitude(y)));
@@ -135,7 +135,7 @@ VOR__INLINE s128_t s128_product(int64_t x, int64_t y)
 }
 
 /* a + b, for sums below 2^128 in magnitude. */
-VOR__INLINE s128_t s128_add(s128_t a, s128_t b)
+VOR__ALWAYS_INLINE s128_t s128_add(s128_t a, s128_t b)
 {
     s128_t r;
     if (a.neg == b.neg) {
@@ -153,7 +153,7 @@ VOR__INLINE s128_t s128_add(s128_t a, s128_t b)
 }
 
 /* ax^2 + ay^2 < 2^65. */
-VOR__INLINE u128_t square_sum(uint32_t ax, uint32_t ay)
+VOR__ALWAYS_INLINE u128_t square_sum(uint32_t ax, uint32_t ay)
 {
     return u128_add(u128_of(vor__mul_u32(ax, ax)), u128_of(vor__mul_u32(ay, ay)));
 }
@@ -243,7 +243,7 @@ typedef struct key {
 
 /* Inline: a 16-byte structure passed by value to a called function is a
  * memcpy call on RV32 at -Os (the ABI passes a copy by reference). */
-VOR__INLINE void set_unit(rank_key_t *k, u128_t v)
+VOR__ALWAYS_INLINE void set_unit(rank_key_t *k, u128_t v)
 {
     k->num = v;
     k->den = u128_of(1);
@@ -251,7 +251,7 @@ VOR__INLINE void set_unit(rank_key_t *k, u128_t v)
 }
 
 /* x^p for x^p < 2^128. */
-VOR__INLINE u128_t power128(uint32_t x, uint32_t p)
+VOR__ALWAYS_INLINE u128_t power128(uint32_t x, uint32_t p)
 {
     u128_t r = u128_of(x);
     for (uint32_t i = 1; i < p; i++) {
@@ -308,7 +308,7 @@ static void point_key(const metric_frame_t *m, uint32_t site, uint32_t ax, uint3
 
 /* a dx^2 + 2 b dx dy + c dy^2 for |dx|, |dy| < 2^32: each term is below
  * 2^96 and the form is positive definite, so every step fits 128 bits. */
-VOR__INLINE u128_t elliptic_form(const vor_raster_sites_t *s, int64_t dx, int64_t dy)
+VOR__ALWAYS_INLINE u128_t elliptic_form(const vor_raster_sites_t *s, int64_t dx, int64_t dy)
 {
     uint32_t ax = magnitude(dx), ay = magnitude(dy);
     u128_t sum = u128_add(u128_mul(vor__mul_u32(ax, ax), (uint32_t)s->form_a),
@@ -611,7 +611,7 @@ static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t
  * docs/design.md, "Distance output", has the bounds.
  */
 
-VOR__INLINE u128_t u128_shr1(u128_t a)
+VOR__ALWAYS_INLINE u128_t u128_shr1(u128_t a)
 {
     u128_t r;
     r.lo = (a.lo >> 1) | (a.hi << 63);
@@ -619,7 +619,7 @@ VOR__INLINE u128_t u128_shr1(u128_t a)
     return r;
 }
 
-VOR__INLINE u128_t u128_shr2(u128_t a)
+VOR__ALWAYS_INLINE u128_t u128_shr2(u128_t a)
 {
     u128_t r;
     r.lo = (a.lo >> 2) | (a.hi << 62);
@@ -713,14 +713,14 @@ static u128_t u128_from_limbs(const vor__limb *a)
     return r;
 }
 
-VOR__INLINE uint32_t saturate_u32(uint64_t v)
+VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
 {
     return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
 }
 
 /* v - w as an int32 bit pattern, saturated at INT32_MAX: v < 2^34 and
  * w >= -2^31, so v - w < 2^35; w < 2^31 keeps it above -2^31. */
-VOR__INLINE uint32_t signed_distance(uint64_t v, int32_t w)
+VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
 {
     int64_t d = (int64_t)v - w;
     return d > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)d;
@@ -845,7 +845,7 @@ static uint32_t interval_gap(int32_t lo1, int32_t hi1, int32_t lo2, int32_t hi2)
 }
 
 /* The squared distance from p to the farthest corner of r. */
-VOR__INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
+VOR__ALWAYS_INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
 {
     return square_sum(reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1));
 }
