@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # vor - build, test and benchmark.
 #
 #   make                    host library build/host/libvor.a and CLI build/host/vor

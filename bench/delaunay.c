@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench/delaunay.c - cost of vor_build per inserted site, on any port.
  *

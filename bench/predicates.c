@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench/predicates.c - cost of each predicate in each tier, on any port.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench/raster.c - speed of vor_raster, on any port, for every metric.
  *

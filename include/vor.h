@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor.h - exact Voronoi diagrams and Delaunay triangulations for
  * microcontrollers. Freestanding C99: no malloc, no libc, no floating point,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor_raster.h - exact discrete Voronoi diagrams, rendered in bands.
  *

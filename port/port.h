@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port.h - the one narrow interface between vor's tests, examples and
  * benchmarks and the machine they run on.

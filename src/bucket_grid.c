@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bucket_grid.c - the coarse grid that gives a query without a hint a
  * nearby site to start from, so that a cold nearest-site query takes O(1)

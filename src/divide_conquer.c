@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * divide_conquer.c - the divide-and-conquer builder (Guibas and Stolfi,
  * Lee and Schachter), made unbreakable by numerical error with Oishi and

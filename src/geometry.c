@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * geometry.c - the Voronoi diagram's geometry, read from the Delaunay mesh:
  * vertices (circumcentres), edges, the convex hull and cells clipped to a

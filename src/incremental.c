@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * incremental.c - the topology-oriented incremental builder (Sugihara and
  * Iri; the insertion order of Ohya, Iri and Murota): dynamic insertion and the batch build.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * insertion_order.c - which site vor_build inserts when, and from where
  * its search starts: duplicate detection and the bucket quadtree order of

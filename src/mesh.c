@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mesh.c - the diagram object: arena layout, the predicates as the mesh
  * uses them, validation, memory figures and triangle iteration.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * mesh.h - the triangle mesh behind the diagram, private to the library.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * multiword.h - fixed-width multi-word integers for the exact predicates
  * (and, later, exact rational geometry). Private to the library.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * predicates.c - the exact geometric predicates and their symbolic
  * perturbation.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * predicates.h - the exact predicates' hot paths, private to the library.
  *

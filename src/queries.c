@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * queries.c - questions asked of a built diagram. Read-only: no query
  * writes the diagram, so several threads may query one diagram at once.

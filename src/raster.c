@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster.c - what every raster entry point shares: the checks of a
  * request, and the band writer, which turns each row's runs of labels into

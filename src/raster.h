@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster.h - what the band writer (raster.c), the entry points and the
  * row producers share.

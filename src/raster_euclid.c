@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_euclid.c - the fast exact path for Euclidean point sites.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_metrics.c - vor_raster: every metric. Euclidean point sites go
  * to vor_raster_euclid (raster.c); this file does the others: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* harness.c - formatter, counters and random numbers for the tests. */
 #include "test.h"
 

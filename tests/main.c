@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* main.c - runs every test group; the port's startup calls it. */
 #include "test.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* raster_reference.c - see raster_reference.h. Slow on purpose: plain
  * schoolbook arithmetic on fixed arrays, one formula per distance. */
 #include "raster_reference.h"

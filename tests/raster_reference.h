@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * raster_reference.h - the brute-force reference of the rasterizer tests,
  * written apart from the library: distances are exact values held as

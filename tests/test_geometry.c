@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_geometry.c - Voronoi vertices, edges, hull and cells against
  * independent references:

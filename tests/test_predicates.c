@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_predicates.c - the exact predicates against the independent oracle
  * (tools/gen_predicate_vectors.py, Python big integers), plus properties

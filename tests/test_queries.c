@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_queries.c - nearest-site queries and neighbour iteration against
  * brute force: exact squared distances in 64-bit integers over every site,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_raster.c - vor_raster against the brute-force reference of
  * raster_reference.c, pixel by pixel, for every output kind, both

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_raster_metrics.c - vor_raster with every metric but Euclidean
  * point sites, against the brute-force reference of raster_reference.c

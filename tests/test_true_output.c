@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_true_output.c - the iterators report the true Delaunay
  * triangulation of the distinct sites, not the perturbed mesh.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # tools/apt-install.sh WHO PACKAGE... - install Debian packages for one of
 # the project's scripts: as root, apt-get update then install; otherwise
 # print the exact command to run and exit 1. WHO names the caller in the

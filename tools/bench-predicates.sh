@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # bench-predicates.sh - `make bench-predicates`: the cost of every predicate
 # tier on the host (ns per call, best of 5 runs) and on Cortex-M0, Cortex-M3
 # and RISC-V 32 (instructions per call, QEMU -icount), as one Markdown table.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # check-freestanding.sh NM ARCHIVE
 #
 # The library must call nothing outside itself: no libc (memcpy, printf,

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Generate the predicate test vectors (build/gen/predicate_vectors.c).
 
 This is an independent oracle for vor's exact predicates: every expected sign

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * tools/png_write.h - PNG output for the host programs (the CLI's
  * `vor raster --png`, examples/contours), through stb_image_write from

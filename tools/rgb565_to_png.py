@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """rgb565_to_png.py IN.rgb565 W H OUT.png - turns a raw frame of native
 little-endian RGB565 pixels (row 0 first), as the demo streams it out of
 the microcontroller, into a PNG. Python's standard library only."""

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # run-tests.sh - everything `make test` runs, with one summary line at the end.
 #
 # Suites: the host tests, the host tests under AddressSanitizer and UBSan,
@@ -10,8 +11,8 @@
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself (also built with GCC and clang at -O1 to -Oz), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
-# the build-system manifests, and the CMake package in consumer programs
-# (tools/test-consumers.sh). Each suite ends with "N passed, N failed"; a suite that does not
+# the build-system manifests, the CMake package in consumer programs
+# (tools/test-consumers.sh), and the SPDX licence line of every file. Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."
@@ -213,6 +214,10 @@ record manifests "$logs/manifests.log" $?
 # on the host and on the emulated Cortex-M3.
 tools/test-consumers.sh >"$logs/consumers.log" 2>&1
 record consumers "$logs/consumers.log" $?
+
+# Every source, header, script and build file names its licence.
+tools/check-spdx.sh >"$logs/spdx.log" 2>&1
+record spdx "$logs/spdx.log" $?
 
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"

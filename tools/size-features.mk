@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tools/size-features.mk - rules for tools/size-features.sh: the
 # Makefile's own variables and rules, plus the bench/size/ firmwares
 # linked with a map against a library with call graphs (-fcallgraph-info).

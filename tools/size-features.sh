@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # tools/size-features.sh TARGET... - `make size`, second table: what a
 # firmware pays for each feature set it uses, at -Os and -O2.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # tools/size-report.sh [-v] TARGET... - `make size`: what vor costs on each
 # target, as one table: flash, static RAM and worst-case stack depth.
 #

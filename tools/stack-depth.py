@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """stack-depth.py - worst-case stack depth of vor's public functions.
 
     tools/stack-depth.py [--worst] FILE.ci|DIR...

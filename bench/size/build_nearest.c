@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/size/build_nearest.c - the batch build (incremental, quadtree
  * order) and nearest-site queries. */
 #include "common.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench/size/common.h - what the feature-set firmwares of `make size`
  * share. Each program calls one set of public functions on inputs the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/size/everything.c - every public function of vor.h and
  * vor_raster.h reachable: the whole library as one firmware keeps it. */
 #include "raster_common.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/size/geometry.c - build and nearest, plus the Voronoi geometry:
  * clipped cells and edges. */
 #include "common.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/size/insert_nearest.c - incremental insertion and nearest-site
  * queries: the smallest useful firmware. */
 #include "common.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/size/raster_all.c - the raster with every metric reachable (the
  * metric comes from input the compiler cannot see). */
 #include "raster_common.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * bench/size/raster_common.h - a 64 x 8 frame in 8-row bands of 8-bit
  * labels, for the raster feature sets of `make size`.

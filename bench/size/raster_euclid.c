@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* bench/size/raster_euclid.c - the discrete Voronoi diagram of Euclidean
  * point sites alone, no Delaunay mesh. */
 #include "raster_common.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* example_io.c - see example_io.h. */
 #include "example_io.h"
 

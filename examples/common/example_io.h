@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * example_io.h - what the example firmwares share: output without a C
  * library, a deterministic random generator, and a brute-force nearest

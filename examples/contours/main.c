@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * examples/contours - contour-map interpolation (seed 002 chapter 6) on
  * the host: reads contour polylines with heights, draws alpha - 1

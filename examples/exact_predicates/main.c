@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * examples/exact_predicates - the exact predicates on inputs that break
  * floating-point geometry, run as firmware (`make demo` runs it on the

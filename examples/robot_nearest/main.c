@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * examples/robot_nearest - a robot driving through 500 beacons asks, at
  * every one of 100,000 steps, which beacon is nearest. A vor_tracker_t

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * examples/voronoi - the main job (`make demo`): a Voronoi diagram of 2,000
  * sites built on the microcontroller itself, in a static arena.

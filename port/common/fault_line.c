@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* port/common/fault_line.c - see fault_line.h. */
 #include "fault_line.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/common/fault_line.h - what the Cortex-M and RISC-V fault handlers
  * share: the exit status, function attributes, and building the one-line

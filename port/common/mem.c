@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/common/mem.c - memcpy, memmove, memset, memcmp and strlen for
  * firmware linked with -nostdlib.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/common/semihost.c - output, exit status and host files for every
  * target, through semihosting (ARM's operations, which RISC-V reuses). The

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/common/semihost.h - the architecture's half of semihosting.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/cortex-m.h - private declarations shared by the Cortex-M
  * port files (not part of vor's interface; see port/port.h for that).

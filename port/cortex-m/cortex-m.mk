@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/cortex-m/cortex-m.mk - what every Cortex-M target shares. A target's
 # port.mk sets TARGET_NAME, CPU_CFLAGS, QEMU_MACHINE and HALF_NS_PER_TICK
 # (its SysTick period under QEMU, in half nanoseconds), then includes this.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/semihost_call.c - the ARM semihosting trap (bkpt 0xAB) for
  * port/common/semihost.c, shared by cortex-m0, cortex-m3 and cortex-m4f.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/startup.c - vector table, reset handler and fault handlers
  * shared by every Cortex-M target (ARMv6-M and ARMv7-M/ARMv7E-M).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/cortex-m/systick.c - vor_port_init and vor_port_counter for every
  * Cortex-M target: a 64-bit SysTick tick count, scaled to instructions.

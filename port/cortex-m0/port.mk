@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/cortex-m0/port.mk - Cortex-M0 under QEMU's microbit board (nRF51),
 # its memory enlarged to 4 MB flash and 2 MB RAM for the test tables.
 TARGET_NAME = cortex-m0

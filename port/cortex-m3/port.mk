@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/cortex-m3/port.mk - Cortex-M3 under QEMU's mps2-an385 board.
 TARGET_NAME = cortex-m3
 CPU_CFLAGS = -mcpu=cortex-m3 -mthumb

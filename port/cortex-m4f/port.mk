@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/cortex-m4f/port.mk - Cortex-M4F under QEMU's mps2-an386 board.
 # Hard-float ABI (vor itself uses no floating point; startup.c enables the
 # FPU for code that does).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/host/port.c - vor's port interface on a hosted POSIX system: the
  * tests, examples and benchmarks run as ordinary programs.

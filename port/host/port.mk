@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/host/port.mk - the machine the build runs on (Linux, macOS, BSD):
 # tests, examples and benchmarks run as ordinary programs.
 # Included by the top-level Makefile (include port/$(PORT)/port.mk); every

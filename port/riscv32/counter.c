@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv32/counter.c - vor_port_init and the instruction counter:
  * the minstret CSR, which counts retired instructions exactly on silicon

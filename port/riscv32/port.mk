@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/riscv32/port.mk - RV32IMAC in machine mode under QEMU's virt board.
 # Included by the top-level Makefile (include port/$(PORT)/port.mk); every
 # path is relative to the repository root, or to $(VOR_ROOT) when set.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv32/riscv32.h - private declarations shared by the RISC-V port
  * files (not part of vor's interface; see port/port.h for that).

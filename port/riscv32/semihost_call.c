@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv32/semihost_call.c - the RISC-V semihosting trap for
  * port/common/semihost.c: a0 = operation, a1 = argument block, and the

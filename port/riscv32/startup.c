@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/riscv32/startup.c - reset entry and trap handler for RV32 in machine
  * mode on QEMU's virt board (-bios none: the hart starts at 0x80000000,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * port/template/port.c - starting point for running vor's tests, examples
  * and benchmarks on a new target. Copy port/template/ to port/<target>/,

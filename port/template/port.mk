@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # port/template/port.mk - copy to port/<your-target>/port.mk and fill in.
 # The top-level Makefile does `include port/$(PORT)/port.mk`, so
 # `make PORT=<your-target> test` builds and runs the test suite with it.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """Tests of the host command-line tool build/host/vor (and of
 examples/contours, build/host/example-contours beside it).
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * test_faults.c - the topology survives wrong arithmetic (seed 003 section
  * 3, fig. 6; seed 000 section 5).

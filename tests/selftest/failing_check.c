@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A test program whose one check fails: the run must end with status 1 and
  * the line "0 passed, 1 failed" (tools/run-tests.sh, suite "harness"). */
 #include "test.h"

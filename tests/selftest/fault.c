@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A test program that traps, like a failed VOR_ASSERT: the run must end
  * with a non-zero status (99 from the target ports' fault handlers). */
 #include "test.h"

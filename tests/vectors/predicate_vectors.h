@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Predicate test vectors: the layout of the table that
  * tools/gen_predicate_vectors.py writes to build/gen/predicate_vectors.c.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # tools/bench/bench.mk - the host benchmarks against other libraries, each
 # with its target figures (tools/bench/run.sh runs both halves):
 #   make bench         the Delaunay build of vor against CGAL and

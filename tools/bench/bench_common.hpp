@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // tools/bench/bench_common.hpp - what the host benchmarks share: the
 // random generator that makes their inputs, and the number formats of
 // their Markdown tables.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 // tools/bench/delaunay.cpp - `make bench`, host part: the Delaunay build of
 // vor against CGAL Delaunay_triangulation_2 (Epick, range insert) and Boost
 // Polygon construct_voronoi, on identical inputs in one process run.

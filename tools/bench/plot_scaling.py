@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
 """plot_scaling.py - `make bench`: the Delaunay build's time per site
 against log2 n as a PNG (the axes of seed 000's Fig. 5.1).
 

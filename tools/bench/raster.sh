@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # tools/bench/raster.sh - `make bench-raster`: vor_raster's speed on the
 # host (megapixels per second, 320x240 and 1920x1080) and instructions per
 # pixel under QEMU -icount (320x240 RGB565 in 16-row bands), each against

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # tools/bench/run.sh - the benchmarks against other libraries, each a host
 # program and a target program:
 #

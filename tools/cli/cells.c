@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor cells --box X0 Y0 X1 Y1 SITES
  *

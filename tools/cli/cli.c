@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cli.c - input, parsing, errors and output shared by the subcommands. */
 #include "cli.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * cli.h - shared pieces of the host command-line tool build/host/vor:
  * input lines, strict integer fields, error exits, buffered output.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor delaunay [--stats] [--order=quadtree|input] [--algo=incremental|dc|dc-quadtree] FILE
  *

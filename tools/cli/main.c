@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * build/host/vor - the host command-line tool (docs/api.md, "CLI").
  *

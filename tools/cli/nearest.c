@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor nearest [--k=K] SITES QUERIES
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor predicates: exact unperturbed signs of orient2d and incircle for
  * lines read from standard input:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * vor raster --size W H --origin OX OY --step SX SY
  *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
