@@ -1,0 +1,220 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * fuzz_common.h - shared by the libFuzzer harnesses of tests/fuzz/: a
+ * reader that turns the fuzz bytes into values (zeros once they run out,
+ * so every input is a complete program), coordinates drawn from the
+ * patterns that break geometry code, and exact wide-integer arithmetic
+ * written apart from the library's (src/multiword.h), so the harnesses are
+ * an independent reference. Host-only, header-only.
+ */
+#ifndef VOR_FUZZ_COMMON_H
+#define VOR_FUZZ_COMMON_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "vor.h"
+
+/* A finding: say what broke, then abort so libFuzzer keeps the input. */
+#define FUZZ_REQUIRE(condition, what)                                          \
+    do {                                                                       \
+        if (!(condition)) {                                                    \
+            fprintf(stderr, "fuzz finding: %s (%s:%d)\n", what, __FILE__,      \
+                    __LINE__);                                                 \
+            abort();                                                           \
+        }                                                                      \
+    } while (0)
+
+typedef struct {
+    const uint8_t *data;
+    size_t size;
+    size_t at;
+} fuzz_reader_t;
+
+static inline uint8_t fuzz_u8(fuzz_reader_t *r)
+{
+    return r->at < r->size ? r->data[r->at++] : 0u;
+}
+
+static inline int fuzz_done(const fuzz_reader_t *r)
+{
+    return r->at >= r->size;
+}
+
+static inline uint32_t fuzz_u32(fuzz_reader_t *r)
+{
+    uint32_t v = 0;
+    for (int i = 0; i < 4; i++)
+        v = (v << 8) | fuzz_u8(r);
+    return v;
+}
+
+static inline int32_t fuzz_i32(fuzz_reader_t *r)
+{
+    return (int32_t)fuzz_u32(r);
+}
+
+static inline int32_t fuzz_saturate(int64_t v)
+{
+    return v < INT32_MIN ? INT32_MIN : v > INT32_MAX ? INT32_MAX : (int32_t)v;
+}
+
+/* The values where int32 arithmetic overflows or a tier changes. */
+static inline int32_t fuzz_corner(uint8_t b)
+{
+    static const int32_t corners[] = {INT32_MIN, INT32_MIN + 1, -1073741824, -65536,
+                                      -1, 0, 1, 65536, 1073741823, INT32_MAX - 1,
+                                      INT32_MAX};
+    return corners[b % (sizeof corners / sizeof corners[0])];
+}
+
+/* A point in one of the patterns that matter, some relative to *previous
+ * (updated): raw int32, int32 corners, near-duplicates, collinear runs,
+ * cocircular sets (lattice points of radius 5 and 25 circles), tiny grids,
+ * huge spacings. */
+static inline vor_point_t fuzz_point(fuzz_reader_t *r, vor_point_t *previous)
+{
+    static const int8_t circle[][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4},
+                                       {-4, 3}, {-5, 0},  {-4, -3}, {-3, -4}, {0, -5},
+                                       {3, -4}, {4, -3}};
+    uint8_t kind = fuzz_u8(r);
+    vor_point_t p;
+    switch (kind % 8u) {
+    case 0:
+        p.x = fuzz_i32(r);
+        p.y = fuzz_i32(r);
+        break;
+    case 1:
+        p.x = fuzz_corner(fuzz_u8(r));
+        p.y = fuzz_corner(fuzz_u8(r));
+        break;
+    case 2: /* near-duplicate of the previous point */
+        p.x = fuzz_saturate((int64_t)previous->x + (int8_t)fuzz_u8(r) % 3);
+        p.y = fuzz_saturate((int64_t)previous->y + (int8_t)fuzz_u8(r) % 3);
+        break;
+    case 3: { /* the next point of a collinear run through the previous one */
+        int64_t step = (int8_t)fuzz_u8(r);
+        int64_t slope = (int8_t)fuzz_u8(r) % 4;
+        p.x = fuzz_saturate((int64_t)previous->x + step);
+        p.y = fuzz_saturate((int64_t)previous->y + step * slope);
+        break;
+    }
+    case 4: { /* on a circle around a fixed centre, scaled by 1 or 5 */
+        uint8_t b = fuzz_u8(r);
+        int32_t scale = (b & 0x80u) ? 5 : 1;
+        p.x = 1000 + circle[(b & 0x7fu) % 12u][0] * scale;
+        p.y = -1000 + circle[(b & 0x7fu) % 12u][1] * scale;
+        break;
+    }
+    case 5:
+        p.x = fuzz_u8(r) % 8;
+        p.y = fuzz_u8(r) % 8;
+        break;
+    case 6: /* huge spacing: multiples of 2^24 */
+        p.x = (int32_t)((uint32_t)(int8_t)fuzz_u8(r) << 24);
+        p.y = (int32_t)((uint32_t)(int8_t)fuzz_u8(r) << 24);
+        break;
+    default:
+        p.x = (int8_t)fuzz_u8(r);
+        p.y = (int8_t)fuzz_u8(r);
+        break;
+    }
+    *previous = p;
+    return p;
+}
+
+/* Signed 256-bit integers, four 64-bit limbs in two's complement, least
+ * significant first: wide enough for every determinant of int32 points. */
+typedef struct {
+    uint64_t limb[4];
+} fuzz_wide_t;
+
+static inline fuzz_wide_t fuzz_wide_from(__int128 v)
+{
+    fuzz_wide_t w;
+    uint64_t fill = v < 0 ? ~0ull : 0ull;
+    w.limb[0] = (uint64_t)v;
+    w.limb[1] = (uint64_t)((unsigned __int128)v >> 64);
+    w.limb[2] = fill;
+    w.limb[3] = fill;
+    return w;
+}
+
+static inline fuzz_wide_t fuzz_wide_add(fuzz_wide_t a, fuzz_wide_t b)
+{
+    unsigned __int128 carry = 0;
+    for (int i = 0; i < 4; i++) {
+        carry += (unsigned __int128)a.limb[i] + b.limb[i];
+        a.limb[i] = (uint64_t)carry;
+        carry >>= 64;
+    }
+    return a;
+}
+
+static inline fuzz_wide_t fuzz_wide_negate(fuzz_wide_t a)
+{
+    for (int i = 0; i < 4; i++)
+        a.limb[i] = ~a.limb[i];
+    return fuzz_wide_add(a, fuzz_wide_from(1));
+}
+
+/* a * b for |a|, |b| < 2^127: the product fits 255 bits. */
+static inline fuzz_wide_t fuzz_wide_mul(__int128 a, __int128 b)
+{
+    int negative = (a < 0) != (b < 0);
+    unsigned __int128 ua = a < 0 ? -(unsigned __int128)a : (unsigned __int128)a;
+    unsigned __int128 ub = b < 0 ? -(unsigned __int128)b : (unsigned __int128)b;
+    uint64_t x[2] = {(uint64_t)ua, (uint64_t)(ua >> 64)};
+    uint64_t y[2] = {(uint64_t)ub, (uint64_t)(ub >> 64)};
+    fuzz_wide_t w = {{0, 0, 0, 0}};
+    for (int i = 0; i < 2; i++) {
+        unsigned __int128 carry = 0;
+        for (int j = 0; j < 2; j++) {
+            carry += (unsigned __int128)x[i] * y[j] + w.limb[i + j];
+            w.limb[i + j] = (uint64_t)carry;
+            carry >>= 64;
+        }
+        w.limb[i + 2] = (uint64_t)carry;
+    }
+    return negative ? fuzz_wide_negate(w) : w;
+}
+
+static inline int fuzz_wide_sign(fuzz_wide_t a)
+{
+    if (a.limb[3] >> 63)
+        return -1;
+    return (a.limb[0] | a.limb[1] | a.limb[2] | a.limb[3]) ? 1 : 0;
+}
+
+/* Exact signs of the three predicates, by the textbook determinants. */
+static inline int fuzz_orient(vor_point_t a, vor_point_t b, vor_point_t c)
+{
+    __int128 det = (__int128)((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) -
+                   (__int128)((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
+    return (det > 0) - (det < 0);
+}
+
+static inline int fuzz_incircle(vor_point_t a, vor_point_t b, vor_point_t c, vor_point_t d)
+{
+    int64_t adx = (int64_t)a.x - d.x, ady = (int64_t)a.y - d.y;
+    int64_t bdx = (int64_t)b.x - d.x, bdy = (int64_t)b.y - d.y;
+    int64_t cdx = (int64_t)c.x - d.x, cdy = (int64_t)c.y - d.y;
+    __int128 alift = (__int128)adx * adx + (__int128)ady * ady;
+    __int128 blift = (__int128)bdx * bdx + (__int128)bdy * bdy;
+    __int128 clift = (__int128)cdx * cdx + (__int128)cdy * cdy;
+    fuzz_wide_t det = fuzz_wide_mul((__int128)bdx * cdy - (__int128)cdx * bdy, alift);
+    det = fuzz_wide_add(det, fuzz_wide_mul((__int128)cdx * ady - (__int128)adx * cdy, blift));
+    det = fuzz_wide_add(det, fuzz_wide_mul((__int128)adx * bdy - (__int128)bdx * ady, clift));
+    return fuzz_wide_sign(det);
+}
+
+/* |q - p|^2, exact (< 2^65). */
+static inline unsigned __int128 fuzz_distance2(int32_t qx, int32_t qy, vor_point_t p)
+{
+    int64_t dx = (int64_t)qx - p.x, dy = (int64_t)qy - p.y;
+    return (unsigned __int128)((__int128)dx * dx) + (unsigned __int128)((__int128)dy * dy);
+}
+
+#endif
