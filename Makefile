@@ -235,3 +235,5 @@ bench-raster:
 
 clean:
 	rm -rf build
+
+include tests/fuzz/fuzz.mk

@@ -79,6 +79,17 @@ else
     record cli "$cli_log" 1
 fi
 
+# The libFuzzer harnesses (tests/fuzz/): every committed corpus and
+# regression input replayed, then each harness fuzzed for FUZZ_BRIEF
+# seconds (make fuzz runs them for long).
+fuzz_log="$logs/fuzz.log"
+if make -s -j"$jobs" fuzz-harnesses >"$fuzz_log" 2>&1; then
+    tools/fuzz.sh --brief "${FUZZ_BRIEF:-15}" >>"$fuzz_log" 2>&1
+    record fuzz "$fuzz_log" $?
+else
+    record fuzz "$fuzz_log" 1
+fi
+
 for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
     suite "$target" tests PORT="$target"
     suite "$target-faults" fault-tests PORT="$target"

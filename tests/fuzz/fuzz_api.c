@@ -59,7 +59,7 @@ static uint32_t distinct_sites(const model_t *m)
 {
     uint32_t n = 0;
     for (uint32_t i = 0; i < m->count; i++)
-        n += is_site(m, i);
+        n += is_site(m, i) ? 1u : 0u;
     return n;
 }
 
