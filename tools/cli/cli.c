@@ -9,7 +9,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
-#include <unistd.h>
 
 /* The tool is one short-lived process: the --scale setting, the quoted
  * reason of the last bad field and the pending temporary output are
