@@ -784,6 +784,22 @@ def file_error_cases(tmp):
           f"raster --origin 2147483647: {r.stderr!r}")
 
 
+def error_name_cases():
+    """No library error is reachable through the checked arguments, so the
+    table behind "error: CALL: VOR_ERR_X: meaning" is checked against the
+    header: every code of enum vor_error has its name and a meaning."""
+    import os
+    import re
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    header = open(os.path.join(root, "include", "vor.h")).read()
+    source = open(os.path.join(root, "tools", "cli", "cli.c")).read()
+    names = re.findall(r"^\s*(VOR_ERR_[A-Z_]+) = -\d+", header, re.M)
+    check(len(names) >= 9, f"vor.h: only {len(names)} error codes found")
+    for name in names:
+        check(re.search(rf'case {name}: return "{name}: [a-z]', source) is not None,
+              f"tools/cli/cli.c: cli_error_text does not name {name}")
+
+
 def current_umask():
     import os
     mask = os.umask(0)
@@ -958,6 +974,7 @@ def main():
         file_error_cases(tmp)
         input_cases(rng, tmp)
     version_cases()
+    error_name_cases()
 
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1
