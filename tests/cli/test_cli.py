@@ -778,6 +778,22 @@ def file_error_cases(tmp):
         check(r.returncode == 0 and open(out, "rb").read() != b"keep" and sorted(os.listdir(tmp)) == before
               and (os.stat(out).st_mode & 0o777) == 0o666 & ~current_umask(),
               f"raster {kind} over an existing file: {r.returncode} {r.stderr!r} mode {oct(os.stat(out).st_mode)}")
+    # standard output on a full device, and an input without permission
+    if os.path.exists("/dev/full"):
+        with open("/dev/full", "w") as full:
+            r = subprocess.run([VOR, "delaunay", sites], stdout=full, capture_output=False,
+                               stderr=subprocess.PIPE, text=True)
+        want = f"error: <stdout>: {os.strerror(errno.ENOSPC)}\n"
+        check(r.returncode == 2 and r.stderr == want, f"stdout on /dev/full: {r.returncode} {r.stderr!r}")
+    if os.geteuid() != 0:  # root reads any file
+        locked = os.path.join(tmp, "locked.sites")
+        with open(locked, "w") as f:
+            f.write("0 0\n")
+        os.chmod(locked, 0)
+        r = run(["delaunay", locked], "")
+        check(r.returncode == 2 and r.stderr == f"error: {locked}: {os.strerror(errno.EACCES)}\n",
+              f"unreadable file: {r.returncode} {r.stderr!r}")
+        os.remove(locked)
     # a frame outside int32 is explained, not a bare library error number
     r = run(["raster", "--size", "4", "4", "--origin", "2147483647", "0", sites, "--labels", out], "")
     check(r.returncode == 2 and "(2147483650, 3)" in r.stderr and "int32" in r.stderr and "error -1" not in r.stderr,

@@ -508,10 +508,12 @@ void cli_append(cli_output_t *out, const char *format, ...)
 
 void cli_flush(cli_output_t *out)
 {
-    if (out->length > 0 && fwrite(out->data, 1, out->length, stdout) != out->length) {
-        cli_error("writing standard output failed");
+    /* stdout is buffered: a full disk may show only at the flush */
+    if ((out->length > 0 && fwrite(out->data, 1, out->length, stdout) != out->length) ||
+        fflush(stdout) != 0) {
+        fprintf(stderr, "error: <stdout>: %s\n", strerror(errno));
+        exit(2);
     }
-    fflush(stdout);
     free(out->data);
     out->data = NULL;
     out->length = out->capacity = 0;
