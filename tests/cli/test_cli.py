@@ -128,7 +128,7 @@ def delaunay_cases(rng):
     # bad input
     for text, line in (("0 0\n1 2 3\n", 2), ("0 0\n\n1 x\n", 3), ("2147483648 0\n", 1)):
         r = run(["delaunay", "-"], text)
-        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: line {line}: "),
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
               f"delaunay bad input {text!r}: {r.returncode} {r.stderr!r}")
     r = run(["delaunay", "/no/such/file"], "")
     check(r.returncode == 2 and r.stdout == "", "missing file: status 2")
@@ -195,7 +195,7 @@ def nearest_cases(rng, tmp):
     with open(os.path.join(tmp, "bad"), "w") as f:
         f.write("1 2\n3\n")
     r = run(["nearest", os.path.join(tmp, "grid.sites"), os.path.join(tmp, "bad")], "")
-    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: line 2: "),
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {os.path.join(tmp, 'bad')}:2: "),
           f"nearest bad query line: {r.returncode} {r.stderr!r}")
 
 
@@ -243,7 +243,7 @@ def raster_cases(rng, tmp):
         f.write("1 2\n\n3\n")
     r = run(["raster", "--size", "4", "4", "--origin", "0", "0", "--step", "1", "1", bp, "--labels",
              os.path.join(tmp, "bad.raw")], "")
-    check(r.returncode == 2 and r.stderr.startswith("error: line 3: "), f"raster bad line: {r.returncode} {r.stderr!r}")
+    check(r.returncode == 2 and r.stderr.startswith(f"error: {bp}:3: "), f"raster bad line: {r.returncode} {r.stderr!r}")
     for args in (["--size", "0", "4"], ["--size", "4", "4", "--step", "0", "1"], ["--size", "4", "4", "--origin", "2147483647", "0"]):
         r = run(["raster"] + args + [os.path.join(tmp, "huge.sites"), "--labels", os.path.join(tmp, "x.raw")], "")
         check(r.returncode == 2 and r.stderr.startswith("error: "), f"raster bad frame {args}: {r.returncode} {r.stderr!r}")
@@ -358,7 +358,7 @@ def cells_cases(rng, tmp):
     with open(path, "w") as f:
         f.write("0 0\n1 1\n2\n")
     r = run(["cells", "--box", "0", "0", "9", "9", path], "")
-    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: line 3: "),
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {path}:3: "),
           f"cells bad site line: {r.returncode} {r.stderr!r}")
     for args in (["--box", "5", "0", "4", "9", "-"], ["--box", "0", "0", "9", "x", "-"],
                  ["--box", "0", "0", "9", "2147483648", "-"], ["--box", "0", "0", "9", "-"], ["-"]):
@@ -533,7 +533,7 @@ def raster_metric_cases(rng, tmp):
         with open(bp, "w") as f:
             f.write(text)
         r = run(["raster", "--size", "4", "4", "--metric", metric, bp, "--labels", os.path.join(tmp, "bad.raw")], "")
-        check(r.returncode == 2 and r.stderr.startswith(f"error: line {line}: "),
+        check(r.returncode == 2 and r.stderr.startswith(f"error: {bp}:{line}: "),
               f"raster --metric {metric} bad line {text!r}: {r.returncode} {r.stderr!r}")
     for arg in ("lp:0", "lp:9", "lp:x", "ellip:1,2,3", "ellip:0,0,1", "ellip:1,2", "manhattan"):
         r = run(["raster", "--size", "4", "4", "--metric", arg, os.path.join(tmp, "l1-0.sites"), "--labels",
@@ -664,6 +664,290 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells")
+
+
+def help_cases(tmp):
+    """--help and vor COMMAND --help on stdout with status 0; each help's
+    example, run in a shell, prints what the help says it prints."""
+    import os
+    for args in (["--help"], ["help"], ["-h"]):
+        r = run(args, "")
+        check(r.returncode == 0 and r.stderr == "" and all(c in r.stdout for c in COMMANDS)
+              and "x,y" in r.stdout and "--scale" in r.stdout, f"vor {args[0]}: {r.returncode} {r.stderr!r}")
+    env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(VOR)) + os.pathsep + os.environ["PATH"])
+    for command in COMMANDS:
+        for args in ([command, "--help"], ["help", command], [command, "-", "--help"]):
+            r = run(args, "")
+            check(r.returncode == 0 and r.stderr == "" and r.stdout.startswith(f"usage: vor {command}")
+                  and "input:" in r.stdout and "output:" in r.stdout and "example:" in r.stdout,
+                  f"vor {' '.join(args)}: {r.returncode} {r.stdout[:60]!r} {r.stderr!r}")
+        # the example: "  $ command" lines, each followed by its output
+        lines = run([command, "--help"], "").stdout.split("example:\n", 1)[-1].splitlines()
+        steps = []
+        for line in lines:
+            if line.startswith("  $ "):
+                steps.append([line[4:], []])
+            elif steps:
+                steps[-1][1].append(line[2:])
+        check(len(steps) > 0, f"vor {command} --help: no example")
+        for shell, expected in steps:
+            r = subprocess.run(shell, shell=True, cwd=tmp, env=env, capture_output=True, text=True)
+            got = [l.split() for l in r.stdout.splitlines()]
+            check(r.returncode == 0 and got == [l.split() for l in expected],
+                  f"vor {command} --help example {shell!r}: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["bogus"], "")
+    check(r.returncode == 2 and r.stdout == "" and "unknown command 'bogus'" in r.stderr and "vor --help" in r.stderr,
+          f"vor bogus: {r.returncode} {r.stderr!r}")
+    r = run(["help", "bogus"], "")
+    check(r.returncode == 2 and r.stdout == "" and "unknown command 'bogus'" in r.stderr, f"vor help bogus: {r.stderr!r}")
+    r = run(["--bogus"], "")
+    check(r.returncode == 2 and r.stdout == "" and "unknown option '--bogus'" in r.stderr, f"vor --bogus: {r.stderr!r}")
+    r = run([], "")
+    check(r.returncode == 2 and r.stdout == "" and "usage: vor COMMAND" in r.stderr, f"vor: {r.returncode} {r.stderr!r}")
+    # an unknown option is named, with the command's usage
+    for args in (["predicates", "--frobnicate"], ["delaunay", "--frobnicate", "-"], ["nearest", "--frobnicate", "-", "-"],
+                 ["cells", "--box", "0", "0", "1", "1", "--frobnicate", "-"],
+                 ["raster", "--size", "2", "2", "--frobnicate", "-", "--labels", os.path.join(tmp, "x.raw")]):
+        r = run(args, "0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and "unknown option '--frobnicate'" in r.stderr
+              and f"usage: vor {args[0]}" in r.stderr, f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    r = run(["raster", "--size", "2", "2", "-", "--labels"], "0 0\n")
+    check(r.returncode == 2 and "missing value after '--labels'" in r.stderr, f"raster --labels without a path: {r.stderr!r}")
+    r = run(["delaunay", "--scale"], "0 0\n")
+    check(r.returncode == 2 and "--scale" in r.stderr, f"--scale without S: {r.stderr!r}")
+    for bad in ("0", "-1", "x", "1.5.2", ""):
+        r = run(["delaunay", "--scale", bad, "-"], "0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and f"--scale" in r.stderr and f"'{bad}'" in r.stderr,
+              f"--scale {bad!r}: {r.returncode} {r.stderr!r}")
+
+
+def file_error_cases(tmp):
+    """Files that cannot be read or written: status 2, the path and the
+    system's reason, nothing on stdout, an existing output untouched."""
+    import errno
+    import os
+    sites = os.path.join(tmp, "fe.sites")
+    with open(sites, "w") as f:
+        f.write("0 0\n5 1\n2 7\n")
+    missing, not_dir = os.path.join(tmp, "no-such-file"), os.path.join(sites, "x")
+    for path, code in ((tmp, errno.EISDIR), (missing, errno.ENOENT), (not_dir, errno.ENOTDIR)):
+        for args in (["delaunay", path], ["nearest", path, sites], ["nearest", sites, path],
+                     ["cells", "--box", "0", "0", "9", "9", path],
+                     ["raster", "--size", "3", "3", path, "--labels", os.path.join(tmp, "fe.raw")]):
+            r = run(args, "")
+            want = f"error: {path}: {os.strerror(code)}\n"
+            check(r.returncode == 2 and r.stdout == "" and r.stderr == want,
+                  f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}, expected {want!r}")
+    # a NUL byte is an error on its line, not a silently dropped line
+    for text, line in (("0 0\n1\x002\n3 3\n", 2), ("\x00\n", 1), ("0 0\n# c\x00\n", 2)):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: NUL byte"),
+              f"NUL in {text!r}: {r.returncode} {r.stderr!r}")
+    # empty inputs: 0 sites, no output (delaunay, cells), no queries (nearest)
+    empty = os.path.join(tmp, "empty")
+    open(empty, "w").close()
+    for args in (["delaunay", empty], ["cells", "--box", "0", "0", "1", "1", empty], ["nearest", sites, empty],
+                 ["nearest", empty, empty], ["delaunay", "-"]):
+        r = run(args, "# only a comment\n\n")
+        check(r.returncode == 0 and r.stdout == "" and r.stderr == "", f"empty: vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    r = run(["nearest", empty, sites], "")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {empty}: no sites"), f"nearest with no sites: {r.stderr!r}")
+    r = run(["raster", "--size", "2", "2", empty, "--labels", os.path.join(tmp, "fe.raw")], "")
+    check(r.returncode == 2 and r.stderr.startswith(f"error: {empty}: no sites"), f"raster with no sites: {r.stderr!r}")
+    # outputs: a failing run leaves an existing output as it was and no
+    # temporary file behind; an unwritable path names the path and reason
+    out = os.path.join(tmp, "keep.raw")
+    bad_sites = os.path.join(tmp, "fe-bad.sites")
+    with open(bad_sites, "w") as f:
+        f.write("0 0\n1 x\n")
+    for kind in ("--labels", "--png"):
+        with open(out, "w") as f:
+            f.write("keep")
+        before = sorted(os.listdir(tmp))
+        r = run(["raster", "--size", "3", "3", bad_sites, kind, out], "")
+        check(r.returncode == 2 and open(out).read() == "keep" and sorted(os.listdir(tmp)) == before,
+              f"raster {kind} with a bad site line: {r.returncode}, output changed or a temporary file left")
+        for path, code in ((os.path.join(missing, "out"), errno.ENOENT), (tmp, errno.EISDIR),
+                           (os.path.join(not_dir), errno.ENOTDIR)):
+            r = run(["raster", "--size", "3", "3", sites, kind, path], "")
+            want = f"error: {path}: {os.strerror(code)}\n"
+            check(r.returncode == 2 and r.stderr == want, f"raster {kind} {path}: {r.returncode} {r.stderr!r}, expected {want!r}")
+        check(sorted(os.listdir(tmp)) == before, f"raster {kind}: a temporary file was left behind")
+        r = run(["raster", "--size", "3", "3", sites, kind, out], "")
+        check(r.returncode == 0 and open(out, "rb").read() != b"keep" and sorted(os.listdir(tmp)) == before
+              and (os.stat(out).st_mode & 0o777) == 0o666 & ~current_umask(),
+              f"raster {kind} over an existing file: {r.returncode} {r.stderr!r} mode {oct(os.stat(out).st_mode)}")
+    # standard output on a full device, and an input without permission
+    if os.path.exists("/dev/full"):
+        with open("/dev/full", "w") as full:
+            r = subprocess.run([VOR, "delaunay", sites], stdout=full, capture_output=False,
+                               stderr=subprocess.PIPE, text=True)
+        want = f"error: <stdout>: {os.strerror(errno.ENOSPC)}\n"
+        check(r.returncode == 2 and r.stderr == want, f"stdout on /dev/full: {r.returncode} {r.stderr!r}")
+    if os.geteuid() != 0:  # root reads any file
+        locked = os.path.join(tmp, "locked.sites")
+        with open(locked, "w") as f:
+            f.write("0 0\n")
+        os.chmod(locked, 0)
+        r = run(["delaunay", locked], "")
+        check(r.returncode == 2 and r.stderr == f"error: {locked}: {os.strerror(errno.EACCES)}\n",
+              f"unreadable file: {r.returncode} {r.stderr!r}")
+        os.remove(locked)
+    # a frame outside int32 is explained, not a bare library error number
+    r = run(["raster", "--size", "4", "4", "--origin", "2147483647", "0", sites, "--labels", out], "")
+    check(r.returncode == 2 and "(2147483650, 3)" in r.stderr and "int32" in r.stderr and "error -1" not in r.stderr,
+          f"raster --origin 2147483647: {r.stderr!r}")
+
+
+def error_name_cases():
+    """No library error is reachable through the checked arguments, so the
+    table behind "error: CALL: VOR_ERR_X: meaning" is checked against the
+    header: every code of enum vor_error has its name and a meaning."""
+    import os
+    import re
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    header = open(os.path.join(root, "include", "vor.h")).read()
+    source = open(os.path.join(root, "tools", "cli", "cli.c")).read()
+    names = re.findall(r"^\s*(VOR_ERR_[A-Z_]+) = -\d+", header, re.M)
+    check(len(names) >= 9, f"vor.h: only {len(names)} error codes found")
+    for name in names:
+        check(re.search(rf'case {name}: return "{name}: [a-z]', source) is not None,
+              f"tools/cli/cli.c: cli_error_text does not name {name}")
+
+
+def current_umask():
+    import os
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def round_half_away(v):
+    """v rounded to the nearest integer, ties away from zero."""
+    import math
+    from fractions import Fraction as F
+    n = math.floor(abs(v) + F(1, 2))
+    return n if v >= 0 else -n
+
+
+def decimal_text(v):
+    """An exact decimal string of the fraction v (its denominator 2^a 5^b)."""
+    import decimal
+    with decimal.localcontext() as ctx:
+        ctx.prec = 200
+        ctx.traps[decimal.Inexact] = True
+        return str(decimal.Decimal(v.numerator) / decimal.Decimal(v.denominator))
+
+
+def input_cases(rng, tmp):
+    """CSV input and --scale: the same answers as the integer form, and
+    scaled values equal to Python's exact rounding of the fraction."""
+    import os
+    from fractions import Fraction as F
+    pts = [(rng.randint(-10**6, 10**6), rng.randint(-10**6, 10**6)) for _ in range(60)]
+    plain = "".join(f"{x} {y}\n" for x, y in pts)
+    ref = run(["delaunay", "-"], plain)
+    check(ref.returncode == 0 and ref.stdout.startswith("t "), f"delaunay reference: {ref.stderr!r}")
+    forms = {
+        "csv": "".join(f"{x},{y}\n" for x, y in pts),
+        "csv header": "x,y\n" + "".join(f"{x},{y}\n" for x, y in pts),
+        "quoted header, blanks, CRLF": '"x", "y"\r\n' + "".join(f" {x} ,\t{y}\r\n" for x, y in pts),
+        "comment then header": "# exported\nlon,lat\n" + "".join(f"{x},{y}\n" for x, y in pts),
+    }
+    for name, text in forms.items():
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 0 and r.stdout == ref.stdout, f"delaunay {name}: {r.returncode} {r.stderr!r}")
+    sp, qp = os.path.join(tmp, "in.sites"), os.path.join(tmp, "in.queries")
+    queries = [(rng.randint(-10**6, 10**6), rng.randint(-10**6, 10**6)) for _ in range(40)]
+    with open(sp, "w") as f:
+        f.write(forms["csv header"])
+    with open(qp, "w") as f:
+        f.write("qx,qy\n" + "".join(f"{x},{y}\n" for x, y in queries))
+    r = run(["nearest", "--k=3", sp, qp], "")
+    want = [sorted(range(len(pts)), key=lambda i: ((pts[i][0] - qx) ** 2 + (pts[i][1] - qy) ** 2, i))[:3] for qx, qy in queries]
+    check(r.returncode == 0 and [[int(v) for v in l.split()] for l in r.stdout.splitlines()] == want,
+          f"nearest CSV: {r.returncode} {r.stderr!r}")
+    r = run(["cells", "--box", "-1000000", "-1000000", "1000000", "1000000", sp], "")
+    r2 = run(["cells", "--box", "-1000000", "-1000000", "1000000", "1000000", "-"], plain)
+    check(r.returncode == 0 and r.stdout == r2.stdout and r.stdout != "", f"cells CSV: {r.returncode} {r.stderr!r}")
+    r = run(["raster", "--size", "5", "4", "--metric", "add", "-", "--labels", os.path.join(tmp, "csv.raw")], "x,y,w\n1,1,2\n4,3,0\n")
+    r2 = run(["raster", "--size", "5", "4", "--metric", "add", "-", "--labels", os.path.join(tmp, "plain.raw")], "1 1 2\n4 3 0\n")
+    check(r.returncode == 0 and r2.returncode == 0 and open(os.path.join(tmp, "csv.raw"), "rb").read()
+          == open(os.path.join(tmp, "plain.raw"), "rb").read(), f"raster CSV: {r.stderr!r} {r2.stderr!r}")
+    r = run(["predicates"], "o,0,0,1,0,0,1\nc, 0, 0, 2, 0, 0, 2, 2, 2\n")
+    check(r.returncode == 0 and r.stdout == "1\n0\n", f"predicates CSV: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    # malformed CSV, and a header anywhere but first, name their line
+    for text, line, reason in (("0,0\n1,,2\n", 2, "CSV field 2 is empty"), ("0,0\n1,2,\n", 2, "CSV field 3 is empty"),
+                               ("x,y\n0,0\nx,y\n", 3, "'x'"), ("0,0\n1 2,3\n", 2, "blank"),
+                               ("x y\n0 0\n", 1, "'x'"), ("0,0\n1;2\n", 2, "'1;2'"), ("0,0,0\n", 1, "too many fields")):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: ") and reason in r.stderr,
+              f"delaunay {text!r}: {r.returncode} {r.stderr!r}")
+    # --scale: each line compares the scaled x of a with the line x = E of
+    # b and c (E from exact fractions, given as E/S so that it scales back
+    # to E): orient2d is 0 exactly when vor's value equals E
+    scales = ["1", "1000", "0.5", "2.5", "0.001", "64", "1e6", "0.125", "1E-2", "3.2", "+4", "0.0000390625"]
+    fixed = ["0.5", "-0.5", "2.5", "-2.5", "1.49999999999999999999", "-1.5000000000000000000000001", "0", "-0",
+             ".5", "7.", "1e0", "-3E+2", "0.000", "00012.3400"]
+    for scale in scales:
+        values = list(fixed)
+        for _ in range(80):
+            digits = "".join(rng.choice("0123456789") for _ in range(rng.randint(0, 9)))
+            fraction = "".join(rng.choice("0123456789") for _ in range(rng.randint(0, 14)))
+            text = (digits or "0") + ("." + fraction if fraction else "")
+            if rng.random() < 0.3:
+                text += rng.choice("eE") + rng.choice(["", "+", "-"]) + str(rng.randint(0, 4))
+            values.append(rng.choice(["", "-", "+"]) + text)
+        S = F(scale)
+        lines, expected_error = [], None
+        for v in values:
+            e = round_half_away(F(v) * S)
+            if not MIN <= e <= MAX:
+                continue
+            back, unit = decimal_text(F(e) / S), decimal_text(1 / S)
+            lines.append(f"o {v} 0 {back} {unit} {back} -{unit}")
+        r = run(["predicates", "--scale", scale], "\n".join(lines) + "\n")
+        got = r.stdout.split()
+        wrong = sum(g != "0" for g in got)
+        check(r.returncode == 0 and len(got) == len(lines) and wrong == 0,
+              f"--scale {scale}: {r.returncode} {r.stderr!r}, {wrong} of {len(lines)} values differ from exact rounding")
+    # the int32 boundary after scaling, with the line of the bad value
+    for scale, value, ok in (("1", "2147483647.4999999", True), ("1", "2147483647.5", False),
+                             ("1", "-2147483648.4999", True), ("1", "-2147483648.5", False),
+                             ("1000", "2147483.6474999", True), ("1000", "2147483.6475", False),
+                             ("0.001", "2147483647499.99", True), ("1e9", "3", False), ("1", "1e10", False),
+                             ("1", "1e-100000000", True), ("1", "4e100000000", False)):
+        r = run(["delaunay", "--scale", scale, "-"], f"0 0\n# c\n1 {value}\n")
+        if ok:
+            check(r.returncode == 0, f"--scale {scale} {value}: {r.returncode} {r.stderr!r}")
+        else:
+            check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:3: out of int32 range")
+                  and f"'{value}'" in r.stderr, f"--scale {scale} {value}: {r.returncode} {r.stderr!r}")
+    for bad in ("1.2.3", "1e", "--1", ".", "1x", "e5"):
+        r = run(["delaunay", "--scale", "10", "-"], f"0 0\n{bad} 1\n")
+        check(r.returncode == 2 and r.stderr.startswith(f"error: <stdin>:2: not a decimal number: '{bad}'"),
+              f"--scale 10 {bad!r}: {r.returncode} {r.stderr!r}")
+    r = run(["delaunay", "-"], "0 0\n1.5 2\n")
+    check(r.returncode == 2 and "--scale" in r.stderr, f"a decimal without --scale suggests it: {r.stderr!r}")
+    # every command reads scaled points: the same answers as the integers
+    scaled = "".join(f"{decimal_text(F(x, 1000))},{decimal_text(F(y, 1000))}\n" for x, y in pts)
+    r = run(["delaunay", "--scale", "1000", "-"], "x,y\n" + scaled)
+    check(r.returncode == 0 and r.stdout == ref.stdout, f"delaunay --scale: {r.returncode} {r.stderr!r}")
+    cells_ref = run(["cells", "--box", "-1000000", "-1000000", "1000000", "1000000", "-"], plain).stdout
+    r = run(["cells", "--scale", "1000", "--box", "-1000000", "-1000000", "1000000", "1000000", "-"], scaled)
+    check(r.returncode == 0 and r.stdout == cells_ref, f"cells --scale: {r.returncode} {r.stderr!r}")
+    # the queries (integers in qp) are scaled too: 1000 times farther out
+    r = run(["nearest", "--scale", "1000", "-", qp], scaled)
+    want = [min(range(len(pts)), key=lambda i: ((pts[i][0] - 1000 * qx) ** 2 + (pts[i][1] - 1000 * qy) ** 2, i))
+            for qx, qy in queries]
+    check(r.returncode == 0 and [int(v) for v in r.stdout.split()] == want, f"nearest --scale: {r.returncode} {r.stderr!r}")
+    r = run(["raster", "--size", "5", "4", "--metric", "add", "--scale", "10", "-", "--labels", os.path.join(tmp, "csv.raw")],
+            "0.1,0.1,0.2\n0.4,0.3,0\n")
+    check(r.returncode == 0 and open(os.path.join(tmp, "csv.raw"), "rb").read() == open(os.path.join(tmp, "plain.raw"), "rb").read(),
+          f"raster --scale: {r.returncode} {r.stderr!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -690,7 +974,7 @@ def main():
         r = run(["predicates"], text)
         check(r.returncode == 2, f"bad input {text!r}: exit {r.returncode}, expected 2")
         check(r.stdout == "", f"bad input {text!r}: stdout {r.stdout!r}, expected nothing")
-        check(r.stderr.startswith(f"error: line {line}: ") and reason in r.stderr,
+        check(r.stderr.startswith(f"error: <stdin>:{line}: ") and reason in r.stderr,
               f"bad input {text!r}: stderr {r.stderr!r}")
     r = run(["predicates"], "o -2147483648 -2147483648 0 0 2147483647 2147483647\n")
     check(r.stdout == "0\n", f"full-range collinear: {r.stdout!r}")
@@ -702,9 +986,11 @@ def main():
         cells_cases(rng, tmp)
         raster_metric_cases(rng, tmp)
         contours_cases(rng, tmp)
+        help_cases(tmp)
+        file_error_cases(tmp)
+        input_cases(rng, tmp)
     version_cases()
-    r = run(["no-such-command"], "")
-    check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
+    error_name_cases()
 
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1
