@@ -25,6 +25,7 @@ static const struct {
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
+    {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
 };
 
 int main(int argc, char **argv)
