@@ -217,7 +217,7 @@ demo:
 	@echo "frame:     build/demo.png"
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake
+	@tools/install-deps.sh host cli python toolchains clang cmake svg
 	+@tools/run-tests.sh
 
 size:
