@@ -789,14 +789,29 @@ def draw_cases(rng, tmp):
     texts = sorted(int(t.text) for t in root.iter(ns + "text"))
     check(texts == list(range(40)), f"draw --ids: labels {texts}")
     strokes = {p.get("stroke"): p.get("d") for p in root.iter(ns + "path") if p.get("fill") == "none"}
-    hull = strokes.get("#d01010", "")
-    hull_points = [tuple(int(v) for v in c.split()) for c in hull.replace("M", "L").rstrip("Z").split("L")[1:]]
+    # the hull's sides, each "Mx yLx y", from each hull site to the next
+    sides = [[tuple(int(v) for v in end.split()) for end in piece.split("L")]
+             for piece in strokes.get("#d01010", "").split("M")[1:]]
+    hull_points = [side[0] for side in sides]
+    check(all(sides[k - 1][1] == sides[k][0] for k in range(len(sides))), f"draw --hull: sides {sides} do not close")
     check(len(hull_points) >= 3 and all(orient(hull_points[k - 2], hull_points[k - 1], hull_points[k]) >= 0
                                         for k in range(len(hull_points))) and
           all(orient(hull_points[k - 1], hull_points[k], s) >= 0 for k in range(len(hull_points)) for s in sites),
           f"draw --hull: {hull_points} is not the convex hull, counterclockwise")
     triangles = strokes.get("#1f4fbf", "").count("Z")
     check(triangles == 2 * 40 - len(hull_points) - 2, f"draw --triangles: {triangles} triangles, hull {len(hull_points)}")
+    # more pieces than one path holds (libxml2's 10 MB attribute limit):
+    # split into several paths, still every triangle once
+    many = os.path.join(tmp, "many.sites")
+    with open(many, "w") as f:
+        f.write("".join(f"{rng.randint(MIN, MAX)} {rng.randint(MIN, MAX)}\n" for _ in range(3000)))
+    r = run(["draw", "--triangles", many, "-o", svg], "")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(r.returncode == 0 and lint.returncode == 0, f"draw 3000 sites: {r.returncode} {lint.stderr!r}")
+    paths = [p.get("d") for p in ET.parse(svg).getroot().iter(ns + "path") if p.get("stroke") == "#1f4fbf"]
+    triangles = run(["delaunay", many], "").stdout.count("t ")
+    check(len(paths) > 1 and sum(d.count("Z") for d in paths) == triangles,
+          f"draw 3000 sites: {len(paths)} paths, {sum(d.count('Z') for d in paths)} of {triangles} triangles")
     # errors: status 2, nothing written
     out = os.path.join(tmp, "never.svg")
     for args in (["--box", "5", "0", "5", "9", path, "-o", out], [path], [path, "-o", out, "--size", "0", "5"],

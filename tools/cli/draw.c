@@ -45,6 +45,17 @@
 #define DEFAULT_WIDTH 800
 #define MAX_PIXELS 16384
 
+/* libxml2 (xmllint, rsvg-convert) refuses attributes over 10 MB, so a
+ * stroke of many pieces is split into paths of this many pieces each. */
+#define PIECES_PER_PATH 4096u
+
+/* Pieces ("M.. L..") of one stroke style, written as consecutive paths. */
+typedef struct stroke {
+    cli_output_t *out;
+    char head[160]; /* the opening of each path, up to d=" */
+    uint32_t pieces;
+} stroke_t;
+
 /* The picture being written: cell fills go to `svg` as they come, the
  * edges to `edges`, appended after all fills so no fill covers an edge. */
 typedef struct drawing {
@@ -52,7 +63,33 @@ typedef struct drawing {
     double unit; /* library units per pixel, for stroke widths and radii */
     cli_output_t svg;
     cli_output_t edges;
+    stroke_t edge_stroke;
 } drawing_t;
+
+static void stroke_begin(stroke_t *s, cli_output_t *out, const char *colour, double width)
+{
+    s->out = out;
+    s->pieces = 0;
+    snprintf(s->head, sizeof s->head,
+             "<path fill=\"none\" stroke=\"%s\" stroke-width=\"%.4g\" stroke-linejoin=\"round\" d=\"", colour,
+             width);
+}
+
+/* Call before appending each piece. */
+static void stroke_piece(stroke_t *s)
+{
+    if (s->pieces % PIECES_PER_PATH == 0) {
+        cli_append(s->out, "%s%s", s->pieces > 0 ? "\"/>\n" : "", s->head);
+    }
+    s->pieces++;
+}
+
+static void stroke_end(stroke_t *s)
+{
+    if (s->pieces > 0) {
+        cli_append(s->out, "\"/>\n");
+    }
+}
 
 static void site_colour(uint32_t site, char text[8])
 {
@@ -87,8 +124,7 @@ static void begin_svg(drawing_t *g, uint32_t width, uint32_t height)
                "<g transform=\"scale(1 -1)\">\n<g stroke=\"none\">\n",
                b->x0, b->x1, b->y0, b->y1, width, height, b->x0, -(long long)b->y1,
                (long long)b->x1 - b->x0, (long long)b->y1 - b->y0);
-    cli_append(&g->edges, "<path fill=\"none\" stroke=\"#000\" stroke-width=\"%.4g\" stroke-linejoin=\"round\" d=\"",
-               g->unit);
+    stroke_begin(&g->edge_stroke, &g->edges, "#000", g->unit);
 }
 
 static bool on_box_side(const vor_box_t *b, vor_point_t p, vor_point_t q)
@@ -117,6 +153,7 @@ static void add_cell(drawing_t *g, uint32_t site, const vor_point_t *v, uint32_t
     for (uint32_t k = 0; k < count; k++) {
         vor_point_t p = v[k], q = v[(k + 1) % count];
         if (lexicographically_less(p, q) && !on_box_side(&g->box, p, q)) {
+            stroke_piece(&g->edge_stroke);
             cli_append(&g->edges, "M%d %dL%d %d", p.x, p.y, q.x, q.y);
         }
     }
@@ -124,8 +161,8 @@ static void add_cell(drawing_t *g, uint32_t site, const vor_point_t *v, uint32_t
 
 static void end_cells(drawing_t *g)
 {
-    cli_append(&g->edges, "\"/>\n");
-    cli_append(&g->svg, "</g>\n%s", g->edges.data);
+    stroke_end(&g->edge_stroke);
+    cli_append(&g->svg, "</g>\n%s", g->edges.length > 0 ? g->edges.data : "");
     free(g->edges.data);
     g->edges.data = NULL;
 }
@@ -211,26 +248,36 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
     }
     end_cells(g);
     if (triangles) {
-        cli_append(&g->svg, "<path fill=\"none\" stroke=\"#1f4fbf\" stroke-width=\"%.4g\" d=\"", 0.5 * g->unit);
+        stroke_t stroke;
+        stroke_begin(&stroke, &g->svg, "#1f4fbf", 0.5 * g->unit);
         vor_triangle_iter_t t;
         vor_triangles_begin(&t, &d);
         uint32_t abc[3];
         while (vor_triangles_next(&t, abc)) {
+            stroke_piece(&stroke);
             cli_append(&g->svg, "M%d %dL%d %dL%d %dZ", sites[abc[0]].x, sites[abc[0]].y, sites[abc[1]].x,
                        sites[abc[1]].y, sites[abc[2]].x, sites[abc[2]].y);
         }
-        cli_append(&g->svg, "\"/>\n");
+        stroke_end(&stroke);
     }
     if (hull) {
-        cli_append(&g->svg, "<path fill=\"none\" stroke=\"#d01010\" stroke-width=\"%.4g\" d=\"", 1.5 * g->unit);
+        /* one side a piece, from each hull site to the next, closing at the first */
+        stroke_t stroke;
+        stroke_begin(&stroke, &g->svg, "#d01010", 1.5 * g->unit);
         vor_hull_iter_t h;
         vor_hull_begin(&h, &d);
-        char command = 'M';
-        while (vor_hull_next(&h, &site)) {
-            cli_append(&g->svg, "%c%d %d", command, sites[site].x, sites[site].y);
-            command = 'L';
+        uint32_t first, previous;
+        if (vor_hull_next(&h, &first)) {
+            previous = first;
+            while (vor_hull_next(&h, &site)) {
+                stroke_piece(&stroke);
+                cli_append(&g->svg, "M%d %dL%d %d", sites[previous].x, sites[previous].y, sites[site].x, sites[site].y);
+                previous = site;
+            }
+            stroke_piece(&stroke);
+            cli_append(&g->svg, "M%d %dL%d %d", sites[previous].x, sites[previous].y, sites[first].x, sites[first].y);
         }
-        cli_append(&g->svg, "Z\"/>\n");
+        stroke_end(&stroke);
     }
     add_sites(g, sites, n, duplicate_of);
     if (ids) {
