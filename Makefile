@@ -208,13 +208,16 @@ $(B)/vor $(B)/example-contours$(EXE): $(STB_HEADER)
 DEMO_PORT ?= cortex-m3
 # It also renders a 320x240 RGB565 frame in 16-row bands and streams it
 # to build/demo.rgb565 through semihosting; the host turns it into
-# build/demo.png.
-demo:
+# build/demo.png. Its cells go as text to build/demo.cells, which
+# `vor draw --cells` turns into build/demo.svg.
+demo: $(B)/vor
 	@tools/install-deps.sh toolchains python
 	@mkdir -p build
 	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-voronoi
 	@python3 tools/rgb565_to_png.py build/demo.rgb565 320 240 build/demo.png
 	@echo "frame:     build/demo.png"
+	@$(B)/vor draw --cells build/demo.cells -o build/demo.svg
+	@echo "diagram:   build/demo.svg"
 
 test:
 	@tools/install-deps.sh host cli python toolchains clang cmake svg
