@@ -739,6 +739,17 @@ def draw_cases(rng, tmp):
         if v[1] > 0:
             expected.append(("#%02x%02x%02x" % draw_colour(v[0]), list(zip(v[2::2], v[3::2]))))
     check(draw_cells(svg) == expected, f"draw: the cell paths differ from vor cells ({len(expected)} cells)")
+    # the black edges: every side of a cell that is not on the box, once
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    edges = [tuple(tuple(int(v) for v in end.split()) for end in piece.split("L"))
+             for p in ET.parse(svg).getroot().iter(ns + "path") if p.get("stroke") == "#000"
+             for piece in p.get("d").split("M")[1:]]
+    on_box = lambda p, q: (p[0] == q[0] and p[0] in (box[0], box[2])) or (p[1] == q[1] and p[1] in (box[1], box[3]))
+    sides = {frozenset((c[k], c[(k + 1) % len(c)])) for _, c in expected for k in range(len(c))
+             if c[k] != c[(k + 1) % len(c)] and not on_box(c[k], c[(k + 1) % len(c)])}
+    check(len(edges) == len(sides) and {frozenset(e) for e in edges} == sides,
+          f"draw: {len(edges)} edges drawn, {len(sides)} cell sides off the box")
     labels_path = os.path.join(tmp, "draw.raw")
     r = run(["raster", "--size", str(w), str(h), "--origin", str(x0 + step // 2), str(y0 + step // 2),
              "--step", str(step), str(step), path, "--labels", labels_path], "")
@@ -780,8 +791,6 @@ def draw_cases(rng, tmp):
     r = run(["draw", "--cells", dump, "--size", str(w), str(h), "-o", svg_dump], "")
     check(r.returncode == 0 and draw_cells(svg_dump) == expected, f"draw --cells: {r.returncode} {r.stderr!r}")
     # the options: one label a distinct site, 2n - h - 2 triangles
-    import xml.etree.ElementTree as ET
-    ns = "{http://www.w3.org/2000/svg}"
     r = run(["draw", "--triangles", "--ids", "--hull", path, "-o", svg], "")
     lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
     check(r.returncode == 0 and lint.returncode == 0, f"draw --triangles --ids --hull: {r.returncode} {lint.stderr!r}")
