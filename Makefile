@@ -18,7 +18,8 @@
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #
-# Everything a build needs (compilers, QEMU, python3, libstb-dev) is installed
+# Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
+# rsvg-convert) is installed
 # on demand by tools/install-deps.sh, so these work on a fresh Debian machine.
 
 PORT ?= host

@@ -6,6 +6,10 @@
  * Copy from here: reserve the arena with VOR_ARENA_BYTES at compile time,
  * vor_init, vor_build, then query. Nothing is allocated; a too-small arena
  * is caught by the static assertion below rather than at run time.
+ *
+ * For the host it streams a raster frame (build/demo.rgb565) and its cells
+ * clipped to the floor, as text (build/demo.cells, for `vor draw --cells`),
+ * through semihosting files.
  */
 #include "example_io.h"
 #include "port.h"
