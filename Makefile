@@ -19,8 +19,8 @@
 #                           pixel, against the brute-force path
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
-# rsvg-convert) is installed
-# on demand by tools/install-deps.sh, so these work on a fresh Debian machine.
+# rsvg-convert) is installed on demand by tools/install-deps.sh, so these
+# work on a fresh Debian machine.
 
 PORT ?= host
 TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
