@@ -14,6 +14,8 @@
 #   cmake       cmake, for make test's consumers of the CMake package
 #   bench       the Delaunay benchmark's peers, CGAL and Boost.Polygon
 #   bench-query the query benchmark's peers, CGAL and nanoflann
+#   svg         xmllint and rsvg-convert, for the tests of `vor draw` (the
+#               SVG must parse and render like the exact raster)
 #
 # Quiet and exit 0 when every package of the named groups is present; safe
 # to run any number of times. When something is missing: as root, installs
@@ -51,6 +53,10 @@ members() {
         echo "libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h"
         echo "libnanoflann-dev /usr/include/nanoflann.hpp"
         ;;
+    svg)
+        echo "libxml2-utils /usr/bin/xmllint"
+        echo "librsvg2-bin /usr/bin/rsvg-convert"
+        ;;
     *)
         echo "install-deps: unknown group $1" >&2
         exit 2
@@ -75,7 +81,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

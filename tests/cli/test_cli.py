@@ -649,6 +649,189 @@ def contours_cases(rng, tmp):
         check(r.returncode == 2 and r.stderr.startswith("error: "), f"contours bad input {text!r}: {r.returncode} {r.stderr!r}")
 
 
+def read_png(path):
+    """The RGB pixels of an 8-bit RGB or RGBA PNG (rows top first), decoded
+    with zlib alone: enough for rsvg-convert's output."""
+    import struct
+    import zlib
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            w, h, depth, colour_type, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour_type in (2, 6) and interlace == 0, "unsupported PNG"
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    bpp = 3 if colour_type == 2 else 4
+    raw, stride = zlib.decompress(idat), w * bpp
+    rows, prev = [], bytearray(stride)
+    for r in range(h):
+        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[i * bpp:i * bpp + 3]) for i in range(w)])
+        prev = line
+    return rows
+
+
+def draw_colour(site):
+    # the palette of tools/cli/draw.c, written from its documentation
+    c = site * 2654435761 % 2**21
+    return (128 + (c & 127), 128 + ((c >> 7) & 127), 128 + (c >> 14))
+
+
+def draw_cells(svg_path):
+    """The filled cell paths of a `vor draw` SVG as (fill, [vertices])."""
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    cells = []
+    for path in ET.parse(svg_path).getroot().iter(ns + "path"):
+        if path.get("fill", "none") != "none":
+            numbers = [int(v) for v in path.get("d").replace("M", " ").replace("L", " ").replace("Z", " ").split()]
+            cells.append((path.get("fill"), list(zip(numbers[0::2], numbers[1::2]))))
+    return cells
+
+
+def draw_cases(rng, tmp):
+    """vor draw: the SVG parses (xmllint), its cells are `vor cells`'
+    vertices, and rendered by rsvg-convert the colour at every pixel centre
+    well inside a cell is the colour of the site `vor raster --labels`
+    gives for that centre, in a frame whose pixel centres are the SVG's."""
+    import os
+    import shutil
+    import struct
+    if not (shutil.which("xmllint") and shutil.which("rsvg-convert")):
+        check(False, "draw: xmllint and rsvg-convert are needed (tools/install-deps.sh svg)")
+        return
+    sites = [(rng.randint(0, 1000), rng.randint(0, 800)) for _ in range(40)]
+    sites += [sites[3], sites[17]]  # duplicates: drawn once, under the first id
+    path = os.path.join(tmp, "draw.sites")
+    with open(path, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in sites))
+    # pixel (i, row r) of the picture covers x0 + [i, i+1] * step, y1 - [r, r+1] * step
+    w, h, step = 110, 90, 10
+    x0, y0 = -37, -52
+    box = (x0, y0, x0 + w * step, y0 + h * step)
+    svg, png = os.path.join(tmp, "draw.svg"), os.path.join(tmp, "draw.png")
+    r = run(["draw", "--box", *map(str, box), "--size", str(w), str(h), path, "-o", svg], "")
+    check(r.returncode == 0 and r.stdout == "", f"draw: status {r.returncode} {r.stderr!r}")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(lint.returncode == 0 and lint.stderr == "", f"draw: xmllint {lint.returncode} {lint.stderr!r}")
+    r = run(["cells", "--box", *map(str, box), path], "")
+    expected = []
+    for line in r.stdout.splitlines():
+        v = [int(t) for t in line.split()[1:]]
+        if v[1] > 0:
+            expected.append(("#%02x%02x%02x" % draw_colour(v[0]), list(zip(v[2::2], v[3::2]))))
+    check(draw_cells(svg) == expected, f"draw: the cell paths differ from vor cells ({len(expected)} cells)")
+    # the black edges: every side of a cell that is not on the box, once
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    edges = [tuple(tuple(int(v) for v in end.split()) for end in piece.split("L"))
+             for p in ET.parse(svg).getroot().iter(ns + "path") if p.get("stroke") == "#000"
+             for piece in p.get("d").split("M")[1:]]
+    on_box = lambda p, q: (p[0] == q[0] and p[0] in (box[0], box[2])) or (p[1] == q[1] and p[1] in (box[1], box[3]))
+    sides = {frozenset((c[k], c[(k + 1) % len(c)])) for _, c in expected for k in range(len(c))
+             if c[k] != c[(k + 1) % len(c)] and not on_box(c[k], c[(k + 1) % len(c)])}
+    check(len(edges) == len(sides) and {frozenset(e) for e in edges} == sides,
+          f"draw: {len(edges)} edges drawn, {len(sides)} cell sides off the box")
+    labels_path = os.path.join(tmp, "draw.raw")
+    r = run(["raster", "--size", str(w), str(h), "--origin", str(x0 + step // 2), str(y0 + step // 2),
+             "--step", str(step), str(step), path, "--labels", labels_path], "")
+    check(r.returncode == 0, f"draw: raster status {r.returncode} {r.stderr!r}")
+    labels = struct.unpack(f"<{w * h}I", open(labels_path, "rb").read())
+    r = subprocess.run(["rsvg-convert", svg, "-o", png], capture_output=True, text=True)
+    check(r.returncode == 0, f"draw: rsvg-convert {r.returncode} {r.stderr!r}")
+    pixels = read_png(png)
+    check(len(pixels) == h and len(pixels[0]) == w, f"draw: rendered {len(pixels[0])}x{len(pixels)}, asked {w}x{h}")
+    # well inside: 3 pixels from every other cell (edges are 1 pixel wide
+    # and anti-aliased) and 4 from every site (dots of radius 1.5 pixels)
+    margin = 3 * step
+    checked = wrong = 0
+    for j in range(h):
+        for i in range(w):
+            q = (x0 + step // 2 + i * step, y0 + step // 2 + j * step)
+            a = sites[labels[j * w + i]]
+            da = (q[0] - a[0]) ** 2 + (q[1] - a[1]) ** 2
+            if min((q[0] - s[0]) ** 2 + (q[1] - s[1]) ** 2 for s in sites) < (4 * step) ** 2:
+                continue
+            # distance to the bisector with b is (db - da) / (2 |b - a|)
+            if any(s != a and ((q[0] - s[0]) ** 2 + (q[1] - s[1]) ** 2 - da) ** 2 <
+                   4 * margin ** 2 * ((s[0] - a[0]) ** 2 + (s[1] - a[1]) ** 2) for s in sites):
+                continue
+            checked += 1
+            if pixels[h - 1 - j][i] != draw_colour(labels[j * w + i]):
+                wrong += 1
+                if wrong <= 3:
+                    check(False, f"draw: pixel {i},{h - 1 - j} is {pixels[h - 1 - j][i]}, "
+                                 f"site {labels[j * w + i]}'s colour is {draw_colour(labels[j * w + i])}")
+    check(checked > w * h // 3, f"draw: only {checked} of {w * h} pixels well inside cells")
+    check(wrong == 0, f"draw: {wrong} of {checked} pixel colours differ from the raster's sites")
+    # a dump in the firmware's format gives the same cells
+    dump = os.path.join(tmp, "draw.cells")
+    with open(dump, "w") as f:
+        f.write("box %d %d %d %d\n" % box + "".join(f"s {x} {y}\n" for x, y in sites[:40]))
+        f.write(run(["cells", "--box", *map(str, box), path], "").stdout)
+    svg_dump = os.path.join(tmp, "dump.svg")
+    r = run(["draw", "--cells", dump, "--size", str(w), str(h), "-o", svg_dump], "")
+    check(r.returncode == 0 and draw_cells(svg_dump) == expected, f"draw --cells: {r.returncode} {r.stderr!r}")
+    # the options: one label a distinct site, 2n - h - 2 triangles
+    r = run(["draw", "--triangles", "--ids", "--hull", path, "-o", svg], "")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(r.returncode == 0 and lint.returncode == 0, f"draw --triangles --ids --hull: {r.returncode} {lint.stderr!r}")
+    root = ET.parse(svg).getroot()
+    texts = sorted(int(t.text) for t in root.iter(ns + "text"))
+    check(texts == list(range(40)), f"draw --ids: labels {texts}")
+    strokes = {p.get("stroke"): p.get("d") for p in root.iter(ns + "path") if p.get("fill") == "none"}
+    # the hull's sides, each "Mx yLx y", from each hull site to the next
+    sides = [[tuple(int(v) for v in end.split()) for end in piece.split("L")]
+             for piece in strokes.get("#d01010", "").split("M")[1:]]
+    hull_points = [side[0] for side in sides]
+    check(all(sides[k - 1][1] == sides[k][0] for k in range(len(sides))), f"draw --hull: sides {sides} do not close")
+    check(len(hull_points) >= 3 and all(orient(hull_points[k - 2], hull_points[k - 1], hull_points[k]) >= 0
+                                        for k in range(len(hull_points))) and
+          all(orient(hull_points[k - 1], hull_points[k], s) >= 0 for k in range(len(hull_points)) for s in sites),
+          f"draw --hull: {hull_points} is not the convex hull, counterclockwise")
+    triangles = strokes.get("#1f4fbf", "").count("Z")
+    check(triangles == 2 * 40 - len(hull_points) - 2, f"draw --triangles: {triangles} triangles, hull {len(hull_points)}")
+    # more pieces than one path holds (libxml2's 10 MB attribute limit):
+    # split into several paths, still every triangle once
+    many = os.path.join(tmp, "many.sites")
+    with open(many, "w") as f:
+        f.write("".join(f"{rng.randint(MIN, MAX)} {rng.randint(MIN, MAX)}\n" for _ in range(3000)))
+    r = run(["draw", "--triangles", many, "-o", svg], "")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(r.returncode == 0 and lint.returncode == 0, f"draw 3000 sites: {r.returncode} {lint.stderr!r}")
+    paths = [p.get("d") for p in ET.parse(svg).getroot().iter(ns + "path") if p.get("stroke") == "#1f4fbf"]
+    triangles = run(["delaunay", many], "").stdout.count("t ")
+    check(len(paths) > 1 and sum(d.count("Z") for d in paths) == triangles,
+          f"draw 3000 sites: {len(paths)} paths, {sum(d.count('Z') for d in paths)} of {triangles} triangles")
+    # errors: status 2, nothing written
+    out = os.path.join(tmp, "never.svg")
+    for args in (["--box", "5", "0", "5", "9", path, "-o", out], [path], [path, "-o", out, "--size", "0", "5"],
+                 ["--bogus", path, "-o", out], ["--cells", path, "-o", out]):
+        r = run(["draw", *args], "")
+        check(r.returncode == 2 and r.stderr.startswith("error: ") and not os.path.exists(out),
+              f"draw {args}: {r.returncode} {r.stderr!r}")
+    r = run(["draw", path, "-o", os.path.join(tmp, "no-such-dir", "x.svg")], "")
+    check(r.returncode == 2 and "no-such-dir" in r.stderr, f"draw to a missing directory: {r.returncode} {r.stderr!r}")
+
+
 def version_cases():
     # The expected string is read from the header's three numeric macros,
     # so a STRING that disagrees with MAJOR/MINOR/PATCH fails too.
@@ -664,7 +847,7 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
-COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells")
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw")
 
 
 def help_cases(tmp):
@@ -708,6 +891,7 @@ def help_cases(tmp):
     # an unknown option is named, with the command's usage
     for args in (["predicates", "--frobnicate"], ["delaunay", "--frobnicate", "-"], ["nearest", "--frobnicate", "-", "-"],
                  ["cells", "--box", "0", "0", "1", "1", "--frobnicate", "-"],
+                 ["draw", "--frobnicate", "-", "-o", os.path.join(tmp, "x.svg")],
                  ["raster", "--size", "2", "2", "--frobnicate", "-", "--labels", os.path.join(tmp, "x.raw")]):
         r = run(args, "0 0\n")
         check(r.returncode == 2 and r.stdout == "" and "unknown option '--frobnicate'" in r.stderr
@@ -989,6 +1173,7 @@ def main():
         help_cases(tmp)
         file_error_cases(tmp)
         input_cases(rng, tmp)
+        draw_cases(rng, tmp)
     version_cases()
     error_name_cases()
 

@@ -26,6 +26,7 @@ static const struct {
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
+    {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
 };
 
 /* The help of each command (cli.h); a command without one shows its
@@ -39,6 +40,7 @@ static const struct {
     {"nearest", cli_nearest_help},
     {"raster", cli_raster_help},
     {"cells", cli_cells_help},
+    {"draw", cli_draw_help},
 };
 
 static void print_usage(FILE *out)
