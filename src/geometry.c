@@ -192,46 +192,56 @@ static int side_of_line(const geo_line_t *l, const geo_line_t *on)
     return vor__mw_sign(sum, GEO_LIMBS);
 }
 
-/* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
- * site's doubled frame, |v| < 2^98, 0 < w < 2^65. Returns false, with the
- * result saturated, when it is outside int32. The quotient is found by
- * shift and subtract (no divide instruction anywhere): if it fits in int32
- * after adding origin, its magnitude is below 2^33, so 33 steps decide it
- * and a larger one is out of range. */
-static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
-                             int32_t *out)
+/* |rest| / step by shift and subtract (no divide instruction anywhere),
+ * for step > 0 over n limbs, when the quotient is below 2^bits (bits <=
+ * 64): *quotient = floor(|rest| / step), and *negative, *exact say whether
+ * rest was negative and the division exact. Returns false, with only
+ * *negative set, when the quotient is 2^bits or more. step must have
+ * bits + 1 bits of headroom; rest and step are overwritten. */
+static bool divide(vor__limb *rest, vor__limb *step, size_t n, unsigned bits,
+                   uint64_t *quotient, bool *negative, bool *exact)
 {
-    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
-    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
-    for (size_t i = 0; i < GEO_LIMBS; i++) {
-        rest[i] = v[i];
-        step[i] = w[i];
+    bool below_zero = vor__mw_sign(rest, n) < 0;
+    *negative = below_zero;
+    if (below_zero) {
+        vor__mw_neg(rest, n);
     }
-    vor__mw_add(rest, w, GEO_LIMBS);
-    bool negative = vor__mw_sign(rest, GEO_LIMBS) < 0;
-    if (negative) {
-        vor__mw_neg(rest, GEO_LIMBS);
+    for (unsigned k = 0; k < bits; k++) {
+        vor__mw_shl1(step, n);
     }
-    for (unsigned k = 0; k < 34u; k++) { /* 2w 2^33 < 2^99 */
-        vor__mw_shl1(step, GEO_LIMBS);
+    if (vor__mw_compare(rest, step, n) >= 0) {
+        return false;
     }
-    int64_t q;
-    if (vor__mw_compare(rest, step, GEO_LIMBS) >= 0) {
-        q = negative ? -((int64_t)1 << 33) - 1 : ((int64_t)1 << 33); /* |q| >= 2^33 */
-    } else {
-        uint64_t quotient = 0;
-        for (unsigned k = 0; k < 33u; k++) { /* quotient bits 32 .. 0 */
-            vor__mw_shr1(step, GEO_LIMBS);
-            quotient <<= 1;
-            if (vor__mw_compare(rest, step, GEO_LIMBS) >= 0) {
-                vor__mw_sub(rest, step, GEO_LIMBS);
-                quotient |= 1u;
-            }
+    uint64_t q = 0;
+    for (unsigned k = 0; k < bits; k++) { /* quotient bits bits-1 .. 0 */
+        vor__mw_shr1(step, n);
+        q <<= 1;
+        if (vor__mw_compare(rest, step, n) >= 0) {
+            vor__mw_sub(rest, step, n);
+            q |= 1u;
         }
-        bool exact = vor__mw_sign(rest, GEO_LIMBS) == 0;
-        /* floor of a negative quotient: -ceil(|n| / d) */
-        q = negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
     }
+    *quotient = q;
+    *exact = vor__mw_sign(rest, n) == 0;
+    return true;
+}
+
+/* floor(rest / step) for step > 0 when |quotient| < 2^bits (bits < 63);
+ * else a value of magnitude 2^bits or more. */
+static int64_t floor_quotient(vor__limb *rest, vor__limb *step, size_t n, unsigned bits)
+{
+    uint64_t quotient;
+    bool negative, exact;
+    if (!divide(rest, step, n, bits, &quotient, &negative, &exact)) {
+        return negative ? -((int64_t)1 << bits) - 1 : ((int64_t)1 << bits);
+    }
+    /* floor of a negative quotient: -ceil(|n| / d) */
+    return negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
+}
+
+/* origin + q, saturated to int32; false when it had to be. */
+static bool add_saturated(int32_t origin, int64_t q, int32_t *out)
+{
     int64_t r = origin + q;
     if (r < INT32_MIN) {
         *out = INT32_MIN;
@@ -243,6 +253,25 @@ static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t ori
     }
     *out = (int32_t)r;
     return true;
+}
+
+/* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
+ * site's doubled frame, |v| < 2^98, 0 < w < 2^65. Returns false, with the
+ * result saturated, when it is outside int32: if it fits in int32 after
+ * adding origin, the quotient's magnitude is below 2^33, so 33 steps
+ * decide it and a larger one is out of range. */
+static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
+                             int32_t *out)
+{
+    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
+    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        rest[i] = v[i];
+        step[i] = w[i];
+    }
+    vor__mw_add(rest, w, GEO_LIMBS);
+    vor__mw_shl1(step, GEO_LIMBS); /* 2w 2^33 < 2^99 */
+    return add_saturated(origin, floor_quotient(rest, step, GEO_LIMBS, 33u), out);
 }
 
 /* The rounded vertex of p (in the frame of `origin`). */
@@ -760,9 +789,12 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
  * previous one (and the last with the first), rounded when confirmed. The
  * first two are held back so that a result of fewer than three (no area)
  * writes nothing. Three point buffers rotate, so nothing is copied. */
+typedef struct centroid_sum centroid_sum_t;
+
 typedef struct emitter {
     const cell_t *c;
-    vor_point_t *out; /* NULL: only count */
+    vor_point_t *out;     /* NULL: only count */
+    centroid_sum_t *sum;  /* not NULL: vertices go to the centroid's sums */
     uint32_t count;
     vor_point_t held[2];
     geo_point_t pool[3];
@@ -781,8 +813,15 @@ static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
     return side_of(&l, p) == 0;
 }
 
+static void add_vertex(centroid_sum_t *sum, const geo_point_t *p);
+
 static void confirm(emitter_t *e, int index)
 {
+    if (e->sum != NULL) {
+        add_vertex(e->sum, &e->pool[index]);
+        e->count++;
+        return;
+    }
     vor_vertex_t v;
     round_point(&e->pool[index], e->c->s, &v);
     VOR_ASSERT(v.status == VOR_VERTEX_IN_RANGE); /* inside the box */
@@ -892,12 +931,13 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
  * edges in the angular order of their outward normals, from (0, -1). That
  * is the order of a convex polygon's edges, and the first one's start is
  * the lowest vertex. Returns the number of vertices. */
-static uint32_t trace(const cell_t *c, vor_point_t *out)
+static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
 {
     const vor_t *d = c->d;
     emitter_t e;
     e.c = c;
     e.out = out;
+    e.sum = sum;
     e.count = 0;
     e.first = e.last = -1;
     unsigned next_side = 0;
@@ -941,6 +981,22 @@ static bool in_mesh(const vor_t *d, uint32_t site)
     return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
 }
 
+static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t *box)
+{
+    c->d = d;
+    c->site = site;
+    c->s = &d->sites[site];
+    c->box = box;
+    c->start_slot = site;
+    c->degree = 0;
+    if (d->vertex_count >= 2u) {
+        find_start(c);
+    }
+    for (unsigned k = 0; k < 4u; k++) {
+        clip_side(c, k);
+    }
+}
+
 int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
              uint32_t capacity, uint32_t *count)
 {
@@ -953,28 +1009,17 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
         return VOR_OK;
     }
     cell_t c;
-    c.d = d;
-    c.site = site;
-    c.s = &d->sites[site];
-    c.box = box;
-    c.start_slot = site;
-    c.degree = 0;
-    if (d->vertex_count >= 2u) {
-        find_start(&c);
-    }
-    for (unsigned k = 0; k < 4u; k++) {
-        clip_side(&c, k);
-    }
+    begin_cell(&c, d, site, box);
     /* at most one vertex per neighbour and per box side: write at once
      * when that fits, else count first */
     if (capacity < c.degree + 4u) {
-        uint32_t needed = trace(&c, NULL);
+        uint32_t needed = trace(&c, NULL, NULL);
         if (needed > capacity) {
             *count = needed;
             return VOR_ERR_BUFFER;
         }
     }
-    *count = trace(&c, vertices);
+    *count = trace(&c, vertices, NULL);
     return VOR_OK;
 }
 
@@ -1016,4 +1061,275 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, u
     }
     it->next_site++;
     return 1;
+}
+
+/* ------------------------------------------------------------------ */
+/* Area and centroid of a clipped cell                                 */
+
+/*
+ * The cell's exact vertices v_i = (x_i, y_i) / w_i in the site's doubled
+ * frame (0 < w_i < 2^65, |x_i|, |y_i| < 2^98), with v_k = v_0, give by the
+ * shoelace formula
+ *   twice the area  A = sum c_i / (w_i w_{i+1}),
+ *   the moments     M = sum (v_i + v_{i+1}) c_i / (w_i w_{i+1}),
+ * c_i = x_i y_{i+1} - x_{i+1} y_i, and the centroid M / 3A. Each term is
+ * a fraction T_i / (w_i w_{i+1})^2: for A, T = c w_i w_{i+1} (|c| < 2^197,
+ * so |T| < 2^327); for M.x, T = c (x_i w_{i+1} + x_{i+1} w_i) (< 2^361);
+ * M.y alike. TERM_LIMBS (384 bits) holds them.
+ *
+ * The sums are kept over the common denominator Q_k = prod_{m=0..k} w_m^2
+ * (w_0 twice: the last term closes the polygon): term i is added by
+ * N <- N w_{i+1}^2 + T_i Q_{i-1}, so only Q_{i-1} and Q_i are kept. No
+ * reduction is needed as the result is rounded from N_M / N_A, where Q
+ * cancels. Widths: Q_j < 2^(130 (j + 1)). Every vertex is in the box, so
+ * its coordinates in the doubled frame are below 2^33 in magnitude, each
+ * term's value below 2^101, and a partial sum of j < 2^32 terms below
+ * 2^133: |N| < Q_j 2^133. SUM_BITS(j) = 130 j + 288 bits hold every
+ * number of step j, with room for the final divisions (6 N_A 2^34 and
+ * 8 Q 2^64 are below Q 2^105). The numbers grow with the step (live
+ * width), so the cost is O(k^2) limb products for k vertices.
+ */
+#define TERM_LIMBS VOR__LIMBS(384)
+#define SUM_NUMBERS 6u /* N_A, N_X, N_Y, Q_{i-1}, Q_i and a spare */
+
+struct centroid_sum {
+    vor__limb *area, *x, *y;          /* N_A, N_X, N_Y over the denominator */
+    vor__limb *before, *denominator;  /* Q_{i-1}, Q_i */
+    vor__limb *spare;
+    size_t width;                     /* live limbs of every number */
+    uint32_t vertices;
+    geo_point_t first, previous;
+};
+
+/* Limbs of step j's numbers, in 64 bits so that 130 j cannot wrap. */
+static uint64_t sum_limbs(uint32_t j)
+{
+    return ((uint64_t)j * 130u + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+}
+
+/* r[from .. to) = the sign of r[0 .. from): two's complement widened. */
+static void widen(vor__limb *r, size_t from, size_t to)
+{
+    vor__limb fill = (vor__mw_sign(r, from) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
+    for (size_t i = from; i < to; i++) {
+        r[i] = fill;
+    }
+}
+
+/* r = a b over TERM_LIMBS for two's complement a, b that fit in it. */
+static void term_product(vor__limb *r, const vor__limb *a, const vor__limb *b)
+{
+    vor__mw_mul(r, TERM_LIMBS, a, TERM_LIMBS, b, TERM_LIMBS);
+}
+
+/* A GEO_LIMBS number sign-extended to TERM_LIMBS. */
+static void to_term(vor__limb *r, const vor__limb *a)
+{
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        r[i] = a[i];
+    }
+    widen(r, GEO_LIMBS, TERM_LIMBS);
+}
+
+/* n = n w^2 + t before, at the sum's width; t is signed, before >= 0. */
+static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
+                       const vor__limb *square)
+{
+    size_t width = sum->width;
+    vor__limb magnitude[TERM_LIMBS];
+    vor__mw_mul(sum->spare, width, n, width, square, GEO_LIMBS);
+    bool negative = vor__mw_sign(t, TERM_LIMBS) < 0;
+    for (size_t i = 0; i < TERM_LIMBS; i++) {
+        magnitude[i] = t[i];
+    }
+    if (negative) {
+        vor__mw_neg(magnitude, TERM_LIMBS);
+    }
+    vor__mw_mul(n, width, sum->before, width, magnitude, TERM_LIMBS);
+    if (negative) {
+        vor__mw_neg(n, width);
+    }
+    vor__mw_add(n, sum->spare, width);
+}
+
+/* The shoelace term of the edge p -> q. */
+VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
+                                   const geo_point_t *q)
+{
+    vor__limb px[TERM_LIMBS], py[TERM_LIMBS], pw[TERM_LIMBS];
+    vor__limb qx[TERM_LIMBS], qy[TERM_LIMBS], qw[TERM_LIMBS];
+    vor__limb cross[TERM_LIMBS], t[TERM_LIMBS], u[TERM_LIMBS], term[TERM_LIMBS];
+    vor__limb square[GEO_LIMBS];
+    to_term(px, p->x);
+    to_term(py, p->y);
+    to_term(pw, p->w);
+    to_term(qx, q->x);
+    to_term(qy, q->y);
+    to_term(qw, q->w);
+    term_product(cross, px, qy);
+    term_product(t, qx, py);
+    vor__mw_sub(cross, t, TERM_LIMBS);
+    vor__mw_mul(square, GEO_LIMBS, q->w, GEO_LIMBS, q->w, GEO_LIMBS); /* < 2^130 */
+
+    size_t width = (size_t)sum_limbs(sum->vertices);
+    vor__limb *numbers[5] = {sum->area, sum->x, sum->y, sum->before, sum->denominator};
+    for (unsigned i = 0; i < 5u; i++) {
+        widen(numbers[i], sum->width, width);
+    }
+    sum->width = width;
+
+    term_product(u, pw, qw);
+    term_product(term, cross, u);
+    accumulate(sum, sum->area, term, square);
+    term_product(t, px, qw);
+    term_product(u, qx, pw);
+    vor__mw_add(t, u, TERM_LIMBS);
+    term_product(term, cross, t);
+    accumulate(sum, sum->x, term, square);
+    term_product(t, py, qw);
+    term_product(u, qy, pw);
+    vor__mw_add(t, u, TERM_LIMBS);
+    term_product(term, cross, t);
+    accumulate(sum, sum->y, term, square);
+
+    /* Q_{i+1} = Q_i w_{i+1}^2; the buffers rotate instead of copying */
+    vor__mw_mul(sum->spare, width, sum->denominator, width, square, GEO_LIMBS);
+    vor__limb *free_buffer = sum->before;
+    sum->before = sum->denominator;
+    sum->denominator = sum->spare;
+    sum->spare = free_buffer;
+}
+
+static void copy_point(geo_point_t *to, const geo_point_t *from)
+{
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        to->x[i] = from->x[i];
+        to->y[i] = from->y[i];
+        to->w[i] = from->w[i];
+    }
+}
+
+/* The emitter's confirmed vertices, in order. */
+static void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
+{
+    if (sum->vertices == 0u) {
+        copy_point(&sum->first, p);
+        /* Q_{-1} = 1, Q_0 = w_0^2, the sums 0 */
+        sum->width = (size_t)sum_limbs(0);
+        vor__mw_from_u64(sum->before, sum->width, 1u);
+        vor__mw_from_u64(sum->denominator, sum->width, 0u);
+        vor__mw_mul(sum->denominator, sum->width, p->w, GEO_LIMBS, p->w, GEO_LIMBS);
+        vor__mw_from_u64(sum->area, sum->width, 0u);
+        vor__mw_from_u64(sum->x, sum->width, 0u);
+        vor__mw_from_u64(sum->y, sum->width, 0u);
+    } else {
+        add_edge(sum, &sum->previous, p);
+    }
+    copy_point(&sum->previous, p);
+    sum->vertices++;
+}
+
+static int32_t clamp(int32_t v, int32_t low, int32_t high)
+{
+    return (v < low) ? low : (v > high) ? high : v;
+}
+
+/* s + floor(n / (6 N_A) + 1/2) = s + floor((n + 3 N_A) / 6 N_A): the
+ * rounded centroid coordinate, n / 3 N_A in the doubled frame. */
+static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
+{
+    size_t width = sum->width;
+    for (size_t i = 0; i < width; i++) {
+        sum->spare[i] = sum->area[i];
+    }
+    vor__mw_add(sum->spare, sum->area, width);
+    vor__mw_add(sum->spare, sum->area, width); /* 3 N_A */
+    vor__mw_add(n, sum->spare, width);
+    vor__mw_shl1(sum->spare, width); /* 6 N_A */
+    int32_t result;
+    bool in_range = add_saturated(origin, floor_quotient(n, sum->spare, width, 33u), &result);
+    VOR_ASSERT(in_range); /* the centroid is in the cell, so in the box */
+    (void)in_range;
+    return result;
+}
+
+int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void *scratch,
+                      size_t scratch_bytes, vor_centroid_t *out)
+{
+    if (d == NULL || box == NULL || out == NULL || (scratch == NULL && scratch_bytes > 0u) ||
+        box->x0 > box->x1 || box->y0 > box->y1 || !in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    const vor_point_t *s = &d->sites[site];
+    vor_centroid_t result;
+    /* no area: the point of the box nearest the site */
+    result.point.x = clamp(s->x, box->x0, box->x1);
+    result.point.y = clamp(s->y, box->y0, box->y1);
+    result.area = 0;
+    result.vertices = 0;
+    if (box->x0 == box->x1 || box->y0 == box->y1) {
+        *out = result;
+        return VOR_OK;
+    }
+    cell_t c;
+    begin_cell(&c, d, site, box);
+    /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
+    size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
+    uint64_t capacity = (scratch_bytes > skip)
+                            ? (scratch_bytes - skip) / (SUM_NUMBERS * sizeof(vor__limb))
+                            : 0u;
+    /* at most one vertex per neighbour and per box side: count first only
+     * when the scratch might be too small */
+    if (capacity < sum_limbs(c.degree + 4u)) {
+        uint32_t needed = trace(&c, NULL, NULL);
+        if (needed != 0u && capacity < sum_limbs(needed)) {
+            out->vertices = needed;
+            return VOR_ERR_BUFFER;
+        }
+        if (needed == 0u) {
+            *out = result;
+            return VOR_OK;
+        }
+    }
+    vor__limb *limbs = (vor__limb *)(void *)((unsigned char *)scratch + skip);
+    size_t stride = (size_t)capacity;
+    centroid_sum_t sum;
+    sum.area = limbs;
+    sum.x = limbs + stride;
+    sum.y = limbs + 2u * stride;
+    sum.before = limbs + 3u * stride;
+    sum.denominator = limbs + 4u * stride;
+    sum.spare = limbs + 5u * stride;
+    sum.width = 0;
+    sum.vertices = 0;
+    uint32_t count = trace(&c, NULL, &sum);
+    if (count == 0u) {
+        *out = result;
+        return VOR_OK;
+    }
+    add_edge(&sum, &sum.previous, &sum.first);
+    if (vor__mw_sign(sum.area, sum.width) <= 0) {
+        *out = result; /* distinct vertices, but all on one line */
+        return VOR_OK;
+    }
+    result.vertices = count;
+    result.point.x = round_centroid(&sum, sum.x, s->x);
+    result.point.y = round_centroid(&sum, sum.y, s->y);
+    /* the area is N_A / 8 Q in the doubled frame (a factor 4 for the
+     * scale, 2 for "twice"): floor((N_A + 4 Q) / 8 Q), below 2^64 */
+    size_t width = sum.width;
+    for (size_t i = 0; i < width; i++) {
+        sum.spare[i] = sum.denominator[i];
+    }
+    vor__mw_shl1(sum.spare, width);
+    vor__mw_shl1(sum.spare, width);
+    vor__mw_add(sum.area, sum.spare, width);
+    vor__mw_shl1(sum.spare, width);
+    uint64_t area;
+    bool negative, exact;
+    bool fits = divide(sum.area, sum.spare, width, 64u, &area, &negative, &exact);
+    VOR_ASSERT(fits && !negative);
+    result.area = fits ? area : UINT64_MAX;
+    *out = result;
+    return VOR_OK;
 }
