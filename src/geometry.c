@@ -813,12 +813,12 @@ static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
     return side_of(&l, p) == 0;
 }
 
-static void add_vertex(centroid_sum_t *sum, const geo_point_t *p);
+static void hold_vertex(centroid_sum_t *sum, const geo_point_t *p);
 
 static void confirm(emitter_t *e, int index)
 {
     if (e->sum != NULL) {
-        add_vertex(e->sum, &e->pool[index]);
+        hold_vertex(e->sum, &e->pool[index]);
         e->count++;
         return;
     }
@@ -927,10 +927,14 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
     emit(e, n, lo_name);
 }
 
+static void add_held_vertex(centroid_sum_t *sum);
+
 /* One pass over the cell's boundary: the pieces of box sides and Voronoi
  * edges in the angular order of their outward normals, from (0, -1). That
  * is the order of a convex polygon's edges, and the first one's start is
- * the lowest vertex. Returns the number of vertices. */
+ * the lowest vertex. Returns the number of vertices. A confirmed vertex
+ * for the centroid is added here, not in confirm(): the sums' deep frames
+ * then add to the trace's, not to the emitter's. */
 static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
 {
     const vor_t *d = c->d;
@@ -949,10 +953,12 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
                 fan_triangle(c, next, &dummy, &z, &dummy);
                 for (unsigned q = quadrant_of(c, y); next_side <= q; next_side++) {
                     emit_side(&e, next_side);
+                    add_held_vertex(sum);
                 }
                 bool has_start, has_end;
                 if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
                     emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
+                    add_held_vertex(sum);
                 }
             }
             slot = next;
@@ -963,9 +969,11 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
     }
     for (; next_side < 4u; next_side++) {
         emit_side(&e, next_side);
+        add_held_vertex(sum);
     }
     if (e.last >= 0 && e.last != e.first && !same_point(&e, e.first, &e.pool[e.last])) {
         confirm(&e, e.last);
+        add_held_vertex(sum);
     }
     return (e.count >= 3u) ? e.count : 0u;
 }
@@ -1098,13 +1106,31 @@ struct centroid_sum {
     vor__limb *spare;
     size_t width;                     /* live limbs of every number */
     uint32_t vertices;
-    geo_point_t first, previous;
+    bool held;                        /* a confirmed vertex waits in `next` */
+    geo_point_t first, previous, next;
 };
 
-/* Limbs of step j's numbers, in 64 bits so that 130 j cannot wrap. */
-static uint64_t sum_limbs(uint32_t j)
+/* Limbs of step j's numbers, for j <= MAX_SUM_VERTICES (130 j < 2^32). */
+#define MAX_SUM_VERTICES (1u << 24)
+static size_t sum_limbs(uint32_t j)
 {
-    return ((uint64_t)j * 130u + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+    return ((size_t)j * 130u + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+}
+
+/* Does scratch of `bytes` hold the sums of a cell of k vertices? Then
+ * *stride = the limbs of each number. More than MAX_SUM_VERTICES would
+ * need more scratch than a 32-bit address space has. */
+static bool scratch_fits(size_t bytes, uint32_t k, size_t *stride)
+{
+    if (k > MAX_SUM_VERTICES) {
+        return false;
+    }
+    size_t limbs = sum_limbs(k);
+    if (limbs * SUM_NUMBERS * sizeof(vor__limb) > bytes) {
+        return false;
+    }
+    *stride = limbs;
+    return true;
 }
 
 /* r[from .. to) = the sign of r[0 .. from): two's complement widened. */
@@ -1116,19 +1142,32 @@ static void widen(vor__limb *r, size_t from, size_t to)
     }
 }
 
-/* r = a b over TERM_LIMBS for two's complement a, b that fit in it. */
-static void term_product(vor__limb *r, const vor__limb *a, const vor__limb *b)
+/* r = a b over TERM_LIMBS for two's complement a (na limbs) and b (nb
+ * limbs), at most FACTOR_LIMBS each, through their magnitudes: the
+ * toolkit's product is exact for operands narrower than the result only
+ * when they are non-negative. */
+#define FACTOR_LIMBS VOR__LIMBS(224) /* |c| < 2^197, the widest factor */
+static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor__limb *b,
+                         size_t nb)
 {
-    vor__mw_mul(r, TERM_LIMBS, a, TERM_LIMBS, b, TERM_LIMBS);
-}
-
-/* A GEO_LIMBS number sign-extended to TERM_LIMBS. */
-static void to_term(vor__limb *r, const vor__limb *a)
-{
-    for (size_t i = 0; i < GEO_LIMBS; i++) {
-        r[i] = a[i];
+    vor__limb ma[FACTOR_LIMBS], mb[FACTOR_LIMBS];
+    bool a_negative = vor__mw_sign(a, na) < 0, b_negative = vor__mw_sign(b, nb) < 0;
+    for (size_t i = 0; i < na; i++) {
+        ma[i] = a[i];
     }
-    widen(r, GEO_LIMBS, TERM_LIMBS);
+    for (size_t i = 0; i < nb; i++) {
+        mb[i] = b[i];
+    }
+    if (a_negative) {
+        vor__mw_neg(ma, na);
+    }
+    if (b_negative) {
+        vor__mw_neg(mb, nb);
+    }
+    vor__mw_mul(r, TERM_LIMBS, ma, na, mb, nb);
+    if (a_negative != b_negative) {
+        vor__mw_neg(r, TERM_LIMBS);
+    }
 }
 
 /* n = n w^2 + t before, at the sum's width; t is signed, before >= 0. */
@@ -1156,40 +1195,33 @@ static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
 VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
                                    const geo_point_t *q)
 {
-    vor__limb px[TERM_LIMBS], py[TERM_LIMBS], pw[TERM_LIMBS];
-    vor__limb qx[TERM_LIMBS], qy[TERM_LIMBS], qw[TERM_LIMBS];
     vor__limb cross[TERM_LIMBS], t[TERM_LIMBS], u[TERM_LIMBS], term[TERM_LIMBS];
     vor__limb square[GEO_LIMBS];
-    to_term(px, p->x);
-    to_term(py, p->y);
-    to_term(pw, p->w);
-    to_term(qx, q->x);
-    to_term(qy, q->y);
-    to_term(qw, q->w);
-    term_product(cross, px, qy);
-    term_product(t, qx, py);
+    term_product(cross, p->x, GEO_LIMBS, q->y, GEO_LIMBS);
+    term_product(t, q->x, GEO_LIMBS, p->y, GEO_LIMBS);
     vor__mw_sub(cross, t, TERM_LIMBS);
     vor__mw_mul(square, GEO_LIMBS, q->w, GEO_LIMBS, q->w, GEO_LIMBS); /* < 2^130 */
 
-    size_t width = (size_t)sum_limbs(sum->vertices);
+    size_t width = sum_limbs(sum->vertices);
     vor__limb *numbers[5] = {sum->area, sum->x, sum->y, sum->before, sum->denominator};
     for (unsigned i = 0; i < 5u; i++) {
         widen(numbers[i], sum->width, width);
     }
     sum->width = width;
 
-    term_product(u, pw, qw);
-    term_product(term, cross, u);
+    /* t and u below 2^165, the cross product below 2^197 */
+    term_product(u, p->w, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(term, cross, FACTOR_LIMBS, u, FACTOR_LIMBS);
     accumulate(sum, sum->area, term, square);
-    term_product(t, px, qw);
-    term_product(u, qx, pw);
+    term_product(t, p->x, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(u, q->x, GEO_LIMBS, p->w, GEO_LIMBS);
     vor__mw_add(t, u, TERM_LIMBS);
-    term_product(term, cross, t);
+    term_product(term, cross, FACTOR_LIMBS, t, FACTOR_LIMBS);
     accumulate(sum, sum->x, term, square);
-    term_product(t, py, qw);
-    term_product(u, qy, pw);
+    term_product(t, p->y, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(u, q->y, GEO_LIMBS, p->w, GEO_LIMBS);
     vor__mw_add(t, u, TERM_LIMBS);
-    term_product(term, cross, t);
+    term_product(term, cross, FACTOR_LIMBS, t, FACTOR_LIMBS);
     accumulate(sum, sum->y, term, square);
 
     /* Q_{i+1} = Q_i w_{i+1}^2; the buffers rotate instead of copying */
@@ -1209,13 +1241,20 @@ static void copy_point(geo_point_t *to, const geo_point_t *from)
     }
 }
 
+/* A confirmed vertex, kept until the trace adds it. */
+static void hold_vertex(centroid_sum_t *sum, const geo_point_t *p)
+{
+    copy_point(&sum->next, p);
+    sum->held = true;
+}
+
 /* The emitter's confirmed vertices, in order. */
 static void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
 {
     if (sum->vertices == 0u) {
         copy_point(&sum->first, p);
         /* Q_{-1} = 1, Q_0 = w_0^2, the sums 0 */
-        sum->width = (size_t)sum_limbs(0);
+        sum->width = sum_limbs(0);
         vor__mw_from_u64(sum->before, sum->width, 1u);
         vor__mw_from_u64(sum->denominator, sum->width, 0u);
         vor__mw_mul(sum->denominator, sum->width, p->w, GEO_LIMBS, p->w, GEO_LIMBS);
@@ -1229,9 +1268,48 @@ static void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
     sum->vertices++;
 }
 
+/* Field by field: a structure assignment may become a memcpy call. */
+static void write_centroid(vor_centroid_t *out, const vor_centroid_t *from)
+{
+    out->point.x = from->point.x;
+    out->point.y = from->point.y;
+    out->area = from->area;
+    out->vertices = from->vertices;
+}
+
+static void add_held_vertex(centroid_sum_t *sum)
+{
+    if (sum != NULL && sum->held) {
+        sum->held = false;
+        add_vertex(sum, &sum->next);
+    }
+}
+
 static int32_t clamp(int32_t v, int32_t low, int32_t high)
 {
     return (v < low) ? low : (v > high) ? high : v;
+}
+
+/* The limbs a division of the wide sums needs: with m limbs, step 2^bits
+ * < 2^(L (m - 1)). A rest (>= 0) with a limb set at m - 1 or above gives
+ * a quotient too large: then n, and divide() says so. */
+static size_t division_width(const vor__limb *rest, const vor__limb *step, size_t n,
+                             unsigned bits)
+{
+    size_t m = n;
+    while (m > 1u && step[m - 1u] == 0u) {
+        m--;
+    }
+    m += VOR__LIMBS(bits) + 1u;
+    if (m >= n || vor__mw_sign(rest, n) < 0) {
+        return n;
+    }
+    for (size_t i = m - 1u; i < n; i++) {
+        if (rest[i] != 0u) {
+            return n;
+        }
+    }
+    return m;
 }
 
 /* s + floor(n / (6 N_A) + 1/2) = s + floor((n + 3 N_A) / 6 N_A): the
@@ -1247,7 +1325,16 @@ static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
     vor__mw_add(n, sum->spare, width);
     vor__mw_shl1(sum->spare, width); /* 6 N_A */
     int32_t result;
-    bool in_range = add_saturated(origin, floor_quotient(n, sum->spare, width, 33u), &result);
+    /* magnitudes: a negative n is as wide as its negation */
+    bool negative = vor__mw_sign(n, width) < 0;
+    if (negative) {
+        vor__mw_neg(n, width);
+    }
+    size_t m = division_width(n, sum->spare, width, 33u);
+    if (negative) {
+        vor__mw_neg(n, m);
+    }
+    bool in_range = add_saturated(origin, floor_quotient(n, sum->spare, m, 33u), &result);
     VOR_ASSERT(in_range); /* the centroid is in the cell, so in the box */
     (void)in_range;
     return result;
@@ -1268,31 +1355,28 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     result.area = 0;
     result.vertices = 0;
     if (box->x0 == box->x1 || box->y0 == box->y1) {
-        *out = result;
+        write_centroid(out, &result);
         return VOR_OK;
     }
     cell_t c;
     begin_cell(&c, d, site, box);
     /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
-    uint64_t capacity = (scratch_bytes > skip)
-                            ? (scratch_bytes - skip) / (SUM_NUMBERS * sizeof(vor__limb))
-                            : 0u;
+    size_t usable = (scratch_bytes > skip) ? scratch_bytes - skip : 0u, stride;
     /* at most one vertex per neighbour and per box side: count first only
      * when the scratch might be too small */
-    if (capacity < sum_limbs(c.degree + 4u)) {
+    if (!scratch_fits(usable, c.degree + 4u, &stride)) {
         uint32_t needed = trace(&c, NULL, NULL);
-        if (needed != 0u && capacity < sum_limbs(needed)) {
+        if (needed == 0u) {
+            write_centroid(out, &result);
+            return VOR_OK;
+        }
+        if (!scratch_fits(usable, needed, &stride)) {
             out->vertices = needed;
             return VOR_ERR_BUFFER;
         }
-        if (needed == 0u) {
-            *out = result;
-            return VOR_OK;
-        }
     }
     vor__limb *limbs = (vor__limb *)(void *)((unsigned char *)scratch + skip);
-    size_t stride = (size_t)capacity;
     centroid_sum_t sum;
     sum.area = limbs;
     sum.x = limbs + stride;
@@ -1302,14 +1386,15 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     sum.spare = limbs + 5u * stride;
     sum.width = 0;
     sum.vertices = 0;
+    sum.held = false;
     uint32_t count = trace(&c, NULL, &sum);
     if (count == 0u) {
-        *out = result;
+        write_centroid(out, &result);
         return VOR_OK;
     }
     add_edge(&sum, &sum.previous, &sum.first);
     if (vor__mw_sign(sum.area, sum.width) <= 0) {
-        *out = result; /* distinct vertices, but all on one line */
+        write_centroid(out, &result); /* distinct vertices, but all on one line */
         return VOR_OK;
     }
     result.vertices = count;
@@ -1327,9 +1412,10 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     vor__mw_shl1(sum.spare, width);
     uint64_t area;
     bool negative, exact;
-    bool fits = divide(sum.area, sum.spare, width, 64u, &area, &negative, &exact);
+    bool fits = divide(sum.area, sum.spare, division_width(sum.area, sum.spare, width, 64u),
+                       64u, &area, &negative, &exact);
     VOR_ASSERT(fits && !negative);
     result.area = fits ? area : UINT64_MAX;
-    *out = result;
+    write_centroid(out, &result);
     return VOR_OK;
 }
