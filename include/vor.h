@@ -93,7 +93,11 @@
  *
  *   A cell is clipped to the caller's box, counterclockwise, into the
  *   caller's buffer (VOR_ERR_BUFFER and the size needed when it is too
- *   small: nothing is written).
+ *   small: nothing is written). For Lloyd relaxation, a clipped cell's
+ *   area and centroid, exact and rounded once, in caller scratch:
+ *
+ *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
+ *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
  * COST (docs/benchmarks.md has the measured table)
  *   No predicate allocates, recurses or loops over data. A degenerate input

@@ -1094,8 +1094,9 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, u
  * term's value below 2^101, and a partial sum of j < 2^32 terms below
  * 2^133: |N| < Q_j 2^133. SUM_BITS(j) = 130 j + 288 bits hold every
  * number of step j, with room for the final divisions (6 N_A 2^34 and
- * 8 Q 2^64 are below Q 2^105). The numbers grow with the step (live
- * width), so the cost is O(k^2) limb products for k vertices.
+ * 8 Q 2^64 are below Q 2^105). The arithmetic runs at the width the
+ * values fill (at most that bound), so the cost is O(k^2) limb products
+ * for k vertices, less for narrow denominators.
  */
 #define TERM_LIMBS VOR__LIMBS(384)
 #define SUM_NUMBERS 6u /* N_A, N_X, N_Y, Q_{i-1}, Q_i and a spare */
@@ -1142,6 +1143,16 @@ static void widen(vor__limb *r, size_t from, size_t to)
     }
 }
 
+/* Every number of the sums at `width` limbs, where they all fit. */
+static void widen_sums(centroid_sum_t *sum, size_t width)
+{
+    vor__limb *numbers[5] = {sum->area, sum->x, sum->y, sum->before, sum->denominator};
+    for (unsigned i = 0; i < 5u; i++) {
+        widen(numbers[i], sum->width, width);
+    }
+    sum->width = width;
+}
+
 /* r = a b over TERM_LIMBS for two's complement a (na limbs) and b (nb
  * limbs), at most FACTOR_LIMBS each, through their magnitudes: the
  * toolkit's product is exact for operands narrower than the result only
@@ -1170,13 +1181,27 @@ static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor_
     }
 }
 
-/* n = n w^2 + t before, at the sum's width; t is signed, before >= 0. */
+/* The fewest limbs that hold a (n limbs, two's complement) with its sign. */
+static size_t significant(const vor__limb *a, size_t n)
+{
+    vor__limb fill = (vor__mw_sign(a, n) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
+    size_t m = n;
+    while (m > 1u && a[m - 1u] == fill && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
+        m--;
+    }
+    return m;
+}
+
+/* n = n w^2 + t before, at the sum's width; t is signed, before >= 0 and
+ * fills before_limbs, w^2 square_limbs. The non-negative factors are
+ * passed at their own widths, so the products cost what the numbers
+ * hold, not what the bound allows. */
 static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
-                       const vor__limb *square)
+                       const vor__limb *square, size_t square_limbs, size_t before_limbs)
 {
     size_t width = sum->width;
     vor__limb magnitude[TERM_LIMBS];
-    vor__mw_mul(sum->spare, width, n, width, square, GEO_LIMBS);
+    vor__mw_mul(sum->spare, width, n, width, square, square_limbs);
     bool negative = vor__mw_sign(t, TERM_LIMBS) < 0;
     for (size_t i = 0; i < TERM_LIMBS; i++) {
         magnitude[i] = t[i];
@@ -1184,7 +1209,8 @@ static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
     if (negative) {
         vor__mw_neg(magnitude, TERM_LIMBS);
     }
-    vor__mw_mul(n, width, sum->before, width, magnitude, TERM_LIMBS);
+    vor__mw_mul(n, width, sum->before, before_limbs, magnitude,
+                significant(magnitude, TERM_LIMBS));
     if (negative) {
         vor__mw_neg(n, width);
     }
@@ -1202,30 +1228,41 @@ VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
     vor__mw_sub(cross, t, TERM_LIMBS);
     vor__mw_mul(square, GEO_LIMBS, q->w, GEO_LIMBS, q->w, GEO_LIMBS); /* < 2^130 */
 
-    size_t width = sum_limbs(sum->vertices);
-    vor__limb *numbers[5] = {sum->area, sum->x, sum->y, sum->before, sum->denominator};
-    for (unsigned i = 0; i < 5u; i++) {
-        widen(numbers[i], sum->width, width);
+    /* the width this step needs, from the numbers' actual sizes (the
+     * sums' N w^2 + T Q_{i-1}, the denominator's Q_i w^2), capped by the
+     * bound SUM_BITS, where every value fits whatever the estimate says */
+    size_t square_limbs = significant(square, GEO_LIMBS);
+    size_t before_limbs = significant(sum->before, sum->width);
+    size_t denominator_limbs = significant(sum->denominator, sum->width);
+    size_t widest = denominator_limbs;
+    vor__limb *sums[3] = {sum->area, sum->x, sum->y};
+    for (unsigned i = 0; i < 3u; i++) {
+        size_t limbs = significant(sums[i], sum->width);
+        widest = (limbs > widest) ? limbs : widest;
     }
-    sum->width = width;
+    widest = (before_limbs + TERM_LIMBS > widest + square_limbs) ? before_limbs + TERM_LIMBS
+                                                                 : widest + square_limbs;
+    size_t width = sum_limbs(sum->vertices);
+    width = (widest + 1u < width) ? widest + 1u : width;
+    widen_sums(sum, width);
 
     /* t and u below 2^165, the cross product below 2^197 */
     term_product(u, p->w, GEO_LIMBS, q->w, GEO_LIMBS);
     term_product(term, cross, FACTOR_LIMBS, u, FACTOR_LIMBS);
-    accumulate(sum, sum->area, term, square);
+    accumulate(sum, sum->area, term, square, square_limbs, before_limbs);
     term_product(t, p->x, GEO_LIMBS, q->w, GEO_LIMBS);
     term_product(u, q->x, GEO_LIMBS, p->w, GEO_LIMBS);
     vor__mw_add(t, u, TERM_LIMBS);
     term_product(term, cross, FACTOR_LIMBS, t, FACTOR_LIMBS);
-    accumulate(sum, sum->x, term, square);
+    accumulate(sum, sum->x, term, square, square_limbs, before_limbs);
     term_product(t, p->y, GEO_LIMBS, q->w, GEO_LIMBS);
     term_product(u, q->y, GEO_LIMBS, p->w, GEO_LIMBS);
     vor__mw_add(t, u, TERM_LIMBS);
     term_product(term, cross, FACTOR_LIMBS, t, FACTOR_LIMBS);
-    accumulate(sum, sum->y, term, square);
+    accumulate(sum, sum->y, term, square, square_limbs, before_limbs);
 
     /* Q_{i+1} = Q_i w_{i+1}^2; the buffers rotate instead of copying */
-    vor__mw_mul(sum->spare, width, sum->denominator, width, square, GEO_LIMBS);
+    vor__mw_mul(sum->spare, width, sum->denominator, denominator_limbs, square, square_limbs);
     vor__limb *free_buffer = sum->before;
     sum->before = sum->denominator;
     sum->denominator = sum->spare;
@@ -1393,6 +1430,7 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
         return VOR_OK;
     }
     add_edge(&sum, &sum.previous, &sum.first);
+    widen_sums(&sum, sum_limbs(count)); /* the bound's room for the divisions */
     if (vor__mw_sign(sum.area, sum.width) <= 0) {
         write_centroid(out, &result); /* distinct vertices, but all on one line */
         return VOR_OK;

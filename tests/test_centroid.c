@@ -9,6 +9,9 @@
  *     the rounding is checked as exact inequalities;
  *   - grids up to the int32 limits: rectangular cells whose area and
  *     centre follow from the grid's spacing in int64;
+ *   - wide coordinates: the same cells moved by an integer vector (equal
+ *     results, moved) and turned half round (equal areas, centroids
+ *     negated up to a half), each with other denominators;
  *   - the rounded areas of all cells add up to the box's area within
  *     half a unit per cell;
  *   - bad arguments, a scratch too small, any alignment.
@@ -436,6 +439,99 @@ static void test_grids(test_rng_t *rng)
 }
 
 /* ------------------------------------------------------------------ */
+/* Wide coordinates: exact invariances                                 */
+
+/* The cells of n sites with wide coordinates, against the same sites and
+ * box moved by (dx, dy) (the rounding commutes with an integer shift:
+ * equal results, shifted) and turned half round, (x, y) -> (-x, -y) (the
+ * same area; the centroid negated, up to one unit where the exact value
+ * is a half). Every product of denominators differs between the three. */
+static void check_invariances(uint32_t n, vor_box_t box, int32_t dx, int32_t dy, const char *name)
+{
+    static vor_centroid_t first[CEN_SITES];
+    static vor_point_t original[CEN_SITES];
+    vor_t d;
+    for (uint32_t i = 0; i < n; i++) {
+        original[i] = sites[i];
+    }
+    if (!build(&d, n)) {
+        return;
+    }
+    uint32_t wrong = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        first[i].vertices = 0;
+        if (first_of[i] == i &&
+            vor_cell_centroid(&d, i, &box, scratch, sizeof scratch, &first[i]) != VOR_OK) {
+            wrong++;
+        }
+    }
+    for (unsigned turn = 0; turn < 2u; turn++) {
+        vor_box_t moved = box;
+        for (uint32_t i = 0; i < n; i++) {
+            sites[i].x = turn ? -original[i].x : original[i].x + dx;
+            sites[i].y = turn ? -original[i].y : original[i].y + dy;
+        }
+        if (turn) {
+            moved = (vor_box_t){-box.x1, -box.y1, -box.x0, -box.y0};
+        } else {
+            moved = (vor_box_t){box.x0 + dx, box.y0 + dy, box.x1 + dx, box.y1 + dy};
+        }
+        if (!build(&d, n)) {
+            return;
+        }
+        for (uint32_t i = 0; i < n; i++) {
+            vor_centroid_t got;
+            if (first_of[i] != i) {
+                continue;
+            }
+            int err = vor_cell_centroid(&d, i, &moved, scratch, sizeof scratch, &got);
+            const vor_centroid_t *want = &first[i];
+            bool ok = err == VOR_OK && got.area == want->area && got.vertices == want->vertices;
+            if (turn == 0u) {
+                ok = ok && got.point.x == want->point.x + dx && got.point.y == want->point.y + dy;
+            } else if (want->area > 0u) {
+                int64_t sx = (int64_t)got.point.x + want->point.x;
+                int64_t sy = (int64_t)got.point.y + want->point.y;
+                ok = ok && sx >= 0 && sx <= 1 && sy >= 0 && sy <= 1;
+            }
+            if (!ok && wrong++ == 0u) {
+                CHECK(false, "%s: site %u, %s: err %d, (%d, %d) area %u, first (%d, %d) area %u",
+                      name, i, turn ? "turned" : "moved", err, got.point.x, got.point.y,
+                      (unsigned)got.area, want->point.x, want->point.y, (unsigned)want->area);
+            }
+        }
+        for (uint32_t i = 0; i < n; i++) {
+            sites[i] = original[i];
+        }
+    }
+    CHECK(wrong == 0, "%s: %u cells differ", name, wrong);
+}
+
+static void test_wide(test_rng_t *rng)
+{
+    const int32_t half = INT32_MAX / 2;
+    for (unsigned round = 0; round < 12u; round++) {
+        uint32_t n = 3u + test_rng_u32(rng) % (CEN_SITES - 2u);
+        for (uint32_t i = 0; i < n; i++) {
+            sites[i].x = test_rng_range(rng, -half, half);
+            sites[i].y = test_rng_range(rng, -half, half);
+        }
+        if (round % 3u == 2u) { /* nearly collinear: wide circumcentres */
+            for (uint32_t i = 0; i < n; i++) {
+                sites[i].y = sites[i].x / 3 + test_rng_range(rng, -2, 2);
+            }
+        }
+        int32_t x0 = test_rng_range(rng, -half, half - 2), y0 = test_rng_range(rng, -half, half - 2);
+        vor_box_t box = {x0, y0, test_rng_range(rng, x0 + 1, half), test_rng_range(rng, y0 + 1, half)};
+        if (round % 2u == 0u) {
+            box = (vor_box_t){-half, -half, half, half};
+        }
+        check_invariances(n, box, test_rng_range(rng, -half, half), test_rng_range(rng, -half, half),
+                          (round % 3u == 2u) ? "wide, nearly collinear" : "wide");
+    }
+}
+
+/* ------------------------------------------------------------------ */
 /* Errors and the scratch                                              */
 
 static bool same_centroid(const vor_centroid_t *a, const vor_centroid_t *b)
@@ -514,5 +610,6 @@ void test_centroid(void)
     test_rng_seed(&rng, 0xCE27701Du);
     test_errors();
     test_grids(&rng);
+    test_wide(&rng);
     test_brute_force(&rng);
 }
