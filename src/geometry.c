@@ -1092,7 +1092,7 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, u
  * cancels. Widths: Q_j < 2^(130 (j + 1)). Every vertex is in the box, so
  * its coordinates in the doubled frame are below 2^33 in magnitude, each
  * term's value below 2^101, and a partial sum of j < 2^32 terms below
- * 2^133: |N| < Q_j 2^133. SUM_BITS(j) = 130 j + 288 bits hold every
+ * 2^133: |N| < Q_j 2^133. sum_limbs(j), 130 j + 288 bits, holds every
  * number of step j, with room for the final divisions (6 N_A 2^34 and
  * 8 Q 2^64 are below Q 2^105). The arithmetic runs at the width the
  * values fill (at most that bound), so the cost is O(k^2) limb products
