@@ -14,11 +14,13 @@
 #   make bench-query        nearest-site queries: vor against nanoflann and CGAL,
 #                           and target instructions per coherent query
 #   make run-example-contours  contour interpolation (host): build/contours.png
+#   make pictures           README's pictures: docs/diagram.png, docs/raster.png
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #
-# Everything a build needs (compilers, QEMU, python3, libstb-dev) is installed
-# on demand by tools/install-deps.sh, so these work on a fresh Debian machine.
+# Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
+# rsvg-convert) is installed on demand by tools/install-deps.sh, so these
+# work on a fresh Debian machine.
 
 PORT ?= host
 TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
@@ -60,7 +62,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo size bench-predicates bench-raster clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo pictures size bench-predicates bench-raster clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -208,16 +210,33 @@ $(B)/vor $(B)/example-contours$(EXE): $(STB_HEADER)
 DEMO_PORT ?= cortex-m3
 # It also renders a 320x240 RGB565 frame in 16-row bands and streams it
 # to build/demo.rgb565 through semihosting; the host turns it into
-# build/demo.png.
-demo:
+# build/demo.png. Its cells go as text to build/demo.cells, which
+# `vor draw --cells` turns into build/demo.svg.
+demo: $(B)/vor
 	@tools/install-deps.sh toolchains python
 	@mkdir -p build
 	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-voronoi
 	@python3 tools/rgb565_to_png.py build/demo.rgb565 320 240 build/demo.png
 	@echo "frame:     build/demo.png"
+	@$(B)/vor draw --cells build/demo.cells -o build/demo.svg
+	@echo "diagram:   build/demo.svg"
+
+# README's pictures of the sites in docs/pictures.sites: docs/diagram.png
+# (vor draw, rendered by rsvg-convert) and docs/raster.png (vor raster,
+# L1 metric). vor raster writes row 0 (y = 0) at the top of the PNG, so it
+# is given the sites mirrored (y -> 319 - y) to stand upright like the SVG.
+pictures: $(B)/vor
+	@tools/install-deps.sh svg
+	@$(B)/vor draw --box 0 0 480 320 --size 480 320 --triangles --hull docs/pictures.sites \
+		-o $(B)/pictures-diagram.svg
+	@rsvg-convert $(B)/pictures-diagram.svg -o docs/diagram.png
+	@awk '/^[^#]/ { print $$1, 319 - $$2 }' docs/pictures.sites >$(B)/pictures-mirrored.sites
+	@$(B)/vor raster --size 480 320 --origin 0 0 --step 1 1 --metric l1 $(B)/pictures-mirrored.sites \
+		--png docs/raster.png
+	@echo "pictures:  docs/diagram.png docs/raster.png"
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake
+	@tools/install-deps.sh host cli python toolchains clang cmake svg
 	+@tools/run-tests.sh
 
 size:

@@ -93,7 +93,11 @@
  *
  *   A cell is clipped to the caller's box, counterclockwise, into the
  *   caller's buffer (VOR_ERR_BUFFER and the size needed when it is too
- *   small: nothing is written).
+ *   small: nothing is written). For Lloyd relaxation, a clipped cell's
+ *   area and centroid, exact and rounded once, in caller scratch:
+ *
+ *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
+ *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
  * COST (docs/benchmarks.md has the measured table)
  *   No predicate allocates, recurses or loops over data. A degenerate input
@@ -610,6 +614,40 @@ void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box);
  * box given to begin NULL or inverted (x0 > x1 or y0 > y1). */
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
                    uint32_t capacity, uint32_t *count);
+
+/* Bytes of scratch vor_cell_centroid needs for a cell of up to
+ * max_vertices vertices (a constant expression): six integers of
+ * 130 max_vertices + 288 bits, and 8 bytes for alignment. For any cell of
+ * a diagram of n sites: VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(n)). */
+#define VOR_CENTROID_SCRATCH_BYTES(max_vertices)                              \
+    ((size_t)48u * (((size_t)(max_vertices) * 130u + 288u + 63u) / 64u) + 8u)
+
+/* The area and centroid of a clipped cell, each rounded once from its
+ * exact rational value: v becomes floor(v + 1/2), the nearest integer with
+ * halves toward +infinity (as vor_cell's vertices). */
+typedef struct vor_centroid {
+    vor_point_t point; /* the centroid, always in the box */
+    uint64_t area;     /* the area, in squared coordinate units (< 2^64) */
+    uint32_t vertices; /* the cell's vertices, as vor_cell counts them */
+} vor_centroid_t;
+
+/*
+ * The area and centroid of the Voronoi cell of `site` clipped to `box`
+ * (the polygon vor_cell gives, before rounding): for Lloyd relaxation,
+ * move the site to out->point. Computed from the exact vertices as exact
+ * rationals in the caller's scratch (any alignment; its contents are
+ * undefined after the call) and rounded once. A cell that meets the box
+ * in less than an area, or a box of zero width or height, gives area 0,
+ * vertices 0 and point = the point of the box nearest the site.
+ * Cost: O(neighbours + k^2) limb products for a cell of k vertices.
+ *   VOR_ERR_ARG     d, box or out NULL; scratch NULL with scratch_bytes > 0;
+ *                   box->x0 > box->x1 or box->y0 > box->y1; site not a
+ *                   site in the mesh (unknown, or a duplicate's id)
+ *   VOR_ERR_BUFFER  scratch_bytes < VOR_CENTROID_SCRATCH_BYTES(k): only
+ *                   out->vertices is written, with k
+ */
+int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
+                      void *scratch, size_t scratch_bytes, vor_centroid_t *out);
 
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */

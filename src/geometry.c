@@ -192,46 +192,56 @@ static int side_of_line(const geo_line_t *l, const geo_line_t *on)
     return vor__mw_sign(sum, GEO_LIMBS);
 }
 
-/* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
- * site's doubled frame, |v| < 2^98, 0 < w < 2^65. Returns false, with the
- * result saturated, when it is outside int32. The quotient is found by
- * shift and subtract (no divide instruction anywhere): if it fits in int32
- * after adding origin, its magnitude is below 2^33, so 33 steps decide it
- * and a larger one is out of range. */
-static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
-                             int32_t *out)
+/* |rest| / step by shift and subtract (no divide instruction anywhere),
+ * for step > 0 over n limbs, when the quotient is below 2^bits (bits <=
+ * 64): *quotient = floor(|rest| / step), and *negative, *exact say whether
+ * rest was negative and the division exact. Returns false, with only
+ * *negative set, when the quotient is 2^bits or more. step must have
+ * bits + 1 bits of headroom; rest and step are overwritten. */
+static bool divide(vor__limb *rest, vor__limb *step, size_t n, unsigned bits,
+                   uint64_t *quotient, bool *negative, bool *exact)
 {
-    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
-    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
-    for (size_t i = 0; i < GEO_LIMBS; i++) {
-        rest[i] = v[i];
-        step[i] = w[i];
+    bool below_zero = vor__mw_sign(rest, n) < 0;
+    *negative = below_zero;
+    if (below_zero) {
+        vor__mw_neg(rest, n);
     }
-    vor__mw_add(rest, w, GEO_LIMBS);
-    bool negative = vor__mw_sign(rest, GEO_LIMBS) < 0;
-    if (negative) {
-        vor__mw_neg(rest, GEO_LIMBS);
+    for (unsigned k = 0; k < bits; k++) {
+        vor__mw_shl1(step, n);
     }
-    for (unsigned k = 0; k < 34u; k++) { /* 2w 2^33 < 2^99 */
-        vor__mw_shl1(step, GEO_LIMBS);
+    if (vor__mw_compare(rest, step, n) >= 0) {
+        return false;
     }
-    int64_t q;
-    if (vor__mw_compare(rest, step, GEO_LIMBS) >= 0) {
-        q = negative ? -((int64_t)1 << 33) - 1 : ((int64_t)1 << 33); /* |q| >= 2^33 */
-    } else {
-        uint64_t quotient = 0;
-        for (unsigned k = 0; k < 33u; k++) { /* quotient bits 32 .. 0 */
-            vor__mw_shr1(step, GEO_LIMBS);
-            quotient <<= 1;
-            if (vor__mw_compare(rest, step, GEO_LIMBS) >= 0) {
-                vor__mw_sub(rest, step, GEO_LIMBS);
-                quotient |= 1u;
-            }
+    uint64_t q = 0;
+    for (unsigned k = 0; k < bits; k++) { /* quotient bits bits-1 .. 0 */
+        vor__mw_shr1(step, n);
+        q <<= 1;
+        if (vor__mw_compare(rest, step, n) >= 0) {
+            vor__mw_sub(rest, step, n);
+            q |= 1u;
         }
-        bool exact = vor__mw_sign(rest, GEO_LIMBS) == 0;
-        /* floor of a negative quotient: -ceil(|n| / d) */
-        q = negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
     }
+    *quotient = q;
+    *exact = vor__mw_sign(rest, n) == 0;
+    return true;
+}
+
+/* floor(rest / step) for step > 0 when |quotient| < 2^bits (bits < 63);
+ * else a value of magnitude 2^bits or more. */
+static int64_t floor_quotient(vor__limb *rest, vor__limb *step, size_t n, unsigned bits)
+{
+    uint64_t quotient;
+    bool negative, exact;
+    if (!divide(rest, step, n, bits, &quotient, &negative, &exact)) {
+        return negative ? -((int64_t)1 << bits) - 1 : ((int64_t)1 << bits);
+    }
+    /* floor of a negative quotient: -ceil(|n| / d) */
+    return negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
+}
+
+/* origin + q, saturated to int32; false when it had to be. */
+static bool add_saturated(int32_t origin, int64_t q, int32_t *out)
+{
     int64_t r = origin + q;
     if (r < INT32_MIN) {
         *out = INT32_MIN;
@@ -243,6 +253,25 @@ static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t ori
     }
     *out = (int32_t)r;
     return true;
+}
+
+/* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
+ * site's doubled frame, |v| < 2^98, 0 < w < 2^65. Returns false, with the
+ * result saturated, when it is outside int32: if it fits in int32 after
+ * adding origin, the quotient's magnitude is below 2^33, so 33 steps
+ * decide it and a larger one is out of range. */
+static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
+                             int32_t *out)
+{
+    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
+    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        rest[i] = v[i];
+        step[i] = w[i];
+    }
+    vor__mw_add(rest, w, GEO_LIMBS);
+    vor__mw_shl1(step, GEO_LIMBS); /* 2w 2^33 < 2^99 */
+    return add_saturated(origin, floor_quotient(rest, step, GEO_LIMBS, 33u), out);
 }
 
 /* The rounded vertex of p (in the frame of `origin`). */
@@ -760,9 +789,12 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
  * previous one (and the last with the first), rounded when confirmed. The
  * first two are held back so that a result of fewer than three (no area)
  * writes nothing. Three point buffers rotate, so nothing is copied. */
+typedef struct centroid_sum centroid_sum_t;
+
 typedef struct emitter {
     const cell_t *c;
-    vor_point_t *out; /* NULL: only count */
+    vor_point_t *out;     /* NULL: only count */
+    centroid_sum_t *sum;  /* not NULL: vertices go to the centroid's sums */
     uint32_t count;
     vor_point_t held[2];
     geo_point_t pool[3];
@@ -781,8 +813,15 @@ static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
     return side_of(&l, p) == 0;
 }
 
+static void hold_vertex(centroid_sum_t *sum, const geo_point_t *p);
+
 static void confirm(emitter_t *e, int index)
 {
+    if (e->sum != NULL) {
+        hold_vertex(e->sum, &e->pool[index]);
+        e->count++;
+        return;
+    }
     vor_vertex_t v;
     round_point(&e->pool[index], e->c->s, &v);
     VOR_ASSERT(v.status == VOR_VERTEX_IN_RANGE); /* inside the box */
@@ -888,16 +927,21 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
     emit(e, n, lo_name);
 }
 
+static void add_held_vertex(centroid_sum_t *sum);
+
 /* One pass over the cell's boundary: the pieces of box sides and Voronoi
  * edges in the angular order of their outward normals, from (0, -1). That
  * is the order of a convex polygon's edges, and the first one's start is
- * the lowest vertex. Returns the number of vertices. */
-static uint32_t trace(const cell_t *c, vor_point_t *out)
+ * the lowest vertex. Returns the number of vertices. A confirmed vertex
+ * for the centroid is added here, not in confirm(): the sums' deep frames
+ * then add to the trace's, not to the emitter's. */
+static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
 {
     const vor_t *d = c->d;
     emitter_t e;
     e.c = c;
     e.out = out;
+    e.sum = sum;
     e.count = 0;
     e.first = e.last = -1;
     unsigned next_side = 0;
@@ -909,10 +953,12 @@ static uint32_t trace(const cell_t *c, vor_point_t *out)
                 fan_triangle(c, next, &dummy, &z, &dummy);
                 for (unsigned q = quadrant_of(c, y); next_side <= q; next_side++) {
                     emit_side(&e, next_side);
+                    add_held_vertex(sum);
                 }
                 bool has_start, has_end;
                 if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
                     emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
+                    add_held_vertex(sum);
                 }
             }
             slot = next;
@@ -923,9 +969,11 @@ static uint32_t trace(const cell_t *c, vor_point_t *out)
     }
     for (; next_side < 4u; next_side++) {
         emit_side(&e, next_side);
+        add_held_vertex(sum);
     }
     if (e.last >= 0 && e.last != e.first && !same_point(&e, e.first, &e.pool[e.last])) {
         confirm(&e, e.last);
+        add_held_vertex(sum);
     }
     return (e.count >= 3u) ? e.count : 0u;
 }
@@ -941,6 +989,22 @@ static bool in_mesh(const vor_t *d, uint32_t site)
     return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
 }
 
+static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t *box)
+{
+    c->d = d;
+    c->site = site;
+    c->s = &d->sites[site];
+    c->box = box;
+    c->start_slot = site;
+    c->degree = 0;
+    if (d->vertex_count >= 2u) {
+        find_start(c);
+    }
+    for (unsigned k = 0; k < 4u; k++) {
+        clip_side(c, k);
+    }
+}
+
 int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
              uint32_t capacity, uint32_t *count)
 {
@@ -953,28 +1017,17 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
         return VOR_OK;
     }
     cell_t c;
-    c.d = d;
-    c.site = site;
-    c.s = &d->sites[site];
-    c.box = box;
-    c.start_slot = site;
-    c.degree = 0;
-    if (d->vertex_count >= 2u) {
-        find_start(&c);
-    }
-    for (unsigned k = 0; k < 4u; k++) {
-        clip_side(&c, k);
-    }
+    begin_cell(&c, d, site, box);
     /* at most one vertex per neighbour and per box side: write at once
      * when that fits, else count first */
     if (capacity < c.degree + 4u) {
-        uint32_t needed = trace(&c, NULL);
+        uint32_t needed = trace(&c, NULL, NULL);
         if (needed > capacity) {
             *count = needed;
             return VOR_ERR_BUFFER;
         }
     }
-    *count = trace(&c, vertices);
+    *count = trace(&c, vertices, NULL);
     return VOR_OK;
 }
 
@@ -1016,4 +1069,391 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, u
     }
     it->next_site++;
     return 1;
+}
+
+/* ------------------------------------------------------------------ */
+/* Area and centroid of a clipped cell                                 */
+
+/*
+ * The cell's exact vertices v_i = (x_i, y_i) / w_i in the site's doubled
+ * frame (0 < w_i < 2^65, |x_i|, |y_i| < 2^98), with v_k = v_0, give by the
+ * shoelace formula
+ *   twice the area  A = sum c_i / (w_i w_{i+1}),
+ *   the moments     M = sum (v_i + v_{i+1}) c_i / (w_i w_{i+1}),
+ * c_i = x_i y_{i+1} - x_{i+1} y_i, and the centroid M / 3A. Each term is
+ * a fraction T_i / (w_i w_{i+1})^2: for A, T = c w_i w_{i+1} (|c| < 2^197,
+ * so |T| < 2^327); for M.x, T = c (x_i w_{i+1} + x_{i+1} w_i) (< 2^361);
+ * M.y alike. TERM_LIMBS (384 bits) holds them.
+ *
+ * The sums are kept over the common denominator Q_k = prod_{m=0..k} w_m^2
+ * (w_0 twice: the last term closes the polygon): term i is added by
+ * N <- N w_{i+1}^2 + T_i Q_{i-1}, so only Q_{i-1} and Q_i are kept. No
+ * reduction is needed as the result is rounded from N_M / N_A, where Q
+ * cancels. Widths: Q_j < 2^(130 (j + 1)). Every vertex is in the box, so
+ * its coordinates in the doubled frame are below 2^33 in magnitude, each
+ * term's value below 2^101, and a partial sum of j < 2^32 terms below
+ * 2^133: |N| < Q_j 2^133. sum_limbs(j), 130 j + 288 bits, holds every
+ * number of step j, with room for the final divisions (6 N_A 2^34 and
+ * 8 Q 2^64 are below Q 2^105). The arithmetic runs at the width the
+ * values fill (at most that bound), so the cost is O(k^2) limb products
+ * for k vertices, less for narrow denominators.
+ */
+#define TERM_LIMBS VOR__LIMBS(384)
+#define SUM_NUMBERS 6u /* N_A, N_X, N_Y, Q_{i-1}, Q_i and a spare */
+
+struct centroid_sum {
+    vor__limb *area, *x, *y;          /* N_A, N_X, N_Y over the denominator */
+    vor__limb *before, *denominator;  /* Q_{i-1}, Q_i */
+    vor__limb *spare;
+    size_t width;                     /* live limbs of every number */
+    uint32_t vertices;
+    bool held;                        /* a confirmed vertex waits in `next` */
+    geo_point_t first, previous, next;
+};
+
+/* Limbs of step j's numbers, for j <= MAX_SUM_VERTICES (130 j < 2^32). */
+#define MAX_SUM_VERTICES (1u << 24)
+static size_t sum_limbs(uint32_t j)
+{
+    return ((size_t)j * 130u + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+}
+
+/* Does scratch of `bytes` hold the sums of a cell of k vertices? Then
+ * *stride = the limbs of each number. More than MAX_SUM_VERTICES would
+ * need more scratch than a 32-bit address space has. */
+static bool scratch_fits(size_t bytes, uint32_t k, size_t *stride)
+{
+    if (k > MAX_SUM_VERTICES) {
+        return false;
+    }
+    size_t limbs = sum_limbs(k);
+    if (limbs * SUM_NUMBERS * sizeof(vor__limb) > bytes) {
+        return false;
+    }
+    *stride = limbs;
+    return true;
+}
+
+/* r[from .. to) = the sign of r[0 .. from): two's complement widened. */
+static void widen(vor__limb *r, size_t from, size_t to)
+{
+    vor__limb fill = (vor__mw_sign(r, from) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
+    for (size_t i = from; i < to; i++) {
+        r[i] = fill;
+    }
+}
+
+/* Every number of the sums at `width` limbs, where they all fit. */
+static void widen_sums(centroid_sum_t *sum, size_t width)
+{
+    vor__limb *numbers[5] = {sum->area, sum->x, sum->y, sum->before, sum->denominator};
+    for (unsigned i = 0; i < 5u; i++) {
+        widen(numbers[i], sum->width, width);
+    }
+    sum->width = width;
+}
+
+/* r = a b over TERM_LIMBS for two's complement a (na limbs) and b (nb
+ * limbs), at most FACTOR_LIMBS each, through their magnitudes: the
+ * toolkit's product is exact for operands narrower than the result only
+ * when they are non-negative. */
+#define FACTOR_LIMBS VOR__LIMBS(224) /* |c| < 2^197, the widest factor */
+static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor__limb *b,
+                         size_t nb)
+{
+    vor__limb ma[FACTOR_LIMBS], mb[FACTOR_LIMBS];
+    bool a_negative = vor__mw_sign(a, na) < 0, b_negative = vor__mw_sign(b, nb) < 0;
+    for (size_t i = 0; i < na; i++) {
+        ma[i] = a[i];
+    }
+    for (size_t i = 0; i < nb; i++) {
+        mb[i] = b[i];
+    }
+    if (a_negative) {
+        vor__mw_neg(ma, na);
+    }
+    if (b_negative) {
+        vor__mw_neg(mb, nb);
+    }
+    vor__mw_mul(r, TERM_LIMBS, ma, na, mb, nb);
+    if (a_negative != b_negative) {
+        vor__mw_neg(r, TERM_LIMBS);
+    }
+}
+
+/* The fewest limbs that hold a (n limbs, two's complement) with its sign. */
+static size_t significant(const vor__limb *a, size_t n)
+{
+    vor__limb fill = (vor__mw_sign(a, n) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
+    size_t m = n;
+    while (m > 1u && a[m - 1u] == fill && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
+        m--;
+    }
+    return m;
+}
+
+/* n = n w^2 + t before, at the sum's width; t is signed, before >= 0 and
+ * fills before_limbs, w^2 square_limbs. The non-negative factors are
+ * passed at their own widths, so the products cost what the numbers
+ * hold, not what the bound allows. */
+static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
+                       const vor__limb *square, size_t square_limbs, size_t before_limbs)
+{
+    size_t width = sum->width;
+    vor__limb magnitude[TERM_LIMBS];
+    vor__mw_mul(sum->spare, width, n, width, square, square_limbs);
+    bool negative = vor__mw_sign(t, TERM_LIMBS) < 0;
+    for (size_t i = 0; i < TERM_LIMBS; i++) {
+        magnitude[i] = t[i];
+    }
+    if (negative) {
+        vor__mw_neg(magnitude, TERM_LIMBS);
+    }
+    vor__mw_mul(n, width, sum->before, before_limbs, magnitude,
+                significant(magnitude, TERM_LIMBS));
+    if (negative) {
+        vor__mw_neg(n, width);
+    }
+    vor__mw_add(n, sum->spare, width);
+}
+
+/* The shoelace term of the edge p -> q. */
+VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
+                                   const geo_point_t *q)
+{
+    vor__limb cross[TERM_LIMBS], t[TERM_LIMBS], u[TERM_LIMBS], term[TERM_LIMBS];
+    vor__limb square[GEO_LIMBS];
+    term_product(cross, p->x, GEO_LIMBS, q->y, GEO_LIMBS);
+    term_product(t, q->x, GEO_LIMBS, p->y, GEO_LIMBS);
+    vor__mw_sub(cross, t, TERM_LIMBS);
+    vor__mw_mul(square, GEO_LIMBS, q->w, GEO_LIMBS, q->w, GEO_LIMBS); /* < 2^130 */
+
+    /* the width this step needs, from the numbers' actual sizes (the
+     * sums' N w^2 + T Q_{i-1}, the denominator's Q_i w^2), capped by the
+     * bound SUM_BITS, where every value fits whatever the estimate says */
+    size_t square_limbs = significant(square, GEO_LIMBS);
+    size_t before_limbs = significant(sum->before, sum->width);
+    size_t denominator_limbs = significant(sum->denominator, sum->width);
+    size_t widest = denominator_limbs;
+    vor__limb *sums[3] = {sum->area, sum->x, sum->y};
+    for (unsigned i = 0; i < 3u; i++) {
+        size_t limbs = significant(sums[i], sum->width);
+        widest = (limbs > widest) ? limbs : widest;
+    }
+    widest = (before_limbs + TERM_LIMBS > widest + square_limbs) ? before_limbs + TERM_LIMBS
+                                                                 : widest + square_limbs;
+    size_t width = sum_limbs(sum->vertices);
+    width = (widest + 1u < width) ? widest + 1u : width;
+    widen_sums(sum, width);
+
+    /* t and u below 2^165, the cross product below 2^197 */
+    term_product(u, p->w, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(term, cross, FACTOR_LIMBS, u, FACTOR_LIMBS);
+    accumulate(sum, sum->area, term, square, square_limbs, before_limbs);
+    term_product(t, p->x, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(u, q->x, GEO_LIMBS, p->w, GEO_LIMBS);
+    vor__mw_add(t, u, TERM_LIMBS);
+    term_product(term, cross, FACTOR_LIMBS, t, FACTOR_LIMBS);
+    accumulate(sum, sum->x, term, square, square_limbs, before_limbs);
+    term_product(t, p->y, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(u, q->y, GEO_LIMBS, p->w, GEO_LIMBS);
+    vor__mw_add(t, u, TERM_LIMBS);
+    term_product(term, cross, FACTOR_LIMBS, t, FACTOR_LIMBS);
+    accumulate(sum, sum->y, term, square, square_limbs, before_limbs);
+
+    /* Q_{i+1} = Q_i w_{i+1}^2; the buffers rotate instead of copying */
+    vor__mw_mul(sum->spare, width, sum->denominator, denominator_limbs, square, square_limbs);
+    vor__limb *free_buffer = sum->before;
+    sum->before = sum->denominator;
+    sum->denominator = sum->spare;
+    sum->spare = free_buffer;
+}
+
+static void copy_point(geo_point_t *to, const geo_point_t *from)
+{
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        to->x[i] = from->x[i];
+        to->y[i] = from->y[i];
+        to->w[i] = from->w[i];
+    }
+}
+
+/* A confirmed vertex, kept until the trace adds it. */
+static void hold_vertex(centroid_sum_t *sum, const geo_point_t *p)
+{
+    copy_point(&sum->next, p);
+    sum->held = true;
+}
+
+/* The emitter's confirmed vertices, in order. */
+static void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
+{
+    if (sum->vertices == 0u) {
+        copy_point(&sum->first, p);
+        /* Q_{-1} = 1, Q_0 = w_0^2, the sums 0 */
+        sum->width = sum_limbs(0);
+        vor__mw_from_u64(sum->before, sum->width, 1u);
+        vor__mw_from_u64(sum->denominator, sum->width, 0u);
+        vor__mw_mul(sum->denominator, sum->width, p->w, GEO_LIMBS, p->w, GEO_LIMBS);
+        vor__mw_from_u64(sum->area, sum->width, 0u);
+        vor__mw_from_u64(sum->x, sum->width, 0u);
+        vor__mw_from_u64(sum->y, sum->width, 0u);
+    } else {
+        add_edge(sum, &sum->previous, p);
+    }
+    copy_point(&sum->previous, p);
+    sum->vertices++;
+}
+
+/* Field by field: a structure assignment may become a memcpy call. */
+static void write_centroid(vor_centroid_t *out, const vor_centroid_t *from)
+{
+    out->point.x = from->point.x;
+    out->point.y = from->point.y;
+    out->area = from->area;
+    out->vertices = from->vertices;
+}
+
+static void add_held_vertex(centroid_sum_t *sum)
+{
+    if (sum != NULL && sum->held) {
+        sum->held = false;
+        add_vertex(sum, &sum->next);
+    }
+}
+
+static int32_t clamp(int32_t v, int32_t low, int32_t high)
+{
+    return (v < low) ? low : (v > high) ? high : v;
+}
+
+/* The limbs a division of the wide sums needs: with m limbs, step 2^bits
+ * < 2^(L (m - 1)). A rest (>= 0) with a limb set at m - 1 or above gives
+ * a quotient too large: then n, and divide() says so. */
+static size_t division_width(const vor__limb *rest, const vor__limb *step, size_t n,
+                             unsigned bits)
+{
+    size_t m = n;
+    while (m > 1u && step[m - 1u] == 0u) {
+        m--;
+    }
+    m += VOR__LIMBS(bits) + 1u;
+    if (m >= n || vor__mw_sign(rest, n) < 0) {
+        return n;
+    }
+    for (size_t i = m - 1u; i < n; i++) {
+        if (rest[i] != 0u) {
+            return n;
+        }
+    }
+    return m;
+}
+
+/* s + floor(n / (6 N_A) + 1/2) = s + floor((n + 3 N_A) / 6 N_A): the
+ * rounded centroid coordinate, n / 3 N_A in the doubled frame. */
+static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
+{
+    size_t width = sum->width;
+    for (size_t i = 0; i < width; i++) {
+        sum->spare[i] = sum->area[i];
+    }
+    vor__mw_add(sum->spare, sum->area, width);
+    vor__mw_add(sum->spare, sum->area, width); /* 3 N_A */
+    vor__mw_add(n, sum->spare, width);
+    vor__mw_shl1(sum->spare, width); /* 6 N_A */
+    int32_t result;
+    /* magnitudes: a negative n is as wide as its negation */
+    bool negative = vor__mw_sign(n, width) < 0;
+    if (negative) {
+        vor__mw_neg(n, width);
+    }
+    size_t m = division_width(n, sum->spare, width, 33u);
+    if (negative) {
+        vor__mw_neg(n, m);
+    }
+    bool in_range = add_saturated(origin, floor_quotient(n, sum->spare, m, 33u), &result);
+    VOR_ASSERT(in_range); /* the centroid is in the cell, so in the box */
+    (void)in_range;
+    return result;
+}
+
+int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void *scratch,
+                      size_t scratch_bytes, vor_centroid_t *out)
+{
+    if (d == NULL || box == NULL || out == NULL || (scratch == NULL && scratch_bytes > 0u) ||
+        box->x0 > box->x1 || box->y0 > box->y1 || !in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    const vor_point_t *s = &d->sites[site];
+    vor_centroid_t result;
+    /* no area: the point of the box nearest the site */
+    result.point.x = clamp(s->x, box->x0, box->x1);
+    result.point.y = clamp(s->y, box->y0, box->y1);
+    result.area = 0;
+    result.vertices = 0;
+    if (box->x0 == box->x1 || box->y0 == box->y1) {
+        write_centroid(out, &result);
+        return VOR_OK;
+    }
+    cell_t c;
+    begin_cell(&c, d, site, box);
+    /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
+    size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
+    size_t usable = (scratch_bytes > skip) ? scratch_bytes - skip : 0u, stride;
+    /* at most one vertex per neighbour and per box side: count first only
+     * when the scratch might be too small */
+    if (!scratch_fits(usable, c.degree + 4u, &stride)) {
+        uint32_t needed = trace(&c, NULL, NULL);
+        if (needed == 0u) {
+            write_centroid(out, &result);
+            return VOR_OK;
+        }
+        if (!scratch_fits(usable, needed, &stride)) {
+            out->vertices = needed;
+            return VOR_ERR_BUFFER;
+        }
+    }
+    vor__limb *limbs = (vor__limb *)(void *)((unsigned char *)scratch + skip);
+    centroid_sum_t sum;
+    sum.area = limbs;
+    sum.x = limbs + stride;
+    sum.y = limbs + 2u * stride;
+    sum.before = limbs + 3u * stride;
+    sum.denominator = limbs + 4u * stride;
+    sum.spare = limbs + 5u * stride;
+    sum.width = 0;
+    sum.vertices = 0;
+    sum.held = false;
+    uint32_t count = trace(&c, NULL, &sum);
+    if (count == 0u) {
+        write_centroid(out, &result);
+        return VOR_OK;
+    }
+    add_edge(&sum, &sum.previous, &sum.first);
+    widen_sums(&sum, sum_limbs(count)); /* the bound's room for the divisions */
+    if (vor__mw_sign(sum.area, sum.width) <= 0) {
+        write_centroid(out, &result); /* distinct vertices, but all on one line */
+        return VOR_OK;
+    }
+    result.vertices = count;
+    result.point.x = round_centroid(&sum, sum.x, s->x);
+    result.point.y = round_centroid(&sum, sum.y, s->y);
+    /* the area is N_A / 8 Q in the doubled frame (a factor 4 for the
+     * scale, 2 for "twice"): floor((N_A + 4 Q) / 8 Q), below 2^64 */
+    size_t width = sum.width;
+    for (size_t i = 0; i < width; i++) {
+        sum.spare[i] = sum.denominator[i];
+    }
+    vor__mw_shl1(sum.spare, width);
+    vor__mw_shl1(sum.spare, width);
+    vor__mw_add(sum.area, sum.spare, width);
+    vor__mw_shl1(sum.spare, width);
+    uint64_t area;
+    bool negative, exact;
+    bool fits = divide(sum.area, sum.spare, division_width(sum.area, sum.spare, width, 64u),
+                       64u, &area, &negative, &exact);
+    VOR_ASSERT(fits && !negative);
+    result.area = fits ? area : UINT64_MAX;
+    write_centroid(out, &result);
+    return VOR_OK;
 }

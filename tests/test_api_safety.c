@@ -465,6 +465,33 @@ static void check_iterators(void)
     bad += vor_cell(&diagram, VOR_NO_HINT, &box, poly, capacity, &count) != VOR_ERR_ARG;
     bad += (count != 77 || !same_bytes(poly, poly_before, sizeof poly));
     CHECK(bad == 0 && unchanged(), "cell: %u bad arguments accepted or wrote", bad);
+
+    /* the centroid: bad arguments write neither the output nor the
+     * scratch; too small a scratch writes only the vertex count */
+    static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(SAFE_SITES))];
+    static uint8_t scratch_before[sizeof scratch];
+    fill(scratch, sizeof scratch, 0x99);
+    copy_bytes(scratch_before, scratch, sizeof scratch);
+    vor_centroid_t centroid, centroid_before;
+    fill(&centroid, sizeof centroid, 0x77);
+    copy_bytes(&centroid_before, &centroid, sizeof centroid);
+    size_t bytes = sizeof scratch;
+    bad = 0;
+    bad += vor_cell_centroid(NULL, 0, &box, scratch, bytes, &centroid) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, 0, NULL, scratch, bytes, &centroid) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, 0, &box, scratch, bytes, NULL) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, 0, &box, NULL, bytes, &centroid) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, 0, &inverted_x, scratch, bytes, &centroid) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, 0, &inverted_y, scratch, bytes, &centroid) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, SAFE_SITES, &box, scratch, bytes, &centroid) != VOR_ERR_ARG;
+    bad += vor_cell_centroid(&diagram, VOR_NO_HINT, &box, scratch, bytes, &centroid) != VOR_ERR_ARG;
+    bad += !same_bytes(&centroid, &centroid_before, sizeof centroid);
+    bad += vor_cell_centroid(&diagram, 0, &box, scratch, 8, &centroid) != VOR_ERR_BUFFER;
+    bad += (centroid.vertices < 3u || centroid.area != centroid_before.area ||
+            centroid.point.x != centroid_before.point.x ||
+            centroid.point.y != centroid_before.point.y);
+    bad += !same_bytes(scratch, scratch_before, sizeof scratch);
+    CHECK(bad == 0 && unchanged(), "cell centroid: %u bad arguments accepted or wrote", bad);
 }
 
 static int never_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
@@ -547,6 +574,8 @@ static void check_zeroed_diagram(void)
     bad += vor_nearest(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
     bad += vor_nearest_k(&zeroed, 1, 1, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
     bad += vor_cell(&zeroed, 0, &box, poly, 4, &count) != VOR_ERR_ARG;
+    vor_centroid_t centroid;
+    bad += vor_cell_centroid(&zeroed, 0, &box, NULL, 0, &centroid) != VOR_ERR_ARG;
     bad += vor_voronoi_vertex(&zeroed, 0, 1, 2, &vertex) != VOR_ERR_ARG;
     bad += vor_validate(&zeroed, NULL) != VOR_OK;
     bad += (vor_memory(&zeroed, &memory) != VOR_OK || memory.sites != 0u);

@@ -14,6 +14,8 @@
 #   cmake       cmake, for make test's consumers of the CMake package
 #   bench       the Delaunay benchmark's peers, CGAL and Boost.Polygon
 #   bench-query the query benchmark's peers, CGAL and nanoflann
+#   svg         xmllint and rsvg-convert, for the tests of `vor draw` (the
+#               SVG must parse and render like the exact raster)
 #   fuzz        clang 14 and its libFuzzer runtime, for make fuzz and make
 #               test's fuzz suite (tests/fuzz/)
 #
@@ -53,6 +55,10 @@ members() {
         echo "libcgal-dev /usr/include/CGAL/Delaunay_triangulation_2.h"
         echo "libnanoflann-dev /usr/include/nanoflann.hpp"
         ;;
+    svg)
+        echo "libxml2-utils /usr/bin/xmllint"
+        echo "librsvg2-bin /usr/bin/rsvg-convert"
+        ;;
     fuzz)
         echo "clang-14 clang-14"
         echo "libclang-rt-14-dev /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a"
@@ -81,7 +87,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query fuzz)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

@@ -4,6 +4,7 @@
 #include "raster_common.h"
 
 static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
+static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
 static uint32_t ids[SIZE_SITES];
 
 SIZE_ARENA(size_arena);
@@ -50,6 +51,8 @@ int main(void)
     }
     vor_box_t box = {size_x(2), size_y(2), size_x(3), size_y(3)};
     acc |= vor_cell(&d, site, &box, cell, VOR_CELL_MAX_VERTICES(SIZE_SITES), &count);
+    vor_centroid_t centroid;
+    acc |= vor_cell_centroid(&d, site, &box, centroid_scratch, sizeof centroid_scratch, &centroid);
     vor_vertex_t centre;
     acc |= vor_circumcentre(&raster_points[0], &raster_points[1], &raster_points[2], &centre);
     acc |= vor_voronoi_vertex(&d, 0, 1, 2, &centre);

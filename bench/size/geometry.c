@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* bench/size/geometry.c - build and nearest, plus the Voronoi geometry:
- * clipped cells and edges. */
+ * clipped cells, their centroids and edges. */
 #include "common.h"
 
 static vor_point_t points[SIZE_SITES];
 static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
+static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
 
 SIZE_ARENA(size_arena);
 
@@ -25,6 +26,8 @@ int main(void)
     while (vor_cells_next(&cells, &site, cell, VOR_CELL_MAX_VERTICES(SIZE_SITES), &count) > 0) {
         acc += (int)count;
     }
+    vor_centroid_t centroid;
+    acc |= vor_cell_centroid(&d, site, &box, centroid_scratch, sizeof centroid_scratch, &centroid);
     vor_edge_iter_t edges;
     vor_edge_t edge;
     vor_edges_begin(&edges, &d);

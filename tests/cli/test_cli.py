@@ -128,7 +128,7 @@ def delaunay_cases(rng):
     # bad input
     for text, line in (("0 0\n1 2 3\n", 2), ("0 0\n\n1 x\n", 3), ("2147483648 0\n", 1)):
         r = run(["delaunay", "-"], text)
-        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: line {line}: "),
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
               f"delaunay bad input {text!r}: {r.returncode} {r.stderr!r}")
     r = run(["delaunay", "/no/such/file"], "")
     check(r.returncode == 2 and r.stdout == "", "missing file: status 2")
@@ -195,7 +195,7 @@ def nearest_cases(rng, tmp):
     with open(os.path.join(tmp, "bad"), "w") as f:
         f.write("1 2\n3\n")
     r = run(["nearest", os.path.join(tmp, "grid.sites"), os.path.join(tmp, "bad")], "")
-    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: line 2: "),
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {os.path.join(tmp, 'bad')}:2: "),
           f"nearest bad query line: {r.returncode} {r.stderr!r}")
 
 
@@ -243,7 +243,7 @@ def raster_cases(rng, tmp):
         f.write("1 2\n\n3\n")
     r = run(["raster", "--size", "4", "4", "--origin", "0", "0", "--step", "1", "1", bp, "--labels",
              os.path.join(tmp, "bad.raw")], "")
-    check(r.returncode == 2 and r.stderr.startswith("error: line 3: "), f"raster bad line: {r.returncode} {r.stderr!r}")
+    check(r.returncode == 2 and r.stderr.startswith(f"error: {bp}:3: "), f"raster bad line: {r.returncode} {r.stderr!r}")
     for args in (["--size", "0", "4"], ["--size", "4", "4", "--step", "0", "1"], ["--size", "4", "4", "--origin", "2147483647", "0"]):
         r = run(["raster"] + args + [os.path.join(tmp, "huge.sites"), "--labels", os.path.join(tmp, "x.raw")], "")
         check(r.returncode == 2 and r.stderr.startswith("error: "), f"raster bad frame {args}: {r.returncode} {r.stderr!r}")
@@ -358,7 +358,7 @@ def cells_cases(rng, tmp):
     with open(path, "w") as f:
         f.write("0 0\n1 1\n2\n")
     r = run(["cells", "--box", "0", "0", "9", "9", path], "")
-    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: line 3: "),
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {path}:3: "),
           f"cells bad site line: {r.returncode} {r.stderr!r}")
     for args in (["--box", "5", "0", "4", "9", "-"], ["--box", "0", "0", "9", "x", "-"],
                  ["--box", "0", "0", "9", "2147483648", "-"], ["--box", "0", "0", "9", "-"], ["-"]):
@@ -533,7 +533,7 @@ def raster_metric_cases(rng, tmp):
         with open(bp, "w") as f:
             f.write(text)
         r = run(["raster", "--size", "4", "4", "--metric", metric, bp, "--labels", os.path.join(tmp, "bad.raw")], "")
-        check(r.returncode == 2 and r.stderr.startswith(f"error: line {line}: "),
+        check(r.returncode == 2 and r.stderr.startswith(f"error: {bp}:{line}: "),
               f"raster --metric {metric} bad line {text!r}: {r.returncode} {r.stderr!r}")
     for arg in ("lp:0", "lp:9", "lp:x", "ellip:1,2,3", "ellip:0,0,1", "ellip:1,2", "manhattan"):
         r = run(["raster", "--size", "4", "4", "--metric", arg, os.path.join(tmp, "l1-0.sites"), "--labels",
@@ -649,6 +649,189 @@ def contours_cases(rng, tmp):
         check(r.returncode == 2 and r.stderr.startswith("error: "), f"contours bad input {text!r}: {r.returncode} {r.stderr!r}")
 
 
+def read_png(path):
+    """The RGB pixels of an 8-bit RGB or RGBA PNG (rows top first), decoded
+    with zlib alone: enough for rsvg-convert's output."""
+    import struct
+    import zlib
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    pos, idat = 8, b""
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            w, h, depth, colour_type, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour_type in (2, 6) and interlace == 0, "unsupported PNG"
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    bpp = 3 if colour_type == 2 else 4
+    raw, stride = zlib.decompress(idat), w * bpp
+    rows, prev = [], bytearray(stride)
+    for r in range(h):
+        f, line = raw[r * (stride + 1)], bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - bpp] if i >= bpp else 0
+            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+            if f == 1:
+                line[i] = (line[i] + a) & 255
+            elif f == 2:
+                line[i] = (line[i] + b) & 255
+            elif f == 3:
+                line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[i * bpp:i * bpp + 3]) for i in range(w)])
+        prev = line
+    return rows
+
+
+def draw_colour(site):
+    # the palette of tools/cli/draw.c, written from its documentation
+    c = site * 2654435761 % 2**21
+    return (128 + (c & 127), 128 + ((c >> 7) & 127), 128 + (c >> 14))
+
+
+def draw_cells(svg_path):
+    """The filled cell paths of a `vor draw` SVG as (fill, [vertices])."""
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    cells = []
+    for path in ET.parse(svg_path).getroot().iter(ns + "path"):
+        if path.get("fill", "none") != "none":
+            numbers = [int(v) for v in path.get("d").replace("M", " ").replace("L", " ").replace("Z", " ").split()]
+            cells.append((path.get("fill"), list(zip(numbers[0::2], numbers[1::2]))))
+    return cells
+
+
+def draw_cases(rng, tmp):
+    """vor draw: the SVG parses (xmllint), its cells are `vor cells`'
+    vertices, and rendered by rsvg-convert the colour at every pixel centre
+    well inside a cell is the colour of the site `vor raster --labels`
+    gives for that centre, in a frame whose pixel centres are the SVG's."""
+    import os
+    import shutil
+    import struct
+    if not (shutil.which("xmllint") and shutil.which("rsvg-convert")):
+        check(False, "draw: xmllint and rsvg-convert are needed (tools/install-deps.sh svg)")
+        return
+    sites = [(rng.randint(0, 1000), rng.randint(0, 800)) for _ in range(40)]
+    sites += [sites[3], sites[17]]  # duplicates: drawn once, under the first id
+    path = os.path.join(tmp, "draw.sites")
+    with open(path, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in sites))
+    # pixel (i, row r) of the picture covers x0 + [i, i+1] * step, y1 - [r, r+1] * step
+    w, h, step = 110, 90, 10
+    x0, y0 = -37, -52
+    box = (x0, y0, x0 + w * step, y0 + h * step)
+    svg, png = os.path.join(tmp, "draw.svg"), os.path.join(tmp, "draw.png")
+    r = run(["draw", "--box", *map(str, box), "--size", str(w), str(h), path, "-o", svg], "")
+    check(r.returncode == 0 and r.stdout == "", f"draw: status {r.returncode} {r.stderr!r}")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(lint.returncode == 0 and lint.stderr == "", f"draw: xmllint {lint.returncode} {lint.stderr!r}")
+    r = run(["cells", "--box", *map(str, box), path], "")
+    expected = []
+    for line in r.stdout.splitlines():
+        v = [int(t) for t in line.split()[1:]]
+        if v[1] > 0:
+            expected.append(("#%02x%02x%02x" % draw_colour(v[0]), list(zip(v[2::2], v[3::2]))))
+    check(draw_cells(svg) == expected, f"draw: the cell paths differ from vor cells ({len(expected)} cells)")
+    # the black edges: every side of a cell that is not on the box, once
+    import xml.etree.ElementTree as ET
+    ns = "{http://www.w3.org/2000/svg}"
+    edges = [tuple(tuple(int(v) for v in end.split()) for end in piece.split("L"))
+             for p in ET.parse(svg).getroot().iter(ns + "path") if p.get("stroke") == "#000"
+             for piece in p.get("d").split("M")[1:]]
+    on_box = lambda p, q: (p[0] == q[0] and p[0] in (box[0], box[2])) or (p[1] == q[1] and p[1] in (box[1], box[3]))
+    sides = {frozenset((c[k], c[(k + 1) % len(c)])) for _, c in expected for k in range(len(c))
+             if c[k] != c[(k + 1) % len(c)] and not on_box(c[k], c[(k + 1) % len(c)])}
+    check(len(edges) == len(sides) and {frozenset(e) for e in edges} == sides,
+          f"draw: {len(edges)} edges drawn, {len(sides)} cell sides off the box")
+    labels_path = os.path.join(tmp, "draw.raw")
+    r = run(["raster", "--size", str(w), str(h), "--origin", str(x0 + step // 2), str(y0 + step // 2),
+             "--step", str(step), str(step), path, "--labels", labels_path], "")
+    check(r.returncode == 0, f"draw: raster status {r.returncode} {r.stderr!r}")
+    labels = struct.unpack(f"<{w * h}I", open(labels_path, "rb").read())
+    r = subprocess.run(["rsvg-convert", svg, "-o", png], capture_output=True, text=True)
+    check(r.returncode == 0, f"draw: rsvg-convert {r.returncode} {r.stderr!r}")
+    pixels = read_png(png)
+    check(len(pixels) == h and len(pixels[0]) == w, f"draw: rendered {len(pixels[0])}x{len(pixels)}, asked {w}x{h}")
+    # well inside: 3 pixels from every other cell (edges are 1 pixel wide
+    # and anti-aliased) and 4 from every site (dots of radius 1.5 pixels)
+    margin = 3 * step
+    checked = wrong = 0
+    for j in range(h):
+        for i in range(w):
+            q = (x0 + step // 2 + i * step, y0 + step // 2 + j * step)
+            a = sites[labels[j * w + i]]
+            da = (q[0] - a[0]) ** 2 + (q[1] - a[1]) ** 2
+            if min((q[0] - s[0]) ** 2 + (q[1] - s[1]) ** 2 for s in sites) < (4 * step) ** 2:
+                continue
+            # distance to the bisector with b is (db - da) / (2 |b - a|)
+            if any(s != a and ((q[0] - s[0]) ** 2 + (q[1] - s[1]) ** 2 - da) ** 2 <
+                   4 * margin ** 2 * ((s[0] - a[0]) ** 2 + (s[1] - a[1]) ** 2) for s in sites):
+                continue
+            checked += 1
+            if pixels[h - 1 - j][i] != draw_colour(labels[j * w + i]):
+                wrong += 1
+                if wrong <= 3:
+                    check(False, f"draw: pixel {i},{h - 1 - j} is {pixels[h - 1 - j][i]}, "
+                                 f"site {labels[j * w + i]}'s colour is {draw_colour(labels[j * w + i])}")
+    check(checked > w * h // 3, f"draw: only {checked} of {w * h} pixels well inside cells")
+    check(wrong == 0, f"draw: {wrong} of {checked} pixel colours differ from the raster's sites")
+    # a dump in the firmware's format gives the same cells
+    dump = os.path.join(tmp, "draw.cells")
+    with open(dump, "w") as f:
+        f.write("box %d %d %d %d\n" % box + "".join(f"s {x} {y}\n" for x, y in sites[:40]))
+        f.write(run(["cells", "--box", *map(str, box), path], "").stdout)
+    svg_dump = os.path.join(tmp, "dump.svg")
+    r = run(["draw", "--cells", dump, "--size", str(w), str(h), "-o", svg_dump], "")
+    check(r.returncode == 0 and draw_cells(svg_dump) == expected, f"draw --cells: {r.returncode} {r.stderr!r}")
+    # the options: one label a distinct site, 2n - h - 2 triangles
+    r = run(["draw", "--triangles", "--ids", "--hull", path, "-o", svg], "")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(r.returncode == 0 and lint.returncode == 0, f"draw --triangles --ids --hull: {r.returncode} {lint.stderr!r}")
+    root = ET.parse(svg).getroot()
+    texts = sorted(int(t.text) for t in root.iter(ns + "text"))
+    check(texts == list(range(40)), f"draw --ids: labels {texts}")
+    strokes = {p.get("stroke"): p.get("d") for p in root.iter(ns + "path") if p.get("fill") == "none"}
+    # the hull's sides, each "Mx yLx y", from each hull site to the next
+    sides = [[tuple(int(v) for v in end.split()) for end in piece.split("L")]
+             for piece in strokes.get("#d01010", "").split("M")[1:]]
+    hull_points = [side[0] for side in sides]
+    check(all(sides[k - 1][1] == sides[k][0] for k in range(len(sides))), f"draw --hull: sides {sides} do not close")
+    check(len(hull_points) >= 3 and all(orient(hull_points[k - 2], hull_points[k - 1], hull_points[k]) >= 0
+                                        for k in range(len(hull_points))) and
+          all(orient(hull_points[k - 1], hull_points[k], s) >= 0 for k in range(len(hull_points)) for s in sites),
+          f"draw --hull: {hull_points} is not the convex hull, counterclockwise")
+    triangles = strokes.get("#1f4fbf", "").count("Z")
+    check(triangles == 2 * 40 - len(hull_points) - 2, f"draw --triangles: {triangles} triangles, hull {len(hull_points)}")
+    # more pieces than one path holds (libxml2's 10 MB attribute limit):
+    # split into several paths, still every triangle once
+    many = os.path.join(tmp, "many.sites")
+    with open(many, "w") as f:
+        f.write("".join(f"{rng.randint(MIN, MAX)} {rng.randint(MIN, MAX)}\n" for _ in range(3000)))
+    r = run(["draw", "--triangles", many, "-o", svg], "")
+    lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+    check(r.returncode == 0 and lint.returncode == 0, f"draw 3000 sites: {r.returncode} {lint.stderr!r}")
+    paths = [p.get("d") for p in ET.parse(svg).getroot().iter(ns + "path") if p.get("stroke") == "#1f4fbf"]
+    triangles = run(["delaunay", many], "").stdout.count("t ")
+    check(len(paths) > 1 and sum(d.count("Z") for d in paths) == triangles,
+          f"draw 3000 sites: {len(paths)} paths, {sum(d.count('Z') for d in paths)} of {triangles} triangles")
+    # errors: status 2, nothing written
+    out = os.path.join(tmp, "never.svg")
+    for args in (["--box", "5", "0", "5", "9", path, "-o", out], [path], [path, "-o", out, "--size", "0", "5"],
+                 ["--bogus", path, "-o", out], ["--cells", path, "-o", out]):
+        r = run(["draw", *args], "")
+        check(r.returncode == 2 and r.stderr.startswith("error: ") and not os.path.exists(out),
+              f"draw {args}: {r.returncode} {r.stderr!r}")
+    r = run(["draw", path, "-o", os.path.join(tmp, "no-such-dir", "x.svg")], "")
+    check(r.returncode == 2 and "no-such-dir" in r.stderr, f"draw to a missing directory: {r.returncode} {r.stderr!r}")
+
+
 def version_cases():
     # The expected string is read from the header's three numeric macros,
     # so a STRING that disagrees with MAJOR/MINOR/PATCH fails too.
@@ -662,6 +845,291 @@ def version_cases():
         r = run(["--version"], "")
         check(r.returncode == 0 and r.stdout == expected and r.stderr == "",
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
+
+
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw")
+
+
+def help_cases(tmp):
+    """--help and vor COMMAND --help on stdout with status 0; each help's
+    example, run in a shell, prints what the help says it prints."""
+    import os
+    for args in (["--help"], ["help"], ["-h"]):
+        r = run(args, "")
+        check(r.returncode == 0 and r.stderr == "" and all(c in r.stdout for c in COMMANDS)
+              and "x,y" in r.stdout and "--scale" in r.stdout, f"vor {args[0]}: {r.returncode} {r.stderr!r}")
+    env = dict(os.environ, PATH=os.path.dirname(os.path.abspath(VOR)) + os.pathsep + os.environ["PATH"])
+    for command in COMMANDS:
+        for args in ([command, "--help"], ["help", command], [command, "-", "--help"]):
+            r = run(args, "")
+            check(r.returncode == 0 and r.stderr == "" and r.stdout.startswith(f"usage: vor {command}")
+                  and "input:" in r.stdout and "output:" in r.stdout and "example:" in r.stdout,
+                  f"vor {' '.join(args)}: {r.returncode} {r.stdout[:60]!r} {r.stderr!r}")
+        # the example: "  $ command" lines, each followed by its output
+        lines = run([command, "--help"], "").stdout.split("example:\n", 1)[-1].splitlines()
+        steps = []
+        for line in lines:
+            if line.startswith("  $ "):
+                steps.append([line[4:], []])
+            elif steps:
+                steps[-1][1].append(line[2:])
+        check(len(steps) > 0, f"vor {command} --help: no example")
+        for shell, expected in steps:
+            r = subprocess.run(shell, shell=True, cwd=tmp, env=env, capture_output=True, text=True)
+            got = [l.split() for l in r.stdout.splitlines()]
+            check(r.returncode == 0 and got == [l.split() for l in expected],
+                  f"vor {command} --help example {shell!r}: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["bogus"], "")
+    check(r.returncode == 2 and r.stdout == "" and "unknown command 'bogus'" in r.stderr and "vor --help" in r.stderr,
+          f"vor bogus: {r.returncode} {r.stderr!r}")
+    r = run(["help", "bogus"], "")
+    check(r.returncode == 2 and r.stdout == "" and "unknown command 'bogus'" in r.stderr, f"vor help bogus: {r.stderr!r}")
+    r = run(["--bogus"], "")
+    check(r.returncode == 2 and r.stdout == "" and "unknown option '--bogus'" in r.stderr, f"vor --bogus: {r.stderr!r}")
+    r = run([], "")
+    check(r.returncode == 2 and r.stdout == "" and "usage: vor COMMAND" in r.stderr, f"vor: {r.returncode} {r.stderr!r}")
+    # an unknown option is named, with the command's usage
+    for args in (["predicates", "--frobnicate"], ["delaunay", "--frobnicate", "-"], ["nearest", "--frobnicate", "-", "-"],
+                 ["cells", "--box", "0", "0", "1", "1", "--frobnicate", "-"],
+                 ["draw", "--frobnicate", "-", "-o", os.path.join(tmp, "x.svg")],
+                 ["raster", "--size", "2", "2", "--frobnicate", "-", "--labels", os.path.join(tmp, "x.raw")]):
+        r = run(args, "0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and "unknown option '--frobnicate'" in r.stderr
+              and f"usage: vor {args[0]}" in r.stderr, f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    r = run(["raster", "--size", "2", "2", "-", "--labels"], "0 0\n")
+    check(r.returncode == 2 and "missing value after '--labels'" in r.stderr, f"raster --labels without a path: {r.stderr!r}")
+    r = run(["delaunay", "--scale"], "0 0\n")
+    check(r.returncode == 2 and "--scale" in r.stderr, f"--scale without S: {r.stderr!r}")
+    for bad in ("0", "-1", "x", "1.5.2", ""):
+        r = run(["delaunay", "--scale", bad, "-"], "0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and f"--scale" in r.stderr and f"'{bad}'" in r.stderr,
+              f"--scale {bad!r}: {r.returncode} {r.stderr!r}")
+
+
+def file_error_cases(tmp):
+    """Files that cannot be read or written: status 2, the path and the
+    system's reason, nothing on stdout, an existing output untouched."""
+    import errno
+    import os
+    sites = os.path.join(tmp, "fe.sites")
+    with open(sites, "w") as f:
+        f.write("0 0\n5 1\n2 7\n")
+    missing, not_dir = os.path.join(tmp, "no-such-file"), os.path.join(sites, "x")
+    for path, code in ((tmp, errno.EISDIR), (missing, errno.ENOENT), (not_dir, errno.ENOTDIR)):
+        for args in (["delaunay", path], ["nearest", path, sites], ["nearest", sites, path],
+                     ["cells", "--box", "0", "0", "9", "9", path],
+                     ["raster", "--size", "3", "3", path, "--labels", os.path.join(tmp, "fe.raw")]):
+            r = run(args, "")
+            want = f"error: {path}: {os.strerror(code)}\n"
+            check(r.returncode == 2 and r.stdout == "" and r.stderr == want,
+                  f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}, expected {want!r}")
+    # a NUL byte is an error on its line, not a silently dropped line
+    for text, line in (("0 0\n1\x002\n3 3\n", 2), ("\x00\n", 1), ("0 0\n# c\x00\n", 2)):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: NUL byte"),
+              f"NUL in {text!r}: {r.returncode} {r.stderr!r}")
+    # empty inputs: 0 sites, no output (delaunay, cells), no queries (nearest)
+    empty = os.path.join(tmp, "empty")
+    open(empty, "w").close()
+    for args in (["delaunay", empty], ["cells", "--box", "0", "0", "1", "1", empty], ["nearest", sites, empty],
+                 ["nearest", empty, empty], ["delaunay", "-"]):
+        r = run(args, "# only a comment\n\n")
+        check(r.returncode == 0 and r.stdout == "" and r.stderr == "", f"empty: vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    r = run(["nearest", empty, sites], "")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {empty}: no sites"), f"nearest with no sites: {r.stderr!r}")
+    r = run(["raster", "--size", "2", "2", empty, "--labels", os.path.join(tmp, "fe.raw")], "")
+    check(r.returncode == 2 and r.stderr.startswith(f"error: {empty}: no sites"), f"raster with no sites: {r.stderr!r}")
+    # outputs: a failing run leaves an existing output as it was and no
+    # temporary file behind; an unwritable path names the path and reason
+    out = os.path.join(tmp, "keep.raw")
+    bad_sites = os.path.join(tmp, "fe-bad.sites")
+    with open(bad_sites, "w") as f:
+        f.write("0 0\n1 x\n")
+    for kind in ("--labels", "--png"):
+        with open(out, "w") as f:
+            f.write("keep")
+        before = sorted(os.listdir(tmp))
+        r = run(["raster", "--size", "3", "3", bad_sites, kind, out], "")
+        check(r.returncode == 2 and open(out).read() == "keep" and sorted(os.listdir(tmp)) == before,
+              f"raster {kind} with a bad site line: {r.returncode}, output changed or a temporary file left")
+        for path, code in ((os.path.join(missing, "out"), errno.ENOENT), (tmp, errno.EISDIR),
+                           (os.path.join(not_dir), errno.ENOTDIR)):
+            r = run(["raster", "--size", "3", "3", sites, kind, path], "")
+            want = f"error: {path}: {os.strerror(code)}\n"
+            check(r.returncode == 2 and r.stderr == want, f"raster {kind} {path}: {r.returncode} {r.stderr!r}, expected {want!r}")
+        check(sorted(os.listdir(tmp)) == before, f"raster {kind}: a temporary file was left behind")
+        r = run(["raster", "--size", "3", "3", sites, kind, out], "")
+        check(r.returncode == 0 and open(out, "rb").read() != b"keep" and sorted(os.listdir(tmp)) == before
+              and (os.stat(out).st_mode & 0o777) == 0o666 & ~current_umask(),
+              f"raster {kind} over an existing file: {r.returncode} {r.stderr!r} mode {oct(os.stat(out).st_mode)}")
+    # standard output on a full device, and an input without permission
+    if os.path.exists("/dev/full"):
+        with open("/dev/full", "w") as full:
+            r = subprocess.run([VOR, "delaunay", sites], stdout=full, capture_output=False,
+                               stderr=subprocess.PIPE, text=True)
+        want = f"error: <stdout>: {os.strerror(errno.ENOSPC)}\n"
+        check(r.returncode == 2 and r.stderr == want, f"stdout on /dev/full: {r.returncode} {r.stderr!r}")
+    if os.geteuid() != 0:  # root reads any file
+        locked = os.path.join(tmp, "locked.sites")
+        with open(locked, "w") as f:
+            f.write("0 0\n")
+        os.chmod(locked, 0)
+        r = run(["delaunay", locked], "")
+        check(r.returncode == 2 and r.stderr == f"error: {locked}: {os.strerror(errno.EACCES)}\n",
+              f"unreadable file: {r.returncode} {r.stderr!r}")
+        os.remove(locked)
+    # a frame outside int32 is explained, not a bare library error number
+    r = run(["raster", "--size", "4", "4", "--origin", "2147483647", "0", sites, "--labels", out], "")
+    check(r.returncode == 2 and "(2147483650, 3)" in r.stderr and "int32" in r.stderr and "error -1" not in r.stderr,
+          f"raster --origin 2147483647: {r.stderr!r}")
+
+
+def error_name_cases():
+    """No library error is reachable through the checked arguments, so the
+    table behind "error: CALL: VOR_ERR_X: meaning" is checked against the
+    header: every code of enum vor_error has its name and a meaning."""
+    import os
+    import re
+    root = os.path.join(os.path.dirname(__file__), "..", "..")
+    header = open(os.path.join(root, "include", "vor.h")).read()
+    source = open(os.path.join(root, "tools", "cli", "cli.c")).read()
+    names = re.findall(r"^\s*(VOR_ERR_[A-Z_]+) = -\d+", header, re.M)
+    check(len(names) >= 9, f"vor.h: only {len(names)} error codes found")
+    for name in names:
+        check(re.search(rf'case {name}: return "{name}: [a-z]', source) is not None,
+              f"tools/cli/cli.c: cli_error_text does not name {name}")
+
+
+def current_umask():
+    import os
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
+
+
+def round_half_away(v):
+    """v rounded to the nearest integer, ties away from zero."""
+    import math
+    from fractions import Fraction as F
+    n = math.floor(abs(v) + F(1, 2))
+    return n if v >= 0 else -n
+
+
+def decimal_text(v):
+    """An exact decimal string of the fraction v (its denominator 2^a 5^b)."""
+    import decimal
+    with decimal.localcontext() as ctx:
+        ctx.prec = 200
+        ctx.traps[decimal.Inexact] = True
+        return str(decimal.Decimal(v.numerator) / decimal.Decimal(v.denominator))
+
+
+def input_cases(rng, tmp):
+    """CSV input and --scale: the same answers as the integer form, and
+    scaled values equal to Python's exact rounding of the fraction."""
+    import os
+    from fractions import Fraction as F
+    pts = [(rng.randint(-10**6, 10**6), rng.randint(-10**6, 10**6)) for _ in range(60)]
+    plain = "".join(f"{x} {y}\n" for x, y in pts)
+    ref = run(["delaunay", "-"], plain)
+    check(ref.returncode == 0 and ref.stdout.startswith("t "), f"delaunay reference: {ref.stderr!r}")
+    forms = {
+        "csv": "".join(f"{x},{y}\n" for x, y in pts),
+        "csv header": "x,y\n" + "".join(f"{x},{y}\n" for x, y in pts),
+        "quoted header, blanks, CRLF": '"x", "y"\r\n' + "".join(f" {x} ,\t{y}\r\n" for x, y in pts),
+        "comment then header": "# exported\nlon,lat\n" + "".join(f"{x},{y}\n" for x, y in pts),
+    }
+    for name, text in forms.items():
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 0 and r.stdout == ref.stdout, f"delaunay {name}: {r.returncode} {r.stderr!r}")
+    sp, qp = os.path.join(tmp, "in.sites"), os.path.join(tmp, "in.queries")
+    queries = [(rng.randint(-10**6, 10**6), rng.randint(-10**6, 10**6)) for _ in range(40)]
+    with open(sp, "w") as f:
+        f.write(forms["csv header"])
+    with open(qp, "w") as f:
+        f.write("qx,qy\n" + "".join(f"{x},{y}\n" for x, y in queries))
+    r = run(["nearest", "--k=3", sp, qp], "")
+    want = [sorted(range(len(pts)), key=lambda i: ((pts[i][0] - qx) ** 2 + (pts[i][1] - qy) ** 2, i))[:3] for qx, qy in queries]
+    check(r.returncode == 0 and [[int(v) for v in l.split()] for l in r.stdout.splitlines()] == want,
+          f"nearest CSV: {r.returncode} {r.stderr!r}")
+    r = run(["cells", "--box", "-1000000", "-1000000", "1000000", "1000000", sp], "")
+    r2 = run(["cells", "--box", "-1000000", "-1000000", "1000000", "1000000", "-"], plain)
+    check(r.returncode == 0 and r.stdout == r2.stdout and r.stdout != "", f"cells CSV: {r.returncode} {r.stderr!r}")
+    r = run(["raster", "--size", "5", "4", "--metric", "add", "-", "--labels", os.path.join(tmp, "csv.raw")], "x,y,w\n1,1,2\n4,3,0\n")
+    r2 = run(["raster", "--size", "5", "4", "--metric", "add", "-", "--labels", os.path.join(tmp, "plain.raw")], "1 1 2\n4 3 0\n")
+    check(r.returncode == 0 and r2.returncode == 0 and open(os.path.join(tmp, "csv.raw"), "rb").read()
+          == open(os.path.join(tmp, "plain.raw"), "rb").read(), f"raster CSV: {r.stderr!r} {r2.stderr!r}")
+    r = run(["predicates"], "o,0,0,1,0,0,1\nc, 0, 0, 2, 0, 0, 2, 2, 2\n")
+    check(r.returncode == 0 and r.stdout == "1\n0\n", f"predicates CSV: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    # malformed CSV, and a header anywhere but first, name their line
+    for text, line, reason in (("0,0\n1,,2\n", 2, "CSV field 2 is empty"), ("0,0\n1,2,\n", 2, "CSV field 3 is empty"),
+                               ("x,y\n0,0\nx,y\n", 3, "'x'"), ("0,0\n1 2,3\n", 2, "blank"),
+                               ("x y\n0 0\n", 1, "'x'"), ("0,0\n1;2\n", 2, "'1;2'"), ("0,0,0\n", 1, "too many fields")):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: ") and reason in r.stderr,
+              f"delaunay {text!r}: {r.returncode} {r.stderr!r}")
+    # --scale: each line compares the scaled x of a with the line x = E of
+    # b and c (E from exact fractions, given as E/S so that it scales back
+    # to E): orient2d is 0 exactly when vor's value equals E
+    scales = ["1", "1000", "0.5", "2.5", "0.001", "64", "1e6", "0.125", "1E-2", "3.2", "+4", "0.0000390625"]
+    fixed = ["0.5", "-0.5", "2.5", "-2.5", "1.49999999999999999999", "-1.5000000000000000000000001", "0", "-0",
+             ".5", "7.", "1e0", "-3E+2", "0.000", "00012.3400"]
+    for scale in scales:
+        values = list(fixed)
+        for _ in range(80):
+            digits = "".join(rng.choice("0123456789") for _ in range(rng.randint(0, 9)))
+            fraction = "".join(rng.choice("0123456789") for _ in range(rng.randint(0, 14)))
+            text = (digits or "0") + ("." + fraction if fraction else "")
+            if rng.random() < 0.3:
+                text += rng.choice("eE") + rng.choice(["", "+", "-"]) + str(rng.randint(0, 4))
+            values.append(rng.choice(["", "-", "+"]) + text)
+        S = F(scale)
+        lines, expected_error = [], None
+        for v in values:
+            e = round_half_away(F(v) * S)
+            if not MIN <= e <= MAX:
+                continue
+            back, unit = decimal_text(F(e) / S), decimal_text(1 / S)
+            lines.append(f"o {v} 0 {back} {unit} {back} -{unit}")
+        r = run(["predicates", "--scale", scale], "\n".join(lines) + "\n")
+        got = r.stdout.split()
+        wrong = sum(g != "0" for g in got)
+        check(r.returncode == 0 and len(got) == len(lines) and wrong == 0,
+              f"--scale {scale}: {r.returncode} {r.stderr!r}, {wrong} of {len(lines)} values differ from exact rounding")
+    # the int32 boundary after scaling, with the line of the bad value
+    for scale, value, ok in (("1", "2147483647.4999999", True), ("1", "2147483647.5", False),
+                             ("1", "-2147483648.4999", True), ("1", "-2147483648.5", False),
+                             ("1000", "2147483.6474999", True), ("1000", "2147483.6475", False),
+                             ("0.001", "2147483647499.99", True), ("1e9", "3", False), ("1", "1e10", False),
+                             ("1", "1e-100000000", True), ("1", "4e100000000", False)):
+        r = run(["delaunay", "--scale", scale, "-"], f"0 0\n# c\n1 {value}\n")
+        if ok:
+            check(r.returncode == 0, f"--scale {scale} {value}: {r.returncode} {r.stderr!r}")
+        else:
+            check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:3: out of int32 range")
+                  and f"'{value}'" in r.stderr, f"--scale {scale} {value}: {r.returncode} {r.stderr!r}")
+    for bad in ("1.2.3", "1e", "--1", ".", "1x", "e5"):
+        r = run(["delaunay", "--scale", "10", "-"], f"0 0\n{bad} 1\n")
+        check(r.returncode == 2 and r.stderr.startswith(f"error: <stdin>:2: not a decimal number: '{bad}'"),
+              f"--scale 10 {bad!r}: {r.returncode} {r.stderr!r}")
+    r = run(["delaunay", "-"], "0 0\n1.5 2\n")
+    check(r.returncode == 2 and "--scale" in r.stderr, f"a decimal without --scale suggests it: {r.stderr!r}")
+    # every command reads scaled points: the same answers as the integers
+    scaled = "".join(f"{decimal_text(F(x, 1000))},{decimal_text(F(y, 1000))}\n" for x, y in pts)
+    r = run(["delaunay", "--scale", "1000", "-"], "x,y\n" + scaled)
+    check(r.returncode == 0 and r.stdout == ref.stdout, f"delaunay --scale: {r.returncode} {r.stderr!r}")
+    cells_ref = run(["cells", "--box", "-1000000", "-1000000", "1000000", "1000000", "-"], plain).stdout
+    r = run(["cells", "--scale", "1000", "--box", "-1000000", "-1000000", "1000000", "1000000", "-"], scaled)
+    check(r.returncode == 0 and r.stdout == cells_ref, f"cells --scale: {r.returncode} {r.stderr!r}")
+    # the queries (integers in qp) are scaled too: 1000 times farther out
+    r = run(["nearest", "--scale", "1000", "-", qp], scaled)
+    want = [min(range(len(pts)), key=lambda i: ((pts[i][0] - 1000 * qx) ** 2 + (pts[i][1] - 1000 * qy) ** 2, i))
+            for qx, qy in queries]
+    check(r.returncode == 0 and [int(v) for v in r.stdout.split()] == want, f"nearest --scale: {r.returncode} {r.stderr!r}")
+    r = run(["raster", "--size", "5", "4", "--metric", "add", "--scale", "10", "-", "--labels", os.path.join(tmp, "csv.raw")],
+            "0.1,0.1,0.2\n0.4,0.3,0\n")
+    check(r.returncode == 0 and open(os.path.join(tmp, "csv.raw"), "rb").read() == open(os.path.join(tmp, "plain.raw"), "rb").read(),
+          f"raster --scale: {r.returncode} {r.stderr!r}")
 
 
 def main():
@@ -690,7 +1158,7 @@ def main():
         r = run(["predicates"], text)
         check(r.returncode == 2, f"bad input {text!r}: exit {r.returncode}, expected 2")
         check(r.stdout == "", f"bad input {text!r}: stdout {r.stdout!r}, expected nothing")
-        check(r.stderr.startswith(f"error: line {line}: ") and reason in r.stderr,
+        check(r.stderr.startswith(f"error: <stdin>:{line}: ") and reason in r.stderr,
               f"bad input {text!r}: stderr {r.stderr!r}")
     r = run(["predicates"], "o -2147483648 -2147483648 0 0 2147483647 2147483647\n")
     check(r.stdout == "0\n", f"full-range collinear: {r.stdout!r}")
@@ -702,9 +1170,12 @@ def main():
         cells_cases(rng, tmp)
         raster_metric_cases(rng, tmp)
         contours_cases(rng, tmp)
+        help_cases(tmp)
+        file_error_cases(tmp)
+        input_cases(rng, tmp)
+        draw_cases(rng, tmp)
     version_cases()
-    r = run(["no-such-command"], "")
-    check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
+    error_name_cases()
 
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1

@@ -1,13 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * vor cells --box X0 Y0 X1 Y1 SITES
+ * vor cells --box X0 Y0 X1 Y1 [--scale S] SITES
  *
  * For each site i of SITES (counted like `vor delaunay`) that is not a
  * duplicate of an earlier one, one line "c i m x1 y1 ... xm ym": its
  * Voronoi cell clipped to the box [X0, X1] x [Y0, Y1], counterclockwise
  * from the lowest vertex, computed exactly and rounded to the nearest
  * integer (halves up); m = 0 when the cell meets the box in no area.
- * Bad input: "error: line N: reason" (or "error: reason" for the
+ * Bad input: "error: FILE:N: reason" (or "error: reason" for the
  * arguments), exit 2, nothing on stdout.
  */
 #include <stdlib.h>
@@ -15,14 +15,35 @@
 
 #include "cli.h"
 
-#define USAGE "usage: vor cells --box X0 Y0 X1 Y1 SITES"
+#define USAGE "usage: vor cells --box X0 Y0 X1 Y1 [--scale S] SITES"
+
+const char cli_cells_help[] =
+    USAGE "\n"
+    "\n"
+    "The Voronoi cell of each site of SITES ('-': stdin), clipped to the box\n"
+    "[X0, X1] x [Y0, Y1] (int32, X0 <= X1, Y0 <= Y1, in the units after --scale).\n"
+    "\n"
+    "input:  one site per line, \"x y\" or \"x,y\" (CSV, optional header line);\n"
+    "        decimal int32, or decimal numbers with --scale S (times S, rounded\n"
+    "        to nearest, ties away from zero); blank and '#' lines skipped; site i\n"
+    "        is the i-th site line, from 0. An empty file: no output.\n"
+    "output: \"c i m x1 y1 ... xm ym\" per site i that repeats no earlier site:\n"
+    "        its cell counterclockwise from the lowest vertex, each vertex exact\n"
+    "        and rounded to the nearest integer, halves up; m = 0 when the cell\n"
+    "        meets the box in no area.\n"
+    "\n"
+    "example:\n"
+    "  $ printf '0 0\\n10 0\\n30 0\\n10 0\\n' | vor cells --box -10 -10 50 10 -\n"
+    "  c 0 4 -10 -10 5 -10 5 10 -10 10\n"
+    "  c 1 4 5 -10 20 -10 20 10 5 10\n"
+    "  c 2 4 20 -10 50 -10 50 10 20 10\n";
 
 static int32_t box_field(const char *text)
 {
     const char *cursor = text, *why = "";
     int32_t value;
     if (!cli_int32_field(&cursor, &value, &why) || !cli_at_end(cursor)) {
-        fprintf(stderr, "error: --box: %s: %s\n", text, why[0] ? why : "not a decimal integer");
+        fprintf(stderr, "error: --box: expected four int32 values X0 Y0 X1 Y1, got '%s'\n", text);
         exit(2);
     }
     return value;
@@ -34,7 +55,10 @@ int cli_cells(int argc, char **argv)
     bool have_box = false;
     const char *path = NULL;
     for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--box") == 0 && i + 4 < argc) {
+        if (strcmp(argv[i], "--box") == 0) {
+            if (i + 4 >= argc) {
+                cli_usage_error("cells", USAGE, "--box needs four values X0 Y0 X1 Y1 before SITES", NULL);
+            }
             box.x0 = box_field(argv[i + 1]);
             box.y0 = box_field(argv[i + 2]);
             box.x1 = box_field(argv[i + 3]);
@@ -43,12 +67,17 @@ int cli_cells(int argc, char **argv)
             i += 4;
         } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
             path = argv[i];
+        } else if (path == NULL) {
+            cli_usage_error("cells", USAGE, "unknown option", argv[i]);
         } else {
-            cli_error(USAGE);
+            cli_usage_error("cells", USAGE, "unexpected argument", argv[i]);
         }
     }
-    if (!have_box || path == NULL) {
-        cli_error(USAGE);
+    if (!have_box) {
+        cli_usage_error("cells", USAGE, "missing --box X0 Y0 X1 Y1", NULL);
+    }
+    if (path == NULL) {
+        cli_usage_error("cells", USAGE, "missing SITES", NULL);
     }
     if (box.x0 > box.x1 || box.y0 > box.y1) {
         cli_error("--box: X0 > X1 or Y0 > Y1");
@@ -63,9 +92,13 @@ int cli_cells(int argc, char **argv)
         cli_error("out of memory");
     }
     vor_t d;
-    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK ||
-        vor_build(&d, sites, n, NULL, duplicate_of) != VOR_OK) {
-        cli_error("cannot build the diagram");
+    int err = vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity);
+    if (err != VOR_OK) {
+        cli_library_error("vor_init", err);
+    }
+    err = vor_build(&d, sites, n, NULL, duplicate_of);
+    if (err != VOR_OK) {
+        cli_library_error("vor_build", err);
     }
     cli_output_t out = {NULL, 0, 0};
     for (uint32_t i = 0; i < n; i++) {
@@ -73,8 +106,9 @@ int cli_cells(int argc, char **argv)
             continue;
         }
         uint32_t count;
-        if (vor_cell(&d, i, &box, vertices, VOR_CELL_MAX_VERTICES(capacity), &count) != VOR_OK) {
-            cli_error("cell computation failed");
+        err = vor_cell(&d, i, &box, vertices, VOR_CELL_MAX_VERTICES(capacity), &count);
+        if (err != VOR_OK) {
+            cli_library_error("vor_cell", err);
         }
         cli_append(&out, "c %u %u", i, count);
         for (uint32_t k = 0; k < count; k++) {

@@ -7,7 +7,28 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
+
+/* The tool is one short-lived process: the --scale setting, the quoted
+ * reason of the last bad field and the pending temporary output are
+ * process-wide, which keeps every command's code free of them. */
+static char field_reason[200];
+static char pending_output[4096];
+
+static const char *display_name(const char *path)
+{
+    return strcmp(path, "-") == 0 ? "<stdin>" : path;
+}
+
+/* atexit: an error exit must not leave a half-written temporary file. */
+static void remove_pending_output(void)
+{
+    if (pending_output[0] != '\0') {
+        remove(pending_output);
+        pending_output[0] = '\0';
+    }
+}
 
 void cli_error(const char *message)
 {
@@ -17,8 +38,95 @@ void cli_error(const char *message)
 
 void cli_line_error(const cli_input_t *in, const char *reason)
 {
-    fprintf(stderr, "error: line %lu: %s\n", in->line_number, reason);
+    fprintf(stderr, "error: %s:%lu: %s\n", display_name(in->name), in->line_number, reason);
     exit(2);
+}
+
+static void path_error(const char *path, int error)
+{
+    fprintf(stderr, "error: %s: %s\n", display_name(path), strerror(error));
+    exit(2);
+}
+
+const char *cli_error_text(int err)
+{
+    switch (err) {
+    case VOR_ERR_ARG: return "VOR_ERR_ARG: invalid argument (a NULL pointer or a value out of range)";
+    case VOR_ERR_NOMEM: return "VOR_ERR_NOMEM: the arena is smaller than VOR_ARENA_BYTES";
+    case VOR_ERR_ALIGN: return "VOR_ERR_ALIGN: the arena is not VOR_ARENA_ALIGN-aligned";
+    case VOR_ERR_FULL: return "VOR_ERR_FULL: the diagram holds max_sites sites already";
+    case VOR_ERR_DUPLICATE: return "VOR_ERR_DUPLICATE: the point is a site already";
+    case VOR_ERR_INVALID: return "VOR_ERR_INVALID: vor_validate found a broken invariant";
+    case VOR_ERR_EMPTY: return "VOR_ERR_EMPTY: a query on a diagram without sites";
+    case VOR_ERR_BUFFER: return "VOR_ERR_BUFFER: the caller's buffer is too small";
+    case VOR_ERR_CONFIG: return "VOR_ERR_CONFIG: library and tool were compiled with different vor_config.h";
+    default: return "unknown error code";
+    }
+}
+
+void cli_library_error(const char *call, int err)
+{
+    fprintf(stderr, "error: %s: %s\n", call, cli_error_text(err));
+    exit(2);
+}
+
+void cli_usage_error(const char *command, const char *usage, const char *problem, const char *argument)
+{
+    if (argument != NULL) {
+        fprintf(stderr, "error: vor %s: %s '%s'\n", command, problem, argument);
+    } else {
+        fprintf(stderr, "error: vor %s: %s\n", command, problem);
+    }
+    fprintf(stderr, "%s\nrun 'vor %s --help' for the formats and an example\n", usage, command);
+    exit(2);
+}
+
+FILE *cli_create_output(const char *path)
+{
+    struct stat status;
+    if (stat(path, &status) == 0 && S_ISDIR(status.st_mode)) {
+        path_error(path, EISDIR);
+    }
+    if (strlen(path) + 8 > sizeof pending_output) {
+        path_error(path, ENAMETOOLONG);
+    }
+    snprintf(pending_output, sizeof pending_output, "%s.XXXXXX", path);
+    static bool cleanup_registered = false;
+    if (!cleanup_registered) {
+        atexit(remove_pending_output);
+        cleanup_registered = true;
+    }
+    int fd = mkstemp(pending_output);
+    if (fd < 0) {
+        int error = errno;
+        pending_output[0] = '\0';
+        path_error(path, error);
+    }
+    /* mkstemp makes the file private; a plain output file gets the umask */
+    mode_t mask = umask(0);
+    umask(mask);
+    FILE *file = (fchmod(fd, 0666 & ~mask) == 0) ? fdopen(fd, "wb") : NULL;
+    if (file == NULL) {
+        path_error(path, errno);
+    }
+    return file;
+}
+
+void cli_commit_output(FILE *file, const char *path)
+{
+    bool written = !ferror(file);
+    int error = errno;
+    if (fclose(file) != 0 && written) {
+        written = false;
+        error = errno;
+    }
+    if (!written) {
+        path_error(path, error);
+    }
+    if (rename(pending_output, path) != 0) {
+        path_error(path, errno);
+    }
+    pending_output[0] = '\0';
 }
 
 void cli_open(cli_input_t *in, const char *path)
@@ -27,14 +135,19 @@ void cli_open(cli_input_t *in, const char *path)
     in->line_number = 0;
     in->buffer = NULL;
     in->capacity = 0;
+    in->header_allowed = true;
     if (strcmp(path, "-") == 0) {
         in->file = stdin;
         return;
     }
     in->file = fopen(path, "r");
     if (in->file == NULL) {
-        fprintf(stderr, "error: %s: %s\n", path, strerror(errno));
-        exit(2);
+        path_error(path, errno);
+    }
+    /* fopen opens a directory for reading on Linux; reading it fails later */
+    struct stat status;
+    if (fstat(fileno(in->file), &status) == 0 && S_ISDIR(status.st_mode)) {
+        path_error(path, EISDIR);
     }
 }
 
@@ -52,12 +165,57 @@ static bool is_blank(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
+/* A CSV line: checks that every comma-separated field is one non-empty
+ * token, then turns the commas into blanks for the field parsers. */
+static void split_csv(cli_input_t *in, char *line)
+{
+    unsigned field = 1;
+    char *start = line;
+    for (char *p = line;; p++) {
+        if (*p != ',' && *p != '\0') {
+            continue;
+        }
+        char *first = start, *last = p;
+        while (first < last && is_blank(*first)) {
+            first++;
+        }
+        while (last > first && is_blank(last[-1])) {
+            last--;
+        }
+        char reason[120];
+        if (first == last) {
+            snprintf(reason, sizeof reason, "CSV field %u is empty", field);
+            cli_line_error(in, reason);
+        }
+        for (char *q = first; q < last; q++) {
+            if (is_blank(*q)) {
+                snprintf(reason, sizeof reason,
+                         "CSV field %u holds a blank (separate fields by commas or by blanks, not both)", field);
+                cli_line_error(in, reason);
+            }
+        }
+        if (*p == '\0') {
+            return;
+        }
+        *p = ' ';
+        start = p + 1;
+        field++;
+    }
+}
+
 const char *cli_next_line(cli_input_t *in)
 {
     for (;;) {
         size_t length = 0;
         int c;
         while ((c = fgetc(in->file)) != EOF && c != '\n') {
+            if (c == '\0') {
+                /* a NUL would end the line early and drop its site silently */
+                char reason[120];
+                in->line_number++;
+                snprintf(reason, sizeof reason, "NUL byte at column %zu (a binary file?)", length + 1);
+                cli_line_error(in, reason);
+            }
             if (length + 2 > in->capacity) {
                 in->capacity = in->capacity ? 2 * in->capacity : 256;
                 in->buffer = realloc(in->buffer, in->capacity);
@@ -66,6 +224,9 @@ const char *cli_next_line(cli_input_t *in)
                 }
             }
             in->buffer[length++] = (char)c;
+        }
+        if (c == EOF && ferror(in->file)) {
+            path_error(in->name, errno);
         }
         if (c == EOF && length == 0) {
             return NULL;
@@ -79,9 +240,19 @@ const char *cli_next_line(cli_input_t *in)
         while (*p != '\0' && is_blank(*p)) {
             p++;
         }
-        if (*p != '\0' && *p != '#') {
-            return in->buffer;
+        if (*p == '\0' || *p == '#') {
+            continue;
         }
+        bool header = in->header_allowed && strchr(p, ',') != NULL &&
+                      (*p == '"' || (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z'));
+        in->header_allowed = false;
+        if (header) {
+            continue;
+        }
+        if (strchr(p, ',') != NULL) {
+            split_csv(in, in->buffer);
+        }
+        return in->buffer;
     }
 }
 
@@ -91,6 +262,18 @@ bool cli_at_end(const char *cursor)
         cursor++;
     }
     return *cursor == '\0';
+}
+
+/* The field at p (up to a blank or the end), quoted in field_reason after
+ * the problem. */
+static const char *quote_field(const char *problem, const char *p)
+{
+    int length = 0;
+    while (p[length] != '\0' && !is_blank(p[length]) && length < 60) {
+        length++;
+    }
+    snprintf(field_reason, sizeof field_reason, "%s: '%.*s'", problem, length, p);
+    return field_reason;
 }
 
 bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
@@ -103,12 +286,13 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
         *why = "missing coordinate";
         return false;
     }
+    const char *field = p;
     bool negative = (*p == '-');
     if (*p == '-' || *p == '+') {
         p++;
     }
     if (*p < '0' || *p > '9') {
-        *why = "not a decimal integer";
+        *why = quote_field("not a decimal integer", field);
         return false;
     }
     /* accumulate the magnitude, bounded so it cannot overflow */
@@ -116,21 +300,186 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
     while (*p >= '0' && *p <= '9') {
         magnitude = magnitude * 10u + (unsigned)(*p - '0');
         if (magnitude > 2147483648ull) {
-            *why = "out of int32 range";
+            *why = quote_field("out of int32 range", field);
             return false;
         }
         p++;
     }
     if (*p != '\0' && !is_blank(*p)) {
-        *why = "not a decimal integer";
+        *why = quote_field(*p == '.' || *p == 'e' || *p == 'E'
+                               ? "not a decimal integer (use --scale S for decimal coordinates)"
+                               : "not a decimal integer",
+                           field);
         return false;
     }
     if (magnitude > (negative ? 2147483648ull : 2147483647ull)) {
-        *why = "out of int32 range";
+        *why = quote_field("out of int32 range", field);
         return false;
     }
     *value = negative ? (int32_t)(-(long long)magnitude) : (int32_t)magnitude;
     *cursor = p;
+    return true;
+}
+
+/* An exact decimal: (-1)^negative * digits * 10^exponent, digits[0] the
+ * most significant, no leading or trailing zeros (count 0: the value 0). */
+#define DECIMAL_DIGITS 100
+typedef struct {
+    bool negative;
+    unsigned count;
+    uint8_t digits[DECIMAL_DIGITS];
+    long exponent;
+} decimal_t;
+
+/* Parses [+-]D[.D][(e|E)[+-]D] (digits on at least one side of the point)
+ * up to a blank or the end; returns the end, or NULL with *why set. */
+static const char *parse_decimal(const char *p, decimal_t *d, const char **why)
+{
+    const char *field = p;
+    d->negative = (*p == '-');
+    d->count = 0;
+    d->exponent = 0;
+    if (*p == '-' || *p == '+') {
+        p++;
+    }
+    bool point = false, any_digit = false;
+    long pending_zeros = 0; /* zeros after the last nonzero digit */
+    for (;; p++) {
+        if (*p == '.' && !point) {
+            point = true;
+            continue;
+        }
+        if (*p < '0' || *p > '9') {
+            break;
+        }
+        any_digit = true;
+        d->exponent -= point;
+        if (*p == '0') {
+            pending_zeros += (d->count > 0); /* leading zeros carry nothing */
+            continue;
+        }
+        if ((long)d->count + pending_zeros + 1 > DECIMAL_DIGITS) {
+            *why = quote_field("more than 100 significant digits", field);
+            return NULL;
+        }
+        for (; pending_zeros > 0; pending_zeros--) {
+            d->digits[d->count++] = 0;
+        }
+        d->digits[d->count++] = (uint8_t)(*p - '0');
+    }
+    d->exponent += pending_zeros;
+    if (!any_digit) {
+        *why = quote_field("not a decimal number", field);
+        return NULL;
+    }
+    if (*p == 'e' || *p == 'E') {
+        p++;
+        bool exponent_negative = (*p == '-');
+        if (*p == '-' || *p == '+') {
+            p++;
+        }
+        if (*p < '0' || *p > '9') {
+            *why = quote_field("not a decimal number", field);
+            return NULL;
+        }
+        long e = 0;
+        for (; *p >= '0' && *p <= '9'; p++) {
+            /* saturates: beyond 10^100000 no nonzero value fits int32 */
+            e = (e < 100000) ? e * 10 + (*p - '0') : e;
+        }
+        d->exponent += exponent_negative ? -e : e;
+    }
+    if (*p != '\0' && !is_blank(*p)) {
+        *why = quote_field("not a decimal number", field);
+        return NULL;
+    }
+    return p;
+}
+
+static decimal_t scale;
+static bool scaled = false;
+
+void cli_set_scale(const char *text)
+{
+    const char *why;
+    const char *end = parse_decimal(text, &scale, &why);
+    if (end == NULL || !cli_at_end(end) || scale.negative || scale.count == 0) {
+        fprintf(stderr, "error: --scale: expected a positive decimal number such as 1000 or 0.5, got '%s'\n",
+                text);
+        exit(2);
+    }
+    scaled = true;
+}
+
+bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why)
+{
+    if (!scaled) {
+        return cli_int32_field(cursor, value, why);
+    }
+    const char *p = *cursor;
+    while (*p != '\0' && is_blank(*p)) {
+        p++;
+    }
+    if (*p == '\0') {
+        *why = "missing coordinate";
+        return false;
+    }
+    const char *field = p;
+    decimal_t v;
+    const char *end = parse_decimal(p, &v, why);
+    if (end == NULL) {
+        return false;
+    }
+    /* the exact product of the digit strings, least significant first */
+    uint8_t product[2 * DECIMAL_DIGITS + 1];
+    unsigned length = v.count + scale.count;
+    memset(product, 0, sizeof product);
+    for (unsigned i = 0; i < v.count; i++) {
+        unsigned carry = 0;
+        unsigned a = v.digits[v.count - 1u - i];
+        for (unsigned j = 0; j < scale.count; j++) {
+            unsigned t = product[i + j] + a * scale.digits[scale.count - 1u - j] + carry;
+            product[i + j] = (uint8_t)(t % 10u);
+            carry = t / 10u;
+        }
+        for (unsigned k = i + scale.count; carry != 0; k++) {
+            unsigned t = product[k] + carry;
+            product[k] = (uint8_t)(t % 10u);
+            carry = t / 10u;
+        }
+    }
+    /* value = product * 10^exponent; ties away from zero need only the first
+     * digit after the point: 5 or more rounds the magnitude up */
+    long exponent = v.exponent + scale.exponent;
+    const unsigned long long limit = v.negative ? 2147483648ull : 2147483647ull;
+    unsigned long long magnitude = 0;
+    for (long i = (long)length - 1; i >= 0; i--) {
+        if (i + exponent < 0) {
+            break;
+        }
+        magnitude = magnitude * 10u + product[i];
+        if (magnitude > limit) {
+            *why = quote_field("out of int32 range after --scale", field);
+            return false;
+        }
+    }
+    for (long k = 0; k < exponent && magnitude != 0; k++) {
+        magnitude *= 10u;
+        if (magnitude > limit) {
+            *why = quote_field("out of int32 range after --scale", field);
+            return false;
+        }
+    }
+    long first_fraction = -1 - exponent;
+    if (first_fraction >= 0 && first_fraction < (long)length && product[first_fraction] >= 5u) {
+        magnitude++;
+        if (magnitude > limit) {
+            *why = quote_field("out of int32 range after --scale", field);
+            return false;
+        }
+    }
+    *value = v.negative ? (int32_t)(-(long long)magnitude) : (int32_t)magnitude;
+    *cursor = end;
     return true;
 }
 
@@ -159,10 +508,12 @@ void cli_append(cli_output_t *out, const char *format, ...)
 
 void cli_flush(cli_output_t *out)
 {
-    if (out->length > 0 && fwrite(out->data, 1, out->length, stdout) != out->length) {
-        cli_error("writing standard output failed");
+    /* stdout is buffered: a full disk may show only at the flush */
+    if ((out->length > 0 && fwrite(out->data, 1, out->length, stdout) != out->length) ||
+        fflush(stdout) != 0) {
+        fprintf(stderr, "error: <stdout>: %s\n", strerror(errno));
+        exit(2);
     }
-    fflush(stdout);
     free(out->data);
     out->data = NULL;
     out->length = out->capacity = 0;
@@ -179,11 +530,13 @@ vor_point_t *cli_read_sites(const char *path, uint32_t *count)
         vor_point_t p;
         const char *why;
         const char *cursor = line;
-        if (!cli_int32_field(&cursor, &p.x, &why) || !cli_int32_field(&cursor, &p.y, &why)) {
-            cli_line_error(&in, why);
+        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why)) {
+            char reason[300];
+            snprintf(reason, sizeof reason, "%s (expected x y or x,y)", why);
+            cli_line_error(&in, reason);
         }
         if (!cli_at_end(cursor)) {
-            cli_line_error(&in, "too many fields (expected x y)");
+            cli_line_error(&in, "too many fields (expected x y or x,y)");
         }
         if (n == VOR_MAX_SITES) {
             cli_line_error(&in, "more sites than VOR_MAX_SITES");

@@ -15,33 +15,49 @@
 #include "vor.h"
 
 /* Input read line by line; blank lines and lines starting with '#' are
- * skipped, and line numbers count every physical line from 1. */
+ * skipped, and line numbers count every physical line from 1. A line with
+ * a comma is CSV: its commas become blanks, after checking that no field is
+ * empty or holds a blank. While header_allowed (cli_open sets it), a first
+ * CSV line starting with a letter or '"' is a header and skipped. */
 typedef struct {
     FILE *file;
     const char *name;
     unsigned long line_number;
     char *buffer;
     size_t capacity;
+    bool header_allowed;
 } cli_input_t;
 
-/* Opens path ("-" is standard input); exits with status 2 when it cannot. */
+/* Opens path ("-" is standard input); exits with status 2, naming the path
+ * and the system's reason, when it cannot or when path is a directory. */
 void cli_open(cli_input_t *in, const char *path);
 void cli_close(cli_input_t *in);
 
 /* The next non-blank, non-comment line, or NULL at the end of the input.
- * The line stays valid until the next call. */
+ * The line stays valid until the next call. A NUL byte, a read error or a
+ * malformed CSV line is an error exit naming the file and line. */
 const char *cli_next_line(cli_input_t *in);
 
 /* Parses one decimal int32 field at *cursor, skipping leading blanks, and
  * advances the cursor. Returns false (input unchanged) when there is no
  * field, it is not a decimal integer, or it is out of the int32 range;
- * *why then says which. */
+ * *why then says which, quoting the field (valid until the next call). */
 bool cli_int32_field(const char **cursor, int32_t *value, const char **why);
+
+/* Like cli_int32_field for a coordinate (or a distance in the same units):
+ * after cli_set_scale, a decimal number times the scale, rounded to the
+ * nearest integer, ties away from zero, computed exactly. */
+bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why);
+
+/* Sets the scale of cli_coordinate_field from the text of --scale S (a
+ * positive decimal); exits with status 2 when it is not one. */
+void cli_set_scale(const char *text);
 
 /* True when only blanks remain at cursor. */
 bool cli_at_end(const char *cursor);
 
-/* Prints "error: line N: reason" to stderr and exits with status 2. */
+/* Prints "error: FILE:N: reason" to stderr and exits with status 2 (FILE
+ * "<stdin>" for "-"). */
 void cli_line_error(const cli_input_t *in, const char *reason)
 #if defined(__GNUC__)
     __attribute__((noreturn))
@@ -54,6 +70,31 @@ void cli_error(const char *message)
     __attribute__((noreturn))
 #endif
     ;
+
+/* Prints "error: CALL: VOR_ERR_X: meaning" for a library error code and
+ * exits with status 2. */
+void cli_library_error(const char *call, int err)
+#if defined(__GNUC__)
+    __attribute__((noreturn))
+#endif
+    ;
+
+/* "VOR_ERR_X: meaning" for a library error code. */
+const char *cli_error_text(int err);
+
+/* Prints "error: vor COMMAND: problem", the usage and a pointer to
+ * `vor COMMAND --help` to stderr and exits with status 2. */
+void cli_usage_error(const char *command, const char *usage, const char *problem, const char *argument)
+#if defined(__GNUC__)
+    __attribute__((noreturn))
+#endif
+    ;
+
+/* Output files are written to a temporary file beside path and renamed
+ * over it only by cli_commit_output, so a failing run leaves path as it
+ * was. Both exit with status 2, naming path and the system's reason. */
+FILE *cli_create_output(const char *path);
+void cli_commit_output(FILE *file, const char *path);
 
 /* Output collected in memory and written only once the whole input was
  * valid, so a bad line leaves stdout empty. */
@@ -71,13 +112,20 @@ void cli_append(cli_output_t *out, const char *format, ...)
 /* Writes everything to stdout and frees the buffer. */
 void cli_flush(cli_output_t *out);
 
-/* Reads a site file ("x y" per line, blank and '#' lines skipped; site i
- * is the i-th site line) from path ("-": stdin). Exits with status 2 on a
- * bad line. The array is malloc'd; *count receives the number of sites. */
+/* Reads a site file ("x y" or "x,y" per line, coordinates read by
+ * cli_coordinate_field, blank and '#' lines and a CSV header skipped; site
+ * i is the i-th site line) from path ("-": stdin). Exits with status 2 on
+ * a bad line. An empty file gives 0 sites. The array is malloc'd; *count
+ * receives the number of sites. */
 vor_point_t *cli_read_sites(const char *path, uint32_t *count);
 
 /* Seconds from a monotonic clock, for --stats. */
 double cli_seconds(void);
+
+/* The text of `vor COMMAND --help`: usage, input and output formats, an
+ * example. */
+extern const char cli_predicates_help[], cli_delaunay_help[], cli_nearest_help[],
+    cli_raster_help[], cli_cells_help[], cli_draw_help[];
 
 /* Subcommands: each takes its arguments after the subcommand name and
  * returns the process exit status. */
@@ -86,5 +134,6 @@ int cli_delaunay(int argc, char **argv);
 int cli_nearest(int argc, char **argv);
 int cli_raster(int argc, char **argv);
 int cli_cells(int argc, char **argv);
+int cli_draw(int argc, char **argv);
 
 #endif

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * vor delaunay [--stats] [--order=quadtree|input] [--algo=incremental|dc|dc-quadtree] FILE
+ * vor delaunay [--stats] [--order=quadtree|input] [--algo=incremental|dc|dc-quadtree] [--scale S] FILE
  *
  * The Delaunay triangulation of the sites in FILE ("-": stdin): one line
  * "t i j k" per finite triangle, counterclockwise, rotated to start at its
@@ -12,6 +12,32 @@
 #include <string.h>
 
 #include "cli.h"
+
+#define USAGE "usage: vor delaunay [--stats] [--order=quadtree|input] [--algo=incremental|dc|dc-quadtree] [--scale S] FILE"
+
+const char cli_delaunay_help[] =
+    USAGE "\n"
+    "\n"
+    "The Delaunay triangulation of the sites in FILE ('-': stdin).\n"
+    "\n"
+    "input:  one site per line, \"x y\" or \"x,y\" (CSV, optional header line);\n"
+    "        decimal int32, or decimal numbers with --scale S (times S, rounded\n"
+    "        to nearest, ties away from zero); blank and '#' lines skipped; site i\n"
+    "        is the i-th site line, from 0. An empty file is 0 sites: no output.\n"
+    "output: \"t i j k\" per triangle, counterclockwise, from its smallest id,\n"
+    "        sorted; then \"d i j\" per site i that repeats an earlier site j.\n"
+    "        Collinear sites have no triangle.\n"
+    "  --stats       sizes, time and predicate counters on stderr\n"
+    "  --order=      insertion order of vor_build (default quadtree)\n"
+    "  --algo=       builder: incremental (vor_build), dc or dc-quadtree\n"
+    "                (vor_build_dc); the output is the same\n"
+    "  --scale S     read decimal coordinates, times S\n"
+    "\n"
+    "example:\n"
+    "  $ printf '0 0\\n10 0\\n0 10\\n10 10\\n10 0\\n' | vor delaunay -\n"
+    "  t 0 1 3\n"
+    "  t 0 3 2\n"
+    "  d 4 1\n";
 
 static int compare_triangles(const void *a, const void *b)
 {
@@ -48,14 +74,14 @@ int cli_delaunay(int argc, char **argv)
             split = VOR_DC_QUADTREE;
         } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
             path = argv[i];
+        } else if (path == NULL) {
+            cli_usage_error("delaunay", USAGE, "unknown option", argv[i]);
         } else {
-            cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] "
-                      "[--algo=incremental|dc|dc-quadtree] FILE");
+            cli_usage_error("delaunay", USAGE, "unexpected argument", argv[i]);
         }
     }
     if (path == NULL) {
-        cli_error("usage: vor delaunay [--stats] [--order=quadtree|input] "
-                      "[--algo=incremental|dc|dc-quadtree] FILE");
+        cli_usage_error("delaunay", USAGE, "missing FILE", NULL);
     }
     uint32_t n;
     vor_point_t *sites = cli_read_sites(path, &n);
@@ -66,14 +92,15 @@ int cli_delaunay(int argc, char **argv)
         cli_error("out of memory");
     }
     vor_t d;
-    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK) {
-        cli_error("cannot set up the diagram");
+    int err = vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity);
+    if (err != VOR_OK) {
+        cli_library_error("vor_init", err);
     }
     double start = cli_seconds();
     int built = dc ? vor_build_dc(&d, sites, n, split, duplicate_of)
                    : vor_build(&d, sites, n, &options, duplicate_of);
     if (built != VOR_OK) {
-        cli_error("build failed");
+        cli_library_error(dc ? "vor_build_dc" : "vor_build", built);
     }
     double seconds = cli_seconds() - start;
 

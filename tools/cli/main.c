@@ -8,6 +8,7 @@
  *   vor raster ... SITES      the discrete Voronoi diagram of a frame
  *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
  *   vor --version             the library version the tool was built with
+ *   vor --help, vor help [COMMAND], vor COMMAND --help   help on stdout
  */
 #include <stdio.h>
 #include <string.h>
@@ -25,7 +26,76 @@ static const struct {
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
+    {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
 };
+
+/* The help of each command (cli.h); a command without one shows its
+ * summary. */
+static const struct {
+    const char *name;
+    const char *text;
+} helps[] = {
+    {"predicates", cli_predicates_help},
+    {"delaunay", cli_delaunay_help},
+    {"nearest", cli_nearest_help},
+    {"raster", cli_raster_help},
+    {"cells", cli_cells_help},
+    {"draw", cli_draw_help},
+};
+
+static void print_usage(FILE *out)
+{
+    fprintf(out, "usage: vor COMMAND [OPTIONS] FILES...\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        fprintf(out, "  %-12s %s\n", commands[i].name, commands[i].summary);
+    }
+    fprintf(out, "  %-12s %s\n", "--version", "print the library version");
+    fprintf(out, "  %-12s %s\n", "--help", "this text; vor COMMAND --help: formats and an example");
+}
+
+static int print_help(void)
+{
+    print_usage(stdout);
+    printf("\n"
+           "Input: one point per line, \"x y\" (blanks between the fields) or \"x,y\"\n"
+           "(CSV; a first line starting with a letter, such as \"x,y\", is a header).\n"
+           "Coordinates are decimal int32; with --scale S they may be decimal numbers\n"
+           "(12.5, -3e-2), multiplied by S and rounded to the nearest integer, ties\n"
+           "away from zero, exactly. Blank lines and lines starting with '#' are\n"
+           "skipped; point i is the i-th remaining line, from 0. FILE '-' is stdin.\n"
+           "Output: text on stdout, written only when the whole input was valid.\n"
+           "Errors: \"error: FILE:LINE: reason\" on stderr, exit status 2.\n"
+           "\n"
+           "example:\n"
+           "  printf '0 0\\n10 0\\n0 10\\n' | vor delaunay -\n");
+    return 0;
+}
+
+/* Prints the help of command name on stdout; false if there is no such
+ * command. */
+static bool command_help(const char *name)
+{
+    for (size_t i = 0; i < sizeof helps / sizeof helps[0]; i++) {
+        if (strcmp(name, helps[i].name) == 0) {
+            fputs(helps[i].text, stdout);
+            return true;
+        }
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        if (strcmp(name, commands[i].name) == 0) {
+            printf("vor %s: %s\n", commands[i].name, commands[i].summary);
+            return true;
+        }
+    }
+    return false;
+}
+
+static int unknown_command(const char *name)
+{
+    fprintf(stderr, "error: unknown %s '%s'\nrun 'vor --help' for the list of commands\n",
+            name[0] == '-' ? "option" : "command", name);
+    return 2;
+}
 
 int main(int argc, char **argv)
 {
@@ -33,17 +103,39 @@ int main(int argc, char **argv)
         printf("vor %s\n", VOR_VERSION_STRING);
         return 0;
     }
-    if (argc >= 2) {
-        for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
-            if (strcmp(argv[1], commands[i].name) == 0) {
-                return commands[i].run(argc - 2, argv + 2);
-            }
-        }
+    if (argc < 2) {
+        print_usage(stderr);
+        return 2;
     }
-    fprintf(stderr, "usage: vor COMMAND [ARGS]\n");
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        (strcmp(argv[1], "help") == 0 && argc == 2)) {
+        return print_help();
+    }
+    if (strcmp(argv[1], "help") == 0) {
+        return command_help(argv[2]) ? 0 : unknown_command(argv[2]);
+    }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
-        fprintf(stderr, "  %-12s %s\n", commands[i].name, commands[i].summary);
+        if (strcmp(argv[1], commands[i].name) != 0) {
+            continue;
+        }
+        /* --help anywhere, and --scale S, are the same for every command */
+        int kept = 0;
+        for (int a = 2; a < argc; a++) {
+            if (strcmp(argv[a], "--help") == 0 || strcmp(argv[a], "-h") == 0) {
+                command_help(commands[i].name);
+                return 0;
+            }
+            if (strcmp(argv[a], "--scale") == 0) {
+                if (a + 1 == argc) {
+                    fprintf(stderr, "error: vor %s: --scale needs a value S\n", commands[i].name);
+                    return 2;
+                }
+                cli_set_scale(argv[++a]);
+                continue;
+            }
+            argv[2 + kept++] = argv[a];
+        }
+        return commands[i].run(kept, argv + 2);
     }
-    fprintf(stderr, "  %-12s %s\n", "--version", "print the library version");
-    return 2;
+    return unknown_command(argv[1]);
 }

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * vor nearest [--k=K] SITES QUERIES
+ * vor nearest [--k=K] [--scale S] SITES QUERIES
  *
  * For each query line "x y" of QUERIES, one line with the index (as in
  * SITES, counted like `vor delaunay`) of the nearest site by exact
@@ -8,35 +8,71 @@
  * with its first occurrence. With --k=K the line holds the K nearest
  * (fewer if there are fewer sites), nearest first, ties by index. Each
  * query starts its walk at the previous answer, as a moving robot would.
- * A bad line in either file: "error: line N: reason", exit 2, no output.
+ * A bad line in either file: "error: FILE:N: reason", exit 2, no output.
  */
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 
+#define USAGE "usage: vor nearest [--k=K] [--scale S] SITES QUERIES"
+
+const char cli_nearest_help[] =
+    USAGE "\n"
+    "\n"
+    "For each query point of QUERIES, the nearest site of SITES (either '-':\n"
+    "stdin).\n"
+    "\n"
+    "input:  one point per line in both files, \"x y\" or \"x,y\" (CSV, optional\n"
+    "        header line); decimal int32, or decimal numbers with --scale S\n"
+    "        (times S, rounded to nearest, ties away from zero); blank and '#'\n"
+    "        lines skipped; site i is the i-th site line, from 0.\n"
+    "output: one line per query: the index of the nearest site by exact\n"
+    "        distance, ties to the smaller index, a repeated site answered by\n"
+    "        its first occurrence. No queries: no output.\n"
+    "  --k=K         the K nearest (1 <= K <= 1000), nearest first, ties by\n"
+    "                index; fewer when SITES has fewer distinct points\n"
+    "  --scale S     read decimal coordinates, times S\n"
+    "\n"
+    "example:\n"
+    "  $ printf '0 0\\n10 0\\n0 10\\n' > sites; printf '9 1\\n1 1\\n' | vor nearest --k=2 sites -\n"
+    "  1 0\n"
+    "  0 1\n";
+
 int cli_nearest(int argc, char **argv)
 {
-    static const char usage[] = "usage: vor nearest [--k=K] SITES QUERIES (1 <= K <= 1000)";
     uint32_t k = 1;
-    if (argc == 3 && strncmp(argv[0], "--k=", 4) == 0) {
-        char *end;
-        unsigned long value = strtoul(argv[0] + 4, &end, 10);
-        if (*end != '\0' || argv[0][4] == '\0' || value < 1u || value > 1000u) {
-            cli_error(usage);
+    const char *paths[2] = {NULL, NULL};
+    int path_count = 0;
+    for (int i = 0; i < argc; i++) {
+        if (strncmp(argv[i], "--k=", 4) == 0) {
+            char *end;
+            unsigned long value = strtoul(argv[i] + 4, &end, 10);
+            if (*end != '\0' || argv[i][4] == '\0' || argv[i][4] == '-' || value < 1u || value > 1000u) {
+                cli_usage_error("nearest", USAGE, "--k=K needs an integer K from 1 to 1000, got", argv[i]);
+            }
+            k = (uint32_t)value;
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
+            cli_usage_error("nearest", USAGE, "unknown option", argv[i]);
+        } else if (path_count == 2) {
+            cli_usage_error("nearest", USAGE, "unexpected argument", argv[i]);
+        } else {
+            paths[path_count++] = argv[i];
         }
-        k = (uint32_t)value;
-        argc--;
-        argv++;
     }
-    if (argc != 2) {
-        cli_error(usage);
+    if (path_count < 2) {
+        cli_usage_error("nearest", USAGE, path_count == 0 ? "missing SITES and QUERIES" : "missing QUERIES",
+                        NULL);
+    }
+    if (strcmp(paths[0], "-") == 0 && strcmp(paths[1], "-") == 0) {
+        cli_usage_error("nearest", USAGE, "SITES and QUERIES cannot both be stdin", NULL);
     }
     uint32_t n, queries;
-    vor_point_t *sites = cli_read_sites(argv[0], &n);
-    vor_point_t *points = cli_read_sites(argv[1], &queries);
+    vor_point_t *sites = cli_read_sites(paths[0], &n);
+    vor_point_t *points = cli_read_sites(paths[1], &queries);
     if (n == 0u && queries > 0u) {
-        cli_error("no sites to answer queries with");
+        fprintf(stderr, "error: %s: no sites to answer the queries with\n", paths[0]);
+        exit(2);
     }
     uint32_t capacity = (n < 1u) ? 1u : n;
     void *arena = malloc(VOR_ARENA_BYTES(capacity));
@@ -44,9 +80,13 @@ int cli_nearest(int argc, char **argv)
         cli_error("out of memory");
     }
     vor_t d;
-    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK ||
-        vor_build(&d, sites, n, NULL, NULL) != VOR_OK) {
-        cli_error("cannot build the diagram");
+    int err = vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity);
+    if (err != VOR_OK) {
+        cli_library_error("vor_init", err);
+    }
+    err = vor_build(&d, sites, n, NULL, NULL);
+    if (err != VOR_OK) {
+        cli_library_error("vor_build", err);
     }
     uint32_t *nearest = malloc(k * sizeof *nearest);
     if (nearest == NULL) {
@@ -56,8 +96,9 @@ int cli_nearest(int argc, char **argv)
     uint32_t hint = VOR_NO_HINT;
     for (uint32_t q = 0; q < queries; q++) {
         uint32_t found;
-        if (vor_nearest_k(&d, points[q].x, points[q].y, hint, k, nearest, &found) != VOR_OK) {
-            cli_error("nearest-site query failed");
+        err = vor_nearest_k(&d, points[q].x, points[q].y, hint, k, nearest, &found);
+        if (err != VOR_OK) {
+            cli_library_error("vor_nearest_k", err);
         }
         for (uint32_t i = 0; i < found; i++) {
             cli_append(&out, (i + 1u < found) ? "%u " : "%u\n", nearest[i]);

@@ -7,21 +7,43 @@
  *   c ax ay bx by cx cy dx dy    -> sign of vor_incircle(a, b, c, d)
  *
  * One output line (-1, 0 or 1) per input line; blank and '#' lines are
- * skipped. Any malformed line: "error: line N: reason", exit 2, no output.
+ * skipped. Any malformed line: "error: <stdin>:N: reason", exit 2, no output.
  */
 #include "cli.h"
 
 #include "vor.h"
 
+#define USAGE "usage: vor predicates [--scale S] < LINES"
+
+const char cli_predicates_help[] =
+    USAGE "\n"
+    "\n"
+    "Exact signs of orient2d and incircle for the lines of stdin.\n"
+    "\n"
+    "input:  \"o ax ay bx by cx cy\"        orient2d(a, b, c)\n"
+    "        \"c ax ay bx by cx cy dx dy\"  incircle(a, b, c, d)\n"
+    "        fields separated by blanks or by commas (o,0,0,1,0,0,1); decimal\n"
+    "        int32, or decimal numbers with --scale S (times S, rounded to\n"
+    "        nearest, ties away from zero); blank and '#' lines skipped.\n"
+    "output: one line per input line: -1, 0 or 1 (orient2d: 1 when a, b, c\n"
+    "        turn counterclockwise; incircle: 1 when d is inside the circle\n"
+    "        through a, b, c counterclockwise).\n"
+    "\n"
+    "example:\n"
+    "  $ printf 'o 0 0 1 0 0 1\\nc 0 0 2 0 0 2 2 2\\n' | vor predicates\n"
+    "  1\n"
+    "  0\n";
+
 int cli_predicates(int argc, char **argv)
 {
     if (argc != 0) {
-        (void)argv;
-        cli_error("usage: vor predicates < LINES");
+        cli_usage_error("predicates", USAGE, argv[0][0] == '-' ? "unknown option" : "unexpected argument",
+                        argv[0]);
     }
     cli_input_t in;
     cli_output_t out = {NULL, 0, 0};
     cli_open(&in, "-");
+    in.header_allowed = false; /* "o,..." and "c,..." lines start with a letter */
     const char *line;
     while ((line = cli_next_line(&in)) != NULL) {
         const char *p = line;
@@ -34,15 +56,20 @@ int cli_predicates(int argc, char **argv)
         }
         p++;
         unsigned points = (op == 'o') ? 3u : 4u;
+        const char *shape = (op == 'o') ? "o ax ay bx by cx cy" : "c ax ay bx by cx cy dx dy";
         vor_point_t v[4];
         for (unsigned k = 0; k < points; k++) {
             const char *why;
-            if (!cli_int32_field(&p, &v[k].x, &why) || !cli_int32_field(&p, &v[k].y, &why)) {
-                cli_line_error(&in, why);
+            if (!cli_coordinate_field(&p, &v[k].x, &why) || !cli_coordinate_field(&p, &v[k].y, &why)) {
+                char reason[300];
+                snprintf(reason, sizeof reason, "%s (expected %s)", why, shape);
+                cli_line_error(&in, reason);
             }
         }
         if (!cli_at_end(p)) {
-            cli_line_error(&in, "too many fields");
+            char reason[120];
+            snprintf(reason, sizeof reason, "too many fields (expected %s)", shape);
+            cli_line_error(&in, reason);
         }
         int sign = (op == 'o') ? vor_orient2d(&v[0], &v[1], &v[2], NULL)
                                : vor_incircle(&v[0], &v[1], &v[2], &v[3], NULL);

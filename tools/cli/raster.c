@@ -3,7 +3,7 @@
  * vor raster --size W H --origin OX OY --step SX SY
  *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
  *                      hausdorff|segment|polygon|polyline]
- *            [--band R] SITES (--labels OUT.raw | --png OUT.png)
+ *            [--band R] [--scale S] SITES (--labels OUT.raw | --png OUT.png)
  *
  * Renders the exact discrete Voronoi diagram of SITES with vor_raster in
  * bands of R rows (default 16). SITES has one site per line (blank and
@@ -20,7 +20,10 @@
  * (j = 0) first, each the index of the pixel's nearest site (farthest for
  * farthest; ties: the smaller index). --png writes an RGB picture, one
  * colour per site and black boundaries (stb_image_write: tools/png_write.h).
- * Bad input: "error: line N: reason" or "error: reason", exit 2.
+ * Fields are separated by blanks or commas; --scale S scales coordinates
+ * and additive weights (not multiplicative ones). Bad input: "error:
+ * FILE:N: reason" or "error: reason", exit 2, and OUT untouched: it is
+ * written to a temporary file renamed over OUT at the end.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,6 +33,44 @@
 #include "vor_raster.h"
 
 #include "../png_write.h"
+
+#define USAGE                                                                                   \
+    "usage: vor raster --size W H [--origin OX OY] [--step SX SY] [--metric M] [--band R]\n"      \
+    "                  [--scale S] SITES (--labels OUT.raw | --png OUT.png)"
+
+const char cli_raster_help[] =
+    USAGE "\n"
+    "\n"
+    "The exact discrete Voronoi diagram of SITES ('-': stdin) on a frame of\n"
+    "W x H pixels: pixel (i, j) is the point (OX + i*SX, OY + j*SY) (default\n"
+    "origin 0 0, step 1 1); every pixel must have int32 coordinates.\n"
+    "\n"
+    "input:  one site per line, fields separated by blanks or commas (CSV,\n"
+    "        optional header line); blank and '#' lines skipped:\n"
+    "          euclid, l1, linf, lp:P, ellip:A,B,C, farthest   x y\n"
+    "          mult, add                    x y w        (mult: w >= 1)\n"
+    "          comp                         x y w1 w2    (w1 >= 1)\n"
+    "          segment                      x1 y1 x2 y2\n"
+    "          hausdorff, polygon           x1 y1 [x2 y2 ...]\n"
+    "          polyline                     w x1 y1 [x2 y2 ...]  (w >= 1)\n"
+    "        decimal int32; with --scale S, coordinates and additive weights\n"
+    "        may be decimal numbers (times S, rounded to nearest, ties away from\n"
+    "        zero); multiplicative weights stay integers. At least one site.\n"
+    "output: --labels: W*H little-endian uint32, row-major, row j = 0 first,\n"
+    "        each the index of the pixel's nearest site (farthest for\n"
+    "        farthest; ties: the smaller index).\n"
+    "        --png: an RGB picture, one light colour per site, black\n"
+    "        boundaries, row j = 0 at the top.\n"
+    "  --metric M    euclid (default), l1, linf, lp:P (1 <= P <= 8), ellip:A,B,C\n"
+    "                (A > 0, A*C > B^2), mult, add, comp, farthest, hausdorff,\n"
+    "                segment, polygon, polyline\n"
+    "  --band R      rows rendered per band (default 16)\n"
+    "\n"
+    "example:\n"
+    "  $ printf '0 0\\n3 1\\n' | vor raster --size 4 2 - --labels out.raw\n"
+    "  $ od -An -v -tu4 out.raw\n"
+    "          0          0          1          1\n"
+    "          0          0          1          1\n";
 
 typedef struct collect {
     uint8_t *frame;
@@ -43,14 +84,20 @@ static int collect_band(void *user, uint32_t first_row, uint32_t rows, const voi
     return 0;
 }
 
+/* stb's writer callback: errors stay in the FILE's error flag, which
+ * cli_commit_output checks. */
+static void write_to_file(void *file, void *data, int size)
+{
+    fwrite(data, 1, (size_t)size, file);
+}
+
 static int32_t int_arg(const char *text, const char *what)
 {
     const char *cursor = text, *why = NULL;
     int32_t v;
     if (!cli_int32_field(&cursor, &v, &why) || !cli_at_end(cursor)) {
-        char message[160];
-        snprintf(message, sizeof message, "%s: '%s' is not an int32", what, text);
-        cli_error(message);
+        fprintf(stderr, "error: %s: expected an int32, got '%s'\n", what, text);
+        exit(2);
     }
     return v;
 }
@@ -80,9 +127,7 @@ static uint8_t *render(const vor_raster_frame_t *frame, const vor_raster_sites_t
     out.palette888 = palette888;
     int err = vor_raster(frame, sites, &out, work, work_bytes);
     if (err != VOR_OK) {
-        char message[120];
-        snprintf(message, sizeof message, "the frame cannot be rendered (vor_raster error %d)", err);
-        cli_error(message);
+        cli_library_error("vor_raster", err);
     }
     free(work);
     free(band);
@@ -151,9 +196,12 @@ static void read_metric_sites(const char *path, enum vor_metric metric, site_fil
         }
         if (metric == VOR_METRIC_HAUSDORFF || metric == VOR_METRIC_POLYGON ||
             metric == VOR_METRIC_POLYLINE) {
+            shape = (metric == VOR_METRIC_POLYLINE) ? "w x1 y1 [x2 y2 ...]" : "x1 y1 [x2 y2 ...]";
+            char message[300];
             if (metric == VOR_METRIC_POLYLINE) {
                 if (!cli_int32_field(&cursor, &v[0], &why)) {
-                    cli_line_error(&in, why);
+                    snprintf(message, sizeof message, "%s (expected %s)", why, shape);
+                    cli_line_error(&in, message);
                 }
                 if (v[0] < 1) {
                     cli_line_error(&in, "the multiplicative weight must be >= 1");
@@ -162,15 +210,18 @@ static void read_metric_sites(const char *path, enum vor_metric metric, site_fil
             }
             /* pairs until the end of the line, at least one */
             do {
-                if (!cli_int32_field(&cursor, &v[0], &why) || !cli_int32_field(&cursor, &v[1], &why)) {
-                    cli_line_error(&in, why);
+                if (!cli_coordinate_field(&cursor, &v[0], &why) || !cli_coordinate_field(&cursor, &v[1], &why)) {
+                    snprintf(message, sizeof message, "%s (expected %s)", why, shape);
+                    cli_line_error(&in, message);
                 }
                 push_point(f, v[0], v[1]);
             } while (!cli_at_end(cursor));
         } else {
             for (int i = 0; i < fields; i++) {
-                if (!cli_int32_field(&cursor, &v[i], &why)) {
-                    char message[120];
+                /* multiplicative weights are ratios: --scale leaves them be */
+                bool ratio = i == 2 && (metric == VOR_METRIC_MULT || metric == VOR_METRIC_COMPOUND);
+                if (!(ratio ? cli_int32_field(&cursor, &v[i], &why) : cli_coordinate_field(&cursor, &v[i], &why))) {
+                    char message[300];
                     snprintf(message, sizeof message, "%s (expected %s)", why, shape);
                     cli_line_error(&in, message);
                 }
@@ -262,15 +313,39 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
         parse_form(text + 6, sites);
         return;
     }
-    cli_error("--metric: expected euclid, l1, linf, lp:P, ellip:A,B,C, mult, add, comp, "
-              "farthest, hausdorff, segment, polygon or polyline");
+    fprintf(stderr, "error: --metric: expected euclid, l1, linf, lp:P, ellip:A,B,C, mult, add, comp, "
+                    "farthest, hausdorff, segment, polygon or polyline, got '%s'\n", text);
+    exit(2);
+}
+
+static bool option_with_values(const char *option)
+{
+    static const char *const names[] = {"--size", "--origin", "--step", "--metric", "--band", "--labels", "--png"};
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
+        if (strcmp(option, names[i]) == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* Every pixel must be an int32 point (vor_raster returns VOR_ERR_ARG
+ * otherwise): said here with the pixel that leaves the range. */
+static void check_frame(const vor_raster_frame_t *frame)
+{
+    int64_t last_x = (int64_t)frame->origin_x + (int64_t)(frame->width - 1u) * frame->step_x;
+    int64_t last_y = (int64_t)frame->origin_y + (int64_t)(frame->height - 1u) * frame->step_y;
+    if (last_x > INT32_MAX || last_y > INT32_MAX) {
+        fprintf(stderr,
+                "error: --size/--origin/--step: the last pixel (%lld, %lld) is outside the int32 range "
+                "(expected OX + (W-1)*SX and OY + (H-1)*SY <= 2147483647)\n",
+                (long long)last_x, (long long)last_y);
+        exit(2);
+    }
 }
 
 int cli_raster(int argc, char **argv)
 {
-    const char *usage = "usage: vor raster --size W H --origin OX OY --step SX SY "
-                        "[--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|"
-                        "hausdorff|segment|polygon|polyline] [--band R] SITES (--labels OUT.raw | --png OUT.png)";
     vor_raster_frame_t frame = {0, 0, 1, 1, 0, 0};
     vor_raster_sites_t sites;
     memset(&sites, 0, sizeof sites);
@@ -315,15 +390,26 @@ int cli_raster(int argc, char **argv)
             labels_path = argv[++a];
         } else if (strcmp(o, "--png") == 0 && more >= 1) {
             png_path = argv[++a];
-        } else if (o[0] != '-' && sites_path == NULL) {
+        } else if ((o[0] != '-' || o[1] == '\0') && sites_path == NULL) {
             sites_path = o;
+        } else if (o[0] != '-' || o[1] == '\0') {
+            cli_usage_error("raster", USAGE, "unexpected argument", o);
+        } else if (option_with_values(o)) {
+            cli_usage_error("raster", USAGE, "missing value after", o);
         } else {
-            cli_error(usage);
+            cli_usage_error("raster", USAGE, "unknown option", o);
         }
     }
-    if (!have_size || sites_path == NULL || (labels_path == NULL) == (png_path == NULL)) {
-        cli_error(usage);
+    if (!have_size) {
+        cli_usage_error("raster", USAGE, "missing --size W H", NULL);
     }
+    if (sites_path == NULL) {
+        cli_usage_error("raster", USAGE, "missing SITES", NULL);
+    }
+    if ((labels_path == NULL) == (png_path == NULL)) {
+        cli_usage_error("raster", USAGE, "expected exactly one of --labels OUT.raw and --png OUT.png", NULL);
+    }
+    check_frame(&frame);
     if (band_rows > frame.height) {
         band_rows = frame.height;
     }
@@ -331,7 +417,9 @@ int cli_raster(int argc, char **argv)
     read_metric_sites(sites_path, sites.metric, &file);
     uint32_t n = (uint32_t)file.count;
     if (n == 0u) {
-        cli_error("no sites");
+        fprintf(stderr, "error: %s: no sites (a raster needs at least one)\n",
+                strcmp(sites_path, "-") == 0 ? "<stdin>" : sites_path);
+        exit(2);
     }
     if ((uint64_t)frame.width * frame.height > 0x10000000u) {
         cli_error("--size: frame larger than 2^28 pixels");
@@ -343,22 +431,18 @@ int cli_raster(int argc, char **argv)
     sites.offsets = file.offsets;
     size_t pixels = (size_t)frame.width * frame.height;
     if (labels_path != NULL) {
+        FILE *f = cli_create_output(labels_path);
         uint8_t *labels = render(&frame, &sites, VOR_RASTER_LABEL32, band_rows, NULL);
-        FILE *f = fopen(labels_path, "wb");
-        if (f == NULL) {
-            cli_error("cannot write the labels file");
-        }
         for (size_t p = 0; p < pixels; p++) { /* little-endian whatever the host */
             uint32_t v;
             memcpy(&v, labels + 4u * p, 4);
             uint8_t le[4] = {(uint8_t)v, (uint8_t)(v >> 8), (uint8_t)(v >> 16), (uint8_t)(v >> 24)};
             fwrite(le, 1, 4, f);
         }
-        if (fclose(f) != 0) {
-            cli_error("cannot write the labels file");
-        }
+        cli_commit_output(f, labels_path);
         free(labels);
     } else {
+        FILE *f = cli_create_output(png_path);
         uint32_t *palette = malloc((size_t)n * sizeof *palette);
         if (palette == NULL) {
             cli_error("out of memory");
@@ -375,10 +459,11 @@ int cli_raster(int argc, char **argv)
                 rgb[3u * p] = rgb[3u * p + 1u] = rgb[3u * p + 2u] = 0;
             }
         }
-        if (!stbi_write_png(png_path, (int)frame.width, (int)frame.height, 3, rgb,
-                            (int)(frame.width * 3u))) {
-            cli_error("cannot write the PNG file");
+        if (!stbi_write_png_to_func(write_to_file, f, (int)frame.width, (int)frame.height, 3, rgb,
+                                    (int)(frame.width * 3u))) {
+            cli_error("PNG encoding failed (out of memory?)");
         }
+        cli_commit_output(f, png_path);
         free(edges);
         free(rgb);
         free(palette);

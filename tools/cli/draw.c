@@ -1,0 +1,470 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull]
+ *          SITES -o OUT.svg
+ * vor draw --cells DUMP -o OUT.svg
+ *
+ * An SVG picture of the Voronoi diagram of SITES (counted like
+ * `vor delaunay`): every cell clipped to the box and filled with its
+ * site's colour, the Voronoi edges, the sites as dots, and optionally the
+ * Delaunay triangles, the site ids and the convex hull. The box defaults
+ * to the sites' bounding box grown by a twentieth of its larger side (at
+ * least 1) on every side; the size to 800 pixels wide and as high as the
+ * box's aspect asks. The box fills the whole picture (preserveAspectRatio
+ * "none"), so pixel (i, r) of a W x H rendering, row r from the top,
+ * covers x in X0 + [i, i+1] (X1-X0)/W and y in Y1 - [r, r+1] (Y1-Y0)/H.
+ *
+ * Coordinates are the library's, y up: the SVG holds them unchanged inside
+ * one group with transform="scale(1 -1)" and a viewBox of
+ * "X0 -Y1 X1-X0 Y1-Y0". Every vertex written is a cell vertex exactly as
+ * `vor cells` gives it (the exact vertex rounded once); sites are the
+ * input integers. The Voronoi edges are the cells' sides that do not lie
+ * on the box, each written once (from the cell where it runs from the
+ * lexicographically smaller end), rather than vor_edges: its rays would
+ * need a second rounding to end at the box.
+ *
+ * Colours: site i is filled with #RRGGBB where c = (i * 2654435761) mod
+ * 2^21 (a bijection on 21 bits, so ids below 2^21 get distinct colours),
+ * RR = 128 + (c & 127), GG = 128 + ((c >> 7) & 127), BB = 128 + (c >> 14).
+ *
+ * --cells DUMP draws what a firmware computed (examples/voronoi streams it
+ * to build/demo.cells): lines "box X0 Y0 X1 Y1" (first), "s X Y" (site i
+ * is the i-th s line) and "c I M X1 Y1 ... XM YM" (as `vor cells`).
+ * "-o -" writes to standard output.
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+
+#define USAGE                                                                                      \
+    "usage: vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull] SITES -o "    \
+    "OUT.svg\n       vor draw --cells DUMP -o OUT.svg"
+
+const char cli_draw_help[] =
+    USAGE "\n"
+    "\n"
+    "An SVG picture of the Voronoi diagram of SITES ('-': stdin): every cell\n"
+    "clipped to the box and filled with its site's colour, the Voronoi edges\n"
+    "and the sites; --triangles adds the Delaunay triangles, --ids the site\n"
+    "ids, --hull the convex hull. y points up, as in the library.\n"
+    "\n"
+    "input:  one site per line, \"x y\" or \"x,y\" (CSV, optional header line);\n"
+    "        decimal int32, or decimal numbers with --scale S; site i is the\n"
+    "        i-th site line, from 0. --cells DUMP: a firmware's dump instead\n"
+    "        (\"box X0 Y0 X1 Y1\", \"s X Y\", \"c I M X1 Y1 ...\" lines).\n"
+    "output: OUT.svg ('-': stdout), written only when everything succeeded.\n"
+    "        --box: default the sites' bounding box grown by a twentieth;\n"
+    "        --size: default 800 pixels wide, as high as the box's aspect.\n"
+    "        Every vertex is the cell vertex `vor cells` prints; site i's\n"
+    "        colour is #RRGGBB from c = (i * 2654435761) mod 2^21:\n"
+    "        RR = 128 + (c & 127), GG = 128 + ((c >> 7) & 127), BB = 128 + (c >> 14).\n"
+    "\n"
+    "example:\n"
+    "  $ printf '0 0\\n100 0\\n0 100\\n' | vor draw --ids - -o diagram.svg\n";
+
+#define DEFAULT_WIDTH 800
+#define MAX_PIXELS 16384
+
+/* libxml2 (xmllint, rsvg-convert) refuses attributes over 10 MB, so a
+ * stroke of many pieces is split into paths of this many pieces each. */
+#define PIECES_PER_PATH 4096u
+
+/* Pieces ("M.. L..") of one stroke style, written as consecutive paths. */
+typedef struct stroke {
+    cli_output_t *out;
+    char head[160]; /* the opening of each path, up to d=" */
+    uint32_t pieces;
+} stroke_t;
+
+/* The picture being written: cell fills go to `svg` as they come, the
+ * edges to `edges`, appended after all fills so no fill covers an edge. */
+typedef struct drawing {
+    vor_box_t box;
+    double unit; /* library units per pixel, for stroke widths and radii */
+    cli_output_t svg;
+    cli_output_t edges;
+    stroke_t edge_stroke;
+} drawing_t;
+
+static void stroke_begin(stroke_t *s, cli_output_t *out, const char *colour, double width)
+{
+    s->out = out;
+    s->pieces = 0;
+    snprintf(s->head, sizeof s->head,
+             "<path fill=\"none\" stroke=\"%s\" stroke-width=\"%.4g\" stroke-linejoin=\"round\" d=\"", colour,
+             width);
+}
+
+/* Call before appending each piece. */
+static void stroke_piece(stroke_t *s)
+{
+    if (s->pieces % PIECES_PER_PATH == 0) {
+        cli_append(s->out, "%s%s", s->pieces > 0 ? "\"/>\n" : "", s->head);
+    }
+    s->pieces++;
+}
+
+static void stroke_end(stroke_t *s)
+{
+    if (s->pieces > 0) {
+        cli_append(s->out, "\"/>\n");
+    }
+}
+
+static void site_colour(uint32_t site, char text[8])
+{
+    uint32_t c = (uint32_t)(site * 2654435761u) & 0x1FFFFFu;
+    snprintf(text, 8, "#%02x%02x%02x", (unsigned)(128u + (c & 127u)), (unsigned)(128u + ((c >> 7) & 127u)),
+             (unsigned)(128u + (c >> 14)));
+}
+
+static int32_t int_argument(const char *text, const char *option)
+{
+    const char *cursor = text, *why = "not a decimal integer";
+    int32_t value;
+    if (!cli_int32_field(&cursor, &value, &why) || !cli_at_end(cursor)) {
+        fprintf(stderr, "error: %s: %s: %s\n", option, text, why);
+        exit(2);
+    }
+    return value;
+}
+
+static void begin_svg(drawing_t *g, uint32_t width, uint32_t height)
+{
+    const vor_box_t *b = &g->box;
+    double box_width = (double)b->x1 - b->x0, box_height = (double)b->y1 - b->y0;
+    double unit_x = box_width / width, unit_y = box_height / height;
+    g->unit = unit_x > unit_y ? unit_x : unit_y;
+    cli_append(&g->svg,
+               "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+               "<!-- vor draw: the library's coordinates with y up; the group's scale(1 -1) flips y,\n"
+               "     and the viewBox is the box [%d, %d] x [%d, %d] flipped. -->\n"
+               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%u\" height=\"%u\" "
+               "viewBox=\"%d %lld %lld %lld\" preserveAspectRatio=\"none\">\n"
+               "<g transform=\"scale(1 -1)\">\n<g stroke=\"none\">\n",
+               b->x0, b->x1, b->y0, b->y1, width, height, b->x0, -(long long)b->y1,
+               (long long)b->x1 - b->x0, (long long)b->y1 - b->y0);
+    stroke_begin(&g->edge_stroke, &g->edges, "#000", g->unit);
+}
+
+static bool on_box_side(const vor_box_t *b, vor_point_t p, vor_point_t q)
+{
+    return (p.x == q.x && (p.x == b->x0 || p.x == b->x1)) || (p.y == q.y && (p.y == b->y0 || p.y == b->y1));
+}
+
+static bool lexicographically_less(vor_point_t p, vor_point_t q)
+{
+    return p.x < q.x || (p.x == q.x && p.y < q.y);
+}
+
+static void add_cell(drawing_t *g, uint32_t site, const vor_point_t *v, uint32_t count)
+{
+    if (count == 0) {
+        return;
+    }
+    char colour[8];
+    site_colour(site, colour);
+    cli_append(&g->svg, "<path fill=\"%s\" d=\"M%d %d", colour, v[0].x, v[0].y);
+    for (uint32_t k = 1; k < count; k++) {
+        cli_append(&g->svg, "L%d %d", v[k].x, v[k].y);
+    }
+    cli_append(&g->svg, "Z\"/>\n");
+    /* the neighbour walks a shared side the other way round (both CCW) */
+    for (uint32_t k = 0; k < count; k++) {
+        vor_point_t p = v[k], q = v[(k + 1) % count];
+        if (lexicographically_less(p, q) && !on_box_side(&g->box, p, q)) {
+            stroke_piece(&g->edge_stroke);
+            cli_append(&g->edges, "M%d %dL%d %d", p.x, p.y, q.x, q.y);
+        }
+    }
+}
+
+static void end_cells(drawing_t *g)
+{
+    stroke_end(&g->edge_stroke);
+    cli_append(&g->svg, "</g>\n%s", g->edges.length > 0 ? g->edges.data : "");
+    free(g->edges.data);
+    g->edges.data = NULL;
+}
+
+static void add_sites(drawing_t *g, const vor_point_t *sites, uint32_t n, const uint32_t *duplicate_of)
+{
+    cli_append(&g->svg, "<g fill=\"#000\">\n");
+    for (uint32_t i = 0; i < n; i++) {
+        if (duplicate_of == NULL || duplicate_of[i] == i) {
+            cli_append(&g->svg, "<circle cx=\"%d\" cy=\"%d\" r=\"%.4g\"/>\n", sites[i].x, sites[i].y, 1.5 * g->unit);
+        }
+    }
+    cli_append(&g->svg, "</g>\n");
+}
+
+/* Writes the finished picture to path ("-": stdout), only now that
+ * everything succeeded, so a failure leaves no partial file. */
+static void write_svg(drawing_t *g, const char *path)
+{
+    cli_append(&g->svg, "</g>\n</svg>\n");
+    if (strcmp(path, "-") == 0) {
+        cli_flush(&g->svg);
+        return;
+    }
+    FILE *f = cli_create_output(path);
+    fwrite(g->svg.data, 1, g->svg.length, f);
+    cli_commit_output(f, path); /* a short write is an error there */
+    free(g->svg.data);
+}
+
+/* The sites' bounding box, grown by a twentieth of its larger side (at
+ * least 1), kept inside int32. */
+static vor_box_t default_box(const vor_point_t *sites, uint32_t n)
+{
+    int64_t x0 = sites[0].x, y0 = sites[0].y, x1 = x0, y1 = y0;
+    for (uint32_t i = 1; i < n; i++) {
+        x0 = sites[i].x < x0 ? sites[i].x : x0;
+        x1 = sites[i].x > x1 ? sites[i].x : x1;
+        y0 = sites[i].y < y0 ? sites[i].y : y0;
+        y1 = sites[i].y > y1 ? sites[i].y : y1;
+    }
+    int64_t side = (x1 - x0 > y1 - y0) ? x1 - x0 : y1 - y0;
+    int64_t margin = side / 20 > 1 ? side / 20 : 1;
+    x0 -= margin, y0 -= margin, x1 += margin, y1 += margin;
+    vor_box_t box = {(int32_t)(x0 < INT32_MIN ? INT32_MIN : x0), (int32_t)(y0 < INT32_MIN ? INT32_MIN : y0),
+                     (int32_t)(x1 > INT32_MAX ? INT32_MAX : x1), (int32_t)(y1 > INT32_MAX ? INT32_MAX : y1)};
+    return box;
+}
+
+static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vor_point_t *sites, uint32_t n,
+                         bool triangles, bool ids, bool hull)
+{
+    uint32_t capacity = n;
+    void *arena = malloc(VOR_ARENA_BYTES(capacity));
+    uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
+    vor_point_t *vertices = malloc((size_t)VOR_CELL_MAX_VERTICES(capacity) * sizeof *vertices);
+    if (arena == NULL || duplicate_of == NULL || vertices == NULL) {
+        cli_error("out of memory");
+    }
+    vor_t d;
+    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK ||
+        vor_build(&d, sites, n, NULL, duplicate_of) != VOR_OK) {
+        cli_error("cannot build the diagram");
+    }
+    begin_svg(g, width, height);
+    vor_cell_iter_t cells;
+    vor_cells_begin(&cells, &d, &g->box);
+    uint32_t site, count;
+    int more;
+    while ((more = vor_cells_next(&cells, &site, vertices, VOR_CELL_MAX_VERTICES(capacity), &count)) == 1) {
+        add_cell(g, site, vertices, count);
+    }
+    if (more < 0) {
+        cli_error("cell computation failed");
+    }
+    end_cells(g);
+    if (triangles) {
+        stroke_t stroke;
+        stroke_begin(&stroke, &g->svg, "#1f4fbf", 0.5 * g->unit);
+        vor_triangle_iter_t t;
+        vor_triangles_begin(&t, &d);
+        uint32_t abc[3];
+        while (vor_triangles_next(&t, abc)) {
+            stroke_piece(&stroke);
+            cli_append(&g->svg, "M%d %dL%d %dL%d %dZ", sites[abc[0]].x, sites[abc[0]].y, sites[abc[1]].x,
+                       sites[abc[1]].y, sites[abc[2]].x, sites[abc[2]].y);
+        }
+        stroke_end(&stroke);
+    }
+    if (hull) {
+        /* one side a piece, from each hull site to the next, closing at the first */
+        stroke_t stroke;
+        stroke_begin(&stroke, &g->svg, "#d01010", 1.5 * g->unit);
+        vor_hull_iter_t h;
+        vor_hull_begin(&h, &d);
+        uint32_t first, previous;
+        if (vor_hull_next(&h, &first)) {
+            previous = first;
+            while (vor_hull_next(&h, &site)) {
+                stroke_piece(&stroke);
+                cli_append(&g->svg, "M%d %dL%d %d", sites[previous].x, sites[previous].y, sites[site].x, sites[site].y);
+                previous = site;
+            }
+            stroke_piece(&stroke);
+            cli_append(&g->svg, "M%d %dL%d %d", sites[previous].x, sites[previous].y, sites[first].x, sites[first].y);
+        }
+        stroke_end(&stroke);
+    }
+    add_sites(g, sites, n, duplicate_of);
+    if (ids) {
+        /* each label flipped back upright about its own site */
+        cli_append(&g->svg, "<g font-family=\"sans-serif\" font-size=\"%.4g\" fill=\"#000\">\n", 10 * g->unit);
+        for (uint32_t i = 0; i < n; i++) {
+            if (duplicate_of[i] == i) {
+                cli_append(&g->svg, "<text transform=\"translate(%d %d) scale(1 -1)\" dx=\"%.4g\">%u</text>\n",
+                           sites[i].x, sites[i].y, 2 * g->unit, i);
+            }
+        }
+        cli_append(&g->svg, "</g>\n");
+    }
+    free(vertices);
+    free(duplicate_of);
+    free(arena);
+}
+
+/* Reads the next int32 of a dump line or fails with the line number. */
+static int32_t dump_field(const cli_input_t *in, const char **cursor)
+{
+    int32_t value;
+    const char *why;
+    if (!cli_int32_field(cursor, &value, &why)) {
+        cli_line_error(in, why);
+    }
+    return value;
+}
+
+static void draw_dump(drawing_t *g, uint32_t width, bool have_size, uint32_t height, const char *path)
+{
+    cli_input_t in;
+    cli_open(&in, path);
+    const char *line = cli_next_line(&in);
+    if (line == NULL || strncmp(line, "box ", 4) != 0) {
+        cli_error("--cells: the dump does not start with a \"box X0 Y0 X1 Y1\" line");
+    }
+    const char *cursor = line + 4;
+    g->box.x0 = dump_field(&in, &cursor);
+    g->box.y0 = dump_field(&in, &cursor);
+    g->box.x1 = dump_field(&in, &cursor);
+    g->box.y1 = dump_field(&in, &cursor);
+    if (!cli_at_end(cursor) || g->box.x0 >= g->box.x1 || g->box.y0 >= g->box.y1) {
+        cli_line_error(&in, "expected a box X0 Y0 X1 Y1 with X0 < X1 and Y0 < Y1");
+    }
+    if (!have_size) {
+        height = (uint32_t)((double)width * ((double)g->box.y1 - g->box.y0) / ((double)g->box.x1 - g->box.x0) + 0.5);
+        height = height < 1 ? 1 : height > MAX_PIXELS ? MAX_PIXELS : height;
+    }
+    begin_svg(g, width, height);
+    vor_point_t *sites = NULL, *vertices = NULL;
+    size_t n = 0, site_capacity = 0, vertex_capacity = 0;
+    while ((line = cli_next_line(&in)) != NULL) {
+        cursor = line + 1;
+        if (line[0] == 's' && (line[1] == ' ' || line[1] == '\t')) {
+            if (n == site_capacity) {
+                site_capacity = site_capacity ? 2 * site_capacity : 1024;
+                sites = realloc(sites, site_capacity * sizeof *sites);
+                if (sites == NULL) {
+                    cli_error("out of memory");
+                }
+            }
+            sites[n].x = dump_field(&in, &cursor);
+            sites[n].y = dump_field(&in, &cursor);
+            n++;
+        } else if (line[0] == 'c' && (line[1] == ' ' || line[1] == '\t')) {
+            int32_t site = dump_field(&in, &cursor), count = dump_field(&in, &cursor);
+            if (site < 0 || count < 0) {
+                cli_line_error(&in, "negative site id or vertex count");
+            }
+            if ((size_t)count > vertex_capacity) {
+                vertex_capacity = (size_t)count;
+                vertices = realloc(vertices, vertex_capacity * sizeof *vertices);
+                if (vertices == NULL) {
+                    cli_error("out of memory");
+                }
+            }
+            for (int32_t k = 0; k < count; k++) {
+                vertices[k].x = dump_field(&in, &cursor);
+                vertices[k].y = dump_field(&in, &cursor);
+            }
+            add_cell(g, (uint32_t)site, vertices, (uint32_t)count);
+        } else {
+            cli_line_error(&in, "expected an \"s X Y\" or \"c I M X1 Y1 ...\" line");
+        }
+        if (!cli_at_end(cursor)) {
+            cli_line_error(&in, "too many fields");
+        }
+    }
+    cli_close(&in);
+    end_cells(g);
+    add_sites(g, sites, (uint32_t)n, NULL);
+    free(vertices);
+    free(sites);
+}
+
+int cli_draw(int argc, char **argv)
+{
+    drawing_t g;
+    memset(&g, 0, sizeof g);
+    bool have_box = false, have_size = false, triangles = false, ids = false, hull = false;
+    int32_t width = DEFAULT_WIDTH, height = 0;
+    const char *sites_path = NULL, *dump_path = NULL, *out_path = NULL;
+    for (int a = 0; a < argc; a++) {
+        const char *o = argv[a];
+        int more = argc - 1 - a;
+        if (strcmp(o, "--box") == 0 && more >= 4) {
+            g.box.x0 = int_argument(argv[a + 1], o);
+            g.box.y0 = int_argument(argv[a + 2], o);
+            g.box.x1 = int_argument(argv[a + 3], o);
+            g.box.y1 = int_argument(argv[a + 4], o);
+            have_box = true;
+            a += 4;
+        } else if (strcmp(o, "--size") == 0 && more >= 2) {
+            width = int_argument(argv[a + 1], o);
+            height = int_argument(argv[a + 2], o);
+            if (width < 1 || height < 1 || width > MAX_PIXELS || height > MAX_PIXELS) {
+                cli_error("--size: width and height must be 1 to 16384 pixels");
+            }
+            have_size = true;
+            a += 2;
+        } else if (strcmp(o, "--triangles") == 0) {
+            triangles = true;
+        } else if (strcmp(o, "--ids") == 0) {
+            ids = true;
+        } else if (strcmp(o, "--hull") == 0) {
+            hull = true;
+        } else if (strcmp(o, "--cells") == 0 && more >= 1) {
+            dump_path = argv[++a];
+        } else if (strcmp(o, "-o") == 0 && more >= 1) {
+            out_path = argv[++a];
+        } else if (sites_path == NULL && (o[0] != '-' || o[1] == '\0')) {
+            sites_path = o;
+        } else if (o[0] == '-' && o[1] != '\0') {
+            bool known = strcmp(o, "--box") == 0 || strcmp(o, "--size") == 0 ||
+                         strcmp(o, "--cells") == 0 || strcmp(o, "-o") == 0;
+            cli_usage_error("draw", USAGE, known ? "missing value after" : "unknown option", o);
+        } else {
+            cli_usage_error("draw", USAGE, "unexpected argument", o);
+        }
+    }
+    if (out_path == NULL) {
+        cli_usage_error("draw", USAGE, "no output file (-o OUT.svg)", NULL);
+    }
+    if ((sites_path == NULL) == (dump_path == NULL)) {
+        cli_usage_error("draw", USAGE, "give either SITES or --cells DUMP", NULL);
+    }
+    if (dump_path != NULL) {
+        if (have_box || triangles || ids || hull) {
+            cli_error("--cells takes its box from the dump and has no triangles, ids or hull");
+        }
+        draw_dump(&g, (uint32_t)width, have_size, (uint32_t)height, dump_path);
+        write_svg(&g, out_path);
+        return 0;
+    }
+    if (have_box && (g.box.x0 >= g.box.x1 || g.box.y0 >= g.box.y1)) {
+        cli_error("--box: need X0 < X1 and Y0 < Y1");
+    }
+    uint32_t n;
+    vor_point_t *sites = cli_read_sites(sites_path, &n);
+    if (n == 0) {
+        fprintf(stderr, "error: %s: no sites\n", sites_path);
+        exit(2);
+    }
+    if (!have_box) {
+        g.box = default_box(sites, n);
+    }
+    if (!have_size) {
+        double aspect = ((double)g.box.y1 - g.box.y0) / ((double)g.box.x1 - g.box.x0);
+        double h = (double)width * aspect + 0.5;
+        height = h < 1 ? 1 : h > MAX_PIXELS ? MAX_PIXELS : (int32_t)h;
+    }
+    draw_diagram(&g, (uint32_t)width, (uint32_t)height, sites, n, triangles, ids, hull);
+    free(sites);
+    write_svg(&g, out_path);
+    return 0;
+}
