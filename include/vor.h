@@ -643,8 +643,11 @@ typedef struct vor_centroid {
  *   VOR_ERR_ARG     d, box or out NULL; scratch NULL with scratch_bytes > 0;
  *                   box->x0 > box->x1 or box->y0 > box->y1; site not a
  *                   site in the mesh (unknown, or a duplicate's id)
- *   VOR_ERR_BUFFER  scratch_bytes < VOR_CENTROID_SCRATCH_BYTES(k): only
- *                   out->vertices is written, with k
+ *   VOR_ERR_BUFFER  the scratch, once aligned, cannot hold the sums of the
+ *                   cell's k vertices (never when scratch_bytes >=
+ *                   VOR_CENTROID_SCRATCH_BYTES(k); an aligned scratch
+ *                   may do with up to 8 bytes less): only out->vertices
+ *                   is written, with k
  */
 int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
                       void *scratch, size_t scratch_bytes, vor_centroid_t *out);

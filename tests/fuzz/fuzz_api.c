@@ -7,7 +7,8 @@
  * unchanged; answers are checked against a model kept here (the sites by
  * id, each duplicate's first occurrence) and brute force with exact
  * wide-integer distances; on small sets the triangles are checked for
- * empty circumcircles, positive area and the count 2n - h - 2.
+ * empty circumcircles, positive area and the count 2n - h - 2; cell
+ * centroids against vor_cell and their box.
  */
 #include <string.h>
 
@@ -292,6 +293,52 @@ static void op_cells(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     FUZZ_REQUIRE(inverted || cells == distinct_sites(m), "cells: not one cell per site");
 }
 
+/* vor_cell_centroid of a random id and box, with scratch exactly as large
+ * as documented or smaller: checked against vor_cell's count and the box. */
+static void op_centroid(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
+{
+    static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(MOST_SITES)) + 1u];
+    vor_box_t box = draw_box(r, previous);
+    uint32_t site = draw_hint(r, m);
+    uint8_t how = fuzz_u8(r);
+    vor_point_t vertices[VOR_CELL_MAX_VERTICES(MOST_SITES)];
+    uint32_t count = 0;
+    int cell = vor_cell(&m->d, site, &box, vertices, VOR_CELL_MAX_VERTICES(MOST_SITES), &count);
+    size_t bytes = VOR_CENTROID_SCRATCH_BYTES(count) - (how & 1u);
+    vor_centroid_t out, before;
+    memset(&out, 0xa5, sizeof out);
+    before = out;
+    snapshot(m);
+    int result = vor_cell_centroid(&m->d, site, &box, scratch + (how & 2u ? 1u : 0u),
+                                   (how & 4u) ? sizeof scratch - 1u : bytes, &out);
+    FUZZ_REQUIRE(unchanged(m), "centroid changed the diagram");
+    if (box.x0 > box.x1 || box.y0 > box.y1 || !is_site(m, site)) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && cell == VOR_ERR_ARG &&
+                         memcmp(&out, &before, sizeof out) == 0,
+                     "centroid: a bad box or site accepted, or wrote");
+        return;
+    }
+    FUZZ_REQUIRE(cell == VOR_OK, "cell failed where centroid must work");
+    if (result == VOR_ERR_BUFFER) {
+        /* a short scratch may still fit once aligned; the documented size must */
+        before.vertices = count;
+        FUZZ_REQUIRE(!(how & 4u) && (how & 1u) && memcmp(&out, &before, sizeof out) == 0,
+                     "centroid: scratch of the documented size refused, or wrote more than k");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK && out.vertices == count, "centroid failed or miscounted");
+    FUZZ_REQUIRE(out.point.x >= box.x0 && out.point.x <= box.x1 && out.point.y >= box.y0 &&
+                     out.point.y <= box.y1,
+                 "centroid: the point outside the box");
+    FUZZ_REQUIRE((out.area == 0) == (count == 0), "centroid: area 0 without an empty cell");
+    if (count == 0) {
+        vor_point_t s = m->point[site];
+        FUZZ_REQUIRE(out.point.x == (s.x < box.x0 ? box.x0 : s.x > box.x1 ? box.x1 : s.x) &&
+                         out.point.y == (s.y < box.y0 ? box.y0 : s.y > box.y1 ? box.y1 : s.y),
+                     "centroid: an empty cell's point is not the box point nearest the site");
+    }
+}
+
 /* Hull sites counted by brute force: on the segment of a strict hull edge. */
 static uint32_t brute_hull_sites(const model_t *m, int *collinear)
 {
@@ -405,7 +452,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                  "init failed");
     FUZZ_REQUIRE(vor_tracker_begin(&m.tracker, &m.d) == VOR_OK, "tracker_begin failed");
     for (uint32_t ops = 0; ops < 64u && !fuzz_done(&r); ops++) {
-        switch (fuzz_u8(&r) % 10u) {
+        switch (fuzz_u8(&r) % 11u) {
         case 0: op_build(&r, &m, &previous, 0); break;
         case 1: op_build(&r, &m, &previous, 1); break;
         case 2: op_insert(&r, &m, &previous, 0); break;
@@ -415,6 +462,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 6: op_track(&r, &m, &previous); break;
         case 7: op_cells(&r, &m, &previous); break;
         case 8: op_triangles(&m); op_edges_neighbours(&r, &m); break;
+        case 10: op_centroid(&r, &m, &previous); break;
         default: op_bad_init(&r, &m); break;
         }
         check_valid(&m);
