@@ -3,7 +3,9 @@
 # tools/fuzz.sh - runs the libFuzzer harnesses of tests/fuzz/ (built by
 # `make fuzz-harnesses`) one after the other.
 #
-#   tools/fuzz.sh --seconds N   fuzz each harness for N seconds (make fuzz)
+#   tools/fuzz.sh --seconds N [HARNESS...]
+#                               fuzz each harness (or the ones named) for N
+#                               seconds (make fuzz)
 #   tools/fuzz.sh --brief N     make test: replay every committed corpus and
 #                               regression input, then fuzz each harness for
 #                               N seconds; ends with "N passed, N failed"
@@ -22,7 +24,8 @@ if { [ "$mode" != --seconds ] && [ "$mode" != --brief ]; } || ! [ "$seconds" -ge
     echo "usage: tools/fuzz.sh --seconds N | --brief N" >&2
     exit 2
 fi
-harnesses="api16 api32 predicates raster cli"
+shift 2
+harnesses=${*:-api16 api32 predicates raster cli}
 passed=0
 failed=0
 
