@@ -18,6 +18,7 @@
  * command and option and the mutations work from them.
  */
 #define _POSIX_C_SOURCE 200809L
+#include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
 #include <stdio.h>
@@ -132,11 +133,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         dup2(in, 0);
         dup2(out, 1);
         dup2(getenv("VOR_FUZZ_CLI_STDERR") ? 2 : null, 2);
-        alarm(20); /* a hang ends in SIGALRM: a finding */
+        signal(SIGALRM, SIG_DFL); /* not libFuzzer's timeout handler */
+        alarm(20);                /* a hang ends in SIGALRM: a finding */
         vor_fuzz_cli_exit(vor_cli_main(argc, argv));
     }
     int status = 0;
-    FUZZ_REQUIRE(child > 0 && waitpid(child, &status, 0) == child, "cli: fork failed");
+    pid_t waited;
+    do /* libFuzzer's own timer interrupts the wait */
+        waited = waitpid(child, &status, 0);
+    while (waited < 0 && errno == EINTR);
+    FUZZ_REQUIRE(child > 0 && waited == child, "cli: fork or wait failed");
     FUZZ_REQUIRE(!WIFSIGNALED(status), "cli: killed by a signal (crash or hang)");
     int code = WEXITSTATUS(status);
     if (code != 0 && code != 2)
