@@ -299,6 +299,9 @@ typedef struct vor {
     uint32_t bucket_columns, bucket_rows, bucket_scale;
     uint32_t bucket_rebuild_at; /* site count at which the grid is redrawn */
     uint32_t revision;     /* counts the changes: trackers notice them */
+    uint32_t free_site;    /* the most recently freed id plus one (0: none),
+                              head of the free ids' list, threaded through
+                              their empty home slots */
     vor_predicate_stats_t stats; /* predicate tiers of every call on it */
 } vor_t;
 
@@ -337,6 +340,36 @@ static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t m
  */
 int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site);
 int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
+
+/*
+ * Removes site `site` from the diagram. The result is exactly the diagram
+ * of the remaining sites: the triangles a fresh build of them in id order
+ * gives (the perturbation breaks ties by id order). The other sites keep
+ * their ids; `site` becomes free, and the next vor_insert reuses the most
+ * recently freed id (ids beyond the free ones are handed out after them).
+ * Ids vor_build gave to duplicates stay reserved: they are not sites.
+ *   VOR_ERR_ARG  d NULL, or site not a site in the mesh (an unused or
+ *                free id, a duplicate's id from vor_build)
+ * On failure the diagram is unchanged. The bounding box (vor_t low, high)
+ * may stay larger than the remaining sites' box.
+ * Cost: O(degree^3) predicates in the worst case, about 40 for the usual
+ * degree 6, plus a scan of the bucket grid (VOR_BUCKETS(max_sites) words).
+ */
+int vor_remove(vor_t *d, uint32_t site);
+
+/*
+ * Moves site `site` to (x, y), keeping its id. When the triangles around
+ * it stay counterclockwise and Delaunay (the common small step) only its
+ * coordinates change; otherwise it is removed and inserted again. Either
+ * way the result is the diagram a fresh build gives. Moving a site onto
+ * its own position is VOR_OK and changes nothing.
+ *   VOR_ERR_ARG        d NULL, or site not a site in the mesh (as for
+ *                      vor_remove)
+ *   VOR_ERR_DUPLICATE  (x, y) is another site: its id goes to *existing
+ *                      (may be NULL)
+ * On failure the diagram is unchanged.
+ */
+int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing);
 
 /* The order in which vor_build inserts the sites. */
 enum vor_order {

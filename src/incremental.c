@@ -260,7 +260,8 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
         hint = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
     }
-    if (d->site_count >= d->max_sites) {
+    bool reused = d->free_site != 0u; /* a removed site's id */
+    if (!reused && d->site_count >= d->max_sites) {
         /* no free coordinates slot to locate from: a read-only query
          * tells a duplicate, which needs no slot, from a new site */
         uint32_t nearest;
@@ -273,13 +274,14 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
         }
         return VOR_ERR_FULL;
     }
-    uint32_t p = d->site_count;
+    uint32_t p = reused ? d->free_site - 1u : d->site_count;
     vor_point_t point = {x, y};
     vor__tri_t *tri = d->triangles;
 
     if (d->vertex_count == 0u) {
         /* no triangle yet: with max_sites 1 the arena has no triangle
          * slots at all, so none is touched */
+        vor__take_free_id(d);
         d->sites[p] = point;
     } else if (d->vertex_count == 1u) {
         if (same_point(&d->sites[d->last_site], &point)) {
@@ -288,6 +290,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
             return VOR_ERR_DUPLICATE;
         }
+        vor__take_free_id(d);
         d->sites[p] = point;
         vor__make_edge(d, d->last_site, p);
     } else {
@@ -322,10 +325,11 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
             return VOR_ERR_DUPLICATE;
         }
+        vor__take_free_id(d); /* p's home slot holds the list's link */
         vor__insert_at(d, root, p);
     }
     vor__box_add(d, &point, d->vertex_count == 0u);
-    d->site_count++;
+    d->site_count += reused ? 0u : 1u;
     d->vertex_count++;
     d->last_site = p;
     d->revision++;

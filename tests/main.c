@@ -13,6 +13,7 @@ int main(void)
     test_raster_metrics();
     test_true_output();
     test_api_safety();
+    test_dynamic();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

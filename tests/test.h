@@ -50,5 +50,6 @@ void test_geometry(void);
 void test_raster_metrics(void);
 void test_true_output(void);
 void test_api_safety(void);
+void test_dynamic(void);
 
 #endif
