@@ -236,16 +236,6 @@ uint32_t vor__take_free_id(vor_t *d)
     return p;
 }
 
-/* Replaces site p in the bucket grid by site r (both are correct starts
- * for a search; the grid holds a few sites per bucket entry). */
-static void grid_forget(vor_t *d, uint32_t p, uint32_t r)
-{
-    uint32_t count = d->bucket_columns * d->bucket_rows;
-    for (uint32_t b = 0; b < count; b++) {
-        d->buckets[b] = (d->buckets[b] == p) ? (vor_index_t)r : d->buckets[b];
-    }
-}
-
 /* Removes p (in the mesh, at least four sites) and returns a former
  * neighbour of it. */
 static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
@@ -358,7 +348,7 @@ int vor_remove(vor_t *d, uint32_t site)
     if (d->vertex_count < 2u) {
         d->bucket_rebuild_at = 2; /* the grid is redrawn with the second site */
     } else {
-        grid_forget(d, site, other);
+        vor__grid_forget(d, site, other);
     }
     d->last_site = (d->last_site == site) ? other : d->last_site;
     d->revision++;
@@ -404,6 +394,17 @@ static bool star_still_delaunay(vor_t *d, vor_index_t p)
     return true;
 }
 
+/* A site sharing a triangle with p (p in a mesh of two or more). */
+static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
+{
+    vor_index_t v[3], found = p;
+    vor__vertices(&d->triangles[p], v);
+    for (unsigned i = 0; i < 3u; i++) {
+        found = (v[i] != p && v[i] != VOR__INFINITE) ? v[i] : found;
+    }
+    return found;
+}
+
 int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
 {
     if (d == NULL || !vor__site_in_mesh(d, site)) {
@@ -414,9 +415,14 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
         return VOR_OK;
     }
     if (d->vertex_count >= 2u) {
-        /* a site at (x, y) is the nearest site to it (a read-only query) */
+        /* a site at (x, y) is the nearest site to it (a read-only query,
+         * from the site itself for a step within its bucket's reach, else
+         * from the bucket grid) */
         uint32_t nearest;
-        if (vor_nearest(d, x, y, site, &nearest) == VOR_OK && d->sites[nearest].x == x &&
+        uint32_t from = (vor__grid_start(d, x, y) == vor__grid_start(d, s->x, s->y))
+                            ? site
+                            : VOR_NO_HINT;
+        if (vor_nearest(d, x, y, from, &nearest) == VOR_OK && d->sites[nearest].x == x &&
             d->sites[nearest].y == y) {
             if (existing != NULL) {
                 *existing = nearest;
@@ -428,16 +434,20 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
     s->x = x;
     s->y = y;
     if (d->vertex_count <= 2u || star_still_delaunay(d, (vor_index_t)site)) {
-        /* the common small step: the same triangles (the box grows to
-         * hold the site; the bucket grid still names only sites) */
+        /* the common small step: the same triangles; the box grows to
+         * hold the site, and a site that changed bucket changes entries */
         vor__box_add(d, s, false);
+        if (d->vertex_count >= 2u) {
+            vor__grid_move(d, site, old, any_neighbour(d, (vor_index_t)site));
+        }
         d->revision++;
         return VOR_OK;
     }
-    /* remove, then insert again under the same id: the free list's head */
+    /* remove, then insert again under the same id (the free list's head),
+     * from the bucket grid's site near the new place */
     *s = old;
     vor_remove(d, site);
-    uint32_t hint = d->last_site, id;
+    uint32_t hint = VOR_NO_HINT, id;
     int err = vor_insert_near(d, x, y, hint, &id);
     if (err != VOR_OK) {
         /* only lying predicates (fault injection) find a twin the exact

@@ -470,6 +470,12 @@ static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
 void vor__grid_rebuild(vor_t *d);
 void vor__grid_add(vor_t *d, uint32_t site);
 uint32_t vor__grid_start(const vor_t *d, int32_t x, int32_t y);
+/* Site `site` (coordinates still those the grid knows) leaves the grid:
+ * its entries go to a neighbouring run's site, or to `fallback` (a site
+ * in the mesh) when it named every bucket. */
+void vor__grid_forget(vor_t *d, uint32_t site, uint32_t fallback);
+/* Site `site`, now at its new coordinates, was at `from`. */
+void vor__grid_move(vor_t *d, uint32_t site, vor_point_t from, uint32_t fallback);
 
 /* vor_build's plan (insertion_order.c): for the n sites already copied
  * into d->sites, writes plan[2i] = the i-th site to insert and plan[2i+1]
