@@ -57,6 +57,8 @@
  *       vor_init(&d, arena, sizeof arena, 500);       // or VOR_ERR_*
  *       vor_build(&d, points, n, NULL, duplicate_of); // site i = points[i]
  *       vor_insert(&d, x, y, &id);                    // one more site
+ *       vor_move(&d, id, x2, y2, NULL);               // same id, new place
+ *       vor_remove(&d, id);                           // id freed for reuse
  *       vor_nearest(&d, qx, qy, VOR_NO_HINT, &id);    // exact, ties to smaller id
  *       vor_nearest_k(&d, qx, qy, hint, k, ids, &found); // k nearest, in order
  *
@@ -77,6 +79,13 @@
  *   cells touch. A query without a hint starts from a coarse bucket grid
  *   kept in the arena (one site id per VOR_SITES_PER_BUCKET = 4 sites), so
  *   it takes O(1) expected steps on uniform sites.
+ *   vor_remove and vor_move keep the diagram exactly that of the current
+ *   sites (the triangles a fresh build of them in id order gives) and the
+ *   same topological guarantee; removed ids are reused, most recently
+ *   freed first. Across a change: a vor_tracker_t sees d->revision move
+ *   and searches afresh (from the bucket grid, never from a stale site);
+ *   a hint must be a site still in the mesh (else VOR_ERR_ARG); iterators
+ *   must not outlive a change (begin them again).
  *
  * VORONOI GEOMETRY
  *   The geometry of the true Voronoi diagram of the distinct sites is read
@@ -325,8 +334,8 @@ static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t m
 }
 
 /*
- * Adds the site (x, y); its id, the next unused one, goes to *site (may be
- * NULL). The search for its place starts at the last inserted site;
+ * Adds the site (x, y); its id goes to *site (may be NULL): the most
+ * recently freed id (vor_remove) if there is one, else the next unused. The search for its place starts at the last inserted site;
  * vor_insert_near starts at site `hint` instead (a site in the mesh, or
  * VOR_NO_HINT: the bucket grid's site near (x, y), as vor_nearest).
  *   VOR_ERR_ARG        d NULL, or hint neither VOR_NO_HINT nor a site in
