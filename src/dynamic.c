@@ -362,16 +362,24 @@ int vor_remove(vor_t *d, uint32_t site)
  * counterclockwise, and every edge of those triangles locally Delaunay?
  * Only they involve p, so then the mesh is the triangulation of the moved
  * sites. A triangle's neighbour across a spoke p-y is the next star
- * triangle; across the far edge, a triangle off the star. */
-static bool star_still_delaunay(vor_t *d, vor_index_t p)
+ * triangle; across the far edge, a triangle off the star. Also sets
+ * *twin to a neighbour of p at p's new place (VOR__NONE: none): when the
+ * answer is yes, a site there would be one, since a site and its twin are
+ * each other's nearest (perturbed) sites, hence Delaunay neighbours. */
+static bool star_still_delaunay(vor_t *d, vor_index_t p, vor_index_t *twin)
 {
     vor__tri_t *tri = d->triangles;
+    const vor_point_t *at = &d->sites[p];
     vor_index_t slot = p;
+    *twin = VOR__NONE;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
         const vor__tri_t *t = &tri[slot];
         vor_index_t x, y, z, unused;
         star_edge(tri, slot, p, &x, &y);
         vor_index_t next = star_next(tri, slot, p);
+        if (x != VOR__INFINITE && d->sites[x].x == at->x && d->sites[x].y == at->y) {
+            *twin = x;
+        }
         if (x != VOR__INFINITE && y != VOR__INFINITE && vor__orient(d, p, x, y) <= 0) {
             return false;
         }
@@ -414,28 +422,44 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
     if (s->x == x && s->y == y) {
         return VOR_OK;
     }
-    if (d->vertex_count >= 2u) {
-        /* a site at (x, y) is the nearest site to it (a read-only query,
-         * from the site itself for a step within its bucket's reach, else
-         * from the bucket grid) */
-        uint32_t nearest;
-        uint32_t from = (vor__grid_start(d, x, y) == vor__grid_start(d, s->x, s->y))
-                            ? site
-                            : VOR_NO_HINT;
-        if (vor_nearest(d, x, y, from, &nearest) == VOR_OK && d->sites[nearest].x == x &&
-            d->sites[nearest].y == y) {
-            if (existing != NULL) {
-                *existing = nearest;
-            }
-            return VOR_ERR_DUPLICATE;
-        }
-    }
     vor_point_t old = *s;
+    uint32_t twin = VOR__NONE;
+    if (d->vertex_count == 2u) { /* the other site is the only neighbour */
+        uint32_t other = any_neighbour(d, (vor_index_t)site);
+        twin = (d->sites[other].x == x && d->sites[other].y == y) ? other : VOR__NONE;
+    }
+    /* the common small step first: the same triangles at the new place.
+     * The tests count in the stats, restored if the move fails. */
+    vor_predicate_stats_t saved_stats;
+    vor__copy_stats(&saved_stats, &d->stats);
     s->x = x;
     s->y = y;
-    if (d->vertex_count <= 2u || star_still_delaunay(d, (vor_index_t)site)) {
-        /* the common small step: the same triangles; the box grows to
-         * hold the site, and a site that changed bucket changes entries */
+    vor_index_t star_twin = VOR__NONE;
+    bool same_triangles = d->vertex_count <= 2u || star_still_delaunay(d, (vor_index_t)site,
+                                                                       &star_twin);
+    twin = (star_twin != VOR__NONE) ? star_twin : twin;
+    *s = old;
+    if (!same_triangles && d->vertex_count >= 3u) {
+        /* a site at (x, y) is the nearest site to it (a read-only query
+         * from the bucket grid) */
+        uint32_t nearest;
+        if (vor_nearest(d, x, y, VOR_NO_HINT, &nearest) == VOR_OK && d->sites[nearest].x == x &&
+            d->sites[nearest].y == y) {
+            twin = nearest;
+        }
+    }
+    if (twin != VOR__NONE) {
+        vor__copy_stats(&d->stats, &saved_stats);
+        if (existing != NULL) {
+            *existing = twin;
+        }
+        return VOR_ERR_DUPLICATE;
+    }
+    if (same_triangles) {
+        /* the box grows to hold the site, and a site that changed bucket
+         * moves its run of the bucket grid */
+        s->x = x;
+        s->y = y;
         vor__box_add(d, s, false);
         if (d->vertex_count >= 2u) {
             vor__grid_move(d, site, old, any_neighbour(d, (vor_index_t)site));
@@ -445,14 +469,13 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
     }
     /* remove, then insert again under the same id (the free list's head),
      * from the bucket grid's site near the new place */
-    *s = old;
     vor_remove(d, site);
-    uint32_t hint = VOR_NO_HINT, id;
-    int err = vor_insert_near(d, x, y, hint, &id);
+    uint32_t id;
+    int err = vor_insert_near(d, x, y, VOR_NO_HINT, &id);
     if (err != VOR_OK) {
         /* only lying predicates (fault injection) find a twin the exact
          * query did not: the site goes back where it was */
-        vor_insert_near(d, old.x, old.y, hint, &id);
+        vor_insert_near(d, old.x, old.y, VOR_NO_HINT, &id);
     }
     return err;
 }
