@@ -9,7 +9,8 @@
  *                                     triangle incident to site s, which is
  *                                     how a site finds its triangles, at no
  *                                     memory cost (empty while s is not in
- *                                     the mesh)
+ *                                     the mesh; a removed id's empty slot
+ *                                     links the free ids' list, dynamic.c)
  *   slots [max_sites, max_sites+v-2)  the remaining v - 2 triangles of a
  *                                     mesh of v sites, packed
  *
