@@ -168,8 +168,10 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
 /* Home slot `hole` of site h lost its triangle: fills it with another
  * triangle of h, from a packed slot when h has one there (which is then
  * returned, free); otherwise from the home slot of another of its
- * vertices r, which then needs one in turn. The chain visits each site at
- * most once and is bounded by the site count. */
+ * vertices r, which then needs one in turn: an augmenting path of the
+ * matching of sites to their home triangles, searched greedily (no site
+ * of the last eight steps is robbed again). Bounded by the site count;
+ * the first step finds a packed triangle in the common case. */
 static vor_index_t rehome(vor_t *d, vor_index_t h, vor_index_t hole, vor_index_t start)
 {
     vor__tri_t *tri = d->triangles;
