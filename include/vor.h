@@ -114,8 +114,8 @@
  *
  * FLASH (docs/benchmarks.md, "Code size and stack")
  *   A firmware linked with --gc-sections keeps only what it calls: insert
- *   and nearest-site queries are about 8.7 KB on Cortex-M3 at -Os, and
- *   vor_build adds 1.4 KB. The divide-and-conquer builder is its own entry
+ *   and nearest-site queries are about 8.8 KB on Cortex-M3 at -Os, and
+ *   vor_build adds 1.3 KB. The divide-and-conquer builder is its own entry
  *   point, vor_build_dc, so vor_build does not pull it in; the geometry
  *   (edges, cells, hull) is linked only when called.
  *

@@ -228,16 +228,6 @@ static void free_id(vor_t *d, uint32_t p)
     d->free_site = p + 1u;
 }
 
-uint32_t vor__take_free_id(vor_t *d)
-{
-    if (d->free_site == 0u) {
-        return VOR__NONE;
-    }
-    uint32_t p = d->free_site - 1u;
-    d->free_site = (d->max_sites >= 2u) ? d->triangles[p].n[1] : 0u;
-    return p;
-}
-
 /* Removes p (in the mesh, at least four sites) and returns a former
  * neighbour of it. */
 static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)

@@ -434,10 +434,6 @@ uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p);
  * present) into the triangle at slot root that contains it. */
 void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p);
 
-/* Takes the most recently freed id off the free list (dynamic.c): its
- * home slot holds the link to the next. VOR__NONE when there is none. */
-uint32_t vor__take_free_id(vor_t *d);
-
 /* The first two sites: two triangles at infinity sharing the edge ab
  * (mesh.c). */
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);
