@@ -57,6 +57,8 @@
  *       vor_init(&d, arena, sizeof arena, 500);       // or VOR_ERR_*
  *       vor_build(&d, points, n, NULL, duplicate_of); // site i = points[i]
  *       vor_insert(&d, x, y, &id);                    // one more site
+ *       vor_move(&d, id, x2, y2, NULL);               // same id, new place
+ *       vor_remove(&d, id);                           // id freed for reuse
  *       vor_nearest(&d, qx, qy, VOR_NO_HINT, &id);    // exact, ties to smaller id
  *       vor_nearest_k(&d, qx, qy, hint, k, ids, &found); // k nearest, in order
  *
@@ -77,6 +79,13 @@
  *   cells touch. A query without a hint starts from a coarse bucket grid
  *   kept in the arena (one site id per VOR_SITES_PER_BUCKET = 4 sites), so
  *   it takes O(1) expected steps on uniform sites.
+ *   vor_remove and vor_move keep the diagram exactly that of the current
+ *   sites (the triangles a fresh build of them in id order gives) and the
+ *   same topological guarantee; removed ids are reused, most recently
+ *   freed first. Across a change: a vor_tracker_t sees d->revision move
+ *   and searches afresh (from the bucket grid, never from a stale site);
+ *   a hint must be a site still in the mesh (else VOR_ERR_ARG); iterators
+ *   must not outlive a change (begin them again).
  *
  * VORONOI GEOMETRY
  *   The geometry of the true Voronoi diagram of the distinct sites is read
@@ -109,8 +118,8 @@
  *
  * FLASH (docs/benchmarks.md, "Code size and stack")
  *   A firmware linked with --gc-sections keeps only what it calls: insert
- *   and nearest-site queries are about 8.7 KB on Cortex-M3 at -Os, and
- *   vor_build adds 1.4 KB. The divide-and-conquer builder is its own entry
+ *   and nearest-site queries are about 8.8 KB on Cortex-M3 at -Os, and
+ *   vor_build adds 1.3 KB. The divide-and-conquer builder is its own entry
  *   point, vor_build_dc, so vor_build does not pull it in; the geometry
  *   (edges, cells, hull) is linked only when called.
  *
@@ -303,6 +312,9 @@ typedef struct vor {
     uint32_t bucket_columns, bucket_rows, bucket_scale;
     uint32_t bucket_rebuild_at; /* site count at which the grid is redrawn */
     uint32_t revision;     /* counts the changes: trackers notice them */
+    uint32_t free_site;    /* the most recently freed id plus one (0: none),
+                              head of the free ids' list, threaded through
+                              their empty home slots */
     vor_predicate_stats_t stats; /* predicate tiers of every call on it */
 } vor_t;
 
@@ -326,8 +338,8 @@ static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t m
 }
 
 /*
- * Adds the site (x, y); its id, the next unused one, goes to *site (may be
- * NULL). The search for its place starts at the last inserted site;
+ * Adds the site (x, y); its id goes to *site (may be NULL): the most
+ * recently freed id (vor_remove) if there is one, else the next unused. The search for its place starts at the last inserted site;
  * vor_insert_near starts at site `hint` instead (a site in the mesh, or
  * VOR_NO_HINT: the bucket grid's site near (x, y), as vor_nearest).
  *   VOR_ERR_ARG        d NULL, or hint neither VOR_NO_HINT nor a site in
@@ -341,6 +353,37 @@ static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t m
  */
 int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site);
 int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
+
+/*
+ * Removes site `site` from the diagram. The result is exactly the diagram
+ * of the remaining sites: the triangles a fresh build of them in id order
+ * gives (the perturbation breaks ties by id order). The other sites keep
+ * their ids; `site` becomes free, and the next vor_insert reuses the most
+ * recently freed id (ids beyond the free ones are handed out after them).
+ * Ids vor_build gave to duplicates stay reserved: they are not sites.
+ *   VOR_ERR_ARG  d NULL, or site not a site in the mesh (an unused or
+ *                free id, a duplicate's id from vor_build)
+ * On failure the diagram is unchanged. The bounding box (vor_t low, high)
+ * may stay larger than the remaining sites' box.
+ * Cost: O(degree^3) predicates in the worst case, 19 on average on
+ * uniform sites (degree 6), plus the removed site's run of the bucket
+ * grid (a few entries on uniform sites).
+ */
+int vor_remove(vor_t *d, uint32_t site);
+
+/*
+ * Moves site `site` to (x, y), keeping its id. When the triangles around
+ * it stay counterclockwise and Delaunay (the common small step) only its
+ * coordinates change; otherwise it is removed and inserted again. Either
+ * way the result is the diagram a fresh build gives. Moving a site onto
+ * its own position is VOR_OK and changes nothing.
+ *   VOR_ERR_ARG        d NULL, or site not a site in the mesh (as for
+ *                      vor_remove)
+ *   VOR_ERR_DUPLICATE  (x, y) is another site: its id goes to *existing
+ *                      (may be NULL)
+ * On failure the diagram is unchanged.
+ */
+int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing);
 
 /* The order in which vor_build inserts the sites. */
 enum vor_order {

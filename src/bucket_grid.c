@@ -143,12 +143,64 @@ void vor__grid_add(vor_t *d, uint32_t site)
     /* a bucket whose site lies elsewhere (borrowed) takes the new site */
     uint32_t b = bucket_of(d, d->sites[site].x, d->sites[site].y);
     vor_index_t held = d->buckets[b];
-    if (bucket_of(d, d->sites[held].x, d->sites[held].y) != b) {
+    uint32_t held_at = bucket_of(d, d->sites[held].x, d->sites[held].y);
+    if (held_at != b) {
         d->buckets[b] = (vor_index_t)site;
+        /* the borrowed run is cut in two: the part away from the held
+         * site's bucket joins the new site's run (vor__grid_forget needs
+         * each site's entries in one run through its own bucket) */
+        uint32_t count = d->bucket_columns * d->bucket_rows;
+        if (held_at < b) {
+            for (uint32_t k = b + 1u; k < count && d->buckets[k] == held; k++) {
+                d->buckets[k] = (vor_index_t)site;
+            }
+        } else {
+            for (uint32_t k = b; k > 0u && d->buckets[k - 1u] == held; k--) {
+                d->buckets[k - 1u] = (vor_index_t)site;
+            }
+        }
+    }
+}
+
+void vor__grid_forget(vor_t *d, uint32_t site, uint32_t fallback)
+{
+    /* the entries naming the site: one run of equal entries through its
+     * own bucket (vor__grid_rebuild fills runs so, vor__grid_add keeps
+     * them so). The run joins the run before it (after it, at the grid's
+     * start), whose own bucket then still lies in the merged run. */
+    uint32_t count = d->bucket_columns * d->bucket_rows;
+    vor_index_t *bucket = d->buckets;
+    uint32_t low = bucket_of(d, d->sites[site].x, d->sites[site].y), high = low;
+    if (bucket[low] != site) {
+        return; /* the site shares its bucket and is not its entry */
+    }
+    while (low > 0u && bucket[low - 1u] == site) {
+        low--;
+    }
+    while (high + 1u < count && bucket[high + 1u] == site) {
+        high++;
+    }
+    vor_index_t heir = (low > 0u)           ? bucket[low - 1u]
+                       : (high + 1u < count) ? bucket[high + 1u]
+                                             : (vor_index_t)fallback;
+    for (uint32_t k = low; k <= high; k++) {
+        bucket[k] = heir;
     }
 }
 
 uint32_t vor__grid_start(const vor_t *d, int32_t x, int32_t y)
 {
     return d->buckets[bucket_of(d, x, y)];
+}
+
+void vor__grid_move(vor_t *d, uint32_t site, vor_point_t from, uint32_t fallback)
+{
+    vor_point_t to = d->sites[site];
+    if (bucket_of(d, from.x, from.y) == bucket_of(d, to.x, to.y)) {
+        return; /* the same bucket: every run keeps its own bucket */
+    }
+    d->sites[site] = from; /* its runs are found from its old bucket */
+    vor__grid_forget(d, site, fallback);
+    d->sites[site] = to;
+    vor__grid_add(d, site);
 }

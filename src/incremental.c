@@ -252,6 +252,19 @@ static bool same_point(const vor_point_t *a, const vor_point_t *b)
     return a->x == b->x && a->y == b->y;
 }
 
+/* Takes the most recently freed id off the free list (vor_remove puts
+ * them there, dynamic.c): d->free_site is that id plus one, 0 for none,
+ * and the id's empty home slot holds the same for the next (one site has
+ * no slots, and then no other free id). Here, not in dynamic.c, so that a
+ * firmware that never removes links no removal code. */
+static void take_free_id(vor_t *d)
+{
+    if (d->free_site != 0u) {
+        uint32_t p = d->free_site - 1u;
+        d->free_site = (d->max_sites >= 2u) ? d->triangles[p].n[1] : 0u;
+    }
+}
+
 int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site)
 {
     if (d == NULL || (hint != VOR_NO_HINT && !vor__site_in_mesh(d, hint))) {
@@ -260,7 +273,8 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
         hint = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
     }
-    if (d->site_count >= d->max_sites) {
+    bool reused = d->free_site != 0u; /* a removed site's id */
+    if (!reused && d->site_count >= d->max_sites) {
         /* no free coordinates slot to locate from: a read-only query
          * tells a duplicate, which needs no slot, from a new site */
         uint32_t nearest;
@@ -273,13 +287,14 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
         }
         return VOR_ERR_FULL;
     }
-    uint32_t p = d->site_count;
+    uint32_t p = reused ? d->free_site - 1u : d->site_count;
     vor_point_t point = {x, y};
     vor__tri_t *tri = d->triangles;
 
     if (d->vertex_count == 0u) {
         /* no triangle yet: with max_sites 1 the arena has no triangle
          * slots at all, so none is touched */
+        take_free_id(d);
         d->sites[p] = point;
     } else if (d->vertex_count == 1u) {
         if (same_point(&d->sites[d->last_site], &point)) {
@@ -288,6 +303,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
             return VOR_ERR_DUPLICATE;
         }
+        take_free_id(d);
         d->sites[p] = point;
         vor__make_edge(d, d->last_site, p);
     } else {
@@ -322,10 +338,11 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
             return VOR_ERR_DUPLICATE;
         }
+        take_free_id(d); /* p's home slot holds the list's link */
         vor__insert_at(d, root, p);
     }
     vor__box_add(d, &point, d->vertex_count == 0u);
-    d->site_count++;
+    d->site_count += reused ? 0u : 1u;
     d->vertex_count++;
     d->last_site = p;
     d->revision++;

@@ -9,7 +9,8 @@
  *                                     triangle incident to site s, which is
  *                                     how a site finds its triangles, at no
  *                                     memory cost (empty while s is not in
- *                                     the mesh)
+ *                                     the mesh; a removed id's empty slot
+ *                                     links the free ids' list, dynamic.c)
  *   slots [max_sites, max_sites+v-2)  the remaining v - 2 triangles of a
  *                                     mesh of v sites, packed
  *
@@ -466,6 +467,12 @@ static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
 void vor__grid_rebuild(vor_t *d);
 void vor__grid_add(vor_t *d, uint32_t site);
 uint32_t vor__grid_start(const vor_t *d, int32_t x, int32_t y);
+/* Site `site` (coordinates still those the grid knows) leaves the grid:
+ * its entries go to a neighbouring run's site, or to `fallback` (a site
+ * in the mesh) when it named every bucket. */
+void vor__grid_forget(vor_t *d, uint32_t site, uint32_t fallback);
+/* Site `site`, now at its new coordinates, was at `from`. */
+void vor__grid_move(vor_t *d, uint32_t site, vor_point_t from, uint32_t fallback);
 
 /* vor_build's plan (insertion_order.c): for the n sites already copied
  * into d->sites, writes plan[2i] = the i-th site to insert and plan[2i+1]

@@ -14,6 +14,7 @@ int main(void)
     test_true_output();
     test_api_safety();
     test_centroid();
+    test_dynamic();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -51,5 +51,6 @@ void test_raster_metrics(void);
 void test_true_output(void);
 void test_api_safety(void);
 void test_centroid(void);
+void test_dynamic(void);
 
 #endif

@@ -19,6 +19,8 @@ int main(void)
     acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7), ids);
     acc |= vor_insert(&d, size_x(1), size_y(1), &site);
     acc |= vor_insert_near(&d, size_x(2), size_y(2), site, &site);
+    acc |= vor_move(&d, site, size_x(8), size_y(8), &site);
+    acc |= vor_remove(&d, site);
     acc |= vor_nearest(&d, size_x(3), size_y(3), VOR_NO_HINT, &site);
     acc |= vor_nearest_k(&d, size_x(3), size_y(3), site, 4, ids, &found);
     vor_tracker_t tracker;

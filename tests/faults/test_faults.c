@@ -6,7 +6,8 @@
  * Built with VOR_FAULT_INJECTION: the diagram's perturbed predicates return
  * the wrong sign with probability p. For p in {0.01, 0.1, 0.5} and 10,000
  * sites, building (incrementally and by divide and conquer, and
- * inserting one by one) must finish and leave a mesh
+ * inserting one by one), then removing and moving sites, must finish and
+ * leave a mesh
  * whose topological invariants all hold: counts from Euler's formula,
  * valid distinct vertices, symmetric neighbours, every site present with
  * one fan of triangles. Only the geometric checks (orientation, Delaunay)
@@ -101,6 +102,27 @@ int main(void)
             CHECK(err == VOR_OK || err == VOR_ERR_DUPLICATE, "insert %u: %d", i, err);
         }
         check_topology(&d, "3000 inserts (many degenerate)", percents[k], inserted);
+        /* removals and moves on that mesh: the ear guard and the local
+         * check must keep it a triangulation whatever the signs */
+        uint32_t live = inserted;
+        for (uint32_t i = 0; i < 1000u; i++) {
+            int err = vor_remove(&d, test_rng_u32(&rng) % d.site_count);
+            live -= (err == VOR_OK) ? 1u : 0u;
+            CHECK(err == VOR_OK || err == VOR_ERR_ARG, "remove %u: %d", i, err);
+        }
+        check_topology(&d, "1000 removals", percents[k], live);
+        for (uint32_t i = 0; i < 2000u; i++) {
+            uint32_t site = test_rng_u32(&rng) % d.site_count;
+            vor_point_t to = {test_rng_range(&rng, -1000, 1000), test_rng_range(&rng, -1000, 1000)};
+            if (i % 2u == 0u && site < d.site_count) { /* a small step */
+                to.x = d.sites[site].x + test_rng_range(&rng, -3, 3);
+                to.y = d.sites[site].y + test_rng_range(&rng, -3, 3);
+            }
+            int err = vor_move(&d, site, to.x, to.y, NULL);
+            CHECK(err == VOR_OK || err == VOR_ERR_ARG || err == VOR_ERR_DUPLICATE, "move %u: %d",
+                  i, err);
+        }
+        check_topology(&d, "2000 moves", percents[k], live);
     }
     test_summary();
     return test_failures() == 0 ? 0 : 1;

@@ -1,0 +1,448 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_dynamic.c - removing and moving sites.
+ *
+ * Independent references: a model of the live sites kept here (positions,
+ * which ids are live, the free ids in the documented reuse order), from
+ * which every expected id and error follows; vor_validate's invariants;
+ * and the uniqueness of the perturbed Delaunay triangulation: after every
+ * operation the triangles must be those of a fresh vor_build of the live
+ * sites in id order (the perturbation depends only on that order).
+ */
+#include "test.h"
+#include "vor.h"
+
+#define DYN_SITES 40u
+
+static uint8_t arena[VOR_ARENA_BYTES(DYN_SITES)] __attribute__((aligned(8)));
+static uint8_t fresh_arena[VOR_ARENA_BYTES(DYN_SITES)] __attribute__((aligned(8)));
+static uint8_t saved_arena[sizeof arena];
+
+/* The model: what the diagram must hold. */
+typedef struct {
+    vor_point_t at[DYN_SITES];
+    bool live[DYN_SITES];
+    uint32_t handed_out;        /* ids 0 .. handed_out - 1 were given */
+    uint32_t freed[DYN_SITES];  /* free ids, the most recent last */
+    uint32_t free_count;
+} model_t;
+
+static uint32_t live_count(const model_t *m)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < m->handed_out; i++) {
+        n += m->live[i] ? 1u : 0u;
+    }
+    return n;
+}
+
+static uint32_t site_at(const model_t *m, int32_t x, int32_t y)
+{
+    for (uint32_t i = 0; i < m->handed_out; i++) {
+        if (m->live[i] && m->at[i].x == x && m->at[i].y == y) {
+            return i;
+        }
+    }
+    return VOR_NO_HINT;
+}
+
+/* ------------------------------------------------------------------ */
+/* Triangle sets                                                       */
+
+typedef struct {
+    uint32_t count;
+    uint64_t sum1, sum2;
+} fingerprint_t;
+
+static uint64_t mix(uint64_t x)
+{
+    x ^= x >> 29;
+    x *= 0xBF58476D1CE4E5B9ull;
+    x ^= x >> 32;
+    x *= 0x94D049BB133111EBull;
+    x ^= x >> 29;
+    return x;
+}
+
+/* Order-independent: the sum of hashes of each triangle rotated to start
+ * at its smallest id. */
+static void add_triangle(fingerprint_t *f, const uint32_t ids[3])
+{
+    unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
+    first = (ids[2] < ids[first]) ? 2u : first;
+    uint64_t key = ((uint64_t)ids[first] << 42) ^ ((uint64_t)ids[(first + 1u) % 3u] << 21) ^
+                   ids[(first + 2u) % 3u];
+    f->count++;
+    f->sum1 += mix(key);
+    f->sum2 += mix(key ^ 0x5851F42D4C957F2Dull);
+}
+
+/* The triangles of d, ids mapped through map (NULL: as they are). */
+static fingerprint_t triangles_of(const vor_t *d, const uint32_t *map)
+{
+    fingerprint_t f = {0, 0, 0};
+    vor_triangle_iter_t it;
+    uint32_t ids[3];
+    vor_triangles_begin(&it, d);
+    while (vor_triangles_next(&it, ids)) {
+        if (map != NULL) {
+            ids[0] = map[ids[0]];
+            ids[1] = map[ids[1]];
+            ids[2] = map[ids[2]];
+        }
+        add_triangle(&f, ids);
+    }
+    return f;
+}
+
+/* Every operation's aftermath: valid, and the fresh build's triangles. */
+static bool check_state(const vor_t *d, const model_t *m, const char *what, uint32_t step)
+{
+    vor_violation_t violation = {VOR_CHECK_COUNTS, 0, 0};
+    int err = vor_validate(d, &violation);
+    bool ok = CHECK(err == VOR_OK, "%s step %u: vor_validate %d (check %d, triangle %u, site %u)",
+                    what, step, err, (int)violation.check, violation.triangle, violation.site);
+    ok = CHECK(d->vertex_count == live_count(m), "%s step %u: %u sites, expected %u", what, step,
+               d->vertex_count, live_count(m)) && ok;
+    static vor_point_t points[DYN_SITES];
+    static uint32_t id_of[DYN_SITES];
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < m->handed_out; i++) {
+        if (m->live[i]) {
+            id_of[n] = i;
+            points[n++] = m->at[i];
+        }
+    }
+    vor_t fresh;
+    vor_init(&fresh, fresh_arena, sizeof fresh_arena, DYN_SITES);
+    CHECK(vor_build(&fresh, points, n, NULL, NULL) == VOR_OK, "%s step %u: fresh build", what,
+          step);
+    fingerprint_t got = triangles_of(d, NULL), want = triangles_of(&fresh, id_of);
+    ok = CHECK(got.count == want.count && got.sum1 == want.sum1 && got.sum2 == want.sum2,
+               "%s step %u: %u triangles, the fresh build has %u (or others)", what, step,
+               got.count, want.count) && ok;
+    return ok;
+}
+
+/* ------------------------------------------------------------------ */
+/* Byte-for-byte unchanged after a failing call                        */
+
+static vor_t saved;
+
+static void save(const vor_t *d)
+{
+    const uint8_t *from = (const uint8_t *)d;
+    uint8_t *to = (uint8_t *)&saved;
+    for (size_t i = 0; i < sizeof saved; i++) {
+        to[i] = from[i];
+    }
+    for (size_t i = 0; i < sizeof arena; i++) {
+        saved_arena[i] = arena[i];
+    }
+}
+
+static bool unchanged(const vor_t *d)
+{
+    const uint8_t *now = (const uint8_t *)d, *then = (const uint8_t *)&saved;
+    for (size_t i = 0; i < sizeof saved; i++) {
+        if (now[i] != then[i]) {
+            return false;
+        }
+    }
+    for (size_t i = 0; i < sizeof arena; i++) {
+        if (arena[i] != saved_arena[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* ------------------------------------------------------------------ */
+/* Operations against the model                                        */
+
+static void do_insert(vor_t *d, model_t *m, vor_point_t p, const char *what, uint32_t step)
+{
+    uint32_t twin = site_at(m, p.x, p.y), id = VOR_NO_HINT;
+    bool full = m->free_count == 0u && m->handed_out == DYN_SITES;
+    if (twin != VOR_NO_HINT || full) {
+        save(d);
+    }
+    int err = vor_insert(d, p.x, p.y, &id);
+    if (twin != VOR_NO_HINT) {
+        CHECK(err == VOR_ERR_DUPLICATE && id == twin,
+              "%s step %u: insert onto site %u gave %d, id %u", what, step, twin, err, id);
+        CHECK(unchanged(d), "%s step %u: a duplicate insert changed the diagram", what, step);
+        return;
+    }
+    if (full) {
+        CHECK(err == VOR_ERR_FULL, "%s step %u: insert into a full diagram gave %d", what, step,
+              err);
+        CHECK(unchanged(d), "%s step %u: a full insert changed the diagram", what, step);
+        return;
+    }
+    /* the most recently freed id first, then the next new one */
+    uint32_t expected = (m->free_count > 0u) ? m->freed[--m->free_count] : m->handed_out++;
+    CHECK(err == VOR_OK && id == expected, "%s step %u: insert gave %d, id %u, expected %u",
+          what, step, err, id, expected);
+    m->at[expected] = p;
+    m->live[expected] = true;
+}
+
+static void do_remove(vor_t *d, model_t *m, uint32_t id, const char *what, uint32_t step)
+{
+    bool live = id < m->handed_out && m->live[id];
+    if (!live) {
+        save(d);
+    }
+    int err = vor_remove(d, id);
+    if (!live) {
+        CHECK(err == VOR_ERR_ARG, "%s step %u: removing non-site %u gave %d", what, step, id,
+              err);
+        CHECK(unchanged(d), "%s step %u: a failed remove changed the diagram", what, step);
+        return;
+    }
+    CHECK(err == VOR_OK, "%s step %u: remove %u gave %d", what, step, id, err);
+    m->live[id] = false;
+    m->freed[m->free_count++] = id;
+}
+
+static void do_move(vor_t *d, model_t *m, uint32_t id, vor_point_t p, const char *what,
+                    uint32_t step)
+{
+    bool live = id < m->handed_out && m->live[id];
+    uint32_t twin = site_at(m, p.x, p.y), existing = VOR_NO_HINT;
+    bool fails = !live || (twin != VOR_NO_HINT && twin != id);
+    bool stays = live && twin == id;
+    if (fails || stays) {
+        save(d);
+    }
+    int err = vor_move(d, id, p.x, p.y, &existing);
+    if (!live) {
+        CHECK(err == VOR_ERR_ARG, "%s step %u: moving non-site %u gave %d", what, step, id, err);
+    } else if (twin != VOR_NO_HINT && twin != id) {
+        CHECK(err == VOR_ERR_DUPLICATE && existing == twin,
+              "%s step %u: move of %u onto site %u gave %d, %u", what, step, id, twin, err,
+              existing);
+    } else {
+        CHECK(err == VOR_OK, "%s step %u: move %u gave %d", what, step, id, err);
+        m->at[id] = p;
+    }
+    if (fails || stays) {
+        CHECK(unchanged(d), "%s step %u: a move that %s changed the diagram", what, step,
+              fails ? "failed" : "stayed");
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Random sequences                                                    */
+
+enum shape { UNIFORM, GRID, LINE, CIRCLE, HEAPED, SHAPES };
+
+/* Points of x^2 + y^2 = 25^2: twelve cocircular sites (and the centre
+ * makes the set degenerate in another way). */
+static const int8_t circle[13][2] = {{25, 0}, {0, 25},  {-25, 0}, {0, -25}, {7, 24},
+                                     {-7, 24}, {24, -7}, {-24, -7}, {15, 20}, {-20, 15},
+                                     {20, -15}, {-15, -20}, {0, 0}};
+
+static vor_point_t random_point(test_rng_t *rng, enum shape shape)
+{
+    vor_point_t p = {0, 0};
+    int32_t t;
+    switch (shape) {
+    case UNIFORM:
+        p.x = test_rng_range(rng, -1000, 1000);
+        p.y = test_rng_range(rng, -1000, 1000);
+        break;
+    case GRID:
+        p.x = test_rng_range(rng, 0, 6) * 10;
+        p.y = test_rng_range(rng, 0, 6) * 10;
+        break;
+    case LINE:
+        t = test_rng_range(rng, -30, 30);
+        p.x = 3 * t + 1;
+        p.y = -2 * t;
+        break;
+    case CIRCLE:
+        t = test_rng_range(rng, 0, 12);
+        p.x = circle[t][0];
+        p.y = circle[t][1];
+        break;
+    default: /* heaped: most points fall on a few */
+        p.x = test_rng_range(rng, 0, 2);
+        p.y = test_rng_range(rng, 0, 2);
+        break;
+    }
+    return p;
+}
+
+static const char *const shape_names[SHAPES] = {"uniform", "grid", "line", "circle", "heaped"};
+
+static uint32_t random_id(test_rng_t *rng, const model_t *m)
+{
+    /* mostly live sites, sometimes a free or unused id */
+    uint32_t id = (uint32_t)test_rng_range(rng, 0, (int32_t)DYN_SITES);
+    for (uint32_t tries = 0; tries < 8u && (id >= m->handed_out || !m->live[id]); tries++) {
+        id = (uint32_t)test_rng_range(rng, 0, (int32_t)DYN_SITES);
+    }
+    return id;
+}
+
+static void random_sequence(enum shape shape, uint64_t seed, uint32_t steps)
+{
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    const char *what = shape_names[shape];
+    uint32_t failures_before = (uint32_t)test_failures();
+    for (uint32_t step = 0; step < steps; step++) {
+        uint32_t r = test_rng_u32(&rng) % 10u, id = random_id(&rng, &m);
+        if (r < 4u || live_count(&m) < 3u) {
+            do_insert(&d, &m, random_point(&rng, shape), what, step);
+        } else if (r < 6u) {
+            do_remove(&d, &m, id, what, step);
+        } else if (r < 8u || shape != UNIFORM) {
+            do_move(&d, &m, id, random_point(&rng, shape), what, step);
+        } else if (r < 9u && id < m.handed_out) {
+            /* a robot's small step: usually no triangle changes */
+            vor_point_t p = m.at[id];
+            p.x += test_rng_range(&rng, -4, 4);
+            p.y += test_rng_range(&rng, -4, 4);
+            do_move(&d, &m, id, p, what, step);
+        } else if (id < m.handed_out) {
+            /* to the hull, and back on a later step */
+            vor_point_t p = m.at[id];
+            p.x = (p.x > 0) ? p.x - 5000 : p.x + 5000;
+            do_move(&d, &m, id, p, what, step);
+        }
+        if (!check_state(&d, &m, what, step) || test_failures() > failures_before + 4u) {
+            return; /* the first failure tells; the rest would repeat it */
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Edge cases                                                          */
+
+static void down_to_nothing(void)
+{
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    for (uint32_t i = 0; i < 12u; i++) {
+        do_insert(&d, &m, random_point(&rng, UNIFORM), "drain", i);
+    }
+    /* every site removed, so the counts pass through 3, 2, 1 and 0 */
+    for (uint32_t i = 0; i < 12u; i++) {
+        do_remove(&d, &m, (i * 5u) % 12u, "drain", 100u + i);
+        check_state(&d, &m, "drain", 100u + i);
+    }
+    uint32_t nearest;
+    CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &nearest) == VOR_ERR_EMPTY, "empty after removals");
+    for (uint32_t i = 0; i < 14u; i++) { /* ids come back, then new ones */
+        do_insert(&d, &m, random_point(&rng, UNIFORM), "refill", 200u + i);
+        check_state(&d, &m, "refill", 200u + i);
+    }
+    do_remove(&d, &m, DYN_SITES + 3u, "refill", 300);
+    CHECK(vor_remove(NULL, 0) == VOR_ERR_ARG, "vor_remove(NULL)");
+    CHECK(vor_move(NULL, 0, 0, 0, NULL) == VOR_ERR_ARG, "vor_move(NULL)");
+
+    /* one site of capacity one: its only id comes back */
+    static uint8_t one[VOR_ARENA_BYTES(1)] __attribute__((aligned(8)));
+    vor_t solo;
+    uint32_t id = 9;
+    vor_init(&solo, one, sizeof one, 1);
+    CHECK(vor_insert(&solo, 4, 5, &id) == VOR_OK && id == 0, "solo insert");
+    CHECK(vor_move(&solo, 0, 6, 7, NULL) == VOR_OK && solo.sites[0].x == 6, "solo move");
+    CHECK(vor_remove(&solo, 0) == VOR_OK && solo.vertex_count == 0, "solo remove");
+    CHECK(vor_remove(&solo, 0) == VOR_ERR_ARG, "solo remove twice");
+    CHECK(vor_insert(&solo, 1, 1, &id) == VOR_OK && id == 0, "solo id reused");
+    CHECK(vor_insert(&solo, 2, 2, &id) == VOR_ERR_FULL, "solo full");
+}
+
+/* Duplicates' ids from vor_build stay reserved: not sites, never reused. */
+static void build_duplicates(void)
+{
+    static vor_t d;
+    static const vor_point_t points[6] = {{0, 0}, {10, 0}, {0, 0}, {0, 10}, {10, 10}, {10, 0}};
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    CHECK(vor_build(&d, points, 6, NULL, NULL) == VOR_OK, "build with duplicates");
+    save(&d);
+    CHECK(vor_remove(&d, 2) == VOR_ERR_ARG && vor_move(&d, 5, 1, 1, NULL) == VOR_ERR_ARG &&
+              unchanged(&d),
+          "a duplicate's id is no site");
+    uint32_t id = 0;
+    CHECK(vor_remove(&d, 1) == VOR_OK && vor_insert(&d, 3, 4, &id) == VOR_OK && id == 1,
+          "the freed id, not a duplicate's, comes back");
+    CHECK(vor_insert(&d, 4, 3, &id) == VOR_OK && id == 6, "then a new id");
+    CHECK(vor_validate(&d, NULL) == VOR_OK, "valid after reuse");
+}
+
+/* A tracker whose answer was removed or moved recovers: its answers stay
+ * those of a brute-force nearest site. */
+static uint32_t brute_nearest(const model_t *m, int32_t x, int32_t y)
+{
+    uint32_t best = VOR_NO_HINT;
+    int64_t best_distance = 0;
+    for (uint32_t i = 0; i < m->handed_out; i++) {
+        int64_t dx = (int64_t)m->at[i].x - x, dy = (int64_t)m->at[i].y - y;
+        int64_t distance = dx * dx + dy * dy;
+        if (m->live[i] && (best == VOR_NO_HINT || distance < best_distance)) {
+            best = i;
+            best_distance = distance;
+        }
+    }
+    return best;
+}
+
+static void trackers(void)
+{
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, 4242);
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    for (uint32_t i = 0; i < 30u; i++) {
+        do_insert(&d, &m, random_point(&rng, UNIFORM), "tracker", i);
+    }
+    vor_tracker_t robot;
+    vor_tracker_begin(&robot, &d);
+    int32_t x = 0, y = 0;
+    for (uint32_t step = 0; step < 60u; step++) {
+        uint32_t answer = VOR_NO_HINT;
+        x += test_rng_range(&rng, -40, 40);
+        y += test_rng_range(&rng, -40, 40);
+        CHECK(vor_track(&robot, x, y, &answer) == VOR_OK &&
+                  answer == brute_nearest(&m, x, y),
+              "tracker step %u: %u, brute force %u", step, answer, brute_nearest(&m, x, y));
+        if (step % 3u == 0u && live_count(&m) > 4u) {
+            do_remove(&d, &m, answer, "tracker", step); /* its answer goes */
+        } else if (step % 3u == 1u) {
+            vor_point_t p = random_point(&rng, UNIFORM);
+            do_move(&d, &m, answer, p, "tracker", step);
+        } else {
+            do_insert(&d, &m, random_point(&rng, UNIFORM), "tracker", step);
+        }
+    }
+}
+
+void test_dynamic(void)
+{
+    for (unsigned shape = UNIFORM; shape < SHAPES; shape++) {
+        for (uint64_t seed = 1; seed <= 2u; seed++) {
+            random_sequence((enum shape)shape, seed * 1000u + shape, 150);
+        }
+    }
+    down_to_nothing();
+    build_duplicates();
+    trackers();
+}
