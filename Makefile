@@ -17,6 +17,10 @@
 #   make pictures           README's pictures: docs/diagram.png, docs/raster.png
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
+#   make fuzz               the libFuzzer harnesses, FUZZ_SECONDS (600) each
+#                           (tests/fuzz/, docs/testing.md)
+#   make soak               10^7 random inserts, removes, moves and queries on
+#                           one diagram, checked against fresh builds
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
 # rsvg-convert) is installed on demand by tools/install-deps.sh, so these
@@ -256,3 +260,5 @@ clean:
 	rm -rf build
 
 include tests/fuzz/fuzz.mk
+
+include tests/soak/soak.mk

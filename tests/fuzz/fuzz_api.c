@@ -2,13 +2,14 @@
 /*
  * fuzz_api.c - libFuzzer harness: the fuzz bytes are a program of calls on
  * one small diagram (arenas that run out, both index widths: built with
- * -DVOR_INDEX_BITS=16 and 32). After every call vor_validate must pass;
- * every failing call must leave the vor_t and the arena byte-for-byte
- * unchanged; answers are checked against a model kept here (the sites by
- * id, each duplicate's first occurrence) and brute force with exact
- * wide-integer distances; on small sets the triangles are checked for
- * empty circumcircles, positive area and the count 2n - h - 2; cell
- * centroids against vor_cell and their box.
+ * -DVOR_INDEX_BITS=16 and 32): builds, inserts, removes, moves, queries,
+ * iterators. After every call vor_validate must pass; every failing call
+ * must leave the vor_t and the arena byte-for-byte unchanged; answers are
+ * checked against a model kept here (the sites by id, each duplicate's
+ * first occurrence, the freed ids) and brute force with exact wide-integer
+ * distances; on small sets the triangles are checked for empty
+ * circumcircles, positive area and the count 2n - h - 2; cell centroids
+ * against vor_cell and their box.
  */
 #include <string.h>
 
@@ -26,6 +27,9 @@ typedef struct {
     uint32_t count;                 /* ids handed out */
     vor_point_t point[MOST_SITES];  /* by id */
     uint32_t first[MOST_SITES];     /* the id of the first occurrence */
+    uint8_t removed[MOST_SITES];    /* freed by vor_remove */
+    uint32_t freed[MOST_SITES];     /* freed ids, the most recent last */
+    uint32_t freed_count;
     vor_tracker_t tracker;
 } model_t;
 
@@ -43,17 +47,26 @@ static int unchanged(const model_t *m)
            memcmp(arena_before, arena, sizeof arena) == 0;
 }
 
+static int is_site(const model_t *m, uint32_t id)
+{
+    return id < m->count && m->first[id] == id && !m->removed[id];
+}
+
+/* The site at p, or m->count. */
+static uint32_t site_at(const model_t *m, vor_point_t p)
+{
+    for (uint32_t i = 0; i < m->count; i++)
+        if (is_site(m, i) && m->point[i].x == p.x && m->point[i].y == p.y)
+            return i;
+    return m->count;
+}
+
 static uint32_t first_occurrence(const model_t *m, vor_point_t p, uint32_t before)
 {
     for (uint32_t i = 0; i < before; i++)
         if (m->point[i].x == p.x && m->point[i].y == p.y)
             return i;
     return before;
-}
-
-static int is_site(const model_t *m, uint32_t id)
-{
-    return id < m->count && m->first[id] == id;
 }
 
 static uint32_t distinct_sites(const model_t *m)
@@ -109,6 +122,8 @@ static void model_build(model_t *m, const vor_point_t *points, uint32_t n,
                         const uint32_t *duplicate_of)
 {
     m->count = 0;
+    m->freed_count = 0;
+    memset(m->removed, 0, sizeof m->removed);
     for (uint32_t i = 0; i < n; i++) {
         m->point[i] = points[i];
         m->first[i] = first_occurrence(m, points[i], i);
@@ -154,18 +169,20 @@ static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int n
     snapshot(m);
     int result = near ? vor_insert_near(&m->d, p.x, p.y, hint, &id)
                       : vor_insert(&m->d, p.x, p.y, &id);
-    uint32_t first = first_occurrence(m, p, m->count);
+    uint32_t first = site_at(m, p);
     if (near && !hint_valid(m, hint)) {
         FUZZ_REQUIRE(result == VOR_ERR_ARG, "insert_near: a bad hint was accepted");
     } else if (first < m->count) {
         FUZZ_REQUIRE(result == VOR_ERR_DUPLICATE && id == first, "insert: duplicate missed");
-    } else if (m->count == m->capacity) {
+    } else if (m->count == m->capacity && m->freed_count == 0) {
         FUZZ_REQUIRE(result == VOR_ERR_FULL, "insert: full diagram accepted a site");
     } else {
-        FUZZ_REQUIRE(result == VOR_OK && id == m->count, "insert failed or wrong id");
-        m->point[m->count] = p;
-        m->first[m->count] = m->count;
-        m->count++;
+        /* the most recently freed id first */
+        uint32_t expected = m->freed_count ? m->freed[--m->freed_count] : m->count++;
+        FUZZ_REQUIRE(result == VOR_OK && id == expected, "insert failed or wrong id");
+        m->point[id] = p;
+        m->first[id] = id;
+        m->removed[id] = 0;
         return;
     }
     FUZZ_REQUIRE(unchanged(m), "insert: failure changed the diagram");
@@ -293,6 +310,44 @@ static void op_cells(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     FUZZ_REQUIRE(inverted || cells == distinct_sites(m), "cells: not one cell per site");
 }
 
+/* vor_remove of a random id: a site, a duplicate's, a freed or unused one. */
+static void op_remove(fuzz_reader_t *r, model_t *m)
+{
+    uint32_t id = draw_hint(r, m);
+    snapshot(m);
+    int result = vor_remove(&m->d, id);
+    if (!is_site(m, id)) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "remove: a non-site accepted");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "remove failed");
+    m->removed[id] = 1;
+    m->freed[m->freed_count++] = id;
+}
+
+/* vor_move of a random id to a pattern point (often another site). */
+static void op_move(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
+{
+    uint32_t id = draw_hint(r, m);
+    vor_point_t p = fuzz_point(r, previous);
+    if (fuzz_u8(r) < 64 && m->count) /* onto a site (maybe itself) */
+        p = m->point[fuzz_u8(r) % m->count];
+    uint32_t existing = 0xdeadbeefu, other = site_at(m, p);
+    snapshot(m);
+    int result = vor_move(&m->d, id, p.x, p.y, &existing);
+    if (!is_site(m, id)) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "move: a non-site accepted");
+        return;
+    }
+    if (other < m->count && other != id) {
+        FUZZ_REQUIRE(result == VOR_ERR_DUPLICATE && existing == other && unchanged(m),
+                     "move onto another site: not its duplicate, or changed the diagram");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "move failed");
+    m->point[id] = p;
+}
+
 /* vor_cell_centroid of a random id and box, with scratch exactly as large
  * as documented or smaller: checked against vor_cell's count and the box. */
 static void op_centroid(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
@@ -330,7 +385,10 @@ static void op_centroid(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     FUZZ_REQUIRE(out.point.x >= box.x0 && out.point.x <= box.x1 && out.point.y >= box.y0 &&
                      out.point.y <= box.y1,
                  "centroid: the point outside the box");
-    FUZZ_REQUIRE((out.area == 0) == (count == 0), "centroid: area 0 without an empty cell");
+    /* a sliver cell's exact area may round to 0, never the other way */
+    uint64_t box_area = (uint64_t)((int64_t)box.x1 - box.x0) * (uint64_t)((int64_t)box.y1 - box.y0);
+    FUZZ_REQUIRE(count > 0 || out.area == 0, "centroid: an empty cell with area");
+    FUZZ_REQUIRE(out.area <= box_area, "centroid: more area than the box");
     if (count == 0) {
         vor_point_t s = m->point[site];
         FUZZ_REQUIRE(out.point.x == (s.x < box.x0 ? box.x0 : s.x > box.x1 ? box.x1 : s.x) &&
@@ -452,7 +510,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                  "init failed");
     FUZZ_REQUIRE(vor_tracker_begin(&m.tracker, &m.d) == VOR_OK, "tracker_begin failed");
     for (uint32_t ops = 0; ops < 64u && !fuzz_done(&r); ops++) {
-        switch (fuzz_u8(&r) % 11u) {
+        switch (fuzz_u8(&r) % 13u) {
         case 0: op_build(&r, &m, &previous, 0); break;
         case 1: op_build(&r, &m, &previous, 1); break;
         case 2: op_insert(&r, &m, &previous, 0); break;
@@ -463,6 +521,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 7: op_cells(&r, &m, &previous); break;
         case 8: op_triangles(&m); op_edges_neighbours(&r, &m); break;
         case 10: op_centroid(&r, &m, &previous); break;
+        case 11: op_remove(&r, &m); break;
+        case 12: op_move(&r, &m, &previous); break;
         default: op_bad_init(&r, &m); break;
         }
         check_valid(&m);
