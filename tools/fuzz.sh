@@ -11,7 +11,8 @@
 #                               N seconds; ends with "N passed, N failed"
 #
 # Each harness starts from tests/fuzz/corpus/<name>/ and regressions/<name>/
-# and grows its working corpus in build/fuzz/corpus/<harness>/. Per harness
+# and grows its working corpus in build/fuzz/corpus/<harness>/ (--brief:
+# build/fuzz/brief/corpus/<harness>/, logs and reproducers there too). Per harness
 # it prints executions, coverage (libFuzzer's edge counter "cov") and
 # findings; a finding fails the run and leaves its reproducer as
 # build/fuzz/<harness>-crash-* (or -timeout-, -oom-, -leak-): replay it
@@ -51,8 +52,11 @@ check() {
 for harness in $harnesses; do
     exe=build/fuzz/fuzz_$harness
     name=$(corpus_name "$harness")
-    work=build/fuzz/corpus/$harness
-    log=build/fuzz/$harness.log
+    # make test's brief runs keep apart from a long run going on meanwhile
+    out=build/fuzz
+    [ "$mode" = --brief ] && out=build/fuzz/brief
+    work=$out/corpus/$harness
+    log=$out/$harness.log
     mkdir -p "$work"
     if [ ! -x "$exe" ]; then
         check 1 "$harness: $exe is not built (make fuzz-harnesses)"
@@ -73,15 +77,15 @@ for harness in $harnesses; do
     fi
     # shellcheck disable=SC2046
     "$exe" $(options "$harness") -max_total_time="$seconds" -print_final_stats=1 \
-        -artifact_prefix="build/fuzz/$harness-" "$work" "tests/fuzz/corpus/$name" \
+        -artifact_prefix="$out/$harness-" "$work" "tests/fuzz/corpus/$name" \
         >"$log" 2>&1
     status=$?
-    executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
-    coverage=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -n 1)
-    findings=$(grep -c '^artifact_prefix=.*Test unit written to' "$log")
+    executions=$(grep -a -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
+    coverage=$(grep -a -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -n 1)
+    findings=$(grep -a -c '^artifact_prefix=.*Test unit written to' "$log")
     echo "$harness: ${executions:-?} executions in $seconds s, ${coverage:-no coverage line}, corpus $(find "$work" -type f | wc -l) inputs, $findings findings"
     if [ "$status" != 0 ] || [ "$findings" != 0 ]; then
-        grep -E 'fuzz finding|ERROR|SUMMARY|Test unit written' "$log" | head -n 10 | sed 's/^/    /'
+        grep -a -E 'fuzz finding|ERROR|SUMMARY|Test unit written' "$log" | head -n 10 | sed 's/^/    /'
     fi
     check $((status != 0 || findings != 0)) "$harness: a finding (log $log)"
 done
