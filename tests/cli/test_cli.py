@@ -664,6 +664,83 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
+def ops_cases(rng):
+    """vor ops against a Python model of the dynamic diagram: live sites by
+    id, a free id reused as the library documents (REUSED_ID), nearest by
+    exact distance with ties to the smaller id, and brute-force triangles
+    of sites in general position (full-range random coordinates)."""
+    def reused_id(free, fresh):
+        return (min(free), fresh) if free else (fresh, fresh + 1)
+
+    for trial in range(6):
+        live, free, fresh = {}, set(), 0
+        lines, expected = [], []
+        for step in range(60):
+            op = rng.choice("iiiirmmnt") if live else "i"
+            if op == "i":
+                if live and rng.random() < 0.15:
+                    x, y = live[rng.choice(sorted(live))]
+                else:
+                    x, y = rng.randint(MIN, MAX), rng.randint(MIN, MAX)
+                lines.append(f"i {x} {y}")
+                same = [k for k, p in live.items() if p == (x, y)]
+                if same:
+                    expected.append(f"d {same[0]}")
+                else:
+                    new, fresh = reused_id(free, fresh)
+                    free.discard(new)
+                    live[new] = (x, y)
+                    expected.append(str(new))
+            elif op == "r":
+                k = rng.choice(sorted(live))
+                lines.append(f"r {k}")
+                del live[k]
+                free.add(k)
+                expected.append("ok")
+            elif op == "m":
+                k = rng.choice(sorted(live))
+                if rng.random() < 0.2 and len(live) > 1:
+                    x, y = live[rng.choice([j for j in sorted(live) if j != k])]
+                else:
+                    x, y = rng.randint(MIN, MAX), rng.randint(MIN, MAX)
+                lines.append(f"m {k} {x} {y}")
+                same = [j for j, p in live.items() if p == (x, y) and j != k]
+                if same:
+                    expected.append(f"d {same[0]}")
+                else:
+                    live[k] = (x, y)
+                    expected.append("ok")
+            elif op == "n":
+                x, y = rng.randint(MIN, MAX), rng.randint(MIN, MAX)
+                lines.append(f"n {x} {y}")
+                expected.append(str(min(live, key=lambda j: ((live[j][0] - x) ** 2 + (live[j][1] - y) ** 2, j))))
+            else:
+                lines.append("t")
+                ids = sorted(live)
+                tris = brute_delaunay([live[j] for j in ids]) if len(ids) >= 3 else set()
+                mapped = sorted(tuple(ids[v] for v in t) for t in tris)
+                rotated = []
+                for t in mapped:
+                    m = t.index(min(t))
+                    rotated.append(t[m:] + t[:m])
+                expected.extend(f"t {a} {b} {c}" for a, b, c in sorted(rotated))
+                expected.append("end")
+        r = run(["ops", "-"], "\n".join(lines) + "\n")
+        check(r.returncode == 0, f"ops trial {trial}: status {r.returncode} {r.stderr.strip()}")
+        check(r.stdout.splitlines() == expected, f"ops trial {trial}: output differs from the model")
+    # errors: the line, the reason, nothing on stdout
+    for text, line, reason in (("i 0 0\nr 5\n", 2, "unknown site id"),
+                               ("i 0 0\nm 3 1 1\n", 2, "unknown site id"),
+                               ("i 0 0\ni 1 1\ni 2 2\n", 3, "full"),
+                               ("n 0 0\n", 1, "no sites"),
+                               ("i 0\n", 1, ""),
+                               ("x 1 2\n", 1, "expected")):
+        args = ["ops", "--capacity", "2", "-"] if reason == "full" else ["ops", "-"]
+        r = run(args, text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: line {line}: ")
+              and reason in r.stderr, f"ops bad input {text!r}: {r.returncode} {r.stderr!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -703,6 +780,7 @@ def main():
         raster_metric_cases(rng, tmp)
         contours_cases(rng, tmp)
     version_cases()
+    ops_cases(rng)
     r = run(["no-such-command"], "")
     check(r.returncode == 2 and "usage" in r.stderr, "unknown command: usage and status 2")
 

@@ -86,5 +86,6 @@ int cli_delaunay(int argc, char **argv);
 int cli_nearest(int argc, char **argv);
 int cli_raster(int argc, char **argv);
 int cli_cells(int argc, char **argv);
+int cli_ops(int argc, char **argv);
 
 #endif

@@ -7,6 +7,7 @@
  *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
  *   vor raster ... SITES      the discrete Voronoi diagram of a frame
  *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
+ *   vor ops [--capacity N] FILE   a dynamic diagram driven by a script
  *   vor --version             the library version the tool was built with
  */
 #include <stdio.h>
@@ -25,6 +26,7 @@ static const struct {
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
+    {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
 };
 
 int main(int argc, char **argv)
