@@ -666,14 +666,11 @@ def version_cases():
 
 def ops_cases(rng):
     """vor ops against a Python model of the dynamic diagram: live sites by
-    id, a free id reused as the library documents (REUSED_ID), nearest by
+    id, the most recently freed id reused first (as vor.h documents), nearest by
     exact distance with ties to the smaller id, and brute-force triangles
     of sites in general position (full-range random coordinates)."""
-    def reused_id(free, fresh):
-        return (min(free), fresh) if free else (fresh, fresh + 1)
-
     for trial in range(6):
-        live, free, fresh = {}, set(), 0
+        live, free, fresh = {}, [], 0  # free: the most recently freed id last
         lines, expected = [], []
         for step in range(60):
             op = rng.choice("iiiirmmnt") if live else "i"
@@ -687,15 +684,17 @@ def ops_cases(rng):
                 if same:
                     expected.append(f"d {same[0]}")
                 else:
-                    new, fresh = reused_id(free, fresh)
-                    free.discard(new)
+                    if free:
+                        new = free.pop()
+                    else:
+                        new, fresh = fresh, fresh + 1
                     live[new] = (x, y)
                     expected.append(str(new))
             elif op == "r":
                 k = rng.choice(sorted(live))
                 lines.append(f"r {k}")
                 del live[k]
-                free.add(k)
+                free.append(k)
                 expected.append("ok")
             elif op == "m":
                 k = rng.choice(sorted(live))
