@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * examples/coverage - multi-robot coverage control (Lloyd's algorithm) on
- * the microcontroller: 64 robots start in one corner of a 60 m x 40 m
+ * the microcontroller: 64 robots start in a 20 m x 20 m corner of a 60 m x 40 m
  * arena; every step each robot's Voronoi cell is clipped to the arena, its
  * exact centroid computed (vor_cell_centroid), and the robot moved there
  * (vor_move). The robots spread out until each sits at the centroid of
@@ -24,7 +24,7 @@
 #include "vor.h"
 
 #define ROBOTS 64u
-#define STEPS 30u
+#define STEPS 40u
 #define WIDTH 60000  /* mm */
 #define HEIGHT 40000 /* mm */
 #define COST_SPACING 1000  /* mm between the cost's sample points */
@@ -133,9 +133,9 @@ int main(void)
     vor_t d;
     int err = vor_init(&d, arena, sizeof arena, ROBOTS);
     for (uint32_t i = 0; i < ROBOTS && err == VOR_OK; i++) {
-        /* all in the 10 m x 10 m corner at the start */
-        robot[i].x = (int32_t)(example_random(&state) % 10000u);
-        robot[i].y = (int32_t)(example_random(&state) % 10000u);
+        /* all in the 20 m x 20 m corner at the start */
+        robot[i].x = (int32_t)(example_random(&state) % 20000u);
+        robot[i].y = (int32_t)(example_random(&state) % 20000u);
         uint32_t id;
         err = vor_insert(&d, robot[i].x, robot[i].y, &id);
         if (err == VOR_ERR_DUPLICATE) { /* draw again */
