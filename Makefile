@@ -14,6 +14,8 @@
 #   make bench-query        nearest-site queries: vor against nanoflann and CGAL,
 #                           and target instructions per coherent query
 #   make run-example-contours  contour interpolation (host): build/contours.png
+#   make coverage           Lloyd coverage control of 64 robots on the
+#                           emulated Cortex-M3: build/coverage.svg
 #   make pictures           README's pictures: docs/diagram.png, docs/raster.png
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
@@ -66,7 +68,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo pictures size bench-predicates bench-raster clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage pictures size bench-predicates bench-raster clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -224,6 +226,16 @@ demo: $(B)/vor
 	@echo "frame:     build/demo.png"
 	@$(B)/vor draw --cells build/demo.cells -o build/demo.svg
 	@echo "diagram:   build/demo.svg"
+
+# examples/coverage (Lloyd coverage control of 64 robots) on the emulated
+# Cortex-M3; its final cells go to build/coverage.cells, drawn into
+# build/coverage.svg.
+coverage: $(B)/vor
+	@tools/install-deps.sh toolchains
+	@mkdir -p build
+	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-coverage
+	@$(B)/vor draw --cells build/coverage.cells -o build/coverage.svg
+	@echo "picture: build/coverage.svg"
 
 # README's pictures of the sites in docs/pictures.sites: docs/diagram.png
 # (vor draw, rendered by rsvg-convert) and docs/raster.png (vor raster,

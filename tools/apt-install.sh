@@ -12,5 +12,10 @@ if [ "$(id -u)" -ne 0 ]; then
     echo "  sudo apt-get update && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y $*" >&2
     exit 1
 fi
-apt-get update
-DEBIAN_FRONTEND=noninteractive apt-get install -y "$@"
+# Two builds started at once (make -j, or two checkouts) may both install:
+# the second waits for the first's dpkg lock instead of failing.
+lock_wait="-o DPkg::Lock::Timeout=600"
+# shellcheck disable=SC2086  # lock_wait is two words on purpose
+apt-get $lock_wait update
+# shellcheck disable=SC2086
+DEBIAN_FRONTEND=noninteractive apt-get $lock_wait install -y "$@"

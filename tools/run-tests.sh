@@ -96,6 +96,17 @@ for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
     suite "$target-config" config-tests PORT="$target"
 done
 
+# examples/coverage on the emulated Cortex-M3: Lloyd coverage control with
+# vor_cell_centroid and vor_move, checked against brute-force samples.
+coverage_log="$logs/coverage.log"
+mkdir -p build
+if make -s -j"$jobs" PORT=cortex-m3 build/cortex-m3/example-coverage.elf >"$coverage_log" 2>&1; then
+    make -s PORT=cortex-m3 run-example-coverage >>"$coverage_log" 2>&1
+    record coverage "$coverage_log" $?
+else
+    record coverage "$coverage_log" 1
+fi
+
 # The harness itself: on every port a failing check and a trap must end
 # the run with a non-zero status, so that no broken target can pass.
 harness() {

@@ -24,4 +24,13 @@ uint32_t example_random(uint32_t *state);
 uint32_t example_brute_nearest(const vor_point_t *sites, uint32_t n, const uint32_t *first_of,
                                int32_t x, int32_t y);
 
+/* Writes path (a host file, through semihosting) as `vor draw --cells`
+ * reads it: "box X0 Y0 X1 Y1", one "s X Y" line per site of sites[0 .. n)
+ * (site i is the i-th), and one "c I M X1 Y1 ..." line per cell of the
+ * diagram clipped to box, as `vor cells` prints them. Returns the number
+ * of cells written, or -1 when a cell failed. Without a host file the
+ * cells are still computed and counted. */
+int32_t example_dump_cells(const char *path, const vor_t *diagram, const vor_point_t *sites,
+                           uint32_t n, const vor_box_t *box);
+
 #endif

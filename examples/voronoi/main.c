@@ -108,87 +108,6 @@ static int render_frame(void)
 
 /* ---- the diagram as text, streamed to the host for `vor draw --cells` */
 
-#define DUMP_VERTICES 64u /* far above any cell of random sites (about 6) */
-
-typedef struct text_file {
-    int handle;
-    uint32_t used;
-    char buffer[512]; /* semihosting calls are slow: one per buffer */
-} text_file_t;
-
-static vor_point_t cell_vertices[DUMP_VERTICES];
-static text_file_t dump;
-
-static void dump_flush(void)
-{
-    if (dump.handle >= 0 && dump.used > 0) {
-        (void)vor_port_file_write(dump.handle, dump.buffer, dump.used);
-    }
-    dump.used = 0;
-}
-
-static void dump_text(const char *text)
-{
-    for (; *text != '\0'; text++) {
-        if (dump.used == sizeof dump.buffer) {
-            dump_flush();
-        }
-        dump.buffer[dump.used++] = *text;
-    }
-}
-
-static void dump_int(int32_t value)
-{
-    char digits[13];
-    uint32_t n = sizeof digits, magnitude = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
-    digits[--n] = '\0';
-    do {
-        digits[--n] = (char)('0' + (int)(magnitude % 10u));
-        magnitude /= 10u;
-    } while (magnitude != 0u);
-    if (value < 0) {
-        digits[--n] = '-';
-    }
-    dump_text(" ");
-    dump_text(digits + n);
-}
-
-/* Writes build/demo.cells: "box X0 Y0 X1 Y1", one "s X Y" a site and
- * one "c I M X1 Y1 ..." a cell clipped to the floor, as `vor cells`
- * prints them (tools/cli/draw.c reads it). Returns the number of cells
- * written, or -1 when a cell failed. */
-static int32_t dump_diagram(const vor_t *diagram)
-{
-    const vor_box_t floor = {-50000, -50000, 50000, 50000};
-    dump.handle = vor_port_file_open("build/demo.cells");
-    dump.used = 0;
-    dump_text("box");
-    dump_int(floor.x0), dump_int(floor.y0), dump_int(floor.x1), dump_int(floor.y1);
-    for (uint32_t i = 0; i < SITES; i++) {
-        dump_text("\ns");
-        dump_int(sites[i].x), dump_int(sites[i].y);
-    }
-    vor_cell_iter_t cells;
-    vor_cells_begin(&cells, diagram, &floor);
-    uint32_t site, count;
-    int32_t written = 0;
-    int more;
-    while ((more = vor_cells_next(&cells, &site, cell_vertices, DUMP_VERTICES, &count)) == 1) {
-        dump_text("\nc");
-        dump_int((int32_t)site), dump_int((int32_t)count);
-        for (uint32_t k = 0; k < count; k++) {
-            dump_int(cell_vertices[k].x), dump_int(cell_vertices[k].y);
-        }
-        written++;
-    }
-    dump_text("\n");
-    dump_flush();
-    if (dump.handle >= 0) {
-        (void)vor_port_file_close(dump.handle);
-    }
-    return more == 0 ? written : -1;
-}
-
 int main(void)
 {
     vor_port_init();
@@ -263,12 +182,12 @@ int main(void)
     example_print("           all five checked against a brute-force search: ");
     example_print(wrong == 0 ? "agree\n" : "DISAGREE\n");
     int raster_status = render_frame();
-    int32_t cells = dump_diagram(&diagram);
+    const vor_box_t floor = {-50000, -50000, 50000, 50000};
+    int32_t cells = example_dump_cells("build/demo.cells", &diagram, sites, SITES, &floor);
     example_print("cells:     ");
     if (cells >= 0) {
         example_print_uint((uint64_t)cells);
-        example_print(dump.handle >= 0 ? " cells clipped to the floor, streamed to build/demo.cells\n"
-                                       : " cells clipped to the floor; no host file\n");
+        example_print(" cells clipped to the floor, streamed to build/demo.cells\n");
     } else {
         example_print("FAILED\n");
     }

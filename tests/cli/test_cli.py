@@ -847,7 +847,7 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
-COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw")
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops")
 
 
 def help_cases(tmp):
@@ -1131,6 +1131,81 @@ def input_cases(rng, tmp):
     check(r.returncode == 0 and open(os.path.join(tmp, "csv.raw"), "rb").read() == open(os.path.join(tmp, "plain.raw"), "rb").read(),
           f"raster --scale: {r.returncode} {r.stderr!r}")
 
+def ops_cases(rng):
+    """vor ops against a Python model of the dynamic diagram: live sites by
+    id, the most recently freed id reused first (as vor.h documents), nearest by
+    exact distance with ties to the smaller id, and brute-force triangles
+    of sites in general position (full-range random coordinates)."""
+    for trial in range(6):
+        live, free, fresh = {}, [], 0  # free: the most recently freed id last
+        lines, expected = [], []
+        for step in range(60):
+            op = rng.choice("iiiirmmnt") if live else "i"
+            if op == "i":
+                if live and rng.random() < 0.15:
+                    x, y = live[rng.choice(sorted(live))]
+                else:
+                    x, y = rng.randint(MIN, MAX), rng.randint(MIN, MAX)
+                lines.append(f"i {x} {y}")
+                same = [k for k, p in live.items() if p == (x, y)]
+                if same:
+                    expected.append(f"d {same[0]}")
+                else:
+                    if free:
+                        new = free.pop()
+                    else:
+                        new, fresh = fresh, fresh + 1
+                    live[new] = (x, y)
+                    expected.append(str(new))
+            elif op == "r":
+                k = rng.choice(sorted(live))
+                lines.append(f"r {k}")
+                del live[k]
+                free.append(k)
+                expected.append("ok")
+            elif op == "m":
+                k = rng.choice(sorted(live))
+                if rng.random() < 0.2 and len(live) > 1:
+                    x, y = live[rng.choice([j for j in sorted(live) if j != k])]
+                else:
+                    x, y = rng.randint(MIN, MAX), rng.randint(MIN, MAX)
+                lines.append(f"m {k} {x} {y}")
+                same = [j for j, p in live.items() if p == (x, y) and j != k]
+                if same:
+                    expected.append(f"d {same[0]}")
+                else:
+                    live[k] = (x, y)
+                    expected.append("ok")
+            elif op == "n":
+                x, y = rng.randint(MIN, MAX), rng.randint(MIN, MAX)
+                lines.append(f"n {x} {y}")
+                expected.append(str(min(live, key=lambda j: ((live[j][0] - x) ** 2 + (live[j][1] - y) ** 2, j))))
+            else:
+                lines.append("t")
+                ids = sorted(live)
+                tris = brute_delaunay([live[j] for j in ids]) if len(ids) >= 3 else set()
+                mapped = sorted(tuple(ids[v] for v in t) for t in tris)
+                rotated = []
+                for t in mapped:
+                    m = t.index(min(t))
+                    rotated.append(t[m:] + t[:m])
+                expected.extend(f"t {a} {b} {c}" for a, b, c in sorted(rotated))
+                expected.append("end")
+        r = run(["ops", "-"], "\n".join(lines) + "\n")
+        check(r.returncode == 0, f"ops trial {trial}: status {r.returncode} {r.stderr.strip()}")
+        check(r.stdout.splitlines() == expected, f"ops trial {trial}: output differs from the model")
+    # errors: the line, the reason, nothing on stdout
+    for text, line, reason in (("i 0 0\nr 5\n", 2, "unknown site id"),
+                               ("i 0 0\nm 3 1 1\n", 2, "unknown site id"),
+                               ("i 0 0\ni 1 1\ni 2 2\n", 3, "full"),
+                               ("n 0 0\n", 1, "no sites"),
+                               ("i 0\n", 1, ""),
+                               ("x 1 2\n", 1, "expected")):
+        args = ["ops", "--capacity", "2", "-"] if reason == "full" else ["ops", "-"]
+        r = run(args, text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: ")
+              and reason in r.stderr, f"ops bad input {text!r}: {r.returncode} {r.stderr!r}")
+
 
 def main():
     rng = random.Random(5)
@@ -1176,6 +1251,7 @@ def main():
         draw_cases(rng, tmp)
     version_cases()
     error_name_cases()
+    ops_cases(rng)
 
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1

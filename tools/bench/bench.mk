@@ -8,7 +8,10 @@
 #   make bench-query   nearest-site queries (coherent and random) against
 #                      nanoflann's kd-tree and CGAL's nearest_vertex, and
 #                      instructions per coherent query on Cortex-M3
-#                      (examples/robot_nearest under QEMU).
+#                      (examples/robot_nearest under QEMU);
+#   make bench-dynamic removing and moving sites against CGAL's remove and
+#                      move, and instructions per remove and move on
+#                      Cortex-M3 (bench/dynamic.c under QEMU).
 # Included by the top-level Makefile after the port's port.mk.
 #
 # CGAL, Boost and nanoflann are used by these host benchmarks only, never by
@@ -23,7 +26,7 @@ BENCH_CXXFLAGS ?= -std=c++17 -O2 -DNDEBUG -Wall -Wextra
 # CGAL 5 is header-only; Epick's exact fallback may pull in GMP and MPFR.
 BENCH_LDLIBS ?= -lgmp -lmpfr
 
-.PHONY: bench bench-query
+.PHONY: bench bench-query bench-dynamic
 
 bench:
 	@tools/install-deps.sh bench host python toolchains
@@ -32,6 +35,10 @@ bench:
 bench-query:
 	@tools/install-deps.sh bench-query host python toolchains
 	+@tools/bench/run.sh query
+
+bench-dynamic:
+	@tools/install-deps.sh bench host python toolchains
+	+@tools/bench/run.sh dynamic
 
 # A host program, build/bench/NAME-host from tools/bench/NAME.cpp, links the
 # host release library, so it is built with PORT=host (run.sh does that);

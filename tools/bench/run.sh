@@ -13,6 +13,12 @@
 #       targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
 #       and RISC-V 32 gives instructions per inserted site for 1,000 and
 #       10,000 sites (incremental in both orders, both D&C variants).
+#   run.sh dynamic [ARGS...]      `make bench-dynamic`: removal and moves.
+#       host: build/bench/dynamic-host (tools/bench/dynamic.cpp) times
+#       vor_remove and vor_move against CGAL's remove and move at 10^4,
+#       10^5 and 10^6 sites (removals, small moves, large moves);
+#       target: bench/dynamic.c under QEMU -icount on Cortex-M3 gives
+#       instructions per insertion, remove, small and large move.
 #   run.sh query [ARGS...]        `make bench-query`: nearest-site queries.
 #       host: build/bench/query-host (tools/bench/query.cpp) times vor,
 #       nanoflann and CGAL on coherent and random queries over 10^3 to 10^6
@@ -32,7 +38,7 @@ mkdir -p "$out"
 
 bench=delaunay
 case ${1:-} in
-delaunay | query)
+delaunay | query | dynamic)
     bench=$1
     shift
     ;;
@@ -44,6 +50,11 @@ case $bench in
 delaunay)
     target=bench-delaunay
     ports="cortex-m0 cortex-m3 riscv32"
+    target_ok='^bench valid ok'
+    ;;
+dynamic)
+    target=bench-dynamic
+    ports="cortex-m3"
     target_ok='^bench valid ok'
     ;;
 query)
@@ -131,6 +142,31 @@ query_targets() {
             verdict="met"
         fi
         echo "| $port | $count | ${hinted:--} | <= 150 | $verdict |"
+    done
+}
+
+dynamic_targets() {
+    echo "Targets, instructions per operation on 1,000 sites (bench/dynamic.c, QEMU -icount):"
+    echo
+    echo "| port | insert | remove | small move | large move | remove <= 2x insert | small move <= 400 |"
+    echo "|---|---|---|---|---|---|---|"
+    for port in $ports; do
+        python3 - "$out/dynamic-$port.txt" "$port" <<'PY' || status=1
+import sys
+cost = {}
+for line in open(sys.argv[1]):
+    f = line.split()
+    if len(f) == 5 and f[0] == "bench":
+        cost[f[1]] = float(f[3])
+need = ("insert", "remove", "small-move", "large-move")
+if not all(k in cost for k in need):
+    print(f"| {sys.argv[2]} | no figures |||||")
+    sys.exit(1)
+remove_ok = "met" if cost["remove"] <= 2 * cost["insert"] else "**not met**"
+move_ok = "met" if cost["small-move"] <= 400 else "**not met**"
+print(f"| {sys.argv[2]} | {cost['insert']:.1f} | {cost['remove']:.1f} | {cost['small-move']:.1f} | "
+      f"{cost['large-move']:.1f} | {remove_ok} ({cost['remove'] / cost['insert']:.2f}x) | {move_ok} |")
+PY
     done
 }
 

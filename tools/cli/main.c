@@ -7,6 +7,7 @@
  *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
  *   vor raster ... SITES      the discrete Voronoi diagram of a frame
  *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
+ *   vor ops [--capacity N] FILE   a dynamic diagram driven by a script
  *   vor --version             the library version the tool was built with
  *   vor --help, vor help [COMMAND], vor COMMAND --help   help on stdout
  */
@@ -27,6 +28,7 @@ static const struct {
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
     {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
+    {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
 };
 
 /* The help of each command (cli.h); a command without one shows its
@@ -41,6 +43,7 @@ static const struct {
     {"raster", cli_raster_help},
     {"cells", cli_cells_help},
     {"draw", cli_draw_help},
+    {"ops", cli_ops_help},
 };
 
 static void print_usage(FILE *out)
