@@ -561,3 +561,42 @@ double cli_seconds(void)
     clock_gettime(CLOCK_MONOTONIC, &t);
     return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
 }
+
+static int compare_triangles(const void *a, const void *b)
+{
+    const uint32_t *x = a, *y = b;
+    for (int i = 0; i < 3; i++) {
+        if (x[i] != y[i]) {
+            return (x[i] < y[i]) ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+size_t cli_append_triangles(const vor_t *d, cli_output_t *out)
+{
+    vor_memory_t memory;
+    vor_memory(d, &memory);
+    uint32_t (*triangles)[3] = malloc(((size_t)memory.triangles + 1u) * sizeof *triangles);
+    if (triangles == NULL) {
+        cli_error("out of memory");
+    }
+    size_t count = 0;
+    vor_triangle_iter_t it;
+    uint32_t ids[3];
+    vor_triangles_begin(&it, d);
+    while (vor_triangles_next(&it, ids)) {
+        unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
+        first = (ids[2] < ids[first]) ? 2u : first;
+        for (unsigned k = 0; k < 3u; k++) {
+            triangles[count][k] = ids[(first + k) % 3u];
+        }
+        count++;
+    }
+    qsort(triangles, count, sizeof *triangles, compare_triangles);
+    for (size_t t = 0; t < count; t++) {
+        cli_append(out, "t %u %u %u\n", triangles[t][0], triangles[t][1], triangles[t][2]);
+    }
+    free(triangles);
+    return count;
+}

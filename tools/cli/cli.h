@@ -109,6 +109,11 @@ void cli_append(cli_output_t *out, const char *format, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* Appends "t i j k" for every triangle of d's true Delaunay triangulation
+ * (the triangle iterator), counterclockwise from its smallest id, lines
+ * sorted; returns how many. */
+size_t cli_append_triangles(const vor_t *d, cli_output_t *out);
+
 /* Writes everything to stdout and frees the buffer. */
 void cli_flush(cli_output_t *out);
 

@@ -39,17 +39,6 @@ const char cli_delaunay_help[] =
     "  t 0 3 2\n"
     "  d 4 1\n";
 
-static int compare_triangles(const void *a, const void *b)
-{
-    const uint32_t *x = a, *y = b;
-    for (int i = 0; i < 3; i++) {
-        if (x[i] != y[i]) {
-            return (x[i] < y[i]) ? -1 : 1;
-        }
-    }
-    return 0;
-}
-
 int cli_delaunay(int argc, char **argv)
 {
     bool stats = false;
@@ -104,30 +93,8 @@ int cli_delaunay(int argc, char **argv)
     }
     double seconds = cli_seconds() - start;
 
-    /* triangles, rotated to their smallest id and sorted */
-    vor_memory_t memory;
-    vor_memory(&d, &memory);
-    uint32_t (*triangles)[3] = malloc(((size_t)memory.triangles + 1u) * sizeof *triangles);
-    if (triangles == NULL) {
-        cli_error("out of memory");
-    }
-    size_t count = 0;
-    vor_triangle_iter_t it;
-    uint32_t ids[3];
-    vor_triangles_begin(&it, &d);
-    while (vor_triangles_next(&it, ids)) {
-        unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
-        first = (ids[2] < ids[first]) ? 2u : first;
-        for (unsigned k = 0; k < 3u; k++) {
-            triangles[count][k] = ids[(first + k) % 3u];
-        }
-        count++;
-    }
-    qsort(triangles, count, sizeof *triangles, compare_triangles);
     cli_output_t out = {NULL, 0, 0};
-    for (size_t t = 0; t < count; t++) {
-        cli_append(&out, "t %u %u %u\n", triangles[t][0], triangles[t][1], triangles[t][2]);
-    }
+    size_t count = cli_append_triangles(&d, &out);
     for (uint32_t i = 0; i < n; i++) {
         if (duplicate_of[i] != i) {
             cli_append(&out, "d %u %u\n", i, duplicate_of[i]);
@@ -135,6 +102,8 @@ int cli_delaunay(int argc, char **argv)
     }
     cli_flush(&out);
     if (stats) {
+        vor_memory_t memory;
+        vor_memory(&d, &memory);
         const vor_predicate_stats_t *s = &d.stats;
         fprintf(stderr, "sites=%u triangles=%zu bytes=%zu bytes_per_site=%u.%02u seconds=%.6f\n",
                 n, count, memory.used_bytes, memory.bytes_per_site_x100 / 100u,
@@ -147,7 +116,6 @@ int cli_delaunay(int argc, char **argv)
                 s->incircle[VOR_TIER_WIDE], s->incircle_perturbed, s->closer[VOR_TIER_NARROW],
                 s->closer[VOR_TIER_WIDE], s->closer_perturbed);
     }
-    free(triangles);
     free(duplicate_of);
     free(arena);
     free(sites);

@@ -63,17 +63,6 @@ typedef struct {
     unsigned long line_number;
 } op_line_t;
 
-static int compare_triangles(const void *a, const void *b)
-{
-    const uint32_t *s = a, *t = b;
-    for (unsigned k = 0; k < 3u; k++) {
-        if (s[k] != t[k]) {
-            return s[k] < t[k] ? -1 : 1;
-        }
-    }
-    return 0;
-}
-
 /* The rest of the line after the operation letter: n int32 fields, then
  * nothing. */
 static void fields(const cli_input_t *in, const char *cursor, int32_t *values, unsigned n)
@@ -87,34 +76,6 @@ static void fields(const cli_input_t *in, const char *cursor, int32_t *values, u
     if (!cli_at_end(cursor)) {
         cli_line_error(in, "too many fields");
     }
-}
-
-static void print_triangles(const vor_t *d, cli_output_t *out)
-{
-    vor_memory_t memory;
-    vor_memory(d, &memory);
-    uint32_t (*triangles)[3] = malloc(((size_t)memory.triangles + 1u) * sizeof *triangles);
-    if (triangles == NULL) {
-        cli_error("out of memory");
-    }
-    size_t count = 0;
-    vor_triangle_iter_t it;
-    uint32_t ids[3];
-    vor_triangles_begin(&it, d);
-    while (vor_triangles_next(&it, ids)) {
-        unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
-        first = (ids[2] < ids[first]) ? 2u : first;
-        for (unsigned k = 0; k < 3u; k++) {
-            triangles[count][k] = ids[(first + k) % 3u];
-        }
-        count++;
-    }
-    qsort(triangles, count, sizeof *triangles, compare_triangles);
-    for (size_t t = 0; t < count; t++) {
-        cli_append(out, "t %u %u %u\n", triangles[t][0], triangles[t][1], triangles[t][2]);
-    }
-    cli_append(out, "end\n");
-    free(triangles);
 }
 
 int cli_ops(int argc, char **argv)
@@ -222,7 +183,8 @@ int cli_ops(int argc, char **argv)
             if (!cli_at_end(cursor)) {
                 cli_line_error(&in, "too many fields");
             }
-            print_triangles(&d, &out);
+            (void)cli_append_triangles(&d, &out);
+            cli_append(&out, "end\n");
             break;
         default:
             cli_line_error(&in, "expected 'i', 'r', 'm', 'n' or 't'");
