@@ -441,12 +441,9 @@ int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t 
                 euclid_distances(frame, sites->points, j, runs, count, vor__bands_pixels(&bands));
             }
         }
-        uint32_t flush_rows = vor__bands_put(&bands, count);
-        if (flush_rows != 0u) {
-            status = out->flush(out->user, bands.flush_first, flush_rows, out->band);
-            if (status != 0) {
-                return status;
-            }
+        status = vor__bands_put_flush(&bands, count);
+        if (status != 0) {
+            return status;
         }
     }
     return VOR_OK;

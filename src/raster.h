@@ -46,11 +46,9 @@ size_t vor__raster_rows(const vor_raster_frame_t *frame, void *work, vor__run_t 
 
 /* The band writer (raster.c). An entry point produces the rows top down
  * into vor__bands_runs (and, for DISTANCE, writes their pixels at
- * vor__bands_pixels itself), hands each to vor__bands_put, then calls
- * vor__bands_put once more with no row (the end). Whenever put returns
- * a row count, the entry point calls the output's flush with
- * flush_first and that count: the flush is the caller's code, called
- * from the public function. BOUNDARY rows are written one row late, when
+ * vor__bands_pixels itself) and hands each to vor__bands_put_flush,
+ * then calls it once more with no row (the end); each full band goes to
+ * the output's flush. BOUNDARY rows are written one row late, when
  * the row below is known. */
 typedef struct vor__bands {
     const vor_raster_output_t *out;
@@ -81,6 +79,19 @@ void *vor__bands_pixels(const vor__bands_t *b);
 /* Takes the next row (count runs; the end when all rows were put).
  * Returns the rows of a band to flush now, or 0. */
 uint32_t vor__bands_put(vor__bands_t *b, uint32_t count);
+
+/* vor__bands_put, then the output's flush when a band is full: 0 to go
+ * on, or the flush's nonzero value. Forced inline, so that the caller's
+ * callback is called from the public entry point (tools/stack-depth.py
+ * counts its stack apart only there). */
+VOR__ALWAYS_INLINE int vor__bands_put_flush(vor__bands_t *b, uint32_t count)
+{
+    uint32_t rows = vor__bands_put(b, count);
+    if (rows == 0u) {
+        return 0;
+    }
+    return b->out->flush(b->out->user, b->flush_first, rows, b->out->band);
+}
 
 /* The fast Euclidean producer (raster_euclid.c): its state lives in the
  * caller's work memory (n entries per array). */
