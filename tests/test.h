@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "port.h"
+#include "vor.h"
 
 /* printf subset: %d %i %u %x %c %s %%, with l / ll / z length modifiers
  * and an optional width ("%8u", "%08x"). */
@@ -42,6 +43,21 @@ uint32_t test_rng_u32(test_rng_t *rng);
 int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);
 
 /* The groups of tests, one per part of the library. */
+/* An order-independent fingerprint of a set of triangles (fingerprint.c):
+ * count plus two sums of mixed hashes of the triangles rotated to start at
+ * their smallest id. Equal sets give equal fingerprints; a difference is
+ * missed with probability about 2^-64. */
+typedef struct {
+    uint32_t count;
+    uint64_t sum1, sum2;
+} test_fingerprint_t;
+
+void test_fingerprint_add(test_fingerprint_t *f, const uint32_t ids[3]);
+/* The triangles the iterator reports for d, ids mapped through map (NULL:
+ * as they are). */
+test_fingerprint_t test_fingerprint_of(const vor_t *d, const uint32_t *map);
+bool test_same_fingerprint(test_fingerprint_t a, test_fingerprint_t b);
+
 void test_predicates(void);
 void test_mesh(void);
 void test_queries(void);

@@ -46,55 +46,6 @@ static uint32_t site_at(const model_t *m, int32_t x, int32_t y)
     return VOR_NO_HINT;
 }
 
-/* ------------------------------------------------------------------ */
-/* Triangle sets                                                       */
-
-typedef struct {
-    uint32_t count;
-    uint64_t sum1, sum2;
-} fingerprint_t;
-
-static uint64_t mix(uint64_t x)
-{
-    x ^= x >> 29;
-    x *= 0xBF58476D1CE4E5B9ull;
-    x ^= x >> 32;
-    x *= 0x94D049BB133111EBull;
-    x ^= x >> 29;
-    return x;
-}
-
-/* Order-independent: the sum of hashes of each triangle rotated to start
- * at its smallest id. */
-static void add_triangle(fingerprint_t *f, const uint32_t ids[3])
-{
-    unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
-    first = (ids[2] < ids[first]) ? 2u : first;
-    uint64_t key = ((uint64_t)ids[first] << 42) ^ ((uint64_t)ids[(first + 1u) % 3u] << 21) ^
-                   ids[(first + 2u) % 3u];
-    f->count++;
-    f->sum1 += mix(key);
-    f->sum2 += mix(key ^ 0x5851F42D4C957F2Dull);
-}
-
-/* The triangles of d, ids mapped through map (NULL: as they are). */
-static fingerprint_t triangles_of(const vor_t *d, const uint32_t *map)
-{
-    fingerprint_t f = {0, 0, 0};
-    vor_triangle_iter_t it;
-    uint32_t ids[3];
-    vor_triangles_begin(&it, d);
-    while (vor_triangles_next(&it, ids)) {
-        if (map != NULL) {
-            ids[0] = map[ids[0]];
-            ids[1] = map[ids[1]];
-            ids[2] = map[ids[2]];
-        }
-        add_triangle(&f, ids);
-    }
-    return f;
-}
-
 /* Every operation's aftermath: valid, and the fresh build's triangles. */
 static bool check_state(const vor_t *d, const model_t *m, const char *what, uint32_t step)
 {
@@ -117,7 +68,7 @@ static bool check_state(const vor_t *d, const model_t *m, const char *what, uint
     vor_init(&fresh, fresh_arena, sizeof fresh_arena, DYN_SITES);
     CHECK(vor_build(&fresh, points, n, NULL, NULL) == VOR_OK, "%s step %u: fresh build", what,
           step);
-    fingerprint_t got = triangles_of(d, NULL), want = triangles_of(&fresh, id_of);
+    test_fingerprint_t got = test_fingerprint_of(d, NULL), want = test_fingerprint_of(&fresh, id_of);
     ok = CHECK(got.count == want.count && got.sum1 == want.sum1 && got.sum2 == want.sum2,
                "%s step %u: %u triangles, the fresh build has %u (or others)", what, step,
                got.count, want.count) && ok;

@@ -23,61 +23,12 @@ static uint8_t snapshot[VOR_ARENA_BYTES(64)] __attribute__((aligned(8)));
 /* ------------------------------------------------------------------ */
 /* Triangle sets                                                       */
 
-/* An order-independent fingerprint of a set of triangles: count plus two
- * sums of mixed hashes of the triangles rotated to start at their
- * smallest id. Equal sets give equal fingerprints; a difference is missed
- * with probability about 2^-64. */
-typedef struct {
-    uint32_t count;
-    uint64_t sum1, sum2;
-} fingerprint_t;
-
-static uint64_t mix(uint64_t x)
-{
-    x ^= x >> 31;
-    x *= 0x7FB5D329728EA185ull;
-    x ^= x >> 27;
-    x *= 0x81DADEF4BC2DD44Dull;
-    x ^= x >> 33;
-    return x;
-}
-
-static void add_triangle(fingerprint_t *f, const uint32_t ids[3])
-{
-    unsigned first = 0;
-    for (unsigned i = 1; i < 3; i++) {
-        first = (ids[i] < ids[first]) ? i : first;
-    }
-    uint64_t a = ids[first], b = ids[(first + 1) % 3], c = ids[(first + 2) % 3];
-    uint64_t key = (a << 42) ^ (b << 21) ^ c;
-    f->count++;
-    f->sum1 += mix(key);
-    f->sum2 += mix(key ^ 0x9E3779B97F4A7C15ull);
-}
-
-static fingerprint_t mesh_fingerprint(const vor_t *d)
-{
-    fingerprint_t f = {0, 0, 0};
-    vor_triangle_iter_t it;
-    uint32_t ids[3];
-    vor_triangles_begin(&it, d);
-    while (vor_triangles_next(&it, ids)) {
-        add_triangle(&f, ids);
-    }
-    return f;
-}
-
-static bool same_fingerprint(fingerprint_t a, fingerprint_t b)
-{
-    return a.count == b.count && a.sum1 == b.sum1 && a.sum2 == b.sum2;
-}
-
 /* Brute force: (i, j, k) of nonzero area, counterclockwise, with no site
  * inside its perturbed circle. */
-static fingerprint_t brute_force(const vor_point_t *sites, uint32_t n,
+static test_fingerprint_t brute_force(const vor_point_t *sites, uint32_t n,
                                  const uint32_t *dup)
 {
-    fingerprint_t f = {0, 0, 0};
+    test_fingerprint_t f = {0, 0, 0};
     for (uint32_t i = 0; i < n; i++) {
         for (uint32_t j = i + 1; j < n; j++) {
             for (uint32_t k = j + 1; k < n; k++) {
@@ -97,7 +48,7 @@ static fingerprint_t brute_force(const vor_point_t *sites, uint32_t n,
                     }
                 }
                 if (empty) {
-                    add_triangle(&f, ids);
+                    test_fingerprint_add(&f, ids);
                 }
             }
         }
@@ -266,7 +217,7 @@ static void check_tiny(void)
     for (uint32_t n = 0; n <= 3u; n++) {
         CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(3), 3) == VOR_OK, "init 3");
         CHECK(vor_build(&d, three, n, NULL, duplicate_of) == VOR_OK, "build %u sites", n);
-        fingerprint_t f = mesh_fingerprint(&d);
+        test_fingerprint_t f = test_fingerprint_of(&d, NULL);
         CHECK(f.count == (n == 3u ? 1u : 0u), "%u sites: %u triangles", n, f.count);
         validate_ok(&d, "tiny build");
         vor_memory_t m;
@@ -284,7 +235,7 @@ static void check_tiny(void)
     CHECK(vor_insert(&d, 5, 5, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of two");
     CHECK(vor_insert(&d, 7, 5, &id) == VOR_OK && id == 2, "third site, collinear");
     validate_ok(&d, "three collinear sites");
-    CHECK(mesh_fingerprint(&d).count == 0u, "three collinear sites: no triangle");
+    CHECK(test_fingerprint_of(&d, NULL).count == 0u, "three collinear sites: no triangle");
     CHECK(vor_insert(&d, 8, 5, &id) == VOR_ERR_FULL, "full");
 }
 
@@ -317,10 +268,10 @@ static void check_brute_force(void)
             }
             valid &= validate_ok(&d, "brute-force round");
         }
-        fingerprint_t expect = brute_force(sites, inserted, dup);
-        CHECK(valid && same_fingerprint(mesh_fingerprint(&d), expect),
+        test_fingerprint_t expect = brute_force(sites, inserted, dup);
+        CHECK(valid && test_same_fingerprint(test_fingerprint_of(&d, NULL), expect),
               "round %u (%u sites, range %d): %u triangles, brute force %u", round, inserted,
-              range, mesh_fingerprint(&d).count, expect.count);
+              range, test_fingerprint_of(&d, NULL).count, expect.count);
     }
 }
 
@@ -349,15 +300,15 @@ static void check_families(void)
             }
             CHECK(dup_ok && a.vertex_count == distinct, "%s: duplicates reported wrongly",
                   family_names[f]);
-            fingerprint_t quadtree = mesh_fingerprint(&a);
+            test_fingerprint_t quadtree = test_fingerprint_of(&a, NULL);
             /* unique sites: the triangulation has 2v - 2 - h triangles */
             CHECK(quadtree.count + 2u <= 2u * distinct || distinct < 3u,
                   "%s: %u triangles for %u sites", family_names[f], quadtree.count, distinct);
 
             vor_build_options_t input = {VOR_ORDER_INPUT};
             CHECK(vor_build(&b, points, n, &input, NULL) == VOR_OK, "build in input order");
-            fingerprint_t in_input_order = mesh_fingerprint(&b);
-            ok &= validate_ok(&b, "input order") && same_fingerprint(in_input_order, quadtree);
+            test_fingerprint_t in_input_order = test_fingerprint_of(&b, NULL);
+            ok &= validate_ok(&b, "input order") && test_same_fingerprint(in_input_order, quadtree);
 
             /* divide and conquer, both splits: the same triangles, the
              * same duplicates */
@@ -370,16 +321,16 @@ static void check_families(void)
                 for (uint32_t i = 0; i < n; i++) {
                     same_dups &= dc_duplicate_of[i] == duplicate_of[i];
                 }
-                fingerprint_t dcf = mesh_fingerprint(&b);
+                test_fingerprint_t dcf = test_fingerprint_of(&b, NULL);
                 CHECK(validate_ok(&b, split == VOR_DC_XSPLIT ? "d&c" : "d&c quadtree") &&
-                          same_dups && same_fingerprint(dcf, quadtree),
+                          same_dups && test_same_fingerprint(dcf, quadtree),
                       "%s, %u sites: d&c split %u differs (%u / %u triangles)",
                       family_names[f], n, split, dcf.count, quadtree.count);
             }
 
             /* one by one, skipping duplicates: ids shift, so map them back */
             CHECK(vor_init(&c, arena_b, sizeof arena_b, BIG_SITES) == VOR_OK, "init");
-            fingerprint_t one_by_one = {0, 0, 0};
+            test_fingerprint_t one_by_one = {0, 0, 0};
             if (s < 2u) { /* the big sets are covered by the two builds */
                 static uint32_t id_to_point[BIG_SITES];
                 for (uint32_t i = 0; i < n; i++) {
@@ -396,10 +347,10 @@ static void check_families(void)
                 while (vor_triangles_next(&it, ids)) {
                     uint32_t mapped[3] = {id_to_point[ids[0]], id_to_point[ids[1]],
                                           id_to_point[ids[2]]};
-                    add_triangle(&one_by_one, mapped);
+                    test_fingerprint_add(&one_by_one, mapped);
                 }
                 /* ids keep their order, so the perturbation is the same */
-                ok &= same_fingerprint(one_by_one, quadtree);
+                ok &= test_same_fingerprint(one_by_one, quadtree);
             }
             CHECK(ok, "%s, %u sites: builds disagree (%u / %u / %u triangles)",
                   family_names[f], n, quadtree.count, in_input_order.count, one_by_one.count);
