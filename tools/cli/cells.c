@@ -85,18 +85,14 @@ int cli_cells(int argc, char **argv)
     uint32_t n;
     vor_point_t *sites = cli_read_sites(path, &n);
     uint32_t capacity = (n < 1u) ? 1u : n;
-    void *arena = malloc(VOR_ARENA_BYTES(capacity));
     uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
     vor_point_t *vertices = malloc((size_t)VOR_CELL_MAX_VERTICES(capacity) * sizeof *vertices);
-    if (arena == NULL || duplicate_of == NULL || vertices == NULL) {
+    if (duplicate_of == NULL || vertices == NULL) {
         cli_error("out of memory");
     }
     vor_t d;
-    int err = vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity);
-    if (err != VOR_OK) {
-        cli_library_error("vor_init", err);
-    }
-    err = vor_build(&d, sites, n, NULL, duplicate_of);
+    void *arena = cli_diagram(&d, capacity);
+    int err = vor_build(&d, sites, n, NULL, duplicate_of);
     if (err != VOR_OK) {
         cli_library_error("vor_build", err);
     }

@@ -600,3 +600,17 @@ size_t cli_append_triangles(const vor_t *d, cli_output_t *out)
     free(triangles);
     return count;
 }
+
+void *cli_diagram(vor_t *d, uint32_t max_sites)
+{
+    uint32_t capacity = (max_sites < 1u) ? 1u : max_sites;
+    void *arena = malloc(VOR_ARENA_BYTES(capacity));
+    if (arena == NULL) {
+        cli_error("out of memory");
+    }
+    int err = vor_init(d, arena, VOR_ARENA_BYTES(capacity), capacity);
+    if (err != VOR_OK) {
+        cli_library_error("vor_init", err);
+    }
+    return arena;
+}

@@ -109,6 +109,10 @@ void cli_append(cli_output_t *out, const char *format, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* Sets d up for max_sites sites (at least 1) in a malloc'd arena, which
+ * it returns for the caller to free; exits with status 2 on failure. */
+void *cli_diagram(vor_t *d, uint32_t max_sites);
+
 /* Appends "t i j k" for every triangle of d's true Delaunay triangulation
  * (the triangle iterator), counterclockwise from its smallest id, lines
  * sorted; returns how many. */

@@ -75,16 +75,12 @@ int cli_delaunay(int argc, char **argv)
     uint32_t n;
     vor_point_t *sites = cli_read_sites(path, &n);
     uint32_t capacity = (n < 1u) ? 1u : n;
-    void *arena = malloc(VOR_ARENA_BYTES(capacity));
     uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
-    if (arena == NULL || duplicate_of == NULL) {
+    if (duplicate_of == NULL) {
         cli_error("out of memory");
     }
     vor_t d;
-    int err = vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity);
-    if (err != VOR_OK) {
-        cli_library_error("vor_init", err);
-    }
+    void *arena = cli_diagram(&d, capacity);
     double start = cli_seconds();
     int built = dc ? vor_build_dc(&d, sites, n, split, duplicate_of)
                    : vor_build(&d, sites, n, &options, duplicate_of);

@@ -237,16 +237,16 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
                          bool triangles, bool ids, bool hull)
 {
     uint32_t capacity = n;
-    void *arena = malloc(VOR_ARENA_BYTES(capacity));
     uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
     vor_point_t *vertices = malloc((size_t)VOR_CELL_MAX_VERTICES(capacity) * sizeof *vertices);
-    if (arena == NULL || duplicate_of == NULL || vertices == NULL) {
+    if (duplicate_of == NULL || vertices == NULL) {
         cli_error("out of memory");
     }
     vor_t d;
-    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK ||
-        vor_build(&d, sites, n, NULL, duplicate_of) != VOR_OK) {
-        cli_error("cannot build the diagram");
+    void *arena = cli_diagram(&d, capacity);
+    int err = vor_build(&d, sites, n, NULL, duplicate_of);
+    if (err != VOR_OK) {
+        cli_library_error("vor_build", err);
     }
     begin_svg(g, width, height);
     vor_cell_iter_t cells;

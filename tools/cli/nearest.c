@@ -75,16 +75,9 @@ int cli_nearest(int argc, char **argv)
         exit(2);
     }
     uint32_t capacity = (n < 1u) ? 1u : n;
-    void *arena = malloc(VOR_ARENA_BYTES(capacity));
-    if (arena == NULL) {
-        cli_error("out of memory");
-    }
     vor_t d;
-    int err = vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity);
-    if (err != VOR_OK) {
-        cli_library_error("vor_init", err);
-    }
-    err = vor_build(&d, sites, n, NULL, NULL);
+    void *arena = cli_diagram(&d, capacity);
+    int err = vor_build(&d, sites, n, NULL, NULL);
     if (err != VOR_OK) {
         cli_library_error("vor_build", err);
     }

@@ -120,14 +120,8 @@ int cli_ops(int argc, char **argv)
     if (capacity == 0u) {
         capacity = count == 0u ? 1u : (count > VOR_MAX_SITES ? VOR_MAX_SITES : (uint32_t)count);
     }
-    void *arena = malloc(VOR_ARENA_BYTES(capacity));
-    if (arena == NULL) {
-        cli_error("out of memory");
-    }
     vor_t d;
-    if (vor_init(&d, arena, VOR_ARENA_BYTES(capacity), capacity) != VOR_OK) {
-        cli_error("cannot set up the diagram");
-    }
+    void *arena = cli_diagram(&d, capacity);
     cli_output_t out = {NULL, 0, 0};
     for (size_t k = 0; k < count; k++) {
         in.line_number = lines[k].line_number; /* for cli_line_error */
