@@ -18,7 +18,9 @@
  * one 32x32->64 multiply, no division (Cortex-M0 has no divider). The
  * rebuild picks the largest scale whose grid fits, by bisection.
  */
+#include "bucket_grid.h"
 #include "mesh.h"
+#include "multiword.h"
 
 /* The bucket column (or row) of an offset from the origin. */
 static uint32_t line_of(uint32_t offset, uint32_t scale)

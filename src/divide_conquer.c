@@ -68,7 +68,11 @@
  * fill the slots from below (see vor_build_dc); the recursion is an
  * explicit stack of O(log n) frames.
  */
+#include "bucket_grid.h"
+#include "insertion_order.h"
 #include "mesh.h"
+#include "multiword.h"
+#include "perturbation.h"
 
 /* ------------------------------------------------------------------ */
 /* Orders                                                              */

@@ -26,7 +26,9 @@
  * freed must be a packed one, and the last packed triangle moves into it,
  * so the layout stays what vor_init set up (mesh.h).
  */
+#include "bucket_grid.h"
 #include "mesh.h"
+#include "perturbation.h"
 
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 {

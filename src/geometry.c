@@ -30,7 +30,11 @@
  * therefore fits in 160-bit two's complement (GEO_LIMBS), and each
  * decision is the exact sign of a 3x3 determinant of line coefficients.
  */
+#include "bucket_grid.h"
 #include "mesh.h"
+#include "multiword.h"
+#include "perturbation.h"
+#include "predicates.h"
 
 #define GEO_LIMBS VOR__LIMBS(160)
 #define U64_LIMBS VOR__LIMBS(64)

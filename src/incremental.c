@@ -28,7 +28,11 @@
  * the split and each flip choose which new triangle goes to which of the
  * slots they reuse so that this stays true.
  */
+#include "bucket_grid.h"
+#include "incremental.h"
+#include "insertion_order.h"
 #include "mesh.h"
+#include "perturbation.h"
 
 /* Is slot a home slot of site v (v may be infinity, which has none)? */
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
@@ -106,7 +110,10 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
     return slot;
 }
 
-uint32_t vor__nearest_site(vor_t *d, uint32_t from, uint32_t p)
+/* The site nearest to point p (not in the mesh) under the perturbation,
+ * by a greedy walk over Delaunay neighbours from site `from` (the
+ * starting-point search of Ohya, Iri and Murota). */
+static uint32_t nearest_site(vor_t *d, uint32_t from, uint32_t p)
 {
     uint32_t site = from, n, third;
     vor_neighbour_iter_t it;
@@ -327,7 +334,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
         }
         if (twin == VOR__NONE && on_line) {
-            uint32_t nearest = vor__nearest_site(d, corner, p);
+            uint32_t nearest = nearest_site(d, corner, p);
             twin = same_point(&d->sites[nearest], &point) ? nearest : twin;
         }
         if (twin != VOR__NONE) {

@@ -20,7 +20,9 @@
  * All scratch arrays live in the arena's still unused triangle slots
  * (see vor__plan for the budget).
  */
+#include "insertion_order.h"
 #include "mesh.h"
+#include "multiword.h"
 
 /* Is the highest set bit of a below that of b? */
 static inline bool lower_top_bit(uint32_t a, uint32_t b)
@@ -300,7 +302,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     }
     uint32_t buckets = 1u << (2u * k);
 
-    /* scratch: 4 buckets + 2 n + 2 <= 6 n + 2 entries (mesh.h) */
+    /* scratch: 4 buckets + 2 n + 2 <= 6 n + 2 entries (insertion_order.h) */
     vor_index_t *start = scratch;            /* [buckets + 1] */
     vor_index_t *sorted = start + buckets + 1; /* [n] */
     vor_index_t *rep = sorted + n;           /* [n] */

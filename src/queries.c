@@ -17,7 +17,57 @@
  * joined by an edge of every Delaunay triangulation. Walking that polygon
  * counterclockwise visits them all; the smallest index wins.
  */
+#include "bucket_grid.h"
 #include "mesh.h"
+#include "multiword.h"
+#include "perturbation.h"
+
+void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
+{
+    if (it == NULL) {
+        return;
+    }
+    it->d = d;
+    it->next_slot = 0;
+}
+
+int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
+{
+    /* a zeroed iterator, or one begun on no diagram, is at its end */
+    if (it == NULL || it->d == NULL || ids == NULL) {
+        return 0;
+    }
+    const vor_t *d = it->d;
+    if (d->vertex_count < 2u) {
+        return 0;
+    }
+    uint32_t end = vor__used_slots_end(d);
+    /* each used slot is visited once; the loop ends at `end` */
+    for (uint32_t s = vor__next_used_slot(d, it->next_slot); s < end;
+         s = vor__next_used_slot(d, s + 1u)) {
+        const vor__tri_t *t = &d->triangles[s];
+        if (s + 4u < end) {
+            /* the sites of a triangle ahead, fetched while this one's are
+             * compared: site ids are input positions, anywhere in memory */
+            vor_index_t ahead[3];
+            vor__vertices(&d->triangles[s + 4u], ahead);
+            for (unsigned k = 0; k < 3u; k++) {
+                if (ahead[k] != VOR__INFINITE) {
+                    VOR__PREFETCH(&d->sites[ahead[k]]);
+                }
+            }
+        }
+        if (vor__reported(d->sites, t)) {
+            ids[0] = vor__vertex(t, 0);
+            ids[1] = vor__vertex(t, 1);
+            ids[2] = vor__vertex(t, 2);
+            it->next_slot = s + 1u;
+            return 1;
+        }
+    }
+    it->next_slot = end;
+    return 0;
+}
 
 void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
 {
