@@ -132,45 +132,9 @@ typedef struct {
     bool by_line, f_above;
     vor_index_t split;
     int64_t line;
-    unsigned k, shift;   /* the bucket grid (cell_of) */
+    unsigned k, shift;   /* the bucket grid (vor__grid_z) */
     uint32_t bound;      /* step bound for walks around a vertex */
 } builder_t;
-
-/* Spreads the low 16 bits of x to the even bit positions. */
-static inline uint32_t spread_bits(uint32_t x)
-{
-    x &= 0xFFFFu;
-    x = (x | (x << 8)) & 0x00FF00FFu;
-    x = (x | (x << 4)) & 0x0F0F0F0Fu;
-    x = (x | (x << 2)) & 0x33333333u;
-    x = (x | (x << 1)) & 0x55555555u;
-    return x;
-}
-
-/* The inverse: the even bits of x, packed. */
-static inline uint32_t compact_bits(uint32_t x)
-{
-    x &= 0x55555555u;
-    x = (x | (x >> 1)) & 0x33333333u;
-    x = (x | (x >> 2)) & 0x0F0F0F0Fu;
-    x = (x | (x >> 4)) & 0x00FF00FFu;
-    x = (x | (x >> 8)) & 0x0000FFFFu;
-    return x;
-}
-
-/* The bucket (cell) of a site in the 2^k x 2^k grid over the bounding
- * square of side 2^shift, as a Z-order index: bit pairs (row bit, column
- * bit) from the top level down, so every quadtree square is a run of
- * indices and a square's four children come in the order bottom-left,
- * bottom-right, top-left, top-right. The column (x - low.x) 2^k / 2^shift
- * never decreases with x, so a lower column means a smaller x (and the
- * same for rows and y). k <= 12. */
-static inline uint32_t cell_of(const vor_t *d, vor_index_t s, unsigned k, unsigned shift)
-{
-    uint32_t cx = vor__grid_cell(d->sites[s].x, d->low.x, k, shift);
-    uint32_t cy = vor__grid_cell(d->sites[s].y, d->low.y, k, shift);
-    return spread_bits(cx) | (spread_bits(cy) << 1);
-}
 
 static inline bool in_f_finite(const builder_t *b, vor_index_t v)
 {
@@ -894,7 +858,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
     uint32_t pos = 0;
     for (uint32_t c = 0; c < cells; c++) {
         uint32_t end = pos;
-        while (end < n && cell_of(d, ids[end], k, shift) == c) {
+        while (end < n && vor__grid_z(d, ids[end], k, shift) == c) {
             end++;
         }
         /* sites are numbered in input order, so the next buckets' sites
@@ -929,7 +893,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
             /* left and right children: F left of the middle column */
             b->by_line = true;
             b->f_above = false;
-            b->line = grid_line(d, compact_bits(z0) + (1u << side_log), 0, k, shift);
+            b->line = grid_line(d, vor__compact_bits(z0) + (1u << side_log), 0, k, shift);
             if (child == 1u) {
                 bottom[level] = combine(b, bottom[level], part, 0);
                 break;
@@ -938,47 +902,24 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
             /* top and bottom halves: F = the top, rows from the middle on */
             b->by_line = true;
             b->f_above = true;
-            b->line = grid_line(d, compact_bits(z0 >> 1) + (1u << side_log), 1, k, shift);
+            b->line = grid_line(d, vor__compact_bits(z0 >> 1) + (1u << side_log), 1, k, shift);
             part = combine(b, top, bottom[level], 1);
         }
     }
     return root;
 }
 
-/* Groups the ids[0, n) of the sites by quadtree bucket (n >= 8): a
- * counting sort into 4^k buckets of two to eight sites, n / 8 < 4^k <=
- * n / 2, over the bounding square of side 2^shift; sets b->k and
- * b->shift. Its counters lie right below ids (4^k + 1 <= n / 2 + 1
- * entries: above the home slots for max_sites >= 3, and free until the
+/* Groups the ids[0, n) of the sites by quadtree bucket (n >= 8): the grid
+ * sort into 4^k buckets of two to eight sites, n / 8 < 4^k <= n / 2; sets
+ * b->k and b->shift. Its counters lie right below ids (4^k + 1 <= n / 2 +
+ * 1 entries: above the home slots for max_sites >= 3, and free until the
  * build starts). Out of line: its frame is not on the merges' stack. */
 VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
 {
-    vor_t *d = b->d;
     while (b->k + 1u < QUADTREE_LEVELS && vor__shl_u64(8u, 2u * b->k) <= n) {
         b->k++;
     }
-    uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
-    uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
-    span = (span_y > span) ? span_y : span;
-    while (vor__shr_u64(span, b->shift) != 0u) {
-        b->shift++;
-    }
-    uint32_t cells = 1u << (2u * b->k);
-    vor_index_t *start = ids - (cells + 1u);
-    for (uint32_t c = 0; c <= cells; c++) {
-        start[c] = 0;
-    }
-    for (uint32_t s = 0; s < n; s++) {
-        start[cell_of(d, (vor_index_t)s, b->k, b->shift) + 1u]++;
-    }
-    for (uint32_t c = 0; c < cells; c++) {
-        start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
-    }
-    for (uint32_t s = 0; s < n; s++) {
-        uint32_t c = cell_of(d, (vor_index_t)s, b->k, b->shift);
-        ids[start[c]] = (vor_index_t)s;
-        start[c]++;
-    }
+    b->shift = vor__grid_sort(b->d, n, b->k, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
 }
 
 int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,

@@ -281,24 +281,10 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     }
     const vor_point_t *sites = d->sites;
 
-    /* grid: 2^k x 2^k buckets over the bounding square of side 2^shift */
+    /* grid: 2^k x 2^k buckets, 4^k <= n < 4^(k+1) */
     unsigned k = 0;
     while (vor__shl_u64(4u, 2u * k) <= n) {
         k++;
-    }
-    int32_t xmin = sites[0].x, xmax = xmin, ymin = sites[0].y, ymax = ymin;
-    for (uint32_t s = 1; s < n; s++) {
-        xmin = (sites[s].x < xmin) ? sites[s].x : xmin;
-        xmax = (sites[s].x > xmax) ? sites[s].x : xmax;
-        ymin = (sites[s].y < ymin) ? sites[s].y : ymin;
-        ymax = (sites[s].y > ymax) ? sites[s].y : ymax;
-    }
-    uint64_t span = (uint64_t)((int64_t)xmax - xmin);
-    uint64_t span_y = (uint64_t)((int64_t)ymax - ymin);
-    span = (span_y > span) ? span_y : span;
-    unsigned shift = 0;
-    while (vor__shr_u64(span, shift) != 0u) {
-        shift++;
     }
     uint32_t buckets = 1u << (2u * k);
 
@@ -309,30 +295,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     vor_index_t *cell_i = rep + n;           /* [buckets] */
     vor_index_t *cell_j = cell_i + buckets;  /* [buckets] */
     vor_index_t *next = cell_j + buckets;    /* [buckets + 1] */
-
-    /* counting sort of the sites into buckets */
-    for (uint32_t b = 0; b <= buckets; b++) {
-        start[b] = 0;
-    }
-#define BUCKET_OF(s)                                                           \
-    ((vor__grid_cell(sites[s].x, xmin, k, shift) << k) |                       \
-     vor__grid_cell(sites[s].y, ymin, k, shift))
-    for (uint32_t s = 0; s < n; s++) {
-        start[BUCKET_OF(s) + 1u]++;
-    }
-    for (uint32_t b = 0; b < buckets; b++) {
-        start[b + 1u] = (vor_index_t)(start[b + 1u] + start[b]);
-    }
-    for (uint32_t s = 0; s < n; s++) {
-        uint32_t b = BUCKET_OF(s);
-        sorted[start[b]] = (vor_index_t)s;
-        start[b]++;
-    }
-    for (uint32_t b = buckets; b > 0u; b--) { /* undo the cursor shift */
-        start[b] = start[b - 1u];
-    }
-    start[0] = 0;
-#undef BUCKET_OF
+    (void)vor__grid_sort(d, n, k, VOR__CELL_ROWS, start, sorted);
 
     /* duplicates: equal points are adjacent after sorting a bucket */
     for (uint32_t b = 0; b < buckets; b++) {

@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * insertion_order.h - orders of site ids (insertion_order.c), private to
- * the library: the grid cells both builders sort sites into, the id sort,
- * and vor_build's insertion plan.
+ * insertion_order.h - orders of site ids, private to the library: the
+ * grid sort and Z-order both builders start from (inline here), the id
+ * sort and vor_build's insertion plan (insertion_order.c).
  */
 #ifndef VOR_INSERTION_ORDER_H
 #define VOR_INSERTION_ORDER_H
 
+#include "multiword.h"
 #include "vor.h"
 
 /* vor_build's plan (insertion_order.c): for the n sites already copied
@@ -30,6 +31,97 @@ static inline uint32_t vor__grid_cell(int32_t c, int32_t low, unsigned k, unsign
         return offset << (k - shift); /* < 2^k */
     }
     return (shift - k < 32u) ? offset >> (shift - k) : 0u;
+}
+
+/* Spreads the low 16 bits of x to the even bit positions. */
+static inline uint32_t vor__spread_bits(uint32_t x)
+{
+    x &= 0xFFFFu;
+    x = (x | (x << 8)) & 0x00FF00FFu;
+    x = (x | (x << 4)) & 0x0F0F0F0Fu;
+    x = (x | (x << 2)) & 0x33333333u;
+    x = (x | (x << 1)) & 0x55555555u;
+    return x;
+}
+
+/* The inverse: the even bits of x, packed. */
+static inline uint32_t vor__compact_bits(uint32_t x)
+{
+    x &= 0x55555555u;
+    x = (x | (x >> 1)) & 0x33333333u;
+    x = (x | (x >> 2)) & 0x0F0F0F0Fu;
+    x = (x | (x >> 4)) & 0x00FF00FFu;
+    x = (x | (x >> 8)) & 0x0000FFFFu;
+    return x;
+}
+
+/* The cell of site s in the 2^k x 2^k grid over the sites' bounding
+ * square (corner d->low, side 2^shift), as a Z-order index: bit pairs
+ * (row bit, column bit) from the top level down, so every quadtree square
+ * is a run of indices and a square's four children come in the order
+ * bottom-left, bottom-right, top-left, top-right. The column
+ * (x - low.x) 2^k / 2^shift never decreases with x, so a lower column
+ * means a smaller x (and the same for rows and y). k <= 12. */
+static inline uint32_t vor__grid_z(const vor_t *d, uint32_t s, unsigned k, unsigned shift)
+{
+    uint32_t cx = vor__grid_cell(d->sites[s].x, d->low.x, k, shift);
+    uint32_t cy = vor__grid_cell(d->sites[s].y, d->low.y, k, shift);
+    return vor__spread_bits(cx) | (vor__spread_bits(cy) << 1);
+}
+
+/* A site's cell in that grid: the Z-order index of vor__grid_z (the
+ * divide-and-conquer builder's quadtree), or by rows, (column << k) | row,
+ * which serves vor_build's plan as well and spreads no bits. */
+enum vor__cell_key { VOR__CELL_Z, VOR__CELL_ROWS };
+
+static inline uint32_t vor__cell_of(const vor_t *d, uint32_t s, unsigned k, unsigned shift,
+                                    enum vor__cell_key key)
+{
+    if (key == VOR__CELL_Z) {
+        return vor__grid_z(d, s, k, shift);
+    }
+    return (vor__grid_cell(d->sites[s].x, d->low.x, k, shift) << k) |
+           vor__grid_cell(d->sites[s].y, d->low.y, k, shift);
+}
+
+/* The grid sort both builders start from: a stable counting sort of sites
+ * 0 .. n - 1 (n >= 1, their box in d->low, d->high) by their cell in the
+ * 2^k x 2^k grid into ids[0, n). Returns the grid's shift (the bounding
+ * square's side is 2^shift); start[c] is then where cell c's run begins,
+ * for c <= 4^k (start[4^k] = n): start needs 4^k + 1 entries apart from
+ * ids. Inline, with a constant key at each call, so that neither builder
+ * pays for the other's cells: as fast as each one's own copy was. */
+static inline unsigned vor__grid_sort(const vor_t *d, uint32_t n, unsigned k,
+                                      enum vor__cell_key key, vor_index_t *start,
+                                      vor_index_t *ids)
+{
+    uint64_t span = (uint64_t)((int64_t)d->high.x - d->low.x);
+    uint64_t span_y = (uint64_t)((int64_t)d->high.y - d->low.y);
+    span = (span_y > span) ? span_y : span;
+    unsigned shift = 0;
+    while (vor__shr_u64(span, shift) != 0u) {
+        shift++;
+    }
+    uint32_t cells = 1u << (2u * k);
+    for (uint32_t c = 0; c <= cells; c++) {
+        start[c] = 0;
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        start[vor__cell_of(d, s, k, shift, key) + 1u]++;
+    }
+    for (uint32_t c = 0; c < cells; c++) {
+        start[c + 1u] = (vor_index_t)(start[c + 1u] + start[c]);
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        uint32_t c = vor__cell_of(d, s, k, shift, key);
+        ids[start[c]] = (vor_index_t)s;
+        start[c]++;
+    }
+    for (uint32_t c = cells; c > 0u; c--) { /* undo the cursors' advance */
+        start[c] = start[c - 1u];
+    }
+    start[0] = 0;
+    return shift;
 }
 
 /* Introsort of ids[0..n) by a strict total order on site ids, ids breaking
