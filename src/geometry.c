@@ -35,6 +35,7 @@
 #include "multiword.h"
 #include "perturbation.h"
 #include "predicates.h"
+#include "walk.h"
 
 #define GEO_LIMBS VOR__LIMBS(160)
 #define U64_LIMBS VOR__LIMBS(64)
@@ -481,11 +482,6 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
 /* ------------------------------------------------------------------ */
 /* Convex hull                                                         */
 
-static bool lower(const vor_point_t *a, const vor_point_t *b)
-{
-    return a->y < b->y || (a->y == b->y && a->x < b->x);
-}
-
 /* The triangle at infinity in `slot` is (u, w, infinity) in counterclockwise
  * order, so the outside is left of u -> w and the hull runs w -> u
  * counterclockwise. The next hull edge's triangle (x, u, infinity) shares
@@ -499,32 +495,17 @@ static void ghost_edge(const vor_t *d, uint32_t slot, uint32_t *w, uint32_t *u, 
     *next = g->n[vor__prev(k)];
 }
 
-/* The site with the smallest (y, x): from any site, step to a lower
- * neighbour while there is one. In a triangulation a site that is not the
- * lowest has a lower neighbour (the direction to the lowest site lies in
- * one of its triangles), and each step is strictly lower, so this ends
- * within vertex_count steps at the lowest site. */
+/* The site with the smallest (y, x), by the walk (walk.h). A site that is
+ * not the lowest has a lower neighbour in a triangulation: the direction
+ * to the lowest site lies in one of its triangles. The walk starts at the
+ * bucket grid's bottom row, below the middle of the box, a few steps from
+ * the lowest site for uniform sites. */
 static uint32_t lowest_site(const vor_t *d)
 {
-    const vor_point_t *s = d->sites;
-    /* start at the bucket grid's bottom row, below the middle of the box,
-     * a few steps from the lowest site for uniform sites */
-    int32_t middle = (int32_t)((uint32_t)d->low.x + (((uint32_t)d->high.x - (uint32_t)d->low.x) >> 1));
-    uint32_t best = vor__grid_start(d, middle, d->low.y);
-    for (uint32_t step = 0; step < d->vertex_count; step++) {
-        uint32_t from = best, n;
-        vor_neighbour_iter_t it;
-        vor_neighbours_begin(&it, d, from);
-        while (vor_neighbours_next(&it, &n)) {
-            if (lower(&s[n], &s[best])) {
-                best = n;
-            }
-        }
-        if (best == from) {
-            break;
-        }
-    }
-    return best;
+    uint32_t half_width = ((uint32_t)d->high.x - (uint32_t)d->low.x) >> 1;
+    int32_t middle = (int32_t)((uint32_t)d->low.x + half_width);
+    vor__walk_t w = {d, VOR__WALK_LOWEST, NULL, 0, NULL, false, false};
+    return vor__walk(&w, vor__grid_start(d, middle, d->low.y));
 }
 
 void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)

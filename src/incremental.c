@@ -33,6 +33,7 @@
 #include "insertion_order.h"
 #include "mesh.h"
 #include "perturbation.h"
+#include "walk.h"
 
 /* Is slot a home slot of site v (v may be infinity, which has none)? */
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
@@ -108,31 +109,6 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
     }
     *on_line = true; /* only if the predicates lie: take the careful path */
     return slot;
-}
-
-/* The site nearest to point p (not in the mesh) under the perturbation,
- * by a greedy walk over Delaunay neighbours from site `from` (the
- * starting-point search of Ohya, Iri and Murota). */
-static uint32_t nearest_site(vor_t *d, uint32_t from, uint32_t p)
-{
-    uint32_t site = from, n, third;
-    vor_neighbour_iter_t it;
-    /* each move is to a strictly closer site (a total order under the
-     * perturbation), so at most one visit per site */
-    for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
-        uint32_t best = site;
-        vor__fan_begin(&it, d, site);
-        while (vor__fan_next(&it, &n, &third)) {
-            if (vor__closer(d, p, n, best) < 0) {
-                best = n;
-            }
-        }
-        if (best == site) {
-            break;
-        }
-        site = best;
-    }
-    return site;
 }
 
 /* ------------------------------------------------------------------ */
@@ -334,7 +310,8 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
         }
         if (twin == VOR__NONE && on_line) {
-            uint32_t nearest = nearest_site(d, corner, p);
+            vor__walk_t w = {d, VOR__WALK_SITE, d, p, NULL, false, false};
+            uint32_t nearest = vor__walk(&w, corner);
             twin = same_point(&d->sites[nearest], &point) ? nearest : twin;
         }
         if (twin != VOR__NONE) {

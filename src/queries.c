@@ -21,6 +21,7 @@
 #include "mesh.h"
 #include "multiword.h"
 #include "perturbation.h"
+#include "walk.h"
 
 void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
 {
@@ -134,73 +135,14 @@ static int query_start(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint
     return VOR_OK;
 }
 
-/* Can the greedy walk for query q compare distances in int64 alone? Yes
- * when the sites' box spans less than 2^30 on each axis and every site s
- * has q - s in int32: then for a neighbour n of s, with d = n - s and
- * e = q - s,
- *     |q - n|^2 - |q - s|^2 = |d|^2 - e.(2d),
- * where |d|^2 < 2^61 and |e.(2d)| < 2 * 2^31 * 2^31 = 2^63: both int64,
- * compared without subtracting. */
-static bool walk_is_narrow(const vor_t *d, int32_t x, int32_t y)
-{
-    const int64_t reach = INT32_MAX;
-    return (uint32_t)d->high.x - (uint32_t)d->low.x < (1u << 30) &&
-           (uint32_t)d->high.y - (uint32_t)d->low.y < (1u << 30) &&
-           (int64_t)x - d->high.x >= -reach && (int64_t)x - d->low.x <= reach &&
-           (int64_t)y - d->high.y >= -reach && (int64_t)y - d->low.y <= reach;
-}
-
-/* Sign of |q - n|^2 - |q - s|^2 in the narrow case above (e = q - s). */
-static inline int narrow_closer(int32_t ex, int32_t ey, const vor_point_t *s,
-                                const vor_point_t *n)
-{
-    int32_t dx = n->x - s->x, dy = n->y - s->y; /* |.| < 2^30 */
-    int64_t square = vor__mul_i32(dx, dx) + vor__mul_i32(dy, dy);
-    int64_t twice_dot = vor__mul_i32(ex, 2 * dx) + vor__mul_i32(ey, 2 * dy);
-    return (square < twice_dot) ? -1 : (square > twice_dot) ? 1 : 0;
-}
-
-/* Greedy walk (Ohya, Iri and Murota) from site `from` to a site nearest
- * to q; *tie is set when another site at the same distance was seen
- * among the last site's neighbours. Each move strictly decreases the
- * exact distance, so there are fewer than vertex_count moves; each fan
- * walk is bounded by vertex_count + 1 triangles even on a broken mesh. */
+/* The walk (walk.h) from site `from` to a site nearest to q; *tie is set
+ * when another site at the same distance was seen among the last site's
+ * neighbours. */
 static uint32_t walk_to_nearest(const vor_t *d, const vor_point_t *q, uint32_t from, bool *tie)
 {
-    const vor_point_t *s = d->sites;
-    const vor__tri_t *tri = d->triangles;
-    bool narrow = walk_is_narrow(d, q->x, q->y);
-    uint32_t best = from;
-    for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
-        const vor_point_t *at = &s[best];
-        int32_t ex = narrow ? q->x - at->x : 0, ey = narrow ? q->y - at->y : 0;
-        uint32_t slot = best, closer = best;
-        *tie = false;
-        for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-            const vor__tri_t *t = &tri[slot];
-            unsigned i = vor__vertex_index(t, (vor_index_t)best);
-            if (i == 3u) {
-                break; /* only on a broken mesh */
-            }
-            vor_index_t n = vor__vertex(t, vor__next(i));
-            slot = t->n[vor__prev(i)];
-            if (n != VOR__INFINITE) {
-                int c = narrow ? narrow_closer(ex, ey, at, &s[n]) : vor_closer(q, &s[n], at, NULL);
-                if (c < 0) {
-                    closer = n;
-                    break;
-                }
-                *tie = *tie || c == 0;
-            }
-            if (slot == best) {
-                break;
-            }
-        }
-        if (closer == best) {
-            break;
-        }
-        best = closer;
-    }
+    vor__walk_t w = {d, VOR__WALK_POINT, NULL, 0, q, vor__walk_is_narrow(d, q->x, q->y), false};
+    uint32_t best = vor__walk(&w, from);
+    *tie = w.tie;
     return best;
 }
 
@@ -346,7 +288,7 @@ int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t c
 /* Caches the cell of `site` as its bisector tests, when they are exact in
  * int64: for a neighbour n with d = n - s within 2^30 of s on each axis,
  * and a query q with e = q - s in int32, q is strictly closer to s than to
- * n exactly when |d|^2 > e.(2d) (bounds at walk_is_narrow). */
+ * n exactly when |d|^2 > e.(2d) (bounds at vor__walk_is_narrow, walk.h). */
 static void cache_cell(vor_tracker_t *tracker, uint32_t site)
 {
     const vor_t *d = tracker->d;
