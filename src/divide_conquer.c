@@ -150,11 +150,6 @@ static inline bool in_f(const builder_t *b, vor_index_t v)
     return v != VOR__INFINITE && in_f_finite(b, v);
 }
 
-static inline bool in_s(const builder_t *b, vor_index_t v)
-{
-    return v != VOR__INFINITE && !in_f_finite(b, v);
-}
-
 /* One site as a part: its home slot, emptied. */
 static vor_index_t single(builder_t *b, vor_index_t s)
 {
@@ -314,35 +309,33 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
 /* ------------------------------------------------------------------ */
 /* Merge                                                               */
 
-/* Merges the parts F and S (every site of F before every site of S on
- * `axis`; b->by_line, split etc. set for in_f), neither empty, into one;
- * returns it. */
-static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
+/* The lower common tangent (l, r) of F and S and the ghosts at its ends,
+ * (l, w, inf) in F and (u, r, inf) in S (VOR__NONE for a single site). */
+typedef struct {
+    vor_index_t l, r, g1, g2;
+} tangent_t;
+
+/* Step 1 (Oishi and Sugihara, section 4): the lower common tangent of F
+ * and S, from R1 (F's greatest site) and L2 (S's least). */
+static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_single,
+                          bool s_single, tangent_t *t)
 {
     vor_t *d = b->d;
     vor__tri_t *tri = b->tri;
-    vor_index_t v[3]; /* the decoded vertices of the triangle at hand */
-    b->axis = axis;
-    bool f_single = is_single(b, f), s_single = is_single(b, s);
-    if (f_single && s_single) {
-        vor__make_edge(d, f, s);
-        return f;
-    }
-
-    /* 1. lower common tangent (Oishi and Sugihara, section 4), from R1 and L2 */
+    vor_index_t v[3];
     vor_index_t l = f, r = s, l_stop = f, r_stop = s;
-    vor_index_t g1 = VOR__NONE, g2 = VOR__NONE; /* (l, w, inf) and (u, r, inf) */
+    vor_index_t g1 = VOR__NONE, g2 = VOR__NONE;
     uint32_t f_hull = 1, s_hull = 1;
     extremes_t e;
     if (!f_single) {
-        hull_extremes(b, f, axis, &e);
+        hull_extremes(b, f, b->axis, &e);
         l = e.most; /* R1 */
         g1 = e.most_ghost;
         l_stop = e.least; /* L1 */
         f_hull = e.length;
     }
     if (!s_single) {
-        hull_extremes(b, s, axis, &e);
+        hull_extremes(b, s, b->axis, &e);
         r = e.least; /* L2 */
         r_stop = e.most; /* R2 */
         s_hull = e.length;
@@ -380,17 +373,29 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         }
         break;
     }
-    vor_index_t l0 = l, r0 = r;
+    t->l = l;
+    t->r = r;
+    t->g1 = g1;
+    t->g2 = g2;
+}
 
-    /* 2. glue: the lower ghost (r0, l0, inf) and the cap (l0, r0, inf) */
-    vor_index_t ga = g1, gb = VOR__NONE, ha = VOR__NONE, hb = g2;
-    if (g1 != VOR__NONE) { /* (u, l0, inf), across (inf, l0) from (l0, w, inf) */
-        vor__vertices(&tri[g1], v);
-        gb = tri[g1].n[vor__next(find(v, l0))];
+/* Step 2, glue: the lower ghost (r0, l0, inf) and the cap (l0, r0, inf)
+ * join the two spheres at infinity. Returns the lower ghost's slot; *cap
+ * is the cap's. */
+static vor_index_t glue(builder_t *b, const tangent_t *t, bool f_single, bool s_single,
+                        vor_index_t *cap_slot)
+{
+    vor__tri_t *tri = b->tri;
+    vor_index_t v[3];
+    vor_index_t l0 = t->l, r0 = t->r;
+    vor_index_t ga = t->g1, gb = VOR__NONE, ha = VOR__NONE, hb = t->g2;
+    if (ga != VOR__NONE) { /* (u, l0, inf), across (inf, l0) from (l0, w, inf) */
+        vor__vertices(&tri[ga], v);
+        gb = tri[ga].n[vor__next(find(v, l0))];
     }
-    if (g2 != VOR__NONE) { /* (r0, w, inf), across (r0, inf) from (u, r0, inf) */
-        vor__vertices(&tri[g2], v);
-        ha = tri[g2].n[vor__prev(find(v, r0))];
+    if (hb != VOR__NONE) { /* (r0, w, inf), across (r0, inf) from (u, r0, inf) */
+        vor__vertices(&tri[hb], v);
+        ha = tri[hb].n[vor__prev(find(v, r0))];
     }
     vor_index_t lower, cap;
     if (f_single) {
@@ -417,12 +422,69 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
      * triangles now */
     vor__set_mark(&tri[l0], true);
     vor__set_mark(&tri[r0], true);
+    *cap_slot = cap;
+    return lower;
+}
 
-    /* 3. zipper, bottom to top (Oishi and Sugihara, section 3.2, fig. 3.1). Bounded
-     * by the counts in the header comment; `steps` is a last resort. The
-     * cap (l, r, inf) is always written by put() or flip() in a known
-     * rotation: cv holds its vertices, with l at cv[il] and r at cv[ir];
-     * the F pocket ghost lies across (l, inf), the S one across (inf, r). */
+/* Is v a site on the given side of the merge (F: left true, S: false)? */
+static inline bool on_side(const builder_t *b, vor_index_t v, bool left)
+{
+    return v != VOR__INFINITE && in_f_finite(b, v) == left;
+}
+
+/* One side's deletions in the zipper, the two sides mirrored. The pocket
+ * ghost at `pocket` is (c1, l, inf) on the left, (r, e1, inf) on the
+ * right; its candidate c1 (e1) is valid when it is on its side and above
+ * the base (l, r), already known when still_valid. While it is, the edge
+ * (l, c1) ((r, e1)) is deleted if the triangle beyond it has its far
+ * vertex c2 on the same side (C2 and T1) inside the circle through l, r
+ * and the candidate: a flip, after which c2 is the candidate. Returns the
+ * last candidate; *valid tells whether it is valid. At most one deletion
+ * per F-F-F (S-S-S) triangle: bounded with the merge. */
+VOR__INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, bool left,
+                                    vor_index_t l, vor_index_t r, bool still_valid,
+                                    bool *valid)
+{
+    vor__tri_t *tri = b->tri;
+    vor_index_t pv[3], v[3];
+    vor__vertices(&tri[pocket], pv);
+    unsigned inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
+    vor_index_t c1 = left ? pv[vor__next(inf)] : pv[vor__prev(inf)];
+    for (;;) {
+        *valid = on_side(b, c1, left) && (still_valid || vor__orient(b->d, l, r, c1) > 0);
+        still_valid = false;
+        if (!*valid) {
+            return c1;
+        }
+        vor__vertices(&tri[tri[pocket].n[inf]], v);
+        vor_index_t c2 = third(v, left ? l : r, c1);
+        if (!on_side(b, c2, left) || vor__incircle(b->d, l, r, c1, c2) <= 0) {
+            return c1;
+        }
+        vor_index_t x1, x2;
+        flip(b, pocket, pv, inf, &x1, &x2);
+        /* the next pocket ghost: x2 = (inf, c2, l), or x1 = (inf, r, c2) */
+        pocket = left ? x2 : x1;
+        pv[0] = VOR__INFINITE;
+        pv[1] = left ? c2 : r;
+        pv[2] = left ? l : c2;
+        inf = 0;
+        c1 = c2;
+    }
+}
+
+/* Step 3, the zipper, bottom to top (Oishi and Sugihara, section 3.2,
+ * fig. 3.1), from the base (l0, r0) under the cap. Bounded by the counts
+ * in the header comment; `steps_left` is a last resort. Returns the
+ * number of advances (cross triangles made). */
+static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t cap)
+{
+    vor__tri_t *tri = b->tri;
+    vor_index_t l = l0, r = r0;
+    /* The cap (l, r, inf) is always written by put() or flip() in a
+     * known rotation: cv holds its vertices, with l at cv[il] and r at
+     * cv[ir]; the F pocket ghost lies across (l, inf), the S one across
+     * (inf, r). */
     vor_index_t cv[3] = {l0, r0, VOR__INFINITE};
     unsigned il = 0, ir = 1;
     bool l_moved = false, r_moved = false;
@@ -435,66 +497,13 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
     bool l_still_valid = false, r_still_valid = false;
     uint32_t steps_left = 4u * b->bound + 16u, advances = 0;
     while (steps_left-- > 0u) {
-        /* left deletions: pocket ghost pf = (c1, l, inf), F triangle
-         * (l, c1, c2) across its edge (c1, l) */
-        vor_index_t pf = tri[cap].n[ir], pv[3], c1, e1;
-        vor__vertices(&tri[pf], pv);
-        unsigned pf_inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
-        c1 = pv[vor__next(pf_inf)];
         bool lvalid, rvalid; /* the candidates above the base */
-        for (;;) {
-            lvalid = in_f(b, c1) && (l_still_valid || vor__orient(d, l, r, c1) > 0);
-            l_still_valid = false;
-            if (!lvalid) {
-                break;
-            }
-            vor__vertices(&tri[tri[pf].n[pf_inf]], v);
-            vor_index_t c2 = third(v, l, c1);
-            /* C2 and T1: the triangle beyond is F-F-F */
-            if (!in_f(b, c2) || vor__incircle(d, l, r, c1, c2) <= 0) {
-                break;
-            }
-            vor_index_t x1, x2;
-            flip(b, pf, pv, pf_inf, &x1, &x2);
-            /* x2 = (inf, c2, l): the next pocket ghost */
-            pf = x2;
-            pv[0] = VOR__INFINITE;
-            pv[1] = c2;
-            pv[2] = l;
-            pf_inf = 0;
-            c1 = c2;
-        }
-        /* right deletions: pocket ghost ps = (r, e1, inf), S triangle
-         * (e1, r, e2) across its edge (r, e1) */
-        vor_index_t ps = tri[cap].n[il], sv[3];
-        vor__vertices(&tri[ps], sv);
-        unsigned ps_inf = find(sv, VOR__INFINITE);
-        e1 = sv[vor__prev(ps_inf)];
-        for (;;) {
-            rvalid = in_s(b, e1) && (r_still_valid || vor__orient(d, l, r, e1) > 0);
-            r_still_valid = false;
-            if (!rvalid) {
-                break;
-            }
-            vor__vertices(&tri[tri[ps].n[ps_inf]], v);
-            vor_index_t e2 = third(v, r, e1);
-            if (!in_s(b, e2) || vor__incircle(d, l, r, e1, e2) <= 0) {
-                break;
-            }
-            vor_index_t x1, x2;
-            flip(b, ps, sv, ps_inf, &x1, &x2);
-            /* x1 = (inf, r, e2): the next pocket ghost */
-            ps = x1;
-            sv[0] = VOR__INFINITE;
-            sv[1] = r;
-            sv[2] = e2;
-            ps_inf = 0;
-            e1 = e2;
-        }
+        vor_index_t c1 = delete_side(b, tri[cap].n[ir], true, l, r, l_still_valid, &lvalid);
+        vor_index_t e1 = delete_side(b, tri[cap].n[il], false, l, r, r_still_valid, &rvalid);
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
          * other candidate outside its triangle's circle (the deletions on
          * one side leave the other side's candidate as it was) */
-        bool circle_left = lvalid && rvalid && vor__incircle(d, l, r, c1, e1) < 0;
+        bool circle_left = lvalid && rvalid && vor__incircle(b->d, l, r, c1, e1) < 0;
         bool circle_right = lvalid && rvalid && !circle_left;
         bool left = lvalid && (!rvalid || circle_left);
         bool right = rvalid && !left;
@@ -509,9 +518,9 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         if (!left && !right) {
             /* T2: each end moves at least once (never needed when the
              * signs are right) */
-            if (!l_moved && in_f(b, c1) && !joined(b, c1, r)) {
+            if (!l_moved && on_side(b, c1, true) && !joined(b, c1, r)) {
                 left = true;
-            } else if (!r_moved && in_s(b, e1) && !joined(b, e1, l)) {
+            } else if (!r_moved && on_side(b, e1, false) && !joined(b, e1, l)) {
                 right = true;
             } else {
                 break;
@@ -544,15 +553,21 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
         vor__set_mark(&tri[left ? l : r], true);
         advances++;
     }
+    return advances;
+}
 
-    /* clear the marks: the base's ends were the vertices of the strip of
-     * cross triangles from (l0, r0) up to the cap. Cross triangles are
-     * never flipped (deletions flip F-F-F and S-S-S triangles, advances the
-     * cap), so the strip is intact: from base (l, r) the triangle above is
-     * (l, r, c), and the next base is (c, r) if c is in F, else (l, c). One
-     * step per advance. */
-    l = l0;
-    r = r0;
+/* After the zipper: clears the marks. The base's ends were the vertices of the
+ * strip of cross triangles from (l0, r0) up to the cap. Cross triangles
+ * are never flipped (deletions flip F-F-F and S-S-S triangles, advances
+ * the cap), so the strip is intact: from base (l, r) the triangle above
+ * is (l, r, c), and the next base is (c, r) if c is in F, else (l, c).
+ * One step per advance. */
+static void clear_marks(builder_t *b, vor_index_t lower, vor_index_t l0, vor_index_t r0,
+                        uint32_t advances)
+{
+    vor__tri_t *tri = b->tri;
+    vor_index_t v[3];
+    vor_index_t l = l0, r = r0;
     vor__set_mark(&tri[l], false);
     vor__set_mark(&tri[r], false);
     vor__vertices(&tri[lower], v);
@@ -572,6 +587,26 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
             r = c;
         }
     }
+}
+
+/* Merges the parts F and S (every site of F before every site of S on
+ * `axis`; b->by_line, split etc. set for in_f), neither empty, into one;
+ * returns it (its lower ghost): steps 1 to 3 of the header comment, then
+ * the marks cleared. */
+static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
+{
+    b->axis = axis;
+    bool f_single = is_single(b, f), s_single = is_single(b, s);
+    if (f_single && s_single) {
+        vor__make_edge(b->d, f, s);
+        return f;
+    }
+    tangent_t t;
+    lower_tangent(b, f, s, f_single, s_single, &t);
+    vor_index_t cap;
+    vor_index_t lower = glue(b, &t, f_single, s_single, &cap);
+    uint32_t advances = zipper(b, t.l, t.r, cap);
+    clear_marks(b, lower, t.l, t.r, advances);
     return lower;
 }
 
