@@ -273,128 +273,175 @@ static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
     return count;
 }
 
+/* The plan's bucket grid: 2^k x 2^k buckets numbered by rows
+ * (VOR__CELL_ROWS), the sites sorted by bucket, and the scratch arrays
+ * its phases share. */
+typedef struct {
+    const vor_point_t *sites;
+    unsigned k;
+    uint32_t buckets;
+    vor_index_t *start;     /* [buckets + 1]: where each bucket's run begins */
+    vor_index_t *sorted;    /* [n]: the sites, bucket by bucket */
+    vor_index_t *rep;       /* [n]: each site's first occurrence */
+    vor_index_t *bucket_at; /* [buckets]: the bucket of each quadtree rank */
+    vor_index_t *cell_j;    /* [buckets]: scratch for the ranks' rows */
+    vor_index_t *next;      /* [buckets + 1]: the first non-empty rank >= r */
+} plan_grid_t;
+
+/* Duplicates: equal points are adjacent once each bucket is sorted; each
+ * site's rep is the first of its equal points. */
+static void find_duplicates(const plan_grid_t *g)
+{
+    const vor_index_t *start = g->start;
+    vor_index_t *sorted = g->sorted;
+    for (uint32_t b = 0; b < g->buckets; b++) {
+        vor__sort_ids(g->sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]),
+                      VOR__SORT_Z);
+        for (uint32_t e = start[b]; e < start[b + 1u]; e++) {
+            vor_index_t s = sorted[e];
+            bool same = e > start[b] &&
+                        g->sites[sorted[e - 1u]].x == g->sites[s].x &&
+                        g->sites[sorted[e - 1u]].y == g->sites[s].y;
+            g->rep[s] = same ? g->rep[sorted[e - 1u]] : s;
+        }
+    }
+}
+
+/* VOR_ORDER_INPUT: the distinct sites in input order, each search from
+ * the previous one. Returns their number. */
+static uint32_t plan_input(const plan_grid_t *g, uint32_t n, vor_index_t *plan)
+{
+    uint32_t count = 0;
+    vor_index_t previous = VOR__NONE;
+    for (uint32_t s = 0; s < n; s++) {
+        if (g->rep[s] == s) {
+            plan[2u * count] = (vor_index_t)s;
+            plan[2u * count + 1u] = previous;
+            previous = (vor_index_t)s;
+            count++;
+        }
+    }
+    return count;
+}
+
+/* The representative of the square of ranks [r0, r0 + size): the first
+ * site in quadtree order inside it, or VOR__NONE. */
+static inline vor_index_t square_site(const plan_grid_t *g, uint32_t r0, uint32_t size)
+{
+    vor_index_t r = g->next[r0];
+    return (r < r0 + size) ? g->sorted[g->start[g->bucket_at[r]]] : VOR__NONE;
+}
+
+/* Ranks the buckets in quadtree order (bucket_at, next), then plans the
+ * squares' representatives level by level from the root, each search
+ * from its parent square's representative. Returns the number planned. */
+static uint32_t plan_squares(const plan_grid_t *g, vor_index_t *plan)
+{
+    uint32_t buckets = g->buckets;
+    vor_index_t *bucket_at = g->bucket_at, *next = g->next;
+    quadtree_cells(g->k, bucket_at, g->cell_j); /* (I(r), J(r)), I in place */
+    for (uint32_t r = 0; r < buckets; r++) {
+        bucket_at[r] = (vor_index_t)(((uint32_t)bucket_at[r] << g->k) | g->cell_j[r]);
+    }
+    next[buckets] = (vor_index_t)buckets;
+    for (uint32_t r = buckets; r-- > 0u;) {
+        uint32_t b = bucket_at[r];
+        next[r] = (g->start[b + 1u] > g->start[b]) ? (vor_index_t)r : next[r + 1u];
+    }
+    uint32_t count = 0;
+    for (unsigned level = 0; level <= g->k; level++) {
+        uint32_t size = 1u << (2u * (g->k - level));
+        for (uint32_t r0 = 0; r0 < buckets; r0 += size) {
+            vor_index_t s = square_site(g, r0, size);
+            if (s == VOR__NONE) {
+                continue;
+            }
+            vor_index_t parent = VOR__NONE;
+            if (level > 0u) {
+                uint32_t psize = size * 4u;
+                parent = square_site(g, r0 & ~(psize - 1u), psize);
+            }
+            if (s != parent) {
+                plan[2u * count] = s;
+                plan[2u * count + 1u] = parent;
+                count++;
+            }
+        }
+    }
+    return count;
+}
+
+/* The other sites of each bucket, after the squares' `count`, coarse to
+ * fine along its Z-order as the levels above did across buckets:
+ * positions step, 3 step, 5 step, ... for halving steps, each walking
+ * from the site one step back, already inserted (a crowded bucket, as
+ * with clustered sites, then gets short walks and small cavities too).
+ * Returns the new count. */
+static uint32_t plan_buckets(const plan_grid_t *g, vor_index_t *plan, uint32_t count)
+{
+    const vor_index_t *rep = g->rep;
+    for (uint32_t r = 0; r < g->buckets; r++) {
+        uint32_t b = g->bucket_at[r];
+        uint32_t size = (uint32_t)(g->start[b + 1u] - g->start[b]);
+        const vor_index_t *in = &g->sorted[g->start[b]];
+        uint32_t step = 1;
+        while (2u * step < size) {
+            step *= 2u;
+        }
+        for (; step > 0u && size > 1u; step /= 2u) {
+            for (uint32_t pos = step; pos < size; pos += 2u * step) {
+                vor_index_t s = in[pos], from = in[pos - step];
+                if (rep[s] != s) {
+                    continue;
+                }
+                plan[2u * count] = s;
+                /* a duplicate is not in the mesh: start at the bucket's
+                 * representative instead */
+                plan[2u * count + 1u] = (rep[from] == from) ? from : in[0];
+                count++;
+            }
+        }
+    }
+    return count;
+}
+
 uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
                    vor_index_t *scratch, vor_index_t *plan, uint32_t *duplicate_of)
 {
     if (n < 8u) {
         return plan_small(d, n, plan, duplicate_of);
     }
-    const vor_point_t *sites = d->sites;
-
     /* grid: 2^k x 2^k buckets, 4^k <= n < 4^(k+1) */
-    unsigned k = 0;
-    while (vor__shl_u64(4u, 2u * k) <= n) {
-        k++;
+    plan_grid_t g;
+    g.sites = d->sites;
+    g.k = 0;
+    while (vor__shl_u64(4u, 2u * g.k) <= n) {
+        g.k++;
     }
-    uint32_t buckets = 1u << (2u * k);
-
+    g.buckets = 1u << (2u * g.k);
     /* scratch: 4 buckets + 2 n + 2 <= 6 n + 2 entries (insertion_order.h) */
-    vor_index_t *start = scratch;            /* [buckets + 1] */
-    vor_index_t *sorted = start + buckets + 1; /* [n] */
-    vor_index_t *rep = sorted + n;           /* [n] */
-    vor_index_t *cell_i = rep + n;           /* [buckets] */
-    vor_index_t *cell_j = cell_i + buckets;  /* [buckets] */
-    vor_index_t *next = cell_j + buckets;    /* [buckets + 1] */
-    (void)vor__grid_sort(d, n, k, VOR__CELL_ROWS, start, sorted);
-
-    /* duplicates: equal points are adjacent after sorting a bucket */
-    for (uint32_t b = 0; b < buckets; b++) {
-        vor__sort_ids(sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]),
-                      VOR__SORT_Z);
-        for (uint32_t e = start[b]; e < start[b + 1u]; e++) {
-            vor_index_t s = sorted[e];
-            bool same = e > start[b] &&
-                        sites[sorted[e - 1u]].x == sites[s].x &&
-                        sites[sorted[e - 1u]].y == sites[s].y;
-            rep[s] = same ? rep[sorted[e - 1u]] : s;
-        }
-    }
+    g.start = scratch;
+    g.sorted = g.start + g.buckets + 1;
+    g.rep = g.sorted + n;
+    g.bucket_at = g.rep + n;
+    g.cell_j = g.bucket_at + g.buckets;
+    g.next = g.cell_j + g.buckets;
+    (void)vor__grid_sort(d, n, g.k, VOR__CELL_ROWS, g.start, g.sorted);
+    find_duplicates(&g);
     if (duplicate_of != NULL) {
         for (uint32_t s = 0; s < n; s++) {
-            duplicate_of[s] = rep[s];
+            duplicate_of[s] = g.rep[s];
         }
     }
-
-    uint32_t count = 0;
-    if (order == VOR_ORDER_INPUT) {
-        vor_index_t previous = VOR__NONE;
-        for (uint32_t s = 0; s < n; s++) {
-            if (rep[s] == s) {
-                plan[2u * count] = (vor_index_t)s;
-                plan[2u * count + 1u] = previous;
-                previous = (vor_index_t)s;
-                count++;
-            }
-        }
-    } else {
-        /* bucket rank r -> bucket id, and the first non-empty rank >= r */
-        quadtree_cells(k, cell_i, cell_j);
-        vor_index_t *bucket_at = cell_i; /* overwrites cell_i in place */
-        for (uint32_t r = 0; r < buckets; r++) {
-            bucket_at[r] = (vor_index_t)(((uint32_t)cell_i[r] << k) | cell_j[r]);
-        }
-        next[buckets] = (vor_index_t)buckets;
-        for (uint32_t r = buckets; r-- > 0u;) {
-            uint32_t b = bucket_at[r];
-            next[r] = (start[b + 1u] > start[b]) ? (vor_index_t)r : next[r + 1u];
-        }
-        /* representative of the square of ranks [r0, r0 + size), or NONE */
-#define SQUARE_SITE(r0, size)                                                  \
-        ((next[r0] < (r0) + (size)) ? sorted[start[bucket_at[next[r0]]]] : VOR__NONE)
-        for (unsigned level = 0; level <= k; level++) {
-            uint32_t size = 1u << (2u * (k - level));
-            for (uint32_t r0 = 0; r0 < buckets; r0 += size) {
-                vor_index_t s = SQUARE_SITE(r0, size);
-                if (s == VOR__NONE) {
-                    continue;
-                }
-                vor_index_t parent = VOR__NONE;
-                if (level > 0u) {
-                    uint32_t psize = size * 4u;
-                    parent = SQUARE_SITE(r0 & ~(psize - 1u), psize);
-                }
-                if (s != parent) {
-                    plan[2u * count] = s;
-                    plan[2u * count + 1u] = parent;
-                    count++;
-                }
-            }
-        }
-#undef SQUARE_SITE
-        /* the other sites of each bucket, coarse to fine along its Z-order
-         * as the levels above did across buckets: positions step, 3 step,
-         * 5 step, ... for halving steps, each walking from the site one
-         * step back, already inserted (a crowded bucket, as with clustered
-         * sites, then gets short walks and small cavities too) */
-        for (uint32_t r = 0; r < buckets; r++) {
-            uint32_t b = bucket_at[r];
-            uint32_t size = (uint32_t)(start[b + 1u] - start[b]);
-            const vor_index_t *in = &sorted[start[b]];
-            uint32_t step = 1;
-            while (2u * step < size) {
-                step *= 2u;
-            }
-            for (; step > 0u && size > 1u; step /= 2u) {
-                for (uint32_t pos = step; pos < size; pos += 2u * step) {
-                    vor_index_t s = in[pos], from = in[pos - step];
-                    if (rep[s] != s) {
-                        continue;
-                    }
-                    plan[2u * count] = s;
-                    /* a duplicate is not in the mesh: start at the bucket's
-                     * representative instead */
-                    plan[2u * count + 1u] = (rep[from] == from) ? from : in[0];
-                    count++;
-                }
-            }
-        }
-    }
+    uint32_t count = (order == VOR_ORDER_INPUT)
+                         ? plan_input(&g, n, plan)
+                         : plan_buckets(&g, plan, plan_squares(&g, plan));
     /* the duplicates last, with their first occurrence */
     uint32_t at = count;
     for (uint32_t s = 0; s < n; s++) {
-        if (rep[s] != s) {
+        if (g.rep[s] != s) {
             plan[2u * at] = (vor_index_t)s;
-            plan[2u * at + 1u] = rep[s];
+            plan[2u * at + 1u] = g.rep[s];
             at++;
         }
     }

@@ -91,7 +91,8 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
     const vor_point_t *s = d->sites;
     const vor__tri_t *tri = d->triangles;
     uint32_t end = vor__used_slots_end(d), reported = 0, boundary = 0;
-    for (uint32_t slot = vor__next_used_slot(d, 0); slot < end; slot = vor__next_used_slot(d, slot + 1u)) {
+    for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
+         slot = vor__next_used_slot(d, slot + 1u)) {
         const vor__tri_t *t = &tri[slot];
         if (!vor__reported(s, t)) {
             continue;
@@ -142,32 +143,31 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
     return VOR_OK;
 }
 
-int vor_validate(const vor_t *d, vor_violation_t *out)
+/* Counts: the used slots are exactly 2v - 2 (none below two sites). */
+static int check_counts(const vor_t *d, vor_violation_t *out)
 {
-    if (d == NULL) {
-        return VOR_ERR_ARG;
-    }
-    const vor__tri_t *tri = d->triangles;
-    uint32_t triangles = vor__triangle_count(d->vertex_count);
-    uint32_t end = vor__used_slots_end(d);
-
-    /* counts: the used slots are exactly 2v - 2 (none below two sites) */
     if (d->vertex_count > d->site_count || d->site_count > d->max_sites) {
         return violation(out, VOR_CHECK_COUNTS, 0, d->vertex_count);
     }
     if (d->vertex_count < 2u) {
         return VOR_OK;
     }
-    uint32_t used = 0, present = 0;
+    uint32_t present = 0;
     for (uint32_t s = 0; s < d->site_count; s++) {
-        present += vor__slot_empty(&tri[s]) ? 0u : 1u;
+        present += vor__slot_empty(&d->triangles[s]) ? 0u : 1u;
     }
-    used = present + (end - d->max_sites);
-    if (used != triangles || present != d->vertex_count) {
+    uint32_t used = present + (vor__used_slots_end(d) - d->max_sites);
+    if (used != vor__triangle_count(d->vertex_count) || present != d->vertex_count) {
         return violation(out, VOR_CHECK_COUNTS, 0, d->vertex_count);
     }
+    return VOR_OK;
+}
 
-    /* vertices: sites in the mesh or infinity, three distinct */
+/* Vertices: sites in the mesh or infinity, three distinct. */
+static int check_vertices(const vor_t *d, vor_violation_t *out)
+{
+    const vor__tri_t *tri = d->triangles;
+    uint32_t end = vor__used_slots_end(d);
     for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &tri[s];
         for (unsigned i = 0; i < 3u; i++) {
@@ -182,8 +182,14 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
             return violation(out, VOR_CHECK_VERTICES, s, vor__vertex(t, 1));
         }
     }
+    return VOR_OK;
+}
 
-    /* neighbours: in use, pointing back across the same edge */
+/* Neighbours: in use, pointing back across the same edge. */
+static int check_neighbours(const vor_t *d, vor_violation_t *out)
+{
+    const vor__tri_t *tri = d->triangles;
+    uint32_t end = vor__used_slots_end(d);
     for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &tri[s];
         for (unsigned i = 0; i < 3u; i++) {
@@ -201,10 +207,17 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
             }
         }
     }
+    return VOR_OK;
+}
 
-    /* sites: each site's home slot holds one of its triangles, and its
-     * triangles form one fan; all fans together cover each triangle once
-     * per corner */
+/* Sites: each site's home slot holds one of its triangles, and its
+ * triangles form one fan; all fans together cover each triangle once per
+ * corner. */
+static int check_fans(const vor_t *d, vor_violation_t *out)
+{
+    const vor__tri_t *tri = d->triangles;
+    uint32_t triangles = vor__triangle_count(d->vertex_count);
+    uint32_t end = vor__used_slots_end(d);
     uint32_t corners = 0;
     for (uint32_t s = 0; s < d->site_count; s++) {
         if (vor__slot_empty(&tri[s])) {
@@ -224,8 +237,13 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
     if (corners != 3u * triangles) {
         return violation(out, VOR_CHECK_SITES, 0, VOR__INFINITE);
     }
+    return VOR_OK;
+}
 
-    /* the query index: a box around every site, buckets naming sites */
+/* The query index: a box around every site, buckets naming sites. */
+static int check_buckets(const vor_t *d, vor_violation_t *out)
+{
+    const vor__tri_t *tri = d->triangles;
     for (uint32_t s = 0; s < d->site_count; s++) {
         const vor_point_t *p = &d->sites[s];
         if (!vor__slot_empty(&tri[s]) && (p->x < d->low.x || p->x > d->high.x ||
@@ -243,9 +261,17 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
             return violation(out, VOR_CHECK_BUCKETS, b, s);
         }
     }
+    return VOR_OK;
+}
 
-    /* geometry: the exact perturbed predicates, uncounted, so validation
-     * never changes the diagram (nor lies in fault injection builds) */
+/* Geometry: every finite triangle counterclockwise, and no neighbour's
+ * far vertex in a triangle's circle, by the exact perturbed predicates,
+ * uncounted, so validation never changes the diagram (nor lies in fault
+ * injection builds). */
+static int check_delaunay(const vor_t *d, vor_violation_t *out)
+{
+    const vor__tri_t *tri = d->triangles;
+    uint32_t end = vor__used_slots_end(d);
     for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &tri[s];
         if (!vor__is_ghost(t) &&
@@ -270,5 +296,25 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
             }
         }
     }
-    return check_true_output(d, out);
+    return VOR_OK;
+}
+
+/* The checks in order, each relying on the ones before it (the fans on
+ * the neighbours, the geometry on the fans, ...); the first failure is
+ * reported. */
+int vor_validate(const vor_t *d, vor_violation_t *out)
+{
+    if (d == NULL) {
+        return VOR_ERR_ARG;
+    }
+    int err = check_counts(d, out);
+    if (err != VOR_OK || d->vertex_count < 2u) {
+        return err;
+    }
+    err = check_vertices(d, out);
+    err = (err == VOR_OK) ? check_neighbours(d, out) : err;
+    err = (err == VOR_OK) ? check_fans(d, out) : err;
+    err = (err == VOR_OK) ? check_buckets(d, out) : err;
+    err = (err == VOR_OK) ? check_delaunay(d, out) : err;
+    return (err == VOR_OK) ? check_true_output(d, out) : err;
 }
