@@ -178,29 +178,6 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
 
 /* ---------------------------------------------------- edge envelopes */
 
-/* x * y as a 96-bit value hi * 2^32 + lo, for |x| < 2^62 and y < 2^31. */
-typedef struct wide {
-    int64_t hi;
-    uint32_t lo;
-} wide_t;
-
-static wide_t wide_mul(int64_t x, uint32_t y)
-{
-    /* x = xh 2^32 + xl with xl in [0, 2^32), |xh| < 2^30 */
-    uint32_t xl = (uint32_t)((uint64_t)x & 0xFFFFFFFFu);
-    int32_t xh = (int32_t)((x - (int64_t)xl) / 4294967296); /* exact: constant divisor */
-    uint64_t low = vor__mul_u32(xl, y);                     /* < 2^63 */
-    wide_t r;
-    r.hi = vor__mul_i32(xh, (int32_t)y) + (int64_t)(low >> 32); /* |.| < 2^62 */
-    r.lo = (uint32_t)(low & 0xFFFFFFFFu);
-    return r;
-}
-
-static int wide_greater(wide_t p, wide_t q)
-{
-    return p.hi > q.hi || (p.hi == q.hi && p.lo > q.lo);
-}
-
 /*
  * Continuous lower envelope of the lines val[p] - 2 key[p] t, positions
  * 0 .. m-1, keys non-decreasing (the band edges, where every real point
@@ -241,9 +218,11 @@ ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uin
                 int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
                 greater = left > right;
             } else {
-                wide_t left = wide_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
-                wide_t right = wide_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
-                greater = wide_greater(left, right);
+                vor__mw_i96_t left =
+                    vor__mw_i96_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
+                vor__mw_i96_t right =
+                    vor__mw_i96_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
+                greater = vor__mw_i96_greater(left, right);
             }
             if (!greater) {
                 break;
@@ -260,7 +239,7 @@ ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uin
  * value difference fits int32 and its product with a key difference (<
  * 2^15) fits int64 from one 32x32 multiply. Mid (2), M < 2^19: values <
  * 2^38 + 2^40 < 2^41, key differences < 2^20, products < 2^61 in int64.
- * Wide (0), M < 2^29: 96-bit products (wide_mul). */
+ * Wide (0), M < 2^29: 96-bit products (vor__mw_i96_mul). */
 static uint32_t envelope(const vor__euclid_t *e, const int32_t *key, const int64_t *val,
                          uint32_t m, uint32_t *stack)
 {
