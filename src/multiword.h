@@ -279,6 +279,21 @@ VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
     return 0;
 }
 
+/* |d| rounded down for negative d (~d = -d - 1), two instructions on most
+ * machines: vor__mw_bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1].
+ * The OR of bounds is below 2^k exactly when every bound is: one test
+ * picks the width a group of differences fits. */
+VOR__INLINE uint64_t vor__mw_bound(int64_t d)
+{
+    return (uint64_t)(d < 0 ? ~d : d);
+}
+
+/* Sign of v: -1, 0 or 1. */
+VOR__INLINE int vor__mw_sign64(int64_t v)
+{
+    return (v > 0) - (v < 0);
+}
+
 /* |d| for the difference of two int32 values: at most 2^32 - 1. */
 VOR__ALWAYS_INLINE uint32_t vor__mw_magnitude(int64_t d)
 {

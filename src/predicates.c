@@ -26,8 +26,8 @@ static const unsigned char next_of[3] = {1, 2, 0};
  * wider than 64 bits: compare the products' signs, then their magnitudes. */
 int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 {
-    int sp = sign_of(a) * sign_of(b);
-    int sq = sign_of(c) * sign_of(d);
+    int sp = vor__mw_sign64(a) * vor__mw_sign64(b);
+    int sq = vor__mw_sign64(c) * vor__mw_sign64(d);
     if (sp != sq) {
         return (sp > sq) ? 1 : -1;
     }
@@ -63,10 +63,11 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
     }
     int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
     int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
-    if ((bound(ax) | bound(ay) | bound(bx) | bound(by)) < 0x80000000u) {
+    uint64_t m = vor__mw_bound(ax) | vor__mw_bound(ay) | vor__mw_bound(bx) | vor__mw_bound(by);
+    if (m < 0x80000000u) {
         /* the differences fit int32: squares <= 2^62, sums of two <= 2^63
          * fit uint64 */
-        COUNT(stats, closer[VOR_TIER_NARROW]);
+        VOR__COUNT(stats, closer[VOR_TIER_NARROW]);
         uint64_t da = (uint64_t)vor__mul_i32((int32_t)ax, (int32_t)ax) +
                       (uint64_t)vor__mul_i32((int32_t)ay, (int32_t)ay);
         uint64_t db = (uint64_t)vor__mul_i32((int32_t)bx, (int32_t)bx) +
@@ -74,7 +75,7 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
         return (da > db) - (da < db);
     }
     /* squares < 2^64, sums of two < 2^65: keep the carry as a 65th bit */
-    COUNT(stats, closer[VOR_TIER_WIDE]);
+    VOR__COUNT(stats, closer[VOR_TIER_WIDE]);
     uint64_t sa = vor__mul_u32(vor__mw_magnitude(ax), vor__mw_magnitude(ax));
     uint64_t da = sa + vor__mul_u32(vor__mw_magnitude(ay), vor__mw_magnitude(ay));
     unsigned ca = (da < sa) ? 1u : 0u;
@@ -285,7 +286,7 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, vor_predicate_stats_t *stats)
 {
     int sign = 0;
-    COUNT(stats, orient2d_perturbed);
+    VOR__COUNT(stats, orient2d_perturbed);
     VOR_ASSERT(i != j && j != k && i != k);
     const uint32_t ids[3] = {i, j, k};
     /* the largest index is the origin; of the other two rows (call order),
@@ -313,9 +314,9 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
             enum row_kind first = kinds[low == 0u ? lo : hi];
             enum row_kind second = kinds[low == 1u ? lo : hi];
             if (first == ROW_POINT) { /* (x, y) over (0, 1) or (1, 0) */
-                sign = sign_of((second == ROW_DY) ? x[0] : -y[0]);
+                sign = vor__mw_sign64((second == ROW_DY) ? x[0] : -y[0]);
             } else if (second == ROW_POINT) { /* (0, 1) or (1, 0) over (x, y) */
-                sign = sign_of((first == ROW_DY) ? -x[1] : y[1]);
+                sign = vor__mw_sign64((first == ROW_DY) ? -x[1] : y[1]);
             } else { /* two unit rows */
                 sign = (first == second) ? 0 : (first == ROW_DX) ? 1 : -1;
             }
@@ -379,7 +380,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
     int sign = 0;
-    COUNT(stats, incircle_perturbed);
+    VOR__COUNT(stats, incircle_perturbed);
     const uint32_t ids[4] = {i, j, k, l};
     /* the site with the largest index is the origin; the three others, in
      * call order, are the minor's rows */
@@ -401,7 +402,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         const vor_point_t *o = &sites[ids[top]];
         x[r] = (int64_t)s->x - o->x;
         y[r] = (int64_t)s->y - o->y;
-        m |= bound(x[r]) | bound(y[r]);
+        m |= vor__mw_bound(x[r]) | vor__mw_bound(y[r]);
     }
     /* Small coordinates (the usual degeneracy: grids, nearby cocircular
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
@@ -424,7 +425,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
         int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
         int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
-        sign = sign_of((low % 2u == 0u) ? det : -det);
+        sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
         if (sign != 0) {
             return (top % 2 == 0) ? -sign : sign;
         }
@@ -460,7 +461,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                                 vor__mul_i32(e[1][c2], e[2][c1]);
                 det += vor__mul_i64_i32(minor, e[0][c]);
             }
-            sign = sign_of(det);
+            sign = vor__mw_sign64(det);
         }
     } else {
         static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
@@ -523,24 +524,24 @@ int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
     if (sign != 0) {
         return sign;
     }
-    COUNT(stats, closer_perturbed);
+    VOR__COUNT(stats, closer_perturbed);
     VOR_ASSERT(q != a && q != b && a != b);
     if (a < q || b < q) {
         bool a_first = a < b;
         /* L = a: -2 (qy - ay), then +1; L = b: 2 (qy - by), then -1 */
         int64_t coefficient = a_first ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
-        sign = sign_of(coefficient);
+        sign = vor__mw_sign64(coefficient);
         return (sign != 0) ? sign : (a_first ? 1 : -1);
     }
     /* L = q: 2 (by - ay), 2 (bx - ax), then M's dy and the dy product */
-    sign = sign_of((int64_t)pb->y - pa->y);
+    sign = vor__mw_sign64((int64_t)pb->y - pa->y);
     if (sign == 0) {
-        sign = sign_of((int64_t)pb->x - pa->x);
+        sign = vor__mw_sign64((int64_t)pb->x - pa->x);
     }
     if (sign == 0) {
         bool a_middle = a < b;
         int64_t coefficient = a_middle ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
-        sign = sign_of(coefficient);
+        sign = vor__mw_sign64(coefficient);
         if (sign == 0) {
             sign = a_middle ? -1 : 1;
         }
