@@ -1,6 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster_euclid.c - the fast exact path for Euclidean point sites.
+ * raster_euclid.c - the Euclidean family of the raster: the fast exact
+ * path for Euclidean point sites, the brute-force search it falls back on
+ * (VOR_RASTER_BRUTE, or a frame beyond its bit budget), and the distance
+ * pixels.
  *
  * Along a row v (world y relative to the first pixel), the squared
  * distance from pixel u to site (a, b) (coordinates relative to the first
@@ -40,6 +43,7 @@
  * in tiers (envelope below), 96 bits at most.
  */
 #include "raster.h"
+#include "raster_euclid.h"
 
 #include "multiword.h"
 
@@ -63,13 +67,13 @@
 #define NARROW ((int64_t)1 << 14)
 #define MID ((int64_t)1 << 19)
 
-#if defined(__GNUC__)
-#define ALWAYS_INLINE static inline __attribute__((always_inline))
-#else
-#define ALWAYS_INLINE static inline
-#endif
+/* Rows per culling band. */
+#define CULL_ROWS 16u
 
-int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n)
+/* True when the fast path's bit budget holds: every site within 2^29 of
+ * the first pixel centre, (width - 1) * step_x and (height - 1) * step_y
+ * below 2^29. */
+static int fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n)
 {
     if (vor__offset(frame->width - 1u, frame->step_x) >= BUDGET ||
         vor__offset(frame->height - 1u, frame->step_y) >= BUDGET) {
@@ -89,12 +93,12 @@ int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points,
 
 static int32_t rel_x(const vor__euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].x - e->origin_x);
+    return (int32_t)((int64_t)e->points[id].x - e->frame->origin_x);
 }
 
 static int32_t rel_y(const vor__euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].y - e->origin_y);
+    return (int32_t)((int64_t)e->points[id].y - e->frame->origin_y);
 }
 
 static int64_t square(int32_t x)
@@ -105,7 +109,7 @@ static int64_t square(int32_t x)
 /* The offset of the last pixel of a row, U = (width - 1) step_x < 2^29. */
 static int32_t frame_u(const vor__euclid_t *e)
 {
-    return (int32_t)(vor__offset(e->width - 1u, e->step_x));
+    return (int32_t)(vor__offset(e->frame->width - 1u, e->frame->step_x));
 }
 
 /* ---------------------------------------------------------------- sort */
@@ -189,7 +193,7 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
  * their crossing points do not decrease. Keys fit in (-2^29, 2^29) (key
  * differences < 2^30), values in [0, 2^61).
  */
-ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uint32_t m,
+VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uint32_t m,
                                      uint32_t *stack, int tier)
 {
     uint32_t top = 0;
@@ -269,17 +273,17 @@ typedef struct edge_lines {
     uint32_t m;    /* positions 0 .. m-1 */
 } edge_lines_t;
 
-ALWAYS_INLINE uint32_t edge_site(const edge_lines_t *l, uint32_t pos, int vertical)
+VOR__ALWAYS_INLINE uint32_t edge_site(const edge_lines_t *l, uint32_t pos, int vertical)
 {
     return vertical ? l->e->by_y[pos] : l->e->by_x[l->e->cand[pos]];
 }
 
-ALWAYS_INLINE int32_t edge_key(const edge_lines_t *l, uint32_t pos, int vertical)
+VOR__ALWAYS_INLINE int32_t edge_key(const edge_lines_t *l, uint32_t pos, int vertical)
 {
     return vertical ? rel_y(l->e, l->e->by_y[pos]) : l->e->key[pos];
 }
 
-ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical)
+VOR__ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical)
 {
     if (vertical) {
         uint32_t id = l->e->by_y[pos];
@@ -297,7 +301,7 @@ ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical
  * first piece not ending before lo: a later band, whose lo is larger, can
  * start there.
  */
-ALWAYS_INLINE uint32_t mark_pieces_impl(vor__euclid_t *e, const edge_lines_t *l,
+VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(vor__euclid_t *e, const edge_lines_t *l,
                                         const uint32_t *hull, uint32_t from, uint32_t count,
                                         int32_t lo, int32_t hi, uint8_t flags, int vertical)
 {
@@ -380,17 +384,11 @@ static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t fla
 
 /* ------------------------------------------------------------- prepare */
 
-void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
-                         const vor_point_t *points, uint32_t n)
+/* Sorts the sites and envelopes the frame's left and right edges; e's
+ * arrays carved, fits() true. */
+static void fast_prepare(vor__euclid_t *e)
 {
-    e->points = points;
-    e->n = n;
-    e->width = frame->width;
-    e->height = frame->height;
-    e->step_x = frame->step_x;
-    e->step_y = frame->step_y;
-    e->origin_x = frame->origin_x;
-    e->origin_y = frame->origin_y;
+    const uint32_t n = e->n;
     /* y order first: sorted_y holds the y of by_y until the x sort
      * (sorted_x the y of each site while sorting) */
     for (uint32_t k = 0; k < n; k++) {
@@ -401,8 +399,8 @@ void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
         e->sorted_y[p] = e->sorted_x[e->by_y[p]];
     }
 
-    int64_t reach = vor__offset(e->width - 1u, e->step_x);
-    int64_t tall = vor__offset(e->height - 1u, e->step_y);
+    int64_t reach = vor__offset(e->frame->width - 1u, e->frame->step_x);
+    int64_t tall = vor__offset(e->frame->height - 1u, e->frame->step_y);
     int64_t most = reach > tall ? reach : tall;
     for (uint32_t k = 0; k < n; k++) {
         int64_t a = rel_x(e, k), b = rel_y(e, k);
@@ -428,7 +426,7 @@ void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
     }
     /* quotients of the row envelope stay below width: bits enough */
     uint32_t bits = 1;
-    while (bits < 31u && ((uint32_t)1 << bits) < e->width) {
+    while (bits < 31u && ((uint32_t)1 << bits) < e->frame->width) {
         bits++;
     }
     e->quotient_bits = bits;
@@ -494,13 +492,13 @@ static int64_t pack_line(int32_t a, int32_t b)
     return (int64_t)((hi << 32) | lo); /* < 2^62 */
 }
 
-ALWAYS_INLINE int32_t line_a(int64_t line)
+VOR__ALWAYS_INLINE int32_t line_a(int64_t line)
 {
     return (int32_t)(uint32_t)((uint64_t)line & 0xFFFFFFFFu) - (int32_t)BUDGET;
 }
 
 /* v - b, from v + 2^29 */
-ALWAYS_INLINE int32_t line_dy(int64_t line, int32_t v_biased)
+VOR__ALWAYS_INLINE int32_t line_dy(int64_t line, int32_t v_biased)
 {
     return v_biased - (int32_t)(line >> 32);
 }
@@ -556,7 +554,7 @@ static uint32_t row_envelope_narrow(const vor__euclid_t *e, int32_t v, vor__run_
 {
     const int64_t *line = e->val;
     const uint32_t m = e->cand_count;
-    const uint32_t step = (uint32_t)e->step_x;
+    const uint32_t step = (uint32_t)e->frame->step_x;
     const uint32_t last_u = (uint32_t)frame_u(e);
     const uint32_t bits = e->quotient_bits;
     const int32_t vb = v + NARROW_BIAS;
@@ -626,7 +624,7 @@ static uint32_t row_envelope_wide(const vor__euclid_t *e, int32_t v, vor__run_t 
     const uint32_t *site = e->cand;
     const int64_t *line = e->val;
     const uint32_t m = e->cand_count;
-    const int32_t step = e->step_x;
+    const int32_t step = e->frame->step_x;
     const int32_t last_u = frame_u(e);
     const uint32_t bits = e->quotient_bits;
     const int32_t vb = v + (int32_t)BUDGET;
@@ -732,14 +730,14 @@ static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
  * rectangle's bottom edge: the next band's first row, if any. */
 static uint32_t band_last_row(const vor__euclid_t *e, uint32_t first)
 {
-    uint32_t last = first + (VOR__CULL_ROWS - 1u);
-    return (last >= e->height || last < first) ? e->height - 1u : last;
+    uint32_t last = first + (CULL_ROWS - 1u);
+    return (last >= e->frame->height || last < first) ? e->frame->height - 1u : last;
 }
 
 static uint32_t band_bottom(const vor__euclid_t *e, uint32_t first)
 {
     uint32_t last = band_last_row(e, first);
-    return (last + 1u < e->height) ? last + 1u : last;
+    return (last + 1u < e->frame->height) ? last + 1u : last;
 }
 
 /* The largest squared distance from a pixel centre of row offset v to
@@ -751,11 +749,11 @@ static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *ru
     uint64_t most = 0;
     for (uint32_t t = 0; t < count; t++) {
         uint32_t id = e->cand[runs[t].site];
-        uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->width;
+        uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->frame->width;
         int32_t a = rel_x(e, id);
         int64_t dy2 = square(rel_y(e, id) - v);
-        int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->step_x) - a) + dy2;
-        int64_t d2 = square((int32_t)vor__offset(end - 1u, e->step_x) - a) + dy2;
+        int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->frame->step_x) - a) + dy2;
+        int64_t d2 = square((int32_t)vor__offset(end - 1u, e->frame->step_x) - a) + dy2;
         uint64_t d = (uint64_t)(d1 > d2 ? d1 : d2);
         most = d > most ? d : most;
     }
@@ -786,8 +784,8 @@ static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *ru
 static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
 {
     const uint32_t last = band_last_row(e, first);
-    const int32_t v0 = (int32_t)(vor__offset(first, e->step_y));
-    const int32_t v1 = (int32_t)(vor__offset(band_bottom(e, first), e->step_y));
+    const int32_t v0 = (int32_t)(vor__offset(first, e->frame->step_y));
+    const int32_t v1 = (int32_t)(vor__offset(band_bottom(e, first), e->frame->step_y));
     const int32_t u1 = frame_u(e);
     const uint32_t n = e->n;
     if (first == 0u) { /* the frame's top edge, over every site */
@@ -831,7 +829,7 @@ static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
         }
         /* the sites below the edge, in y order, while b - v1 - h <= sqrt(E)
          * (d below 2^30 when positive: its square fits) */
-        const int64_t h = (int64_t)(((uint32_t)e->step_x + 1u) / 2u);
+        const int64_t h = (int64_t)(((uint32_t)e->frame->step_x + 1u) / 2u);
         for (; p < n; p++) {
             uint32_t id = e->by_y[p];
             int64_t d = (int64_t)rel_y(e, id) - v1 - h;
@@ -861,17 +859,18 @@ static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
     e->band_valid = 1;
 }
 
-uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+/* Runs of row j by the fast path. */
+static uint32_t fast_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
 {
     if (!e->band_valid || j > e->band_last) {
         select_band(e, j, runs);
     }
-    const int32_t v = (int32_t)(vor__offset(j, e->step_y));
+    const int32_t v = (int32_t)(vor__offset(j, e->frame->step_y));
     const uint32_t count = row_envelope(e, v, runs);
-    if (j == e->band_last && j + 1u < e->height) {
+    if (j == e->band_last && j + 1u < e->frame->height) {
         /* this row's sites, at the next band's bottom edge */
         uint32_t bottom = band_bottom(e, j + 1u);
-        e->reach_most = farthest(e, (int32_t)vor__offset(bottom, e->step_y), runs, count);
+        e->reach_most = farthest(e, (int32_t)vor__offset(bottom, e->frame->step_y), runs, count);
         e->reach_row = j;
     }
     /* (first pixel, list position) to (end, site) */
@@ -880,7 +879,135 @@ uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
         runs[t].end = runs[t + 1u].end;
         runs[t].site = site[runs[t].site];
     }
-    runs[count - 1u].end = e->width;
+    runs[count - 1u].end = e->frame->width;
     runs[count - 1u].site = site[runs[count - 1u].site];
     return count;
+}
+
+/* ------------------------------------------------------------ distances */
+
+/* floor(sqrt(x)) by the bit-by-bit method (no division). */
+static uint32_t isqrt64(uint64_t x)
+{
+    uint64_t root = 0;
+    uint64_t bit = (uint64_t)1 << 62;
+    while (bit > x) {
+        bit >>= 2;
+    }
+    while (bit != 0u) { /* 32 steps at most: bit moves 2 places each */
+        if (x >= root + bit) {
+            x -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)root;
+}
+
+/* |q - s|^2 exactly, as *high (0 or 1) and the low 64 bits returned:
+ * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
+static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
+{
+    uint32_t ax = vor__mw_magnitude((int64_t)qx - s->x);
+    uint32_t ay = vor__mw_magnitude((int64_t)qy - s->y);
+    uint64_t dx2 = vor__mul_u32(ax, ax), dy2 = vor__mul_u32(ay, ay);
+    uint64_t low = dx2 + dy2;
+    *high = low < dx2 ? 1u : 0u;
+    return low;
+}
+
+/* floor(|q - s|), saturated at UINT32_MAX: from 2^64 on the root is
+ * >= 2^32. */
+static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
+{
+    uint32_t high;
+    uint64_t low = squared_distance(qx, qy, s, &high);
+    return high != 0u ? 0xFFFFFFFFu : isqrt64(low);
+}
+
+/* ---------------------------------------------------------- brute force */
+
+/* The nearest site to q by exact squared distances, ties to the smaller
+ * index. */
+static uint32_t brute_nearest(const vor__euclid_t *e, int32_t qx, int32_t qy)
+{
+    uint32_t best = 0, best_high;
+    uint64_t best_low = squared_distance(qx, qy, &e->points[0], &best_high);
+    for (uint32_t k = 1; k < e->n; k++) {
+        uint32_t high;
+        uint64_t low = squared_distance(qx, qy, &e->points[k], &high);
+        if (high < best_high || (high == best_high && low < best_low)) {
+            best = k;
+            best_high = high;
+            best_low = low;
+        }
+    }
+    return best;
+}
+
+static uint32_t brute_row(const vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+{
+    const vor_raster_frame_t *frame = e->frame;
+    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < frame->width; i++) {
+        int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
+        count = vor__run_push(runs, count, i, brute_nearest(e, qx, qy));
+    }
+    return count;
+}
+
+/* -------------------------------------------------------------- family */
+
+/* Carves the fast path's arrays from the work memory after the rows:
+ * 8-byte arrays first, then 4-byte ones, then bytes, so that every array
+ * is aligned (45 n bytes). */
+static void carve(vor__euclid_t *e, uint8_t *base)
+{
+    const size_t n = e->n;
+    e->val = (int64_t *)(void *)base;
+    uint32_t *words = (uint32_t *)(void *)(base + n * sizeof(int64_t));
+    e->by_x = words;
+    e->by_y = words + n;
+    e->cand = words + 2u * n;
+    e->key = (int32_t *)(void *)(words + 3u * n);
+    e->stack = words + 4u * n;
+    e->left = words + 5u * n;
+    e->right = words + 6u * n;
+    e->sorted_x = (int32_t *)(void *)(words + 7u * n);
+    e->sorted_y = (int32_t *)(void *)(words + 8u * n);
+    e->mark = (uint8_t *)(void *)(words + 9u * n);
+}
+
+void vor__euclid_prepare(vor__euclid_t *e, const vor__raster_t *r)
+{
+    e->frame = r->frame;
+    e->points = r->sites->points;
+    e->n = r->sites->count;
+    e->fast = !r->brute && fits(e->frame, e->points, e->n);
+    if (e->fast) {
+        carve(e, r->rest);
+        fast_prepare(e);
+    }
+}
+
+uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+{
+    return e->fast ? fast_row(e, j, runs) : brute_row(e, j, runs);
+}
+
+void vor__euclid_distances(const vor__euclid_t *e, uint32_t j, const vor__run_t *runs,
+                           uint32_t count, uint32_t *px)
+{
+    const vor_raster_frame_t *frame = e->frame;
+    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        for (; i < runs[r].end; i++) {
+            int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
+            px[i] = euclid_distance(qx, qy, &e->points[runs[r].site]);
+        }
+    }
 }

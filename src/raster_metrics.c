@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster_metrics.c - vor_raster: every metric. Euclidean point sites go
- * to vor_raster_euclid (raster.c); this file does the others: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
- * compound), farthest-point, Hausdorff point sets, segments, filled
- * polygons and multiplicatively weighted polylines (Teramoto: section 2.3
- * defines the generalised diagrams, chapter 5 the distances). Each pixel takes the site of smallest distance
- * (largest for the farthest-point diagram), ties to the smaller index:
- * Definition 2.2 with another distance.
+ * raster_metrics.c - the raster's family of other metrics, all but
+ * Euclidean point sites (raster_euclid.c): L1, L-infinity, Lp, elliptic,
+ * weighted (multiplicative, additive, compound), farthest-point, Hausdorff
+ * point sets, segments, filled polygons and multiplicatively weighted
+ * polylines (Teramoto: section 2.3 defines the generalised diagrams,
+ * chapter 5 the distances). Each pixel takes the site of smallest
+ * distance (largest for the farthest-point diagram), ties to the smaller
+ * index: Definition 2.2 with another distance.
  *
  * To rank sites, distances are never computed, only compared, each
  * through a "key" that holds an exact integer (or rational) image of the
@@ -25,29 +26,12 @@
  * block's survivors, so a band costs O(n) bounds per block.
  */
 #include "raster.h"
+#include "raster_metrics.h"
 
 #include "multiword.h"
 
-/* The state of a frame: the exact per-metric comparisons, the brute-force
- * search, and the culling of sites per tile. */
-typedef struct metric_frame {
-    const vor_raster_sites_t *sites;
-    enum vor_metric metric;
-    uint32_t n;
-    uint32_t width, height;
-    int32_t origin_x, origin_y, step_x, step_y;
-    uint32_t limbs;      /* limbs of the wide comparisons of this frame */
-    int lp_narrow;       /* LP: every sum below 2^128 */
-    uint64_t det;        /* ELLIPTIC: a c - b^2 */
-    uint32_t trace;      /* ELLIPTIC: a + c */
-    int brute;           /* every site at every pixel, no culling */
-    uint32_t *pool;      /* culling: the block list, then the tile lists */
-    size_t pool_words;
-    uint32_t tile_width; /* columns per tile (a power of two, >= 16) */
-    uint32_t tiles;
-    uint32_t band_first; /* rows of the current culling band */
-    int band_valid;
-} metric_frame_t;
+/* Rows per culling tile. */
+#define TILE_ROWS 16u
 
 /* -------------------------------------------------------------- widths */
 
@@ -117,7 +101,7 @@ static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
 
 /* The key of a point site at offsets of magnitude (ax, ay): every metric
  * whose distance grows with |dx| and with |dy|. */
-static void point_key(const metric_frame_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
+static void point_key(const vor__metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -287,7 +271,7 @@ static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u1
 
 /* Negative when key a ranks before key b (nearer; farther for FARTHEST),
  * 0 when they tie. */
-static int key_compare(const metric_frame_t *m, const rank_key_t *a, const rank_key_t *b)
+static int key_compare(const vor__metric_t *m, const rank_key_t *a, const rank_key_t *b)
 {
     switch (m->metric) {
     case VOR_METRIC_LP:
@@ -376,7 +360,7 @@ static uint64_t polyline_weight2(const vor_raster_sites_t *s, uint32_t site)
 }
 
 /* The key of site `site` at the pixel centre (qx, qy). */
-static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
+static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -545,7 +529,7 @@ VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
  * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
  * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
  * at most 33 steps, each one power below 2^256. */
-static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32_t ax,
+static uint32_t lp_distance(const vor__metric_t *m, const rank_key_t *k, uint32_t ax,
                             uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
@@ -604,7 +588,7 @@ static uint32_t rational_distance(const rank_key_t *k)
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
  * (qx, qy): the floor of its distance under m's metric, saturated (ADD
  * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
-static uint32_t metric_distance(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t qy)
+static uint32_t metric_distance(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
     site_key(m, site, qx, qy, &k);
@@ -680,7 +664,7 @@ VOR__ALWAYS_INLINE vor__mw_u128_t farthest_corner(const vor_point_t *p, const re
  *   POLYLINE: the same bounding-box gap below, the nearest vertex's
  *     farthest corner above, both divided by the site's w^2.
  */
-static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
+static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -779,7 +763,7 @@ static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int 
 /* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
  * first (alone or tied) at some pixel of r, in index order, into out;
  * returns their number, or ALL_SITES when more than capacity survive. */
-static uint32_t select_sites(const metric_frame_t *m, const rect_t *r, const uint32_t *list,
+static uint32_t select_sites(const vor__metric_t *m, const rect_t *r, const uint32_t *list,
                              uint32_t count, uint32_t *out, size_t capacity)
 {
     rank_key_t keys[2], best_case;
@@ -806,12 +790,12 @@ static uint32_t select_sites(const metric_frame_t *m, const rect_t *r, const uin
     return kept;
 }
 
-static rect_t columns_rect(const metric_frame_t *m, uint32_t first, uint32_t last, int32_t y0,
+static rect_t columns_rect(const vor__metric_t *m, uint32_t first, uint32_t last, int32_t y0,
                            int32_t y1)
 {
     rect_t r;
-    r.x0 = (int32_t)(m->origin_x + vor__offset(first, m->step_x));
-    r.x1 = (int32_t)(m->origin_x + vor__offset(last, m->step_x));
+    r.x0 = (int32_t)(m->frame->origin_x + vor__offset(first, m->frame->step_x));
+    r.x1 = (int32_t)(m->frame->origin_x + vor__offset(last, m->frame->step_x));
     r.y0 = y0;
     r.y1 = y1;
     return r;
@@ -819,22 +803,22 @@ static rect_t columns_rect(const metric_frame_t *m, uint32_t first, uint32_t las
 
 /* Fills the pool with the tile lists of the band starting at band_first:
  * per tile, a count (or ALL_SITES) and that many site ids. */
-static void cull_band(metric_frame_t *m)
+static void cull_band(vor__metric_t *m)
 {
-    uint32_t last_row = m->band_first + VOR__CULL_ROWS - 1u;
-    if (last_row >= m->height) {
-        last_row = m->height - 1u;
+    uint32_t last_row = m->band_first + TILE_ROWS - 1u;
+    if (last_row >= m->frame->height) {
+        last_row = m->frame->height - 1u;
     }
-    int32_t y0 = (int32_t)(m->origin_y + vor__offset(m->band_first, m->step_y));
-    int32_t y1 = (int32_t)(m->origin_y + vor__offset(last_row, m->step_y));
+    int32_t y0 = (int32_t)(m->frame->origin_y + vor__offset(m->band_first, m->frame->step_y));
+    int32_t y1 = (int32_t)(m->frame->origin_y + vor__offset(last_row, m->frame->step_y));
     uint32_t *block = m->pool;
     uint32_t *lists = m->pool + m->n;
-    size_t room = m->pool_words - m->n; /* >= tiles (metric_prepare) */
+    size_t room = m->pool_words - m->n; /* >= tiles (vor__metric_prepare) */
     size_t at = 0;
     uint32_t tile = 0;
     uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
-    for (uint32_t first = 0; first < m->width; first += block_columns) {
-        uint32_t end = m->width - first > block_columns ? first + block_columns : m->width;
+    for (uint32_t first = 0; first < m->frame->width; first += block_columns) {
+        uint32_t end = m->frame->width - first > block_columns ? first + block_columns : m->frame->width;
         rect_t r = columns_rect(m, first, end - 1u, y0, y1);
         uint32_t block_count = select_sites(m, &r, NULL, m->n, block, m->n);
         for (uint32_t column = first; column < end; column += m->tile_width) {
@@ -853,7 +837,7 @@ static void cull_band(metric_frame_t *m)
 /* The first-ranked site at (qx, qy) among list[0..count) (NULL: all),
  * which is in increasing index order: a later site takes over only when
  * strictly better, so ties stay with the smaller index. */
-static uint32_t nearest(const metric_frame_t *m, const uint32_t *list, uint32_t count, int32_t qx,
+static uint32_t nearest(const vor__metric_t *m, const uint32_t *list, uint32_t count, int32_t qx,
                         int32_t qy)
 {
     rank_key_t keys[2];
@@ -872,20 +856,20 @@ static uint32_t nearest(const metric_frame_t *m, const uint32_t *list, uint32_t 
 }
 
 /* Runs of row j (rows requested in increasing order); returns their count. */
-static uint32_t metric_row(metric_frame_t *m, uint32_t j, vor__run_t *runs)
+uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
 {
-    if (!m->brute && (!m->band_valid || j >= m->band_first + VOR__CULL_ROWS)) {
-        m->band_first = j - j % VOR__CULL_ROWS;
+    if (!m->brute && (!m->band_valid || j >= m->band_first + TILE_ROWS)) {
+        m->band_first = j - j % TILE_ROWS;
         m->band_valid = 1;
         cull_band(m);
     }
-    int32_t qy = (int32_t)(m->origin_y + vor__offset(j, m->step_y));
+    int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     const uint32_t *lists = m->pool + m->n;
     size_t at = 0;
     uint32_t count = 0;
-    uint32_t span = m->brute ? m->width : m->tile_width;
-    for (uint32_t first = 0; first < m->width; first += span) {
-        uint32_t end = m->width - first > span ? first + span : m->width;
+    uint32_t span = m->brute ? m->frame->width : m->tile_width;
+    for (uint32_t first = 0; first < m->frame->width; first += span) {
+        uint32_t end = m->frame->width - first > span ? first + span : m->frame->width;
         const uint32_t *list = NULL;
         uint32_t candidates = m->n;
         if (!m->brute) {
@@ -896,7 +880,7 @@ static uint32_t metric_row(metric_frame_t *m, uint32_t j, vor__run_t *runs)
             at += 1u + (list != NULL ? candidates : 0u);
         }
         for (uint32_t i = first; i < end; i++) {
-            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
+            int32_t qx = (int32_t)(m->frame->origin_x + vor__offset(i, m->frame->step_x));
             count = vor__run_push(runs, count, i, nearest(m, list, candidates, qx, qy));
         }
     }
@@ -905,9 +889,7 @@ static uint32_t metric_row(metric_frame_t *m, uint32_t j, vor__run_t *runs)
 
 /* ------------------------------------------------------------ set up */
 
-/* VOR_OK when the metric's fields are usable (weights, exponent, form,
- * offsets); else VOR_ERR_ARG. Reads every site once. */
-static int metric_check(const vor_raster_sites_t *s)
+int vor__metric_check(const vor_raster_sites_t *s)
 {
     switch (s->metric) {
     case VOR_METRIC_L1:
@@ -980,22 +962,19 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
-/* Sets m up for frame (checked) and sites (checked by metric_check),
- * with pool_words words of culling memory (at least 2 count + 2). */
-static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
-                           const vor_raster_sites_t *s, int brute, uint32_t *pool, size_t pool_words)
+void vor__metric_prepare(vor__metric_t *m, const vor__raster_t *r)
 {
+    const vor_raster_frame_t *frame = r->frame;
+    const vor_raster_sites_t *s = r->sites;
+    /* the culling pool: the work memory after the rows, at least 12 n + 14
+     * words (the macro's 48 n + 64 bytes, less the rows and alignment) */
+    const size_t pool_words = r->rest_bytes / sizeof(uint32_t);
+    m->frame = frame;
     m->sites = s;
     m->metric = s->metric;
     m->n = s->count;
-    m->width = frame->width;
-    m->height = frame->height;
-    m->origin_x = frame->origin_x;
-    m->origin_y = frame->origin_y;
-    m->step_x = frame->step_x;
-    m->step_y = frame->step_y;
-    m->brute = brute;
-    m->pool = pool;
+    m->brute = r->brute;
+    m->pool = (uint32_t *)(void *)r->rest;
     m->pool_words = pool_words;
     m->band_valid = 0;
     m->band_first = 0;
@@ -1076,59 +1055,17 @@ static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
     m->tiles = (frame->width + m->tile_width - 1u) >> shift;
 }
 
-/* ------------------------------------------------------- entry point */
+/* --------------------------------------------------------- distances */
 
-/* The DISTANCE pixels of row j under m's metric. */
-static void metric_distances(const metric_frame_t *m, uint32_t j, const vor__run_t *runs,
-                             uint32_t count, uint32_t *px)
+void vor__metric_distances(const vor__metric_t *m, uint32_t j, const vor__run_t *runs,
+                           uint32_t count, uint32_t *px)
 {
-    int32_t qy = (int32_t)(m->origin_y + vor__offset(j, m->step_y));
+    int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         for (; i < runs[r].end; i++) {
-            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
+            int32_t qx = (int32_t)(m->frame->origin_x + vor__offset(i, m->frame->step_x));
             px[i] = metric_distance(m, runs[r].site, qx, qy);
         }
     }
-}
-
-int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-               const vor_raster_output_t *out, void *work, size_t work_bytes)
-{
-    if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
-        return vor_raster_euclid(frame, sites, out, work, work_bytes);
-    }
-    size_t row_bytes;
-    int status = vor__raster_check(frame, sites, out, work, work_bytes, &row_bytes);
-    if (status != VOR_OK) {
-        return status;
-    }
-    if (metric_check(sites) != VOR_OK) {
-        return VOR_ERR_ARG;
-    }
-    /* the two rows of runs, then the culling pool: at least 12 n + 14
-     * words (the macro's 48 n + 64 bytes, less alignment) */
-    vor__run_t *rows[2];
-    size_t rows_bytes = vor__raster_rows(frame, work, rows);
-    metric_frame_t m;
-    metric_prepare(&m, frame, sites, out->method == VOR_RASTER_BRUTE,
-                   (uint32_t *)(void *)((uint8_t *)work + rows_bytes),
-                   (work_bytes - rows_bytes) / sizeof(uint32_t));
-    vor__bands_t bands;
-    vor__bands_begin(&bands, frame, sites->count, out, rows, row_bytes);
-    for (uint32_t j = 0; j <= frame->height; j++) { /* j = height: the end */
-        uint32_t count = 0;
-        if (j < frame->height) {
-            vor__run_t *runs = vor__bands_runs(&bands);
-            count = metric_row(&m, j, runs);
-            if (out->kind == VOR_RASTER_DISTANCE) {
-                metric_distances(&m, j, runs, count, vor__bands_pixels(&bands));
-            }
-        }
-        status = vor__bands_put_flush(&bands, count);
-        if (status != 0) {
-            return status;
-        }
-    }
-    return VOR_OK;
 }
