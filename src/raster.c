@@ -151,11 +151,6 @@ static void bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32
     b->hold = out->kind == VOR_RASTER_BOUNDARY;
 }
 
-void *vor__bands_pixels(const vor__bands_t *b)
-{
-    return (uint8_t *)b->out->band + (size_t)(b->next - b->band_first) * b->row_bytes;
-}
-
 uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
 {
     const vor_raster_output_t *out = b->out;

@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * raster.h - the raster core (raster.c): the checks and set-up every
- * entry point shares, the rows of runs, and the band writer that turns
- * them into output pixels. Private to the library.
+ * entry point shares, the rows of runs, the scan of the rows, and the
+ * band writer that turns them into output pixels. Private to the library.
  *
- * The metric families (raster_euclid.h, raster_metrics.h) produce rows of
- * runs for the frame set up here; the core knows nothing of distances.
- * The entry points (raster_scan.c) tie a family to the core.
+ * The metric families (raster_euclid.c, raster_metrics.c) produce rows of
+ * runs for the request set up here, and their entry points end with the
+ * core's scan; the core knows nothing of distances.
  *
  * A row of labels travels as runs: run k covers pixels [end of run k-1,
  * end of run k) and belongs to one site. Consecutive runs have different
@@ -37,11 +37,11 @@ static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t 
     return count + 1u;
 }
 
-/* The band writer (raster.c). An entry point produces the rows top down
- * into vor__bands_runs (and, for DISTANCE, writes their pixels at
- * vor__bands_pixels itself) and hands each to vor__bands_put_flush,
- * then calls it once more with no row (the end); each full band goes to
- * the output's flush. BOUNDARY rows are written one row late, when
+/* The band writer (raster.c). The scan (vor__raster_scan, below) has
+ * the rows produced top down into vor__bands_runs (and, for DISTANCE,
+ * their pixels at vor__bands_pixels) and hands each to
+ * vor__bands_put_flush, then calls it once more with no row (the end);
+ * each full band goes to the output's flush. BOUNDARY rows are written one row late, when
  * the row below is known. */
 typedef struct vor__bands {
     const vor_raster_output_t *out;
@@ -63,7 +63,10 @@ static inline vor__run_t *vor__bands_runs(const vor__bands_t *b)
 }
 
 /* Where the next row's pixels go in the band (not for BOUNDARY). */
-void *vor__bands_pixels(const vor__bands_t *b);
+static inline void *vor__bands_pixels(const vor__bands_t *b)
+{
+    return (uint8_t *)b->out->band + (size_t)(b->next - b->band_first) * b->row_bytes;
+}
 
 /* Takes the next row (count runs; the end when all rows were put).
  * Returns the rows of a band to flush now, or 0. */
@@ -83,9 +86,9 @@ VOR__ALWAYS_INLINE int vor__bands_put_flush(vor__bands_t *b, uint32_t count)
 }
 
 /* One request, set up the same way for every metric: vor__raster_check
- * takes it apart, the family makes its own checks, vor__raster_start
- * carves the two rows of runs from the start of the work memory and
- * starts the bands; the family's state takes the rest. */
+ * takes it apart and divides the work memory (the two rows of runs at its
+ * start, the family's state in the rest), the family makes its own checks
+ * and prepares its state, and vor__raster_scan renders. */
 typedef struct vor__raster {
     const vor_raster_frame_t *frame; /* the caller's: read, never copied */
     const vor_raster_sites_t *sites;
@@ -106,8 +109,45 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       void *work, size_t work_bytes);
 
 /* Starts the bands of a checked request (zeroes out->areas): the first
- * write to the caller's memory, after every check. */
+ * write to the caller's memory, after every check (vor__raster_scan). */
 void vor__raster_start(vor__raster_t *r);
+
+/* A family's producers for vor__raster_scan: the runs of row j (rows in
+ * increasing order) into runs, their count returned; and the DISTANCE
+ * pixels of those runs. state is the family's own. */
+typedef uint32_t vor__raster_row_fn(void *state, uint32_t j, vor__run_t *runs);
+typedef void vor__raster_distances_fn(const void *state, uint32_t j, const vor__run_t *runs,
+                                      uint32_t count, uint32_t *px);
+
+/* The scan every entry point ends with: starts the bands, then takes the
+ * rows top down from the family's producers into the band writer, and
+ * hands each full band to the output's flush. VOR_OK, or the flush's
+ * nonzero value. Forced inline with the family's own static producers:
+ * the calls are then direct (no function pointer hides which family a
+ * firmware links, and tools/stack-depth.py sees every call), the
+ * producers inline into the entry point as the compiler sees fit, and the
+ * caller's flush is called from the public entry point. */
+VOR__ALWAYS_INLINE int vor__raster_scan(vor__raster_t *r, void *state, vor__raster_row_fn *row,
+                                        vor__raster_distances_fn *distances)
+{
+    const uint32_t height = r->frame->height;
+    vor__raster_start(r);
+    for (uint32_t j = 0; j <= height; j++) { /* j = height: the end */
+        uint32_t count = 0;
+        if (j < height) {
+            vor__run_t *runs = vor__bands_runs(&r->bands);
+            count = row(state, j, runs);
+            if (r->out->kind == VOR_RASTER_DISTANCE) {
+                distances(state, j, runs, count, vor__bands_pixels(&r->bands));
+            }
+        }
+        int status = vor__bands_put_flush(&r->bands, count);
+        if (status != 0) {
+            return status;
+        }
+    }
+    return VOR_OK;
+}
 
 /* i * step for a pixel index i < 2^31 and a step in (0, 2^31): below
  * 2^62, and without a 64-bit multiply call on Cortex-M0. */

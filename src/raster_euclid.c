@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster_euclid.c - the Euclidean family of the raster: the fast exact
- * path for Euclidean point sites, the brute-force search it falls back on
- * (VOR_RASTER_BRUTE, or a frame beyond its bit budget), and the distance
- * pixels.
+ * raster_euclid.c - the Euclidean family of the raster, vor_raster_euclid:
+ * the fast exact path for Euclidean point sites, the brute-force search it
+ * falls back on (VOR_RASTER_BRUTE, or a frame beyond its bit budget), and
+ * the distance pixels, on the raster core (raster.h). It links none of the
+ * other metrics.
  *
  * Along a row v (world y relative to the first pixel), the squared
  * distance from pixel u to site (a, b) (coordinates relative to the first
@@ -34,7 +35,7 @@
  * per band, O(n) for the marks and O(candidates) for the edge; per row,
  * O(candidates) for the envelope and nothing per pixel.
  *
- * Bit budget (vor__euclid_fits): every relative coordinate a, b lies in
+ * Bit budget (fits): every relative coordinate a, b lies in
  * (-2^29, 2^29) and every pixel offset u, v in [0, 2^29). Then |v - b| <
  * 2^30, values a^2 + (v - b)^2 < 2^58 + 2^60 < 2^61, |2 a u| < 2^59, and
  * the difference of two lines at a pixel, a difference of two squared
@@ -43,7 +44,6 @@
  * in tiers (envelope below), 96 bits at most.
  */
 #include "raster.h"
-#include "raster_euclid.h"
 
 #include "multiword.h"
 
@@ -70,6 +70,37 @@
 /* Rows per culling band. */
 #define CULL_ROWS 16u
 
+/* The family's state: the frame and sites of the request, and the fast
+ * path's arrays, which live in the work memory after the rows (n entries
+ * per array). */
+typedef struct euclid {
+    const vor_raster_frame_t *frame;
+    const vor_point_t *points;
+    uint32_t n;
+    int fast;             /* the fast path; else the brute-force search */
+    uint32_t *by_x;       /* site ids sorted by (x, id) */
+    uint32_t *by_y;       /* site ids sorted by (y, id) */
+    int32_t *sorted_x;    /* relative x of by_x[p] */
+    int32_t *sorted_y;    /* relative y of by_x[p] */
+    uint8_t *mark;        /* per site: candidate flags of this band and the next */
+    uint32_t *cand;       /* the band's list: sites in (x, id) order (also scratch) */
+    int64_t *val;         /* the list's lines, packed (also scratch: edge values) */
+    int32_t *key;         /* scratch: edge envelope keys */
+    uint32_t *stack;      /* scratch: edge envelope stack */
+    uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
+    uint32_t *right;      /* and of the right edge */
+    uint32_t left_count, right_count;
+    uint32_t left_next, right_next; /* first pieces that may meet the next band */
+    uint32_t cand_count;
+    uint32_t band_first, band_last; /* rows of the current culling band */
+    uint32_t inside_next;           /* by_y position: first site not yet below the band */
+    uint32_t quotient_bits;         /* 2^quotient_bits >= width */
+    uint32_t reach_row;             /* the last row of the previous band ... */
+    uint64_t reach_most;            /* ... and its largest squared distance to a site */
+    int band_valid;
+    int narrow;          /* tier: 1 narrow (< 2^14), 2 mid (< 2^19), 0 wide */
+} euclid_t;
+
 /* True when the fast path's bit budget holds: every site within 2^29 of
  * the first pixel centre, (width - 1) * step_x and (height - 1) * step_y
  * below 2^29. */
@@ -91,12 +122,12 @@ static int fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint
 
 /* ------------------------------------------------------------- sites */
 
-static int32_t rel_x(const vor__euclid_t *e, uint32_t id)
+static int32_t rel_x(const euclid_t *e, uint32_t id)
 {
     return (int32_t)((int64_t)e->points[id].x - e->frame->origin_x);
 }
 
-static int32_t rel_y(const vor__euclid_t *e, uint32_t id)
+static int32_t rel_y(const euclid_t *e, uint32_t id)
 {
     return (int32_t)((int64_t)e->points[id].y - e->frame->origin_y);
 }
@@ -107,7 +138,7 @@ static int64_t square(int32_t x)
 }
 
 /* The offset of the last pixel of a row, U = (width - 1) step_x < 2^29. */
-static int32_t frame_u(const vor__euclid_t *e)
+static int32_t frame_u(const euclid_t *e)
 {
     return (int32_t)(vor__offset(e->frame->width - 1u, e->frame->step_x));
 }
@@ -244,7 +275,7 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
  * 2^15) fits int64 from one 32x32 multiply. Mid (2), M < 2^19: values <
  * 2^38 + 2^40 < 2^41, key differences < 2^20, products < 2^61 in int64.
  * Wide (0), M < 2^29: 96-bit products (vor__mw_i96_mul). */
-static uint32_t envelope(const vor__euclid_t *e, const int32_t *key, const int64_t *val,
+static uint32_t envelope(const euclid_t *e, const int32_t *key, const int64_t *val,
                          uint32_t m, uint32_t *stack)
 {
     if (e->narrow == 1) {
@@ -268,7 +299,7 @@ static int64_t crossing_scaled(int32_t dkey, int32_t bound)
  * sites by_x[cand[pos]]) or a vertical one at offset u (key b, value
  * (a - u)^2 + b^2, positions into by_y). */
 typedef struct edge_lines {
-    const vor__euclid_t *e;
+    const euclid_t *e;
     int32_t u;     /* vertical edges: the edge's offset */
     uint32_t m;    /* positions 0 .. m-1 */
 } edge_lines_t;
@@ -301,7 +332,7 @@ VOR__ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int ver
  * first piece not ending before lo: a later band, whose lo is larger, can
  * start there.
  */
-VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(vor__euclid_t *e, const edge_lines_t *l,
+VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(euclid_t *e, const edge_lines_t *l,
                                         const uint32_t *hull, uint32_t from, uint32_t count,
                                         int32_t lo, int32_t hi, uint8_t flags, int vertical)
 {
@@ -344,7 +375,7 @@ VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(vor__euclid_t *e, const edge_lines_
 /* The pieces of the frame's left or right edge envelope that meet the
  * band's rows [v0, v1]; *cursor carries the first live piece to the next
  * band. */
-static void mark_vertical(vor__euclid_t *e, const uint32_t *hull, uint32_t count, int32_t u,
+static void mark_vertical(euclid_t *e, const uint32_t *hull, uint32_t count, int32_t u,
                           int32_t v0, int32_t v1, uint32_t *cursor)
 {
     edge_lines_t l = {e, u, e->n};
@@ -353,7 +384,7 @@ static void mark_vertical(vor__euclid_t *e, const uint32_t *hull, uint32_t count
 
 /* Envelope of a vertical frame edge at offset u over every site (keys:
  * relative y in by_y order, in sorted_y while prepare runs). */
-static uint32_t vertical_envelope(vor__euclid_t *e, int32_t u, uint32_t *out)
+static uint32_t vertical_envelope(euclid_t *e, int32_t u, uint32_t *out)
 {
     for (uint32_t p = 0; p < e->n; p++) {
         uint32_t id = e->by_y[p];
@@ -369,7 +400,7 @@ static uint32_t vertical_envelope(vor__euclid_t *e, int32_t u, uint32_t *out)
 /* Envelope of the horizontal edge at row offset v over the band's list
  * cand[0 .. m) (by_x positions, in (x, id) order), marked over the whole
  * width [0, U] with flags. */
-static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t flags)
+static void mark_horizontal(euclid_t *e, uint32_t m, int32_t v, uint8_t flags)
 {
     for (uint32_t q = 0; q < m; q++) {
         uint32_t p = e->cand[q];
@@ -386,7 +417,7 @@ static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t fla
 
 /* Sorts the sites and envelopes the frame's left and right edges; e's
  * arrays carved, fits() true. */
-static void fast_prepare(vor__euclid_t *e)
+static void fast_prepare(euclid_t *e)
 {
     const uint32_t n = e->n;
     /* y order first: sorted_y holds the y of by_y until the x sort
@@ -513,7 +544,7 @@ static int64_t pack_narrow(int32_t a, int32_t b, uint32_t id)
 }
 
 /* Sets list line q. */
-static void set_line(vor__euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32_t b)
+static void set_line(euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32_t b)
 {
     e->cand[q] = id;
     e->val[q] = e->narrow == 1 ? pack_narrow(a, b, id) : pack_line(a, b);
@@ -550,7 +581,7 @@ static void set_line(vor__euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32
  * its product with an offset is < 2^60, everything in int64. The quotient
  * is below width (2^quotient_bits).
  */
-static uint32_t row_envelope_narrow(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *runs)
 {
     const int64_t *line = e->val;
     const uint32_t m = e->cand_count;
@@ -619,7 +650,7 @@ static uint32_t row_envelope_narrow(const vor__euclid_t *e, int32_t v, vor__run_
     return top;
 }
 
-static uint32_t row_envelope_wide(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+static uint32_t row_envelope_wide(const euclid_t *e, int32_t v, vor__run_t *runs)
 {
     const uint32_t *site = e->cand;
     const int64_t *line = e->val;
@@ -689,7 +720,7 @@ static uint32_t row_envelope_wide(const vor__euclid_t *e, int32_t v, vor__run_t 
     return top;
 }
 
-static uint32_t row_envelope(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+static uint32_t row_envelope(const euclid_t *e, int32_t v, vor__run_t *runs)
 {
     if (e->narrow == 1) {
         return row_envelope_narrow(e, v, runs);
@@ -701,7 +732,7 @@ static uint32_t row_envelope(const vor__euclid_t *e, int32_t v, vor__run_t *runs
 
 /* The sites whose marks meet flags, in (x, id) order, as the list the
  * rows take (cand = site, val = pack_line(a, b)); returns their count. */
-static uint32_t gather_lines(vor__euclid_t *e, uint8_t flags)
+static uint32_t gather_lines(euclid_t *e, uint8_t flags)
 {
     uint32_t m = 0;
     for (uint32_t p = 0; p < e->n; p++) {
@@ -715,7 +746,7 @@ static uint32_t gather_lines(vor__euclid_t *e, uint8_t flags)
 
 /* The same sites as by_x positions (cand = position), for
  * mark_horizontal; returns their count. */
-static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
+static uint32_t gather_positions(euclid_t *e, uint8_t flags)
 {
     uint32_t m = 0;
     for (uint32_t p = 0; p < e->n; p++) {
@@ -728,13 +759,13 @@ static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
 
 /* The last row of the band that starts at row first, and the row of its
  * rectangle's bottom edge: the next band's first row, if any. */
-static uint32_t band_last_row(const vor__euclid_t *e, uint32_t first)
+static uint32_t band_last_row(const euclid_t *e, uint32_t first)
 {
     uint32_t last = first + (CULL_ROWS - 1u);
     return (last >= e->frame->height || last < first) ? e->frame->height - 1u : last;
 }
 
-static uint32_t band_bottom(const vor__euclid_t *e, uint32_t first)
+static uint32_t band_bottom(const euclid_t *e, uint32_t first)
 {
     uint32_t last = band_last_row(e, first);
     return (last + 1u < e->frame->height) ? last + 1u : last;
@@ -743,7 +774,7 @@ static uint32_t band_bottom(const vor__euclid_t *e, uint32_t first)
 /* The largest squared distance from a pixel centre of row offset v to
  * its site, from the row's stack (first pixels, list positions): along a
  * run it is largest at one of the run's ends. */
-static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *runs,
+static uint64_t farthest(const euclid_t *e, int32_t v, const vor__run_t *runs,
                          uint32_t count)
 {
     uint64_t most = 0;
@@ -781,7 +812,7 @@ static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *ru
  * taken in y order while that holds, and the edge's envelope is computed
  * over them and the candidates.
  */
-static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
+static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
 {
     const uint32_t last = band_last_row(e, first);
     const int32_t v0 = (int32_t)(vor__offset(first, e->frame->step_y));
@@ -860,7 +891,7 @@ static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
 }
 
 /* Runs of row j by the fast path. */
-static uint32_t fast_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+static uint32_t fast_row(euclid_t *e, uint32_t j, vor__run_t *runs)
 {
     if (!e->band_valid || j > e->band_last) {
         select_band(e, j, runs);
@@ -931,7 +962,7 @@ static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
 
 /* The nearest site to q by exact squared distances, ties to the smaller
  * index. */
-static uint32_t brute_nearest(const vor__euclid_t *e, int32_t qx, int32_t qy)
+static uint32_t brute_nearest(const euclid_t *e, int32_t qx, int32_t qy)
 {
     uint32_t best = 0, best_high;
     uint64_t best_low = squared_distance(qx, qy, &e->points[0], &best_high);
@@ -947,13 +978,14 @@ static uint32_t brute_nearest(const vor__euclid_t *e, int32_t qx, int32_t qy)
     return best;
 }
 
-static uint32_t brute_row(const vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+static uint32_t brute_row(const euclid_t *e, uint32_t j, vor__run_t *runs)
 {
-    const vor_raster_frame_t *frame = e->frame;
-    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
+    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    const uint32_t width = e->frame->width;
+    int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
     uint32_t count = 0;
-    for (uint32_t i = 0; i < frame->width; i++) {
-        int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
+    for (uint32_t i = 0; i < width; i++) {
+        int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
         count = vor__run_push(runs, count, i, brute_nearest(e, qx, qy));
     }
     return count;
@@ -964,7 +996,7 @@ static uint32_t brute_row(const vor__euclid_t *e, uint32_t j, vor__run_t *runs)
 /* Carves the fast path's arrays from the work memory after the rows:
  * 8-byte arrays first, then 4-byte ones, then bytes, so that every array
  * is aligned (45 n bytes). */
-static void carve(vor__euclid_t *e, uint8_t *base)
+static void carve(euclid_t *e, uint8_t *base)
 {
     const size_t n = e->n;
     e->val = (int64_t *)(void *)base;
@@ -981,7 +1013,9 @@ static void carve(vor__euclid_t *e, uint8_t *base)
     e->mark = (uint8_t *)(void *)(words + 9u * n);
 }
 
-void vor__euclid_prepare(vor__euclid_t *e, const vor__raster_t *r)
+/* Sets e up for the checked request r: the fast path when r asks for it
+ * and its bit budget holds, else the brute force. */
+static void prepare(euclid_t *e, const vor__raster_t *r)
 {
     e->frame = r->frame;
     e->points = r->sites->points;
@@ -993,21 +1027,42 @@ void vor__euclid_prepare(vor__euclid_t *e, const vor__raster_t *r)
     }
 }
 
-uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+/* The family's producers for the scan (vor__raster_row_fn,
+ * vor__raster_distances_fn). */
+static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
 {
+    euclid_t *e = state;
     return e->fast ? fast_row(e, j, runs) : brute_row(e, j, runs);
 }
 
-void vor__euclid_distances(const vor__euclid_t *e, uint32_t j, const vor__run_t *runs,
-                           uint32_t count, uint32_t *px)
+/* floor(|q - s|) of each pixel's site, saturated at UINT32_MAX. */
+static void distances(const void *state, uint32_t j, const vor__run_t *runs, uint32_t count,
+                      uint32_t *px)
 {
-    const vor_raster_frame_t *frame = e->frame;
-    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
+    const euclid_t *e = state;
+    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         for (; i < runs[r].end; i++) {
-            int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
+            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
             px[i] = euclid_distance(qx, qy, &e->points[runs[r].site]);
         }
     }
+}
+
+int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                      const vor_raster_output_t *out, void *work, size_t work_bytes)
+{
+    vor__raster_t r;
+    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
+    if (status != VOR_OK) {
+        return status;
+    }
+    if (sites->metric != VOR_METRIC_EUCLID) {
+        return VOR_ERR_ARG;
+    }
+    euclid_t e;
+    prepare(&e, &r);
+    return vor__raster_scan(&r, &e, row, distances);
 }

@@ -26,12 +26,31 @@
  * block's survivors, so a band costs O(n) bounds per block.
  */
 #include "raster.h"
-#include "raster_metrics.h"
 
 #include "multiword.h"
 
 /* Rows per culling tile. */
 #define TILE_ROWS 16u
+
+/* The family's state: the frame and sites of the request, the widths of
+ * its exact comparisons, and the culling of sites per tile. */
+typedef struct metric {
+    const vor_raster_frame_t *frame;
+    const vor_raster_sites_t *sites;
+    enum vor_metric metric;
+    uint32_t n;
+    uint32_t limbs;      /* limbs of the wide comparisons of this frame */
+    int lp_narrow;       /* LP: every sum below 2^128 */
+    uint64_t det;        /* ELLIPTIC: a c - b^2 */
+    uint32_t trace;      /* ELLIPTIC: a + c */
+    int brute;           /* every site at every pixel, no culling */
+    uint32_t *pool;      /* culling: the block list, then the tile lists */
+    size_t pool_words;
+    uint32_t tile_width; /* columns per tile (a power of two, >= 16) */
+    uint32_t tiles;
+    uint32_t band_first; /* rows of the current culling band */
+    int band_valid;
+} metric_t;
 
 /* -------------------------------------------------------------- widths */
 
@@ -101,7 +120,7 @@ static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
 
 /* The key of a point site at offsets of magnitude (ax, ay): every metric
  * whose distance grows with |dx| and with |dy|. */
-static void point_key(const vor__metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
+static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -271,7 +290,7 @@ static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u1
 
 /* Negative when key a ranks before key b (nearer; farther for FARTHEST),
  * 0 when they tie. */
-static int key_compare(const vor__metric_t *m, const rank_key_t *a, const rank_key_t *b)
+static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t *b)
 {
     switch (m->metric) {
     case VOR_METRIC_LP:
@@ -360,7 +379,7 @@ static uint64_t polyline_weight2(const vor_raster_sites_t *s, uint32_t site)
 }
 
 /* The key of site `site` at the pixel centre (qx, qy). */
-static void site_key(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
+static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -529,7 +548,7 @@ VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
  * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
  * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
  * at most 33 steps, each one power below 2^256. */
-static uint32_t lp_distance(const vor__metric_t *m, const rank_key_t *k, uint32_t ax,
+static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
                             uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
@@ -588,7 +607,7 @@ static uint32_t rational_distance(const rank_key_t *k)
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
  * (qx, qy): the floor of its distance under m's metric, saturated (ADD
  * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
-static uint32_t metric_distance(const vor__metric_t *m, uint32_t site, int32_t qx, int32_t qy)
+static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
     site_key(m, site, qx, qy, &k);
@@ -664,7 +683,7 @@ VOR__ALWAYS_INLINE vor__mw_u128_t farthest_corner(const vor_point_t *p, const re
  *   POLYLINE: the same bounding-box gap below, the nearest vertex's
  *     farthest corner above, both divided by the site's w^2.
  */
-static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
+static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -763,7 +782,7 @@ static void bounds(const vor__metric_t *m, uint32_t site, const rect_t *r, int w
 /* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
  * first (alone or tied) at some pixel of r, in index order, into out;
  * returns their number, or ALL_SITES when more than capacity survive. */
-static uint32_t select_sites(const vor__metric_t *m, const rect_t *r, const uint32_t *list,
+static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t *list,
                              uint32_t count, uint32_t *out, size_t capacity)
 {
     rank_key_t keys[2], best_case;
@@ -790,7 +809,7 @@ static uint32_t select_sites(const vor__metric_t *m, const rect_t *r, const uint
     return kept;
 }
 
-static rect_t columns_rect(const vor__metric_t *m, uint32_t first, uint32_t last, int32_t y0,
+static rect_t columns_rect(const metric_t *m, uint32_t first, uint32_t last, int32_t y0,
                            int32_t y1)
 {
     rect_t r;
@@ -803,7 +822,7 @@ static rect_t columns_rect(const vor__metric_t *m, uint32_t first, uint32_t last
 
 /* Fills the pool with the tile lists of the band starting at band_first:
  * per tile, a count (or ALL_SITES) and that many site ids. */
-static void cull_band(vor__metric_t *m)
+static void cull_band(metric_t *m)
 {
     uint32_t last_row = m->band_first + TILE_ROWS - 1u;
     if (last_row >= m->frame->height) {
@@ -813,7 +832,7 @@ static void cull_band(vor__metric_t *m)
     int32_t y1 = (int32_t)(m->frame->origin_y + vor__offset(last_row, m->frame->step_y));
     uint32_t *block = m->pool;
     uint32_t *lists = m->pool + m->n;
-    size_t room = m->pool_words - m->n; /* >= tiles (vor__metric_prepare) */
+    size_t room = m->pool_words - m->n; /* >= tiles (prepare) */
     size_t at = 0;
     uint32_t tile = 0;
     uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
@@ -837,7 +856,7 @@ static void cull_band(vor__metric_t *m)
 /* The first-ranked site at (qx, qy) among list[0..count) (NULL: all),
  * which is in increasing index order: a later site takes over only when
  * strictly better, so ties stay with the smaller index. */
-static uint32_t nearest(const vor__metric_t *m, const uint32_t *list, uint32_t count, int32_t qx,
+static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count, int32_t qx,
                         int32_t qy)
 {
     rank_key_t keys[2];
@@ -855,21 +874,26 @@ static uint32_t nearest(const vor__metric_t *m, const uint32_t *list, uint32_t c
     return best;
 }
 
-/* Runs of row j (rows requested in increasing order); returns their count. */
-uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
+/* The family's producers for the scan (vor__raster_row_fn,
+ * vor__raster_distances_fn). */
+static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
 {
+    metric_t *m = state;
     if (!m->brute && (!m->band_valid || j >= m->band_first + TILE_ROWS)) {
         m->band_first = j - j % TILE_ROWS;
         m->band_valid = 1;
         cull_band(m);
     }
+    /* the frame's fields in locals: stores to runs could alias them */
+    const int32_t origin_x = m->frame->origin_x, step_x = m->frame->step_x;
+    const uint32_t width = m->frame->width;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     const uint32_t *lists = m->pool + m->n;
     size_t at = 0;
     uint32_t count = 0;
-    uint32_t span = m->brute ? m->frame->width : m->tile_width;
-    for (uint32_t first = 0; first < m->frame->width; first += span) {
-        uint32_t end = m->frame->width - first > span ? first + span : m->frame->width;
+    uint32_t span = m->brute ? width : m->tile_width;
+    for (uint32_t first = 0; first < width; first += span) {
+        uint32_t end = width - first > span ? first + span : width;
         const uint32_t *list = NULL;
         uint32_t candidates = m->n;
         if (!m->brute) {
@@ -880,7 +904,7 @@ uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
             at += 1u + (list != NULL ? candidates : 0u);
         }
         for (uint32_t i = first; i < end; i++) {
-            int32_t qx = (int32_t)(m->frame->origin_x + vor__offset(i, m->frame->step_x));
+            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
             count = vor__run_push(runs, count, i, nearest(m, list, candidates, qx, qy));
         }
     }
@@ -889,7 +913,9 @@ uint32_t vor__metric_row(vor__metric_t *m, uint32_t j, vor__run_t *runs)
 
 /* ------------------------------------------------------------ set up */
 
-int vor__metric_check(const vor_raster_sites_t *s)
+/* VOR_OK when the metric's fields are usable (weights, exponent, form,
+ * offsets); else VOR_ERR_ARG. Reads every site once. */
+static int metric_check(const vor_raster_sites_t *s)
 {
     switch (s->metric) {
     case VOR_METRIC_L1:
@@ -962,7 +988,9 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
-void vor__metric_prepare(vor__metric_t *m, const vor__raster_t *r)
+/* Sets m up for the checked request r (its sites past metric_check): the
+ * comparison widths from the span of sites and frame, and the tiles. */
+static void prepare(metric_t *m, const vor__raster_t *r)
 {
     const vor_raster_frame_t *frame = r->frame;
     const vor_raster_sites_t *s = r->sites;
@@ -1055,17 +1083,41 @@ void vor__metric_prepare(vor__metric_t *m, const vor__raster_t *r)
     m->tiles = (frame->width + m->tile_width - 1u) >> shift;
 }
 
-/* --------------------------------------------------------- distances */
+/* ----------------------------------------------------- distance pixels */
 
-void vor__metric_distances(const vor__metric_t *m, uint32_t j, const vor__run_t *runs,
-                           uint32_t count, uint32_t *px)
+/* The floor of each pixel's own site's distance under m's metric. */
+static void distances(const void *state, uint32_t j, const vor__run_t *runs, uint32_t count,
+                      uint32_t *px)
 {
+    const metric_t *m = state;
+    const int32_t origin_x = m->frame->origin_x, step_x = m->frame->step_x;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         for (; i < runs[r].end; i++) {
-            int32_t qx = (int32_t)(m->frame->origin_x + vor__offset(i, m->frame->step_x));
+            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
             px[i] = metric_distance(m, runs[r].site, qx, qy);
         }
     }
+}
+
+/* ------------------------------------------------------- entry point */
+
+int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+               const vor_raster_output_t *out, void *work, size_t work_bytes)
+{
+    if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
+        return vor_raster_euclid(frame, sites, out, work, work_bytes);
+    }
+    vor__raster_t r;
+    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
+    if (status != VOR_OK) {
+        return status;
+    }
+    if (metric_check(sites) != VOR_OK) {
+        return VOR_ERR_ARG;
+    }
+    metric_t m;
+    prepare(&m, &r);
+    return vor__raster_scan(&r, &m, row, distances);
 }
