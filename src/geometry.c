@@ -55,12 +55,6 @@ typedef struct geo_point {
     vor__limb w[GEO_LIMBS];
 } geo_point_t;
 
-static inline uint32_t magnitude32(int64_t v)
-{
-    /* |v| <= 2^32 - 1 for a difference of two int32 */
-    return (uint32_t)(v < 0 ? -v : v);
-}
-
 /* r = x * k over GEO_LIMBS, exact when the product fits: |k| goes into
  * limbs as a non-negative number, x is two's complement at full width. */
 static void mul_i64(vor__limb *r, const vor__limb *x, int64_t k)
@@ -87,7 +81,7 @@ static void mul_i64_i64(vor__limb *r, int64_t a, int64_t b)
 static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
 {
     int64_t ex = (int64_t)n->x - s->x, ey = (int64_t)n->y - s->y;
-    uint32_t mx = magnitude32(ex), my = magnitude32(ey);
+    uint32_t mx = vor__mw_magnitude(ex), my = vor__mw_magnitude(ey);
     vor__limb t[GEO_LIMBS];
     l->a = ex;
     l->b = ey;

@@ -12,6 +12,11 @@
  * The limb is 32 bits, or 64 where the compiler has a native 64x64->128
  * multiply (VOR_LIMB_BITS in vor_config.h). Widths are given in bits and
  * rounded up to limbs with VOR__LIMBS, so one source serves both.
+ *
+ * Besides the limb arrays, two fixed widths that stay in registers: the
+ * 128-bit unsigned vor__mw_u128_t (with a sign-and-magnitude vor__mw_s128_t)
+ * and the 96-bit signed product vor__mw_i96_t. The predicates, the geometry
+ * and the raster all take their wide integers from here.
  */
 #ifndef VOR_MULTIWORD_H
 #define VOR_MULTIWORD_H
@@ -40,6 +45,15 @@
 #define VOR__INLINE static inline
 #else
 #define VOR__INLINE VOR__ALWAYS_INLINE
+#endif
+
+/* Loops that only colder code calls: the compiler weighs inlining as for
+ * a file's own static function (a header's static inline is inlined far
+ * more eagerly, which costs flash at -O2); unused in most includers. */
+#if defined(__GNUC__)
+#define VOR__HELPER static __attribute__((unused))
+#else
+#define VOR__HELPER static inline
 #endif
 
 #if VOR_LIMB_BITS == 64
@@ -265,6 +279,38 @@ VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
     return 0;
 }
 
+/* |d| rounded down for negative d (~d = -d - 1), two instructions on most
+ * machines: vor__mw_bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1].
+ * The OR of bounds is below 2^k exactly when every bound is: one test
+ * picks the width a group of differences fits. */
+VOR__INLINE uint64_t vor__mw_bound(int64_t d)
+{
+    return (uint64_t)(d < 0 ? ~d : d);
+}
+
+/* Sign of v: -1, 0 or 1. */
+VOR__INLINE int vor__mw_sign64(int64_t v)
+{
+    return (v > 0) - (v < 0);
+}
+
+/* |d| for the difference of two int32 values: at most 2^32 - 1. */
+VOR__ALWAYS_INLINE uint32_t vor__mw_magnitude(int64_t d)
+{
+    return (uint32_t)(d < 0 ? -d : d);
+}
+
+/* Bit length of v (0 for 0). */
+VOR__HELPER uint32_t vor__mw_bit_length(uint64_t v)
+{
+    uint32_t bits = 0;
+    while (v != 0u) { /* at most 64 steps */
+        v >>= 1;
+        bits++;
+    }
+    return bits;
+}
+
 /* r = -r over n limbs (two's complement). */
 VOR__INLINE void vor__mw_neg(vor__limb *r, size_t n)
 {
@@ -303,6 +349,207 @@ VOR__INLINE void vor__mw_shr1(vor__limb *r, size_t n)
         r[i] = (vor__limb)((r[i] >> 1) | (r[i + 1] << (VOR_LIMB_BITS - 1)));
     }
     r[n - 1] >>= 1;
+}
+
+/* r = a over n limbs. */
+VOR__HELPER void vor__mw_copy(vor__limb *r, const vor__limb *a, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        r[i] = a[i];
+    }
+}
+
+/* r = 4 a over n limbs (the caller's width holds it). */
+VOR__HELPER void vor__mw_times4(vor__limb *r, const vor__limb *a, size_t n)
+{
+    vor__limb carry = 0;
+    for (size_t i = 0; i < n; i++) {
+        r[i] = (vor__limb)(a[i] << 2) | carry;
+        carry = a[i] >> (VOR_LIMB_BITS - 2);
+    }
+}
+
+/* ------------------------------------------------------------ 128 bits */
+
+/* An unsigned 128-bit value in two words, passed by value: its helpers
+ * are forced inline, so it lives in registers (out of line, every copy
+ * would be a memcpy call at -Os). */
+typedef struct vor__mw_u128 {
+    uint64_t lo, hi;
+} vor__mw_u128_t;
+
+/* A signed value below 2^128 in magnitude, as sign and magnitude (neg is
+ * 0 for zero): no negation across the words. */
+typedef struct vor__mw_s128 {
+    vor__mw_u128_t mag;
+    int neg;
+} vor__mw_s128_t;
+
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_of(uint64_t v)
+{
+    vor__mw_u128_t r;
+    r.lo = v;
+    r.hi = 0;
+    return r;
+}
+
+/* Full product of two words. */
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_mul(uint64_t a, uint64_t b)
+{
+    vor__mw_u128_t r;
+    uint64_t high; /* not &r.hi: r stays in registers, no memcpy */
+    r.lo = vor__mul_u64(a, b, &high);
+    r.hi = high;
+    return r;
+}
+
+/* a * b, for a product known to be below 2^128. */
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_mul64(vor__mw_u128_t a, uint64_t b)
+{
+    vor__mw_u128_t r = vor__mw_u128_mul(a.lo, b);
+    uint64_t ignored;
+    r.hi += vor__mul_u64(a.hi, b, &ignored);
+    return r;
+}
+
+/* a + b, modulo 2^128. */
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_add(vor__mw_u128_t a, vor__mw_u128_t b)
+{
+    vor__mw_u128_t r;
+    r.lo = a.lo + b.lo;
+    r.hi = a.hi + b.hi + (r.lo < a.lo ? 1u : 0u);
+    return r;
+}
+
+/* *acc += v, modulo 2^128, in place: for accumulators in memory, where
+ * a copy out and back would cost loads and stores. */
+VOR__ALWAYS_INLINE void vor__mw_u128_add_to(vor__mw_u128_t *acc, vor__mw_u128_t v)
+{
+    acc->lo += v.lo;
+    acc->hi += v.hi + ((acc->lo < v.lo) ? 1u : 0u);
+}
+
+/* a - b for a >= b. */
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_sub(vor__mw_u128_t a, vor__mw_u128_t b)
+{
+    vor__mw_u128_t r;
+    r.lo = a.lo - b.lo;
+    r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
+    return r;
+}
+
+/* a >> s for a constant s in [1, 63] at every call: a variable 64-bit
+ * shift would be a runtime call on 32-bit targets. */
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_shr(vor__mw_u128_t a, unsigned s)
+{
+    vor__mw_u128_t r;
+    r.lo = (a.lo >> s) | (a.hi << (64u - s));
+    r.hi = a.hi >> s;
+    return r;
+}
+
+/* Sign of a - b: -1, 0 or 1. */
+VOR__ALWAYS_INLINE int vor__mw_u128_compare(vor__mw_u128_t a, vor__mw_u128_t b)
+{
+    if (a.hi != b.hi) {
+        return a.hi < b.hi ? -1 : 1;
+    }
+    if (a.lo != b.lo) {
+        return a.lo < b.lo ? -1 : 1;
+    }
+    return 0;
+}
+
+VOR__ALWAYS_INLINE int vor__mw_u128_is_zero(vor__mw_u128_t a)
+{
+    return a.lo == 0u && a.hi == 0u;
+}
+
+/* r[0..n) = *v, zero-extended (n >= 128 bits of limbs). v by pointer: a
+ * structure passed by value to a function left out of line is a memcpy
+ * call at -Os. */
+VOR__HELPER void vor__mw_from_u128(vor__limb *r, size_t n, const vor__mw_u128_t *v)
+{
+    for (size_t i = 0; i < n; i++) {
+#if VOR_LIMB_BITS == 64
+        r[i] = i == 0u ? v->lo : i == 1u ? v->hi : 0u;
+#else
+        r[i] = i == 0u   ? (uint32_t)v->lo
+               : i == 1u ? (uint32_t)(v->lo >> 32)
+               : i == 2u ? (uint32_t)v->hi
+               : i == 3u ? (uint32_t)(v->hi >> 32)
+                         : 0u;
+#endif
+    }
+}
+
+/* The low 128 bits of a[]. */
+VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_to_u128(const vor__limb *a)
+{
+    vor__mw_u128_t r;
+#if VOR_LIMB_BITS == 64
+    r.lo = a[0];
+    r.hi = a[1];
+#else
+    r.lo = a[0] | ((uint64_t)a[1] << 32);
+    r.hi = a[2] | ((uint64_t)a[3] << 32);
+#endif
+    return r;
+}
+
+/* x * y for |x|, |y| < 2^32. */
+VOR__ALWAYS_INLINE vor__mw_s128_t vor__mw_s128_product(int64_t x, int64_t y)
+{
+    vor__mw_s128_t r;
+    r.mag = vor__mw_u128_of(vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(y)));
+    r.neg = (x < 0) != (y < 0) && !vor__mw_u128_is_zero(r.mag);
+    return r;
+}
+
+/* a + b, for sums below 2^128 in magnitude. */
+VOR__ALWAYS_INLINE vor__mw_s128_t vor__mw_s128_add(vor__mw_s128_t a, vor__mw_s128_t b)
+{
+    vor__mw_s128_t r;
+    if (a.neg == b.neg) {
+        r.mag = vor__mw_u128_add(a.mag, b.mag);
+        r.neg = a.neg;
+    } else if (vor__mw_u128_compare(a.mag, b.mag) >= 0) {
+        r.mag = vor__mw_u128_sub(a.mag, b.mag);
+        r.neg = a.neg;
+    } else {
+        r.mag = vor__mw_u128_sub(b.mag, a.mag);
+        r.neg = b.neg;
+    }
+    r.neg = r.neg && !vor__mw_u128_is_zero(r.mag);
+    return r;
+}
+
+/* ------------------------------------------------------------- 96 bits */
+
+/* A signed 96-bit value hi 2^32 + lo (lo unsigned): the product of a
+ * 62-bit signed and a 31-bit unsigned number, without a 64x64 multiply. */
+typedef struct vor__mw_i96 {
+    int64_t hi;
+    uint32_t lo;
+} vor__mw_i96_t;
+
+/* x * y for |x| < 2^62 and y < 2^31. */
+VOR__ALWAYS_INLINE vor__mw_i96_t vor__mw_i96_mul(int64_t x, uint32_t y)
+{
+    /* x = xh 2^32 + xl with xl in [0, 2^32), |xh| < 2^30 */
+    uint32_t xl = (uint32_t)((uint64_t)x & 0xFFFFFFFFu);
+    int32_t xh = (int32_t)((x - (int64_t)xl) / 4294967296); /* exact: constant divisor */
+    uint64_t low = vor__mul_u32(xl, y);                     /* < 2^63 */
+    vor__mw_i96_t r;
+    r.hi = vor__mul_i32(xh, (int32_t)y) + (int64_t)(low >> 32); /* |.| < 2^62 */
+    r.lo = (uint32_t)(low & 0xFFFFFFFFu);
+    return r;
+}
+
+/* p > q. */
+VOR__ALWAYS_INLINE int vor__mw_i96_greater(vor__mw_i96_t p, vor__mw_i96_t q)
+{
+    return p.hi > q.hi || (p.hi == q.hi && p.lo > q.lo);
 }
 
 #endif

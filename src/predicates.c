@@ -22,25 +22,20 @@
 /* (k + 1) mod 3 without a division (Cortex-M0 has no divide instruction) */
 static const unsigned char next_of[3] = {1, 2, 0};
 
-VOR__INLINE uint32_t magnitude(int64_t d)
-{
-    return (uint32_t)(d < 0 ? -d : d);
-}
-
 /* Sign of a*b - c*d for |a|, |b|, |c|, |d| <= 2^32 - 1, without any value
  * wider than 64 bits: compare the products' signs, then their magnitudes. */
 int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 {
-    int sp = sign_of(a) * sign_of(b);
-    int sq = sign_of(c) * sign_of(d);
+    int sp = vor__mw_sign64(a) * vor__mw_sign64(b);
+    int sq = vor__mw_sign64(c) * vor__mw_sign64(d);
     if (sp != sq) {
         return (sp > sq) ? 1 : -1;
     }
     if (sp == 0) {
         return 0;
     }
-    uint64_t mp = vor__mul_u32(magnitude(a), magnitude(b));
-    uint64_t mq = vor__mul_u32(magnitude(c), magnitude(d));
+    uint64_t mp = vor__mul_u32(vor__mw_magnitude(a), vor__mw_magnitude(b));
+    uint64_t mq = vor__mul_u32(vor__mw_magnitude(c), vor__mw_magnitude(d));
     int by_magnitude = (mp > mq) - (mp < mq);
     return (sp > 0) ? by_magnitude : -by_magnitude;
 }
@@ -68,10 +63,11 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
     }
     int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
     int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
-    if ((bound(ax) | bound(ay) | bound(bx) | bound(by)) < 0x80000000u) {
+    uint64_t m = vor__mw_bound(ax) | vor__mw_bound(ay) | vor__mw_bound(bx) | vor__mw_bound(by);
+    if (m < 0x80000000u) {
         /* the differences fit int32: squares <= 2^62, sums of two <= 2^63
          * fit uint64 */
-        COUNT(stats, closer[VOR_TIER_NARROW]);
+        VOR__COUNT(stats, closer[VOR_TIER_NARROW]);
         uint64_t da = (uint64_t)vor__mul_i32((int32_t)ax, (int32_t)ax) +
                       (uint64_t)vor__mul_i32((int32_t)ay, (int32_t)ay);
         uint64_t db = (uint64_t)vor__mul_i32((int32_t)bx, (int32_t)bx) +
@@ -79,12 +75,12 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
         return (da > db) - (da < db);
     }
     /* squares < 2^64, sums of two < 2^65: keep the carry as a 65th bit */
-    COUNT(stats, closer[VOR_TIER_WIDE]);
-    uint64_t sa = vor__mul_u32(magnitude(ax), magnitude(ax));
-    uint64_t da = sa + vor__mul_u32(magnitude(ay), magnitude(ay));
+    VOR__COUNT(stats, closer[VOR_TIER_WIDE]);
+    uint64_t sa = vor__mul_u32(vor__mw_magnitude(ax), vor__mw_magnitude(ax));
+    uint64_t da = sa + vor__mul_u32(vor__mw_magnitude(ay), vor__mw_magnitude(ay));
     unsigned ca = (da < sa) ? 1u : 0u;
-    uint64_t sb = vor__mul_u32(magnitude(bx), magnitude(bx));
-    uint64_t db = sb + vor__mul_u32(magnitude(by), magnitude(by));
+    uint64_t sb = vor__mul_u32(vor__mw_magnitude(bx), vor__mw_magnitude(bx));
+    uint64_t db = sb + vor__mul_u32(vor__mw_magnitude(by), vor__mw_magnitude(by));
     unsigned cb = (db < sb) ? 1u : 0u;
     if (ca != cb) {
         return (ca > cb) ? 1 : -1;
@@ -154,11 +150,7 @@ VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
  * two products cannot both reach 2^62 with opposite signs), the product of
  * the two < 2^126, and each sum of up to three such < 2^128: two words.
  * d[] holds a-d, b-d, c-d as x, y pairs; the term is lift(p) cross(u, v). */
-struct u128 {
-    uint64_t low, high;
-};
-
-VOR__INLINE void mid_term(struct u128 sums[2], const int64_t d[6], unsigned p,
+VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p,
                           unsigned u, unsigned v)
 {
     int32_t px = (int32_t)d[p], py = (int32_t)d[p + 1];
@@ -168,10 +160,7 @@ VOR__INLINE void mid_term(struct u128 sums[2], const int64_t d[6], unsigned p,
     int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
     bool negative = cross < 0;
     uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
-    uint64_t high, low = vor__mul_u64(lift, magnitude_of_cross, &high);
-    struct u128 *acc = &sums[negative];
-    acc->low += low;
-    acc->high += high + ((acc->low < low) ? 1u : 0u);
+    vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(lift, magnitude_of_cross));
 }
 
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
@@ -179,14 +168,14 @@ VOR__INLINE void mid_term(struct u128 sums[2], const int64_t d[6], unsigned p,
 VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
                            unsigned u, unsigned v)
 {
-    uint64_t sx = vor__mul_u32(magnitude(d[p]), magnitude(d[p]));
-    uint64_t lift = sx + vor__mul_u32(magnitude(d[p + 1]), magnitude(d[p + 1]));
+    uint64_t sx = vor__mul_u32(vor__mw_magnitude(d[p]), vor__mw_magnitude(d[p]));
+    uint64_t lift = sx + vor__mul_u32(vor__mw_magnitude(d[p + 1]), vor__mw_magnitude(d[p + 1]));
     uint64_t lift_high = (lift < sx) ? 1u : 0u;
     /* cross = ux vy - uy vx = (+-m1) + (+-m2) */
     bool n1 = (d[u] < 0) != (d[v + 1] < 0);
     bool n2 = (d[u + 1] < 0) == (d[v] < 0);
-    uint64_t m1 = vor__mul_u32(magnitude(d[u]), magnitude(d[v + 1]));
-    uint64_t m2 = vor__mul_u32(magnitude(d[u + 1]), magnitude(d[v]));
+    uint64_t m1 = vor__mul_u32(vor__mw_magnitude(d[u]), vor__mw_magnitude(d[v + 1]));
+    uint64_t m2 = vor__mul_u32(vor__mw_magnitude(d[u + 1]), vor__mw_magnitude(d[v]));
     uint64_t low, high = 0u;
     bool negative;
     if (n1 == n2) { /* same signs: the magnitudes add, up to 65 bits */
@@ -203,15 +192,12 @@ VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
 
 int vor__incircle_mid(const int64_t d[6])
 {
-    struct u128 sums[2]; /* positive, negative */
-    sums[0].low = sums[0].high = sums[1].low = sums[1].high = 0u;
+    vor__mw_u128_t sums[2]; /* positive, negative */
+    sums[0] = sums[1] = vor__mw_u128_of(0);
     mid_term(sums, d, 0, 2, 4);
     mid_term(sums, d, 2, 4, 0);
     mid_term(sums, d, 4, 0, 2);
-    if (sums[0].high != sums[1].high) {
-        return (sums[0].high > sums[1].high) ? 1 : -1;
-    }
-    return (sums[0].low > sums[1].low) - (sums[0].low < sums[1].low);
+    return vor__mw_u128_compare(sums[0], sums[1]);
 }
 
 int vor__incircle_wide(const int64_t d[6])
@@ -300,7 +286,7 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, vor_predicate_stats_t *stats)
 {
     int sign = 0;
-    COUNT(stats, orient2d_perturbed);
+    VOR__COUNT(stats, orient2d_perturbed);
     VOR_ASSERT(i != j && j != k && i != k);
     const uint32_t ids[3] = {i, j, k};
     /* the largest index is the origin; of the other two rows (call order),
@@ -328,9 +314,9 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
             enum row_kind first = kinds[low == 0u ? lo : hi];
             enum row_kind second = kinds[low == 1u ? lo : hi];
             if (first == ROW_POINT) { /* (x, y) over (0, 1) or (1, 0) */
-                sign = sign_of((second == ROW_DY) ? x[0] : -y[0]);
+                sign = vor__mw_sign64((second == ROW_DY) ? x[0] : -y[0]);
             } else if (second == ROW_POINT) { /* (0, 1) or (1, 0) over (x, y) */
-                sign = sign_of((first == ROW_DY) ? -x[1] : y[1]);
+                sign = vor__mw_sign64((first == ROW_DY) ? -x[1] : y[1]);
             } else { /* two unit rows */
                 sign = (first == second) ? 0 : (first == ROW_DX) ? 1 : -1;
             }
@@ -342,48 +328,42 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 
 /* Entries of the incircle expansion: up to 66 bits (x^2 + y^2 of 33-bit
  * differences); products of three entries from distinct columns < 2^130,
- * six of them < 2^133: VOR__WIDE_LIMBS (160 bits) holds every value. */
-typedef struct {
-    vor__limb w[VOR__WIDE_LIMBS];
-} wide_t;
-
-/* Results go out through a pointer: a returned or assigned structure of
- * this size becomes a memcpy call at -Os, and the library calls nothing
- * outside itself. */
-static void wide_from(wide_t *r, int64_t v)
+ * six of them < 2^133: VOR__WIDE_LIMBS (160 bits) holds every value. The
+ * helpers below fix that width; results go out through a pointer, as
+ * arrays, never as a returned structure (a memcpy call at -Os). */
+static void wide_from(vor__limb *r, int64_t v)
 {
-    vor__mw_from_i64(r->w, VOR__WIDE_LIMBS, v);
+    vor__mw_from_i64(r, VOR__WIDE_LIMBS, v);
 }
 
 /* r = a * b; r overlaps neither (restrict: the product's stores then need
  * no reloads of a and b) */
-static void wide_mul(wide_t *restrict r, const wide_t *a, const wide_t *b)
+static void wide_mul(vor__limb *restrict r, const vor__limb *a, const vor__limb *b)
 {
-    vor__mw_mul(r->w, VOR__WIDE_LIMBS, a->w, VOR__WIDE_LIMBS, b->w,
-                VOR__WIDE_LIMBS);
+    vor__mw_mul(r, VOR__WIDE_LIMBS, a, VOR__WIDE_LIMBS, b, VOR__WIDE_LIMBS);
 }
 
 /* r = a*d - b*c */
-static void wide_det2(wide_t *r, const wide_t *a, const wide_t *b, const wide_t *c,
-                      const wide_t *d)
+static void wide_det2(vor__limb *r, const vor__limb *a, const vor__limb *b, const vor__limb *c,
+                      const vor__limb *d)
 {
-    wide_t bc;
+    vor__limb bc[VOR__WIDE_LIMBS];
     wide_mul(r, a, d);
-    wide_mul(&bc, b, c);
-    vor__mw_sub(r->w, bc.w, VOR__WIDE_LIMBS);
+    wide_mul(bc, b, c);
+    vor__mw_sub(r, bc, VOR__WIDE_LIMBS);
 }
 
-static int wide_det3_sign(const wide_t *m[3][3])
+static int wide_det3_sign(const vor__limb *m[3][3])
 {
-    wide_t sum, minor, term;
-    wide_from(&sum, 0);
+    vor__limb sum[VOR__WIDE_LIMBS], minor[VOR__WIDE_LIMBS], term[VOR__WIDE_LIMBS];
+    wide_from(sum, 0);
     for (unsigned c = 0; c < 3; c++) {
         unsigned c1 = next_of[c], c2 = next_of[c1];
-        wide_det2(&minor, m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
-        wide_mul(&term, m[0][c], &minor);
-        vor__mw_add(sum.w, term.w, VOR__WIDE_LIMBS);
+        wide_det2(minor, m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
+        wide_mul(term, m[0][c], minor);
+        vor__mw_add(sum, term, VOR__WIDE_LIMBS);
     }
-    return vor__mw_sign(sum.w, VOR__WIDE_LIMBS);
+    return vor__mw_sign(sum, VOR__WIDE_LIMBS);
 }
 
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
@@ -400,7 +380,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
     int sign = 0;
-    COUNT(stats, incircle_perturbed);
+    VOR__COUNT(stats, incircle_perturbed);
     const uint32_t ids[4] = {i, j, k, l};
     /* the site with the largest index is the origin; the three others, in
      * call order, are the minor's rows */
@@ -422,7 +402,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         const vor_point_t *o = &sites[ids[top]];
         x[r] = (int64_t)s->x - o->x;
         y[r] = (int64_t)s->y - o->y;
-        m |= bound(x[r]) | bound(y[r]);
+        m |= vor__mw_bound(x[r]) | vor__mw_bound(y[r]);
     }
     /* Small coordinates (the usual degeneracy: grids, nearby cocircular
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
@@ -445,7 +425,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
         int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
         int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
-        sign = sign_of((low % 2u == 0u) ? det : -det);
+        sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
         if (sign != 0) {
             return (top % 2 == 0) ? -sign : sign;
         }
@@ -481,33 +461,33 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                                 vor__mul_i32(e[1][c2], e[2][c1]);
                 det += vor__mul_i64_i32(minor, e[0][c]);
             }
-            sign = sign_of(det);
+            sign = vor__mw_sign64(det);
         }
     } else {
-        static const wide_t zero = {{0}};
-        wide_t one, yy;
-        wide_t point[3][3], twice[3][2];
-        wide_from(&one, 1);
+        static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
+        vor__limb one[VOR__WIDE_LIMBS], yy[VOR__WIDE_LIMBS];
+        vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
+        wide_from(one, 1);
         for (size_t r = 0; r < 3; r++) {
-            wide_from(&point[r][0], x[r]);
-            wide_from(&point[r][1], y[r]);
-            wide_mul(&point[r][2], &point[r][0], &point[r][0]);
-            wide_mul(&yy, &point[r][1], &point[r][1]);
-            vor__mw_add(point[r][2].w, yy.w, VOR__WIDE_LIMBS);
-            wide_from(&twice[r][0], 2 * x[r]);
-            wide_from(&twice[r][1], 2 * y[r]);
+            wide_from(point[r][0], x[r]);
+            wide_from(point[r][1], y[r]);
+            wide_mul(point[r][2], point[r][0], point[r][0]);
+            wide_mul(yy, point[r][1], point[r][1]);
+            vor__mw_add(point[r][2], yy, VOR__WIDE_LIMBS);
+            wide_from(twice[r][0], 2 * x[r]);
+            wide_from(twice[r][1], 2 * y[r]);
         }
         for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            const wide_t *w[3][3];
+            const vor__limb *w[3][3];
             unsigned squares = 0;
             for (size_t r = 0; r < 3; r++) {
                 enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
-                w[r][0] = (kind == ROW_POINT) ? &point[r][0] : (kind == ROW_DX) ? &one : &zero;
-                w[r][1] = (kind == ROW_POINT) ? &point[r][1] : (kind == ROW_DY) ? &one : &zero;
-                w[r][2] = (kind == ROW_POINT) ? &point[r][2]
-                          : (kind == ROW_DY)  ? &twice[r][1]
-                          : (kind == ROW_DX)  ? &twice[r][0]
-                                              : &one;
+                w[r][0] = (kind == ROW_POINT) ? point[r][0] : (kind == ROW_DX) ? one : zero;
+                w[r][1] = (kind == ROW_POINT) ? point[r][1] : (kind == ROW_DY) ? one : zero;
+                w[r][2] = (kind == ROW_POINT) ? point[r][2]
+                          : (kind == ROW_DY)  ? twice[r][1]
+                          : (kind == ROW_DX)  ? twice[r][0]
+                                              : one;
                 squares += (kind == ROW_SQUARE) ? 1u : 0u;
             }
             if (squares < 2) { /* else two equal rows: the term is 0 */
@@ -544,24 +524,24 @@ int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
     if (sign != 0) {
         return sign;
     }
-    COUNT(stats, closer_perturbed);
+    VOR__COUNT(stats, closer_perturbed);
     VOR_ASSERT(q != a && q != b && a != b);
     if (a < q || b < q) {
         bool a_first = a < b;
         /* L = a: -2 (qy - ay), then +1; L = b: 2 (qy - by), then -1 */
         int64_t coefficient = a_first ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
-        sign = sign_of(coefficient);
+        sign = vor__mw_sign64(coefficient);
         return (sign != 0) ? sign : (a_first ? 1 : -1);
     }
     /* L = q: 2 (by - ay), 2 (bx - ax), then M's dy and the dy product */
-    sign = sign_of((int64_t)pb->y - pa->y);
+    sign = vor__mw_sign64((int64_t)pb->y - pa->y);
     if (sign == 0) {
-        sign = sign_of((int64_t)pb->x - pa->x);
+        sign = vor__mw_sign64((int64_t)pb->x - pa->x);
     }
     if (sign == 0) {
         bool a_middle = a < b;
         int64_t coefficient = a_middle ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
-        sign = sign_of(coefficient);
+        sign = vor__mw_sign64(coefficient);
         if (sign == 0) {
             sign = a_middle ? -1 : 1;
         }

@@ -10,30 +10,16 @@
 #ifndef VOR_PREDICATES_H
 #define VOR_PREDICATES_H
 
-#include <stdbool.h>
-
 #include "multiword.h"
 #include "vor.h"
 
-#define COUNT(stats, counter)                                                  \
+/* Counts one evaluation in the caller's statistics, if it keeps any. */
+#define VOR__COUNT(stats, counter)                                             \
     do {                                                                       \
         if ((stats) != NULL) {                                                 \
             (stats)->counter++;                                                \
         }                                                                      \
     } while (0)
-
-/* |d| rounded down for negative d (~d = -d - 1), two instructions on most
- * machines: bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1]. The
- * OR of bounds is below 2^k exactly when every bound is. */
-VOR__INLINE uint64_t bound(int64_t d)
-{
-    return (uint64_t)(d < 0 ? ~d : d);
-}
-
-VOR__INLINE int sign_of(int64_t v)
-{
-    return (v > 0) - (v < 0);
-}
 
 /* Out-of-line tiers (predicates.c). */
 int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d);
@@ -51,15 +37,17 @@ VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
 {
     int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
     int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
-    if ((bound(acx) | bound(acy) | bound(bcx) | bound(bcy)) < 0x80000000u) {
+    uint64_t m = vor__mw_bound(acx) | vor__mw_bound(acy) | vor__mw_bound(bcx) |
+                 vor__mw_bound(bcy);
+    if (m < 0x80000000u) {
         /* the differences fit int32, |products| <= 2^62 and their
          * difference is below 2^63 */
-        COUNT(stats, orient2d[VOR_TIER_NARROW]);
+        VOR__COUNT(stats, orient2d[VOR_TIER_NARROW]);
         int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
                       vor__mul_i32((int32_t)acy, (int32_t)bcx);
-        return sign_of(det);
+        return vor__mw_sign64(det);
     }
-    COUNT(stats, orient2d[VOR_TIER_WIDE]);
+    VOR__COUNT(stats, orient2d[VOR_TIER_WIDE]);
     return vor__compare_products(acx, bcy, acy, bcx);
 }
 
@@ -70,12 +58,12 @@ VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
                     (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint64_t m = bound(d[0]) | bound(d[1]) | bound(d[2]) | bound(d[3]) |
-                 bound(d[4]) | bound(d[5]);
+    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
+                 vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
     if (m < (1u << 14)) {
         /* D <= 2^14: lifts and |crosses| <= 2^29 fit int32, the three
          * products <= 2^58 and their sum < 2^60 fit int64 */
-        COUNT(stats, incircle[VOR_TIER_NARROW]);
+        VOR__COUNT(stats, incircle[VOR_TIER_NARROW]);
         int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
         int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
         int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
@@ -84,13 +72,13 @@ VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
         int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
                       vor__mul_i32(lb, cx * ay - cy * ax) +
                       vor__mul_i32(lc, ax * by - ay * bx);
-        return sign_of(det);
+        return vor__mw_sign64(det);
     }
     if (m < 0x80000000u) {
-        COUNT(stats, incircle[VOR_TIER_MID]);
+        VOR__COUNT(stats, incircle[VOR_TIER_MID]);
         return vor__incircle_mid(d);
     }
-    COUNT(stats, incircle[VOR_TIER_WIDE]);
+    VOR__COUNT(stats, incircle[VOR_TIER_WIDE]);
     return vor__incircle_wide(d);
 }
 

@@ -1,97 +1,17 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster.c - what every raster entry point shares: the checks of a
- * request, and the band writer, which turns each row's runs of labels into
- * pixels of the output kind and hands out full bands; and the Euclidean
- * entry point, vor_raster_euclid, whose rows come from the fast Euclidean
- * path (raster_euclid.c) or the brute-force search. It links none of the
- * other metrics (vor_raster, raster_metrics.c). Teramoto renders the discrete
- * Voronoi diagram (section 2.2, Definition 2.2) with distance cones in a Z-buffer;
+ * raster.c - the raster core, what every raster entry point shares
+ * whatever its metric: the checks and set-up of a request, and the band
+ * writer, which turns each row's runs of labels into pixels of the output
+ * kind and hands out full bands. Teramoto renders the discrete Voronoi
+ * diagram (section 2.2, Definition 2.2) with distance cones in a Z-buffer;
  * here the same diagram is computed exactly, one row at a time, so that
- * only a band of rows ever needs memory.
+ * only a band of rows ever needs memory. The rows come from the metric
+ * families (raster_euclid.c, raster_metrics.c).
  */
 #include "raster.h"
 
 #include "multiword.h"
-
-/* ------------------------------------------------------------ distances */
-
-/* floor(sqrt(x)) by the bit-by-bit method (no division). */
-static uint32_t isqrt64(uint64_t x)
-{
-    uint64_t root = 0;
-    uint64_t bit = (uint64_t)1 << 62;
-    while (bit > x) {
-        bit >>= 2;
-    }
-    while (bit != 0u) { /* 32 steps at most: bit moves 2 places each */
-        if (x >= root + bit) {
-            x -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return (uint32_t)root;
-}
-
-static uint32_t magnitude(int64_t d)
-{
-    return (uint32_t)(d < 0 ? -d : d); /* |d| < 2^32 for int32 differences */
-}
-
-/* |q - s|^2 exactly, as *high (0 or 1) and the low 64 bits returned:
- * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
-static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
-{
-    uint64_t dx2 = vor__mul_u32(magnitude((int64_t)qx - s->x), magnitude((int64_t)qx - s->x));
-    uint64_t dy2 = vor__mul_u32(magnitude((int64_t)qy - s->y), magnitude((int64_t)qy - s->y));
-    uint64_t low = dx2 + dy2;
-    *high = low < dx2 ? 1u : 0u;
-    return low;
-}
-
-/* floor(|q - s|), saturated at UINT32_MAX: from 2^64 on the root is
- * >= 2^32. */
-static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
-{
-    uint32_t high;
-    uint64_t low = squared_distance(qx, qy, s, &high);
-    return high != 0u ? 0xFFFFFFFFu : isqrt64(low);
-}
-
-/* ---------------------------------------------------------- brute force */
-
-/* The nearest site to q by exact squared distances, ties to the smaller
- * index. */
-static uint32_t brute_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy)
-{
-    uint32_t best = 0, best_high;
-    uint64_t best_low = squared_distance(qx, qy, &sites->points[0], &best_high);
-    for (uint32_t k = 1; k < sites->count; k++) {
-        uint32_t high;
-        uint64_t low = squared_distance(qx, qy, &sites->points[k], &high);
-        if (high < best_high || (high == best_high && low < best_low)) {
-            best = k;
-            best_high = high;
-            best_low = low;
-        }
-    }
-    return best;
-}
-
-static uint32_t brute_row(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                          uint32_t j, vor__run_t *runs)
-{
-    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
-    uint32_t count = 0;
-    for (uint32_t i = 0; i < frame->width; i++) {
-        int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
-        count = vor__run_push(runs, count, i, brute_nearest(sites, qx, qy));
-    }
-    return count;
-}
 
 /* -------------------------------------------------------------- output */
 
@@ -206,8 +126,10 @@ static void write_row(const vor_raster_output_t *out, uint32_t width, const vor_
 
 /* ---------------------------------------------------------------- bands */
 
-void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
-                      const vor_raster_output_t *out, vor__run_t *const rows[2], size_t row_bytes)
+/* Starts the rows of frame; zeroes out->areas[0 .. sites). */
+static void bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
+                        const vor_raster_output_t *out, vor__run_t *const rows[2],
+                        size_t row_bytes)
 {
     if (out->areas != NULL) {
         for (uint32_t k = 0; k < sites; k++) {
@@ -227,11 +149,6 @@ void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t
     b->band_first = 0;
     b->flush_first = 0;
     b->hold = out->kind == VOR_RASTER_BOUNDARY;
-}
-
-void *vor__bands_pixels(const vor__bands_t *b)
-{
-    return (uint8_t *)b->out->band + (size_t)(b->next - b->band_first) * b->row_bytes;
 }
 
 uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
@@ -295,35 +212,9 @@ static size_t align8(size_t x)
     return (x + 7u) & ~(size_t)7u;
 }
 
-/* Carves the fast Euclidean path's arrays and the two rows of runs from
- * the work memory: 8-byte arrays first, then 4-byte ones, then bytes, so
- * that every array is aligned (total within VOR_RASTER_WORK_BYTES). */
-static void carve_euclid(vor__euclid_t *e, uint8_t *base, uint32_t n, uint32_t width,
-                         vor__run_t **rows)
-{
-    size_t at = 0;
-    e->val = (int64_t *)(void *)(base + at);
-    at = align8(at + (size_t)n * sizeof(int64_t));
-    rows[0] = (vor__run_t *)(void *)(base + at);
-    at = align8(at + (size_t)width * sizeof(vor__run_t));
-    rows[1] = (vor__run_t *)(void *)(base + at);
-    at = align8(at + (size_t)width * sizeof(vor__run_t));
-    uint32_t *words = (uint32_t *)(void *)(base + at);
-    e->by_x = words;
-    e->by_y = words + n;
-    e->cand = words + 2u * (size_t)n;
-    e->key = (int32_t *)(void *)(words + 3u * (size_t)n);
-    e->stack = words + 4u * (size_t)n;
-    e->left = words + 5u * (size_t)n;
-    e->right = words + 6u * (size_t)n;
-    e->sorted_x = (int32_t *)(void *)(words + 7u * (size_t)n);
-    e->sorted_y = (int32_t *)(void *)(words + 8u * (size_t)n);
-    e->mark = (uint8_t *)(void *)(words + 9u * (size_t)n);
-}
-
-int vor__raster_check(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                      const vor_raster_output_t *out, const void *work, size_t work_bytes,
-                      size_t *row_bytes)
+int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
+                      const vor_raster_sites_t *sites, const vor_raster_output_t *out,
+                      void *work, size_t work_bytes)
 {
     if (frame == NULL || sites == NULL || out == NULL || work == NULL || !frame_ok(frame)) {
         return VOR_ERR_ARG;
@@ -376,8 +267,8 @@ int vor__raster_check(const vor_raster_frame_t *frame, const vor_raster_sites_t 
     if (n > 0x07FFFFFFu || frame->width > 0x07FFFFFFu) {
         return VOR_ERR_ARG; /* the work size below must not overflow */
     }
-    *row_bytes = (size_t)frame->width * pixel_bytes;
-    if ((uint64_t)out->band_bytes < vor__mul_u32((uint32_t)*row_bytes, out->band_rows)) {
+    size_t row_bytes = (size_t)frame->width * pixel_bytes;
+    if ((uint64_t)out->band_bytes < vor__mul_u32((uint32_t)row_bytes, out->band_rows)) {
         return VOR_ERR_NOMEM;
     }
     if (work_bytes < VOR_RASTER_WORK_BYTES(n, frame->width)) {
@@ -386,65 +277,23 @@ int vor__raster_check(const vor_raster_frame_t *frame, const vor_raster_sites_t 
     if (((uintptr_t)work & (VOR_RASTER_WORK_ALIGN - 1u)) != 0u) {
         return VOR_ERR_ALIGN;
     }
+    r->frame = frame;
+    r->sites = sites;
+    r->out = out;
+    r->brute = out->method == VOR_RASTER_BRUTE;
+    r->row_bytes = row_bytes;
+    /* the two rows of runs first (16 width + 16 bytes at most), the
+     * family's state after them (45 n or 48 n + 48 bytes): together
+     * within VOR_RASTER_WORK_BYTES */
+    size_t rows8 = align8((size_t)frame->width * sizeof(vor__run_t));
+    r->rows[0] = (vor__run_t *)work;
+    r->rows[1] = (vor__run_t *)(void *)((uint8_t *)work + rows8);
+    r->rest = (uint8_t *)work + 2u * rows8;
+    r->rest_bytes = work_bytes - 2u * rows8;
     return VOR_OK;
 }
 
-size_t vor__raster_rows(const vor_raster_frame_t *frame, void *work, vor__run_t *rows[2])
+void vor__raster_start(vor__raster_t *r)
 {
-    size_t row_bytes8 = align8((size_t)frame->width * sizeof(vor__run_t));
-    rows[0] = (vor__run_t *)work;
-    rows[1] = (vor__run_t *)(void *)((uint8_t *)work + row_bytes8);
-    return 2u * row_bytes8;
-}
-
-/* The DISTANCE pixels of row j: floor(|q - s|) of each pixel's site. */
-static void euclid_distances(const vor_raster_frame_t *frame, const vor_point_t *points,
-                             uint32_t j, const vor__run_t *runs, uint32_t count, uint32_t *px)
-{
-    int32_t qy = (int32_t)(frame->origin_y + vor__offset(j, frame->step_y));
-    uint32_t i = 0;
-    for (uint32_t r = 0; r < count; r++) {
-        for (; i < runs[r].end; i++) {
-            int32_t qx = (int32_t)(frame->origin_x + vor__offset(i, frame->step_x));
-            px[i] = euclid_distance(qx, qy, &points[runs[r].site]);
-        }
-    }
-}
-
-int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                      const vor_raster_output_t *out, void *work, size_t work_bytes)
-{
-    size_t row_bytes;
-    int status = vor__raster_check(frame, sites, out, work, work_bytes, &row_bytes);
-    if (status != VOR_OK) {
-        return status;
-    }
-    if (sites->metric != VOR_METRIC_EUCLID) {
-        return VOR_ERR_ARG;
-    }
-    const uint32_t n = sites->count;
-    vor__run_t *rows[2];
-    vor__euclid_t euclid;
-    carve_euclid(&euclid, work, n, frame->width, rows);
-    int fast = out->method == VOR_RASTER_FAST && vor__euclid_fits(frame, sites->points, n);
-    if (fast) {
-        vor__euclid_prepare(&euclid, frame, sites->points, n);
-    }
-    vor__bands_t bands;
-    vor__bands_begin(&bands, frame, n, out, rows, row_bytes);
-    for (uint32_t j = 0; j <= frame->height; j++) { /* j = height: the end */
-        uint32_t count = 0;
-        if (j < frame->height) {
-            vor__run_t *runs = vor__bands_runs(&bands);
-            count = fast ? vor__euclid_row(&euclid, j, runs) : brute_row(frame, sites, j, runs);
-            if (out->kind == VOR_RASTER_DISTANCE) {
-                euclid_distances(frame, sites->points, j, runs, count, vor__bands_pixels(&bands));
-            }
-        }
-        status = vor__bands_put_flush(&bands, count);
-        if (status != 0) {
-            return status;
-        }
-    }
-    return VOR_OK;
+    bands_begin(&r->bands, r->frame, r->sites->count, r->out, r->rows, r->row_bytes);
 }

@@ -1,8 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster.h - what the band writer (raster.c), the entry points and the
- * row producers share.
- * Private to the library.
+ * raster.h - the raster core (raster.c): the checks and set-up every
+ * entry point shares, the rows of runs, the scan of the rows, and the
+ * band writer that turns them into output pixels. Private to the library.
+ *
+ * The metric families (raster_euclid.c, raster_metrics.c) produce rows of
+ * runs for the request set up here, and their entry points end with the
+ * core's scan; the core knows nothing of distances.
  *
  * A row of labels travels as runs: run k covers pixels [end of run k-1,
  * end of run k) and belongs to one site. Consecutive runs have different
@@ -33,22 +37,11 @@ static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t 
     return count + 1u;
 }
 
-/* The checks every entry point makes (raster.c), all but the metric's
- * own fields: VOR_OK with the bytes of one output row in *row_bytes, or
- * the error vor_raster documents. */
-int vor__raster_check(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                      const vor_raster_output_t *out, const void *work, size_t work_bytes,
-                      size_t *row_bytes);
-
-/* Two rows of runs at the start of the work memory; returns the bytes
- * they take (8-aligned). */
-size_t vor__raster_rows(const vor_raster_frame_t *frame, void *work, vor__run_t *rows[2]);
-
-/* The band writer (raster.c). An entry point produces the rows top down
- * into vor__bands_runs (and, for DISTANCE, writes their pixels at
- * vor__bands_pixels itself) and hands each to vor__bands_put_flush,
- * then calls it once more with no row (the end); each full band goes to
- * the output's flush. BOUNDARY rows are written one row late, when
+/* The band writer (raster.c). The scan (vor__raster_scan, below) has
+ * the rows produced top down into vor__bands_runs (and, for DISTANCE,
+ * their pixels at vor__bands_pixels) and hands each to
+ * vor__bands_put_flush, then calls it once more with no row (the end);
+ * each full band goes to the output's flush. BOUNDARY rows are written one row late, when
  * the row below is known. */
 typedef struct vor__bands {
     const vor_raster_output_t *out;
@@ -64,17 +57,16 @@ typedef struct vor__bands {
     int hold;             /* BOUNDARY: a row waits for the one below */
 } vor__bands_t;
 
-/* Starts the rows of frame; zeroes out->areas[0 .. sites). */
-void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
-                      const vor_raster_output_t *out, vor__run_t *const rows[2], size_t row_bytes);
-
 static inline vor__run_t *vor__bands_runs(const vor__bands_t *b)
 {
     return b->rows[b->cur];
 }
 
 /* Where the next row's pixels go in the band (not for BOUNDARY). */
-void *vor__bands_pixels(const vor__bands_t *b);
+static inline void *vor__bands_pixels(const vor__bands_t *b)
+{
+    return (uint8_t *)b->out->band + (size_t)(b->next - b->band_first) * b->row_bytes;
+}
 
 /* Takes the next row (count runs; the end when all rows were put).
  * Returns the rows of a band to flush now, or 0. */
@@ -93,36 +85,69 @@ VOR__ALWAYS_INLINE int vor__bands_put_flush(vor__bands_t *b, uint32_t count)
     return b->out->flush(b->out->user, b->flush_first, rows, b->out->band);
 }
 
-/* The fast Euclidean producer (raster_euclid.c): its state lives in the
- * caller's work memory (n entries per array). */
-typedef struct vor__euclid {
-    const vor_point_t *points;
-    uint32_t n;
-    uint32_t width, height;
-    int32_t step_x, step_y;
-    int32_t origin_x, origin_y;
-    uint32_t *by_x;       /* site ids sorted by (x, id) */
-    uint32_t *by_y;       /* site ids sorted by (y, id) */
-    int32_t *sorted_x;    /* relative x of by_x[p] */
-    int32_t *sorted_y;    /* relative y of by_x[p] */
-    uint8_t *mark;        /* per site: candidate flags of this band and the next */
-    uint32_t *cand;       /* the band's list: sites in (x, id) order (also scratch) */
-    int64_t *val;         /* the list's lines, packed (also scratch: edge values) */
-    int32_t *key;         /* scratch: edge envelope keys */
-    uint32_t *stack;      /* scratch: edge envelope stack */
-    uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
-    uint32_t *right;      /* and of the right edge */
-    uint32_t left_count, right_count;
-    uint32_t left_next, right_next; /* first pieces that may meet the next band */
-    uint32_t cand_count;
-    uint32_t band_first, band_last; /* rows of the current culling band */
-    uint32_t inside_next;           /* by_y position: first site not yet below the band */
-    uint32_t quotient_bits;         /* 2^quotient_bits >= width */
-    uint32_t reach_row;             /* the last row of the previous band ... */
-    uint64_t reach_most;            /* ... and its largest squared distance to a site */
-    int band_valid;
-    int narrow;          /* tier: 1 narrow (< 2^14), 2 mid (< 2^19), 0 wide */
-} vor__euclid_t;
+/* One request, set up the same way for every metric: vor__raster_check
+ * takes it apart and divides the work memory (the two rows of runs at its
+ * start, the family's state in the rest), the family makes its own checks
+ * and prepares its state, and vor__raster_scan renders. */
+typedef struct vor__raster {
+    const vor_raster_frame_t *frame; /* the caller's: read, never copied */
+    const vor_raster_sites_t *sites;
+    const vor_raster_output_t *out;
+    int brute;           /* VOR_RASTER_BRUTE: every site at every pixel */
+    size_t row_bytes;    /* of one output row */
+    vor__run_t *rows[2]; /* at the start of the work memory */
+    uint8_t *rest;       /* the work memory after the rows (8-aligned) ... */
+    size_t rest_bytes;   /* ... and its size */
+    vor__bands_t bands;
+} vor__raster_t;
+
+/* The checks every entry point makes, all but the metric's own fields:
+ * VOR_OK with r filled in and the work memory divided (nothing written
+ * there yet), or the error vor_raster documents. */
+int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
+                      const vor_raster_sites_t *sites, const vor_raster_output_t *out,
+                      void *work, size_t work_bytes);
+
+/* Starts the bands of a checked request (zeroes out->areas): the first
+ * write to the caller's memory, after every check (vor__raster_scan). */
+void vor__raster_start(vor__raster_t *r);
+
+/* A family's producers for vor__raster_scan: the runs of row j (rows in
+ * increasing order) into runs, their count returned; and the DISTANCE
+ * pixels of those runs. state is the family's own. */
+typedef uint32_t vor__raster_row_fn(void *state, uint32_t j, vor__run_t *runs);
+typedef void vor__raster_distances_fn(const void *state, uint32_t j, const vor__run_t *runs,
+                                      uint32_t count, uint32_t *px);
+
+/* The scan every entry point ends with: starts the bands, then takes the
+ * rows top down from the family's producers into the band writer, and
+ * hands each full band to the output's flush. VOR_OK, or the flush's
+ * nonzero value. Forced inline with the family's own static producers:
+ * the calls are then direct (no function pointer hides which family a
+ * firmware links, and tools/stack-depth.py sees every call), the
+ * producers inline into the entry point as the compiler sees fit, and the
+ * caller's flush is called from the public entry point. */
+VOR__ALWAYS_INLINE int vor__raster_scan(vor__raster_t *r, void *state, vor__raster_row_fn *row,
+                                        vor__raster_distances_fn *distances)
+{
+    const uint32_t height = r->frame->height;
+    vor__raster_start(r);
+    for (uint32_t j = 0; j <= height; j++) { /* j = height: the end */
+        uint32_t count = 0;
+        if (j < height) {
+            vor__run_t *runs = vor__bands_runs(&r->bands);
+            count = row(state, j, runs);
+            if (r->out->kind == VOR_RASTER_DISTANCE) {
+                distances(state, j, runs, count, vor__bands_pixels(&r->bands));
+            }
+        }
+        int status = vor__bands_put_flush(&r->bands, count);
+        if (status != 0) {
+            return status;
+        }
+    }
+    return VOR_OK;
+}
 
 /* i * step for a pixel index i < 2^31 and a step in (0, 2^31): below
  * 2^62, and without a 64-bit multiply call on Cortex-M0. */
@@ -130,22 +155,5 @@ static inline int64_t vor__offset(uint32_t i, int32_t step)
 {
     return (int64_t)vor__mul_u32(i, (uint32_t)step);
 }
-
-/* Rows per culling band of the fast path. */
-#define VOR__CULL_ROWS 16u
-
-/* True when the fast path's bit budget holds: every site within 2^29 of
- * the first pixel centre, (width - 1) * step_x and (height - 1) * step_y
- * below 2^29. */
-int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n);
-
-/* Sets e up for frame and the n points: sorts the sites and envelopes
- * the frame's left and right edges. The arrays of e must be set; frame
- * checked; vor__euclid_fits true. */
-void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
-                         const vor_point_t *points, uint32_t n);
-
-/* Runs of row j (rows requested in increasing order); returns their count. */
-uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs);
 
 #endif

@@ -1,6 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster_euclid.c - the fast exact path for Euclidean point sites.
+ * raster_euclid.c - the Euclidean family of the raster, vor_raster_euclid:
+ * the fast exact path for Euclidean point sites, the brute-force search it
+ * falls back on (VOR_RASTER_BRUTE, or a frame beyond its bit budget), and
+ * the distance pixels, on the raster core (raster.h). It links none of the
+ * other metrics.
  *
  * Along a row v (world y relative to the first pixel), the squared
  * distance from pixel u to site (a, b) (coordinates relative to the first
@@ -31,7 +35,7 @@
  * per band, O(n) for the marks and O(candidates) for the edge; per row,
  * O(candidates) for the envelope and nothing per pixel.
  *
- * Bit budget (vor__euclid_fits): every relative coordinate a, b lies in
+ * Bit budget (fits): every relative coordinate a, b lies in
  * (-2^29, 2^29) and every pixel offset u, v in [0, 2^29). Then |v - b| <
  * 2^30, values a^2 + (v - b)^2 < 2^58 + 2^60 < 2^61, |2 a u| < 2^59, and
  * the difference of two lines at a pixel, a difference of two squared
@@ -63,13 +67,44 @@
 #define NARROW ((int64_t)1 << 14)
 #define MID ((int64_t)1 << 19)
 
-#if defined(__GNUC__)
-#define ALWAYS_INLINE static inline __attribute__((always_inline))
-#else
-#define ALWAYS_INLINE static inline
-#endif
+/* Rows per culling band. */
+#define CULL_ROWS 16u
 
-int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n)
+/* The family's state: the frame and sites of the request, and the fast
+ * path's arrays, which live in the work memory after the rows (n entries
+ * per array). */
+typedef struct euclid {
+    const vor_raster_frame_t *frame;
+    const vor_point_t *points;
+    uint32_t n;
+    int fast;             /* the fast path; else the brute-force search */
+    uint32_t *by_x;       /* site ids sorted by (x, id) */
+    uint32_t *by_y;       /* site ids sorted by (y, id) */
+    int32_t *sorted_x;    /* relative x of by_x[p] */
+    int32_t *sorted_y;    /* relative y of by_x[p] */
+    uint8_t *mark;        /* per site: candidate flags of this band and the next */
+    uint32_t *cand;       /* the band's list: sites in (x, id) order (also scratch) */
+    int64_t *val;         /* the list's lines, packed (also scratch: edge values) */
+    int32_t *key;         /* scratch: edge envelope keys */
+    uint32_t *stack;      /* scratch: edge envelope stack */
+    uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
+    uint32_t *right;      /* and of the right edge */
+    uint32_t left_count, right_count;
+    uint32_t left_next, right_next; /* first pieces that may meet the next band */
+    uint32_t cand_count;
+    uint32_t band_first, band_last; /* rows of the current culling band */
+    uint32_t inside_next;           /* by_y position: first site not yet below the band */
+    uint32_t quotient_bits;         /* 2^quotient_bits >= width */
+    uint32_t reach_row;             /* the last row of the previous band ... */
+    uint64_t reach_most;            /* ... and its largest squared distance to a site */
+    int band_valid;
+    int narrow;          /* tier: 1 narrow (< 2^14), 2 mid (< 2^19), 0 wide */
+} euclid_t;
+
+/* True when the fast path's bit budget holds: every site within 2^29 of
+ * the first pixel centre, (width - 1) * step_x and (height - 1) * step_y
+ * below 2^29. */
+static int fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint32_t n)
 {
     if (vor__offset(frame->width - 1u, frame->step_x) >= BUDGET ||
         vor__offset(frame->height - 1u, frame->step_y) >= BUDGET) {
@@ -87,14 +122,14 @@ int vor__euclid_fits(const vor_raster_frame_t *frame, const vor_point_t *points,
 
 /* ------------------------------------------------------------- sites */
 
-static int32_t rel_x(const vor__euclid_t *e, uint32_t id)
+static int32_t rel_x(const euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].x - e->origin_x);
+    return (int32_t)((int64_t)e->points[id].x - e->frame->origin_x);
 }
 
-static int32_t rel_y(const vor__euclid_t *e, uint32_t id)
+static int32_t rel_y(const euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].y - e->origin_y);
+    return (int32_t)((int64_t)e->points[id].y - e->frame->origin_y);
 }
 
 static int64_t square(int32_t x)
@@ -103,9 +138,9 @@ static int64_t square(int32_t x)
 }
 
 /* The offset of the last pixel of a row, U = (width - 1) step_x < 2^29. */
-static int32_t frame_u(const vor__euclid_t *e)
+static int32_t frame_u(const euclid_t *e)
 {
-    return (int32_t)(vor__offset(e->width - 1u, e->step_x));
+    return (int32_t)(vor__offset(e->frame->width - 1u, e->frame->step_x));
 }
 
 /* ---------------------------------------------------------------- sort */
@@ -178,29 +213,6 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
 
 /* ---------------------------------------------------- edge envelopes */
 
-/* x * y as a 96-bit value hi * 2^32 + lo, for |x| < 2^62 and y < 2^31. */
-typedef struct wide {
-    int64_t hi;
-    uint32_t lo;
-} wide_t;
-
-static wide_t wide_mul(int64_t x, uint32_t y)
-{
-    /* x = xh 2^32 + xl with xl in [0, 2^32), |xh| < 2^30 */
-    uint32_t xl = (uint32_t)((uint64_t)x & 0xFFFFFFFFu);
-    int32_t xh = (int32_t)((x - (int64_t)xl) / 4294967296); /* exact: constant divisor */
-    uint64_t low = vor__mul_u32(xl, y);                     /* < 2^63 */
-    wide_t r;
-    r.hi = vor__mul_i32(xh, (int32_t)y) + (int64_t)(low >> 32); /* |.| < 2^62 */
-    r.lo = (uint32_t)(low & 0xFFFFFFFFu);
-    return r;
-}
-
-static int wide_greater(wide_t p, wide_t q)
-{
-    return p.hi > q.hi || (p.hi == q.hi && p.lo > q.lo);
-}
-
 /*
  * Continuous lower envelope of the lines val[p] - 2 key[p] t, positions
  * 0 .. m-1, keys non-decreasing (the band edges, where every real point
@@ -212,7 +224,7 @@ static int wide_greater(wide_t p, wide_t q)
  * their crossing points do not decrease. Keys fit in (-2^29, 2^29) (key
  * differences < 2^30), values in [0, 2^61).
  */
-ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uint32_t m,
+VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uint32_t m,
                                      uint32_t *stack, int tier)
 {
     uint32_t top = 0;
@@ -241,9 +253,11 @@ ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uin
                 int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
                 greater = left > right;
             } else {
-                wide_t left = wide_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
-                wide_t right = wide_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
-                greater = wide_greater(left, right);
+                vor__mw_i96_t left =
+                    vor__mw_i96_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
+                vor__mw_i96_t right =
+                    vor__mw_i96_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
+                greater = vor__mw_i96_greater(left, right);
             }
             if (!greater) {
                 break;
@@ -260,8 +274,8 @@ ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val, uin
  * value difference fits int32 and its product with a key difference (<
  * 2^15) fits int64 from one 32x32 multiply. Mid (2), M < 2^19: values <
  * 2^38 + 2^40 < 2^41, key differences < 2^20, products < 2^61 in int64.
- * Wide (0), M < 2^29: 96-bit products (wide_mul). */
-static uint32_t envelope(const vor__euclid_t *e, const int32_t *key, const int64_t *val,
+ * Wide (0), M < 2^29: 96-bit products (vor__mw_i96_mul). */
+static uint32_t envelope(const euclid_t *e, const int32_t *key, const int64_t *val,
                          uint32_t m, uint32_t *stack)
 {
     if (e->narrow == 1) {
@@ -285,22 +299,22 @@ static int64_t crossing_scaled(int32_t dkey, int32_t bound)
  * sites by_x[cand[pos]]) or a vertical one at offset u (key b, value
  * (a - u)^2 + b^2, positions into by_y). */
 typedef struct edge_lines {
-    const vor__euclid_t *e;
+    const euclid_t *e;
     int32_t u;     /* vertical edges: the edge's offset */
     uint32_t m;    /* positions 0 .. m-1 */
 } edge_lines_t;
 
-ALWAYS_INLINE uint32_t edge_site(const edge_lines_t *l, uint32_t pos, int vertical)
+VOR__ALWAYS_INLINE uint32_t edge_site(const edge_lines_t *l, uint32_t pos, int vertical)
 {
     return vertical ? l->e->by_y[pos] : l->e->by_x[l->e->cand[pos]];
 }
 
-ALWAYS_INLINE int32_t edge_key(const edge_lines_t *l, uint32_t pos, int vertical)
+VOR__ALWAYS_INLINE int32_t edge_key(const edge_lines_t *l, uint32_t pos, int vertical)
 {
     return vertical ? rel_y(l->e, l->e->by_y[pos]) : l->e->key[pos];
 }
 
-ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical)
+VOR__ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical)
 {
     if (vertical) {
         uint32_t id = l->e->by_y[pos];
@@ -318,7 +332,7 @@ ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical
  * first piece not ending before lo: a later band, whose lo is larger, can
  * start there.
  */
-ALWAYS_INLINE uint32_t mark_pieces_impl(vor__euclid_t *e, const edge_lines_t *l,
+VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(euclid_t *e, const edge_lines_t *l,
                                         const uint32_t *hull, uint32_t from, uint32_t count,
                                         int32_t lo, int32_t hi, uint8_t flags, int vertical)
 {
@@ -361,7 +375,7 @@ ALWAYS_INLINE uint32_t mark_pieces_impl(vor__euclid_t *e, const edge_lines_t *l,
 /* The pieces of the frame's left or right edge envelope that meet the
  * band's rows [v0, v1]; *cursor carries the first live piece to the next
  * band. */
-static void mark_vertical(vor__euclid_t *e, const uint32_t *hull, uint32_t count, int32_t u,
+static void mark_vertical(euclid_t *e, const uint32_t *hull, uint32_t count, int32_t u,
                           int32_t v0, int32_t v1, uint32_t *cursor)
 {
     edge_lines_t l = {e, u, e->n};
@@ -370,7 +384,7 @@ static void mark_vertical(vor__euclid_t *e, const uint32_t *hull, uint32_t count
 
 /* Envelope of a vertical frame edge at offset u over every site (keys:
  * relative y in by_y order, in sorted_y while prepare runs). */
-static uint32_t vertical_envelope(vor__euclid_t *e, int32_t u, uint32_t *out)
+static uint32_t vertical_envelope(euclid_t *e, int32_t u, uint32_t *out)
 {
     for (uint32_t p = 0; p < e->n; p++) {
         uint32_t id = e->by_y[p];
@@ -386,7 +400,7 @@ static uint32_t vertical_envelope(vor__euclid_t *e, int32_t u, uint32_t *out)
 /* Envelope of the horizontal edge at row offset v over the band's list
  * cand[0 .. m) (by_x positions, in (x, id) order), marked over the whole
  * width [0, U] with flags. */
-static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t flags)
+static void mark_horizontal(euclid_t *e, uint32_t m, int32_t v, uint8_t flags)
 {
     for (uint32_t q = 0; q < m; q++) {
         uint32_t p = e->cand[q];
@@ -401,17 +415,11 @@ static void mark_horizontal(vor__euclid_t *e, uint32_t m, int32_t v, uint8_t fla
 
 /* ------------------------------------------------------------- prepare */
 
-void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
-                         const vor_point_t *points, uint32_t n)
+/* Sorts the sites and envelopes the frame's left and right edges; e's
+ * arrays carved, fits() true. */
+static void fast_prepare(euclid_t *e)
 {
-    e->points = points;
-    e->n = n;
-    e->width = frame->width;
-    e->height = frame->height;
-    e->step_x = frame->step_x;
-    e->step_y = frame->step_y;
-    e->origin_x = frame->origin_x;
-    e->origin_y = frame->origin_y;
+    const uint32_t n = e->n;
     /* y order first: sorted_y holds the y of by_y until the x sort
      * (sorted_x the y of each site while sorting) */
     for (uint32_t k = 0; k < n; k++) {
@@ -422,8 +430,8 @@ void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
         e->sorted_y[p] = e->sorted_x[e->by_y[p]];
     }
 
-    int64_t reach = vor__offset(e->width - 1u, e->step_x);
-    int64_t tall = vor__offset(e->height - 1u, e->step_y);
+    int64_t reach = vor__offset(e->frame->width - 1u, e->frame->step_x);
+    int64_t tall = vor__offset(e->frame->height - 1u, e->frame->step_y);
     int64_t most = reach > tall ? reach : tall;
     for (uint32_t k = 0; k < n; k++) {
         int64_t a = rel_x(e, k), b = rel_y(e, k);
@@ -449,7 +457,7 @@ void vor__euclid_prepare(vor__euclid_t *e, const vor_raster_frame_t *frame,
     }
     /* quotients of the row envelope stay below width: bits enough */
     uint32_t bits = 1;
-    while (bits < 31u && ((uint32_t)1 << bits) < e->width) {
+    while (bits < 31u && ((uint32_t)1 << bits) < e->frame->width) {
         bits++;
     }
     e->quotient_bits = bits;
@@ -515,13 +523,13 @@ static int64_t pack_line(int32_t a, int32_t b)
     return (int64_t)((hi << 32) | lo); /* < 2^62 */
 }
 
-ALWAYS_INLINE int32_t line_a(int64_t line)
+VOR__ALWAYS_INLINE int32_t line_a(int64_t line)
 {
     return (int32_t)(uint32_t)((uint64_t)line & 0xFFFFFFFFu) - (int32_t)BUDGET;
 }
 
 /* v - b, from v + 2^29 */
-ALWAYS_INLINE int32_t line_dy(int64_t line, int32_t v_biased)
+VOR__ALWAYS_INLINE int32_t line_dy(int64_t line, int32_t v_biased)
 {
     return v_biased - (int32_t)(line >> 32);
 }
@@ -536,7 +544,7 @@ static int64_t pack_narrow(int32_t a, int32_t b, uint32_t id)
 }
 
 /* Sets list line q. */
-static void set_line(vor__euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32_t b)
+static void set_line(euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32_t b)
 {
     e->cand[q] = id;
     e->val[q] = e->narrow == 1 ? pack_narrow(a, b, id) : pack_line(a, b);
@@ -573,11 +581,11 @@ static void set_line(vor__euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32
  * its product with an offset is < 2^60, everything in int64. The quotient
  * is below width (2^quotient_bits).
  */
-static uint32_t row_envelope_narrow(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *runs)
 {
     const int64_t *line = e->val;
     const uint32_t m = e->cand_count;
-    const uint32_t step = (uint32_t)e->step_x;
+    const uint32_t step = (uint32_t)e->frame->step_x;
     const uint32_t last_u = (uint32_t)frame_u(e);
     const uint32_t bits = e->quotient_bits;
     const int32_t vb = v + NARROW_BIAS;
@@ -642,12 +650,12 @@ static uint32_t row_envelope_narrow(const vor__euclid_t *e, int32_t v, vor__run_
     return top;
 }
 
-static uint32_t row_envelope_wide(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+static uint32_t row_envelope_wide(const euclid_t *e, int32_t v, vor__run_t *runs)
 {
     const uint32_t *site = e->cand;
     const int64_t *line = e->val;
     const uint32_t m = e->cand_count;
-    const int32_t step = e->step_x;
+    const int32_t step = e->frame->step_x;
     const int32_t last_u = frame_u(e);
     const uint32_t bits = e->quotient_bits;
     const int32_t vb = v + (int32_t)BUDGET;
@@ -712,7 +720,7 @@ static uint32_t row_envelope_wide(const vor__euclid_t *e, int32_t v, vor__run_t 
     return top;
 }
 
-static uint32_t row_envelope(const vor__euclid_t *e, int32_t v, vor__run_t *runs)
+static uint32_t row_envelope(const euclid_t *e, int32_t v, vor__run_t *runs)
 {
     if (e->narrow == 1) {
         return row_envelope_narrow(e, v, runs);
@@ -724,7 +732,7 @@ static uint32_t row_envelope(const vor__euclid_t *e, int32_t v, vor__run_t *runs
 
 /* The sites whose marks meet flags, in (x, id) order, as the list the
  * rows take (cand = site, val = pack_line(a, b)); returns their count. */
-static uint32_t gather_lines(vor__euclid_t *e, uint8_t flags)
+static uint32_t gather_lines(euclid_t *e, uint8_t flags)
 {
     uint32_t m = 0;
     for (uint32_t p = 0; p < e->n; p++) {
@@ -738,7 +746,7 @@ static uint32_t gather_lines(vor__euclid_t *e, uint8_t flags)
 
 /* The same sites as by_x positions (cand = position), for
  * mark_horizontal; returns their count. */
-static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
+static uint32_t gather_positions(euclid_t *e, uint8_t flags)
 {
     uint32_t m = 0;
     for (uint32_t p = 0; p < e->n; p++) {
@@ -751,32 +759,32 @@ static uint32_t gather_positions(vor__euclid_t *e, uint8_t flags)
 
 /* The last row of the band that starts at row first, and the row of its
  * rectangle's bottom edge: the next band's first row, if any. */
-static uint32_t band_last_row(const vor__euclid_t *e, uint32_t first)
+static uint32_t band_last_row(const euclid_t *e, uint32_t first)
 {
-    uint32_t last = first + (VOR__CULL_ROWS - 1u);
-    return (last >= e->height || last < first) ? e->height - 1u : last;
+    uint32_t last = first + (CULL_ROWS - 1u);
+    return (last >= e->frame->height || last < first) ? e->frame->height - 1u : last;
 }
 
-static uint32_t band_bottom(const vor__euclid_t *e, uint32_t first)
+static uint32_t band_bottom(const euclid_t *e, uint32_t first)
 {
     uint32_t last = band_last_row(e, first);
-    return (last + 1u < e->height) ? last + 1u : last;
+    return (last + 1u < e->frame->height) ? last + 1u : last;
 }
 
 /* The largest squared distance from a pixel centre of row offset v to
  * its site, from the row's stack (first pixels, list positions): along a
  * run it is largest at one of the run's ends. */
-static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *runs,
+static uint64_t farthest(const euclid_t *e, int32_t v, const vor__run_t *runs,
                          uint32_t count)
 {
     uint64_t most = 0;
     for (uint32_t t = 0; t < count; t++) {
         uint32_t id = e->cand[runs[t].site];
-        uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->width;
+        uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->frame->width;
         int32_t a = rel_x(e, id);
         int64_t dy2 = square(rel_y(e, id) - v);
-        int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->step_x) - a) + dy2;
-        int64_t d2 = square((int32_t)vor__offset(end - 1u, e->step_x) - a) + dy2;
+        int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->frame->step_x) - a) + dy2;
+        int64_t d2 = square((int32_t)vor__offset(end - 1u, e->frame->step_x) - a) + dy2;
         uint64_t d = (uint64_t)(d1 > d2 ? d1 : d2);
         most = d > most ? d : most;
     }
@@ -804,11 +812,11 @@ static uint64_t farthest(const vor__euclid_t *e, int32_t v, const vor__run_t *ru
  * taken in y order while that holds, and the edge's envelope is computed
  * over them and the candidates.
  */
-static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
+static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
 {
     const uint32_t last = band_last_row(e, first);
-    const int32_t v0 = (int32_t)(vor__offset(first, e->step_y));
-    const int32_t v1 = (int32_t)(vor__offset(band_bottom(e, first), e->step_y));
+    const int32_t v0 = (int32_t)(vor__offset(first, e->frame->step_y));
+    const int32_t v1 = (int32_t)(vor__offset(band_bottom(e, first), e->frame->step_y));
     const int32_t u1 = frame_u(e);
     const uint32_t n = e->n;
     if (first == 0u) { /* the frame's top edge, over every site */
@@ -852,7 +860,7 @@ static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
         }
         /* the sites below the edge, in y order, while b - v1 - h <= sqrt(E)
          * (d below 2^30 when positive: its square fits) */
-        const int64_t h = (int64_t)(((uint32_t)e->step_x + 1u) / 2u);
+        const int64_t h = (int64_t)(((uint32_t)e->frame->step_x + 1u) / 2u);
         for (; p < n; p++) {
             uint32_t id = e->by_y[p];
             int64_t d = (int64_t)rel_y(e, id) - v1 - h;
@@ -882,17 +890,18 @@ static void select_band(vor__euclid_t *e, uint32_t first, vor__run_t *runs)
     e->band_valid = 1;
 }
 
-uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
+/* Runs of row j by the fast path. */
+static uint32_t fast_row(euclid_t *e, uint32_t j, vor__run_t *runs)
 {
     if (!e->band_valid || j > e->band_last) {
         select_band(e, j, runs);
     }
-    const int32_t v = (int32_t)(vor__offset(j, e->step_y));
+    const int32_t v = (int32_t)(vor__offset(j, e->frame->step_y));
     const uint32_t count = row_envelope(e, v, runs);
-    if (j == e->band_last && j + 1u < e->height) {
+    if (j == e->band_last && j + 1u < e->frame->height) {
         /* this row's sites, at the next band's bottom edge */
         uint32_t bottom = band_bottom(e, j + 1u);
-        e->reach_most = farthest(e, (int32_t)vor__offset(bottom, e->step_y), runs, count);
+        e->reach_most = farthest(e, (int32_t)vor__offset(bottom, e->frame->step_y), runs, count);
         e->reach_row = j;
     }
     /* (first pixel, list position) to (end, site) */
@@ -901,7 +910,159 @@ uint32_t vor__euclid_row(vor__euclid_t *e, uint32_t j, vor__run_t *runs)
         runs[t].end = runs[t + 1u].end;
         runs[t].site = site[runs[t].site];
     }
-    runs[count - 1u].end = e->width;
+    runs[count - 1u].end = e->frame->width;
     runs[count - 1u].site = site[runs[count - 1u].site];
     return count;
+}
+
+/* ------------------------------------------------------------ distances */
+
+/* floor(sqrt(x)) by the bit-by-bit method (no division). */
+static uint32_t isqrt64(uint64_t x)
+{
+    uint64_t root = 0;
+    uint64_t bit = (uint64_t)1 << 62;
+    while (bit > x) {
+        bit >>= 2;
+    }
+    while (bit != 0u) { /* 32 steps at most: bit moves 2 places each */
+        if (x >= root + bit) {
+            x -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return (uint32_t)root;
+}
+
+/* |q - s|^2 exactly, as *high (0 or 1) and the low 64 bits returned:
+ * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
+static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
+{
+    uint32_t ax = vor__mw_magnitude((int64_t)qx - s->x);
+    uint32_t ay = vor__mw_magnitude((int64_t)qy - s->y);
+    uint64_t dx2 = vor__mul_u32(ax, ax), dy2 = vor__mul_u32(ay, ay);
+    uint64_t low = dx2 + dy2;
+    *high = low < dx2 ? 1u : 0u;
+    return low;
+}
+
+/* floor(|q - s|), saturated at UINT32_MAX: from 2^64 on the root is
+ * >= 2^32. */
+static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
+{
+    uint32_t high;
+    uint64_t low = squared_distance(qx, qy, s, &high);
+    return high != 0u ? 0xFFFFFFFFu : isqrt64(low);
+}
+
+/* ---------------------------------------------------------- brute force */
+
+/* The nearest site to q by exact squared distances, ties to the smaller
+ * index. */
+static uint32_t brute_nearest(const euclid_t *e, int32_t qx, int32_t qy)
+{
+    uint32_t best = 0, best_high;
+    uint64_t best_low = squared_distance(qx, qy, &e->points[0], &best_high);
+    for (uint32_t k = 1; k < e->n; k++) {
+        uint32_t high;
+        uint64_t low = squared_distance(qx, qy, &e->points[k], &high);
+        if (high < best_high || (high == best_high && low < best_low)) {
+            best = k;
+            best_high = high;
+            best_low = low;
+        }
+    }
+    return best;
+}
+
+static uint32_t brute_row(const euclid_t *e, uint32_t j, vor__run_t *runs)
+{
+    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    const uint32_t width = e->frame->width;
+    int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < width; i++) {
+        int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
+        count = vor__run_push(runs, count, i, brute_nearest(e, qx, qy));
+    }
+    return count;
+}
+
+/* -------------------------------------------------------------- family */
+
+/* Carves the fast path's arrays from the work memory after the rows:
+ * 8-byte arrays first, then 4-byte ones, then bytes, so that every array
+ * is aligned (45 n bytes). */
+static void carve(euclid_t *e, uint8_t *base)
+{
+    const size_t n = e->n;
+    e->val = (int64_t *)(void *)base;
+    uint32_t *words = (uint32_t *)(void *)(base + n * sizeof(int64_t));
+    e->by_x = words;
+    e->by_y = words + n;
+    e->cand = words + 2u * n;
+    e->key = (int32_t *)(void *)(words + 3u * n);
+    e->stack = words + 4u * n;
+    e->left = words + 5u * n;
+    e->right = words + 6u * n;
+    e->sorted_x = (int32_t *)(void *)(words + 7u * n);
+    e->sorted_y = (int32_t *)(void *)(words + 8u * n);
+    e->mark = (uint8_t *)(void *)(words + 9u * n);
+}
+
+/* Sets e up for the checked request r: the fast path when r asks for it
+ * and its bit budget holds, else the brute force. */
+static void prepare(euclid_t *e, const vor__raster_t *r)
+{
+    e->frame = r->frame;
+    e->points = r->sites->points;
+    e->n = r->sites->count;
+    e->fast = !r->brute && fits(e->frame, e->points, e->n);
+    if (e->fast) {
+        carve(e, r->rest);
+        fast_prepare(e);
+    }
+}
+
+/* The family's producers for the scan (vor__raster_row_fn,
+ * vor__raster_distances_fn). */
+static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
+{
+    euclid_t *e = state;
+    return e->fast ? fast_row(e, j, runs) : brute_row(e, j, runs);
+}
+
+/* floor(|q - s|) of each pixel's site, saturated at UINT32_MAX. */
+static void distances(const void *state, uint32_t j, const vor__run_t *runs, uint32_t count,
+                      uint32_t *px)
+{
+    const euclid_t *e = state;
+    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        for (; i < runs[r].end; i++) {
+            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
+            px[i] = euclid_distance(qx, qy, &e->points[runs[r].site]);
+        }
+    }
+}
+
+int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                      const vor_raster_output_t *out, void *work, size_t work_bytes)
+{
+    vor__raster_t r;
+    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
+    if (status != VOR_OK) {
+        return status;
+    }
+    if (sites->metric != VOR_METRIC_EUCLID) {
+        return VOR_ERR_ARG;
+    }
+    euclid_t e;
+    prepare(&e, &r);
+    return vor__raster_scan(&r, &e, row, distances);
 }

@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster_metrics.c - vor_raster: every metric. Euclidean point sites go
- * to vor_raster_euclid (raster.c); this file does the others: L1, L-infinity, Lp, elliptic, weighted (multiplicative, additive,
- * compound), farthest-point, Hausdorff point sets, segments, filled
- * polygons and multiplicatively weighted polylines (Teramoto: section 2.3
- * defines the generalised diagrams, chapter 5 the distances). Each pixel takes the site of smallest distance
- * (largest for the farthest-point diagram), ties to the smaller index:
- * Definition 2.2 with another distance.
+ * raster_metrics.c - the raster's family of other metrics, all but
+ * Euclidean point sites (raster_euclid.c): L1, L-infinity, Lp, elliptic,
+ * weighted (multiplicative, additive, compound), farthest-point, Hausdorff
+ * point sets, segments, filled polygons and multiplicatively weighted
+ * polylines (Teramoto: section 2.3 defines the generalised diagrams,
+ * chapter 5 the distances). Each pixel takes the site of smallest
+ * distance (largest for the farthest-point diagram), ties to the smaller
+ * index: Definition 2.2 with another distance.
  *
  * To rank sites, distances are never computed, only compared, each
  * through a "key" that holds an exact integer (or rational) image of the
@@ -28,14 +29,16 @@
 
 #include "multiword.h"
 
-/* The state of a frame: the exact per-metric comparisons, the brute-force
- * search, and the culling of sites per tile. */
-typedef struct metric_frame {
+/* Rows per culling tile. */
+#define TILE_ROWS 16u
+
+/* The family's state: the frame and sites of the request, the widths of
+ * its exact comparisons, and the culling of sites per tile. */
+typedef struct metric {
+    const vor_raster_frame_t *frame;
     const vor_raster_sites_t *sites;
     enum vor_metric metric;
     uint32_t n;
-    uint32_t width, height;
-    int32_t origin_x, origin_y, step_x, step_y;
     uint32_t limbs;      /* limbs of the wide comparisons of this frame */
     int lp_narrow;       /* LP: every sum below 2^128 */
     uint64_t det;        /* ELLIPTIC: a c - b^2 */
@@ -47,179 +50,21 @@ typedef struct metric_frame {
     uint32_t tiles;
     uint32_t band_first; /* rows of the current culling band */
     int band_valid;
-} metric_frame_t;
+} metric_t;
 
-/* ------------------------------------------------------------ 128 bits */
-
-typedef struct u128 {
-    uint64_t lo, hi;
-} u128_t;
-
-/* A signed 128-bit value as sign and magnitude (neg is 0 for zero). */
-typedef struct s128 {
-    u128_t mag;
-    int neg;
-} s128_t;
-
-VOR__ALWAYS_INLINE u128_t u128_of(uint64_t v)
-{
-    u128_t r;
-    r.lo = v;
-    r.hi = 0;
-    return r;
-}
-
-VOR__ALWAYS_INLINE u128_t u128_mul(uint64_t a, uint64_t b)
-{
-    u128_t r;
-    uint64_t high; /* not &r.hi: r stays in registers, no memcpy */
-    r.lo = vor__mul_u64(a, b, &high);
-    r.hi = high;
-    return r;
-}
-
-/* a * b, for a product known to be below 2^128. */
-VOR__ALWAYS_INLINE u128_t u128_mul64(u128_t a, uint64_t b)
-{
-    u128_t r = u128_mul(a.lo, b);
-    uint64_t ignored;
-    r.hi += vor__mul_u64(a.hi, b, &ignored);
-    return r;
-}
-
-VOR__ALWAYS_INLINE u128_t u128_add(u128_t a, u128_t b)
-{
-    u128_t r;
-    r.lo = a.lo + b.lo;
-    r.hi = a.hi + b.hi + (r.lo < a.lo ? 1u : 0u);
-    return r;
-}
-
-/* a - b for a >= b. */
-VOR__ALWAYS_INLINE u128_t u128_sub(u128_t a, u128_t b)
-{
-    u128_t r;
-    r.lo = a.lo - b.lo;
-    r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
-    return r;
-}
-
-VOR__ALWAYS_INLINE int u128_cmp(u128_t a, u128_t b)
-{
-    if (a.hi != b.hi) {
-        return a.hi < b.hi ? -1 : 1;
-    }
-    if (a.lo != b.lo) {
-        return a.lo < b.lo ? -1 : 1;
-    }
-    return 0;
-}
-
-VOR__ALWAYS_INLINE int u128_is_zero(u128_t a)
-{
-    return a.lo == 0u && a.hi == 0u;
-}
-
-/* |d| for the difference of two int32 values: below 2^32. */
-VOR__ALWAYS_INLINE uint32_t magnitude(int64_t d)
-{
-    return (uint32_t)(d < 0 ? -d : d);
-}
-
-/* x * y for |x|, |y| < 2^32. */
-VOR__ALWAYS_INLINE s128_t s128_product(int64_t x, int64_t y)
-{
-    s128_t r;
-    r.mag = u128_of(vor__mul_u32(magnitude(x), magnitude(y)));
-    r.neg = (x < 0) != (y < 0) && !u128_is_zero(r.mag);
-    return r;
-}
-
-/* a + b, for sums below 2^128 in magnitude. */
-VOR__ALWAYS_INLINE s128_t s128_add(s128_t a, s128_t b)
-{
-    s128_t r;
-    if (a.neg == b.neg) {
-        r.mag = u128_add(a.mag, b.mag);
-        r.neg = a.neg;
-    } else if (u128_cmp(a.mag, b.mag) >= 0) {
-        r.mag = u128_sub(a.mag, b.mag);
-        r.neg = a.neg;
-    } else {
-        r.mag = u128_sub(b.mag, a.mag);
-        r.neg = b.neg;
-    }
-    r.neg = r.neg && !u128_is_zero(r.mag);
-    return r;
-}
+/* -------------------------------------------------------------- widths */
 
 /* ax^2 + ay^2 < 2^65. */
-VOR__ALWAYS_INLINE u128_t square_sum(uint32_t ax, uint32_t ay)
+VOR__ALWAYS_INLINE vor__mw_u128_t square_sum(uint32_t ax, uint32_t ay)
 {
-    return u128_add(u128_of(vor__mul_u32(ax, ax)), u128_of(vor__mul_u32(ay, ay)));
+    return vor__mw_u128_add(vor__mw_u128_of(vor__mul_u32(ax, ax)),
+                            vor__mw_u128_of(vor__mul_u32(ay, ay)));
 }
-
-/* Bit length of v (0 for 0). */
-static uint32_t bit_length(uint64_t v)
-{
-    uint32_t bits = 0;
-    while (v != 0u) { /* at most 64 steps */
-        v >>= 1;
-        bits++;
-    }
-    return bits;
-}
-
-/* ------------------------------------------------------ multi-word */
 
 /* Widest comparison: the compound weights' squares, 318 bits (below). */
 #define MAX_LIMBS VOR__LIMBS(320)
 /* Lp sums: |dx|^8 + |dy|^8 < 2^257. */
 #define LP_LIMBS VOR__LIMBS(258)
-
-/* v by pointer: a structure passed by value is a memcpy call at -Os. */
-static void limbs_from_u128(vor__limb *r, size_t n, const u128_t *v)
-{
-    for (size_t i = 0; i < n; i++) {
-#if VOR_LIMB_BITS == 64
-        r[i] = i == 0u ? v->lo : i == 1u ? v->hi : 0u;
-#else
-        r[i] = i == 0u   ? (uint32_t)v->lo
-               : i == 1u ? (uint32_t)(v->lo >> 32)
-               : i == 2u ? (uint32_t)v->hi
-               : i == 3u ? (uint32_t)(v->hi >> 32)
-                         : 0u;
-#endif
-    }
-}
-
-/* Unsigned comparison of two n-limb numbers. */
-static int mw_ucompare(const vor__limb *a, const vor__limb *b, size_t n)
-{
-    for (size_t i = n; i-- > 0u;) {
-        if (a[i] != b[i]) {
-            return a[i] < b[i] ? -1 : 1;
-        }
-    }
-    return 0;
-}
-
-static void mw_copy(vor__limb *r, const vor__limb *a, size_t n)
-{
-    for (size_t i = 0; i < n; i++) {
-        r[i] = a[i];
-    }
-}
-
-/* r = 4 a (the caller's width holds it). */
-static void mw_times4(vor__limb *r, const vor__limb *a, size_t n)
-{
-    vor__limb carry = 0;
-    for (size_t i = 0; i < n; i++) {
-        r[i] = (vor__limb)(a[i] << 2) | carry;
-        carry = a[i] >> (VOR_LIMB_BITS - 2);
-    }
-}
 
 /* ------------------------------------------------------------ keys */
 
@@ -235,8 +80,8 @@ static void mw_times4(vor__limb *r, const vor__limb *a, size_t n)
  *   POLYLINE                         (POLYLINE: den includes the weight^2)
  */
 typedef struct key {
-    u128_t num;
-    u128_t den;
+    vor__mw_u128_t num;
+    vor__mw_u128_t den;
     int squared;
     int32_t w1, w2;
     vor__limb wide[LP_LIMBS];
@@ -244,19 +89,19 @@ typedef struct key {
 
 /* Inline: a 16-byte structure passed by value to a called function is a
  * memcpy call on RV32 at -Os (the ABI passes a copy by reference). */
-VOR__ALWAYS_INLINE void set_unit(rank_key_t *k, u128_t v)
+VOR__ALWAYS_INLINE void set_unit(rank_key_t *k, vor__mw_u128_t v)
 {
     k->num = v;
-    k->den = u128_of(1);
+    k->den = vor__mw_u128_of(1);
     k->squared = 0;
 }
 
 /* x^p for x^p < 2^128. */
-VOR__ALWAYS_INLINE u128_t power128(uint32_t x, uint32_t p)
+VOR__ALWAYS_INLINE vor__mw_u128_t power128(uint32_t x, uint32_t p)
 {
-    u128_t r = u128_of(x);
+    vor__mw_u128_t r = vor__mw_u128_of(x);
     for (uint32_t i = 1; i < p; i++) {
-        r = u128_mul64(r, x);
+        r = vor__mw_u128_mul64(r, x);
     }
     return r;
 }
@@ -269,25 +114,25 @@ static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
     vor__mw_from_u64(r, n, x);
     for (uint32_t i = 1; i < p; i++) {
         vor__mw_mul(product, n, r, n, base, 1);
-        mw_copy(r, product, n);
+        vor__mw_copy(r, product, n);
     }
 }
 
 /* The key of a point site at offsets of magnitude (ax, ay): every metric
  * whose distance grows with |dx| and with |dy|. */
-static void point_key(const metric_frame_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
+static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
     case VOR_METRIC_L1:
-        k->num = u128_of((uint64_t)ax + ay);
+        k->num = vor__mw_u128_of((uint64_t)ax + ay);
         break;
     case VOR_METRIC_LINF:
-        k->num = u128_of(ax > ay ? ax : ay);
+        k->num = vor__mw_u128_of(ax > ay ? ax : ay);
         break;
     case VOR_METRIC_LP:
         if (m->lp_narrow) {
-            k->num = u128_add(power128(ax, s->lp_exponent), power128(ay, s->lp_exponent));
+            k->num = vor__mw_u128_add(power128(ax, s->lp_exponent), power128(ay, s->lp_exponent));
         } else {
             vor__limb other[LP_LIMBS];
             power_limbs(k->wide, m->limbs, ax, s->lp_exponent);
@@ -309,18 +154,18 @@ static void point_key(const metric_frame_t *m, uint32_t site, uint32_t ax, uint3
 
 /* a dx^2 + 2 b dx dy + c dy^2 for |dx|, |dy| < 2^32: each term is below
  * 2^96 and the form is positive definite, so every step fits 128 bits. */
-VOR__ALWAYS_INLINE u128_t elliptic_form(const vor_raster_sites_t *s, int64_t dx, int64_t dy)
+VOR__ALWAYS_INLINE vor__mw_u128_t elliptic_form(const vor_raster_sites_t *s, int64_t dx, int64_t dy)
 {
-    uint32_t ax = magnitude(dx), ay = magnitude(dy);
-    u128_t sum = u128_add(u128_mul(vor__mul_u32(ax, ax), (uint32_t)s->form_a),
-                          u128_mul(vor__mul_u32(ay, ay), (uint32_t)s->form_c));
+    uint32_t ax = vor__mw_magnitude(dx), ay = vor__mw_magnitude(dy);
+    vor__mw_u128_t sum = vor__mw_u128_add(vor__mw_u128_mul(vor__mul_u32(ax, ax), (uint32_t)s->form_a),
+                          vor__mw_u128_mul(vor__mul_u32(ay, ay), (uint32_t)s->form_c));
     if (s->form_b == 0 || ax == 0u || ay == 0u) {
         return sum;
     }
     /* |b| < 2^31 since b^2 < a c < 2^62 */
-    u128_t cross = u128_mul(vor__mul_u32(ax, ay), 2u * magnitude(s->form_b));
+    vor__mw_u128_t cross = vor__mw_u128_mul(vor__mul_u32(ax, ay), 2u * vor__mw_magnitude(s->form_b));
     int negative = (s->form_b < 0) != ((dx < 0) != (dy < 0));
-    return negative ? u128_sub(sum, cross) : u128_add(sum, cross);
+    return negative ? vor__mw_u128_sub(sum, cross) : vor__mw_u128_add(sum, cross);
 }
 
 /* The squared distance from q to the segment a-b, as the rational key
@@ -332,19 +177,19 @@ static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, 
 {
     int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
     int64_t ux = (int64_t)qx - a->x, uy = (int64_t)qy - a->y;
-    u128_t length = square_sum(magnitude(ex), magnitude(ey));
-    s128_t along = s128_add(s128_product(ux, ex), s128_product(uy, ey));
-    if (u128_is_zero(length) || along.neg || u128_is_zero(along.mag)) {
-        set_unit(k, square_sum(magnitude(ux), magnitude(uy)));
+    vor__mw_u128_t length = square_sum(vor__mw_magnitude(ex), vor__mw_magnitude(ey));
+    vor__mw_s128_t along = vor__mw_s128_add(vor__mw_s128_product(ux, ex), vor__mw_s128_product(uy, ey));
+    if (vor__mw_u128_is_zero(length) || along.neg || vor__mw_u128_is_zero(along.mag)) {
+        set_unit(k, square_sum(vor__mw_magnitude(ux), vor__mw_magnitude(uy)));
         return;
     }
-    if (u128_cmp(along.mag, length) >= 0) {
-        set_unit(k, square_sum(magnitude((int64_t)qx - b->x), magnitude((int64_t)qy - b->y)));
+    if (vor__mw_u128_compare(along.mag, length) >= 0) {
+        set_unit(k, square_sum(vor__mw_magnitude((int64_t)qx - b->x), vor__mw_magnitude((int64_t)qy - b->y)));
         return;
     }
-    s128_t cross = s128_product(uy, ex);
-    cross.neg = !cross.neg && !u128_is_zero(cross.mag);
-    cross = s128_add(s128_product(ux, ey), cross);
+    vor__mw_s128_t cross = vor__mw_s128_product(uy, ex);
+    cross.neg = !cross.neg && !vor__mw_u128_is_zero(cross.mag);
+    cross = vor__mw_s128_add(vor__mw_s128_product(ux, ey), cross);
     k->num = cross.mag; /* |cross| < 2^65 */
     k->den = length;    /* < 2^65 */
     k->squared = 1;
@@ -360,34 +205,34 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     int a_unit = !a->squared && a->den.lo == 1u && a->den.hi == 0u;
     int b_unit = !b->squared && b->den.lo == 1u && b->den.hi == 0u;
     if (a_unit && b_unit) {
-        return u128_cmp(a->num, b->num);
+        return vor__mw_u128_compare(a->num, b->num);
     }
     int a_small = a->den.hi == 0u && a->num.hi == 0u && (!a->squared || a->num.lo >> 32 == 0u);
     int b_small = b->den.hi == 0u && b->num.hi == 0u && (!b->squared || b->num.lo >> 32 == 0u);
     if (a_small && b_small) { /* numerators and denominators below 2^64 */
         uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
-        return u128_cmp(u128_mul(an, b->den.lo), u128_mul(bn, a->den.lo));
+        return vor__mw_u128_compare(vor__mw_u128_mul(an, b->den.lo), vor__mw_u128_mul(bn, a->den.lo));
     }
     enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
     vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
-    limbs_from_u128(num, NUM, &a->num);
+    vor__mw_from_u128(num, NUM, &a->num);
     if (a->squared) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
-        limbs_from_u128(square, SQUARE, &a->num);
+        vor__mw_from_u128(square, SQUARE, &a->num);
     }
-    limbs_from_u128(den, NUM, &b->den);
+    vor__mw_from_u128(den, NUM, &b->den);
     vor__mw_mul(left, CROSS, square, SQUARE, den, NUM);
-    limbs_from_u128(num, NUM, &b->num);
+    vor__mw_from_u128(num, NUM, &b->num);
     if (b->squared) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
-        limbs_from_u128(square, SQUARE, &b->num);
+        vor__mw_from_u128(square, SQUARE, &b->num);
     }
-    limbs_from_u128(den, NUM, &a->den);
+    vor__mw_from_u128(den, NUM, &a->den);
     vor__mw_mul(right, CROSS, square, SQUARE, den, NUM);
-    return mw_ucompare(left, right, CROSS);
+    return vor__mw_compare(left, right, CROSS);
 }
 
 /*
@@ -399,20 +244,20 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
  * E^2, F^2, 4 delta^2 A and 4 delta^2 B (the caller's bound) and the sign
  * of E and F.
  */
-static int additive_sign(size_t n, const u128_t *big_a, const u128_t *big_b,
-                         const s128_t *delta)
+static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u128_t *big_b,
+                         const vor__mw_s128_t *delta)
 {
-    if (u128_is_zero(delta->mag)) {
-        return u128_cmp(*big_a, *big_b);
+    if (vor__mw_u128_is_zero(delta->mag)) {
+        return vor__mw_u128_compare(*big_a, *big_b);
     }
     vor__limb a[MAX_LIMBS], b[MAX_LIMBS], d[MAX_LIMBS], d2[MAX_LIMBS], e[MAX_LIMBS];
     vor__limb product[MAX_LIMBS], left[MAX_LIMBS], right[MAX_LIMBS];
-    limbs_from_u128(a, n, big_a);
-    limbs_from_u128(b, n, big_b);
-    limbs_from_u128(d, n, &delta->mag);
+    vor__mw_from_u128(a, n, big_a);
+    vor__mw_from_u128(b, n, big_b);
+    vor__mw_from_u128(d, n, &delta->mag);
     vor__mw_mul(d2, n, d, n, d, n);
     if (!delta->neg) {
-        mw_copy(e, a, n);
+        vor__mw_copy(e, a, n);
         vor__mw_sub(e, b, n);
         vor__mw_sub(e, d2, n);
         int sign = vor__mw_sign(e, n);
@@ -420,14 +265,14 @@ static int additive_sign(size_t n, const u128_t *big_a, const u128_t *big_b,
             return -1; /* E < 0 <= 2 delta sqrt(B) */
         }
         if (sign == 0) {
-            return u128_is_zero(*big_b) ? 0 : -1;
+            return vor__mw_u128_is_zero(*big_b) ? 0 : -1;
         }
         vor__mw_mul(left, n, e, n, e, n);
         vor__mw_mul(product, n, d2, n, b, n);
-        mw_times4(right, product, n);
-        return mw_ucompare(left, right, n);
+        vor__mw_times4(right, product, n);
+        return vor__mw_compare(left, right, n);
     }
-    mw_copy(e, b, n);
+    vor__mw_copy(e, b, n);
     vor__mw_sub(e, a, n);
     vor__mw_sub(e, d2, n);
     int sign = vor__mw_sign(e, n);
@@ -435,26 +280,26 @@ static int additive_sign(size_t n, const u128_t *big_a, const u128_t *big_b,
         return 1; /* 2 g sqrt(A) >= 0 > F */
     }
     if (sign == 0) {
-        return u128_is_zero(*big_a) ? 0 : 1;
+        return vor__mw_u128_is_zero(*big_a) ? 0 : 1;
     }
     vor__mw_mul(product, n, d2, n, a, n);
-    mw_times4(left, product, n);
+    vor__mw_times4(left, product, n);
     vor__mw_mul(right, n, e, n, e, n);
-    return mw_ucompare(left, right, n);
+    return vor__mw_compare(left, right, n);
 }
 
 /* Negative when key a ranks before key b (nearer; farther for FARTHEST),
  * 0 when they tie. */
-static int key_compare(const metric_frame_t *m, const rank_key_t *a, const rank_key_t *b)
+static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t *b)
 {
     switch (m->metric) {
     case VOR_METRIC_LP:
         if (!m->lp_narrow) {
-            return mw_ucompare(a->wide, b->wide, m->limbs);
+            return vor__mw_compare(a->wide, b->wide, m->limbs);
         }
-        return u128_cmp(a->num, b->num);
+        return vor__mw_u128_compare(a->num, b->num);
     case VOR_METRIC_FARTHEST:
-        return u128_cmp(b->num, a->num);
+        return vor__mw_u128_compare(b->num, a->num);
     case VOR_METRIC_ELLIPTIC:
     case VOR_METRIC_SEGMENT:
     case VOR_METRIC_POLYGON:
@@ -464,12 +309,12 @@ static int key_compare(const metric_frame_t *m, const rank_key_t *a, const rank_
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
-        return u128_cmp(u128_mul64(a->num, wb2), u128_mul64(b->num, wa2));
+        return vor__mw_u128_compare(vor__mw_u128_mul64(a->num, wb2), vor__mw_u128_mul64(b->num, wa2));
     }
     case VOR_METRIC_ADD: {
-        s128_t delta; /* wa - wb, below 2^32 */
+        vor__mw_s128_t delta; /* wa - wb, below 2^32 */
         int64_t diff = (int64_t)a->w2 - b->w2;
-        delta.mag = u128_of(diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
+        delta.mag = vor__mw_u128_of(diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
         delta.neg = diff < 0;
         return additive_sign(m->limbs, &a->num, &b->num, &delta);
     }
@@ -479,15 +324,15 @@ static int key_compare(const metric_frame_t *m, const rank_key_t *a, const rank_
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
         int64_t diff = (int64_t)a->w2 - b->w2;
-        s128_t delta;
-        delta.mag = u128_mul(diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
+        vor__mw_s128_t delta;
+        delta.mag = vor__mw_u128_mul(diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
                              vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
         delta.neg = diff < 0;
-        u128_t big_a = u128_mul64(a->num, wb2), big_b = u128_mul64(b->num, wa2);
+        vor__mw_u128_t big_a = vor__mw_u128_mul64(a->num, wb2), big_b = vor__mw_u128_mul64(b->num, wa2);
         return additive_sign(m->limbs, &big_a, &big_b, &delta);
     }
     default: /* L1, LINF, HAUSDORFF */
-        return u128_cmp(a->num, b->num);
+        return vor__mw_u128_compare(a->num, b->num);
     }
 }
 
@@ -534,7 +379,7 @@ static uint64_t polyline_weight2(const vor_raster_sites_t *s, uint32_t site)
 }
 
 /* The key of site `site` at the pixel centre (qx, qy). */
-static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
+static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
@@ -544,11 +389,11 @@ static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t
         break;
     }
     case VOR_METRIC_HAUSDORFF: {
-        u128_t far = u128_of(0);
+        vor__mw_u128_t far = vor__mw_u128_of(0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
-            u128_t d = square_sum(magnitude((int64_t)qx - s->points[i].x),
-                                  magnitude((int64_t)qy - s->points[i].y));
-            if (u128_cmp(d, far) > 0) {
+            vor__mw_u128_t d = square_sum(vor__mw_magnitude((int64_t)qx - s->points[i].x),
+                                  vor__mw_magnitude((int64_t)qy - s->points[i].y));
+            if (vor__mw_u128_compare(d, far) > 0) {
                 far = d;
             }
         }
@@ -565,7 +410,7 @@ static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t
         q.x = qx;
         q.y = qy;
         if (count >= 3u && winds_around(p, count, &q)) {
-            set_unit(k, u128_of(0));
+            set_unit(k, vor__mw_u128_of(0));
             break;
         }
         segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
@@ -587,12 +432,12 @@ static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t
             segment_key(&p[i], &p[i + 1u], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
-        k->den = u128_mul64(k->den, polyline_weight2(s, site));
+        k->den = vor__mw_u128_mul64(k->den, polyline_weight2(s, site));
         break;
     }
     default: {
         const vor_point_t *p = &s->points[site];
-        point_key(m, site, magnitude((int64_t)qx - p->x), magnitude((int64_t)qy - p->y), k);
+        point_key(m, site, vor__mw_magnitude((int64_t)qx - p->x), vor__mw_magnitude((int64_t)qy - p->y), k);
         break;
     }
     }
@@ -612,45 +457,29 @@ static void site_key(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t
  * docs/design.md, "Distance output", has the bounds.
  */
 
-VOR__ALWAYS_INLINE u128_t u128_shr1(u128_t a)
-{
-    u128_t r;
-    r.lo = (a.lo >> 1) | (a.hi << 63);
-    r.hi = a.hi >> 1;
-    return r;
-}
-
-VOR__ALWAYS_INLINE u128_t u128_shr2(u128_t a)
-{
-    u128_t r;
-    r.lo = (a.lo >> 2) | (a.hi << 62);
-    r.hi = a.hi >> 2;
-    return r;
-}
-
 /* floor(sqrt(x)) (< 2^64) by the bit-by-bit method: bit runs over the
  * even powers of two down from 2^126, two places a step, so at most 64
  * steps; root + bit < 2^128 throughout. Constant shifts only (no shift
  * call on Cortex-M0). */
-static uint64_t isqrt128(const u128_t *value)
+static uint64_t isqrt128(const vor__mw_u128_t *value)
 {
-    u128_t x, root = u128_of(0), bit;
+    vor__mw_u128_t x, root = vor__mw_u128_of(0), bit;
     x.lo = value->lo; /* field by field: a structure copy may be a memcpy call */
     x.hi = value->hi;
     bit.lo = 0;
     bit.hi = (uint64_t)1 << 62;
-    while (u128_cmp(bit, x) > 0) {
-        bit = u128_shr2(bit);
+    while (vor__mw_u128_compare(bit, x) > 0) {
+        bit = vor__mw_u128_shr(bit, 2u);
     }
-    while (!u128_is_zero(bit)) {
-        u128_t trial = u128_add(root, bit);
-        if (u128_cmp(x, trial) >= 0) {
-            x = u128_sub(x, trial);
-            root = u128_add(u128_shr1(root), bit);
+    while (!vor__mw_u128_is_zero(bit)) {
+        vor__mw_u128_t trial = vor__mw_u128_add(root, bit);
+        if (vor__mw_u128_compare(x, trial) >= 0) {
+            x = vor__mw_u128_sub(x, trial);
+            root = vor__mw_u128_add(vor__mw_u128_shr(root, 1u), bit);
         } else {
-            root = u128_shr1(root);
+            root = vor__mw_u128_shr(root, 1u);
         }
-        bit = u128_shr2(bit);
+        bit = vor__mw_u128_shr(bit, 2u);
     }
     return root.lo;
 }
@@ -693,25 +522,12 @@ static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
         for (uint32_t bit = VOR_LIMB_BITS; bit-- > 0u;) {
             vor__mw_shl1(rest, DIV_LIMBS);
             rest[0] |= (a[i] >> bit) & 1u;
-            if (mw_ucompare(rest, d, DIV_LIMBS) >= 0) {
+            if (vor__mw_compare(rest, d, DIV_LIMBS) >= 0) {
                 vor__mw_sub(rest, d, DIV_LIMBS);
                 q[i] |= (vor__limb)1 << bit;
             }
         }
     }
-}
-
-static u128_t u128_from_limbs(const vor__limb *a)
-{
-    u128_t r;
-#if VOR_LIMB_BITS == 64
-    r.lo = a[0];
-    r.hi = a[1];
-#else
-    r.lo = a[0] | ((uint64_t)a[1] << 32);
-    r.hi = a[2] | ((uint64_t)a[3] << 32);
-#endif
-    return r;
 }
 
 VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
@@ -732,13 +548,13 @@ VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
  * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
  * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
  * at most 33 steps, each one power below 2^256. */
-static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32_t ax,
+static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
                             uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
     vor__limb sum[LP_LIMBS], power[LP_LIMBS];
     if (m->lp_narrow) {
-        limbs_from_u128(sum, LP_LIMBS, &k->num);
+        vor__mw_from_u128(sum, LP_LIMBS, &k->num);
     } else {
         for (size_t i = 0; i < LP_LIMBS; i++) {
             sum[i] = i < m->limbs ? k->wide[i] : 0u;
@@ -748,7 +564,7 @@ static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32
         power[i] = 0;
     }
     power[(32u * p) / VOR_LIMB_BITS] = (vor__limb)1 << ((32u * p) % VOR_LIMB_BITS);
-    if (mw_ucompare(sum, power, LP_LIMBS) >= 0) {
+    if (vor__mw_compare(sum, power, LP_LIMBS) >= 0) {
         return 0xFFFFFFFFu;
     }
     uint64_t lo = ax > ay ? ax : ay;
@@ -757,7 +573,7 @@ static uint32_t lp_distance(const metric_frame_t *m, const rank_key_t *k, uint32
     while (hi - lo > 1u) {
         uint32_t mid = (uint32_t)(lo + ((hi - lo) >> 1));
         power_limbs(power, LP_LIMBS, mid, p);
-        if (mw_ucompare(power, sum, LP_LIMBS) <= 0) {
+        if (vor__mw_compare(power, sum, LP_LIMBS) <= 0) {
             lo = mid;
         } else {
             hi = mid;
@@ -776,22 +592,22 @@ static uint32_t rational_distance(const rank_key_t *k)
         return saturate_u32(isqrt128(&k->num));
     }
     vor__limb num[DIV_LIMBS], x[DIV_LIMBS], den[DIV_LIMBS], q[DIV_LIMBS];
-    limbs_from_u128(num, DIV_LIMBS, &k->num);
+    vor__mw_from_u128(num, DIV_LIMBS, &k->num);
     if (k->squared) {
         vor__mw_mul(x, DIV_LIMBS, num, DIV_LIMBS, num, DIV_LIMBS); /* < 2^130 */
     } else {
-        mw_copy(x, num, DIV_LIMBS);
+        vor__mw_copy(x, num, DIV_LIMBS);
     }
-    limbs_from_u128(den, DIV_LIMBS, &k->den);
+    vor__mw_from_u128(den, DIV_LIMBS, &k->den);
     mw_divide(q, x, den);
-    u128_t quotient = u128_from_limbs(q);
+    vor__mw_u128_t quotient = vor__mw_to_u128(q);
     return saturate_u32(isqrt128(&quotient));
 }
 
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
  * (qx, qy): the floor of its distance under m's metric, saturated (ADD
  * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
-static uint32_t metric_distance(const metric_frame_t *m, uint32_t site, int32_t qx, int32_t qy)
+static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
     site_key(m, site, qx, qy, &k);
@@ -802,7 +618,7 @@ static uint32_t metric_distance(const metric_frame_t *m, uint32_t site, int32_t 
         return saturate_u32(k.num.lo);
     case VOR_METRIC_LP: {
         const vor_point_t *p = &s->points[site];
-        return lp_distance(m, &k, magnitude((int64_t)qx - p->x), magnitude((int64_t)qy - p->y));
+        return lp_distance(m, &k, vor__mw_magnitude((int64_t)qx - p->x), vor__mw_magnitude((int64_t)qy - p->y));
     }
     case VOR_METRIC_MULT: /* isqrt(A) < 2^33 */
         return saturate_u32(divide_u64(isqrt128(&k.num), (uint32_t)k.w1));
@@ -835,7 +651,7 @@ static uint32_t gap(int32_t v, int32_t lo, int32_t hi)
 
 static uint32_t reach(int32_t v, int32_t lo, int32_t hi)
 {
-    uint32_t a = magnitude((int64_t)v - lo), b = magnitude((int64_t)v - hi);
+    uint32_t a = vor__mw_magnitude((int64_t)v - lo), b = vor__mw_magnitude((int64_t)v - hi);
     return a > b ? a : b;
 }
 
@@ -846,7 +662,7 @@ static uint32_t interval_gap(int32_t lo1, int32_t hi1, int32_t lo2, int32_t hi2)
 }
 
 /* The squared distance from p to the farthest corner of r. */
-VOR__ALWAYS_INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
+VOR__ALWAYS_INLINE vor__mw_u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
 {
     return square_sum(reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1));
 }
@@ -867,24 +683,24 @@ VOR__ALWAYS_INLINE u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
  *   POLYLINE: the same bounding-box gap below, the nearest vertex's
  *     farthest corner above, both divided by the site's w^2.
  */
-static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
+static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
     case VOR_METRIC_ELLIPTIC: {
         const vor_point_t *p = &s->points[site];
         if (!worst) {
-            u128_t near = square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
-            k->num = u128_mul64(near, m->det); /* < 2^65 * 2^62 */
-            k->den = u128_of(m->trace);
+            vor__mw_u128_t near = square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
+            k->num = vor__mw_u128_mul64(near, m->det); /* < 2^65 * 2^62 */
+            k->den = vor__mw_u128_of(m->trace);
             k->squared = 0;
             break;
         }
-        u128_t top = u128_of(0);
+        vor__mw_u128_t top = vor__mw_u128_of(0);
         for (int corner = 0; corner < 4; corner++) {
             int32_t x = (corner & 1) ? r->x1 : r->x0, y = (corner & 2) ? r->y1 : r->y0;
-            u128_t q = elliptic_form(s, (int64_t)x - p->x, (int64_t)y - p->y);
-            if (u128_cmp(q, top) > 0) {
+            vor__mw_u128_t q = elliptic_form(s, (int64_t)x - p->x, (int64_t)y - p->y);
+            if (vor__mw_u128_compare(q, top) > 0) {
                 top = q;
             }
         }
@@ -892,12 +708,12 @@ static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int 
         break;
     }
     case VOR_METRIC_HAUSDORFF: {
-        u128_t top = u128_of(0);
+        vor__mw_u128_t top = vor__mw_u128_of(0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             const vor_point_t *p = &s->points[i];
-            u128_t d = worst ? farthest_corner(p, r)
+            vor__mw_u128_t d = worst ? farthest_corner(p, r)
                              : square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
-            if (u128_cmp(d, top) > 0) {
+            if (vor__mw_u128_compare(d, top) > 0) {
                 top = d;
             }
         }
@@ -917,17 +733,17 @@ static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int 
             count = s->offsets[site + 1u] - s->offsets[site];
         }
         if (worst) {
-            u128_t d = farthest_corner(&p[0], r);
+            vor__mw_u128_t d = farthest_corner(&p[0], r);
             uint32_t reached = m->metric == VOR_METRIC_SEGMENT    ? 2u
                                : m->metric == VOR_METRIC_POLYLINE ? count
                                                                   : 1u;
             for (uint32_t i = 1; i < reached; i++) {
-                u128_t other = farthest_corner(&p[i], r);
-                d = u128_cmp(other, d) < 0 ? other : d;
+                vor__mw_u128_t other = farthest_corner(&p[i], r);
+                d = vor__mw_u128_compare(other, d) < 0 ? other : d;
             }
             set_unit(k, d);
             if (m->metric == VOR_METRIC_POLYLINE) {
-                k->den = u128_of(polyline_weight2(s, site));
+                k->den = vor__mw_u128_of(polyline_weight2(s, site));
             }
             break;
         }
@@ -940,7 +756,7 @@ static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int 
         }
         set_unit(k, square_sum(interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1)));
         if (m->metric == VOR_METRIC_POLYLINE) {
-            k->den = u128_of(polyline_weight2(s, site));
+            k->den = vor__mw_u128_of(polyline_weight2(s, site));
         }
         break;
     }
@@ -966,7 +782,7 @@ static void bounds(const metric_frame_t *m, uint32_t site, const rect_t *r, int 
 /* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
  * first (alone or tied) at some pixel of r, in index order, into out;
  * returns their number, or ALL_SITES when more than capacity survive. */
-static uint32_t select_sites(const metric_frame_t *m, const rect_t *r, const uint32_t *list,
+static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t *list,
                              uint32_t count, uint32_t *out, size_t capacity)
 {
     rank_key_t keys[2], best_case;
@@ -993,12 +809,12 @@ static uint32_t select_sites(const metric_frame_t *m, const rect_t *r, const uin
     return kept;
 }
 
-static rect_t columns_rect(const metric_frame_t *m, uint32_t first, uint32_t last, int32_t y0,
+static rect_t columns_rect(const metric_t *m, uint32_t first, uint32_t last, int32_t y0,
                            int32_t y1)
 {
     rect_t r;
-    r.x0 = (int32_t)(m->origin_x + vor__offset(first, m->step_x));
-    r.x1 = (int32_t)(m->origin_x + vor__offset(last, m->step_x));
+    r.x0 = (int32_t)(m->frame->origin_x + vor__offset(first, m->frame->step_x));
+    r.x1 = (int32_t)(m->frame->origin_x + vor__offset(last, m->frame->step_x));
     r.y0 = y0;
     r.y1 = y1;
     return r;
@@ -1006,22 +822,22 @@ static rect_t columns_rect(const metric_frame_t *m, uint32_t first, uint32_t las
 
 /* Fills the pool with the tile lists of the band starting at band_first:
  * per tile, a count (or ALL_SITES) and that many site ids. */
-static void cull_band(metric_frame_t *m)
+static void cull_band(metric_t *m)
 {
-    uint32_t last_row = m->band_first + VOR__CULL_ROWS - 1u;
-    if (last_row >= m->height) {
-        last_row = m->height - 1u;
+    uint32_t last_row = m->band_first + TILE_ROWS - 1u;
+    if (last_row >= m->frame->height) {
+        last_row = m->frame->height - 1u;
     }
-    int32_t y0 = (int32_t)(m->origin_y + vor__offset(m->band_first, m->step_y));
-    int32_t y1 = (int32_t)(m->origin_y + vor__offset(last_row, m->step_y));
+    int32_t y0 = (int32_t)(m->frame->origin_y + vor__offset(m->band_first, m->frame->step_y));
+    int32_t y1 = (int32_t)(m->frame->origin_y + vor__offset(last_row, m->frame->step_y));
     uint32_t *block = m->pool;
     uint32_t *lists = m->pool + m->n;
-    size_t room = m->pool_words - m->n; /* >= tiles (metric_prepare) */
+    size_t room = m->pool_words - m->n; /* >= tiles (prepare) */
     size_t at = 0;
     uint32_t tile = 0;
     uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
-    for (uint32_t first = 0; first < m->width; first += block_columns) {
-        uint32_t end = m->width - first > block_columns ? first + block_columns : m->width;
+    for (uint32_t first = 0; first < m->frame->width; first += block_columns) {
+        uint32_t end = m->frame->width - first > block_columns ? first + block_columns : m->frame->width;
         rect_t r = columns_rect(m, first, end - 1u, y0, y1);
         uint32_t block_count = select_sites(m, &r, NULL, m->n, block, m->n);
         for (uint32_t column = first; column < end; column += m->tile_width) {
@@ -1040,7 +856,7 @@ static void cull_band(metric_frame_t *m)
 /* The first-ranked site at (qx, qy) among list[0..count) (NULL: all),
  * which is in increasing index order: a later site takes over only when
  * strictly better, so ties stay with the smaller index. */
-static uint32_t nearest(const metric_frame_t *m, const uint32_t *list, uint32_t count, int32_t qx,
+static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count, int32_t qx,
                         int32_t qy)
 {
     rank_key_t keys[2];
@@ -1058,21 +874,26 @@ static uint32_t nearest(const metric_frame_t *m, const uint32_t *list, uint32_t 
     return best;
 }
 
-/* Runs of row j (rows requested in increasing order); returns their count. */
-static uint32_t metric_row(metric_frame_t *m, uint32_t j, vor__run_t *runs)
+/* The family's producers for the scan (vor__raster_row_fn,
+ * vor__raster_distances_fn). */
+static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
 {
-    if (!m->brute && (!m->band_valid || j >= m->band_first + VOR__CULL_ROWS)) {
-        m->band_first = j - j % VOR__CULL_ROWS;
+    metric_t *m = state;
+    if (!m->brute && (!m->band_valid || j >= m->band_first + TILE_ROWS)) {
+        m->band_first = j - j % TILE_ROWS;
         m->band_valid = 1;
         cull_band(m);
     }
-    int32_t qy = (int32_t)(m->origin_y + vor__offset(j, m->step_y));
+    /* the frame's fields in locals: stores to runs could alias them */
+    const int32_t origin_x = m->frame->origin_x, step_x = m->frame->step_x;
+    const uint32_t width = m->frame->width;
+    int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     const uint32_t *lists = m->pool + m->n;
     size_t at = 0;
     uint32_t count = 0;
-    uint32_t span = m->brute ? m->width : m->tile_width;
-    for (uint32_t first = 0; first < m->width; first += span) {
-        uint32_t end = m->width - first > span ? first + span : m->width;
+    uint32_t span = m->brute ? width : m->tile_width;
+    for (uint32_t first = 0; first < width; first += span) {
+        uint32_t end = width - first > span ? first + span : width;
         const uint32_t *list = NULL;
         uint32_t candidates = m->n;
         if (!m->brute) {
@@ -1083,7 +904,7 @@ static uint32_t metric_row(metric_frame_t *m, uint32_t j, vor__run_t *runs)
             at += 1u + (list != NULL ? candidates : 0u);
         }
         for (uint32_t i = first; i < end; i++) {
-            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
+            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
             count = vor__run_push(runs, count, i, nearest(m, list, candidates, qx, qy));
         }
     }
@@ -1167,22 +988,21 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
-/* Sets m up for frame (checked) and sites (checked by metric_check),
- * with pool_words words of culling memory (at least 2 count + 2). */
-static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
-                           const vor_raster_sites_t *s, int brute, uint32_t *pool, size_t pool_words)
+/* Sets m up for the checked request r (its sites past metric_check): the
+ * comparison widths from the span of sites and frame, and the tiles. */
+static void prepare(metric_t *m, const vor__raster_t *r)
 {
+    const vor_raster_frame_t *frame = r->frame;
+    const vor_raster_sites_t *s = r->sites;
+    /* the culling pool: the work memory after the rows, at least 12 n + 14
+     * words (the macro's 48 n + 64 bytes, less the rows and alignment) */
+    const size_t pool_words = r->rest_bytes / sizeof(uint32_t);
+    m->frame = frame;
     m->sites = s;
     m->metric = s->metric;
     m->n = s->count;
-    m->width = frame->width;
-    m->height = frame->height;
-    m->origin_x = frame->origin_x;
-    m->origin_y = frame->origin_y;
-    m->step_x = frame->step_x;
-    m->step_y = frame->step_y;
-    m->brute = brute;
-    m->pool = pool;
+    m->brute = r->brute;
+    m->pool = (uint32_t *)(void *)r->rest;
     m->pool_words = pool_words;
     m->band_valid = 0;
     m->band_first = 0;
@@ -1214,7 +1034,7 @@ static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
         }
     }
     uint64_t span_x = (uint64_t)((int64_t)x1 - x0), span_y = (uint64_t)((int64_t)y1 - y0);
-    uint32_t span_bits = bit_length(span_x > span_y ? span_x : span_y); /* <= 32 */
+    uint32_t span_bits = vor__mw_bit_length(span_x > span_y ? span_x : span_y); /* <= 32 */
 
     switch (s->metric) {
     case VOR_METRIC_LP: {
@@ -1240,9 +1060,9 @@ static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
         /* squared distances < 2^(2 span_bits + 1); weight differences
          * < 2^delta_bits; COMPOUND multiplies by the w1 products */
         uint32_t a_bits = 2u * span_bits + 1u;
-        uint32_t delta_bits = bit_length((uint64_t)((int64_t)hi - lo));
+        uint32_t delta_bits = vor__mw_bit_length((uint64_t)((int64_t)hi - lo));
         if (s->metric == VOR_METRIC_COMPOUND) {
-            uint32_t w_bits = bit_length((uint32_t)heaviest);
+            uint32_t w_bits = vor__mw_bit_length((uint32_t)heaviest);
             a_bits += 2u * w_bits;
             delta_bits += 2u * w_bits;
         }
@@ -1263,21 +1083,25 @@ static void metric_prepare(metric_frame_t *m, const vor_raster_frame_t *frame,
     m->tiles = (frame->width + m->tile_width - 1u) >> shift;
 }
 
-/* ------------------------------------------------------- entry point */
+/* ----------------------------------------------------- distance pixels */
 
-/* The DISTANCE pixels of row j under m's metric. */
-static void metric_distances(const metric_frame_t *m, uint32_t j, const vor__run_t *runs,
-                             uint32_t count, uint32_t *px)
+/* The floor of each pixel's own site's distance under m's metric. */
+static void distances(const void *state, uint32_t j, const vor__run_t *runs, uint32_t count,
+                      uint32_t *px)
 {
-    int32_t qy = (int32_t)(m->origin_y + vor__offset(j, m->step_y));
+    const metric_t *m = state;
+    const int32_t origin_x = m->frame->origin_x, step_x = m->frame->step_x;
+    int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         for (; i < runs[r].end; i++) {
-            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
+            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
             px[i] = metric_distance(m, runs[r].site, qx, qy);
         }
     }
 }
+
+/* ------------------------------------------------------- entry point */
 
 int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                const vor_raster_output_t *out, void *work, size_t work_bytes)
@@ -1285,37 +1109,15 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
         return vor_raster_euclid(frame, sites, out, work, work_bytes);
     }
-    size_t row_bytes;
-    int status = vor__raster_check(frame, sites, out, work, work_bytes, &row_bytes);
+    vor__raster_t r;
+    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
     if (status != VOR_OK) {
         return status;
     }
     if (metric_check(sites) != VOR_OK) {
         return VOR_ERR_ARG;
     }
-    /* the two rows of runs, then the culling pool: at least 12 n + 14
-     * words (the macro's 48 n + 64 bytes, less alignment) */
-    vor__run_t *rows[2];
-    size_t rows_bytes = vor__raster_rows(frame, work, rows);
-    metric_frame_t m;
-    metric_prepare(&m, frame, sites, out->method == VOR_RASTER_BRUTE,
-                   (uint32_t *)(void *)((uint8_t *)work + rows_bytes),
-                   (work_bytes - rows_bytes) / sizeof(uint32_t));
-    vor__bands_t bands;
-    vor__bands_begin(&bands, frame, sites->count, out, rows, row_bytes);
-    for (uint32_t j = 0; j <= frame->height; j++) { /* j = height: the end */
-        uint32_t count = 0;
-        if (j < frame->height) {
-            vor__run_t *runs = vor__bands_runs(&bands);
-            count = metric_row(&m, j, runs);
-            if (out->kind == VOR_RASTER_DISTANCE) {
-                metric_distances(&m, j, runs, count, vor__bands_pixels(&bands));
-            }
-        }
-        status = vor__bands_put_flush(&bands, count);
-        if (status != 0) {
-            return status;
-        }
-    }
-    return VOR_OK;
+    metric_t m;
+    prepare(&m, &r);
+    return vor__raster_scan(&r, &m, row, distances);
 }
