@@ -511,7 +511,8 @@ static uint32_t lowest_site(const vor_t *d)
 {
     uint32_t half_width = ((uint32_t)d->high.x - (uint32_t)d->low.x) >> 1;
     int32_t middle = (int32_t)((uint32_t)d->low.x + half_width);
-    vor__walk_t w = {d, VOR__WALK_LOWEST, NULL, 0, NULL, false, false};
+    vor__walk_t w;
+    vor__walk_begin(&w, d, VOR__WALK_LOWEST);
     return vor__walk(&w, vor__grid_start(d, middle, d->low.y));
 }
 

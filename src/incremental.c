@@ -310,7 +310,10 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
         }
         if (twin == VOR__NONE && on_line) {
-            vor__walk_t w = {d, VOR__WALK_SITE, d, p, NULL, false, false};
+            vor__walk_t w;
+            vor__walk_begin(&w, d, VOR__WALK_SITE);
+            w.counted = d;
+            w.p = p;
             uint32_t nearest = vor__walk(&w, corner);
             twin = same_point(&d->sites[nearest], &point) ? nearest : twin;
         }

@@ -142,7 +142,10 @@ static int query_start(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint
  * neighbours. */
 static uint32_t walk_to_nearest(const vor_t *d, const vor_point_t *q, uint32_t from, bool *tie)
 {
-    vor__walk_t w = {d, VOR__WALK_POINT, NULL, 0, q, vor__walk_is_narrow(d, q->x, q->y), false};
+    vor__walk_t w;
+    vor__walk_begin(&w, d, VOR__WALK_POINT);
+    w.q = q;
+    w.narrow = vor__walk_is_narrow(d, q->x, q->y);
     uint32_t best = vor__walk(&w, from);
     *tie = w.tie;
     return best;
