@@ -441,9 +441,9 @@ static inline bool on_side(const builder_t *b, vor_index_t v, bool left)
  * and the candidate: a flip, after which c2 is the candidate. Returns the
  * last candidate; *valid tells whether it is valid. At most one deletion
  * per F-F-F (S-S-S) triangle: bounded with the merge. */
-VOR__INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, bool left,
-                                    vor_index_t l, vor_index_t r, bool still_valid,
-                                    bool *valid)
+VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, bool left,
+                                           vor_index_t l, vor_index_t r, bool still_valid,
+                                           bool *valid)
 {
     vor__tri_t *tri = b->tri;
     vor_index_t pv[3], v[3];

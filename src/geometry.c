@@ -418,6 +418,13 @@ static void fill_edge(const vor_t *d, vor_edge_t *e, uint32_t p, uint32_t q, uin
     }
 }
 
+/* vor__next_used_slot, out of line: two copies in the edge iterator would
+ * cost more flash than the calls cost time. */
+static VOR__NOINLINE uint32_t next_used_slot(const vor_t *d, uint32_t slot)
+{
+    return vor__next_used_slot(d, slot);
+}
+
 void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
 {
     if (it == NULL) {
@@ -440,8 +447,8 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
     }
     uint32_t end = vor__used_slots_end(d);
     /* each used slot once, each of its three edges once: ends at `end` */
-    for (uint32_t slot = vor__next_used_slot(d, it->slot); slot < end;
-         slot = vor__next_used_slot(d, slot + 1u)) {
+    for (uint32_t slot = next_used_slot(d, it->slot); slot < end;
+         slot = next_used_slot(d, slot + 1u)) {
         const vor__tri_t *t = &d->triangles[slot];
         vor_index_t v[3];
         vor__vertices(t, v);
@@ -498,7 +505,8 @@ static uint32_t lowest_site(const vor_t *d)
 {
     uint32_t half_width = ((uint32_t)d->high.x - (uint32_t)d->low.x) >> 1;
     int32_t middle = (int32_t)((uint32_t)d->low.x + half_width);
-    vor__walk_t w = {d, VOR__WALK_LOWEST, NULL, 0, NULL, false, false};
+    vor__walk_t w;
+    vor__walk_begin(&w, d, VOR__WALK_LOWEST);
     return vor__walk(&w, vor__grid_start(d, middle, d->low.y));
 }
 

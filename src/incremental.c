@@ -32,6 +32,7 @@
 #include "incremental.h"
 #include "insertion_order.h"
 #include "mesh.h"
+#include "multiword.h"
 #include "perturbation.h"
 #include "walk.h"
 
@@ -109,6 +110,18 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
     }
     *on_line = true; /* only if the predicates lie: take the careful path */
     return slot;
+}
+
+/* The site nearest to site p (not in the mesh) under the perturbation, by
+ * the walk (walk.h) from site `from`. Out of line, as it is rarely taken:
+ * vor_insert_near's frame stays as small as without it. */
+static VOR__NOINLINE uint32_t nearest_site(vor_t *d, uint32_t from, uint32_t p)
+{
+    vor__walk_t w;
+    vor__walk_begin(&w, d, VOR__WALK_SITE);
+    w.counted = d;
+    w.p = p;
+    return vor__walk(&w, from);
 }
 
 /* ------------------------------------------------------------------ */
@@ -310,8 +323,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
             }
         }
         if (twin == VOR__NONE && on_line) {
-            vor__walk_t w = {d, VOR__WALK_SITE, d, p, NULL, false, false};
-            uint32_t nearest = vor__walk(&w, corner);
+            uint32_t nearest = nearest_site(d, corner, p);
             twin = same_point(&d->sites[nearest], &point) ? nearest : twin;
         }
         if (twin != VOR__NONE) {

@@ -3,7 +3,7 @@
  * mesh.c - the diagram object: arena layout, the first edge and the
  * start every builder shares, and memory figures. Topology only: the
  * builders (incremental.c, divide_conquer.c, dynamic.c) change the mesh
- * with the predicates, validate.c checks it, queries.c reads it.
+ * with the predicates, queries.c reads and validates it.
  */
 #include "mesh.h"
 

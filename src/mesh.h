@@ -40,7 +40,6 @@ struct vor__triangle {
     vor_index_t v[3];
 #else
     uint32_t v[2];
-
 #endif
     vor_index_t n[3];
 };
@@ -88,7 +87,6 @@ static inline vor_index_t vor__vertex(const vor__tri_t *t, unsigned i)
     return (i == 0u)   ? (t->v[0] & 0x1FFFFFu)
            : (i == 1u) ? ((t->v[0] >> 21) | ((t->v[1] & 0x3FFu) << 11))
                        : ((t->v[1] >> 10) & 0x1FFFFFu);
-
 #endif
 }
 
@@ -104,7 +102,6 @@ static inline void vor__vertices(const vor__tri_t *t, vor_index_t v[3])
     v[0] = w0 & 0x1FFFFFu;
     v[1] = (w0 >> 21) | ((w1 & 0x3FFu) << 11);
     v[2] = (w1 >> 10) & 0x1FFFFFu;
-
 #endif
 }
 
@@ -115,7 +112,6 @@ static inline bool vor__marked(const vor__tri_t *t)
     return (t->v[0] & VOR__MARK_BIT) != 0u;
 #else
     return (t->v[1] & VOR__MARK_BIT) != 0u;
-
 #endif
 }
 
@@ -125,7 +121,6 @@ static inline void vor__set_mark(vor__tri_t *t, bool on)
     t->v[0] = (vor_index_t)(on ? (t->v[0] | VOR__MARK_BIT) : (t->v[0] & ~VOR__MARK_BIT));
 #else
     t->v[1] = on ? (t->v[1] | VOR__MARK_BIT) : (t->v[1] & ~VOR__MARK_BIT);
-
 #endif
 }
 
@@ -176,7 +171,6 @@ static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
 #else
     t->v[0] = v0 | (v1 << 21);
     t->v[1] = (t->v[1] & VOR__MARK_BIT) | (v1 >> 11) | (v2 << 10);
-
 #endif
     t->n[0] = n0;
     t->n[1] = n1;

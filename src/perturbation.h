@@ -33,7 +33,6 @@ static inline int vor__with_faults(vor_t *d, int sign)
     }
 #else
     (void)d;
-
 #endif
     return sign;
 }
@@ -98,7 +97,6 @@ static inline void vor__copy_stats(vor_predicate_stats_t *to,
 #ifdef VOR_FAULT_INJECTION
     to->fault_rate = from->fault_rate;
     to->fault_state = from->fault_state;
-
 #endif
 }
 

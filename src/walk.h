@@ -50,6 +50,19 @@ typedef struct {
     bool tie;             /* out: a neighbour of the end is as close as it */
 } vor__walk_t;
 
+/* A walk toward `goal` on d, its other fields cleared for the caller to
+ * set. Field by field: an initializer could become a memset call. */
+static inline void vor__walk_begin(vor__walk_t *w, const vor_t *d, enum vor__walk_goal goal)
+{
+    w->d = d;
+    w->goal = goal;
+    w->counted = NULL;
+    w->p = 0;
+    w->q = NULL;
+    w->narrow = false;
+    w->tie = false;
+}
+
 /* Can the walk toward query (x, y) compare distances in int64 alone? Yes
  * when the sites' box spans less than 2^30 on each axis and every site s
  * has q - s in int32: then for a neighbour n of s, with d = n - s and
