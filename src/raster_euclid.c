@@ -75,6 +75,7 @@
  * per array). */
 typedef struct euclid {
     const vor_raster_frame_t *frame;
+    int32_t origin_x, origin_y; /* frame's: rel_x, rel_y read them in per-site loops */
     const vor_point_t *points;
     uint32_t n;
     int fast;             /* the fast path; else the brute-force search */
@@ -124,12 +125,12 @@ static int fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint
 
 static int32_t rel_x(const euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].x - e->frame->origin_x);
+    return (int32_t)((int64_t)e->points[id].x - e->origin_x);
 }
 
 static int32_t rel_y(const euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].y - e->frame->origin_y);
+    return (int32_t)((int64_t)e->points[id].y - e->origin_y);
 }
 
 static int64_t square(int32_t x)
@@ -1018,6 +1019,8 @@ static void carve(euclid_t *e, uint8_t *base)
 static void prepare(euclid_t *e, const vor__raster_t *r)
 {
     e->frame = r->frame;
+    e->origin_x = r->frame->origin_x;
+    e->origin_y = r->frame->origin_y;
     e->points = r->sites->points;
     e->n = r->sites->count;
     e->fast = !r->brute && fits(e->frame, e->points, e->n);
