@@ -193,7 +193,8 @@ VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
 int vor__incircle_mid(const int64_t d[6])
 {
     vor__mw_u128_t sums[2]; /* positive, negative */
-    sums[0] = sums[1] = vor__mw_u128_of(0);
+    /* field by field: a structure copy is a memcpy call on Cortex-M0 */
+    sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
     mid_term(sums, d, 0, 2, 4);
     mid_term(sums, d, 2, 4, 0);
     mid_term(sums, d, 4, 0, 2);

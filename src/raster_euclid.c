@@ -75,6 +75,7 @@
  * per array). */
 typedef struct euclid {
     const vor_raster_frame_t *frame;
+    int32_t origin_x, origin_y; /* frame's: rel_x, rel_y read them in per-site loops */
     const vor_point_t *points;
     uint32_t n;
     int fast;             /* the fast path; else the brute-force search */
@@ -124,12 +125,12 @@ static int fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint
 
 static int32_t rel_x(const euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].x - e->frame->origin_x);
+    return (int32_t)((int64_t)e->points[id].x - e->origin_x);
 }
 
 static int32_t rel_y(const euclid_t *e, uint32_t id)
 {
-    return (int32_t)((int64_t)e->points[id].y - e->frame->origin_y);
+    return (int32_t)((int64_t)e->points[id].y - e->origin_y);
 }
 
 static int64_t square(int32_t x)
@@ -941,9 +942,10 @@ static uint32_t isqrt64(uint64_t x)
  * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
 static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
 {
-    uint32_t ax = vor__mw_magnitude((int64_t)qx - s->x);
-    uint32_t ay = vor__mw_magnitude((int64_t)qy - s->y);
-    uint64_t dx2 = vor__mul_u32(ax, ax), dy2 = vor__mul_u32(ay, ay);
+    uint64_t dx2 = vor__mul_u32(vor__mw_magnitude((int64_t)qx - s->x),
+                                vor__mw_magnitude((int64_t)qx - s->x));
+    uint64_t dy2 = vor__mul_u32(vor__mw_magnitude((int64_t)qy - s->y),
+                                vor__mw_magnitude((int64_t)qy - s->y));
     uint64_t low = dx2 + dy2;
     *high = low < dx2 ? 1u : 0u;
     return low;
@@ -1018,6 +1020,8 @@ static void carve(euclid_t *e, uint8_t *base)
 static void prepare(euclid_t *e, const vor__raster_t *r)
 {
     e->frame = r->frame;
+    e->origin_x = r->frame->origin_x;
+    e->origin_y = r->frame->origin_y;
     e->points = r->sites->points;
     e->n = r->sites->count;
     e->fast = !r->brute && fits(e->frame, e->points, e->n);
