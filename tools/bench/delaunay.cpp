@@ -7,8 +7,8 @@
 //                 [--out FILE] [--no-mem] [--scaling-reps R] [--scaling-csv FILE]
 //   delaunay-host --mem LIB KIND N     (internal: one memory measurement)
 //
-// For every input kind (uniform full-range int32, uniform 16-bit, grid,
-// clustered) and size it prints one Markdown table row: the best of R
+// For every input kind (make_input) and size it prints one Markdown table
+// row: the best of R
 // wall-clock times of each library (the libraries take turns within each
 // repetition; vor's incremental build and both divide-and-conquer
 // variants), their ratios, and bytes per site. Then a table of time per
@@ -26,9 +26,13 @@
 // (global operator new/delete and vor's arena malloc, counted with
 // malloc_usable_size).
 //
+// A second table sets vor beside delaunay32 (1 and 2 threads) and
+// jc_voronoi when their sources are there (see "peers" below).
+//
 // Light correctness checks on every row: vor_validate passes; vor's
 // distinct sites equal CGAL's number_of_vertices() and Boost's cells; vor's
-// finite triangles of nonzero area equal CGAL's number_of_faces(); and for
+// finite triangles of nonzero area equal CGAL's number_of_faces() and
+// delaunay32's triangles; and for
 // inputs with no four cocircular sites (uniform full-range) Boost's Voronoi
 // vertices too.
 // A failed check marks the row and makes the exit status 1.
@@ -40,6 +44,14 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <boost/polygon/voronoi.hpp>
+
+#ifdef VOR_BENCH_DELAUNAY32
+#include <delaunay32/delaunay.hpp>
+#endif
+#ifdef VOR_BENCH_JCV
+#include "jcv_peer.h"
+#include <sys/wait.h>
+#endif
 
 #include <malloc.h>
 #include <unistd.h>
@@ -115,10 +127,17 @@ static void counted_free(void *p)
 
 // ------------------------------------------------------------------ inputs
 
-enum kind { UNIFORM, U16, GRID, CLUSTERED, KINDS };
-static const char *const kind_name[KINDS] = {"uniform", "u16", "grid", "clustered"};
-static const char *const kind_label[KINDS] = {"uniform int32", "uniform 16-bit", "grid",
-                                              "clustered"};
+// uniform-d32: uniform within a third of the int32 range, inside
+// delaunay32's exact span (1,940,470,527); grid-wide: the grid spread over
+// 2^30 whatever n, so that its cocircular ties need wide arithmetic;
+// field-mm: uniform on the millimetre lattice of a 100 m x 100 m field (a
+// robot's map: small coordinates, a few duplicates at 10^6).
+enum kind { UNIFORM, D32_SPAN, U16, GRID, GRID_WIDE, FIELD_MM, CLUSTERED, KINDS };
+static const char *const kind_name[KINDS] = {"uniform",   "uniform-d32", "u16",      "grid",
+                                             "grid-wide", "field-mm",    "clustered"};
+static const char *const kind_label[KINDS] = {
+    "uniform int32", "uniform, span / 3", "uniform 16-bit",      "grid, spacing 1,000",
+    "grid, spacing 2^30 / sqrt n", "field, mm on 100 m", "clustered"};
 
 struct rng : splitmix64 {
     double unit() { return (double)((next() >> 11) + 1) * 0x1p-53; } // (0, 1]
@@ -126,6 +145,8 @@ struct rng : splitmix64 {
 };
 
 static const int32_t GRID_SPACING = 1000;
+static const int32_t D32_HALF_SPAN = (int32_t)(((int64_t)1 << 32) / 6); // span 2^32 / 3
+static const uint32_t FIELD_SIDE_MM = 100000;                           // 100 m
 static const unsigned CLUSTERS = 300;
 static const double CLUSTER_SIGMA = 300.0;
 static const int32_t CLUSTER_SPREAD = 1 << 24; // centres in [-2^24, 2^24]
@@ -143,6 +164,18 @@ static std::vector<vor_point_t> make_input(kind k, uint32_t n)
             q.y = (int32_t)(uint32_t)(v >> 32);
         }
         break;
+    case D32_SPAN:
+        for (auto &q : p) {
+            q.x = (int32_t)((int64_t)r.below(2u * (uint64_t)D32_HALF_SPAN) - D32_HALF_SPAN);
+            q.y = (int32_t)((int64_t)r.below(2u * (uint64_t)D32_HALF_SPAN) - D32_HALF_SPAN);
+        }
+        break;
+    case FIELD_MM:
+        for (auto &q : p) {
+            q.x = (int32_t)r.below(FIELD_SIDE_MM);
+            q.y = (int32_t)r.below(FIELD_SIDE_MM);
+        }
+        break;
     case U16:
         for (auto &q : p) {
             uint64_t v = r.next();
@@ -150,11 +183,13 @@ static std::vector<vor_point_t> make_input(kind k, uint32_t n)
             q.y = (int16_t)(uint16_t)(v >> 16);
         }
         break;
-    case GRID: { // first n points of a ceil(sqrt n)^2 lattice, shuffled
+    case GRID:
+    case GRID_WIDE: { // first n points of a ceil(sqrt n)^2 lattice, shuffled
         uint32_t side = (uint32_t)std::ceil(std::sqrt((double)n));
+        int32_t spacing = (k == GRID) ? GRID_SPACING : (int32_t)((1u << 30) / side);
         for (uint32_t i = 0; i < n; i++) {
-            p[i].x = ((int32_t)(i % side) - (int32_t)(side / 2)) * GRID_SPACING;
-            p[i].y = ((int32_t)(i / side) - (int32_t)(side / 2)) * GRID_SPACING;
+            p[i].x = ((int32_t)(i % side) - (int32_t)(side / 2)) * spacing;
+            p[i].y = ((int32_t)(i / side) - (int32_t)(side / 2)) * spacing;
         }
         for (uint32_t i = n; i > 1; i--) {
             std::swap(p[i - 1], p[r.below(i)]);
@@ -255,6 +290,113 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     }
 }
 
+// ------------------------------------------------------------------ peers
+
+// delaunay32 (exact int32, divide and conquer, optional threads) and
+// jc_voronoi (float Fortune sweep), built from ../shared/peers when it is
+// there: tools/bench/bench.mk then defines VOR_BENCH_DELAUNAY32 and
+// VOR_BENCH_JCV. Their rows say "skipped" otherwise.
+struct peer_result {
+    double ms = -1;      // one build, -1: not measured
+    long long count = -1; // delaunay32: triangles; jc_voronoi: sites kept
+    double heap = -1;    // jc_voronoi: peak heap bytes
+    std::string note;    // why there is no figure
+};
+
+#ifdef VOR_BENCH_DELAUNAY32
+static std::vector<delaunay32::Point> d32_points(const std::vector<vor_point_t> &p)
+{
+    std::vector<delaunay32::Point> out(p.size());
+    for (size_t i = 0; i < p.size(); i++) {
+        out[i].x = p[i].x;
+        out[i].y = p[i].y;
+    }
+    return out;
+}
+
+// Construction, set_points and triangulate are timed (as CGAL's
+// construction and insert are); destruction is not. delaunay32 refuses
+// inputs whose span is beyond its exact range (it throws).
+static peer_result run_delaunay32(const std::vector<delaunay32::Point> &points, size_t threads)
+{
+    peer_result r;
+    try {
+        double t0 = now_ms();
+        delaunay32::Triangulator t;
+        delaunay32::TriangulationOptions options;
+        options.thread_count = threads;
+        t.set_options(options);
+        t.set_points(points);
+        delaunay32::TriangulationResult result = t.triangulate();
+        r.ms = now_ms() - t0;
+        r.count = (long long)result.triangles.size();
+        if (result.report.actual_thread_count != threads) {
+            r.note = "ran on " + std::to_string(result.report.actual_thread_count) + " thread(s)";
+        }
+    } catch (const std::exception &) {
+        r.ms = -1;
+        r.note = "refused";
+    }
+    return r;
+}
+#endif
+
+#ifdef VOR_BENCH_JCV
+// In a child process: a float sweep may crash or loop on inputs float
+// cannot hold exactly, and the table must survive that. The child times
+// the build alone (the conversion to float is not timed) and reports
+// "ms sites peak-heap-bytes" through a pipe.
+static peer_result run_jcv(const std::vector<vor_point_t> &p)
+{
+    peer_result r;
+    std::vector<float> xy(2 * p.size());
+    for (size_t i = 0; i < p.size(); i++) {
+        xy[2 * i] = (float)p[i].x;
+        xy[2 * i + 1] = (float)p[i].y;
+    }
+    int fd[2];
+    if (pipe(fd) != 0) {
+        r.note = "no pipe";
+        return r;
+    }
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(fd[0]);
+        alarm(300);
+        jcv_peer_heap heap = {0, 0};
+        double t0 = now_ms();
+        int sites = jcv_peer_build(xy.data(), (int)p.size(), &heap);
+        double ms = now_ms() - t0;
+        char line[128];
+        int len = std::snprintf(line, sizeof line, "%.3f %d %zu\n", ms, sites, heap.peak);
+        ssize_t written = write(fd[1], line, (size_t)len);
+        _exit(written == len ? 0 : 1);
+    }
+    close(fd[1]);
+    char line[128] = {0};
+    size_t got = 0;
+    while (pid > 0 && got < sizeof line - 1) {
+        ssize_t k = read(fd[0], line + got, sizeof line - 1 - got);
+        if (k <= 0) {
+            break;
+        }
+        got += (size_t)k;
+    }
+    close(fd[0]);
+    int status = 0;
+    double heap = -1;
+    if (pid < 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) ||
+        WEXITSTATUS(status) != 0 ||
+        std::sscanf(line, "%lf %lld %lf", &r.ms, &r.count, &heap) != 3) {
+        r.ms = -1;
+        r.note = "failed";
+        return r;
+    }
+    r.heap = heap;
+    return r;
+}
+#endif
+
 // -------------------------------------------------------- memory (--mem)
 
 static long status_kb(const char *field)
@@ -300,10 +442,19 @@ static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
     inputs in;
     in.vor = make_input((kind)k, n);
     bool is_cgal = std::strcmp(lib, "cgal") == 0, is_boost = std::strcmp(lib, "boost") == 0;
-    if (!is_cgal && !is_boost && std::strcmp(lib, "vor") != 0) {
-        die("unknown library (vor, cgal or boost)");
+    bool is_d32 = std::strcmp(lib, "delaunay32") == 0;
+    if (!is_cgal && !is_boost && !is_d32 && std::strcmp(lib, "vor") != 0) {
+        die("unknown library (vor, cgal, boost or delaunay32)");
     }
     convert(in, is_cgal, is_boost);
+#ifdef VOR_BENCH_DELAUNAY32
+    std::vector<delaunay32::Point> d32 = is_d32 ? d32_points(in.vor)
+                                                : std::vector<delaunay32::Point>();
+#else
+    if (is_d32) {
+        die("delaunay32 not built in");
+    }
+#endif
     bool exact = reset_peak_rss();
     long before = exact ? status_kb("VmRSS") : status_kb("VmHWM");
     heap_live = heap_peak = 0; // what the build allocates from here on
@@ -316,6 +467,12 @@ static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
         Boost_vd *vd = new Boost_vd;
         boost::polygon::construct_voronoi(in.boost.begin(), in.boost.end(), vd);
         std::printf("check %zu\n", vd->num_cells());
+#ifdef VOR_BENCH_DELAUNAY32
+    } else if (is_d32) { // one thread: the peak of its serial build
+        static peer_result kept;
+        kept = run_delaunay32(d32, 1);
+        std::printf("check %lld\n", kept.count);
+#endif
     } else {
         static vor_run v; // kept: its memory must stay in use until the end
         build_vor(v, in.vor, VOR_ORDER_QUADTREE);
@@ -370,7 +527,8 @@ struct row {
     double vor_ms = 1e300, cgal_ms = 1e300, boost_ms = 1e300, vor_input_ms = -1;
     double dc_ms = 1e300, dcq_ms = 1e300; // vor's divide and conquer: x-split, quadtree
     double vor_arena = 0;
-    mem_result vor_mem, cgal_mem, boost_mem;
+    mem_result vor_mem, cgal_mem, boost_mem, d32_mem;
+    peer_result d32_one, d32_two, jcv; // best of the repetitions
     std::string check = "ok";
     uint32_t flat = 0;            // vor's zero-area triangles
     vor_predicate_stats_t stats{}; // of vor's first build
@@ -426,6 +584,44 @@ static void add_check(row &r, bool ok, const std::string &what)
     }
 }
 
+// A peer's figure: its time, or why there is none.
+static std::string peer_ms(const peer_result &p)
+{
+    if (p.ms < 0) {
+        return p.note.empty() ? "skipped" : p.note;
+    }
+    return fmt("%.2f", p.ms) + (p.note.empty() ? "" : " (" + p.note + ")");
+}
+
+static std::string peer_ratio(const peer_result &p, double vor_ms)
+{
+    return p.ms < 0 ? "-" : fmt("%.2f", p.ms / vor_ms);
+}
+
+static void keep_best(peer_result &best, const peer_result &now)
+{
+    if (best.ms < 0 || (now.ms >= 0 && now.ms < best.ms)) {
+        best = now;
+    }
+}
+
+static std::string peer_table(const std::vector<row> &rows)
+{
+    std::string t;
+    t += "| input | n | vor ms | delaunay32 1 thread ms | delaunay32 2 threads ms | "
+         "jc_voronoi ms | d32 1t/vor | d32 2t/vor | jcv/vor | vor B/site | d32 heap B/site | "
+         "jcv heap B/site |\n";
+    t += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const row &r : rows) {
+        t += "| " + r.input + " | " + with_commas(r.n) + " | " + fmt("%.2f", r.vor_ms) + " | " +
+             peer_ms(r.d32_one) + " | " + peer_ms(r.d32_two) + " | " + peer_ms(r.jcv) + " | " +
+             peer_ratio(r.d32_one, r.vor_ms) + " | " + peer_ratio(r.d32_two, r.vor_ms) + " | " +
+             peer_ratio(r.jcv, r.vor_ms) + " | " + per_site(r.vor_arena, r.n) + " | " +
+             per_site(r.d32_mem.heap, r.n) + " | " + per_site(r.jcv.heap, r.n) + " |\n";
+    }
+    return t;
+}
+
 static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, bool mem)
 {
     row r;
@@ -434,6 +630,14 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
     inputs in;
     in.vor = make_input(k, n);
     convert(in, true, true);
+#ifdef VOR_BENCH_DELAUNAY32
+    std::vector<delaunay32::Point> d32 = d32_points(in.vor);
+#else
+    r.d32_one.note = r.d32_two.note = "skipped";
+#endif
+#ifndef VOR_BENCH_JCV
+    r.jcv.note = "skipped";
+#endif
 
     size_t cgal_faces = 0, cgal_vertices = 0, boost_cells = 0, boost_vertices = 0;
     uint32_t vor_triangles = 0;
@@ -504,6 +708,18 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
             boost_vertices = vd->num_vertices();
             delete vd;
         }
+#ifdef VOR_BENCH_DELAUNAY32
+        keep_best(r.d32_one, run_delaunay32(d32, 1));
+        keep_best(r.d32_two, run_delaunay32(d32, 2));
+#endif
+#ifdef VOR_BENCH_JCV
+        keep_best(r.jcv, run_jcv(in.vor));
+#endif
+    }
+    // delaunay32's triangles: those of a triangulation of the distinct
+    // sites, as many as vor's true ones (2 v - 2 - hull sites)
+    for (const peer_result *p : {&r.d32_one, &r.d32_two}) {
+        add_check(r, p->ms < 0 || p->count == (long long)vor_triangles, "triangles vs delaunay32");
     }
     if (n <= input_order_max) { // once: slow by design, and its walks dominate
         vor_run v;
@@ -525,6 +741,11 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
         r.boost_mem = measure_memory("boost", k, n);
         add_check(r, r.vor_mem.rss >= 0 && r.cgal_mem.rss >= 0 && r.boost_mem.rss >= 0,
                   "memory child");
+#ifdef VOR_BENCH_DELAUNAY32
+        if (r.d32_one.ms >= 0) {
+            r.d32_mem = measure_memory("delaunay32", k, n);
+        }
+#endif
     }
     return r;
 }
@@ -690,6 +911,12 @@ int main(int argc, char **argv)
         }
     }
     std::string text = table(rows);
+    text += "\nExact integer and embeddable peers, the same inputs in the same run (best of " +
+            std::to_string(reps) + "; ratios above 1: vor is faster; heap: peak live bytes)";
+#if !defined(VOR_BENCH_DELAUNAY32) || !defined(VOR_BENCH_JCV)
+    text += "; skipped: peer sources not found (../shared/peers, or PEERS=DIR)";
+#endif
+    text += ":\n\n" + peer_table(rows);
     if (mem) {
         text += "\nMemory detail, bytes per site: vor arena = VOR_ARENA_BYTES(n) / n; RSS = "
                 "peak RSS growth during the build in a fresh process; heap = peak live "

@@ -123,6 +123,21 @@ print("|---|---|" + "---|" * len(ports))
 for key in sorted(rows, key=lambda k: (k[1], list(order).index(k[0]) if k[0] in order else 9)):
     cells = [f"{key[1]:,}", order.get(key[0], key[0])] + [value.get((key, p), "-") for p in ports]
     print("| " + " | ".join(cells) + " |")
+# the targets of the performance issue (16): default build, per site
+limit = {"cortex-m3": 3000, "cortex-m0": 9000}
+print()
+print("| port | sites | instructions / site | target | status |")
+print("|---|---|---|---|---|")
+for port in ports:
+    for n in sorted({k[1] for k in rows}):
+        v = value.get((("build", n), port))
+        if v is None:
+            continue
+        if port in limit:
+            verdict = "met" if float(v) <= limit[port] else "**not met**"
+            print(f"| {port} | {n:,} | {v} | <= {limit[port]:,} | {verdict} |")
+        else:
+            print(f"| {port} | {n:,} | {v} | reported | - |")
 PY
 }
 
