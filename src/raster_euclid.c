@@ -942,9 +942,10 @@ static uint32_t isqrt64(uint64_t x)
  * each square is below 2^64 for int32 coordinates, their sum below 2^65. */
 static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, uint32_t *high)
 {
-    uint32_t ax = vor__mw_magnitude((int64_t)qx - s->x);
-    uint32_t ay = vor__mw_magnitude((int64_t)qy - s->y);
-    uint64_t dx2 = vor__mul_u32(ax, ax), dy2 = vor__mul_u32(ay, ay);
+    uint64_t dx2 = vor__mul_u32(vor__mw_magnitude((int64_t)qx - s->x),
+                                vor__mw_magnitude((int64_t)qx - s->x));
+    uint64_t dy2 = vor__mul_u32(vor__mw_magnitude((int64_t)qy - s->y),
+                                vor__mw_magnitude((int64_t)qy - s->y));
     uint64_t low = dx2 + dy2;
     *high = low < dx2 ? 1u : 0u;
     return low;

@@ -36,6 +36,7 @@
  * its exact comparisons, and the culling of sites per tile. */
 typedef struct metric {
     const vor_raster_frame_t *frame;
+    int32_t origin_x, step_x; /* frame's: read per pixel, kept beside m's other fields */
     const vor_raster_sites_t *sites;
     enum vor_metric metric;
     uint32_t n;
@@ -884,8 +885,6 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
         m->band_valid = 1;
         cull_band(m);
     }
-    /* the frame's fields in locals: stores to runs could alias them */
-    const int32_t origin_x = m->frame->origin_x, step_x = m->frame->step_x;
     const uint32_t width = m->frame->width;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     const uint32_t *lists = m->pool + m->n;
@@ -904,7 +903,7 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
             at += 1u + (list != NULL ? candidates : 0u);
         }
         for (uint32_t i = first; i < end; i++) {
-            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
+            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
             count = vor__run_push(runs, count, i, nearest(m, list, candidates, qx, qy));
         }
     }
@@ -998,6 +997,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
      * words (the macro's 48 n + 64 bytes, less the rows and alignment) */
     const size_t pool_words = r->rest_bytes / sizeof(uint32_t);
     m->frame = frame;
+    m->origin_x = frame->origin_x;
+    m->step_x = frame->step_x;
     m->sites = s;
     m->metric = s->metric;
     m->n = s->count;
@@ -1090,12 +1091,11 @@ static void distances(const void *state, uint32_t j, const vor__run_t *runs, uin
                       uint32_t *px)
 {
     const metric_t *m = state;
-    const int32_t origin_x = m->frame->origin_x, step_x = m->frame->step_x;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         for (; i < runs[r].end; i++) {
-            int32_t qx = (int32_t)(origin_x + vor__offset(i, step_x));
+            int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
             px[i] = metric_distance(m, runs[r].site, qx, qy);
         }
     }
