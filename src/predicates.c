@@ -198,7 +198,12 @@ int vor__incircle_mid(const int64_t d[6])
     mid_term(sums, d, 0, 2, 4);
     mid_term(sums, d, 2, 4, 0);
     mid_term(sums, d, 4, 0, 2);
-    return vor__mw_u128_compare(sums[0], sums[1]);
+    /* the low words compared without a branch (vor__mw_u128_compare
+     * branches, which suits the raster's uses but not this one) */
+    if (sums[0].hi != sums[1].hi) {
+        return (sums[0].hi > sums[1].hi) ? 1 : -1;
+    }
+    return (sums[0].lo > sums[1].lo) - (sums[0].lo < sums[1].lo);
 }
 
 int vor__incircle_wide(const int64_t d[6])
