@@ -117,20 +117,15 @@ static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
            vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
 }
 
-static inline int vor__sign64(int64_t v)
-{
-    return (v > 0) - (v < 0);
-}
-
 /* For collinear a, m, b: does m lie strictly inside the segment ab? Then
  * the steps a -> m and m -> b point the way a -> b does, coordinate by
  * coordinate (no products needed). */
 static inline bool vor__strictly_between(const vor_point_t *a, const vor_point_t *m,
                                          const vor_point_t *b)
 {
-    int sx = vor__sign64((int64_t)b->x - a->x), sy = vor__sign64((int64_t)b->y - a->y);
-    return vor__sign64((int64_t)m->x - a->x) == sx && vor__sign64((int64_t)m->y - a->y) == sy &&
-           vor__sign64((int64_t)b->x - m->x) == sx && vor__sign64((int64_t)b->y - m->y) == sy;
+    int sx = vor__mw_sign64((int64_t)b->x - a->x), sy = vor__mw_sign64((int64_t)b->y - a->y);
+    return vor__mw_sign64((int64_t)m->x - a->x) == sx && vor__mw_sign64((int64_t)m->y - a->y) == sy &&
+           vor__mw_sign64((int64_t)b->x - m->x) == sx && vor__mw_sign64((int64_t)b->y - m->y) == sy;
 }
 
 /* Does site c (VOR__INFINITE for a triangle at infinity), the third vertex
