@@ -149,10 +149,13 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
     vor_index_t outer1 = t1->n[i1], before = t1->n[vor__prev(i1)];
     vor_index_t outer2 = t2->n[i2], after = t2->n[vor__next(i2)];
     /* keep home slots home: the ear holds a, b, c, the star triangle p, a,
-     * c; only b's slot must take the ear and only p's the star triangle,
-     * and those cannot both ask for the same slot */
+     * c; p's slot must take the star triangle and b's the ear (never both
+     * asked of one slot). Otherwise a packed slot goes to the star, so
+     * that home slots settle in ears and fewer reach the final merge,
+     * which keeps only one of the last three slots. */
     vor_index_t ear = s1, star = s2;
-    if (is_home(d, s1, p) || is_home(d, s2, b)) {
+    if (!is_home(d, s2, p) && !is_home(d, s1, b) &&
+        (is_home(d, s1, p) || is_home(d, s2, b) || s2 < d->max_sites)) {
         ear = s2;
         star = s1;
     }
@@ -165,52 +168,133 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
     return star;
 }
 
-/* Home slot `hole` of site h lost its triangle: fills it with another
- * triangle of h, from a packed slot when h has one there (which is then
- * returned, free); otherwise from the home slot of another of its
- * vertices r, which then needs one in turn: an augmenting path of the
- * matching of sites to their home triangles, searched greedily (no site
- * of the last eight steps is robbed again). Bounded by the site count;
- * the first step finds a packed triangle in the common case. */
-static vor_index_t rehome(vor_t *d, vor_index_t h, vor_index_t hole, vor_index_t start)
+/* Rotates the triangle in `slot` so that its vertex v comes first (its
+ * links turn with it; no other triangle changes). */
+static void rotate_to(vor__tri_t *tri, vor_index_t slot, vor_index_t v)
 {
-    vor__tri_t *tri = d->triangles;
-    vor_index_t visited[8];
-    uint32_t chain = 0;
-    for (uint32_t step = 0; step < d->vertex_count; step++) {
-        vor_index_t packed = VOR__NONE, other = VOR__NONE, slot = start;
-        /* one turn around h, skipping the hole (it holds nothing yet) */
-        for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-            if (slot >= d->max_sites) {
-                packed = slot;
-                break;
-            }
-            bool seen = false;
-            for (uint32_t k = 0; k < chain; k++) {
-                seen = seen || visited[k] == slot;
-            }
-            other = (other == VOR__NONE && slot != h && !seen) ? slot : other;
-            slot = star_next(tri, slot, h);
-            if (slot == start) {
-                break;
-            }
+    vor__tri_t *t = &tri[slot];
+    unsigned i = corner(t, v), j = vor__next(i), k = vor__prev(i);
+    vor_index_t w[3], n[3] = {t->n[0], t->n[1], t->n[2]};
+    vor__vertices(t, w);
+    vor__tri_set(t, w[i], w[j], w[k], n[i], n[j], n[k]);
+}
+
+/* The first slot of cur's star after slot `after` (from the start when
+ * VOR__NONE) that is the home slot of another site, unmarked (want_marked
+ * false) or marked with its triangle's first vertex cur (true: a child in
+ * the search tree below); VOR__NONE if none. One turn around cur. */
+static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first,
+                              vor_index_t after, bool want_marked)
+{
+    const vor__tri_t *tri = d->triangles;
+    bool skipping = after != VOR__NONE;
+    vor_index_t slot = first;
+    for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
+        if (!skipping && slot < d->max_sites && slot != cur &&
+            vor__marked(&tri[slot]) == want_marked &&
+            (!want_marked || vor__vertex(&tri[slot], 0) == cur)) {
+            return slot;
         }
-        vor_index_t from = (packed != VOR__NONE) ? packed : other;
-        if (from == VOR__NONE) {
-            from = start; /* every candidate visited: any other triangle of h */
+        skipping = skipping && slot != after;
+        slot = star_next(tri, slot, cur);
+        if (slot == first) {
+            break;
         }
-        move_triangle(tri, from, hole);
-        if (from >= d->max_sites) {
-            return from;
-        }
-        if (chain < 8u) {
-            visited[chain++] = h;
-        }
-        start = hole;
-        hole = from;
-        h = from; /* a home slot's index is its site */
     }
     return VOR__NONE;
+}
+
+/* Home slot h of site h is empty (removal merged its triangle away),
+ * `start` holds another triangle of h, and the packed triangles run up to
+ * slot `last`, one too many. Fills slot h with a triangle of h, which
+ * empties a packed slot, and moves the triangle in `last` into it.
+ *
+ * Why it always succeeds: matching each site to the triangle in its home
+ * slot, only h is unmatched. Call r a child of site u when r's home slot
+ * holds a triangle of u; let X be h and every site reachable from h
+ * through children. If no triangle of a site in X were in a packed slot,
+ * all triangles of X would lie in the |X| - 1 home slots of X \ {h}; but
+ * every site has three or more triangles (the vertex at infinity closes
+ * the hull, and three or more sites remain) and a triangle has three
+ * corners, so X has at least |X| triangles (Hall's condition). So some
+ * site r_k of X has a triangle in a packed slot P, reached by a path
+ * h, r_1, .., r_k of children, and shifting along it (slot h takes r_1's
+ * triangle, which holds h; slot r_1 takes r_2's, ..; slot r_k takes P's)
+ * rehomes everyone and empties P (Berge's augmenting path).
+ *
+ * The search is a depth-first search in bounded memory: a site's home
+ * slot mark (mesh.h) says "visited", and the parent of a visited site
+ * is its home triangle rotated to put the parent first, so the path is
+ * read back from the triangles themselves. Every site is marked at most
+ * once and every turn around a star is bounded, so it ends; the marks are
+ * cleared by walking the same tree again. The first look, at h's own
+ * triangles, finds a packed one nearly always. */
+void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t cur = h, after = VOR__NONE, packed = VOR__NONE;
+    /* each step marks a site or goes back up the tree: 2 v steps */
+    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u && packed == VOR__NONE; left--) {
+        vor_index_t first = (cur == h) ? start : cur, slot = first;
+        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && turn > 0u; turn--) {
+            if (slot >= d->max_sites) {
+                packed = slot; /* cur's triangle in a packed slot: the path ends */
+                break;
+            }
+            slot = star_next(tri, slot, cur);
+            if (slot == first) {
+                break;
+            }
+        }
+        if (packed != VOR__NONE) {
+            break;
+        }
+        vor_index_t child = next_child(d, cur, first, after, false);
+        if (child != VOR__NONE) {
+            rotate_to(tri, child, cur); /* records the parent */
+            vor__set_mark(&tri[child], true);
+            cur = child;
+            after = VOR__NONE;
+        } else if (cur == h) {
+            break; /* nothing left to visit: only on a broken mesh */
+        } else {
+            after = cur;
+            cur = vor__vertex(&tri[cur], 0);
+        }
+    }
+    /* clear the marks: the same tree, each site unmarked on the way back */
+    vor_index_t at = h, back = VOR__NONE;
+    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u; left--) {
+        vor_index_t child = next_child(d, at, (at == h) ? start : at, back, true);
+        if (child != VOR__NONE) {
+            at = child;
+            back = VOR__NONE;
+            continue;
+        }
+        if (at == h) {
+            break;
+        }
+        vor__set_mark(&tri[at], false);
+        back = at;
+        at = vor__vertex(&tri[at], 0);
+    }
+    if (packed == VOR__NONE) {
+        return; /* a broken mesh only */
+    }
+    /* shift along the path from its end, slot h (empty) as the spare:
+     * slot r takes what P holds, P takes r's triangle (its first vertex
+     * is r's parent); at most one step per site */
+    for (uint32_t left = d->vertex_count; cur != h && left > 0u; left--) {
+        vor_index_t parent = vor__vertex(&tri[cur], 0);
+        move_triangle(tri, cur, h);
+        move_triangle(tri, packed, cur);
+        move_triangle(tri, h, packed);
+        cur = parent;
+    }
+    move_triangle(tri, packed, h);
+    if (packed != last) {
+        move_triangle(tri, last, packed);
+    }
 }
 
 /* Puts id p on the free list: d->free_site holds the most recent free id
@@ -393,15 +477,14 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
     relink(tri, o2, s2, keep);
     relink(tri, o3, s3, keep);
     vor__tri_set(&tri[keep], a, b, c, o2, o3, o1);
-    if (freed < d->max_sites) {
-        /* both home slots of neighbours: the one not kept needs another
-         * of its triangles, which frees a packed slot */
-        freed = rehome(d, freed, freed, keep);
-    }
     free_id(d, p);
     /* keep the extras packed: the last one fills the freed slot */
     vor_index_t last = (vor_index_t)(d->max_sites + d->vertex_count - 3u);
-    if (freed != VOR__NONE && freed != last) {
+    if (freed < d->max_sites) {
+        /* both home slots of neighbours: the one not kept needs another
+         * of its triangles, which frees a packed slot */
+        vor__rehome(d, freed, keep, last);
+    } else if (freed != last) {
         move_triangle(tri, last, freed);
     }
     return (a != VOR__INFINITE) ? a : b;

@@ -474,6 +474,11 @@ void vor__grid_forget(vor_t *d, uint32_t site, uint32_t fallback);
 /* Site `site`, now at its new coordinates, was at `from`. */
 void vor__grid_move(vor_t *d, uint32_t site, vor_point_t from, uint32_t fallback);
 
+/* Removal's last step (dynamic.c): home slot h lost its triangle and
+ * `start` holds another of h's; the packed slots run to `last`, one
+ * triangle too many. Refills slot h and packs the slots again. */
+void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last);
+
 /* vor_build's plan (insertion_order.c): for the n sites already copied
  * into d->sites, writes plan[2i] = the i-th site to insert and plan[2i+1]
  * = the site its search starts from (VOR__NONE: the previous one); the
