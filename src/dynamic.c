@@ -83,22 +83,23 @@ static void star_edge(const vor__tri_t *tri, vor_index_t slot, vor_index_t p, vo
     *y = vor__vertex(t, vor__prev(i));
 }
 
-/* Is a-b an edge of the mesh? Turns around whichever is finite, at most
- * once around (vertex_count + 1 triangles bound the turn). */
-static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b)
+/* Is a-b an edge of the mesh? Turns around the finite site a from its
+ * triangle in slot `start`, at most once around (vertex_count + 1
+ * triangles bound the turn); one read of each triangle's vertices. */
+static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t start)
 {
-    if (a == VOR__INFINITE) {
-        a = b;
-        b = VOR__INFINITE;
-    }
     const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = a;
+    vor_index_t slot = start, v[3];
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (vor__vertex_index(&tri[slot], b) != 3u) {
+        vor__vertices(&tri[slot], v);
+        if (v[0] == b || v[1] == b || v[2] == b) {
             return true;
         }
-        slot = star_next(tri, slot, a);
-        if (slot == a) {
+        /* clockwise: from a star triangle (p, a, b) across a-b first,
+         * into the triangle the star walk prefetched */
+        unsigned i = (v[1] == a) ? 1u : (v[2] == a) ? 2u : 0u;
+        slot = tri[slot].n[vor__prev(i)];
+        if (slot == start) {
             break;
         }
     }
@@ -356,6 +357,15 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
     return true;
 }
 
+/* The topological guard for ear i: its new edge is not an edge already.
+ * The turn is around a finite end, from its star triangle. */
+static bool star_guarded(const vor_t *d, const star_t *st, uint32_t i)
+{
+    vor_index_t a = st->nb[i], c = st->nb[wrap(i + 2u, st->deg)];
+    return (a != VOR__INFINITE) ? !is_edge(d, a, c, st->sl[i])
+                                : !is_edge(d, c, a, st->sl[wrap(i + 1u, st->deg)]);
+}
+
 /* Cuts ear i off the star (arrays and mesh): b = nb[i + 1] leaves.
  * Returns the index of the ear before the new edge: it and the next one
  * are the ears that changed. */
@@ -383,16 +393,16 @@ static uint32_t star_choose(vor_t *d, const star_t *st, uint32_t from)
     uint32_t deg = st->deg;
     if (deg == 4u) {
         uint32_t i = star_ear_ok(d, st, 0) ? 0u : 1u;
-        return is_edge(d, st->nb[i], st->nb[i + 2u]) ? 1u - i : i;
+        return star_guarded(d, st, i) ? i : 1u - i;
     }
     for (uint32_t k = 0; k < deg; k++) {
         uint32_t i = wrap(from + k, deg);
-        if (star_ear_ok(d, st, i) && !is_edge(d, st->nb[i], st->nb[wrap(i + 2u, deg)])) {
+        if (star_ear_ok(d, st, i) && star_guarded(d, st, i)) {
             return i;
         }
     }
     for (uint32_t i = 0; i < deg; i++) {
-        if (!is_edge(d, st->nb[i], st->nb[wrap(i + 2u, deg)])) {
+        if (star_guarded(d, st, i)) {
             return i;
         }
     }
@@ -420,7 +430,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
             vor_index_t s2 = star_next(tri, slot, p), a, b, c;
             star_edge(tri, slot, p, &a, &b);
             star_edge(tri, s2, p, &b, &c);
-            if (!is_edge(d, a, c)) {
+            if (!((a != VOR__INFINITE) ? is_edge(d, a, c, slot) : is_edge(d, c, a, s2))) {
                 guarded = (guarded == VOR__NONE) ? slot : guarded;
                 if (is_delaunay_ear(d, p, a, b, c, star_next(tri, s2, p))) {
                     chosen = slot;
@@ -437,16 +447,25 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         degree--;
     }
 
-    /* one walk around the star into the arrays (degree + 1 steps at most) */
+    /* one walk around the star into the arrays (degree + 1 steps at most),
+     * asking the cache early for what the ear tests and the guard read
+     * next: the neighbours' coordinates and the triangles beyond the star */
     star_t st;
     st.deg = 0;
     slot = s1;
     do {
-        vor_index_t x, y;
-        star_edge(tri, slot, p, &x, &y);
+        const vor__tri_t *t = &tri[slot];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
+        vor_index_t x = v[vor__next(i)];
+        if (x != VOR__INFINITE) {
+            VOR__PREFETCH(&d->sites[x]);
+        }
+        VOR__PREFETCH(&tri[t->n[i]]);
         st.nb[st.deg] = x;
         st.sl[st.deg++] = slot;
-        slot = star_next(tri, slot, p);
+        slot = t->n[vor__next(i)]; /* star_next */
     } while (slot != s1 && st.deg < STAR_MAX);
     /* each cut removes one neighbour: deg - 3 cuts */
     uint32_t from = 0;
