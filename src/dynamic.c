@@ -142,11 +142,13 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
 static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t s2)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t a, b, c, unused;
-    star_edge(tri, s1, p, &a, &b);
-    star_edge(tri, s2, p, &unused, &c);
     const vor__tri_t *t1 = &tri[s1], *t2 = &tri[s2];
-    unsigned i1 = corner(t1, p), i2 = corner(t2, p);
+    vor_index_t v1[3], v2[3];
+    vor__vertices(t1, v1);
+    vor__vertices(t2, v2);
+    unsigned i1 = (v1[1] == p) ? 1u : (v1[2] == p) ? 2u : 0u;
+    unsigned i2 = (v2[1] == p) ? 1u : (v2[2] == p) ? 2u : 0u;
+    vor_index_t a = v1[vor__next(i1)], b = v1[vor__prev(i1)], c = v2[vor__prev(i2)];
     vor_index_t outer1 = t1->n[i1], before = t1->n[vor__prev(i1)];
     vor_index_t outer2 = t2->n[i2], after = t2->n[vor__next(i2)];
     /* keep home slots home: the ear holds a, b, c, the star triangle p, a,
@@ -341,16 +343,21 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
 {
     uint32_t deg = st->deg;
     vor_index_t a = st->nb[i], b = st->nb[wrap(i + 1u, deg)], c = st->nb[wrap(i + 2u, deg)];
-    if (a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE &&
-        vor__orient(d, a, b, c) <= 0) {
+    bool finite = a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE;
+    if (finite && vor__orient(d, a, b, c) <= 0) {
         return false;
     }
     /* lo and hi meet in the middle: deg - 3 neighbours, each once */
     for (uint32_t lo = 3u, hi = deg - 1u; lo <= hi; lo++, hi--) {
         vor_index_t y = st->nb[wrap(i + lo, deg)], z = st->nb[wrap(i + hi, deg)];
-        /* infinity lies in no circle of finite sites */
-        if ((y != VOR__INFINITE && vor__conflicts(d, a, b, c, y)) ||
-            (lo != hi && z != VOR__INFINITE && vor__conflicts(d, a, b, c, z))) {
+        /* infinity lies in no circle of finite sites; a finite ear
+         * (the common case) skips the dispatch on infinity */
+        if (y != VOR__INFINITE && (finite ? vor__incircle(d, a, b, c, y) > 0
+                                          : vor__conflicts(d, a, b, c, y))) {
+            return false;
+        }
+        if (lo != hi && z != VOR__INFINITE &&
+            (finite ? vor__incircle(d, a, b, c, z) > 0 : vor__conflicts(d, a, b, c, z))) {
             return false;
         }
     }
@@ -364,6 +371,35 @@ static bool star_guarded(const vor_t *d, const star_t *st, uint32_t i)
     vor_index_t a = st->nb[i], c = st->nb[wrap(i + 2u, st->deg)];
     return (a != VOR__INFINITE) ? !is_edge(d, a, c, st->sl[i])
                                 : !is_edge(d, c, a, st->sl[wrap(i + 1u, st->deg)]);
+}
+
+/* Walks p's star from slot `start` into the arrays (degree + 1 steps at
+ * most), asking the cache early for what the ear tests and the guard
+ * read next: the neighbours' coordinates and the triangles beyond the
+ * star. False when the star has more than STAR_MAX triangles. */
+static bool star_load(const vor_t *d, vor_index_t p, vor_index_t start, star_t *st)
+{
+    const vor__tri_t *tri = d->triangles;
+    vor_index_t slot = start;
+    st->deg = 0;
+    do {
+        if (st->deg == STAR_MAX) {
+            return false;
+        }
+        const vor__tri_t *t = &tri[slot];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
+        vor_index_t x = v[vor__next(i)];
+        if (x != VOR__INFINITE) {
+            VOR__PREFETCH(&d->sites[x]);
+        }
+        VOR__PREFETCH(&tri[t->n[i]]);
+        st->nb[st->deg] = x;
+        st->sl[st->deg++] = slot;
+        slot = t->n[vor__next(i)]; /* star_next */
+    } while (slot != start);
+    return true;
 }
 
 /* Cuts ear i off the star (arrays and mesh): b = nb[i + 1] leaves.
@@ -414,59 +450,41 @@ static uint32_t star_choose(vor_t *d, const star_t *st, uint32_t from)
 static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
 {
     vor__tri_t *tri = d->triangles;
-    uint32_t degree = 0;
-    vor_index_t slot = p;
-    do {
-        degree++;
-        slot = star_next(tri, slot, p);
-    } while (slot != p && degree <= d->vertex_count);
-
-    vor_index_t s1 = p; /* the home slot stays in the star (cut_ear) */
-    /* a large star: ears by walking, until the arrays can hold it */
-    while (degree > STAR_MAX) {
-        vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
-        slot = s1;
-        for (uint32_t k = 0; k < degree && chosen == VOR__NONE; k++) {
-            vor_index_t s2 = star_next(tri, slot, p), a, b, c;
-            star_edge(tri, slot, p, &a, &b);
-            star_edge(tri, s2, p, &b, &c);
-            if (!((a != VOR__INFINITE) ? is_edge(d, a, c, slot) : is_edge(d, c, a, s2))) {
-                guarded = (guarded == VOR__NONE) ? slot : guarded;
-                if (is_delaunay_ear(d, p, a, b, c, star_next(tri, s2, p))) {
-                    chosen = slot;
-                }
-            }
-            slot = s2;
-        }
-        /* only lying predicates leave no ear: the first guarded one */
-        chosen = (chosen != VOR__NONE) ? chosen : guarded;
-        if (chosen == VOR__NONE) {
-            break; /* a broken mesh only */
-        }
-        s1 = cut_ear(d, p, chosen, star_next(tri, chosen, p));
-        degree--;
-    }
-
-    /* one walk around the star into the arrays (degree + 1 steps at most),
-     * asking the cache early for what the ear tests and the guard read
-     * next: the neighbours' coordinates and the triangles beyond the star */
     star_t st;
-    st.deg = 0;
-    slot = s1;
-    do {
-        const vor__tri_t *t = &tri[slot];
-        vor_index_t v[3];
-        vor__vertices(t, v);
-        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
-        vor_index_t x = v[vor__next(i)];
-        if (x != VOR__INFINITE) {
-            VOR__PREFETCH(&d->sites[x]);
+    vor_index_t s1 = p; /* the home slot stays in the star (cut_ear) */
+    if (!star_load(d, p, s1, &st)) {
+        /* a large star: ears by walking, until the arrays can hold it */
+        uint32_t degree = 0;
+        vor_index_t slot = p;
+        do {
+            degree++;
+            slot = star_next(tri, slot, p);
+        } while (slot != p && degree <= d->vertex_count);
+        while (degree > STAR_MAX) {
+            vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
+            slot = s1;
+            for (uint32_t k = 0; k < degree && chosen == VOR__NONE; k++) {
+                vor_index_t s2 = star_next(tri, slot, p), a, b, c;
+                star_edge(tri, slot, p, &a, &b);
+                star_edge(tri, s2, p, &b, &c);
+                if (!((a != VOR__INFINITE) ? is_edge(d, a, c, slot) : is_edge(d, c, a, s2))) {
+                    guarded = (guarded == VOR__NONE) ? slot : guarded;
+                    if (is_delaunay_ear(d, p, a, b, c, star_next(tri, s2, p))) {
+                        chosen = slot;
+                    }
+                }
+                slot = s2;
+            }
+            /* only lying predicates leave no ear: the first guarded one */
+            chosen = (chosen != VOR__NONE) ? chosen : guarded;
+            if (chosen == VOR__NONE) {
+                break; /* a broken mesh only */
+            }
+            s1 = cut_ear(d, p, chosen, star_next(tri, chosen, p));
+            degree--;
         }
-        VOR__PREFETCH(&tri[t->n[i]]);
-        st.nb[st.deg] = x;
-        st.sl[st.deg++] = slot;
-        slot = t->n[vor__next(i)]; /* star_next */
-    } while (slot != s1 && st.deg < STAR_MAX);
+        star_load(d, p, s1, &st);
+    }
     /* each cut removes one neighbour: deg - 3 cuts */
     uint32_t from = 0;
     while (st.deg > 3u) {
@@ -476,12 +494,11 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         }
         from = star_cut(d, p, &st, i);
     }
-    s1 = st.sl[0];
 
     /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
-    vor_index_t s2 = star_next(tri, s1, p), s3 = star_next(tri, s2, p), a, b, c;
-    star_edge(tri, s1, p, &a, &b);
-    star_edge(tri, s2, p, &b, &c);
+    vor_index_t a = st.nb[0], b = st.nb[1], c = st.nb[2];
+    vor_index_t s2 = st.sl[1], s3 = st.sl[2];
+    s1 = st.sl[0];
     vor_index_t o1 = tri[s1].n[corner(&tri[s1], p)];
     vor_index_t o2 = tri[s2].n[corner(&tri[s2], p)];
     vor_index_t o3 = tri[s3].n[corner(&tri[s3], p)];
