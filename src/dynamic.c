@@ -162,10 +162,15 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
         ear = s2;
         star = s1;
     }
-    relink(tri, outer1, s1, ear);
-    relink(tri, outer2, s2, ear);
-    relink(tri, before, s1, star);
-    relink(tri, after, s2, star);
+    /* only the links into the slot that changed role move (one of the
+     * two triangles beyond the star is not touched) */
+    if (ear == s1) {
+        relink(tri, outer2, s2, ear);
+        relink(tri, before, s1, star);
+    } else {
+        relink(tri, outer1, s1, ear);
+        relink(tri, after, s2, star);
+    }
     vor__tri_set(&tri[ear], a, b, c, outer2, star, outer1);
     vor__tri_set(&tri[star], p, a, c, ear, after, before);
     return star;
