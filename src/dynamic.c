@@ -83,24 +83,27 @@ static void star_edge(const vor__tri_t *tri, vor_index_t slot, vor_index_t p, vo
     *y = vor__vertex(t, vor__prev(i));
 }
 
-/* Is a-b an edge of the mesh? Turns around the finite site a from its
- * triangle in slot `start`, at most once around (vertex_count + 1
+/* Is a-b an edge of the mesh? Turns clockwise around the finite site a
+ * from its triangle in slot `start` (not b's) to the one in slot `stop`
+ * (not b's either, and not read), at most once around (vertex_count + 1
  * triangles bound the turn); one read of each triangle's vertices. */
-static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t start)
+static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t start,
+                    vor_index_t stop)
 {
     const vor__tri_t *tri = d->triangles;
     vor_index_t slot = start, v[3];
+    vor__vertices(&tri[slot], v);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        vor__vertices(&tri[slot], v);
-        if (v[0] == b || v[1] == b || v[2] == b) {
-            return true;
-        }
         /* clockwise: from a star triangle (p, a, b) across a-b first,
          * into the triangle the star walk prefetched */
         unsigned i = (v[1] == a) ? 1u : (v[2] == a) ? 2u : 0u;
         slot = tri[slot].n[vor__prev(i)];
-        if (slot == start) {
+        if (slot == stop) {
             break;
+        }
+        vor__vertices(&tri[slot], v);
+        if (v[0] == b || v[1] == b || v[2] == b) {
+            return true;
         }
     }
     return false;
@@ -370,12 +373,15 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
 }
 
 /* The topological guard for ear i: its new edge is not an edge already.
- * The turn is around a finite end, from its star triangle. */
+ * The turn is around a finite end, over its triangles off the star: a's
+ * from (p, a, b) to (p, z, a), or c's from (p, c, d) to (p, b, c). */
 static bool star_guarded(const vor_t *d, const star_t *st, uint32_t i)
 {
-    vor_index_t a = st->nb[i], c = st->nb[wrap(i + 2u, st->deg)];
-    return (a != VOR__INFINITE) ? !is_edge(d, a, c, st->sl[i])
-                                : !is_edge(d, c, a, st->sl[wrap(i + 1u, st->deg)]);
+    uint32_t deg = st->deg;
+    vor_index_t a = st->nb[i], c = st->nb[wrap(i + 2u, deg)];
+    return (a != VOR__INFINITE)
+               ? !is_edge(d, a, c, st->sl[i], st->sl[wrap(i + deg - 1u, deg)])
+               : !is_edge(d, c, a, st->sl[wrap(i + 2u, deg)], st->sl[wrap(i + 1u, deg)]);
 }
 
 /* Walks p's star from slot `start` into the arrays (degree + 1 steps at
@@ -472,7 +478,8 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
                 vor_index_t s2 = star_next(tri, slot, p), a, b, c;
                 star_edge(tri, slot, p, &a, &b);
                 star_edge(tri, s2, p, &b, &c);
-                if (!((a != VOR__INFINITE) ? is_edge(d, a, c, slot) : is_edge(d, c, a, s2))) {
+                if (!((a != VOR__INFINITE) ? is_edge(d, a, c, slot, slot)
+                                           : is_edge(d, c, a, s2, s2))) {
                     guarded = (guarded == VOR__NONE) ? slot : guarded;
                     if (is_delaunay_ear(d, p, a, b, c, star_next(tri, s2, p))) {
                         chosen = slot;
