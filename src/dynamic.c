@@ -355,17 +355,19 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
     if (finite && vor__orient(d, a, b, c) <= 0) {
         return false;
     }
-    /* lo and hi meet in the middle: deg - 3 neighbours, each once */
-    for (uint32_t lo = 3u, hi = deg - 1u; lo <= hi; lo++, hi--) {
-        vor_index_t y = st->nb[wrap(i + lo, deg)], z = st->nb[wrap(i + hi, deg)];
-        /* infinity lies in no circle of finite sites; a finite ear
-         * (the common case) skips the dispatch on infinity */
-        if (y != VOR__INFINITE && (finite ? vor__incircle(d, a, b, c, y) > 0
-                                          : vor__conflicts(d, a, b, c, y))) {
-            return false;
+    /* a hull ear (a vertex at infinity) is a hull edge u -> w, and a site
+     * beyond it is in its "circle" (vor__conflicts) */
+    vor_index_t u = (a == VOR__INFINITE) ? b : (b == VOR__INFINITE) ? c : a;
+    vor_index_t w = (a == VOR__INFINITE) ? c : (b == VOR__INFINITE) ? a : b;
+    /* the other deg - 3 neighbours at offsets 3, deg - 1, 4, deg - 2, ..
+     * from the ear's first; one call site each for the two tests keeps
+     * the stack frame small */
+    for (uint32_t t = 0; t + 3u < deg; t++) {
+        vor_index_t y = st->nb[wrap(i + ((t & 1u) ? deg - 1u - t / 2u : 3u + t / 2u), deg)];
+        if (y == VOR__INFINITE) {
+            continue; /* infinity lies in no circle of finite sites */
         }
-        if (lo != hi && z != VOR__INFINITE &&
-            (finite ? vor__incircle(d, a, b, c, z) > 0 : vor__conflicts(d, a, b, c, z))) {
+        if (finite ? vor__incircle(d, a, b, c, y) > 0 : vor__orient(d, u, w, y) > 0) {
             return false;
         }
     }
