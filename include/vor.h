@@ -365,7 +365,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
  *                free id, a duplicate's id from vor_build)
  * On failure the diagram is unchanged. The bounding box (vor_t low, high)
  * may stay larger than the remaining sites' box.
- * Cost: O(degree^3) predicates in the worst case, 19 on average on
+ * Cost: O(degree^3) predicates in the worst case, 13 on average on
  * uniform sites (degree 6), plus the removed site's run of the bucket
  * grid (a few entries on uniform sites).
  */

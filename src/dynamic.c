@@ -27,6 +27,7 @@
  * so the layout stays what vor_init set up (mesh.h).
  */
 #include "bucket_grid.h"
+#include "dynamic.h"
 #include "mesh.h"
 #include "perturbation.h"
 
@@ -85,23 +86,27 @@ static void star_edge(const vor__tri_t *tri, vor_index_t slot, vor_index_t p, vo
     *y = vor__vertex(t, vor__prev(i));
 }
 
-/* Is a-b an edge of the mesh? Turns around whichever is finite, at most
- * once around (vertex_count + 1 triangles bound the turn). */
-static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b)
+/* Is a-b an edge of the mesh? Turns clockwise around the finite site a
+ * from its triangle in slot `start` (not b's) to the one in slot `stop`
+ * (not b's either, and not read), at most once around (vertex_count + 1
+ * triangles bound the turn); one read of each triangle's vertices. */
+static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t start,
+                    vor_index_t stop)
 {
-    if (a == VOR__INFINITE) {
-        a = b;
-        b = VOR__INFINITE;
-    }
     const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = a;
+    vor_index_t slot = start, v[3];
+    vor__vertices(&tri[slot], v);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (vor__vertex_index(&tri[slot], b) != 3u) {
-            return true;
-        }
-        slot = star_next(tri, slot, a);
-        if (slot == a) {
+        /* clockwise: from a star triangle (p, a, b) across a-b first,
+         * into the triangle the star walk prefetched */
+        unsigned i = (v[1] == a) ? 1u : (v[2] == a) ? 2u : 0u;
+        slot = tri[slot].n[vor__prev(i)];
+        if (slot == stop) {
             break;
+        }
+        vor__vertices(&tri[slot], v);
+        if (v[0] == b || v[1] == b || v[2] == b) {
+            return true;
         }
     }
     return false;
@@ -143,76 +148,167 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
 static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t s2)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t a, b, c, unused;
-    star_edge(tri, s1, p, &a, &b);
-    star_edge(tri, s2, p, &unused, &c);
     const vor__tri_t *t1 = &tri[s1], *t2 = &tri[s2];
-    unsigned i1 = corner(t1, p), i2 = corner(t2, p);
+    vor_index_t v1[3], v2[3];
+    vor__vertices(t1, v1);
+    vor__vertices(t2, v2);
+    unsigned i1 = (v1[1] == p) ? 1u : (v1[2] == p) ? 2u : 0u;
+    unsigned i2 = (v2[1] == p) ? 1u : (v2[2] == p) ? 2u : 0u;
+    vor_index_t a = v1[vor__next(i1)], b = v1[vor__prev(i1)], c = v2[vor__prev(i2)];
     vor_index_t outer1 = t1->n[i1], before = t1->n[vor__prev(i1)];
     vor_index_t outer2 = t2->n[i2], after = t2->n[vor__next(i2)];
     /* keep home slots home: the ear holds a, b, c, the star triangle p, a,
-     * c; only b's slot must take the ear and only p's the star triangle,
-     * and those cannot both ask for the same slot */
+     * c; p's slot must take the star triangle and b's the ear (never both
+     * asked of one slot). Otherwise a packed slot goes to the star, so
+     * that home slots settle in ears and fewer reach the final merge,
+     * which keeps only one of the last three slots. */
     vor_index_t ear = s1, star = s2;
-    if (is_home(d, s1, p) || is_home(d, s2, b)) {
+    if (!is_home(d, s2, p) && !is_home(d, s1, b) &&
+        (is_home(d, s1, p) || is_home(d, s2, b) || s2 < d->max_sites)) {
         ear = s2;
         star = s1;
     }
-    relink(tri, outer1, s1, ear);
-    relink(tri, outer2, s2, ear);
-    relink(tri, before, s1, star);
-    relink(tri, after, s2, star);
+    /* only the links into the slot that changed role move (one of the
+     * two triangles beyond the star is not touched) */
+    if (ear == s1) {
+        relink(tri, outer2, s2, ear);
+        relink(tri, before, s1, star);
+    } else {
+        relink(tri, outer1, s1, ear);
+        relink(tri, after, s2, star);
+    }
     vor__tri_set(&tri[ear], a, b, c, outer2, star, outer1);
     vor__tri_set(&tri[star], p, a, c, ear, after, before);
     return star;
 }
 
-/* Home slot `hole` of site h lost its triangle: fills it with another
- * triangle of h, from a packed slot when h has one there (which is then
- * returned, free); otherwise from the home slot of another of its
- * vertices r, which then needs one in turn: an augmenting path of the
- * matching of sites to their home triangles, searched greedily (no site
- * of the last eight steps is robbed again). Bounded by the site count;
- * the first step finds a packed triangle in the common case. */
-static vor_index_t rehome(vor_t *d, vor_index_t h, vor_index_t hole, vor_index_t start)
+/* Rotates the triangle in `slot` so that its vertex v comes first (its
+ * links turn with it; no other triangle changes). */
+static void rotate_to(vor__tri_t *tri, vor_index_t slot, vor_index_t v)
 {
-    vor__tri_t *tri = d->triangles;
-    vor_index_t visited[8];
-    uint32_t chain = 0;
-    for (uint32_t step = 0; step < d->vertex_count; step++) {
-        vor_index_t packed = VOR__NONE, other = VOR__NONE, slot = start;
-        /* one turn around h, skipping the hole (it holds nothing yet) */
-        for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-            if (slot >= d->max_sites) {
-                packed = slot;
-                break;
-            }
-            bool seen = false;
-            for (uint32_t k = 0; k < chain; k++) {
-                seen = seen || visited[k] == slot;
-            }
-            other = (other == VOR__NONE && slot != h && !seen) ? slot : other;
-            slot = star_next(tri, slot, h);
-            if (slot == start) {
-                break;
-            }
+    vor__tri_t *t = &tri[slot];
+    unsigned i = corner(t, v), j = vor__next(i), k = vor__prev(i);
+    vor_index_t w[3], n[3] = {t->n[0], t->n[1], t->n[2]};
+    vor__vertices(t, w);
+    vor__tri_set(t, w[i], w[j], w[k], n[i], n[j], n[k]);
+}
+
+/* The first slot of cur's star after slot `after` (from the start when
+ * VOR__NONE) that is the home slot of another site, unmarked (want_marked
+ * false) or marked with its triangle's first vertex cur (true: a child in
+ * the search tree below); VOR__NONE if none. One turn around cur. */
+static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first,
+                              vor_index_t after, bool want_marked)
+{
+    const vor__tri_t *tri = d->triangles;
+    bool skipping = after != VOR__NONE;
+    vor_index_t slot = first;
+    for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
+        if (!skipping && slot < d->max_sites && slot != cur &&
+            vor__marked(&tri[slot]) == want_marked &&
+            (!want_marked || vor__vertex(&tri[slot], 0) == cur)) {
+            return slot;
         }
-        vor_index_t from = (packed != VOR__NONE) ? packed : other;
-        if (from == VOR__NONE) {
-            from = start; /* every candidate visited: any other triangle of h */
+        skipping = skipping && slot != after;
+        slot = star_next(tri, slot, cur);
+        if (slot == first) {
+            break;
         }
-        move_triangle(tri, from, hole);
-        if (from >= d->max_sites) {
-            return from;
-        }
-        if (chain < 8u) {
-            visited[chain++] = h;
-        }
-        start = hole;
-        hole = from;
-        h = from; /* a home slot's index is its site */
     }
     return VOR__NONE;
+}
+
+/* Home slot h of site h is empty (removal merged its triangle away),
+ * `start` holds another triangle of h, and the packed triangles run up to
+ * slot `last`, one too many. Fills slot h with a triangle of h, which
+ * empties a packed slot, and moves the triangle in `last` into it.
+ *
+ * Why it always succeeds: matching each site to the triangle in its home
+ * slot, only h is unmatched. Call r a child of site u when r's home slot
+ * holds a triangle of u; let X be h and every site reachable from h
+ * through children. If no triangle of a site in X were in a packed slot,
+ * all triangles of X would lie in the |X| - 1 home slots of X \ {h}; but
+ * every site has three or more triangles (the vertex at infinity closes
+ * the hull, and three or more sites remain) and a triangle has three
+ * corners, so X has at least |X| triangles (Hall's condition). So some
+ * site r_k of X has a triangle in a packed slot P, reached by a path
+ * h, r_1, .., r_k of children, and shifting along it (slot h takes r_1's
+ * triangle, which holds h; slot r_1 takes r_2's, ..; slot r_k takes P's)
+ * rehomes everyone and empties P (Berge's augmenting path).
+ *
+ * The search is a depth-first search in bounded memory: a site's home
+ * slot mark (mesh.h) says "visited", and the parent of a visited site
+ * is its home triangle rotated to put the parent first, so the path is
+ * read back from the triangles themselves. Every site is marked at most
+ * once and every turn around a star is bounded, so it ends; the marks are
+ * cleared by walking the same tree again. The first look, at h's own
+ * triangles, finds a packed one nearly always. */
+void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t cur = h, after = VOR__NONE, packed = VOR__NONE;
+    /* each step marks a site or goes back up the tree: 2 v steps */
+    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u && packed == VOR__NONE; left--) {
+        vor_index_t first = (cur == h) ? start : cur, slot = first;
+        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && turn > 0u; turn--) {
+            if (slot >= d->max_sites) {
+                packed = slot; /* cur's triangle in a packed slot: the path ends */
+                break;
+            }
+            slot = star_next(tri, slot, cur);
+            if (slot == first) {
+                break;
+            }
+        }
+        if (packed != VOR__NONE) {
+            break;
+        }
+        vor_index_t child = next_child(d, cur, first, after, false);
+        if (child != VOR__NONE) {
+            rotate_to(tri, child, cur); /* records the parent */
+            vor__set_mark(&tri[child], true);
+            cur = child;
+            after = VOR__NONE;
+        } else if (cur == h) {
+            break; /* nothing left to visit: only on a broken mesh */
+        } else {
+            after = cur;
+            cur = vor__vertex(&tri[cur], 0);
+        }
+    }
+    /* clear the marks: the same tree, each site unmarked on the way back */
+    vor_index_t at = h, back = VOR__NONE;
+    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u; left--) {
+        vor_index_t child = next_child(d, at, (at == h) ? start : at, back, true);
+        if (child != VOR__NONE) {
+            at = child;
+            back = VOR__NONE;
+            continue;
+        }
+        if (at == h) {
+            break;
+        }
+        vor__set_mark(&tri[at], false);
+        back = at;
+        at = vor__vertex(&tri[at], 0);
+    }
+    if (packed == VOR__NONE) {
+        return; /* a broken mesh only */
+    }
+    /* shift along the path from its end, slot h (empty) as the spare:
+     * slot r takes what P holds, P takes r's triangle (its first vertex
+     * is r's parent); at most one step per site */
+    for (uint32_t left = d->vertex_count; cur != h && left > 0u; left--) {
+        vor_index_t parent = vor__vertex(&tri[cur], 0);
+        move_triangle(tri, cur, h);
+        move_triangle(tri, packed, cur);
+        move_triangle(tri, h, packed);
+        cur = parent;
+    }
+    move_triangle(tri, packed, h);
+    if (packed != last) {
+        move_triangle(tri, last, packed);
+    }
 }
 
 /* Puts id p on the free list: d->free_site holds the most recent free id
@@ -230,47 +326,196 @@ static void free_id(vor_t *d, uint32_t p)
     d->free_site = p + 1u;
 }
 
+/* Up to this degree the star is walked once into two small arrays and the
+ * ears are tested from them; a larger star (rare: a site inside a ring of
+ * many others) is first cut down to it by walking the mesh. 16 covers
+ * nearly every site of a random set (mean degree 6) at 128 bytes of stack. */
+#define STAR_MAX 16u
+
+/* The star of p as arrays: neighbour nb[i] and the slot sl[i] of the star
+ * triangle (p, nb[i], nb[i + 1]), counterclockwise, indices mod deg. */
+typedef struct {
+    vor_index_t nb[STAR_MAX], sl[STAR_MAX];
+    uint32_t deg;
+} star_t;
+
+static inline uint32_t wrap(uint32_t i, uint32_t deg)
+{
+    return (i >= deg) ? i - deg : i; /* i < 2 deg */
+}
+
+/* Is the ear (nb[i], nb[i + 1], nb[i + 2]) a triangle of the triangulation
+ * without p? It is when it turns left and no other neighbour lies in its
+ * perturbed circle: then it is a Delaunay triangle of p's neighbours inside
+ * the star, hence of the remaining sites (Devillers 2002, lemma 1). That p
+ * lies in the circle follows, so it is not tested. The neighbours next to
+ * the ear come first: they are the likeliest inside. */
+static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
+{
+    uint32_t deg = st->deg;
+    vor_index_t a = st->nb[i], b = st->nb[wrap(i + 1u, deg)], c = st->nb[wrap(i + 2u, deg)];
+    bool finite = a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE;
+    if (finite && vor__orient(d, a, b, c) <= 0) {
+        return false;
+    }
+    /* a hull ear (a vertex at infinity) is a hull edge u -> w, and a site
+     * beyond it is in its "circle" (vor__conflicts) */
+    vor_index_t u = (a == VOR__INFINITE) ? b : (b == VOR__INFINITE) ? c : a;
+    vor_index_t w = (a == VOR__INFINITE) ? c : (b == VOR__INFINITE) ? a : b;
+    /* the other deg - 3 neighbours at offsets 3, deg - 1, 4, deg - 2, ..
+     * from the ear's first; one call site each for the two tests keeps
+     * the stack frame small */
+    for (uint32_t t = 0; t + 3u < deg; t++) {
+        vor_index_t y = st->nb[wrap(i + ((t & 1u) ? deg - 1u - t / 2u : 3u + t / 2u), deg)];
+        if (y == VOR__INFINITE) {
+            continue; /* infinity lies in no circle of finite sites */
+        }
+        if (finite ? vor__incircle(d, a, b, c, y) > 0 : vor__orient(d, u, w, y) > 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The topological guard for ear i: its new edge is not an edge already.
+ * The turn is around a finite end, over its triangles off the star: a's
+ * from (p, a, b) to (p, z, a), or c's from (p, c, d) to (p, b, c). */
+static bool star_guarded(const vor_t *d, const star_t *st, uint32_t i)
+{
+    uint32_t deg = st->deg;
+    vor_index_t a = st->nb[i], c = st->nb[wrap(i + 2u, deg)];
+    return (a != VOR__INFINITE)
+               ? !is_edge(d, a, c, st->sl[i], st->sl[wrap(i + deg - 1u, deg)])
+               : !is_edge(d, c, a, st->sl[wrap(i + 2u, deg)], st->sl[wrap(i + 1u, deg)]);
+}
+
+/* Walks p's star from slot `start` into the arrays (degree + 1 steps at
+ * most), asking the cache early for what the ear tests and the guard
+ * read next: the neighbours' coordinates and the triangles beyond the
+ * star. False when the star has more than STAR_MAX triangles. */
+static bool star_load(const vor_t *d, vor_index_t p, vor_index_t start, star_t *st)
+{
+    const vor__tri_t *tri = d->triangles;
+    vor_index_t slot = start;
+    st->deg = 0;
+    do {
+        if (st->deg == STAR_MAX) {
+            return false;
+        }
+        const vor__tri_t *t = &tri[slot];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
+        vor_index_t x = v[vor__next(i)];
+        if (x != VOR__INFINITE) {
+            VOR__PREFETCH(&d->sites[x]);
+        }
+        VOR__PREFETCH(&tri[t->n[i]]);
+        st->nb[st->deg] = x;
+        st->sl[st->deg++] = slot;
+        slot = t->n[vor__next(i)]; /* star_next */
+    } while (slot != start);
+    return true;
+}
+
+/* Cuts ear i off the star (arrays and mesh): b = nb[i + 1] leaves.
+ * Returns the index of the ear before the new edge: it and the next one
+ * are the ears that changed. */
+static uint32_t star_cut(vor_t *d, vor_index_t p, star_t *st, uint32_t i)
+{
+    uint32_t j = wrap(i + 1u, st->deg);
+    st->sl[i] = cut_ear(d, p, st->sl[i], st->sl[j]);
+    for (uint32_t k = j; k + 1u < st->deg; k++) {
+        st->nb[k] = st->nb[k + 1u];
+        st->sl[k] = st->sl[k + 1u];
+    }
+    st->deg--;
+    uint32_t at = (j == 0u) ? i - 1u : i; /* the new star triangle */
+    return (at == 0u) ? st->deg - 1u : at - 1u;
+}
+
+/* The ear of a star of four or more to cut: the first Delaunay ear from
+ * `from` whose new edge is not one already (the topological guard, tested
+ * only for ears that pass: it walks a star). A quadrilateral needs one ear
+ * test: if ear 0's diagonal is not the Delaunay one, the other is. When
+ * lying predicates pass no guarded ear, the first guarded one (one of two
+ * consecutive ears is). STAR_MAX: only on a broken mesh. */
+static uint32_t star_choose(vor_t *d, const star_t *st, uint32_t from)
+{
+    uint32_t deg = st->deg;
+    if (deg == 4u) {
+        uint32_t i = star_ear_ok(d, st, 0) ? 0u : 1u;
+        return star_guarded(d, st, i) ? i : 1u - i;
+    }
+    for (uint32_t k = 0; k < deg; k++) {
+        uint32_t i = wrap(from + k, deg);
+        if (star_ear_ok(d, st, i) && star_guarded(d, st, i)) {
+            return i;
+        }
+    }
+    for (uint32_t i = 0; i < deg; i++) {
+        if (star_guarded(d, st, i)) {
+            return i;
+        }
+    }
+    return STAR_MAX;
+}
+
 /* Removes p (in the mesh, at least four sites) and returns a former
  * neighbour of it. */
 static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
 {
     vor__tri_t *tri = d->triangles;
-    uint32_t degree = 0;
-    vor_index_t slot = p;
-    do {
-        degree++;
-        slot = star_next(tri, slot, p);
-    } while (slot != p && degree <= d->vertex_count);
-
+    star_t st;
     vor_index_t s1 = p; /* the home slot stays in the star (cut_ear) */
-    while (degree > 3u) {
-        vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
-        slot = s1;
-        for (uint32_t k = 0; k < degree && chosen == VOR__NONE; k++) {
-            vor_index_t s2 = star_next(tri, slot, p), a, b, c;
-            star_edge(tri, slot, p, &a, &b);
-            star_edge(tri, s2, p, &b, &c);
-            if (!is_edge(d, a, c)) {
-                guarded = (guarded == VOR__NONE) ? slot : guarded;
-                if (is_delaunay_ear(d, p, a, b, c, star_next(tri, s2, p))) {
-                    chosen = slot;
+    if (!star_load(d, p, s1, &st)) {
+        /* a large star: ears by walking, until the arrays can hold it */
+        uint32_t degree = 0;
+        vor_index_t slot = p;
+        do {
+            degree++;
+            slot = star_next(tri, slot, p);
+        } while (slot != p && degree <= d->vertex_count);
+        while (degree > STAR_MAX) {
+            vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
+            slot = s1;
+            for (uint32_t k = 0; k < degree && chosen == VOR__NONE; k++) {
+                vor_index_t s2 = star_next(tri, slot, p), a, b, c;
+                star_edge(tri, slot, p, &a, &b);
+                star_edge(tri, s2, p, &b, &c);
+                if (!((a != VOR__INFINITE) ? is_edge(d, a, c, slot, slot)
+                                           : is_edge(d, c, a, s2, s2))) {
+                    guarded = (guarded == VOR__NONE) ? slot : guarded;
+                    if (is_delaunay_ear(d, p, a, b, c, star_next(tri, s2, p))) {
+                        chosen = slot;
+                    }
                 }
+                slot = s2;
             }
-            slot = s2;
+            /* only lying predicates leave no ear: the first guarded one */
+            chosen = (chosen != VOR__NONE) ? chosen : guarded;
+            if (chosen == VOR__NONE) {
+                break; /* a broken mesh only */
+            }
+            s1 = cut_ear(d, p, chosen, star_next(tri, chosen, p));
+            degree--;
         }
-        /* only lying predicates leave no ear: the first guarded one */
-        chosen = (chosen != VOR__NONE) ? chosen : guarded;
-        if (chosen == VOR__NONE) {
+        star_load(d, p, s1, &st);
+    }
+    /* each cut removes one neighbour: deg - 3 cuts */
+    uint32_t from = 0;
+    while (st.deg > 3u) {
+        uint32_t i = star_choose(d, &st, from);
+        if (i == STAR_MAX) {
             break; /* a broken mesh only */
         }
-        s1 = cut_ear(d, p, chosen, star_next(tri, chosen, p));
-        degree--;
+        from = star_cut(d, p, &st, i);
     }
 
     /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
-    vor_index_t s2 = star_next(tri, s1, p), s3 = star_next(tri, s2, p), a, b, c;
-    star_edge(tri, s1, p, &a, &b);
-    star_edge(tri, s2, p, &b, &c);
+    vor_index_t a = st.nb[0], b = st.nb[1], c = st.nb[2];
+    vor_index_t s2 = st.sl[1], s3 = st.sl[2];
+    s1 = st.sl[0];
     vor_index_t o1 = tri[s1].n[corner(&tri[s1], p)];
     vor_index_t o2 = tri[s2].n[corner(&tri[s2], p)];
     vor_index_t o3 = tri[s3].n[corner(&tri[s3], p)];
@@ -285,15 +530,14 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
     relink(tri, o2, s2, keep);
     relink(tri, o3, s3, keep);
     vor__tri_set(&tri[keep], a, b, c, o2, o3, o1);
-    if (freed < d->max_sites) {
-        /* both home slots of neighbours: the one not kept needs another
-         * of its triangles, which frees a packed slot */
-        freed = rehome(d, freed, freed, keep);
-    }
     free_id(d, p);
     /* keep the extras packed: the last one fills the freed slot */
     vor_index_t last = (vor_index_t)(d->max_sites + d->vertex_count - 3u);
-    if (freed != VOR__NONE && freed != last) {
+    if (freed < d->max_sites) {
+        /* both home slots of neighbours: the one not kept needs another
+         * of its triangles, which frees a packed slot */
+        vor__rehome(d, freed, keep, last);
+    } else if (freed != last) {
         move_triangle(tri, last, freed);
     }
     return (a != VOR__INFINITE) ? a : b;

@@ -8,7 +8,10 @@
  * and the uniqueness of the perturbed Delaunay triangulation: after every
  * operation the triangles must be those of a fresh vor_build of the live
  * sites in id order (the perturbation depends only on that order).
+ * The rehoming tests lay the triangles out in their slots another legal
+ * way (mesh.h), so that removal must search for home triangles.
  */
+#include "dynamic.h" /* white-box: vor__rehome and the slot layout, for the rehoming tests */
 #include "test.h"
 #include "vor.h"
 
@@ -318,6 +321,224 @@ static void down_to_nothing(void)
     CHECK(vor_insert(&solo, 2, 2, &id) == VOR_ERR_FULL, "solo full");
 }
 
+/* ------------------------------------------------------------------ */
+/* Large stars and home slots                                          */
+
+/* A site inside a ring of 32 cocircular sites (x^2 + y^2 = 5525^2 has 180
+ * lattice points; every sixth of the first quadrant's, turned four ways):
+ * its star is larger than removal's arrays (STAR_MAX, dynamic.c), so the
+ * first ears are cut by walking the mesh, each decided by the
+ * perturbation; then the ring's sites go one by one. */
+static void big_star(void)
+{
+    static vor_t d;
+    static model_t m;
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    const int32_t r = 5525;
+    uint32_t found = 0, step = 0;
+    int32_t y = r;
+    for (int32_t x = 0; x < r; x++) {
+        while ((int64_t)y * y > (int64_t)r * r - (int64_t)x * x) {
+            y--;
+        }
+        if ((int64_t)y * y == (int64_t)r * r - (int64_t)x * x && found++ % 6u == 0u) {
+            const vor_point_t turns[4] = {{x, y}, {-y, x}, {-x, -y}, {y, -x}};
+            for (unsigned k = 0; k < 4u; k++) {
+                do_insert(&d, &m, turns[k], "ring", step++);
+            }
+        }
+    }
+    CHECK(found == 45u && m.handed_out == 32u, "ring: %u lattice points, %u sites", found,
+          m.handed_out);
+    do_insert(&d, &m, (vor_point_t){0, 0}, "ring", step++);
+    uint32_t degree = 0, n;
+    vor_neighbour_iter_t it;
+    vor_neighbours_begin(&it, &d, 32);
+    while (vor_neighbours_next(&it, &n)) {
+        degree++;
+    }
+    CHECK(degree == 32u, "ring: the centre has %u neighbours, expected 32", degree);
+    do_remove(&d, &m, 32, "ring", step);
+    check_state(&d, &m, "ring", step++);
+    for (uint32_t i = 0; i < 32u; i++) {
+        do_remove(&d, &m, (i * 7u) % 32u, "ring", step);
+        check_state(&d, &m, "ring", step++);
+    }
+}
+
+/* Moves the triangle in slot `from` to the unused slot `to`. */
+static void move_slot(vor_t *d, vor_index_t from, vor_index_t to)
+{
+    vor__tri_t *tri = d->triangles;
+    tri[to] = tri[from];
+    for (unsigned i = 0; i < 3u; i++) {
+        vor__tri_t *u = &tri[tri[to].n[i]];
+        for (unsigned k = 0; k < 3u; k++) {
+            u->n[k] = (u->n[k] == from) ? to : u->n[k];
+        }
+    }
+}
+
+static int64_t distance2(const vor_point_t *a, const vor_point_t *b)
+{
+    int64_t dx = (int64_t)a->x - b->x, dy = (int64_t)a->y - b->y;
+    return dx * dx + dy * dy;
+}
+
+/* How far a triangle reaches from site c: its farthest vertex's squared
+ * distance (infinity: farther than any site). */
+static int64_t reach(const vor_t *d, const vor__tri_t *t, vor_index_t c)
+{
+    vor_index_t v[3];
+    vor__vertices(t, v);
+    int64_t worst = 0;
+    for (unsigned i = 0; i < 3u; i++) {
+        int64_t e = (v[i] == VOR__INFINITE) ? INT64_MAX : distance2(&d->sites[v[i]], &d->sites[c]);
+        worst = (e > worst) ? e : worst;
+    }
+    return worst;
+}
+
+/* Another legal layout, hostile to removal: sites in order of distance
+ * from c each take as home their free triangle nearest c, so that the
+ * packed slots hold the triangles far from c. False (nothing changed)
+ * when the greedy choice strands a site. */
+static bool relayout(vor_t *d, vor_index_t c)
+{
+    static vor__tri_t copy[2u * DYN_SITES];
+    static vor_index_t to[2u * DYN_SITES], order[DYN_SITES];
+    static bool taken[2u * DYN_SITES];
+    vor__tri_t *tri = d->triangles;
+    uint32_t slots = d->max_sites + d->vertex_count - 2u, n = 0;
+    for (uint32_t s = 0; s < slots; s++) {
+        taken[s] = s < d->max_sites && (s >= d->site_count || vor__slot_empty(&tri[s]));
+        to[s] = VOR__NONE;
+        if (!taken[s] && s < d->max_sites) { /* insertion sort by distance */
+            uint32_t j = n++;
+            for (; j > 0u && distance2(&d->sites[order[j - 1u]], &d->sites[c]) >
+                                 distance2(&d->sites[s], &d->sites[c]);
+                 j--) {
+                order[j] = order[j - 1u];
+            }
+            order[j] = (vor_index_t)s;
+        }
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        vor_index_t s = order[i], slot = s, best = VOR__NONE;
+        for (uint32_t left = DYN_SITES; left > 0u; left--) { /* s's triangles */
+            if (!taken[slot] && (best == VOR__NONE || reach(d, &tri[slot], c) <
+                                                          reach(d, &tri[best], c))) {
+                best = slot;
+            }
+            slot = tri[slot].n[vor__next(vor__vertex_index(&tri[slot], s))];
+            if (slot == s) {
+                break;
+            }
+        }
+        if (best == VOR__NONE) {
+            return false;
+        }
+        taken[best] = true;
+        to[best] = s;
+    }
+    uint32_t next = d->max_sites;
+    for (uint32_t s = 0; s < slots; s++) {
+        to[s] = (!taken[s] && to[s] == VOR__NONE) ? (vor_index_t)next++ : to[s];
+    }
+    for (uint32_t s = 0; s < slots; s++) {
+        if (to[s] != VOR__NONE) {
+            copy[to[s]] = tri[s];
+            for (unsigned i = 0; i < 3u; i++) {
+                copy[to[s]].n[i] = to[tri[s].n[i]];
+            }
+        }
+    }
+    for (uint32_t s = 0; s < slots; s++) {
+        if (to[s] != VOR__NONE) {
+            tri[to[s]] = copy[to[s]];
+        }
+    }
+    return true;
+}
+
+/* Home slots whose triangle changed, slot `except` aside. */
+static uint32_t homes_changed(const vor_t *d, const vor__tri_t *before, vor_index_t except)
+{
+    uint32_t changed = 0;
+    for (uint32_t s = 0; s < d->site_count; s++) {
+        vor_index_t u[3], v[3];
+        vor__vertices(&before[s], u);
+        vor__vertices(&d->triangles[s], v);
+        bool same = true;
+        for (unsigned i = 0; i < 3u; i++) {
+            same = same && (v[i] == u[0] || v[i] == u[1] || v[i] == u[2]);
+        }
+        changed += (s != except && !same) ? 1u : 0u;
+    }
+    return changed;
+}
+
+/* Removal's rehoming (vor__rehome): with the hostile layout around site
+ * h, slot h is emptied the way a removal empties it (h's home triangle
+ * goes to a neighbour r's home slot, r's to one packed slot too many),
+ * then vor__rehome must refill it without changing a triangle; when h
+ * has no triangle in a packed slot it searches through other homes,
+ * which the test sees as other home slots changing. Then removals near
+ * such layouts, checked against fresh builds. */
+static void rehoming(void)
+{
+    static vor_t d;
+    static model_t m;
+    static vor__tri_t before[DYN_SITES];
+    uint32_t searched = 0, runs = 0;
+    for (uint64_t seed = 1; seed <= 200u; seed++) {
+        test_rng_t rng;
+        test_rng_seed(&rng, 9000u + seed);
+        vor_init(&d, arena, sizeof arena, DYN_SITES);
+        m.handed_out = 0;
+        m.free_count = 0;
+        uint32_t count = 4u + test_rng_u32(&rng) % (DYN_SITES - 4u);
+        for (uint32_t i = 0; i < count; i++) {
+            do_insert(&d, &m, random_point(&rng, UNIFORM), "rehome", i);
+        }
+        vor_index_t h = (vor_index_t)(test_rng_u32(&rng) % d.site_count), r = VOR__NONE, v[3];
+        if (d.vertex_count < 4u || !m.live[h] || !relayout(&d, h)) {
+            continue;
+        }
+        vor__tri_t *tri = d.triangles;
+        vor__vertices(&tri[h], v);
+        for (unsigned i = 0; i < 3u; i++) {
+            r = (v[i] != h && v[i] != VOR__INFINITE) ? v[i] : r;
+        }
+        test_fingerprint_t want = test_fingerprint_of(&d, NULL);
+        vor_index_t extra = (vor_index_t)(d.max_sites + d.vertex_count - 2u);
+        move_slot(&d, r, extra);
+        move_slot(&d, h, r);
+        for (uint32_t s = 0; s < d.site_count; s++) {
+            before[s] = tri[s];
+        }
+        vor__rehome(&d, h, r, extra);
+        runs++;
+        searched += (homes_changed(&d, before, h) > 0u) ? 1u : 0u;
+        vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
+        test_fingerprint_t got = test_fingerprint_of(&d, NULL);
+        CHECK(vor_validate(&d, &why) == VOR_OK && test_same_fingerprint(got, want),
+              "rehome seed %u: check %d, or the triangles changed", (unsigned)seed,
+              (int)why.check);
+        /* a removal beside the hostile layout */
+        if (relayout(&d, h)) {
+            do_remove(&d, &m, (test_rng_u32(&rng) % 2u == 0u) ? h : r, "rehome", 1000);
+            check_state(&d, &m, "rehome", 1000);
+        }
+    }
+    /* the search beyond h's own triangles must have been needed */
+    CHECK(runs > 100u && searched > 3u, "rehome: %u runs, %u searched other homes", runs,
+          searched);
+    test_printf("rehoming: %u hostile layouts, %u needed other sites' homes\n", runs, searched);
+}
+
 /* Duplicates' ids from vor_build stay reserved: not sites, never reused. */
 static void build_duplicates(void)
 {
@@ -394,6 +615,8 @@ void test_dynamic(void)
         }
     }
     down_to_nothing();
+    big_star();
+    rehoming();
     build_duplicates();
     trackers();
 }

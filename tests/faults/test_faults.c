@@ -6,8 +6,9 @@
  * Built with VOR_FAULT_INJECTION: the diagram's perturbed predicates return
  * the wrong sign with probability p. For p in {0.01, 0.1, 0.5} and 10,000
  * sites, building (incrementally and by divide and conquer, and
- * inserting one by one), then removing and moving sites, must finish and
- * leave a mesh
+ * inserting one by one), then removing and moving sites, removing every
+ * site, and removing a site with a star beyond removal's arrays, must
+ * finish and leave a mesh
  * whose topological invariants all hold: counts from Euler's formula,
  * valid distinct vertices, symmetric neighbours, every site present with
  * one fan of triangles. Only the geometric checks (orientation, Delaunay)
@@ -123,6 +124,36 @@ int main(void)
                   i, err);
         }
         check_topology(&d, "2000 moves", percents[k], live);
+        /* every site removed: stars of every size, hull sites, and the
+         * small meshes at the end */
+        for (uint32_t id = 0; id < d.site_count; id++) {
+            bool removed = vor_remove(&d, id) == VOR_OK;
+            live -= removed ? 1u : 0u;
+            if (removed && (live == 100u || live == 3u)) {
+                check_topology(&d, live == 100u ? "removals down to 100" : "removals down to 3",
+                               percents[k], live);
+            }
+        }
+        check_topology(&d, "removals down to none", percents[k], live);
+        /* a star beyond removal's arrays: a site inside 32 cocircular
+         * sites (lattice points of x^2 + y^2 = 5525^2) */
+        uint32_t found = 0, ring = 0;
+        int32_t y = 5525;
+        for (int32_t x = 0; x < 5525; x++) {
+            while ((int64_t)y * y > 5525 * 5525 - (int64_t)x * x) {
+                y--;
+            }
+            if ((int64_t)y * y == 5525 * 5525 - (int64_t)x * x && found++ % 6u == 0u) {
+                ring += (vor_insert(&d, x, y, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, -y, x, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, -x, -y, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, y, -x, NULL) == VOR_OK) ? 1u : 0u;
+            }
+        }
+        uint32_t centre = 0;
+        CHECK(vor_insert(&d, 0, 0, &centre) == VOR_OK && vor_remove(&d, centre) == VOR_OK,
+              "ring centre");
+        check_topology(&d, "a ring's centre removed", percents[k], ring);
     }
     test_summary();
     return test_failures() == 0 ? 0 : 1;

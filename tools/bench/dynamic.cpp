@@ -4,7 +4,7 @@
 // against CGAL's Delaunay_triangulation_2 (remove, move), on the same
 // sites and the same operations in one process run.
 //
-//   dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--out FILE]
+//   dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--only KIND] [--out FILE]
 //
 // Sites: n points uniform in [0, 2^25)^2 (splitmix64 seeded by n; exact
 // doubles for CGAL), duplicates dropped. Three kinds of operations, each a
@@ -19,7 +19,8 @@
 // Each library starts every kind from a fresh triangulation of the same
 // sites (building is not timed) and runs the whole array; the best of R
 // repetitions (default 3) is reported as nanoseconds per operation, with
-// the ratio CGAL time / vor time (above 1: vor is faster). A move onto an
+// the ratio CGAL time / vor time (above 1: vor is faster). --only remove
+// (small-move, large-move) runs one kind, for profiling. A move onto an
 // existing site is skipped by both (vor: VOR_ERR_DUPLICATE; CGAL: move
 // returns the other vertex), never counted. After each run the two agree
 // on the number of vertices and faces (vor's true triangulation), and
@@ -226,6 +227,7 @@ int main(int argc, char **argv)
     std::vector<uint32_t> sizes = {10000, 100000, 1000000};
     uint32_t ops_count = 10000, reps = 3;
     const char *out_path = nullptr;
+    std::string only;
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--sizes" && i + 1 < argc) {
@@ -234,10 +236,12 @@ int main(int argc, char **argv)
             ops_count = (uint32_t)std::strtoul(argv[++i], nullptr, 10);
         } else if (a == "--reps" && i + 1 < argc) {
             reps = (uint32_t)std::strtoul(argv[++i], nullptr, 10);
+        } else if (a == "--only" && i + 1 < argc) {
+            only = argv[++i];
         } else if (a == "--out" && i + 1 < argc) {
             out_path = argv[++i];
         } else {
-            die("usage: dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--out FILE]");
+            die("usage: dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--only KIND] [--out FILE]");
         }
     }
     if (ops_count == 0 || reps == 0) {
@@ -248,9 +252,13 @@ int main(int argc, char **argv)
         "|---|---|---|---|---|---|---|\n";
     bool all_ok = true;
     const char *names[] = {"remove", "small move", "large move"};
+    const char *options[] = {"remove", "small-move", "large-move"};
     for (uint32_t n : sizes) {
         std::vector<vor_point_t> sites = make_sites(n);
         for (kind k : {kind::remove, kind::small_move, kind::large_move}) {
+            if (!only.empty() && only != options[(int)k]) {
+                continue;
+            }
             std::vector<operation> ops = make_operations(sites, k, ops_count);
             double best_vor = 1e30, best_cgal = 1e30;
             std::string checks = "ok";

@@ -1,0 +1,16 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * dynamic.h - removing and moving sites (dynamic.c), private to the
+ * library: what the tests reach directly.
+ */
+#ifndef VOR_DYNAMIC_H
+#define VOR_DYNAMIC_H
+
+#include "mesh.h"
+
+/* Removal's last step: home slot h lost its triangle and `start` holds
+ * another of h's; the packed slots run to `last`, one triangle too many.
+ * Refills slot h and packs the slots again (the proof is in dynamic.c). */
+void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last);
+
+#endif
