@@ -467,6 +467,10 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
     vor__tri_t *tri = d->triangles;
     star_t st;
     vor_index_t s1 = p; /* the home slot stays in the star (cut_ear) */
+    /* the last packed triangle fills a freed slot at the end: its cache
+     * line and, once it is in, its neighbours' are fetched meanwhile */
+    const vor__tri_t *tail = &tri[d->max_sites + d->vertex_count - 3u];
+    VOR__PREFETCH(tail);
     if (!star_load(d, p, s1, &st)) {
         /* a large star: ears by walking, until the arrays can hold it */
         uint32_t degree = 0;
@@ -500,6 +504,9 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
             degree--;
         }
         star_load(d, p, s1, &st);
+    }
+    for (unsigned k = 0; k < 3u; k++) {
+        VOR__PREFETCH(&tri[tail->n[k]]);
     }
     /* each cut removes one neighbour: deg - 3 cuts */
     uint32_t from = 0;
