@@ -8,11 +8,13 @@
  * site), cut off one ear at a time by flipping an edge of p's star
  * (Devillers, "On deletion in Delaunay triangulations", 2002): the ear
  * (a, b, c) of consecutive neighbours is a triangle of the result when it
- * turns left, p lies in its perturbed circle (it was one of the triangles
- * p's insertion deleted) and no other neighbour does. When three
- * neighbours are left, their triangles merge into one. Every predicate is
- * the perturbed one, so the result is the unique perturbed Delaunay
- * triangulation of the remaining sites: the one a fresh build gives.
+ * turns left and no other neighbour lies in its perturbed circle (that p
+ * does follows). When three neighbours are left, their triangles merge
+ * into one. Every predicate is the perturbed one, so the result is the
+ * unique perturbed Delaunay triangulation of the remaining sites: the one
+ * a fresh build gives. The star is walked once into small arrays and the
+ * ears are tested from them; a star too large for them is cut down first
+ * by walking the mesh.
  *
  * Topological guard: an ear is cut only when its new edge a-c is not an
  * edge already (else the mesh would hold it twice). Of two consecutive
@@ -24,7 +26,9 @@
  *
  * Memory: two triangles disappear. p's home slot empties; the other slot
  * freed must be a packed one, and the last packed triangle moves into it,
- * so the layout stays what vor_init set up (mesh.h).
+ * so the layout stays what vor_init set up (mesh.h). When the other slot
+ * is a neighbour's home, vor__rehome finds that neighbour another
+ * triangle, provably (an augmenting path, see there).
  */
 #include "bucket_grid.h"
 #include "dynamic.h"
@@ -113,15 +117,13 @@ static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t st
 }
 
 /* Is the ear (a, b, c) of p's star, whose following triangle is at slot
- * `after`, a triangle of the triangulation without p? */
+ * `after`, a triangle of the triangulation without p? The test of
+ * star_ear_ok, walking the mesh (for stars beyond the arrays). */
 static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t b,
                             vor_index_t c, vor_index_t after)
 {
     if (a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE &&
         vor__orient(d, a, b, c) <= 0) {
-        return false;
-    }
-    if (!vor__conflicts(d, a, b, c, p)) {
         return false;
     }
     /* the other neighbours: second vertices of the star triangles after
@@ -468,6 +470,10 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
     vor__tri_t *tri = d->triangles;
     star_t st;
     vor_index_t s1 = p; /* the home slot stays in the star (cut_ear) */
+    /* the last packed triangle fills a freed slot at the end: its cache
+     * line and, once it is in, its neighbours' are fetched meanwhile */
+    const vor__tri_t *tail = &tri[d->max_sites + d->vertex_count - 3u];
+    VOR__PREFETCH(tail);
     if (!star_load(d, p, s1, &st)) {
         /* a large star: ears by walking, until the arrays can hold it */
         uint32_t degree = 0;
@@ -501,6 +507,9 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
             degree--;
         }
         star_load(d, p, s1, &st);
+    }
+    for (unsigned k = 0; k < 3u; k++) {
+        VOR__PREFETCH(&tri[tail->n[k]]);
     }
     /* each cut removes one neighbour: deg - 3 cuts */
     uint32_t from = 0;

@@ -241,11 +241,15 @@ int main(int argc, char **argv)
         } else if (a == "--out" && i + 1 < argc) {
             out_path = argv[++i];
         } else {
-            die("usage: dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--only KIND] [--out FILE]");
+            die("usage: dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--only KIND] "
+                "[--out FILE]");
         }
     }
     if (ops_count == 0 || reps == 0) {
         die("--ops and --reps must be positive");
+    }
+    if (!only.empty() && only != "remove" && only != "small-move" && only != "large-move") {
+        die("--only takes remove, small-move or large-move");
     }
     std::string table =
         "| operation | n | ops | vor ns/op | CGAL ns/op | CGAL/vor | checks |\n"
