@@ -27,6 +27,7 @@
  * so the layout stays what vor_init set up (mesh.h).
  */
 #include "mesh.h"
+#include "motion.h"
 
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 {
@@ -344,6 +345,7 @@ int vor_remove(vor_t *d, uint32_t site)
     }
     d->last_site = (d->last_site == site) ? other : d->last_site;
     d->revision++;
+    vor__topology_changed(d);
     return VOR_OK;
 }
 
@@ -410,6 +412,21 @@ static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
     return found;
 }
 
+/* Site `site`, whose triangles stay the same, goes to (x, y): the box
+ * grows to hold it, and a site that changed bucket moves its run of the
+ * bucket grid. */
+static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
+{
+    vor_point_t *s = &d->sites[site], old = *s;
+    s->x = x;
+    s->y = y;
+    vor__box_add(d, s, false);
+    if (d->vertex_count >= 2u) {
+        vor__grid_move(d, site, old, any_neighbour(d, (vor_index_t)site));
+    }
+    d->revision++;
+}
+
 int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
 {
     if (d == NULL || !vor__site_in_mesh(d, site)) {
@@ -417,6 +434,12 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
     }
     vor_point_t *s = &d->sites[site];
     if (s->x == x && s->y == y) {
+        return VOR_OK;
+    }
+    if (vor__motion_fast(d, site, x, y)) {
+        /* inside the site's box: no triangle changes and no site is
+         * there (invariant J, motion.c) */
+        move_in_place(d, site, x, y);
         return VOR_OK;
     }
     vor_point_t old = *s;
@@ -453,15 +476,8 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
         return VOR_ERR_DUPLICATE;
     }
     if (same_triangles) {
-        /* the box grows to hold the site, and a site that changed bucket
-         * moves its run of the bucket grid */
-        s->x = x;
-        s->y = y;
-        vor__box_add(d, s, false);
-        if (d->vertex_count >= 2u) {
-            vor__grid_move(d, site, old, any_neighbour(d, (vor_index_t)site));
-        }
-        d->revision++;
+        move_in_place(d, site, x, y);
+        vor__motion_update(d, site);
         return VOR_OK;
     }
     /* remove, then insert again under the same id (the free list's head),
@@ -473,6 +489,8 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
         /* only lying predicates (fault injection) find a twin the exact
          * query did not: the site goes back where it was */
         vor_insert_near(d, old.x, old.y, VOR_NO_HINT, &id);
+    } else {
+        vor__motion_update(d, site); /* a box in the new epoch */
     }
     return err;
 }

@@ -29,6 +29,7 @@
  * slots they reuse so that this stays true.
  */
 #include "mesh.h"
+#include "motion.h"
 
 /* Is slot a home slot of site v (v may be infinity, which has none)? */
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
@@ -346,6 +347,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     d->vertex_count++;
     d->last_site = p;
     d->revision++;
+    vor__topology_changed(d);
     if (d->vertex_count >= 2u) {
         vor__grid_add(d, p);
     }

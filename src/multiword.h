@@ -305,4 +305,36 @@ VOR__INLINE void vor__mw_shr1(vor__limb *r, size_t n)
     r[n - 1] >>= 1;
 }
 
+/* Bit length of v: the least k with v < 2^k, 0 for 0. By halving, not a
+ * count-leading-zeros builtin: ARMv6-M has no such instruction, and the
+ * builtin becomes a runtime call there. */
+VOR__INLINE unsigned vor__bit_length_u32(uint32_t v)
+{
+    unsigned k = 0;
+    for (unsigned half = 16; half > 0u; half >>= 1) {
+        if ((v >> half) != 0u) {
+            v >>= half;
+            k += half;
+        }
+    }
+    return k + v; /* v is 0 or 1 now */
+}
+
+VOR__INLINE unsigned vor__bit_length_u64(uint64_t v)
+{
+    uint32_t high = (uint32_t)(v >> 32);
+    return (high != 0u) ? 32u + vor__bit_length_u32(high) : vor__bit_length_u32((uint32_t)v);
+}
+
+/* Bit length of a[0..n) as an unsigned number, 0 for 0. */
+VOR__INLINE unsigned vor__mw_bit_length(const vor__limb *a, size_t n)
+{
+    for (size_t i = n; i-- > 0;) {
+        if (a[i] != 0u) {
+            return (unsigned)(i * VOR_LIMB_BITS) + vor__bit_length_u64((uint64_t)a[i]);
+        }
+    }
+    return 0;
+}
+
 #endif

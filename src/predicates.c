@@ -373,16 +373,22 @@ static void wide_det2(wide_t *r, const wide_t *a, const wide_t *b, const wide_t 
     vor__mw_sub(r->w, bc.w, VOR__WIDE_LIMBS);
 }
 
-static int wide_det3_sign(const wide_t *m[3][3])
+static void wide_det3(wide_t *sum, const wide_t *m[3][3])
 {
-    wide_t sum, minor, term;
-    wide_from(&sum, 0);
+    wide_t minor, term;
+    wide_from(sum, 0);
     for (unsigned c = 0; c < 3; c++) {
         unsigned c1 = next_of[c], c2 = next_of[c1];
         wide_det2(&minor, m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
         wide_mul(&term, m[0][c], &minor);
-        vor__mw_add(sum.w, term.w, VOR__WIDE_LIMBS);
+        vor__mw_add(sum->w, term.w, VOR__WIDE_LIMBS);
     }
+}
+
+static int wide_det3_sign(const wide_t *m[3][3])
+{
+    wide_t sum;
+    wide_det3(&sum, m);
     return vor__mw_sign(sum.w, VOR__WIDE_LIMBS);
 }
 
@@ -567,4 +573,75 @@ int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
         }
     }
     return sign;
+}
+
+/* ------------------------------------------------------------------ */
+/* Magnitudes (the motion cache, motion.c)                             */
+
+/* Bit length of |v| for a wide_t holding a signed value. */
+static unsigned wide_bit_length(wide_t *v)
+{
+    if (vor__mw_sign(v->w, VOR__WIDE_LIMBS) < 0) {
+        vor__mw_neg(v->w, VOR__WIDE_LIMBS);
+    }
+    return vor__mw_bit_length(v->w, VOR__WIDE_LIMBS);
+}
+
+unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c)
+{
+    int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
+    int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
+    if ((bound(acx) | bound(acy) | bound(bcx) | bound(bcy)) < 0x80000000u) {
+        /* as the narrow tier: |det| < 2^63 */
+        int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
+                      vor__mul_i32((int32_t)acy, (int32_t)bcx);
+        return vor__bit_length_u64((uint64_t)(det < 0 ? -det : det));
+    }
+    /* 33-bit differences: products < 2^66, det < 2^67 */
+    wide_t e[4], det;
+    wide_from(&e[0], acx);
+    wide_from(&e[1], acy);
+    wide_from(&e[2], bcx);
+    wide_from(&e[3], bcy);
+    wide_det2(&det, &e[0], &e[1], &e[2], &e[3]);
+    return wide_bit_length(&det);
+}
+
+unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                            const vor_point_t *dp)
+{
+    int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
+                    (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
+                    (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
+    uint64_t m = bound(d[0]) | bound(d[1]) | bound(d[2]) | bound(d[3]) |
+                 bound(d[4]) | bound(d[5]);
+    if (m < (1u << 14)) {
+        /* as the narrow tier: |det| < 2^60 */
+        int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
+        int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
+        int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+        int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
+        int32_t lc = cx * cx + cy * cy;
+        int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
+                      vor__mul_i32(lb, cx * ay - cy * ax) +
+                      vor__mul_i32(lc, ax * by - ay * bx);
+        return vor__bit_length_u64((uint64_t)(det < 0 ? -det : det));
+    }
+    /* rows (x, y, x^2 + y^2): entries up to 66 bits, det < 2^133 (as
+     * vor__incircle_perturbed's wide case) */
+    wide_t entry[3][3], yy;
+    const wide_t *rows[3][3];
+    for (unsigned r = 0; r < 3; r++) {
+        wide_from(&entry[r][0], d[2 * r]);
+        wide_from(&entry[r][1], d[2 * r + 1]);
+        wide_mul(&entry[r][2], &entry[r][0], &entry[r][0]);
+        wide_mul(&yy, &entry[r][1], &entry[r][1]);
+        vor__mw_add(entry[r][2].w, yy.w, VOR__WIDE_LIMBS);
+        for (unsigned col = 0; col < 3; col++) {
+            rows[r][col] = &entry[r][col];
+        }
+    }
+    wide_t det;
+    wide_det3(&det, rows);
+    return wide_bit_length(&det);
 }
