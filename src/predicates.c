@@ -373,22 +373,16 @@ static void wide_det2(wide_t *r, const wide_t *a, const wide_t *b, const wide_t 
     vor__mw_sub(r->w, bc.w, VOR__WIDE_LIMBS);
 }
 
-static void wide_det3(wide_t *sum, const wide_t *m[3][3])
+static int wide_det3_sign(const wide_t *m[3][3])
 {
-    wide_t minor, term;
-    wide_from(sum, 0);
+    wide_t sum, minor, term;
+    wide_from(&sum, 0);
     for (unsigned c = 0; c < 3; c++) {
         unsigned c1 = next_of[c], c2 = next_of[c1];
         wide_det2(&minor, m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
         wide_mul(&term, m[0][c], &minor);
-        vor__mw_add(sum->w, term.w, VOR__WIDE_LIMBS);
+        vor__mw_add(sum.w, term.w, VOR__WIDE_LIMBS);
     }
-}
-
-static int wide_det3_sign(const wide_t *m[3][3])
-{
-    wide_t sum;
-    wide_det3(&sum, m);
     return vor__mw_sign(sum.w, VOR__WIDE_LIMBS);
 }
 
@@ -587,6 +581,24 @@ static unsigned wide_bit_length(wide_t *v)
     return vor__mw_bit_length(v->w, VOR__WIDE_LIMBS);
 }
 
+/* Bit length of |sums[0] - sums[1]|. */
+static unsigned difference_bits(const struct u192 sums[2])
+{
+    bool swap = compare_u192(&sums[0], &sums[1]) < 0;
+    const struct u192 *a = &sums[swap ? 1 : 0], *b = &sums[swap ? 0 : 1];
+    uint64_t borrow = 0, w[3];
+    for (unsigned i = 0; i < 3u; i++) {
+        w[i] = a->w[i] - b->w[i] - borrow;
+        borrow = (a->w[i] < b->w[i] || (a->w[i] == b->w[i] && borrow != 0u)) ? 1u : 0u;
+    }
+    for (unsigned i = 3; i-- > 0;) {
+        if (w[i] != 0u) {
+            return 64u * i + vor__bit_length_u64(w[i]);
+        }
+    }
+    return 0;
+}
+
 unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c)
 {
     int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
@@ -627,21 +639,26 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
                       vor__mul_i32(lc, ax * by - ay * bx);
         return vor__bit_length_u64((uint64_t)(det < 0 ? -det : det));
     }
-    /* rows (x, y, x^2 + y^2): entries up to 66 bits, det < 2^133 (as
-     * vor__incircle_perturbed's wide case) */
-    wide_t entry[3][3], yy;
-    const wide_t *rows[3][3];
-    for (unsigned r = 0; r < 3; r++) {
-        wide_from(&entry[r][0], d[2 * r]);
-        wide_from(&entry[r][1], d[2 * r + 1]);
-        wide_mul(&entry[r][2], &entry[r][0], &entry[r][0]);
-        wide_mul(&yy, &entry[r][1], &entry[r][1]);
-        vor__mw_add(entry[r][2].w, yy.w, VOR__WIDE_LIMBS);
-        for (unsigned col = 0; col < 3; col++) {
-            rows[r][col] = &entry[r][col];
+    /* the sign tiers' positive and negative sums; |det| is their
+     * difference */
+    if (m < 0x80000000u) {
+        struct u128 sums[2];
+        sums[0].low = sums[0].high = sums[1].low = sums[1].high = 0u;
+        mid_term(sums, d, 0, 2, 4);
+        mid_term(sums, d, 2, 4, 0);
+        mid_term(sums, d, 4, 0, 2);
+        struct u192 wide[2];
+        for (unsigned k = 0; k < 2u; k++) {
+            wide[k].w[0] = sums[k].low;
+            wide[k].w[1] = sums[k].high;
+            wide[k].w[2] = 0u;
         }
+        return difference_bits(wide);
     }
-    wide_t det;
-    wide_det3(&det, rows);
-    return wide_bit_length(&det);
+    struct u192 sums[2];
+    clear_sums(sums);
+    wide_term(sums, d, 0, 2, 4);
+    wide_term(sums, d, 2, 4, 0);
+    wide_term(sums, d, 4, 0, 2);
+    return difference_bits(sums);
 }
