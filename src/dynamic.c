@@ -427,21 +427,13 @@ static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
     d->revision++;
 }
 
-int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
+/* vor_move past the motion cache: proves the triangles unchanged, or
+ * removes and inserts. Out of line, so that the fast path saves no more
+ * registers and stack than it uses. */
+static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_t y,
+                                      uint32_t *existing)
 {
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
-        return VOR_ERR_ARG;
-    }
     vor_point_t *s = &d->sites[site];
-    if (s->x == x && s->y == y) {
-        return VOR_OK;
-    }
-    if (vor__motion_fast(d, site, x, y)) {
-        /* inside the site's box: no triangle changes and no site is
-         * there (invariant J, motion.c) */
-        move_in_place(d, site, x, y);
-        return VOR_OK;
-    }
     vor_point_t old = *s;
     uint32_t twin = VOR__NONE;
     if (d->vertex_count == 2u) { /* the other site is the only neighbour */
@@ -493,4 +485,22 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
         vor__motion_update(d, site); /* a box in the new epoch */
     }
     return err;
+}
+
+int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
+{
+    if (d == NULL || !vor__site_in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    const vor_point_t *s = &d->sites[site];
+    if (s->x == x && s->y == y) {
+        return VOR_OK;
+    }
+    if (vor__motion_fast(d, site, x, y)) {
+        /* inside the site's box: no triangle changes and no site is
+         * there (invariant J, motion.c) */
+        move_in_place(d, site, x, y);
+        return VOR_OK;
+    }
+    return move_checked(d, site, x, y, existing);
 }
