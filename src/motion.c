@@ -224,14 +224,14 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     const vor_point_t *s = d->sites;
     unsigned b = (count == 3u) ? 0u : 3u;
     uint32_t spread = 0;
-    int64_t v[3][2] = {{0, 0}, {0, 0}, {0, 0}}; /* the incircle's vectors */
+    int64_t v[3][2]; /* the vectors (all three set for an incircle test) */
     int others = -1; /* largest exponent among the other valid sites */
     for (unsigned k = 0, r = 0; k < count; k++) {
         /* |difference| of two int32 fits uint32 */
         int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x, dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
         uint32_t ax = (uint32_t)(dx < 0 ? -dx : dx), ay = (uint32_t)(dy < 0 ? -dy : dy);
         spread |= ax | ay; /* same bit length as the larger */
-        if (k != b && r < 3u) {
+        if (k != b) {
             v[r][0] = dx;
             v[r][1] = dy;
             r++;

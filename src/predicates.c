@@ -610,12 +610,16 @@ unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vo
         return vor__bit_length_u64((uint64_t)(det < 0 ? -det : det));
     }
     /* 33-bit differences: products < 2^66, det < 2^67 */
-    wide_t e[4], det;
+    wide_t e[4], det, other;
     wide_from(&e[0], acx);
     wide_from(&e[1], acy);
     wide_from(&e[2], bcx);
     wide_from(&e[3], bcy);
-    wide_det2(&det, &e[0], &e[1], &e[2], &e[3]);
+    /* not wide_det2: a second caller would take it out of line, and the
+     * perturbed incircle's stack would grow */
+    wide_mul(&det, &e[0], &e[3]);
+    wide_mul(&other, &e[1], &e[2]);
+    vor__mw_sub(det.w, other.w, VOR__WIDE_LIMBS);
     return wide_bit_length(&det);
 }
 

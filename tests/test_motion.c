@@ -11,6 +11,7 @@
  * at least one on meshes of three or more sites), and a fast move must
  * leave the twin's triangles as they were.
  */
+#include "motion.h"
 #include "test.h"
 #include "vor.h"
 
@@ -287,6 +288,22 @@ static void api_safety(void)
     CHECK(move(n, 4, offset(at[4], 1, 0), "build keeps", 0), "vor_build dropped the cache");
     CHECK(vor_build_dc(&with, at, n, VOR_DC_XSPLIT, NULL) == VOR_OK, "d&c rebuild");
     CHECK(!move(n, 4, offset(at[4], -1, 0), "after d&c build", 0), "fast move after a build");
+
+    /* the 24-bit epoch wraps: stamps of 2^24 changes ago must not look
+     * current, so the wrap clears them all (white box: the entry layout
+     * of src/motion.h) */
+    settle(n);
+    with.motion_epoch = 0xFFFFFFu;
+    settle(n);
+    CHECK(vor_remove(&with, n - 1u) == VOR_OK && vor_remove(&without, n - 1u) == VOR_OK,
+          "remove");
+    n--;
+    bool cleared = with.motion_epoch == 1u;
+    for (uint32_t i = 0; i < MOTION_SITES; i++) {
+        cleared = cleared && with.motion[i].stamp == 0u;
+    }
+    CHECK(cleared, "the epoch's wrap left stamps (epoch %u)", with.motion_epoch);
+    CHECK(!move(n, 4, offset(at[4], 1, 0), "after the wrap", 0), "fast move after the wrap");
 
     /* detached: never fast; the memory is the caller's again */
     CHECK(vor_motion_attach(&with, NULL, 0) == VOR_OK, "detach");
