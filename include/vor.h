@@ -389,7 +389,7 @@ int vor_remove(vor_t *d, uint32_t site);
  *                      (may be NULL)
  * On failure the diagram and the motion cache are unchanged.
  * Cost: with a motion cache attached (vor_motion_attach), a move inside
- * the site's box is about 220 instructions on Cortex-M3 and evaluates no
+ * the site's box is about 180 instructions on Cortex-M3 and evaluates no
  * predicate. Otherwise the ~18 predicates of the site's star prove the
  * triangles unchanged (about 4,500 instructions on Cortex-M3; with a
  * cache, about 15,000 more to size the new box), or it costs a removal

@@ -414,7 +414,10 @@ static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
 
 /* Site `site`, whose triangles stay the same, goes to (x, y): the box
  * grows to hold it, and a site that changed bucket moves its run of the
- * bucket grid. */
+ * bucket grid. Should the site name every bucket, another site in the
+ * mesh takes its runs: the last inserted one (always in the mesh), or a
+ * neighbour when that is this site (a turn of the home triangle, kept
+ * off the common path). */
 static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
 {
     vor_point_t *s = &d->sites[site], old = *s;
@@ -422,7 +425,11 @@ static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
     s->y = y;
     vor__box_add(d, s, false);
     if (d->vertex_count >= 2u) {
-        vor__grid_move(d, site, old, any_neighbour(d, (vor_index_t)site));
+        uint32_t fallback = d->last_site;
+        if (fallback == site) {
+            fallback = any_neighbour(d, (vor_index_t)site);
+        }
+        vor__grid_move(d, site, old, fallback);
     }
     d->revision++;
 }
