@@ -67,8 +67,9 @@
  * z_a (b x c) + z_b (c x a) + z_c (a x b) times the moves:
  *   g_a = (2 a_x (b x c) - z_b c_y + z_c b_y, 2 a_y (b x c) + z_b c_x - z_c b_x)
  * and cyclically for b and c, bounded from int64 values (gradient_bits),
- * at most G h < 2^(Lg+E) for G below 2^Lg. Together: below 2^(max(Lg+E, 2m+2E+7)+1). Either
- * bound is a proof; the smaller one is used.
+ * at most G h < 2^(Lg+E) for G below 2^Lg. Together: below
+ * 2^(max(Lg+E, 2m+2E+7)+1). Either bound is a proof; the smaller one is
+ * used.
  *
  * With |P| of bit length L (2^(L-1) <= |P|), a change bound 2^B keeps the
  * sign when B <= L - 2, and stays within |P| / 4 when B <= L - 3.
