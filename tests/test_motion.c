@@ -150,6 +150,56 @@ static void crossing(uint32_t n, uint32_t mover, vor_point_t from, int32_t dx, i
     CHECK(changes > 0u, "%s: the walk changed no triangle (a test that cannot fail)", what);
 }
 
+/* Invariant J at its extremes: every site with a box jumps to a random
+ * corner of it, round after round; each jump must be fast (J covers every
+ * such configuration at once, so nothing is voided) and exact. The boxes
+ * are read from the cache (white box: src/motion.h). */
+static void corners(uint64_t seed, uint32_t n, int32_t spread, int32_t jitter, uint32_t min_boxed,
+                    const char *what)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    for (uint32_t i = 0; i < n; i++) {
+        do { /* a circle of radius spread / 2, moved off it by up to jitter */
+            int32_t k = test_rng_range(&rng, 0, 7);
+            static const int32_t unit[8][2] = {{1000, 0}, {707, 707},   {0, 1000},  {-707, 707},
+                                               {-1000, 0}, {-707, -707}, {0, -1000}, {707, -707}};
+            int32_t r = spread / 2000 + test_rng_range(&rng, 0, (int32_t)i);
+            at[i].x = unit[k][0] * r + test_rng_range(&rng, -jitter, jitter) +
+                      (int32_t)(i / 8u) * spread / 3;
+            at[i].y = unit[k][1] * r + test_rng_range(&rng, -jitter, jitter);
+        } while (site_at(i, at[i]) != VOR_NO_HINT);
+    }
+    start(n);
+    for (uint32_t round = 0; round < 3u; round++) { /* boxes for most sites */
+        for (uint32_t i = 0; i < n; i++) {
+            move(n, i, offset(at[i], 1, -1), what, i);
+        }
+    }
+    uint32_t boxed = 0, jumps = 0;
+    unsigned long failures = test_failures();
+    for (uint32_t round = 0; round < 6u && test_failures() == failures; round++) {
+        for (uint32_t i = 0; i < n; i++) {
+            const struct vor__motion_entry *e = &with.motion[i];
+            if ((e->stamp >> 8) != with.motion_epoch || (e->stamp & 0xFFu) == 0u) {
+                continue;
+            }
+            int32_t r = (int32_t)(1u << ((e->stamp & 0xFFu) - 1u));
+            vor_point_t corner = {e->x + ((test_rng_u32(&rng) & 1u) ? r : -r),
+                                  e->y + ((test_rng_u32(&rng) & 1u) ? r : -r)};
+            if (site_at(n, corner) != VOR_NO_HINT) {
+                continue; /* its own place already */
+            }
+            boxed += (round == 0u) ? 1u : 0u;
+            jumps++;
+            CHECK(move(n, i, corner, what, round), "%s: a jump inside the box of %u was slow",
+                  what, i);
+        }
+    }
+    CHECK(boxed >= min_boxed, "%s: only %u of %u sites have a box", what, boxed, n);
+    CHECK(jumps > 0u, "%s: no jump", what);
+}
+
 static void degenerate_walks(void)
 {
     /* a square (0,0) (1000,0) (1000,1000) (0,1000) and a frame around:
@@ -342,6 +392,11 @@ void test_motion(void)
     /* on a grid every quad is cocircular: boxes only once the walk has
      * broken the ties */
     CHECK(grid > 0u, "grid: no fast move (a test that cannot fail)");
+    /* sites near circles: the predicates' magnitudes are small, the
+     * boxes tight */
+    corners(18, MOTION_SITES, 4000000, 50, 16, "corners, near circles");
+    corners(19, MOTION_SITES, 400000000, 3, 1, "corners, nearly cocircular");
+    corners(20, MOTION_SITES, 40000, 0, 24, "corners, small coordinates");
     degenerate_walks();
     api_safety();
 }
