@@ -218,15 +218,28 @@ static int bound_of(unsigned count, int m, int Lg, int E)
 /* One predicate of p's star on sites ids[0 .. count): re-proves it with p
  * at its place and the other valid sites free, voiding their entries if
  * that fails; returns the largest box exponent p may have for it (< 0:
- * none). The vectors are taken from ids[0] for an orientation and from
- * ids[3] for an incircle test, as in the derivations. */
-static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsigned count)
+ * none). With `sizing` false p gets no box anyway (an earlier predicate
+ * said so): only the re-proof is needed, and none when no other site of
+ * the predicate is free. The vectors are taken from ids[0] for an
+ * orientation and from ids[3] for an incircle test, as in the
+ * derivations. */
+static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsigned count,
+                           bool sizing)
 {
+    int others = -1; /* largest exponent among the other valid sites */
+    for (unsigned k = 0; k < count; k++) {
+        if (ids[k] != p && entry_valid(d, ids[k])) {
+            int e = (int)(d->motion[ids[k]].stamp & 0xFFu) - 1;
+            others = (e > others) ? e : others;
+        }
+    }
+    if (others < 0 && !sizing) {
+        return -1;
+    }
     const vor_point_t *s = d->sites;
     unsigned b = (count == 3u) ? 0u : 3u;
     uint32_t spread = 0;
     int64_t v[3][2]; /* the vectors (all three set for an incircle test) */
-    int others = -1; /* largest exponent among the other valid sites */
     for (unsigned k = 0, r = 0; k < count; k++) {
         /* |difference| of two int32 fits uint32 */
         int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x, dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
@@ -236,10 +249,6 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
             v[r][0] = dx;
             v[r][1] = dy;
             r++;
-        }
-        if (ids[k] != p && entry_valid(d, ids[k])) {
-            int e = (int)(d->motion[ids[k]].stamp & 0xFFu) - 1;
-            others = (e > others) ? e : others;
         }
     }
     int m = (int)vor__bit_length_u32(spread);
@@ -276,7 +285,8 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
 /* The predicate deciding whether site t lies in the circle of triangle
  * (v0, v1, v2) (vor__conflicts): an orientation for a triangle at
  * infinity, an incircle test otherwise. Returns p's limit for it. */
-static int conflict_limit(vor_t *d, uint32_t p, const vor_index_t v[3], vor_index_t t)
+static int conflict_limit(vor_t *d, uint32_t p, const vor_index_t v[3], vor_index_t t,
+                          bool sizing)
 {
     vor_index_t ids[4];
     unsigned count = 0;
@@ -286,7 +296,7 @@ static int conflict_limit(vor_t *d, uint32_t p, const vor_index_t v[3], vor_inde
         }
     }
     ids[count++] = t;
-    return predicate_limit(d, p, ids, count);
+    return predicate_limit(d, p, ids, count, sizing);
 }
 
 static int min_limit(int a, int b)
@@ -330,20 +340,20 @@ void vor__motion_update(vor_t *d, uint32_t p)
         vor_index_t x = v[vor__next(i)], y = v[vor__prev(i)];
         if (x != VOR__INFINITE && y != VOR__INFINITE) {
             const vor_index_t ids[4] = {(vor_index_t)p, x, y, 0};
-            limit = min_limit(limit, predicate_limit(d, p, ids, 3u));
+            limit = min_limit(limit, predicate_limit(d, p, ids, 3u, limit >= 0));
         }
         const vor__tri_t *o = &tri[t->n[i]];
         unsigned k = vor__vertex_index(o, x);
         vor_index_t far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
         if (far != VOR__INFINITE) {
-            limit = min_limit(limit, conflict_limit(d, p, v, far));
+            limit = min_limit(limit, conflict_limit(d, p, v, far, limit >= 0));
         }
         vor_index_t next = t->n[vor__next(i)], w[3];
         vor__vertices(&tri[next], w);
         unsigned j = (w[1] == p) ? 1u : (w[2] == p) ? 2u : 0u;
         vor_index_t z = w[vor__prev(j)];
         if (z != VOR__INFINITE) {
-            limit = min_limit(limit, conflict_limit(d, p, v, z));
+            limit = min_limit(limit, conflict_limit(d, p, v, z, limit >= 0));
         }
         slot = next;
         if (slot == p) {
