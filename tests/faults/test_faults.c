@@ -111,6 +111,10 @@ int main(void)
             CHECK(err == VOR_OK || err == VOR_ERR_ARG, "remove %u: %d", i, err);
         }
         check_topology(&d, "1000 removals", percents[k], live);
+        /* with the motion cache: boxes sized from exact magnitudes, moves
+         * inside them skip the (lying) predicates */
+        static uint8_t motion[VOR_MOTION_BYTES(SITES)] __attribute__((aligned(4)));
+        CHECK(vor_motion_attach(&d, motion, sizeof motion) == VOR_OK, "attach");
         for (uint32_t i = 0; i < 2000u; i++) {
             uint32_t site = test_rng_u32(&rng) % d.site_count;
             vor_point_t to = {test_rng_range(&rng, -1000, 1000), test_rng_range(&rng, -1000, 1000)};
@@ -123,6 +127,14 @@ int main(void)
                   i, err);
         }
         check_topology(&d, "2000 moves", percents[k], live);
+        for (uint32_t i = 0; i < 4000u; i++) { /* tiny steps: many inside their boxes */
+            uint32_t site = test_rng_u32(&rng) % d.site_count;
+            int err = vor_move(&d, site, d.sites[site].x + test_rng_range(&rng, -1, 1),
+                               d.sites[site].y + test_rng_range(&rng, -1, 1), NULL);
+            CHECK(err == VOR_OK || err == VOR_ERR_ARG || err == VOR_ERR_DUPLICATE, "move %u: %d",
+                  i, err);
+        }
+        check_topology(&d, "4000 tiny moves with the motion cache", percents[k], live);
     }
     test_summary();
     return test_failures() == 0 ? 0 : 1;
