@@ -7,18 +7,29 @@
  * target) are inserted one by one with vor_insert, then 200 of them are
  * moved by a small step (at most 1/100 of the mean spacing: the robot's
  * case, where no triangle changes), 200 moved to random points, and 200
- * removed. Prints per kind
+ * removed. Then, with a motion cache attached (vor_motion_attach), 200
+ * small moves again, and a robot control loop: the sites rebuilt 32 times
+ * larger ([0, 2^30)^2, mean spacing about 34,000), every site takes 20
+ * steps of a random walk of at most 3 units a coordinate (1/10,000 of the
+ * spacing), round by round. Prints per kind
  *
  *   bench insert N COST UNIT
  *   bench small-move N COST UNIT
  *   bench large-move N COST UNIT
  *   bench remove N COST UNIT
+ *   bench small-move-cached N COST UNIT
+ *   bench robot-loop N COST UNIT       every move of the loop, first ones included
+ *   bench fast-move N COST UNIT        the loop's moves that took the fast path
+ *   bench fast-fraction N PERCENT %    N moves, PERCENT of them fast
  *
  * where COST is the vor_port_counter() delta per operation with one
  * decimal (instructions under QEMU -icount on targets, nanoseconds on the
- * host) and N the number of operations. vor_validate checks the diagram
- * after each kind, outside the timed part; "bench valid ok" ends a good
- * run. tools/bench/run.sh collects the lines for docs/benchmarks.md.
+ * host) and N the number of operations. A move is fast when it evaluated
+ * no predicate (the diagram's stats); fast-move times each move alone and
+ * subtracts the cost of reading the counter (measured beside it).
+ * vor_validate checks the diagram after each kind, outside the timed part;
+ * "bench valid ok" ends a good run. tools/bench/run.sh collects the lines
+ * for docs/benchmarks.md.
  */
 #include "test.h"
 #include "vor.h"
@@ -29,6 +40,19 @@
 static vor_point_t points[SITES];
 static uint8_t arena[VOR_ARENA_BYTES(SITES)] __attribute__((aligned(VOR_ARENA_ALIGN)));
 static vor_t diagram;
+static uint8_t motion[VOR_MOTION_BYTES(SITES)] __attribute__((aligned(VOR_MOTION_ALIGN)));
+
+#define ROUNDS 20u
+
+static uint32_t predicate_calls(const vor_t *d)
+{
+    const vor_predicate_stats_t *s = &d->stats;
+    uint32_t n = s->orient2d_perturbed + s->incircle_perturbed + s->closer_perturbed;
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        n += s->orient2d[t] + s->incircle[t] + s->closer[t];
+    }
+    return n;
+}
 
 static int32_t coordinate(test_rng_t *rng)
 {
@@ -103,6 +127,60 @@ int main(void)
         ok &= vor_remove(&diagram, k * (inserted / OPS)) == VOR_OK;
     }
     ok &= report("remove", OPS, vor_port_counter() - start);
+
+    /* the small moves again, with the cache */
+    ok &= vor_motion_attach(&diagram, motion, sizeof motion) == VOR_OK;
+    for (uint32_t k = 0; k < OPS; k++) {
+        do {
+            site[k] = test_rng_u32(&rng) % inserted;
+        } while (vor_move(&diagram, site[k], diagram.sites[site[k]].x,
+                          diagram.sites[site[k]].y, NULL) != VOR_OK); /* a removed id */
+        to[k].x = diagram.sites[site[k]].x + (int32_t)(test_rng_u32(&rng) % 21u) - 10;
+        to[k].y = diagram.sites[site[k]].y + (int32_t)(test_rng_u32(&rng) % 21u) - 10;
+    }
+    start = vor_port_counter();
+    for (uint32_t k = 0; k < OPS; k++) {
+        int err = vor_move(&diagram, site[k], to[k].x, to[k].y, NULL);
+        ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
+    }
+    ok &= report("small-move-cached", OPS, vor_port_counter() - start);
+
+    /* the robot control loop, on the sites 32 times larger */
+    for (uint32_t i = 0; i < SITES; i++) {
+        points[i].x *= 32;
+        points[i].y *= 32;
+    }
+    ok &= vor_build(&diagram, points, SITES, NULL, NULL) == VOR_OK;
+    /* each move is timed alone: what reading the counter costs comes off */
+    uint64_t reads = 0;
+    for (uint32_t k = 0; k < SITES; k++) {
+        start = vor_port_counter();
+        reads += vor_port_counter() - start;
+    }
+    uint64_t loop = 0, fast_spent = 0;
+    uint32_t fast = 0;
+    for (uint32_t round = 0; round < ROUNDS; round++) {
+        for (uint32_t i = 0; i < SITES; i++) {
+            int32_t x = diagram.sites[i].x + test_rng_range(&rng, -3, 3);
+            int32_t y = diagram.sites[i].y + test_rng_range(&rng, -3, 3);
+            uint32_t calls = predicate_calls(&diagram);
+            start = vor_port_counter();
+            int err = vor_move(&diagram, i, x, y, NULL);
+            uint64_t spent = vor_port_counter() - start;
+            ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
+            loop += spent;
+            if (predicate_calls(&diagram) == calls) {
+                fast++;
+                fast_spent += spent;
+            }
+        }
+    }
+    /* reads / SITES per read, rounded down: never more than was spent */
+    ok &= report("robot-loop", SITES * ROUNDS, loop - reads * ROUNDS);
+    ok &= fast > 0u && report("fast-move", fast, fast_spent - reads * fast / SITES);
+    test_printf("bench fast-fraction %u %u.%u %%\n", (unsigned)(SITES * ROUNDS),
+                (unsigned)(fast * 100u / (SITES * ROUNDS)),
+                (unsigned)(fast * 1000u / (SITES * ROUNDS) % 10u));
 
     if (ok) {
         test_printf("bench valid ok\n");

@@ -33,6 +33,7 @@
 #include "bucket_grid.h"
 #include "dynamic.h"
 #include "mesh.h"
+#include "motion.h"
 #include "perturbation.h"
 
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
@@ -599,6 +600,7 @@ int vor_remove(vor_t *d, uint32_t site)
     }
     d->last_site = (d->last_site == site) ? other : d->last_site;
     d->revision++;
+    vor__topology_changed(d);
     return VOR_OK;
 }
 
@@ -665,15 +667,35 @@ static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
     return found;
 }
 
-int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
+/* Site `site`, whose triangles stay the same, goes to (x, y): the box
+ * grows to hold it, and a site that changed bucket moves its run of the
+ * bucket grid. Should the site name every bucket, another site in the
+ * mesh takes its runs: the last inserted one (always in the mesh), or a
+ * neighbour when that is this site (a turn of the home triangle, kept
+ * off the common path). */
+static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
 {
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
-        return VOR_ERR_ARG;
+    vor_point_t *s = &d->sites[site], old = *s;
+    s->x = x;
+    s->y = y;
+    vor__box_add(d, s, false);
+    if (d->vertex_count >= 2u) {
+        uint32_t fallback = d->last_site;
+        if (fallback == site) {
+            fallback = any_neighbour(d, (vor_index_t)site);
+        }
+        vor__grid_move(d, site, old, fallback);
     }
+    d->revision++;
+}
+
+/* vor_move past the motion cache: proves the triangles unchanged, or
+ * removes and inserts. Out of line, so that the fast path saves no more
+ * registers and stack than it uses. */
+static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_t y,
+                                      uint32_t *existing)
+{
     vor_point_t *s = &d->sites[site];
-    if (s->x == x && s->y == y) {
-        return VOR_OK;
-    }
     vor_point_t old = *s;
     uint32_t twin = VOR__NONE;
     if (d->vertex_count == 2u) { /* the other site is the only neighbour */
@@ -708,15 +730,8 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
         return VOR_ERR_DUPLICATE;
     }
     if (same_triangles) {
-        /* the box grows to hold the site, and a site that changed bucket
-         * moves its run of the bucket grid */
-        s->x = x;
-        s->y = y;
-        vor__box_add(d, s, false);
-        if (d->vertex_count >= 2u) {
-            vor__grid_move(d, site, old, any_neighbour(d, (vor_index_t)site));
-        }
-        d->revision++;
+        move_in_place(d, site, x, y);
+        vor__motion_update(d, site);
         return VOR_OK;
     }
     /* remove, then insert again under the same id (the free list's head),
@@ -728,6 +743,26 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
         /* only lying predicates (fault injection) find a twin the exact
          * query did not: the site goes back where it was */
         vor_insert_near(d, old.x, old.y, VOR_NO_HINT, &id);
+    } else {
+        vor__motion_update(d, site); /* a box in the new epoch */
     }
     return err;
+}
+
+int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
+{
+    if (d == NULL || !vor__site_in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    const vor_point_t *s = &d->sites[site];
+    if (s->x == x && s->y == y) {
+        return VOR_OK;
+    }
+    if (vor__motion_fast(d, site, x, y)) {
+        /* inside the site's box: no triangle changes and no site is
+         * there (invariant J, motion.c) */
+        move_in_place(d, site, x, y);
+        return VOR_OK;
+    }
+    return move_checked(d, site, x, y, existing);
 }

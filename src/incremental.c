@@ -32,6 +32,7 @@
 #include "incremental.h"
 #include "insertion_order.h"
 #include "mesh.h"
+#include "motion.h"
 #include "multiword.h"
 #include "perturbation.h"
 #include "walk.h"
@@ -342,6 +343,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     d->vertex_count++;
     d->last_site = p;
     d->revision++;
+    vor__topology_changed(d);
     if (d->vertex_count >= 2u) {
         vor__grid_add(d, p);
     }

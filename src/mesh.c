@@ -6,6 +6,7 @@
  * with the predicates, queries.c reads and validates it.
  */
 #include "mesh.h"
+#include "motion.h"
 
 int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sites,
                      uint32_t config)
@@ -38,6 +39,8 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->bucket_rebuild_at = 2;
     d->revision = 0;
     d->free_site = 0;
+    d->motion = NULL; /* a cache is attached afterwards (vor_motion_attach) */
+    d->motion_epoch = 0;
     vor_predicate_stats_t *stats = &d->stats;
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         stats->orient2d[t] = stats->incircle[t] = stats->closer[t] = 0;
@@ -78,6 +81,7 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
     d->last_site = 0;
     d->bucket_rebuild_at = 2; /* the grid of earlier sites is void */
     d->revision++;
+    vor__topology_changed(d); /* the attached motion cache stays, emptied */
     d->free_site = 0; /* the ids are 0 .. n - 1 again */
     for (uint32_t s = 0; s < n; s++) {
         d->sites[s] = points[s];

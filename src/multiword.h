@@ -300,17 +300,6 @@ VOR__ALWAYS_INLINE uint32_t vor__mw_magnitude(int64_t d)
     return (uint32_t)(d < 0 ? -d : d);
 }
 
-/* Bit length of v (0 for 0). */
-VOR__HELPER uint32_t vor__mw_bit_length(uint64_t v)
-{
-    uint32_t bits = 0;
-    while (v != 0u) { /* at most 64 steps */
-        v >>= 1;
-        bits++;
-    }
-    return bits;
-}
-
 /* r = -r over n limbs (two's complement). */
 VOR__INLINE void vor__mw_neg(vor__limb *r, size_t n)
 {
@@ -456,6 +445,37 @@ VOR__ALWAYS_INLINE int vor__mw_u128_compare(vor__mw_u128_t a, vor__mw_u128_t b)
     }
     if (a.lo != b.lo) {
         return a.lo < b.lo ? -1 : 1;
+    }
+    return 0;
+}
+/* Bit length of v: the least k with v < 2^k, 0 for 0. By halving, not a
+ * count-leading-zeros builtin: ARMv6-M has no such instruction, and the
+ * builtin becomes a runtime call there. */
+VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
+{
+    unsigned k = 0;
+    for (unsigned half = 16; half > 0u; half >>= 1) {
+        if ((v >> half) != 0u) {
+            v >>= half;
+            k += half;
+        }
+    }
+    return k + v; /* v is 0 or 1 now */
+}
+
+VOR__INLINE unsigned vor__mw_bit_length(uint64_t v)
+{
+    uint32_t high = (uint32_t)(v >> 32);
+    return (high != 0u) ? 32u + vor__mw_bit_length32(high) : vor__mw_bit_length32((uint32_t)v);
+}
+
+/* Bit length of a[0..n) as an unsigned number, 0 for 0. */
+VOR__INLINE unsigned vor__mw_bit_length_limbs(const vor__limb *a, size_t n)
+{
+    for (size_t i = n; i-- > 0;) {
+        if (a[i] != 0u) {
+            return (unsigned)(i * VOR_LIMB_BITS) + vor__mw_bit_length((uint64_t)a[i]);
+        }
     }
     return 0;
 }

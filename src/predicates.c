@@ -554,3 +554,103 @@ int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
     }
     return sign;
 }
+
+/* ------------------------------------------------------------------ */
+/* Magnitudes (the motion cache, motion.c)                             */
+
+/* Bit length of |v| for a signed value of VOR__WIDE_LIMBS limbs (made
+ * non-negative in place). */
+static unsigned wide_bit_length(vor__limb *v)
+{
+    if (vor__mw_sign(v, VOR__WIDE_LIMBS) < 0) {
+        vor__mw_neg(v, VOR__WIDE_LIMBS);
+    }
+    return vor__mw_bit_length_limbs(v, VOR__WIDE_LIMBS);
+}
+
+/* Bit length of |sums[0] - sums[1]|. */
+static unsigned difference_bits(const struct u192 sums[2])
+{
+    bool swap = compare_u192(&sums[0], &sums[1]) < 0;
+    const struct u192 *a = &sums[swap ? 1 : 0], *b = &sums[swap ? 0 : 1];
+    uint64_t borrow = 0, w[3];
+    for (unsigned i = 0; i < 3u; i++) {
+        w[i] = a->w[i] - b->w[i] - borrow;
+        borrow = (a->w[i] < b->w[i] || (a->w[i] == b->w[i] && borrow != 0u)) ? 1u : 0u;
+    }
+    for (unsigned i = 3; i-- > 0;) {
+        if (w[i] != 0u) {
+            return 64u * i + vor__mw_bit_length(w[i]);
+        }
+    }
+    return 0;
+}
+
+unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c)
+{
+    int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
+    int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
+    if ((vor__mw_bound(acx) | vor__mw_bound(acy) | vor__mw_bound(bcx) | vor__mw_bound(bcy)) < 0x80000000u) {
+        /* as the narrow tier: |det| < 2^63 */
+        int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
+                      vor__mul_i32((int32_t)acy, (int32_t)bcx);
+        return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
+    }
+    /* 33-bit differences: products < 2^66, det < 2^67 */
+    vor__limb e[4][VOR__WIDE_LIMBS], det[VOR__WIDE_LIMBS], other[VOR__WIDE_LIMBS];
+    wide_from(e[0], acx);
+    wide_from(e[1], acy);
+    wide_from(e[2], bcx);
+    wide_from(e[3], bcy);
+    /* not wide_det2: a second caller would take it out of line, and the
+     * perturbed incircle's stack would grow */
+    wide_mul(det, e[0], e[3]);
+    wide_mul(other, e[1], e[2]);
+    vor__mw_sub(det, other, VOR__WIDE_LIMBS);
+    return wide_bit_length(det);
+}
+
+unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                            const vor_point_t *dp)
+{
+    int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
+                    (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
+                    (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
+    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) | vor__mw_bound(d[3]) |
+                 vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
+    if (m < (1u << 14)) {
+        /* as the narrow tier: |det| < 2^60 */
+        int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
+        int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
+        int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+        int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
+        int32_t lc = cx * cx + cy * cy;
+        int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
+                      vor__mul_i32(lb, cx * ay - cy * ax) +
+                      vor__mul_i32(lc, ax * by - ay * bx);
+        return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
+    }
+    /* the sign tiers' positive and negative sums; |det| is their
+     * difference */
+    if (m < 0x80000000u) {
+        vor__mw_u128_t sums[2];
+        /* field by field: a structure copy is a memcpy call on Cortex-M0 */
+        sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+        mid_term(sums, d, 0, 2, 4);
+        mid_term(sums, d, 2, 4, 0);
+        mid_term(sums, d, 4, 0, 2);
+        struct u192 wide[2];
+        for (unsigned k = 0; k < 2u; k++) {
+            wide[k].w[0] = sums[k].lo;
+            wide[k].w[1] = sums[k].hi;
+            wide[k].w[2] = 0u;
+        }
+        return difference_bits(wide);
+    }
+    struct u192 sums[2];
+    clear_sums(sums);
+    wide_term(sums, d, 0, 2, 4);
+    wide_term(sums, d, 2, 4, 0);
+    wide_term(sums, d, 4, 0, 2);
+    return difference_bits(sums);
+}

@@ -26,6 +26,14 @@ int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d);
 int vor__incircle_mid(const int64_t d[6]);
 int vor__incircle_wide(const int64_t d[6]);
 
+/* Bit length of the exact |orient2d| and |incircle| determinants (0 for
+ * 0): how far the sites may move before the sign can change (motion.c).
+ * The determinants are those of vor_orient2d and vor_incircle, whose
+ * magnitude does not depend on the order of the points. */
+unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c);
+unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                            const vor_point_t *dp);
+
 /* The perturbed decisions, for exact signs already known to be 0. */
 int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, vor_predicate_stats_t *stats);

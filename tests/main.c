@@ -15,6 +15,7 @@ int main(void)
     test_api_safety();
     test_centroid();
     test_dynamic();
+    test_motion();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -68,5 +68,6 @@ void test_true_output(void);
 void test_api_safety(void);
 void test_centroid(void);
 void test_dynamic(void);
+void test_motion(void);
 
 #endif

@@ -6,6 +6,7 @@
 static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
 static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
 static uint32_t ids[SIZE_SITES];
+static uint8_t motion[VOR_MOTION_BYTES(SIZE_SITES)] __attribute__((aligned(VOR_MOTION_ALIGN)));
 
 SIZE_ARENA(size_arena);
 
@@ -19,6 +20,7 @@ int main(void)
     acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7), ids);
     acc |= vor_insert(&d, size_x(1), size_y(1), &site);
     acc |= vor_insert_near(&d, size_x(2), size_y(2), site, &site);
+    acc |= vor_motion_attach(&d, motion, sizeof motion);
     acc |= vor_move(&d, site, size_x(8), size_y(8), &site);
     acc |= vor_remove(&d, site);
     acc |= vor_nearest(&d, size_x(3), size_y(3), VOR_NO_HINT, &site);

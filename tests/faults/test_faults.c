@@ -112,6 +112,10 @@ int main(void)
             CHECK(err == VOR_OK || err == VOR_ERR_ARG, "remove %u: %d", i, err);
         }
         check_topology(&d, "1000 removals", percents[k], live);
+        /* with the motion cache: boxes sized from exact magnitudes, moves
+         * inside them skip the (lying) predicates */
+        static uint8_t motion[VOR_MOTION_BYTES(SITES)] __attribute__((aligned(4)));
+        CHECK(vor_motion_attach(&d, motion, sizeof motion) == VOR_OK, "attach");
         for (uint32_t i = 0; i < 2000u; i++) {
             uint32_t site = test_rng_u32(&rng) % d.site_count;
             vor_point_t to = {test_rng_range(&rng, -1000, 1000), test_rng_range(&rng, -1000, 1000)};
@@ -124,6 +128,14 @@ int main(void)
                   i, err);
         }
         check_topology(&d, "2000 moves", percents[k], live);
+        for (uint32_t i = 0; i < 4000u; i++) { /* tiny steps: many inside their boxes */
+            uint32_t site = test_rng_u32(&rng) % d.site_count;
+            int err = vor_move(&d, site, d.sites[site].x + test_rng_range(&rng, -1, 1),
+                               d.sites[site].y + test_rng_range(&rng, -1, 1), NULL);
+            CHECK(err == VOR_OK || err == VOR_ERR_ARG || err == VOR_ERR_DUPLICATE, "move %u: %d",
+                  i, err);
+        }
+        check_topology(&d, "4000 tiny moves with the motion cache", percents[k], live);
         /* every site removed: stars of every size, hull sites, and the
          * small meshes at the end */
         for (uint32_t id = 0; id < d.site_count; id++) {

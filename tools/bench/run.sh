@@ -18,7 +18,8 @@
 #       vor_remove and vor_move against CGAL's remove and move at 10^4,
 #       10^5 and 10^6 sites (removals, small moves, large moves);
 #       target: bench/dynamic.c under QEMU -icount on Cortex-M3 gives
-#       instructions per insertion, remove, small and large move.
+#       instructions per insertion, remove, small and large move, and with
+#       a motion cache per small move, fast move and control-loop move.
 #   run.sh query [ARGS...]        `make bench-query`: nearest-site queries.
 #       host: build/bench/query-host (tools/bench/query.cpp) times vor,
 #       nanoflann and CGAL on coherent and random queries over 10^3 to 10^6
@@ -181,6 +182,29 @@ remove_ok = "met" if cost["remove"] <= 2 * cost["insert"] else "**not met**"
 move_ok = "met" if cost["small-move"] <= 400 else "**not met**"
 print(f"| {sys.argv[2]} | {cost['insert']:.1f} | {cost['remove']:.1f} | {cost['small-move']:.1f} | "
       f"{cost['large-move']:.1f} | {remove_ok} ({cost['remove'] / cost['insert']:.2f}x) | {move_ok} |")
+PY
+    done
+    echo
+    echo "With a motion cache (vor_motion_attach): the small moves again, and a control loop of"
+    echo "20 rounds where every site steps up to 1/10,000 of the spacing:"
+    echo
+    echo "| port | small move, cached | fast move | control loop, per move | fast moves | fast move <= 400 |"
+    echo "|---|---|---|---|---|---|"
+    for port in $ports; do
+        python3 - "$out/dynamic-$port.txt" "$port" <<'PY' || status=1
+import sys
+cost = {}
+for line in open(sys.argv[1]):
+    f = line.split()
+    if len(f) == 5 and f[0] == "bench":
+        cost[f[1]] = float(f[3])
+need = ("small-move-cached", "fast-move", "robot-loop", "fast-fraction")
+if not all(k in cost for k in need):
+    print(f"| {sys.argv[2]} | no figures |||||")
+    sys.exit(1)
+fast_ok = "met" if cost["fast-move"] <= 400 else "**not met**"
+print(f"| {sys.argv[2]} | {cost['small-move-cached']:.1f} | {cost['fast-move']:.1f} | "
+      f"{cost['robot-loop']:.1f} | {cost['fast-fraction']:.1f} % | {fast_ok} |")
 PY
     done
 }

@@ -1,0 +1,375 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * motion.c - the motion cache: small moves without predicates
+ * (docs/design.md, "Small moves").
+ *
+ * Each site may hold a box: its anchor (ax, ay) and an exponent e, the box
+ * being |x - ax| <= 2^e, |y - ay| <= 2^e, stamped with the epoch of the
+ * triangles it was computed for (motion.h). A site's entry is valid when
+ * its stamp carries the current epoch and a box. The cache keeps
+ *
+ *   Invariant J: for every predicate of the current triangles (each finite
+ *   triangle's orientation, each edge's incircle test with the far vertex,
+ *   the hull's orientation tests: what star_still_delaunay in dynamic.c
+ *   evaluates around each site) that involves a site with a valid entry,
+ *   in every configuration where each such site lies anywhere in its box
+ *   and every other site at its current position, the exact value keeps
+ *   its current sign and is never zero.
+ *
+ * A never-zero exact value is its own perturbed sign, and the box product
+ * is connected, so every configuration of it has the current triangles as
+ * its perturbed Delaunay triangulation. Hence a site moving inside its box
+ * (vor__motion_fast) changes no triangle. Nor can it land on a site q: q
+ * and p would then be perturbed nearest neighbours, so an edge p-q with a
+ * finite triangle on it (the mesh has three or more sites: only a
+ * two-site mesh has no finite triangle), whose orientation is 0.
+ *
+ * J survives what happens to it:
+ * - a fast move: the box product, J's domain, does not depend on where in
+ *   its box a site currently is;
+ * - voiding an entry (stamp 0): the domain shrinks;
+ * - a move of p that keeps the triangles: only p's predicates change.
+ *   vor__motion_update re-proves each of them with p at its new place and
+ *   the other valid sites anywhere within 2^(e+1) of their current
+ *   positions (which covers their boxes), voiding those sites' entries
+ *   where that fails, and then sizes p's box so that the bound for every
+ *   predicate, p free too, stays below |P| / 4: the margin leaves room for
+ *   the neighbours' own later moves, so that robots that all move every
+ *   step do not void each other's boxes in turn. The bounds depend on the
+ *   largest exponent only, so p may always take the others' largest one,
+ *   already proven below |P|;
+ * - a change of triangles: the epoch moves on and voids every entry.
+ *
+ * The bounds, powers of two from bit lengths only. A predicate's points
+ * move at most 2^(e+1) each (e the largest exponent among its valid
+ * sites), so a vector between two of them changes by at most 2^E per
+ * coordinate, E = e + 2. Let |coordinates| of the vectors be < 2^m and
+ * n = max(m, E).
+ * - orient(a, b, c) = ux vy - uy vx with u = b - a, v = c - a: a product
+ *   changes by |ux dvy| + |dux vy| + |dux dvy| <= 3 * 2^(n+E), the
+ *   difference by 6 * 2^(n+E) < 2^(n+E+3).
+ * - incircle relative to d, rows (x, y, z = x^2 + y^2) of a-d, b-d, c-d:
+ *   |x|, |y| < 2^n move to < 2^(n+1); z < 2^(2n+1) changes by
+ *   |2x dx + dx^2 + 2y dy + dy^2| <= 6 * 2^(n+E) <= 2^(2n+3), so z' <
+ *   2^(2n+4). A product x y z changes by at most
+ *   |dx| |y'| |z'| + |x| |dy| |z'| + |x| |y| |dz|
+ *   <= 2^(3n+E+5) + 2^(3n+E+4) + 2^(3n+E+3) < 2^(3n+E+6), and the six of
+ *   the determinant by < 2^(3n+E+9) <= 2^(3n+E+10).
+ * The incircle bound is too crude for boxes of use (a Delaunay quad's |P|
+ * is near 2^(4m - 6), leaving E about m - 16), so a first-order bound
+ * replaces it. With h = 2^E <= 2^(m-3),
+ * each of the six products x y z of the determinant, as a polynomial in
+ * t (the points at t times their moves), has t^2, t^3, t^4 coefficients
+ * of at most 12 M^2 h^2, 8 M h^3 <= M^2 h^2 and 2 h^4 <= M^2 h^2 / 32
+ * (M = 2^m; z moves by t w + t^2 v with |w| <= 4 M h, |v| <= 2 h^2), so
+ * beyond the first order the change is below 6 * 14 M^2 h^2 <
+ * 2^(2m+2E+7). The first order is the gradient g of the determinant
+ * z_a (b x c) + z_b (c x a) + z_c (a x b) times the moves:
+ *   g_a = (2 a_x (b x c) - z_b c_y + z_c b_y, 2 a_y (b x c) + z_b c_x - z_c b_x)
+ * and cyclically for b and c, bounded from int64 values (gradient_bits),
+ * at most G h < 2^(Lg+E) for G below 2^Lg. Together: below
+ * 2^(max(Lg+E, 2m+2E+7)+1). Either bound is a proof; the smaller one is
+ * used.
+ *
+ * With |P| of bit length L (2^(L-1) <= |P|), a change bound 2^B keeps the
+ * sign when B <= L - 2, and stays within |P| / 4 when B <= L - 3.
+ */
+#include "motion.h"
+
+#include "mesh.h"
+#include "multiword.h"
+#include "predicates.h"
+
+/* Largest box exponent the fast test handles (2r fits 32 bits). */
+#define MAX_EXPONENT 30
+
+static bool entry_valid(const vor_t *d, uint32_t site)
+{
+    uint32_t stamp = d->motion[site].stamp;
+    return (stamp >> 8) == d->motion_epoch && (stamp & 0xFFu) != 0u;
+}
+
+int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
+{
+    if (d == NULL || (mem == NULL && bytes > 0u)) {
+        return VOR_ERR_ARG;
+    }
+    if (mem == NULL) {
+        d->motion = NULL;
+        return VOR_OK;
+    }
+    if (((uintptr_t)mem % VOR_MOTION_ALIGN) != 0u) {
+        return VOR_ERR_ALIGN;
+    }
+    if (bytes < VOR_MOTION_BYTES(d->max_sites)) {
+        return VOR_ERR_NOMEM;
+    }
+    struct vor__motion_entry *cache = (struct vor__motion_entry *)mem;
+    for (uint32_t i = 0; i < d->max_sites; i++) {
+        cache[i].x = cache[i].y = 0;
+        cache[i].stamp = 0; /* no box */
+    }
+    d->motion = cache;
+    return VOR_OK;
+}
+
+/* Exponent of the change bound of a predicate of `count` points (3: an
+ * orientation, 4: an incircle test) whose vectors are < 2^m and move by
+ * at most 2^E (the derivations above). */
+static int change_bound(unsigned count, int m, int E)
+{
+    int n = (m > E) ? m : E;
+    return (count == 3u) ? n + E + 3 : 3 * n + E + 10;
+}
+
+/* The gradient is evaluated on vectors cut to GRADIENT_BITS bits: below
+ * that, every product fits int64 (above). */
+#define GRADIENT_BITS 18
+
+/* An upper bound on the bit length of the incircle gradient's absolute
+ * sum G for the vectors v (the three sites relative to the fourth, below
+ * 2^m). Longer vectors are cut: u = 2^k u' + r with u' = sign(u) (|u| >> k),
+ * |r| < 2^k, |2^k u'| <= |u| < 2^m. A monomial u v w of a component then
+ * differs from 2^(3k) u' v' w' by r_u v w + 2^k u' r_v w + 2^k u' 2^k v' r_w,
+ * below 3 * 2^(2m+k); a component has monomials of total weight 8
+ * (2 a_x b_x c_y - 2 a_x b_y c_x - b_x^2 c_y - b_y^2 c_y + c_x^2 b_y +
+ * c_y^2 b_y for g_ax), so G <= 2^(3k) G' + 6 * 8 * 3 * 2^(2m+k) <
+ * 2^(3k) G' + 2^(2m+k+8), G' the sum for the cut vectors. */
+static int gradient_bits(int64_t wide[3][2], int m)
+{
+    int k = (m > GRADIENT_BITS) ? m - GRADIENT_BITS : 0;
+    int32_t v[3][2];
+    for (unsigned r = 0; r < 3u; r++) {
+        for (unsigned c = 0; c < 2u; c++) {
+            uint32_t cut = (uint32_t)((wide[r][c] < 0) ? -wide[r][c] : wide[r][c]) >> k;
+            v[r][c] = (wide[r][c] < 0) ? -(int32_t)cut : (int32_t)cut; /* cut < 2^18 */
+        }
+    }
+    int64_t z[3], cross[3];
+    for (unsigned r = 0; r < 3u; r++) {
+        unsigned r1 = vor__next(r), r2 = vor__prev(r);
+        z[r] = vor__mul_i32(v[r][0], v[r][0]) + vor__mul_i32(v[r][1], v[r][1]);
+        /* the cross product of the two other rows: (b x c) for a */
+        cross[r] = vor__mul_i32(v[r1][0], v[r2][1]) - vor__mul_i32(v[r1][1], v[r2][0]);
+    }
+    uint64_t sum = 0;
+    for (unsigned r = 0; r < 3u; r++) {
+        unsigned r1 = vor__next(r), r2 = vor__prev(r);
+        int64_t gx = 2 * vor__mul_i64_i32(cross[r], v[r][0]) -
+                     vor__mul_i64_i32(z[r1], v[r2][1]) + vor__mul_i64_i32(z[r2], v[r1][1]);
+        int64_t gy = 2 * vor__mul_i64_i32(cross[r], v[r][1]) +
+                     vor__mul_i64_i32(z[r1], v[r2][0]) - vor__mul_i64_i32(z[r2], v[r1][0]);
+        sum += (uint64_t)(gx < 0 ? -gx : gx) + (uint64_t)(gy < 0 ? -gy : gy);
+    }
+    int bits = (int)vor__mw_bit_length(sum);
+    if (k == 0) {
+        return bits; /* exact */
+    }
+    int scaled = 3 * k + bits, cut_error = 2 * m + k + 8;
+    return ((scaled > cut_error) ? scaled : cut_error) + 1;
+}
+
+/* floor(v / 2) for any sign (C's division truncates toward zero). */
+static int floor_half(int v)
+{
+    return (v >= 0) ? v / 2 : -((1 - v) / 2);
+}
+
+/* The first-order incircle bound's exponent for moves of 2^E (above), or
+ * a value past any limit when it does not apply (E > m - 3). */
+static int gradient_bound(int m, int Lg, int E)
+{
+    if (E > m - 3) {
+        return 1000;
+    }
+    int first = Lg + E, rest = 2 * m + 2 * E + 7;
+    return ((first > rest) ? first : rest) + 1;
+}
+
+/* The largest E with gradient_bound(m, Lg, E) <= T (it increases with E). */
+static int gradient_motion(int m, int Lg, int T)
+{
+    int E = T - 1 - Lg, square = floor_half(T - 8 - 2 * m);
+    E = (square < E) ? square : E;
+    return (m - 3 < E) ? m - 3 : E;
+}
+
+/* The largest E whose change bound is at most 2^T (change_bound is
+ * increasing in E): on the side E <= m the bound is linear in E with
+ * slope 1; when that side's answer exceeds m, every E <= m fits and the
+ * answer lies on the side E > m, where the bound is 2E + 3 (orient) or
+ * 4E + 10 (incircle). Negative when none. */
+static int largest_motion(unsigned count, int m, int T)
+{
+    if (count == 3u) {
+        int low = T - 3 - m;
+        return (low <= m) ? low : (T - 3) / 2;
+    }
+    int low = T - 10 - 3 * m;
+    return (low <= m) ? low : (T - 10) / 4;
+}
+
+/* The smaller of the change bounds that apply (Lg < 0: the crude one). */
+static int bound_of(unsigned count, int m, int Lg, int E)
+{
+    int crude = change_bound(count, m, E);
+    int first_order = (Lg >= 0) ? gradient_bound(m, Lg, E) : crude;
+    return (first_order < crude) ? first_order : crude;
+}
+
+/* One predicate of p's star on sites ids[0 .. count): re-proves it with p
+ * at its place and the other valid sites free, voiding their entries if
+ * that fails; returns the largest box exponent p may have for it (< 0:
+ * none). With `sizing` false p gets no box anyway (an earlier predicate
+ * said so): only the re-proof is needed, and none when no other site of
+ * the predicate is free. The vectors are taken from ids[0] for an
+ * orientation and from ids[3] for an incircle test, as in the
+ * derivations. */
+static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsigned count,
+                           bool sizing)
+{
+    int others = -1; /* largest exponent among the other valid sites */
+    for (unsigned k = 0; k < count; k++) {
+        if (ids[k] != p && entry_valid(d, ids[k])) {
+            int e = (int)(d->motion[ids[k]].stamp & 0xFFu) - 1;
+            others = (e > others) ? e : others;
+        }
+    }
+    if (others < 0 && !sizing) {
+        return -1;
+    }
+    const vor_point_t *s = d->sites;
+    unsigned b = (count == 3u) ? 0u : 3u;
+    uint32_t spread = 0;
+    int64_t v[3][2]; /* the vectors (all three set for an incircle test) */
+    for (unsigned k = 0, r = 0; k < count; k++) {
+        /* |difference| of two int32 fits uint32 */
+        int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x, dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
+        uint32_t ax = (uint32_t)(dx < 0 ? -dx : dx), ay = (uint32_t)(dy < 0 ? -dy : dy);
+        spread |= ax | ay; /* same bit length as the larger */
+        if (k != b) {
+            v[r][0] = dx;
+            v[r][1] = dy;
+            r++;
+        }
+    }
+    int m = (int)vor__mw_bit_length32(spread);
+    int L = (int)((count == 3u) ? vor__orient2d_bits(&s[ids[0]], &s[ids[1]], &s[ids[2]])
+                                : vor__incircle_bits(&s[ids[0]], &s[ids[1]], &s[ids[2]],
+                                                     &s[ids[3]]));
+    int Lg = (count == 4u) ? gradient_bits(v, m) : -1; /* -1: an orientation */
+    if (others >= 0 && (L < 2 || bound_of(count, m, Lg, others + 2) > L - 2)) {
+        /* the others may no longer move freely: fixed where they are */
+        for (unsigned k = 0; k < count; k++) {
+            if (ids[k] != p) {
+                d->motion[ids[k]].stamp = 0;
+            }
+        }
+        others = -1;
+    }
+    if (L < 3) {
+        return -1; /* |P| < 4: no room (a zero P: its sign is the perturbation's) */
+    }
+    int E = largest_motion(count, m, L - 3);
+    if (Lg >= 0) {
+        int first_order = gradient_motion(m, Lg, L - 3);
+        E = (first_order > E) ? first_order : E;
+    }
+    /* p's and the others' exponents e share one E = max e + 2: the bound
+     * leaves a quarter of |P| when p's e is below E - 2, and p may share
+     * the others' largest e, which the check above allowed, at no cost */
+    if (others + 2 > E) {
+        return others;
+    }
+    return E - 2;
+}
+
+/* The predicate deciding whether site t lies in the circle of triangle
+ * (v0, v1, v2) (vor__conflicts): an orientation for a triangle at
+ * infinity, an incircle test otherwise. Returns p's limit for it. */
+static int conflict_limit(vor_t *d, uint32_t p, const vor_index_t v[3], vor_index_t t,
+                          bool sizing)
+{
+    vor_index_t ids[4];
+    unsigned count = 0;
+    for (unsigned k = 0; k < 3u; k++) {
+        if (v[k] != VOR__INFINITE) {
+            ids[count++] = v[k];
+        }
+    }
+    ids[count++] = t;
+    return predicate_limit(d, p, ids, count, sizing);
+}
+
+static int min_limit(int a, int b)
+{
+    return (a < b) ? a : b;
+}
+
+/* The largest exponent e <= limit whose box around c stays in int32
+ * (the fast test's offsets then cannot wrap), < 0 when none. */
+static int in_range(int limit, int32_t c)
+{
+    /* distance to the nearer end of int32 */
+    uint32_t room = (c < 0) ? (uint32_t)((int64_t)c - INT32_MIN) : (uint32_t)(INT32_MAX - c);
+    while (limit >= 0 && (1u << limit) > room) {
+        limit--;
+    }
+    return limit;
+}
+
+void vor__motion_update(vor_t *d, uint32_t p)
+{
+    if (d->motion == NULL) {
+        return;
+    }
+    struct vor__motion_entry *entry = &d->motion[p];
+    entry->stamp = 0; /* p is fixed while its predicates are examined */
+    if (d->vertex_count < 3u) {
+        return; /* no finite triangle: the twin argument needs one */
+    }
+    /* p's star as star_still_delaunay walks it: per triangle its
+     * orientation, the test across its far edge, the test across the
+     * spoke to the next triangle. The turn ends back at p's home slot
+     * after the degree (<= vertex_count) steps. */
+    const vor__tri_t *tri = d->triangles;
+    int limit = MAX_EXPONENT;
+    vor_index_t slot = (vor_index_t)p, v[3];
+    vor__vertices(&tri[slot], v);
+    for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
+        const vor__tri_t *t = &tri[slot];
+        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
+        vor_index_t x = v[vor__next(i)], y = v[vor__prev(i)];
+        if (x != VOR__INFINITE && y != VOR__INFINITE) {
+            const vor_index_t ids[4] = {(vor_index_t)p, x, y, 0};
+            limit = min_limit(limit, predicate_limit(d, p, ids, 3u, limit >= 0));
+        }
+        const vor__tri_t *o = &tri[t->n[i]];
+        unsigned k = vor__vertex_index(o, x);
+        vor_index_t far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
+        if (far != VOR__INFINITE) {
+            limit = min_limit(limit, conflict_limit(d, p, v, far, limit >= 0));
+        }
+        vor_index_t next = t->n[vor__next(i)], w[3];
+        vor__vertices(&tri[next], w);
+        unsigned j = (w[1] == p) ? 1u : (w[2] == p) ? 2u : 0u;
+        vor_index_t z = w[vor__prev(j)];
+        if (z != VOR__INFINITE) {
+            limit = min_limit(limit, conflict_limit(d, p, v, z, limit >= 0));
+        }
+        slot = next;
+        if (slot == p) {
+            break;
+        }
+        v[0] = w[0];
+        v[1] = w[1];
+        v[2] = w[2];
+    }
+    const vor_point_t *at = &d->sites[p];
+    limit = in_range(in_range(limit, at->x), at->y);
+    if (limit >= 0) {
+        entry->x = at->x;
+        entry->y = at->y;
+        entry->stamp = (d->motion_epoch << 8) | (uint32_t)(limit + 1);
+    }
+}

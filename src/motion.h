@@ -1,0 +1,69 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * motion.h - the motion cache of small moves (motion.c), private to the
+ * library: the entry layout, the epoch every change of the triangles
+ * bumps, and vor_move's fast test, inline so that they cost no call (and
+ * so that code which only inserts links nothing of motion.c).
+ */
+#ifndef VOR_MOTION_H
+#define VOR_MOTION_H
+
+#include <stdbool.h>
+
+#include "vor.h"
+
+/* One site's entry: the anchor (centre of its box) and the stamp
+ * (epoch << 8 | (e + 1)), the box being |x - ax|, |y - ay| <= 2^e; a low
+ * byte of 0 means no box. */
+struct vor__motion_entry {
+    int32_t x, y;
+    uint32_t stamp;
+};
+
+/* the size macro in vor.h must match the layout */
+typedef char vor__motion_size_check[(sizeof(struct vor__motion_entry) == VOR_MOTION_ENTRY_BYTES)
+                                        ? 1
+                                        : -1];
+
+#define VOR__EPOCH_MASK 0xFFFFFFu
+
+/* Every change of the triangles calls this: stamps of older epochs are
+ * void from now on. After 2^24 changes the epoch comes round again and
+ * an old stamp would look current, so at the wrap every stamp is cleared
+ * (once in 2^24 changes: O(1) amortised). */
+static inline void vor__topology_changed(vor_t *d)
+{
+    d->motion_epoch = (d->motion_epoch + 1u) & VOR__EPOCH_MASK;
+    if (d->motion_epoch == 0u) {
+        d->motion_epoch = 1u;
+        for (uint32_t i = 0; d->motion != NULL && i < d->max_sites; i++) {
+            d->motion[i].stamp = 0;
+        }
+    }
+}
+
+/* Is (x, y) inside the box of `site` (a site in the mesh), stamped in the
+ * current epoch? Then by invariant J (motion.c) moving it there changes
+ * no triangle and meets no other site. The box lies within int32
+ * (motion.c), so the offsets below, taken mod 2^32, cannot wrap into it. */
+static inline bool vor__motion_fast(const vor_t *d, uint32_t site, int32_t x, int32_t y)
+{
+    if (d->motion == NULL) {
+        return false;
+    }
+    const struct vor__motion_entry *e = &d->motion[site];
+    uint32_t stamp = e->stamp, size = stamp & 0xFFu;
+    if ((stamp >> 8) != d->motion_epoch || size == 0u) {
+        return false;
+    }
+    uint32_t r = 1u << (size - 1u); /* e <= 30: 2r fits */
+    return (uint32_t)x - (uint32_t)e->x + r <= 2u * r &&
+           (uint32_t)y - (uint32_t)e->y + r <= 2u * r;
+}
+
+/* After a move of p that kept the triangles or changed them (p at its new
+ * place, the mesh final): restores invariant J for p's predicates and
+ * gives p its new box (motion.c). Only with a cache attached. */
+void vor__motion_update(vor_t *d, uint32_t p);
+
+#endif

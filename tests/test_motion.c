@@ -1,0 +1,402 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_motion.c - the motion cache (vor_motion_attach): small moves that
+ * skip the predicates must give exactly the triangles they would without.
+ *
+ * Independent references: after every move, vor_validate; the triangles
+ * of a fresh vor_build of the current sites (the perturbed triangulation
+ * is unique); and a twin diagram without a cache that takes the same
+ * moves. A move counts as fast when it evaluated no predicate (the
+ * diagram's stats did not change; every other successful move evaluates
+ * at least one on meshes of three or more sites), and a fast move must
+ * leave the twin's triangles as they were.
+ */
+#include "motion.h"
+#include "test.h"
+#include "vor.h"
+
+#define MOTION_SITES 48u
+
+static uint8_t arena[VOR_ARENA_BYTES(MOTION_SITES)] __attribute__((aligned(8)));
+static uint8_t twin_arena[VOR_ARENA_BYTES(MOTION_SITES)] __attribute__((aligned(8)));
+static uint8_t fresh_arena[VOR_ARENA_BYTES(MOTION_SITES)] __attribute__((aligned(8)));
+/* one spare byte for the misaligned attach */
+static uint8_t cache[VOR_MOTION_BYTES(MOTION_SITES) + 4u] __attribute__((aligned(8)));
+static vor_t with, without;
+static vor_point_t at[MOTION_SITES];
+
+static uint32_t predicate_calls(const vor_t *d)
+{
+    const vor_predicate_stats_t *s = &d->stats;
+    uint32_t n = s->orient2d_perturbed + s->incircle_perturbed + s->closer_perturbed;
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        n += s->orient2d[t] + s->incircle[t] + s->closer[t];
+    }
+    return n;
+}
+
+/* d holds exactly the triangulation of at[0 .. n) (ids = indices). */
+static bool exact(const vor_t *d, uint32_t n, const char *what, uint32_t step)
+{
+    vor_violation_t violation = {VOR_CHECK_COUNTS, 0, 0};
+    int err = vor_validate(d, &violation);
+    bool ok = CHECK(err == VOR_OK, "%s step %u: vor_validate %d (check %d)", what, step, err,
+                    (int)violation.check);
+    vor_t fresh;
+    vor_init(&fresh, fresh_arena, sizeof fresh_arena, MOTION_SITES);
+    ok = CHECK(vor_build(&fresh, at, n, NULL, NULL) == VOR_OK, "%s step %u: fresh build", what,
+               step) && ok;
+    ok = CHECK(test_same_fingerprint(test_fingerprint_of(d, NULL),
+                                     test_fingerprint_of(&fresh, NULL)),
+               "%s step %u: not the fresh build's triangles", what, step) && ok;
+    return ok;
+}
+
+/* Both diagrams built from at[0 .. n), the cache attached to `with`. */
+static void start(uint32_t n)
+{
+    vor_init(&with, arena, sizeof arena, MOTION_SITES);
+    vor_init(&without, twin_arena, sizeof twin_arena, MOTION_SITES);
+    CHECK(vor_motion_attach(&with, cache, VOR_MOTION_BYTES(MOTION_SITES)) == VOR_OK, "attach");
+    CHECK(vor_build(&with, at, n, NULL, NULL) == VOR_OK, "build");
+    CHECK(vor_build(&without, at, n, NULL, NULL) == VOR_OK, "build the twin");
+}
+
+static uint32_t site_at(uint32_t n, vor_point_t p)
+{
+    for (uint32_t i = 0; i < n; i++) {
+        if (at[i].x == p.x && at[i].y == p.y) {
+            return i;
+        }
+    }
+    return VOR_NO_HINT;
+}
+
+/* Moves site i to p in both diagrams and checks everything; returns
+ * whether the move with the cache was fast, or false on failure. */
+static bool move(uint32_t n, uint32_t i, vor_point_t p, const char *what, uint32_t step)
+{
+    uint32_t twin = site_at(n, p), calls = predicate_calls(&with), existing = VOR_NO_HINT;
+    test_fingerprint_t before = test_fingerprint_of(&without, NULL);
+    int err = vor_move(&with, i, p.x, p.y, &existing);
+    int twin_err = vor_move(&without, i, p.x, p.y, NULL);
+    if (twin != VOR_NO_HINT && twin != i) {
+        CHECK(err == VOR_ERR_DUPLICATE && existing == twin && twin_err == err,
+              "%s step %u: move onto site %u gave %d", what, step, twin, err);
+        return false;
+    }
+    CHECK(err == VOR_OK && twin_err == VOR_OK, "%s step %u: move gave %d, %d", what, step, err,
+          twin_err);
+    at[i] = p;
+    bool fast = twin != i && predicate_calls(&with) == calls;
+    if (fast) {
+        CHECK(test_same_fingerprint(before, test_fingerprint_of(&without, NULL)),
+              "%s step %u: a fast move of %u changed triangles", what, step, i);
+    }
+    CHECK(test_same_fingerprint(test_fingerprint_of(&with, NULL),
+                                test_fingerprint_of(&without, NULL)),
+          "%s step %u: the cache changed the triangles", what, step);
+    exact(&with, n, what, step);
+    return fast;
+}
+
+static vor_point_t offset(vor_point_t p, int32_t dx, int32_t dy)
+{
+    vor_point_t q = {p.x + dx, p.y + dy};
+    return q;
+}
+
+/* Random walks; `scale` bounds a step (0: a mix from 1 to 4,096). */
+static uint32_t walk(uint64_t seed, uint32_t n, int32_t spread, int32_t lattice, int32_t scale,
+                     uint32_t steps, const char *what)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    for (uint32_t i = 0; i < n; i++) {
+        do {
+            at[i].x = test_rng_range(&rng, 0, spread) * lattice;
+            at[i].y = test_rng_range(&rng, 0, spread) * lattice;
+        } while (site_at(i, at[i]) != VOR_NO_HINT);
+    }
+    start(n);
+    uint32_t fast = 0;
+    unsigned long failures = test_failures();
+    for (uint32_t step = 0; step < steps && test_failures() == failures; step++) {
+        uint32_t i = test_rng_u32(&rng) % n;
+        int32_t s = scale;
+        if (s == 0) {
+            static const int32_t scales[8] = {1, 1, 1, 2, 4, 16, 256, 4096};
+            s = scales[test_rng_u32(&rng) % 8u];
+        }
+        vor_point_t p = offset(at[i], test_rng_range(&rng, -s, s), test_rng_range(&rng, -s, s));
+        fast += move(n, i, p, what, step) ? 1u : 0u;
+    }
+    return fast;
+}
+
+/* Site `mover` walks in unit steps along (dx, dy) from `from` through a
+ * configuration where its triangles change; the crossing must be slow. */
+static void crossing(uint32_t n, uint32_t mover, vor_point_t from, int32_t dx, int32_t dy,
+                     uint32_t steps, const char *what)
+{
+    at[mover] = from;
+    start(n);
+    uint32_t changes = 0;
+    for (uint32_t step = 0; step < steps; step++) {
+        test_fingerprint_t before = test_fingerprint_of(&without, NULL);
+        move(n, mover, offset(at[mover], dx, dy), what, step);
+        changes += test_same_fingerprint(before, test_fingerprint_of(&without, NULL)) ? 0u : 1u;
+    }
+    CHECK(changes > 0u, "%s: the walk changed no triangle (a test that cannot fail)", what);
+}
+
+/* Invariant J at its extremes: every site with a box jumps to a random
+ * corner of it, round after round; each jump must be fast (J covers every
+ * such configuration at once, so nothing is voided) and exact. The boxes
+ * are read from the cache (white box: src/motion.h). */
+static void corners(uint64_t seed, uint32_t n, int32_t spread, int32_t jitter, uint32_t min_boxed,
+                    const char *what)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    for (uint32_t i = 0; i < n; i++) {
+        do { /* a circle of radius spread / 2, moved off it by up to jitter */
+            int32_t k = test_rng_range(&rng, 0, 7);
+            static const int32_t unit[8][2] = {{1000, 0}, {707, 707},   {0, 1000},  {-707, 707},
+                                               {-1000, 0}, {-707, -707}, {0, -1000}, {707, -707}};
+            int32_t r = spread / 2000 + test_rng_range(&rng, 0, (int32_t)i);
+            at[i].x = unit[k][0] * r + test_rng_range(&rng, -jitter, jitter) +
+                      (int32_t)(i / 8u) * spread / 3;
+            at[i].y = unit[k][1] * r + test_rng_range(&rng, -jitter, jitter);
+        } while (site_at(i, at[i]) != VOR_NO_HINT);
+    }
+    start(n);
+    for (uint32_t round = 0; round < 3u; round++) { /* boxes for most sites */
+        for (uint32_t i = 0; i < n; i++) {
+            move(n, i, offset(at[i], 1, -1), what, i);
+        }
+    }
+    uint32_t boxed = 0, jumps = 0;
+    unsigned long failures = test_failures();
+    for (uint32_t round = 0; round < 6u && test_failures() == failures; round++) {
+        for (uint32_t i = 0; i < n; i++) {
+            const struct vor__motion_entry *e = &with.motion[i];
+            if ((e->stamp >> 8) != with.motion_epoch || (e->stamp & 0xFFu) == 0u) {
+                continue;
+            }
+            int32_t r = (int32_t)(1u << ((e->stamp & 0xFFu) - 1u));
+            vor_point_t corner = {e->x + ((test_rng_u32(&rng) & 1u) ? r : -r),
+                                  e->y + ((test_rng_u32(&rng) & 1u) ? r : -r)};
+            if (site_at(n, corner) != VOR_NO_HINT) {
+                continue; /* its own place already */
+            }
+            boxed += (round == 0u) ? 1u : 0u;
+            jumps++;
+            CHECK(move(n, i, corner, what, round), "%s: a jump inside the box of %u was slow",
+                  what, i);
+        }
+    }
+    CHECK(boxed >= min_boxed, "%s: only %u of %u sites have a box", what, boxed, n);
+    CHECK(jumps > 0u, "%s: no jump", what);
+}
+
+static void degenerate_walks(void)
+{
+    /* a square (0,0) (1000,0) (1000,1000) (0,1000) and a frame around:
+     * site 3 walks through the square's circle at (0, 1000) */
+    static const vor_point_t square[8] = {{0, 0},       {1000, 0},   {1000, 1000}, {0, 1000},
+                                          {-900, -900}, {1900, -900}, {1900, 1900}, {-900, 1900}};
+    for (uint32_t i = 0; i < 8u; i++) {
+        at[i] = square[i];
+    }
+    crossing(8, 3, offset(square[3], -20, 0), 1, 0, 40, "cocircular crossing");
+    for (uint32_t i = 0; i < 8u; i++) {
+        at[i] = square[i];
+    }
+    /* along the circle's normal at (0, 1000): in and out */
+    crossing(8, 3, offset(square[3], 0, -15), 0, 1, 30, "cocircular normal");
+    /* the hull: site 1 of (0,0) (500,0) (1000,0) crosses the hull line */
+    static const vor_point_t hull[6] = {{0, 0},     {500, 12},  {1000, 0},
+                                        {500, 300}, {300, 600}, {800, 500}};
+    for (uint32_t i = 0; i < 6u; i++) {
+        at[i] = hull[i];
+    }
+    crossing(6, 1, hull[1], 0, -1, 25, "hull crossing");
+    /* three sites only, through collinearity */
+    static const vor_point_t three[3] = {{0, 0}, {100, 7}, {200, 0}};
+    for (uint32_t i = 0; i < 3u; i++) {
+        at[i] = three[i];
+    }
+    crossing(3, 1, three[1], 0, -1, 14, "three sites collinear");
+}
+
+static bool bytes_equal(const uint8_t *a, const uint8_t *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (a[i] != b[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+static void copy_bytes(uint8_t *to, const void *from, size_t n)
+{
+    const uint8_t *f = (const uint8_t *)from;
+    for (size_t i = 0; i < n; i++) {
+        to[i] = f[i];
+    }
+}
+
+static uint8_t saved_arena[sizeof arena], saved_cache[sizeof cache];
+static vor_t saved;
+
+static void save(void)
+{
+    copy_bytes((uint8_t *)&saved, &with, sizeof saved);
+    copy_bytes(saved_arena, arena, sizeof arena);
+    copy_bytes(saved_cache, cache, sizeof cache);
+}
+
+static bool unchanged(void)
+{
+    return bytes_equal((const uint8_t *)&saved, (const uint8_t *)&with, sizeof saved) &&
+           bytes_equal(saved_arena, arena, sizeof arena) &&
+           bytes_equal(saved_cache, cache, sizeof cache);
+}
+
+/* Tiny steps of every site until each has a box. */
+static void settle(uint32_t n)
+{
+    for (uint32_t round = 0; round < 3u; round++) {
+        for (uint32_t i = 0; i < n; i++) {
+            move(n, i, offset(at[i], (round % 2u == 0u) ? 1 : -1, 0), "settle", i);
+        }
+    }
+}
+
+static void api_safety(void)
+{
+    vor_init(&with, arena, sizeof arena, MOTION_SITES);
+    save();
+    CHECK(vor_motion_attach(NULL, cache, sizeof cache) == VOR_ERR_ARG, "attach to NULL");
+    CHECK(vor_motion_attach(&with, NULL, 12) == VOR_ERR_ARG, "attach NULL memory");
+    CHECK(vor_motion_attach(&with, cache + 1, VOR_MOTION_BYTES(MOTION_SITES)) == VOR_ERR_ALIGN,
+          "attach misaligned memory");
+    CHECK(vor_motion_attach(&with, cache, VOR_MOTION_BYTES(MOTION_SITES) - 1u) == VOR_ERR_NOMEM,
+          "attach too little memory");
+    CHECK(vor_motion_attach(&with, cache, 0) == VOR_ERR_NOMEM, "attach no memory");
+    CHECK(unchanged(), "a failing attach changed something");
+    CHECK(vor_motion_attach(&with, NULL, 0) == VOR_OK, "detach without a cache");
+    CHECK(vor_move(NULL, 0, 1, 1, NULL) == VOR_ERR_ARG, "move in NULL");
+
+    /* attached to an empty diagram, then filled one site at a time */
+    CHECK(vor_motion_attach(&with, cache, sizeof cache) == VOR_OK, "attach to an empty diagram");
+    vor_init(&without, twin_arena, sizeof twin_arena, MOTION_SITES);
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    uint32_t n = 0;
+    for (; n < 20u; n++) {
+        do {
+            at[n].x = test_rng_range(&rng, 0, 5000000);
+            at[n].y = test_rng_range(&rng, 0, 5000000);
+        } while (site_at(n, at[n]) != VOR_NO_HINT);
+        CHECK(vor_insert(&with, at[n].x, at[n].y, NULL) == VOR_OK, "insert %u", n);
+        CHECK(vor_insert(&without, at[n].x, at[n].y, NULL) == VOR_OK, "insert %u", n);
+        if (n >= 1u) { /* moves in meshes of 2 .. 20 sites */
+            move(n + 1u, n - 1u, offset(at[n - 1u], 1, 1), "filling", n);
+        }
+    }
+    settle(n);
+    /* with boxes everywhere: failing calls change nothing, cache included */
+    save();
+    CHECK(vor_move(&with, 3, at[5].x, at[5].y, NULL) == VOR_ERR_DUPLICATE, "move onto a site");
+    CHECK(vor_move(&with, MOTION_SITES - 1u, 0, 0, NULL) == VOR_ERR_ARG, "move an unused id");
+    CHECK(vor_insert(&with, at[7].x, at[7].y, NULL) == VOR_ERR_DUPLICATE, "insert a duplicate");
+    CHECK(vor_remove(&with, MOTION_SITES - 1u) == VOR_ERR_ARG, "remove an unused id");
+    CHECK(vor_motion_attach(&with, cache + 1, sizeof cache - 1u) == VOR_ERR_ALIGN,
+          "re-attach misaligned");
+    CHECK(unchanged(), "a failing call changed the diagram or the cache");
+    CHECK(move(n, 4, offset(at[4], 1, 0), "boxed", 0), "a tiny move with a box was slow");
+
+    /* every change of triangles voids the boxes: the next tiny move is
+     * checked in full */
+    at[n] = (vor_point_t){2500000, 2600000};
+    CHECK(vor_insert(&with, at[n].x, at[n].y, NULL) == VOR_OK, "insert");
+    CHECK(vor_insert(&without, at[n].x, at[n].y, NULL) == VOR_OK, "insert");
+    n++;
+    CHECK(!move(n, 4, offset(at[4], -1, 0), "after insert", 0), "fast move after an insert");
+    settle(n);
+    n--;
+    CHECK(vor_remove(&with, n) == VOR_OK && vor_remove(&without, n) == VOR_OK, "remove");
+    CHECK(!move(n, 4, offset(at[4], 1, 0), "after remove", 0), "fast move after a removal");
+    settle(n);
+    CHECK(vor_build(&with, at, n, NULL, NULL) == VOR_OK, "rebuild");
+    CHECK(vor_build(&without, at, n, NULL, NULL) == VOR_OK, "rebuild");
+    CHECK(!move(n, 4, offset(at[4], -1, 0), "after build", 0), "fast move after a build");
+    settle(n);
+    CHECK(move(n, 4, offset(at[4], 1, 0), "build keeps", 0), "vor_build dropped the cache");
+    CHECK(vor_build_dc(&with, at, n, VOR_DC_XSPLIT, NULL) == VOR_OK, "d&c rebuild");
+    CHECK(!move(n, 4, offset(at[4], -1, 0), "after d&c build", 0), "fast move after a build");
+
+    /* the 24-bit epoch wraps: stamps of 2^24 changes ago must not look
+     * current, so the wrap clears them all (white box: the entry layout
+     * of src/motion.h) */
+    settle(n);
+    with.motion_epoch = 0xFFFFFFu;
+    settle(n);
+    CHECK(vor_remove(&with, n - 1u) == VOR_OK && vor_remove(&without, n - 1u) == VOR_OK,
+          "remove");
+    n--;
+    bool cleared = with.motion_epoch == 1u;
+    for (uint32_t i = 0; i < MOTION_SITES; i++) {
+        cleared = cleared && with.motion[i].stamp == 0u;
+    }
+    CHECK(cleared, "the epoch's wrap left stamps (epoch %u)", with.motion_epoch);
+    CHECK(!move(n, 4, offset(at[4], 1, 0), "after the wrap", 0), "fast move after the wrap");
+
+    /* detached: never fast; the memory is the caller's again */
+    CHECK(vor_motion_attach(&with, NULL, 0) == VOR_OK, "detach");
+    for (size_t i = 0; i < sizeof cache; i++) {
+        cache[i] = 0xA5;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        CHECK(!move(n, i, offset(at[i], 1, 0), "detached", i), "fast move without a cache");
+    }
+    /* re-attached memory starts empty whatever it held */
+    CHECK(vor_motion_attach(&with, cache, sizeof cache) == VOR_OK, "re-attach");
+    CHECK(!move(n, 2, offset(at[2], 1, 0), "re-attached", 0), "fast move from garbage");
+    /* vor_init drops the attachment */
+    vor_init(&with, arena, sizeof arena, MOTION_SITES);
+    CHECK(with.motion == NULL, "vor_init kept a cache");
+}
+
+void test_motion(void)
+{
+    /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
+     * uniform sites: mostly fast */
+    uint32_t steps = 600;
+    uint32_t fast = walk(11, MOTION_SITES, 1000000, 1, 14, steps, "uniform tiny steps");
+    CHECK(fast * 2u > steps, "tiny steps: %u of %u moves fast", fast, steps);
+    uint32_t unit = walk(12, MOTION_SITES, 1000000, 1, 1, steps, "uniform unit steps");
+    CHECK(unit * 4u > steps * 3u, "unit steps: %u of %u moves fast", unit, steps);
+    test_printf("motion cache: %u of %u tiny steps fast, %u of %u unit steps\n", fast, steps,
+                unit, steps);
+    /* steps from tiny to large, some changing triangles */
+    walk(13, MOTION_SITES, 20000, 1, 0, 400, "uniform mixed steps");
+    walk(14, 40, 100, 1, 0, 300, "crowded mixed steps");
+    /* grids: collinear and cocircular sites everywhere */
+    uint32_t grid = walk(15, 36, 7, 4096, 1, 300, "grid unit steps");
+    walk(16, 36, 7, 16, 0, 300, "grid mixed steps");
+    walk(17, 30, 5, 3, 1, 300, "dense grid");
+    /* on a grid every quad is cocircular: boxes only once the walk has
+     * broken the ties */
+    CHECK(grid > 0u, "grid: no fast move (a test that cannot fail)");
+    /* sites near circles: the predicates' magnitudes are small, the
+     * boxes tight */
+    corners(18, MOTION_SITES, 4000000, 50, 16, "corners, near circles");
+    corners(19, MOTION_SITES, 400000000, 3, 1, "corners, nearly cocircular");
+    corners(20, MOTION_SITES, 40000, 0, 24, "corners, small coordinates");
+    degenerate_walks();
+    api_safety();
+}
