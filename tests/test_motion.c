@@ -408,6 +408,24 @@ static void backoff(void)
     int32_t r = (int32_t)(1u << ((with.motion[i].stamp & VOR__BOX_MASK) - 1u));
     CHECK(!move(n, i, offset(at[i], r, 0), "backoff", 8) && boxed(i),
           "a used box's successor was not sized");
+    /* steps of 2^13 (the spacing about 144,000, the boxes about 2^-12 of
+     * it) no box holds: each sizing raises the level, and the next
+     * 2^level slow moves size nothing (the entry's counters) */
+    uint32_t j = 9;
+    move(n, j, offset(at[j], 8192, 0), "big steps", 0); /* the first: no sizing */
+    for (uint32_t level = 1; level <= 3u; level++) {
+        int32_t sign = (level % 2u == 1u) ? -1 : 1;
+        move(n, j, offset(at[j], sign * 8192, 0), "big steps", level);
+        const struct vor__motion_entry *e = &with.motion[j];
+        CHECK(!boxed(j) && ((e->stamp >> 5) & 7u) == level && e->x == (int32_t)(1u << level),
+              "big steps: level %u, entry %x %d", level, e->stamp, e->x);
+        for (uint32_t k = 0; k < (1u << level); k++) {
+            move(n, j, offset(at[j], (k % 2u == 0u) ? sign * 8192 : -sign * 8192, 0), "big steps",
+                 level);
+        }
+        CHECK(e->x == 0 && ((e->stamp >> 5) & 7u) == level,
+              "big steps: level %u after the skipped moves, entry %x %d", level, e->stamp, e->x);
+    }
 }
 
 void test_motion(void)
