@@ -27,13 +27,15 @@
  * J survives what happens to it:
  * - a fast move: the box product, J's domain, does not depend on where in
  *   its box a site currently is;
- * - voiding an entry (stamp 0): the domain shrinks;
+ * - voiding an entry (its box bits cleared): the domain shrinks;
  * - a move of p that keeps the triangles: only p's predicates change.
  *   vor__motion_update re-proves each of them with p at its new place and
  *   the other valid sites anywhere within 2^(e+1) of their current
  *   positions (which covers their boxes), voiding those sites' entries
- *   where that fails, and then sizes p's box so that the bound for every
- *   predicate, p free too, stays below |P| / 4: the margin leaves room for
+ *   where that fails (a walk skipped when no site of p's star holds a
+ *   box: nothing to re-prove), and then, if the backoff (below) chooses
+ *   to, sizes p's box so that the bound for every predicate, p free too,
+ *   stays below |P| / 4: the margin leaves room for
  *   the neighbours' own later moves, so that robots that all move every
  *   step do not void each other's boxes in turn. The bounds depend on the
  *   largest exponent only, so p may always take the others' largest one,
