@@ -4,20 +4,25 @@
  * port, beside the cost of an insertion.
  *
  * 1,000 uniform sites in [0, 2^25)^2 (a fixed generator, the same on every
- * target) are inserted one by one with vor_insert, then 200 of them are
- * moved by a small step (at most 1/100 of the mean spacing: the robot's
- * case, where no triangle changes), 200 moved to random points, and 200
- * removed. Then, with a motion cache attached (vor_motion_attach), 200
- * small moves again, and a robot control loop: the sites rebuilt 32 times
- * larger ([0, 2^30)^2, mean spacing about 34,000), every site takes 20
- * steps of a random walk of at most 3 units a coordinate (1/10,000 of the
- * spacing), round by round. Prints per kind
+ * target; mean spacing 2^25 / sqrt(1000), about 1.06 million) are
+ * inserted one by one with vor_insert, then 200 of them are moved by a
+ * small step (at most 10 units a coordinate: the robot's case, where no
+ * triangle changes), 200 moved to random points, and 200 removed. Then,
+ * with a motion cache attached (vor_motion_attach), 200 small moves again
+ * (each site's first move since the attach, mostly); 20 sites taking 10
+ * steps each of up to 1/100 of the spacing (10,600 units, far beyond
+ * their boxes), without and then with the cache; and a robot control
+ * loop: the sites rebuilt 32 times larger ([0, 2^30)^2, mean spacing
+ * about 34 million), every site takes 20 steps of a random walk of at
+ * most 3 units a coordinate, round by round. Prints per kind
  *
  *   bench insert N COST UNIT
  *   bench small-move N COST UNIT
  *   bench large-move N COST UNIT
  *   bench remove N COST UNIT
  *   bench small-move-cached N COST UNIT
+ *   bench step-move N COST UNIT        the 1/100 spacing steps, no cache
+ *   bench step-move-cached N COST UNIT the same kind of steps, cached
  *   bench robot-loop N COST UNIT       every move of the loop, first ones included
  *   bench fast-move N COST UNIT        the loop's moves that took the fast path
  *   bench fast-fraction N PERCENT %    N moves, PERCENT of them fast
@@ -72,6 +77,36 @@ static bool report(const char *name, uint32_t count, uint64_t spent)
     return true;
 }
 
+#define STEPPERS 20u
+#define STEPS 10u
+
+/* STEPPERS sites (in the mesh) take STEPS steps each of up to 10,600
+ * units a coordinate, round by round, with the cache freshly attached or
+ * detached; returns the time spent moving (*ok false if a move failed). */
+static uint64_t repeated_steps(test_rng_t *rng, uint32_t inserted, bool cached, bool *ok)
+{
+    vor_motion_attach(&diagram, cached ? motion : NULL, cached ? sizeof motion : 0u);
+    uint32_t site[STEPPERS];
+    for (uint32_t k = 0; k < STEPPERS; k++) {
+        do {
+            site[k] = test_rng_u32(rng) % inserted;
+        } while (vor_move(&diagram, site[k], diagram.sites[site[k]].x,
+                          diagram.sites[site[k]].y, NULL) != VOR_OK); /* a removed id */
+    }
+    uint64_t spent = 0;
+    for (uint32_t step = 0; step < STEPS; step++) {
+        for (uint32_t k = 0; k < STEPPERS; k++) {
+            int32_t x = diagram.sites[site[k]].x + test_rng_range(rng, -10600, 10600);
+            int32_t y = diagram.sites[site[k]].y + test_rng_range(rng, -10600, 10600);
+            uint64_t start = vor_port_counter();
+            int err = vor_move(&diagram, site[k], x, y, NULL);
+            spent += vor_port_counter() - start;
+            *ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
+        }
+    }
+    return spent;
+}
+
 int main(void)
 {
     vor_port_init();
@@ -94,7 +129,7 @@ int main(void)
     }
     ok &= report("insert", SITES, vor_port_counter() - start) && inserted > 0u;
 
-    /* the mean spacing is 2^25 / sqrt(1000), about 1,061: steps up to 10 */
+    /* steps up to 10 units, 1/100,000 of the spacing */
     uint32_t site[OPS];
     vor_point_t to[OPS];
     for (uint32_t k = 0; k < OPS; k++) {
@@ -144,6 +179,11 @@ int main(void)
         ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
     }
     ok &= report("small-move-cached", OPS, vor_port_counter() - start);
+
+    /* steps of up to 1/100 of the spacing, again and again: the boxes
+     * (about 2^-12 of the spacing) never hold them */
+    ok &= report("step-move", STEPPERS * STEPS, repeated_steps(&rng, inserted, false, &ok));
+    ok &= report("step-move-cached", STEPPERS * STEPS, repeated_steps(&rng, inserted, true, &ok));
 
     /* the robot control loop, on the sites 32 times larger */
     for (uint32_t i = 0; i < SITES; i++) {

@@ -392,8 +392,9 @@ int vor_remove(vor_t *d, uint32_t site);
  * the site's box is about 180 instructions on Cortex-M3 and evaluates no
  * predicate. Otherwise the ~18 predicates of the site's star prove the
  * triangles unchanged (about 4,500 instructions on Cortex-M3; with a
- * cache, about 15,000 more to size the new box), or it costs a removal
- * and an insertion.
+ * cache, about 15,000 more when it sizes the site's new box, which a
+ * backoff skips at a site's first such move and after boxes of no use),
+ * or it costs a removal and an insertion.
  */
 int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing);
 
@@ -404,7 +405,9 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing);
  * without any triangle changing; a vor_move that stays in the site's box
  * then only stores the coordinates, with no predicate at all (docs/design.md,
  * "Small moves"). A move outside the box, or of a site without one, is
- * checked in full and gives the site a new box. Any change of the
+ * checked in full and may give the site a new box: not at its first such
+ * move since the attach (a site moved once never pays for a box), nor
+ * for a while after its box went unused or could not hold its step. Any change of the
  * triangles (vor_insert, vor_remove, vor_build, vor_build_dc, a move that
  * changes triangles) voids every box at O(1) cost.
  *

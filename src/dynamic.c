@@ -697,6 +697,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
 {
     vor_point_t *s = &d->sites[site];
     vor_point_t old = *s;
+    uint32_t epoch = d->motion_epoch; /* for the cache's backoff */
     uint32_t twin = VOR__NONE;
     if (d->vertex_count == 2u) { /* the other site is the only neighbour */
         uint32_t other = any_neighbour(d, (vor_index_t)site);
@@ -731,7 +732,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     }
     if (same_triangles) {
         move_in_place(d, site, x, y);
-        vor__motion_update(d, site);
+        vor__motion_update(d, site, old, epoch);
         return VOR_OK;
     }
     /* remove, then insert again under the same id (the free list's head),
@@ -744,7 +745,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
          * query did not: the site goes back where it was */
         vor_insert_near(d, old.x, old.y, VOR_NO_HINT, &id);
     } else {
-        vor__motion_update(d, site); /* a box in the new epoch */
+        vor__motion_update(d, site, old, epoch); /* a box in the new epoch */
     }
     return err;
 }

@@ -27,13 +27,15 @@
  * J survives what happens to it:
  * - a fast move: the box product, J's domain, does not depend on where in
  *   its box a site currently is;
- * - voiding an entry (stamp 0): the domain shrinks;
+ * - voiding an entry (its box bits cleared): the domain shrinks;
  * - a move of p that keeps the triangles: only p's predicates change.
  *   vor__motion_update re-proves each of them with p at its new place and
  *   the other valid sites anywhere within 2^(e+1) of their current
  *   positions (which covers their boxes), voiding those sites' entries
- *   where that fails, and then sizes p's box so that the bound for every
- *   predicate, p free too, stays below |P| / 4: the margin leaves room for
+ *   where that fails (a walk skipped when no site of p's star holds a
+ *   box: nothing to re-prove), and then, if the backoff (below) chooses
+ *   to, sizes p's box so that the bound for every predicate, p free too,
+ *   stays below |P| / 4: the margin leaves room for
  *   the neighbours' own later moves, so that robots that all move every
  *   step do not void each other's boxes in turn. The bounds depend on the
  *   largest exponent only, so p may always take the others' largest one,
@@ -86,7 +88,7 @@
 static bool entry_valid(const vor_t *d, uint32_t site)
 {
     uint32_t stamp = d->motion[site].stamp;
-    return (stamp >> 8) == d->motion_epoch && (stamp & 0xFFu) != 0u;
+    return (stamp >> 8) == d->motion_epoch && (stamp & VOR__BOX_MASK) != 0u;
 }
 
 int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
@@ -231,7 +233,7 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     int others = -1; /* largest exponent among the other valid sites */
     for (unsigned k = 0; k < count; k++) {
         if (ids[k] != p && entry_valid(d, ids[k])) {
-            int e = (int)(d->motion[ids[k]].stamp & 0xFFu) - 1;
+            int e = (int)(d->motion[ids[k]].stamp & VOR__BOX_MASK) - 1;
             others = (e > others) ? e : others;
         }
     }
@@ -259,10 +261,14 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
                                                      &s[ids[3]]));
     int Lg = (count == 4u) ? gradient_bits(v, m) : -1; /* -1: an orientation */
     if (others >= 0 && (L < 2 || bound_of(count, m, Lg, others + 2) > L - 2)) {
-        /* the others may no longer move freely: fixed where they are */
+        /* the others may no longer move freely: fixed where they are,
+         * their boxes sized again at their next slow moves */
         for (unsigned k = 0; k < count; k++) {
-            if (ids[k] != p) {
-                d->motion[ids[k]].stamp = 0;
+            if (ids[k] != p && entry_valid(d, ids[k])) {
+                struct vor__motion_entry *e = &d->motion[ids[k]];
+                e->stamp &= ~VOR__BOX_MASK;
+                e->x = 0;
+                e->y = 1;
             }
         }
         others = -1;
@@ -318,16 +324,102 @@ static int in_range(int limit, int32_t c)
     return limit;
 }
 
-void vor__motion_update(vor_t *d, uint32_t p)
+/* Does a site of p's predicates other than p hold a box: one of p's
+ * neighbours (each is the vertex after p in one triangle of the star) or
+ * a far vertex across the star's outer edges? The turn ends as
+ * vor__motion_update's does. */
+static bool star_boxed(const vor_t *d, uint32_t p)
+{
+    const vor__tri_t *tri = d->triangles;
+    vor_index_t slot = (vor_index_t)p;
+    for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
+        const vor__tri_t *t = &tri[slot];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
+        vor_index_t x = v[vor__next(i)];
+        const vor__tri_t *o = &tri[t->n[i]];
+        unsigned k = vor__vertex_index(o, x);
+        vor_index_t far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
+        if ((x != VOR__INFINITE && entry_valid(d, x)) ||
+            (far != VOR__INFINITE && entry_valid(d, far))) {
+            return true;
+        }
+        slot = t->n[vor__next(i)];
+        if (slot == p) {
+            break;
+        }
+    }
+    return false;
+}
+
+/* The backoff. Sizing a box costs several slow moves and pays only if
+ * the site then moves inside it; whether it will cannot be known, so the
+ * past decides. A site's first slow move after the cache is attached
+ * sizes nothing: a site moved once (a beacon set down, a one-off
+ * correction) never pays; one that moves again is sized at its next slow
+ * move, and stays a mover across changes of the triangles. A sizing was
+ * wasted when the site leaves the box without having moved inside it (it
+ * is still at the anchor), or when no box could hold another step as
+ * long as the last one (steps larger than the boxes): the site's level
+ * goes up (at most 5) and its next 2^level slow moves, counting the one
+ * that found the box unused, size nothing. A box the site moved inside
+ * resets the level; one voided by a change of the triangles before the
+ * move tells nothing. Only whether p is sized depends on this: J holds
+ * either way (a site without a box is fixed). size_now decides for p's
+ * move from `from` (`epoch` the one before the move) and leaves p without
+ * a box while its predicates are examined. */
+#define MAX_LEVEL 5u
+
+static bool size_now(struct vor__motion_entry *e, vor_point_t from, uint32_t epoch)
+{
+    uint32_t level = (e->stamp >> 5) & 7u;
+    if ((e->stamp & VOR__BOX_MASK) != 0u) {
+        /* a box voided by a change of the triangles before this move
+         * tells nothing: the level stays */
+        bool current = (e->stamp >> 8) == epoch;
+        bool unused = current && e->x == from.x && e->y == from.y;
+        level = unused ? level + ((level < MAX_LEVEL) ? 1u : 0u) : current ? 0u : level;
+        e->x = unused ? (int32_t)(1u << level) : 0;
+        e->y = 1;
+    }
+    e->stamp = level << 5;
+    if (e->y == 0) {
+        e->y = 1;
+        return false; /* the first slow move */
+    }
+    if (e->x > 0) {
+        e->x--;
+        return false;
+    }
+    return true;
+}
+
+void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch)
 {
     if (d->motion == NULL) {
         return;
     }
     struct vor__motion_entry *entry = &d->motion[p];
-    entry->stamp = 0; /* p is fixed while its predicates are examined */
+    bool sizing = size_now(entry, from, epoch);
     if (d->vertex_count < 3u) {
         return; /* no finite triangle: the twin argument needs one */
     }
+    if (!sizing && !star_boxed(d, p)) {
+        return; /* p's predicates involve no other box: J holds for them */
+    }
+    /* p gets a box only if it holds another step as long as this one:
+     * 2^need >= step, the larger coordinate distance (int32 differences
+     * fit uint32 as magnitudes). Once a predicate limits p below need,
+     * the rest are only re-proved for the other sites. */
+    const vor_point_t *at = &d->sites[p];
+    uint32_t dx = (at->x > from.x) ? (uint32_t)at->x - (uint32_t)from.x
+                                   : (uint32_t)from.x - (uint32_t)at->x;
+    uint32_t dy = (at->y > from.y) ? (uint32_t)at->y - (uint32_t)from.y
+                                   : (uint32_t)from.y - (uint32_t)at->y;
+    uint32_t step = (dx > dy) ? dx : dy;
+    int need = (step <= 1u) ? 0 : (int)vor__mw_bit_length32(step - 1u);
+    need = sizing ? need : MAX_EXPONENT + 1;
     /* p's star as star_still_delaunay walks it: per triangle its
      * orientation, the test across its far edge, the test across the
      * spoke to the next triangle. The turn ends back at p's home slot
@@ -342,20 +434,20 @@ void vor__motion_update(vor_t *d, uint32_t p)
         vor_index_t x = v[vor__next(i)], y = v[vor__prev(i)];
         if (x != VOR__INFINITE && y != VOR__INFINITE) {
             const vor_index_t ids[4] = {(vor_index_t)p, x, y, 0};
-            limit = min_limit(limit, predicate_limit(d, p, ids, 3u, limit >= 0));
+            limit = min_limit(limit, predicate_limit(d, p, ids, 3u, limit >= need));
         }
         const vor__tri_t *o = &tri[t->n[i]];
         unsigned k = vor__vertex_index(o, x);
         vor_index_t far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
         if (far != VOR__INFINITE) {
-            limit = min_limit(limit, conflict_limit(d, p, v, far, limit >= 0));
+            limit = min_limit(limit, conflict_limit(d, p, v, far, limit >= need));
         }
         vor_index_t next = t->n[vor__next(i)], w[3];
         vor__vertices(&tri[next], w);
         unsigned j = (w[1] == p) ? 1u : (w[2] == p) ? 2u : 0u;
         vor_index_t z = w[vor__prev(j)];
         if (z != VOR__INFINITE) {
-            limit = min_limit(limit, conflict_limit(d, p, v, z, limit >= 0));
+            limit = min_limit(limit, conflict_limit(d, p, v, z, limit >= need));
         }
         slot = next;
         if (slot == p) {
@@ -365,11 +457,16 @@ void vor__motion_update(vor_t *d, uint32_t p)
         v[1] = w[1];
         v[2] = w[2];
     }
-    const vor_point_t *at = &d->sites[p];
     limit = in_range(in_range(limit, at->x), at->y);
-    if (limit >= 0) {
+    uint32_t level = entry->stamp;
+    if (limit >= need) {
         entry->x = at->x;
         entry->y = at->y;
-        entry->stamp = (d->motion_epoch << 8) | (uint32_t)(limit + 1);
+        entry->stamp = (d->motion_epoch << 8) | level | (uint32_t)(limit + 1);
+    } else if (sizing) {
+        /* no box to hold such steps: the sizing was of no use */
+        level = (level >> 5) + (((level >> 5) < MAX_LEVEL) ? 1u : 0u);
+        entry->x = (int32_t)(1u << level);
+        entry->stamp = level << 5;
     }
 }

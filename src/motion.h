@@ -12,9 +12,13 @@
 
 #include "vor.h"
 
-/* One site's entry: the anchor (centre of its box) and the stamp
- * (epoch << 8 | (e + 1)), the box being |x - ax|, |y - ay| <= 2^e; a low
- * byte of 0 means no box. */
+/* One site's entry. With a box: the anchor (centre of the box) in x, y
+ * and the stamp (epoch << 8 | level << 5 | (e + 1)), the box being
+ * |x - ax|, |y - ay| <= 2^e. Without one (stamp's low five bits 0): y is
+ * 1 once the site has moved slowly since the cache was attached and x
+ * counts the slow moves it still makes before its box is sized again.
+ * The level (0 to 5) is the backoff of a site whose boxes went unused
+ * (motion.c, "The backoff"). */
 struct vor__motion_entry {
     int32_t x, y;
     uint32_t stamp;
@@ -25,6 +29,8 @@ typedef char vor__motion_size_check[(sizeof(struct vor__motion_entry) == VOR_MOT
                                         ? 1
                                         : -1];
 
+/* the stamp's e + 1, 0 for no box */
+#define VOR__BOX_MASK 0x1Fu
 #define VOR__EPOCH_MASK 0xFFFFFFu
 
 /* Every change of the triangles calls this: stamps of older epochs are
@@ -37,6 +43,7 @@ static inline void vor__topology_changed(vor_t *d)
     if (d->motion_epoch == 0u) {
         d->motion_epoch = 1u;
         for (uint32_t i = 0; d->motion != NULL && i < d->max_sites; i++) {
+            d->motion[i].x = d->motion[i].y = 0; /* the backoff starts again */
             d->motion[i].stamp = 0;
         }
     }
@@ -52,7 +59,7 @@ static inline bool vor__motion_fast(const vor_t *d, uint32_t site, int32_t x, in
         return false;
     }
     const struct vor__motion_entry *e = &d->motion[site];
-    uint32_t stamp = e->stamp, size = stamp & 0xFFu;
+    uint32_t stamp = e->stamp, size = stamp & VOR__BOX_MASK;
     if ((stamp >> 8) != d->motion_epoch || size == 0u) {
         return false;
     }
@@ -61,9 +68,10 @@ static inline bool vor__motion_fast(const vor_t *d, uint32_t site, int32_t x, in
            (uint32_t)y - (uint32_t)e->y + r <= 2u * r;
 }
 
-/* After a move of p that kept the triangles or changed them (p at its new
- * place, the mesh final): restores invariant J for p's predicates and
- * gives p its new box (motion.c). Only with a cache attached. */
-void vor__motion_update(vor_t *d, uint32_t p);
+/* After a slow move of p from `from`, begun in `epoch`, that kept the
+ * triangles or changed them (p at its new place, the mesh final): restores invariant J for
+ * p's predicates and, when the backoff allows and a box can hold another
+ * such step, gives p a new box (motion.c). Only with a cache attached. */
+void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch);
 
 #endif

@@ -181,10 +181,10 @@ static void corners(uint64_t seed, uint32_t n, int32_t spread, int32_t jitter, u
     for (uint32_t round = 0; round < 6u && test_failures() == failures; round++) {
         for (uint32_t i = 0; i < n; i++) {
             const struct vor__motion_entry *e = &with.motion[i];
-            if ((e->stamp >> 8) != with.motion_epoch || (e->stamp & 0xFFu) == 0u) {
+            if ((e->stamp >> 8) != with.motion_epoch || (e->stamp & VOR__BOX_MASK) == 0u) {
                 continue;
             }
-            int32_t r = (int32_t)(1u << ((e->stamp & 0xFFu) - 1u));
+            int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
             vor_point_t corner = {e->x + ((test_rng_u32(&rng) & 1u) ? r : -r),
                                   e->y + ((test_rng_u32(&rng) & 1u) ? r : -r)};
             if (site_at(n, corner) != VOR_NO_HINT) {
@@ -371,13 +371,71 @@ static void api_safety(void)
     CHECK(with.motion == NULL, "vor_init kept a cache");
 }
 
+/* Does site i hold a box of the current triangles? (white box) */
+static bool boxed(uint32_t i)
+{
+    const struct vor__motion_entry *e = &with.motion[i];
+    return (e->stamp >> 8) == with.motion_epoch && (e->stamp & VOR__BOX_MASK) != 0u;
+}
+
+/* The backoff (src/motion.c): which slow moves size a box. */
+static void backoff(void)
+{
+    uint32_t n = MOTION_SITES, i = 5;
+    walk(21, n, 1000000, 1, 1, 0, "backoff");
+    CHECK(!move(n, i, offset(at[i], 1, 0), "backoff", 0) && !boxed(i),
+          "the first slow move since the attach sized a box");
+    CHECK(!move(n, i, offset(at[i], -1, 0), "backoff", 1) && boxed(i),
+          "the second slow move sized no box");
+    /* boxes left unused: the next 2^level slow moves (the one leaving
+     * included) size nothing, the level going up to 5 */
+    for (uint32_t level = 1; level <= 6u && boxed(i); level++) {
+        int32_t r = (int32_t)(1u << ((with.motion[i].stamp & VOR__BOX_MASK) - 1u));
+        int32_t jump = (level % 2u == 1u) ? 2 * r + 1 : -2 * r - 1;
+        CHECK(!move(n, i, offset(at[i], jump, 0), "backoff", level) && !boxed(i),
+              "level %u: a jump out of the box sized one", level);
+        uint32_t unsized = 1;
+        while (unsized <= 64u && !boxed(i)) {
+            move(n, i, offset(at[i], (unsized % 2u == 1u) ? 1 : -1, 0), "backoff", level);
+            unsized += boxed(i) ? 0u : 1u;
+        }
+        CHECK(unsized == (1u << ((level < 5u) ? level : 5u)),
+              "level %u: %u slow moves without sizing", level, unsized);
+    }
+    /* a box the site moves inside resets the level: the slow move
+     * leaving it (a step of r, from 1 past the anchor) sizes again */
+    CHECK(move(n, i, offset(at[i], 1, 0), "backoff", 7), "a step inside the box was slow");
+    int32_t r = (int32_t)(1u << ((with.motion[i].stamp & VOR__BOX_MASK) - 1u));
+    CHECK(!move(n, i, offset(at[i], r, 0), "backoff", 8) && boxed(i),
+          "a used box's successor was not sized");
+    /* steps of 2^13 (the spacing about 144,000, the boxes about 2^-12 of
+     * it) no box holds: each sizing raises the level, and the next
+     * 2^level slow moves size nothing (the entry's counters) */
+    uint32_t j = 9;
+    move(n, j, offset(at[j], 8192, 0), "big steps", 0); /* the first: no sizing */
+    for (uint32_t level = 1; level <= 3u; level++) {
+        int32_t sign = (level % 2u == 1u) ? -1 : 1;
+        move(n, j, offset(at[j], sign * 8192, 0), "big steps", level);
+        const struct vor__motion_entry *e = &with.motion[j];
+        CHECK(!boxed(j) && ((e->stamp >> 5) & 7u) == level && e->x == (int32_t)(1u << level),
+              "big steps: level %u, entry %x %d", level, e->stamp, e->x);
+        for (uint32_t k = 0; k < (1u << level); k++) {
+            move(n, j, offset(at[j], (k % 2u == 0u) ? sign * 8192 : -sign * 8192, 0), "big steps",
+                 level);
+        }
+        CHECK(e->x == 0 && ((e->stamp >> 5) & 7u) == level,
+              "big steps: level %u after the skipped moves, entry %x %d", level, e->stamp, e->x);
+    }
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
-     * uniform sites: mostly fast */
+     * uniform sites: mostly fast, the first two moves of each site aside
+     * (the backoff sizes no box at a site's first slow move) */
     uint32_t steps = 600;
     uint32_t fast = walk(11, MOTION_SITES, 1000000, 1, 14, steps, "uniform tiny steps");
-    CHECK(fast * 2u > steps, "tiny steps: %u of %u moves fast", fast, steps);
+    CHECK(fast * 2u > steps - 2u * MOTION_SITES, "tiny steps: %u of %u moves fast", fast, steps);
     uint32_t unit = walk(12, MOTION_SITES, 1000000, 1, 1, steps, "uniform unit steps");
     CHECK(unit * 4u > steps * 3u, "unit steps: %u of %u moves fast", unit, steps);
     test_printf("motion cache: %u of %u tiny steps fast, %u of %u unit steps\n", fast, steps,
@@ -398,5 +456,6 @@ void test_motion(void)
     corners(19, MOTION_SITES, 400000000, 3, 1, "corners, nearly cocircular");
     corners(20, MOTION_SITES, 40000, 0, 24, "corners, small coordinates");
     degenerate_walks();
+    backoff();
     api_safety();
 }
