@@ -42,7 +42,7 @@ endif
 GEN := build/gen
 
 include port/$(PORT)/port.mk
-include tools/bench/bench.mk
+include tools/peer-bench/bench.mk
 
 .SECONDEXPANSION:
 
@@ -266,7 +266,7 @@ bench-predicates:
 
 bench-raster:
 	@tools/install-deps.sh host python toolchains
-	+@tools/bench/raster.sh
+	+@tools/bench-raster.sh
 
 clean:
 	rm -rf build

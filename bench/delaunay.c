@@ -15,7 +15,7 @@
  * divided by N, with one decimal: instructions under QEMU -icount on
  * targets (one run: the count is repeatable), nanoseconds on the host
  * (best of 5 runs). vor_validate checks each result outside the timed
- * part; "bench valid ok" ends a good run. tools/bench/run.sh collects the
+ * part; "bench valid ok" ends a good run. tools/peer-bench/run.sh collects the
  * lines for docs/benchmarks.md.
  */
 #include "test.h"

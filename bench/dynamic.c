@@ -33,7 +33,7 @@
  * no predicate (the diagram's stats); fast-move times each move alone and
  * subtracts the cost of reading the counter (measured beside it).
  * vor_validate checks the diagram after each kind, outside the timed part;
- * "bench valid ok" ends a good run. tools/bench/run.sh collects the lines
+ * "bench valid ok" ends a good run. tools/peer-bench/run.sh collects the lines
  * for docs/benchmarks.md.
  */
 #include "test.h"

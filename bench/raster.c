@@ -21,7 +21,7 @@
  * first row only at 4,096 sites; its cost per pixel does not depend on
  * the row), and every fast frame is checked against the brute-force
  * frame on those rows; "bench valid ok" ends a good run.
- * tools/bench/raster.sh turns the lines into docs/benchmarks.md.
+ * tools/peer-bench/raster.sh turns the lines into docs/benchmarks.md.
  *
  * Sites of the other metrics: weights mult 1..4, add 0..s/4, compound
  * w1 1..4 and w2 0..s/8 (s: the mean site spacing); the form (2, 1, 3);

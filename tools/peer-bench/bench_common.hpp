@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-// tools/bench/bench_common.hpp - what the host benchmarks share: the
+// tools/peer-bench/bench_common.hpp - what the host benchmarks share: the
 // random generator that makes their inputs, and the number formats of
 // their Markdown tables.
 #ifndef VOR_BENCH_COMMON_HPP

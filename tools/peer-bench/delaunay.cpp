@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-// tools/bench/delaunay.cpp - `make bench`, host part: the Delaunay build of
+// tools/peer-bench/delaunay.cpp - `make bench`, host part: the Delaunay build of
 // vor against CGAL Delaunay_triangulation_2 (Epick, range insert) and Boost
 // Polygon construct_voronoi, on identical inputs in one process run.
 //
@@ -13,7 +13,7 @@
 // repetition; vor's incremental build and both divide-and-conquer
 // variants), their ratios, and bytes per site. Then a table of time per
 // site for uniform n = 2^7 ... 2^20 (scaling(); --scaling-reps 0 skips it),
-// also written as CSV for tools/bench/plot_scaling.py. Input generation and the
+// also written as CSV for tools/peer-bench/plot_scaling.py. Input generation and the
 // conversion to each library's point type are not timed; allocation of the
 // structure and its page faults are (vor: malloc of VOR_ARENA_BYTES(n),
 // vor_init, vor_build; CGAL: construct and range-insert; Boost: construct
@@ -294,7 +294,7 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
 
 // delaunay32 (exact int32, divide and conquer, optional threads) and
 // jc_voronoi (float Fortune sweep), built from ../shared/peers when it is
-// there: tools/bench/bench.mk then defines VOR_BENCH_DELAUNAY32 and
+// there: tools/peer-bench/bench.mk then defines VOR_BENCH_DELAUNAY32 and
 // VOR_BENCH_JCV. Their rows say "skipped" otherwise.
 struct peer_result {
     double ms = -1;      // one build, -1: not measured

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * tools/bench/jcv_firmware.c - vor beside jc_voronoi on the same emulated
+ * tools/peer-bench/jcv_firmware.c - vor beside jc_voronoi on the same emulated
  * microcontroller (Cortex-M4F, QEMU mps2-an386, `make bench-jcv`).
  *
  * jc_voronoi is the one embeddable C Voronoi library: a float Fortune sweep

@@ -1,27 +1,27 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# tools/bench/run.sh - the benchmarks against other libraries, each a host
+# tools/peer-bench/run.sh - the benchmarks against other libraries, each a host
 # program and a target program:
 #
 #   run.sh [delaunay] [ARGS...]   `make bench`: the Delaunay build.
-#       host: build/bench/delaunay-host (tools/bench/delaunay.cpp) times
+#       host: build/bench/delaunay-host (tools/peer-bench/delaunay.cpp) times
 #       vor (incremental and both divide-and-conquer variants), CGAL and
 #       Boost.Polygon on 10^4, 10^5 and 10^6 sites of four input kinds and
 #       measures their memory, then time per site for uniform n = 2^7 ...
-#       2^20, plotted by tools/bench/plot_scaling.py into
+#       2^20, plotted by tools/peer-bench/plot_scaling.py into
 #       build/bench/delaunay-scaling.png;
 #       targets: bench/delaunay.c under QEMU -icount on Cortex-M0, Cortex-M3
 #       and RISC-V 32 gives instructions per inserted site for 1,000 and
 #       10,000 sites (incremental in both orders, both D&C variants).
 #   run.sh dynamic [ARGS...]      `make bench-dynamic`: removal and moves.
-#       host: build/bench/dynamic-host (tools/bench/dynamic.cpp) times
+#       host: build/bench/dynamic-host (tools/peer-bench/dynamic.cpp) times
 #       vor_remove and vor_move against CGAL's remove and move at 10^4,
 #       10^5 and 10^6 sites (removals, small moves, large moves);
 #       target: bench/dynamic.c under QEMU -icount on Cortex-M3 gives
 #       instructions per insertion, remove, small and large move, and with
 #       a motion cache per small move, fast move and control-loop move.
 #   run.sh query [ARGS...]        `make bench-query`: nearest-site queries.
-#       host: build/bench/query-host (tools/bench/query.cpp) times vor,
+#       host: build/bench/query-host (tools/peer-bench/query.cpp) times vor,
 #       nanoflann and CGAL on coherent and random queries over 10^3 to 10^6
 #       sites and checks that their answers agree;
 #       target: examples/robot_nearest under QEMU -icount on Cortex-M3
@@ -96,7 +96,7 @@ host_status=0
 [ "$host_status" -eq 0 ] || status=1
 # time per site against log2 n, as a plot (docs/delaunay-scaling.png is one)
 if [ -f "$out/delaunay-scaling.csv" ]; then
-    python3 tools/bench/plot_scaling.py "$out/delaunay-scaling.csv" \
+    python3 tools/peer-bench/plot_scaling.py "$out/delaunay-scaling.csv" \
         "$out/delaunay-scaling.png" || status=1
 fi
 

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-// tools/bench/query.cpp - `make bench-query`, host part: nearest-site
+// tools/peer-bench/query.cpp - `make bench-query`, host part: nearest-site
 // queries of vor against nanoflann's kd-tree and CGAL's
 // Delaunay_triangulation_2::nearest_vertex, on the same sites and the same
 // queries in one process run.

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-// tools/bench/dynamic.cpp - `make bench-dynamic`, host part: removing and
+// tools/peer-bench/dynamic.cpp - `make bench-dynamic`, host part: removing and
 // moving sites of a Delaunay triangulation, vor (vor_remove, vor_move)
 // against CGAL's Delaunay_triangulation_2 (remove, move), on the same
 // sites and the same operations in one process run.

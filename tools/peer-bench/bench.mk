@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
-# tools/bench/bench.mk - the host benchmarks against other libraries, each
-# with its target figures (tools/bench/run.sh runs both halves):
+# tools/peer-bench/bench.mk - the host benchmarks against other libraries, each
+# with its target figures (tools/peer-bench/run.sh runs both halves):
 #   make bench         the Delaunay build of vor against CGAL,
 #                      Boost.Polygon, delaunay32 (1 and 2 threads) and
 #                      jc_voronoi, and instructions per inserted site on
@@ -15,7 +15,7 @@
 #                      Cortex-M3 (bench/dynamic.c under QEMU);
 #   make bench-jcv     vor beside jc_voronoi on the emulated Cortex-M4F:
 #                      instructions, RAM and stack per build
-#                      (tools/bench/jcv_firmware.c); make bench runs it too.
+#                      (tools/peer-bench/jcv_firmware.c); make bench runs it too.
 # Included by the top-level Makefile after the port's port.mk.
 #
 # CGAL, Boost and nanoflann are used by these host benchmarks only, never by
@@ -34,16 +34,16 @@ BENCH_LDLIBS ?= -lgmp -lmpfr
 
 bench:
 	@tools/install-deps.sh bench host python toolchains
-	+@tools/bench/run.sh delaunay
+	+@tools/peer-bench/run.sh delaunay
 	+@$(MAKE) -s --no-print-directory PORT=cortex-m4f bench-jcv
 
 bench-query:
 	@tools/install-deps.sh bench-query host python toolchains
-	+@tools/bench/run.sh query
+	+@tools/peer-bench/run.sh query
 
 bench-dynamic:
 	@tools/install-deps.sh bench host python toolchains
-	+@tools/bench/run.sh dynamic
+	+@tools/peer-bench/run.sh dynamic
 
 # The peers of `make bench` (docs/benchmarks.md): delaunay32 and jc_voronoi,
 # compiled from their unmodified sources in $(PEERS) when it holds them (a
@@ -56,31 +56,31 @@ PEER_OBJS := $(PEER_D32:$(PEERS)/delaunay32/src/%.cpp=build/bench/peers/delaunay
 PEER_FLAGS := $(if $(PEER_D32),-DVOR_BENCH_DELAUNAY32 -I$(PEERS)/delaunay32/include) \
               $(if $(PEER_JCV),-DVOR_BENCH_JCV)
 
-# A host program, build/bench/NAME-host from tools/bench/NAME.cpp, links the
+# A host program, build/bench/NAME-host from tools/peer-bench/NAME.cpp, links the
 # host release library, so it is built with PORT=host (run.sh does that);
 # other ports have no rule for it. The Delaunay benchmark also links the peers.
 ifeq ($(B),build/host)
-build/bench/%-host: tools/bench/%.cpp tools/bench/bench_common.hpp $(LIB_HDRS_BENCH) $(B)/libvor.a
+build/bench/%-host: tools/peer-bench/%.cpp tools/peer-bench/bench_common.hpp $(LIB_HDRS_BENCH) $(B)/libvor.a
 	@mkdir -p $(@D)
-	$(BENCH_CXX) $(BENCH_CXXFLAGS) $(BENCH_PEERS_$*) -Iinclude tools/bench/$*.cpp $(B)/libvor.a \
+	$(BENCH_CXX) $(BENCH_CXXFLAGS) $(BENCH_PEERS_$*) -Iinclude tools/peer-bench/$*.cpp $(B)/libvor.a \
 	    $(if $(BENCH_PEERS_$*),$(PEER_OBJS) -pthread -lm) $(BENCH_LDLIBS) -o $@
 
 BENCH_PEERS_delaunay = $(PEER_FLAGS)
-build/bench/delaunay-host: $(PEER_OBJS) tools/bench/jcv_peer.h
+build/bench/delaunay-host: $(PEER_OBJS) tools/peer-bench/jcv_peer.h
 
 # The peers' own build flags (their README's), warnings theirs to keep.
 build/bench/peers/delaunay32/%.o: $(PEERS)/delaunay32/src/%.cpp
 	@mkdir -p $(@D)
 	$(BENCH_CXX) -std=c++17 -O2 -DNDEBUG -I$(PEERS)/delaunay32/include -pthread -c $< -o $@
 
-build/bench/peers/jcv_peer.o: tools/bench/jcv_peer.c tools/bench/jcv_peer.h $(PEER_JCV)
+build/bench/peers/jcv_peer.o: tools/peer-bench/jcv_peer.c tools/peer-bench/jcv_peer.h $(PEER_JCV)
 	@mkdir -p $(@D)
 	gcc -std=c99 -O2 -DNDEBUG -I$(PEERS)/jc_voronoi -c $< -o $@
 endif
 LIB_HDRS_BENCH = $(wildcard include/*.h)
 
 # The embedded peer: jc_voronoi on the Cortex-M4F beside vor
-# (tools/bench/jcv_firmware.c), with picolibc's malloc and libm, which the
+# (tools/peer-bench/jcv_firmware.c), with picolibc's malloc and libm, which the
 # toolchains group installs. picolibc's sbrk hands out RAM from the end of
 # .bss to the end of RAM (4 MB on mps2-an386). jc_voronoi is compiled with
 # its own flags: it is the peer's code, not ours to hold to our warnings.
@@ -94,11 +94,11 @@ bench-jcv:
 	@$(MAKE) -s PORT=cortex-m4f SANITIZE= $(B)/bench-jcv.elf
 	$(RUN) $(B)/bench-jcv.elf
 
-$(B)/bench-jcv.elf: tools/bench/jcv_firmware.c tools/bench/jcv_peer.c tools/bench/jcv_peer.h \
+$(B)/bench-jcv.elf: tools/peer-bench/jcv_firmware.c tools/peer-bench/jcv_peer.c tools/peer-bench/jcv_peer.h \
                     $(PEER_JCV) $(B)/tests/harness.o $(BENCH_PORT_OBJS) $(B)/libvor.a
 	$(CC) $(CPU_CFLAGS) --specs=picolibc.specs $(OPT) -ffunction-sections -fdata-sections \
-	    -DNDEBUG -I$(PEERS)/jc_voronoi -c tools/bench/jcv_peer.c -o $(B)/jcv_peer.o
-	$(CC) $(TEST_CFLAGS) -Itools/bench -c tools/bench/jcv_firmware.c -o $(B)/jcv_firmware.o
+	    -DNDEBUG -I$(PEERS)/jc_voronoi -c tools/peer-bench/jcv_peer.c -o $(B)/jcv_peer.o
+	$(CC) $(TEST_CFLAGS) -Itools/peer-bench -c tools/peer-bench/jcv_firmware.c -o $(B)/jcv_firmware.o
 	$(CC) $(CPU_CFLAGS) --specs=picolibc.specs -nostartfiles -T port/cortex-m4f/link.ld \
 	    -Wl,--gc-sections -Wl,--defsym=__heap_start=__end -Wl,--defsym=__heap_end=0x20400000 \
 	    $(B)/jcv_firmware.o $(B)/jcv_peer.o $(B)/tests/harness.o $(BENCH_PORT_OBJS) $(B)/libvor.a \

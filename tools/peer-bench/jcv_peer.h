@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * tools/bench/jcv_peer.h - jc_voronoi behind one function (jcv_peer.c).
+ * tools/peer-bench/jcv_peer.h - jc_voronoi behind one function (jcv_peer.c).
  */
 #ifndef VOR_BENCH_JCV_PEER_H
 #define VOR_BENCH_JCV_PEER_H

@@ -1,11 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * tools/bench/jcv_peer.c - jc_voronoi (../shared/peers/jc_voronoi, float
+ * tools/peer-bench/jcv_peer.c - jc_voronoi (../shared/peers/jc_voronoi, float
  * Fortune sweep) behind one C function, for the benchmarks that compare
- * vor with it: the host's `make bench` (tools/bench/delaunay.cpp) and the
- * Cortex-M4F firmware (tools/bench/jcv_firmware.c). Compiled as C, the
+ * vor with it: the host's `make bench` (tools/peer-bench/delaunay.cpp) and the
+ * Cortex-M4F firmware (tools/peer-bench/jcv_firmware.c). Compiled as C, the
  * language jc_voronoi is written in; only built when the peer sources are
- * there (tools/bench/bench.mk).
+ * there (tools/peer-bench/bench.mk).
  */
 #define JC_VORONOI_IMPLEMENTATION
 #include "jc_voronoi.h"

@@ -3,7 +3,7 @@
 """plot_scaling.py - `make bench`: the Delaunay build's time per site
 against log2 n as a PNG (the axes of seed 000's Fig. 5.1).
 
-    tools/bench/plot_scaling.py CSV PNG
+    tools/peer-bench/plot_scaling.py CSV PNG
 
 CSV is what `delaunay-host --scaling-csv` writes: "log2n,library,ns_per_site"
 rows, one line per library in the plot. Needs matplotlib: if this python3 lacks it, the script
