@@ -145,22 +145,35 @@ VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
     return 0;
 }
 
-/* Mid tier term, differences in int32 ([-2^31, 2^31 - 1]): the lift
- * <= 2^63 fits uint64, the cross product <= 2^63 - 2^31 fits int64 (its
- * two products cannot both reach 2^62 with opposite signs), the product of
- * the two < 2^126, and each sum of up to three such < 2^128: two words.
- * d[] holds a-d, b-d, c-d as x, y pairs; the term is lift(p) cross(u, v). */
+/* sums[c (ux vy - uy vx) < 0] += |c (ux vy - uy vx)|, c = -c_mag if
+ * c_negative else c_mag: one term of a 3x3 determinant expanded along its
+ * third column. With u, v in int32 ([-2^31, 2^31 - 1]) the cross product
+ * is at most 2^63 - 2^31 in magnitude and fits int64 (its two products
+ * cannot both reach 2^62 with opposite signs); with c_mag <= 2^63 the
+ * product is below 2^126, so a sum of up to three fits two words. */
+VOR__INLINE void add_column_term(vor__mw_u128_t sums[2], uint64_t c_mag, bool c_negative,
+                                 int32_t ux, int32_t uy, int32_t vx, int32_t vy)
+{
+    int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
+    bool negative = (cross < 0) != c_negative;
+    uint64_t magnitude_of_cross = (cross < 0) ? 0u - (uint64_t)cross : (uint64_t)cross;
+    vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(c_mag, magnitude_of_cross));
+}
+
+/* x^2 + y^2 for x, y in int32: at most 2^63, a uint64. */
+VOR__INLINE uint64_t lift_i32(int32_t x, int32_t y)
+{
+    return (uint64_t)vor__mul_i32(x, x) + (uint64_t)vor__mul_i32(y, y);
+}
+
+/* Mid tier term, differences in int32: the lift <= 2^63 times a cross
+ * product, as bounded for add_column_term. d[] holds a-d, b-d, c-d as x,
+ * y pairs; the term is lift(p) cross(u, v). */
 VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p,
                           unsigned u, unsigned v)
 {
-    int32_t px = (int32_t)d[p], py = (int32_t)d[p + 1];
-    int32_t ux = (int32_t)d[u], uy = (int32_t)d[u + 1];
-    int32_t vx = (int32_t)d[v], vy = (int32_t)d[v + 1];
-    uint64_t lift = (uint64_t)vor__mul_i32(px, px) + (uint64_t)vor__mul_i32(py, py);
-    int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
-    bool negative = cross < 0;
-    uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
-    vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(lift, magnitude_of_cross));
+    add_column_term(sums, lift_i32((int32_t)d[p], (int32_t)d[p + 1]), false, (int32_t)d[u],
+                    (int32_t)d[u + 1], (int32_t)d[v], (int32_t)d[v + 1]);
 }
 
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
@@ -367,6 +380,25 @@ static int wide_det3_sign(const vor__limb *m[3][3])
     return vor__mw_sign(sum, VOR__WIDE_LIMBS);
 }
 
+/* Sign of 2y (xP yQ - yP xQ) - (xP zQ - zP xQ), z = x^2 + y^2, for
+ * coordinates in int32: the perturbation's first incircle term up to its
+ * cofactor sign (vor__incircle_perturbed). |2 (xP yQ - yP xQ)| <= 2^64 -
+ * 2^32 fits a word and |y| <= 2^31, so that product is below 2^95; z <=
+ * 2^63, so |x| z <= 2^94. Each product is a word times a half word (two
+ * limb products with 32-bit limbs), each sum of up to three < 2^96. */
+VOR__INLINE int mid_first_term(int32_t xp, int32_t yp, int32_t xq, int32_t yq, int32_t y)
+{
+    vor__mw_u128_t sums[2]; /* positive, negative */
+    sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+    int64_t cross = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+    uint64_t twice_cross = 2u * ((cross < 0) ? 0u - (uint64_t)cross : (uint64_t)cross);
+    vor__mw_u128_add_to(&sums[(cross < 0) != (y < 0)],
+                        vor__mw_u128_mul(twice_cross, vor__mw_magnitude(y)));
+    vor__mw_u128_add_to(&sums[xp > 0], vor__mw_u128_mul(lift_i32(xq, yq), vor__mw_magnitude(xp)));
+    vor__mw_u128_add_to(&sums[xq < 0], vor__mw_u128_mul(lift_i32(xp, yp), vor__mw_magnitude(xq)));
+    return vor__mw_u128_compare(sums[0], sums[1]);
+}
+
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
@@ -407,62 +439,75 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     }
     /* Small coordinates (the usual degeneracy: grids, nearby cocircular
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
-     * entry per column <= 2^57, six of them < 2^60: int64. Else 160 bits. */
+     * entry per column <= 2^57: int64. Differences in int32 (large grids,
+     * most real input): the mid tier's two-word sums. Else 160 bits. */
     bool narrow = m < (1u << 14);
+    bool mid = m < 0x80000000u;
     /* The first term (t = 1) nearly always decides: the smallest index's
      * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
      * points. Along that row, with it at minor row `low`:
-     *   det = (-1)^(low+1) (xP zQ - zP xQ) + (-1)^low 2y (xP yQ - yP xQ)
+     *   det = (-1)^low (2y (xP yQ - yP xQ) - (xP zQ - zP xQ))
      * In the narrow case every product fits int64. */
     size_t low = 0;
     for (size_t r = 1; r < 3; r++) {
         low = (ids[row[r]] < ids[row[low]]) ? r : low;
     }
+    size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
     if (narrow) {
-        size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
         int32_t xp = (int32_t)x[rp], yp = (int32_t)y[rp];
         int32_t xq = (int32_t)x[rq], yq = (int32_t)y[rq];
         int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
         int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
         int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
-        int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
-        sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
-        if (sign != 0) {
-            return (top % 2 == 0) ? -sign : sign;
-        }
+        sign = vor__mw_sign64(vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z);
+    } else if (mid) {
+        sign = mid_first_term((int32_t)x[rp], (int32_t)y[rp], (int32_t)x[rq], (int32_t)y[rq],
+                              (int32_t)y[low]);
+    }
+    if (sign != 0) {
+        sign = (low % 2u == 0u) ? sign : -sign;
+        return (top % 2 == 0) ? -sign : sign;
     }
     size_t rank[4];
     (void)rank_sites(ids, 4, rank);
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
-    if (narrow) {
+    if (mid) {
+        /* expanded along the third column: the first two hold x, y, 0 or
+         * 1, all in int32; the third x^2 + y^2 <= 2^63, 2x or 2y (at most
+         * 2^32 in magnitude) or 1, as magnitude and sign: add_column_term's
+         * bounds hold */
+        uint64_t z[3];
+        for (size_t r = 0; r < 3; r++) {
+            z[r] = lift_i32((int32_t)x[r], (int32_t)y[r]);
+        }
         for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            int32_t e[3][3];
+            int32_t e[3][2];
+            uint64_t c[3];
+            bool c_negative[3];
             unsigned squares = 0;
             for (size_t r = 0; r < 3; r++) {
                 enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
                 int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
+                int32_t halved = (kind == ROW_DY) ? yr : xr; /* of 2y or 2x */
                 e[r][0] = (kind == ROW_POINT) ? xr : (kind == ROW_DX) ? 1 : 0;
                 e[r][1] = (kind == ROW_POINT) ? yr : (kind == ROW_DY) ? 1 : 0;
-                e[r][2] = (kind == ROW_POINT) ? xr * xr + yr * yr
-                          : (kind == ROW_DY)  ? 2 * yr
-                          : (kind == ROW_DX)  ? 2 * xr
-                                              : 1;
+                c[r] = (kind == ROW_POINT)    ? z[r]
+                       : (kind == ROW_SQUARE) ? 1u
+                                              : 2u * (uint64_t)vor__mw_magnitude(halved);
+                c_negative[r] = (kind == ROW_DY || kind == ROW_DX) && halved < 0;
                 squares += (kind == ROW_SQUARE) ? 1u : 0u;
             }
             if (squares >= 2) {
                 continue; /* two equal rows: the term is 0 */
             }
-            /* entries fit int32 (<= 2^29); minors <= 2^44; terms <= 2^58 */
-            int64_t det = 0;
-            for (unsigned c = 0; c < 3; c++) {
-                unsigned c1 = next_of[c], c2 = next_of[c1];
-                int64_t minor = vor__mul_i32(e[1][c1], e[2][c2]) -
-                                vor__mul_i32(e[1][c2], e[2][c1]);
-                det += vor__mul_i64_i32(minor, e[0][c]);
-            }
-            sign = vor__mw_sign64(det);
+            vor__mw_u128_t sums[2]; /* positive, negative */
+            sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+            add_column_term(sums, c[0], c_negative[0], e[1][0], e[1][1], e[2][0], e[2][1]);
+            add_column_term(sums, c[1], c_negative[1], e[2][0], e[2][1], e[0][0], e[0][1]);
+            add_column_term(sums, c[2], c_negative[2], e[0][0], e[0][1], e[1][0], e[1][1]);
+            sign = vor__mw_u128_compare(sums[0], sums[1]);
         }
     } else {
         static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
