@@ -145,35 +145,22 @@ VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
     return 0;
 }
 
-/* sums[c (ux vy - uy vx) < 0] += |c (ux vy - uy vx)|, c = -c_mag if
- * c_negative else c_mag: one term of a 3x3 determinant expanded along its
- * third column. With u, v in int32 ([-2^31, 2^31 - 1]) the cross product
- * is at most 2^63 - 2^31 in magnitude and fits int64 (its two products
- * cannot both reach 2^62 with opposite signs); with c_mag <= 2^63 the
- * product is below 2^126, so a sum of up to three fits two words. */
-VOR__INLINE void add_column_term(vor__mw_u128_t sums[2], uint64_t c_mag, bool c_negative,
-                                 int32_t ux, int32_t uy, int32_t vx, int32_t vy)
-{
-    int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
-    bool negative = (cross < 0) != c_negative;
-    uint64_t magnitude_of_cross = (cross < 0) ? 0u - (uint64_t)cross : (uint64_t)cross;
-    vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(c_mag, magnitude_of_cross));
-}
-
-/* x^2 + y^2 for x, y in int32: at most 2^63, a uint64. */
-VOR__INLINE uint64_t lift_i32(int32_t x, int32_t y)
-{
-    return (uint64_t)vor__mul_i32(x, x) + (uint64_t)vor__mul_i32(y, y);
-}
-
-/* Mid tier term, differences in int32: the lift <= 2^63 times a cross
- * product, as bounded for add_column_term. d[] holds a-d, b-d, c-d as x,
- * y pairs; the term is lift(p) cross(u, v). */
+/* Mid tier term, differences in int32 ([-2^31, 2^31 - 1]): the lift
+ * <= 2^63 fits uint64, the cross product <= 2^63 - 2^31 fits int64 (its
+ * two products cannot both reach 2^62 with opposite signs), the product of
+ * the two < 2^126, and each sum of up to three such < 2^128: two words.
+ * d[] holds a-d, b-d, c-d as x, y pairs; the term is lift(p) cross(u, v). */
 VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p,
                           unsigned u, unsigned v)
 {
-    add_column_term(sums, lift_i32((int32_t)d[p], (int32_t)d[p + 1]), false, (int32_t)d[u],
-                    (int32_t)d[u + 1], (int32_t)d[v], (int32_t)d[v + 1]);
+    int32_t px = (int32_t)d[p], py = (int32_t)d[p + 1];
+    int32_t ux = (int32_t)d[u], uy = (int32_t)d[u + 1];
+    int32_t vx = (int32_t)d[v], vy = (int32_t)d[v + 1];
+    uint64_t lift = (uint64_t)vor__mul_i32(px, px) + (uint64_t)vor__mul_i32(py, py);
+    int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
+    bool negative = cross < 0;
+    uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
+    vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(lift, magnitude_of_cross));
 }
 
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
@@ -380,22 +367,41 @@ static int wide_det3_sign(const vor__limb *m[3][3])
     return vor__mw_sign(sum, VOR__WIDE_LIMBS);
 }
 
-/* Sign of 2y (xP yQ - yP xQ) - (xP zQ - zP xQ), z = x^2 + y^2, for
- * coordinates in int32: the perturbation's first incircle term up to its
- * cofactor sign (vor__incircle_perturbed). |2 (xP yQ - yP xQ)| <= 2^64 -
- * 2^32 fits a word and |y| <= 2^31, so that product is below 2^95; z <=
- * 2^63, so |x| z <= 2^94. Each product is a word times a half word (two
- * limb products with 32-bit limbs), each sum of up to three < 2^96. */
-VOR__INLINE int mid_first_term(int32_t xp, int32_t yp, int32_t xq, int32_t yq, int32_t y)
+/* Sign of the perturbation's term whose minor rows (x[r], y[r] relative
+ * to the top site, in int32) have the given kinds, at most one of them
+ * ROW_SQUARE: the mid tier's sums (mid_term), along the third column. The
+ * first two columns hold x, y, 0 or 1, all in int32, so each cross
+ * product of two rows fits int64 as in mid_term; the third holds x^2 + y^2
+ * <= 2^63, 2x or 2y (at most 2^32 in magnitude) or 1, taken as magnitude
+ * and sign; each product < 2^126, each sum of up to three < 2^128. Out of
+ * line: one copy serves the first term and the later ones. */
+static VOR__NOINLINE int mid_term_sign(const int64_t x[3], const int64_t y[3],
+                                       const enum row_kind kind[3])
 {
+    int32_t e[3][2];
+    uint64_t c[3];
+    bool c_negative[3];
+    for (size_t r = 0; r < 3; r++) {
+        int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
+        int32_t halved = (kind[r] == ROW_DY) ? yr : xr; /* of 2y or 2x */
+        e[r][0] = (kind[r] == ROW_POINT) ? xr : (kind[r] == ROW_DX) ? 1 : 0;
+        e[r][1] = (kind[r] == ROW_POINT) ? yr : (kind[r] == ROW_DY) ? 1 : 0;
+        c[r] = (kind[r] == ROW_POINT)
+                   ? (uint64_t)vor__mul_i32(xr, xr) + (uint64_t)vor__mul_i32(yr, yr)
+               : (kind[r] == ROW_SQUARE) ? 1u
+                                         : 2u * (uint64_t)vor__mw_magnitude(halved);
+        c_negative[r] = (kind[r] == ROW_DY || kind[r] == ROW_DX) && halved < 0;
+    }
     vor__mw_u128_t sums[2]; /* positive, negative */
     sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
-    int64_t cross = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
-    uint64_t twice_cross = 2u * ((cross < 0) ? 0u - (uint64_t)cross : (uint64_t)cross);
-    vor__mw_u128_add_to(&sums[(cross < 0) != (y < 0)],
-                        vor__mw_u128_mul(twice_cross, vor__mw_magnitude(y)));
-    vor__mw_u128_add_to(&sums[xp > 0], vor__mw_u128_mul(lift_i32(xq, yq), vor__mw_magnitude(xp)));
-    vor__mw_u128_add_to(&sums[xq < 0], vor__mw_u128_mul(lift_i32(xp, yp), vor__mw_magnitude(xq)));
+    for (unsigned r = 0; r < 3; r++) {
+        unsigned u = next_of[r], v = next_of[u];
+        int64_t cross = vor__mul_i32(e[u][0], e[v][1]) - vor__mul_i32(e[u][1], e[v][0]);
+        bool negative = cross < 0;
+        uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
+        vor__mw_u128_add_to(&sums[negative != c_negative[r]],
+                            vor__mw_u128_mul(c[r], magnitude_of_cross));
+    }
     return vor__mw_u128_compare(sums[0], sums[1]);
 }
 
@@ -447,25 +453,27 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
      * points. Along that row, with it at minor row `low`:
      *   det = (-1)^low (2y (xP yQ - yP xQ) - (xP zQ - zP xQ))
-     * In the narrow case every product fits int64. */
+     * In the narrow case every product fits int64; in the mid case the
+     * term goes to mid_term_sign like the later ones, without the ranks. */
     size_t low = 0;
     for (size_t r = 1; r < 3; r++) {
         low = (ids[row[r]] < ids[row[low]]) ? r : low;
     }
-    size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
     if (narrow) {
+        size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
         int32_t xp = (int32_t)x[rp], yp = (int32_t)y[rp];
         int32_t xq = (int32_t)x[rq], yq = (int32_t)y[rq];
         int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
         int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
         int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
-        sign = vor__mw_sign64(vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z);
+        int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
+        sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
     } else if (mid) {
-        sign = mid_first_term((int32_t)x[rp], (int32_t)y[rp], (int32_t)x[rq], (int32_t)y[rq],
-                              (int32_t)y[low]);
+        enum row_kind first[3] = {ROW_POINT, ROW_POINT, ROW_POINT};
+        first[low] = ROW_DY;
+        sign = mid_term_sign(x, y, first);
     }
     if (sign != 0) {
-        sign = (low % 2u == 0u) ? sign : -sign;
         return (top % 2 == 0) ? -sign : sign;
     }
     size_t rank[4];
@@ -474,40 +482,16 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
     if (mid) {
-        /* expanded along the third column: the first two hold x, y, 0 or
-         * 1, all in int32; the third x^2 + y^2 <= 2^63, 2x or 2y (at most
-         * 2^32 in magnitude) or 1, as magnitude and sign: add_column_term's
-         * bounds hold */
-        uint64_t z[3];
-        for (size_t r = 0; r < 3; r++) {
-            z[r] = lift_i32((int32_t)x[r], (int32_t)y[r]);
-        }
         for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            int32_t e[3][2];
-            uint64_t c[3];
-            bool c_negative[3];
+            enum row_kind kind[3];
             unsigned squares = 0;
             for (size_t r = 0; r < 3; r++) {
-                enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
-                int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
-                int32_t halved = (kind == ROW_DY) ? yr : xr; /* of 2y or 2x */
-                e[r][0] = (kind == ROW_POINT) ? xr : (kind == ROW_DX) ? 1 : 0;
-                e[r][1] = (kind == ROW_POINT) ? yr : (kind == ROW_DY) ? 1 : 0;
-                c[r] = (kind == ROW_POINT)    ? z[r]
-                       : (kind == ROW_SQUARE) ? 1u
-                                              : 2u * (uint64_t)vor__mw_magnitude(halved);
-                c_negative[r] = (kind == ROW_DY || kind == ROW_DX) && halved < 0;
-                squares += (kind == ROW_SQUARE) ? 1u : 0u;
+                kind[r] = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
+                squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
             }
-            if (squares >= 2) {
-                continue; /* two equal rows: the term is 0 */
+            if (squares < 2) { /* else two equal rows: the term is 0 */
+                sign = mid_term_sign(x, y, kind);
             }
-            vor__mw_u128_t sums[2]; /* positive, negative */
-            sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
-            add_column_term(sums, c[0], c_negative[0], e[1][0], e[1][1], e[2][0], e[2][1]);
-            add_column_term(sums, c[1], c_negative[1], e[2][0], e[2][1], e[0][0], e[0][1]);
-            add_column_term(sums, c[2], c_negative[2], e[0][0], e[0][1], e[1][0], e[1][1]);
-            sign = vor__mw_u128_compare(sums[0], sums[1]);
         }
     } else {
         static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
