@@ -405,6 +405,47 @@ static VOR__NOINLINE int mid_term_sign(const int64_t x[3], const int64_t y[3],
     return vor__mw_u128_compare(sums[0], sums[1]);
 }
 
+/* The sign of the first nonzero perturbation term t = 1, 2, ... of
+ * vor__incircle_perturbed in 160 bits, for differences of 32 bits: row r
+ * has kind (t >> shift[r]) & 3. Out of line, so that its limb arrays are
+ * not on the stack of the narrow and mid paths. */
+static VOR__NOINLINE int wide_terms_sign(const int64_t x[3], const int64_t y[3],
+                                         const unsigned shift[3])
+{
+    int sign = 0;
+    static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
+    vor__limb one[VOR__WIDE_LIMBS], yy[VOR__WIDE_LIMBS];
+    vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
+    wide_from(one, 1);
+    for (size_t r = 0; r < 3; r++) {
+        wide_from(point[r][0], x[r]);
+        wide_from(point[r][1], y[r]);
+        wide_mul(point[r][2], point[r][0], point[r][0]);
+        wide_mul(yy, point[r][1], point[r][1]);
+        vor__mw_add(point[r][2], yy, VOR__WIDE_LIMBS);
+        wide_from(twice[r][0], 2 * x[r]);
+        wide_from(twice[r][1], 2 * y[r]);
+    }
+    for (unsigned t = 1; t < 64 && sign == 0; t++) {
+        const vor__limb *w[3][3];
+        unsigned squares = 0;
+        for (size_t r = 0; r < 3; r++) {
+            enum row_kind kind = (enum row_kind)((t >> shift[r]) & 3u);
+            w[r][0] = (kind == ROW_POINT) ? point[r][0] : (kind == ROW_DX) ? one : zero;
+            w[r][1] = (kind == ROW_POINT) ? point[r][1] : (kind == ROW_DY) ? one : zero;
+            w[r][2] = (kind == ROW_POINT) ? point[r][2]
+                      : (kind == ROW_DY)  ? twice[r][1]
+                      : (kind == ROW_DX)  ? twice[r][0]
+                                          : one;
+            squares += (kind == ROW_SQUARE) ? 1u : 0u;
+        }
+        if (squares < 2) { /* else two equal rows: the term is 0 */
+            sign = wide_det3_sign(w);
+        }
+    }
+    return sign;
+}
+
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
@@ -481,12 +522,16 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
+    unsigned shift[3];
+    for (size_t r = 0; r < 3; r++) {
+        shift[r] = (unsigned)(2 * rank[row[r]]);
+    }
     if (mid) {
         for (unsigned t = 1; t < 64 && sign == 0; t++) {
             enum row_kind kind[3];
             unsigned squares = 0;
             for (size_t r = 0; r < 3; r++) {
-                kind[r] = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
+                kind[r] = (enum row_kind)((t >> shift[r]) & 3u);
                 squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
             }
             if (squares < 2) { /* else two equal rows: the term is 0 */
@@ -494,36 +539,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
             }
         }
     } else {
-        static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
-        vor__limb one[VOR__WIDE_LIMBS], yy[VOR__WIDE_LIMBS];
-        vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
-        wide_from(one, 1);
-        for (size_t r = 0; r < 3; r++) {
-            wide_from(point[r][0], x[r]);
-            wide_from(point[r][1], y[r]);
-            wide_mul(point[r][2], point[r][0], point[r][0]);
-            wide_mul(yy, point[r][1], point[r][1]);
-            vor__mw_add(point[r][2], yy, VOR__WIDE_LIMBS);
-            wide_from(twice[r][0], 2 * x[r]);
-            wide_from(twice[r][1], 2 * y[r]);
-        }
-        for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            const vor__limb *w[3][3];
-            unsigned squares = 0;
-            for (size_t r = 0; r < 3; r++) {
-                enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
-                w[r][0] = (kind == ROW_POINT) ? point[r][0] : (kind == ROW_DX) ? one : zero;
-                w[r][1] = (kind == ROW_POINT) ? point[r][1] : (kind == ROW_DY) ? one : zero;
-                w[r][2] = (kind == ROW_POINT) ? point[r][2]
-                          : (kind == ROW_DY)  ? twice[r][1]
-                          : (kind == ROW_DX)  ? twice[r][0]
-                                              : one;
-                squares += (kind == ROW_SQUARE) ? 1u : 0u;
-            }
-            if (squares < 2) { /* else two equal rows: the term is 0 */
-                sign = wide_det3_sign(w);
-            }
-        }
+        sign = wide_terms_sign(x, y, shift);
     }
     VOR_ASSERT(sign != 0);
     /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */
