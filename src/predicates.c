@@ -413,16 +413,15 @@ static VOR__NOINLINE int wide_terms_sign(const int64_t x[3], const int64_t y[3],
                                          const unsigned shift[3])
 {
     int sign = 0;
-    static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
-    vor__limb one[VOR__WIDE_LIMBS], yy[VOR__WIDE_LIMBS];
+    /* constants, least significant limb first, out of the frame */
+    static const vor__limb zero[VOR__WIDE_LIMBS] = {0}, one[VOR__WIDE_LIMBS] = {1};
     vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
-    wide_from(one, 1);
     for (size_t r = 0; r < 3; r++) {
         wide_from(point[r][0], x[r]);
         wide_from(point[r][1], y[r]);
         wide_mul(point[r][2], point[r][0], point[r][0]);
-        wide_mul(yy, point[r][1], point[r][1]);
-        vor__mw_add(point[r][2], yy, VOR__WIDE_LIMBS);
+        wide_mul(twice[r][0], point[r][1], point[r][1]); /* y^2, before 2x */
+        vor__mw_add(point[r][2], twice[r][0], VOR__WIDE_LIMBS);
         wide_from(twice[r][0], 2 * x[r]);
         wide_from(twice[r][1], 2 * y[r]);
     }
