@@ -3,7 +3,9 @@
  * test_predicates.c - the exact predicates against the independent oracle
  * (tools/gen_predicate_vectors.py, Python big integers), plus properties
  * the oracle does not state: sign changes under row swaps, tier coverage
- * and counters, and the multiply helpers against the compiler's own.
+ * and counters, and the multiply helpers against the compiler's own; and
+ * the perturbed signs against the perturbation's definition, evaluated
+ * here without any of the library's reductions.
  */
 #include "test.h"
 
