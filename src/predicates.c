@@ -372,6 +372,84 @@ static int wide_det3_sign(const vor__limb *m[3][3])
     return vor__mw_sign(sum, VOR__WIDE_LIMBS);
 }
 
+/* Sign of the perturbation's term whose minor rows (x[r], y[r] relative
+ * to the top site, in int32) have the given kinds, at most one of them
+ * ROW_SQUARE: the mid tier's sums (mid_term), along the third column. The
+ * first two columns hold x, y, 0 or 1, all in int32, so each cross
+ * product of two rows fits int64 as in mid_term; the third holds x^2 + y^2
+ * <= 2^63, 2x or 2y (at most 2^32 in magnitude) or 1, taken as magnitude
+ * and sign; each product < 2^126, each sum of up to three < 2^128. Out of
+ * line: one copy serves the first term and the later ones. */
+static VOR__NOINLINE int mid_term_sign(const int64_t x[3], const int64_t y[3],
+                                       const enum row_kind kind[3])
+{
+    int32_t e[3][2];
+    uint64_t c[3];
+    bool c_negative[3];
+    for (size_t r = 0; r < 3; r++) {
+        int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
+        int32_t halved = (kind[r] == ROW_DY) ? yr : xr; /* of 2y or 2x */
+        e[r][0] = (kind[r] == ROW_POINT) ? xr : (kind[r] == ROW_DX) ? 1 : 0;
+        e[r][1] = (kind[r] == ROW_POINT) ? yr : (kind[r] == ROW_DY) ? 1 : 0;
+        c[r] = (kind[r] == ROW_POINT)
+                   ? (uint64_t)vor__mul_i32(xr, xr) + (uint64_t)vor__mul_i32(yr, yr)
+               : (kind[r] == ROW_SQUARE) ? 1u
+                                         : 2u * (uint64_t)vor__mw_magnitude(halved);
+        c_negative[r] = (kind[r] == ROW_DY || kind[r] == ROW_DX) && halved < 0;
+    }
+    vor__mw_u128_t sums[2]; /* positive, negative */
+    sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+    for (unsigned r = 0; r < 3; r++) {
+        unsigned u = next_of[r], v = next_of[u];
+        int64_t cross = vor__mul_i32(e[u][0], e[v][1]) - vor__mul_i32(e[u][1], e[v][0]);
+        bool negative = cross < 0;
+        uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
+        vor__mw_u128_add_to(&sums[negative != c_negative[r]],
+                            vor__mw_u128_mul(c[r], magnitude_of_cross));
+    }
+    return vor__mw_u128_compare(sums[0], sums[1]);
+}
+
+/* The sign of the first nonzero perturbation term t = 1, 2, ... of
+ * vor__incircle_perturbed in 160 bits, for differences of 32 bits: row r
+ * has kind (t >> shift[r]) & 3. Out of line, so that its limb arrays are
+ * not on the stack of the narrow and mid paths. */
+static VOR__NOINLINE int wide_terms_sign(const int64_t x[3], const int64_t y[3],
+                                         const unsigned shift[3])
+{
+    int sign = 0;
+    /* constants, least significant limb first, out of the frame */
+    static const vor__limb zero[VOR__WIDE_LIMBS] = {0}, one[VOR__WIDE_LIMBS] = {1};
+    vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
+    for (size_t r = 0; r < 3; r++) {
+        wide_from(point[r][0], x[r]);
+        wide_from(point[r][1], y[r]);
+        wide_mul(point[r][2], point[r][0], point[r][0]);
+        wide_mul(twice[r][0], point[r][1], point[r][1]); /* y^2, before 2x */
+        vor__mw_add(point[r][2], twice[r][0], VOR__WIDE_LIMBS);
+        wide_from(twice[r][0], 2 * x[r]);
+        wide_from(twice[r][1], 2 * y[r]);
+    }
+    for (unsigned t = 1; t < 64 && sign == 0; t++) {
+        const vor__limb *w[3][3];
+        unsigned squares = 0;
+        for (size_t r = 0; r < 3; r++) {
+            enum row_kind kind = (enum row_kind)((t >> shift[r]) & 3u);
+            w[r][0] = (kind == ROW_POINT) ? point[r][0] : (kind == ROW_DX) ? one : zero;
+            w[r][1] = (kind == ROW_POINT) ? point[r][1] : (kind == ROW_DY) ? one : zero;
+            w[r][2] = (kind == ROW_POINT) ? point[r][2]
+                      : (kind == ROW_DY)  ? twice[r][1]
+                      : (kind == ROW_DX)  ? twice[r][0]
+                                          : one;
+            squares += (kind == ROW_SQUARE) ? 1u : 0u;
+        }
+        if (squares < 2) { /* else two equal rows: the term is 0 */
+            sign = wide_det3_sign(w);
+        }
+    }
+    return sign;
+}
+
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
 {
@@ -412,13 +490,16 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     }
     /* Small coordinates (the usual degeneracy: grids, nearby cocircular
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
-     * entry per column <= 2^57, six of them < 2^60: int64. Else 160 bits. */
+     * entry per column <= 2^57: int64. Differences in int32 (large grids,
+     * most real input): the mid tier's two-word sums. Else 160 bits. */
     bool narrow = m < (1u << 14);
+    bool mid = m < 0x80000000u;
     /* The first term (t = 1) nearly always decides: the smallest index's
      * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
      * points. Along that row, with it at minor row `low`:
-     *   det = (-1)^(low+1) (xP zQ - zP xQ) + (-1)^low 2y (xP yQ - yP xQ)
-     * In the narrow case every product fits int64. */
+     *   det = (-1)^low (2y (xP yQ - yP xQ) - (xP zQ - zP xQ))
+     * In the narrow case every product fits int64; in the mid case the
+     * term goes to mid_term_sign like the later ones, without the ranks. */
     size_t low = 0;
     for (size_t r = 1; r < 3; r++) {
         low = (ids[row[r]] < ids[row[low]]) ? r : low;
@@ -432,74 +513,37 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
         int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
         sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
-        if (sign != 0) {
-            return (top % 2 == 0) ? -sign : sign;
-        }
+    } else if (mid) {
+        enum row_kind first[3] = {ROW_POINT, ROW_POINT, ROW_POINT};
+        first[low] = ROW_DY;
+        sign = mid_term_sign(x, y, first);
+    }
+    if (sign != 0) {
+        return (top % 2 == 0) ? -sign : sign;
     }
     size_t rank[4];
     (void)rank_sites(ids, 4, rank);
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
-    if (narrow) {
+    unsigned shift[3];
+    for (size_t r = 0; r < 3; r++) {
+        shift[r] = (unsigned)(2 * rank[row[r]]);
+    }
+    if (mid) {
         for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            int32_t e[3][3];
+            enum row_kind kind[3];
             unsigned squares = 0;
             for (size_t r = 0; r < 3; r++) {
-                enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
-                int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
-                e[r][0] = (kind == ROW_POINT) ? xr : (kind == ROW_DX) ? 1 : 0;
-                e[r][1] = (kind == ROW_POINT) ? yr : (kind == ROW_DY) ? 1 : 0;
-                e[r][2] = (kind == ROW_POINT) ? xr * xr + yr * yr
-                          : (kind == ROW_DY)  ? 2 * yr
-                          : (kind == ROW_DX)  ? 2 * xr
-                                              : 1;
-                squares += (kind == ROW_SQUARE) ? 1u : 0u;
-            }
-            if (squares >= 2) {
-                continue; /* two equal rows: the term is 0 */
-            }
-            /* entries fit int32 (<= 2^29); minors <= 2^44; terms <= 2^58 */
-            int64_t det = 0;
-            for (unsigned c = 0; c < 3; c++) {
-                unsigned c1 = next_of[c], c2 = next_of[c1];
-                int64_t minor = vor__mul_i32(e[1][c1], e[2][c2]) -
-                                vor__mul_i32(e[1][c2], e[2][c1]);
-                det += vor__mul_i64_i32(minor, e[0][c]);
-            }
-            sign = vor__mw_sign64(det);
-        }
-    } else {
-        static const vor__limb zero[VOR__WIDE_LIMBS] = {0};
-        vor__limb one[VOR__WIDE_LIMBS], yy[VOR__WIDE_LIMBS];
-        vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
-        wide_from(one, 1);
-        for (size_t r = 0; r < 3; r++) {
-            wide_from(point[r][0], x[r]);
-            wide_from(point[r][1], y[r]);
-            wide_mul(point[r][2], point[r][0], point[r][0]);
-            wide_mul(yy, point[r][1], point[r][1]);
-            vor__mw_add(point[r][2], yy, VOR__WIDE_LIMBS);
-            wide_from(twice[r][0], 2 * x[r]);
-            wide_from(twice[r][1], 2 * y[r]);
-        }
-        for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            const vor__limb *w[3][3];
-            unsigned squares = 0;
-            for (size_t r = 0; r < 3; r++) {
-                enum row_kind kind = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
-                w[r][0] = (kind == ROW_POINT) ? point[r][0] : (kind == ROW_DX) ? one : zero;
-                w[r][1] = (kind == ROW_POINT) ? point[r][1] : (kind == ROW_DY) ? one : zero;
-                w[r][2] = (kind == ROW_POINT) ? point[r][2]
-                          : (kind == ROW_DY)  ? twice[r][1]
-                          : (kind == ROW_DX)  ? twice[r][0]
-                                              : one;
-                squares += (kind == ROW_SQUARE) ? 1u : 0u;
+                kind[r] = (enum row_kind)((t >> shift[r]) & 3u);
+                squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
             }
             if (squares < 2) { /* else two equal rows: the term is 0 */
-                sign = wide_det3_sign(w);
+                sign = mid_term_sign(x, y, kind);
             }
         }
+    } else {
+        sign = wide_terms_sign(x, y, shift);
     }
     VOR_ASSERT(sign != 0);
     /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */

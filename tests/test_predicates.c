@@ -3,7 +3,9 @@
  * test_predicates.c - the exact predicates against the independent oracle
  * (tools/gen_predicate_vectors.py, Python big integers), plus properties
  * the oracle does not state: sign changes under row swaps, tier coverage
- * and counters, and the multiply helpers against the compiler's own.
+ * and counters, and the multiply helpers against the compiler's own; and
+ * the perturbed signs against the perturbation's definition, evaluated
+ * here without any of the library's reductions.
  */
 #include "test.h"
 
@@ -228,10 +230,271 @@ static void check_grid_antisymmetry(void)
     CHECK(bad == 0 && count > 1000, "grid antisymmetry: %u of %u wrong", bad, count);
 }
 
+/* ------------------------------------------------------------------ */
+/* The perturbation against its definition                            */
+/*
+ * An independent evaluation of the perturbed signs: straight from the
+ * definition in predicates.c, site i moved by dx_i = eps^(4 * 16^i), dy_i =
+ * eps^(16^i), with none of the library's reductions (no translation, no
+ * minor, no tiers, no closed forms, the dx^2 terms kept). Expanding
+ * (x + dx)^2 + (y + dy)^2 gives each site's row as a sum of monomials,
+ * whose exponent is a base-16 digit at the site's index: 0 for the point
+ * itself, 1 for dy, 2 for dy^2, 4 for dx, 8 for dx^2. The sign is that of
+ * the first nonzero determinant in increasing exponent order: digits
+ * counted like an odometer, the largest index most significant. The
+ * determinants come from the Leibniz formula in 160-bit limbs.
+ */
+#define REF_LIMBS VOR__LIMBS(160)
+
+/* One row of the perturbed determinant: site (x, y)'s monomial `digit`. */
+static void ref_row(int64_t row[4], uint64_t *lift, int orient, int32_t x, int32_t y,
+                    unsigned digit)
+{
+    static const int64_t unit[9][2] = {{0, 0}, {0, 1}, {0, 0}, {0, 0}, {1, 0},
+                                       {0, 0}, {0, 0}, {0, 0}, {0, 0}};
+    row[0] = (digit == 0) ? x : unit[digit][0];
+    row[1] = (digit == 0) ? y : unit[digit][1];
+    /* the third column of orient2d is the constant 1; of incircle, the
+     * lift: x^2 + y^2 <= 2^63 held apart in *lift (uint64), 2y, 1, 2x, 1 */
+    *lift = 0;
+    if (orient) {
+        row[2] = (digit == 0) ? 1 : 0;
+        row[3] = 0;
+        return;
+    }
+    *lift = (digit == 0) ? (uint64_t)((int64_t)x * x) + (uint64_t)((int64_t)y * y) : 0u;
+    row[2] = (digit == 1) ? 2 * (int64_t)y : (digit == 4) ? 2 * (int64_t)x
+                                           : (digit == 2 || digit == 8) ? 1 : 0;
+    row[3] = (digit == 0) ? 1 : 0;
+}
+
+/* Sign of the n x n determinant (n = 3 or 4) of rows whose first two
+ * entries are x, y, 0 or 1 (products < 2^63), the third a lift (uint64,
+ * lifts[r] when nonzero) or |.| <= 2^32, the fourth 0 or 1: each Leibniz
+ * product < 2^126, the sum of 24 < 2^131. */
+static int ref_det_sign(int64_t rows[4][4], const uint64_t lifts[4], unsigned n)
+{
+    static const unsigned char perms[24][4] = {
+        {0, 1, 2, 3}, {0, 1, 3, 2}, {0, 2, 1, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {0, 3, 2, 1},
+        {1, 0, 2, 3}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 2, 3, 0}, {1, 3, 0, 2}, {1, 3, 2, 0},
+        {2, 0, 1, 3}, {2, 0, 3, 1}, {2, 1, 0, 3}, {2, 1, 3, 0}, {2, 3, 0, 1}, {2, 3, 1, 0},
+        {3, 0, 1, 2}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 1, 2, 0}, {3, 2, 0, 1}, {3, 2, 1, 0}};
+    vor__limb sum[REF_LIMBS], a[REF_LIMBS], b[REF_LIMBS], product[REF_LIMBS];
+    vor__mw_from_i64(sum, REF_LIMBS, 0);
+    for (unsigned p = 0; p < 24; p++) {
+        const unsigned char *s = perms[p];
+        if (n == 3 && s[3] != 3) {
+            continue; /* the 3 x 3 case: permutations fixing the 4th row */
+        }
+        unsigned inversions = 0;
+        for (unsigned i = 0; i < 4; i++) {
+            for (unsigned j = i + 1; j < 4; j++) {
+                inversions += (s[i] > s[j]) ? 1u : 0u;
+            }
+        }
+        int64_t last = (n == 4) ? rows[s[3]][3] : 1;
+        if (last == 0) {
+            continue;
+        }
+        vor__mw_from_i64(a, REF_LIMBS, rows[s[0]][0] * rows[s[1]][1]);
+        if (lifts[s[2]] != 0u) {
+            vor__mw_from_u64(b, REF_LIMBS, lifts[s[2]]);
+        } else {
+            vor__mw_from_i64(b, REF_LIMBS, rows[s[2]][2]);
+        }
+        vor__mw_mul(product, REF_LIMBS, a, REF_LIMBS, b, REF_LIMBS);
+        if (inversions % 2u == 0u) {
+            vor__mw_add(sum, product, REF_LIMBS);
+        } else {
+            vor__mw_sub(sum, product, REF_LIMBS);
+        }
+    }
+    return vor__mw_sign(sum, REF_LIMBS);
+}
+
+/* The perturbed sign of orient2d (n = 3) or incircle (n = 4) of the sites
+ * ids[0..n) in that argument order, ids a permutation of 0..n-1; *first
+ * gets the position of the deciding term in the order (0: exact). */
+static int ref_perturbed(const vor_point_t sites[4], const uint32_t ids[4], unsigned n,
+                         unsigned *first)
+{
+    static const unsigned digits_incircle[5] = {0, 1, 2, 4, 8};
+    static const unsigned digits_orient[3] = {0, 1, 4};
+    const unsigned *digits = (n == 3) ? digits_orient : digits_incircle;
+    unsigned radix = (n == 3) ? 3u : 5u;
+    unsigned odometer[4] = {0, 0, 0, 0}; /* digit position per site index */
+    for (unsigned term = 0;; term++) {
+        int64_t rows[4][4];
+        uint64_t lifts[4];
+        for (unsigned r = 0; r < n; r++) {
+            const vor_point_t *p = &sites[ids[r]];
+            ref_row(rows[r], &lifts[r], n == 3, p->x, p->y, digits[odometer[ids[r]]]);
+        }
+        int sign = ref_det_sign(rows, lifts, n);
+        if (sign != 0) {
+            *first = term;
+            return sign;
+        }
+        unsigned i = 0; /* next term: ends by radix^n terms (all dx^2: unit rows) */
+        while (i < n && ++odometer[i] == radix) {
+            odometer[i++] = 0;
+        }
+        if (i == n) {
+            return 0;
+        }
+    }
+}
+
+/* A random int32 origin leaving room for a span of `span` (< 2^32). */
+static int32_t origin_for(test_rng_t *rng, int64_t span)
+{
+    return test_rng_range(rng, INT32_MIN, (int32_t)(INT32_MAX - span));
+}
+
+/* Four points of a family chosen by `family`, differences below 2^bits
+ * (bits <= 32). */
+static void degenerate_quad(test_rng_t *rng, unsigned family, unsigned bits, vor_point_t q[4])
+{
+    int64_t limit = (int64_t)1 << bits; /* spans below it */
+    int64_t unit = test_rng_range(rng, 1, (int32_t)((limit - 1) / 4 > 0 ? (limit - 1) / 4 : 1));
+    switch (family) {
+    case 0: /* rectangle corners on a lattice of random spacing: cocircular */
+    case 3:   /* the same with one corner doubled */
+    case 5: { /* spacings at the tiers' edges (differences -2^31 and 2^31 - 1) */
+        static const int64_t edges[6] = {1, 0x3FFF, 0x4000, 0x7FFFFFFF, 0x80000000,
+                                         0xFFFFFFFF};
+        int64_t sx = unit * test_rng_range(rng, 1, 4), sy = unit * test_rng_range(rng, 1, 4);
+        if (family == 5) {
+            sx = edges[test_rng_range(rng, 0, 5)];
+            sy = edges[test_rng_range(rng, 0, 5)];
+        }
+        if (test_rng_u32(rng) & 1u) {
+            sy = sx; /* a lattice square, as on a grid */
+        }
+        int32_t ox = origin_for(rng, sx), oy = origin_for(rng, sy);
+        for (unsigned k = 0; k < 4; k++) {
+            q[k].x = (int32_t)(ox + ((k & 1u) ? sx : 0));
+            q[k].y = (int32_t)(oy + ((k & 2u) ? sy : 0));
+        }
+        if (family == 3) {
+            q[test_rng_range(rng, 0, 3)] = q[test_rng_range(rng, 0, 3)];
+        }
+        break;
+    }
+    case 1: { /* four of the twelve lattice points of radius 5 k: cocircular */
+        static const int8_t circle[12][2] = {{5, 0},  {0, 5},  {-5, 0}, {0, -5},
+                                             {3, 4},  {4, 3},  {-3, 4}, {-4, 3},
+                                             {3, -4}, {4, -3}, {-3, -4}, {-4, -3}};
+        int64_t k = unit / 3 + 1;
+        int32_t cx = (int32_t)(origin_for(rng, 10 * k) + 5 * k);
+        int32_t cy = (int32_t)(origin_for(rng, 10 * k) + 5 * k);
+        unsigned used = 0;
+        for (unsigned n = 0; n < 4;) {
+            unsigned c = (unsigned)test_rng_range(rng, 0, 11);
+            if ((used >> c) & 1u) {
+                continue;
+            }
+            used |= 1u << c;
+            q[n].x = (int32_t)(cx + k * circle[c][0]);
+            q[n].y = (int32_t)(cy + k * circle[c][1]);
+            n++;
+        }
+        break;
+    }
+    case 2: { /* collinear, duplicates allowed; sometimes along an axis */
+        int64_t dx = test_rng_range(rng, 0, (int32_t)unit);
+        int64_t dy = test_rng_range(rng, 0, (int32_t)unit);
+        unsigned axis = test_rng_u32(rng) % 4u;
+        dx = (axis == 1u) ? 0 : dx;
+        dy = (axis == 2u) ? 0 : dy;
+        int32_t ox = origin_for(rng, 4 * dx), oy = origin_for(rng, 4 * dy);
+        for (unsigned k = 0; k < 4; k++) {
+            int64_t a = test_rng_range(rng, 0, 4);
+            q[k].x = (int32_t)(ox + a * dx);
+            q[k].y = (int32_t)(oy + a * dy);
+        }
+        break;
+    }
+    default: { /* random, in a box of span below 2^bits */
+        int32_t ox = origin_for(rng, limit - 1), oy = origin_for(rng, limit - 1);
+        for (unsigned k = 0; k < 4; k++) {
+            q[k].x = (int32_t)(ox + (int64_t)(test_rng_u32(rng) & (uint32_t)(limit - 1)));
+            q[k].y = (int32_t)(oy + (int64_t)(test_rng_u32(rng) & (uint32_t)(limit - 1)));
+        }
+        break;
+    }
+    }
+}
+
+/* vor_orient2d_sos and vor_incircle_sos against ref_perturbed on
+ * degenerate and random quads with differences up to 32 bits, under
+ * every assignment of the indices 0..3 to the points. */
+static void check_perturbation_reference(void)
+{
+    static const unsigned sizes[] = {8, 14, 15, 20, 30, 31, 32};
+    test_rng_t rng;
+    test_rng_seed(&rng, 16);
+    vor_predicate_stats_t stats = {0};
+    unsigned long checked = 0, bad = 0, later_terms = 0, perturbed = 0;
+    for (unsigned n = 0; n < 420; n++) {
+        vor_point_t q[4];
+        unsigned bits = sizes[n % 7u];
+        degenerate_quad(&rng, (n / 7u) % 6u, bits, q);
+        /* every assignment of indices to points (ids[k] holds point k) */
+        for (unsigned p = 0; p < 24; p++) {
+            uint32_t ids[4] = {0, 0, 0, 0};
+            for (unsigned k = 0, left = p, used = 0; k < 4; k++) {
+                unsigned pick = left % (4u - k); /* the pick-th unused index */
+                left /= 4u - k;
+                uint32_t id = 0;
+                while (((used >> id) & 1u) != 0u || pick-- != 0u) {
+                    id++;
+                }
+                used |= 1u << id;
+                ids[k] = id;
+            }
+            vor_point_t sites[4];
+            for (unsigned k = 0; k < 4; k++) {
+                sites[ids[k]] = q[k];
+            }
+            unsigned first;
+            int want = ref_perturbed(sites, ids, 4, &first);
+            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3], &stats);
+            bad += (got != want || want == 0) ? 1u : 0u;
+            perturbed += (first != 0u) ? 1u : 0u;
+            later_terms += (first > 1u && bits <= 30u) ? 1u : 0u;
+            if (got != want && bad < 5) {
+                test_printf("incircle (%d,%d) (%d,%d) (%d,%d) (%d,%d) ids %u %u %u %u: "
+                            "%d, expected %d (term %u)\n",
+                            (int)q[0].x, (int)q[0].y, (int)q[1].x, (int)q[1].y, (int)q[2].x,
+                            (int)q[2].y, (int)q[3].x, (int)q[3].y, (unsigned)ids[0],
+                            (unsigned)ids[1], (unsigned)ids[2], (unsigned)ids[3], got, want,
+                            first);
+            }
+            if (ids[3] == 3u) { /* the first three points, all 6 orders */
+                want = ref_perturbed(sites, ids, 3, &first);
+                got = vor_orient2d_sos(sites, ids[0], ids[1], ids[2], NULL);
+                bad += (got != want || want == 0) ? 1u : 0u;
+                checked++;
+            }
+            checked++;
+        }
+    }
+    test_printf("perturbation reference: %lu signs, %lu perturbed incircle, %lu decided "
+                "after the first term (differences < 2^31)\n",
+                checked, perturbed, later_terms);
+    CHECK(bad == 0, "perturbed signs: %lu of %lu differ from the reference", bad, checked);
+    /* the mid tier's first term and its later terms both ran */
+    CHECK(stats.incircle_perturbed > 2000u && later_terms > 100u,
+          "perturbed incircle %u, decided by later terms %lu", stats.incircle_perturbed,
+          later_terms);
+}
+
 void test_predicates(void)
 {
     check_multiply();
     check_shift();
     check_vectors();
     check_grid_antisymmetry();
+    check_perturbation_reference();
 }
