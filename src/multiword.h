@@ -575,4 +575,43 @@ VOR__HELPER int vor__mw_i96_greater(vor__mw_i96_t p, vor__mw_i96_t q)
     return p.hi > q.hi || (p.hi == q.hi && p.lo > q.lo);
 }
 
+/* ------------------------------------------------------------ 192 bits */
+
+/* An unsigned 192-bit value in three words: the incircle's wide-tier
+ * sums of products of two 65-bit factors (predicates.c). */
+typedef struct vor__mw_u192 {
+    uint64_t w[3];
+} vor__mw_u192_t;
+
+/* *acc += (a + a_high 2^64) * (b + b_high 2^64), a_high, b_high in {0, 1}. */
+VOR__INLINE void vor__mw_u192_add_product(vor__mw_u192_t *acc, uint64_t a, uint64_t a_high,
+                                          uint64_t b, uint64_t b_high)
+{
+    uint64_t w1, w0 = vor__mul_u64(a, b, &w1);
+    uint64_t w2 = a_high & b_high;
+    uint64_t add = (0u - a_high) & b;
+    w1 += add;
+    w2 += (w1 < add) ? 1u : 0u;
+    add = (0u - b_high) & a;
+    w1 += add;
+    w2 += (w1 < add) ? 1u : 0u;
+    acc->w[0] += w0;
+    uint64_t carry = (acc->w[0] < w0) ? 1u : 0u;
+    w1 += carry;
+    w2 += (w1 < carry) ? 1u : 0u;
+    acc->w[1] += w1;
+    acc->w[2] += w2 + ((acc->w[1] < w1) ? 1u : 0u);
+}
+
+/* Sign of p - q. */
+VOR__INLINE int vor__mw_u192_compare(const vor__mw_u192_t *p, const vor__mw_u192_t *q)
+{
+    for (int i = 2; i >= 0; i--) {
+        if (p->w[i] != q->w[i]) {
+            return (p->w[i] > q->w[i]) ? 1 : -1;
+        }
+    }
+    return 0;
+}
+
 #endif

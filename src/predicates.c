@@ -96,53 +96,19 @@ int vor_closer(const vor_point_t *q, const vor_point_t *a,
  * 32-bit limbs). The determinant is a sum of three products of a lift
  * (>= 0) and a signed cross product, each factor below 2^65: a word plus
  * a 65th bit. Positive and negative products are summed apart, as 3-word
- * (192-bit) unsigned numbers, and compared at the end: no negation, and
- * the sign only selects an accumulator, which compiles without branches.
+ * (192-bit) unsigned numbers, vor__mw_u192_t, and compared at the end: no
+ * negation, and the sign only selects an accumulator, which compiles
+ * without branches.
  */
-struct u192 {
-    uint64_t w[3];
-};
-
 /* Both sums zeroed word by word: an aggregate initializer of this size
  * becomes a memset call on some targets, and the library calls nothing. */
-VOR__INLINE void clear_sums(struct u192 sums[2])
+VOR__INLINE void clear_sums(vor__mw_u192_t sums[2])
 {
     for (unsigned i = 0; i < 2; i++) {
         sums[i].w[0] = 0u;
         sums[i].w[1] = 0u;
         sums[i].w[2] = 0u;
     }
-}
-
-/* *acc += (a + a_high 2^64) * (b + b_high 2^64), a_high, b_high in {0, 1}. */
-VOR__INLINE void add_product(struct u192 *acc, uint64_t a, uint64_t a_high,
-                             uint64_t b, uint64_t b_high)
-{
-    uint64_t w1, w0 = vor__mul_u64(a, b, &w1);
-    uint64_t w2 = a_high & b_high;
-    uint64_t add = (0u - a_high) & b;
-    w1 += add;
-    w2 += (w1 < add) ? 1u : 0u;
-    add = (0u - b_high) & a;
-    w1 += add;
-    w2 += (w1 < add) ? 1u : 0u;
-    acc->w[0] += w0;
-    uint64_t carry = (acc->w[0] < w0) ? 1u : 0u;
-    w1 += carry;
-    w2 += (w1 < carry) ? 1u : 0u;
-    acc->w[1] += w1;
-    acc->w[2] += w2 + ((acc->w[1] < w1) ? 1u : 0u);
-}
-
-/* Sign of p - q. */
-VOR__INLINE int compare_u192(const struct u192 *p, const struct u192 *q)
-{
-    for (int i = 2; i >= 0; i--) {
-        if (p->w[i] != q->w[i]) {
-            return (p->w[i] > q->w[i]) ? 1 : -1;
-        }
-    }
-    return 0;
 }
 
 /* Mid tier term, differences in int32 ([-2^31, 2^31 - 1]): the lift
@@ -165,7 +131,7 @@ VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p
 
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
  * < 2^130; each of the two sums stays below 2^132. */
-VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
+VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned p,
                            unsigned u, unsigned v)
 {
     uint64_t sx = vor__mul_u32(vor__mw_magnitude(d[p]), vor__mw_magnitude(d[p]));
@@ -187,7 +153,7 @@ VOR__INLINE void wide_term(struct u192 sums[2], const int64_t d[6], unsigned p,
         low = second ? m2 - m1 : m1 - m2;
         negative = second ? n2 : n1;
     }
-    add_product(&sums[negative], lift, lift_high, low, high);
+    vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
 }
 
 int vor__incircle_mid(const int64_t d[6])
@@ -208,12 +174,12 @@ int vor__incircle_mid(const int64_t d[6])
 
 int vor__incircle_wide(const int64_t d[6])
 {
-    struct u192 sums[2]; /* positive, negative */
+    vor__mw_u192_t sums[2]; /* positive, negative */
     clear_sums(sums);
     wide_term(sums, d, 0, 2, 4);
     wide_term(sums, d, 2, 4, 0);
     wide_term(sums, d, 4, 0, 2);
-    return compare_u192(&sums[0], &sums[1]);
+    return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
 
 int vor_incircle(const vor_point_t *a, const vor_point_t *b,
@@ -613,10 +579,10 @@ static unsigned wide_bit_length(vor__limb *v)
 }
 
 /* Bit length of |sums[0] - sums[1]|. */
-static unsigned difference_bits(const struct u192 sums[2])
+static unsigned difference_bits(const vor__mw_u192_t sums[2])
 {
-    bool swap = compare_u192(&sums[0], &sums[1]) < 0;
-    const struct u192 *a = &sums[swap ? 1 : 0], *b = &sums[swap ? 0 : 1];
+    bool swap = vor__mw_u192_compare(&sums[0], &sums[1]) < 0;
+    const vor__mw_u192_t *a = &sums[swap ? 1 : 0], *b = &sums[swap ? 0 : 1];
     uint64_t borrow = 0, w[3];
     for (unsigned i = 0; i < 3u; i++) {
         w[i] = a->w[i] - b->w[i] - borrow;
@@ -683,7 +649,7 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
         mid_term(sums, d, 0, 2, 4);
         mid_term(sums, d, 2, 4, 0);
         mid_term(sums, d, 4, 0, 2);
-        struct u192 wide[2];
+        vor__mw_u192_t wide[2];
         for (unsigned k = 0; k < 2u; k++) {
             wide[k].w[0] = sums[k].lo;
             wide[k].w[1] = sums[k].hi;
@@ -691,7 +657,7 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
         }
         return difference_bits(wide);
     }
-    struct u192 sums[2];
+    vor__mw_u192_t sums[2];
     clear_sums(sums);
     wide_term(sums, d, 0, 2, 4);
     wide_term(sums, d, 2, 4, 0);
