@@ -10,7 +10,10 @@
 // doubles for CGAL), duplicates dropped. Three kinds of operations, each a
 // fixed array of K (default 10,000) computed before any clock runs:
 //
-//   remove      K distinct random sites are removed;
+//   remove      min(K, n / 10) distinct random sites are removed (so that
+//               the row measures removal from about n sites); for n up to
+//               10,000 a second row, "remove all", removes every site, down
+//               to an empty diagram;
 //   small move  K random sites each move by up to 1/100 of the mean site
 //               spacing 2^25 / sqrt(n) (a robot's step: nearly always no
 //               triangle changes);
@@ -259,11 +262,21 @@ int main(int argc, char **argv)
     const char *options[] = {"remove", "small-move", "large-move"};
     for (uint32_t n : sizes) {
         std::vector<vor_point_t> sites = make_sites(n);
+        // one row per kind; removals take at most a tenth of the sites, so
+        // that a row measures removal from about n sites, and the smallest
+        // diagrams also get a row that removes every site, down to none
+        std::vector<std::pair<kind, uint32_t>> rows;
         for (kind k : {kind::remove, kind::small_move, kind::large_move}) {
             if (!only.empty() && only != options[(int)k]) {
                 continue;
             }
-            std::vector<operation> ops = make_operations(sites, k, ops_count);
+            rows.push_back({k, k == kind::remove ? std::min(ops_count, n / 10u) : ops_count});
+            if (k == kind::remove && n <= 10000u) {
+                rows.push_back({k, n});
+            }
+        }
+        for (const auto &[k, count] : rows) {
+            std::vector<operation> ops = make_operations(sites, k, count);
             double best_vor = 1e30, best_cgal = 1e30;
             std::string checks = "ok";
             for (uint32_t rep = 0; rep < reps; rep++) {
@@ -290,7 +303,8 @@ int main(int argc, char **argv)
             double per_cgal = best_cgal * 1e9 / (double)ops.size();
             char row[256];
             std::snprintf(row, sizeof row, "| %s | %s | %s | %s | %s | %s | %s |\n",
-                          names[(int)k], with_commas(n).c_str(),
+                          (k == kind::remove && count == n) ? "remove all" : names[(int)k],
+                          with_commas(n).c_str(),
                           with_commas(ops.size()).c_str(), fmt("%.0f", per_vor).c_str(),
                           fmt("%.0f", per_cgal).c_str(), fmt("%.2f", per_cgal / per_vor).c_str(),
                           checks.c_str());
