@@ -626,18 +626,10 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
                     (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) | vor__mw_bound(d[3]) |
-                 vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
-    if (m < (1u << 14)) {
-        /* as the narrow tier: |det| < 2^60 */
-        int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
-        int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
-        int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
-        int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
-        int32_t lc = cx * cx + cy * cy;
-        int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
-                      vor__mul_i32(lb, cx * ay - cy * ax) +
-                      vor__mul_i32(lc, ax * by - ay * bx);
+    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
+                 vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
+    if (m < (1u << 14)) { /* as the narrow tier: |det| < 2^60 */
+        int64_t det = vor__incircle_narrow(d);
         return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
     }
     /* the sign tiers' positive and negative sums; |det| is their

@@ -59,6 +59,20 @@ VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
     return vor__compare_products(acx, bcy, acy, bcx);
 }
 
+/* The incircle determinant of d (a - d, b - d, c - d as x, y pairs) when
+ * every |d| <= 2^14: lifts and |crosses| <= 2^29 fit int32, the three
+ * products <= 2^58 and their sum < 2^60 fit int64. */
+VOR__INLINE int64_t vor__incircle_narrow(const int64_t d[6])
+{
+    int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
+    int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
+    int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+    int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
+    int32_t lc = cx * cx + cy * cy;
+    return vor__mul_i32(la, bx * cy - by * cx) + vor__mul_i32(lb, cx * ay - cy * ax) +
+           vor__mul_i32(lc, ax * by - ay * bx);
+}
+
 VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
                                     const vor_point_t *c, const vor_point_t *dp,
                                     vor_predicate_stats_t *stats)
@@ -69,18 +83,8 @@ VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
     uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
                  vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
     if (m < (1u << 14)) {
-        /* D <= 2^14: lifts and |crosses| <= 2^29 fit int32, the three
-         * products <= 2^58 and their sum < 2^60 fit int64 */
         VOR__COUNT(stats, incircle[VOR_TIER_NARROW]);
-        int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
-        int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
-        int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
-        int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
-        int32_t lc = cx * cx + cy * cy;
-        int64_t det = vor__mul_i32(la, bx * cy - by * cx) +
-                      vor__mul_i32(lb, cx * ay - cy * ax) +
-                      vor__mul_i32(lc, ax * by - ay * bx);
-        return vor__mw_sign64(det);
+        return vor__mw_sign64(vor__incircle_narrow(d));
     }
     if (m < 0x80000000u) {
         VOR__COUNT(stats, incircle[VOR_TIER_MID]);
