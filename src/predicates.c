@@ -298,122 +298,56 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     return (top == 1) ? -sign : sign;
 }
 
-/* Entries of the incircle expansion: up to 66 bits (x^2 + y^2 of 33-bit
- * differences); products of three entries from distinct columns < 2^130,
- * six of them < 2^133: VOR__WIDE_LIMBS (160 bits) holds every value. The
- * helpers below fix that width; results go out through a pointer, as
- * arrays, never as a returned structure (a memcpy call at -Os). */
-static void wide_from(vor__limb *r, int64_t v)
+/* Sign of the perturbation's term whose minor rows (x[r], y[r]: the
+ * differences to the top site, |x|, |y| <= 2^32 - 1) have the given kinds,
+ * at most one of them ROW_SQUARE, expanded along the third column as the
+ * exact wide tier's terms (wide_term). The first two columns hold x, y, 0
+ * or 1, so a cross product of two rows is a signed sum of two products
+ * below 2^64: a word and a 65th bit. The third holds x^2 + y^2 < 2^65 (a
+ * word and a 65th bit), 2x or 2y (< 2^33, taken as magnitude and sign) or
+ * 1. Each product < 2^130 goes to the sum of its sign, three of them <
+ * 2^132 in 192 bits. Out of line: one copy serves the first term and the
+ * later ones, for every size of difference. */
+static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3],
+                                   const enum row_kind kind[3])
 {
-    vor__mw_from_i64(r, VOR__WIDE_LIMBS, v);
-}
-
-/* r = a * b; r overlaps neither (restrict: the product's stores then need
- * no reloads of a and b) */
-static void wide_mul(vor__limb *restrict r, const vor__limb *a, const vor__limb *b)
-{
-    vor__mw_mul(r, VOR__WIDE_LIMBS, a, VOR__WIDE_LIMBS, b, VOR__WIDE_LIMBS);
-}
-
-/* r = a*d - b*c */
-static void wide_det2(vor__limb *r, const vor__limb *a, const vor__limb *b, const vor__limb *c,
-                      const vor__limb *d)
-{
-    vor__limb bc[VOR__WIDE_LIMBS];
-    wide_mul(r, a, d);
-    wide_mul(bc, b, c);
-    vor__mw_sub(r, bc, VOR__WIDE_LIMBS);
-}
-
-static int wide_det3_sign(const vor__limb *m[3][3])
-{
-    vor__limb sum[VOR__WIDE_LIMBS], minor[VOR__WIDE_LIMBS], term[VOR__WIDE_LIMBS];
-    wide_from(sum, 0);
-    for (unsigned c = 0; c < 3; c++) {
-        unsigned c1 = next_of[c], c2 = next_of[c1];
-        wide_det2(minor, m[1][c1], m[1][c2], m[2][c1], m[2][c2]);
-        wide_mul(term, m[0][c], minor);
-        vor__mw_add(sum, term, VOR__WIDE_LIMBS);
-    }
-    return vor__mw_sign(sum, VOR__WIDE_LIMBS);
-}
-
-/* Sign of the perturbation's term whose minor rows (x[r], y[r] relative
- * to the top site, in int32) have the given kinds, at most one of them
- * ROW_SQUARE: the mid tier's sums (mid_term), along the third column. The
- * first two columns hold x, y, 0 or 1, all in int32, so each cross
- * product of two rows fits int64 as in mid_term; the third holds x^2 + y^2
- * <= 2^63, 2x or 2y (at most 2^32 in magnitude) or 1, taken as magnitude
- * and sign; each product < 2^126, each sum of up to three < 2^128. Out of
- * line: one copy serves the first term and the later ones. */
-static VOR__NOINLINE int mid_term_sign(const int64_t x[3], const int64_t y[3],
-                                       const enum row_kind kind[3])
-{
-    int32_t e[3][2];
-    uint64_t c[3];
+    int64_t e[3][2];
+    uint64_t c[3], c_high[3];
     bool c_negative[3];
     for (size_t r = 0; r < 3; r++) {
-        int32_t xr = (int32_t)x[r], yr = (int32_t)y[r];
-        int32_t halved = (kind[r] == ROW_DY) ? yr : xr; /* of 2y or 2x */
-        e[r][0] = (kind[r] == ROW_POINT) ? xr : (kind[r] == ROW_DX) ? 1 : 0;
-        e[r][1] = (kind[r] == ROW_POINT) ? yr : (kind[r] == ROW_DY) ? 1 : 0;
-        c[r] = (kind[r] == ROW_POINT)
-                   ? (uint64_t)vor__mul_i32(xr, xr) + (uint64_t)vor__mul_i32(yr, yr)
-               : (kind[r] == ROW_SQUARE) ? 1u
-                                         : 2u * (uint64_t)vor__mw_magnitude(halved);
+        e[r][0] = (kind[r] == ROW_POINT) ? x[r] : (kind[r] == ROW_DX) ? 1 : 0;
+        e[r][1] = (kind[r] == ROW_POINT) ? y[r] : (kind[r] == ROW_DY) ? 1 : 0;
+        uint64_t sx = vor__mul_u32(vor__mw_magnitude(x[r]), vor__mw_magnitude(x[r]));
+        uint64_t lift = sx + vor__mul_u32(vor__mw_magnitude(y[r]), vor__mw_magnitude(y[r]));
+        int64_t halved = (kind[r] == ROW_DY) ? y[r] : x[r]; /* of 2y or 2x */
+        uint64_t twice = 2u * (uint64_t)vor__mw_magnitude(halved);
+        c[r] = (kind[r] == ROW_POINT) ? lift : (kind[r] == ROW_SQUARE) ? 1u : twice;
+        c_high[r] = (kind[r] == ROW_POINT && lift < sx) ? 1u : 0u;
         c_negative[r] = (kind[r] == ROW_DY || kind[r] == ROW_DX) && halved < 0;
     }
-    vor__mw_u128_t sums[2]; /* positive, negative */
-    sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+    vor__mw_u192_t sums[2]; /* positive, negative */
+    clear_sums(sums);
     for (unsigned r = 0; r < 3; r++) {
         unsigned u = next_of[r], v = next_of[u];
-        int64_t cross = vor__mul_i32(e[u][0], e[v][1]) - vor__mul_i32(e[u][1], e[v][0]);
-        bool negative = cross < 0;
-        uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
-        vor__mw_u128_add_to(&sums[negative != c_negative[r]],
-                            vor__mw_u128_mul(c[r], magnitude_of_cross));
-    }
-    return vor__mw_u128_compare(sums[0], sums[1]);
-}
-
-/* The sign of the first nonzero perturbation term t = 1, 2, ... of
- * vor__incircle_perturbed in 160 bits, for differences of 32 bits: row r
- * has kind (t >> shift[r]) & 3. Out of line, so that its limb arrays are
- * not on the stack of the narrow and mid paths. */
-static VOR__NOINLINE int wide_terms_sign(const int64_t x[3], const int64_t y[3],
-                                         const unsigned shift[3])
-{
-    int sign = 0;
-    /* constants, least significant limb first, out of the frame */
-    static const vor__limb zero[VOR__WIDE_LIMBS] = {0}, one[VOR__WIDE_LIMBS] = {1};
-    vor__limb point[3][3][VOR__WIDE_LIMBS], twice[3][2][VOR__WIDE_LIMBS];
-    for (size_t r = 0; r < 3; r++) {
-        wide_from(point[r][0], x[r]);
-        wide_from(point[r][1], y[r]);
-        wide_mul(point[r][2], point[r][0], point[r][0]);
-        wide_mul(twice[r][0], point[r][1], point[r][1]); /* y^2, before 2x */
-        vor__mw_add(point[r][2], twice[r][0], VOR__WIDE_LIMBS);
-        wide_from(twice[r][0], 2 * x[r]);
-        wide_from(twice[r][1], 2 * y[r]);
-    }
-    for (unsigned t = 1; t < 64 && sign == 0; t++) {
-        const vor__limb *w[3][3];
-        unsigned squares = 0;
-        for (size_t r = 0; r < 3; r++) {
-            enum row_kind kind = (enum row_kind)((t >> shift[r]) & 3u);
-            w[r][0] = (kind == ROW_POINT) ? point[r][0] : (kind == ROW_DX) ? one : zero;
-            w[r][1] = (kind == ROW_POINT) ? point[r][1] : (kind == ROW_DY) ? one : zero;
-            w[r][2] = (kind == ROW_POINT) ? point[r][2]
-                      : (kind == ROW_DY)  ? twice[r][1]
-                      : (kind == ROW_DX)  ? twice[r][0]
-                                          : one;
-            squares += (kind == ROW_SQUARE) ? 1u : 0u;
+        /* cross = e[u][0] e[v][1] - e[u][1] e[v][0] = (+-m1) + (+-m2) */
+        bool n1 = (e[u][0] < 0) != (e[v][1] < 0);
+        bool n2 = (e[u][1] < 0) == (e[v][0] < 0);
+        uint64_t m1 = vor__mul_u32(vor__mw_magnitude(e[u][0]), vor__mw_magnitude(e[v][1]));
+        uint64_t m2 = vor__mul_u32(vor__mw_magnitude(e[u][1]), vor__mw_magnitude(e[v][0]));
+        uint64_t low, high = 0u;
+        bool negative;
+        if (n1 == n2) { /* same signs: the magnitudes add, up to 65 bits */
+            low = m1 + m2;
+            high = (low < m1) ? 1u : 0u;
+            negative = n1;
+        } else { /* opposite signs: the larger magnitude wins */
+            bool second = m2 > m1;
+            low = second ? m2 - m1 : m1 - m2;
+            negative = second ? n2 : n1;
         }
-        if (squares < 2) { /* else two equal rows: the term is 0 */
-            sign = wide_det3_sign(w);
-        }
+        vor__mw_u192_add_product(&sums[negative != c_negative[r]], c[r], c_high[r], low, high);
     }
-    return sign;
+    return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
 
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
@@ -456,16 +390,14 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     }
     /* Small coordinates (the usual degeneracy: grids, nearby cocircular
      * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
-     * entry per column <= 2^57: int64. Differences in int32 (large grids,
-     * most real input): the mid tier's two-word sums. Else 160 bits. */
+     * entry per column <= 2^57: int64. Else term_sign's 192-bit sums. */
     bool narrow = m < (1u << 14);
-    bool mid = m < 0x80000000u;
     /* The first term (t = 1) nearly always decides: the smallest index's
      * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
      * points. Along that row, with it at minor row `low`:
      *   det = (-1)^low (2y (xP yQ - yP xQ) - (xP zQ - zP xQ))
-     * In the narrow case every product fits int64; in the mid case the
-     * term goes to mid_term_sign like the later ones, without the ranks. */
+     * In the narrow case every product fits int64; otherwise the term goes
+     * to term_sign like the later ones, without the ranks. */
     size_t low = 0;
     for (size_t r = 1; r < 3; r++) {
         low = (ids[row[r]] < ids[row[low]]) ? r : low;
@@ -479,10 +411,10 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
         int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
         sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
-    } else if (mid) {
+    } else {
         enum row_kind first[3] = {ROW_POINT, ROW_POINT, ROW_POINT};
         first[low] = ROW_DY;
-        sign = mid_term_sign(x, y, first);
+        sign = term_sign(x, y, first);
     }
     if (sign != 0) {
         return (top % 2 == 0) ? -sign : sign;
@@ -492,24 +424,16 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
-    unsigned shift[3];
-    for (size_t r = 0; r < 3; r++) {
-        shift[r] = (unsigned)(2 * rank[row[r]]);
-    }
-    if (mid) {
-        for (unsigned t = 1; t < 64 && sign == 0; t++) {
-            enum row_kind kind[3];
-            unsigned squares = 0;
-            for (size_t r = 0; r < 3; r++) {
-                kind[r] = (enum row_kind)((t >> shift[r]) & 3u);
-                squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
-            }
-            if (squares < 2) { /* else two equal rows: the term is 0 */
-                sign = mid_term_sign(x, y, kind);
-            }
+    for (unsigned t = 1; t < 64 && sign == 0; t++) {
+        enum row_kind kind[3];
+        unsigned squares = 0;
+        for (size_t r = 0; r < 3; r++) {
+            kind[r] = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
+            squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
         }
-    } else {
-        sign = wide_terms_sign(x, y, shift);
+        if (squares < 2) { /* else two equal rows: the term is 0 */
+            sign = term_sign(x, y, kind);
+        }
     }
     VOR_ASSERT(sign != 0);
     /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */
@@ -608,14 +532,13 @@ unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vo
     }
     /* 33-bit differences: products < 2^66, det < 2^67 */
     vor__limb e[4][VOR__WIDE_LIMBS], det[VOR__WIDE_LIMBS], other[VOR__WIDE_LIMBS];
-    wide_from(e[0], acx);
-    wide_from(e[1], acy);
-    wide_from(e[2], bcx);
-    wide_from(e[3], bcy);
-    /* not wide_det2: a second caller would take it out of line, and the
-     * perturbed incircle's stack would grow */
-    wide_mul(det, e[0], e[3]);
-    wide_mul(other, e[1], e[2]);
+    vor__mw_from_i64(e[0], VOR__WIDE_LIMBS, acx);
+    vor__mw_from_i64(e[1], VOR__WIDE_LIMBS, acy);
+    vor__mw_from_i64(e[2], VOR__WIDE_LIMBS, bcx);
+    vor__mw_from_i64(e[3], VOR__WIDE_LIMBS, bcy);
+    /* 33-bit factors, products < 2^66: within VOR__WIDE_LIMBS */
+    vor__mw_mul(det, VOR__WIDE_LIMBS, e[0], VOR__WIDE_LIMBS, e[3], VOR__WIDE_LIMBS);
+    vor__mw_mul(other, VOR__WIDE_LIMBS, e[1], VOR__WIDE_LIMBS, e[2], VOR__WIDE_LIMBS);
     vor__mw_sub(det, other, VOR__WIDE_LIMBS);
     return wide_bit_length(det);
 }
