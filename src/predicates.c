@@ -129,30 +129,45 @@ VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p
     vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(lift, magnitude_of_cross));
 }
 
+/* x^2 + y^2 of differences below 2^32 in magnitude: below 2^65, a word
+ * and its 65th bit (*high). */
+VOR__INLINE uint64_t wide_lift(int64_t x, int64_t y, uint64_t *high)
+{
+    uint64_t sx = vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(x));
+    uint64_t lift = sx + vor__mul_u32(vor__mw_magnitude(y), vor__mw_magnitude(y));
+    *high = (lift < sx) ? 1u : 0u;
+    return lift;
+}
+
+/* ux vy - uy vx for entries below 2^32 in magnitude, as magnitude (a word
+ * and its 65th bit, *high) and sign (returned: true when negative). The
+ * cross product is (+-m1) + (+-m2) with m1, m2 < 2^64. */
+VOR__INLINE bool wide_cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy, uint64_t *low,
+                            uint64_t *high)
+{
+    bool n1 = (ux < 0) != (vy < 0);
+    bool n2 = (uy < 0) == (vx < 0);
+    uint64_t m1 = vor__mul_u32(vor__mw_magnitude(ux), vor__mw_magnitude(vy));
+    uint64_t m2 = vor__mul_u32(vor__mw_magnitude(uy), vor__mw_magnitude(vx));
+    if (n1 == n2) { /* same signs: the magnitudes add, up to 65 bits */
+        *low = m1 + m2;
+        *high = (*low < m1) ? 1u : 0u;
+        return n1;
+    }
+    bool second = m2 > m1; /* opposite signs: the larger magnitude wins */
+    *low = second ? m2 - m1 : m1 - m2;
+    *high = 0u;
+    return second ? n2 : n1;
+}
+
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
  * < 2^130; each of the two sums stays below 2^132. */
 VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned p,
                            unsigned u, unsigned v)
 {
-    uint64_t sx = vor__mul_u32(vor__mw_magnitude(d[p]), vor__mw_magnitude(d[p]));
-    uint64_t lift = sx + vor__mul_u32(vor__mw_magnitude(d[p + 1]), vor__mw_magnitude(d[p + 1]));
-    uint64_t lift_high = (lift < sx) ? 1u : 0u;
-    /* cross = ux vy - uy vx = (+-m1) + (+-m2) */
-    bool n1 = (d[u] < 0) != (d[v + 1] < 0);
-    bool n2 = (d[u + 1] < 0) == (d[v] < 0);
-    uint64_t m1 = vor__mul_u32(vor__mw_magnitude(d[u]), vor__mw_magnitude(d[v + 1]));
-    uint64_t m2 = vor__mul_u32(vor__mw_magnitude(d[u + 1]), vor__mw_magnitude(d[v]));
-    uint64_t low, high = 0u;
-    bool negative;
-    if (n1 == n2) { /* same signs: the magnitudes add, up to 65 bits */
-        low = m1 + m2;
-        high = (low < m1) ? 1u : 0u;
-        negative = n1;
-    } else { /* opposite signs: the larger magnitude wins */
-        bool second = m2 > m1;
-        low = second ? m2 - m1 : m1 - m2;
-        negative = second ? n2 : n1;
-    }
+    uint64_t lift_high, lift = wide_lift(d[p], d[p + 1], &lift_high);
+    uint64_t low, high;
+    bool negative = wide_cross(d[u], d[u + 1], d[v], d[v + 1], &low, &high);
     vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
 }
 
@@ -317,34 +332,19 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3],
     for (size_t r = 0; r < 3; r++) {
         e[r][0] = (kind[r] == ROW_POINT) ? x[r] : (kind[r] == ROW_DX) ? 1 : 0;
         e[r][1] = (kind[r] == ROW_POINT) ? y[r] : (kind[r] == ROW_DY) ? 1 : 0;
-        uint64_t sx = vor__mul_u32(vor__mw_magnitude(x[r]), vor__mw_magnitude(x[r]));
-        uint64_t lift = sx + vor__mul_u32(vor__mw_magnitude(y[r]), vor__mw_magnitude(y[r]));
+        uint64_t lift_high, lift = wide_lift(x[r], y[r], &lift_high);
         int64_t halved = (kind[r] == ROW_DY) ? y[r] : x[r]; /* of 2y or 2x */
         uint64_t twice = 2u * (uint64_t)vor__mw_magnitude(halved);
         c[r] = (kind[r] == ROW_POINT) ? lift : (kind[r] == ROW_SQUARE) ? 1u : twice;
-        c_high[r] = (kind[r] == ROW_POINT && lift < sx) ? 1u : 0u;
+        c_high[r] = (kind[r] == ROW_POINT) ? lift_high : 0u;
         c_negative[r] = (kind[r] == ROW_DY || kind[r] == ROW_DX) && halved < 0;
     }
     vor__mw_u192_t sums[2]; /* positive, negative */
     clear_sums(sums);
     for (unsigned r = 0; r < 3; r++) {
         unsigned u = next_of[r], v = next_of[u];
-        /* cross = e[u][0] e[v][1] - e[u][1] e[v][0] = (+-m1) + (+-m2) */
-        bool n1 = (e[u][0] < 0) != (e[v][1] < 0);
-        bool n2 = (e[u][1] < 0) == (e[v][0] < 0);
-        uint64_t m1 = vor__mul_u32(vor__mw_magnitude(e[u][0]), vor__mw_magnitude(e[v][1]));
-        uint64_t m2 = vor__mul_u32(vor__mw_magnitude(e[u][1]), vor__mw_magnitude(e[v][0]));
-        uint64_t low, high = 0u;
-        bool negative;
-        if (n1 == n2) { /* same signs: the magnitudes add, up to 65 bits */
-            low = m1 + m2;
-            high = (low < m1) ? 1u : 0u;
-            negative = n1;
-        } else { /* opposite signs: the larger magnitude wins */
-            bool second = m2 > m1;
-            low = second ? m2 - m1 : m1 - m2;
-            negative = second ? n2 : n1;
-        }
+        uint64_t low, high;
+        bool negative = wide_cross(e[u][0], e[u][1], e[v][0], e[v][1], &low, &high);
         vor__mw_u192_add_product(&sums[negative != c_negative[r]], c[r], c_high[r], low, high);
     }
     return vor__mw_u192_compare(&sums[0], &sums[1]);

@@ -180,3 +180,13 @@ int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi)
     }
     return (int32_t)((uint32_t)lo + r);
 }
+
+uint32_t test_predicate_calls(const vor_t *d)
+{
+    const vor_predicate_stats_t *s = &d->stats;
+    uint32_t n = s->orient2d_perturbed + s->incircle_perturbed + s->closer_perturbed;
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        n += s->orient2d[t] + s->incircle[t] + s->closer[t];
+    }
+    return n;
+}

@@ -42,6 +42,10 @@ uint32_t test_rng_u32(test_rng_t *rng);
 /* Uniform in [lo, hi], inclusive, for hi - lo < 2^32. */
 int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);
 
+/* Every predicate call d's statistics counted (all tiers, perturbed
+ * included): a move that made none took the motion cache's fast path. */
+uint32_t test_predicate_calls(const vor_t *d);
+
 /* The groups of tests, one per part of the library. */
 /* An order-independent fingerprint of a set of triangles (fingerprint.c):
  * count plus two sums of mixed hashes of the triangles rotated to start at

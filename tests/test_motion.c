@@ -25,16 +25,6 @@ static uint8_t cache[VOR_MOTION_BYTES(MOTION_SITES) + 4u] __attribute__((aligned
 static vor_t with, without;
 static vor_point_t at[MOTION_SITES];
 
-static uint32_t predicate_calls(const vor_t *d)
-{
-    const vor_predicate_stats_t *s = &d->stats;
-    uint32_t n = s->orient2d_perturbed + s->incircle_perturbed + s->closer_perturbed;
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        n += s->orient2d[t] + s->incircle[t] + s->closer[t];
-    }
-    return n;
-}
-
 /* d holds exactly the triangulation of at[0 .. n) (ids = indices). */
 static bool exact(const vor_t *d, uint32_t n, const char *what, uint32_t step)
 {
@@ -76,7 +66,7 @@ static uint32_t site_at(uint32_t n, vor_point_t p)
  * whether the move with the cache was fast, or false on failure. */
 static bool move(uint32_t n, uint32_t i, vor_point_t p, const char *what, uint32_t step)
 {
-    uint32_t twin = site_at(n, p), calls = predicate_calls(&with), existing = VOR_NO_HINT;
+    uint32_t twin = site_at(n, p), calls = test_predicate_calls(&with), existing = VOR_NO_HINT;
     test_fingerprint_t before = test_fingerprint_of(&without, NULL);
     int err = vor_move(&with, i, p.x, p.y, &existing);
     int twin_err = vor_move(&without, i, p.x, p.y, NULL);
@@ -88,7 +78,7 @@ static bool move(uint32_t n, uint32_t i, vor_point_t p, const char *what, uint32
     CHECK(err == VOR_OK && twin_err == VOR_OK, "%s step %u: move gave %d, %d", what, step, err,
           twin_err);
     at[i] = p;
-    bool fast = twin != i && predicate_calls(&with) == calls;
+    bool fast = twin != i && test_predicate_calls(&with) == calls;
     if (fast) {
         CHECK(test_same_fingerprint(before, test_fingerprint_of(&without, NULL)),
               "%s step %u: a fast move of %u changed triangles", what, step, i);

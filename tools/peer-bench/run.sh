@@ -164,48 +164,46 @@ query_targets() {
 dynamic_targets() {
     echo "Targets, instructions per operation on 1,000 sites (bench/dynamic.c, QEMU -icount):"
     echo
-    echo "| port | insert | remove | small move, no cache | large move | remove <= 2x insert |"
-    echo "|---|---|---|---|---|---|"
-    for port in $ports; do
-        python3 - "$out/dynamic-$port.txt" "$port" <<'PY' || status=1
+    # shellcheck disable=SC2086  # ports is a word list on purpose
+    python3 - "$out" $ports <<'PY' || status=1
 import sys
+out, ports = sys.argv[1], sys.argv[2:]
 cost = {}
-for line in open(sys.argv[1]):
-    f = line.split()
-    if len(f) == 5 and f[0] == "bench":
-        cost[f[1]] = float(f[3])
-need = ("insert", "remove", "small-move", "large-move")
-if not all(k in cost for k in need):
-    print(f"| {sys.argv[2]} | no figures ||||")
-    sys.exit(1)
-remove_ok = "met" if cost["remove"] <= 2 * cost["insert"] else "**not met**"
-print(f"| {sys.argv[2]} | {cost['insert']:.1f} | {cost['remove']:.1f} | {cost['small-move']:.1f} | "
-      f"{cost['large-move']:.1f} | {remove_ok} ({cost['remove'] / cost['insert']:.2f}x) |")
+for port in ports:
+    for line in open(f"{out}/dynamic-{port}.txt"):
+        f = line.split()
+        if len(f) == 5 and f[0] == "bench":
+            cost[port, f[1]] = float(f[3])
+ok = True
+
+def row(port, need, cells):
+    """One table row, or "no figures" (and a failed exit) if one is missing."""
+    global ok
+    if not all((port, k) in cost for k in need):
+        ok = False
+        return f"| {port} | no figures |"
+    return f"| {port} | " + " | ".join(cells({k: cost[port, k] for k in need})) + " |"
+
+print("| port | insert | remove | small move, no cache | large move | remove <= 2x insert |")
+print("|---|---|---|---|---|---|")
+for port in ports:
+    print(row(port, ("insert", "remove", "small-move", "large-move"), lambda c: [
+        f"{c['insert']:.1f}", f"{c['remove']:.1f}", f"{c['small-move']:.1f}",
+        f"{c['large-move']:.1f}",
+        ("met" if c["remove"] <= 2 * c["insert"] else "**not met**")
+        + f" ({c['remove'] / c['insert']:.2f}x)"]))
+print()
+print("With a motion cache (vor_motion_attach): the small moves again, and a control loop of")
+print("20 rounds where every site steps up to 1/10,000 of the spacing:")
+print()
+print("| port | small move, cached | fast move | control loop, per move | fast moves | fast move <= 400 |")
+print("|---|---|---|---|---|---|")
+for port in ports:
+    print(row(port, ("small-move-cached", "fast-move", "robot-loop", "fast-fraction"), lambda c: [
+        f"{c['small-move-cached']:.1f}", f"{c['fast-move']:.1f}", f"{c['robot-loop']:.1f}",
+        f"{c['fast-fraction']:.1f} %", "met" if c["fast-move"] <= 400 else "**not met**"]))
+sys.exit(0 if ok else 1)
 PY
-    done
-    echo
-    echo "With a motion cache (vor_motion_attach): the small moves again, and a control loop of"
-    echo "20 rounds where every site steps up to 1/10,000 of the spacing:"
-    echo
-    echo "| port | small move, cached | fast move | control loop, per move | fast moves | fast move <= 400 |"
-    echo "|---|---|---|---|---|---|"
-    for port in $ports; do
-        python3 - "$out/dynamic-$port.txt" "$port" <<'PY' || status=1
-import sys
-cost = {}
-for line in open(sys.argv[1]):
-    f = line.split()
-    if len(f) == 5 and f[0] == "bench":
-        cost[f[1]] = float(f[3])
-need = ("small-move-cached", "fast-move", "robot-loop", "fast-fraction")
-if not all(k in cost for k in need):
-    print(f"| {sys.argv[2]} | no figures |||||")
-    sys.exit(1)
-fast_ok = "met" if cost["fast-move"] <= 400 else "**not met**"
-print(f"| {sys.argv[2]} | {cost['small-move-cached']:.1f} | {cost['fast-move']:.1f} | "
-      f"{cost['robot-loop']:.1f} | {cost['fast-fraction']:.1f} % | {fast_ok} |")
-PY
-    done
 }
 
 {
