@@ -617,41 +617,26 @@ int vor_remove(vor_t *d, uint32_t site)
  * each other's nearest (perturbed) sites, hence Delaunay neighbours. */
 static bool star_still_delaunay(vor_t *d, vor_index_t p, vor_index_t *twin)
 {
-    vor__tri_t *tri = d->triangles;
     const vor_point_t *at = &d->sites[p];
-    vor_index_t slot = p, v[3];
-    vor__vertices(&tri[slot], v);
+    vor__star_step_t s;
+    vor__star_begin(d, p, &s);
     *twin = VOR__NONE;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        const vor__tri_t *t = &tri[slot];
-        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
-        vor_index_t x = v[vor__next(i)], y = v[vor__prev(i)];
-        if (x != VOR__INFINITE && d->sites[x].x == at->x && d->sites[x].y == at->y) {
-            *twin = x;
+        if (s.x != VOR__INFINITE && d->sites[s.x].x == at->x && d->sites[s.x].y == at->y) {
+            *twin = s.x;
         }
-        if (x != VOR__INFINITE && y != VOR__INFINITE && vor__orient(d, p, x, y) <= 0) {
+        if (s.x != VOR__INFINITE && s.y != VOR__INFINITE && vor__orient(d, p, s.x, s.y) <= 0) {
             return false;
         }
-        const vor__tri_t *o = &tri[t->n[i]];
-        vor_index_t far = vor__vertex(o, vor__next(corner(o, x)));
-        if (far != VOR__INFINITE && vor__conflicts(d, v[0], v[1], v[2], far)) {
+        if (s.far != VOR__INFINITE && vor__conflicts(d, s.v[0], s.v[1], s.v[2], s.far)) {
             return false;
         }
-        /* the next triangle around p, (p, y, z): z across the spoke p-y */
-        vor_index_t next = t->n[vor__next(i)], w[3];
-        vor__vertices(&tri[next], w);
-        unsigned j = (w[1] == p) ? 1u : (w[2] == p) ? 2u : 0u;
-        vor_index_t z = w[vor__prev(j)];
-        if (z != VOR__INFINITE && vor__conflicts(d, v[0], v[1], v[2], z)) {
+        if (s.across != VOR__INFINITE && vor__conflicts(d, s.v[0], s.v[1], s.v[2], s.across)) {
             return false;
         }
-        slot = next;
-        if (slot == p) {
+        if (!vor__star_advance(d, p, &s)) {
             break;
         }
-        v[0] = w[0];
-        v[1] = w[1];
-        v[2] = w[2];
     }
     return true;
 }

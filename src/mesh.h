@@ -300,4 +300,56 @@ static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
     d->high.y = (p->y > d->high.y) ? p->y : d->high.y;
 }
 
+/* A turn around site p's star, one triangle at a step, with the vertices
+ * of the tests that involve p besides the triangle's own orientation:
+ * `far` across its far edge x-y, `across` across its spoke p-y (the third
+ * vertex of the next star triangle, counterclockwise). vor_move's check
+ * (dynamic.c) and the motion cache (motion.c) walk the same predicates
+ * with it. Each triangle's vertices are decoded once. */
+typedef struct vor__star_step {
+    vor_index_t slot, v[3];  /* the star triangle and its vertices, as stored */
+    vor_index_t x, y;        /* p's neighbours in it, counterclockwise */
+    vor_index_t far, across;
+    vor_index_t next, w[3];  /* the next star triangle and its vertices */
+} vor__star_step_t;
+
+static inline void vor__star_look(const vor_t *d, vor_index_t p, vor__star_step_t *s)
+{
+    const vor__tri_t *tri = d->triangles, *t = &tri[s->slot];
+    unsigned i = (s->v[1] == p) ? 1u : (s->v[2] == p) ? 2u : 0u;
+    s->x = s->v[vor__next(i)];
+    s->y = s->v[vor__prev(i)];
+    const vor__tri_t *o = &tri[t->n[i]];
+    unsigned k = vor__vertex_index(o, s->x);
+    s->far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
+    s->next = t->n[vor__next(i)];
+    vor__vertices(&tri[s->next], s->w);
+    unsigned j = (s->w[1] == p) ? 1u : (s->w[2] == p) ? 2u : 0u;
+    s->across = s->w[vor__prev(j)];
+}
+
+/* The star triangle in p's home slot (p in a mesh of three or more). */
+static inline void vor__star_begin(const vor_t *d, vor_index_t p, vor__star_step_t *s)
+{
+    s->slot = p;
+    vor__vertices(&d->triangles[p], s->v);
+    vor__star_look(d, p, s);
+}
+
+/* The next star triangle; false when the turn is back at p's home slot,
+ * after p's degree (at most vertex_count) steps: callers bound their
+ * loops by vertex_count + 1 as well, against a broken mesh. */
+static inline bool vor__star_advance(const vor_t *d, vor_index_t p, vor__star_step_t *s)
+{
+    s->slot = s->next;
+    if (s->slot == p) {
+        return false;
+    }
+    s->v[0] = s->w[0];
+    s->v[1] = s->w[1];
+    s->v[2] = s->w[2];
+    vor__star_look(d, p, s);
+    return true;
+}
+
 #endif

@@ -326,27 +326,17 @@ static int in_range(int limit, int32_t c)
 
 /* Does a site of p's predicates other than p hold a box: one of p's
  * neighbours (each is the vertex after p in one triangle of the star) or
- * a far vertex across the star's outer edges? The turn ends as
- * vor__motion_update's does. */
+ * a far vertex across the star's outer edges? */
 static bool star_boxed(const vor_t *d, uint32_t p)
 {
-    const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = (vor_index_t)p;
+    vor__star_step_t s;
+    vor__star_begin(d, (vor_index_t)p, &s);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        const vor__tri_t *t = &tri[slot];
-        vor_index_t v[3];
-        vor__vertices(t, v);
-        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
-        vor_index_t x = v[vor__next(i)];
-        const vor__tri_t *o = &tri[t->n[i]];
-        unsigned k = vor__vertex_index(o, x);
-        vor_index_t far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
-        if ((x != VOR__INFINITE && entry_valid(d, x)) ||
-            (far != VOR__INFINITE && entry_valid(d, far))) {
+        if ((s.x != VOR__INFINITE && entry_valid(d, s.x)) ||
+            (s.far != VOR__INFINITE && entry_valid(d, s.far))) {
             return true;
         }
-        slot = t->n[vor__next(i)];
-        if (slot == p) {
+        if (!vor__star_advance(d, (vor_index_t)p, &s)) {
             break;
         }
     }
@@ -420,42 +410,26 @@ void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch)
     uint32_t step = (dx > dy) ? dx : dy;
     int need = (step <= 1u) ? 0 : (int)vor__mw_bit_length32(step - 1u);
     need = sizing ? need : MAX_EXPONENT + 1;
-    /* p's star as star_still_delaunay walks it: per triangle its
-     * orientation, the test across its far edge, the test across the
-     * spoke to the next triangle. The turn ends back at p's home slot
-     * after the degree (<= vertex_count) steps. */
-    const vor__tri_t *tri = d->triangles;
+    /* p's star as star_still_delaunay walks it (vor__star_step, mesh.h):
+     * per triangle its orientation, the test across its far edge, the
+     * test across the spoke to the next triangle. */
     int limit = MAX_EXPONENT;
-    vor_index_t slot = (vor_index_t)p, v[3];
-    vor__vertices(&tri[slot], v);
+    vor__star_step_t s;
+    vor__star_begin(d, (vor_index_t)p, &s);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        const vor__tri_t *t = &tri[slot];
-        unsigned i = (v[1] == p) ? 1u : (v[2] == p) ? 2u : 0u;
-        vor_index_t x = v[vor__next(i)], y = v[vor__prev(i)];
-        if (x != VOR__INFINITE && y != VOR__INFINITE) {
-            const vor_index_t ids[4] = {(vor_index_t)p, x, y, 0};
+        if (s.x != VOR__INFINITE && s.y != VOR__INFINITE) {
+            const vor_index_t ids[4] = {(vor_index_t)p, s.x, s.y, 0};
             limit = min_limit(limit, predicate_limit(d, p, ids, 3u, limit >= need));
         }
-        const vor__tri_t *o = &tri[t->n[i]];
-        unsigned k = vor__vertex_index(o, x);
-        vor_index_t far = vor__vertex(o, vor__next((k == 3u) ? 0u : k));
-        if (far != VOR__INFINITE) {
-            limit = min_limit(limit, conflict_limit(d, p, v, far, limit >= need));
+        if (s.far != VOR__INFINITE) {
+            limit = min_limit(limit, conflict_limit(d, p, s.v, s.far, limit >= need));
         }
-        vor_index_t next = t->n[vor__next(i)], w[3];
-        vor__vertices(&tri[next], w);
-        unsigned j = (w[1] == p) ? 1u : (w[2] == p) ? 2u : 0u;
-        vor_index_t z = w[vor__prev(j)];
-        if (z != VOR__INFINITE) {
-            limit = min_limit(limit, conflict_limit(d, p, v, z, limit >= need));
+        if (s.across != VOR__INFINITE) {
+            limit = min_limit(limit, conflict_limit(d, p, s.v, s.across, limit >= need));
         }
-        slot = next;
-        if (slot == p) {
+        if (!vor__star_advance(d, (vor_index_t)p, &s)) {
             break;
         }
-        v[0] = w[0];
-        v[1] = w[1];
-        v[2] = w[2];
     }
     limit = in_range(in_range(limit, at->x), at->y);
     uint32_t level = entry->stamp;
