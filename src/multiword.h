@@ -59,6 +59,7 @@
 #if VOR_LIMB_BITS == 64
 typedef uint64_t vor__limb;
 __extension__ typedef unsigned __int128 vor__dlimb;
+__extension__ typedef __int128 vor__sdlimb;
 #elif VOR_LIMB_BITS == 32
 typedef uint32_t vor__limb;
 typedef uint64_t vor__dlimb;
@@ -154,6 +155,18 @@ VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
     return (mid << 32) | (uint32_t)p00;
 #endif
 }
+
+#if VOR_LIMB_BITS == 64
+/* Sign of p0 q0 + p1 q1 + p2 q2 when each |product| is below 2^125, so
+ * that the sum fits a signed double limb: three machine multiplies and
+ * no branch on the terms' signs. 64-bit limbs only. */
+VOR__INLINE int vor__mw_sign_of_products(int64_t p0, int64_t q0, int64_t p1, int64_t q1,
+                                         int64_t p2, int64_t q2)
+{
+    vor__sdlimb sum = (vor__sdlimb)p0 * q0 + (vor__sdlimb)p1 * q1 + (vor__sdlimb)p2 * q2;
+    return (sum > 0) - (sum < 0);
+}
+#endif
 
 /* v << s and v >> s for 0 <= s < 64. On a 32-bit machine a 64-bit shift by
  * a variable amount becomes a runtime call (__aeabi_llsl, __ashldi3, ...)

@@ -173,6 +173,24 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
 
 int vor__incircle_mid(const int64_t d[6])
 {
+#if VOR_LIMB_BITS == 64
+    /* With 64-bit limbs and every lift below 2^61, each |cross| is below
+     * 2^61 too (|u x v| <= |u| |v|), the products below 2^122 and their sum
+     * fits a signed double limb: one sum, no accumulator chosen per sign.
+     * Lifts up to 2^63 (differences near 2^31) take the two sums below. */
+    int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
+    int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
+    int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+    uint64_t la = (uint64_t)vor__mul_i32(ax, ax) + (uint64_t)vor__mul_i32(ay, ay);
+    uint64_t lb = (uint64_t)vor__mul_i32(bx, bx) + (uint64_t)vor__mul_i32(by, by);
+    uint64_t lc = (uint64_t)vor__mul_i32(cx, cx) + (uint64_t)vor__mul_i32(cy, cy);
+    if (((la | lb | lc) >> 61) == 0u) {
+        return vor__mw_sign_of_products(
+            (int64_t)la, vor__mul_i32(bx, cy) - vor__mul_i32(by, cx), (int64_t)lb,
+            vor__mul_i32(cx, ay) - vor__mul_i32(cy, ax), (int64_t)lc,
+            vor__mul_i32(ax, by) - vor__mul_i32(ay, bx));
+    }
+#endif
     vor__mw_u128_t sums[2]; /* positive, negative */
     /* field by field: a structure copy is a memcpy call on Cortex-M0 */
     sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
