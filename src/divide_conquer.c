@@ -898,7 +898,8 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
         }
         /* sites are numbered in input order, so the next buckets' sites
          * and home slots lie anywhere in the arena */
-        for (uint32_t ahead = end; ahead < end + 4u && ahead + 12u < n; ahead++) {
+        for (uint32_t ahead = end; VOR__PREFETCHING && ahead < end + 4u && ahead + 12u < n;
+             ahead++) {
             VOR__PREFETCH(&d->sites[ids[ahead + 12u]]);
             VOR__PREFETCH(&b->tri[ids[ahead + 12u]]);
         }

@@ -536,7 +536,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         }
         star_load(d, p, s1, &st);
     }
-    for (unsigned k = 0; k < 3u; k++) {
+    for (unsigned k = 0; VOR__PREFETCHING && k < 3u; k++) {
         VOR__PREFETCH(&tri[tail->n[k]]);
     }
     /* each cut removes one neighbour: deg - 3 cuts */

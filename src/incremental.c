@@ -389,7 +389,7 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     vor__tri_t *tri = d->triangles;
     for (uint32_t i = 0; i < n; i++) {
         vor_index_t s = plan[2u * i], from = plan[2u * i + 1u];
-        if (i + 8u < distinct) { /* the memory of the insertion 8 ahead */
+        if (VOR__PREFETCHING && i + 8u < distinct) { /* the memory of the insertion 8 ahead */
             vor_index_t ahead = plan[2u * (i + 8u)], ahead_from = plan[2u * (i + 8u) + 1u];
             VOR__PREFETCH(&d->sites[ahead]);
             VOR__PREFETCH(&tri[ahead]);

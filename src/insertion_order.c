@@ -294,7 +294,14 @@ static void find_duplicates(const plan_grid_t *g)
 {
     const vor_index_t *start = g->start;
     vor_index_t *sorted = g->sorted;
+    uint32_t n = start[g->buckets], asked = 0;
     for (uint32_t b = 0; b < g->buckets; b++) {
+        /* coordinates are read by id, at random places: the next buckets'
+         * are asked for while this one is sorted */
+        uint32_t ahead = (n - start[b + 1u] > 32u) ? start[b + 1u] + 32u : n;
+        for (; VOR__PREFETCHING && asked < ahead; asked++) {
+            VOR__PREFETCH(&g->sites[sorted[asked]]);
+        }
         vor__sort_ids(g->sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]),
                       VOR__SORT_Z);
         for (uint32_t e = start[b]; e < start[b + 1u]; e++) {

@@ -58,11 +58,18 @@ typedef char vor__triangle_size_check[(sizeof(vor__tri_t) == VOR_TRIANGLE_BYTES)
 #define VOR__NONE ((vor_index_t)~(vor_index_t)0) /* no neighbour: empty slot */
 
 /* A hint to the cache: site ids are input positions, so the next sites'
- * coordinates and home slots lie anywhere in the arena (no effect without
- * GCC or clang, and none on cores without a cache). */
-#if defined(__GNUC__)
+ * coordinates and home slots lie anywhere in the arena. Only where it can
+ * help: with GCC or clang, and not on the microcontroller cores (Arm's
+ * M profile, 32-bit RISC-V), which read RAM in a cycle or two and would
+ * only pay the hint's instructions (a Cortex-M3 executes PLD). Code that
+ * exists only to prefetch tests VOR__PREFETCHING, so that it compiles
+ * away there. */
+#if defined(__GNUC__) && !(defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M') &&      \
+    !(defined(__riscv) && __riscv_xlen == 32)
+#define VOR__PREFETCHING 1
 #define VOR__PREFETCH(address) __builtin_prefetch(address)
 #else
+#define VOR__PREFETCHING 0
 #define VOR__PREFETCH(address) ((void)(address))
 #endif
 

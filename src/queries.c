@@ -49,7 +49,7 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
     for (uint32_t s = vor__next_used_slot(d, it->next_slot); s < end;
          s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &d->triangles[s];
-        if (s + 4u < end) {
+        if (VOR__PREFETCHING && s + 4u < end) {
             /* the sites of a triangle ahead, fetched while this one's are
              * compared: site ids are input positions, anywhere in memory */
             vor_index_t ahead[3];
