@@ -461,11 +461,14 @@ VOR__ALWAYS_INLINE int vor__mw_u128_compare(vor__mw_u128_t a, vor__mw_u128_t b)
     }
     return 0;
 }
-/* Bit length of v: the least k with v < 2^k, 0 for 0. By halving, not a
- * count-leading-zeros builtin: ARMv6-M has no such instruction, and the
- * builtin becomes a runtime call there. */
+/* Bit length of v: the least k with v < 2^k, 0 for 0. One CLZ where the
+ * core has it (Armv7-M and up); elsewhere by halving, not the builtin,
+ * which becomes a runtime call on ARMv6-M and 32-bit RISC-V without Zbb. */
 VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
 {
+#if defined(__GNUC__) && defined(__ARM_FEATURE_CLZ)
+    return (v == 0u) ? 0u : 32u - (unsigned)__builtin_clz(v);
+#else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
         if ((v >> half) != 0u) {
@@ -474,6 +477,7 @@ VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
         }
     }
     return k + v; /* v is 0 or 1 now */
+#endif
 }
 
 VOR__INLINE unsigned vor__mw_bit_length(uint64_t v)

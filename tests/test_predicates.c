@@ -490,6 +490,97 @@ static void check_perturbation_reference(void)
           later_terms);
 }
 
+/* The exact sign of incircle(q[0], q[1], q[2], q[3]) by the reference. */
+static int ref_incircle(const vor_point_t q[4])
+{
+    int64_t rows[4][4];
+    uint64_t lifts[4];
+    for (unsigned r = 0; r < 4; r++) {
+        ref_row(rows[r], &lifts[r], 0, q[r].x, q[r].y, 0);
+    }
+    return ref_det_sign(rows, lifts, 4);
+}
+
+/* vor_incircle against the reference for points crossing a circle: from
+ * inside a random triangle's circumcircle, a point steps along a small
+ * vector until it leaves; around the crossing found by bisection, and at
+ * distances 2^j from it, the determinant runs from 0 or +-1 up to its
+ * full size, so any tier or filter that decides a sign it cannot prove
+ * (the 32-bit-limb mid tier's filter) shows here. Triangles of spans
+ * 2^15 .. 2^30. */
+static void check_near_circles(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 61);
+    unsigned long checked = 0, bad = 0, crossings = 0, inside = 0;
+    for (unsigned n = 0; n < 160; n++) {
+        unsigned bits = 15u + n % 16u;
+        int32_t half = (int32_t)1 << (bits - 1u);
+        vor_point_t q[4];
+        for (unsigned k = 0; k < 3; k++) {
+            q[k].x = test_rng_range(&rng, -half, half - 1);
+            q[k].y = test_rng_range(&rng, -half, half - 1);
+        }
+        int64_t gx = ((int64_t)q[0].x + q[1].x + q[2].x) / 3;
+        int64_t gy = ((int64_t)q[0].y + q[1].y + q[2].y) / 3;
+        int32_t ux = test_rng_range(&rng, -7, 7), uy = test_rng_range(&rng, 1, 7);
+        /* steps keep the point within 2^30 of 0: differences below 2^31 */
+        int64_t most = ((int64_t)1 << 30) / 8 - half;
+        q[3].x = (int32_t)gx;
+        q[3].y = (int32_t)gy;
+        int start = ref_incircle(q);
+        int64_t lo = 0, hi = 1;
+        for (;; hi *= 2) { /* the first power of two outside */
+            if (hi > most) {
+                hi = 0;
+                break;
+            }
+            q[3].x = (int32_t)(gx + hi * ux);
+            q[3].y = (int32_t)(gy + hi * uy);
+            if (ref_incircle(q) != start) {
+                break;
+            }
+            lo = hi;
+        }
+        if (hi == 0 || start == 0) {
+            continue; /* the circle reaches past the box, or a degenerate triangle */
+        }
+        while (hi - lo > 1) { /* f(lo) = start, f(hi) != start */
+            int64_t mid = lo + (hi - lo) / 2;
+            q[3].x = (int32_t)(gx + mid * ux);
+            q[3].y = (int32_t)(gy + mid * uy);
+            if (ref_incircle(q) == start) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        crossings++;
+        for (int j = -40; j <= 40; j++) { /* offsets 0, +-1 .. +-4, +-8, +-16, .. */
+            unsigned a = (unsigned)(j < 0 ? -j : j);
+            int64_t step = (a <= 4u) ? (int64_t)a : (int64_t)1 << (a - 2u);
+            int64_t t = hi + ((j < 0) ? -step : step);
+            if (t < 0 || t > most) {
+                continue;
+            }
+            q[3].x = (int32_t)(gx + t * ux);
+            q[3].y = (int32_t)(gy + t * uy);
+            int want = ref_incircle(q), got = vor_incircle(&q[0], &q[1], &q[2], &q[3], NULL);
+            if (got != want && bad++ < 5) {
+                test_printf("incircle (%d,%d) (%d,%d) (%d,%d) (%d,%d): %d, expected %d\n",
+                            (int)q[0].x, (int)q[0].y, (int)q[1].x, (int)q[1].y, (int)q[2].x,
+                            (int)q[2].y, (int)q[3].x, (int)q[3].y, got, want);
+            }
+            inside += (want == start) ? 1u : 0u;
+            checked++;
+        }
+    }
+    test_printf("near circles: %lu crossings, %lu signs, %lu on the starting side\n", crossings,
+                checked, inside);
+    CHECK(crossings >= 100u && bad == 0, "near circles: %lu of %lu signs wrong, %lu crossings",
+          bad, checked, crossings);
+}
+
 void test_predicates(void)
 {
     check_multiply();
@@ -497,4 +588,5 @@ void test_predicates(void)
     check_vectors();
     check_grid_antisymmetry();
     check_perturbation_reference();
+    check_near_circles();
 }
