@@ -1,13 +1,50 @@
 /* SPDX-License-Identifier: MIT */
 // tools/peer-bench/bench_common.hpp - what the host benchmarks share: the
-// random generator that makes their inputs, and the number formats of
-// their Markdown tables.
+// random generator that makes their inputs, the clock, the command line's
+// size lists and errors, and the number formats of their Markdown tables.
 #ifndef VOR_BENCH_COMMON_HPP
 #define VOR_BENCH_COMMON_HPP
 
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
+#include <vector>
+
+// The program's name in its error messages; each main sets it first.
+static const char *bench_program = "bench";
+
+// An error message and exit status 2, as for a bad command line.
+[[noreturn]] static inline void die(const char *what)
+{
+    std::fprintf(stderr, "%s: %s\n", bench_program, what);
+    std::exit(2);
+}
+
+// A steady clock in seconds.
+static inline double now_s()
+{
+    using namespace std::chrono;
+    return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+// "N,N,..": a comma-separated list of sizes, each in [least, most].
+static inline std::vector<uint32_t> parse_sizes(const char *s, unsigned long least,
+                                                unsigned long most)
+{
+    std::vector<uint32_t> sizes;
+    while (*s != '\0') {
+        char *end;
+        unsigned long v = std::strtoul(s, &end, 10);
+        if (end == s || v < least || v > most) {
+            die("bad --sizes");
+        }
+        sizes.push_back((uint32_t)v);
+        s = (*end == ',') ? end + 1 : end;
+    }
+    return sizes;
+}
 
 // splitmix64: a fixed, portable sequence, so every library and every run
 // sees the same inputs.

@@ -37,7 +37,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -55,18 +54,6 @@ struct rng : splitmix64 {
     int32_t coordinate() { return (int32_t)(next() >> 39); } // [0, 2^25)
     uint32_t below(uint32_t n) { return (uint32_t)(next() % n); }
 };
-
-static double now_s()
-{
-    using namespace std::chrono;
-    return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
-
-static void die(const char *what)
-{
-    std::fprintf(stderr, "dynamic-host: %s\n", what);
-    std::exit(2);
-}
 
 enum class kind { remove, small_move, large_move };
 
@@ -210,23 +197,9 @@ static double run_cgal(Cgal_dt &dt, std::vector<Cgal_vertex> &handle, kind k,
 
 // ------------------------------------------------------------------- main
 
-static std::vector<uint32_t> parse_sizes(const char *s)
-{
-    std::vector<uint32_t> sizes;
-    while (*s) {
-        char *end;
-        unsigned long v = std::strtoul(s, &end, 10);
-        if (end == s || v < 16 || v > 2000000) {
-            die("bad --sizes");
-        }
-        sizes.push_back((uint32_t)v);
-        s = (*end == ',') ? end + 1 : end;
-    }
-    return sizes;
-}
-
 int main(int argc, char **argv)
 {
+    bench_program = "dynamic-host";
     std::vector<uint32_t> sizes = {10000, 100000, 1000000};
     uint32_t ops_count = 10000, reps = 3;
     const char *out_path = nullptr;
@@ -234,7 +207,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--sizes" && i + 1 < argc) {
-            sizes = parse_sizes(argv[++i]);
+            sizes = parse_sizes(argv[++i], 16, 2000000);
         } else if (a == "--ops" && i + 1 < argc) {
             ops_count = (uint32_t)std::strtoul(argv[++i], nullptr, 10);
         } else if (a == "--reps" && i + 1 < argc) {

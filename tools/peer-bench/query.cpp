@@ -61,7 +61,6 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -175,18 +174,6 @@ using Kd_tree = nanoflann::KDTreeSingleIndexAdaptor<Kd_metric, site_cloud, 2, ui
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Cgal_dt = CGAL::Delaunay_triangulation_2<Epick>;
 using Cgal_vertex = Cgal_dt::Vertex_handle;
-
-static double now_s()
-{
-    using namespace std::chrono;
-    return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
-
-static void die(const char *what)
-{
-    std::fprintf(stderr, "query-host: %s\n", what);
-    std::exit(2);
-}
 
 // The timed loops. Each stores its answers, read only after the clock stops.
 
@@ -390,21 +377,6 @@ static std::string targets(const std::vector<row> &rows)
     return t;
 }
 
-static std::vector<uint32_t> parse_sizes(const char *s)
-{
-    std::vector<uint32_t> out;
-    while (*s != '\0') {
-        char *end;
-        unsigned long v = std::strtoul(s, &end, 10);
-        if (end == s || v < 2 || v > VOR_MAX_SITES) {
-            die("bad --sizes");
-        }
-        out.push_back((uint32_t)v);
-        s = (*end == ',') ? end + 1 : end;
-    }
-    return out;
-}
-
 static uint32_t parse_count(const char *s)
 {
     char *end;
@@ -417,6 +389,7 @@ static uint32_t parse_count(const char *s)
 
 int main(int argc, char **argv)
 {
+    bench_program = "query-host";
     std::vector<uint32_t> sizes = {1000, 10000, 100000, 1000000};
     unsigned reps = 3;
     double min_time = 0.25;
@@ -428,7 +401,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--sizes" && i + 1 < argc) {
-            sizes = parse_sizes(argv[++i]);
+            sizes = parse_sizes(argv[++i], 2, VOR_MAX_SITES);
         } else if (a == "--reps" && i + 1 < argc) {
             reps = parse_count(argv[++i]);
         } else if (a == "--min-time" && i + 1 < argc) {
