@@ -74,7 +74,7 @@
  * (a core already waiting, as on a dual-core microcontroller) may lower
  * it. At least 8. */
 #ifndef VOR_DC_FORK_MIN_SITES
-#define VOR_DC_FORK_MIN_SITES 2048u
+#define VOR_DC_FORK_MIN_SITES 1024u
 #endif
 
 /* VOR_FAULT_INJECTION: test builds only. The perturbed predicates that the

@@ -65,8 +65,12 @@
  *
  * Memory: nothing beyond the arena. The sorted site order lives at the
  * top of the triangle slots and is read front to back while triangles
- * fill the slots from below (see vor_build_dc); the recursion is an
+ * fill the slots from below (see start()); the recursion is an
  * explicit stack of O(log n) frames.
+ *
+ * Two cores: vor_build_dc_forked builds the two halves of the top-level
+ * merge on two cores through the caller's fork/join hook, each in its own
+ * region of slots, then merges them on the calling core (build_forked).
  */
 #include "bucket_grid.h"
 #include "insertion_order.h"
@@ -1209,6 +1213,9 @@ static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count
         }
     }
 }
+
+/* the quadtree needs 8 sites (group_by_bucket) before it can fork */
+typedef char vor__fork_min_check[(VOR_DC_FORK_MIN_SITES >= 8u) ? 1 : -1];
 
 /* a triangle is a whole number of ids (12 = 6 x 2 or 20 = 5 x 4 bytes) */
 typedef char vor__ids_per_triangle_check[(sizeof(vor__tri_t) % sizeof(vor_index_t) == 0u) ? 1 : -1];
