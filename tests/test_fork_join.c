@@ -66,7 +66,7 @@ static void hook_join(void *context)
 enum family {
     F_DUPLICATES, /* 64 x 64 lattice points: duplicates in every half */
     F_UNIFORM,    /* the whole int32 range */
-    F_GRID,       /* a square grid: cocircular quadruples everywhere */
+    F_GRID,       /* 32 columns, at least as many rows: cocircular everywhere */
     F_LINE,       /* all collinear, in both halves */
     F_CLUSTERS,   /* six tight clusters */
     F_FLAT,       /* a wide flat strip: the quadtree's top half is empty */
@@ -90,8 +90,8 @@ static void make_family(enum family f, uint32_t n, test_rng_t *rng)
             p->y = (int32_t)test_rng_u32(rng);
             break;
         case F_GRID:
-            p->x = (int32_t)(i % 46u) * 7;
-            p->y = (int32_t)(i / 46u) * 7;
+            p->x = (int32_t)(i % 32u) * 7;
+            p->y = (int32_t)(i / 32u) * 7;
             break;
         case F_LINE: /* on y = 2x, in two bunches at its ends */
             p->x = (int32_t)i + ((i < n / 2u) ? 0 : 500000);
@@ -189,7 +189,9 @@ static const char *first_difference(const vor_t *a, const vor_t *b, uint32_t n)
 /* Does the input give both halves at least three ids, so that the build
  * forks? From how the families are made: the flat strip leaves the
  * quadtree's top half empty and F_TOP its bottom half with two sites;
- * the x-split's halves are always full (many distinct sites). */
+ * the others fill both halves by far (the grid is at least as tall as
+ * wide, the line and the clusters reach across); the x-split's halves are
+ * always full (many distinct sites). */
 static bool expect_fork(enum family f, uint32_t n, enum vor_dc_split split)
 {
     if (n < VOR_DC_FORK_MIN_SITES) {
