@@ -711,7 +711,7 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
  * the first occurrence first): reports the duplicates, empties their home
  * slots, and moves the distinct ids to the front, keeping their order.
  * Returns their number. */
-static uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
+VOR__ALWAYS_INLINE uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
 {
     const vor_point_t *p = b->d->sites;
     uint32_t m = 0;
@@ -734,7 +734,7 @@ static uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
 
 /* Sorts the sites ids[0, count), count >= 1, drops the duplicates and
  * counts the rest as built (the last of them too); returns their number. */
-static uint32_t sort_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
+VOR__ALWAYS_INLINE uint32_t sort_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
 {
     if (count > 1u) {
         vor__sort_ids(b->d->sites, ids, count, VOR__SORT_LEX);
@@ -915,8 +915,8 @@ static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned
 /* Top over bottom, the square's two halves (it starts at cell z0, its
  * children have side 2^side_log cells): F = the top, rows from the
  * middle on. */
-static vor_index_t merge_vertical(builder_t *b, vor_index_t top, vor_index_t bottom,
-                                  uint32_t z0, unsigned side_log)
+VOR__ALWAYS_INLINE vor_index_t merge_vertical(builder_t *b, vor_index_t top, vor_index_t bottom,
+                                              uint32_t z0, unsigned side_log)
 {
     b->by_line = true;
     b->f_above = true;
@@ -1037,8 +1037,8 @@ static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate
  * the home slots (a two-slot mesh is read first). Each bucket (or, for
  * the x-split, the whole array) is sorted in place and its distinct ids
  * moved to its front before it is built. */
-static int start(builder_t *b, vor_t *d, const vor_point_t *points, uint32_t n,
-                 enum vor_dc_split split, uint32_t *duplicate_of, vor_index_t **ids)
+VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, uint32_t n,
+                             enum vor_dc_split split, uint32_t *duplicate_of, vor_index_t **ids)
 {
     if (split != VOR_DC_QUADTREE && split != VOR_DC_XSPLIT) {
         return VOR_ERR_ARG;
@@ -1064,7 +1064,8 @@ static void all_ids(vor_index_t *ids, uint32_t n)
 }
 
 /* The whole build on the calling core. */
-static void build_all(builder_t *b, vor_index_t *ids, uint32_t n, enum vor_dc_split split)
+VOR__ALWAYS_INLINE void build_all(builder_t *b, vor_index_t *ids, uint32_t n,
+                                  enum vor_dc_split split)
 {
     if (split == VOR_DC_QUADTREE && n >= 8u) {
         group_by_bucket(b, ids, n);
@@ -1075,7 +1076,7 @@ static void build_all(builder_t *b, vor_index_t *ids, uint32_t n, enum vor_dc_sp
     }
 }
 
-static void finish(const builder_t *b)
+VOR__ALWAYS_INLINE void finish(const builder_t *b)
 {
     vor_t *d = b->d;
     d->vertex_count = b->distinct;
