@@ -122,7 +122,10 @@
  *   and nearest-site queries are about 8.8 KB on Cortex-M3 at -Os, and
  *   vor_build adds 1.3 KB. The divide-and-conquer builder is its own entry
  *   point, vor_build_dc, so vor_build does not pull it in; the geometry
- *   (edges, cells, hull) is linked only when called.
+ *   (edges, cells, hull) is linked only when called. vor_build_dc_forked
+ *   runs it on two cores through a caller's fork/join hook (pthreads, or a
+ *   dual-core microcontroller's second core): the library itself stays
+ *   single-threaded.
  *
  * CONFIGURATION: vor_config.h.  DESIGN: docs/design.md.  API: docs/api.md.
  */
@@ -480,6 +483,41 @@ enum vor_dc_split {
  */
 int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
                  enum vor_dc_split split, uint32_t *duplicate_of);
+
+/* A way to run work on another core, supplied by the caller: vor itself
+ * stays single-threaded and freestanding (docs/api.md has a pthreads and
+ * an RP2040 version).
+ *   fork  starts work(arg) on another core and returns 0, or returns
+ *         nonzero if it cannot (vor then runs work(arg) itself);
+ *   join  returns once the work of the last successful fork has finished,
+ *         with everything it wrote visible to the calling core (a
+ *         happens-before edge, as pthread_join gives).
+ * work runs exactly once, and must be able to use as much stack as
+ * vor_build_dc (docs/benchmarks.md, "Code size and stack"). */
+typedef struct vor_fork_join {
+    int (*fork)(void *context, void (*work)(void *arg), void *arg);
+    void (*join)(void *context);
+    void *context; /* passed to both */
+} vor_fork_join_t;
+
+/*
+ * vor_build_dc on two cores: from VOR_DC_FORK_MIN_SITES sites on, one half
+ * of the sites (the bottom half of the quadtree, or the first part of the
+ * x-split) is built through hook->fork while the calling core builds the
+ * other, and the calling core merges them after hook->join. The result is
+ * byte for byte vor_build_dc's, including d->stats' sums (docs/design.md,
+ * "Two cores"). hook NULL: vor_build_dc. Meanwhile the other core touches
+ * only d's arena, points already copied into it, and duplicate_of; the
+ * caller must not use d, its arena or duplicate_of until the call returns.
+ *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown split, a hook
+ *                whose fork or join is NULL
+ *   VOR_ERR_FULL n > max_sites
+ * On failure nothing changes and the hook is not called. Fault injection
+ * builds (tests only) with a nonzero fault rate build on one core.
+ */
+int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
+                        enum vor_dc_split split, uint32_t *duplicate_of,
+                        const vor_fork_join_t *hook);
 
 /* What vor_validate checks, in this order; the first failure is reported. */
 enum vor_check {

@@ -66,6 +66,17 @@
 #define VOR_TRACKER_EDGES 12
 #endif
 
+/* VOR_DC_FORK_MIN_SITES: vor_build_dc_forked hands half the work to the
+ * caller's fork/join hook only from this many sites on; below, starting
+ * the other core costs more than it saves and the build runs on the
+ * calling core alone (the result is the same either way). Measured with
+ * pthreads on the host (docs/benchmarks.md, "Two cores"); a cheaper fork
+ * (a core already waiting, as on a dual-core microcontroller) may lower
+ * it. At least 8. */
+#ifndef VOR_DC_FORK_MIN_SITES
+#define VOR_DC_FORK_MIN_SITES 1024u
+#endif
+
 /* VOR_FAULT_INJECTION: test builds only. The perturbed predicates that the
  * diagram uses return a wrong sign with a probability set per diagram
  * (vor_predicate_stats_t.fault_rate), to show that the topology survives

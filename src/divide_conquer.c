@@ -65,8 +65,12 @@
  *
  * Memory: nothing beyond the arena. The sorted site order lives at the
  * top of the triangle slots and is read front to back while triangles
- * fill the slots from below (see vor_build_dc); the recursion is an
+ * fill the slots from below (see start()); the recursion is an
  * explicit stack of O(log n) frames.
+ *
+ * Two cores: vor_build_dc_forked builds the two halves of the top-level
+ * merge on two cores through the caller's fork/join hook, each in its own
+ * region of slots, then merges them on the calling core (build_forked).
  */
 #include "bucket_grid.h"
 #include "insertion_order.h"
@@ -117,6 +121,7 @@ static inline bool axis_less(const vor_point_t *s, vor_index_t a, vor_index_t b,
 typedef struct {
     vor_t *d;
     vor__tri_t *tri;
+    vor_predicate_stats_t *stats; /* d's, or a forked worker's own */
     uint32_t *duplicate_of; /* vor_build's, or NULL */
     uint32_t next_extra; /* the next unused extra slot */
     uint32_t distinct;   /* distinct sites built so far */
@@ -135,6 +140,19 @@ typedef struct {
     unsigned k, shift;   /* the bucket grid (vor__grid_z) */
     uint32_t bound;      /* step bound for walks around a vertex */
 } builder_t;
+
+/* The perturbed predicates, counted in the builder's own stats: a worker
+ * of vor_build_dc_forked writes no counter the other core writes. */
+static inline int orient(const builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r)
+{
+    return vor__orient_counted(b->d->sites, b->stats, p, q, r);
+}
+
+static inline int incircle(const builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r,
+                           vor_index_t t)
+{
+    return vor__incircle_counted(b->d->sites, b->stats, p, q, r, t);
+}
 
 static inline bool in_f_finite(const builder_t *b, vor_index_t v)
 {
@@ -320,7 +338,6 @@ typedef struct {
 static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_single,
                           bool s_single, tangent_t *t)
 {
-    vor_t *d = b->d;
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
     vor_index_t l = f, r = s, l_stop = f, r_stop = s;
@@ -353,7 +370,7 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
             vor__vertices(&tri[g1], v);
             unsigned i = find(v, l);
             vor_index_t w = v[vor__next(i)];
-            if (vor__orient(d, l, r, w) < 0) {
+            if (orient(b, l, r, w) < 0) {
                 g1 = tri[g1].n[i];
                 l = w;
                 moves1++;
@@ -364,7 +381,7 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
             vor__vertices(&tri[g2], v);
             unsigned i = find(v, r);
             vor_index_t u = v[vor__prev(i)];
-            if (vor__orient(d, l, r, u) < 0) {
+            if (orient(b, l, r, u) < 0) {
                 g2 = tri[g2].n[i];
                 r = u;
                 moves2++;
@@ -451,14 +468,14 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
     unsigned inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
     vor_index_t c1 = left ? pv[vor__next(inf)] : pv[vor__prev(inf)];
     for (;;) {
-        *valid = on_side(b, c1, left) && (still_valid || vor__orient(b->d, l, r, c1) > 0);
+        *valid = on_side(b, c1, left) && (still_valid || orient(b, l, r, c1) > 0);
         still_valid = false;
         if (!*valid) {
             return c1;
         }
         vor__vertices(&tri[tri[pocket].n[inf]], v);
         vor_index_t c2 = third(v, left ? l : r, c1);
-        if (!on_side(b, c2, left) || vor__incircle(b->d, l, r, c1, c2) <= 0) {
+        if (!on_side(b, c2, left) || incircle(b, l, r, c1, c2) <= 0) {
             return c1;
         }
         vor_index_t x1, x2;
@@ -503,7 +520,7 @@ static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
          * other candidate outside its triangle's circle (the deletions on
          * one side leave the other side's candidate as it was) */
-        bool circle_left = lvalid && rvalid && vor__incircle(b->d, l, r, c1, e1) < 0;
+        bool circle_left = lvalid && rvalid && incircle(b, l, r, c1, e1) < 0;
         bool circle_right = lvalid && rvalid && !circle_left;
         bool left = lvalid && (!rvalid || circle_left);
         bool right = rvalid && !left;
@@ -627,7 +644,7 @@ struct pending {
 static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r)
 {
     vor__tri_t *tri = b->tri;
-    if (vor__orient(b->d, p, q, r) < 0) {
+    if (orient(b, p, q, r) < 0) {
         vor_index_t swap = q;
         q = r;
         r = swap;
@@ -650,6 +667,13 @@ static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_inde
  * stack then holds one part per set bit of i plus one, i < VOR_MAX_SITES /
  * 3: at most 15 with 16-bit ids, 22 with 32-bit ids. */
 #define SPLIT_STACK ((VOR_INDEX_BITS == 16) ? 15u : 22u)
+
+/* The size of the x-split's next leaf when `left` sites remain. */
+static inline uint32_t leaf_size(uint32_t left)
+{
+    return (left <= 2u || left == 4u) ? ((left == 1u) ? 1u : 2u) : 3u;
+}
+
 VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
 {
     struct pending stack[SPLIT_STACK];
@@ -658,19 +682,17 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
     for (uint32_t i = 0; pos < v || top > 1u; i++) {
         if (pos < v) {
             VOR_ASSERT(top < SPLIT_STACK);
-            uint32_t left = v - pos;
+            uint32_t size = leaf_size(v - pos);
             const vor_index_t *leaf = order + pos;
-            if (left == 1u) {
+            if (size == 1u) {
                 stack[top].part = single(b, leaf[0]);
-                pos += 1u;
-            } else if (left == 2u || left == 4u) {
+            } else if (size == 2u) {
                 vor__make_edge(b->d, leaf[0], leaf[1]);
                 stack[top].part = leaf[0];
-                pos += 2u;
             } else {
                 stack[top].part = triangle(b, leaf[0], leaf[1], leaf[2]);
-                pos += 3u;
             }
+            pos += size;
             stack[top].least = leaf[0];
             top++;
         }
@@ -689,7 +711,7 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
  * the first occurrence first): reports the duplicates, empties their home
  * slots, and moves the distinct ids to the front, keeping their order.
  * Returns their number. */
-static uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
+VOR__ALWAYS_INLINE uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
 {
     const vor_point_t *p = b->d->sites;
     uint32_t m = 0;
@@ -710,6 +732,19 @@ static uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
     return m;
 }
 
+/* Sorts the sites ids[0, count), count >= 1, drops the duplicates and
+ * counts the rest as built (the last of them too); returns their number. */
+VOR__ALWAYS_INLINE uint32_t sort_distinct(builder_t *b, vor_index_t *ids, uint32_t count)
+{
+    if (count > 1u) {
+        vor__sort_ids(b->d->sites, ids, count, VOR__SORT_LEX);
+    }
+    uint32_t m = keep_distinct(b, ids, count);
+    b->distinct += m;
+    b->last = ids[m - 1u];
+    return m;
+}
+
 /* Sorts the sites ids[0, count), drops the duplicates and builds the
  * rest by the x-split; returns the part (VOR__NONE if count is 0). */
 static vor_index_t build_sites(builder_t *b, vor_index_t *ids, uint32_t count)
@@ -717,13 +752,7 @@ static vor_index_t build_sites(builder_t *b, vor_index_t *ids, uint32_t count)
     if (count == 0u) {
         return VOR__NONE;
     }
-    if (count > 1u) {
-        vor__sort_ids(b->d->sites, ids, count, VOR__SORT_LEX);
-    }
-    uint32_t m = keep_distinct(b, ids, count);
-    b->distinct += m;
-    b->last = ids[m - 1u];
-    return build_split(b, ids, m);
+    return build_split(b, ids, sort_distinct(b, ids, count));
 }
 
 /* F and S merged on an axis (in_f set up by the caller), either possibly
@@ -883,15 +912,35 @@ static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned
     return (int64_t)((axis == 0u) ? d->low.x : d->low.y) + (int64_t)offset;
 }
 
-VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, uint32_t n)
+/* Top over bottom, the square's two halves (it starts at cell z0, its
+ * children have side 2^side_log cells): F = the top, rows from the
+ * middle on. */
+VOR__ALWAYS_INLINE vor_index_t merge_vertical(builder_t *b, vor_index_t top, vor_index_t bottom,
+                                              uint32_t z0, unsigned side_log)
+{
+    b->by_line = true;
+    b->f_above = true;
+    b->line = grid_line(b->d, vor__compact_bits(z0 >> 1) + (1u << side_log), 1, b->k, b->shift);
+    return combine(b, top, bottom, 1);
+}
+
+/* Builds the buckets [from_cell, to_cell) in Z order, their ids grouped in
+ * ids[0, n): all of them [0, 4^k), returning the root; or one half of the
+ * grid for vor_build_dc_forked: the bottom half [0, 4^k / 2), returning
+ * the bottom pair's merge of the top square, or the top half [4^k / 2,
+ * 4^k), returning its top pair's merge (merged with a bottom pair of
+ * VOR__NONE, i.e. not at all). */
+VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, uint32_t n,
+                                                uint32_t from_cell, uint32_t to_cell)
 {
     vor_t *d = b->d;
     unsigned k = b->k, shift = b->shift;
     uint32_t cells = 1u << (2u * k);
     vor_index_t bottom[QUADTREE_LEVELS], third_child[QUADTREE_LEVELS];
     vor_index_t root = VOR__NONE;
+    bottom[1] = VOR__NONE; /* the top half alone has no bottom pair */
     uint32_t pos = 0;
-    for (uint32_t c = 0; c < cells; c++) {
+    for (uint32_t c = from_cell; c < to_cell; c++) {
         uint32_t end = pos;
         while (end < n && vor__grid_z(d, ids[end], k, shift) == c) {
             end++;
@@ -935,14 +984,10 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
                 break;
             }
             vor_index_t top = combine(b, third_child[level], part, 0);
-            /* top and bottom halves: F = the top, rows from the middle on */
-            b->by_line = true;
-            b->f_above = true;
-            b->line = grid_line(d, vor__compact_bits(z0 >> 1) + (1u << side_log), 1, k, shift);
-            part = combine(b, top, bottom[level], 1);
+            part = merge_vertical(b, top, bottom[level], z0, side_log);
         }
     }
-    return root;
+    return (to_cell == cells) ? root : bottom[1];
 }
 
 /* Groups the ids[0, n) of the sites by quadtree bucket (n >= 8): the grid
@@ -958,8 +1003,43 @@ VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32
     b->shift = vor__grid_sort(b->d, n, b->k, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
 }
 
-int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
-                 enum vor_dc_split split, uint32_t *duplicate_of)
+/* ------------------------------------------------------------------ */
+/* The entry points                                                    */
+
+/* A builder for d's n sites, counting into stats, its extras from
+ * next_extra on. Field by field: no structure copies (memcpy). */
+static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate_of,
+                         vor_predicate_stats_t *stats, uint32_t next_extra)
+{
+    b->d = d;
+    b->tri = d->triangles;
+    b->stats = stats;
+    b->duplicate_of = duplicate_of;
+    b->next_extra = next_extra;
+    b->distinct = 0;
+    b->last = 0;
+    b->axis = 0;
+    b->by_line = false;
+    b->f_above = false;
+    b->split = 0;
+    b->line = 0;
+    b->k = 0;
+    b->shift = 0;
+    b->bound = 2u * n + 2u;
+}
+
+/* What both entry points do first: the checks and vor__build_start (a
+ * negative error or VOR_OK: done), then the builder and the place of the
+ * site ids. The site ids at the top of the triangle slots, read front to
+ * back while triangles fill the slots from below: once the first i ids
+ * are read, at most i - 2 extra slots are in use (one fewer per duplicate
+ * among them), and the n - i ids still to be read fit above them because
+ * an id is smaller than a triangle. For max_sites >= 3 they start above
+ * the home slots (a two-slot mesh is read first). Each bucket (or, for
+ * the x-split, the whole array) is sorted in place and its distinct ids
+ * moved to its front before it is built. */
+VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, uint32_t n,
+                             enum vor_dc_split split, uint32_t *duplicate_of, vor_index_t **ids)
 {
     if (split != VOR_DC_QUADTREE && split != VOR_DC_XSPLIT) {
         return VOR_ERR_ARG;
@@ -968,44 +1048,302 @@ int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
     if (status != VOR__BUILD_MESH) {
         return status;
     }
-    builder_t b;
-    b.d = d;
-    b.tri = d->triangles;
-    b.duplicate_of = duplicate_of;
-    b.next_extra = d->max_sites;
-    b.distinct = 0;
-    b.last = 0;
-    b.axis = 0;
-    b.by_line = false;
-    b.f_above = false;
-    b.split = 0;
-    b.line = 0;
-    b.k = 0;
-    b.shift = 0;
-    b.bound = 2u * n + 2u;
-    /* The site ids at the top of the triangle slots, read front to back
-     * while triangles fill the slots from below: once the first i ids are
-     * read, at most i - 2 extra slots are in use (one fewer per duplicate
-     * among them), and the n - i ids still to be read fit above them
-     * because an id is smaller than a triangle. For max_sites >= 3 they
-     * start above the home slots (a two-slot mesh is read first). Each
-     * bucket (or, for the x-split, the whole array) is sorted in place and
-     * its distinct ids moved to its front before it is built. */
+    builder_init(b, d, n, duplicate_of, &d->stats, d->max_sites);
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
-    vor_index_t *ids = base + entries - n;
-    if (split == VOR_DC_QUADTREE && n >= 8u) {
-        group_by_bucket(&b, ids, n);
-        (void)build_quadtree(&b, ids, n);
-    } else {
-        for (uint32_t s = 0; s < n; s++) {
-            ids[s] = (vor_index_t)s;
-        }
-        (void)build_sites(&b, ids, n);
+    *ids = base + entries - n;
+    return VOR__BUILD_MESH;
+}
+
+/* The ids 0 .. n - 1 in ids[0, n), for the x-split. */
+static void all_ids(vor_index_t *ids, uint32_t n)
+{
+    for (uint32_t s = 0; s < n; s++) {
+        ids[s] = (vor_index_t)s;
     }
-    d->vertex_count = b.distinct;
-    d->last_site = b.last;
+}
+
+/* The whole build on the calling core. */
+VOR__ALWAYS_INLINE void build_all(builder_t *b, vor_index_t *ids, uint32_t n,
+                                  enum vor_dc_split split)
+{
+    if (split == VOR_DC_QUADTREE && n >= 8u) {
+        group_by_bucket(b, ids, n);
+        (void)build_quadtree(b, ids, n, 0, 1u << (2u * b->k));
+    } else {
+        all_ids(ids, n);
+        (void)build_sites(b, ids, n);
+    }
+}
+
+VOR__ALWAYS_INLINE void finish(const builder_t *b)
+{
+    vor_t *d = b->d;
+    d->vertex_count = b->distinct;
+    d->last_site = b->last;
     vor__grid_rebuild(d);
+}
+
+int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
+                 enum vor_dc_split split, uint32_t *duplicate_of)
+{
+    builder_t b;
+    vor_index_t *ids;
+    int status = start(&b, d, points, n, split, duplicate_of, &ids);
+    if (status != VOR__BUILD_MESH) {
+        return status;
+    }
+    build_all(&b, ids, n, split);
+    finish(&b);
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Two cores (vor_build_dc_forked)                                     */
+
+/* One half of a forked build: its own builder and predicate counters, its
+ * ids, and what it built. The quadtree halves are cell ranges; to_cell 0
+ * marks an x-split half (its distinct sorted ids, leaves of the x-split). */
+typedef struct {
+    builder_t b;
+    vor_predicate_stats_t stats;
+    vor_index_t *ids;
+    uint32_t count;
+    uint32_t from_cell, to_cell;
+    vor_index_t part;
+} half_t;
+
+/* The work handed to the hook: builds one half. */
+static void build_half(void *arg)
+{
+    half_t *h = (half_t *)arg;
+    h->part = (h->to_cell != 0u)
+                  ? build_quadtree(&h->b, h->ids, h->count, h->from_cell, h->to_cell)
+                  : build_split(&h->b, h->ids, h->count);
+}
+
+static void stats_clear(vor_predicate_stats_t *s)
+{
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        s->orient2d[t] = s->incircle[t] = s->closer[t] = 0;
+    }
+    s->orient2d_perturbed = s->incircle_perturbed = s->closer_perturbed = 0;
+#ifdef VOR_FAULT_INJECTION
+    s->fault_rate = 0; /* forked builds run without faults */
+    s->fault_state = 1;
+#endif
+}
+
+/* Counters add modulo 2^32, as one build's would have wrapped. */
+static void stats_add(vor_predicate_stats_t *to, const vor_predicate_stats_t *from)
+{
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        to->orient2d[t] += from->orient2d[t];
+        to->incircle[t] += from->incircle[t];
+        to->closer[t] += from->closer[t];
+    }
+    to->orient2d_perturbed += from->orient2d_perturbed;
+    to->incircle_perturbed += from->incircle_perturbed;
+    to->closer_perturbed += from->closer_perturbed;
+}
+
+/* The x-split of m sorted distinct sites ends with the merge of its first
+ * 2^j leaves and the rest, 2^j < leaves <= 2^(j + 1) (build_split: the
+ * binary counter's highest bit, or the two halves when the count is a
+ * power of two). Returns the first part's number of sites. */
+static uint32_t xsplit_first_part(uint32_t m)
+{
+    uint32_t leaves = 0;
+    for (uint32_t pos = 0; pos < m; leaves++) {
+        pos += leaf_size(m - pos);
+    }
+    uint32_t first = 1;
+    while (2u * first < leaves) {
+        first *= 2u;
+    }
+    uint32_t sites = 0;
+    for (uint32_t leaf = 0; leaf < first; leaf++) {
+        sites += leaf_size(m - sites);
+    }
+    return sites;
+}
+
+/* The number of ids[0, n) (grouped in Z order) in the bottom half of the
+ * grid, cells below `half`: a binary search. */
+static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, uint32_t n,
+                                    uint32_t half)
+{
+    uint32_t low = 0, high = n;
+    while (low < high) {
+        uint32_t mid = low + ((high - low) >> 1);
+        if (vor__grid_z(b->d, ids[mid], b->k, b->shift) < half) {
+            low = mid + 1u;
+        } else {
+            high = mid;
+        }
+    }
+    return low;
+}
+
+/* Moves the second half's extras, tri[from, from + count), down by gap
+ * slots onto the end of the first half's, and every link into them with
+ * them: those of the second half's home slots and of its extras (the
+ * first half's triangles link none of them). All home slots of the sites
+ * [0, n) are looked at: the first half's have no such link, duplicates'
+ * are empty. */
+static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count, uint32_t gap)
+{
+    for (uint32_t slot = 0; slot < n + count; slot++) {
+        uint32_t at = (slot < n) ? slot : from + (slot - n);
+        vor__tri_t *t = &tri[(slot < n) ? at : at - gap];
+        if (slot >= n) { /* field by field: no memmove */
+            const vor__tri_t *old = &tri[at];
+            for (unsigned i = 0; i < sizeof t->v / sizeof t->v[0]; i++) {
+                t->v[i] = old->v[i];
+            }
+            for (unsigned i = 0; i < 3u; i++) {
+                t->n[i] = old->n[i];
+            }
+        } else if (vor__slot_empty(t)) {
+            continue;
+        }
+        for (unsigned i = 0; i < 3u; i++) {
+            if ((uint32_t)t->n[i] - from < count) {
+                t->n[i] = (vor_index_t)(t->n[i] - gap);
+            }
+        }
+    }
+}
+
+/* the quadtree needs 8 sites (group_by_bucket) before it can fork */
+typedef char vor__fork_min_check[(VOR_DC_FORK_MIN_SITES >= 8u) ? 1 : -1];
+
+/* a triangle is a whole number of ids (12 = 6 x 2 or 20 = 5 x 4 bytes) */
+typedef char vor__ids_per_triangle_check[(sizeof(vor__tri_t) % sizeof(vor_index_t) == 0u) ? 1 : -1];
+
+/*
+ * The two halves on two cores: the first (A: the bottom half of the grid,
+ * or the x-split's first part) through the hook, the second (B) on the
+ * calling core, then the last merge here. Every slot either writes is its
+ * own (docs/design.md, "Two cores"): A's and B's sites are disjoint, so
+ * are their home slots, marks and duplicate_of entries; each counts into
+ * its own stats; and the extra slots and ids are split into two regions
+ * in which the sequential invariant of start() holds:
+ *   A: extras from max_sites, its nA ids moved to end where B's extras
+ *      begin, at slot E = max_sites + nA - 2. A region whose ids end at
+ *      the start of slot X and whose extras start at slot S holds the
+ *      invariant iff S + (its ids) - 2 <= X: writing extra S + e needs
+ *      e + 3 ids read, and the unread ids need (ids - e - 3) id sizes,
+ *      less than the same number of slots. For A it is an equality; its
+ *      ids start above the home slots when nA (T - I) >= 2 T (T, I the
+ *      sizes of a triangle and an id), which nA >= 3 gives.
+ *   B: extras from E, its nB = n - nA ids (mB after the x-split's
+ *      deduplication) where they are, at the top: E + nB - 2 =
+ *      max_sites + n - 4 <= 2 max_sites - 2.
+ * Moving A's ids moves them down (their new end, E slots, is at or below
+ * the old one: nA T + nB I <= n T <= max_sites T), so a forward copy is
+ * safe. The sequential build allocates A's extras, then B's, then the
+ * last merge's two; here B's start nA - 2 - (A's extras) slots later when
+ * A had duplicates, and close_gap moves them down. Slot numbers decide
+ * nothing in a merge (only whether a slot is a home slot), so the mesh is
+ * then the sequential one byte for byte.
+ */
+VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t n,
+                                       enum vor_dc_split split, const vor_fork_join_t *hook)
+{
+    vor_t *d = b->d;
+    uint32_t count = n, n_a, cells = 0;
+    if (split == VOR_DC_QUADTREE) {
+        group_by_bucket(b, ids, n);
+        cells = 1u << (2u * b->k);
+        n_a = quadtree_first_part(b, ids, n, cells >> 1);
+    } else {
+        all_ids(ids, n);
+        count = sort_distinct(b, ids, n);
+        n_a = xsplit_first_part(count);
+    }
+    if (n_a < 3u || count - n_a < 3u) { /* one side (nearly) empty: no fork */
+        if (split == VOR_DC_QUADTREE) {
+            (void)build_quadtree(b, ids, n, 0, cells);
+        } else {
+            (void)build_split(b, ids, count);
+        }
+        return;
+    }
+    uint32_t gap_end = d->max_sites + n_a - 2u; /* E: B's first extra */
+    vor_index_t *ids_a =
+        (vor_index_t *)(void *)b->tri + (size_t)gap_end * (sizeof(vor__tri_t) / sizeof(vor_index_t)) - n_a;
+    for (uint32_t i = 0; i < n_a; i++) {
+        ids_a[i] = ids[i];
+    }
+    vor_index_t b_least = ids[n_a]; /* B's least site: the last merge's split */
+    half_t half[2];
+    for (unsigned h = 0; h < 2u; h++) {
+        half_t *x = &half[h];
+        stats_clear(&x->stats);
+        builder_init(&x->b, d, n, b->duplicate_of, &x->stats, (h == 0u) ? d->max_sites : gap_end);
+        x->b.k = b->k;
+        x->b.shift = b->shift;
+        x->ids = (h == 0u) ? ids_a : ids + n_a;
+        x->count = (h == 0u) ? n_a : count - n_a;
+        x->from_cell = (h == 0u) ? 0u : cells >> 1;
+        x->to_cell = (h == 0u) ? cells >> 1 : cells;
+        x->part = VOR__NONE;
+    }
+    half_t *a = &half[0], *s = &half[1];
+    /* A on the other core if the hook can; B here meanwhile */
+    bool forked = hook->fork(hook->context, build_half, a) == 0;
+    build_half(s);
+    if (forked) {
+        hook->join(hook->context);
+    } else {
+        build_half(a);
+    }
+    uint32_t used_b = s->b.next_extra - gap_end;
+    uint32_t gap = gap_end - a->b.next_extra;
+    if (gap > 0u) {
+        close_gap(b->tri, n, gap_end, used_b, gap);
+        if ((uint32_t)s->part - gap_end < used_b) { /* B's part is one of its ghosts */
+            s->part = (vor_index_t)(s->part - gap);
+        }
+    }
+    b->next_extra = a->b.next_extra + used_b;
+    b->distinct += a->b.distinct + s->b.distinct;
+    b->last = (s->b.distinct > 0u) ? s->b.last : b->last; /* the x-split's is set */
+    stats_add(b->stats, &a->stats);
+    stats_add(b->stats, &s->stats);
+    if (split == VOR_DC_QUADTREE) {
+        (void)merge_vertical(b, s->part, a->part, 0, b->k - 1u);
+    } else {
+        b->by_line = false;
+        b->split = b_least;
+        (void)combine(b, a->part, s->part, 0);
+    }
+}
+
+int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
+                        enum vor_dc_split split, uint32_t *duplicate_of,
+                        const vor_fork_join_t *hook)
+{
+    if (hook != NULL && (hook->fork == NULL || hook->join == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    builder_t b;
+    vor_index_t *ids;
+    int status = start(&b, d, points, n, split, duplicate_of, &ids);
+    if (status != VOR__BUILD_MESH) {
+        return status;
+    }
+    bool faults = false;
+#ifdef VOR_FAULT_INJECTION
+    faults = d->stats.fault_rate != 0u; /* one fault sequence: one core */
+#endif
+    if (hook == NULL || n < VOR_DC_FORK_MIN_SITES || faults) {
+        build_all(&b, ids, n, split);
+    } else {
+        build_forked(&b, ids, n, split, hook);
+    }
+    finish(&b);
     return VOR_OK;
 }

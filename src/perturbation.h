@@ -17,49 +17,60 @@
 #include "vor.h"
 
 /* The perturbed predicates as the mesh calls them: site ids are the
- * perturbation's order, the diagram's stats count the tiers, and the
- * narrow tiers are inlined. In fault injection builds (tests only) a sign
- * is flipped with probability fault_rate / 2^32. */
-static inline int vor__with_faults(vor_t *d, int sign)
+ * perturbation's order, a stats block counts the tiers (the diagram's,
+ * or a divide-and-conquer worker's own, so that two cores never write the
+ * same counter), and the narrow tiers are inlined. In fault injection
+ * builds (tests only) a sign is flipped with probability fault_rate / 2^32. */
+static inline int vor__with_faults(vor_predicate_stats_t *stats, int sign)
 {
 #ifdef VOR_FAULT_INJECTION
-    if (d->stats.fault_rate != 0u) {
-        uint64_t x = d->stats.fault_state;
+    if (stats->fault_rate != 0u) {
+        uint64_t x = stats->fault_state;
         x ^= x << 13;
         x ^= x >> 7;
         x ^= x << 17;
-        d->stats.fault_state = x;
-        return ((uint32_t)(x >> 32) < d->stats.fault_rate) ? -sign : sign;
+        stats->fault_state = x;
+        return ((uint32_t)(x >> 32) < stats->fault_rate) ? -sign : sign;
     }
 #else
-    (void)d;
+    (void)stats;
 #endif
     return sign;
 }
 
+static inline int vor__orient_counted(const vor_point_t *s, vor_predicate_stats_t *stats,
+                                      uint32_t a, uint32_t b, uint32_t c)
+{
+    int sign = vor__orient2d_exact(&s[a], &s[b], &s[c], stats);
+    if (sign == 0) {
+        sign = vor__orient2d_perturbed(s, a, b, c, stats);
+    }
+    return vor__with_faults(stats, sign);
+}
+
+VOR__INLINE int vor__incircle_counted(const vor_point_t *s, vor_predicate_stats_t *stats,
+                                      uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+{
+    int sign = vor__incircle_exact(&s[a], &s[b], &s[c], &s[p], stats);
+    if (sign == 0) {
+        sign = vor__incircle_perturbed(s, a, b, c, p, stats);
+    }
+    return vor__with_faults(stats, sign);
+}
+
 static inline int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c)
 {
-    const vor_point_t *s = d->sites;
-    int sign = vor__orient2d_exact(&s[a], &s[b], &s[c], &d->stats);
-    if (sign == 0) {
-        sign = vor__orient2d_perturbed(s, a, b, c, &d->stats);
-    }
-    return vor__with_faults(d, sign);
+    return vor__orient_counted(d->sites, &d->stats, a, b, c);
 }
 
 VOR__INLINE int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
 {
-    const vor_point_t *s = d->sites;
-    int sign = vor__incircle_exact(&s[a], &s[b], &s[c], &s[p], &d->stats);
-    if (sign == 0) {
-        sign = vor__incircle_perturbed(s, a, b, c, p, &d->stats);
-    }
-    return vor__with_faults(d, sign);
+    return vor__incircle_counted(d->sites, &d->stats, a, b, c, p);
 }
 
 static inline int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
 {
-    return vor__with_faults(d, vor_closer_sos(d->sites, p, a, b, &d->stats));
+    return vor__with_faults(&d->stats, vor_closer_sos(d->sites, p, a, b, &d->stats));
 }
 
 /* Does the triangle (v0, v1, v2) (finite or at infinity) conflict with

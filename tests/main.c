@@ -16,6 +16,7 @@ int main(void)
     test_centroid();
     test_dynamic();
     test_motion();
+    test_fork_join();
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -73,5 +73,6 @@ void test_api_safety(void);
 void test_centroid(void);
 void test_dynamic(void);
 void test_motion(void);
+void test_fork_join(void);
 
 #endif

@@ -72,6 +72,19 @@ static void make_points(test_rng_t *rng)
     }
 }
 
+/* A fork/join hook that counts its calls and runs the work at once. */
+static int safety_fork(void *context, void (*work)(void *arg), void *arg)
+{
+    (*(unsigned *)context)++;
+    work(arg);
+    return 0;
+}
+
+static void safety_join(void *context)
+{
+    (*(unsigned *)context)++;
+}
+
 static bool build_all(uint32_t max_sites)
 {
     return vor_init(&diagram, arena, sizeof arena, max_sites) == VOR_OK &&
@@ -242,6 +255,32 @@ static void check_insert_and_build(test_rng_t *rng)
                   VOR_ERR_FULL &&
               unchanged(),
           "build_dc: more points than room");
+    unsigned calls = 0;
+    vor_fork_join_t good = {safety_fork, safety_join, &calls};
+    vor_fork_join_t no_fork = {NULL, safety_join, &calls};
+    vor_fork_join_t no_join = {safety_fork, NULL, &calls};
+    CHECK(vor_build_dc_forked(NULL, points, 3, VOR_DC_QUADTREE, dup_out, &good) == VOR_ERR_ARG,
+          "build_dc_forked: NULL diagram");
+    CHECK(vor_build_dc_forked(&diagram, NULL, 3, VOR_DC_XSPLIT, dup_out, &good) == VOR_ERR_ARG &&
+              unchanged(),
+          "build_dc_forked: NULL points");
+    CHECK(vor_build_dc_forked(&diagram, points, 3, (enum vor_dc_split)9, dup_out, &good) ==
+                  VOR_ERR_ARG &&
+              unchanged(),
+          "build_dc_forked: unknown split");
+    CHECK(vor_build_dc_forked(&diagram, points, 3, VOR_DC_QUADTREE, dup_out, &no_fork) ==
+                  VOR_ERR_ARG &&
+              unchanged(),
+          "build_dc_forked: hook without fork");
+    CHECK(vor_build_dc_forked(&diagram, points, 3, VOR_DC_XSPLIT, dup_out, &no_join) ==
+                  VOR_ERR_ARG &&
+              unchanged(),
+          "build_dc_forked: hook without join");
+    CHECK(vor_build_dc_forked(&diagram, points, SAFE_SITES + 1u, VOR_DC_QUADTREE, dup_out,
+                              &good) == VOR_ERR_FULL &&
+              unchanged(),
+          "build_dc_forked: more points than room");
+    CHECK(calls == 0u, "failed forked builds called the hook %u times", calls);
     CHECK(same_bytes(dup_out, dup_before, sizeof dup_out), "failed builds wrote duplicate_of");
 
     /* VOR_NO_HINT inserts land where vor_insert puts them */
@@ -571,6 +610,7 @@ static void check_zeroed_diagram(void)
     bad += vor_insert_near(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_FULL;
     bad += vor_build(&zeroed, points, 1, NULL, NULL) != VOR_ERR_FULL;
     bad += vor_build_dc(&zeroed, points, 1, VOR_DC_QUADTREE, NULL) != VOR_ERR_FULL;
+    bad += vor_build_dc_forked(&zeroed, points, 1, VOR_DC_XSPLIT, NULL, NULL) != VOR_ERR_FULL;
     bad += vor_nearest(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
     bad += vor_nearest_k(&zeroed, 1, 1, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
     bad += vor_cell(&zeroed, 0, &box, poly, 4, &count) != VOR_ERR_ARG;

@@ -18,6 +18,8 @@ int main(void)
     vor_build_options_t options = {(enum vor_order)size_x(6)};
     acc |= vor_build(&d, raster_points, SIZE_SITES / 2u, &options, ids);
     acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7), ids);
+    acc |= vor_build_dc_forked(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7),
+                               ids, NULL);
     acc |= vor_insert(&d, size_x(1), size_y(1), &site);
     acc |= vor_insert_near(&d, size_x(2), size_y(2), site, &site);
     acc |= vor_motion_attach(&d, motion, sizeof motion);

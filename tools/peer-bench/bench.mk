@@ -63,9 +63,11 @@ ifeq ($(B),build/host)
 build/bench/%-host: tools/peer-bench/%.cpp tools/peer-bench/bench_common.hpp $(LIB_HDRS_BENCH) $(B)/libvor.a
 	@mkdir -p $(@D)
 	$(BENCH_CXX) $(BENCH_CXXFLAGS) $(BENCH_PEERS_$*) -Iinclude tools/peer-bench/$*.cpp $(B)/libvor.a \
-	    $(if $(BENCH_PEERS_$*),$(PEER_OBJS) -pthread -lm) $(BENCH_LDLIBS) -o $@
+	    $(if $(BENCH_PEERS_$*),$(PEER_OBJS) -pthread -lm) $(BENCH_THREADS_$*) $(BENCH_LDLIBS) -o $@
 
 BENCH_PEERS_delaunay = $(PEER_FLAGS)
+# vor_build_dc_forked's std::thread hook
+BENCH_THREADS_delaunay = -pthread
 build/bench/delaunay-host: $(PEER_OBJS) tools/peer-bench/jcv_peer.h
 
 # The peers' own build flags (their README's), warnings theirs to keep.

@@ -11,8 +11,8 @@
 // row: the best of R
 // wall-clock times of each library (the libraries take turns within each
 // repetition; vor's incremental build and both divide-and-conquer
-// variants), their ratios, and bytes per site. Then a table of time per
-// site for uniform n = 2^7 ... 2^20 (scaling(); --scaling-reps 0 skips it),
+// variants, the quadtree's on 2 threads too), their ratios, and bytes per
+// site. Then a table of time per site for uniform n = 2^7 ... 2^20 (scaling(); --scaling-reps 0 skips it),
 // also written as CSV for tools/peer-bench/plot_scaling.py. Input generation and the
 // conversion to each library's point type are not timed; allocation of the
 // structure and its page faults are (vor: malloc of VOR_ARENA_BYTES(n),
@@ -27,7 +27,9 @@
 // malloc_usable_size).
 //
 // A second table sets vor beside delaunay32 (1 and 2 threads) and
-// jc_voronoi when their sources are there (see "peers" below).
+// jc_voronoi when their sources are there (see "peers" below), with vor's
+// divide and conquer (quadtree) on 2 threads: vor_build_dc_forked with a
+// std::thread fork/join hook (the library itself stays single-threaded).
 //
 // Light correctness checks on every row: vor_validate passes; vor's
 // distinct sites equal CGAL's number_of_vertices() and Boost's cells; vor's
@@ -65,6 +67,7 @@
 #include <cstring>
 #include <new>
 #include <string>
+#include <thread>
 #include <vector>
 
 // ------------------------------------------------------------ heap counter
@@ -265,7 +268,27 @@ static void die(const char *what)
 }
 
 // vor_build in an order, or vor_build_dc with a split.
-enum vor_builder { VOR_INCREMENTAL, VOR_DC_X, VOR_DC_Q };
+enum vor_builder { VOR_INCREMENTAL, VOR_DC_X, VOR_DC_Q, VOR_DC_Q2 };
+
+// vor_build_dc_forked's hook with std::thread: fork starts the work on a
+// new thread (thread creation is timed, as delaunay32's is), join waits
+// for it (std::thread::join gives the happens-before the hook needs). The
+// library itself stays single-threaded.
+static int thread_fork(void *context, void (*work)(void *arg), void *arg)
+{
+    std::thread *worker = static_cast<std::thread *>(context);
+    try {
+        *worker = std::thread(work, arg);
+    } catch (...) {
+        return 1; // no thread: vor runs the work itself
+    }
+    return 0;
+}
+
+static void thread_join(void *context)
+{
+    static_cast<std::thread *>(context)->join();
+}
 
 static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_order order,
                       enum vor_builder builder = VOR_INCREMENTAL)
@@ -281,10 +304,13 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK) {
         die("vor_init failed");
     }
+    std::thread worker;
+    vor_fork_join_t hook = {thread_fork, thread_join, &worker};
     int err = (builder == VOR_INCREMENTAL)
                   ? vor_build(&v.d, p.data(), n, &opt, nullptr)
-                  : vor_build_dc(&v.d, p.data(), n,
-                                 builder == VOR_DC_X ? VOR_DC_XSPLIT : VOR_DC_QUADTREE, nullptr);
+                  : vor_build_dc_forked(&v.d, p.data(), n,
+                                        builder == VOR_DC_X ? VOR_DC_XSPLIT : VOR_DC_QUADTREE,
+                                        nullptr, builder == VOR_DC_Q2 ? &hook : nullptr);
     if (err != VOR_OK) {
         die("vor_build failed");
     }
@@ -526,6 +552,7 @@ struct row {
     uint32_t distinct = 0;
     double vor_ms = 1e300, cgal_ms = 1e300, boost_ms = 1e300, vor_input_ms = -1;
     double dc_ms = 1e300, dcq_ms = 1e300; // vor's divide and conquer: x-split, quadtree
+    double dcq2_ms = 1e300;               // the quadtree on 2 threads (vor_build_dc_forked)
     double vor_arena = 0;
     mem_result vor_mem, cgal_mem, boost_mem, d32_mem;
     peer_result d32_one, d32_two, jcv; // best of the repetitions
@@ -608,14 +635,15 @@ static void keep_best(peer_result &best, const peer_result &now)
 static std::string peer_table(const std::vector<row> &rows)
 {
     std::string t;
-    t += "| input | n | vor ms | delaunay32 1 thread ms | delaunay32 2 threads ms | "
-         "jc_voronoi ms | d32 1t/vor | d32 2t/vor | jcv/vor | vor B/site | d32 heap B/site | "
-         "jcv heap B/site |\n";
-    t += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    t += "| input | n | vor ms | vor 2 threads ms | delaunay32 1 thread ms | "
+         "delaunay32 2 threads ms | jc_voronoi ms | d32 1t/vor | d32 2t/vor | "
+         "d32 2t / vor 2t | jcv/vor | vor B/site | d32 heap B/site | jcv heap B/site |\n";
+    t += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const row &r : rows) {
         t += "| " + r.input + " | " + with_commas(r.n) + " | " + fmt("%.2f", r.vor_ms) + " | " +
-             peer_ms(r.d32_one) + " | " + peer_ms(r.d32_two) + " | " + peer_ms(r.jcv) + " | " +
-             peer_ratio(r.d32_one, r.vor_ms) + " | " + peer_ratio(r.d32_two, r.vor_ms) + " | " +
+             fmt("%.2f", r.dcq2_ms) + " | " + peer_ms(r.d32_one) + " | " + peer_ms(r.d32_two) +
+             " | " + peer_ms(r.jcv) + " | " + peer_ratio(r.d32_one, r.vor_ms) + " | " +
+             peer_ratio(r.d32_two, r.vor_ms) + " | " + peer_ratio(r.d32_two, r.dcq2_ms) + " | " +
              peer_ratio(r.jcv, r.vor_ms) + " | " + per_site(r.vor_arena, r.n) + " | " +
              per_site(r.d32_mem.heap, r.n) + " | " + per_site(r.jcv.heap, r.n) + " |\n";
     }
@@ -671,12 +699,12 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
                 r.vor_arena = (double)m.arena_bytes;
             }
         }
-        for (int algo = 0; algo < 2; algo++) { // vor, divide and conquer
+        for (int algo = 0; algo < 3; algo++) { // vor, divide and conquer
             vor_run v;
-            enum vor_builder a = (algo == 0) ? VOR_DC_X : VOR_DC_Q;
+            enum vor_builder a = (algo == 0) ? VOR_DC_X : (algo == 1) ? VOR_DC_Q : VOR_DC_Q2;
             double t0 = now_ms();
             build_vor(v, in.vor, VOR_ORDER_QUADTREE, a);
-            double &best = (algo == 0) ? r.dc_ms : r.dcq_ms;
+            double &best = (algo == 0) ? r.dc_ms : (algo == 1) ? r.dcq_ms : r.dcq2_ms;
             best = std::min(best, now_ms() - t0);
             if (rep == 0) { // the same mesh as the incremental build's
                 add_check(r, vor_validate(&v.d, nullptr) == VOR_OK, "D&C vor_validate");
