@@ -59,7 +59,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -255,17 +254,7 @@ struct vor_run {
     ~vor_run() { counted_free(arena); }
 };
 
-static double now_ms()
-{
-    using namespace std::chrono;
-    return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
-}
-
-static void die(const char *what)
-{
-    std::fprintf(stderr, "delaunay-host: %s\n", what);
-    std::exit(2);
-}
+static double now_ms() { return 1e3 * now_s(); }
 
 // vor_build in an order, or vor_build_dc with a split.
 enum vor_builder { VOR_INCREMENTAL, VOR_DC_X, VOR_DC_Q, VOR_DC_Q2 };
@@ -864,23 +853,9 @@ static std::string scaling(unsigned reps, const char *csv)
     return t;
 }
 
-static std::vector<uint32_t> parse_sizes(const char *s)
-{
-    std::vector<uint32_t> out;
-    while (*s != '\0') {
-        char *end;
-        unsigned long v = std::strtoul(s, &end, 10);
-        if (end == s || v < 2 || v > 100000000ul) {
-            die("bad --sizes");
-        }
-        out.push_back((uint32_t)v);
-        s = (*end == ',') ? end + 1 : end;
-    }
-    return out;
-}
-
 int main(int argc, char **argv)
 {
+    bench_program = "delaunay-host";
     char exe[4096];
     ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
     self_exe = (len > 0) ? std::string(exe, (size_t)len) : std::string(argv[0]);
@@ -897,7 +872,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         std::string a = argv[i];
         if (a == "--sizes" && i + 1 < argc) {
-            sizes = parse_sizes(argv[++i]);
+            sizes = parse_sizes(argv[++i], 2, 100000000ul);
         } else if (a == "--reps" && i + 1 < argc) {
             reps = (unsigned)std::max(1l, std::strtol(argv[++i], nullptr, 10));
         } else if (a == "--input-order-max" && i + 1 < argc) {
