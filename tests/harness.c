@@ -181,6 +181,26 @@ int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi)
     return (int32_t)((uint32_t)lo + r);
 }
 
+bool test_same_bytes(const void *a, const void *b, size_t n)
+{
+    const uint8_t *x = a, *y = b;
+    for (size_t i = 0; i < n; i++) {
+        if (x[i] != y[i]) {
+            return false;
+        }
+    }
+    return true;
+}
+
+void test_copy_bytes(void *to, const void *from, size_t n)
+{
+    uint8_t *t = to;
+    const uint8_t *f = from;
+    for (size_t i = 0; i < n; i++) {
+        t[i] = f[i];
+    }
+}
+
 uint32_t test_predicate_calls(const vor_t *d)
 {
     const vor_predicate_stats_t *s = &d->stats;

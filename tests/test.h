@@ -42,6 +42,10 @@ uint32_t test_rng_u32(test_rng_t *rng);
 /* Uniform in [lo, hi], inclusive, for hi - lo < 2^32. */
 int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);
 
+/* Byte-wise comparison and copy of n bytes (the harness uses no libc). */
+bool test_same_bytes(const void *a, const void *b, size_t n);
+void test_copy_bytes(void *to, const void *from, size_t n);
+
 /* Every predicate call d's statistics counted (all tiers, perturbed
  * included): a move that made none took the motion cache's fast path. */
 uint32_t test_predicate_calls(const vor_t *d);

@@ -21,26 +21,6 @@ static uint8_t arena[VOR_ARENA_BYTES(SAFE_SITES)] __attribute__((aligned(8)));
 static uint8_t saved_arena[sizeof arena];
 static vor_t diagram, saved_diagram;
 
-static void copy_bytes(void *to, const void *from, size_t n)
-{
-    uint8_t *t = to;
-    const uint8_t *f = from;
-    for (size_t i = 0; i < n; i++) {
-        t[i] = f[i];
-    }
-}
-
-static bool same_bytes(const void *a, const void *b, size_t n)
-{
-    const uint8_t *x = a, *y = b;
-    for (size_t i = 0; i < n; i++) {
-        if (x[i] != y[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
 static void fill(void *to, size_t n, uint8_t value)
 {
     uint8_t *t = to;
@@ -52,14 +32,14 @@ static void fill(void *to, size_t n, uint8_t value)
 /* The diagram and its whole arena, before a call that must fail. */
 static void snapshot(void)
 {
-    copy_bytes(&saved_diagram, &diagram, sizeof diagram);
-    copy_bytes(saved_arena, arena, sizeof arena);
+    test_copy_bytes(&saved_diagram, &diagram, sizeof diagram);
+    test_copy_bytes(saved_arena, arena, sizeof arena);
 }
 
 static bool unchanged(void)
 {
-    return same_bytes(&saved_diagram, &diagram, sizeof diagram) &&
-           same_bytes(saved_arena, arena, sizeof arena);
+    return test_same_bytes(&saved_diagram, &diagram, sizeof diagram) &&
+           test_same_bytes(saved_arena, arena, sizeof arena);
 }
 
 /* SAFE_SITES distinct random points (distinct by construction: a grid
@@ -100,14 +80,14 @@ static void check_config(void)
     fill(&tracker, sizeof tracker, 0x5A);
     snapshot();
     vor_tracker_t tracker_before;
-    copy_bytes(&tracker_before, &tracker, sizeof tracker);
+    test_copy_bytes(&tracker_before, &tracker, sizeof tracker);
     unsigned bad = 0;
     for (unsigned bit = 0; bit < 32u; bit++) {
         uint32_t other = VOR_CONFIG_FINGERPRINT ^ (1u << bit);
         bad += vor_init_checked(&diagram, arena, sizeof arena, SAFE_SITES, other) ==
                        VOR_ERR_CONFIG && unchanged() ? 0u : 1u;
         bad += vor_tracker_begin_checked(&tracker, &diagram, other) == VOR_ERR_CONFIG &&
-                       same_bytes(&tracker, &tracker_before, sizeof tracker)
+                       test_same_bytes(&tracker, &tracker_before, sizeof tracker)
                    ? 0u
                    : 1u;
     }
@@ -211,7 +191,7 @@ static void check_insert_and_build(test_rng_t *rng)
     /* a copy of site 3, so that id SAFE_SITES - 4 is a duplicate's */
     vor_point_t more[SAFE_SITES - 3u];
     uint32_t duplicate_of[SAFE_SITES - 3u];
-    copy_bytes(more, points, sizeof more);
+    test_copy_bytes(more, points, sizeof more);
     more[SAFE_SITES - 4u] = points[3];
     CHECK(vor_build(&diagram, more, SAFE_SITES - 3u, NULL, duplicate_of) == VOR_OK &&
               duplicate_of[SAFE_SITES - 4u] == 3u,
@@ -235,7 +215,7 @@ static void check_insert_and_build(test_rng_t *rng)
     uint32_t dup_out[SAFE_SITES + 1u];
     fill(dup_out, sizeof dup_out, 0xEE);
     uint32_t dup_before[SAFE_SITES + 1u];
-    copy_bytes(dup_before, dup_out, sizeof dup_out);
+    test_copy_bytes(dup_before, dup_out, sizeof dup_out);
     CHECK(vor_build(NULL, points, 3, NULL, dup_out) == VOR_ERR_ARG, "build: NULL diagram");
     CHECK(vor_build(&diagram, NULL, 3, NULL, dup_out) == VOR_ERR_ARG && unchanged(),
           "build: NULL points");
@@ -281,7 +261,7 @@ static void check_insert_and_build(test_rng_t *rng)
               unchanged(),
           "build_dc_forked: more points than room");
     CHECK(calls == 0u, "failed forked builds called the hook %u times", calls);
-    CHECK(same_bytes(dup_out, dup_before, sizeof dup_out), "failed builds wrote duplicate_of");
+    CHECK(test_same_bytes(dup_out, dup_before, sizeof dup_out), "failed builds wrote duplicate_of");
 
     /* VOR_NO_HINT inserts land where vor_insert puts them */
     CHECK(vor_init(&diagram, arena, sizeof arena, SAFE_SITES) == VOR_OK, "init");
@@ -304,14 +284,14 @@ static void check_reads(void)
     fill(&violation, sizeof violation, 0x33);
     vor_violation_t violation_before = violation;
     CHECK(vor_validate(NULL, &violation) == VOR_ERR_ARG &&
-              same_bytes(&violation, &violation_before, sizeof violation),
+              test_same_bytes(&violation, &violation_before, sizeof violation),
           "validate: NULL diagram");
     vor_memory_t memory;
     fill(&memory, sizeof memory, 0x33);
     vor_memory_t memory_before = memory;
     CHECK(vor_memory(NULL, &memory) == VOR_ERR_ARG &&
               vor_memory(&diagram, NULL) == VOR_ERR_ARG &&
-              same_bytes(&memory, &memory_before, sizeof memory) && unchanged(),
+              test_same_bytes(&memory, &memory_before, sizeof memory) && unchanged(),
           "memory: NULL");
 
     /* the predicates: 0 for a NULL point or a repeated index */
@@ -345,7 +325,7 @@ static void check_reads(void)
               vor_voronoi_vertex(&diagram, 0, 1, 2, NULL) == VOR_ERR_ARG &&
               vor_voronoi_vertex(&diagram, 0, 1, SAFE_SITES, &vertex) == VOR_ERR_ARG &&
               vor_voronoi_vertex(&diagram, VOR_NO_HINT, 1, 2, &vertex) == VOR_ERR_ARG &&
-              same_bytes(&vertex, &vertex_before, sizeof vertex) && unchanged(),
+              test_same_bytes(&vertex, &vertex_before, sizeof vertex) && unchanged(),
           "vertices: NULL, ids out of range");
 
     uint32_t out = 77, found = 77, list[3] = {77, 77, 77};
@@ -363,10 +343,10 @@ static void check_reads(void)
     vor_tracker_t tracker;
     fill(&tracker, sizeof tracker, 0x66);
     vor_tracker_t tracker_before;
-    copy_bytes(&tracker_before, &tracker, sizeof tracker);
+    test_copy_bytes(&tracker_before, &tracker, sizeof tracker);
     CHECK(vor_tracker_begin(NULL, &diagram) == VOR_ERR_ARG &&
               vor_tracker_begin(&tracker, NULL) == VOR_ERR_ARG &&
-              same_bytes(&tracker, &tracker_before, sizeof tracker) &&
+              test_same_bytes(&tracker, &tracker_before, sizeof tracker) &&
               vor_track(&zeroed, 0, 0, &out) == VOR_ERR_ARG &&
               vor_track(NULL, 0, 0, &out) == VOR_ERR_ARG && out == 77,
           "tracker: NULL, never begun");
@@ -429,7 +409,7 @@ static void check_iterators(void)
     bad += vor_edges_next(&edges, &edge) != 0;
     vor_edges_begin(&edges, &diagram);
     bad += vor_edges_next(&edges, NULL) != 0;
-    bad += !same_bytes(&edge, &edge_before, sizeof edge);
+    bad += !test_same_bytes(&edge, &edge_before, sizeof edge);
     while (vor_edges_next(&edges, &edge)) {
     }
     bad += vor_edges_next(&edges, &edge) != 0;
@@ -457,7 +437,7 @@ static void check_iterators(void)
     vor_point_t poly[VOR_CELL_MAX_VERTICES(SAFE_SITES)];
     fill(poly, sizeof poly, 0x88);
     vor_point_t poly_before[VOR_CELL_MAX_VERTICES(SAFE_SITES)];
-    copy_bytes(poly_before, poly, sizeof poly);
+    test_copy_bytes(poly_before, poly, sizeof poly);
     uint32_t capacity = VOR_CELL_MAX_VERTICES(SAFE_SITES);
     static vor_cell_iter_t zero_cells;
     vor_cell_iter_t cells;
@@ -479,7 +459,7 @@ static void check_iterators(void)
     bad += vor_cells_next(&cells, NULL, poly, capacity, &count) != VOR_ERR_ARG;
     bad += vor_cells_next(&cells, &site, poly, capacity, NULL) != VOR_ERR_ARG;
     bad += vor_cells_next(&cells, &site, NULL, capacity, &count) != VOR_ERR_ARG;
-    bad += (site != 77 || count != 77 || !same_bytes(poly, poly_before, sizeof poly));
+    bad += (site != 77 || count != 77 || !test_same_bytes(poly, poly_before, sizeof poly));
     CHECK(bad == 0 && unchanged(), "cell iterator, bad arguments: %u wrong", bad);
 
     /* an empty (flat) box: every site's cell, each with no vertices */
@@ -502,7 +482,7 @@ static void check_iterators(void)
     bad += vor_cell(&diagram, 0, &inverted_y, poly, capacity, &count) != VOR_ERR_ARG;
     bad += vor_cell(&diagram, SAFE_SITES, &box, poly, capacity, &count) != VOR_ERR_ARG;
     bad += vor_cell(&diagram, VOR_NO_HINT, &box, poly, capacity, &count) != VOR_ERR_ARG;
-    bad += (count != 77 || !same_bytes(poly, poly_before, sizeof poly));
+    bad += (count != 77 || !test_same_bytes(poly, poly_before, sizeof poly));
     CHECK(bad == 0 && unchanged(), "cell: %u bad arguments accepted or wrote", bad);
 
     /* the centroid: bad arguments write neither the output nor the
@@ -510,10 +490,10 @@ static void check_iterators(void)
     static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(SAFE_SITES))];
     static uint8_t scratch_before[sizeof scratch];
     fill(scratch, sizeof scratch, 0x99);
-    copy_bytes(scratch_before, scratch, sizeof scratch);
+    test_copy_bytes(scratch_before, scratch, sizeof scratch);
     vor_centroid_t centroid, centroid_before;
     fill(&centroid, sizeof centroid, 0x77);
-    copy_bytes(&centroid_before, &centroid, sizeof centroid);
+    test_copy_bytes(&centroid_before, &centroid, sizeof centroid);
     size_t bytes = sizeof scratch;
     bad = 0;
     bad += vor_cell_centroid(NULL, 0, &box, scratch, bytes, &centroid) != VOR_ERR_ARG;
@@ -524,12 +504,12 @@ static void check_iterators(void)
     bad += vor_cell_centroid(&diagram, 0, &inverted_y, scratch, bytes, &centroid) != VOR_ERR_ARG;
     bad += vor_cell_centroid(&diagram, SAFE_SITES, &box, scratch, bytes, &centroid) != VOR_ERR_ARG;
     bad += vor_cell_centroid(&diagram, VOR_NO_HINT, &box, scratch, bytes, &centroid) != VOR_ERR_ARG;
-    bad += !same_bytes(&centroid, &centroid_before, sizeof centroid);
+    bad += !test_same_bytes(&centroid, &centroid_before, sizeof centroid);
     bad += vor_cell_centroid(&diagram, 0, &box, scratch, 8, &centroid) != VOR_ERR_BUFFER;
     bad += (centroid.vertices < 3u || centroid.area != centroid_before.area ||
             centroid.point.x != centroid_before.point.x ||
             centroid.point.y != centroid_before.point.y);
-    bad += !same_bytes(scratch, scratch_before, sizeof scratch);
+    bad += !test_same_bytes(scratch, scratch_before, sizeof scratch);
     CHECK(bad == 0 && unchanged(), "cell centroid: %u bad arguments accepted or wrote", bad);
 }
 
@@ -550,8 +530,8 @@ static void check_raster(void)
     uint32_t areas[SAFE_SITES], areas_before[SAFE_SITES];
     fill(band, sizeof band, 0x99);
     fill(areas, sizeof areas, 0x99);
-    copy_bytes(band_before, band, sizeof band);
-    copy_bytes(areas_before, areas, sizeof areas);
+    test_copy_bytes(band_before, band, sizeof band);
+    test_copy_bytes(areas_before, areas, sizeof areas);
     unsigned flushes = 0;
     vor_raster_frame_t frame = {0, 0, 100, 100, 8, 4};
     vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
@@ -585,8 +565,8 @@ static void check_raster(void)
         if (e == 1u) {
             bad += vor_raster_euclid(&frame, &l1, &out, work, sizeof work) != VOR_ERR_ARG;
         }
-        bad += (flushes != 0u || !same_bytes(band, band_before, sizeof band) ||
-                !same_bytes(areas, areas_before, sizeof areas));
+        bad += (flushes != 0u || !test_same_bytes(band, band_before, sizeof band) ||
+                !test_same_bytes(areas, areas_before, sizeof areas));
         CHECK(bad == 0, "raster entry %u: %u bad arguments accepted or wrote", e, bad);
     }
     CHECK(vor_raster(&frame, &set, &out, work, sizeof work) == VOR_OK && flushes == 1u,

@@ -123,17 +123,6 @@ static void fill(uint8_t *to, size_t n)
     }
 }
 
-static bool same_bytes(const void *a, const void *b, size_t n)
-{
-    const uint8_t *x = a, *y = b;
-    for (size_t i = 0; i < n; i++) {
-        if (x[i] != y[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
 static bool same_stats(const vor_predicate_stats_t *a, const vor_predicate_stats_t *b)
 {
     bool same = a->orient2d_perturbed == b->orient2d_perturbed &&
@@ -158,29 +147,29 @@ static const char *first_difference(const vor_t *a, const vor_t *b, uint32_t n)
     if (a->last_site != b->last_site) {
         return "last_site";
     }
-    if (!same_bytes(ta, tb, (size_t)n * VOR_TRIANGLE_BYTES)) {
+    if (!test_same_bytes(ta, tb, (size_t)n * VOR_TRIANGLE_BYTES)) {
         return "home slots";
     }
     uint32_t extras = (a->vertex_count >= 2u) ? a->vertex_count - 2u : 0u;
     size_t from = (size_t)a->max_sites * VOR_TRIANGLE_BYTES;
-    if (!same_bytes(ta + from, tb + from, (size_t)extras * VOR_TRIANGLE_BYTES)) {
+    if (!test_same_bytes(ta + from, tb + from, (size_t)extras * VOR_TRIANGLE_BYTES)) {
         return "extra slots";
     }
-    if (!same_bytes(a->sites, b->sites, (size_t)n * sizeof(vor_point_t))) {
+    if (!test_same_bytes(a->sites, b->sites, (size_t)n * sizeof(vor_point_t))) {
         return "sites";
     }
     if (a->bucket_columns != b->bucket_columns || a->bucket_rows != b->bucket_rows ||
         a->bucket_scale != b->bucket_scale || a->bucket_origin.x != b->bucket_origin.x ||
         a->bucket_origin.y != b->bucket_origin.y || a->low.x != b->low.x ||
         a->low.y != b->low.y || a->high.x != b->high.x || a->high.y != b->high.y ||
-        !same_bytes(a->buckets, b->buckets,
+        !test_same_bytes(a->buckets, b->buckets,
                     (size_t)a->bucket_columns * a->bucket_rows * sizeof(vor_index_t))) {
         return "bucket grid";
     }
     if (!same_stats(&a->stats, &b->stats)) {
         return "predicate stats";
     }
-    if (!same_bytes(dup_seq, dup_fork, (size_t)n * sizeof(uint32_t))) {
+    if (!test_same_bytes(dup_seq, dup_fork, (size_t)n * sizeof(uint32_t))) {
         return "duplicate_of";
     }
     return NULL;

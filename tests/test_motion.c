@@ -220,39 +220,21 @@ static void degenerate_walks(void)
     crossing(3, 1, three[1], 0, -1, 14, "three sites collinear");
 }
 
-static bool bytes_equal(const uint8_t *a, const uint8_t *b, size_t n)
-{
-    for (size_t i = 0; i < n; i++) {
-        if (a[i] != b[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
-static void copy_bytes(uint8_t *to, const void *from, size_t n)
-{
-    const uint8_t *f = (const uint8_t *)from;
-    for (size_t i = 0; i < n; i++) {
-        to[i] = f[i];
-    }
-}
-
 static uint8_t saved_arena[sizeof arena], saved_cache[sizeof cache];
 static vor_t saved;
 
 static void save(void)
 {
-    copy_bytes((uint8_t *)&saved, &with, sizeof saved);
-    copy_bytes(saved_arena, arena, sizeof arena);
-    copy_bytes(saved_cache, cache, sizeof cache);
+    test_copy_bytes(&saved, &with, sizeof saved);
+    test_copy_bytes(saved_arena, arena, sizeof arena);
+    test_copy_bytes(saved_cache, cache, sizeof cache);
 }
 
 static bool unchanged(void)
 {
-    return bytes_equal((const uint8_t *)&saved, (const uint8_t *)&with, sizeof saved) &&
-           bytes_equal(saved_arena, arena, sizeof arena) &&
-           bytes_equal(saved_cache, cache, sizeof cache);
+    return test_same_bytes(&saved, &with, sizeof saved) &&
+           test_same_bytes(saved_arena, arena, sizeof arena) &&
+           test_same_bytes(saved_cache, cache, sizeof cache);
 }
 
 /* Tiny steps of every site until each has a box. */
