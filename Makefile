@@ -39,6 +39,14 @@ else
 B := build/$(PORT)
 SAN_FLAGS :=
 endif
+# LIMB_BITS=32 builds for the host with the 32-bit limbs of the targets'
+# wide arithmetic (their mid incircle filter included), so that the
+# sanitizers see it too.
+LIMB_FLAGS :=
+ifeq ($(LIMB_BITS),32)
+B := $(B)-limb32
+LIMB_FLAGS := -DVOR_LIMB_BITS=32
+endif
 GEN := build/gen
 
 include port/$(PORT)/port.mk
@@ -50,11 +58,12 @@ WARNINGS := -Wall -Wextra -Werror -pedantic -Wconversion -Wsign-conversion \
             -Wcast-align -Wundef -Wshadow
 OPT := -O2
 LIB_CFLAGS := -std=c99 -ffreestanding $(WARNINGS) $(OPT) -ffunction-sections \
-              -fdata-sections -fstack-usage -Iinclude $(ARCH_CFLAGS) $(SAN_FLAGS)
+              -fdata-sections -fstack-usage -Iinclude $(ARCH_CFLAGS) $(SAN_FLAGS) $(LIMB_FLAGS)
 # Test builds of the library trap on a failed internal assertion.
 CHECKED_DEFS := '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)'
 TEST_CFLAGS := -std=c99 $(WARNINGS) $(OPT) -ffunction-sections -fdata-sections \
-               -Iinclude -Isrc -Iport -Itests -Itests/vectors $(ARCH_CFLAGS) $(SAN_FLAGS)
+               -Iinclude -Isrc -Iport -Itests -Itests/vectors $(ARCH_CFLAGS) $(SAN_FLAGS) \
+               $(LIMB_FLAGS)
 HOST_TOOL_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARNINGS) -O2 -Iinclude -Isrc
 
 # sources.txt is the one list of library sources (CMake reads it too).

@@ -68,6 +68,7 @@ suite host tests PORT=host
 suite host-sanitize tests PORT=host SANITIZE=1
 suite host-faults fault-tests PORT=host SANITIZE=1
 suite host-config config-tests PORT=host SANITIZE=1
+suite host-limb32 tests PORT=host SANITIZE=1 LIMB_BITS=32
 
 # The host command-line tool and examples/contours, against a Python
 # big-integer oracle.
