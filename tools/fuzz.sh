@@ -26,13 +26,14 @@ if { [ "$mode" != --seconds ] && [ "$mode" != --brief ]; } || ! [ "$seconds" -ge
     exit 2
 fi
 shift 2
-harnesses=${*:-api16 api32 predicates raster cli}
+harnesses=${*:-api16 api32 predicates predicates32 raster cli}
 passed=0
 failed=0
 
-# corpus_name HARNESS: both index widths of the API harness share one corpus.
+# corpus_name HARNESS: both index widths of the API harness share one
+# corpus, and both limb widths of the predicates harness.
 corpus_name() {
-    case $1 in api16 | api32) echo api ;; *) echo "$1" ;; esac
+    case $1 in api16 | api32) echo api ;; predicates32) echo predicates ;; *) echo "$1" ;; esac
 }
 
 # options HARNESS: the harness's own libFuzzer options.

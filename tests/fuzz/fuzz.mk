@@ -12,7 +12,7 @@ FUZZ_DIR := build/fuzz
 FUZZ_CFLAGS := -std=c99 -g -O1 -fsanitize=fuzzer,address,undefined \
                -fno-sanitize-recover=all -fno-omit-frame-pointer $(WARNINGS) \
                $(CHECKED_DEFS) -Iinclude -Isrc -Itests -Itests/fuzz
-FUZZ_HARNESSES := $(addprefix $(FUZZ_DIR)/fuzz_,api16 api32 predicates raster cli)
+FUZZ_HARNESSES := $(addprefix $(FUZZ_DIR)/fuzz_,api16 api32 predicates predicates32 raster cli)
 FUZZ_DEPS := $(LIB_SRCS) $(LIB_HDRS) tests/fuzz/fuzz_common.h tests/fuzz/fuzz.mk
 # The CLI's sources, its main renamed and its exits routed through the
 # harness (tests/fuzz/fuzz_cli.c says why).
@@ -32,6 +32,11 @@ $(FUZZ_DIR)/fuzz_api%: tests/fuzz/fuzz_api.c $(FUZZ_DEPS) | fuzz-deps
 $(FUZZ_DIR)/fuzz_predicates: tests/fuzz/fuzz_predicates.c $(FUZZ_DEPS) | fuzz-deps
 	@mkdir -p $(FUZZ_DIR)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) $< $(LIB_SRCS) -o $@
+
+# The same harness on the targets' 32-bit limbs (their mid incircle filter).
+$(FUZZ_DIR)/fuzz_predicates32: tests/fuzz/fuzz_predicates.c $(FUZZ_DEPS) | fuzz-deps
+	@mkdir -p $(FUZZ_DIR)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -DVOR_LIMB_BITS=32 $< $(LIB_SRCS) -o $@
 
 $(FUZZ_DIR)/fuzz_raster: tests/fuzz/fuzz_raster.c tests/raster_reference.c tests/raster_reference.h $(FUZZ_DEPS) | fuzz-deps
 	@mkdir -p $(FUZZ_DIR)
