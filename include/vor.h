@@ -82,8 +82,10 @@
  *   it takes O(1) expected steps on uniform sites.
  *   vor_remove and vor_move keep the diagram exactly that of the current
  *   sites (the triangles a fresh build of them in id order gives) and the
- *   same topological guarantee; removed ids are reused, most recently
- *   freed first. Across a change: a vor_tracker_t sees d->revision move
+ *   same topological guarantee (removal's edge guard, which exact signs
+ *   provably never need, is compiled only where signs can be made to lie:
+ *   the fault-injection test builds); removed ids are reused, most
+ *   recently freed first. Across a change: a vor_tracker_t sees d->revision move
  *   and searches afresh (from the bucket grid, never from a stale site);
  *   a hint must be a site still in the mesh (else VOR_ERR_ARG); iterators
  *   must not outlive a change (begin them again).
