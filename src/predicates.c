@@ -215,7 +215,8 @@ static uint64_t point_bound(const int64_t shifted[6])
 /* With 32-bit limbs the mid tier's exact sums cost 2.6 times the narrow
  * tier (Cortex-M3), so the determinant P (12 monomials, each +-1 times a
  * product of four differences: lift x cross, 4 monomials a term) is first
- * taken of the differences shifted right by s until they fit 15 bits:
+ * taken of the differences shifted right by s until they fit 15 bits (s
+ * from m, the OR of their bounds, which the caller chose the tier by):
  * d = 2^s d' + r, 0 <= r < 2^s, |d'| <= A = 2^14, exact in int64 by the
  * narrow tier. A product of four differences then differs from 2^4s times
  * that of the d' by at most 2^4s ((A + 1)^4 - A^4), so |P(d) - 2^4s P(d')|
@@ -224,10 +225,8 @@ static uint64_t point_bound(const int64_t shifted[6])
  * from each point's size may decide (point_bound). Returns 0 when neither
  * does (an exact zero among them: the exact sums then decide). Straight-line
  * code on 32-bit values: loops cost a Cortex-M3 more than they save. */
-static int incircle_filter(const int64_t d[6])
+static int incircle_filter(const int64_t d[6], uint32_t m)
 {
-    uint32_t m = (uint32_t)(vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
-                            vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]));
     unsigned bits = vor__mw_bit_length32(m), s = (bits > 14u) ? bits - 14u : 0u;
     int64_t shifted[6] = {floor_shift(d[0], s), floor_shift(d[1], s), floor_shift(d[2], s),
                           floor_shift(d[3], s), floor_shift(d[4], s), floor_shift(d[5], s)};
@@ -241,13 +240,15 @@ static int incircle_filter(const int64_t d[6])
 }
 #endif
 
-int vor__incircle_mid(const int64_t d[6])
+int vor__incircle_mid(const int64_t d[6], uint64_t bound)
 {
 #if MID_FILTER
-    int filtered = incircle_filter(d);
+    int filtered = incircle_filter(d, (uint32_t)bound);
     if (filtered != 0) {
         return filtered;
     }
+#else
+    (void)bound; /* only the filter sizes anything by it */
 #endif
 #if VOR_LIMB_BITS == 64
     /* With 64-bit limbs and every lift below 2^61, each |cross| is below

@@ -23,7 +23,9 @@
 
 /* Out-of-line tiers (predicates.c). */
 int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d);
-int vor__incircle_mid(const int64_t d[6]);
+/* bound: the OR of vor__mw_bound over d (below 2^31), which the caller
+ * computed to choose the tier; the mid tier's filter sizes its cut by it. */
+int vor__incircle_mid(const int64_t d[6], uint64_t bound);
 int vor__incircle_wide(const int64_t d[6]);
 
 /* Bit length of the exact |orient2d| and |incircle| determinants (0 for
@@ -88,7 +90,7 @@ VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
     }
     if (m < 0x80000000u) {
         VOR__COUNT(stats, incircle[VOR_TIER_MID]);
-        return vor__incircle_mid(d);
+        return vor__incircle_mid(d, m);
     }
     VOR__COUNT(stats, incircle[VOR_TIER_WIDE]);
     return vor__incircle_wide(d);
