@@ -29,6 +29,25 @@ static inline double now_s()
     return duration<double>(steady_clock::now().time_since_epoch()).count();
 }
 
+// A bad command line: the program's options and exit status 2.
+[[noreturn]] static inline void usage(const char *options)
+{
+    std::fprintf(stderr, "usage: %s %s\n", bench_program, options);
+    std::exit(2);
+}
+
+// The result: text on stdout, and into the --out file when one is named.
+static inline void publish(const std::string &text, const char *path)
+{
+    std::fputs(text.c_str(), stdout);
+    if (path != nullptr) {
+        FILE *f = std::fopen(path, "w");
+        if (f == nullptr || std::fputs(text.c_str(), f) < 0 || std::fclose(f) != 0) {
+            die("cannot write --out file");
+        }
+    }
+}
+
 // "N,N,..": a comma-separated list of sizes, each in [least, most].
 static inline std::vector<uint32_t> parse_sizes(const char *s, unsigned long least,
                                                 unsigned long most)
@@ -68,6 +87,26 @@ static inline std::string fmt(const char *format, double v)
     char buf[64];
     std::snprintf(buf, sizeof buf, format, v);
     return buf;
+}
+
+// A Markdown table row of cells, "| a | b |", and a header: its titles'
+// row and the separator under it, newlines included.
+static inline std::string md_row(const std::vector<std::string> &cells)
+{
+    std::string row = "|";
+    for (const std::string &c : cells) {
+        row += " " + c + " |";
+    }
+    return row;
+}
+
+static inline std::string md_head(const std::vector<std::string> &titles)
+{
+    std::string rule = "|";
+    for (size_t i = 0; i < titles.size(); i++) {
+        rule += "---|";
+    }
+    return md_row(titles) + "\n" + rule + "\n";
 }
 
 // 1234567 -> "1,234,567"

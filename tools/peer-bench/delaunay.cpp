@@ -557,18 +557,15 @@ static std::string per_site(double bytes, uint32_t n)
 
 static std::string table(const std::vector<row> &rows)
 {
-    std::string t;
-    t += "| input | n | vor ms | CGAL ms | Boost ms | CGAL/vor | Boost/vor | vor B/site | "
-         "CGAL B/site | Boost B/site | vor input-order ms | vor D&C ms | "
-         "vor D&C quadtree ms |\n";
-    t += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::string t = md_head({"input", "n", "vor ms", "CGAL ms", "Boost ms", "CGAL/vor",
+                             "Boost/vor", "vor B/site", "CGAL B/site", "Boost B/site",
+                             "vor input-order ms", "vor D&C ms", "vor D&C quadtree ms"});
     for (const row &r : rows) {
-        t += "| " + r.input + " | " + with_commas(r.n) + " | " + fmt("%.2f", r.vor_ms) + " | " +
-             fmt("%.2f", r.cgal_ms) + " | " + fmt("%.2f", r.boost_ms) + " | " +
-             fmt("%.2f", r.cgal_ms / r.vor_ms) + " | " + fmt("%.2f", r.boost_ms / r.vor_ms) +
-             " | " + per_site(r.vor_arena, r.n) + " | " + per_site(r.cgal_mem.rss, r.n) + " | " +
-             per_site(r.boost_mem.rss, r.n) + " | " + fmt("%.2f", r.vor_input_ms) + " | " +
-             fmt("%.2f", r.dc_ms) + " | " + fmt("%.2f", r.dcq_ms) + " |";
+        t += md_row({r.input, with_commas(r.n), fmt("%.2f", r.vor_ms), fmt("%.2f", r.cgal_ms),
+                     fmt("%.2f", r.boost_ms), fmt("%.2f", r.cgal_ms / r.vor_ms),
+                     fmt("%.2f", r.boost_ms / r.vor_ms), per_site(r.vor_arena, r.n),
+                     per_site(r.cgal_mem.rss, r.n), per_site(r.boost_mem.rss, r.n),
+                     fmt("%.2f", r.vor_input_ms), fmt("%.2f", r.dc_ms), fmt("%.2f", r.dcq_ms)});
         if (r.check != "ok") {
             t += " **check: " + r.check + "**";
         }
@@ -579,16 +576,15 @@ static std::string table(const std::vector<row> &rows)
 
 static std::string memory_table(const std::vector<row> &rows)
 {
-    std::string t;
-    t += "| input | n | distinct | vor arena | vor RSS | vor heap | CGAL RSS | CGAL heap | "
-         "Boost RSS | Boost heap |\n";
-    t += "|---|---|---|---|---|---|---|---|---|---|\n";
+    std::string t = md_head({"input", "n", "distinct", "vor arena", "vor RSS", "vor heap",
+                             "CGAL RSS", "CGAL heap", "Boost RSS", "Boost heap"});
     for (const row &r : rows) {
-        t += "| " + r.input + " | " + with_commas(r.n) + " | " + with_commas(r.distinct) +
-             " | " + per_site(r.vor_arena, r.n) + " | " + per_site(r.vor_mem.rss, r.n) + " | " +
-             per_site(r.vor_mem.heap, r.n) + " | " + per_site(r.cgal_mem.rss, r.n) + " | " +
-             per_site(r.cgal_mem.heap, r.n) + " | " + per_site(r.boost_mem.rss, r.n) + " | " +
-             per_site(r.boost_mem.heap, r.n) + " |\n";
+        t += md_row({r.input, with_commas(r.n), with_commas(r.distinct),
+                     per_site(r.vor_arena, r.n), per_site(r.vor_mem.rss, r.n),
+                     per_site(r.vor_mem.heap, r.n), per_site(r.cgal_mem.rss, r.n),
+                     per_site(r.cgal_mem.heap, r.n), per_site(r.boost_mem.rss, r.n),
+                     per_site(r.boost_mem.heap, r.n)}) +
+             "\n";
     }
     return t;
 }
@@ -623,18 +619,18 @@ static void keep_best(peer_result &best, const peer_result &now)
 
 static std::string peer_table(const std::vector<row> &rows)
 {
-    std::string t;
-    t += "| input | n | vor ms | vor 2 threads ms | delaunay32 1 thread ms | "
-         "delaunay32 2 threads ms | jc_voronoi ms | d32 1t/vor | d32 2t/vor | "
-         "d32 2t / vor 2t | jcv/vor | vor B/site | d32 heap B/site | jcv heap B/site |\n";
-    t += "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    std::string t = md_head({"input", "n", "vor ms", "vor 2 threads ms", "delaunay32 1 thread ms",
+                             "delaunay32 2 threads ms", "jc_voronoi ms", "d32 1t/vor",
+                             "d32 2t/vor", "d32 2t / vor 2t", "jcv/vor", "vor B/site",
+                             "d32 heap B/site", "jcv heap B/site"});
     for (const row &r : rows) {
-        t += "| " + r.input + " | " + with_commas(r.n) + " | " + fmt("%.2f", r.vor_ms) + " | " +
-             fmt("%.2f", r.dcq2_ms) + " | " + peer_ms(r.d32_one) + " | " + peer_ms(r.d32_two) +
-             " | " + peer_ms(r.jcv) + " | " + peer_ratio(r.d32_one, r.vor_ms) + " | " +
-             peer_ratio(r.d32_two, r.vor_ms) + " | " + peer_ratio(r.d32_two, r.dcq2_ms) + " | " +
-             peer_ratio(r.jcv, r.vor_ms) + " | " + per_site(r.vor_arena, r.n) + " | " +
-             per_site(r.d32_mem.heap, r.n) + " | " + per_site(r.jcv.heap, r.n) + " |\n";
+        t += md_row({r.input, with_commas(r.n), fmt("%.2f", r.vor_ms), fmt("%.2f", r.dcq2_ms),
+                     peer_ms(r.d32_one), peer_ms(r.d32_two), peer_ms(r.jcv),
+                     peer_ratio(r.d32_one, r.vor_ms), peer_ratio(r.d32_two, r.vor_ms),
+                     peer_ratio(r.d32_two, r.dcq2_ms), peer_ratio(r.jcv, r.vor_ms),
+                     per_site(r.vor_arena, r.n), per_site(r.d32_mem.heap, r.n),
+                     per_site(r.jcv.heap, r.n)}) +
+             "\n";
     }
     return t;
 }
@@ -886,11 +882,8 @@ int main(int argc, char **argv)
         } else if (a == "--scaling-csv" && i + 1 < argc) {
             scaling_csv = argv[++i];
         } else {
-            std::fprintf(stderr,
-                         "usage: %s [--sizes N,N,..] [--reps R] [--input-order-max N] "
-                         "[--out FILE] [--no-mem] [--scaling-reps R] [--scaling-csv FILE]\n",
-                         argv[0]);
-            return 2;
+            usage("[--sizes N,N,..] [--reps R] [--input-order-max N] [--out FILE] [--no-mem] "
+                  "[--scaling-reps R] [--scaling-csv FILE]");
         }
     }
 
@@ -930,13 +923,7 @@ int main(int argc, char **argv)
         text += "\nTime per site against n, uniform full-range int32 sites (best of " +
                 std::to_string(scaling_reps) + " rounds):\n\n" + scaling(scaling_reps, scaling_csv);
     }
-    std::fputs(text.c_str(), stdout);
-    if (out != nullptr) {
-        FILE *f = std::fopen(out, "w");
-        if (f == nullptr || std::fputs(text.c_str(), f) < 0 || std::fclose(f) != 0) {
-            die("cannot write --out file");
-        }
-    }
+    publish(text, out);
     if (!ok) {
         std::fprintf(stderr, "delaunay-host: a correctness check failed (see the table)\n");
     }

@@ -217,8 +217,7 @@ int main(int argc, char **argv)
         } else if (a == "--out" && i + 1 < argc) {
             out_path = argv[++i];
         } else {
-            die("usage: dynamic-host [--sizes N,N,..] [--ops K] [--reps R] [--only KIND] "
-                "[--out FILE]");
+            usage("[--sizes N,N,..] [--ops K] [--reps R] [--only KIND] [--out FILE]");
         }
     }
     if (ops_count == 0 || reps == 0) {
@@ -285,14 +284,6 @@ int main(int argc, char **argv)
             std::fprintf(stderr, "%s", row);
         }
     }
-    std::printf("%s", table.c_str());
-    if (out_path != nullptr) {
-        FILE *f = std::fopen(out_path, "w");
-        if (f == nullptr) {
-            die("cannot write --out");
-        }
-        std::fputs(table.c_str(), f);
-        std::fclose(f);
-    }
+    publish(table, out_path);
     return all_ok ? 0 : 1;
 }

@@ -76,15 +76,21 @@ struct rng : splitmix64 {
     double unit() { return (double)(next() >> 11) * 0x1p-53; } // [0, 1)
 };
 
-static std::vector<vor_point_t> make_sites(uint32_t n)
+// count points uniform in [0, 2^25)^2 from the generator seeded by seed.
+static std::vector<vor_point_t> uniform_points(uint64_t seed, uint32_t count)
 {
-    rng r{0x51735ull * 1000003u + n};
-    std::vector<vor_point_t> p(n);
+    rng r{seed};
+    std::vector<vor_point_t> p(count);
     for (auto &q : p) {
         q.x = r.coordinate();
         q.y = r.coordinate();
     }
     return p;
+}
+
+static std::vector<vor_point_t> make_sites(uint32_t n)
+{
+    return uniform_points(0x51735ull * 1000003u + n, n);
 }
 
 // Morton (Z-order) key of a point in [0, 2^25)^2: its coordinates' bits
@@ -108,13 +114,7 @@ static void sort_morton(std::vector<vor_point_t> &p)
 
 static std::vector<vor_point_t> make_random_queries(uint32_t n, uint32_t count)
 {
-    rng r{0x4A11D0ull * 1000003u + n};
-    std::vector<vor_point_t> q(count);
-    for (auto &p : q) {
-        p.x = r.coordinate();
-        p.y = r.coordinate();
-    }
-    return q;
+    return uniform_points(0x4A11D0ull * 1000003u + n, count);
 }
 
 // The walk: fixed step length, heading turning by up to 0.1 radian a
@@ -422,11 +422,8 @@ int main(int argc, char **argv)
         } else if (a == "--out" && i + 1 < argc) {
             out = argv[++i];
         } else {
-            std::fprintf(stderr,
-                         "usage: %s [--sizes N,N,..] [--reps R] [--min-time S] [--coherent Q] "
-                         "[--random Q] [--step F] [--leaf L] [--morton] [--out FILE]\n",
-                         argv[0]);
-            return 2;
+            usage("[--sizes N,N,..] [--reps R] [--min-time S] [--coherent Q] [--random Q] "
+                  "[--step F] [--leaf L] [--morton] [--out FILE]");
         }
     }
 
@@ -487,13 +484,7 @@ int main(int argc, char **argv)
         ok &= r.mismatches() == 0;
     }
     std::string text = table(rows) + "\nTargets on the host (issue 4):\n\n" + targets(rows);
-    std::fputs(text.c_str(), stdout);
-    if (out != nullptr) {
-        FILE *f = std::fopen(out, "w");
-        if (f == nullptr || std::fputs(text.c_str(), f) < 0 || std::fclose(f) != 0) {
-            die("cannot write --out file");
-        }
-    }
+    publish(text, out);
     if (!ok) {
         std::fprintf(stderr, "query-host: answers disagree (see the mismatches column)\n");
     }
