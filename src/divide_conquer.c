@@ -137,7 +137,8 @@ typedef struct {
     bool by_line, f_above;
     vor_index_t split;
     int64_t line;
-    unsigned k, shift;   /* the bucket grid (vor__grid_z) */
+    unsigned k;          /* the quadtree's grid: 2^k x 2^k buckets over */
+    vor__grid_square_t square; /* this square (vor__grid_z) */
     uint32_t bound;      /* step bound for walks around a vertex */
 } builder_t;
 
@@ -903,13 +904,13 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
 #define QUADTREE_LEVELS ((VOR_INDEX_BITS == 16) ? 7u : 10u)
 
 /* The least coordinate (x on axis 0, y on axis 1) in grid column (row)
- * `index` or beyond: (c - low) 2^k / 2^shift >= index iff
- * c - low >= ceil(index 2^shift / 2^k); index <= 2^12, shift <= 33. */
-static int64_t grid_line(const vor_t *d, uint32_t index, unsigned axis, unsigned k,
-                         unsigned shift)
+ * `index` or beyond: (c - x0) 2^k / 2^shift >= index iff
+ * c - x0 >= ceil(index 2^shift / 2^k); index <= 2^12, shift <= 32. */
+static int64_t grid_line(const builder_t *b, uint32_t index, unsigned axis)
 {
-    uint64_t offset = vor__shr_u64(vor__shl_u64(index, shift) + ((1u << k) - 1u), k);
-    return (int64_t)((axis == 0u) ? d->low.x : d->low.y) + (int64_t)offset;
+    unsigned k = b->k;
+    uint64_t offset = vor__shr_u64(vor__shl_u64(index, b->square.shift) + ((1u << k) - 1u), k);
+    return ((axis == 0u) ? b->square.x0 : b->square.y0) + (int64_t)offset;
 }
 
 /* Top over bottom, the square's two halves (it starts at cell z0, its
@@ -920,7 +921,7 @@ VOR__ALWAYS_INLINE vor_index_t merge_vertical(builder_t *b, vor_index_t top, vor
 {
     b->by_line = true;
     b->f_above = true;
-    b->line = grid_line(b->d, vor__compact_bits(z0 >> 1) + (1u << side_log), 1, b->k, b->shift);
+    b->line = grid_line(b, vor__compact_bits(z0 >> 1) + (1u << side_log), 1);
     return combine(b, top, bottom, 1);
 }
 
@@ -934,7 +935,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
                                                 uint32_t from_cell, uint32_t to_cell)
 {
     vor_t *d = b->d;
-    unsigned k = b->k, shift = b->shift;
+    unsigned k = b->k;
     uint32_t cells = 1u << (2u * k);
     vor_index_t bottom[QUADTREE_LEVELS], third_child[QUADTREE_LEVELS];
     vor_index_t root = VOR__NONE;
@@ -942,7 +943,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
     uint32_t pos = 0;
     for (uint32_t c = from_cell; c < to_cell; c++) {
         uint32_t end = pos;
-        while (end < n && vor__grid_z(d, ids[end], k, shift) == c) {
+        while (end < n && vor__grid_z(d, ids[end], k, &b->square) == c) {
             end++;
         }
         /* sites are numbered in input order, so the next buckets' sites
@@ -978,7 +979,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
             /* left and right children: F left of the middle column */
             b->by_line = true;
             b->f_above = false;
-            b->line = grid_line(d, vor__compact_bits(z0) + (1u << side_log), 0, k, shift);
+            b->line = grid_line(b, vor__compact_bits(z0) + (1u << side_log), 0);
             if (child == 1u) {
                 bottom[level] = combine(b, bottom[level], part, 0);
                 break;
@@ -992,7 +993,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
 
 /* Groups the ids[0, n) of the sites by quadtree bucket (n >= 8): the grid
  * sort into 4^k buckets of two to eight sites, n / 8 < 4^k <= n / 2; sets
- * b->k and b->shift. Its counters lie right below ids (4^k + 1 <= n / 2 +
+ * b->k and b->square. Its counters lie right below ids (4^k + 1 <= n / 2 +
  * 1 entries: above the home slots for max_sites >= 3, and free until the
  * build starts). Out of line: its frame is not on the merges' stack. */
 VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
@@ -1000,7 +1001,8 @@ VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32
     while (b->k + 1u < QUADTREE_LEVELS && vor__shl_u64(8u, 2u * b->k) <= n) {
         b->k++;
     }
-    b->shift = vor__grid_sort(b->d, n, b->k, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
+    vor__grid_square(b->d, true, &b->square);
+    vor__grid_sort(b->d, n, b->k, &b->square, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1024,7 +1026,8 @@ static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate
     b->split = 0;
     b->line = 0;
     b->k = 0;
-    b->shift = 0;
+    b->square.x0 = b->square.y0 = 0;
+    b->square.shift = 0;
     b->bound = 2u * n + 2u;
 }
 
@@ -1177,7 +1180,7 @@ static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, 
     uint32_t low = 0, high = n;
     while (low < high) {
         uint32_t mid = low + ((high - low) >> 1);
-        if (vor__grid_z(b->d, ids[mid], b->k, b->shift) < half) {
+        if (vor__grid_z(b->d, ids[mid], b->k, &b->square) < half) {
             low = mid + 1u;
         } else {
             high = mid;
@@ -1284,7 +1287,9 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
         stats_clear(&x->stats);
         builder_init(&x->b, d, n, b->duplicate_of, &x->stats, (h == 0u) ? d->max_sites : gap_end);
         x->b.k = b->k;
-        x->b.shift = b->shift;
+        x->b.square.x0 = b->square.x0;
+        x->b.square.y0 = b->square.y0;
+        x->b.square.shift = b->square.shift;
         x->ids = (h == 0u) ? ids_a : ids + n_a;
         x->count = (h == 0u) ? n_a : count - n_a;
         x->from_cell = (h == 0u) ? 0u : cells >> 1;

@@ -433,7 +433,9 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     g.bucket_at = g.rep + n;
     g.cell_j = g.bucket_at + g.buckets;
     g.next = g.cell_j + g.buckets;
-    (void)vor__grid_sort(d, n, g.k, VOR__CELL_ROWS, g.start, g.sorted);
+    vor__grid_square_t square;
+    vor__grid_square(d, false, &square);
+    vor__grid_sort(d, n, g.k, &square, VOR__CELL_ROWS, g.start, g.sorted);
     find_duplicates(&g);
     if (duplicate_of != NULL) {
         for (uint32_t s = 0; s < n; s++) {

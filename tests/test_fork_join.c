@@ -69,7 +69,7 @@ enum family {
     F_GRID,       /* 32 columns, at least as many rows: cocircular everywhere */
     F_LINE,       /* all collinear, in both halves */
     F_CLUSTERS,   /* six tight clusters */
-    F_FLAT,       /* a wide flat strip: the quadtree's top half is empty */
+    F_FLAT,       /* a wide flat strip: the quadtree's midline cuts it lengthwise */
     F_TOP,        /* two sites in the bottom half of the grid, the rest on top */
     F_FAMILIES
 };
@@ -176,17 +176,18 @@ static const char *first_difference(const vor_t *a, const vor_t *b, uint32_t n)
 }
 
 /* Does the input give both halves at least three ids, so that the build
- * forks? From how the families are made: the flat strip leaves the
- * quadtree's top half empty and F_TOP its bottom half with two sites;
- * the others fill both halves by far (the grid is at least as tall as
- * wide, the line and the clusters reach across); the x-split's halves are
- * always full (many distinct sites). */
+ * forks? From how the families are made: the quadtree's square is centred
+ * on the sites' box, so its midline halves the box's height; F_TOP puts
+ * two sites below it and the rest far above; the others fill both halves
+ * by far (uniform in a box, or a grid, line, clusters or strip reaching
+ * across the middle); the x-split's halves are always full (many distinct
+ * sites). */
 static bool expect_fork(enum family f, uint32_t n, enum vor_dc_split split)
 {
     if (n < VOR_DC_FORK_MIN_SITES) {
         return false;
     }
-    return split == VOR_DC_XSPLIT || (f != F_FLAT && f != F_TOP);
+    return split == VOR_DC_XSPLIT || f != F_TOP;
 }
 
 static void check_family(enum family f, uint32_t n, test_rng_t *rng)
