@@ -504,13 +504,15 @@ typedef struct vor_fork_join {
 
 /*
  * vor_build_dc on two cores: from VOR_DC_FORK_MIN_SITES sites on, one half
- * of the sites (the bottom half of the quadtree, or the first part of the
- * x-split) is built through hook->fork while the calling core builds the
- * other, and the calling core merges them after hook->join. The result is
- * byte for byte vor_build_dc's, including d->stats' sums (docs/design.md,
- * "Two cores"). hook NULL: vor_build_dc. Meanwhile the other core touches
- * only d's arena, points already copied into it, and duplicate_of; the
- * caller must not use d, its arena or duplicate_of until the call returns.
+ * of the sites (the bottom half of the quadtree, whose square is centred
+ * on the sites' box so that sites spread over it split about evenly, or
+ * the first part of the x-split) is built through hook->fork while the
+ * calling core builds the other, and the calling core merges them after
+ * hook->join. The result is byte for byte vor_build_dc's, including
+ * d->stats' sums (docs/design.md, "Two cores"). hook NULL: vor_build_dc.
+ * Meanwhile the other core touches only d's arena, points already copied
+ * into it, and duplicate_of; the caller must not use d, its arena or
+ * duplicate_of until the call returns.
  *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown split, a hook
  *                whose fork or join is NULL
  *   VOR_ERR_FULL n > max_sites
