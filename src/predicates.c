@@ -367,45 +367,43 @@ int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
 int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, vor_predicate_stats_t *stats)
 {
-    int sign = 0;
     VOR__COUNT(stats, orient2d_perturbed);
     VOR_ASSERT(i != j && j != k && i != k);
-    const uint32_t ids[3] = {i, j, k};
-    /* the largest index is the origin; of the other two rows (call order),
-     * `low` has the smaller index: rank 0 */
-    size_t top = (ids[1] > ids[0]) ? 1u : 0u;
-    top = (ids[2] > ids[top]) ? 2u : top;
-    /* rows other than `top`, in call order; their 2x2 minor with cofactor
-     * sign (-1)^top is the determinant */
-    size_t row[2] = {(top == 0) ? 1u : 0u, (top == 2) ? 1u : 2u};
-    size_t low = (ids[row[0]] < ids[row[1]]) ? 0u : 1u;
-    /* the rows relative to the top site */
-    int64_t x[2], y[2];
-    for (size_t r = 0; r < 2; r++) {
-        x[r] = (int64_t)sites[ids[row[r]]].x - sites[ids[top]].x;
-        y[r] = (int64_t)sites[ids[row[r]]].y - sites[ids[top]].y;
+    /* orient2d is invariant under rotation of its points: rotate the
+     * largest index, the origin, to the last place, (u, v, w). The minor
+     * is then det [[u - w], [v - w]], cofactor sign +1. */
+    uint32_t u = i, v = j, w = k;
+    if (u > v && u > w) { /* (j, k, i) */
+        u = j;
+        v = k;
+        w = i;
+    } else if (v > w) { /* (k, i, j) */
+        u = k;
+        v = i;
+        w = j;
     }
-    static const enum row_kind kinds[3] = {ROW_POINT, ROW_DY, ROW_DX};
-    /* the rank-1 site's kind is the more significant digit; the first term
-     * (both ROW_POINT) is the exact determinant, known to be 0, and
-     * (ROW_DX, ROW_DY) is +-1, so the loops end by then. Every term has a
-     * unit row, (0, 1) or (1, 0), so its 2x2 determinant is +-x, +-y or +-1
-     * of the other row: no product is needed. */
-    for (unsigned hi = 0; hi < 3 && sign == 0; hi++) {
-        for (unsigned lo = (hi == 0) ? 1u : 0u; lo < 3 && sign == 0; lo++) {
-            enum row_kind first = kinds[low == 0u ? lo : hi];
-            enum row_kind second = kinds[low == 1u ? lo : hi];
-            if (first == ROW_POINT) { /* (x, y) over (0, 1) or (1, 0) */
-                sign = vor__mw_sign64((second == ROW_DY) ? x[0] : -y[0]);
-            } else if (second == ROW_POINT) { /* (0, 1) or (1, 0) over (x, y) */
-                sign = vor__mw_sign64((first == ROW_DY) ? -x[1] : y[1]);
-            } else { /* two unit rows */
-                sign = (first == second) ? 0 : (first == ROW_DX) ? 1 : -1;
-            }
-        }
+    /* L: the rank-0 site (the smaller of u, v), H the other; s = +1 when
+     * L is the minor's first row. The terms after the exact one (0), with
+     * (L's kind, H's kind), kinds in the order ROW_POINT, ROW_DY, ROW_DX
+     * and H's the more significant, all have a unit row (0, 1) or (1, 0):
+     *   (DY, POINT): s (-xH)     (DX, POINT): s yH
+     *   (POINT, DY): s xL        (DY, DY): 0 (equal rows)
+     *   (DX, DY): s              (each coordinate relative to w)
+     * No products, and no tiers: the first nonzero one is the sign. */
+    bool l_first = u < v;
+    const vor_point_t *low = &sites[l_first ? u : v], *high = &sites[l_first ? v : u];
+    const vor_point_t *origin = &sites[w];
+    int sign = -vor__mw_sign64((int64_t)high->x - origin->x);
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)high->y - origin->y);
     }
-    VOR_ASSERT(sign != 0);
-    return (top == 1) ? -sign : sign;
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)low->x - origin->x);
+    }
+    if (sign == 0) {
+        sign = 1;
+    }
+    return l_first ? sign : -sign;
 }
 
 /* Sign of the perturbation's term whose minor rows (x[r], y[r]: the
