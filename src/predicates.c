@@ -336,24 +336,6 @@ int vor_incircle(const vor_point_t *a, const vor_point_t *b,
 
 enum row_kind { ROW_POINT, ROW_DY, ROW_SQUARE, ROW_DX, ROW_KINDS };
 
-/* rank[p] = position of ids[p] among ids[0..n) in increasing order;
- * returns the position of the largest. */
-static size_t rank_sites(const uint32_t ids[], size_t n, size_t rank[])
-{
-    size_t top = 0;
-    for (size_t p = 0; p < n; p++) {
-        rank[p] = 0;
-        for (size_t q = 0; q < n; q++) {
-            VOR_ASSERT(q == p || ids[q] != ids[p]);
-            rank[p] += (ids[q] < ids[p]) ? 1u : 0u;
-        }
-        if (rank[p] == n - 1) {
-            top = p;
-        }
-    }
-    return top;
-}
-
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, vor_predicate_stats_t *stats)
 {
@@ -453,75 +435,108 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
     return (sign != 0) ? sign : vor__incircle_perturbed(sites, i, j, k, l, stats);
 }
 
-int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+/* The first term of the perturbed incircle, 2 yL by_y - (xP zQ - zP xQ)
+ * with z = x^2 + y^2 and by_y = xP yQ - yP xQ (vor__incircle_perturbed),
+ * for entries |.| <= 2^14: z <= 2^29 in int32, every product <= 2^44,
+ * |by_y| <= 2^29, the term below 2^46 in int64. */
+VOR__INLINE int64_t first_term_narrow(int32_t yl, int32_t xp, int32_t yp, int32_t xq,
+                                      int32_t yq, int64_t by_y)
 {
-    int sign = 0;
-    VOR__COUNT(stats, incircle_perturbed);
-    const uint32_t ids[4] = {i, j, k, l};
-    /* the site with the largest index is the origin; the three others, in
-     * call order, are the minor's rows */
-    size_t top = 0;
-    for (size_t p = 1; p < 4; p++) {
-        top = (ids[p] > ids[top]) ? p : top;
+    int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
+    int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
+    return vor__mul_i64_i32(by_y, 2 * yl) - by_z;
+}
+
+/* The perturbed incircle's first two terms (vor__incircle_perturbed), for
+ * entries that fit int32 (m, the OR of their bounds, below 2^31): the sign
+ * of the first nonzero one, or 0, and then *next, the term from which the
+ * enumeration goes on: 3 when both are 0, 1 when they are too wide for
+ * the closed forms here. The second term (t = 2) has L's row ROW_SQUARE
+ * (0, 0, 1): along it, by_y itself (times the same (-1)^low), 0 only when
+ * P, Q and the top site are collinear. */
+VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int32_t yq,
+                            uint32_t m, unsigned *next)
+{
+    *next = 3u;
+#if MID_FILTER
+    /* As the exact mid tier's filter: the entries shifted right by s until
+     * they fit 15 bits, d = 2^s d' + r, 0 <= r < 2^s, |d'| <= A = 2^14,
+     * the first term of the d' exact in int64 (first_term_narrow). Its 6
+     * monomials are products of three entries with coefficients 2, 2, 1,
+     * 1, 1, 1, and such a product differs from 2^3s times that of the d'
+     * by at most 2^3s ((A + 1)^3 - A^3), so the term differs from 2^3s
+     * times the filtered one by at most 2^3s 8 (3 A^2 + 3 A + 1) < 2^3s
+     * 2^33: from 2^33 on, its sign is the term's. With s = 0 (entries of
+     * 15 bits) the shifted terms are the exact ones. Nearly every tie on
+     * a lattice decides here, a lattice square's term being near 2^42;
+     * the others take the 192-bit sums (term_sign), which cost a
+     * Cortex-M0 less flash than 128-bit ones for this term alone. */
+    unsigned s = (m < (1u << 14)) ? 0u : vor__mw_bit_length32(m) - 14u;
+    int32_t syl = (int32_t)floor_shift(yl, s), sxp = (int32_t)floor_shift(xp, s);
+    int32_t syp = (int32_t)floor_shift(yp, s), sxq = (int32_t)floor_shift(xq, s);
+    int32_t syq = (int32_t)floor_shift(yq, s);
+    int64_t by_y = vor__mul_i32(sxp, syq) - vor__mul_i32(syp, sxq);
+    int64_t filtered = first_term_narrow(syl, sxp, syp, sxq, syq, by_y);
+    const int64_t error = (int64_t)1 << 33;
+    if (s != 0u) {
+        bool decided = filtered >= error || filtered <= -error;
+        *next = decided ? 3u : 1u;
+        return decided ? vor__mw_sign64(filtered) : 0;
     }
-    size_t row[3];
-    for (size_t p = 0, n = 0; p < 4; p++) {
-        if (p != top) {
-            row[n++] = p;
-        }
-    }
-    /* the minor rows' coordinates relative to the top site */
-    int64_t x[3], y[3];
-    uint64_t m = 0;
-    for (size_t r = 0; r < 3; r++) {
-        const vor_point_t *s = &sites[ids[row[r]]];
-        const vor_point_t *o = &sites[ids[top]];
-        x[r] = (int64_t)s->x - o->x;
-        y[r] = (int64_t)s->y - o->y;
-        m |= vor__mw_bound(x[r]) | vor__mw_bound(y[r]);
-    }
-    /* Small coordinates (the usual degeneracy: grids, nearby cocircular
-     * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
-     * entry per column <= 2^57: int64. Else term_sign's 192-bit sums. */
-    bool narrow = m < (1u << 14);
-    /* The first term (t = 1) nearly always decides: the smallest index's
-     * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
-     * points. Along that row, with it at minor row `low`:
-     *   det = (-1)^low (2y (xP yQ - yP xQ) - (xP zQ - zP xQ))
-     * In the narrow case every product fits int64; otherwise the term goes
-     * to term_sign like the later ones, without the ranks. */
-    size_t low = 0;
-    for (size_t r = 1; r < 3; r++) {
-        low = (ids[row[r]] < ids[row[low]]) ? r : low;
-    }
-    if (narrow) {
-        size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
-        int32_t xp = (int32_t)x[rp], yp = (int32_t)y[rp];
-        int32_t xq = (int32_t)x[rq], yq = (int32_t)y[rq];
-        int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
-        int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
-        int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
-        int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
-        sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
+    int sign = vor__mw_sign64(filtered);
+#elif VOR_LIMB_BITS == 64
+    /* |by_y| <= 2^63 - 2^31: the two products cannot both reach 2^62
+     * with opposite signs. Beyond 15 bits, z <= 2^63 fits uint64, and the
+     * first term's products are below 2^95, 2^94 and 2^94: one signed
+     * 128-bit sum. */
+    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+    int sign;
+    if (m < (1u << 14)) {
+        sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
     } else {
-        enum row_kind first[3] = {ROW_POINT, ROW_POINT, ROW_POINT};
-        first[low] = ROW_DY;
-        sign = term_sign(x, y, first);
+        uint64_t zp = (uint64_t)vor__mul_i32(xp, xp) + (uint64_t)vor__mul_i32(yp, yp);
+        uint64_t zq = (uint64_t)vor__mul_i32(xq, xq) + (uint64_t)vor__mul_i32(yq, yq);
+        vor__sdlimb det = (vor__sdlimb)by_y * (2 * (int64_t)yl) -
+                          (vor__sdlimb)xp * (vor__sdlimb)zq + (vor__sdlimb)xq * (vor__sdlimb)zp;
+        sign = (det > 0) - (det < 0);
     }
-    if (sign != 0) {
-        return (top % 2 == 0) ? -sign : sign;
+#else
+    /* 32-bit limbs at -Os: the closed form in int64 only */
+    if (m >= (1u << 14)) {
+        *next = 1u;
+        return 0;
     }
-    size_t rank[4];
-    (void)rank_sites(ids, 4, rank);
+    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+    int sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
+#endif
+    return (sign != 0) ? sign : vor__mw_sign64(by_y);
+}
+
+/* The sign of the perturbed determinant of the minor rows ids[0..2],
+ * relative to site `top`, which has the largest index, from its term t =
+ * first on, the earlier ones known to be 0 (t = 1 when the rows are too
+ * wide for the first terms' closed forms); never 0. Out of line, and the
+ * differences computed again: rarely reached. */
+static VOR__NOINLINE int later_terms(const vor_point_t *sites, const uint32_t ids[3],
+                                     uint32_t top, unsigned first)
+{
+    int64_t x[3], y[3];
+    unsigned rank[3];
+    for (size_t r = 0; r < 3; r++) {
+        x[r] = (int64_t)sites[ids[r]].x - sites[top].x;
+        y[r] = (int64_t)sites[ids[r]].y - sites[top].y;
+        rank[r] = ((ids[next_of[r]] < ids[r]) ? 1u : 0u) +
+                  ((ids[next_of[next_of[r]]] < ids[r]) ? 1u : 0u);
+    }
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
-    for (unsigned t = 1; t < 64 && sign == 0; t++) {
+    int sign = 0;
+    for (unsigned t = first; t < 64 && sign == 0; t++) {
         enum row_kind kind[3];
         unsigned squares = 0;
         for (size_t r = 0; r < 3; r++) {
-            kind[r] = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
+            kind[r] = (enum row_kind)((t >> (2 * rank[r])) & 3u);
             squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
         }
         if (squares < 2) { /* else two equal rows: the term is 0 */
@@ -529,8 +544,58 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         }
     }
     VOR_ASSERT(sign != 0);
-    /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */
-    return (top % 2 == 0) ? -sign : sign;
+    return sign;
+}
+
+int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
+                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+{
+    VOR__COUNT(stats, incircle_perturbed);
+    VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
+    /* The site with the largest index is the origin: one transposition
+     * moves it to the last place, negating the determinant (swapped). The
+     * other three, ids[], are then the rows of the minor, whose sign is
+     * the determinant's (the cofactor of the (4, 4) entry is +1). */
+    uint32_t ids[3] = {i, j, k}, top = l;
+    unsigned t = (j > i) ? 1u : 0u;
+    t = (k > ids[t]) ? 2u : t;
+    bool swapped = ids[t] > l;
+    if (swapped) {
+        top = ids[t];
+        ids[t] = l;
+    }
+    /* The first term (t = 1) nearly always decides: the smallest index's
+     * row (at `low`) is ROW_DY (0, 1, 2y), the other two (P, Q, in row
+     * order) are points. Along that row:
+     *   det = (-1)^low (2 yL (xP yQ - yP xQ) - (xP zQ - zP xQ)),  z = x^2 + y^2,
+     * in which only yL, xP, yP, xQ, yQ appear, so only their size picks
+     * the width. Small ones (the usual degeneracy: grids, nearby
+     * cocircular sites), |.| <= 2^14: int64 (first_term_narrow). In int32:
+     * 128 bits with 64-bit limbs, a filter with 32-bit ones (first_terms).
+     * Else term_sign's 192-bit sums, with the later terms. */
+    unsigned low = (ids[1] < ids[0]) ? 1u : 0u;
+    low = (ids[2] < ids[low]) ? 2u : low;
+    const vor_point_t *o = &sites[top], *pl = &sites[ids[low]];
+    const vor_point_t *pp = &sites[ids[(low == 0u) ? 1u : 0u]];
+    const vor_point_t *pq = &sites[ids[(low == 2u) ? 1u : 2u]];
+    int64_t yl = (int64_t)pl->y - o->y;
+    int64_t xp = (int64_t)pp->x - o->x, yp = (int64_t)pp->y - o->y;
+    int64_t xq = (int64_t)pq->x - o->x, yq = (int64_t)pq->y - o->y;
+    uint64_t m = vor__mw_bound(yl) | vor__mw_bound(xp) | vor__mw_bound(yp) |
+                 vor__mw_bound(xq) | vor__mw_bound(yq);
+    int sign = 0;
+    unsigned next = 1u;
+    if (m < 0x80000000u) {
+        sign = first_terms((int32_t)yl, (int32_t)xp, (int32_t)yp, (int32_t)xq, (int32_t)yq,
+                           (uint32_t)m, &next);
+    }
+    if (sign != 0) {
+        sign = (low == 1u) ? -sign : sign;
+    } else {
+        /* the first two terms are 0, or too wide for the closed forms */
+        sign = later_terms(sites, ids, top, next);
+    }
+    return swapped ? -sign : sign;
 }
 
 /*
