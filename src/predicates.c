@@ -512,14 +512,35 @@ VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int3
     return (sign != 0) ? sign : vor__mw_sign64(by_y);
 }
 
-/* The sign of the perturbed determinant of the minor rows ids[0..2],
- * relative to site `top`, which has the largest index, from its term t =
- * first on, the earlier ones known to be 0 (t = 1 when the rows are too
- * wide for the first terms' closed forms); never 0. Out of line, and the
- * differences computed again: rarely reached. */
-static VOR__NOINLINE int later_terms(const vor_point_t *sites, const uint32_t ids[3],
-                                     uint32_t top, unsigned first)
+/* The site with the largest index of (i, j, k, l) is the origin: one
+ * transposition moves it to the last place, negating the determinant
+ * (returns true then). The other three, ids[], are then the rows of the
+ * minor, whose sign is the determinant's (the cofactor of the (4, 4)
+ * entry is +1). */
+VOR__INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32_t ids[3],
+                          uint32_t *top)
 {
+    ids[0] = i;
+    ids[1] = j;
+    ids[2] = k;
+    unsigned t = (j > i) ? 1u : 0u;
+    t = (k > ids[t]) ? 2u : t;
+    bool swapped = ids[t] > l;
+    *top = swapped ? ids[t] : l;
+    ids[t] = swapped ? l : ids[t];
+    return swapped;
+}
+
+/* The perturbed incircle of sites i, j, k, l from its term t = first on,
+ * the earlier ones known to be 0 (t = 1 when the differences are too wide
+ * for the first terms' closed forms): -1 or 1. Out of line, and the rows
+ * found and their differences computed again: rarely reached, and its
+ * frame is not stacked on the first terms' (first_two_terms). */
+static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
+                                     uint32_t k, uint32_t l, unsigned first)
+{
+    uint32_t ids[3], top;
+    bool swapped = move_top(i, j, k, l, ids, &top);
     int64_t x[3], y[3];
     unsigned rank[3];
     for (size_t r = 0; r < 3; r++) {
@@ -544,26 +565,19 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, const uint32_t id
         }
     }
     VOR_ASSERT(sign != 0);
-    return sign;
+    return swapped ? -sign : sign;
 }
 
-int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+/* The perturbed incircle of sites i, j, k, l by its first two terms: -1
+ * or 1, or else 0 when the enumeration must go on from term 1 (the
+ * differences are too wide for the closed forms) or 3 when it must go on
+ * from term 3 (both terms are 0). Out of line, so that the later terms'
+ * frame does not stack on this one's. */
+static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
+                                         uint32_t k, uint32_t l)
 {
-    VOR__COUNT(stats, incircle_perturbed);
-    VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
-    /* The site with the largest index is the origin: one transposition
-     * moves it to the last place, negating the determinant (swapped). The
-     * other three, ids[], are then the rows of the minor, whose sign is
-     * the determinant's (the cofactor of the (4, 4) entry is +1). */
-    uint32_t ids[3] = {i, j, k}, top = l;
-    unsigned t = (j > i) ? 1u : 0u;
-    t = (k > ids[t]) ? 2u : t;
-    bool swapped = ids[t] > l;
-    if (swapped) {
-        top = ids[t];
-        ids[t] = l;
-    }
+    uint32_t ids[3], top;
+    bool swapped = move_top(i, j, k, l, ids, &top);
     /* The first term (t = 1) nearly always decides: the smallest index's
      * row (at `low`) is ROW_DY (0, 1, 2y), the other two (P, Q, in row
      * order) are points. Along that row:
@@ -583,19 +597,28 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     int64_t xq = (int64_t)pq->x - o->x, yq = (int64_t)pq->y - o->y;
     uint64_t m = vor__mw_bound(yl) | vor__mw_bound(xp) | vor__mw_bound(yp) |
                  vor__mw_bound(xq) | vor__mw_bound(yq);
-    int sign = 0;
-    unsigned next = 1u;
-    if (m < 0x80000000u) {
-        sign = first_terms((int32_t)yl, (int32_t)xp, (int32_t)yp, (int32_t)xq, (int32_t)yq,
+    if (m >= 0x80000000u) {
+        return 0;
+    }
+    unsigned next;
+    int sign = first_terms((int32_t)yl, (int32_t)xp, (int32_t)yp, (int32_t)xq, (int32_t)yq,
                            (uint32_t)m, &next);
+    if (sign == 0) {
+        return (next == 1u) ? 0 : 3;
     }
-    if (sign != 0) {
-        sign = (low == 1u) ? -sign : sign;
-    } else {
-        /* the first two terms are 0, or too wide for the closed forms */
-        sign = later_terms(sites, ids, top, next);
+    return ((low == 1u) != swapped) ? -sign : sign;
+}
+
+int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
+                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+{
+    VOR__COUNT(stats, incircle_perturbed);
+    VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
+    int sign = first_two_terms(sites, i, j, k, l);
+    if (sign == 1 || sign == -1) {
+        return sign;
     }
-    return swapped ? -sign : sign;
+    return later_terms(sites, i, j, k, l, (sign == 0) ? 1u : 3u);
 }
 
 /*
