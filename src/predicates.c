@@ -389,8 +389,8 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 }
 
 /* Sign of the perturbation's term whose minor rows (x[r], y[r]: the
- * differences to the top site, |x|, |y| <= 2^32 - 1) have the given kinds,
- * at most one of them ROW_SQUARE, expanded along the third column as the
+ * differences to the top site, |x|, |y| <= 2^32 - 1) have the kinds in
+ * `kinds` (row r's in bits 2r and 2r + 1), at most one of them ROW_SQUARE, expanded along the third column as the
  * exact wide tier's terms (wide_term). The first two columns hold x, y, 0
  * or 1, so a cross product of two rows is a signed sum of two products
  * below 2^64: a word and a 65th bit. The third holds x^2 + y^2 < 2^65 (a
@@ -398,13 +398,14 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
  * 1. Each product < 2^130 goes to the sum of its sign, three of them <
  * 2^132 in 192 bits. Out of line: one copy serves the first term and the
  * later ones, for every size of difference. */
-static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3],
-                                   const enum row_kind kind[3])
+static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsigned kinds)
 {
     int64_t e[3][2];
     uint64_t c[3], c_high[3];
     bool c_negative[3];
+    enum row_kind kind[3];
     for (size_t r = 0; r < 3; r++) {
+        kind[r] = (enum row_kind)((kinds >> (2u * r)) & 3u);
         e[r][0] = (kind[r] == ROW_POINT) ? x[r] : (kind[r] == ROW_DX) ? 1 : 0;
         e[r][1] = (kind[r] == ROW_POINT) ? y[r] : (kind[r] == ROW_DY) ? 1 : 0;
         uint64_t lift_high, lift = wide_lift(x[r], y[r], &lift_high);
@@ -542,26 +543,28 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
     uint32_t ids[3], top;
     bool swapped = move_top(i, j, k, l, ids, &top);
     int64_t x[3], y[3];
-    unsigned rank[3];
+    unsigned shifts = 0; /* 2 rank(r) for row r, in bits 4r .. 4r + 3 */
     for (size_t r = 0; r < 3; r++) {
         x[r] = (int64_t)sites[ids[r]].x - sites[top].x;
         y[r] = (int64_t)sites[ids[r]].y - sites[top].y;
-        rank[r] = ((ids[next_of[r]] < ids[r]) ? 1u : 0u) +
-                  ((ids[next_of[next_of[r]]] < ids[r]) ? 1u : 0u);
+        unsigned rank = ((ids[next_of[r]] < ids[r]) ? 1u : 0u) +
+                        ((ids[next_of[next_of[r]]] < ids[r]) ? 1u : 0u);
+        shifts |= (2u * rank) << (4u * r);
     }
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
-     * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
+     * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then.
+     * The rows' kinds go to term_sign packed, 2 bits a row. */
     int sign = 0;
     for (unsigned t = first; t < 64 && sign == 0; t++) {
-        enum row_kind kind[3];
-        unsigned squares = 0;
-        for (size_t r = 0; r < 3; r++) {
-            kind[r] = (enum row_kind)((t >> (2 * rank[r])) & 3u);
-            squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
+        unsigned kinds = 0, squares = 0;
+        for (unsigned r = 0; r < 3; r++) {
+            unsigned kind = (t >> ((shifts >> (4u * r)) & 15u)) & 3u;
+            kinds |= kind << (2u * r);
+            squares += (kind == ROW_SQUARE) ? 1u : 0u;
         }
         if (squares < 2) { /* else two equal rows: the term is 0 */
-            sign = term_sign(x, y, kind);
+            sign = term_sign(x, y, kinds);
         }
     }
     VOR_ASSERT(sign != 0);
