@@ -582,7 +582,7 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
     uint32_t ids[3], top;
     bool swapped = move_top(i, j, k, l, ids, &top);
     /* The first term (t = 1) nearly always decides: the smallest index's
-     * row (at `low`) is ROW_DY (0, 1, 2y), the other two (P, Q, in row
+     * row (at `low`, L) is ROW_DY (0, 1, 2y), the other two (P, Q, in row
      * order) are points. Along that row:
      *   det = (-1)^low (2 yL (xP yQ - yP xQ) - (xP zQ - zP xQ)),  z = x^2 + y^2,
      * in which only yL, xP, yP, xQ, yQ appear, so only their size picks
@@ -590,11 +590,20 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
      * cocircular sites), |.| <= 2^14: int64 (first_term_narrow). In int32:
      * 128 bits with 64-bit limbs, a filter with 32-bit ones (first_terms).
      * Else term_sign's 192-bit sums, with the later terms. */
-    unsigned low = (ids[1] < ids[0]) ? 1u : 0u;
-    low = (ids[2] < ids[low]) ? 2u : low;
-    const vor_point_t *o = &sites[top], *pl = &sites[ids[low]];
-    const vor_point_t *pp = &sites[ids[(low == 0u) ? 1u : 0u]];
-    const vor_point_t *pq = &sites[ids[(low == 2u) ? 1u : 2u]];
+    uint32_t il = ids[0], ip = ids[1], iq = ids[2]; /* L, P, Q */
+    bool odd = false;                               /* low == 1 */
+    if (ip < il) {                                  /* L = ids[1] */
+        il = ids[1];
+        ip = ids[0];
+        odd = true;
+    }
+    if (iq < il) { /* L = ids[2]: P, Q = ids[0], ids[1] */
+        il = ids[2];
+        ip = ids[0];
+        iq = ids[1];
+        odd = false;
+    }
+    const vor_point_t *o = &sites[top], *pl = &sites[il], *pp = &sites[ip], *pq = &sites[iq];
     int64_t yl = (int64_t)pl->y - o->y;
     int64_t xp = (int64_t)pp->x - o->x, yp = (int64_t)pp->y - o->y;
     int64_t xq = (int64_t)pq->x - o->x, yq = (int64_t)pq->y - o->y;
@@ -609,7 +618,7 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
     if (sign == 0) {
         return (next == 1u) ? 0 : 3;
     }
-    return ((low == 1u) != swapped) ? -sign : sign;
+    return (odd != swapped) ? -sign : sign;
 }
 
 int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
