@@ -336,24 +336,6 @@ int vor_incircle(const vor_point_t *a, const vor_point_t *b,
 
 enum row_kind { ROW_POINT, ROW_DY, ROW_SQUARE, ROW_DX, ROW_KINDS };
 
-/* rank[p] = position of ids[p] among ids[0..n) in increasing order;
- * returns the position of the largest. */
-static size_t rank_sites(const uint32_t ids[], size_t n, size_t rank[])
-{
-    size_t top = 0;
-    for (size_t p = 0; p < n; p++) {
-        rank[p] = 0;
-        for (size_t q = 0; q < n; q++) {
-            VOR_ASSERT(q == p || ids[q] != ids[p]);
-            rank[p] += (ids[q] < ids[p]) ? 1u : 0u;
-        }
-        if (rank[p] == n - 1) {
-            top = p;
-        }
-    }
-    return top;
-}
-
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
                      uint32_t k, vor_predicate_stats_t *stats)
 {
@@ -367,50 +349,48 @@ int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
 int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, vor_predicate_stats_t *stats)
 {
-    int sign = 0;
     VOR__COUNT(stats, orient2d_perturbed);
     VOR_ASSERT(i != j && j != k && i != k);
-    const uint32_t ids[3] = {i, j, k};
-    /* the largest index is the origin; of the other two rows (call order),
-     * `low` has the smaller index: rank 0 */
-    size_t top = (ids[1] > ids[0]) ? 1u : 0u;
-    top = (ids[2] > ids[top]) ? 2u : top;
-    /* rows other than `top`, in call order; their 2x2 minor with cofactor
-     * sign (-1)^top is the determinant */
-    size_t row[2] = {(top == 0) ? 1u : 0u, (top == 2) ? 1u : 2u};
-    size_t low = (ids[row[0]] < ids[row[1]]) ? 0u : 1u;
-    /* the rows relative to the top site */
-    int64_t x[2], y[2];
-    for (size_t r = 0; r < 2; r++) {
-        x[r] = (int64_t)sites[ids[row[r]]].x - sites[ids[top]].x;
-        y[r] = (int64_t)sites[ids[row[r]]].y - sites[ids[top]].y;
+    /* orient2d is invariant under rotation of its points: rotate the
+     * largest index, the origin, to the last place, (u, v, w). The minor
+     * is then det [[u - w], [v - w]], cofactor sign +1. */
+    uint32_t u = i, v = j, w = k;
+    if (u > v && u > w) { /* (j, k, i) */
+        u = j;
+        v = k;
+        w = i;
+    } else if (v > w) { /* (k, i, j) */
+        u = k;
+        v = i;
+        w = j;
     }
-    static const enum row_kind kinds[3] = {ROW_POINT, ROW_DY, ROW_DX};
-    /* the rank-1 site's kind is the more significant digit; the first term
-     * (both ROW_POINT) is the exact determinant, known to be 0, and
-     * (ROW_DX, ROW_DY) is +-1, so the loops end by then. Every term has a
-     * unit row, (0, 1) or (1, 0), so its 2x2 determinant is +-x, +-y or +-1
-     * of the other row: no product is needed. */
-    for (unsigned hi = 0; hi < 3 && sign == 0; hi++) {
-        for (unsigned lo = (hi == 0) ? 1u : 0u; lo < 3 && sign == 0; lo++) {
-            enum row_kind first = kinds[low == 0u ? lo : hi];
-            enum row_kind second = kinds[low == 1u ? lo : hi];
-            if (first == ROW_POINT) { /* (x, y) over (0, 1) or (1, 0) */
-                sign = vor__mw_sign64((second == ROW_DY) ? x[0] : -y[0]);
-            } else if (second == ROW_POINT) { /* (0, 1) or (1, 0) over (x, y) */
-                sign = vor__mw_sign64((first == ROW_DY) ? -x[1] : y[1]);
-            } else { /* two unit rows */
-                sign = (first == second) ? 0 : (first == ROW_DX) ? 1 : -1;
-            }
-        }
+    /* L: the rank-0 site (the smaller of u, v), H the other; s = +1 when
+     * L is the minor's first row. The terms after the exact one (0), with
+     * (L's kind, H's kind), kinds in the order ROW_POINT, ROW_DY, ROW_DX
+     * and H's the more significant, all have a unit row (0, 1) or (1, 0):
+     *   (DY, POINT): s (-xH)     (DX, POINT): s yH
+     *   (POINT, DY): s xL        (DY, DY): 0 (equal rows)
+     *   (DX, DY): s              (each coordinate relative to w)
+     * No products, and no tiers: the first nonzero one is the sign. */
+    bool l_first = u < v;
+    const vor_point_t *low = &sites[l_first ? u : v], *high = &sites[l_first ? v : u];
+    const vor_point_t *origin = &sites[w];
+    int sign = -vor__mw_sign64((int64_t)high->x - origin->x);
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)high->y - origin->y);
     }
-    VOR_ASSERT(sign != 0);
-    return (top == 1) ? -sign : sign;
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)low->x - origin->x);
+    }
+    if (sign == 0) {
+        sign = 1;
+    }
+    return l_first ? sign : -sign;
 }
 
 /* Sign of the perturbation's term whose minor rows (x[r], y[r]: the
- * differences to the top site, |x|, |y| <= 2^32 - 1) have the given kinds,
- * at most one of them ROW_SQUARE, expanded along the third column as the
+ * differences to the top site, |x|, |y| <= 2^32 - 1) have the kinds in
+ * `kinds` (row r's in bits 2r and 2r + 1), at most one of them ROW_SQUARE, expanded along the third column as the
  * exact wide tier's terms (wide_term). The first two columns hold x, y, 0
  * or 1, so a cross product of two rows is a signed sum of two products
  * below 2^64: a word and a 65th bit. The third holds x^2 + y^2 < 2^65 (a
@@ -418,13 +398,14 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
  * 1. Each product < 2^130 goes to the sum of its sign, three of them <
  * 2^132 in 192 bits. Out of line: one copy serves the first term and the
  * later ones, for every size of difference. */
-static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3],
-                                   const enum row_kind kind[3])
+static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsigned kinds)
 {
     int64_t e[3][2];
     uint64_t c[3], c_high[3];
     bool c_negative[3];
+    enum row_kind kind[3];
     for (size_t r = 0; r < 3; r++) {
+        kind[r] = (enum row_kind)((kinds >> (2u * r)) & 3u);
         e[r][0] = (kind[r] == ROW_POINT) ? x[r] : (kind[r] == ROW_DX) ? 1 : 0;
         e[r][1] = (kind[r] == ROW_POINT) ? y[r] : (kind[r] == ROW_DY) ? 1 : 0;
         uint64_t lift_high, lift = wide_lift(x[r], y[r], &lift_high);
@@ -455,84 +436,201 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
     return (sign != 0) ? sign : vor__incircle_perturbed(sites, i, j, k, l, stats);
 }
 
-int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+/* The first term of the perturbed incircle, 2 yL by_y - (xP zQ - zP xQ)
+ * with z = x^2 + y^2 and by_y = xP yQ - yP xQ (vor__incircle_perturbed),
+ * for entries |.| <= 2^14: z <= 2^29 in int32, every product <= 2^44,
+ * |by_y| <= 2^29, the term below 2^46 in int64. */
+VOR__INLINE int64_t first_term_narrow(int32_t yl, int32_t xp, int32_t yp, int32_t xq,
+                                      int32_t yq, int64_t by_y)
 {
-    int sign = 0;
-    VOR__COUNT(stats, incircle_perturbed);
-    const uint32_t ids[4] = {i, j, k, l};
-    /* the site with the largest index is the origin; the three others, in
-     * call order, are the minor's rows */
-    size_t top = 0;
-    for (size_t p = 1; p < 4; p++) {
-        top = (ids[p] > ids[top]) ? p : top;
+    int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
+    int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
+    return vor__mul_i64_i32(by_y, 2 * yl) - by_z;
+}
+
+/* The perturbed incircle's first two terms (vor__incircle_perturbed), for
+ * entries that fit int32 (m, the OR of their bounds, below 2^31): the sign
+ * of the first nonzero one, or 0, and then *next, the term from which the
+ * enumeration goes on: 3 when both are 0, 1 when they are too wide for
+ * the closed forms here. The second term (t = 2) has L's row ROW_SQUARE
+ * (0, 0, 1): along it, by_y itself (times the same (-1)^low), 0 only when
+ * P, Q and the top site are collinear. */
+VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int32_t yq,
+                            uint32_t m, unsigned *next)
+{
+    *next = 3u;
+#if MID_FILTER
+    /* As the exact mid tier's filter: the entries shifted right by s until
+     * they fit 15 bits, d = 2^s d' + r, 0 <= r < 2^s, |d'| <= A = 2^14,
+     * the first term of the d' exact in int64 (first_term_narrow). Its 6
+     * monomials are products of three entries with coefficients 2, 2, 1,
+     * 1, 1, 1, and such a product differs from 2^3s times that of the d'
+     * by at most 2^3s ((A + 1)^3 - A^3), so the term differs from 2^3s
+     * times the filtered one by at most 2^3s 8 (3 A^2 + 3 A + 1) < 2^3s
+     * 2^33: from 2^33 on, its sign is the term's. With s = 0 (entries of
+     * 15 bits) the shifted terms are the exact ones. Nearly every tie on
+     * a lattice decides here, a lattice square's term being near 2^42;
+     * the others take the 192-bit sums (term_sign), which cost a
+     * Cortex-M0 less flash than 128-bit ones for this term alone. */
+    unsigned s = (m < (1u << 14)) ? 0u : vor__mw_bit_length32(m) - 14u;
+    int32_t syl = (int32_t)floor_shift(yl, s), sxp = (int32_t)floor_shift(xp, s);
+    int32_t syp = (int32_t)floor_shift(yp, s), sxq = (int32_t)floor_shift(xq, s);
+    int32_t syq = (int32_t)floor_shift(yq, s);
+    int64_t by_y = vor__mul_i32(sxp, syq) - vor__mul_i32(syp, sxq);
+    int64_t filtered = first_term_narrow(syl, sxp, syp, sxq, syq, by_y);
+    const int64_t error = (int64_t)1 << 33;
+    if (s != 0u) {
+        bool decided = filtered >= error || filtered <= -error;
+        *next = decided ? 3u : 1u;
+        return decided ? vor__mw_sign64(filtered) : 0;
     }
-    size_t row[3];
-    for (size_t p = 0, n = 0; p < 4; p++) {
-        if (p != top) {
-            row[n++] = p;
-        }
-    }
-    /* the minor rows' coordinates relative to the top site */
-    int64_t x[3], y[3];
-    uint64_t m = 0;
-    for (size_t r = 0; r < 3; r++) {
-        const vor_point_t *s = &sites[ids[row[r]]];
-        const vor_point_t *o = &sites[ids[top]];
-        x[r] = (int64_t)s->x - o->x;
-        y[r] = (int64_t)s->y - o->y;
-        m |= vor__mw_bound(x[r]) | vor__mw_bound(y[r]);
-    }
-    /* Small coordinates (the usual degeneracy: grids, nearby cocircular
-     * sites): entries |x|, |y| <= 2^14, x^2 + y^2 <= 2^29, products of one
-     * entry per column <= 2^57: int64. Else term_sign's 192-bit sums. */
-    bool narrow = m < (1u << 14);
-    /* The first term (t = 1) nearly always decides: the smallest index's
-     * row is ROW_DY (0, 1, 2y), the other two (P, Q, in call order) are
-     * points. Along that row, with it at minor row `low`:
-     *   det = (-1)^low (2y (xP yQ - yP xQ) - (xP zQ - zP xQ))
-     * In the narrow case every product fits int64; otherwise the term goes
-     * to term_sign like the later ones, without the ranks. */
-    size_t low = 0;
-    for (size_t r = 1; r < 3; r++) {
-        low = (ids[row[r]] < ids[row[low]]) ? r : low;
-    }
-    if (narrow) {
-        size_t rp = (low == 0) ? 1u : 0u, rq = (low == 2) ? 1u : 2u;
-        int32_t xp = (int32_t)x[rp], yp = (int32_t)y[rp];
-        int32_t xq = (int32_t)x[rq], yq = (int32_t)y[rq];
-        int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
-        int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
-        int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
-        int64_t det = vor__mul_i64_i32(by_y, (int32_t)(2 * y[low])) - by_z;
-        sign = vor__mw_sign64((low % 2u == 0u) ? det : -det);
+    int sign = vor__mw_sign64(filtered);
+#elif VOR_LIMB_BITS == 64
+    /* |by_y| <= 2^63 - 2^31: the two products cannot both reach 2^62
+     * with opposite signs. Beyond 15 bits, z <= 2^63 fits uint64, and the
+     * first term's products are below 2^95, 2^94 and 2^94: one signed
+     * 128-bit sum. */
+    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+    int sign;
+    if (m < (1u << 14)) {
+        sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
     } else {
-        enum row_kind first[3] = {ROW_POINT, ROW_POINT, ROW_POINT};
-        first[low] = ROW_DY;
-        sign = term_sign(x, y, first);
+        uint64_t zp = (uint64_t)vor__mul_i32(xp, xp) + (uint64_t)vor__mul_i32(yp, yp);
+        uint64_t zq = (uint64_t)vor__mul_i32(xq, xq) + (uint64_t)vor__mul_i32(yq, yq);
+        vor__sdlimb det = (vor__sdlimb)by_y * (2 * (int64_t)yl) -
+                          (vor__sdlimb)xp * (vor__sdlimb)zq + (vor__sdlimb)xq * (vor__sdlimb)zp;
+        sign = (det > 0) - (det < 0);
     }
-    if (sign != 0) {
-        return (top % 2 == 0) ? -sign : sign;
+#else
+    /* 32-bit limbs at -Os: the closed form in int64 only */
+    if (m >= (1u << 14)) {
+        *next = 1u;
+        return 0;
     }
-    size_t rank[4];
-    (void)rank_sites(ids, 4, rank);
+    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+    int sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
+#endif
+    return (sign != 0) ? sign : vor__mw_sign64(by_y);
+}
+
+/* The site with the largest index of (i, j, k, l) is the origin: one
+ * transposition moves it to the last place, negating the determinant
+ * (returns true then). The other three, ids[], are then the rows of the
+ * minor, whose sign is the determinant's (the cofactor of the (4, 4)
+ * entry is +1). */
+VOR__INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32_t ids[3],
+                          uint32_t *top)
+{
+    ids[0] = i;
+    ids[1] = j;
+    ids[2] = k;
+    unsigned t = (j > i) ? 1u : 0u;
+    t = (k > ids[t]) ? 2u : t;
+    bool swapped = ids[t] > l;
+    *top = swapped ? ids[t] : l;
+    ids[t] = swapped ? l : ids[t];
+    return swapped;
+}
+
+/* The perturbed incircle of sites i, j, k, l from its term t = first on,
+ * the earlier ones known to be 0 (t = 1 when the differences are too wide
+ * for the first terms' closed forms): -1 or 1. Out of line, and the rows
+ * found and their differences computed again: rarely reached, and its
+ * frame is not stacked on the first terms' (first_two_terms). */
+static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
+                                     uint32_t k, uint32_t l, unsigned first)
+{
+    uint32_t ids[3], top;
+    bool swapped = move_top(i, j, k, l, ids, &top);
+    int64_t x[3], y[3];
+    unsigned shifts = 0; /* 2 rank(r) for row r, in bits 4r .. 4r + 3 */
+    for (size_t r = 0; r < 3; r++) {
+        x[r] = (int64_t)sites[ids[r]].x - sites[top].x;
+        y[r] = (int64_t)sites[ids[r]].y - sites[top].y;
+        unsigned rank = ((ids[next_of[r]] < ids[r]) ? 1u : 0u) +
+                        ((ids[next_of[next_of[r]]] < ids[r]) ? 1u : 0u);
+        shifts |= (2u * rank) << (4u * r);
+    }
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
      * rank-2 site most significant. t = 0 is the exact determinant (0);
-     * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then. */
-    for (unsigned t = 1; t < 64 && sign == 0; t++) {
-        enum row_kind kind[3];
-        unsigned squares = 0;
-        for (size_t r = 0; r < 3; r++) {
-            kind[r] = (enum row_kind)((t >> (2 * rank[row[r]])) & 3u);
-            squares += (kind[r] == ROW_SQUARE) ? 1u : 0u;
+     * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then.
+     * The rows' kinds go to term_sign packed, 2 bits a row. */
+    int sign = 0;
+    for (unsigned t = first; t < 64 && sign == 0; t++) {
+        unsigned kinds = 0, squares = 0;
+        for (unsigned r = 0; r < 3; r++) {
+            unsigned kind = (t >> ((shifts >> (4u * r)) & 15u)) & 3u;
+            kinds |= kind << (2u * r);
+            squares += (kind == ROW_SQUARE) ? 1u : 0u;
         }
         if (squares < 2) { /* else two equal rows: the term is 0 */
-            sign = term_sign(x, y, kind);
+            sign = term_sign(x, y, kinds);
         }
     }
     VOR_ASSERT(sign != 0);
-    /* cofactor of the (top, 4) entry: (-1)^(top + 3) with 0-based top */
-    return (top % 2 == 0) ? -sign : sign;
+    return swapped ? -sign : sign;
+}
+
+/* The perturbed incircle of sites i, j, k, l by its first two terms: -1
+ * or 1, or else 0 when the enumeration must go on from term 1 (the
+ * differences are too wide for the closed forms) or 3 when it must go on
+ * from term 3 (both terms are 0). Out of line, so that the later terms'
+ * frame does not stack on this one's. */
+static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
+                                         uint32_t k, uint32_t l)
+{
+    uint32_t ids[3], top;
+    bool swapped = move_top(i, j, k, l, ids, &top);
+    /* The first term (t = 1) nearly always decides: the smallest index's
+     * row (at `low`, L) is ROW_DY (0, 1, 2y), the other two (P, Q, in row
+     * order) are points. Along that row:
+     *   det = (-1)^low (2 yL (xP yQ - yP xQ) - (xP zQ - zP xQ)),  z = x^2 + y^2,
+     * in which only yL, xP, yP, xQ, yQ appear, so only their size picks
+     * the width. Small ones (the usual degeneracy: grids, nearby
+     * cocircular sites), |.| <= 2^14: int64 (first_term_narrow). In int32:
+     * 128 bits with 64-bit limbs, a filter with 32-bit ones (first_terms).
+     * Else term_sign's 192-bit sums, with the later terms. */
+    uint32_t il = ids[0], ip = ids[1], iq = ids[2]; /* L, P, Q */
+    bool odd = false;                               /* low == 1 */
+    if (ip < il) {                                  /* L = ids[1] */
+        il = ids[1];
+        ip = ids[0];
+        odd = true;
+    }
+    if (iq < il) { /* L = ids[2]: P, Q = ids[0], ids[1] */
+        il = ids[2];
+        ip = ids[0];
+        iq = ids[1];
+        odd = false;
+    }
+    const vor_point_t *o = &sites[top], *pl = &sites[il], *pp = &sites[ip], *pq = &sites[iq];
+    int64_t yl = (int64_t)pl->y - o->y;
+    int64_t xp = (int64_t)pp->x - o->x, yp = (int64_t)pp->y - o->y;
+    int64_t xq = (int64_t)pq->x - o->x, yq = (int64_t)pq->y - o->y;
+    uint64_t m = vor__mw_bound(yl) | vor__mw_bound(xp) | vor__mw_bound(yp) |
+                 vor__mw_bound(xq) | vor__mw_bound(yq);
+    if (m >= 0x80000000u) {
+        return 0;
+    }
+    unsigned next;
+    int sign = first_terms((int32_t)yl, (int32_t)xp, (int32_t)yp, (int32_t)xq, (int32_t)yq,
+                           (uint32_t)m, &next);
+    if (sign == 0) {
+        return (next == 1u) ? 0 : 3;
+    }
+    return (odd != swapped) ? -sign : sign;
+}
+
+int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
+                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+{
+    VOR__COUNT(stats, incircle_perturbed);
+    VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
+    int sign = first_two_terms(sites, i, j, k, l);
+    if (sign == 1 || sign == -1) {
+        return sign;
+    }
+    return later_terms(sites, i, j, k, l, (sign == 0) ? 1u : 3u);
 }
 
 /*

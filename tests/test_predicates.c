@@ -490,6 +490,70 @@ static void check_perturbation_reference(void)
           later_terms);
 }
 
+/* vor_incircle_sos against ref_perturbed where the first perturbation
+ * term is tiny beside its size, so that no filter or closed form may
+ * decide it without proof (the 32-bit-limb filter of the first term,
+ * predicates.c first_terms). With p = m + 1, the Gaussian integers
+ * (m + i)(p - i) = (mp + 1) + i and (m + i)(p + i) = (mp - 1) + (2m + 1) i
+ * have the same norm, so the 16 points (+-a, +-1), (+-1, +-a), (+-c, +-d),
+ * (+-d, +-c), a = mp + 1, c = mp - 1, d = 2m + 1, lie on one circle. The first
+ * term is 2 (xP yQ - yP xQ) (yL - y_center) relative to the top site, so
+ * with L at (+-a, +-1) it is about 2 R^2 against terms of size R^3:
+ * R up to 2^29, where the filter sees only about 2^11 of it. */
+static void check_first_term_filter(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 73);
+    unsigned long checked = 0, bad = 0;
+    for (unsigned n = 0; n < 160; n++) {
+        int64_t m = test_rng_range(&rng, 2, (n % 2u == 0u) ? 200 : 23000);
+        int64_t a = m * (m + 1) + 1, c = m * (m + 1) - 1, d = 2 * m + 1;
+        /* |coordinates| <= a < 2^29.1 around a center leaving room */
+        int32_t cx = test_rng_range(&rng, -(1 << 30), 1 << 30);
+        int32_t cy = test_rng_range(&rng, -(1 << 30), 1 << 30);
+        const int64_t base[4][2] = {{a, 1}, {1, a}, {c, d}, {d, c}};
+        vor_point_t q[4];
+        unsigned used = 0;
+        for (unsigned k = 0; k < 4;) {
+            /* the first point on (+-a, +-1), where yL - y_center = +-1 */
+            unsigned pick = (unsigned)test_rng_range(&rng, 0, (k == 0u) ? 3 : 15);
+            if ((used >> pick) & 1u) {
+                continue;
+            }
+            used |= 1u << pick;
+            const int64_t *b = base[pick / 4u];
+            q[k].x = (int32_t)(cx + ((pick & 1u) ? -b[0] : b[0]));
+            q[k].y = (int32_t)(cy + ((pick & 2u) ? -b[1] : b[1]));
+            k++;
+        }
+        for (unsigned p = 0; p < 24; p++) { /* every index order */
+            uint32_t ids[4];
+            for (unsigned k = 0, left = p, taken = 0; k < 4; k++) {
+                unsigned pick = left % (4u - k);
+                left /= 4u - k;
+                uint32_t id = 0;
+                while (((taken >> id) & 1u) != 0u || pick-- != 0u) {
+                    id++;
+                }
+                taken |= 1u << id;
+                ids[k] = id;
+            }
+            vor_point_t sites[4];
+            for (unsigned k = 0; k < 4; k++) {
+                sites[ids[k]] = q[k];
+            }
+            unsigned first;
+            int want = ref_perturbed(sites, ids, 4, &first);
+            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3], NULL);
+            bad += (got != want || want == 0 || first == 0u) ? 1u : 0u;
+            checked++;
+        }
+    }
+    test_printf("first-term filter: %lu perturbed signs near a circle's extreme\n", checked);
+    CHECK(bad == 0, "first-term filter: %lu of %lu signs differ from the reference", bad,
+          checked);
+}
+
 /* The exact sign of incircle(q[0], q[1], q[2], q[3]) by the reference. */
 static int ref_incircle(const vor_point_t q[4])
 {
@@ -588,5 +652,6 @@ void test_predicates(void)
     check_vectors();
     check_grid_antisymmetry();
     check_perturbation_reference();
+    check_first_term_filter();
     check_near_circles();
 }
