@@ -232,7 +232,8 @@ static int64_t floor_quotient(vor__limb *rest, vor__limb *step, size_t n, unsign
     uint64_t quotient;
     bool negative, exact;
     if (!divide(rest, step, n, bits, &quotient, &negative, &exact)) {
-        return negative ? -((int64_t)1 << bits) - 1 : ((int64_t)1 << bits);
+        int64_t saturated = (int64_t)vor__shl_u64(1u, bits);
+        return negative ? -saturated - 1 : saturated;
     }
     /* floor of a negative quotient: -ceil(|n| / d) */
     return negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;

@@ -440,13 +440,15 @@ VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_sub(vor__mw_u128_t a, vor__mw_u12
     return r;
 }
 
-/* a >> s for a constant s in [1, 63] at every call: a variable 64-bit
- * shift would be a runtime call on 32-bit targets. */
+/* a >> s for s in [1, 63]. The 64-bit shifts go through vor__shr_u64 and
+ * vor__shl_u64: with a constant s they fold to the plain shifts, and
+ * without optimisation, where s stays a variable, they are no runtime
+ * call on 32-bit targets. */
 VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_shr(vor__mw_u128_t a, unsigned s)
 {
     vor__mw_u128_t r;
-    r.lo = (a.lo >> s) | (a.hi << (64u - s));
-    r.hi = a.hi >> s;
+    r.lo = vor__shr_u64(a.lo, s) | vor__shl_u64(a.hi, 64u - s);
+    r.hi = vor__shr_u64(a.hi, s);
     return r;
 }
 

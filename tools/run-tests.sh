@@ -160,14 +160,16 @@ freestanding() {
     # with GCC and clang, at every optimisation level, warnings as errors.
     # GCC on ARMv6-M needs -fno-jump-tables, which port/cortex-m0/port.mk
     # has (docs/porting.md); without it only libgcc's case helpers may
-    # appear.
-    local compiler level dir opt
+    # appear. The one exception left: GCC on ARMv6-M copies a 16-byte
+    # structure (the 128-bit values of multiword.h) with memcpy when not
+    # optimising (-O0, -Og), so there memcpy, and nothing else, may appear.
+    local compiler level dir opt unoptimised
     local -a args
     for target in cortex-m0 riscv32; do
         nm=arm-none-eabi-nm
         [ "$target" = riscv32 ] && nm=riscv64-unknown-elf-nm
         for compiler in gcc clang; do
-            for level in -O1 -O2 -O3 -Os -Oz; do
+            for level in -O0 -Og -O1 -O2 -O3 -Os -Oz; do
                 dir=build/freestanding/$compiler-$target$level
                 opt=$level
                 args=(PORT="$target" B="$dir")
@@ -175,8 +177,17 @@ freestanding() {
                     clang-cortex-m0) args+=(CC="clang --target=armv6m-none-eabi") ;;
                     clang-riscv32) args+=(CC="clang --target=riscv32-unknown-elf") ;;
                 esac
+                unoptimised=no
+                case $compiler-$target$level in
+                    gcc-cortex-m0-O0 | gcc-cortex-m0-Og) unoptimised=yes ;;
+                esac
                 if make -s -j"$jobs" "${args[@]}" OPT="$opt" lib >>"$log" 2>&1 &&
-                    tools/check-freestanding.sh "$nm" "$dir/libvor.a" >>"$log" 2>&1; then
+                    if [ $unoptimised = yes ]; then
+                        ! tools/check-freestanding.sh "$nm" "$dir/libvor.a" 2>&1 |
+                            grep -v 'calls libc function memcpy$' | tee -a "$log" | grep -q .
+                    else
+                        tools/check-freestanding.sh "$nm" "$dir/libvor.a" >>"$log" 2>&1
+                    fi; then
                     passed=$((passed + 1))
                 else
                     echo "FAIL $compiler $target $opt: a warning, or a call outside the library" >>"$log"
