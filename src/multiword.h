@@ -26,6 +26,17 @@
 
 #include "vor_config.h"
 
+/* GCC for ARMv6-M copies a 16-byte structure (the 128-bit values here,
+ * passed and returned by value) with a call to memcpy when it does not
+ * optimise (-O0, -Og), and the library calls nothing outside itself: so
+ * in such a build the code of every file including this one is compiled
+ * as at -O1, the lowest level at which GCC copies them inline. Not for
+ * clang, which copies them inline at every level. */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__) &&                  \
+    !defined(__OPTIMIZE__)
+#pragma GCC optimize("O1")
+#endif
+
 /* The helpers below run with constant limb counts on the predicates' hot
  * paths; forcing them inline lets the compiler unroll the loops. The wider
  * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
@@ -572,26 +583,24 @@ typedef struct vor__mw_i96 {
     uint32_t lo;
 } vor__mw_i96_t;
 
-/* x * y for |x| < 2^62 and y < 2^31. Left to the compiler's judgement
- * (VOR__HELPER): forced inline, its two calls in an envelope cost 184
- * bytes on Cortex-M0; its result comes back in registers or through the
- * return slot, never a memcpy call. */
-VOR__HELPER vor__mw_i96_t vor__mw_i96_mul(int64_t x, uint32_t y)
+/* *r = x * y for |x| < 2^62 and y < 2^31. Left to the compiler's
+ * judgement (VOR__HELPER): forced inline, its two calls in an envelope
+ * cost 184 bytes on Cortex-M0. The result goes through a pointer, not the
+ * return slot, which GCC for ARMv6-M would copy with memcpy. */
+VOR__HELPER void vor__mw_i96_mul(vor__mw_i96_t *r, int64_t x, uint32_t y)
 {
     /* x = xh 2^32 + xl with xl in [0, 2^32), |xh| < 2^30 */
     uint32_t xl = (uint32_t)((uint64_t)x & 0xFFFFFFFFu);
     int32_t xh = (int32_t)((x - (int64_t)xl) / 4294967296); /* exact: constant divisor */
     uint64_t low = vor__mul_u32(xl, y);                     /* < 2^63 */
-    vor__mw_i96_t r;
-    r.hi = vor__mul_i32(xh, (int32_t)y) + (int64_t)(low >> 32); /* |.| < 2^62 */
-    r.lo = (uint32_t)(low & 0xFFFFFFFFu);
-    return r;
+    r->hi = vor__mul_i32(xh, (int32_t)y) + (int64_t)(low >> 32); /* |.| < 2^62 */
+    r->lo = (uint32_t)(low & 0xFFFFFFFFu);
 }
 
-/* p > q. */
-VOR__HELPER int vor__mw_i96_greater(vor__mw_i96_t p, vor__mw_i96_t q)
+/* *p > *q. */
+VOR__HELPER int vor__mw_i96_greater(const vor__mw_i96_t *p, const vor__mw_i96_t *q)
 {
-    return p.hi > q.hi || (p.hi == q.hi && p.lo > q.lo);
+    return p->hi > q->hi || (p->hi == q->hi && p->lo > q->lo);
 }
 
 /* ------------------------------------------------------------ 192 bits */

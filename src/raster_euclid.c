@@ -254,11 +254,10 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
                 int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
                 greater = left > right;
             } else {
-                vor__mw_i96_t left =
-                    vor__mw_i96_mul(val[j] - val[i], (uint32_t)(key[rep] - key[j]));
-                vor__mw_i96_t right =
-                    vor__mw_i96_mul(val[rep] - val[j], (uint32_t)(key[j] - key[i]));
-                greater = vor__mw_i96_greater(left, right);
+                vor__mw_i96_t left, right;
+                vor__mw_i96_mul(&left, val[j] - val[i], (uint32_t)(key[rep] - key[j]));
+                vor__mw_i96_mul(&right, val[rep] - val[j], (uint32_t)(key[j] - key[i]));
+                greater = vor__mw_i96_greater(&left, &right);
             }
             if (!greater) {
                 break;
