@@ -138,7 +138,8 @@ typedef struct {
     vor_index_t split;
     int64_t line;
     unsigned k;          /* the quadtree's grid: 2^k x 2^k buckets over */
-    vor__grid_square_t square; /* this square (vor__grid_z) */
+    vor__grid_square_t *square; /* this square (vor__grid_z), the entry
+                                   point's: both workers read it */
     uint32_t bound;      /* step bound for walks around a vertex */
 } builder_t;
 
@@ -909,8 +910,8 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
 static int64_t grid_line(const builder_t *b, uint32_t index, unsigned axis)
 {
     unsigned k = b->k;
-    uint64_t offset = vor__shr_u64(vor__shl_u64(index, b->square.shift) + ((1u << k) - 1u), k);
-    return ((axis == 0u) ? b->square.x0 : b->square.y0) + (int64_t)offset;
+    uint64_t offset = vor__shr_u64(vor__shl_u64(index, b->square->shift) + ((1u << k) - 1u), k);
+    return ((axis == 0u) ? b->square->x0 : b->square->y0) + (int64_t)offset;
 }
 
 /* Top over bottom, the square's two halves (it starts at cell z0, its
@@ -943,7 +944,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
     uint32_t pos = 0;
     for (uint32_t c = from_cell; c < to_cell; c++) {
         uint32_t end = pos;
-        while (end < n && vor__grid_z(d, ids[end], k, &b->square) == c) {
+        while (end < n && vor__grid_z(d, ids[end], k, b->square) == c) {
             end++;
         }
         /* sites are numbered in input order, so the next buckets' sites
@@ -1017,13 +1018,13 @@ static uint32_t box_cells(const vor_t *d, const vor__grid_square_t *square, unsi
  * not on the merges' stack. */
 VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
 {
-    vor__grid_square(b->d, true, &b->square);
+    vor__grid_square(b->d, true, b->square);
     while (b->k + 1u < QUADTREE_LEVELS &&
-           vor__shl_u64(box_cells(b->d, &b->square, b->k), 3u) <= n &&
+           vor__shl_u64(box_cells(b->d, b->square, b->k), 3u) <= n &&
            vor__shl_u64(1u, 2u * (b->k + 1u)) <= 2u * (uint64_t)n) {
         b->k++;
     }
-    vor__grid_sort(b->d, n, b->k, &b->square, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
+    vor__grid_sort(b->d, n, b->k, b->square, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1032,7 +1033,8 @@ VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32
 /* A builder for d's n sites, counting into stats, its extras from
  * next_extra on. Field by field: no structure copies (memcpy). */
 static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate_of,
-                         vor_predicate_stats_t *stats, uint32_t next_extra)
+                         vor_predicate_stats_t *stats, uint32_t next_extra,
+                         vor__grid_square_t *square)
 {
     b->d = d;
     b->tri = d->triangles;
@@ -1047,8 +1049,7 @@ static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate
     b->split = 0;
     b->line = 0;
     b->k = 0;
-    b->square.x0 = b->square.y0 = 0;
-    b->square.shift = 0;
+    b->square = square;
     b->bound = 2u * n + 2u;
 }
 
@@ -1063,7 +1064,8 @@ static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate
  * the x-split, the whole array) is sorted in place and its distinct ids
  * moved to its front before it is built. */
 VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, uint32_t n,
-                             enum vor_dc_split split, uint32_t *duplicate_of, vor_index_t **ids)
+                             enum vor_dc_split split, uint32_t *duplicate_of,
+                             vor__grid_square_t *square, vor_index_t **ids)
 {
     if (split != VOR_DC_QUADTREE && split != VOR_DC_XSPLIT) {
         return VOR_ERR_ARG;
@@ -1072,7 +1074,7 @@ VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, 
     if (status != VOR__BUILD_MESH) {
         return status;
     }
-    builder_init(b, d, n, duplicate_of, &d->stats, d->max_sites);
+    builder_init(b, d, n, duplicate_of, &d->stats, d->max_sites, square);
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
@@ -1113,8 +1115,9 @@ int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
                  enum vor_dc_split split, uint32_t *duplicate_of)
 {
     builder_t b;
+    vor__grid_square_t square;
     vor_index_t *ids;
-    int status = start(&b, d, points, n, split, duplicate_of, &ids);
+    int status = start(&b, d, points, n, split, duplicate_of, &square, &ids);
     if (status != VOR__BUILD_MESH) {
         return status;
     }
@@ -1201,7 +1204,7 @@ static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, 
     uint32_t low = 0, high = n;
     while (low < high) {
         uint32_t mid = low + ((high - low) >> 1);
-        if (vor__grid_z(b->d, ids[mid], b->k, &b->square) < half) {
+        if (vor__grid_z(b->d, ids[mid], b->k, b->square) < half) {
             low = mid + 1u;
         } else {
             high = mid;
@@ -1306,11 +1309,9 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     for (unsigned h = 0; h < 2u; h++) {
         half_t *x = &half[h];
         stats_clear(&x->stats);
-        builder_init(&x->b, d, n, b->duplicate_of, &x->stats, (h == 0u) ? d->max_sites : gap_end);
+        builder_init(&x->b, d, n, b->duplicate_of, &x->stats, (h == 0u) ? d->max_sites : gap_end,
+                     b->square);
         x->b.k = b->k;
-        x->b.square.x0 = b->square.x0;
-        x->b.square.y0 = b->square.y0;
-        x->b.square.shift = b->square.shift;
         x->ids = (h == 0u) ? ids_a : ids + n_a;
         x->count = (h == 0u) ? n_a : count - n_a;
         x->from_cell = (h == 0u) ? 0u : cells >> 1;
@@ -1356,8 +1357,9 @@ int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
         return VOR_ERR_ARG;
     }
     builder_t b;
+    vor__grid_square_t square;
     vor_index_t *ids;
-    int status = start(&b, d, points, n, split, duplicate_of, &ids);
+    int status = start(&b, d, points, n, split, duplicate_of, &square, &ids);
     if (status != VOR__BUILD_MESH) {
         return status;
     }

@@ -390,14 +390,15 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 
 /* Sign of the perturbation's term whose minor rows (x[r], y[r]: the
  * differences to the top site, |x|, |y| <= 2^32 - 1) have the kinds in
- * `kinds` (row r's in bits 2r and 2r + 1), at most one of them ROW_SQUARE, expanded along the third column as the
- * exact wide tier's terms (wide_term). The first two columns hold x, y, 0
- * or 1, so a cross product of two rows is a signed sum of two products
- * below 2^64: a word and a 65th bit. The third holds x^2 + y^2 < 2^65 (a
- * word and a 65th bit), 2x or 2y (< 2^33, taken as magnitude and sign) or
- * 1. Each product < 2^130 goes to the sum of its sign, three of them <
- * 2^132 in 192 bits. Out of line: one copy serves the first term and the
- * later ones, for every size of difference. */
+ * `kinds` (row r's in bits 2r and 2r + 1), at most one of them
+ * ROW_SQUARE, expanded along the third column as the exact wide tier's
+ * terms (wide_term). The first two columns hold x, y, 0 or 1, so a cross
+ * product of two rows is a signed sum of two products below 2^64: a word
+ * and a 65th bit. The third holds x^2 + y^2 < 2^65 (a word and a 65th
+ * bit), 2x or 2y (< 2^33, taken as magnitude and sign) or 1. Each product
+ * < 2^130 goes to the sum of its sign, three of them < 2^132 in 192 bits.
+ * Out of line: one copy serves every term the closed forms do not
+ * decide, for every size of difference. */
 static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsigned kinds)
 {
     int64_t e[3][2];
