@@ -426,6 +426,24 @@ static void degenerate_quad(test_rng_t *rng, unsigned family, unsigned bits, vor
     }
 }
 
+/* The four points q under the p-th (p < 24) assignment of the indices
+ * 0..3: ids[k] is point k's index, and sites[ids[k]] = q[k]. */
+static void index_order(unsigned p, const vor_point_t q[4], uint32_t ids[4],
+                        vor_point_t sites[4])
+{
+    for (unsigned k = 0, left = p, used = 0; k < 4; k++) {
+        unsigned pick = left % (4u - k); /* the pick-th unused index */
+        left /= 4u - k;
+        uint32_t id = 0;
+        while (((used >> id) & 1u) != 0u || pick-- != 0u) {
+            id++;
+        }
+        used |= 1u << id;
+        ids[k] = id;
+        sites[id] = q[k];
+    }
+}
+
 /* vor_orient2d_sos and vor_incircle_sos against ref_perturbed on
  * degenerate and random quads with differences up to 32 bits, under
  * every assignment of the indices 0..3 to the points. */
@@ -442,21 +460,9 @@ static void check_perturbation_reference(void)
         degenerate_quad(&rng, (n / 7u) % 6u, bits, q);
         /* every assignment of indices to points (ids[k] holds point k) */
         for (unsigned p = 0; p < 24; p++) {
-            uint32_t ids[4] = {0, 0, 0, 0};
-            for (unsigned k = 0, left = p, used = 0; k < 4; k++) {
-                unsigned pick = left % (4u - k); /* the pick-th unused index */
-                left /= 4u - k;
-                uint32_t id = 0;
-                while (((used >> id) & 1u) != 0u || pick-- != 0u) {
-                    id++;
-                }
-                used |= 1u << id;
-                ids[k] = id;
-            }
+            uint32_t ids[4];
             vor_point_t sites[4];
-            for (unsigned k = 0; k < 4; k++) {
-                sites[ids[k]] = q[k];
-            }
+            index_order(p, q, ids, sites);
             unsigned first;
             int want = ref_perturbed(sites, ids, 4, &first);
             int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3], &stats);
@@ -528,20 +534,8 @@ static void check_first_term_filter(void)
         }
         for (unsigned p = 0; p < 24; p++) { /* every index order */
             uint32_t ids[4];
-            for (unsigned k = 0, left = p, taken = 0; k < 4; k++) {
-                unsigned pick = left % (4u - k);
-                left /= 4u - k;
-                uint32_t id = 0;
-                while (((taken >> id) & 1u) != 0u || pick-- != 0u) {
-                    id++;
-                }
-                taken |= 1u << id;
-                ids[k] = id;
-            }
             vor_point_t sites[4];
-            for (unsigned k = 0; k < 4; k++) {
-                sites[ids[k]] = q[k];
-            }
+            index_order(p, q, ids, sites);
             unsigned first;
             int want = ref_perturbed(sites, ids, 4, &first);
             int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3], NULL);
