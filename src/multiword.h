@@ -26,17 +26,6 @@
 
 #include "vor_config.h"
 
-/* GCC for ARMv6-M copies a 16-byte structure (the 128-bit values here,
- * passed and returned by value) with a call to memcpy when it does not
- * optimise (-O0, -Og), and the library calls nothing outside itself: so
- * in such a build the code of every file including this one is compiled
- * as at -O1, the lowest level at which GCC copies them inline. Not for
- * clang, which copies them inline at every level. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__ARM_ARCH_6M__) &&                  \
-    !defined(__OPTIMIZE__)
-#pragma GCC optimize("O1")
-#endif
-
 /* The helpers below run with constant limb counts on the predicates' hot
  * paths; forcing them inline lets the compiler unroll the loops. The wider
  * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
@@ -49,9 +38,9 @@
 #define VOR__NOINLINE
 #endif
 /* At -Os the compiler weighs size, so it decides what to inline (a third
- * less flash for the predicates). Helpers that take or return structures
- * by value use VOR__ALWAYS_INLINE: out of line, their copies would be
- * memcpy calls. */
+ * less flash for the predicates). The 128-bit helpers use
+ * VOR__ALWAYS_INLINE, so that their operands, passed by pointer, stay in
+ * registers. */
 #if defined(__OPTIMIZE_SIZE__)
 #define VOR__INLINE static inline
 #else
@@ -384,9 +373,13 @@ VOR__HELPER void vor__mw_times4(vor__limb *r, const vor__limb *a, size_t n)
 
 /* ------------------------------------------------------------ 128 bits */
 
-/* An unsigned 128-bit value in two words, passed by value: its helpers
- * are forced inline, so it lives in registers (out of line, every copy
- * would be a memcpy call at -Os). */
+/* An unsigned 128-bit value in two words. Its helpers take and write it
+ * through pointers, never by value, and no code copies it as a whole:
+ * GCC for ARMv6-M copies a 16-byte structure with a call to memcpy at -Og
+ * and -O0 (and out of line at -Os), and the library calls nothing
+ * outside itself. Forced inline, the helpers' locals still live in
+ * registers when optimising. Every helper reads its operands before it
+ * writes r, so r may be one of them. */
 typedef struct vor__mw_u128 {
     uint64_t lo, hi;
 } vor__mw_u128_t;
@@ -398,82 +391,89 @@ typedef struct vor__mw_s128 {
     int neg;
 } vor__mw_s128_t;
 
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_of(uint64_t v)
+/* *r = v. */
+VOR__ALWAYS_INLINE void vor__mw_u128_set(vor__mw_u128_t *r, uint64_t v)
 {
-    vor__mw_u128_t r;
-    r.lo = v;
-    r.hi = 0;
-    return r;
+    r->lo = v;
+    r->hi = 0;
 }
 
-/* Full product of two words. */
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_mul(uint64_t a, uint64_t b)
+/* *r = *a, word by word. */
+VOR__ALWAYS_INLINE void vor__mw_u128_copy(vor__mw_u128_t *r, const vor__mw_u128_t *a)
 {
-    vor__mw_u128_t r;
-    uint64_t high; /* not &r.hi: r stays in registers, no memcpy */
-    r.lo = vor__mul_u64(a, b, &high);
-    r.hi = high;
-    return r;
+    r->lo = a->lo;
+    r->hi = a->hi;
 }
 
-/* a * b, for a product known to be below 2^128. */
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_mul64(vor__mw_u128_t a, uint64_t b)
+/* *r = a * b, the full product of two words. */
+VOR__ALWAYS_INLINE void vor__mw_u128_mul(vor__mw_u128_t *r, uint64_t a, uint64_t b)
 {
-    vor__mw_u128_t r = vor__mw_u128_mul(a.lo, b);
-    uint64_t ignored;
-    r.hi += vor__mul_u64(a.hi, b, &ignored);
-    return r;
+    uint64_t high; /* not &r->hi: r stays in registers */
+    r->lo = vor__mul_u64(a, b, &high);
+    r->hi = high;
 }
 
-/* a + b, modulo 2^128. */
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_add(vor__mw_u128_t a, vor__mw_u128_t b)
+/* *r = *a * b, for a product known to be below 2^128. */
+VOR__ALWAYS_INLINE void vor__mw_u128_mul64(vor__mw_u128_t *r, const vor__mw_u128_t *a, uint64_t b)
 {
-    vor__mw_u128_t r;
-    r.lo = a.lo + b.lo;
-    r.hi = a.hi + b.hi + (r.lo < a.lo ? 1u : 0u);
-    return r;
+    uint64_t a_hi = a->hi, high, ignored;
+    uint64_t low = vor__mul_u64(a->lo, b, &high);
+    r->lo = low;
+    r->hi = high + vor__mul_u64(a_hi, b, &ignored);
 }
 
-/* *acc += v, modulo 2^128, in place: for accumulators in memory, where
- * a copy out and back would cost loads and stores. */
-VOR__ALWAYS_INLINE void vor__mw_u128_add_to(vor__mw_u128_t *acc, vor__mw_u128_t v)
+/* *r = *a + *b, modulo 2^128. */
+VOR__ALWAYS_INLINE void vor__mw_u128_add(vor__mw_u128_t *r, const vor__mw_u128_t *a,
+                                         const vor__mw_u128_t *b)
 {
-    acc->lo += v.lo;
-    acc->hi += v.hi + ((acc->lo < v.lo) ? 1u : 0u);
+    uint64_t lo = a->lo + b->lo;
+    uint64_t hi = a->hi + b->hi + (lo < a->lo ? 1u : 0u);
+    r->lo = lo;
+    r->hi = hi;
 }
 
-/* a - b for a >= b. */
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_sub(vor__mw_u128_t a, vor__mw_u128_t b)
+/* *acc += a * b, modulo 2^128: the product never leaves registers. */
+VOR__ALWAYS_INLINE void vor__mw_u128_add_product(vor__mw_u128_t *acc, uint64_t a, uint64_t b)
 {
-    vor__mw_u128_t r;
-    r.lo = a.lo - b.lo;
-    r.hi = a.hi - b.hi - (a.lo < b.lo ? 1u : 0u);
-    return r;
+    uint64_t high, low = vor__mul_u64(a, b, &high);
+    acc->lo += low;
+    acc->hi += high + ((acc->lo < low) ? 1u : 0u);
 }
 
-/* a >> s for s in [1, 63]. The 64-bit shifts go through vor__shr_u64 and
- * vor__shl_u64: with a constant s they fold to the plain shifts, and
- * without optimisation, where s stays a variable, they are no runtime
- * call on 32-bit targets. */
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_u128_shr(vor__mw_u128_t a, unsigned s)
+/* *r = *a - *b for *a >= *b. */
+VOR__ALWAYS_INLINE void vor__mw_u128_sub(vor__mw_u128_t *r, const vor__mw_u128_t *a,
+                                         const vor__mw_u128_t *b)
 {
-    vor__mw_u128_t r;
-    r.lo = vor__shr_u64(a.lo, s) | vor__shl_u64(a.hi, 64u - s);
-    r.hi = vor__shr_u64(a.hi, s);
-    return r;
+    uint64_t lo = a->lo - b->lo;
+    uint64_t hi = a->hi - b->hi - (a->lo < b->lo ? 1u : 0u);
+    r->lo = lo;
+    r->hi = hi;
 }
 
-/* Sign of a - b: -1, 0 or 1. */
-VOR__ALWAYS_INLINE int vor__mw_u128_compare(vor__mw_u128_t a, vor__mw_u128_t b)
+/* *r = *a >> s for s in [1, 63]. The 64-bit shifts go through
+ * vor__shr_u64 and vor__shl_u64: with a constant s they fold to the plain
+ * shifts, and without optimisation, where s stays a variable, they are no
+ * runtime call on 32-bit targets. */
+VOR__ALWAYS_INLINE void vor__mw_u128_shr(vor__mw_u128_t *r, const vor__mw_u128_t *a, unsigned s)
 {
-    if (a.hi != b.hi) {
-        return a.hi < b.hi ? -1 : 1;
+    uint64_t lo = vor__shr_u64(a->lo, s) | vor__shl_u64(a->hi, 64u - s);
+    uint64_t hi = vor__shr_u64(a->hi, s);
+    r->lo = lo;
+    r->hi = hi;
+}
+
+/* Sign of *a - *b: -1, 0 or 1. */
+VOR__ALWAYS_INLINE int vor__mw_u128_compare(const vor__mw_u128_t *a, const vor__mw_u128_t *b)
+{
+    if (a->hi != b->hi) {
+        return a->hi < b->hi ? -1 : 1;
     }
-    if (a.lo != b.lo) {
-        return a.lo < b.lo ? -1 : 1;
+    if (a->lo != b->lo) {
+        return a->lo < b->lo ? -1 : 1;
     }
     return 0;
 }
+
 /* Bit length of v: the least k with v < 2^k, 0 for 0. One CLZ where the
  * core has it (Armv7-M and up); elsewhere by halving, not the builtin,
  * which becomes a runtime call on ARMv6-M and 32-bit RISC-V without Zbb. */
@@ -510,9 +510,9 @@ VOR__INLINE unsigned vor__mw_bit_length_limbs(const vor__limb *a, size_t n)
     return 0;
 }
 
-VOR__ALWAYS_INLINE int vor__mw_u128_is_zero(vor__mw_u128_t a)
+VOR__ALWAYS_INLINE int vor__mw_u128_is_zero(const vor__mw_u128_t *a)
 {
-    return a.lo == 0u && a.hi == 0u;
+    return a->lo == 0u && a->hi == 0u;
 }
 
 /* r[0..n) = *v, zero-extended (n >= 128 bits of limbs). v by pointer: a
@@ -533,45 +533,42 @@ VOR__HELPER void vor__mw_from_u128(vor__limb *r, size_t n, const vor__mw_u128_t 
     }
 }
 
-/* The low 128 bits of a[]. */
-VOR__ALWAYS_INLINE vor__mw_u128_t vor__mw_to_u128(const vor__limb *a)
+/* *r = the low 128 bits of a[]. */
+VOR__ALWAYS_INLINE void vor__mw_to_u128(vor__mw_u128_t *r, const vor__limb *a)
 {
-    vor__mw_u128_t r;
 #if VOR_LIMB_BITS == 64
-    r.lo = a[0];
-    r.hi = a[1];
+    r->lo = a[0];
+    r->hi = a[1];
 #else
-    r.lo = a[0] | ((uint64_t)a[1] << 32);
-    r.hi = a[2] | ((uint64_t)a[3] << 32);
+    r->lo = a[0] | ((uint64_t)a[1] << 32);
+    r->hi = a[2] | ((uint64_t)a[3] << 32);
 #endif
-    return r;
 }
 
-/* x * y for |x|, |y| < 2^32. */
-VOR__ALWAYS_INLINE vor__mw_s128_t vor__mw_s128_product(int64_t x, int64_t y)
+/* *r = x * y for |x|, |y| < 2^32. */
+VOR__ALWAYS_INLINE void vor__mw_s128_product(vor__mw_s128_t *r, int64_t x, int64_t y)
 {
-    vor__mw_s128_t r;
-    r.mag = vor__mw_u128_of(vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(y)));
-    r.neg = (x < 0) != (y < 0) && !vor__mw_u128_is_zero(r.mag);
-    return r;
+    uint64_t mag = vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(y));
+    vor__mw_u128_set(&r->mag, mag);
+    r->neg = (x < 0) != (y < 0) && mag != 0u;
 }
 
-/* a + b, for sums below 2^128 in magnitude. */
-VOR__ALWAYS_INLINE vor__mw_s128_t vor__mw_s128_add(vor__mw_s128_t a, vor__mw_s128_t b)
+/* *r = *a + *b, for sums below 2^128 in magnitude. */
+VOR__ALWAYS_INLINE void vor__mw_s128_add(vor__mw_s128_t *r, const vor__mw_s128_t *a,
+                                         const vor__mw_s128_t *b)
 {
-    vor__mw_s128_t r;
-    if (a.neg == b.neg) {
-        r.mag = vor__mw_u128_add(a.mag, b.mag);
-        r.neg = a.neg;
-    } else if (vor__mw_u128_compare(a.mag, b.mag) >= 0) {
-        r.mag = vor__mw_u128_sub(a.mag, b.mag);
-        r.neg = a.neg;
+    int neg;
+    if (a->neg == b->neg) {
+        neg = a->neg;
+        vor__mw_u128_add(&r->mag, &a->mag, &b->mag);
+    } else if (vor__mw_u128_compare(&a->mag, &b->mag) >= 0) {
+        neg = a->neg;
+        vor__mw_u128_sub(&r->mag, &a->mag, &b->mag);
     } else {
-        r.mag = vor__mw_u128_sub(b.mag, a.mag);
-        r.neg = b.neg;
+        neg = b->neg;
+        vor__mw_u128_sub(&r->mag, &b->mag, &a->mag);
     }
-    r.neg = r.neg && !vor__mw_u128_is_zero(r.mag);
-    return r;
+    r->neg = neg && !vor__mw_u128_is_zero(&r->mag);
 }
 
 /* ------------------------------------------------------------- 96 bits */

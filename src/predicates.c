@@ -126,7 +126,7 @@ VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p
     int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
     bool negative = cross < 0;
     uint64_t magnitude_of_cross = negative ? 0u - (uint64_t)cross : (uint64_t)cross;
-    vor__mw_u128_add_to(&sums[negative], vor__mw_u128_mul(lift, magnitude_of_cross));
+    vor__mw_u128_add_product(&sums[negative], lift, magnitude_of_cross);
 }
 
 /* x^2 + y^2 of differences below 2^32 in magnitude: below 2^65, a word

@@ -55,11 +55,12 @@ typedef struct metric {
 
 /* -------------------------------------------------------------- widths */
 
-/* ax^2 + ay^2 < 2^65. */
-VOR__ALWAYS_INLINE vor__mw_u128_t square_sum(uint32_t ax, uint32_t ay)
+/* *r = ax^2 + ay^2 < 2^65. */
+VOR__ALWAYS_INLINE void square_sum(vor__mw_u128_t *r, uint32_t ax, uint32_t ay)
 {
-    return vor__mw_u128_add(vor__mw_u128_of(vor__mul_u32(ax, ax)),
-                            vor__mw_u128_of(vor__mul_u32(ay, ay)));
+    uint64_t x2 = vor__mul_u32(ax, ax), sum = x2 + vor__mul_u32(ay, ay);
+    r->lo = sum;
+    r->hi = (sum < x2) ? 1u : 0u; /* the carry */
 }
 
 /* Widest comparison: the compound weights' squares, 318 bits (below). */
@@ -88,23 +89,22 @@ typedef struct key {
     vor__limb wide[LP_LIMBS];
 } rank_key_t;
 
-/* Inline: a 16-byte structure passed by value to a called function is a
- * memcpy call on RV32 at -Os (the ABI passes a copy by reference). */
-VOR__ALWAYS_INLINE void set_unit(rank_key_t *k, vor__mw_u128_t v)
+/* Makes k the integer k->num: denominator 1, not squared. The callers
+ * write k->num in place (no 128-bit value is copied as a whole: see
+ * multiword.h). */
+VOR__ALWAYS_INLINE void set_unit_denominator(rank_key_t *k)
 {
-    k->num = v;
-    k->den = vor__mw_u128_of(1);
+    vor__mw_u128_set(&k->den, 1);
     k->squared = 0;
 }
 
-/* x^p for x^p < 2^128. */
-VOR__ALWAYS_INLINE vor__mw_u128_t power128(uint32_t x, uint32_t p)
+/* *r = x^p for x^p < 2^128. */
+VOR__ALWAYS_INLINE void power128(vor__mw_u128_t *r, uint32_t x, uint32_t p)
 {
-    vor__mw_u128_t r = vor__mw_u128_of(x);
+    vor__mw_u128_set(r, x);
     for (uint32_t i = 1; i < p; i++) {
-        r = vor__mw_u128_mul64(r, x);
+        vor__mw_u128_mul64(r, r, x);
     }
-    return r;
 }
 
 /* r[0..n) = x^p (n limbs hold it). */
@@ -126,14 +126,17 @@ static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay
     const vor_raster_sites_t *s = m->sites;
     switch (m->metric) {
     case VOR_METRIC_L1:
-        k->num = vor__mw_u128_of((uint64_t)ax + ay);
+        vor__mw_u128_set(&k->num, (uint64_t)ax + ay);
         break;
     case VOR_METRIC_LINF:
-        k->num = vor__mw_u128_of(ax > ay ? ax : ay);
+        vor__mw_u128_set(&k->num, ax > ay ? ax : ay);
         break;
     case VOR_METRIC_LP:
         if (m->lp_narrow) {
-            k->num = vor__mw_u128_add(power128(ax, s->lp_exponent), power128(ay, s->lp_exponent));
+            vor__mw_u128_t x_power, y_power;
+            power128(&x_power, ax, s->lp_exponent);
+            power128(&y_power, ay, s->lp_exponent);
+            vor__mw_u128_add(&k->num, &x_power, &y_power);
         } else {
             vor__limb other[LP_LIMBS];
             power_limbs(k->wide, m->limbs, ax, s->lp_exponent);
@@ -142,7 +145,7 @@ static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay
         }
         break;
     default: /* MULT, ADD, COMPOUND, FARTHEST, HAUSDORFF */
-        k->num = square_sum(ax, ay);
+        square_sum(&k->num, ax, ay);
         if (m->metric == VOR_METRIC_MULT || m->metric == VOR_METRIC_COMPOUND) {
             k->w1 = s->mult_weights[site];
         }
@@ -153,20 +156,27 @@ static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay
     }
 }
 
-/* a dx^2 + 2 b dx dy + c dy^2 for |dx|, |dy| < 2^32: each term is below
- * 2^96 and the form is positive definite, so every step fits 128 bits. */
-VOR__ALWAYS_INLINE vor__mw_u128_t elliptic_form(const vor_raster_sites_t *s, int64_t dx, int64_t dy)
+/* *r = a dx^2 + 2 b dx dy + c dy^2 for |dx|, |dy| < 2^32: each term is
+ * below 2^96 and the form is positive definite, so every step fits 128
+ * bits. Summed in a local, which stays in registers, and stored once. */
+VOR__ALWAYS_INLINE void elliptic_form(vor__mw_u128_t *r, const vor_raster_sites_t *s, int64_t dx,
+                                      int64_t dy)
 {
     uint32_t ax = vor__mw_magnitude(dx), ay = vor__mw_magnitude(dy);
-    vor__mw_u128_t sum = vor__mw_u128_add(vor__mw_u128_mul(vor__mul_u32(ax, ax), (uint32_t)s->form_a),
-                          vor__mw_u128_mul(vor__mul_u32(ay, ay), (uint32_t)s->form_c));
-    if (s->form_b == 0 || ax == 0u || ay == 0u) {
-        return sum;
+    vor__mw_u128_t sum, term;
+    vor__mw_u128_mul(&sum, vor__mul_u32(ax, ax), (uint32_t)s->form_a);
+    vor__mw_u128_mul(&term, vor__mul_u32(ay, ay), (uint32_t)s->form_c);
+    vor__mw_u128_add(&sum, &sum, &term);
+    if (s->form_b != 0 && ax != 0u && ay != 0u) {
+        /* |b| < 2^31 since b^2 < a c < 2^62 */
+        vor__mw_u128_mul(&term, vor__mul_u32(ax, ay), 2u * vor__mw_magnitude(s->form_b));
+        if ((s->form_b < 0) != ((dx < 0) != (dy < 0))) {
+            vor__mw_u128_sub(&sum, &sum, &term);
+        } else {
+            vor__mw_u128_add(&sum, &sum, &term);
+        }
     }
-    /* |b| < 2^31 since b^2 < a c < 2^62 */
-    vor__mw_u128_t cross = vor__mw_u128_mul(vor__mul_u32(ax, ay), 2u * vor__mw_magnitude(s->form_b));
-    int negative = (s->form_b < 0) != ((dx < 0) != (dy < 0));
-    return negative ? vor__mw_u128_sub(sum, cross) : vor__mw_u128_add(sum, cross);
+    vor__mw_u128_copy(r, &sum);
 }
 
 /* The squared distance from q to the segment a-b, as the rational key
@@ -178,21 +188,29 @@ static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, 
 {
     int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
     int64_t ux = (int64_t)qx - a->x, uy = (int64_t)qy - a->y;
-    vor__mw_u128_t length = square_sum(vor__mw_magnitude(ex), vor__mw_magnitude(ey));
-    vor__mw_s128_t along = vor__mw_s128_add(vor__mw_s128_product(ux, ex), vor__mw_s128_product(uy, ey));
-    if (vor__mw_u128_is_zero(length) || along.neg || vor__mw_u128_is_zero(along.mag)) {
-        set_unit(k, square_sum(vor__mw_magnitude(ux), vor__mw_magnitude(uy)));
+    vor__mw_u128_t length;
+    square_sum(&length, vor__mw_magnitude(ex), vor__mw_magnitude(ey));
+    vor__mw_s128_t along, term;
+    vor__mw_s128_product(&along, ux, ex);
+    vor__mw_s128_product(&term, uy, ey);
+    vor__mw_s128_add(&along, &along, &term);
+    if (vor__mw_u128_is_zero(&length) || along.neg || vor__mw_u128_is_zero(&along.mag)) {
+        square_sum(&k->num, vor__mw_magnitude(ux), vor__mw_magnitude(uy));
+        set_unit_denominator(k);
         return;
     }
-    if (vor__mw_u128_compare(along.mag, length) >= 0) {
-        set_unit(k, square_sum(vor__mw_magnitude((int64_t)qx - b->x), vor__mw_magnitude((int64_t)qy - b->y)));
+    if (vor__mw_u128_compare(&along.mag, &length) >= 0) {
+        square_sum(&k->num, vor__mw_magnitude((int64_t)qx - b->x), vor__mw_magnitude((int64_t)qy - b->y));
+        set_unit_denominator(k);
         return;
     }
-    vor__mw_s128_t cross = vor__mw_s128_product(uy, ex);
-    cross.neg = !cross.neg && !vor__mw_u128_is_zero(cross.mag);
-    cross = vor__mw_s128_add(vor__mw_s128_product(ux, ey), cross);
-    k->num = cross.mag; /* |cross| < 2^65 */
-    k->den = length;    /* < 2^65 */
+    vor__mw_s128_t cross;
+    vor__mw_s128_product(&cross, uy, ex);
+    cross.neg = !cross.neg && !vor__mw_u128_is_zero(&cross.mag);
+    vor__mw_s128_product(&term, ux, ey);
+    vor__mw_s128_add(&cross, &term, &cross);
+    vor__mw_u128_copy(&k->num, &cross.mag); /* |cross| < 2^65 */
+    vor__mw_u128_copy(&k->den, &length);    /* < 2^65 */
     k->squared = 1;
 }
 
@@ -206,14 +224,17 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     int a_unit = !a->squared && a->den.lo == 1u && a->den.hi == 0u;
     int b_unit = !b->squared && b->den.lo == 1u && b->den.hi == 0u;
     if (a_unit && b_unit) {
-        return vor__mw_u128_compare(a->num, b->num);
+        return vor__mw_u128_compare(&a->num, &b->num);
     }
     int a_small = a->den.hi == 0u && a->num.hi == 0u && (!a->squared || a->num.lo >> 32 == 0u);
     int b_small = b->den.hi == 0u && b->num.hi == 0u && (!b->squared || b->num.lo >> 32 == 0u);
     if (a_small && b_small) { /* numerators and denominators below 2^64 */
         uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
-        return vor__mw_u128_compare(vor__mw_u128_mul(an, b->den.lo), vor__mw_u128_mul(bn, a->den.lo));
+        vor__mw_u128_t left, right;
+        vor__mw_u128_mul(&left, an, b->den.lo);
+        vor__mw_u128_mul(&right, bn, a->den.lo);
+        return vor__mw_u128_compare(&left, &right);
     }
     enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
     vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
@@ -248,8 +269,8 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u128_t *big_b,
                          const vor__mw_s128_t *delta)
 {
-    if (vor__mw_u128_is_zero(delta->mag)) {
-        return vor__mw_u128_compare(*big_a, *big_b);
+    if (vor__mw_u128_is_zero(&delta->mag)) {
+        return vor__mw_u128_compare(big_a, big_b);
     }
     vor__limb a[MAX_LIMBS], b[MAX_LIMBS], d[MAX_LIMBS], d2[MAX_LIMBS], e[MAX_LIMBS];
     vor__limb product[MAX_LIMBS], left[MAX_LIMBS], right[MAX_LIMBS];
@@ -266,7 +287,7 @@ static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u1
             return -1; /* E < 0 <= 2 delta sqrt(B) */
         }
         if (sign == 0) {
-            return vor__mw_u128_is_zero(*big_b) ? 0 : -1;
+            return vor__mw_u128_is_zero(big_b) ? 0 : -1;
         }
         vor__mw_mul(left, n, e, n, e, n);
         vor__mw_mul(product, n, d2, n, b, n);
@@ -281,7 +302,7 @@ static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u1
         return 1; /* 2 g sqrt(A) >= 0 > F */
     }
     if (sign == 0) {
-        return vor__mw_u128_is_zero(*big_a) ? 0 : 1;
+        return vor__mw_u128_is_zero(big_a) ? 0 : 1;
     }
     vor__mw_mul(product, n, d2, n, a, n);
     vor__mw_times4(left, product, n);
@@ -298,9 +319,9 @@ static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t 
         if (!m->lp_narrow) {
             return vor__mw_compare(a->wide, b->wide, m->limbs);
         }
-        return vor__mw_u128_compare(a->num, b->num);
+        return vor__mw_u128_compare(&a->num, &b->num);
     case VOR_METRIC_FARTHEST:
-        return vor__mw_u128_compare(b->num, a->num);
+        return vor__mw_u128_compare(&b->num, &a->num);
     case VOR_METRIC_ELLIPTIC:
     case VOR_METRIC_SEGMENT:
     case VOR_METRIC_POLYGON:
@@ -310,12 +331,15 @@ static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t 
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
-        return vor__mw_u128_compare(vor__mw_u128_mul64(a->num, wb2), vor__mw_u128_mul64(b->num, wa2));
+        vor__mw_u128_t left, right;
+        vor__mw_u128_mul64(&left, &a->num, wb2);
+        vor__mw_u128_mul64(&right, &b->num, wa2);
+        return vor__mw_u128_compare(&left, &right);
     }
     case VOR_METRIC_ADD: {
         vor__mw_s128_t delta; /* wa - wb, below 2^32 */
         int64_t diff = (int64_t)a->w2 - b->w2;
-        delta.mag = vor__mw_u128_of(diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
+        vor__mw_u128_set(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
         delta.neg = diff < 0;
         return additive_sign(m->limbs, &a->num, &b->num, &delta);
     }
@@ -326,14 +350,16 @@ static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t 
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
         int64_t diff = (int64_t)a->w2 - b->w2;
         vor__mw_s128_t delta;
-        delta.mag = vor__mw_u128_mul(diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
-                             vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
+        vor__mw_u128_mul(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
+                         vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
         delta.neg = diff < 0;
-        vor__mw_u128_t big_a = vor__mw_u128_mul64(a->num, wb2), big_b = vor__mw_u128_mul64(b->num, wa2);
+        vor__mw_u128_t big_a, big_b;
+        vor__mw_u128_mul64(&big_a, &a->num, wb2);
+        vor__mw_u128_mul64(&big_b, &b->num, wa2);
         return additive_sign(m->limbs, &big_a, &big_b, &delta);
     }
     default: /* L1, LINF, HAUSDORFF */
-        return vor__mw_u128_compare(a->num, b->num);
+        return vor__mw_u128_compare(&a->num, &b->num);
     }
 }
 
@@ -355,15 +381,13 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
     return winding != 0;
 }
 
-/* k = edge when edge is smaller, member by member: no struct copy (memcpy
- * on Cortex-M0). */
+/* k = edge when edge is smaller, member by member: no structure copy
+ * (memcpy on Cortex-M0). */
 static void keep_smaller(rank_key_t *k, const rank_key_t *edge)
 {
     if (rational_compare(edge, k) < 0) {
-        k->num.lo = edge->num.lo;
-        k->num.hi = edge->num.hi;
-        k->den.lo = edge->den.lo;
-        k->den.hi = edge->den.hi;
+        vor__mw_u128_copy(&k->num, &edge->num);
+        vor__mw_u128_copy(&k->den, &edge->den);
         k->squared = edge->squared;
     }
 }
@@ -386,19 +410,21 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
     switch (m->metric) {
     case VOR_METRIC_ELLIPTIC: {
         const vor_point_t *p = &s->points[site];
-        set_unit(k, elliptic_form(s, (int64_t)qx - p->x, (int64_t)qy - p->y));
+        elliptic_form(&k->num, s, (int64_t)qx - p->x, (int64_t)qy - p->y);
+        set_unit_denominator(k);
         break;
     }
     case VOR_METRIC_HAUSDORFF: {
-        vor__mw_u128_t far = vor__mw_u128_of(0);
+        vor__mw_u128_t far, d;
+        vor__mw_u128_set(&far, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
-            vor__mw_u128_t d = square_sum(vor__mw_magnitude((int64_t)qx - s->points[i].x),
-                                  vor__mw_magnitude((int64_t)qy - s->points[i].y));
-            if (vor__mw_u128_compare(d, far) > 0) {
-                far = d;
+            square_sum(&d, vor__mw_magnitude((int64_t)qx - s->points[i].x),
+                       vor__mw_magnitude((int64_t)qy - s->points[i].y));
+            if (vor__mw_u128_compare(&d, &far) > 0) {
+                vor__mw_u128_copy(&far, &d);
             }
         }
-        k->num = far;
+        vor__mw_u128_copy(&k->num, &far);
         break;
     }
     case VOR_METRIC_SEGMENT:
@@ -411,7 +437,8 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
         q.x = qx;
         q.y = qy;
         if (count >= 3u && winds_around(p, count, &q)) {
-            set_unit(k, vor__mw_u128_of(0));
+            vor__mw_u128_set(&k->num, 0);
+            set_unit_denominator(k);
             break;
         }
         segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
@@ -433,7 +460,7 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
             segment_key(&p[i], &p[i + 1u], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
-        k->den = vor__mw_u128_mul64(k->den, polyline_weight2(s, site));
+        vor__mw_u128_mul64(&k->den, &k->den, polyline_weight2(s, site));
         break;
     }
     default: {
@@ -464,23 +491,22 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
  * call on Cortex-M0). */
 static uint64_t isqrt128(const vor__mw_u128_t *value)
 {
-    vor__mw_u128_t x, root = vor__mw_u128_of(0), bit;
-    x.lo = value->lo; /* field by field: a structure copy may be a memcpy call */
-    x.hi = value->hi;
+    vor__mw_u128_t x, root, bit, trial;
+    vor__mw_u128_copy(&x, value);
+    vor__mw_u128_set(&root, 0);
     bit.lo = 0;
     bit.hi = (uint64_t)1 << 62;
-    while (vor__mw_u128_compare(bit, x) > 0) {
-        bit = vor__mw_u128_shr(bit, 2u);
+    while (vor__mw_u128_compare(&bit, &x) > 0) {
+        vor__mw_u128_shr(&bit, &bit, 2u);
     }
-    while (!vor__mw_u128_is_zero(bit)) {
-        vor__mw_u128_t trial = vor__mw_u128_add(root, bit);
-        if (vor__mw_u128_compare(x, trial) >= 0) {
-            x = vor__mw_u128_sub(x, trial);
-            root = vor__mw_u128_add(vor__mw_u128_shr(root, 1u), bit);
-        } else {
-            root = vor__mw_u128_shr(root, 1u);
+    while (!vor__mw_u128_is_zero(&bit)) {
+        vor__mw_u128_add(&trial, &root, &bit);
+        vor__mw_u128_shr(&root, &root, 1u);
+        if (vor__mw_u128_compare(&x, &trial) >= 0) {
+            vor__mw_u128_sub(&x, &x, &trial);
+            vor__mw_u128_add(&root, &root, &bit);
         }
-        bit = vor__mw_u128_shr(bit, 2u);
+        vor__mw_u128_shr(&bit, &bit, 2u);
     }
     return root.lo;
 }
@@ -601,7 +627,8 @@ static uint32_t rational_distance(const rank_key_t *k)
     }
     vor__mw_from_u128(den, DIV_LIMBS, &k->den);
     mw_divide(q, x, den);
-    vor__mw_u128_t quotient = vor__mw_to_u128(q);
+    vor__mw_u128_t quotient;
+    vor__mw_to_u128(&quotient, q);
     return saturate_u32(isqrt128(&quotient));
 }
 
@@ -662,10 +689,10 @@ static uint32_t interval_gap(int32_t lo1, int32_t hi1, int32_t lo2, int32_t hi2)
     return lo1 > hi2 ? (uint32_t)lo1 - (uint32_t)hi2 : lo2 > hi1 ? (uint32_t)lo2 - (uint32_t)hi1 : 0u;
 }
 
-/* The squared distance from p to the farthest corner of r. */
-VOR__ALWAYS_INLINE vor__mw_u128_t farthest_corner(const vor_point_t *p, const rect_t *r)
+/* *d = the squared distance from p to the farthest corner of r. */
+VOR__ALWAYS_INLINE void farthest_corner(vor__mw_u128_t *d, const vor_point_t *p, const rect_t *r)
 {
-    return square_sum(reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1));
+    square_sum(d, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1));
 }
 
 /*
@@ -691,34 +718,41 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
     case VOR_METRIC_ELLIPTIC: {
         const vor_point_t *p = &s->points[site];
         if (!worst) {
-            vor__mw_u128_t near = square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
-            k->num = vor__mw_u128_mul64(near, m->det); /* < 2^65 * 2^62 */
-            k->den = vor__mw_u128_of(m->trace);
+            vor__mw_u128_t near;
+            square_sum(&near, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
+            vor__mw_u128_mul64(&k->num, &near, m->det); /* < 2^65 * 2^62 */
+            vor__mw_u128_set(&k->den, m->trace);
             k->squared = 0;
             break;
         }
-        vor__mw_u128_t top = vor__mw_u128_of(0);
+        vor__mw_u128_t top, q;
+        vor__mw_u128_set(&top, 0);
         for (int corner = 0; corner < 4; corner++) {
             int32_t x = (corner & 1) ? r->x1 : r->x0, y = (corner & 2) ? r->y1 : r->y0;
-            vor__mw_u128_t q = elliptic_form(s, (int64_t)x - p->x, (int64_t)y - p->y);
-            if (vor__mw_u128_compare(q, top) > 0) {
-                top = q;
+            elliptic_form(&q, s, (int64_t)x - p->x, (int64_t)y - p->y);
+            if (vor__mw_u128_compare(&q, &top) > 0) {
+                vor__mw_u128_copy(&top, &q);
             }
         }
-        set_unit(k, top);
+        vor__mw_u128_copy(&k->num, &top);
+        set_unit_denominator(k);
         break;
     }
     case VOR_METRIC_HAUSDORFF: {
-        vor__mw_u128_t top = vor__mw_u128_of(0);
+        vor__mw_u128_t top, d;
+        vor__mw_u128_set(&top, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             const vor_point_t *p = &s->points[i];
-            vor__mw_u128_t d = worst ? farthest_corner(p, r)
-                             : square_sum(gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
-            if (vor__mw_u128_compare(d, top) > 0) {
-                top = d;
+            if (worst) {
+                farthest_corner(&d, p, r);
+            } else {
+                square_sum(&d, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
+            }
+            if (vor__mw_u128_compare(&d, &top) > 0) {
+                vor__mw_u128_copy(&top, &d);
             }
         }
-        k->num = top;
+        vor__mw_u128_copy(&k->num, &top);
         break;
     }
     case VOR_METRIC_SEGMENT:
@@ -734,17 +768,21 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
             count = s->offsets[site + 1u] - s->offsets[site];
         }
         if (worst) {
-            vor__mw_u128_t d = farthest_corner(&p[0], r);
+            vor__mw_u128_t d, other;
+            farthest_corner(&d, &p[0], r);
             uint32_t reached = m->metric == VOR_METRIC_SEGMENT    ? 2u
                                : m->metric == VOR_METRIC_POLYLINE ? count
                                                                   : 1u;
             for (uint32_t i = 1; i < reached; i++) {
-                vor__mw_u128_t other = farthest_corner(&p[i], r);
-                d = vor__mw_u128_compare(other, d) < 0 ? other : d;
+                farthest_corner(&other, &p[i], r);
+                if (vor__mw_u128_compare(&other, &d) < 0) {
+                    vor__mw_u128_copy(&d, &other);
+                }
             }
-            set_unit(k, d);
+            vor__mw_u128_copy(&k->num, &d);
+            set_unit_denominator(k);
             if (m->metric == VOR_METRIC_POLYLINE) {
-                k->den = vor__mw_u128_of(polyline_weight2(s, site));
+                vor__mw_u128_set(&k->den, polyline_weight2(s, site));
             }
             break;
         }
@@ -755,9 +793,10 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
             y0 = p[i].y < y0 ? p[i].y : y0;
             y1 = p[i].y > y1 ? p[i].y : y1;
         }
-        set_unit(k, square_sum(interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1)));
+        square_sum(&k->num, interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1));
+        set_unit_denominator(k);
         if (m->metric == VOR_METRIC_POLYLINE) {
-            k->den = vor__mw_u128_of(polyline_weight2(s, site));
+            vor__mw_u128_set(&k->den, polyline_weight2(s, site));
         }
         break;
     }
