@@ -160,11 +160,8 @@ freestanding() {
     # with GCC and clang, at every optimisation level, warnings as errors.
     # GCC on ARMv6-M needs -fno-jump-tables, which port/cortex-m0/port.mk
     # has (docs/porting.md); without it only libgcc's case helpers may
-    # appear. The one exception left: GCC on ARMv6-M at -Og copies a
-    # 16-byte structure (the 128-bit values of multiword.h) with memcpy,
-    # so there memcpy, and nothing else, may appear (at -O0 multiword.h
-    # raises the library's level to -O1, where the copies are inline).
-    local compiler level dir opt memcpy_allowed
+    # appear. Every level must be clean: no exception is allowed.
+    local compiler level dir opt
     local -a args
     for target in cortex-m0 riscv32; do
         nm=arm-none-eabi-nm
@@ -178,17 +175,8 @@ freestanding() {
                     clang-cortex-m0) args+=(CC="clang --target=armv6m-none-eabi") ;;
                     clang-riscv32) args+=(CC="clang --target=riscv32-unknown-elf") ;;
                 esac
-                memcpy_allowed=no
-                case $compiler-$target$level in
-                    gcc-cortex-m0-Og) memcpy_allowed=yes ;;
-                esac
                 if make -s -j"$jobs" "${args[@]}" OPT="$opt" lib >>"$log" 2>&1 &&
-                    if [ $memcpy_allowed = yes ]; then
-                        ! tools/check-freestanding.sh "$nm" "$dir/libvor.a" 2>&1 |
-                            grep -v 'calls libc function memcpy$' | tee -a "$log" | grep -q .
-                    else
-                        tools/check-freestanding.sh "$nm" "$dir/libvor.a" >>"$log" 2>&1
-                    fi; then
+                    tools/check-freestanding.sh "$nm" "$dir/libvor.a" >>"$log" 2>&1; then
                     passed=$((passed + 1))
                 else
                     echo "FAIL $compiler $target $opt: a warning, or a call outside the library" >>"$log"
