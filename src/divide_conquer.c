@@ -1111,20 +1111,6 @@ VOR__ALWAYS_INLINE void finish(const builder_t *b)
     vor__grid_rebuild(d);
 }
 
-int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
-                 enum vor_dc_split split, uint32_t *duplicate_of)
-{
-    builder_t b;
-    vor__grid_square_t square;
-    vor_index_t *ids;
-    int status = start(&b, d, points, n, split, duplicate_of, &square, &ids);
-    if (status != VOR__BUILD_MESH) {
-        return status;
-    }
-    build_all(&b, ids, n, split);
-    finish(&b);
-    return VOR_OK;
-}
 
 /* ------------------------------------------------------------------ */
 /* Two cores (vor_build_dc_forked)                                     */
@@ -1349,13 +1335,14 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     }
 }
 
-int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
-                        enum vor_dc_split split, uint32_t *duplicate_of,
-                        const vor_fork_join_t *hook)
+/* Both entry points: the build on the calling core, or through the hook
+ * when there is one and the build is large enough to fork. Inline, so that
+ * vor_build_dc's constant NULL hook leaves build_forked out of a firmware
+ * that calls only vor_build_dc. */
+VOR__ALWAYS_INLINE int build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
+                                enum vor_dc_split split, uint32_t *duplicate_of,
+                                const vor_fork_join_t *hook)
 {
-    if (hook != NULL && (hook->fork == NULL || hook->join == NULL)) {
-        return VOR_ERR_ARG;
-    }
     builder_t b;
     vor__grid_square_t square;
     vor_index_t *ids;
@@ -1374,4 +1361,20 @@ int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
     }
     finish(&b);
     return VOR_OK;
+}
+
+int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
+                 enum vor_dc_split split, uint32_t *duplicate_of)
+{
+    return build_dc(d, points, n, split, duplicate_of, NULL);
+}
+
+int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
+                        enum vor_dc_split split, uint32_t *duplicate_of,
+                        const vor_fork_join_t *hook)
+{
+    if (hook != NULL && (hook->fork == NULL || hook->join == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    return build_dc(d, points, n, split, duplicate_of, hook);
 }
