@@ -16,7 +16,7 @@
  * Contours are taken in increasing height (stable for equal heights);
  * there must be at least two.
  *
- * The rule (docs/design.md, "Contour interpolation"): a pixel p lies
+ * The rule (docs/design/raster-metrics.md, "Contour interpolation"): a pixel p lies
  * between two adjacent contours c_j and c_(j+1) (of the height order),
  * chosen from its nearest contour c_k (exact, unweighted) and one of
  * c_(k-1), c_(k+1): when c_k is closed, the neighbour on p's side of c_k

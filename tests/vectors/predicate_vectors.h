@@ -4,7 +4,7 @@
  * tools/gen_predicate_vectors.py writes to build/gen/predicate_vectors.c.
  * The generator computes every expected sign with Python's big integers,
  * independently of the C code; the perturbed sign comes from expanding the
- * perturbed determinant as a polynomial in epsilon (docs/design.md).
+ * perturbed determinant as a polynomial in epsilon (docs/design/predicates.md).
  */
 #ifndef VOR_TEST_PREDICATE_VECTORS_H
 #define VOR_TEST_PREDICATE_VECTORS_H
