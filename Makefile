@@ -23,9 +23,11 @@
 #                           (tests/fuzz/, docs/testing.md)
 #   make soak               10^7 random inserts, removes, moves and queries on
 #                           one diagram, checked against fresh builds
+#   make docs               the API reference from the headers (Doxygen):
+#                           build/docs/html/index.html; fails on any warning
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
-# rsvg-convert) is installed on demand by tools/install-deps.sh, so these
+# rsvg-convert, doxygen) is installed on demand by tools/install-deps.sh, so these
 # work on a fresh Debian machine.
 
 PORT ?= host
@@ -77,7 +79,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage pictures size bench-predicates bench-raster clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage pictures size bench-predicates bench-raster docs clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -260,8 +262,20 @@ pictures: $(B)/vor
 		--png docs/raster.png
 	@echo "pictures:  docs/diagram.png docs/raster.png"
 
+# The API reference: docs/Doxyfile reads include/*.h (through
+# tools/doxygen-filter.py) with README.md as the main page. Doxygen exits
+# non-zero on any warning (FAIL_ON_WARNINGS); the log is printed so the
+# warning shows.
+VOR_VERSION = $(shell sed -n 's/^\#define VOR_VERSION_\(MAJOR\|MINOR\|PATCH\) *\([0-9]*\).*/\2/p' include/vor.h | paste -sd. -)
+docs:
+	@tools/install-deps.sh doxygen python
+	@rm -rf build/docs && mkdir -p build/docs
+	@VOR_VERSION=$(VOR_VERSION) doxygen docs/Doxyfile || { cat build/docs/warnings.log; exit 1; }
+	@if [ -s build/docs/warnings.log ]; then cat build/docs/warnings.log; exit 1; fi
+	@echo "docs:      build/docs/html/index.html"
+
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen
 	+@tools/run-tests.sh
 
 size:

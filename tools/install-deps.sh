@@ -18,6 +18,8 @@
 #               SVG must parse and render like the exact raster)
 #   fuzz        clang 14 and its libFuzzer runtime, for make fuzz and make
 #               test's fuzz suite (tests/fuzz/)
+#   doxygen     doxygen, for make docs (the API reference from the headers)
+#               and make test's docs suite
 #
 # Quiet and exit 0 when every package of the named groups is present; safe
 # to run any number of times. When something is missing: as root, installs
@@ -63,6 +65,7 @@ members() {
         echo "clang-14 clang-14"
         echo "libclang-rt-14-dev /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a"
         ;;
+    doxygen) echo "doxygen doxygen" ;;
     *)
         echo "install-deps: unknown group $1" >&2
         exit 2
@@ -87,7 +90,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

@@ -12,7 +12,8 @@
 # else outside itself (also built with GCC and clang at -O1 to -Oz), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
 # the build-system manifests, the CMake package in consumer programs
-# (tools/test-consumers.sh), and the SPDX licence line of every file. Each suite ends with "N passed, N failed"; a suite that does not
+# (tools/test-consumers.sh), the SPDX licence line of every file, and the
+# docs (make docs without a warning, every Markdown link). Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
 cd "$(dirname "$0")/.."
@@ -241,6 +242,34 @@ record consumers "$logs/consumers.log" $?
 # Every source, header, script and build file names its licence.
 tools/check-spdx.sh >"$logs/spdx.log" 2>&1
 record spdx "$logs/spdx.log" $?
+
+# The API reference (make docs: Doxygen over include/*.h) builds without
+# a warning, and every relative link and #anchor of the Markdown docs
+# leads to a file and heading that exist.
+docs() {
+    local log="$logs/docs.log" passed=0 failed=0 links
+    if make -s docs >"$log" 2>&1; then
+        passed=1
+    else
+        echo "FAIL make docs: a Doxygen warning or error" >>"$log"
+        sed 's/^/FAIL /' build/docs/warnings.log >>"$log" 2>/dev/null
+        failed=1
+    fi
+    python3 tools/check-doc-links.py >"$logs/doc-links.log" 2>&1
+    cat "$logs/doc-links.log" >>"$log"
+    links=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$logs/doc-links.log")
+    if [ -n "$links" ]; then
+        passed=$((passed + ${links%% passed*}))
+        links=${links#*, }
+        failed=$((failed + ${links%% failed}))
+    else
+        echo "FAIL tools/check-doc-links.py did not finish" >>"$log"
+        failed=$((failed + 1))
+    fi
+    echo "$passed passed, $failed failed" >>"$log"
+    record docs "$log" 0
+}
+docs
 
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"
