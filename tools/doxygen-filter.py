@@ -36,15 +36,20 @@ def main(path):
     out = []
     in_comment = False
     verbatim = False
+    file_tag = ""
     seen_file_comment = False
     depth_stack = []  # per open brace: True when it opens a function body
     pending = ""  # code since the last ';' or brace, to tell a body from a struct
     for i, line in enumerate(lines):
         if in_comment:
+            if verbatim:
+                # the " * " margin is decoration, not text
+                line = re.sub(r"^\s*\*(?!/) ?", "", line)
             if "*/" in line:
                 in_comment = False
                 if verbatim:
-                    line = line.replace("*/", "@endverbatim */", 1)
+                    line = line.replace("*/", "@endverbatim" + file_tag + " */", 1)
+                    file_tag = ""
             out.append(line)
             continue
         in_body = any(depth_stack)
@@ -60,10 +65,14 @@ def main(path):
                 verbatim = False
             elif not seen_file_comment:
                 seen_file_comment = True
-                # @file takes an optional name: give it the file's own, so
-                # that text on the opener's line is not read as one
-                name = path.replace("\\", "/").rsplit("/", 1)[-1]
-                new = indent + "/** @file " + name + " @verbatim" + stripped[2:]
+                # @file at the end: @verbatim must open the comment's text,
+                # or Doxygen's Markdown pass reads inside it (__attribute__
+                # in bold). It takes an optional name: the file's own.
+                file_tag = " @file " + path.replace("\\", "/").rsplit("/", 1)[-1]
+                new = indent + "/** @verbatim" + stripped[2:]
+                if closes:
+                    new = new.replace("*/", "@endverbatim" + file_tag + " */", 1)
+                    verbatim = False
             elif closes:
                 # one line: a brief, as text
                 new = indent + "/**" + escape(stripped[2:])
