@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""memory-tables.py - the two memory tables of docs/porting.md, measured.
+"""memory-tables.py - the two memory tables of docs/benchmarks.md, measured.
 
     tools/memory-tables.py            print both tables (Markdown)
     tools/memory-tables.py --check F  exit 1 unless file F holds each verbatim

@@ -223,10 +223,10 @@ linking_log="$logs/linking.log"
 tools/size-features.sh --check cortex-m0 cortex-m3 riscv32 >"$linking_log" 2>&1
 record linking "$linking_log" $?
 
-# docs/porting.md's stack and RAM budget tables, against the call graphs,
+# docs/benchmarks.md's stack and RAM budget tables, against the call graphs,
 # the compilers and VOR_ARENA_BYTES they are computed from.
 memory_log="$logs/memory-tables.log"
-python3 tools/memory-tables.py --check docs/porting.md >"$memory_log" 2>&1
+python3 tools/memory-tables.py --check docs/benchmarks.md >"$memory_log" 2>&1
 record memory-tables "$memory_log" $?
 
 # The build-system manifests (CMake, Zephyr, ESP-IDF, PlatformIO) name
