@@ -1206,6 +1206,33 @@ def ops_cases(rng):
         check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: ")
               and reason in r.stderr, f"ops bad input {text!r}: {r.returncode} {r.stderr!r}")
 
+    # a header is skipped only when it cannot be an operation: a CSV first
+    # line is read like any other, and a mixed one is an error on its line
+    r = run(["ops", "-"], "i,0,0\ni,10,0\ni,0,10\nn,9,1\n")
+    check(r.returncode == 0 and r.stdout == "0\n1\n2\n1\n", f"ops CSV first line: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["ops", "-"], "op,x,y\ni,0,0\nn,1,1\n")
+    check(r.returncode == 0 and r.stdout == "0\n0\n", f"ops header: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    for text, line in (("i 0,0\n", 1), ("i,0,0\ni 0,0\n", 2), ("# c\nn,x,1\n", 2), ("i,0,0\nop,x,y\n", 2)):
+        r = run(["ops", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
+              f"ops {text!r}: {r.returncode} {r.stdout!r} {r.stderr!r}")
+
+
+def header_cases():
+    """The same header rule for every input: a first CSV line is a header
+    only when no field of it is a number, so no record is dropped."""
+    pts = "0,0\n10,0\n0,10\n"
+    ref = run(["delaunay", "-"], pts).stdout
+    for text in ("x,y\n" + pts, '"x" , Y\n' + pts, "# c\n\nlon,lat\n" + pts):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 0 and r.stdout == ref, f"header {text!r}: {r.returncode} {r.stderr!r}")
+    for text, line in (("x,0\n" + pts, 1), ("0,y\n" + pts, 1), ("x,,y\n" + pts, 1), ("x y\n" + pts, 1)):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
+              f"not a header {text!r}: {r.returncode} {r.stderr!r}")
+    r = run(["predicates"], "op,ax,ay,bx,by,cx,cy\no,0,0,1,0,0,1\n")
+    check(r.returncode == 0 and r.stdout == "1\n", f"predicates header: {r.returncode} {r.stdout!r} {r.stderr!r}")
+
 
 def main():
     rng = random.Random(5)
@@ -1252,6 +1279,7 @@ def main():
     version_cases()
     error_name_cases()
     ops_cases(rng)
+    header_cases()
 
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1

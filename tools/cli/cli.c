@@ -165,6 +165,31 @@ static bool is_blank(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
+/* A header: a CSV line every field of which starts with a letter or '"'.
+ * Every record of every input format (points, weighted sites, predicates,
+ * operations, dumps) holds a number among its fields, so a header cannot
+ * be a record: a first line such as "i,0,0" is read, never dropped. */
+static bool is_header(const char *line)
+{
+    if (strchr(line, ',') == NULL) {
+        return false;
+    }
+    for (const char *field = line;;) {
+        while (is_blank(*field)) {
+            field++;
+        }
+        char c = *field;
+        if (c != '"' && !(c >= 'a' && c <= 'z') && !(c >= 'A' && c <= 'Z')) {
+            return false;
+        }
+        field = strchr(field, ',');
+        if (field == NULL) {
+            return true;
+        }
+        field++;
+    }
+}
+
 /* A CSV line: checks that every comma-separated field is one non-empty
  * token, then turns the commas into blanks for the field parsers. */
 static void split_csv(cli_input_t *in, char *line)
@@ -243,8 +268,7 @@ const char *cli_next_line(cli_input_t *in)
         if (*p == '\0' || *p == '#') {
             continue;
         }
-        bool header = in->header_allowed && strchr(p, ',') != NULL &&
-                      (*p == '"' || (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z'));
+        bool header = in->header_allowed && is_header(p);
         in->header_allowed = false;
         if (header) {
             continue;

@@ -18,7 +18,8 @@
  * skipped, and line numbers count every physical line from 1. A line with
  * a comma is CSV: its commas become blanks, after checking that no field is
  * empty or holds a blank. While header_allowed (cli_open sets it), a first
- * CSV line starting with a letter or '"' is a header and skipped. */
+ * CSV line every field of which starts with a letter or '"' is a header and
+ * skipped: no record of any format is such a line, so none is dropped. */
 typedef struct {
     FILE *file;
     const char *name;

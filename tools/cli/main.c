@@ -61,7 +61,8 @@ static int print_help(void)
     print_usage(stdout);
     printf("\n"
            "Input: one point per line, \"x y\" (blanks between the fields) or \"x,y\"\n"
-           "(CSV; a first line starting with a letter, such as \"x,y\", is a header).\n"
+           "(CSV; a first line whose every field starts with a letter or '\"', such\n"
+           "as \"x,y\", is a header: no point or operation line is one).\n"
            "Coordinates are decimal int32; with --scale S they may be decimal numbers\n"
            "(12.5, -3e-2), multiplied by S and rounded to the nearest integer, ties\n"
            "away from zero, exactly. Blank lines and lines starting with '#' are\n"

@@ -43,7 +43,6 @@ int cli_predicates(int argc, char **argv)
     cli_input_t in;
     cli_output_t out = {NULL, 0, 0};
     cli_open(&in, "-");
-    in.header_allowed = false; /* "o,..." and "c,..." lines start with a letter */
     const char *line;
     while ((line = cli_next_line(&in)) != NULL) {
         const char *p = line;
