@@ -1217,6 +1217,29 @@ def ops_cases(rng):
         check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
               f"ops {text!r}: {r.returncode} {r.stdout!r} {r.stderr!r}")
 
+    # --scale: coordinates of i, m and n scaled as every command's are
+    # (ids are not), so a script in decimal units gives the integer run's output
+    from fractions import Fraction as F
+    script, scaled = [], []
+    for step in range(80):
+        op = rng.choice("iiimn") if step > 3 else "i"
+        x, y = rng.randint(-10**6, 10**6), rng.randint(-10**6, 10**6)
+        k = rng.randint(0, 3)
+        dx, dy = decimal_text(F(x, 1000)), decimal_text(F(y, 1000))
+        script.append({"i": f"i {x} {y}", "m": f"m {k} {x} {y}", "n": f"n {x} {y}"}[op])
+        scaled.append({"i": f"i,{dx},{dy}", "m": f"m {k} {dx} {dy}", "n": f"n {dx} {dy}"}[op])
+    script.append("t")
+    scaled.append("t")
+    ref = run(["ops", "-"], "\n".join(script) + "\n")
+    r = run(["ops", "--scale", "1000", "-"], "\n".join(scaled) + "\n")
+    check(ref.returncode == 0 and "t " in ref.stdout and r.returncode == 0 and r.stdout == ref.stdout,
+          f"ops --scale: {ref.returncode} {r.returncode} {r.stderr!r}")
+    r = run(["ops", "--scale", "2.5", "-"], "i 0.2 -0.2\ni 0.6 0.2\nn 0.4 0\nn 0.61 0.2\nm 1 0.2 -0.2\n")
+    check(r.returncode == 0 and r.stdout == "0\n1\n0\n1\nd 0\n", f"ops --scale 2.5: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["ops", "--scale", "10", "-"], "i 1 1\nr 0.0\n")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:2: not a decimal integer"),
+          f"ops --scale: an id stays an integer: {r.returncode} {r.stderr!r}")
+
 
 def header_cases():
     """The same header rule for every input: a first CSV line is a header
