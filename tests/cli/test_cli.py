@@ -832,6 +832,64 @@ def draw_cases(rng, tmp):
     check(r.returncode == 2 and "no-such-dir" in r.stderr, f"draw to a missing directory: {r.returncode} {r.stderr!r}")
 
 
+def picture_cases(tmp):
+    """vor draw and vor raster --png show the same sites the same way: y up,
+    site i in draw_colour(i) in both, at the same pixels (the raster's pixel
+    centres are the picture's); --y-down turns both upside down; --dots
+    blackens the raster's pixels within 1.5 pixels of each site."""
+    import os
+    import shutil
+    if not shutil.which("rsvg-convert"):
+        check(False, "pictures: rsvg-convert is needed (tools/install-deps.sh svg)")
+        return
+    sites = [(200, 650), (800, 600), (500, 150)]  # site 0 high and left, site 2 low
+    path = os.path.join(tmp, "pictures.sites")
+    with open(path, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in sites))
+    w, h = 100, 80
+    pictures = {}
+    for flip in ([], ["--y-down"]):
+        svg, drawn, raster = (os.path.join(tmp, "pictures" + "".join(flip) + e) for e in (".svg", "-draw.png", "-raster.png"))
+        r = run(["draw", *flip, "--box", "0", "0", "1000", "800", "--size", str(w), str(h), path, "-o", svg], "")
+        r2 = subprocess.run(["rsvg-convert", svg, "-o", drawn], capture_output=True, text=True)
+        r3 = run(["raster", *flip, "--size", str(w), str(h), "--origin", "5", "5", "--step", "10", "10", path, "--png", raster], "")
+        check(r.returncode == 0 and r2.returncode == 0 and r3.returncode == 0,
+              f"pictures {flip}: {r.stderr!r} {r2.stderr!r} {r3.stderr!r}")
+        if r.returncode == 0 and r2.returncode == 0 and r3.returncode == 0:
+            pictures[bool(flip)] = (read_png(drawn), read_png(raster))
+    # 3.5 pixels up and right of each site, well inside its cell: the
+    # point (x + 35, y + 35) is raster pixel ((x + 30) / 10, (y + 30) / 10)
+    for down, (drawn, raster) in pictures.items():
+        for k, (x, y) in enumerate(sites):
+            i, j = (x + 30) // 10, (y + 30) // 10
+            row = j if down else h - 1 - j
+            for name, picture in (("draw", drawn), ("raster", raster)):
+                check(picture[row][i] == draw_colour(k), f"pictures: {name}{' --y-down' * down} shows {picture[row][i]} "
+                      f"at site {k}'s pixel ({i}, row {row}), expected {draw_colour(k)}")
+        same = sum(drawn[r][i] == raster[r][i] for r in range(h) for i in range(w))
+        check(same > 0.95 * w * h, f"pictures{' --y-down' * down}: draw and raster agree on only {same} of {w * h} pixels")
+    if False not in pictures:
+        return
+    raster = pictures[False][1]
+    # site 0 (the highest y) fills the top left corner, site 2 the bottom middle
+    check(raster[2][2] == draw_colour(0) and raster[h - 3][w // 2] == draw_colour(2),
+          f"pictures: raster --png is not y up: {raster[2][2]} {raster[h - 3][w // 2]}")
+    if True in pictures:
+        check(pictures[True][1][::-1] == raster, "pictures: raster --y-down is not raster upside down")
+    dotted = os.path.join(tmp, "pictures-dots.png")
+    r = run(["raster", "--dots", "--size", str(w), str(h), "--origin", "5", "5", "--step", "10", "10", path, "--png", dotted], "")
+    check(r.returncode == 0, f"raster --dots: {r.returncode} {r.stderr!r}")
+    if r.returncode == 0:
+        dots = read_png(dotted)
+        # site (x, y) is at pixel ((x - 5) / 10, (y - 5) / 10) = (u + 0.5, v + 0.5)
+        want = {(h - 1 - (y - 5) // 10 - dr, (x - 5) // 10 + di) for x, y in sites for di in (0, 1) for dr in (0, 1)}
+        changed = {(r, i) for r in range(h) for i in range(w) if dots[r][i] != raster[r][i]}
+        check(changed == want and all(dots[r][i] == (0, 0, 0) for r, i in want),
+              f"raster --dots: changed pixels {sorted(changed)}, expected {sorted(want)}")
+    r = run(["raster", "--dots", "--size", "2", "2", path, "--labels", os.path.join(tmp, "x.raw")], "")
+    check(r.returncode == 2 and "--png" in r.stderr, f"raster --dots --labels: {r.returncode} {r.stderr!r}")
+
+
 def version_cases():
     # The expected string is read from the header's three numeric macros,
     # so a STRING that disagrees with MAJOR/MINOR/PATCH fails too.
@@ -1299,6 +1357,7 @@ def main():
         file_error_cases(tmp)
         input_cases(rng, tmp)
         draw_cases(rng, tmp)
+        picture_cases(tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

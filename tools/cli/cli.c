@@ -579,6 +579,12 @@ vor_point_t *cli_read_sites(const char *path, uint32_t *count)
     return sites;
 }
 
+uint32_t cli_site_colour(uint32_t site)
+{
+    uint32_t c = (uint32_t)(site * 2654435761u) & 0x1FFFFFu;
+    return ((128u + (c & 127u)) << 16) | ((128u + ((c >> 7) & 127u)) << 8) | (128u + (c >> 14));
+}
+
 double cli_seconds(void)
 {
     struct timespec t;

@@ -129,6 +129,12 @@ void cli_flush(cli_output_t *out);
  * receives the number of sites. */
 vor_point_t *cli_read_sites(const char *path, uint32_t *count);
 
+/* Site i's colour in every picture of the tool (vor draw, vor raster
+ * --png), as 0xRRGGBB: c = (i * 2654435761) mod 2^21 (a bijection on 21
+ * bits, so ids below 2^21 get distinct colours), RR = 128 + (c & 127),
+ * GG = 128 + ((c >> 7) & 127), BB = 128 + (c >> 14). */
+uint32_t cli_site_colour(uint32_t site);
+
 /* Seconds from a monotonic clock, for --stats. */
 double cli_seconds(void);
 

@@ -25,7 +25,7 @@ static const struct {
     {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
-    {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
+    {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png (y up)"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
     {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
     {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
