@@ -1299,9 +1299,10 @@ def ops_cases(rng):
           f"ops --scale: an id stays an integer: {r.returncode} {r.stderr!r}")
 
 
-def header_cases():
+def header_cases(tmp):
     """The same header rule for every input: a first CSV line is a header
     only when no field of it is a number, so no record is dropped."""
+    import os
     pts = "0,0\n10,0\n0,10\n"
     ref = run(["delaunay", "-"], pts).stdout
     for text in ("x,y\n" + pts, '"x" , Y\n' + pts, "# c\n\nlon,lat\n" + pts):
@@ -1311,6 +1312,21 @@ def header_cases():
         r = run(["delaunay", "-"], text)
         check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
               f"not a header {text!r}: {r.returncode} {r.stderr!r}")
+    # a UTF-8 byte-order mark opening a file or stdin is dropped, before a
+    # header or a record; anywhere else it is an error on its line
+    sp = os.path.join(tmp, "bom.sites")
+    for text in ("\ufeffx,y\n" + pts, "\ufeff" + pts, "\ufeff0 0\n10 0\n0 10\n", "\ufeff\n# c\n" + pts):
+        with open(sp, "w", encoding="utf-8") as f:
+            f.write(text)
+        for args in (["delaunay", "-"], ["delaunay", sp]):
+            r = run(args, text)
+            check(r.returncode == 0 and r.stdout == ref, f"byte-order mark {args} {text!r}: {r.returncode} {r.stderr!r}")
+    r = run(["ops", "-"], "\ufeffi 0 0\nn 1 1\n")
+    check(r.returncode == 0 and r.stdout == "0\n0\n", f"ops byte-order mark: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["predicates"], "\ufeffo 0 0 1 0 0 1\n")
+    check(r.returncode == 0 and r.stdout == "1\n", f"predicates byte-order mark: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["delaunay", "-"], "0 0\n\ufeff10 0\n")
+    check(r.returncode == 2 and r.stderr.startswith("error: <stdin>:2: "), f"byte-order mark on line 2: {r.returncode} {r.stderr!r}")
     r = run(["predicates"], "op,ax,ay,bx,by,cx,cy\no,0,0,1,0,0,1\n")
     check(r.returncode == 0 and r.stdout == "1\n", f"predicates header: {r.returncode} {r.stdout!r} {r.stderr!r}")
 
@@ -1358,10 +1374,10 @@ def main():
         input_cases(rng, tmp)
         draw_cases(rng, tmp)
         picture_cases(tmp)
+        header_cases(tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)
-    header_cases()
 
     print(f"{passed} passed, {failed} failed")
     return 0 if failed == 0 else 1

@@ -261,6 +261,10 @@ const char *cli_next_line(cli_input_t *in)
             continue; /* an empty line before any content */
         }
         in->buffer[length] = '\0';
+        /* a UTF-8 byte-order mark, as spreadsheets write it, opens no field */
+        if (in->line_number == 1u && length >= 3u && memcmp(in->buffer, "\xEF\xBB\xBF", 3) == 0) {
+            memmove(in->buffer, in->buffer + 3, length - 2u);
+        }
         const char *p = in->buffer;
         while (*p != '\0' && is_blank(*p)) {
             p++;

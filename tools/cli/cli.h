@@ -14,8 +14,9 @@
 
 #include "vor.h"
 
-/* Input read line by line; blank lines and lines starting with '#' are
- * skipped, and line numbers count every physical line from 1. A line with
+/* Input read line by line; a UTF-8 byte-order mark opening the input is
+ * dropped, blank lines and lines starting with '#' are skipped, and line
+ * numbers count every physical line from 1. A line with
  * a comma is CSV: its commas become blanks, after checking that no field is
  * empty or holds a blank. While header_allowed (cli_open sets it), a first
  * CSV line every field of which starts with a letter or '"' is a header and
