@@ -890,6 +890,67 @@ def picture_cases(tmp):
     check(r.returncode == 2 and "--png" in r.stderr, f"raster --dots --labels: {r.returncode} {r.stderr!r}")
 
 
+def option_cases(rng, tmp):
+    """One option parser for every command: "--name V1 V2" and
+    "--name=V1,V2" give the same output, options and files in any order;
+    a missing value, a value of a flag and an unknown option are errors."""
+    import os
+    sp, qp = os.path.join(tmp, "opt.sites"), os.path.join(tmp, "opt.queries")
+    pts = [(rng.randint(0, 1000), rng.randint(0, 1000)) for _ in range(30)]
+    with open(sp, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in pts))
+    with open(qp, "w") as f:
+        f.write("".join(f"{rng.randint(0, 1000)} {rng.randint(0, 1000)}\n" for _ in range(20)))
+    ops = "i 0 0\ni 10 0\nr 0\ni 5 5\nn 1 1\nt\n"
+    out = [os.path.join(tmp, f"opt{k}") for k in range(2)]
+    # (spaced arguments, '=' arguments); {out} is replaced by each output file
+    pairs = [
+        (["nearest", "--k", "3", sp, qp], ["nearest", sp, "--k=3", qp]),
+        (["delaunay", "--order", "input", "--algo", "dc", sp], ["delaunay", sp, "--algo=dc", "--order=input"]),
+        (["delaunay", "--scale", "0.5", sp], ["delaunay", "--scale=0.5", sp]),
+        (["cells", "--box", "-10", "-20", "900", "1000", sp], ["cells", sp, "--box=-10,-20,900,1000"]),
+        (["ops", "--capacity", "2", "-"], ["ops", "-", "--capacity=2"]),
+        (["raster", "--size", "23", "17", "--origin", "-5", "7", "--step", "40", "60", "--metric", "ellip:2,1,3",
+          "--band", "3", sp, "--labels", "{out}"],
+         ["raster", "--size=23,17", "--origin=-5,7", "--step=40,60", "--metric=ellip:2,1,3", "--band=3", sp, "--labels={out}"]),
+        (["raster", "--size", "23", "17", "--dots", sp, "--png", "{out}"], ["raster", "--size=23,17", "--dots", "--png={out}", sp]),
+        (["draw", "--box", "0", "0", "1000", "900", "--size", "50", "40", "--ids", sp, "-o", "{out}"],
+         ["draw", "-o", "{out}", "--size=50,40", sp, "--ids", "--box=0,0,1000,900"]),
+    ]
+    for spaced, joined in pairs:
+        results = []
+        for k, args in enumerate((spaced, joined)):
+            if os.path.exists(out[k]):
+                os.remove(out[k])
+            r = run([a.replace("{out}", out[k]) for a in args], ops)
+            written = open(out[k], "rb").read() if os.path.exists(out[k]) else None
+            results.append((r.returncode, r.stdout, written))
+            check(r.returncode == 0 and (r.stdout != "" or written), f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+        check(results[0] == results[1], f"vor {' '.join(spaced)} and {' '.join(joined)} differ")
+    dump = os.path.join(tmp, "opt.cells")
+    with open(dump, "w") as f:
+        f.write("box 0 0 1000 1000\n" + run(["cells", "--box", "0", "0", "1000", "1000", sp], "").stdout)
+    r, r2 = run(["draw", "--cells", dump, "-o", "-"], ""), run(["draw", "--cells=" + dump, "-o", "-"], "")
+    check(r.returncode == 0 and r.stdout.startswith("<?xml") and r2.stdout == r.stdout, f"draw --cells=: {r2.returncode} {r2.stderr!r}")
+    # errors: usage, status 2, nothing written
+    for args, reason in ((["nearest", sp, qp, "--k"], "missing value after '--k'"),
+                         (["nearest", "--k=", sp, qp], "--k"),
+                         (["delaunay", "--stats=1", sp], "takes no value"),
+                         (["delaunay", "--order=bogus", sp], "'bogus'"),
+                         (["cells", "--box=0,0,9", sp], "expected 4 comma-separated values in '--box=0,0,9'"),
+                         (["cells", sp, "--box", "0", "0", "9"], "missing value after '--box'"),
+                         (["raster", "--size=4", sp, "--labels", out[0]], "'--size=4'"),
+                         (["draw", "-o=x.svg", sp], "unknown option '-o=x.svg'"),
+                         (["ops", "--capacity", "-1", "-"], "--capacity"),
+                         (["predicates", "--scale"], "missing value after '--scale'"),
+                         (["predicates", "--frobnicate=1"], "unknown option '--frobnicate=1'")):
+        if os.path.exists(out[0]):
+            os.remove(out[0])
+        r = run(args, ops)
+        check(r.returncode == 2 and r.stdout == "" and reason in r.stderr and f"usage: vor {args[0]}" in r.stderr
+              and not os.path.exists(out[0]), f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+
+
 def version_cases():
     # The expected string is read from the header's three numeric macros,
     # so a STRING that disagrees with MAJOR/MINOR/PATCH fails too.
@@ -1375,6 +1436,7 @@ def main():
         draw_cases(rng, tmp)
         picture_cases(tmp)
         header_cases(tmp)
+        option_cases(rng, tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

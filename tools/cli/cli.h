@@ -58,6 +58,42 @@ void cli_set_scale(const char *text);
 /* True when only blanks remain at cursor. */
 bool cli_at_end(const char *cursor);
 
+/* An option of a command: its name ("--k", "-o") and how many values
+ * follow it (0: a flag, at most CLI_MOST_VALUES). */
+typedef struct {
+    const char *name;
+    unsigned values;
+} cli_option_t;
+
+#define CLI_MOST_VALUES 4
+#define CLI_POSITIONAL (-1)
+#define CLI_END (-2)
+
+/* A command's arguments, walked by cli_next_argument: the one option
+ * parser of every command. */
+typedef struct {
+    int argc;
+    char **argv;
+    int next;
+    const char *command, *usage; /* for cli_usage_error */
+    const cli_option_t *options;
+    size_t option_count;
+    const char *values[CLI_MOST_VALUES]; /* the option's values, or the positional argument */
+} cli_arguments_t;
+
+void cli_arguments_begin(cli_arguments_t *a, int argc, char **argv, const char *command, const char *usage,
+                         const cli_option_t *options, size_t option_count);
+
+/* The next argument: the index of its option in options, its values in
+ * a->values; CLI_POSITIONAL for an argument that is not an option ("-"
+ * included), in a->values[0]; CLI_END after the last. "--name V1 V2" and
+ * "--name=V1,V2" are the same (one value: everything after '=', commas
+ * included, as in --metric=ellip:1,0,1). --scale S is every command's and
+ * handled here (cli_set_scale). An unknown option, a missing value or a
+ * value given to a flag is a usage error (cli_usage_error). The strings
+ * of argv may be modified (C99 5.1.2.2.1 allows it). */
+int cli_next_argument(cli_arguments_t *a);
+
 /* Prints "error: FILE:N: reason" to stderr and exits with status 2 (FILE
  * "<stdin>" for "-"). */
 void cli_line_error(const cli_input_t *in, const char *reason)

@@ -409,44 +409,43 @@ int cli_draw(int argc, char **argv)
     bool have_box = false, have_size = false, triangles = false, ids = false, hull = false;
     int32_t width = DEFAULT_WIDTH, height = 0;
     const char *sites_path = NULL, *dump_path = NULL, *out_path = NULL;
-    for (int a = 0; a < argc; a++) {
-        const char *o = argv[a];
-        int more = argc - 1 - a;
-        if (strcmp(o, "--box") == 0 && more >= 4) {
-            g.box.x0 = int_argument(argv[a + 1], o);
-            g.box.y0 = int_argument(argv[a + 2], o);
-            g.box.x1 = int_argument(argv[a + 3], o);
-            g.box.y1 = int_argument(argv[a + 4], o);
+    enum { BOX, SIZE, TRIANGLES, IDS, HULL, Y_DOWN, CELLS, OUT };
+    static const cli_option_t options[] = {
+        [BOX] = {"--box", 4}, [SIZE] = {"--size", 2},     [TRIANGLES] = {"--triangles", 0}, [IDS] = {"--ids", 0},
+        [HULL] = {"--hull", 0}, [Y_DOWN] = {"--y-down", 0}, [CELLS] = {"--cells", 1},       [OUT] = {"-o", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "draw", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *const *v = args.values;
+        if (o == BOX) {
+            g.box.x0 = int_argument(v[0], "--box");
+            g.box.y0 = int_argument(v[1], "--box");
+            g.box.x1 = int_argument(v[2], "--box");
+            g.box.y1 = int_argument(v[3], "--box");
             have_box = true;
-            a += 4;
-        } else if (strcmp(o, "--size") == 0 && more >= 2) {
-            width = int_argument(argv[a + 1], o);
-            height = int_argument(argv[a + 2], o);
+        } else if (o == SIZE) {
+            width = int_argument(v[0], "--size");
+            height = int_argument(v[1], "--size");
             if (width < 1 || height < 1 || width > MAX_PIXELS || height > MAX_PIXELS) {
                 cli_error("--size: width and height must be 1 to 16384 pixels");
             }
             have_size = true;
-            a += 2;
-        } else if (strcmp(o, "--triangles") == 0) {
+        } else if (o == TRIANGLES) {
             triangles = true;
-        } else if (strcmp(o, "--ids") == 0) {
+        } else if (o == IDS) {
             ids = true;
-        } else if (strcmp(o, "--hull") == 0) {
+        } else if (o == HULL) {
             hull = true;
-        } else if (strcmp(o, "--y-down") == 0) {
+        } else if (o == Y_DOWN) {
             g.y_down = true;
-        } else if (strcmp(o, "--cells") == 0 && more >= 1) {
-            dump_path = argv[++a];
-        } else if (strcmp(o, "-o") == 0 && more >= 1) {
-            out_path = argv[++a];
-        } else if (sites_path == NULL && (o[0] != '-' || o[1] == '\0')) {
-            sites_path = o;
-        } else if (o[0] == '-' && o[1] != '\0') {
-            bool known = strcmp(o, "--box") == 0 || strcmp(o, "--size") == 0 ||
-                         strcmp(o, "--cells") == 0 || strcmp(o, "-o") == 0;
-            cli_usage_error("draw", USAGE, known ? "missing value after" : "unknown option", o);
+        } else if (o == CELLS) {
+            dump_path = v[0];
+        } else if (o == OUT) {
+            out_path = v[0];
+        } else if (sites_path == NULL) {
+            sites_path = v[0];
         } else {
-            cli_usage_error("draw", USAGE, "unexpected argument", o);
+            cli_usage_error("draw", USAGE, "unexpected argument", v[0]);
         }
     }
     if (out_path == NULL) {

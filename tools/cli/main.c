@@ -68,6 +68,8 @@ static int print_help(void)
            "away from zero, exactly. Blank lines and lines starting with '#' are\n"
            "skipped, and so is a UTF-8 byte-order mark opening a file; point i is\n"
            "the i-th remaining line, from 0. FILE '-' is stdin.\n"
+           "Options: \"--k 3\" or \"--k=3\", \"--size 4 2\" or \"--size=4,2\", in any order\n"
+           "with the files; --scale S works with every command.\n"
            "Output: text on stdout, written only when the whole input was valid.\n"
            "Errors: \"error: FILE:LINE: reason\" on stderr, exit status 2.\n"
            "\n"
@@ -123,24 +125,15 @@ int main(int argc, char **argv)
         if (strcmp(argv[1], commands[i].name) != 0) {
             continue;
         }
-        /* --help anywhere, and --scale S, are the same for every command */
-        int kept = 0;
+        /* --help anywhere is the same for every command (and --scale S,
+         * which cli_next_argument handles) */
         for (int a = 2; a < argc; a++) {
             if (strcmp(argv[a], "--help") == 0 || strcmp(argv[a], "-h") == 0) {
                 command_help(commands[i].name);
                 return 0;
             }
-            if (strcmp(argv[a], "--scale") == 0) {
-                if (a + 1 == argc) {
-                    fprintf(stderr, "error: vor %s: --scale needs a value S\n", commands[i].name);
-                    return 2;
-                }
-                cli_set_scale(argv[++a]);
-                continue;
-            }
-            argv[2 + kept++] = argv[a];
         }
-        return commands[i].run(kept, argv + 2);
+        return commands[i].run(argc - 2, argv + 2);
     }
     return unknown_command(argv[1]);
 }

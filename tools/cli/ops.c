@@ -85,23 +85,31 @@ static void fields(const cli_input_t *in, const char *cursor, int32_t *values, u
 int cli_ops(int argc, char **argv)
 {
     uint32_t capacity = 0; /* 0: the number of operation lines */
-    if (argc == 3 && strcmp(argv[0], "--capacity") == 0) {
-        char *end;
-        unsigned long value = strtoul(argv[1], &end, 10);
-        if (*end != '\0' || argv[1][0] == '\0' || value < 1u || value > VOR_MAX_SITES) {
-            cli_usage_error("ops", USAGE, "--capacity must be 1 to VOR_MAX_SITES", argv[1]);
+    const char *path = NULL;
+    static const cli_option_t options[] = {{"--capacity", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "ops", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *text = args.values[0];
+        if (o == 0) {
+            char *end;
+            unsigned long value = strtoul(text, &end, 10);
+            if (*end != '\0' || text[0] < '0' || text[0] > '9' || value < 1u || value > VOR_MAX_SITES) {
+                cli_usage_error("ops", USAGE, "--capacity must be 1 to VOR_MAX_SITES", text);
+            }
+            capacity = (uint32_t)value;
+        } else if (path != NULL) {
+            cli_usage_error("ops", USAGE, "unexpected argument", text);
+        } else {
+            path = text;
         }
-        capacity = (uint32_t)value;
-        argc -= 2;
-        argv += 2;
     }
-    if (argc != 1) {
-        cli_usage_error("ops", USAGE, argc == 0 ? "no script FILE" : "unexpected argument",
-                        argc == 0 ? NULL : argv[argc - 1]);
+    if (path == NULL) {
+        cli_usage_error("ops", USAGE, "no script FILE", NULL);
     }
     /* the whole script first: the default capacity is its length */
     cli_input_t in;
-    cli_open(&in, argv[0]);
+    cli_open(&in, path);
     op_line_t *lines = NULL;
     size_t count = 0, room = 0;
     const char *text;

@@ -324,17 +324,6 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
     exit(2);
 }
 
-static bool option_with_values(const char *option)
-{
-    static const char *const names[] = {"--size", "--origin", "--step", "--metric", "--band", "--labels", "--png"};
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        if (strcmp(option, names[i]) == 0) {
-            return true;
-        }
-    }
-    return false;
-}
-
 /* Blackens the pixels within 1.5 pixels of each point, as `vor draw`
  * draws its site dots; rgb's row j is the frame's. */
 static void draw_dots(uint8_t *rgb, const vor_raster_frame_t *frame, const vor_point_t *points, size_t count)
@@ -382,55 +371,52 @@ int cli_raster(int argc, char **argv)
     bool y_down = false, dots = false;
     uint32_t band_rows = 16;
     const char *sites_path = NULL, *labels_path = NULL, *png_path = NULL;
-    for (int a = 0; a < argc; a++) {
-        const char *o = argv[a];
-        int more = argc - a - 1;
-        if (strcmp(o, "--size") == 0 && more >= 2) {
-            int32_t w = int_arg(argv[a + 1], "--size"), h = int_arg(argv[a + 2], "--size");
+    enum { SIZE, ORIGIN, STEP, METRIC, BAND, LABELS, PNG, Y_DOWN, DOTS };
+    static const cli_option_t options[] = {
+        [SIZE] = {"--size", 2},     [ORIGIN] = {"--origin", 2}, [STEP] = {"--step", 2},
+        [METRIC] = {"--metric", 1}, [BAND] = {"--band", 1},     [LABELS] = {"--labels", 1},
+        [PNG] = {"--png", 1},       [Y_DOWN] = {"--y-down", 0}, [DOTS] = {"--dots", 0}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "raster", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *const *v = args.values;
+        if (o == SIZE) {
+            int32_t w = int_arg(v[0], "--size"), h = int_arg(v[1], "--size");
             if (w <= 0 || h <= 0) {
                 cli_error("--size: width and height must be positive");
             }
             frame.width = (uint32_t)w;
             frame.height = (uint32_t)h;
             have_size = 1;
-            a += 2;
-        } else if (strcmp(o, "--origin") == 0 && more >= 2) {
-            frame.origin_x = int_arg(argv[a + 1], "--origin");
-            frame.origin_y = int_arg(argv[a + 2], "--origin");
-            a += 2;
-        } else if (strcmp(o, "--step") == 0 && more >= 2) {
-            frame.step_x = int_arg(argv[a + 1], "--step");
-            frame.step_y = int_arg(argv[a + 2], "--step");
+        } else if (o == ORIGIN) {
+            frame.origin_x = int_arg(v[0], "--origin");
+            frame.origin_y = int_arg(v[1], "--origin");
+        } else if (o == STEP) {
+            frame.step_x = int_arg(v[0], "--step");
+            frame.step_y = int_arg(v[1], "--step");
             if (frame.step_x <= 0 || frame.step_y <= 0) {
                 cli_error("--step: steps must be positive");
             }
-            a += 2;
-        } else if (strcmp(o, "--metric") == 0 && more >= 1) {
-            parse_metric(argv[a + 1], &sites);
-            a += 1;
-        } else if (strcmp(o, "--band") == 0 && more >= 1) {
-            int32_t r = int_arg(argv[a + 1], "--band");
+        } else if (o == METRIC) {
+            parse_metric(v[0], &sites);
+        } else if (o == BAND) {
+            int32_t r = int_arg(v[0], "--band");
             if (r <= 0) {
                 cli_error("--band: rows must be positive");
             }
             band_rows = (uint32_t)r;
-            a += 1;
-        } else if (strcmp(o, "--labels") == 0 && more >= 1) {
-            labels_path = argv[++a];
-        } else if (strcmp(o, "--png") == 0 && more >= 1) {
-            png_path = argv[++a];
-        } else if (strcmp(o, "--y-down") == 0) {
+        } else if (o == LABELS) {
+            labels_path = v[0];
+        } else if (o == PNG) {
+            png_path = v[0];
+        } else if (o == Y_DOWN) {
             y_down = true;
-        } else if (strcmp(o, "--dots") == 0) {
+        } else if (o == DOTS) {
             dots = true;
-        } else if ((o[0] != '-' || o[1] == '\0') && sites_path == NULL) {
-            sites_path = o;
-        } else if (o[0] != '-' || o[1] == '\0') {
-            cli_usage_error("raster", USAGE, "unexpected argument", o);
-        } else if (option_with_values(o)) {
-            cli_usage_error("raster", USAGE, "missing value after", o);
+        } else if (sites_path == NULL) {
+            sites_path = v[0];
         } else {
-            cli_usage_error("raster", USAGE, "unknown option", o);
+            cli_usage_error("raster", USAGE, "unexpected argument", v[0]);
         }
     }
     if (!have_size) {
