@@ -250,15 +250,13 @@ coverage: $(B)/vor
 
 # README's pictures of the sites in docs/pictures.sites: docs/diagram.png
 # (vor draw, rendered by rsvg-convert) and docs/raster.png (vor raster,
-# L1 metric). vor raster writes row 0 (y = 0) at the top of the PNG, so it
-# is given the sites mirrored (y -> 319 - y) to stand upright like the SVG.
+# L1 metric), both y up with the same colour for each site.
 pictures: $(B)/vor
 	@tools/install-deps.sh svg
 	@$(B)/vor draw --box 0 0 480 320 --size 480 320 --triangles --hull docs/pictures.sites \
 		-o $(B)/pictures-diagram.svg
 	@rsvg-convert $(B)/pictures-diagram.svg -o docs/diagram.png
-	@awk '/^[^#]/ { print $$1, 319 - $$2 }' docs/pictures.sites >$(B)/pictures-mirrored.sites
-	@$(B)/vor raster --size 480 320 --origin 0 0 --step 1 1 --metric l1 $(B)/pictures-mirrored.sites \
+	@$(B)/vor raster --size 480 320 --origin 0 0 --step 1 1 --metric l1 --dots docs/pictures.sites \
 		--png docs/raster.png
 	@echo "pictures:  docs/diagram.png docs/raster.png"
 

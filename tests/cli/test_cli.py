@@ -832,6 +832,125 @@ def draw_cases(rng, tmp):
     check(r.returncode == 2 and "no-such-dir" in r.stderr, f"draw to a missing directory: {r.returncode} {r.stderr!r}")
 
 
+def picture_cases(tmp):
+    """vor draw and vor raster --png show the same sites the same way: y up,
+    site i in draw_colour(i) in both, at the same pixels (the raster's pixel
+    centres are the picture's); --y-down turns both upside down; --dots
+    blackens the raster's pixels within 1.5 pixels of each site."""
+    import os
+    import shutil
+    if not shutil.which("rsvg-convert"):
+        check(False, "pictures: rsvg-convert is needed (tools/install-deps.sh svg)")
+        return
+    sites = [(200, 650), (800, 600), (500, 150)]  # site 0 high and left, site 2 low
+    path = os.path.join(tmp, "pictures.sites")
+    with open(path, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in sites))
+    w, h = 100, 80
+    pictures = {}
+    for flip in ([], ["--y-down"]):
+        svg, drawn, raster = (os.path.join(tmp, "pictures" + "".join(flip) + e) for e in (".svg", "-draw.png", "-raster.png"))
+        r = run(["draw", *flip, "--box", "0", "0", "1000", "800", "--size", str(w), str(h), path, "-o", svg], "")
+        r2 = subprocess.run(["rsvg-convert", svg, "-o", drawn], capture_output=True, text=True)
+        r3 = run(["raster", *flip, "--size", str(w), str(h), "--origin", "5", "5", "--step", "10", "10", path, "--png", raster], "")
+        check(r.returncode == 0 and r2.returncode == 0 and r3.returncode == 0,
+              f"pictures {flip}: {r.stderr!r} {r2.stderr!r} {r3.stderr!r}")
+        if r.returncode == 0 and r2.returncode == 0 and r3.returncode == 0:
+            pictures[bool(flip)] = (read_png(drawn), read_png(raster))
+    # 3.5 pixels up and right of each site, well inside its cell: the
+    # point (x + 35, y + 35) is raster pixel ((x + 30) / 10, (y + 30) / 10)
+    for down, (drawn, raster) in pictures.items():
+        for k, (x, y) in enumerate(sites):
+            i, j = (x + 30) // 10, (y + 30) // 10
+            row = j if down else h - 1 - j
+            for name, picture in (("draw", drawn), ("raster", raster)):
+                check(picture[row][i] == draw_colour(k), f"pictures: {name}{' --y-down' * down} shows {picture[row][i]} "
+                      f"at site {k}'s pixel ({i}, row {row}), expected {draw_colour(k)}")
+        same = sum(drawn[r][i] == raster[r][i] for r in range(h) for i in range(w))
+        check(same > 0.95 * w * h, f"pictures{' --y-down' * down}: draw and raster agree on only {same} of {w * h} pixels")
+    if False not in pictures:
+        return
+    raster = pictures[False][1]
+    # site 0 (the highest y) fills the top left corner, site 2 the bottom middle
+    check(raster[2][2] == draw_colour(0) and raster[h - 3][w // 2] == draw_colour(2),
+          f"pictures: raster --png is not y up: {raster[2][2]} {raster[h - 3][w // 2]}")
+    if True in pictures:
+        check(pictures[True][1][::-1] == raster, "pictures: raster --y-down is not raster upside down")
+    dotted = os.path.join(tmp, "pictures-dots.png")
+    r = run(["raster", "--dots", "--size", str(w), str(h), "--origin", "5", "5", "--step", "10", "10", path, "--png", dotted], "")
+    check(r.returncode == 0, f"raster --dots: {r.returncode} {r.stderr!r}")
+    if r.returncode == 0:
+        dots = read_png(dotted)
+        # site (x, y) is at pixel ((x - 5) / 10, (y - 5) / 10) = (u + 0.5, v + 0.5)
+        want = {(h - 1 - (y - 5) // 10 - dr, (x - 5) // 10 + di) for x, y in sites for di in (0, 1) for dr in (0, 1)}
+        changed = {(r, i) for r in range(h) for i in range(w) if dots[r][i] != raster[r][i]}
+        check(changed == want and all(dots[r][i] == (0, 0, 0) for r, i in want),
+              f"raster --dots: changed pixels {sorted(changed)}, expected {sorted(want)}")
+    r = run(["raster", "--dots", "--size", "2", "2", path, "--labels", os.path.join(tmp, "x.raw")], "")
+    check(r.returncode == 2 and "--png" in r.stderr, f"raster --dots --labels: {r.returncode} {r.stderr!r}")
+
+
+def option_cases(rng, tmp):
+    """One option parser for every command: "--name V1 V2" and
+    "--name=V1,V2" give the same output, options and files in any order;
+    a missing value, a value of a flag and an unknown option are errors."""
+    import os
+    sp, qp = os.path.join(tmp, "opt.sites"), os.path.join(tmp, "opt.queries")
+    pts = [(rng.randint(0, 1000), rng.randint(0, 1000)) for _ in range(30)]
+    with open(sp, "w") as f:
+        f.write("".join(f"{x} {y}\n" for x, y in pts))
+    with open(qp, "w") as f:
+        f.write("".join(f"{rng.randint(0, 1000)} {rng.randint(0, 1000)}\n" for _ in range(20)))
+    ops = "i 0 0\ni 10 0\nr 0\ni 5 5\nn 1 1\nt\n"
+    out = [os.path.join(tmp, f"opt{k}") for k in range(2)]
+    # (spaced arguments, '=' arguments); {out} is replaced by each output file
+    pairs = [
+        (["nearest", "--k", "3", sp, qp], ["nearest", sp, "--k=3", qp]),
+        (["delaunay", "--order", "input", "--algo", "dc", sp], ["delaunay", sp, "--algo=dc", "--order=input"]),
+        (["delaunay", "--scale", "0.5", sp], ["delaunay", "--scale=0.5", sp]),
+        (["cells", "--box", "-10", "-20", "900", "1000", sp], ["cells", sp, "--box=-10,-20,900,1000"]),
+        (["ops", "--capacity", "2", "-"], ["ops", "-", "--capacity=2"]),
+        (["raster", "--size", "23", "17", "--origin", "-5", "7", "--step", "40", "60", "--metric", "ellip:2,1,3",
+          "--band", "3", sp, "--labels", "{out}"],
+         ["raster", "--size=23,17", "--origin=-5,7", "--step=40,60", "--metric=ellip:2,1,3", "--band=3", sp, "--labels={out}"]),
+        (["raster", "--size", "23", "17", "--dots", sp, "--png", "{out}"], ["raster", "--size=23,17", "--dots", "--png={out}", sp]),
+        (["draw", "--box", "0", "0", "1000", "900", "--size", "50", "40", "--ids", sp, "-o", "{out}"],
+         ["draw", "-o", "{out}", "--size=50,40", sp, "--ids", "--box=0,0,1000,900"]),
+    ]
+    for spaced, joined in pairs:
+        results = []
+        for k, args in enumerate((spaced, joined)):
+            if os.path.exists(out[k]):
+                os.remove(out[k])
+            r = run([a.replace("{out}", out[k]) for a in args], ops)
+            written = open(out[k], "rb").read() if os.path.exists(out[k]) else None
+            results.append((r.returncode, r.stdout, written))
+            check(r.returncode == 0 and (r.stdout != "" or written), f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+        check(results[0] == results[1], f"vor {' '.join(spaced)} and {' '.join(joined)} differ")
+    dump = os.path.join(tmp, "opt.cells")
+    with open(dump, "w") as f:
+        f.write("box 0 0 1000 1000\n" + run(["cells", "--box", "0", "0", "1000", "1000", sp], "").stdout)
+    r, r2 = run(["draw", "--cells", dump, "-o", "-"], ""), run(["draw", "--cells=" + dump, "-o", "-"], "")
+    check(r.returncode == 0 and r.stdout.startswith("<?xml") and r2.stdout == r.stdout, f"draw --cells=: {r2.returncode} {r2.stderr!r}")
+    # errors: usage, status 2, nothing written
+    for args, reason in ((["nearest", sp, qp, "--k"], "missing value after '--k'"),
+                         (["nearest", "--k=", sp, qp], "--k"),
+                         (["delaunay", "--stats=1", sp], "takes no value"),
+                         (["delaunay", "--order=bogus", sp], "'bogus'"),
+                         (["cells", "--box=0,0,9", sp], "expected 4 comma-separated values in '--box=0,0,9'"),
+                         (["cells", sp, "--box", "0", "0", "9"], "missing value after '--box'"),
+                         (["raster", "--size=4", sp, "--labels", out[0]], "'--size=4'"),
+                         (["draw", "-o=x.svg", sp], "unknown option '-o=x.svg'"),
+                         (["ops", "--capacity", "-1", "-"], "--capacity"),
+                         (["predicates", "--scale"], "missing value after '--scale'"),
+                         (["predicates", "--frobnicate=1"], "unknown option '--frobnicate=1'")):
+        if os.path.exists(out[0]):
+            os.remove(out[0])
+        r = run(args, ops)
+        check(r.returncode == 2 and r.stdout == "" and reason in r.stderr and f"usage: vor {args[0]}" in r.stderr
+              and not os.path.exists(out[0]), f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+
+
 def version_cases():
     # The expected string is read from the header's three numeric macros,
     # so a STRING that disagrees with MAJOR/MINOR/PATCH fails too.
@@ -1206,6 +1325,72 @@ def ops_cases(rng):
         check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: ")
               and reason in r.stderr, f"ops bad input {text!r}: {r.returncode} {r.stderr!r}")
 
+    # a header is skipped only when it cannot be an operation: a CSV first
+    # line is read like any other, and a mixed one is an error on its line
+    r = run(["ops", "-"], "i,0,0\ni,10,0\ni,0,10\nn,9,1\n")
+    check(r.returncode == 0 and r.stdout == "0\n1\n2\n1\n", f"ops CSV first line: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["ops", "-"], "op,x,y\ni,0,0\nn,1,1\n")
+    check(r.returncode == 0 and r.stdout == "0\n0\n", f"ops header: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    for text, line in (("i 0,0\n", 1), ("i,0,0\ni 0,0\n", 2), ("# c\nn,x,1\n", 2), ("i,0,0\nop,x,y\n", 2)):
+        r = run(["ops", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
+              f"ops {text!r}: {r.returncode} {r.stdout!r} {r.stderr!r}")
+
+    # --scale: coordinates of i, m and n scaled as every command's are
+    # (ids are not), so a script in decimal units gives the integer run's output
+    from fractions import Fraction as F
+    script, scaled = [], []
+    for step in range(80):
+        op = rng.choice("iiimn") if step > 3 else "i"
+        x, y = rng.randint(-10**6, 10**6), rng.randint(-10**6, 10**6)
+        k = rng.randint(0, 3)
+        dx, dy = decimal_text(F(x, 1000)), decimal_text(F(y, 1000))
+        script.append({"i": f"i {x} {y}", "m": f"m {k} {x} {y}", "n": f"n {x} {y}"}[op])
+        scaled.append({"i": f"i,{dx},{dy}", "m": f"m {k} {dx} {dy}", "n": f"n {dx} {dy}"}[op])
+    script.append("t")
+    scaled.append("t")
+    ref = run(["ops", "-"], "\n".join(script) + "\n")
+    r = run(["ops", "--scale", "1000", "-"], "\n".join(scaled) + "\n")
+    check(ref.returncode == 0 and "t " in ref.stdout and r.returncode == 0 and r.stdout == ref.stdout,
+          f"ops --scale: {ref.returncode} {r.returncode} {r.stderr!r}")
+    r = run(["ops", "--scale", "2.5", "-"], "i 0.2 -0.2\ni 0.6 0.2\nn 0.4 0\nn 0.61 0.2\nm 1 0.2 -0.2\n")
+    check(r.returncode == 0 and r.stdout == "0\n1\n0\n1\nd 0\n", f"ops --scale 2.5: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["ops", "--scale", "10", "-"], "i 1 1\nr 0.0\n")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:2: not a decimal integer"),
+          f"ops --scale: an id stays an integer: {r.returncode} {r.stderr!r}")
+
+
+def header_cases(tmp):
+    """The same header rule for every input: a first CSV line is a header
+    only when no field of it is a number, so no record is dropped."""
+    import os
+    pts = "0,0\n10,0\n0,10\n"
+    ref = run(["delaunay", "-"], pts).stdout
+    for text in ("x,y\n" + pts, '"x" , Y\n' + pts, "# c\n\nlon,lat\n" + pts):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 0 and r.stdout == ref, f"header {text!r}: {r.returncode} {r.stderr!r}")
+    for text, line in (("x,0\n" + pts, 1), ("0,y\n" + pts, 1), ("x,,y\n" + pts, 1), ("x y\n" + pts, 1)):
+        r = run(["delaunay", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: "),
+              f"not a header {text!r}: {r.returncode} {r.stderr!r}")
+    # a UTF-8 byte-order mark opening a file or stdin is dropped, before a
+    # header or a record; anywhere else it is an error on its line
+    sp = os.path.join(tmp, "bom.sites")
+    for text in ("\ufeffx,y\n" + pts, "\ufeff" + pts, "\ufeff0 0\n10 0\n0 10\n", "\ufeff\n# c\n" + pts):
+        with open(sp, "w", encoding="utf-8") as f:
+            f.write(text)
+        for args in (["delaunay", "-"], ["delaunay", sp]):
+            r = run(args, text)
+            check(r.returncode == 0 and r.stdout == ref, f"byte-order mark {args} {text!r}: {r.returncode} {r.stderr!r}")
+    r = run(["ops", "-"], "\ufeffi 0 0\nn 1 1\n")
+    check(r.returncode == 0 and r.stdout == "0\n0\n", f"ops byte-order mark: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["predicates"], "\ufeffo 0 0 1 0 0 1\n")
+    check(r.returncode == 0 and r.stdout == "1\n", f"predicates byte-order mark: {r.returncode} {r.stdout!r} {r.stderr!r}")
+    r = run(["delaunay", "-"], "0 0\n\ufeff10 0\n")
+    check(r.returncode == 2 and r.stderr.startswith("error: <stdin>:2: "), f"byte-order mark on line 2: {r.returncode} {r.stderr!r}")
+    r = run(["predicates"], "op,ax,ay,bx,by,cx,cy\no,0,0,1,0,0,1\n")
+    check(r.returncode == 0 and r.stdout == "1\n", f"predicates header: {r.returncode} {r.stdout!r} {r.stderr!r}")
+
 
 def main():
     rng = random.Random(5)
@@ -1249,6 +1434,9 @@ def main():
         file_error_cases(tmp)
         input_cases(rng, tmp)
         draw_cases(rng, tmp)
+        picture_cases(tmp)
+        header_cases(tmp)
+        option_cases(rng, tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

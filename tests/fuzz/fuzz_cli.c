@@ -62,13 +62,16 @@ static long file_size(const char *path)
     return stat(path, &st) == 0 ? (long)st.st_size : -1L;
 }
 
-/* The frame size an argument list asks for, so huge frames can be skipped. */
+/* The frame size an argument list asks for ("--size W H" or "--size=W,H"),
+ * so huge frames can be skipped. */
 static long pixels_asked(int argc, char **argv)
 {
     long most = 0;
-    for (int a = 0; a + 2 < argc; a++)
-        if (strcmp(argv[a], "--size") == 0) {
-            long w = strtol(argv[a + 1], NULL, 10), h = strtol(argv[a + 2], NULL, 10);
+    for (int a = 0; a < argc; a++)
+        if ((strcmp(argv[a], "--size") == 0 && a + 2 < argc) || strncmp(argv[a], "--size=", 7) == 0) {
+            char *end = NULL;
+            long w = strtol(argv[a][6] == '=' ? argv[a] + 7 : argv[a + 1], &end, 10);
+            long h = strtol(argv[a][6] == '=' ? (*end == ',' ? end + 1 : end) : argv[a + 2], NULL, 10);
             long p = (w > 0 && h > 0 && w <= MOST_PIXELS && h <= MOST_PIXELS) ? w * h : MOST_PIXELS + 1;
             most = p > most ? p : most;
         }

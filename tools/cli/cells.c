@@ -54,23 +54,20 @@ int cli_cells(int argc, char **argv)
     vor_box_t box = {0, 0, 0, 0};
     bool have_box = false;
     const char *path = NULL;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--box") == 0) {
-            if (i + 4 >= argc) {
-                cli_usage_error("cells", USAGE, "--box needs four values X0 Y0 X1 Y1 before SITES", NULL);
-            }
-            box.x0 = box_field(argv[i + 1]);
-            box.y0 = box_field(argv[i + 2]);
-            box.x1 = box_field(argv[i + 3]);
-            box.y1 = box_field(argv[i + 4]);
+    static const cli_option_t options[] = {{"--box", 4}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "cells", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        if (o == 0) {
+            box.x0 = box_field(args.values[0]);
+            box.y0 = box_field(args.values[1]);
+            box.x1 = box_field(args.values[2]);
+            box.y1 = box_field(args.values[3]);
             have_box = true;
-            i += 4;
-        } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
-            path = argv[i];
         } else if (path == NULL) {
-            cli_usage_error("cells", USAGE, "unknown option", argv[i]);
+            path = args.values[0];
         } else {
-            cli_usage_error("cells", USAGE, "unexpected argument", argv[i]);
+            cli_usage_error("cells", USAGE, "unexpected argument", args.values[0]);
         }
     }
     if (!have_box) {

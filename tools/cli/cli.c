@@ -81,6 +81,85 @@ void cli_usage_error(const char *command, const char *usage, const char *problem
     exit(2);
 }
 
+void cli_arguments_begin(cli_arguments_t *a, int argc, char **argv, const char *command, const char *usage,
+                         const cli_option_t *options, size_t option_count)
+{
+    a->argc = argc;
+    a->argv = argv;
+    a->next = 0;
+    a->command = command;
+    a->usage = usage;
+    a->options = options;
+    a->option_count = option_count;
+}
+
+int cli_next_argument(cli_arguments_t *a)
+{
+    static const cli_option_t scale_option = {"--scale", 1};
+    for (;;) {
+        if (a->next == a->argc) {
+            return CLI_END;
+        }
+        char *text = a->argv[a->next++];
+        if (text[0] != '-' || text[1] == '\0') {
+            a->values[0] = text;
+            return CLI_POSITIONAL;
+        }
+        /* "--name=values": only long options take the '=' form */
+        char *equals = (text[1] == '-') ? strchr(text, '=') : NULL;
+        size_t name_length = equals != NULL ? (size_t)(equals - text) : strlen(text);
+        const cli_option_t *option = NULL;
+        int index = -1;
+        for (size_t k = 0; k < a->option_count && option == NULL; k++) {
+            if (strlen(a->options[k].name) == name_length && strncmp(a->options[k].name, text, name_length) == 0) {
+                option = &a->options[k];
+                index = (int)k;
+            }
+        }
+        if (option == NULL && name_length == strlen(scale_option.name) &&
+            strncmp(scale_option.name, text, name_length) == 0) {
+            option = &scale_option;
+        }
+        if (option == NULL) {
+            cli_usage_error(a->command, a->usage, "unknown option", text);
+        }
+        if (equals != NULL) {
+            if (option->values == 0u) {
+                cli_usage_error(a->command, a->usage, "this option takes no value", text);
+            }
+            /* several values: comma-separated (the last keeps any more commas) */
+            unsigned commas = 0;
+            for (const char *c = equals + 1; *c != '\0'; c++) {
+                commas += (*c == ',');
+            }
+            if (commas + 1u < option->values) {
+                char problem[80];
+                snprintf(problem, sizeof problem, "expected %u comma-separated values in", option->values);
+                cli_usage_error(a->command, a->usage, problem, text);
+            }
+            char *value = equals + 1;
+            for (unsigned v = 0; v < option->values; v++) {
+                a->values[v] = value;
+                if (v + 1u < option->values) {
+                    value = strchr(value, ',');
+                    *value++ = '\0';
+                }
+            }
+        } else {
+            if (a->argc - a->next < (int)option->values) {
+                cli_usage_error(a->command, a->usage, "missing value after", text);
+            }
+            for (unsigned v = 0; v < option->values; v++) {
+                a->values[v] = a->argv[a->next++];
+            }
+        }
+        if (option != &scale_option) {
+            return index;
+        }
+        cli_set_scale(a->values[0]);
+    }
+}
+
 FILE *cli_create_output(const char *path)
 {
     struct stat status;
@@ -165,6 +244,31 @@ static bool is_blank(char c)
     return c == ' ' || c == '\t' || c == '\r' || c == '\n';
 }
 
+/* A header: a CSV line every field of which starts with a letter or '"'.
+ * Every record of every input format (points, weighted sites, predicates,
+ * operations, dumps) holds a number among its fields, so a header cannot
+ * be a record: a first line such as "i,0,0" is read, never dropped. */
+static bool is_header(const char *line)
+{
+    if (strchr(line, ',') == NULL) {
+        return false;
+    }
+    for (const char *field = line;;) {
+        while (is_blank(*field)) {
+            field++;
+        }
+        char c = *field;
+        if (c != '"' && !(c >= 'a' && c <= 'z') && !(c >= 'A' && c <= 'Z')) {
+            return false;
+        }
+        field = strchr(field, ',');
+        if (field == NULL) {
+            return true;
+        }
+        field++;
+    }
+}
+
 /* A CSV line: checks that every comma-separated field is one non-empty
  * token, then turns the commas into blanks for the field parsers. */
 static void split_csv(cli_input_t *in, char *line)
@@ -236,6 +340,10 @@ const char *cli_next_line(cli_input_t *in)
             continue; /* an empty line before any content */
         }
         in->buffer[length] = '\0';
+        /* a UTF-8 byte-order mark, as spreadsheets write it, opens no field */
+        if (in->line_number == 1u && length >= 3u && memcmp(in->buffer, "\xEF\xBB\xBF", 3) == 0) {
+            memmove(in->buffer, in->buffer + 3, length - 2u);
+        }
         const char *p = in->buffer;
         while (*p != '\0' && is_blank(*p)) {
             p++;
@@ -243,8 +351,7 @@ const char *cli_next_line(cli_input_t *in)
         if (*p == '\0' || *p == '#') {
             continue;
         }
-        bool header = in->header_allowed && strchr(p, ',') != NULL &&
-                      (*p == '"' || (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z'));
+        bool header = in->header_allowed && is_header(p);
         in->header_allowed = false;
         if (header) {
             continue;
@@ -553,6 +660,12 @@ vor_point_t *cli_read_sites(const char *path, uint32_t *count)
     cli_close(&in);
     *count = (uint32_t)n;
     return sites;
+}
+
+uint32_t cli_site_colour(uint32_t site)
+{
+    uint32_t c = (uint32_t)(site * 2654435761u) & 0x1FFFFFu;
+    return ((128u + (c & 127u)) << 16) | ((128u + ((c >> 7) & 127u)) << 8) | (128u + (c >> 14));
 }
 
 double cli_seconds(void)

@@ -14,11 +14,13 @@
 
 #include "vor.h"
 
-/* Input read line by line; blank lines and lines starting with '#' are
- * skipped, and line numbers count every physical line from 1. A line with
+/* Input read line by line; a UTF-8 byte-order mark opening the input is
+ * dropped, blank lines and lines starting with '#' are skipped, and line
+ * numbers count every physical line from 1. A line with
  * a comma is CSV: its commas become blanks, after checking that no field is
  * empty or holds a blank. While header_allowed (cli_open sets it), a first
- * CSV line starting with a letter or '"' is a header and skipped. */
+ * CSV line every field of which starts with a letter or '"' is a header and
+ * skipped: no record of any format is such a line, so none is dropped. */
 typedef struct {
     FILE *file;
     const char *name;
@@ -55,6 +57,42 @@ void cli_set_scale(const char *text);
 
 /* True when only blanks remain at cursor. */
 bool cli_at_end(const char *cursor);
+
+/* An option of a command: its name ("--k", "-o") and how many values
+ * follow it (0: a flag, at most CLI_MOST_VALUES). */
+typedef struct {
+    const char *name;
+    unsigned values;
+} cli_option_t;
+
+#define CLI_MOST_VALUES 4
+#define CLI_POSITIONAL (-1)
+#define CLI_END (-2)
+
+/* A command's arguments, walked by cli_next_argument: the one option
+ * parser of every command. */
+typedef struct {
+    int argc;
+    char **argv;
+    int next;
+    const char *command, *usage; /* for cli_usage_error */
+    const cli_option_t *options;
+    size_t option_count;
+    const char *values[CLI_MOST_VALUES]; /* the option's values, or the positional argument */
+} cli_arguments_t;
+
+void cli_arguments_begin(cli_arguments_t *a, int argc, char **argv, const char *command, const char *usage,
+                         const cli_option_t *options, size_t option_count);
+
+/* The next argument: the index of its option in options, its values in
+ * a->values; CLI_POSITIONAL for an argument that is not an option ("-"
+ * included), in a->values[0]; CLI_END after the last. "--name V1 V2" and
+ * "--name=V1,V2" are the same (one value: everything after '=', commas
+ * included, as in --metric=ellip:1,0,1). --scale S is every command's and
+ * handled here (cli_set_scale). An unknown option, a missing value or a
+ * value given to a flag is a usage error (cli_usage_error). The strings
+ * of argv may be modified (C99 5.1.2.2.1 allows it). */
+int cli_next_argument(cli_arguments_t *a);
 
 /* Prints "error: FILE:N: reason" to stderr and exits with status 2 (FILE
  * "<stdin>" for "-"). */
@@ -127,6 +165,12 @@ void cli_flush(cli_output_t *out);
  * a bad line. An empty file gives 0 sites. The array is malloc'd; *count
  * receives the number of sites. */
 vor_point_t *cli_read_sites(const char *path, uint32_t *count);
+
+/* Site i's colour in every picture of the tool (vor draw, vor raster
+ * --png), as 0xRRGGBB: c = (i * 2654435761) mod 2^21 (a bijection on 21
+ * bits, so ids below 2^21 get distinct colours), RR = 128 + (c & 127),
+ * GG = 128 + ((c >> 7) & 127), BB = 128 + (c >> 14). */
+uint32_t cli_site_colour(uint32_t site);
 
 /* Seconds from a monotonic clock, for --stats. */
 double cli_seconds(void);

@@ -46,27 +46,34 @@ int cli_delaunay(int argc, char **argv)
     bool dc = false; /* vor_build_dc instead of vor_build */
     enum vor_dc_split split = VOR_DC_QUADTREE;
     const char *path = NULL;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--stats") == 0) {
+    enum { STATS, ORDER, ALGO };
+    static const cli_option_t flags[] = {[STATS] = {"--stats", 0}, [ORDER] = {"--order", 1}, [ALGO] = {"--algo", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "delaunay", USAGE, flags, sizeof flags / sizeof flags[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *value = args.values[0];
+        if (o == STATS) {
             stats = true;
-        } else if (strcmp(argv[i], "--order=quadtree") == 0) {
+        } else if (o == ORDER && strcmp(value, "quadtree") == 0) {
             options.order = VOR_ORDER_QUADTREE;
-        } else if (strcmp(argv[i], "--order=input") == 0) {
+        } else if (o == ORDER && strcmp(value, "input") == 0) {
             options.order = VOR_ORDER_INPUT;
-        } else if (strcmp(argv[i], "--algo=incremental") == 0) {
+        } else if (o == ORDER) {
+            cli_usage_error("delaunay", USAGE, "--order takes quadtree or input, not", value);
+        } else if (o == ALGO && strcmp(value, "incremental") == 0) {
             dc = false;
-        } else if (strcmp(argv[i], "--algo=dc") == 0) {
+        } else if (o == ALGO && strcmp(value, "dc") == 0) {
             dc = true;
             split = VOR_DC_XSPLIT;
-        } else if (strcmp(argv[i], "--algo=dc-quadtree") == 0) {
+        } else if (o == ALGO && strcmp(value, "dc-quadtree") == 0) {
             dc = true;
             split = VOR_DC_QUADTREE;
-        } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
-            path = argv[i];
+        } else if (o == ALGO) {
+            cli_usage_error("delaunay", USAGE, "--algo takes incremental, dc or dc-quadtree, not", value);
         } else if (path == NULL) {
-            cli_usage_error("delaunay", USAGE, "unknown option", argv[i]);
+            path = value;
         } else {
-            cli_usage_error("delaunay", USAGE, "unexpected argument", argv[i]);
+            cli_usage_error("delaunay", USAGE, "unexpected argument", value);
         }
     }
     if (path == NULL) {

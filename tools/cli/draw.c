@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull]
- *          SITES -o OUT.svg
+ *          [--y-down] SITES -o OUT.svg
  * vor draw --cells DUMP -o OUT.svg
  *
  * An SVG picture of the Voronoi diagram of SITES (counted like
@@ -16,16 +16,17 @@
  *
  * Coordinates are the library's, y up: the SVG holds them unchanged inside
  * one group with transform="scale(1 -1)" and a viewBox of
- * "X0 -Y1 X1-X0 Y1-Y0". Every vertex written is a cell vertex exactly as
+ * "X0 -Y1 X1-X0 Y1-Y0". --y-down draws them in screen order instead
+ * (viewBox "X0 Y0 X1-X0 Y1-Y0", no flip): pixel row r then covers
+ * y in Y0 + [r, r+1] (Y1-Y0)/H. Every vertex written is a cell vertex exactly as
  * `vor cells` gives it (the exact vertex rounded once); sites are the
  * input integers. The Voronoi edges are the cells' sides that do not lie
  * on the box, each written once (from the cell where it runs from the
  * lexicographically smaller end), rather than vor_edges: its rays would
  * need a second rounding to end at the box.
  *
- * Colours: site i is filled with #RRGGBB where c = (i * 2654435761) mod
- * 2^21 (a bijection on 21 bits, so ids below 2^21 get distinct colours),
- * RR = 128 + (c & 127), GG = 128 + ((c >> 7) & 127), BB = 128 + (c >> 14).
+ * Colours: site i is filled with cli_site_colour(i), as in `vor raster
+ * --png`.
  *
  * --cells DUMP draws what a firmware computed (examples/voronoi streams it
  * to build/demo.cells): lines "box X0 Y0 X1 Y1" (first), "s X Y" (site i
@@ -38,8 +39,9 @@
 #include "cli.h"
 
 #define USAGE                                                                                      \
-    "usage: vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull] SITES -o "    \
-    "OUT.svg\n       vor draw --cells DUMP -o OUT.svg"
+    "usage: vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull] [--y-down]\n" \
+    "                SITES -o OUT.svg\n"                                                             \
+    "       vor draw [--y-down] --cells DUMP -o OUT.svg"
 
 const char cli_draw_help[] =
     USAGE "\n"
@@ -47,7 +49,8 @@ const char cli_draw_help[] =
     "An SVG picture of the Voronoi diagram of SITES ('-': stdin): every cell\n"
     "clipped to the box and filled with its site's colour, the Voronoi edges\n"
     "and the sites; --triangles adds the Delaunay triangles, --ids the site\n"
-    "ids, --hull the convex hull. y points up, as in the library.\n"
+    "ids, --hull the convex hull. y points up, as in the library and in\n"
+    "`vor raster --png`; --y-down draws in screen order (y = Y0 at the top).\n"
     "\n"
     "input:  one site per line, \"x y\" or \"x,y\" (CSV, optional header line);\n"
     "        decimal int32, or decimal numbers with --scale S; site i is the\n"
@@ -57,7 +60,8 @@ const char cli_draw_help[] =
     "        --box: default the sites' bounding box grown by a twentieth;\n"
     "        --size: default 800 pixels wide, as high as the box's aspect.\n"
     "        Every vertex is the cell vertex `vor cells` prints; site i's\n"
-    "        colour is #RRGGBB from c = (i * 2654435761) mod 2^21:\n"
+    "        colour (the same in `vor raster --png`) is #RRGGBB from\n"
+    "        c = (i * 2654435761) mod 2^21:\n"
     "        RR = 128 + (c & 127), GG = 128 + ((c >> 7) & 127), BB = 128 + (c >> 14).\n"
     "\n"
     "example:\n"
@@ -82,6 +86,7 @@ typedef struct stroke {
 typedef struct drawing {
     vor_box_t box;
     double unit; /* library units per pixel, for stroke widths and radii */
+    bool y_down; /* --y-down: screen order, y = Y0 at the top */
     cli_output_t svg;
     cli_output_t edges;
     stroke_t edge_stroke;
@@ -114,9 +119,7 @@ static void stroke_end(stroke_t *s)
 
 static void site_colour(uint32_t site, char text[8])
 {
-    uint32_t c = (uint32_t)(site * 2654435761u) & 0x1FFFFFu;
-    snprintf(text, 8, "#%02x%02x%02x", (unsigned)(128u + (c & 127u)), (unsigned)(128u + ((c >> 7) & 127u)),
-             (unsigned)(128u + (c >> 14)));
+    snprintf(text, 8, "#%06x", (unsigned)cli_site_colour(site));
 }
 
 static int32_t int_argument(const char *text, const char *option)
@@ -136,15 +139,27 @@ static void begin_svg(drawing_t *g, uint32_t width, uint32_t height)
     double box_width = (double)b->x1 - b->x0, box_height = (double)b->y1 - b->y0;
     double unit_x = box_width / width, unit_y = box_height / height;
     g->unit = unit_x > unit_y ? unit_x : unit_y;
-    cli_append(&g->svg,
-               "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-               "<!-- vor draw: the library's coordinates with y up; the group's scale(1 -1) flips y,\n"
-               "     and the viewBox is the box [%d, %d] x [%d, %d] flipped. -->\n"
-               "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%u\" height=\"%u\" "
-               "viewBox=\"%d %lld %lld %lld\" preserveAspectRatio=\"none\">\n"
-               "<g transform=\"scale(1 -1)\">\n<g stroke=\"none\">\n",
-               b->x0, b->x1, b->y0, b->y1, width, height, b->x0, -(long long)b->y1,
-               (long long)b->x1 - b->x0, (long long)b->y1 - b->y0);
+    if (g->y_down) {
+        cli_append(&g->svg,
+                   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                   "<!-- vor draw, y down: the library's coordinates in screen order;\n"
+                   "     the viewBox is the box [%d, %d] x [%d, %d]. -->\n"
+                   "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%u\" height=\"%u\" "
+                   "viewBox=\"%d %d %lld %lld\" preserveAspectRatio=\"none\">\n"
+                   "<g>\n<g stroke=\"none\">\n",
+                   b->x0, b->x1, b->y0, b->y1, width, height, b->x0, b->y0, (long long)b->x1 - b->x0,
+                   (long long)b->y1 - b->y0);
+    } else {
+        cli_append(&g->svg,
+                   "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                   "<!-- vor draw: the library's coordinates with y up; the group's scale(1 -1) flips y,\n"
+                   "     and the viewBox is the box [%d, %d] x [%d, %d] flipped. -->\n"
+                   "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%u\" height=\"%u\" "
+                   "viewBox=\"%d %lld %lld %lld\" preserveAspectRatio=\"none\">\n"
+                   "<g transform=\"scale(1 -1)\">\n<g stroke=\"none\">\n",
+                   b->x0, b->x1, b->y0, b->y1, width, height, b->x0, -(long long)b->y1,
+                   (long long)b->x1 - b->x0, (long long)b->y1 - b->y0);
+    }
     stroke_begin(&g->edge_stroke, &g->edges, "#000", g->unit);
 }
 
@@ -294,12 +309,12 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
     }
     add_sites(g, sites, n, duplicate_of);
     if (ids) {
-        /* each label flipped back upright about its own site */
+        /* each label flipped back upright about its own site (y up) */
         cli_append(&g->svg, "<g font-family=\"sans-serif\" font-size=\"%.4g\" fill=\"#000\">\n", 10 * g->unit);
         for (uint32_t i = 0; i < n; i++) {
             if (duplicate_of[i] == i) {
-                cli_append(&g->svg, "<text transform=\"translate(%d %d) scale(1 -1)\" dx=\"%.4g\">%u</text>\n",
-                           sites[i].x, sites[i].y, 2 * g->unit, i);
+                cli_append(&g->svg, "<text transform=\"translate(%d %d)%s\" dx=\"%.4g\">%u</text>\n",
+                           sites[i].x, sites[i].y, g->y_down ? "" : " scale(1 -1)", 2 * g->unit, i);
             }
         }
         cli_append(&g->svg, "</g>\n");
@@ -394,42 +409,43 @@ int cli_draw(int argc, char **argv)
     bool have_box = false, have_size = false, triangles = false, ids = false, hull = false;
     int32_t width = DEFAULT_WIDTH, height = 0;
     const char *sites_path = NULL, *dump_path = NULL, *out_path = NULL;
-    for (int a = 0; a < argc; a++) {
-        const char *o = argv[a];
-        int more = argc - 1 - a;
-        if (strcmp(o, "--box") == 0 && more >= 4) {
-            g.box.x0 = int_argument(argv[a + 1], o);
-            g.box.y0 = int_argument(argv[a + 2], o);
-            g.box.x1 = int_argument(argv[a + 3], o);
-            g.box.y1 = int_argument(argv[a + 4], o);
+    enum { BOX, SIZE, TRIANGLES, IDS, HULL, Y_DOWN, CELLS, OUT };
+    static const cli_option_t options[] = {
+        [BOX] = {"--box", 4}, [SIZE] = {"--size", 2},     [TRIANGLES] = {"--triangles", 0}, [IDS] = {"--ids", 0},
+        [HULL] = {"--hull", 0}, [Y_DOWN] = {"--y-down", 0}, [CELLS] = {"--cells", 1},       [OUT] = {"-o", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "draw", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *const *v = args.values;
+        if (o == BOX) {
+            g.box.x0 = int_argument(v[0], "--box");
+            g.box.y0 = int_argument(v[1], "--box");
+            g.box.x1 = int_argument(v[2], "--box");
+            g.box.y1 = int_argument(v[3], "--box");
             have_box = true;
-            a += 4;
-        } else if (strcmp(o, "--size") == 0 && more >= 2) {
-            width = int_argument(argv[a + 1], o);
-            height = int_argument(argv[a + 2], o);
+        } else if (o == SIZE) {
+            width = int_argument(v[0], "--size");
+            height = int_argument(v[1], "--size");
             if (width < 1 || height < 1 || width > MAX_PIXELS || height > MAX_PIXELS) {
                 cli_error("--size: width and height must be 1 to 16384 pixels");
             }
             have_size = true;
-            a += 2;
-        } else if (strcmp(o, "--triangles") == 0) {
+        } else if (o == TRIANGLES) {
             triangles = true;
-        } else if (strcmp(o, "--ids") == 0) {
+        } else if (o == IDS) {
             ids = true;
-        } else if (strcmp(o, "--hull") == 0) {
+        } else if (o == HULL) {
             hull = true;
-        } else if (strcmp(o, "--cells") == 0 && more >= 1) {
-            dump_path = argv[++a];
-        } else if (strcmp(o, "-o") == 0 && more >= 1) {
-            out_path = argv[++a];
-        } else if (sites_path == NULL && (o[0] != '-' || o[1] == '\0')) {
-            sites_path = o;
-        } else if (o[0] == '-' && o[1] != '\0') {
-            bool known = strcmp(o, "--box") == 0 || strcmp(o, "--size") == 0 ||
-                         strcmp(o, "--cells") == 0 || strcmp(o, "-o") == 0;
-            cli_usage_error("draw", USAGE, known ? "missing value after" : "unknown option", o);
+        } else if (o == Y_DOWN) {
+            g.y_down = true;
+        } else if (o == CELLS) {
+            dump_path = v[0];
+        } else if (o == OUT) {
+            out_path = v[0];
+        } else if (sites_path == NULL) {
+            sites_path = v[0];
         } else {
-            cli_usage_error("draw", USAGE, "unexpected argument", o);
+            cli_usage_error("draw", USAGE, "unexpected argument", v[0]);
         }
     }
     if (out_path == NULL) {

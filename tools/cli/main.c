@@ -25,7 +25,7 @@ static const struct {
     {"predicates", cli_predicates, "exact orient2d/incircle signs of stdin lines"},
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
-    {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png"},
+    {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png (y up)"},
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
     {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
     {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
@@ -61,11 +61,15 @@ static int print_help(void)
     print_usage(stdout);
     printf("\n"
            "Input: one point per line, \"x y\" (blanks between the fields) or \"x,y\"\n"
-           "(CSV; a first line starting with a letter, such as \"x,y\", is a header).\n"
+           "(CSV; a first line whose every field starts with a letter or '\"', such\n"
+           "as \"x,y\", is a header: no point or operation line is one).\n"
            "Coordinates are decimal int32; with --scale S they may be decimal numbers\n"
            "(12.5, -3e-2), multiplied by S and rounded to the nearest integer, ties\n"
            "away from zero, exactly. Blank lines and lines starting with '#' are\n"
-           "skipped; point i is the i-th remaining line, from 0. FILE '-' is stdin.\n"
+           "skipped, and so is a UTF-8 byte-order mark opening a file; point i is\n"
+           "the i-th remaining line, from 0. FILE '-' is stdin.\n"
+           "Options: \"--k 3\" or \"--k=3\", \"--size 4 2\" or \"--size=4,2\", in any order\n"
+           "with the files; --scale S works with every command.\n"
            "Output: text on stdout, written only when the whole input was valid.\n"
            "Errors: \"error: FILE:LINE: reason\" on stderr, exit status 2.\n"
            "\n"
@@ -121,24 +125,15 @@ int main(int argc, char **argv)
         if (strcmp(argv[1], commands[i].name) != 0) {
             continue;
         }
-        /* --help anywhere, and --scale S, are the same for every command */
-        int kept = 0;
+        /* --help anywhere is the same for every command (and --scale S,
+         * which cli_next_argument handles) */
         for (int a = 2; a < argc; a++) {
             if (strcmp(argv[a], "--help") == 0 || strcmp(argv[a], "-h") == 0) {
                 command_help(commands[i].name);
                 return 0;
             }
-            if (strcmp(argv[a], "--scale") == 0) {
-                if (a + 1 == argc) {
-                    fprintf(stderr, "error: vor %s: --scale needs a value S\n", commands[i].name);
-                    return 2;
-                }
-                cli_set_scale(argv[++a]);
-                continue;
-            }
-            argv[2 + kept++] = argv[a];
         }
-        return commands[i].run(kept, argv + 2);
+        return commands[i].run(argc - 2, argv + 2);
     }
     return unknown_command(argv[1]);
 }

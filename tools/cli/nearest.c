@@ -44,20 +44,22 @@ int cli_nearest(int argc, char **argv)
     uint32_t k = 1;
     const char *paths[2] = {NULL, NULL};
     int path_count = 0;
-    for (int i = 0; i < argc; i++) {
-        if (strncmp(argv[i], "--k=", 4) == 0) {
+    static const cli_option_t options[] = {{"--k", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "nearest", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *value = args.values[0];
+        if (o == 0) {
             char *end;
-            unsigned long value = strtoul(argv[i] + 4, &end, 10);
-            if (*end != '\0' || argv[i][4] == '\0' || argv[i][4] == '-' || value < 1u || value > 1000u) {
-                cli_usage_error("nearest", USAGE, "--k=K needs an integer K from 1 to 1000, got", argv[i]);
+            unsigned long number = strtoul(value, &end, 10);
+            if (*end != '\0' || value[0] == '\0' || value[0] == '-' || number < 1u || number > 1000u) {
+                cli_usage_error("nearest", USAGE, "--k K needs an integer K from 1 to 1000, got", value);
             }
-            k = (uint32_t)value;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            cli_usage_error("nearest", USAGE, "unknown option", argv[i]);
+            k = (uint32_t)number;
         } else if (path_count == 2) {
-            cli_usage_error("nearest", USAGE, "unexpected argument", argv[i]);
+            cli_usage_error("nearest", USAGE, "unexpected argument", value);
         } else {
-            paths[path_count++] = argv[i];
+            paths[path_count++] = value;
         }
     }
     if (path_count < 2) {

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * vor ops [--capacity N] FILE
+ * vor ops [--capacity N] [--scale S] FILE
  *
  * Drives a dynamic diagram from a script, one operation a line (FILE "-"
  * is stdin; blank and '#' lines skipped), one result line per operation:
@@ -14,15 +14,16 @@
  *              sorted), then "end"
  *
  * --capacity N: the most sites at once (default: the number of operation
- * lines). A bad line, an unknown id, a full diagram or a query on no
- * sites: "error: line N: reason" on stderr, exit 2, nothing on stdout.
+ * lines). --scale S scales X and Y as every command's coordinates. A bad
+ * line, an unknown id, a full diagram or a query on no sites: "error:
+ * FILE:N: reason" on stderr, exit 2, nothing on stdout.
  */
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 
-#define USAGE "usage: vor ops [--capacity N] FILE"
+#define USAGE "usage: vor ops [--capacity N] [--scale S] FILE"
 
 const char cli_ops_help[] =
     USAGE "\n"
@@ -37,9 +38,10 @@ const char cli_ops_help[] =
     "          m ID X Y   move site ID to (X, Y)\n"
     "          n X Y      the site nearest to (X, Y)\n"
     "          t          the triangles\n"
-    "        X, Y decimal int32 (or decimal numbers with --scale S). A removed\n"
-    "        site's id is reused by a later insert, the most recently freed\n"
-    "        first.\n"
+    "        fields separated by blanks or commas (i,0,0); X, Y decimal int32,\n"
+    "        or decimal numbers with --scale S (times S, rounded to nearest,\n"
+    "        ties away from zero); ids stay integers. A removed site's id is\n"
+    "        reused by a later insert, the most recently freed first.\n"
     "output: i: the new id, or \"d ID\" when (X, Y) is site ID; r: \"ok\";\n"
     "        m: \"ok\", or \"d ID\" when (X, Y) is another site ID; n: the id,\n"
     "        by exact distance, ties to the smaller id; t: \"t i j k\" for every\n"
@@ -63,13 +65,15 @@ typedef struct {
     unsigned long line_number;
 } op_line_t;
 
-/* The rest of the line after the operation letter: n int32 fields, then
- * nothing. */
+/* The rest of the line after the operation letter: n fields, then
+ * nothing. An operation's coordinates are its last pair of fields (read
+ * with --scale as every command's); an odd first field is an id. */
 static void fields(const cli_input_t *in, const char *cursor, int32_t *values, unsigned n)
 {
     for (unsigned k = 0; k < n; k++) {
         const char *why;
-        if (!cli_int32_field(&cursor, &values[k], &why)) {
+        if (!(k < n % 2u ? cli_int32_field(&cursor, &values[k], &why)
+                         : cli_coordinate_field(&cursor, &values[k], &why))) {
             cli_line_error(in, why);
         }
     }
@@ -81,23 +85,31 @@ static void fields(const cli_input_t *in, const char *cursor, int32_t *values, u
 int cli_ops(int argc, char **argv)
 {
     uint32_t capacity = 0; /* 0: the number of operation lines */
-    if (argc == 3 && strcmp(argv[0], "--capacity") == 0) {
-        char *end;
-        unsigned long value = strtoul(argv[1], &end, 10);
-        if (*end != '\0' || argv[1][0] == '\0' || value < 1u || value > VOR_MAX_SITES) {
-            cli_usage_error("ops", USAGE, "--capacity must be 1 to VOR_MAX_SITES", argv[1]);
+    const char *path = NULL;
+    static const cli_option_t options[] = {{"--capacity", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "ops", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *text = args.values[0];
+        if (o == 0) {
+            char *end;
+            unsigned long value = strtoul(text, &end, 10);
+            if (*end != '\0' || text[0] < '0' || text[0] > '9' || value < 1u || value > VOR_MAX_SITES) {
+                cli_usage_error("ops", USAGE, "--capacity must be 1 to VOR_MAX_SITES", text);
+            }
+            capacity = (uint32_t)value;
+        } else if (path != NULL) {
+            cli_usage_error("ops", USAGE, "unexpected argument", text);
+        } else {
+            path = text;
         }
-        capacity = (uint32_t)value;
-        argc -= 2;
-        argv += 2;
     }
-    if (argc != 1) {
-        cli_usage_error("ops", USAGE, argc == 0 ? "no script FILE" : "unexpected argument",
-                        argc == 0 ? NULL : argv[argc - 1]);
+    if (path == NULL) {
+        cli_usage_error("ops", USAGE, "no script FILE", NULL);
     }
     /* the whole script first: the default capacity is its length */
     cli_input_t in;
-    cli_open(&in, argv[0]);
+    cli_open(&in, path);
     op_line_t *lines = NULL;
     size_t count = 0, room = 0;
     const char *text;

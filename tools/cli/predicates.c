@@ -36,14 +36,14 @@ const char cli_predicates_help[] =
 
 int cli_predicates(int argc, char **argv)
 {
-    if (argc != 0) {
-        cli_usage_error("predicates", USAGE, argv[0][0] == '-' ? "unknown option" : "unexpected argument",
-                        argv[0]);
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "predicates", USAGE, NULL, 0);
+    if (cli_next_argument(&args) != CLI_END) {
+        cli_usage_error("predicates", USAGE, "unexpected argument", args.values[0]);
     }
     cli_input_t in;
     cli_output_t out = {NULL, 0, 0};
     cli_open(&in, "-");
-    in.header_allowed = false; /* "o,..." and "c,..." lines start with a letter */
     const char *line;
     while ((line = cli_next_line(&in)) != NULL) {
         const char *p = line;

@@ -3,7 +3,8 @@
  * vor raster --size W H --origin OX OY --step SX SY
  *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
  *                      hausdorff|segment|polygon|polyline]
- *            [--band R] [--scale S] SITES (--labels OUT.raw | --png OUT.png)
+ *            [--band R] [--scale S] SITES (--labels OUT.raw |
+ *            --png OUT.png [--y-down] [--dots])
  *
  * Renders the exact discrete Voronoi diagram of SITES with vor_raster in
  * bands of R rows (default 16). SITES has one site per line (blank and
@@ -18,8 +19,11 @@
  *                                           vertices in order, open)
  * --labels writes W*H little-endian uint32 labels, row-major, row 0
  * (j = 0) first, each the index of the pixel's nearest site (farthest for
- * farthest; ties: the smaller index). --png writes an RGB picture, one
- * colour per site and black boundaries (stb_image_write: tools/png_write.h).
+ * farthest; ties: the smaller index). --png writes an RGB picture, y up
+ * (row j = H-1 at the top; --y-down: row j = 0), site i in the colour
+ * `vor draw` gives it (cli_site_colour), black boundaries, and with
+ * --dots each site's points as black dots (stb_image_write:
+ * tools/png_write.h).
  * Fields are separated by blanks or commas; --scale S scales coordinates
  * and additive weights (not multiplicative ones). Bad input: "error:
  * FILE:N: reason" or "error: reason", exit 2, and OUT untouched: it is
@@ -36,7 +40,7 @@
 
 #define USAGE                                                                                   \
     "usage: vor raster --size W H [--origin OX OY] [--step SX SY] [--metric M] [--band R]\n"      \
-    "                  [--scale S] SITES (--labels OUT.raw | --png OUT.png)"
+    "                  [--scale S] SITES (--labels OUT.raw | --png OUT.png [--y-down] [--dots])"
 
 const char cli_raster_help[] =
     USAGE "\n"
@@ -59,12 +63,14 @@ const char cli_raster_help[] =
     "output: --labels: W*H little-endian uint32, row-major, row j = 0 first,\n"
     "        each the index of the pixel's nearest site (farthest for\n"
     "        farthest; ties: the smaller index).\n"
-    "        --png: an RGB picture, one light colour per site, black\n"
-    "        boundaries, row j = 0 at the top.\n"
+    "        --png: an RGB picture, y up (row j = H-1 at the top), site i in\n"
+    "        the colour `vor draw` gives it, black boundaries.\n"
     "  --metric M    euclid (default), l1, linf, lp:P (1 <= P <= 8), ellip:A,B,C\n"
     "                (A > 0, A*C > B^2), mult, add, comp, farthest, hausdorff,\n"
     "                segment, polygon, polyline\n"
     "  --band R      rows rendered per band (default 16)\n"
+    "  --y-down      --png: row j = 0 at the top (screen order)\n"
+    "  --dots        --png: each site's points as black dots\n"
     "\n"
     "example:\n"
     "  $ printf '0 0\\n3 1\\n' | vor raster --size 4 2 - --labels out.raw\n"
@@ -318,15 +324,26 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
     exit(2);
 }
 
-static bool option_with_values(const char *option)
+/* Blackens the pixels within 1.5 pixels of each point, as `vor draw`
+ * draws its site dots; rgb's row j is the frame's. */
+static void draw_dots(uint8_t *rgb, const vor_raster_frame_t *frame, const vor_point_t *points, size_t count)
 {
-    static const char *const names[] = {"--size", "--origin", "--step", "--metric", "--band", "--labels", "--png"};
-    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
-        if (strcmp(option, names[i]) == 0) {
-            return true;
+    for (size_t k = 0; k < count; k++) {
+        double u = ((double)points[k].x - frame->origin_x) / frame->step_x;
+        double v = ((double)points[k].y - frame->origin_y) / frame->step_y;
+        if (u < -2.0 || v < -2.0 || u > (double)frame->width + 1.0 || v > (double)frame->height + 1.0) {
+            continue;
+        }
+        /* u and v lie within the frame's pixels give or take 2: int32 */
+        for (int32_t j = (int32_t)(v - 1.5) - 1; j <= (int32_t)(v + 1.5) + 1; j++) {
+            for (int32_t i = (int32_t)(u - 1.5) - 1; i <= (int32_t)(u + 1.5) + 1; i++) {
+                if (i >= 0 && j >= 0 && (uint32_t)i < frame->width && (uint32_t)j < frame->height &&
+                    (i - u) * (i - u) + (j - v) * (j - v) <= 2.25) {
+                    memset(rgb + 3u * ((size_t)j * frame->width + (size_t)i), 0, 3);
+                }
+            }
         }
     }
-    return false;
 }
 
 /* Every pixel must be an int32 point (vor_raster returns VOR_ERR_ARG
@@ -351,53 +368,55 @@ int cli_raster(int argc, char **argv)
     memset(&sites, 0, sizeof sites);
     sites.metric = VOR_METRIC_EUCLID;
     int have_size = 0;
+    bool y_down = false, dots = false;
     uint32_t band_rows = 16;
     const char *sites_path = NULL, *labels_path = NULL, *png_path = NULL;
-    for (int a = 0; a < argc; a++) {
-        const char *o = argv[a];
-        int more = argc - a - 1;
-        if (strcmp(o, "--size") == 0 && more >= 2) {
-            int32_t w = int_arg(argv[a + 1], "--size"), h = int_arg(argv[a + 2], "--size");
+    enum { SIZE, ORIGIN, STEP, METRIC, BAND, LABELS, PNG, Y_DOWN, DOTS };
+    static const cli_option_t options[] = {
+        [SIZE] = {"--size", 2},     [ORIGIN] = {"--origin", 2}, [STEP] = {"--step", 2},
+        [METRIC] = {"--metric", 1}, [BAND] = {"--band", 1},     [LABELS] = {"--labels", 1},
+        [PNG] = {"--png", 1},       [Y_DOWN] = {"--y-down", 0}, [DOTS] = {"--dots", 0}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "raster", USAGE, options, sizeof options / sizeof options[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        const char *const *v = args.values;
+        if (o == SIZE) {
+            int32_t w = int_arg(v[0], "--size"), h = int_arg(v[1], "--size");
             if (w <= 0 || h <= 0) {
                 cli_error("--size: width and height must be positive");
             }
             frame.width = (uint32_t)w;
             frame.height = (uint32_t)h;
             have_size = 1;
-            a += 2;
-        } else if (strcmp(o, "--origin") == 0 && more >= 2) {
-            frame.origin_x = int_arg(argv[a + 1], "--origin");
-            frame.origin_y = int_arg(argv[a + 2], "--origin");
-            a += 2;
-        } else if (strcmp(o, "--step") == 0 && more >= 2) {
-            frame.step_x = int_arg(argv[a + 1], "--step");
-            frame.step_y = int_arg(argv[a + 2], "--step");
+        } else if (o == ORIGIN) {
+            frame.origin_x = int_arg(v[0], "--origin");
+            frame.origin_y = int_arg(v[1], "--origin");
+        } else if (o == STEP) {
+            frame.step_x = int_arg(v[0], "--step");
+            frame.step_y = int_arg(v[1], "--step");
             if (frame.step_x <= 0 || frame.step_y <= 0) {
                 cli_error("--step: steps must be positive");
             }
-            a += 2;
-        } else if (strcmp(o, "--metric") == 0 && more >= 1) {
-            parse_metric(argv[a + 1], &sites);
-            a += 1;
-        } else if (strcmp(o, "--band") == 0 && more >= 1) {
-            int32_t r = int_arg(argv[a + 1], "--band");
+        } else if (o == METRIC) {
+            parse_metric(v[0], &sites);
+        } else if (o == BAND) {
+            int32_t r = int_arg(v[0], "--band");
             if (r <= 0) {
                 cli_error("--band: rows must be positive");
             }
             band_rows = (uint32_t)r;
-            a += 1;
-        } else if (strcmp(o, "--labels") == 0 && more >= 1) {
-            labels_path = argv[++a];
-        } else if (strcmp(o, "--png") == 0 && more >= 1) {
-            png_path = argv[++a];
-        } else if ((o[0] != '-' || o[1] == '\0') && sites_path == NULL) {
-            sites_path = o;
-        } else if (o[0] != '-' || o[1] == '\0') {
-            cli_usage_error("raster", USAGE, "unexpected argument", o);
-        } else if (option_with_values(o)) {
-            cli_usage_error("raster", USAGE, "missing value after", o);
+        } else if (o == LABELS) {
+            labels_path = v[0];
+        } else if (o == PNG) {
+            png_path = v[0];
+        } else if (o == Y_DOWN) {
+            y_down = true;
+        } else if (o == DOTS) {
+            dots = true;
+        } else if (sites_path == NULL) {
+            sites_path = v[0];
         } else {
-            cli_usage_error("raster", USAGE, "unknown option", o);
+            cli_usage_error("raster", USAGE, "unexpected argument", v[0]);
         }
     }
     if (!have_size) {
@@ -408,6 +427,9 @@ int cli_raster(int argc, char **argv)
     }
     if ((labels_path == NULL) == (png_path == NULL)) {
         cli_usage_error("raster", USAGE, "expected exactly one of --labels OUT.raw and --png OUT.png", NULL);
+    }
+    if (png_path == NULL && (y_down || dots)) {
+        cli_usage_error("raster", USAGE, "--y-down and --dots are options of --png", NULL);
     }
     check_frame(&frame);
     if (band_rows > frame.height) {
@@ -447,16 +469,27 @@ int cli_raster(int argc, char **argv)
         if (palette == NULL) {
             cli_error("out of memory");
         }
-        for (uint32_t k = 0; k < n; k++) { /* light, well-spread colours */
-            uint32_t h = (k + 1u) * 2654435761u;
-            palette[k] = ((0x80u | (h >> 25)) << 16) | ((0x80u | ((h >> 17) & 0x7Fu)) << 8) |
-                         (0x80u | ((h >> 9) & 0x7Fu));
+        for (uint32_t k = 0; k < n; k++) {
+            palette[k] = cli_site_colour(k);
         }
         uint8_t *rgb = render(&frame, &sites, VOR_RASTER_RGB888, band_rows, palette);
         uint8_t *edges = render(&frame, &sites, VOR_RASTER_BOUNDARY, band_rows, NULL);
         for (size_t p = 0; p < pixels; p++) {
             if (edges[p] != 0u) {
                 rgb[3u * p] = rgb[3u * p + 1u] = rgb[3u * p + 2u] = 0;
+            }
+        }
+        if (dots) {
+            draw_dots(rgb, &frame, file.points, file.point_count);
+        }
+        /* y up, as vor draw and the library: the last row j at the top */
+        size_t row_bytes = 3u * (size_t)frame.width;
+        for (uint32_t j = 0; !y_down && j < frame.height / 2u; j++) {
+            uint8_t *top = rgb + (size_t)j * row_bytes, *bottom = rgb + (size_t)(frame.height - 1u - j) * row_bytes;
+            for (size_t b = 0; b < row_bytes; b++) {
+                uint8_t t = top[b];
+                top[b] = bottom[b];
+                bottom[b] = t;
             }
         }
         if (!stbi_write_png_to_func(write_to_file, f, (int)frame.width, (int)frame.height, 3, rgb,
