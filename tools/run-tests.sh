@@ -11,7 +11,7 @@
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself (also built with GCC and clang at -O1 to -Oz), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
-# the build-system manifests, the CMake package in consumer programs
+# the build-system manifests, the layer rule of src/ (tools/check-layers.py), the CMake package in consumer programs
 # (tools/test-consumers.sh), and the SPDX licence line of every file. Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
 set -u
@@ -237,6 +237,12 @@ record manifests "$logs/manifests.log" $?
 # on the host and on the emulated Cortex-M3.
 tools/test-consumers.sh >"$logs/consumers.log" 2>&1
 record consumers "$logs/consumers.log" $?
+
+# The layer rule of docs/design.md: src/'s #include lines point one way
+# and every cross-part call goes through a header the caller includes;
+# --self-test shows each kind of break is caught.
+python3 tools/check-layers.py --self-test >"$logs/layers.log" 2>&1
+record layers "$logs/layers.log" $?
 
 # Every source, header, script and build file names its licence.
 tools/check-spdx.sh >"$logs/spdx.log" 2>&1
