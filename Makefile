@@ -134,6 +134,30 @@ $(B)/port/%.o: %.c port/port.h | $(B)/port
 $(B)/port/%.o: %.S | $(B)/port
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
 
+# Test case selection (docs/testing.md): ONLY=PATTERN[,PATTERN...] runs the
+# cases a pattern names ("dynamic", "dynamic/trackers"), V=1 prints every
+# case with its number of checks, LIST=1 lists the cases and runs none.
+# They are compiled into the test programs' main, so they work the same on
+# every target; the stamp holds them, so that main is rebuilt when they change.
+ifneq ($(ONLY),)
+ifneq ($(shell printf '%s' '$(ONLY)' | tr -d 'A-Za-z0-9_/,.-'),)
+$(error ONLY holds letters, digits and _ / , . - only)
+endif
+endif
+SELECT := $(ONLY)|$(V)|$(LIST)
+SELECT_DEFS := -DTEST_ONLY='"$(ONLY)"' \
+               -DTEST_MODE='($(if $(V),TEST_VERBOSE,0u) | $(if $(LIST),TEST_LIST,0u))'
+$(B)/tests/select.stamp: FORCE | $(B)/tests
+	@[ "$$(cat $@ 2>/dev/null)" = '$(SELECT)' ] || printf '%s\n' '$(SELECT)' >$@
+$(B)/tests/main.o: $(B)/tests/select.stamp
+$(B)/tests/main.o: TEST_CFLAGS += $(SELECT_DEFS)
+.PHONY: FORCE list-tests
+FORCE:
+
+# The names of the test cases (ONLY narrows them).
+list-tests:
+	+@$(MAKE) -s run-tests LIST=1
+
 $(TEST_EXE): $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a
 	$(CC) $(TEST_CFLAGS) $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
