@@ -108,8 +108,8 @@ $(B)/libvor-faulty.a: $(FAULTY_OBJS)
 $(B)/faulty/%.o: src/%.c $(LIB_HDRS) | $(B)/faulty
 	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -DVOR_FAULT_INJECTION -c $< -o $@
 
-$(B)/vor-fault-tests$(EXE): tests/faults/test_faults.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a
-	$(CC) $(TEST_CFLAGS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+$(B)/vor-fault-tests$(EXE): tests/faults/test_faults.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(B)/tests/select.stamp
+	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 fault-tests: $(B)/vor-fault-tests$(EXE)
 run-fault-tests: $(B)/vor-fault-tests$(EXE)
@@ -194,8 +194,8 @@ $(B)/contract/%.o: src/%.c $(LIB_HDRS) | $(B)/contract
 $(B)/config/%.o: tests/config/mismatch.c $(LIB_HDRS) tests/test.h | $(B)/config
 	$(CC) $(TEST_CFLAGS) $(CONFIG_DEFS_$*) -DCONFIG_CASE=config_$* -c $< -o $@
 
-$(B)/config-tests$(EXE): tests/config/main.c $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a
-	$(CC) $(TEST_CFLAGS) $< $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+$(B)/config-tests$(EXE): tests/config/main.c $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(B)/tests/select.stamp
+	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) $< $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 config-tests: $(B)/config-tests$(EXE)
 run-config-tests: $(B)/config-tests$(EXE)
