@@ -5,6 +5,8 @@
 #   make PORT=cortex-m3     cross-build the library and test firmware for a target
 #                           (cortex-m0, cortex-m3, cortex-m4f, riscv32)
 #   make test               every test, on the host and under QEMU on every target
+#                           (ONLY=dynamic,mesh/tiny: those cases; docs/testing.md)
+#   make run-tests          the test suite of PORT (ONLY=..., V=1; make list-tests)
 #   make demo               the main job on the emulated Cortex-M3
 #   make size               flash, static RAM and worst stack depth per target,
 #                           and per feature set a firmware links (bench/size/)
