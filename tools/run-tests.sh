@@ -29,6 +29,8 @@ logs=build/test-logs
 mkdir -p "$logs"
 total_passed=0
 total_failed=0
+cases_passed=0 # in the suites with named cases
+cases_failed=0
 broken=()
 skipped=()
 
@@ -76,7 +78,7 @@ patterns_for() {
 
 # record NAME LOG STATUS: add the suite's closing counts to the totals.
 record() {
-    local name=$1 log=$2 status=$3 counts passed failed
+    local name=$1 log=$2 status=$3 counts passed failed cases
     counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
     if [ -z "$counts" ]; then
         echo "$name: did not run to the end (exit $status); last lines of $log:"
@@ -93,7 +95,15 @@ record() {
         failed=1
     fi
     grep -E '^(FAIL|fatal)' "$log" | head -n 20 | sed "s/^/$name: /"
-    echo "$name: $passed passed, $failed failed"
+    cases=$(grep -E '^cases: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+    if [ -n "$cases" ]; then # a suite with named cases
+        set -- ${cases//,/}
+        cases_passed=$((cases_passed + $2))
+        cases_failed=$((cases_failed + $4))
+        echo "$name: $passed passed, $failed failed ($cases)"
+    else
+        echo "$name: $passed passed, $failed failed"
+    fi
     total_passed=$((total_passed + passed))
     total_failed=$((total_failed + failed))
     [ "$failed" = 0 ] || broken+=("$name")
@@ -385,5 +395,6 @@ fi
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"
 fi
+echo "cases: $cases_passed passed, $cases_failed failed"
 echo "total: $total_passed passed, $total_failed failed"
 [ "$total_failed" = 0 ]
