@@ -41,7 +41,8 @@ unsigned long test_failures(void);
  * The case is named "group/name" (the name printf-formatted, '/' nesting
  * it further), and its statement runs only when the filter selects it: a
  * pattern that is the name, or its beginning up to a '/'. A case fails
- * when one of its checks fails, or when it runs no check.
+ * when one of its checks fails, or when it runs no check. Cases do not
+ * nest, and no return or break leaves one (its end would not be counted).
  * test_case_begin returns whether to run the case; test_case_end closes it
  * (it returns false, to end TEST_CASE's loop).
  */
