@@ -5,6 +5,8 @@
 #   make PORT=cortex-m3     cross-build the library and test firmware for a target
 #                           (cortex-m0, cortex-m3, cortex-m4f, riscv32)
 #   make test               every test, on the host and under QEMU on every target
+#                           (ONLY=dynamic,mesh/tiny: those cases; docs/testing.md)
+#   make run-tests          the test suite of PORT (ONLY=..., V=1; make list-tests)
 #   make demo               the main job on the emulated Cortex-M3
 #   make size               flash, static RAM and worst stack depth per target,
 #                           and per feature set a firmware links (bench/size/)
@@ -110,8 +112,8 @@ $(B)/libvor-faulty.a: $(FAULTY_OBJS)
 $(B)/faulty/%.o: src/%.c $(LIB_HDRS) | $(B)/faulty
 	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -DVOR_FAULT_INJECTION -c $< -o $@
 
-$(B)/vor-fault-tests$(EXE): tests/faults/test_faults.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a
-	$(CC) $(TEST_CFLAGS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+$(B)/vor-fault-tests$(EXE): tests/faults/test_faults.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(B)/tests/select.stamp
+	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 fault-tests: $(B)/vor-fault-tests$(EXE)
 run-fault-tests: $(B)/vor-fault-tests$(EXE)
@@ -135,6 +137,30 @@ $(B)/port/%.o: %.c port/port.h | $(B)/port
 	$(CC) $(TEST_CFLAGS) $(PORT_CFLAGS) -c $< -o $@
 $(B)/port/%.o: %.S | $(B)/port
 	$(CC) $(TEST_CFLAGS) -c $< -o $@
+
+# Test case selection (docs/testing.md): ONLY=PATTERN[,PATTERN...] runs the
+# cases a pattern names ("dynamic", "dynamic/trackers"), V=1 prints every
+# case with its number of checks, LIST=1 lists the cases and runs none.
+# They are compiled into the test programs' main, so they work the same on
+# every target; the stamp holds them, so that main is rebuilt when they change.
+ifneq ($(ONLY),)
+ifneq ($(shell printf '%s' '$(ONLY)' | tr -d 'A-Za-z0-9_/,.-'),)
+$(error ONLY holds letters, digits and _ / , . - only)
+endif
+endif
+SELECT := $(ONLY)|$(V)|$(LIST)
+SELECT_DEFS := -DTEST_ONLY='"$(ONLY)"' \
+               -DTEST_MODE='($(if $(V),TEST_VERBOSE,0u) | $(if $(LIST),TEST_LIST,0u))'
+$(B)/tests/select.stamp: FORCE | $(B)/tests
+	@[ "$$(cat $@ 2>/dev/null)" = '$(SELECT)' ] || printf '%s\n' '$(SELECT)' >$@
+$(B)/tests/main.o: $(B)/tests/select.stamp
+$(B)/tests/main.o: TEST_CFLAGS += $(SELECT_DEFS)
+.PHONY: FORCE list-tests
+FORCE:
+
+# The names of the test cases (ONLY narrows them).
+list-tests:
+	+@$(MAKE) -s run-tests LIST=1
 
 $(TEST_EXE): $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a
 	$(CC) $(TEST_CFLAGS) $(TEST_OBJS) $(PORT_OBJS) $(B)/libvor-checked.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
@@ -172,8 +198,8 @@ $(B)/contract/%.o: src/%.c $(LIB_HDRS) | $(B)/contract
 $(B)/config/%.o: tests/config/mismatch.c $(LIB_HDRS) tests/test.h | $(B)/config
 	$(CC) $(TEST_CFLAGS) $(CONFIG_DEFS_$*) -DCONFIG_CASE=config_$* -c $< -o $@
 
-$(B)/config-tests$(EXE): tests/config/main.c $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a
-	$(CC) $(TEST_CFLAGS) $< $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+$(B)/config-tests$(EXE): tests/config/main.c $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(B)/tests/select.stamp
+	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) $< $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 config-tests: $(B)/config-tests$(EXE)
 run-config-tests: $(B)/config-tests$(EXE)

@@ -13,6 +13,7 @@
 #include <stdbool.h>
 
 #include "mesh.h"
+#include "multiword.h"
 #include "predicates.h"
 #include "vor.h"
 

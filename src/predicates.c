@@ -17,6 +17,7 @@
 
 #include "vor.h"
 
+#include "multiword.h"
 #include "predicates.h"
 
 /* (k + 1) mod 3 without a division (Cortex-M0 has no divide instruction) */

@@ -2,21 +2,30 @@
 /* main.c - runs every test group; the port's startup calls it. */
 #include "test.h"
 
+/* The case filter and flags, compiled in so that they work on every target
+ * (the Makefile's ONLY, V and LIST). */
+#ifndef TEST_ONLY
+#define TEST_ONLY ""
+#endif
+#ifndef TEST_MODE
+#define TEST_MODE 0u
+#endif
+
 int main(void)
 {
     vor_port_init();
-    test_predicates();
-    test_mesh();
-    test_queries();
-    test_raster();
-    test_geometry();
-    test_raster_metrics();
-    test_true_output();
-    test_api_safety();
-    test_centroid();
-    test_dynamic();
-    test_motion();
-    test_fork_join();
-    test_summary();
-    return test_failures() == 0 ? 0 : 1;
+    test_select(TEST_ONLY, TEST_MODE);
+    test_group("predicates", test_predicates);
+    test_group("mesh", test_mesh);
+    test_group("queries", test_queries);
+    test_group("raster", test_raster);
+    test_group("geometry", test_geometry);
+    test_group("raster_metrics", test_raster_metrics);
+    test_group("true_output", test_true_output);
+    test_group("api_safety", test_api_safety);
+    test_group("centroid", test_centroid);
+    test_group("dynamic", test_dynamic);
+    test_group("motion", test_motion);
+    test_group("fork_join", test_fork_join);
+    return test_finish();
 }

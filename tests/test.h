@@ -32,12 +32,46 @@ bool test_check(bool ok, const char *file, int line, const char *format, ...);
 void test_summary(void);
 unsigned long test_failures(void);
 
+/*
+ * Named cases (docs/testing.md). A group function runs each case as
+ *
+ *     TEST_CASE("brute_force") check_brute_force();
+ *     TEST_CASE("sequence/%u", seed) { ... }
+ *
+ * The case is named "group/name" (the name printf-formatted, '/' nesting
+ * it further), and its statement runs only when the filter selects it: a
+ * pattern that is the name, or its beginning up to a '/'. A case fails
+ * when one of its checks fails, or when it runs no check. Cases do not
+ * nest, and no return or break leaves one (its end would not be counted).
+ * test_case_begin returns whether to run the case; test_case_end closes it
+ * (it returns false, to end TEST_CASE's loop).
+ */
+bool test_case_begin(const char *format, ...);
+bool test_case_end(void);
+#define TEST_CASE(...)                                                                          \
+    for (bool test_case_runs_ = test_case_begin(__VA_ARGS__); test_case_runs_;                 \
+         test_case_runs_ = test_case_end())
+
+/* test_select's flags: V=1 prints every case with its number of checks;
+ * LIST=1 prints the names of the selected cases and runs none. */
+#define TEST_VERBOSE 1u
+#define TEST_LIST 2u
+
+/* The filter: comma-separated patterns, "" for every case. */
+void test_select(const char *patterns, unsigned flags);
+/* Runs a group function, its cases named "name/...". */
+void test_group(const char *name, void (*run)(void));
+/* Prints "cases: N passed, N failed" and the closing line, and returns
+ * main's status; a filter that selects no case is a failure. */
+int test_finish(void);
+
 /* Deterministic xorshift generator: the same sequence on every target. */
 typedef struct {
     uint64_t state;
 } test_rng_t;
 
-void test_rng_seed(test_rng_t *rng, uint64_t seed);
+/* Seeds rng and returns it (a case passes test_rng_seed(&rng, seed)). */
+test_rng_t *test_rng_seed(test_rng_t *rng, uint64_t seed);
 uint32_t test_rng_u32(test_rng_t *rng);
 /* Uniform in [lo, hi], inclusive, for hi - lo < 2^32. */
 int32_t test_rng_range(test_rng_t *rng, int32_t lo, int32_t hi);

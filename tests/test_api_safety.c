@@ -627,12 +627,12 @@ void test_api_safety(void)
     test_rng_t rng;
     test_rng_seed(&rng, 0x5AFE);
     make_points(&rng);
-    check_config();
-    check_init();
-    check_small_hints();
-    check_insert_and_build(&rng);
-    check_reads();
-    check_iterators();
-    check_raster();
-    check_zeroed_diagram();
+    TEST_CASE("config") check_config();
+    TEST_CASE("init") check_init();
+    TEST_CASE("small_hints") check_small_hints();
+    TEST_CASE("insert_and_build") check_insert_and_build(test_rng_seed(&rng, 0x5AFE1));
+    TEST_CASE("reads") check_reads();
+    TEST_CASE("iterators") check_iterators();
+    TEST_CASE("raster") check_raster();
+    TEST_CASE("zeroed_diagram") check_zeroed_diagram();
 }

@@ -607,9 +607,8 @@ static void test_errors(void)
 void test_centroid(void)
 {
     test_rng_t rng;
-    test_rng_seed(&rng, 0xCE27701Du);
-    test_errors();
-    test_grids(&rng);
-    test_wide(&rng);
-    test_brute_force(&rng);
+    TEST_CASE("errors") test_errors();
+    TEST_CASE("grids") test_grids(test_rng_seed(&rng, 0xCE27701Du));
+    TEST_CASE("wide") test_wide(test_rng_seed(&rng, 0xCE27701Du));
+    TEST_CASE("brute_force") test_brute_force(test_rng_seed(&rng, 0xCE27701Du));
 }

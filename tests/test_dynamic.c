@@ -611,12 +611,14 @@ void test_dynamic(void)
 {
     for (unsigned shape = UNIFORM; shape < SHAPES; shape++) {
         for (uint64_t seed = 1; seed <= 2u; seed++) {
-            random_sequence((enum shape)shape, seed * 1000u + shape, 150);
+            TEST_CASE("random_sequence/%s/%u", shape_names[shape], (unsigned)seed) {
+                random_sequence((enum shape)shape, seed * 1000u + shape, 150);
+            }
         }
     }
-    down_to_nothing();
-    big_star();
-    rehoming();
-    build_duplicates();
-    trackers();
+    TEST_CASE("down_to_nothing") down_to_nothing();
+    TEST_CASE("big_star") big_star();
+    TEST_CASE("rehoming") rehoming();
+    TEST_CASE("build_duplicates") build_duplicates();
+    TEST_CASE("trackers") trackers();
 }

@@ -246,7 +246,6 @@ static void check_no_hook(test_rng_t *rng)
 void test_fork_join(void)
 {
     test_rng_t rng;
-    test_rng_seed(&rng, 0xF0F0);
     static const uint32_t sizes[] = {VOR_DC_FORK_MIN_SITES - 1u, VOR_DC_FORK_MIN_SITES,
                                      VOR_DC_FORK_MIN_SITES + 1u, FJ_SITES};
     for (unsigned f = 0; f < F_FAMILIES; f++) {
@@ -256,8 +255,10 @@ void test_fork_join(void)
             if (f != F_DUPLICATES && f != F_UNIFORM && s != 1u && s != 3u) {
                 continue;
             }
-            check_family((enum family)f, sizes[s], &rng);
+            TEST_CASE("family/%s/%u", family_names[f], sizes[s]) {
+                check_family((enum family)f, sizes[s], test_rng_seed(&rng, 0xF0F0 + f * 4u + s));
+            }
         }
     }
-    check_no_hook(&rng);
+    TEST_CASE("no_hook") check_no_hook(test_rng_seed(&rng, 0xF0F0));
 }

@@ -926,8 +926,7 @@ static void test_errors(void)
 void test_geometry(void)
 {
     test_rng_t rng;
-    test_rng_seed(&rng, 4242);
-    test_vertices(&rng);
-    test_errors();
-    test_sets(&rng);
+    TEST_CASE("vertices") test_vertices(test_rng_seed(&rng, 4242));
+    TEST_CASE("errors") test_errors();
+    TEST_CASE("sets") test_sets(test_rng_seed(&rng, 4242));
 }

@@ -459,10 +459,10 @@ static void check_failures_change_nothing(void)
 
 void test_mesh(void)
 {
-    check_init();
-    check_tiny();
-    check_brute_force();
-    check_families();
-    check_memory();
-    check_failures_change_nothing();
+    TEST_CASE("init") check_init();
+    TEST_CASE("tiny") check_tiny();
+    TEST_CASE("brute_force") check_brute_force();
+    TEST_CASE("families") check_families();
+    TEST_CASE("memory") check_memory();
+    TEST_CASE("failures_change_nothing") check_failures_change_nothing();
 }

@@ -405,29 +405,38 @@ void test_motion(void)
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
      * uniform sites: mostly fast, the first two moves of each site aside
      * (the backoff sizes no box at a site's first slow move) */
-    uint32_t steps = 600;
-    uint32_t fast = walk(11, MOTION_SITES, 1000000, 1, 14, steps, "uniform tiny steps");
-    CHECK(fast * 2u > steps - 2u * MOTION_SITES, "tiny steps: %u of %u moves fast", fast, steps);
-    uint32_t unit = walk(12, MOTION_SITES, 1000000, 1, 1, steps, "uniform unit steps");
-    CHECK(unit * 4u > steps * 3u, "unit steps: %u of %u moves fast", unit, steps);
-    test_printf("motion cache: %u of %u tiny steps fast, %u of %u unit steps\n", fast, steps,
-                unit, steps);
+    TEST_CASE("uniform_steps") {
+        uint32_t steps = 600;
+        uint32_t fast = walk(11, MOTION_SITES, 1000000, 1, 14, steps, "uniform tiny steps");
+        CHECK(fast * 2u > steps - 2u * MOTION_SITES, "tiny steps: %u of %u moves fast", fast,
+              steps);
+        uint32_t unit = walk(12, MOTION_SITES, 1000000, 1, 1, steps, "uniform unit steps");
+        CHECK(unit * 4u > steps * 3u, "unit steps: %u of %u moves fast", unit, steps);
+        test_printf("motion cache: %u of %u tiny steps fast, %u of %u unit steps\n", fast,
+                    steps, unit, steps);
+    }
     /* steps from tiny to large, some changing triangles */
-    walk(13, MOTION_SITES, 20000, 1, 0, 400, "uniform mixed steps");
-    walk(14, 40, 100, 1, 0, 300, "crowded mixed steps");
+    TEST_CASE("mixed_steps") {
+        walk(13, MOTION_SITES, 20000, 1, 0, 400, "uniform mixed steps");
+        walk(14, 40, 100, 1, 0, 300, "crowded mixed steps");
+    }
     /* grids: collinear and cocircular sites everywhere */
-    uint32_t grid = walk(15, 36, 7, 4096, 1, 300, "grid unit steps");
-    walk(16, 36, 7, 16, 0, 300, "grid mixed steps");
-    walk(17, 30, 5, 3, 1, 300, "dense grid");
-    /* on a grid every quad is cocircular: boxes only once the walk has
-     * broken the ties */
-    CHECK(grid > 0u, "grid: no fast move (a test that cannot fail)");
+    TEST_CASE("grids") {
+        uint32_t grid = walk(15, 36, 7, 4096, 1, 300, "grid unit steps");
+        walk(16, 36, 7, 16, 0, 300, "grid mixed steps");
+        walk(17, 30, 5, 3, 1, 300, "dense grid");
+        /* on a grid every quad is cocircular: boxes only once the walk has
+         * broken the ties */
+        CHECK(grid > 0u, "grid: no fast move (a test that cannot fail)");
+    }
     /* sites near circles: the predicates' magnitudes are small, the
      * boxes tight */
-    corners(18, MOTION_SITES, 4000000, 50, 16, "corners, near circles");
-    corners(19, MOTION_SITES, 400000000, 3, 1, "corners, nearly cocircular");
-    corners(20, MOTION_SITES, 40000, 0, 24, "corners, small coordinates");
-    degenerate_walks();
-    backoff();
-    api_safety();
+    TEST_CASE("corners") {
+        corners(18, MOTION_SITES, 4000000, 50, 16, "corners, near circles");
+        corners(19, MOTION_SITES, 400000000, 3, 1, "corners, nearly cocircular");
+        corners(20, MOTION_SITES, 40000, 0, 24, "corners, small coordinates");
+    }
+    TEST_CASE("degenerate_walks") degenerate_walks();
+    TEST_CASE("backoff") backoff();
+    TEST_CASE("api_safety") api_safety();
 }

@@ -641,11 +641,11 @@ static void check_near_circles(void)
 
 void test_predicates(void)
 {
-    check_multiply();
-    check_shift();
-    check_vectors();
-    check_grid_antisymmetry();
-    check_perturbation_reference();
-    check_first_term_filter();
-    check_near_circles();
+    TEST_CASE("multiply") check_multiply();
+    TEST_CASE("shift") check_shift();
+    TEST_CASE("vectors") check_vectors();
+    TEST_CASE("grid_antisymmetry") check_grid_antisymmetry();
+    TEST_CASE("perturbation_reference") check_perturbation_reference();
+    TEST_CASE("first_term_filter") check_first_term_filter();
+    TEST_CASE("near_circles") check_near_circles();
 }

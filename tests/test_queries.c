@@ -196,7 +196,7 @@ static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_p
           name, asymmetric, seen / 2u, edges);
 }
 
-void test_queries(void)
+static void uniform_set(void)
 {
     test_rng_t rng;
     test_rng_seed(&rng, 77);
@@ -208,6 +208,12 @@ void test_queries(void)
     vor_point_t corners[4] = {{INT32_MIN, INT32_MIN}, {INT32_MAX, INT32_MIN},
                               {INT32_MIN, INT32_MAX}, {INT32_MAX, INT32_MAX}};
     check_set("uniform", QUERY_SITES, &rng, corners, 4);
+}
+
+static void grid_set(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
     /* a grid: cell centres are equidistant from four sites */
     vor_point_t centres[64];
     for (uint32_t i = 0; i < 30u * 30u; i++) {
@@ -219,6 +225,12 @@ void test_queries(void)
         centres[k].y = (int32_t)(k / 8u) * 30 + 5;
     }
     check_set("grid", 900, &rng, centres, 64);
+}
+
+static void circle_set(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
     /* a circle around the origin: the centre ties with every site */
     uint32_t n = 0;
     for (int32_t x = -25; x <= 25; x++) {
@@ -239,6 +251,13 @@ void test_queries(void)
     }
     vor_point_t origin[1] = {{0, 0}};
     check_set("circle", n, &rng, origin, 1);
+}
+
+static void collinear_set(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    vor_point_t origin[1] = {{0, 0}};
     /* collinear sites, duplicates among them */
     for (uint32_t i = 0; i < 300u; i++) {
         int32_t t = test_rng_range(&rng, -200, 200);
@@ -246,6 +265,10 @@ void test_queries(void)
         sites[i].y = 2 * t;
     }
     check_set("collinear with duplicates", 300, &rng, origin, 1);
+}
+
+static void errors(void)
+{
     /* errors */
     vor_t d;
     uint32_t got;
@@ -272,7 +295,15 @@ void test_queries(void)
     CHECK(vor_tracker_begin(&tracker, &d) == VOR_OK, "tracker begin");
     CHECK(vor_track(&tracker, 0, 0, NULL) == VOR_ERR_ARG, "tracker, NULL result");
     CHECK(vor_track(NULL, 0, 0, &got) == VOR_ERR_ARG, "NULL tracker");
+}
 
+static void inserts(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    vor_t d;
+    uint32_t got;
+    vor_tracker_t tracker;
     /* sites inserted one by one: the bucket grid is redrawn as they double,
      * cold queries start from it, and a tracker notices every insertion */
     CHECK(vor_init(&d, arena, sizeof arena, QUERY_SITES) == VOR_OK, "init");
@@ -298,4 +329,14 @@ void test_queries(void)
                   got == brute_nearest(i + 1u, here),
               "tracker after %u inserts", i + 1u);
     }
+}
+
+void test_queries(void)
+{
+    TEST_CASE("uniform") uniform_set();
+    TEST_CASE("grid") grid_set();
+    TEST_CASE("circle") circle_set();
+    TEST_CASE("collinear") collinear_set();
+    TEST_CASE("errors") errors();
+    TEST_CASE("inserts") inserts();
 }

@@ -686,9 +686,8 @@ static void error_cases(void)
 void test_raster(void)
 {
     test_rng_t rng;
-    test_rng_seed(&rng, 2024);
-    error_cases();
-    random_cases(&rng);
-    adversarial_cases(&rng);
-    band_cases(&rng);
+    TEST_CASE("errors") error_cases();
+    TEST_CASE("random") random_cases(test_rng_seed(&rng, 2024));
+    TEST_CASE("adversarial") adversarial_cases(test_rng_seed(&rng, 2024));
+    TEST_CASE("bands") band_cases(test_rng_seed(&rng, 2024));
 }

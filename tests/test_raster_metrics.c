@@ -827,19 +827,22 @@ static void error_cases(void)
 void test_raster_metrics(void)
 {
     test_rng_t rng;
-    test_rng_seed(&rng, 5005);
-    error_cases();
-    distance_value_cases();
-    point_metric_cases(&rng);
-    always_distance = 1; /* exact ties and integer distances */
-    weighted_tie_cases(&rng);
-    always_distance = 0;
-    hausdorff_cases(&rng);
-    segment_cases(&rng);
-    polygon_cases(&rng);
-    polyline_cases(&rng);
-    always_distance = 1; /* saturation and the widest values */
-    huge_cases(&rng);
-    always_distance = 0;
-    pool_overflow_case();
+    TEST_CASE("errors") error_cases();
+    TEST_CASE("distance_values") distance_value_cases();
+    TEST_CASE("point_metrics") point_metric_cases(test_rng_seed(&rng, 5005));
+    TEST_CASE("weighted_ties") {
+        always_distance = 1; /* exact ties and integer distances */
+        weighted_tie_cases(test_rng_seed(&rng, 5005));
+        always_distance = 0;
+    }
+    TEST_CASE("hausdorff") hausdorff_cases(test_rng_seed(&rng, 5005));
+    TEST_CASE("segments") segment_cases(test_rng_seed(&rng, 5005));
+    TEST_CASE("polygons") polygon_cases(test_rng_seed(&rng, 5005));
+    TEST_CASE("polylines") polyline_cases(test_rng_seed(&rng, 5005));
+    TEST_CASE("huge") {
+        always_distance = 1; /* saturation and the widest values */
+        huge_cases(test_rng_seed(&rng, 5005));
+        always_distance = 0;
+    }
+    TEST_CASE("pool_overflow") pool_overflow_case();
 }

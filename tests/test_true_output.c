@@ -634,13 +634,9 @@ static void check_cocircular(test_rng_t *rng)
 
 void test_true_output(void)
 {
-    unsigned long before = test_failures();
     test_rng_t rng;
-    test_rng_seed(&rng, 2026);
-    check_lines(&rng);
-    check_grids(&rng);
-    check_random(&rng);
-    check_cocircular(&rng);
-    test_printf("true output: every builder and vor_insert, %s\n",
-                test_failures() == before ? "the true triangulation" : "FAILED");
+    TEST_CASE("lines") check_lines(test_rng_seed(&rng, 2026));
+    TEST_CASE("grids") check_grids(test_rng_seed(&rng, 2026));
+    TEST_CASE("random") check_random(test_rng_seed(&rng, 2026));
+    TEST_CASE("cocircular") check_cocircular(test_rng_seed(&rng, 2026));
 }

@@ -11,10 +11,19 @@
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself (also built with GCC and clang at -O1 to -Oz), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
-# the build-system manifests, the CMake package in consumer programs
-# (tools/test-consumers.sh), the SPDX licence line of every file, and the
-# docs (make docs without a warning, every Markdown link). Each suite ends with "N passed, N failed"; a suite that does not
+# the build-system manifests, the layer rule of src/ (tools/check-layers.py),
+# the CMake package in consumer programs (tools/test-consumers.sh), the SPDX
+# licence line of every file, and the docs (make docs without a warning,
+# every Markdown link). Each suite ends with "N passed, N failed"; a suite that does not
 # build, does not finish, or prints no such line counts as one failure.
+#
+# ONLY=PATTERN[,PATTERN...] (make test ONLY=...) runs part of it: a pattern
+# that is a suite's name below runs that suite whole; the other patterns
+# select test cases ("dynamic", "mesh/brute_force": docs/testing.md) in
+# the suites built on the test harness (the test suite, the fault
+# injection and configuration tests on every port), and such a suite
+# where they select no case is skipped. A skipped suite counts neither as
+# passed nor as failed; ONLY that selects nothing fails.
 set -u
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -22,11 +31,56 @@ logs=build/test-logs
 mkdir -p "$logs"
 total_passed=0
 total_failed=0
+cases_passed=0 # in the suites with named cases
+cases_failed=0
 broken=()
+skipped=()
+
+only=${ONLY:-}
+unset ONLY LIST # each make below is given its own
+targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
+suites="host host-sanitize host-faults host-config host-limb32 cli fuzz coverage harness"
+suites="$suites freestanding linking memory-tables manifests layers consumers spdx docs"
+for target in $targets; do
+    suites="$suites $target $target-faults $target-config"
+done
+cases_only= # the patterns of ONLY that name no suite
+used_patterns=" " # those that selected a case in some suite
+for pattern in ${only//,/ }; do
+    case " $suites " in
+        *" $pattern "*) ;;
+        *) cases_only="$cases_only${cases_only:+,}$pattern" ;;
+    esac
+done
+
+# wanted NAME: does ONLY ask for suite NAME whole (or is it not set)?
+wanted() {
+    [ -z "$only" ] || [[ ",$only," == *",$1,"* ]]
+}
+
+# skip NAME: a suite that ONLY leaves out.
+skip() {
+    skipped+=("$1")
+}
+
+# patterns_for PROGRAM: the case patterns of ONLY that may select cases of
+# PROGRAM: the fault injection test's are all named faults/..., the
+# configuration contract's config/..., the test suite's the others.
+patterns_for() {
+    local pattern out=
+    for pattern in ${cases_only//,/ }; do
+        case $1-${pattern%%/*} in
+            fault-tests-faults | config-tests-config) ;;
+            tests-faults | tests-config | fault-tests-* | config-tests-*) continue ;;
+        esac
+        out="$out${out:+,}$pattern"
+    done
+    echo "$out"
+}
 
 # record NAME LOG STATUS: add the suite's closing counts to the totals.
 record() {
-    local name=$1 log=$2 status=$3 counts passed failed
+    local name=$1 log=$2 status=$3 counts passed failed cases
     counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
     if [ -z "$counts" ]; then
         echo "$name: did not run to the end (exit $status); last lines of $log:"
@@ -43,7 +97,15 @@ record() {
         failed=1
     fi
     grep -E '^(FAIL|fatal)' "$log" | head -n 20 | sed "s/^/$name: /"
-    echo "$name: $passed passed, $failed failed"
+    cases=$(grep -E '^cases: [0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+    if [ -n "$cases" ]; then # a suite with named cases
+        set -- ${cases//,/}
+        cases_passed=$((cases_passed + $2))
+        cases_failed=$((cases_failed + $4))
+        echo "$name: $passed passed, $failed failed ($cases)"
+    else
+        echo "$name: $passed passed, $failed failed"
+    fi
     total_passed=$((total_passed + passed))
     total_failed=$((total_failed + failed))
     [ "$failed" = 0 ] || broken+=("$name")
@@ -51,17 +113,30 @@ record() {
 
 # suite NAME PROGRAM MAKE-ARGS...: build and run a test program of one port
 # (PROGRAM tests: the test suite; fault-tests: the fault injection test;
-# config-tests: the configuration contract).
+# config-tests: the configuration contract), all its cases or those ONLY
+# selects.
 suite() {
-    local name=$1 program=$2 log="$logs/$1.log" status
+    local name=$1 program=$2 log="$logs/$1.log" status filter= pattern
     shift 2
-    if make -s -j"$jobs" "$@" "$program" >"$log" 2>&1; then
-        make -s "$@" "run-$program" >>"$log" 2>&1
+    if ! wanted "$name"; then
+        filter=$(patterns_for "$program")
+        [ -n "$filter" ] || { skip "$name"; return; }
+    fi
+    if make -s -j"$jobs" "$@" ONLY="$filter" "$program" >"$log" 2>&1; then
+        make -s "$@" ONLY="$filter" "run-$program" >>"$log" 2>&1
         status=$?
     else
         status=$?
         echo "(build failed)" >>"$log"
     fi
+    if [ -n "$filter" ] && grep -q '^no case matches' "$log"; then
+        skip "$name"
+        return
+    fi
+    for pattern in ${filter//,/ }; do
+        grep -qx "note: ONLY pattern '$pattern' matches no case here" "$log" ||
+            used_patterns="$used_patterns $pattern "
+    done
     record "$name" "$log" "$status"
 }
 
@@ -73,26 +148,34 @@ suite host-limb32 tests PORT=host SANITIZE=1 LIMB_BITS=32
 
 # The host command-line tool and examples/contours, against a Python
 # big-integer oracle.
-cli_log="$logs/cli.log"
-if make -s -j"$jobs" PORT=host all build/host/example-contours >"$cli_log" 2>&1; then
-    python3 tests/cli/test_cli.py build/host/vor >>"$cli_log" 2>&1
-    record cli "$cli_log" $?
+if wanted cli; then
+    cli_log="$logs/cli.log"
+    if make -s -j"$jobs" PORT=host all build/host/example-contours >"$cli_log" 2>&1; then
+        python3 tests/cli/test_cli.py build/host/vor >>"$cli_log" 2>&1
+        record cli "$cli_log" $?
+    else
+        record cli "$cli_log" 1
+    fi
 else
-    record cli "$cli_log" 1
+    skip cli
 fi
 
 # The libFuzzer harnesses (tests/fuzz/): every committed corpus and
 # regression input replayed, then each harness fuzzed for FUZZ_BRIEF
 # seconds (make fuzz runs them for long).
-fuzz_log="$logs/fuzz.log"
-if make -s -j"$jobs" fuzz-harnesses >"$fuzz_log" 2>&1; then
-    tools/fuzz.sh --brief "${FUZZ_BRIEF:-15}" >>"$fuzz_log" 2>&1
-    record fuzz "$fuzz_log" $?
+if wanted fuzz; then
+    fuzz_log="$logs/fuzz.log"
+    if make -s -j"$jobs" fuzz-harnesses >"$fuzz_log" 2>&1; then
+        tools/fuzz.sh --brief "${FUZZ_BRIEF:-15}" >>"$fuzz_log" 2>&1
+        record fuzz "$fuzz_log" $?
+    else
+        record fuzz "$fuzz_log" 1
+    fi
 else
-    record fuzz "$fuzz_log" 1
+    skip fuzz
 fi
 
-for target in cortex-m0 cortex-m3 cortex-m4f riscv32; do
+for target in $targets; do
     suite "$target" tests PORT="$target"
     suite "$target-faults" fault-tests PORT="$target"
     suite "$target-config" config-tests PORT="$target"
@@ -100,19 +183,24 @@ done
 
 # examples/coverage on the emulated Cortex-M3: Lloyd coverage control with
 # vor_cell_centroid and vor_move, checked against brute-force samples.
-coverage_log="$logs/coverage.log"
-mkdir -p build
-if make -s -j"$jobs" PORT=cortex-m3 build/cortex-m3/example-coverage.elf >"$coverage_log" 2>&1; then
-    make -s PORT=cortex-m3 run-example-coverage >>"$coverage_log" 2>&1
-    record coverage "$coverage_log" $?
+if wanted coverage; then
+    coverage_log="$logs/coverage.log"
+    mkdir -p build
+    if make -s -j"$jobs" PORT=cortex-m3 build/cortex-m3/example-coverage.elf >"$coverage_log" 2>&1; then
+        make -s PORT=cortex-m3 run-example-coverage >>"$coverage_log" 2>&1
+        record coverage "$coverage_log" $?
+    else
+        record coverage "$coverage_log" 1
+    fi
 else
-    record coverage "$coverage_log" 1
+    skip coverage
 fi
 
-# The harness itself: on every port a failing check and a trap must end
-# the run with a non-zero status, so that no broken target can pass.
+# The harness itself: on every port a failing check, a failing or empty
+# named case, a filter that selects no case and a trap must end the run
+# with a non-zero status, so that no broken target can pass.
 harness() {
-    local log="$logs/harness.log" passed=0 failed=0 port status
+    local log="$logs/harness.log" passed=0 failed=0 port status out
     : >"$log"
     for port in host cortex-m0 cortex-m3 cortex-m4f riscv32; do
         # make exits 2 for any failed program and names its status as "Error N"
@@ -122,6 +210,30 @@ harness() {
             passed=$((passed + 1))
         else
             echo "FAIL $port: a failing check ended with status $status" >>"$log"
+            failed=$((failed + 1))
+        fi
+        # named cases under a filter: the failing and the empty case fail
+        # by name, the case left out does not run
+        out=$logs/harness-$port.out
+        make -s PORT="$port" run-selftest-cases >"$out" 2>&1
+        status=$(grep -o 'Error [0-9]*' "$out" | tail -n 1)
+        if [ "$status" = "Error 1" ] && grep -qx 'FAIL case selftest/fails: 1 of 1 checks failed' "$out" &&
+            grep -qx 'FAIL case selftest/empty ran no check' "$out" &&
+            grep -qx 'cases: 1 passed, 2 failed' "$out" && grep -qx '1 passed, 2 failed' "$out" &&
+            ! grep -q 'filter leaves out' "$out"; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL $port: named cases under a filter ended with status $status" >>"$log"
+            failed=$((failed + 1))
+        fi
+        # a filter that selects no case fails
+        make -s PORT="$port" run-selftest-no_case >"$out" 2>&1
+        status=$(grep -o 'Error [0-9]*' "$out" | tail -n 1)
+        if [ "$status" = "Error 1" ] && grep -qx 'no case matches ONLY=selftest/missing' "$out" &&
+            grep -qx '0 passed, 1 failed' "$out"; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL $port: a filter that selects no case ended with status $status" >>"$log"
             failed=$((failed + 1))
         fi
         make -s PORT="$port" run-selftest-fault >"$logs/harness-$port.out" 2>&1
@@ -140,7 +252,7 @@ harness() {
     echo "$passed passed, $failed failed" >>"$log"
     record harness "$log" 0
 }
-harness
+if wanted harness; then harness; else skip harness; fi
 
 # The freestanding check, and a proof that it catches what it looks for.
 freestanding() {
@@ -213,35 +325,65 @@ freestanding() {
     echo "$passed passed, $failed failed" >>"$log"
     record freestanding "$log" 0
 }
-freestanding
+if wanted freestanding; then freestanding; else skip freestanding; fi
 
 # A firmware links only what it calls: the bench/size/ programs, linked
 # at -Os with --gc-sections, keep only the library files of their feature
 # set (no divide and conquer under vor_build, no other metric under
 # vor_raster_euclid, no geometry under the queries).
-linking_log="$logs/linking.log"
-tools/size-features.sh --check cortex-m0 cortex-m3 riscv32 >"$linking_log" 2>&1
-record linking "$linking_log" $?
+if wanted linking; then
+    linking_log="$logs/linking.log"
+    tools/size-features.sh --check cortex-m0 cortex-m3 riscv32 >"$linking_log" 2>&1
+    record linking "$linking_log" $?
+else
+    skip linking
+fi
 
 # docs/benchmarks.md's stack and RAM budget tables, against the call graphs,
 # the compilers and VOR_ARENA_BYTES they are computed from.
-memory_log="$logs/memory-tables.log"
-python3 tools/memory-tables.py --check docs/benchmarks.md >"$memory_log" 2>&1
-record memory-tables "$memory_log" $?
+if wanted memory-tables; then
+    memory_log="$logs/memory-tables.log"
+    python3 tools/memory-tables.py --check docs/benchmarks.md >"$memory_log" 2>&1
+    record memory-tables "$memory_log" $?
+else
+    skip memory-tables
+fi
 
 # The build-system manifests (CMake, Zephyr, ESP-IDF, PlatformIO) name
 # files that exist, the version of vor.h and every vor_config.h option.
-python3 tools/check-manifests.py >"$logs/manifests.log" 2>&1
-record manifests "$logs/manifests.log" $?
+if wanted manifests; then
+    python3 tools/check-manifests.py >"$logs/manifests.log" 2>&1
+    record manifests "$logs/manifests.log" $?
+else
+    skip manifests
+fi
 
 # vor as a CMake package (add_subdirectory, find_package after an install)
 # on the host and on the emulated Cortex-M3.
-tools/test-consumers.sh >"$logs/consumers.log" 2>&1
-record consumers "$logs/consumers.log" $?
+if wanted consumers; then
+    tools/test-consumers.sh >"$logs/consumers.log" 2>&1
+    record consumers "$logs/consumers.log" $?
+else
+    skip consumers
+fi
+
+# The layer rule of docs/design.md: src/'s #include lines point one way
+# and every cross-part call goes through a header the caller includes;
+# --self-test shows each kind of break is caught.
+if wanted layers; then
+    python3 tools/check-layers.py --self-test >"$logs/layers.log" 2>&1
+    record layers "$logs/layers.log" $?
+else
+    skip layers
+fi
 
 # Every source, header, script and build file names its licence.
-tools/check-spdx.sh >"$logs/spdx.log" 2>&1
-record spdx "$logs/spdx.log" $?
+if wanted spdx; then
+    tools/check-spdx.sh >"$logs/spdx.log" 2>&1
+    record spdx "$logs/spdx.log" $?
+else
+    skip spdx
+fi
 
 # The API reference (make docs: Doxygen over include/*.h) builds without
 # a warning, and every relative link and #anchor of the Markdown docs
@@ -269,10 +411,20 @@ docs() {
     echo "$passed passed, $failed failed" >>"$log"
     record docs "$log" 0
 }
-docs
+if wanted docs; then docs; else skip docs; fi
 
+for pattern in ${cases_only//,/ }; do
+    if [[ "$used_patterns" != *" $pattern "* ]]; then
+        echo "ONLY: '$pattern' names no suite and selects no case"
+        total_failed=$((total_failed + 1))
+    fi
+done
+if [ ${#skipped[@]} -gt 0 ]; then
+    echo "skipped (ONLY=$only selects nothing in them): ${skipped[*]}"
+fi
 if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"
 fi
+echo "cases: $cases_passed passed, $cases_failed failed"
 echo "total: $total_passed passed, $total_failed failed"
 [ "$total_failed" = 0 ]

@@ -12,13 +12,23 @@ void config_tracker_edges(const char *name);
 void config_index_bits(const char *name);
 void config_sites_per_bucket(const char *name);
 
+/* The case filter and flags (the Makefile's ONLY, V and LIST). */
+#ifndef TEST_ONLY
+#define TEST_ONLY ""
+#endif
+#ifndef TEST_MODE
+#define TEST_MODE 0u
+#endif
+
 int main(void)
 {
     vor_port_init();
-    config_same("same options as the library");
-    config_tracker_edges("VOR_TRACKER_EDGES 12 against 24");
-    config_index_bits("VOR_INDEX_BITS other than the library's");
-    config_sites_per_bucket("VOR_SITES_PER_BUCKET 16 against 4");
-    test_summary();
-    return test_failures() == 0 ? 0 : 1;
+    test_select(TEST_ONLY, TEST_MODE);
+    TEST_CASE("config/same") config_same("same options as the library");
+    TEST_CASE("config/tracker_edges") config_tracker_edges("VOR_TRACKER_EDGES 12 against 24");
+    TEST_CASE("config/index_bits") config_index_bits("VOR_INDEX_BITS other than the library's");
+    TEST_CASE("config/sites_per_bucket") {
+        config_sites_per_bucket("VOR_SITES_PER_BUCKET 16 against 4");
+    }
+    return test_finish();
 }
