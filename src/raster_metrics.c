@@ -371,10 +371,10 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
     for (uint32_t i = 0; i < count; i++) {
         const vor_point_t *a = &p[i], *b = &p[i + 1u == count ? 0u : i + 1u];
         if (a->y <= q->y) {
-            if (b->y > q->y && vor_orient2d(a, b, q, NULL) > 0) {
+            if (b->y > q->y && vor_orient2d(*a, *b, *q) > 0) {
                 winding++; /* an upward edge with q on its left */
             }
-        } else if (b->y <= q->y && vor_orient2d(a, b, q, NULL) < 0) {
+        } else if (b->y <= q->y && vor_orient2d(*a, *b, *q) < 0) {
             winding--; /* a downward edge with q on its right */
         }
     }
@@ -1143,13 +1143,14 @@ static void distances(const void *state, uint32_t j, const vor__run_t *runs, uin
 /* ------------------------------------------------------- entry point */
 
 int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-               const vor_raster_output_t *out, void *work, size_t work_bytes)
+               const vor_raster_output_t *out, const vor_raster_options_t *options,
+               void *work, size_t work_bytes)
 {
     if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
-        return vor_raster_euclid(frame, sites, out, work, work_bytes);
+        return vor_raster_euclid(frame, sites, out, options, work, work_bytes);
     }
     vor__raster_t r;
-    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
+    int status = vor__raster_check(&r, frame, sites, out, options, work, work_bytes);
     if (status != VOR_OK) {
         return status;
     }

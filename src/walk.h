@@ -102,7 +102,7 @@ static inline int vor__walk_compare(vor__walk_t *w, const vor_point_t *s, uint32
     }
     if (w->goal == VOR__WALK_POINT) {
         return w->narrow ? vor__narrow_closer(ex, ey, at, &s[n])
-                         : vor_closer(w->q, &s[n], at, NULL);
+                         : vor__closer_sign(w->q, &s[n], at, NULL);
     }
     return (s[n].y < s[best].y || (s[n].y == s[best].y && s[n].x < s[best].x)) ? -1 : 1;
 }

@@ -11,6 +11,7 @@ void config_same(const char *name);
 void config_tracker_edges(const char *name);
 void config_index_bits(const char *name);
 void config_sites_per_bucket(const char *name);
+void config_stats(const char *name);
 
 int main(void)
 {
@@ -19,6 +20,7 @@ int main(void)
     config_tracker_edges("VOR_TRACKER_EDGES 12 against 24");
     config_index_bits("VOR_INDEX_BITS other than the library's");
     config_sites_per_bucket("VOR_SITES_PER_BUCKET 16 against 4");
+    config_stats("VOR_STATS 1 against 0");
     test_summary();
     return test_failures() == 0 ? 0 : 1;
 }

@@ -148,10 +148,11 @@ static void op_build(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int di
         points[i] = fuzz_point(r, previous);
     snapshot(m);
     int result;
-    if (divide)
-        result = vor_build_dc(&m->d, points, n, (enum vor_dc_split)(how % 3u), duplicate_of);
-    else {
-        vor_build_options_t options = {(enum vor_order)(how % 3u)};
+    if (divide) {
+        vor_build_options_t options = {VOR_ORDER_QUADTREE, (enum vor_dc_split)(how % 3u), 0};
+        result = vor_build_dc(&m->d, points, n, &options, duplicate_of);
+    } else {
+        vor_build_options_t options = {(enum vor_order)(how % 3u), VOR_DC_QUADTREE, 0};
         result = vor_build(&m->d, points, n, (how & 4u) ? NULL : &options, duplicate_of);
     }
     int bad_mode = how % 3u == 2u && (divide || !(how & 4u));
@@ -173,8 +174,8 @@ static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int n
     uint32_t hint = near ? draw_hint(r, m) : VOR_NO_HINT;
     uint32_t id = 0xdeadbeefu;
     snapshot(m);
-    int result = near ? vor_insert_near(&m->d, p.x, p.y, hint, &id)
-                      : vor_insert(&m->d, p.x, p.y, &id);
+    int result = near ? vor_insert_near(&m->d, p, hint, &id)
+                      : vor_insert(&m->d, p, &id);
     uint32_t first = site_at(m, p);
     if (near && !hint_valid(m, hint)) {
         FUZZ_REQUIRE(result == VOR_ERR_ARG, "insert_near: a bad hint was accepted");
@@ -202,7 +203,7 @@ static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t n = brute_order(m, q.x, q.y, order);
     uint32_t id = 0xdeadbeefu;
     snapshot(m);
-    int result = vor_nearest(&m->d, q.x, q.y, hint, &id);
+    int result = vor_nearest(&m->d, q, hint, &id);
     FUZZ_REQUIRE(unchanged(m), "nearest changed the diagram");
     if (!hint_valid(m, hint) || n == 0) {
         FUZZ_REQUIRE(result < 0 && id == 0xdeadbeefu, "nearest: bad hint or empty accepted");
@@ -223,7 +224,7 @@ static void op_nearest_k(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t n = brute_order(m, q.x, q.y, order);
     memset(got, 0xa5, sizeof got);
     snapshot(m);
-    int result = vor_nearest_k(&m->d, q.x, q.y, hint, k, got, &found);
+    int result = vor_nearest_k(&m->d, q, hint, k, got, &found);
     FUZZ_REQUIRE(unchanged(m), "nearest_k changed the diagram");
     if (!hint_valid(m, hint) || n == 0) {
         FUZZ_REQUIRE(result < 0 && found == 0xdeadbeefu && got[0] == 0xa5a5a5a5u,
@@ -245,7 +246,7 @@ static void op_track(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
         vor_point_t q = fuzz_point(r, previous);
         uint32_t n = brute_order(m, q.x, q.y, order);
         uint32_t id = 0xdeadbeefu;
-        int result = vor_track(&m->tracker, q.x, q.y, &id);
+        int result = vor_track(&m->tracker, q, &id);
         if (n == 0)
             FUZZ_REQUIRE(result == VOR_ERR_EMPTY && id == 0xdeadbeefu, "track on empty");
         else
@@ -340,7 +341,7 @@ static void op_move(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
         p = m->point[fuzz_u8(r) % m->count];
     uint32_t existing = 0xdeadbeefu, other = site_at(m, p);
     snapshot(m);
-    int result = vor_move(&m->d, id, p.x, p.y, &existing);
+    int result = vor_move(&m->d, id, p, &existing);
     if (!is_site(m, id)) {
         FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "move: a non-site accepted");
         return;

@@ -42,9 +42,8 @@ const char cli_delaunay_help[] =
 int cli_delaunay(int argc, char **argv)
 {
     bool stats = false;
-    vor_build_options_t options = {VOR_ORDER_QUADTREE};
+    vor_build_options_t options = {VOR_ORDER_QUADTREE, VOR_DC_QUADTREE, 0};
     bool dc = false; /* vor_build_dc instead of vor_build */
-    enum vor_dc_split split = VOR_DC_QUADTREE;
     const char *path = NULL;
     for (int i = 0; i < argc; i++) {
         if (strcmp(argv[i], "--stats") == 0) {
@@ -57,10 +56,10 @@ int cli_delaunay(int argc, char **argv)
             dc = false;
         } else if (strcmp(argv[i], "--algo=dc") == 0) {
             dc = true;
-            split = VOR_DC_XSPLIT;
+            options.split = VOR_DC_XSPLIT;
         } else if (strcmp(argv[i], "--algo=dc-quadtree") == 0) {
             dc = true;
-            split = VOR_DC_QUADTREE;
+            options.split = VOR_DC_QUADTREE;
         } else if (path == NULL && (argv[i][0] != '-' || argv[i][1] == '\0')) {
             path = argv[i];
         } else if (path == NULL) {
@@ -82,7 +81,7 @@ int cli_delaunay(int argc, char **argv)
     vor_t d;
     void *arena = cli_diagram(&d, capacity);
     double start = cli_seconds();
-    int built = dc ? vor_build_dc(&d, sites, n, split, duplicate_of)
+    int built = dc ? vor_build_dc(&d, sites, n, &options, duplicate_of)
                    : vor_build(&d, sites, n, &options, duplicate_of);
     if (built != VOR_OK) {
         cli_library_error(dc ? "vor_build_dc" : "vor_build", built);
@@ -100,7 +99,9 @@ int cli_delaunay(int argc, char **argv)
     if (stats) {
         vor_memory_t memory;
         vor_memory(&d, &memory);
-        const vor_predicate_stats_t *s = &d.stats;
+        vor_stats_t counters; /* this tool's library counts (VOR_STATS) */
+        vor_stats(&d, &counters);
+        const vor_stats_t *s = &counters;
         fprintf(stderr, "sites=%u triangles=%zu bytes=%zu bytes_per_site=%u.%02u seconds=%.6f\n",
                 n, count, memory.used_bytes, memory.bytes_per_site_x100 / 100u,
                 memory.bytes_per_site_x100 % 100u, seconds);
