@@ -49,8 +49,8 @@
  * queries, more memory (4 / VOR_SITES_PER_BUCKET bytes per site with
  * 32-bit ids, half that with 16-bit ones). A power of two keeps the
  * macro's division a shift. At 4, cold queries at 10^5 and 10^6 sites
- * keep pace with a kd-tree (docs/benchmarks.md); 16 saves 0.75 bytes a
- * site on the host for walks about twice as long. */
+ * keep pace with a kd-tree; 16 saves memory for walks about twice as long
+ * (docs/benchmarks.md has both). */
 #ifndef VOR_SITES_PER_BUCKET
 #define VOR_SITES_PER_BUCKET 4u
 #endif
