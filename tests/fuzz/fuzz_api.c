@@ -290,22 +290,30 @@ static void op_cells(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     int inverted = box.x0 > box.x1 || box.y0 > box.y1;
     vor_cell_iter_t it;
     uint32_t site, count, cells = 0, last = 0;
-    vor_cells_begin(&it, &m->d, &box);
+    int begun = vor_cells_begin(&it, &m->d, &box);
+    FUZZ_REQUIRE(begun == (inverted ? VOR_ERR_ARG : VOR_OK), "cells: begin");
+    /* next is 1 or 0, and a while over it ends: the guard only bounds
+     * the retries with larger buffers */
     for (uint32_t guard = 0; guard < 2u * MOST_SITES + 2u; guard++) {
         int result = vor_cells_next(&it, &site, vertices, capacity, &count);
-        if (result == 0)
-            break;
-        if (inverted) {
-            FUZZ_REQUIRE(result == VOR_ERR_ARG, "cells: inverted box accepted");
-            break;
-        }
-        if (result == VOR_ERR_BUFFER) {
-            FUZZ_REQUIRE(count > capacity && count <= VOR_CELL_MAX_VERTICES(MOST_SITES),
+        FUZZ_REQUIRE(result == 0 || result == 1, "cells: next neither 1 nor 0");
+        if (result == 0) {
+            int why = vor_cells_error(&it);
+            if (inverted) {
+                FUZZ_REQUIRE(why == VOR_ERR_ARG, "cells: inverted box accepted");
+                break;
+            }
+            if (why != VOR_ERR_BUFFER) {
+                FUZZ_REQUIRE(why == VOR_OK, "cells: wrong reason to stop");
+                break;
+            }
+            FUZZ_REQUIRE(count > capacity && count <= VOR_CELL_MAX_VERTICES(MOST_SITES) &&
+                             is_site(m, site),
                          "cells: wrong size needed");
             capacity = count;
             continue;
         }
-        FUZZ_REQUIRE(result == 1 && is_site(m, site) && (cells == 0 || site > last),
+        FUZZ_REQUIRE(!inverted && is_site(m, site) && (cells == 0 || site > last),
                      "cells: wrong site");
         for (uint32_t i = 0; i < count; i++)
             FUZZ_REQUIRE(vertices[i].x >= box.x0 && vertices[i].x <= box.x1 &&
@@ -445,7 +453,7 @@ static void op_triangles(model_t *m)
     uint32_t n = distinct_sites(m), h = brute_hull_sites(m, &collinear), ids[3];
     uint32_t triangles = 0;
     vor_triangle_iter_t it;
-    vor_triangles_begin(&it, &m->d);
+    FUZZ_REQUIRE(vor_triangles_begin(&it, &m->d) == VOR_OK, "triangles: begin");
     while (vor_triangles_next(&it, ids)) {
         FUZZ_REQUIRE(is_site(m, ids[0]) && is_site(m, ids[1]) && is_site(m, ids[2]),
                      "triangles: not a site");
@@ -460,7 +468,7 @@ static void op_triangles(model_t *m)
 
     uint32_t site, hull = 0;
     vor_hull_iter_t hi;
-    vor_hull_begin(&hi, &m->d);
+    FUZZ_REQUIRE(vor_hull_begin(&hi, &m->d) == VOR_OK, "hull: begin");
     while (vor_hull_next(&hi, &site)) {
         FUZZ_REQUIRE(is_site(m, site), "hull: not a site");
         FUZZ_REQUIRE(++hull <= MOST_SITES, "hull: endless");
@@ -473,7 +481,7 @@ static void op_edges_neighbours(fuzz_reader_t *r, model_t *m)
     vor_edge_iter_t it;
     vor_edge_t edge;
     uint32_t edges = 0, neighbour;
-    vor_edges_begin(&it, &m->d);
+    FUZZ_REQUIRE(vor_edges_begin(&it, &m->d) == VOR_OK, "edges: begin");
     while (vor_edges_next(&it, &edge)) {
         FUZZ_REQUIRE(is_site(m, edge.sites[0]) && is_site(m, edge.sites[1]) &&
                          edge.sites[0] != edge.sites[1],
@@ -483,7 +491,8 @@ static void op_edges_neighbours(fuzz_reader_t *r, model_t *m)
     uint32_t site = m->count ? fuzz_u8(r) % (m->count + 1u) : fuzz_u8(r);
     vor_neighbour_iter_t ni;
     uint32_t seen = 0;
-    vor_neighbours_begin(&ni, &m->d, site);
+    FUZZ_REQUIRE(vor_neighbours_begin(&ni, &m->d, site) == (is_site(m, site) ? VOR_OK : VOR_ERR_ARG),
+                 "neighbours: begin");
     while (vor_neighbours_next(&ni, &neighbour)) {
         FUZZ_REQUIRE(is_site(m, site) && is_site(m, neighbour) && neighbour != site,
                      "neighbours: not a site");
