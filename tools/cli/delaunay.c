@@ -99,8 +99,8 @@ int cli_delaunay(int argc, char **argv)
     if (stats) {
         vor_memory_t memory;
         vor_memory(&d, &memory);
-        vor_stats_t counters; /* this tool's library counts (VOR_STATS) */
-        vor_stats(&d, &counters);
+        vor_stats_t counters = {0}; /* zeros from a library without VOR_STATS */
+        (void)vor_stats(&d, &counters);
         const vor_stats_t *s = &counters;
         fprintf(stderr, "sites=%u triangles=%zu bytes=%zu bytes_per_site=%u.%02u seconds=%.6f\n",
                 n, count, memory.used_bytes, memory.bytes_per_site_x100 / 100u,
