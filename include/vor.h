@@ -70,7 +70,7 @@
  *
  *       vor_tracker_t robot;                          // a moving query point:
  *       vor_tracker_begin(&robot, &d);                // caches its current cell
- *       vor_track(&robot, r, &id);                    // a few multiplies per cell edge
+ *       vor_track(&robot, r, &id);                    // a few multiplies a cell edge
  *
  *   THE CONVENTIONS, the same for every call:
  *   - Points are vor_point_t values; ids are uint32_t; outputs go through
@@ -84,14 +84,14 @@
  *     then closed); x_next returns 1 with an item or 0 at the end, never an
  *     error, so `while (x_next(&it, ...))` always ends. The cell iterator
  *     keeps why it stopped: vor_cells_error.
- *   Nothing is allocated: VOR_ARENA_BYTES(n) is the
- *   whole memory of n sites (Euler: 2n - 2 triangles), a compile-time
- *   constant, the same on a 64-bit host as on a microcontroller (16-bit
- *   ids unless VOR_INDEX_BITS says 32). Insertion is Sugihara and Iri's
- *   topology-oriented update:
- *   the structure stays a valid triangulation whatever the arithmetic
- *   does, and with these exact predicates it is the unique Delaunay
- *   triangulation under the perturbation. vor_validate checks every
+ *
+ *   Nothing is allocated: VOR_ARENA_BYTES(n) is the whole memory of n
+ *   sites (Euler: 2n - 2 triangles), a compile-time constant, the same on
+ *   a 64-bit host as on a microcontroller (16-bit ids unless
+ *   VOR_INDEX_BITS says 32). Insertion is Sugihara and Iri's
+ *   topology-oriented update: the structure stays a valid triangulation
+ *   whatever the arithmetic does, and with these exact predicates it is
+ *   the unique Delaunay triangulation under the perturbation. vor_validate checks every
  *   invariant. The iterators list the true Delaunay triangulation of the
  *   distinct sites, not that perturbed mesh: 2n - h - 2 triangles, none of
  *   zero area (none at all for collinear sites), and neighbours whose
