@@ -293,6 +293,15 @@ static void check_reads(void)
               vor_memory(&diagram, NULL) == VOR_ERR_ARG &&
               test_same_bytes(&memory, &memory_before, sizeof memory) && unchanged(),
           "memory: NULL");
+    vor_stats_t counters;
+    fill(&counters, sizeof counters, 0x34);
+    vor_stats_t counters_before = counters;
+    CHECK(vor_stats(NULL, &counters) == VOR_ERR_ARG && vor_stats(&diagram, NULL) == VOR_ERR_ARG &&
+              test_same_bytes(&counters, &counters_before, sizeof counters) && unchanged(),
+          "stats: NULL");
+    CHECK(vor_stats(&diagram, &counters) == VOR_OK && test_predicate_calls(&diagram) > 0u &&
+              unchanged(),
+          "stats: the test build counts");
 
     /* the perturbed predicates: 0, never an answer, for a NULL array or a
      * repeated index (points by value leave the others nothing to refuse) */

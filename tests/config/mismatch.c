@@ -102,5 +102,11 @@ void CONFIG_CASE(const char *name)
     }
     CHECK(err == VOR_OK && wrong == 0u, "%s: %u tracked answers wrong (err %d)", name, wrong,
           err);
+    /* the contract library counts nothing (VOR_STATS 0): nothing to read */
+    vor_stats_t counters;
+    fill(&counters, sizeof counters);
+    CHECK(vor_stats(&guarded_diagram.d, &counters) == VOR_ERR_ARG &&
+              changed(&counters, sizeof counters) == 0u,
+          "%s: vor_stats without VOR_STATS", name);
     CHECK(canaries_changed() == 0u, "%s: %u canary bytes overwritten", name, canaries_changed());
 }
