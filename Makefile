@@ -61,14 +61,24 @@ include tools/peer-bench/bench.mk
 WARNINGS := -Wall -Wextra -Werror -pedantic -Wconversion -Wsign-conversion \
             -Wcast-align -Wundef -Wshadow
 OPT := -O2
+# VOR_INDEX_BITS defaults to 16 everywhere; the host builds everything
+# with 32-bit ids, explicitly: its benchmarks and the CLI take more than
+# 32,767 sites, and the suite then covers both widths (the targets run it
+# with 16).
+WIDTH_DEFS := $(if $(filter host,$(PORT)),-DVOR_INDEX_BITS=32)
 LIB_CFLAGS := -std=c99 -ffreestanding $(WARNINGS) $(OPT) -ffunction-sections \
-              -fdata-sections -fstack-usage -Iinclude $(ARCH_CFLAGS) $(SAN_FLAGS) $(LIMB_FLAGS)
+              -fdata-sections -fstack-usage -Iinclude $(ARCH_CFLAGS) $(SAN_FLAGS) $(LIMB_FLAGS) \
+              $(WIDTH_DEFS)
 # Test builds of the library trap on a failed internal assertion.
 CHECKED_DEFS := '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)'
+# The tests, the fault tests and the benchmarks that count predicate calls
+# build the library and themselves with the counters (VOR_STATS).
+STATS_DEFS := -DVOR_STATS=1
 TEST_CFLAGS := -std=c99 $(WARNINGS) $(OPT) -ffunction-sections -fdata-sections \
                -Iinclude -Isrc -Iport -Itests -Itests/vectors $(ARCH_CFLAGS) $(SAN_FLAGS) \
-               $(LIMB_FLAGS)
-HOST_TOOL_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARNINGS) -O2 -Iinclude -Isrc
+               $(LIMB_FLAGS) $(WIDTH_DEFS)
+HOST_TOOL_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARNINGS) -O2 -Iinclude -Isrc \
+                    -DVOR_INDEX_BITS=32 -DVOR_STATS=1
 
 # sources.txt is the one list of library sources (CMake reads it too).
 LIB_SRCS := $(filter src/%.c,$(file < sources.txt))
@@ -103,24 +113,24 @@ $(B)/lib/%.o: src/%.c $(LIB_HDRS) | $(B)/lib
 	$(CC) $(LIB_CFLAGS) -c $< -o $@
 
 $(B)/checked/%.o: src/%.c $(LIB_HDRS) | $(B)/checked
-	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -c $< -o $@
+	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) $(STATS_DEFS) -c $< -o $@
 
 # Fault injection (tests/faults): predicates that lie, never in a release.
 $(B)/libvor-faulty.a: $(FAULTY_OBJS)
 	$(AR) rcs $@ $^
 
 $(B)/faulty/%.o: src/%.c $(LIB_HDRS) | $(B)/faulty
-	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) -DVOR_FAULT_INJECTION -c $< -o $@
+	$(CC) $(LIB_CFLAGS) $(CHECKED_DEFS) $(STATS_DEFS) -DVOR_FAULT_INJECTION -c $< -o $@
 
 $(B)/vor-fault-tests$(EXE): tests/faults/test_faults.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(B)/tests/select.stamp
-	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) $(STATS_DEFS) -DVOR_FAULT_INJECTION $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-faulty.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 fault-tests: $(B)/vor-fault-tests$(EXE)
 run-fault-tests: $(B)/vor-fault-tests$(EXE)
 	$(RUN) $<
 
 $(B)/tests/%.o: tests/%.c $(LIB_HDRS) $(wildcard tests/*.h tests/vectors/*.h) port/port.h | $(B)/tests
-	$(CC) $(TEST_CFLAGS) -c $< -o $@
+	$(CC) $(TEST_CFLAGS) $(STATS_DEFS) -c $< -o $@
 
 # The oracle's table is generated, never edited: rebuilt when the generator changes.
 $(GEN)/predicate_vectors.c: tools/gen_predicate_vectors.py tests/vectors/predicate_vectors.h
@@ -129,7 +139,7 @@ $(GEN)/predicate_vectors.c: tools/gen_predicate_vectors.py tests/vectors/predica
 	python3 tools/gen_predicate_vectors.py --out $@
 
 $(B)/tests/predicate_vectors.o: $(GEN)/predicate_vectors.c | $(B)/tests
-	$(CC) $(TEST_CFLAGS) -c $< -o $@
+	$(CC) $(TEST_CFLAGS) $(STATS_DEFS) -c $< -o $@
 
 vpath %.c $(sort $(dir $(PORT_SRCS)))
 vpath %.S $(sort $(dir $(PORT_SRCS)))
@@ -180,13 +190,14 @@ run-selftest-%: $(B)/selftest-%$(EXE)
 # build with VOR_TRACKER_EDGES=24. Each case changes one option.
 CONTRACT_LIB_DEFS := -DVOR_TRACKER_EDGES=24
 OTHER_INDEX_BITS := $(if $(filter host,$(PORT)),16,32)
-CONFIG_CASES := same tracker_edges index_bits sites_per_bucket
+CONFIG_CASES := same tracker_edges index_bits sites_per_bucket stats
 CONFIG_DEFS_same := $(CONTRACT_LIB_DEFS) -DCONFIG_EXPECT=VOR_OK
 CONFIG_DEFS_tracker_edges := -DCONFIG_EXPECT=VOR_ERR_CONFIG
 CONFIG_DEFS_index_bits := $(CONTRACT_LIB_DEFS) -DVOR_INDEX_BITS=$(OTHER_INDEX_BITS) \
                           -DCONFIG_EXPECT=VOR_ERR_CONFIG
 CONFIG_DEFS_sites_per_bucket := $(CONTRACT_LIB_DEFS) -DVOR_SITES_PER_BUCKET=16u \
                                 -DCONFIG_EXPECT=VOR_ERR_CONFIG
+CONFIG_DEFS_stats := $(CONTRACT_LIB_DEFS) $(STATS_DEFS) -DCONFIG_EXPECT=VOR_ERR_CONFIG
 CONTRACT_OBJS := $(LIB_SRCS:src/%.c=$(B)/contract/%.o)
 
 $(B)/libvor-contract.a: $(CONTRACT_OBJS)
@@ -195,8 +206,10 @@ $(B)/libvor-contract.a: $(CONTRACT_OBJS)
 $(B)/contract/%.o: src/%.c $(LIB_HDRS) | $(B)/contract
 	$(CC) $(LIB_CFLAGS) $(CONTRACT_LIB_DEFS) -c $< -o $@
 
+# (the case's width replaces the host's WIDTH_DEFS)
 $(B)/config/%.o: tests/config/mismatch.c $(LIB_HDRS) tests/test.h | $(B)/config
-	$(CC) $(TEST_CFLAGS) $(CONFIG_DEFS_$*) -DCONFIG_CASE=config_$* -c $< -o $@
+	$(CC) $(if $(filter index_bits,$*),$(filter-out $(WIDTH_DEFS),$(TEST_CFLAGS)),$(TEST_CFLAGS)) \
+	    $(CONFIG_DEFS_$*) -DCONFIG_CASE=config_$* -c $< -o $@
 
 $(B)/config-tests$(EXE): tests/config/main.c $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(B)/tests/select.stamp
 	$(CC) $(TEST_CFLAGS) $(SELECT_DEFS) $< $(CONFIG_CASES:%=$(B)/config/%.o) $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor-contract.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
@@ -208,11 +221,21 @@ run-config-tests: $(B)/config-tests$(EXE)
 $(B)/contract $(B)/config:
 	@mkdir -p $@
 
-# Benchmarks link the release library, like a user's firmware would.
+# Benchmarks link the release library, like a user's firmware would; the
+# two that count predicate calls link it built with the counters.
 BENCH_ROUNDS_host := 20000
 BENCH_CFLAGS := $(TEST_CFLAGS) -DBENCH_ROUNDS=$(or $(BENCH_ROUNDS_$(PORT)),8)
-$(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor.a
-	$(CC) $(BENCH_CFLAGS) $< $(B)/tests/harness.o $(PORT_OBJS) $(B)/libvor.a $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+BENCH_COUNTING := dynamic predicates
+bench_lib = $(if $(filter $(1),$(BENCH_COUNTING)),$(B)/libvor-stats.a,$(B)/libvor.a)
+$(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(PORT_OBJS) $$(call bench_lib,$$*)
+	$(CC) $(BENCH_CFLAGS) $(if $(filter $*,$(BENCH_COUNTING)),$(STATS_DEFS)) $< $(B)/tests/harness.o $(PORT_OBJS) $(call bench_lib,$*) $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+
+STATS_OBJS := $(LIB_SRCS:src/%.c=$(B)/stats/%.o)
+$(B)/libvor-stats.a: $(STATS_OBJS)
+	$(AR) rcs $@ $^
+
+$(B)/stats/%.o: src/%.c $(LIB_HDRS) | $(B)/stats
+	$(CC) $(LIB_CFLAGS) $(STATS_DEFS) -c $< -o $@
 
 run-bench-%: $(B)/bench-%$(EXE)
 	$(RUN) $<
@@ -227,10 +250,20 @@ run-example-%: $(B)/example-%$(EXE)
 
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)
-$(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) tools/png_write.h $(B)/libvor.a
-	gcc $(HOST_TOOL_CFLAGS) -Itools/cli $(CLI_SRCS) $(B)/libvor.a -o $@
+# It takes more than 32,767 sites and prints predicate counters (--stats):
+# its own build of the library, with 32-bit ids and VOR_STATS.
+CLI_LIB_OBJS := $(LIB_SRCS:src/%.c=$(B)/cli-lib/%.o)
+$(B)/libvor-cli.a: $(CLI_LIB_OBJS)
+	$(AR) rcs $@ $^
 
-$(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
+$(B)/cli-lib/%.o: src/%.c $(LIB_HDRS) | $(B)/cli-lib
+	gcc -std=c99 -ffreestanding $(WARNINGS) -O2 -ffunction-sections -fdata-sections -Iinclude \
+	    -DVOR_INDEX_BITS=32 -DVOR_STATS=1 -c $< -o $@
+
+$(B)/vor: $(CLI_SRCS) $(wildcard tools/cli/*.h) tools/png_write.h $(B)/libvor-cli.a
+	gcc $(HOST_TOOL_CFLAGS) -Itools/cli $(CLI_SRCS) $(B)/libvor-cli.a -o $@
+
+$(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port $(B)/stats $(B)/cli-lib:
 	@mkdir -p $@
 
 # On demand, before the first object: the port's compiler
@@ -238,7 +271,7 @@ $(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port:
 .PHONY: install-deps
 install-deps:
 	@tools/install-deps.sh $(if $(filter host,$(PORT)),host,toolchains)
-$(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port: | install-deps
+$(B)/lib $(B)/checked $(B)/faulty $(B)/tests $(B)/port $(B)/stats $(B)/cli-lib: | install-deps
 
 # The host programs that write PNGs require stb_image_write.h; when it is
 # missing this rule installs it (after install-deps: one apt-get at a time).

@@ -44,14 +44,14 @@ enum builder { INCREMENTAL, DC_XSPLIT, DC_QUADTREE };
 /* The counter delta of one build, or 0 on an error. */
 static uint64_t build(uint32_t n, enum vor_order order, enum builder builder)
 {
-    vor_build_options_t options = {order};
+    vor_build_options_t options = {order, (builder == DC_XSPLIT) ? VOR_DC_XSPLIT : VOR_DC_QUADTREE,
+                                   0};
     uint64_t start = vor_port_counter();
     if (vor_init(&diagram, arena, sizeof arena, n) != VOR_OK) {
         return 0u;
     }
     int err = (builder == INCREMENTAL) ? vor_build(&diagram, points, n, &options, NULL)
-              : vor_build_dc(&diagram, points, n,
-                             builder == DC_XSPLIT ? VOR_DC_XSPLIT : VOR_DC_QUADTREE, NULL);
+              : vor_build_dc(&diagram, points, n, &options, NULL);
     if (err != VOR_OK) {
         return 0u;
     }

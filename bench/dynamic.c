@@ -55,7 +55,7 @@ static uint64_t timed_moves(const uint32_t *site, const vor_point_t *to, bool *o
 {
     uint64_t start = vor_port_counter();
     for (uint32_t k = 0; k < OPS; k++) {
-        int err = vor_move(&diagram, site[k], to[k].x, to[k].y, NULL);
+        int err = vor_move(&diagram, site[k], to[k], NULL);
         *ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
     }
     return vor_port_counter() - start;
@@ -92,8 +92,7 @@ static uint64_t repeated_steps(test_rng_t *rng, uint32_t inserted, bool cached, 
     for (uint32_t k = 0; k < STEPPERS; k++) {
         do {
             site[k] = test_rng_u32(rng) % inserted;
-        } while (vor_move(&diagram, site[k], diagram.sites[site[k]].x,
-                          diagram.sites[site[k]].y, NULL) != VOR_OK); /* a removed id */
+        } while (vor_move(&diagram, site[k], diagram.sites[site[k]], NULL) != VOR_OK); /* a removed id */
     }
     uint64_t spent = 0;
     for (uint32_t step = 0; step < STEPS; step++) {
@@ -101,7 +100,7 @@ static uint64_t repeated_steps(test_rng_t *rng, uint32_t inserted, bool cached, 
             int32_t x = diagram.sites[site[k]].x + test_rng_range(rng, -10600, 10600);
             int32_t y = diagram.sites[site[k]].y + test_rng_range(rng, -10600, 10600);
             uint64_t start = vor_port_counter();
-            int err = vor_move(&diagram, site[k], x, y, NULL);
+            int err = vor_move(&diagram, site[k], (vor_point_t){x, y}, NULL);
             spent += vor_port_counter() - start;
             *ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
         }
@@ -128,7 +127,7 @@ int main(void)
     uint32_t inserted = 0;
     uint64_t start = vor_port_counter();
     for (uint32_t i = 0; i < SITES; i++) {
-        inserted += vor_insert(&diagram, points[i].x, points[i].y, NULL) == VOR_OK ? 1u : 0u;
+        inserted += vor_insert(&diagram, points[i], NULL) == VOR_OK ? 1u : 0u;
     }
     ok &= report("insert", SITES, vor_port_counter() - start) && inserted > 0u;
 
@@ -163,8 +162,7 @@ int main(void)
     for (uint32_t k = 0; k < OPS; k++) {
         do {
             site[k] = test_rng_u32(&rng) % inserted;
-        } while (vor_move(&diagram, site[k], diagram.sites[site[k]].x,
-                          diagram.sites[site[k]].y, NULL) != VOR_OK); /* a removed id */
+        } while (vor_move(&diagram, site[k], diagram.sites[site[k]], NULL) != VOR_OK); /* a removed id */
         to[k].x = diagram.sites[site[k]].x + (int32_t)(test_rng_u32(&rng) % 21u) - 10;
         to[k].y = diagram.sites[site[k]].y + (int32_t)(test_rng_u32(&rng) % 21u) - 10;
     }
@@ -198,7 +196,7 @@ int main(void)
             int32_t y = diagram.sites[i].y + test_rng_range(&rng, -3, 3);
             uint32_t calls = test_predicate_calls(&diagram);
             start = vor_port_counter();
-            int err = vor_move(&diagram, i, x, y, NULL);
+            int err = vor_move(&diagram, i, (vor_point_t){x, y}, NULL);
             spent = vor_port_counter() - start;
             ok &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
             loop += spent;

@@ -94,13 +94,13 @@ static uint64_t render(const vor_raster_sites_t *sites, const vor_raster_frame_t
     out.flush = flush;
     out.user = s;
     out.palette565 = palette;
-    out.method = method;
+    vor_raster_options_t options = {method};
     uint64_t start = vor_port_counter();
     __asm__ volatile("" ::: "memory");
-    int err = vor_raster(frame, sites, &out, work, sizeof work);
+    int err = vor_raster(frame, sites, &out, &options, work, sizeof work);
     __asm__ volatile("" ::: "memory");
     uint64_t spent = vor_port_counter() - start;
-    return (err == VOR_OK || (err == 1 && s->stop_rows != 0u)) ? spent : 0u;
+    return (err == VOR_OK || (err == VOR_ERR_STOPPED && s->stop_rows != 0u)) ? spent : 0u;
 }
 
 static void print_cost(const char *label, uint64_t spent, uint64_t pixels, int host)

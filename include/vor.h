@@ -11,7 +11,8 @@
  *
  * EXACT PREDICATES
  *   Every geometric decision in vor is one of three signs, computed exactly
- *   with multi-word integers:
+ *   with multi-word integers. Points are passed by value (vor_point_t), as
+ *   in every call of the library, so no answer can stand for an error:
  *
  *     vor_orient2d(a, b, c)     > 0  a, b, c turn counterclockwise
  *                               = 0  collinear
@@ -27,13 +28,14 @@
  *   small, 128-bit products when they fit int32, and full multi-word width
  *   (133-bit results for incircle) otherwise. The widths are fixed by
  *   bounds, not by error estimates, so there is no fallback that could
- *   miss: every result is exact. Pass a vor_predicate_stats_t to count how
- *   often each tier ran, or NULL.
+ *   miss: every result is exact. A build with VOR_STATS (vor_config.h;
+ *   benchmarks and tests) counts the tiers a diagram's calls ran, read
+ *   with vor_stats.
  *
  * SYMBOLIC PERTURBATION
- *   The _sos variants ("simulation of simplicity") never return 0. They take
- *   an array of sites and indices into it; site i is treated as if it were
- *   moved to
+ *   The _sos variants ("simulation of simplicity") never return 0 for valid
+ *   arguments. They take an array of sites and indices into it; site i is
+ *   treated as if it were moved to
  *
  *       (x_i + eps^(4 * 16^i),  y_i + eps^(16^i))
  *
@@ -46,39 +48,55 @@
  *   Only the order of the indices matters, never their values.
  *   Identical points with different indices are separated too, but the
  *   diagram builders report them as duplicates instead of relying on it.
+ *   Since 0 is never an answer, it is the _sos calls' one error value (a
+ *   NULL array, two equal indices).
  *
  * THE DIAGRAM
  *   A vor_t holds the Delaunay triangulation of its sites (the dual of
  *   their Voronoi diagram) in one arena the caller provides:
  *
- *       static uint8_t arena[VOR_ARENA_BYTES(500)]    // 32.45 B/site with
- *           __attribute__((aligned(4)));              // 16-bit ids; 4-aligned
+ *       static uint8_t arena[VOR_ARENA_BYTES(500)]    // 4-aligned
+ *           __attribute__((aligned(4)));
  *       vor_t d;
  *       vor_init(&d, arena, sizeof arena, 500);       // or VOR_ERR_*
  *       vor_build(&d, points, n, NULL, duplicate_of); // site i = points[i]
- *       vor_insert(&d, x, y, &id);                    // one more site
- *       vor_move(&d, id, x2, y2, NULL);               // same id, new place
+ *       vor_point_t p = {x, y};
+ *       vor_insert(&d, p, &id);                       // one more site
+ *       vor_move(&d, id, p2, NULL);                   // same id, new place
  *       vor_motion_attach(&d, cache, sizeof cache);   // cheap small moves
  *       vor_remove(&d, id);                           // id freed for reuse
- *       vor_nearest(&d, qx, qy, VOR_NO_HINT, &id);    // exact, ties to smaller id
- *       vor_nearest_k(&d, qx, qy, hint, k, ids, &found); // k nearest, in order
+ *       vor_nearest(&d, q, VOR_NO_HINT, &id);         // exact, ties to smaller id
+ *       vor_nearest_k(&d, q, hint, k, ids, &found);   // k nearest, in order
  *
  *       vor_tracker_t robot;                          // a moving query point:
  *       vor_tracker_begin(&robot, &d);                // caches its current cell
- *       vor_track(&robot, rx, ry, &id);               // ~2 multiplies per cell edge
+ *       vor_track(&robot, r, &id);                    // a few multiplies a cell edge
  *
- *   Every call returns VOR_OK or a negative enum vor_error, and a failing
- *   call changes nothing. Nothing is allocated: VOR_ARENA_BYTES(n) is the
- *   whole memory of n sites (Euler: 2n - 2 triangles), a compile-time
- *   constant. Insertion is Sugihara and Iri's topology-oriented update:
- *   the structure stays a valid triangulation whatever the arithmetic
- *   does, and with these exact predicates it is the unique Delaunay
- *   triangulation under the perturbation. vor_validate checks every
+ *   THE CONVENTIONS, the same for every call:
+ *   - Points are vor_point_t values; ids are uint32_t; outputs go through
+ *     pointers given last.
+ *   - Every call returns VOR_OK or a negative enum vor_error, and a failing
+ *     call changes nothing.
+ *   - Options are a const pointer to an options struct (vor_build_options_t,
+ *     vor_raster_options_t): NULL, or a zero-initialised struct, means the
+ *     defaults, and a field added later keeps the old behaviour at 0.
+ *   - Iterators: x_begin returns VOR_OK or VOR_ERR_ARG (the iterator is
+ *     then closed); x_next returns 1 with an item or 0 at the end, never an
+ *     error, so `while (x_next(&it, ...))` always ends. The cell iterator
+ *     keeps why it stopped: vor_cells_error.
+ *
+ *   Nothing is allocated: VOR_ARENA_BYTES(n) is the whole memory of n
+ *   sites (Euler: 2n - 2 triangles), a compile-time constant, the same on
+ *   a 64-bit host as on a microcontroller (16-bit ids unless
+ *   VOR_INDEX_BITS says 32). Insertion is Sugihara and Iri's
+ *   topology-oriented update: the structure stays a valid triangulation
+ *   whatever the arithmetic does, and with these exact predicates it is
+ *   the unique Delaunay triangulation under the perturbation. vor_validate checks every
  *   invariant. The iterators list the true Delaunay triangulation of the
  *   distinct sites, not that perturbed mesh: 2n - h - 2 triangles, none of
  *   zero area (none at all for collinear sites), and neighbours whose
  *   cells touch. A query without a hint starts from a coarse bucket grid
- *   kept in the arena (one site id per VOR_SITES_PER_BUCKET = 4 sites), so
+ *   kept in the arena (one site id per VOR_SITES_PER_BUCKET sites), so
  *   it takes O(1) expected steps on uniform sites.
  *   vor_remove and vor_move keep the diagram exactly that of the current
  *   sites (the triangles a fresh build of them in id order gives) and the
@@ -111,23 +129,22 @@
  *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
  *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
- * COST (docs/benchmarks.md has the measured table)
+ * COST
  *   No predicate allocates, recurses or loops over data. A degenerate input
  *   to an _sos predicate evaluates at most 5 (orient2d) or 27 (incircle)
  *   small determinants; typical degeneracies are decided by the first one.
- *   Building n uniform sites takes expected O(n) time (about 0.55 us a
- *   site on a 2.45 GHz host at n = 10^6; about 4,500 instructions a site on
- *   Cortex-M3).
+ *   Building n uniform sites takes expected O(n) time. docs/benchmarks.md
+ *   has the measured times and instruction counts.
  *
- * FLASH (docs/benchmarks.md, "Code size and stack")
- *   A firmware linked with --gc-sections keeps only what it calls: insert
- *   and nearest-site queries are about 8.8 KB on Cortex-M3 at -Os, and
- *   vor_build adds 1.3 KB. The divide-and-conquer builder is its own entry
- *   point, vor_build_dc, so vor_build does not pull it in; the geometry
- *   (edges, cells, hull) is linked only when called. vor_build_dc_forked
- *   runs it on two cores through a caller's fork/join hook (pthreads, or a
- *   dual-core microcontroller's second core): the library itself stays
- *   single-threaded.
+ * FLASH
+ *   A firmware linked with --gc-sections keeps only what it calls. The
+ *   divide-and-conquer builder is its own entry point, vor_build_dc, so
+ *   vor_build does not pull it in; the geometry (edges, cells, hull) is
+ *   linked only when called. vor_build_dc_forked runs it on two cores
+ *   through a caller's fork/join hook (pthreads, or a dual-core
+ *   microcontroller's second core): the library itself stays
+ *   single-threaded. docs/benchmarks.md, "Code size and stack", has the
+ *   bytes of each feature set.
  *
  * CONFIGURATION: vor_config.h.  DESIGN: docs/design.md.  API: docs/api.md.
  */
@@ -142,9 +159,11 @@
 /* The library's version (semantic versioning; CHANGELOG.md says what each
  * release changed). The three numbers are the one place that sets it:
  * VOR_VERSION_STRING is made from them, and the CMake package, the
- * manifests' check and the CLI's --version read them from here. */
-#define VOR_VERSION_MAJOR 0
-#define VOR_VERSION_MINOR 2
+ * manifests' check and the CLI's --version read them from here.
+ * docs/api.md, "Compatibility", says what a minor and a major release may
+ * change. */
+#define VOR_VERSION_MAJOR 1
+#define VOR_VERSION_MINOR 0
 #define VOR_VERSION_PATCH 0
 #define VOR__STRINGIFY(x) #x
 #define VOR__VERSION_TEXT(major, minor, patch) \
@@ -170,75 +189,69 @@ enum vor_tier {
     VOR_TIERS = 3
 };
 
-/* Per-tier call counters. Zero it before use; counters wrap modulo 2^32. */
-typedef struct vor_predicate_stats {
+/* Per-tier predicate counters of a diagram, in builds with VOR_STATS
+ * (vor_config.h; benchmarks and tests): read them with vor_stats. They
+ * count every evaluation the diagram's successful calls make (a failing
+ * call restores them, as it restores everything else; they wrap modulo
+ * 2^32) and decide nothing: no result depends on them. */
+typedef struct vor_stats {
     uint32_t orient2d[VOR_TIERS];
     uint32_t incircle[VOR_TIERS];
     uint32_t closer[VOR_TIERS];
-    uint32_t orient2d_perturbed; /* _sos calls decided by the perturbation */
+    uint32_t orient2d_perturbed; /* perturbed calls decided by the perturbation */
     uint32_t incircle_perturbed;
     uint32_t closer_perturbed;
-#ifdef VOR_FAULT_INJECTION
-    uint32_t fault_rate; /* test builds: P(wrong _sos sign) = fault_rate / 2^32 */
-    uint64_t fault_state; /* their random generator; nonzero */
-#endif
-} vor_predicate_stats_t;
+} vor_stats_t;
 
 /*
  * Exact sign (-1, 0 or 1) of det[[ax ay 1][bx by 1][cx cy 1]]:
  * positive when a, b, c turn counterclockwise (x right, y up).
  * Tiers: narrow when every coordinate difference fits in int32, else wide.
- * stats may be NULL. Never fails; 0 when a, b or c is NULL.
+ * Never fails.
  */
-int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, vor_predicate_stats_t *stats);
+int vor_orient2d(vor_point_t a, vor_point_t b, vor_point_t c);
 
 /*
  * Exact sign of det of the rows (x, y, x^2 + y^2, 1) of a, b, c, d:
  * positive when d lies inside the circle through a, b, c and a, b, c are
  * counterclockwise (negated when they are clockwise), 0 when cocircular.
  * Tiers, by the coordinate differences to d: narrow when they lie in
- * [-2^14, 2^14 - 1], mid when they fit int32, else wide. stats may be NULL.
- * Never fails; 0 when a point is NULL.
+ * [-2^14, 2^14 - 1], mid when they fit int32, else wide. Never fails.
  */
-int vor_incircle(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, const vor_point_t *d,
-                 vor_predicate_stats_t *stats);
+int vor_incircle(vor_point_t a, vor_point_t b, vor_point_t c, vor_point_t d);
 
 /*
  * Exact sign of |q-a|^2 - |q-b|^2: -1 when q is strictly closer to a,
  * 1 when strictly closer to b, 0 on the bisector.
  * Tiers: narrow when every difference to q fits in int32, else wide.
- * stats may be NULL. Never fails; 0 when a point is NULL.
+ * Never fails.
  */
-int vor_closer(const vor_point_t *q, const vor_point_t *a,
-               const vor_point_t *b, vor_predicate_stats_t *stats);
+int vor_closer(vor_point_t q, vor_point_t a, vor_point_t b);
 
 /*
  * vor_orient2d of sites[i], sites[j], sites[k] under the symbolic
  * perturbation described at the top of this file: -1 or 1, never 0.
  * i, j, k must be distinct (indices order the perturbation) and index
- * sites[]: 0, the only 0 it returns, when sites is NULL or two indices
- * are equal (an index past the array cannot be detected).
+ * sites[]: 0, which is never an answer, means a bad argument: sites NULL
+ * or two indices equal (an index past the array cannot be detected).
  */
-int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
-                     uint32_t k, vor_predicate_stats_t *stats);
+int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k);
 
 /*
  * vor_incircle of sites[i], sites[j], sites[k], sites[l] under the
- * symbolic perturbation: -1 or 1. Indices must be distinct: 0 when sites
- * is NULL or two are equal.
+ * symbolic perturbation: -1 or 1. Indices must be distinct: 0 (a bad
+ * argument) when sites is NULL or two are equal.
  */
-int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
-                     uint32_t k, uint32_t l, vor_predicate_stats_t *stats);
+int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k,
+                     uint32_t l);
 
 /*
  * vor_closer of sites[q], sites[a], sites[b] under the symbolic
- * perturbation: -1 (q~ closer to a~) or 1. Distinct indices: 0 when
- * sites is NULL or two are equal. Used to find the site nearest to a point that coincides with one.
+ * perturbation: -1 (q~ closer to a~) or 1. Distinct indices: 0 (a bad
+ * argument) when sites is NULL or two are equal. Used to find the site
+ * nearest to a point that coincides with one.
  */
-int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
-                   vor_predicate_stats_t *stats);
+int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b);
 
 
 /* ================================================================== */
@@ -257,8 +270,9 @@ enum vor_error {
     VOR_ERR_INVALID = -6,   /* vor_validate found a broken invariant */
     VOR_ERR_EMPTY = -7,     /* a query on a diagram without sites */
     VOR_ERR_BUFFER = -8,    /* the caller's buffer is too small (the size needed is returned) */
-    VOR_ERR_CONFIG = -9     /* library and application were compiled with different
+    VOR_ERR_CONFIG = -9,    /* library and application were compiled with different
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
+    VOR_ERR_STOPPED = -10   /* vor_raster: the caller's flush asked to stop */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -322,7 +336,15 @@ typedef struct vor {
     uint32_t free_site;    /* the most recently freed id plus one (0: none),
                               head of the free ids' list, threaded through
                               their empty home slots */
-    vor_predicate_stats_t stats; /* predicate tiers of every call on it */
+#if VOR_STATS
+    vor_stats_t stats;     /* predicate tiers of every call on it (vor_stats) */
+#endif
+#ifdef VOR_FAULT_INJECTION
+    /* test builds: the perturbed predicates answer a wrong sign with
+     * probability fault_rate / 2^32, drawn from fault_state (nonzero) */
+    uint32_t fault_rate;
+    uint64_t fault_state;
+#endif
     /* The motion cache (vor_motion_attach), NULL when none, and the
      * 24-bit count of triangle changes its entries are stamped with. */
     struct vor__motion_entry *motion;
@@ -349,21 +371,21 @@ static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t m
 }
 
 /*
- * Adds the site (x, y); its id goes to *site (may be NULL): the most
+ * Adds the site p; its id goes to *site (may be NULL): the most
  * recently freed id (vor_remove) if there is one, else the next unused. The search for its place starts at the last inserted site;
  * vor_insert_near starts at site `hint` instead (a site in the mesh, or
- * VOR_NO_HINT: the bucket grid's site near (x, y), as vor_nearest).
+ * VOR_NO_HINT: the bucket grid's site near p, as vor_nearest).
  *   VOR_ERR_ARG        d NULL, or hint neither VOR_NO_HINT nor a site in
  *                      the mesh (an unused id, a duplicate's id)
- *   VOR_ERR_DUPLICATE  (x, y) is a site already: its id goes to *site
+ *   VOR_ERR_DUPLICATE  p is a site already: its id goes to *site
  *                      (also when the diagram is full)
  *   VOR_ERR_FULL       max_sites ids are used
  * On failure the diagram is unchanged.
  * Cost: the walk from the hint plus O(changed triangles), O(1) expected for
  * a nearby hint; no recursion, no memory beyond the arena.
  */
-int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site);
-int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
+int vor_insert(vor_t *d, vor_point_t p, uint32_t *site);
+int vor_insert_near(vor_t *d, vor_point_t p, uint32_t hint, uint32_t *site);
 
 /*
  * Removes site `site` from the diagram. The result is exactly the diagram
@@ -383,32 +405,32 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
 int vor_remove(vor_t *d, uint32_t site);
 
 /*
- * Moves site `site` to (x, y), keeping its id. When the triangles around
+ * Moves site `site` to p, keeping its id. When the triangles around
  * it stay counterclockwise and Delaunay (the common small step) only its
  * coordinates change; otherwise it is removed and inserted again. Either
  * way the result is the diagram a fresh build gives. Moving a site onto
  * its own position is VOR_OK and changes nothing.
  *   VOR_ERR_ARG        d NULL, or site not a site in the mesh (as for
  *                      vor_remove)
- *   VOR_ERR_DUPLICATE  (x, y) is another site: its id goes to *existing
+ *   VOR_ERR_DUPLICATE  p is another site: its id goes to *existing
  *                      (may be NULL)
  * On failure the diagram and the motion cache are unchanged.
  * Cost: with a motion cache attached (vor_motion_attach), a move inside
- * the site's box is about 180 instructions on Cortex-M3 and evaluates no
- * predicate. Otherwise the ~18 predicates of the site's star prove the
- * triangles unchanged (about 4,500 instructions on Cortex-M3; with a
- * cache, about 15,000 more when it sizes the site's new box, which a
- * backoff skips at a site's first such move and after boxes of no use),
- * or it costs a removal and an insertion.
+ * the site's box only stores the coordinates and evaluates no predicate.
+ * Otherwise the predicates of the site's star (about 18 on uniform sites)
+ * prove the triangles unchanged (with a cache, sizing the site's new box
+ * costs more, which a backoff skips at a site's first such move and after
+ * boxes of no use), or it costs a removal and an insertion.
+ * docs/benchmarks.md has the instruction counts of each path.
  */
-int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing);
+int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing);
 
 /*
  * The motion cache: optional caller memory that makes small moves cheap.
  * Per site it keeps a box around the site's position (its anchor) in
  * which the site may move, with every other site anywhere in its own box,
  * without any triangle changing; a vor_move that stays in the site's box
- * then only stores the coordinates, with no predicate at all (docs/design.md,
+ * then only stores the coordinates, with no predicate at all (docs/design/dynamic.md,
  * "Small moves"). A move outside the box, or of a site without one, is
  * checked in full and may give the site a new box: not at its first such
  * move since the attach (a site moved once never pays for a box), nor
@@ -446,16 +468,44 @@ enum vor_order {
     VOR_ORDER_INPUT = 1     /* as given (a baseline for benchmarks) */
 };
 
+/* How vor_build_dc and vor_build_dc_forked split the sites. */
+enum vor_dc_split {
+    VOR_DC_QUADTREE = 0, /* buckets merged in quadtree order (Katajainen and
+                            Koppinen): expected O(n) for uniform points */
+    VOR_DC_XSPLIT = 1    /* the classical halving by x, O(n log n) */
+};
+
+/* The options of the builders, shared by vor_build, vor_build_dc and
+ * vor_build_dc_forked (each reads the fields it uses). A NULL pointer or a
+ * zero-initialised struct means the defaults, and so does 0 in any field:
+ *
+ *     vor_build_options_t o = {0};
+ *     o.split = VOR_DC_XSPLIT;
+ *     vor_build_dc(&d, points, n, &o, NULL);
+ */
 typedef struct vor_build_options {
-    enum vor_order order;
+    enum vor_order order;     /* vor_build: VOR_ORDER_QUADTREE by default */
+    enum vor_dc_split split;  /* vor_build_dc(_forked): VOR_DC_QUADTREE by default */
+    uint32_t fork_min_sites;  /* vor_build_dc_forked: the hook is used only from
+                                 this many sites on (0: VOR_DC_FORK_MIN_SITES_DEFAULT;
+                                 any value below 8 means 8) */
 } vor_build_options_t;
+
+/* vor_build_dc_forked's fork_min_sites when the option is 0: below it,
+ * starting the other core costs more than it saves and the build runs on
+ * the calling core alone (the result is the same either way). Measured
+ * with pthreads on the host (docs/benchmarks.md, "Two cores"); a cheaper
+ * fork (a core already waiting, as on a dual-core microcontroller) may
+ * take a lower one. */
+#define VOR_DC_FORK_MIN_SITES_DEFAULT 1024u
 
 /*
  * Replaces the contents of d by the diagram of points[0 .. n), by Sugihara
  * and Iri's topology-oriented insertion: site i is points[i]. A point
  * equal to an earlier one is not a separate site: duplicate_of[i] (if the
  * array is given, n entries) receives the id of its first occurrence, and
- * i for every other site. options may be NULL (VOR_ORDER_QUADTREE).
+ * i for every other site. options may be NULL (the defaults); only its
+ * order is read.
  *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown order
  *   VOR_ERR_FULL n > max_sites
  * Expected O(n) time for uniform points; scratch space comes from the
@@ -465,26 +515,20 @@ typedef struct vor_build_options {
 int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
               const vor_build_options_t *options, uint32_t *duplicate_of);
 
-/* How vor_build_dc splits the sites. */
-enum vor_dc_split {
-    VOR_DC_QUADTREE = 0, /* buckets merged in quadtree order (Katajainen and
-                            Koppinen): expected O(n) for uniform points */
-    VOR_DC_XSPLIT = 1    /* the classical halving by x, O(n log n) */
-};
-
 /*
  * vor_build by divide and conquer with Oishi and Sugihara's topological
  * guards: the same result in the same structure (the perturbed Delaunay
  * triangulation is unique), so every other call works on either. No
  * memory beyond the arena and no recursion (an explicit stack of
- * O(log n) frames on the C stack; docs/design.md, "Divide and conquer").
+ * O(log n) frames on the C stack; docs/design/divide-and-conquer.md).
  * A separate entry point so that a firmware using only vor_build does not
- * link this builder.
+ * link this builder, nor this one the two-core code. options may be NULL
+ * (the defaults); only its split is read.
  *   VOR_ERR_ARG  d NULL, points NULL with n > 0, an unknown split
  *   VOR_ERR_FULL n > max_sites
  */
 int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
-                 enum vor_dc_split split, uint32_t *duplicate_of);
+                 const vor_build_options_t *options, uint32_t *duplicate_of);
 
 /* A way to run work on another core, supplied by the caller: vor itself
  * stays single-threaded and freestanding (docs/api.md has a pthreads and
@@ -503,13 +547,14 @@ typedef struct vor_fork_join {
 } vor_fork_join_t;
 
 /*
- * vor_build_dc on two cores: from VOR_DC_FORK_MIN_SITES sites on, one half
+ * vor_build_dc on two cores: from options->fork_min_sites sites on, one half
  * of the sites (the bottom half of the quadtree, whose square is centred
  * on the sites' box so that sites spread over it split about evenly, or
  * the first part of the x-split) is built through hook->fork while the
  * calling core builds the other, and the calling core merges them after
  * hook->join. The result is byte for byte vor_build_dc's, including
- * d->stats' sums (docs/design.md, "Two cores"). hook NULL: vor_build_dc.
+ * the VOR_STATS counters' sums (docs/design/divide-and-conquer.md, "Two cores"). hook NULL:
+ * vor_build_dc. options: its split and fork_min_sites, NULL for the defaults.
  * Meanwhile the other core touches only d's arena, points already copied
  * into it, and duplicate_of; the caller must not use d, its arena or
  * duplicate_of until the call returns.
@@ -520,7 +565,7 @@ typedef struct vor_fork_join {
  * builds (tests only) with a nonzero fault rate build on one core.
  */
 int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
-                        enum vor_dc_split split, uint32_t *duplicate_of,
+                        const vor_build_options_t *options, uint32_t *duplicate_of,
                         const vor_fork_join_t *hook);
 
 /* What vor_validate checks, in this order; the first failure is reported. */
@@ -551,7 +596,7 @@ typedef struct vor_violation {
  * with the first violation in *violation (may be NULL); VOR_ERR_ARG if d
  * is NULL. The first four checks are topological and hold even when the
  * arithmetic is wrong; the last three hold with exact arithmetic. O(n),
- * read-only (its predicate calls are not counted in d->stats).
+ * read-only (its predicate calls are not counted in the VOR_STATS counters).
  */
 int vor_validate(const vor_t *d, vor_violation_t *violation);
 
@@ -567,14 +612,31 @@ typedef struct vor_memory {
 /* Memory figures of d. VOR_ERR_ARG if d or memory is NULL. */
 int vor_memory(const vor_t *d, vor_memory_t *memory);
 
+/*
+ * The predicate counters of d (vor_stats_t) into *out, in a build with
+ * VOR_STATS (vor_config.h): benchmarks and tests. Without it there are no
+ * counters: VOR_ERR_ARG, nothing written.
+ *   VOR_ERR_ARG  d or out NULL, or the library built without VOR_STATS
+ */
+int vor_stats(const vor_t *d, vor_stats_t *out);
+
 /* ITERATORS (triangles, neighbours, edges, hull, cells): the state lives
- * in a struct on the caller's stack. An iterator is either begun or
- * zero-initialised ("closed"): a zeroed one, one begun on a NULL diagram,
- * and one that reported its end all report the end again, so next never
- * reads through a NULL pointer. begin with a NULL iterator does nothing;
- * next with a NULL iterator or output returns 0 (cells: VOR_ERR_ARG for
- * a NULL output) and writes nothing. An iterator must not outlive a
- * change of its diagram. */
+ * in a struct on the caller's stack, and every one works the same way:
+ *
+ *     vor_triangle_iter_t it;
+ *     if (vor_triangles_begin(&it, &d) == VOR_OK) {
+ *         while (vor_triangles_next(&it, ids)) { ... }
+ *     }
+ *
+ * x_begin returns VOR_OK, or VOR_ERR_ARG (d NULL, a site not in the mesh,
+ * a NULL or inverted box) and leaves a non-NULL iterator closed; with a
+ * NULL iterator it returns VOR_ERR_ARG and does nothing. x_next returns 1
+ * with the next item, or 0 at the end, never an error: a closed iterator
+ * (also a zero-initialised one, or one that reported its end), a NULL
+ * iterator or output gives 0 and writes nothing, so a `while` over next
+ * always ends. The cell iterator, whose buffer can be too small, keeps why
+ * it stopped (vor_cells_error). An iterator must not outlive a change of
+ * its diagram. */
 
 /* Iterator over the triangles of the true Delaunay triangulation of the
  * distinct sites (state on the caller's stack): each as three site ids,
@@ -588,7 +650,7 @@ typedef struct vor_triangle_iter {
     uint32_t next_slot;
 } vor_triangle_iter_t;
 
-void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d);
+int vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d);
 /* Returns 1 and fills ids[3] while triangles remain, then 0. */
 int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3]);
 
@@ -596,8 +658,9 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3]);
  * in the triangulation above, i.e. the sites whose Voronoi cells share an
  * edge with its cell, plus the diagonals the triangulation picked where
  * cocircular sites' cells meet in one point. With all sites collinear,
- * the nearest site on each side along the line. Yields nothing for a
- * duplicate's id or a diagram of one site. Cost: O(its mesh neighbours),
+ * the nearest site on each side along the line; nothing in a diagram of
+ * one site. begin: VOR_ERR_ARG for a site not in the mesh (unknown, or a
+ * duplicate's id). Cost: O(its mesh neighbours),
  * one or two exact orientation tests each. */
 typedef struct vor_neighbour_iter {
     const vor_t *d;
@@ -606,7 +669,7 @@ typedef struct vor_neighbour_iter {
     uint32_t left;
 } vor_neighbour_iter_t;
 
-void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site);
+int vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site);
 /* Returns 1 and sets *neighbour while neighbours remain, then 0. */
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour);
 
@@ -618,7 +681,7 @@ int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour);
  * The geometry is that of the true Voronoi diagram of the distinct sites,
  * computed exactly (multi-word rationals) and rounded only on output: a
  * coordinate v becomes floor(v + 1/2), the nearest integer with halves
- * toward +infinity. docs/design.md, "Voronoi geometry", has the widths.
+ * toward +infinity. docs/design/geometry.md has the widths.
  */
 
 /* What a rounded vertex is. */
@@ -639,10 +702,9 @@ typedef struct vor_vertex {
 /*
  * The centre of the circle through a, b, c (their Voronoi vertex), rounded
  * as above; AT_INFINITY when they are collinear (or two coincide).
- *   VOR_ERR_ARG  a pointer is NULL
+ *   VOR_ERR_ARG  out NULL
  */
-int vor_circumcentre(const vor_point_t *a, const vor_point_t *b,
-                     const vor_point_t *c, vor_vertex_t *out);
+int vor_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, vor_vertex_t *out);
 
 /*
  * vor_circumcentre of sites a, b, c of d (e.g. a triangle from
@@ -682,7 +744,7 @@ typedef struct vor_edge_iter {
     uint32_t edge;
 } vor_edge_iter_t;
 
-void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d);
+int vor_edges_begin(vor_edge_iter_t *it, const vor_t *d);
 /* Returns 1 and fills *edge while edges remain, then 0. */
 int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge);
 
@@ -700,7 +762,7 @@ typedef struct vor_hull_iter {
     uint32_t collinear;
 } vor_hull_iter_t;
 
-void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d);
+int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d);
 /* Returns 1 and sets *site while hull sites remain, then 0. */
 int vor_hull_next(vor_hull_iter_t *it, uint32_t *site);
 
@@ -733,22 +795,34 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box,
              vor_point_t *vertices, uint32_t capacity, uint32_t *count);
 
 /* Iterator over the clipped cells of every site in the mesh (duplicates'
- * ids are skipped), in increasing id order. */
+ * ids are skipped), in increasing id order:
+ *
+ *     vor_cells_begin(&ci, &d, &box);               // VOR_ERR_ARG: box NULL
+ *     while (vor_cells_next(&ci, &id, poly, cap, &m)) { ... }  // or inverted
+ *     if (vor_cells_error(&ci) == VOR_ERR_BUFFER) { ... }  // m vertices needed
+ */
 typedef struct vor_cell_iter {
     const vor_t *d;
     vor_box_t box;
     uint32_t next_site;
+    int error; /* why next returned 0 (vor_cells_error) */
 } vor_cell_iter_t;
 
-void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box);
+int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box);
 /* Returns 1 with the next cell (as vor_cell) in *site, vertices[0 ..
- * *count), 0 at the end, or an error of vor_cell: VOR_ERR_BUFFER leaves
- * the iterator on that site (with *site and the needed *count set), so
- * that a retry with a larger buffer gets it. VOR_ERR_ARG, writing
- * nothing: site or count NULL, vertices NULL with capacity > 0, or the
- * box given to begin NULL or inverted (x0 > x1 or y0 > y1). */
+ * *count); 0 at the end, and 0 when it cannot give the next cell, with
+ * the reason kept for vor_cells_error: the cell has more than `capacity`
+ * vertices (*site and the needed *count are set, nothing is written to
+ * vertices, and the iterator stays on that cell, so that next with a
+ * large enough buffer resumes there), or site or count is NULL, or
+ * vertices NULL with capacity > 0 (nothing written). */
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices,
                    uint32_t capacity, uint32_t *count);
+/* Why the last vor_cells_next returned 0: VOR_OK at the end of the cells
+ * (and before the first next), VOR_ERR_BUFFER at a cell that did not fit,
+ * VOR_ERR_ARG for bad outputs or a closed iterator (a failed begin, a
+ * NULL it). */
+int vor_cells_error(const vor_cell_iter_t *it);
 
 /* Bytes of scratch vor_cell_centroid needs for a cell of up to
  * max_vertices vertices (a constant expression): six integers of
@@ -794,10 +868,10 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
 #define VOR_NO_HINT 0xFFFFFFFFu
 
 /*
- * The site nearest to (x, y), any int32 point, by exact distance; of
+ * The site nearest to q, any int32 point, by exact distance; of
  * several at the same distance, the smallest id. hint: a site to start
  * from (the previous answer, for a moving query), or VOR_NO_HINT (the
- * site the bucket grid holds for (x, y)'s bucket). A duplicate is never answered: its first occurrence
+ * site the bucket grid holds for q's bucket). A duplicate is never answered: its first occurrence
  * is the site. Cost: O(steps from the hint x neighbours), O(1) for a hint
  * near the answer.
  *   VOR_ERR_ARG    d or site NULL, hint neither VOR_NO_HINT nor a site
@@ -805,10 +879,10 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
  *   VOR_ERR_EMPTY  the diagram has no sites
  * On failure nothing is written.
  */
-int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site);
+int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site);
 
 /*
- * The k sites nearest to (x, y), nearest first, by exact distance and, at
+ * The k sites nearest to q, nearest first, by exact distance and, at
  * equal distances, smaller id first, into nearest[0 .. k). *found receives
  * min(k, number of sites): duplicates are not sites, their first
  * occurrences are. hint as for vor_nearest. Cost: the walk of vor_nearest,
@@ -818,18 +892,18 @@ int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *s
  *   VOR_ERR_EMPTY  the diagram has no sites
  * On failure nothing is written.
  */
-int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t k,
+int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
                   uint32_t *nearest, uint32_t *found);
 
 /*
  * A tracker follows a moving query point, such as a robot: it keeps the
  * last answer's Voronoi cell as a few bisector tests (VOR_TRACKER_EDGES at
- * most), so while the point stays in that cell an answer costs one
+ * most), so while the point stays in that cell an answer costs a
  * multiply-accumulate pair per edge, with no walk through the mesh. When
  * the point leaves the cell, or the diagram changed, it asks vor_nearest
  * with the last answer as the hint and caches the new cell. Answers are
  * exactly those of vor_nearest. The tracker belongs to the caller (its
- * size is a constant, about 16 bytes per cached edge); the diagram is
+ * size is a constant expression of VOR_TRACKER_EDGES); the diagram is
  * only read, so any number of trackers may follow one diagram at once.
  */
 typedef struct vor_tracker_edge {
@@ -863,9 +937,9 @@ static inline int vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
 }
 
 /*
- * The site nearest to (x, y) as vor_nearest answers it (exact, ties to
- * the smaller id), starting from the tracker's last answer. Cost: about
- * two multiplies per cached edge while (x, y) stays in the last answer's
+ * The site nearest to q as vor_nearest answers it (exact, ties to
+ * the smaller id), starting from the tracker's last answer. Cost: a
+ * multiply pair per cached edge while q stays in the last answer's
  * cell; otherwise vor_nearest from the last answer, plus caching the new
  * cell (its edges are exact in int64 when the cell's neighbours lie within
  * 2^30 of its site on each axis; otherwise nothing is cached).
@@ -873,7 +947,7 @@ static inline int vor_tracker_begin(vor_tracker_t *tracker, const vor_t *d)
  *   VOR_ERR_EMPTY  the diagram has no sites
  * On failure the tracker is unchanged.
  */
-int vor_track(vor_tracker_t *tracker, int32_t x, int32_t y, uint32_t *site);
+int vor_track(vor_tracker_t *tracker, vor_point_t q, uint32_t *site);
 
 #ifdef __cplusplus
 }

@@ -33,17 +33,14 @@
 #endif
 #endif
 
-/* VOR_INDEX_BITS: width of site and triangle indices, 16 or 32. 16 gives
- * about 32.5 bytes per site (coordinates and bucket grid included) for up
- * to 32,767 sites; 32 gives about 49 bytes per site for up to 2,097,150
- * sites (VOR_ARENA_BYTES, docs/porting.md). Default: 16 where
- * pointers are 32 bits or narrower (microcontrollers), 32 on 64-bit hosts. */
+/* VOR_INDEX_BITS: width of site and triangle indices, 16 or 32. 16 for up
+ * to 32,767 sites, 32 for up to 2,097,150 sites at about half as much
+ * again per site (VOR_ARENA_BYTES; docs/porting.md and docs/benchmarks.md
+ * have the bytes). Default: 16 on every machine, so that a host
+ * simulation sizes its arena as the firmware does; host programs with
+ * more sites define it as 32. */
 #ifndef VOR_INDEX_BITS
-#if defined(__SIZEOF_POINTER__) && __SIZEOF_POINTER__ > 4
-#define VOR_INDEX_BITS 32
-#else
 #define VOR_INDEX_BITS 16
-#endif
 #endif
 
 /* VOR_SITES_PER_BUCKET: the density of the bucket grid that starts
@@ -52,8 +49,8 @@
  * queries, more memory (4 / VOR_SITES_PER_BUCKET bytes per site with
  * 32-bit ids, half that with 16-bit ones). A power of two keeps the
  * macro's division a shift. At 4, cold queries at 10^5 and 10^6 sites
- * keep pace with a kd-tree (docs/benchmarks.md); 16 saves 0.75 bytes a
- * site on the host for walks about twice as long. */
+ * keep pace with a kd-tree; 16 saves memory for walks about twice as long
+ * (docs/benchmarks.md has both). */
 #ifndef VOR_SITES_PER_BUCKET
 #define VOR_SITES_PER_BUCKET 4u
 #endif
@@ -66,33 +63,31 @@
 #define VOR_TRACKER_EDGES 12
 #endif
 
-/* VOR_DC_FORK_MIN_SITES: vor_build_dc_forked hands half the work to the
- * caller's fork/join hook only from this many sites on; below, starting
- * the other core costs more than it saves and the build runs on the
- * calling core alone (the result is the same either way). Measured with
- * pthreads on the host (docs/benchmarks.md, "Two cores"); a cheaper fork
- * (a core already waiting, as on a dual-core microcontroller) may lower
- * it. At least 8. */
-#ifndef VOR_DC_FORK_MIN_SITES
-#define VOR_DC_FORK_MIN_SITES 1024u
+/* VOR_STATS: 1 counts the predicate evaluations of every diagram by tier
+ * (vor_stats_t in vor_t, read with vor_stats), for benchmarks and tests;
+ * 0 (the default) has no counter in vor_t and none on any path. The
+ * counters decide nothing; a call that fails restores them, as it
+ * restores everything else. */
+#ifndef VOR_STATS
+#define VOR_STATS 0
 #endif
 
 /* VOR_FAULT_INJECTION: test builds only. The perturbed predicates that the
  * diagram uses return a wrong sign with a probability set per diagram
- * (vor_predicate_stats_t.fault_rate), to show that the topology survives
- * any arithmetic. Never define it in a release build. */
+ * (vor_t's fault_rate), to show that the topology survives any
+ * arithmetic. Never define it in a release build. */
 
 /* The configuration contract. The options above that change a size or a
  * layout the application sees (VOR_INDEX_BITS: vor_index_t, the arena;
  * VOR_SITES_PER_BUCKET: VOR_ARENA_BYTES; VOR_TRACKER_EDGES:
- * vor_tracker_t; VOR_FAULT_INJECTION: vor_predicate_stats_t inside vor_t)
+ * vor_tracker_t; VOR_STATS and VOR_FAULT_INJECTION: fields of vor_t)
  * are packed into VOR_CONFIG_FINGERPRINT with the layout version of the
  * public structures. vor_init and vor_tracker_begin are inline wrappers
  * that hand the application's fingerprint to the library, which returns
  * VOR_ERR_CONFIG, touching nothing, when it was compiled with another.
  * VOR_ASSERT and VOR_LIMB_BITS change only the library's code: not part
  * of it. Bump VOR_LAYOUT_VERSION whenever a public structure changes. */
-#define VOR_LAYOUT_VERSION 2u
+#define VOR_LAYOUT_VERSION 3u
 
 #if VOR_SITES_PER_BUCKET < 1 || VOR_SITES_PER_BUCKET > 2047
 #error "VOR_SITES_PER_BUCKET must be 1 .. 2047"
@@ -101,18 +96,24 @@
 #error "VOR_TRACKER_EDGES must be 1 .. 2047"
 #endif
 
+#if VOR_STATS != 0 && VOR_STATS != 1
+#error "VOR_STATS must be 0 or 1"
+#endif
+
 #ifdef VOR_FAULT_INJECTION
 #define VOR__CONFIG_FAULTS 1u
 #else
 #define VOR__CONFIG_FAULTS 0u
 #endif
 
-/* One bit per choice, 11 bits per count (exact within the ranges above):
+/* One bit per choice, 11 bits per count (exact within the ranges above),
+ * 7 bits of layout version:
  * two configurations have the same fingerprint only when they agree. */
 #define VOR_CONFIG_FINGERPRINT                                                 \
-    ((uint32_t)(VOR_LAYOUT_VERSION << 24 |                                     \
-                (VOR_INDEX_BITS == 32 ? 1u : 0u) << 23 |                       \
-                VOR__CONFIG_FAULTS << 22 |                                     \
+    ((uint32_t)(VOR_LAYOUT_VERSION << 25 |                                     \
+                (VOR_INDEX_BITS == 32 ? 1u : 0u) << 24 |                       \
+                VOR__CONFIG_FAULTS << 23 |                                     \
+                (uint32_t)(VOR_STATS) << 22 |                                  \
                 (uint32_t)(VOR_SITES_PER_BUCKET) << 11 |                       \
                 (uint32_t)(VOR_TRACKER_EDGES)))
 

@@ -20,14 +20,18 @@
  *     out.kind = VOR_RASTER_RGB565; out.palette565 = colours;
  *     out.band = band; out.band_bytes = sizeof band; out.band_rows = 16;
  *     out.flush = send_to_display; out.user = &lcd;
- *     int err = vor_raster(&frame, &set, &out, work, sizeof work);
+ *     int err = vor_raster(&frame, &set, &out, NULL, work, sizeof work);
+ *
+ *   options: NULL (or a zero-initialised vor_raster_options_t) for the
+ *   defaults, as for every call of vor that takes options (vor.h).
  *
  * BANDS
  *   The caller's buffer holds band_rows rows of width pixels; the rows are
  *   filled top (j = 0) down and handed to flush(user, first_row, rows,
  *   pixels) once per band, like the partial rendering of display
  *   libraries. No full frame is ever needed. flush returns 0 to go on; any
- *   other value stops the render and vor_raster returns it.
+ *   other value stops the render and vor_raster returns VOR_ERR_STOPPED
+ *   (the flush's own codes never mix with vor's errors).
  *
  * OUTPUT KINDS (pixel layout in the band, row-major, row stride = width)
  *   VOR_RASTER_LABEL8 / 16 / 32  the site index as uint8_t / uint16_t /
@@ -68,10 +72,10 @@
  *   elliptic forms and far Euclidean-type distances reach it); ADD and
  *   COMPOUND values above INT32_MAX read INT32_MAX (they are always above
  *   -2^31, since w2 < 2^31). The value costs a few integer roots per
- *   pixel (docs/design.md, "Distance output").
+ *   pixel (docs/design/raster-metrics.md, "Distance output").
  *
  * SPEED
- *   VOR_RASTER_FAST (the default) finds, per band of 16 rows, the sites
+ *   VOR_RASTER_FAST (the default method, vor_raster_options_t) finds, per band of 16 rows, the sites
  *   whose cells can reach the band (exact envelopes of the band's edges),
  *   then per row the lower envelope of their distance functions at the
  *   pixel centres, which is the row's runs (one division per run): O(n)
@@ -80,7 +84,7 @@
  *   every site lies within 2^29 of the first pixel and the frame spans
  *   less than 2^29 in each direction; otherwise (and with
  *   VOR_RASTER_BRUTE) each pixel is compared with every site, equally
- *   exact. docs/design.md, "Rasterizer", has the bound arguments.
+ *   exact. docs/design/raster.md has the bound arguments.
  *
  * OTHER METRICS
  *   sites->metric also takes L1, L-infinity, Lp (p = 1..8), elliptic
@@ -100,9 +104,9 @@
  *   besides the band buffer and a small stack frame.
  *
  * FLASH
- *   vor_raster links every metric (about 15 KB on Cortex-M3 at -Os); for
- *   Euclidean point sites alone call vor_raster_euclid instead, the same
- *   pixels from about 6 KB.
+ *   vor_raster links every metric; for Euclidean point sites alone call
+ *   vor_raster_euclid instead, the same pixels from much less code
+ *   (docs/benchmarks.md, "Code size and stack", has the bytes).
  *
  * API: docs/api.md, "Raster".
  */
@@ -129,7 +133,8 @@ typedef struct vor_raster_frame {
 
 /* The distance a pixel is assigned by (Teramoto, section 2.3 and chapter
  * 5). Every metric is decided exactly over the whole int32 range of
- * coordinates and weights; the comparison widths are in docs/design.md. */
+ * coordinates and weights; the comparison widths are in docs/design/raster.md
+ * and docs/design/raster-metrics.md. */
 enum vor_metric {
     VOR_METRIC_EUCLID = 0,    /* point sites, Euclidean distance */
     VOR_METRIC_L1 = 1,        /* point sites, |dx| + |dy| */
@@ -192,11 +197,11 @@ enum vor_raster_method {
 
 /* flush(user, first_row, rows, pixels): rows [first_row, first_row + rows)
  * are in pixels (the band buffer). Return 0 to go on; anything else stops
- * the render and becomes vor_raster's return value. */
+ * the render, and vor_raster returns VOR_ERR_STOPPED. */
 typedef int (*vor_raster_flush_t)(void *user, uint32_t first_row, uint32_t rows,
                                   const void *pixels);
 
-/* Where and how the frame goes. Zero-initialise, then set what is used. */
+/* Where the frame goes. Zero-initialise, then set what is used. */
 typedef struct vor_raster_output {
     enum vor_raster_kind kind;
     void *band;          /* band_rows * width pixels of the kind */
@@ -207,8 +212,13 @@ typedef struct vor_raster_output {
     const uint16_t *palette565;  /* RGB565: colour of site k */
     const uint32_t *palette888;  /* RGB888: 0xRRGGBB of site k */
     uint32_t *areas;             /* optional: pixels of each site, [count] */
-    enum vor_raster_method method;
 } vor_raster_output_t;
+
+/* How to render: NULL or a zero-initialised struct for the defaults (a
+ * field added later keeps the old behaviour at 0). */
+typedef struct vor_raster_options {
+    enum vor_raster_method method; /* VOR_RASTER_FAST by default */
+} vor_raster_options_t;
 
 /* Bytes per pixel of a kind (0 for an unknown kind). */
 #define VOR_RASTER_PIXEL_BYTES(kind)                                           \
@@ -227,8 +237,9 @@ typedef struct vor_raster_output {
 
 /*
  * Renders the discrete Voronoi diagram of sites over frame, band by band,
- * into out. Everything is checked before the first pixel:
- *   VOR_ERR_ARG    a NULL pointer, a zero size or step, a pixel centre
+ * into out, with options (NULL: the defaults). Everything is checked
+ * before the first pixel:
+ *   VOR_ERR_ARG    a NULL pointer (options apart), a zero size or step, a pixel centre
  *                  outside int32, an unknown metric, kind or method, a
  *                  missing palette, LABEL8 with > 256 or LABEL16 with
  *                  > 65,536 sites
@@ -236,22 +247,23 @@ typedef struct vor_raster_output {
  *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes, or
  *                  work_bytes < VOR_RASTER_WORK_BYTES(count, width)
  *   VOR_ERR_ALIGN  work not aligned to VOR_RASTER_WORK_ALIGN
- *   flush's value  a flush that returned nonzero (bands before it were
+ *   VOR_ERR_STOPPED  a flush returned nonzero (bands before it were
  *                  delivered; areas then hold the rows done so far)
  * On an error before the first pixel, nothing is written (areas included).
  */
 int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-               const vor_raster_output_t *out, void *work, size_t work_bytes);
+               const vor_raster_output_t *out, const vor_raster_options_t *options,
+               void *work, size_t work_bytes);
 
 /*
  * vor_raster for Euclidean point sites only (sites->metric must be
  * VOR_METRIC_EUCLID, else VOR_ERR_ARG): the same pixels, errors and
  * memory, and a firmware that calls only this links none of the other
- * metrics (about 10 KB less on Cortex-M3 at -Os). vor_raster hands
- * Euclidean frames to it.
+ * metrics. vor_raster hands Euclidean frames to it.
  */
 int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                      const vor_raster_output_t *out, void *work, size_t work_bytes);
+                      const vor_raster_output_t *out, const vor_raster_options_t *options,
+                      void *work, size_t work_bytes);
 
 #ifdef __cplusplus
 }

@@ -41,7 +41,7 @@
  *   C2 crossing: an F-F edge of a finished cross triangle (its two ends
  *      joined to one S site by drawn F-S edges) is never deleted: the
  *      triangle beyond the candidate edge must be F-F-F (its far vertex
- *      c2 in F). (docs/design.md: why not "both ends have F-S edges".)
+ *      c2 in F). (docs/design/divide-and-conquer.md, "Guards": why not "both ends have F-S edges".)
  *   C3 parallel edges: an F-S edge that exists already is never drawn
  *      (a walk around one endpoint); if both candidates fail, the merge
  *      ends.
@@ -121,7 +121,7 @@ static inline bool axis_less(const vor_point_t *s, vor_index_t a, vor_index_t b,
 typedef struct {
     vor_t *d;
     vor__tri_t *tri;
-    vor_predicate_stats_t *stats; /* d's, or a forked worker's own */
+    vor_stats_t *stats; /* d's, or a forked worker's own (VOR_STATS; else NULL) */
     uint32_t *duplicate_of; /* vor_build's, or NULL */
     uint32_t next_extra; /* the next unused extra slot */
     uint32_t distinct;   /* distinct sites built so far */
@@ -147,13 +147,13 @@ typedef struct {
  * of vor_build_dc_forked writes no counter the other core writes. */
 static inline int orient(const builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r)
 {
-    return vor__orient_counted(b->d->sites, b->stats, p, q, r);
+    return vor__orient_counted(b->d, b->stats, p, q, r);
 }
 
 static inline int incircle(const builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r,
                            vor_index_t t)
 {
-    return vor__incircle_counted(b->d->sites, b->stats, p, q, r, t);
+    return vor__incircle_counted(b->d, b->stats, p, q, r, t);
 }
 
 static inline bool in_f_finite(const builder_t *b, vor_index_t v)
@@ -1033,7 +1033,7 @@ VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32
 /* A builder for d's n sites, counting into stats, its extras from
  * next_extra on. Field by field: no structure copies (memcpy). */
 static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate_of,
-                         vor_predicate_stats_t *stats, uint32_t next_extra,
+                         vor_stats_t *stats, uint32_t next_extra,
                          vor__grid_square_t *square)
 {
     b->d = d;
@@ -1074,7 +1074,7 @@ VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, 
     if (status != VOR__BUILD_MESH) {
         return status;
     }
-    builder_init(b, d, n, duplicate_of, &d->stats, d->max_sites, square);
+    builder_init(b, d, n, duplicate_of, VOR__STATS_OF(d), d->max_sites, square);
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
@@ -1120,7 +1120,9 @@ VOR__ALWAYS_INLINE void finish(const builder_t *b)
  * marks an x-split half (its distinct sorted ids, leaves of the x-split). */
 typedef struct {
     builder_t b;
-    vor_predicate_stats_t stats;
+#if VOR_STATS
+    vor_stats_t stats;
+#endif
     vor_index_t *ids;
     uint32_t count;
     uint32_t from_cell, to_cell;
@@ -1136,20 +1138,17 @@ static void build_half(void *arg)
                   : build_split(&h->b, h->ids, h->count);
 }
 
-static void stats_clear(vor_predicate_stats_t *s)
+#if VOR_STATS
+static void stats_clear(vor_stats_t *s)
 {
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         s->orient2d[t] = s->incircle[t] = s->closer[t] = 0;
     }
     s->orient2d_perturbed = s->incircle_perturbed = s->closer_perturbed = 0;
-#ifdef VOR_FAULT_INJECTION
-    s->fault_rate = 0; /* forked builds run without faults */
-    s->fault_state = 1;
-#endif
 }
 
 /* Counters add modulo 2^32, as one build's would have wrapped. */
-static void stats_add(vor_predicate_stats_t *to, const vor_predicate_stats_t *from)
+static void stats_add(vor_stats_t *to, const vor_stats_t *from)
 {
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         to->orient2d[t] += from->orient2d[t];
@@ -1160,6 +1159,10 @@ static void stats_add(vor_predicate_stats_t *to, const vor_predicate_stats_t *fr
     to->incircle_perturbed += from->incircle_perturbed;
     to->closer_perturbed += from->closer_perturbed;
 }
+#define HALF_STATS(x) (&(x)->stats)
+#else
+#define HALF_STATS(x) ((vor_stats_t *)NULL)
+#endif
 
 /* The x-split of m sorted distinct sites ends with the merge of its first
  * 2^j leaves and the rest, 2^j < leaves <= 2^(j + 1) (build_split: the
@@ -1230,7 +1233,8 @@ static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count
 }
 
 /* the quadtree needs 8 sites (group_by_bucket) before it can fork */
-typedef char vor__fork_min_check[(VOR_DC_FORK_MIN_SITES >= 8u) ? 1 : -1];
+#define FORK_MIN_SITES_LEAST 8u
+typedef char vor__fork_min_check[(VOR_DC_FORK_MIN_SITES_DEFAULT >= FORK_MIN_SITES_LEAST) ? 1 : -1];
 
 /* a triangle is a whole number of ids (12 = 6 x 2 or 20 = 5 x 4 bytes) */
 typedef char vor__ids_per_triangle_check[(sizeof(vor__tri_t) % sizeof(vor_index_t) == 0u) ? 1 : -1];
@@ -1239,7 +1243,7 @@ typedef char vor__ids_per_triangle_check[(sizeof(vor__tri_t) % sizeof(vor_index_
  * The two halves on two cores: the first (A: the bottom half of the grid,
  * or the x-split's first part) through the hook, the second (B) on the
  * calling core, then the last merge here. Every slot either writes is its
- * own (docs/design.md, "Two cores"): A's and B's sites are disjoint, so
+ * own (docs/design/divide-and-conquer.md, "Two cores"): A's and B's sites are disjoint, so
  * are their home slots, marks and duplicate_of entries; each counts into
  * its own stats; and the extra slots and ids are split into two regions
  * in which the sequential invariant of start() holds:
@@ -1294,8 +1298,10 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     half_t half[2];
     for (unsigned h = 0; h < 2u; h++) {
         half_t *x = &half[h];
+#if VOR_STATS
         stats_clear(&x->stats);
-        builder_init(&x->b, d, n, b->duplicate_of, &x->stats, (h == 0u) ? d->max_sites : gap_end,
+#endif
+        builder_init(&x->b, d, n, b->duplicate_of, HALF_STATS(x), (h == 0u) ? d->max_sites : gap_end,
                      b->square);
         x->b.k = b->k;
         x->ids = (h == 0u) ? ids_a : ids + n_a;
@@ -1324,8 +1330,10 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     b->next_extra = a->b.next_extra + used_b;
     b->distinct += a->b.distinct + s->b.distinct;
     b->last = (s->b.distinct > 0u) ? s->b.last : b->last; /* the x-split's is set */
+#if VOR_STATS
     stats_add(b->stats, &a->stats);
     stats_add(b->stats, &s->stats);
+#endif
     if (split == VOR_DC_QUADTREE) {
         (void)merge_vertical(b, s->part, a->part, 0, b->k - 1u);
     } else {
@@ -1340,9 +1348,10 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
  * vor_build_dc's constant NULL hook leaves build_forked out of a firmware
  * that calls only vor_build_dc. */
 VOR__ALWAYS_INLINE int build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
-                                enum vor_dc_split split, uint32_t *duplicate_of,
+                                const vor_build_options_t *options, uint32_t *duplicate_of,
                                 const vor_fork_join_t *hook)
 {
+    enum vor_dc_split split = (options != NULL) ? options->split : VOR_DC_QUADTREE;
     builder_t b;
     vor__grid_square_t square;
     vor_index_t *ids;
@@ -1352,9 +1361,14 @@ VOR__ALWAYS_INLINE int build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
     }
     bool faults = false;
 #ifdef VOR_FAULT_INJECTION
-    faults = d->stats.fault_rate != 0u; /* one fault sequence: one core */
+    faults = d->fault_rate != 0u; /* one fault sequence: one core */
 #endif
-    if (hook == NULL || n < VOR_DC_FORK_MIN_SITES || faults) {
+    uint32_t fork_min = VOR_DC_FORK_MIN_SITES_DEFAULT;
+    if (hook != NULL && options != NULL && options->fork_min_sites != 0u) {
+        fork_min = (options->fork_min_sites > FORK_MIN_SITES_LEAST) ? options->fork_min_sites
+                                                                    : FORK_MIN_SITES_LEAST;
+    }
+    if (hook == NULL || n < fork_min || faults) {
         build_all(&b, ids, n, split);
     } else {
         build_forked(&b, ids, n, split, hook);
@@ -1364,17 +1378,17 @@ VOR__ALWAYS_INLINE int build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
 }
 
 int vor_build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
-                 enum vor_dc_split split, uint32_t *duplicate_of)
+                 const vor_build_options_t *options, uint32_t *duplicate_of)
 {
-    return build_dc(d, points, n, split, duplicate_of, NULL);
+    return build_dc(d, points, n, options, duplicate_of, NULL);
 }
 
 int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
-                        enum vor_dc_split split, uint32_t *duplicate_of,
+                        const vor_build_options_t *options, uint32_t *duplicate_of,
                         const vor_fork_join_t *hook)
 {
     if (hook != NULL && (hook->fork == NULL || hook->join == NULL)) {
         return VOR_ERR_ARG;
     }
-    return build_dc(d, points, n, split, duplicate_of, hook);
+    return build_dc(d, points, n, options, duplicate_of, hook);
 }

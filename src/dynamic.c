@@ -1,7 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * dynamic.c - removing and moving sites (docs/design.md, "Dynamic
- * diagrams").
+ * dynamic.c - removing and moving sites (docs/design/dynamic.md).
  *
  * Removal: the triangles around p are replaced by a triangulation of the
  * polygon of p's neighbours (the vertex at infinity among them for a hull
@@ -716,9 +715,9 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
         twin = (d->sites[other].x == x && d->sites[other].y == y) ? other : VOR__NONE;
     }
     /* the common small step first: the same triangles at the new place.
-     * The tests count in the stats, restored if the move fails. */
-    vor_predicate_stats_t saved_stats;
-    vor__copy_stats(&saved_stats, &d->stats);
+     * In test builds the tests count, restored if the move fails. */
+    vor__tally_t tally;
+    vor__tally_save(&tally, d);
     s->x = x;
     s->y = y;
     vor_index_t star_twin = VOR__NONE;
@@ -730,13 +729,14 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
         /* a site at (x, y) is the nearest site to it (a read-only query
          * from the bucket grid) */
         uint32_t nearest;
-        if (vor_nearest(d, x, y, VOR_NO_HINT, &nearest) == VOR_OK && d->sites[nearest].x == x &&
+        vor_point_t q = {x, y};
+        if (vor_nearest(d, q, VOR_NO_HINT, &nearest) == VOR_OK && d->sites[nearest].x == x &&
             d->sites[nearest].y == y) {
             twin = nearest;
         }
     }
     if (twin != VOR__NONE) {
-        vor__copy_stats(&d->stats, &saved_stats);
+        vor__tally_restore(d, &tally);
         if (existing != NULL) {
             *existing = twin;
         }
@@ -751,22 +751,24 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
      * from the bucket grid's site near the new place */
     vor_remove(d, site);
     uint32_t id;
-    int err = vor_insert_near(d, x, y, VOR_NO_HINT, &id);
+    vor_point_t to = {x, y};
+    int err = vor_insert_near(d, to, VOR_NO_HINT, &id);
     if (err != VOR_OK) {
         /* only lying predicates (fault injection) find a twin the exact
          * query did not: the site goes back where it was */
-        vor_insert_near(d, old.x, old.y, VOR_NO_HINT, &id);
+        vor_insert_near(d, old, VOR_NO_HINT, &id);
     } else {
         vor__motion_update(d, site, old, epoch); /* a box in the new epoch */
     }
     return err;
 }
 
-int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing)
+int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
 {
     if (d == NULL || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
+    int32_t x = p.x, y = p.y;
     const vor_point_t *s = &d->sites[site];
     if (s->x == x && s->y == y) {
         return VOR_OK;

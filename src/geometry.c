@@ -13,7 +13,7 @@
  *   - collinear sites on the hull: triangles of zero area, whose
  *     circumcentre is at infinity, and edges joining two of those sites
  *     past a third between them, whose Voronoi edge is empty.
- * docs/design.md ("Voronoi geometry") has the proofs.
+ * docs/design/geometry.md has the proofs.
  *
  * Arithmetic (as in Sugihara's textbook: translate to one of the sites
  * first, here so that the widths stay small). Around a site s, coordinates are
@@ -285,12 +285,10 @@ static void round_point(const geo_point_t *p, const vor_point_t *origin, vor_ver
 /* ------------------------------------------------------------------ */
 /* Vertices                                                            */
 
-int vor_circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
-                     vor_vertex_t *out)
+/* vor_circumcentre of points in place (no copies); out not NULL. */
+static void circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                         vor_vertex_t *out)
 {
-    if (a == NULL || b == NULL || c == NULL || out == NULL) {
-        return VOR_ERR_ARG;
-    }
     geo_line_t lb, lc;
     geo_point_t p;
     bisector(&lb, a, b);
@@ -301,9 +299,17 @@ int vor_circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point
         out->point.x = 0;
         out->point.y = 0;
         out->status = VOR_VERTEX_AT_INFINITY;
-        return VOR_OK;
+        return;
     }
     round_point(&p, a, out);
+}
+
+int vor_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, vor_vertex_t *out)
+{
+    if (out == NULL) {
+        return VOR_ERR_ARG;
+    }
+    circumcentre(&a, &b, &c, out);
     return VOR_OK;
 }
 
@@ -313,7 +319,8 @@ int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_v
         c >= d->site_count) {
         return VOR_ERR_ARG;
     }
-    return vor_circumcentre(&d->sites[a], &d->sites[b], &d->sites[c], out);
+    circumcentre(&d->sites[a], &d->sites[b], &d->sites[c], out);
+    return VOR_OK;
 }
 
 /* ------------------------------------------------------------------ */
@@ -340,7 +347,7 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
     *has_start = false;
     *has_end = false;
     if (r != VOR__INFINITE) {
-        int o = vor_orient2d(&s[p], &s[q], &s[r], NULL);
+        int o = vor__orient2d_sign(&s[p], &s[q], &s[r]);
         VOR_ASSERT(o <= 0);
         if (o != 0) {
             *has_start = true;
@@ -349,7 +356,7 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
         }
     }
     if (l != VOR__INFINITE) {
-        int o = vor_orient2d(&s[p], &s[q], &s[l], NULL);
+        int o = vor__orient2d_sign(&s[p], &s[q], &s[l]);
         VOR_ASSERT(o >= 0);
         if (o != 0) {
             *has_end = true;
@@ -357,7 +364,7 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
             return false;
         }
     }
-    if (*has_start && *has_end && vor_incircle(&s[p], &s[q], &s[l], &s[r], NULL) == 0) {
+    if (*has_start && *has_end && vor__incircle_sign(&s[p], &s[q], &s[l], &s[r]) == 0) {
         return false;
     }
     return true;
@@ -406,9 +413,9 @@ static void fill_edge(const vor_t *d, vor_edge_t *e, uint32_t p, uint32_t q, uin
     e->to.point.y = 0;
     e->to.status = VOR_VERTEX_AT_INFINITY;
     if (has_start) {
-        vor_circumcentre(&s[p], &s[q], &s[r], &e->from);
+        circumcentre(&s[p], &s[q], &s[r], &e->from);
         if (has_end) {
-            vor_circumcentre(&s[p], &s[q], &s[l], &e->to);
+            circumcentre(&s[p], &s[q], &s[l], &e->to);
         }
         e->kind = has_end ? VOR_EDGE_SEGMENT : VOR_EDGE_RAY;
     } else {
@@ -426,14 +433,15 @@ static VOR__NOINLINE uint32_t next_used_slot(const vor_t *d, uint32_t slot)
     return vor__next_used_slot(d, slot);
 }
 
-void vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
+int vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
 {
     if (it == NULL) {
-        return;
+        return VOR_ERR_ARG;
     }
-    it->d = d;
+    it->d = d; /* NULL: closed */
     it->slot = 0;
     it->edge = 0;
+    return (d != NULL) ? VOR_OK : VOR_ERR_ARG;
 }
 
 int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
@@ -511,10 +519,10 @@ static uint32_t lowest_site(const vor_t *d)
     return vor__walk(&w, vor__grid_start(d, middle, d->low.y));
 }
 
-void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
+int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
 {
     if (it == NULL) {
-        return;
+        return VOR_ERR_ARG;
     }
     it->d = d;
     it->left = 0;
@@ -522,12 +530,12 @@ void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     it->collinear = 0;
     it->site = it->first = 0;
     if (d == NULL) {
-        return; /* left = 0: at the end */
+        return VOR_ERR_ARG; /* left = 0: closed */
     }
     it->site = it->first = d->last_site;
     if (d->vertex_count < 2u) {
         it->left = d->vertex_count; /* one site: itself */
-        return;
+        return VOR_OK;
     }
     const vor_point_t *s = d->sites;
     uint32_t low = lowest_site(d);
@@ -538,7 +546,7 @@ void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
         const vor__tri_t *t = &d->triangles[slot];
         unsigned i = vor__vertex_index(t, (vor_index_t)low);
         if (i == 3u) {
-            return; /* only on a broken mesh */
+            return VOR_OK; /* only on a broken mesh */
         }
         if (vor__vertex(t, vor__next(i)) == VOR__INFINITE) {
             it->ghost = slot;
@@ -547,7 +555,7 @@ void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
         slot = t->n[vor__next(i)];
     }
     if (it->ghost == VOR__NONE) {
-        return;
+        return VOR_OK;
     }
     /* all sites are collinear exactly when the hull's corners are: one
      * turn around the hull (at most vertex_count edges) */
@@ -557,7 +565,7 @@ void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     it->collinear = 1;
     for (uint32_t step = 0; step < d->vertex_count && it->collinear; step++) {
         ghost_edge(d, next, &w, &u, &next);
-        if (vor_orient2d(&s[low], &s[second], &s[u], NULL) != 0) {
+        if (vor__orient2d_sign(&s[low], &s[second], &s[u]) != 0) {
             it->collinear = 0;
         }
         if (next == g) {
@@ -567,6 +575,7 @@ void vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     it->site = it->first = low;
     /* collinear: every site once, up the line; else back to the start */
     it->left = it->collinear ? d->vertex_count : d->vertex_count + 1u;
+    return VOR_OK;
 }
 
 int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
@@ -592,9 +601,9 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     uint32_t w, u, next, n, best = VOR__NONE;
     ghost_edge(d, it->ghost, &w, &u, &next);
     vor_neighbour_iter_t ni;
-    vor_neighbours_begin(&ni, d, it->site);
+    (void)vor_neighbours_begin(&ni, d, it->site); /* a hull site: in the mesh */
     while (vor_neighbours_next(&ni, &n)) {
-        if (n != u && vor_orient2d(&s[it->site], &s[u], &s[n], NULL) == 0 &&
+        if (n != u && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
             vor__strictly_between(&s[it->site], &s[n], &s[u]) &&
             (best == VOR__NONE || vor__strictly_between(&s[it->site], &s[n], &s[best]))) {
             best = n;
@@ -671,7 +680,7 @@ static bool angle_before(const cell_t *c, uint32_t a, uint32_t b)
         return qa < qb;
     }
     /* within a quadrant (less than a half turn): b turns left of a */
-    return vor_orient2d(c->s, &c->d->sites[a], &c->d->sites[b], NULL) > 0;
+    return vor__orient2d_sign(c->s, &c->d->sites[a], &c->d->sites[b]) > 0;
 }
 
 /* A step around the fan of c->site counterclockwise: the triangle at
@@ -1019,44 +1028,59 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
     return VOR_OK;
 }
 
-void vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
+int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
 {
     if (it == NULL) {
-        return;
+        return VOR_ERR_ARG;
+    }
+    it->next_site = 0;
+    it->error = VOR_OK;
+    it->box.x0 = it->box.y0 = it->box.x1 = it->box.y1 = 0;
+    if (d == NULL || box == NULL || box->x0 > box->x1 || box->y0 > box->y1) {
+        it->d = NULL; /* closed */
+        it->error = VOR_ERR_ARG;
+        return VOR_ERR_ARG;
     }
     it->d = d;
-    it->next_site = 0;
-    /* no box: an inverted one, which vor_cells_next reports as VOR_ERR_ARG */
-    it->box.x0 = (box != NULL) ? box->x0 : 1;
-    it->box.y0 = (box != NULL) ? box->y0 : 1;
-    it->box.x1 = (box != NULL) ? box->x1 : 0;
-    it->box.y1 = (box != NULL) ? box->y1 : 0;
+    it->box.x0 = box->x0;
+    it->box.y0 = box->y0;
+    it->box.x1 = box->x1;
+    it->box.y1 = box->y1;
+    return VOR_OK;
 }
 
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, uint32_t capacity,
                    uint32_t *count)
 {
     if (it == NULL || it->d == NULL) {
-        return 0; /* a zeroed iterator, or one begun on no diagram */
+        return 0; /* a zeroed iterator, or a closed one */
     }
     const vor_t *d = it->d;
-    if (site == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
-        it->box.x0 > it->box.x1 || it->box.y0 > it->box.y1) {
-        return VOR_ERR_ARG;
+    if (site == NULL || count == NULL || (vertices == NULL && capacity > 0u)) {
+        it->error = VOR_ERR_ARG;
+        return 0;
     }
     while (it->next_site < d->site_count && !in_mesh(d, it->next_site)) {
         it->next_site++;
     }
     if (it->next_site >= d->site_count) {
+        it->error = VOR_OK;
         return 0;
     }
     *site = it->next_site;
-    int err = vor_cell(d, it->next_site, &it->box, vertices, capacity, count);
-    if (err != VOR_OK) {
-        return err;
+    /* the box was checked by begin, and the site is in the mesh: only
+     * VOR_ERR_BUFFER can come back, and the iterator stays on the cell */
+    it->error = vor_cell(d, it->next_site, &it->box, vertices, capacity, count);
+    if (it->error != VOR_OK) {
+        return 0;
     }
     it->next_site++;
     return 1;
+}
+
+int vor_cells_error(const vor_cell_iter_t *it)
+{
+    return (it != NULL) ? it->error : VOR_ERR_ARG;
 }
 
 /* ------------------------------------------------------------------ */

@@ -74,16 +74,16 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
     unsigned first = 0;
     for (uint32_t step = 0; step <= limit; step++) {
         const vor__tri_t *t = &tri[slot];
-        /* an exact zero among this triangle's tests shows in the counter */
-        uint32_t perturbed = d->stats.orient2d_perturbed;
+        /* an exact zero among this triangle's tests: p is on an edge's line */
+        bool tie = false;
         *on_line = false;
         unsigned infinite = vor__vertex_index(t, VOR__INFINITE);
         if (infinite != 3u) {
             /* outside the hull edge (a, b): found; else step inside */
             vor_index_t a = vor__vertex(t, vor__next(infinite));
             vor_index_t b = vor__vertex(t, vor__prev(infinite));
-            if (vor__orient(d, a, b, p) > 0) {
-                *on_line = d->stats.orient2d_perturbed != perturbed;
+            if (vor__orient_tie(d, VOR__STATS_OF(d), a, b, p, &tie) > 0) {
+                *on_line = tie;
                 return slot;
             }
             slot = t->n[infinite];
@@ -97,7 +97,7 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
         do {
             vor_index_t a = vor__vertex(t, vor__next(i));
             vor_index_t b = vor__vertex(t, vor__prev(i));
-            if (vor__orient(d, a, b, p) < 0) {
+            if (vor__orient_tie(d, VOR__STATS_OF(d), a, b, p, &tie) < 0) {
                 slot = t->n[i];
                 moved = true;
                 break;
@@ -105,7 +105,7 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
             i = vor__next(i);
         } while (i != first);
         if (!moved) {
-            *on_line = d->stats.orient2d_perturbed != perturbed;
+            *on_line = tie;
             return slot;
         }
     }
@@ -262,21 +262,21 @@ static void take_free_id(vor_t *d)
     }
 }
 
-int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site)
+int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
 {
     if (d == NULL || (hint != VOR_NO_HINT && !vor__site_in_mesh(d, hint))) {
         return VOR_ERR_ARG;
     }
     if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
-        hint = (d->vertex_count >= 2u) ? vor__grid_start(d, x, y) : d->last_site;
+        hint = (d->vertex_count >= 2u) ? vor__grid_start(d, point.x, point.y) : d->last_site;
     }
     bool reused = d->free_site != 0u; /* a removed site's id */
     if (!reused && d->site_count >= d->max_sites) {
         /* no free coordinates slot to locate from: a read-only query
          * tells a duplicate, which needs no slot, from a new site */
         uint32_t nearest;
-        if (vor_nearest(d, x, y, hint, &nearest) == VOR_OK && d->sites[nearest].x == x &&
-            d->sites[nearest].y == y) {
+        if (vor_nearest(d, point, hint, &nearest) == VOR_OK &&
+            same_point(&d->sites[nearest], &point)) {
             if (site != NULL) {
                 *site = nearest;
             }
@@ -285,7 +285,6 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
         return VOR_ERR_FULL;
     }
     uint32_t p = reused ? d->free_site - 1u : d->site_count;
-    vor_point_t point = {x, y};
     vor__tri_t *tri = d->triangles;
 
     if (d->vertex_count == 0u) {
@@ -305,10 +304,11 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
         vor__make_edge(d, d->last_site, p);
     } else {
         /* find p's triangle first: a duplicate must change nothing, so the
-         * coordinates slot and the counters are restored in that case */
+         * coordinates slot (and in test builds the counters) are restored
+         * in that case */
         vor_point_t saved_point = d->sites[p];
-        vor_predicate_stats_t saved_stats;
-        vor__copy_stats(&saved_stats, &d->stats);
+        vor__tally_t tally;
+        vor__tally_save(&tally, d);
         d->sites[p] = point;
         bool on_line;
         vor_index_t root = vor__locate(d, (vor_index_t)hint, p, &on_line);
@@ -329,7 +329,7 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
         }
         if (twin != VOR__NONE) {
             d->sites[p] = saved_point;
-            vor__copy_stats(&d->stats, &saved_stats);
+            vor__tally_restore(d, &tally);
             if (site != NULL) {
                 *site = twin;
             }
@@ -353,13 +353,13 @@ int vor_insert_near(vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *sit
     return VOR_OK;
 }
 
-int vor_insert(vor_t *d, int32_t x, int32_t y, uint32_t *site)
+int vor_insert(vor_t *d, vor_point_t p, uint32_t *site)
 {
     if (d == NULL) {
         return VOR_ERR_ARG;
     }
     /* the last inserted site, once there is one */
-    return vor_insert_near(d, x, y, (d->vertex_count >= 1u) ? d->last_site : VOR_NO_HINT, site);
+    return vor_insert_near(d, p, (d->vertex_count >= 1u) ? d->last_site : VOR_NO_HINT, site);
 }
 
 /* ------------------------------------------------------------------ */
@@ -379,7 +379,7 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     /* scratch in the triangle slots, the plan at their very end: triangles
      * fill the slots from below and never reach a plan entry still to be
      * read (5 or 6 indices per triangle against 2 per remaining plan
-     * entry; docs/design.md, "Batch build") */
+     * entry; docs/design/incremental.md, "Batch build") */
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);

@@ -41,14 +41,16 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->free_site = 0;
     d->motion = NULL; /* a cache is attached afterwards (vor_motion_attach) */
     d->motion_epoch = 0;
-    vor_predicate_stats_t *stats = &d->stats;
+#if VOR_STATS
+    vor_stats_t *stats = &d->stats;
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         stats->orient2d[t] = stats->incircle[t] = stats->closer[t] = 0;
     }
     stats->orient2d_perturbed = stats->incircle_perturbed = stats->closer_perturbed = 0;
+#endif
 #ifdef VOR_FAULT_INJECTION
-    stats->fault_rate = 0;
-    stats->fault_state = 1;
+    d->fault_rate = 0;
+    d->fault_state = 1;
 #endif
     return VOR_OK;
 }
@@ -118,6 +120,29 @@ static uint64_t divide(uint64_t numerator, uint64_t denominator)
         }
     }
     return quotient;
+}
+
+int vor_stats(const vor_t *d, vor_stats_t *out)
+{
+#if VOR_STATS
+    if (d == NULL || out == NULL) {
+        return VOR_ERR_ARG;
+    }
+    const vor_stats_t *from = &d->stats;
+    for (unsigned t = 0; t < VOR_TIERS; t++) { /* field by field: no memcpy */
+        out->orient2d[t] = from->orient2d[t];
+        out->incircle[t] = from->incircle[t];
+        out->closer[t] = from->closer[t];
+    }
+    out->orient2d_perturbed = from->orient2d_perturbed;
+    out->incircle_perturbed = from->incircle_perturbed;
+    out->closer_perturbed = from->closer_perturbed;
+    return VOR_OK;
+#else
+    (void)d;
+    (void)out;
+    return VOR_ERR_ARG; /* no counters in this build */
+#endif
 }
 
 int vor_memory(const vor_t *d, vor_memory_t *memory)

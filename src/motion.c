@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * motion.c - the motion cache: small moves without predicates
- * (docs/design.md, "Small moves").
+ * (docs/design/dynamic.md, "Small moves").
  *
  * Each site may hold a box: its anchor (ax, ay) and an exponent e, the box
  * being |x - ax| <= 2^e, |y - ay| <= 2^e, stamped with the epoch of the

@@ -71,7 +71,7 @@ typedef uint64_t vor__dlimb;
 #define VOR__LIMBS(bits) (((bits) + VOR_LIMB_BITS - 1) / VOR_LIMB_BITS)
 
 /* Limbs of the widest value any predicate needs: 3x3 determinants whose
- * entries are up to 66 bits wide (docs/design.md, "perturbation"). */
+ * entries are up to 66 bits wide (docs/design/predicates.md, "Symbolic perturbation"). */
 #define VOR__WIDE_LIMBS VOR__LIMBS(160)
 
 /* 32x32->64 unsigned multiply. ARMv6-M (Cortex-M0) has only a 32x32->32

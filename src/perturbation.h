@@ -4,7 +4,7 @@
  * builders ask the exact predicates (predicates.h) about mesh sites, with
  * ties broken by symbolic perturbation and, in test builds, injected
  * faults; and how every output hides the device again, reporting the true
- * diagram of the distinct sites (docs/design.md, "What the iterators
+ * diagram of the distinct sites (docs/design/queries.md, "What the iterators
  * report").
  */
 #ifndef VOR_PERTURBATION_H
@@ -18,60 +18,74 @@
 #include "vor.h"
 
 /* The perturbed predicates as the mesh calls them: site ids are the
- * perturbation's order, a stats block counts the tiers (the diagram's,
- * or a divide-and-conquer worker's own, so that two cores never write the
- * same counter), and the narrow tiers are inlined. In fault injection
- * builds (tests only) a sign is flipped with probability fault_rate / 2^32. */
-static inline int vor__with_faults(vor_predicate_stats_t *stats, int sign)
+ * perturbation's order, stats counts the tiers in a VOR_STATS build (the
+ * diagram's counters, or a divide-and-conquer worker's own, so that two
+ * cores never write the same counter; NULL otherwise), and the narrow
+ * tiers are inlined. In fault injection builds (tests only) a sign is
+ * flipped with probability d->fault_rate / 2^32. */
+static inline int vor__with_faults(vor_t *d, int sign)
 {
 #ifdef VOR_FAULT_INJECTION
-    if (stats->fault_rate != 0u) {
-        uint64_t x = stats->fault_state;
+    if (d->fault_rate != 0u) {
+        uint64_t x = d->fault_state;
         x ^= x << 13;
         x ^= x >> 7;
         x ^= x << 17;
-        stats->fault_state = x;
-        return ((uint32_t)(x >> 32) < stats->fault_rate) ? -sign : sign;
+        d->fault_state = x;
+        return ((uint32_t)(x >> 32) < d->fault_rate) ? -sign : sign;
     }
 #else
-    (void)stats;
+    (void)d;
 #endif
     return sign;
 }
 
-static inline int vor__orient_counted(const vor_point_t *s, vor_predicate_stats_t *stats,
-                                      uint32_t a, uint32_t b, uint32_t c)
+/* The perturbed orientation of sites a, b, c of d; *tie becomes true when
+ * their exact orientation is 0, so that the perturbation decided (the
+ * walk learns from it that the point lies on an edge's line). */
+static inline int vor__orient_tie(vor_t *d, vor_stats_t *stats, uint32_t a, uint32_t b,
+                                  uint32_t c, bool *tie)
 {
+    const vor_point_t *s = d->sites;
     int sign = vor__orient2d_exact(&s[a], &s[b], &s[c], stats);
     if (sign == 0) {
+        *tie = true;
         sign = vor__orient2d_perturbed(s, a, b, c, stats);
     }
-    return vor__with_faults(stats, sign);
+    return vor__with_faults(d, sign);
 }
 
-VOR__INLINE int vor__incircle_counted(const vor_point_t *s, vor_predicate_stats_t *stats,
-                                      uint32_t a, uint32_t b, uint32_t c, uint32_t p)
+static inline int vor__orient_counted(vor_t *d, vor_stats_t *stats, uint32_t a, uint32_t b,
+                                      uint32_t c)
 {
+    bool tie = false;
+    return vor__orient_tie(d, stats, a, b, c, &tie);
+}
+
+VOR__INLINE int vor__incircle_counted(vor_t *d, vor_stats_t *stats, uint32_t a, uint32_t b,
+                                      uint32_t c, uint32_t p)
+{
+    const vor_point_t *s = d->sites;
     int sign = vor__incircle_exact(&s[a], &s[b], &s[c], &s[p], stats);
     if (sign == 0) {
         sign = vor__incircle_perturbed(s, a, b, c, p, stats);
     }
-    return vor__with_faults(stats, sign);
+    return vor__with_faults(d, sign);
 }
 
 static inline int vor__orient(vor_t *d, uint32_t a, uint32_t b, uint32_t c)
 {
-    return vor__orient_counted(d->sites, &d->stats, a, b, c);
+    return vor__orient_counted(d, VOR__STATS_OF(d), a, b, c);
 }
 
 VOR__INLINE int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint32_t p)
 {
-    return vor__incircle_counted(d->sites, &d->stats, a, b, c, p);
+    return vor__incircle_counted(d, VOR__STATS_OF(d), a, b, c, p);
 }
 
 static inline int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
 {
-    return vor__with_faults(&d->stats, vor_closer_sos(d->sites, p, a, b, &d->stats));
+    return vor__with_faults(d, vor__closer_sos(d->sites, p, a, b, VOR__STATS_OF(d)));
 }
 
 /* Does the triangle (v0, v1, v2) (finite or at infinity) conflict with
@@ -93,30 +107,67 @@ static inline bool vor__conflicts(vor_t *d, vor_index_t v0, vor_index_t v1, vor_
     return vor__incircle(d, v0, v1, v2, p) > 0;
 }
 
-/* Field by field: a structure assignment of this size becomes a memcpy
- * call on some targets, and the library calls nothing outside itself. */
-static inline void vor__copy_stats(vor_predicate_stats_t *to,
-                                   const vor_predicate_stats_t *from)
-{
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        to->orient2d[t] = from->orient2d[t];
-        to->incircle[t] = from->incircle[t];
-        to->closer[t] = from->closer[t];
-    }
-    to->orient2d_perturbed = from->orient2d_perturbed;
-    to->incircle_perturbed = from->incircle_perturbed;
-    to->closer_perturbed = from->closer_perturbed;
-#ifdef VOR_FAULT_INJECTION
-    to->fault_rate = from->fault_rate;
-    to->fault_state = from->fault_state;
+/* What a call that fails after evaluating predicates restores, so that
+ * it changes nothing: the VOR_STATS counters and the fault generator's
+ * state (test builds). Empty in a release build, where predicates write
+ * nothing but their answers. Field by field: a structure assignment of
+ * this size becomes a memcpy call on some targets, and the library calls
+ * nothing outside itself. */
+typedef struct {
+#if VOR_STATS
+    vor_stats_t stats;
 #endif
+#ifdef VOR_FAULT_INJECTION
+    uint64_t fault_state;
+#endif
+    char unused; /* C99 wants a member */
+} vor__tally_t;
+
+static inline void vor__tally_save(vor__tally_t *to, const vor_t *d)
+{
+#if VOR_STATS
+    const vor_stats_t *from = &d->stats;
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        to->stats.orient2d[t] = from->orient2d[t];
+        to->stats.incircle[t] = from->incircle[t];
+        to->stats.closer[t] = from->closer[t];
+    }
+    to->stats.orient2d_perturbed = from->orient2d_perturbed;
+    to->stats.incircle_perturbed = from->incircle_perturbed;
+    to->stats.closer_perturbed = from->closer_perturbed;
+#endif
+#ifdef VOR_FAULT_INJECTION
+    to->fault_state = d->fault_state;
+#endif
+    to->unused = 0;
+    (void)d;
+}
+
+static inline void vor__tally_restore(vor_t *d, const vor__tally_t *from)
+{
+#if VOR_STATS
+    vor_stats_t *to = &d->stats;
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        to->orient2d[t] = from->stats.orient2d[t];
+        to->incircle[t] = from->stats.incircle[t];
+        to->closer[t] = from->stats.closer[t];
+    }
+    to->orient2d_perturbed = from->stats.orient2d_perturbed;
+    to->incircle_perturbed = from->stats.incircle_perturbed;
+    to->closer_perturbed = from->stats.closer_perturbed;
+#endif
+#ifdef VOR_FAULT_INJECTION
+    d->fault_state = from->fault_state;
+#endif
+    (void)d;
+    (void)from;
 }
 
 /* ------------------------------------------------------------------ */
 /* The true output                                                     */
 
 /* What the iterators report is the true Delaunay triangulation of the
- * distinct sites, not the perturbed mesh (docs/design.md, "What the
+ * distinct sites, not the perturbed mesh (docs/design/queries.md, "What the
  * iterators report"): a finite triangle is reported exactly when its
  * three sites are not collinear (unperturbed). A flat triangle's perturbed
  * circumcircle is a half-plane in the limit, empty only on a side of a

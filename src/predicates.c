@@ -44,24 +44,27 @@ int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d)
 /* ------------------------------------------------------------------ */
 /* orient2d                                                            */
 
-int vor_orient2d(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, vor_predicate_stats_t *stats)
+int vor__orient2d_sign(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c)
 {
-    if (a == NULL || b == NULL || c == NULL) {
-        return 0; /* no sign to give: documented as 0 */
-    }
-    return vor__orient2d_exact(a, b, c, stats);
+    return vor__orient2d_exact(a, b, c, NULL);
+}
+
+int vor_orient2d(vor_point_t a, vor_point_t b, vor_point_t c)
+{
+    return vor__orient2d_exact(&a, &b, &c, NULL);
 }
 
 /* ------------------------------------------------------------------ */
 /* closer                                                              */
 
-int vor_closer(const vor_point_t *q, const vor_point_t *a,
-               const vor_point_t *b, vor_predicate_stats_t *stats)
+int vor_closer(vor_point_t q, vor_point_t a, vor_point_t b)
 {
-    if (q == NULL || a == NULL || b == NULL) {
-        return 0;
-    }
+    return vor__closer_sign(&q, &a, &b, NULL);
+}
+
+int vor__closer_sign(const vor_point_t *q, const vor_point_t *a, const vor_point_t *b,
+                     vor_stats_t *stats)
+{
     int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
     int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
     uint64_t m = vor__mw_bound(ax) | vor__mw_bound(ay) | vor__mw_bound(bx) | vor__mw_bound(by);
@@ -293,14 +296,15 @@ int vor__incircle_wide(const int64_t d[6])
     return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
 
-int vor_incircle(const vor_point_t *a, const vor_point_t *b,
-                 const vor_point_t *c, const vor_point_t *d,
-                 vor_predicate_stats_t *stats)
+int vor__incircle_sign(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                       const vor_point_t *d)
 {
-    if (a == NULL || b == NULL || c == NULL || d == NULL) {
-        return 0;
-    }
-    return vor__incircle_exact(a, b, c, d, stats);
+    return vor__incircle_exact(a, b, c, d, NULL);
+}
+
+int vor_incircle(vor_point_t a, vor_point_t b, vor_point_t c, vor_point_t d)
+{
+    return vor__incircle_exact(&a, &b, &c, &d, NULL);
 }
 
 /* ------------------------------------------------------------------ */
@@ -337,18 +341,17 @@ int vor_incircle(const vor_point_t *a, const vor_point_t *b,
 
 enum row_kind { ROW_POINT, ROW_DY, ROW_SQUARE, ROW_DX, ROW_KINDS };
 
-int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
-                     uint32_t k, vor_predicate_stats_t *stats)
+int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k)
 {
     if (sites == NULL || i == j || j == k || i == k) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
-    int sign = vor__orient2d_exact(&sites[i], &sites[j], &sites[k], stats);
-    return (sign != 0) ? sign : vor__orient2d_perturbed(sites, i, j, k, stats);
+    int sign = vor__orient2d_exact(&sites[i], &sites[j], &sites[k], NULL);
+    return (sign != 0) ? sign : vor__orient2d_perturbed(sites, i, j, k, NULL);
 }
 
 int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, vor_predicate_stats_t *stats)
+                            uint32_t k, vor_stats_t *stats)
 {
     VOR__COUNT(stats, orient2d_perturbed);
     VOR_ASSERT(i != j && j != k && i != k);
@@ -428,14 +431,14 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
     return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
 
-int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j,
-                     uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k,
+                     uint32_t l)
 {
     if (sites == NULL || i == j || i == k || i == l || j == k || j == l || k == l) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
-    int sign = vor__incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], stats);
-    return (sign != 0) ? sign : vor__incircle_perturbed(sites, i, j, k, l, stats);
+    int sign = vor__incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], NULL);
+    return (sign != 0) ? sign : vor__incircle_perturbed(sites, i, j, k, l, NULL);
 }
 
 /* The first term of the perturbed incircle, 2 yL by_y - (xP zQ - zP xQ)
@@ -624,7 +627,7 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
 }
 
 int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats)
+                            uint32_t k, uint32_t l, vor_stats_t *stats)
 {
     VOR__COUNT(stats, incircle_perturbed);
     VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
@@ -648,14 +651,19 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
  * coefficient (+1 for a, -1 for b) ends the sequence; if L is q, its own
  * squares cancel, and M's dy product with L's (-2 for a, +2 for b) ends it.
  */
-int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
-                   vor_predicate_stats_t *stats)
+int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b)
+{
+    return vor__closer_sos(sites, q, a, b, NULL);
+}
+
+int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
+                    vor_stats_t *stats)
 {
     if (sites == NULL || q == a || q == b || a == b) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     const vor_point_t *pq = &sites[q], *pa = &sites[a], *pb = &sites[b];
-    int sign = vor_closer(pq, pa, pb, stats);
+    int sign = vor__closer_sign(pq, pa, pb, stats);
     if (sign != 0) {
         return sign;
     }

@@ -13,13 +13,21 @@
 #include "multiword.h"
 #include "vor.h"
 
-/* Counts one evaluation in the caller's statistics, if it keeps any. */
+/* Counts one evaluation in the caller's counters, if it keeps any: only
+ * in a VOR_STATS build (vor_config.h). Otherwise no counter exists and
+ * stats is NULL everywhere, so the count and its test compile to nothing. */
+#if VOR_STATS
 #define VOR__COUNT(stats, counter)                                             \
     do {                                                                       \
         if ((stats) != NULL) {                                                 \
             (stats)->counter++;                                                \
         }                                                                      \
     } while (0)
+#define VOR__STATS_OF(d) (&(d)->stats)
+#else
+#define VOR__COUNT(stats, counter) ((void)(stats))
+#define VOR__STATS_OF(d) ((vor_stats_t *)NULL)
+#endif
 
 /* Out-of-line tiers (predicates.c). */
 int vor__compare_products(int64_t a, int64_t b, int64_t c, int64_t d);
@@ -36,14 +44,24 @@ unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vo
 unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
                             const vor_point_t *dp);
 
+/* The public predicates on points in place (no copies), uncounted. */
+int vor__orient2d_sign(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c);
+int vor__incircle_sign(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                       const vor_point_t *d);
+int vor__closer_sign(const vor_point_t *q, const vor_point_t *a, const vor_point_t *b,
+                     vor_stats_t *stats);
+/* vor_closer_sos, counted in stats (NULL: not counted). */
+int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
+                    vor_stats_t *stats);
+
 /* The perturbed decisions, for exact signs already known to be 0. */
 int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, vor_predicate_stats_t *stats);
+                            uint32_t k, vor_stats_t *stats);
 int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
-                            uint32_t k, uint32_t l, vor_predicate_stats_t *stats);
+                            uint32_t k, uint32_t l, vor_stats_t *stats);
 
 VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
-                                    const vor_point_t *c, vor_predicate_stats_t *stats)
+                                    const vor_point_t *c, vor_stats_t *stats)
 {
     int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
     int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
@@ -77,7 +95,7 @@ VOR__INLINE int64_t vor__incircle_narrow(const int64_t d[6])
 
 VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
                                     const vor_point_t *c, const vor_point_t *dp,
-                                    vor_predicate_stats_t *stats)
+                                    vor_stats_t *stats)
 {
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,

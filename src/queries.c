@@ -23,15 +23,17 @@
 #include "mesh.h"
 #include "multiword.h"
 #include "perturbation.h"
+#include "predicates.h"
 #include "walk.h"
 
-void vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
+int vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
 {
     if (it == NULL) {
-        return;
+        return VOR_ERR_ARG;
     }
-    it->d = d;
+    it->d = d; /* NULL: closed */
     it->next_slot = 0;
+    return (d != NULL) ? VOR_OK : VOR_ERR_ARG;
 }
 
 int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
@@ -72,12 +74,17 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
     return 0;
 }
 
-void vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
+int vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site)
 {
     if (it == NULL) {
-        return;
+        return VOR_ERR_ARG;
+    }
+    if (d == NULL || !vor__site_in_mesh(d, site)) {
+        vor__fan_begin(it, NULL, site); /* closed */
+        return VOR_ERR_ARG;
     }
     vor__fan_begin(it, d, site);
+    return VOR_OK;
 }
 
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
@@ -94,12 +101,12 @@ int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
 static bool before(const vor_t *d, const vor_point_t *q, uint32_t from, uint32_t t, uint32_t u)
 {
     const vor_point_t *s = d->sites;
-    bool t_first_half = vor_orient2d(q, &s[from], &s[t], NULL) > 0;
-    bool u_first_half = vor_orient2d(q, &s[from], &s[u], NULL) > 0;
+    bool t_first_half = vor__orient2d_sign(q, &s[from], &s[t]) > 0;
+    bool u_first_half = vor__orient2d_sign(q, &s[from], &s[u]) > 0;
     if (t_first_half != u_first_half) {
         return t_first_half;
     }
-    return vor_orient2d(q, &s[t], &s[u], NULL) > 0;
+    return vor__orient2d_sign(q, &s[t], &s[u]) > 0;
 }
 
 /* The site after `current` going counterclockwise around the empty circle
@@ -112,7 +119,7 @@ static uint32_t next_on_circle(const vor_t *d, const vor_point_t *q, uint32_t be
     uint32_t n, third, next = current;
     vor__fan_begin(&it, d, current);
     while (vor__fan_next(&it, &n, &third)) {
-        if (vor_closer(q, &d->sites[n], &d->sites[best], NULL) == 0 &&
+        if (vor__closer_sign(q, &d->sites[n], &d->sites[best], NULL) == 0 &&
             (next == current || before(d, q, current, n, next))) {
             next = n;
         }
@@ -151,18 +158,17 @@ static uint32_t walk_to_nearest(const vor_t *d, const vor_point_t *q, uint32_t f
     return best;
 }
 
-int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *site)
+int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site)
 {
     if (d == NULL || site == NULL) {
         return VOR_ERR_ARG;
     }
     uint32_t best;
-    int err = query_start(d, x, y, hint, &best);
+    int err = query_start(d, q.x, q.y, hint, &best);
     if (err != VOR_OK || d->vertex_count == 1u) {
         *site = (err == VOR_OK) ? best : *site;
         return err;
     }
-    const vor_point_t q = {x, y};
     bool tie = false;
     best = walk_to_nearest(d, &q, best, &tie);
     /* ties: around the empty circle through `best`, the smallest index.
@@ -183,7 +189,7 @@ int vor_nearest(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t *s
  * to q, or as close and a smaller id? */
 static bool ranks_before(const vor_t *d, const vor_point_t *q, uint32_t a, uint32_t b)
 {
-    int c = vor_closer(q, &d->sites[a], &d->sites[b], NULL);
+    int c = vor__closer_sign(q, &d->sites[a], &d->sites[b], NULL);
     return c < 0 || (c == 0 && a < b);
 }
 
@@ -207,14 +213,14 @@ static bool listed(const uint32_t *list, uint32_t count, uint32_t site)
  * neighbours around that empty circle are Delaunay neighbours of p. So
  * the next site is the best unlisted neighbour of the listed ones.
  */
-int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t k,
+int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
                   uint32_t *nearest, uint32_t *found)
 {
     if (d == NULL || (nearest == NULL && k > 0u) || found == NULL) {
         return VOR_ERR_ARG;
     }
     uint32_t best;
-    int err = query_start(d, x, y, hint, &best);
+    int err = query_start(d, q.x, q.y, hint, &best);
     if (err != VOR_OK) {
         return err;
     }
@@ -225,7 +231,6 @@ int vor_nearest_k(const vor_t *d, int32_t x, int32_t y, uint32_t hint, uint32_t 
         *found = (k > 0u) ? 1u : 0u;
         return VOR_OK;
     }
-    const vor_point_t q = {x, y};
     bool tie = false;
     best = walk_to_nearest(d, &q, best, &tie);
 
@@ -342,7 +347,8 @@ static VOR__NOINLINE int track_by_walk(vor_tracker_t *tracker, int32_t x, int32_
     const vor_t *d = tracker->d;
     bool current = tracker->revision == d->revision && tracker->site != VOR_NO_HINT;
     uint32_t answer;
-    int err = vor_nearest(d, x, y, current ? hint : VOR_NO_HINT, &answer);
+    vor_point_t q = {x, y};
+    int err = vor_nearest(d, q, current ? hint : VOR_NO_HINT, &answer);
     if (err != VOR_OK) {
         return err;
     }
@@ -351,11 +357,12 @@ static VOR__NOINLINE int track_by_walk(vor_tracker_t *tracker, int32_t x, int32_
     return VOR_OK;
 }
 
-int vor_track(vor_tracker_t *tracker, int32_t x, int32_t y, uint32_t *site)
+int vor_track(vor_tracker_t *tracker, vor_point_t q, uint32_t *site)
 {
     if (tracker == NULL || tracker->d == NULL || site == NULL) {
         return VOR_ERR_ARG;
     }
+    int32_t x = q.x, y = q.y;
     if (tracker->cached && tracker->revision == tracker->d->revision &&
         x >= tracker->low.x && x <= tracker->high.x && y >= tracker->low.y &&
         y <= tracker->high.y) {
@@ -389,15 +396,15 @@ static bool exact_conflict(const vor_t *d, const vor__tri_t *t, uint32_t p)
 {
     vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);
     if (v0 == VOR__INFINITE) {
-        return vor_orient2d_sos(d->sites, v1, v2, p, NULL) > 0;
+        return vor_orient2d_sos(d->sites, v1, v2, p) > 0;
     }
     if (v1 == VOR__INFINITE) {
-        return vor_orient2d_sos(d->sites, v2, v0, p, NULL) > 0;
+        return vor_orient2d_sos(d->sites, v2, v0, p) > 0;
     }
     if (v2 == VOR__INFINITE) {
-        return vor_orient2d_sos(d->sites, v0, v1, p, NULL) > 0;
+        return vor_orient2d_sos(d->sites, v0, v1, p) > 0;
     }
-    return vor_incircle_sos(d->sites, v0, v1, v2, p, NULL) > 0;
+    return vor_incircle_sos(d->sites, v0, v1, v2, p) > 0;
 }
 
 static int violation(vor_violation_t *out, enum vor_check check, uint32_t triangle,
@@ -473,7 +480,7 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
         }
         vor_index_t v[3];
         vor__vertices(t, v);
-        if (vor_orient2d(&s[v[0]], &s[v[1]], &s[v[2]], NULL) <= 0) {
+        if (vor__orient2d_sign(&s[v[0]], &s[v[1]], &s[v[2]]) <= 0) {
             return violation(out, VOR_CHECK_TRUE_OUTPUT, slot, v[0]);
         }
         reported++;
@@ -485,7 +492,7 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
              * straight on, past a hull site) at b */
             vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
             uint32_t c = boundary_after(d, slot, b);
-            if (c == VOR__INFINITE || c == a || vor_orient2d(&s[a], &s[b], &s[c], NULL) < 0) {
+            if (c == VOR__INFINITE || c == a || vor__orient2d_sign(&s[a], &s[b], &s[c]) < 0) {
                 return violation(out, VOR_CHECK_TRUE_OUTPUT, slot, b);
             }
             boundary++;
@@ -649,8 +656,7 @@ static int check_delaunay(const vor_t *d, vor_violation_t *out)
     for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &tri[s];
         if (!vor__is_ghost(t) &&
-            vor_orient2d_sos(d->sites, vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2),
-                             NULL) < 0) {
+            vor_orient2d_sos(d->sites, vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2)) < 0) {
             return violation(out, VOR_CHECK_ORIENTATION, s, vor__vertex(t, 0));
         }
     }

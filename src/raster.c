@@ -214,8 +214,9 @@ static size_t align8(size_t x)
 
 int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       const vor_raster_sites_t *sites, const vor_raster_output_t *out,
-                      void *work, size_t work_bytes)
+                      const vor_raster_options_t *options, void *work, size_t work_bytes)
 {
+    enum vor_raster_method method = (options != NULL) ? options->method : VOR_RASTER_FAST;
     if (frame == NULL || sites == NULL || out == NULL || work == NULL || !frame_ok(frame)) {
         return VOR_ERR_ARG;
     }
@@ -224,7 +225,7 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
     }
     if (sites->points == NULL || out->band == NULL ||
         out->flush == NULL || out->band_rows == 0u ||
-        (out->method != VOR_RASTER_FAST && out->method != VOR_RASTER_BRUTE)) {
+        (method != VOR_RASTER_FAST && method != VOR_RASTER_BRUTE)) {
         return VOR_ERR_ARG;
     }
     const uint32_t n = sites->count;
@@ -280,7 +281,7 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
     r->frame = frame;
     r->sites = sites;
     r->out = out;
-    r->brute = out->method == VOR_RASTER_BRUTE;
+    r->brute = method == VOR_RASTER_BRUTE;
     r->row_bytes = row_bytes;
     /* the two rows of runs first (16 width + 16 bytes at most), the
      * family's state after them (45 n or 48 n + 48 bytes): together

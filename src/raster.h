@@ -106,7 +106,7 @@ typedef struct vor__raster {
  * there yet), or the error vor_raster documents. */
 int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       const vor_raster_sites_t *sites, const vor_raster_output_t *out,
-                      void *work, size_t work_bytes);
+                      const vor_raster_options_t *options, void *work, size_t work_bytes);
 
 /* Starts the bands of a checked request (zeroes out->areas): the first
  * write to the caller's memory, after every check (vor__raster_scan). */
@@ -121,8 +121,8 @@ typedef void vor__raster_distances_fn(const void *state, uint32_t j, const vor__
 
 /* The scan every entry point ends with: starts the bands, then takes the
  * rows top down from the family's producers into the band writer, and
- * hands each full band to the output's flush. VOR_OK, or the flush's
- * nonzero value. Forced inline with the family's own static producers:
+ * hands each full band to the output's flush. VOR_OK, or VOR_ERR_STOPPED
+ * when a flush returned nonzero. Forced inline with the family's own static producers:
  * the calls are then direct (no function pointer hides which family a
  * firmware links, and tools/stack-depth.py sees every call), the
  * producers inline into the entry point as the compiler sees fit, and the
@@ -141,9 +141,8 @@ VOR__ALWAYS_INLINE int vor__raster_scan(vor__raster_t *r, void *state, vor__rast
                 distances(state, j, runs, count, vor__bands_pixels(&r->bands));
             }
         }
-        int status = vor__bands_put_flush(&r->bands, count);
-        if (status != 0) {
-            return status;
+        if (vor__bands_put_flush(&r->bands, count) != 0) {
+            return VOR_ERR_STOPPED; /* the flush's own code stays the caller's */
         }
     }
     return VOR_OK;

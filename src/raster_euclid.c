@@ -1055,10 +1055,11 @@ static void distances(const void *state, uint32_t j, const vor__run_t *runs, uin
 }
 
 int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                      const vor_raster_output_t *out, void *work, size_t work_bytes)
+                      const vor_raster_output_t *out, const vor_raster_options_t *options,
+                      void *work, size_t work_bytes)
 {
     vor__raster_t r;
-    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
+    int status = vor__raster_check(&r, frame, sites, out, options, work, work_bytes);
     if (status != VOR_OK) {
         return status;
     }

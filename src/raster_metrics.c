@@ -12,7 +12,7 @@
  * To rank sites, distances are never computed, only compared, each
  * through a "key" that holds an exact integer (or rational) image of the
  * distance, and one exact comparison per metric (key_compare).
- * docs/design.md, "Other metrics", derives each comparison and its width.
+ * docs/design/raster-metrics.md, "Other metrics", derives each comparison and its width.
  * Only the DISTANCE output turns the winning key into the floor of the
  * distance (metric_distance, "Distance output").
  *
@@ -259,7 +259,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 
 /*
  * Sign of (sqrt(A) - sqrt(B)) - delta for A, B >= 0: the additively
- * weighted comparison (docs/design.md, "Additive weights"). With
+ * weighted comparison (docs/design/raster-metrics.md, "Additive weights"). With
  * delta >= 0 it is the sign of E - 2 delta sqrt(B), E = A - B - delta^2;
  * with delta = -g < 0, the sign of 2 g sqrt(A) - F, F = B - A - g^2. Both
  * sides are squared only when they are known non-negative. n limbs hold
@@ -371,10 +371,10 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
     for (uint32_t i = 0; i < count; i++) {
         const vor_point_t *a = &p[i], *b = &p[i + 1u == count ? 0u : i + 1u];
         if (a->y <= q->y) {
-            if (b->y > q->y && vor_orient2d(a, b, q, NULL) > 0) {
+            if (b->y > q->y && vor_orient2d(*a, *b, *q) > 0) {
                 winding++; /* an upward edge with q on its left */
             }
-        } else if (b->y <= q->y && vor_orient2d(a, b, q, NULL) < 0) {
+        } else if (b->y <= q->y && vor_orient2d(*a, *b, *q) < 0) {
             winding--; /* a downward edge with q on its right */
         }
     }
@@ -482,7 +482,7 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
  *   floor(sqrt(X / D))        = isqrt(floor(X / D))   (the same, D > 0)
  *   floor(sqrt(A) / w)        = floor(isqrt(A) / w)   (r w <= sqrt(A) iff r w <= isqrt(A))
  *   floor(v - w)              = floor(v) - w
- * docs/design.md, "Distance output", has the bounds.
+ * docs/design/raster-metrics.md, "Distance output", has the bounds.
  */
 
 /* floor(sqrt(x)) (< 2^64) by the bit-by-bit method: bit runs over the
@@ -1143,13 +1143,14 @@ static void distances(const void *state, uint32_t j, const vor__run_t *runs, uin
 /* ------------------------------------------------------- entry point */
 
 int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-               const vor_raster_output_t *out, void *work, size_t work_bytes)
+               const vor_raster_output_t *out, const vor_raster_options_t *options,
+               void *work, size_t work_bytes)
 {
     if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
-        return vor_raster_euclid(frame, sites, out, work, work_bytes);
+        return vor_raster_euclid(frame, sites, out, options, work, work_bytes);
     }
     vor__raster_t r;
-    int status = vor__raster_check(&r, frame, sites, out, work, work_bytes);
+    int status = vor__raster_check(&r, frame, sites, out, options, work, work_bytes);
     if (status != VOR_OK) {
         return status;
     }

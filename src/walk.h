@@ -36,6 +36,7 @@
 #include "mesh.h"
 #include "multiword.h"
 #include "perturbation.h"
+#include "predicates.h"
 #include "vor.h"
 
 enum vor__walk_goal { VOR__WALK_SITE, VOR__WALK_POINT, VOR__WALK_LOWEST };
@@ -102,7 +103,7 @@ static inline int vor__walk_compare(vor__walk_t *w, const vor_point_t *s, uint32
     }
     if (w->goal == VOR__WALK_POINT) {
         return w->narrow ? vor__narrow_closer(ex, ey, at, &s[n])
-                         : vor_closer(w->q, &s[n], at, NULL);
+                         : vor__closer_sign(w->q, &s[n], at, NULL);
     }
     return (s[n].y < s[best].y || (s[n].y == s[best].y && s[n].x < s[best].x)) ? -1 : 1;
 }

@@ -81,8 +81,14 @@ bool test_same_bytes(const void *a, const void *b, size_t n);
 void test_copy_bytes(void *to, const void *from, size_t n);
 
 /* Every predicate call d's statistics counted (all tiers, perturbed
- * included): a move that made none took the motion cache's fast path. */
+ * included; the test builds count, VOR_STATS): a move that made none took
+ * the motion cache's fast path. UINT32_MAX from a library without them. */
 uint32_t test_predicate_calls(const vor_t *d);
+
+/* Builder options with a split and the other fields' defaults, for
+ * vor_build_dc and vor_build_dc_forked. */
+#define TEST_SPLIT(split)                                                      \
+    (&(vor_build_options_t){VOR_ORDER_QUADTREE, (enum vor_dc_split)(split), 0})
 
 /* The groups of tests, one per part of the library. */
 /* An order-independent fingerprint of a set of triangles (fingerprint.c):

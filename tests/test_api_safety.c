@@ -122,11 +122,11 @@ static void check_small_hints(void)
     uint32_t out = 77, found = 77, list[4] = {77, 77, 77, 77};
     CHECK(vor_init(&diagram, arena, sizeof arena, SAFE_SITES) == VOR_OK, "init");
     snapshot();
-    CHECK(vor_insert_near(&diagram, 5, 5, 0, &out) == VOR_ERR_ARG && unchanged() && out == 77,
+    CHECK(vor_insert_near(&diagram, (vor_point_t){5, 5}, 0, &out) == VOR_ERR_ARG && unchanged() && out == 77,
           "empty diagram: hint 0 is not a site");
-    CHECK(vor_nearest(&diagram, 5, 5, VOR_NO_HINT, &out) == VOR_ERR_EMPTY && out == 77,
+    CHECK(vor_nearest(&diagram, (vor_point_t){5, 5}, VOR_NO_HINT, &out) == VOR_ERR_EMPTY && out == 77,
           "empty diagram: nearest");
-    CHECK(vor_insert_near(&diagram, 5, 5, VOR_NO_HINT, &out) == VOR_OK && out == 0u,
+    CHECK(vor_insert_near(&diagram, (vor_point_t){5, 5}, VOR_NO_HINT, &out) == VOR_OK && out == 0u,
           "empty diagram: VOR_NO_HINT accepted");
 
     vor_point_t same[COPIES];
@@ -141,20 +141,20 @@ static void check_small_hints(void)
     for (uint32_t hint = 1; hint < COPIES + 2u; hint++) { /* copies, then unused ids */
         out = found = 77;
         list[0] = 77;
-        bad += vor_insert_near(&diagram, 9, 9, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
-        bad += vor_nearest(&diagram, 9, 9, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
-        bad += vor_nearest_k(&diagram, 9, 9, hint, 2, list, &found) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_insert_near(&diagram, (vor_point_t){9, 9}, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_nearest(&diagram, (vor_point_t){9, 9}, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_nearest_k(&diagram, (vor_point_t){9, 9}, hint, 2, list, &found) == VOR_ERR_ARG ? 0u : 1u;
         bad += (out == 77 && found == 77 && list[0] == 77 && unchanged()) ? 0u : 1u;
     }
     CHECK(bad == 0, "one-vertex diagram: %u non-site hints accepted or wrote", bad);
-    CHECK(vor_nearest(&diagram, 9, 9, 0, &out) == VOR_OK && out == 0u &&
-              vor_nearest_k(&diagram, 9, 9, 0, 2, list, &found) == VOR_OK && found == 1u &&
+    CHECK(vor_nearest(&diagram, (vor_point_t){9, 9}, 0, &out) == VOR_OK && out == 0u &&
+              vor_nearest_k(&diagram, (vor_point_t){9, 9}, 0, 2, list, &found) == VOR_OK && found == 1u &&
               list[0] == 0u,
           "one-vertex diagram: its site as the hint");
-    CHECK(vor_insert_near(&diagram, -40, 1234, VOR_NO_HINT, &out) == VOR_ERR_DUPLICATE &&
+    CHECK(vor_insert_near(&diagram, (vor_point_t){-40, 1234}, VOR_NO_HINT, &out) == VOR_ERR_DUPLICATE &&
               out == 0u && unchanged(),
           "one-vertex diagram: a copy again");
-    CHECK(vor_insert_near(&diagram, 9, 9, 0, &out) == VOR_OK && out == COPIES &&
+    CHECK(vor_insert_near(&diagram, (vor_point_t){9, 9}, 0, &out) == VOR_OK && out == COPIES &&
               vor_validate(&diagram, NULL) == VOR_OK,
           "one-vertex diagram: insert from its site");
 }
@@ -169,19 +169,19 @@ static void check_insert_and_build(test_rng_t *rng)
         unsigned bad = 0;
         for (uint32_t i = 0; i < max_sites; i++) {
             out = 77;
-            bad += (vor_insert(&diagram, points[i].x, points[i].y, &out) == VOR_ERR_DUPLICATE &&
+            bad += (vor_insert(&diagram, points[i], &out) == VOR_ERR_DUPLICATE &&
                     out == i && unchanged())
                        ? 0u
                        : 1u;
             out = 77;
-            bad += (vor_insert_near(&diagram, points[i].x, points[i].y, VOR_NO_HINT, &out) ==
+            bad += (vor_insert_near(&diagram, points[i], VOR_NO_HINT, &out) ==
                         VOR_ERR_DUPLICATE &&
                     out == i && unchanged())
                        ? 0u
                        : 1u;
         }
         out = 77;
-        bad += (vor_insert(&diagram, -1, -1, &out) == VOR_ERR_FULL && out == 77 && unchanged())
+        bad += (vor_insert(&diagram, (vor_point_t){-1, -1}, &out) == VOR_ERR_FULL && out == 77 && unchanged())
                    ? 0u
                    : 1u;
         CHECK(bad == 0, "full diagram of %u: %u wrong answers", max_sites, bad);
@@ -201,17 +201,17 @@ static void check_insert_and_build(test_rng_t *rng)
     unsigned bad = 0;
     for (unsigned h = 0; h < sizeof bad_hints / sizeof bad_hints[0]; h++) {
         out = 77;
-        bad += (vor_insert_near(&diagram, 1, 2, bad_hints[h], &out) == VOR_ERR_ARG && out == 77 &&
+        bad += (vor_insert_near(&diagram, (vor_point_t){1, 2}, bad_hints[h], &out) == VOR_ERR_ARG && out == 77 &&
                 unchanged())
                    ? 0u
                    : 1u;
     }
     CHECK(bad == 0, "insert_near: %u bad hints accepted", bad);
-    CHECK(vor_insert(NULL, 1, 2, &out) == VOR_ERR_ARG &&
-              vor_insert_near(NULL, 1, 2, 0, &out) == VOR_ERR_ARG && out == 77,
+    CHECK(vor_insert(NULL, (vor_point_t){1, 2}, &out) == VOR_ERR_ARG &&
+              vor_insert_near(NULL, (vor_point_t){1, 2}, 0, &out) == VOR_ERR_ARG && out == 77,
           "insert: NULL diagram");
 
-    vor_build_options_t bad_order = {(enum vor_order)9};
+    vor_build_options_t bad_order = {(enum vor_order)9, VOR_DC_QUADTREE, 0};
     uint32_t dup_out[SAFE_SITES + 1u];
     fill(dup_out, sizeof dup_out, 0xEE);
     uint32_t dup_before[SAFE_SITES + 1u];
@@ -224,14 +224,14 @@ static void check_insert_and_build(test_rng_t *rng)
     CHECK(vor_build(&diagram, points, SAFE_SITES + 1u, NULL, dup_out) == VOR_ERR_FULL &&
               unchanged(),
           "build: more points than room");
-    CHECK(vor_build_dc(NULL, points, 3, VOR_DC_QUADTREE, dup_out) == VOR_ERR_ARG,
+    CHECK(vor_build_dc(NULL, points, 3, NULL, dup_out) == VOR_ERR_ARG,
           "build_dc: NULL diagram");
-    CHECK(vor_build_dc(&diagram, NULL, 3, VOR_DC_XSPLIT, dup_out) == VOR_ERR_ARG && unchanged(),
+    CHECK(vor_build_dc(&diagram, NULL, 3, TEST_SPLIT(VOR_DC_XSPLIT), dup_out) == VOR_ERR_ARG && unchanged(),
           "build_dc: NULL points");
-    CHECK(vor_build_dc(&diagram, points, 3, (enum vor_dc_split)9, dup_out) == VOR_ERR_ARG &&
+    CHECK(vor_build_dc(&diagram, points, 3, TEST_SPLIT(9), dup_out) == VOR_ERR_ARG &&
               unchanged(),
           "build_dc: unknown split");
-    CHECK(vor_build_dc(&diagram, points, SAFE_SITES + 1u, VOR_DC_QUADTREE, dup_out) ==
+    CHECK(vor_build_dc(&diagram, points, SAFE_SITES + 1u, NULL, dup_out) ==
                   VOR_ERR_FULL &&
               unchanged(),
           "build_dc: more points than room");
@@ -239,24 +239,24 @@ static void check_insert_and_build(test_rng_t *rng)
     vor_fork_join_t good = {safety_fork, safety_join, &calls};
     vor_fork_join_t no_fork = {NULL, safety_join, &calls};
     vor_fork_join_t no_join = {safety_fork, NULL, &calls};
-    CHECK(vor_build_dc_forked(NULL, points, 3, VOR_DC_QUADTREE, dup_out, &good) == VOR_ERR_ARG,
+    CHECK(vor_build_dc_forked(NULL, points, 3, NULL, dup_out, &good) == VOR_ERR_ARG,
           "build_dc_forked: NULL diagram");
-    CHECK(vor_build_dc_forked(&diagram, NULL, 3, VOR_DC_XSPLIT, dup_out, &good) == VOR_ERR_ARG &&
+    CHECK(vor_build_dc_forked(&diagram, NULL, 3, TEST_SPLIT(VOR_DC_XSPLIT), dup_out, &good) == VOR_ERR_ARG &&
               unchanged(),
           "build_dc_forked: NULL points");
-    CHECK(vor_build_dc_forked(&diagram, points, 3, (enum vor_dc_split)9, dup_out, &good) ==
+    CHECK(vor_build_dc_forked(&diagram, points, 3, TEST_SPLIT(9), dup_out, &good) ==
                   VOR_ERR_ARG &&
               unchanged(),
           "build_dc_forked: unknown split");
-    CHECK(vor_build_dc_forked(&diagram, points, 3, VOR_DC_QUADTREE, dup_out, &no_fork) ==
+    CHECK(vor_build_dc_forked(&diagram, points, 3, NULL, dup_out, &no_fork) ==
                   VOR_ERR_ARG &&
               unchanged(),
           "build_dc_forked: hook without fork");
-    CHECK(vor_build_dc_forked(&diagram, points, 3, VOR_DC_XSPLIT, dup_out, &no_join) ==
+    CHECK(vor_build_dc_forked(&diagram, points, 3, TEST_SPLIT(VOR_DC_XSPLIT), dup_out, &no_join) ==
                   VOR_ERR_ARG &&
               unchanged(),
           "build_dc_forked: hook without join");
-    CHECK(vor_build_dc_forked(&diagram, points, SAFE_SITES + 1u, VOR_DC_QUADTREE, dup_out,
+    CHECK(vor_build_dc_forked(&diagram, points, SAFE_SITES + 1u, NULL, dup_out,
                               &good) == VOR_ERR_FULL &&
               unchanged(),
           "build_dc_forked: more points than room");
@@ -268,7 +268,7 @@ static void check_insert_and_build(test_rng_t *rng)
     bad = 0;
     for (uint32_t i = 0; i < SAFE_SITES; i++) {
         uint32_t hint = (test_rng_u32(rng) & 1u) ? VOR_NO_HINT : (i > 0u ? i - 1u : VOR_NO_HINT);
-        bad += (vor_insert_near(&diagram, points[i].x, points[i].y, hint, &out) == VOR_OK &&
+        bad += (vor_insert_near(&diagram, points[i], hint, &out) == VOR_OK &&
                 out == i)
                    ? 0u
                    : 1u;
@@ -293,34 +293,35 @@ static void check_reads(void)
               vor_memory(&diagram, NULL) == VOR_ERR_ARG &&
               test_same_bytes(&memory, &memory_before, sizeof memory) && unchanged(),
           "memory: NULL");
+    vor_stats_t counters;
+    fill(&counters, sizeof counters, 0x34);
+    vor_stats_t counters_before = counters;
+    CHECK(vor_stats(NULL, &counters) == VOR_ERR_ARG && vor_stats(&diagram, NULL) == VOR_ERR_ARG &&
+              test_same_bytes(&counters, &counters_before, sizeof counters) && unchanged(),
+          "stats: NULL");
+    CHECK(vor_stats(&diagram, &counters) == VOR_OK && test_predicate_calls(&diagram) > 0u &&
+              unchanged(),
+          "stats: the test build counts");
 
-    /* the predicates: 0 for a NULL point or a repeated index */
+    /* the perturbed predicates: 0, never an answer, for a NULL array or a
+     * repeated index (points by value leave the others nothing to refuse) */
     vor_point_t a = {0, 0}, b = {1, 0}, c = {0, 1};
-    CHECK(vor_orient2d(NULL, &b, &c, NULL) == 0 && vor_orient2d(&a, NULL, &c, NULL) == 0 &&
-              vor_orient2d(&a, &b, NULL, NULL) == 0,
-          "orient2d: NULL point");
-    CHECK(vor_incircle(NULL, &b, &c, &a, NULL) == 0 && vor_incircle(&a, &b, &c, NULL, NULL) == 0,
-          "incircle: NULL point");
-    CHECK(vor_closer(NULL, &b, &c, NULL) == 0 && vor_closer(&a, &b, NULL, NULL) == 0,
-          "closer: NULL point");
-    CHECK(vor_orient2d_sos(NULL, 0, 1, 2, NULL) == 0 &&
-              vor_orient2d_sos(points, 0, 1, 1, NULL) == 0 &&
-              vor_orient2d_sos(points, 2, 1, 2, NULL) == 0,
+    CHECK(vor_orient2d_sos(NULL, 0, 1, 2) == 0 &&
+              vor_orient2d_sos(points, 0, 1, 1) == 0 &&
+              vor_orient2d_sos(points, 2, 1, 2) == 0,
           "orient2d_sos: NULL sites, repeated index");
-    CHECK(vor_incircle_sos(NULL, 0, 1, 2, 3, NULL) == 0 &&
-              vor_incircle_sos(points, 0, 1, 2, 0, NULL) == 0 &&
-              vor_incircle_sos(points, 0, 3, 2, 3, NULL) == 0,
+    CHECK(vor_incircle_sos(NULL, 0, 1, 2, 3) == 0 &&
+              vor_incircle_sos(points, 0, 1, 2, 0) == 0 &&
+              vor_incircle_sos(points, 0, 3, 2, 3) == 0,
           "incircle_sos: NULL sites, repeated index");
-    CHECK(vor_closer_sos(NULL, 0, 1, 2, NULL) == 0 && vor_closer_sos(points, 1, 1, 2, NULL) == 0 &&
-              vor_closer_sos(points, 0, 2, 2, NULL) == 0,
+    CHECK(vor_closer_sos(NULL, 0, 1, 2) == 0 && vor_closer_sos(points, 1, 1, 2) == 0 &&
+              vor_closer_sos(points, 0, 2, 2) == 0,
           "closer_sos: NULL sites, repeated index");
 
     vor_vertex_t vertex;
     fill(&vertex, sizeof vertex, 0x44);
     vor_vertex_t vertex_before = vertex;
-    CHECK(vor_circumcentre(NULL, &b, &c, &vertex) == VOR_ERR_ARG &&
-              vor_circumcentre(&a, &b, NULL, &vertex) == VOR_ERR_ARG &&
-              vor_circumcentre(&a, &b, &c, NULL) == VOR_ERR_ARG &&
+    CHECK(vor_circumcentre(a, b, c, NULL) == VOR_ERR_ARG &&
               vor_voronoi_vertex(NULL, 0, 1, 2, &vertex) == VOR_ERR_ARG &&
               vor_voronoi_vertex(&diagram, 0, 1, 2, NULL) == VOR_ERR_ARG &&
               vor_voronoi_vertex(&diagram, 0, 1, SAFE_SITES, &vertex) == VOR_ERR_ARG &&
@@ -329,13 +330,13 @@ static void check_reads(void)
           "vertices: NULL, ids out of range");
 
     uint32_t out = 77, found = 77, list[3] = {77, 77, 77};
-    CHECK(vor_nearest(NULL, 0, 0, VOR_NO_HINT, &out) == VOR_ERR_ARG &&
-              vor_nearest(&diagram, 0, 0, VOR_NO_HINT, NULL) == VOR_ERR_ARG &&
-              vor_nearest(&diagram, 0, 0, SAFE_SITES, &out) == VOR_ERR_ARG &&
-              vor_nearest_k(NULL, 0, 0, VOR_NO_HINT, 3, list, &found) == VOR_ERR_ARG &&
-              vor_nearest_k(&diagram, 0, 0, VOR_NO_HINT, 3, NULL, &found) == VOR_ERR_ARG &&
-              vor_nearest_k(&diagram, 0, 0, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG &&
-              vor_nearest_k(&diagram, 0, 0, SAFE_SITES + 7u, 3, list, &found) == VOR_ERR_ARG &&
+    CHECK(vor_nearest(NULL, (vor_point_t){0, 0}, VOR_NO_HINT, &out) == VOR_ERR_ARG &&
+              vor_nearest(&diagram, (vor_point_t){0, 0}, VOR_NO_HINT, NULL) == VOR_ERR_ARG &&
+              vor_nearest(&diagram, (vor_point_t){0, 0}, SAFE_SITES, &out) == VOR_ERR_ARG &&
+              vor_nearest_k(NULL, (vor_point_t){0, 0}, VOR_NO_HINT, 3, list, &found) == VOR_ERR_ARG &&
+              vor_nearest_k(&diagram, (vor_point_t){0, 0}, VOR_NO_HINT, 3, NULL, &found) == VOR_ERR_ARG &&
+              vor_nearest_k(&diagram, (vor_point_t){0, 0}, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG &&
+              vor_nearest_k(&diagram, (vor_point_t){0, 0}, SAFE_SITES + 7u, 3, list, &found) == VOR_ERR_ARG &&
               out == 77 && found == 77 && list[0] == 77 && list[2] == 77 && unchanged(),
           "nearest: NULL, bad hints");
 
@@ -347,11 +348,11 @@ static void check_reads(void)
     CHECK(vor_tracker_begin(NULL, &diagram) == VOR_ERR_ARG &&
               vor_tracker_begin(&tracker, NULL) == VOR_ERR_ARG &&
               test_same_bytes(&tracker, &tracker_before, sizeof tracker) &&
-              vor_track(&zeroed, 0, 0, &out) == VOR_ERR_ARG &&
-              vor_track(NULL, 0, 0, &out) == VOR_ERR_ARG && out == 77,
+              vor_track(&zeroed, (vor_point_t){0, 0}, &out) == VOR_ERR_ARG &&
+              vor_track(NULL, (vor_point_t){0, 0}, &out) == VOR_ERR_ARG && out == 77,
           "tracker: NULL, never begun");
     CHECK(vor_tracker_begin(&tracker, &diagram) == VOR_OK &&
-              vor_track(&tracker, 0, 0, NULL) == VOR_ERR_ARG && unchanged(),
+              vor_track(&tracker, (vor_point_t){0, 0}, NULL) == VOR_ERR_ARG && unchanged(),
           "track: NULL result");
 }
 
@@ -364,13 +365,16 @@ static void check_iterators(void)
     uint32_t ids[3] = {77, 77, 77}, site = 77, count = 77;
     unsigned bad = 0;
 
+    /* begin: VOR_ERR_ARG for a NULL iterator or diagram, a site not in
+     * the mesh, a NULL or inverted box, the iterator then closed; next: 1
+     * or 0, never an error, and 0 for NULL outputs, writing nothing */
     static vor_triangle_iter_t zero_triangles;
     vor_triangle_iter_t triangles;
-    vor_triangles_begin(NULL, &diagram);
+    bad += vor_triangles_begin(NULL, &diagram) != VOR_ERR_ARG;
     bad += vor_triangles_next(&zero_triangles, ids) + vor_triangles_next(NULL, ids) != 0;
-    vor_triangles_begin(&triangles, NULL);
+    bad += vor_triangles_begin(&triangles, NULL) != VOR_ERR_ARG;
     bad += vor_triangles_next(&triangles, ids) != 0;
-    vor_triangles_begin(&triangles, &diagram);
+    bad += vor_triangles_begin(&triangles, &diagram) != VOR_OK;
     bad += vor_triangles_next(&triangles, NULL) != 0;
     bad += (ids[0] != 77 || ids[2] != 77);
     while (vor_triangles_next(&triangles, ids)) {
@@ -381,15 +385,15 @@ static void check_iterators(void)
     bad = 0;
     static vor_neighbour_iter_t zero_neighbours;
     vor_neighbour_iter_t neighbours;
-    vor_neighbours_begin(NULL, &diagram, 0);
+    bad += vor_neighbours_begin(NULL, &diagram, 0) != VOR_ERR_ARG;
     bad += vor_neighbours_next(&zero_neighbours, &site) + vor_neighbours_next(NULL, &site) != 0;
-    vor_neighbours_begin(&neighbours, NULL, 0);
+    bad += vor_neighbours_begin(&neighbours, NULL, 0) != VOR_ERR_ARG;
     bad += vor_neighbours_next(&neighbours, &site) != 0;
-    vor_neighbours_begin(&neighbours, &diagram, SAFE_SITES);
+    bad += vor_neighbours_begin(&neighbours, &diagram, SAFE_SITES) != VOR_ERR_ARG;
     bad += vor_neighbours_next(&neighbours, &site) != 0;
-    vor_neighbours_begin(&neighbours, &diagram, VOR_NO_HINT);
+    bad += vor_neighbours_begin(&neighbours, &diagram, VOR_NO_HINT) != VOR_ERR_ARG;
     bad += vor_neighbours_next(&neighbours, &site) != 0;
-    vor_neighbours_begin(&neighbours, &diagram, 0);
+    bad += vor_neighbours_begin(&neighbours, &diagram, 0) != VOR_OK;
     bad += vor_neighbours_next(&neighbours, NULL) != 0;
     bad += site != 77;
     while (vor_neighbours_next(&neighbours, &site)) {
@@ -403,11 +407,11 @@ static void check_iterators(void)
     vor_edge_t edge;
     fill(&edge, sizeof edge, 0x77);
     vor_edge_t edge_before = edge;
-    vor_edges_begin(NULL, &diagram);
+    bad += vor_edges_begin(NULL, &diagram) != VOR_ERR_ARG;
     bad += vor_edges_next(&zero_edges, &edge) + vor_edges_next(NULL, &edge) != 0;
-    vor_edges_begin(&edges, NULL);
+    bad += vor_edges_begin(&edges, NULL) != VOR_ERR_ARG;
     bad += vor_edges_next(&edges, &edge) != 0;
-    vor_edges_begin(&edges, &diagram);
+    bad += vor_edges_begin(&edges, &diagram) != VOR_OK;
     bad += vor_edges_next(&edges, NULL) != 0;
     bad += !test_same_bytes(&edge, &edge_before, sizeof edge);
     while (vor_edges_next(&edges, &edge)) {
@@ -419,11 +423,11 @@ static void check_iterators(void)
     site = 77;
     static vor_hull_iter_t zero_hull;
     vor_hull_iter_t hull;
-    vor_hull_begin(NULL, &diagram);
+    bad += vor_hull_begin(NULL, &diagram) != VOR_ERR_ARG;
     bad += vor_hull_next(&zero_hull, &site) + vor_hull_next(NULL, &site) != 0;
-    vor_hull_begin(&hull, NULL);
+    bad += vor_hull_begin(&hull, NULL) != VOR_ERR_ARG;
     bad += vor_hull_next(&hull, &site) != 0;
-    vor_hull_begin(&hull, &diagram);
+    bad += vor_hull_begin(&hull, &diagram) != VOR_OK;
     bad += vor_hull_next(&hull, NULL) != 0;
     bad += site != 77;
     while (vor_hull_next(&hull, &site)) {
@@ -431,7 +435,8 @@ static void check_iterators(void)
     bad += vor_hull_next(&hull, &site) != 0;
     CHECK(bad == 0 && unchanged(), "hull iterator: %u wrong", bad);
 
-    /* cells: a missing or inverted box is VOR_ERR_ARG at every step */
+    /* cells: a missing or inverted box is VOR_ERR_ARG at begin, and the
+     * iterator is closed; bad outputs stop next with VOR_ERR_ARG kept */
     bad = 0;
     site = count = 77;
     vor_point_t poly[VOR_CELL_MAX_VERTICES(SAFE_SITES)];
@@ -443,24 +448,55 @@ static void check_iterators(void)
     vor_cell_iter_t cells;
     vor_box_t box = {-10, -10, 9000, 5000};
     vor_box_t inverted_x = {10, 0, 9, 100}, inverted_y = {0, 10, 100, 9}, flat = {0, 7, 9000, 7};
-    vor_cells_begin(NULL, &diagram, &box);
+    bad += vor_cells_begin(NULL, &diagram, &box) != VOR_ERR_ARG;
+    bad += vor_cells_error(NULL) != VOR_ERR_ARG;
     bad += vor_cells_next(&zero_cells, &site, poly, capacity, &count) != 0;
+    bad += vor_cells_error(&zero_cells) != VOR_OK;
     bad += vor_cells_next(NULL, &site, poly, capacity, &count) != 0;
-    vor_cells_begin(&cells, NULL, &box);
+    bad += vor_cells_begin(&cells, NULL, &box) != VOR_ERR_ARG;
     bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
-    vor_cells_begin(&cells, &diagram, NULL);
-    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
-    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
-    vor_cells_begin(&cells, &diagram, &inverted_x);
-    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
-    vor_cells_begin(&cells, &diagram, &inverted_y);
-    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != VOR_ERR_ARG;
-    vor_cells_begin(&cells, &diagram, &box);
-    bad += vor_cells_next(&cells, NULL, poly, capacity, &count) != VOR_ERR_ARG;
-    bad += vor_cells_next(&cells, &site, poly, capacity, NULL) != VOR_ERR_ARG;
-    bad += vor_cells_next(&cells, &site, NULL, capacity, &count) != VOR_ERR_ARG;
+    bad += vor_cells_error(&cells) != VOR_ERR_ARG;
+    bad += vor_cells_begin(&cells, &diagram, NULL) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
+    bad += vor_cells_error(&cells) != VOR_ERR_ARG;
+    bad += vor_cells_begin(&cells, &diagram, &inverted_x) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
+    bad += vor_cells_error(&cells) != VOR_ERR_ARG;
+    bad += vor_cells_begin(&cells, &diagram, &inverted_y) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 0;
+    bad += vor_cells_error(&cells) != VOR_ERR_ARG;
+    bad += vor_cells_begin(&cells, &diagram, &box) != VOR_OK;
+    bad += vor_cells_error(&cells) != VOR_OK;
+    bad += vor_cells_next(&cells, NULL, poly, capacity, &count) != 0;
+    bad += vor_cells_error(&cells) != VOR_ERR_ARG;
+    bad += vor_cells_next(&cells, &site, poly, capacity, NULL) != 0;
+    bad += vor_cells_next(&cells, &site, NULL, capacity, &count) != 0;
+    bad += vor_cells_error(&cells) != VOR_ERR_ARG;
     bad += (site != 77 || count != 77 || !test_same_bytes(poly, poly_before, sizeof poly));
     CHECK(bad == 0 && unchanged(), "cell iterator, bad arguments: %u wrong", bad);
+
+    /* a buffer too small for every cell: `while (next)` ends at once, with
+     * VOR_ERR_BUFFER kept and the vertices needed in count, and resumes
+     * at that cell with a large enough buffer (it spun forever when next
+     * returned errors in its one channel) */
+    bad = 0;
+    unsigned rounds = 0;
+    bad += vor_cells_begin(&cells, &diagram, &box) != VOR_OK;
+    while (vor_cells_next(&cells, &site, poly, 2, &count) && rounds < 1000u) {
+        rounds++;
+    }
+    bad += rounds != 0u;
+    bad += vor_cells_error(&cells) != VOR_ERR_BUFFER || site != 0u || count <= 2u;
+    uint32_t needed = count;
+    bad += vor_cells_next(&cells, &site, poly, capacity, &count) != 1 || site != 0u ||
+           count != needed || vor_cells_error(&cells) != VOR_OK;
+    while (vor_cells_next(&cells, &site, poly, capacity, &count) && rounds < 1000u) {
+        rounds++;
+    }
+    bad += rounds != SAFE_SITES - 1u || vor_cells_error(&cells) != VOR_OK;
+    CHECK(bad == 0 && unchanged(), "cell iterator, small buffer: %u wrong", bad);
+    test_copy_bytes(poly, poly_before, sizeof poly);
 
     /* an empty (flat) box: every site's cell, each with no vertices */
     uint32_t listed = 0;
@@ -536,7 +572,7 @@ static void check_raster(void)
     vor_raster_frame_t frame = {0, 0, 100, 100, 8, 4};
     vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
-                               NULL, NULL, areas, VOR_RASTER_FAST};
+                               NULL, NULL, areas};
     vor_raster_frame_t empty = frame, inverted = frame;
     empty.width = 0;
     inverted.step_x = -100;
@@ -549,29 +585,31 @@ static void check_raster(void)
     l1.metric = VOR_METRIC_L1;
     /* both entry points; vor_raster_euclid also refuses another metric */
     int (*const entries[2])(const vor_raster_frame_t *, const vor_raster_sites_t *,
-                            const vor_raster_output_t *, void *, size_t) = {vor_raster,
-                                                                            vor_raster_euclid};
+                            const vor_raster_output_t *, const vor_raster_options_t *, void *,
+                            size_t) = {vor_raster, vor_raster_euclid};
+    vor_raster_options_t bad_method = {(enum vor_raster_method)7};
     for (unsigned e = 0; e < 2u; e++) {
         unsigned bad = 0;
-        bad += entries[e](NULL, &set, &out, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&frame, NULL, &out, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&frame, &set, NULL, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&frame, &set, &out, NULL, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&frame, &no_points, &out, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&frame, &set, &no_band, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&frame, &set, &no_flush, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&empty, &set, &out, work, sizeof work) != VOR_ERR_ARG;
-        bad += entries[e](&inverted, &set, &out, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](NULL, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, NULL, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, NULL, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &out, NULL, NULL, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &no_points, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &no_band, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &no_flush, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&empty, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&inverted, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &set, &out, &bad_method, work, sizeof work) != VOR_ERR_ARG;
         if (e == 1u) {
-            bad += vor_raster_euclid(&frame, &l1, &out, work, sizeof work) != VOR_ERR_ARG;
+            bad += vor_raster_euclid(&frame, &l1, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         }
         bad += (flushes != 0u || !test_same_bytes(band, band_before, sizeof band) ||
                 !test_same_bytes(areas, areas_before, sizeof areas));
         CHECK(bad == 0, "raster entry %u: %u bad arguments accepted or wrote", e, bad);
     }
-    CHECK(vor_raster(&frame, &set, &out, work, sizeof work) == VOR_OK && flushes == 1u,
+    CHECK(vor_raster(&frame, &set, &out, NULL, work, sizeof work) == VOR_OK && flushes == 1u,
           "raster: the good call");
-    CHECK(vor_raster_euclid(&frame, &set, &out, work, sizeof work) == VOR_OK && flushes == 2u,
+    CHECK(vor_raster_euclid(&frame, &set, &out, NULL, work, sizeof work) == VOR_OK && flushes == 2u,
           "raster_euclid: the good call");
 }
 
@@ -586,13 +624,13 @@ static void check_zeroed_diagram(void)
     vor_vertex_t vertex;
     vor_memory_t memory;
     unsigned bad = 0;
-    bad += vor_insert(&zeroed, 1, 1, &out) != VOR_ERR_FULL;
-    bad += vor_insert_near(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_FULL;
+    bad += vor_insert(&zeroed, (vor_point_t){1, 1}, &out) != VOR_ERR_FULL;
+    bad += vor_insert_near(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, &out) != VOR_ERR_FULL;
     bad += vor_build(&zeroed, points, 1, NULL, NULL) != VOR_ERR_FULL;
-    bad += vor_build_dc(&zeroed, points, 1, VOR_DC_QUADTREE, NULL) != VOR_ERR_FULL;
-    bad += vor_build_dc_forked(&zeroed, points, 1, VOR_DC_XSPLIT, NULL, NULL) != VOR_ERR_FULL;
-    bad += vor_nearest(&zeroed, 1, 1, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
-    bad += vor_nearest_k(&zeroed, 1, 1, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
+    bad += vor_build_dc(&zeroed, points, 1, NULL, NULL) != VOR_ERR_FULL;
+    bad += vor_build_dc_forked(&zeroed, points, 1, TEST_SPLIT(VOR_DC_XSPLIT), NULL, NULL) != VOR_ERR_FULL;
+    bad += vor_nearest(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
+    bad += vor_nearest_k(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
     bad += vor_cell(&zeroed, 0, &box, poly, 4, &count) != VOR_ERR_ARG;
     vor_centroid_t centroid;
     bad += vor_cell_centroid(&zeroed, 0, &box, NULL, 0, &centroid) != VOR_ERR_ARG;
@@ -618,7 +656,7 @@ static void check_zeroed_diagram(void)
     bad += vor_cells_next(&cells, &out, poly, 4, &count) != 0;
     vor_tracker_t tracker;
     bad += (vor_tracker_begin(&tracker, &zeroed) != VOR_OK ||
-            vor_track(&tracker, 0, 0, &out) != VOR_ERR_EMPTY);
+            vor_track(&tracker, (vor_point_t){0, 0}, &out) != VOR_ERR_EMPTY);
     CHECK(bad == 0 && out == 77, "a never-initialised diagram: %u wrong answers", bad);
 }
 

@@ -121,7 +121,7 @@ static void do_insert(vor_t *d, model_t *m, vor_point_t p, const char *what, uin
     if (twin != VOR_NO_HINT || full) {
         save(d);
     }
-    int err = vor_insert(d, p.x, p.y, &id);
+    int err = vor_insert(d, p, &id);
     if (twin != VOR_NO_HINT) {
         CHECK(err == VOR_ERR_DUPLICATE && id == twin,
               "%s step %u: insert onto site %u gave %d, id %u", what, step, twin, err, id);
@@ -170,7 +170,7 @@ static void do_move(vor_t *d, model_t *m, uint32_t id, vor_point_t p, const char
     if (fails || stays) {
         save(d);
     }
-    int err = vor_move(d, id, p.x, p.y, &existing);
+    int err = vor_move(d, id, p, &existing);
     if (!live) {
         CHECK(err == VOR_ERR_ARG, "%s step %u: moving non-site %u gave %d", what, step, id, err);
     } else if (twin != VOR_NO_HINT && twin != id) {
@@ -299,26 +299,26 @@ static void down_to_nothing(void)
         check_state(&d, &m, "drain", 100u + i);
     }
     uint32_t nearest;
-    CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &nearest) == VOR_ERR_EMPTY, "empty after removals");
+    CHECK(vor_nearest(&d, (vor_point_t){0, 0}, VOR_NO_HINT, &nearest) == VOR_ERR_EMPTY, "empty after removals");
     for (uint32_t i = 0; i < 14u; i++) { /* ids come back, then new ones */
         do_insert(&d, &m, random_point(&rng, UNIFORM), "refill", 200u + i);
         check_state(&d, &m, "refill", 200u + i);
     }
     do_remove(&d, &m, DYN_SITES + 3u, "refill", 300);
     CHECK(vor_remove(NULL, 0) == VOR_ERR_ARG, "vor_remove(NULL)");
-    CHECK(vor_move(NULL, 0, 0, 0, NULL) == VOR_ERR_ARG, "vor_move(NULL)");
+    CHECK(vor_move(NULL, 0, (vor_point_t){0, 0}, NULL) == VOR_ERR_ARG, "vor_move(NULL)");
 
     /* one site of capacity one: its only id comes back */
     static uint8_t one[VOR_ARENA_BYTES(1)] __attribute__((aligned(8)));
     vor_t solo;
     uint32_t id = 9;
     vor_init(&solo, one, sizeof one, 1);
-    CHECK(vor_insert(&solo, 4, 5, &id) == VOR_OK && id == 0, "solo insert");
-    CHECK(vor_move(&solo, 0, 6, 7, NULL) == VOR_OK && solo.sites[0].x == 6, "solo move");
+    CHECK(vor_insert(&solo, (vor_point_t){4, 5}, &id) == VOR_OK && id == 0, "solo insert");
+    CHECK(vor_move(&solo, 0, (vor_point_t){6, 7}, NULL) == VOR_OK && solo.sites[0].x == 6, "solo move");
     CHECK(vor_remove(&solo, 0) == VOR_OK && solo.vertex_count == 0, "solo remove");
     CHECK(vor_remove(&solo, 0) == VOR_ERR_ARG, "solo remove twice");
-    CHECK(vor_insert(&solo, 1, 1, &id) == VOR_OK && id == 0, "solo id reused");
-    CHECK(vor_insert(&solo, 2, 2, &id) == VOR_ERR_FULL, "solo full");
+    CHECK(vor_insert(&solo, (vor_point_t){1, 1}, &id) == VOR_OK && id == 0, "solo id reused");
+    CHECK(vor_insert(&solo, (vor_point_t){2, 2}, &id) == VOR_ERR_FULL, "solo full");
 }
 
 /* ------------------------------------------------------------------ */
@@ -547,13 +547,13 @@ static void build_duplicates(void)
     vor_init(&d, arena, sizeof arena, DYN_SITES);
     CHECK(vor_build(&d, points, 6, NULL, NULL) == VOR_OK, "build with duplicates");
     save(&d);
-    CHECK(vor_remove(&d, 2) == VOR_ERR_ARG && vor_move(&d, 5, 1, 1, NULL) == VOR_ERR_ARG &&
+    CHECK(vor_remove(&d, 2) == VOR_ERR_ARG && vor_move(&d, 5, (vor_point_t){1, 1}, NULL) == VOR_ERR_ARG &&
               unchanged(&d),
           "a duplicate's id is no site");
     uint32_t id = 0;
-    CHECK(vor_remove(&d, 1) == VOR_OK && vor_insert(&d, 3, 4, &id) == VOR_OK && id == 1,
+    CHECK(vor_remove(&d, 1) == VOR_OK && vor_insert(&d, (vor_point_t){3, 4}, &id) == VOR_OK && id == 1,
           "the freed id, not a duplicate's, comes back");
-    CHECK(vor_insert(&d, 4, 3, &id) == VOR_OK && id == 6, "then a new id");
+    CHECK(vor_insert(&d, (vor_point_t){4, 3}, &id) == VOR_OK && id == 6, "then a new id");
     CHECK(vor_validate(&d, NULL) == VOR_OK, "valid after reuse");
 }
 
@@ -593,7 +593,7 @@ static void trackers(void)
         uint32_t answer = VOR_NO_HINT;
         x += test_rng_range(&rng, -40, 40);
         y += test_rng_range(&rng, -40, 40);
-        CHECK(vor_track(&robot, x, y, &answer) == VOR_OK &&
+        CHECK(vor_track(&robot, (vor_point_t){x, y}, &answer) == VOR_OK &&
                   answer == brute_nearest(&m, x, y),
               "tracker step %u: %u, brute force %u", step, answer, brute_nearest(&m, x, y));
         if (step % 3u == 0u && live_count(&m) > 4u) {

@@ -10,14 +10,14 @@
  * all ids, the packed extra slots, the sites, the bucket grid, the counts,
  * last_site, duplicate_of and the sums of the predicate statistics; and
  * vor_validate must pass. Whether the hook is called at all follows from
- * how each input is made (its size against VOR_DC_FORK_MIN_SITES, and
+ * how each input is made (its size against VOR_DC_FORK_MIN_SITES_DEFAULT, and
  * which halves of the grid it fills), never from the library.
  */
 #include "test.h"
 #include "vor.h"
 
 #define FJ_SITES 3000u
-typedef char fj_sites_check[(FJ_SITES > VOR_DC_FORK_MIN_SITES + 1u) ? 1 : -1];
+typedef char fj_sites_check[(FJ_SITES > VOR_DC_FORK_MIN_SITES_DEFAULT + 1u) ? 1 : -1];
 
 static vor_point_t points[FJ_SITES];
 static uint32_t dup_seq[FJ_SITES], dup_fork[FJ_SITES];
@@ -123,8 +123,13 @@ static void fill(uint8_t *to, size_t n)
     }
 }
 
-static bool same_stats(const vor_predicate_stats_t *a, const vor_predicate_stats_t *b)
+static bool same_stats(const vor_t *da, const vor_t *db)
 {
+    vor_stats_t sa, sb;
+    if (vor_stats(da, &sa) != VOR_OK || vor_stats(db, &sb) != VOR_OK) {
+        return false;
+    }
+    const vor_stats_t *a = &sa, *b = &sb;
     bool same = a->orient2d_perturbed == b->orient2d_perturbed &&
                 a->incircle_perturbed == b->incircle_perturbed &&
                 a->closer_perturbed == b->closer_perturbed;
@@ -166,7 +171,7 @@ static const char *first_difference(const vor_t *a, const vor_t *b, uint32_t n)
                     (size_t)a->bucket_columns * a->bucket_rows * sizeof(vor_index_t))) {
         return "bucket grid";
     }
-    if (!same_stats(&a->stats, &b->stats)) {
+    if (!same_stats(a, b)) {
         return "predicate stats";
     }
     if (!test_same_bytes(dup_seq, dup_fork, (size_t)n * sizeof(uint32_t))) {
@@ -184,7 +189,7 @@ static const char *first_difference(const vor_t *a, const vor_t *b, uint32_t n)
  * sites). */
 static bool expect_fork(enum family f, uint32_t n, enum vor_dc_split split)
 {
-    if (n < VOR_DC_FORK_MIN_SITES) {
+    if (n < VOR_DC_FORK_MIN_SITES_DEFAULT) {
         return false;
     }
     return split == VOR_DC_XSPLIT || f != F_TOP;
@@ -197,7 +202,7 @@ static void check_family(enum family f, uint32_t n, test_rng_t *rng)
         vor_t seq;
         fill(arena_seq, sizeof arena_seq);
         CHECK(vor_init(&seq, arena_seq, sizeof arena_seq, FJ_SITES) == VOR_OK, "init");
-        CHECK(vor_build_dc(&seq, points, n, (enum vor_dc_split)split, dup_seq) == VOR_OK,
+        CHECK(vor_build_dc(&seq, points, n, TEST_SPLIT(split), dup_seq) == VOR_OK,
               "build_dc");
         for (unsigned m = 0; m < HOOK_MODES; m++) {
             test_hook_t h = {(enum hook_mode)m, 0, 0, 0, NULL, NULL};
@@ -205,7 +210,7 @@ static void check_family(enum family f, uint32_t n, test_rng_t *rng)
             vor_t d;
             fill(arena_fork, sizeof arena_fork);
             CHECK(vor_init(&d, arena_fork, sizeof arena_fork, FJ_SITES) == VOR_OK, "init");
-            CHECK(vor_build_dc_forked(&d, points, n, (enum vor_dc_split)split, dup_fork,
+            CHECK(vor_build_dc_forked(&d, points, n, TEST_SPLIT(split), dup_fork,
                                       &hook) == VOR_OK,
                   "build_dc_forked");
             const char *diff = first_difference(&seq, &d, n);
@@ -235,19 +240,45 @@ static void check_no_hook(test_rng_t *rng)
     CHECK(vor_init(&seq, arena_seq, sizeof arena_seq, FJ_SITES) == VOR_OK &&
               vor_init(&d, arena_fork, sizeof arena_fork, FJ_SITES) == VOR_OK,
           "init");
-    CHECK(vor_build_dc(&seq, points, FJ_SITES, VOR_DC_QUADTREE, dup_seq) == VOR_OK &&
-              vor_build_dc_forked(&d, points, FJ_SITES, VOR_DC_QUADTREE, dup_fork, NULL) ==
+    CHECK(vor_build_dc(&seq, points, FJ_SITES, NULL, dup_seq) == VOR_OK &&
+              vor_build_dc_forked(&d, points, FJ_SITES, NULL, dup_fork, NULL) ==
                   VOR_OK,
           "builds");
     const char *diff = first_difference(&seq, &d, FJ_SITES);
     CHECK(diff == NULL, "no hook: %s differ", (diff != NULL) ? diff : "none");
 }
 
+/* options->fork_min_sites moves the threshold: uniform sites fork from
+ * exactly that many on, with vor_build_dc's result. */
+static void check_fork_min(test_rng_t *rng)
+{
+    for (uint32_t n = 99; n <= 100u; n++) {
+        make_family(F_UNIFORM, n, rng);
+        vor_t seq, d;
+        fill(arena_seq, sizeof arena_seq);
+        fill(arena_fork, sizeof arena_fork);
+        test_hook_t h = {HOOK_AT_ONCE, 0, 0, 0, NULL, NULL};
+        vor_fork_join_t hook = {hook_fork, hook_join, &h};
+        vor_build_options_t options = {VOR_ORDER_QUADTREE, VOR_DC_XSPLIT, 100};
+        CHECK(vor_init(&seq, arena_seq, sizeof arena_seq, FJ_SITES) == VOR_OK &&
+                  vor_init(&d, arena_fork, sizeof arena_fork, FJ_SITES) == VOR_OK,
+              "init");
+        CHECK(vor_build_dc(&seq, points, n, &options, dup_seq) == VOR_OK &&
+                  vor_build_dc_forked(&d, points, n, &options, dup_fork, &hook) == VOR_OK,
+              "builds");
+        const char *diff = first_difference(&seq, &d, n);
+        CHECK(diff == NULL && h.forks == (n >= 100u ? 1u : 0u),
+              "fork_min_sites 100, %u sites: %s differ, %u forks", n,
+              (diff != NULL) ? diff : "none", h.forks);
+    }
+}
+
 void test_fork_join(void)
 {
     test_rng_t rng;
-    static const uint32_t sizes[] = {VOR_DC_FORK_MIN_SITES - 1u, VOR_DC_FORK_MIN_SITES,
-                                     VOR_DC_FORK_MIN_SITES + 1u, FJ_SITES};
+    static const uint32_t sizes[] = {VOR_DC_FORK_MIN_SITES_DEFAULT - 1u,
+                                     VOR_DC_FORK_MIN_SITES_DEFAULT,
+                                     VOR_DC_FORK_MIN_SITES_DEFAULT + 1u, FJ_SITES};
     for (unsigned f = 0; f < F_FAMILIES; f++) {
         for (unsigned s = 0; s < 4u; s++) {
             /* every size for the random families, the threshold and the
@@ -261,4 +292,5 @@ void test_fork_join(void)
         }
     }
     TEST_CASE("no_hook") check_no_hook(test_rng_seed(&rng, 0xF0F0));
+    TEST_CASE("fork_min") check_fork_min(test_rng_seed(&rng, 0xF0F1));
 }

@@ -143,7 +143,7 @@ static int expected_round(big_t twice_num, big_t den, int32_t *value)
 static bool check_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, const char *what)
 {
     vor_vertex_t got;
-    int err = vor_circumcentre(&a, &b, &c, &got);
+    int err = vor_circumcentre(a, b, c, &got);
     const vor_point_t *p[3] = {&a, &b, &c};
     big_t x[3], y[3], l[3];
     for (unsigned i = 0; i < 3; i++) {
@@ -223,16 +223,15 @@ static void test_vertices(test_rng_t *rng)
     /* exact halves round up (toward +infinity): (0,0) (1,0) (0,1) -> (1/2, 1/2) */
     vor_point_t a = {0, 0}, b = {1, 0}, c = {0, 1};
     vor_vertex_t v;
-    CHECK(vor_circumcentre(&a, &b, &c, &v) == VOR_OK && v.point.x == 1 && v.point.y == 1 &&
+    CHECK(vor_circumcentre(a, b, c, &v) == VOR_OK && v.point.x == 1 && v.point.y == 1 &&
               v.status == VOR_VERTEX_IN_RANGE,
           "(1/2, 1/2) rounds to (1, 1): (%d, %d)", v.point.x, v.point.y);
     a.x = -1; /* (-1,0) (0,0)... centre (-1/2, 1/2) */
     b.x = 0;
     c.x = -1;
-    CHECK(vor_circumcentre(&a, &b, &c, &v) == VOR_OK && v.point.x == 0 && v.point.y == 1,
+    CHECK(vor_circumcentre(a, b, c, &v) == VOR_OK && v.point.x == 0 && v.point.y == 1,
           "(-1/2, 1/2) rounds to (0, 1): (%d, %d)", v.point.x, v.point.y);
-    CHECK(vor_circumcentre(NULL, &b, &c, &v) == VOR_ERR_ARG, "NULL point");
-    CHECK(vor_circumcentre(&a, &b, &c, NULL) == VOR_ERR_ARG, "NULL result");
+    CHECK(vor_circumcentre(a, b, c, NULL) == VOR_ERR_ARG, "NULL result");
     vor_point_t far1 = {INT32_MIN, INT32_MIN}, far2 = {INT32_MAX, INT32_MIN + 1},
                 far3 = {INT32_MAX, INT32_MIN};
     check_circumcentre(far1, far2, far3, "thin, out of range");
@@ -252,7 +251,7 @@ static bool strictly_inside(vor_point_t a, vor_point_t m, vor_point_t b)
 
 static int orient(uint32_t a, uint32_t b, uint32_t c)
 {
-    return vor_orient2d(&sites[a], &sites[b], &sites[c], NULL);
+    return vor_orient2d(sites[a], sites[b], sites[c]);
 }
 
 static bool same_vertex(vor_vertex_t a, vor_vertex_t b)
@@ -278,16 +277,16 @@ static bool brute_edge(uint32_t n, uint32_t p, uint32_t q, vor_edge_t *e)
                 return false;
             }
         } else if (o > 0) {
-            if (hi == GEO_SITES || vor_incircle(&sites[p], &sites[q], &sites[hi], &sites[r], NULL) > 0) {
+            if (hi == GEO_SITES || vor_incircle(sites[p], sites[q], sites[hi], sites[r]) > 0) {
                 hi = r;
             }
         } else if (lo == GEO_SITES ||
-                   vor_incircle(&sites[q], &sites[p], &sites[lo], &sites[r], NULL) > 0) {
+                   vor_incircle(sites[q], sites[p], sites[lo], sites[r]) > 0) {
             lo = r;
         }
     }
     if (lo != GEO_SITES && hi != GEO_SITES &&
-        vor_incircle(&sites[p], &sites[q], &sites[hi], &sites[lo], NULL) >= 0) {
+        vor_incircle(sites[p], sites[q], sites[hi], sites[lo]) >= 0) {
         return false; /* empty or a single point */
     }
     if (lo == GEO_SITES && hi != GEO_SITES) { /* a ray from its end: turn round */
@@ -312,10 +311,10 @@ static bool brute_edge(uint32_t n, uint32_t p, uint32_t q, vor_edge_t *e)
         e->from.status = VOR_VERTEX_IN_RANGE;
         return true;
     }
-    vor_circumcentre(&sites[p], &sites[q], &sites[lo], &e->from);
+    vor_circumcentre(sites[p], sites[q], sites[lo], &e->from);
     if (hi != GEO_SITES) {
         e->kind = VOR_EDGE_SEGMENT;
-        vor_circumcentre(&sites[p], &sites[q], &sites[hi], &e->to);
+        vor_circumcentre(sites[p], sites[q], sites[hi], &e->to);
     } else {
         e->kind = VOR_EDGE_RAY;
     }
@@ -906,15 +905,18 @@ static void test_errors(void)
     CHECK(vor_cell(&d, 0, &box, buffer, needed, &c) == VOR_OK && c == needed, "exact capacity");
     /* the cell iterator: a short buffer stops it on the site, a retry goes on */
     vor_cell_iter_t it;
-    vor_cells_begin(&it, &d, &box);
-    CHECK(vor_cells_next(&it, &s, buffer, 2, &c) == VOR_ERR_BUFFER && s == 0 && c == needed,
+    CHECK(vor_cells_begin(&it, &d, &box) == VOR_OK, "iterator: begin");
+    CHECK(vor_cells_next(&it, &s, buffer, 2, &c) == 0 && vor_cells_error(&it) == VOR_ERR_BUFFER &&
+              s == 0 && c == needed,
           "iterator: short buffer");
     CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 1 && s == 0, "iterator: retry");
     CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 1 && s == 2, "iterator: skips the duplicate");
     CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 1 && s == 3, "iterator: last");
-    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 0, "iterator: end");
-    vor_cells_begin(&it, &d, &bad);
-    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == VOR_ERR_ARG, "iterator: bad box");
+    CHECK(vor_cells_next(&it, &s, buffer, 8, &c) == 0 && vor_cells_error(&it) == VOR_OK,
+          "iterator: end");
+    CHECK(vor_cells_begin(&it, &d, &bad) == VOR_ERR_ARG &&
+              vor_cells_next(&it, &s, buffer, 8, &c) == 0 && vor_cells_error(&it) == VOR_ERR_ARG,
+          "iterator: bad box");
     vor_vertex_t v;
     CHECK(vor_voronoi_vertex(&d, 0, 2, 3, &v) == VOR_OK && v.status == VOR_VERTEX_IN_RANGE,
           "vertex of three sites");

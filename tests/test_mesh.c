@@ -33,18 +33,18 @@ static test_fingerprint_t brute_force(const vor_point_t *sites, uint32_t n,
         for (uint32_t j = i + 1; j < n; j++) {
             for (uint32_t k = j + 1; k < n; k++) {
                 if (dup[i] != i || dup[j] != j || dup[k] != k ||
-                    vor_orient2d(&sites[i], &sites[j], &sites[k], NULL) == 0) {
+                    vor_orient2d(sites[i], sites[j], sites[k]) == 0) {
                     continue;
                 }
                 uint32_t ids[3] = {i, j, k};
-                if (vor_orient2d_sos(sites, i, j, k, NULL) < 0) {
+                if (vor_orient2d_sos(sites, i, j, k) < 0) {
                     ids[1] = k;
                     ids[2] = j;
                 }
                 bool empty = true;
                 for (uint32_t l = 0; l < n && empty; l++) {
                     if (l != i && l != j && l != k && dup[l] == l) {
-                        empty = vor_incircle_sos(sites, ids[0], ids[1], ids[2], l, NULL) < 0;
+                        empty = vor_incircle_sos(sites, ids[0], ids[1], ids[2], l) < 0;
                     }
                 }
                 if (empty) {
@@ -228,15 +228,15 @@ static void check_tiny(void)
     /* one site: a second identical one is a duplicate */
     CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(3), 3) == VOR_OK, "init");
     uint32_t id = 99;
-    CHECK(vor_insert(&d, 5, 5, &id) == VOR_OK && id == 0, "first insert");
-    CHECK(vor_insert(&d, 5, 5, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of one site");
-    CHECK(vor_insert(&d, 6, 5, &id) == VOR_OK && id == 1, "second site");
+    CHECK(vor_insert(&d, (vor_point_t){5, 5}, &id) == VOR_OK && id == 0, "first insert");
+    CHECK(vor_insert(&d, (vor_point_t){5, 5}, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of one site");
+    CHECK(vor_insert(&d, (vor_point_t){6, 5}, &id) == VOR_OK && id == 1, "second site");
     validate_ok(&d, "two sites");
-    CHECK(vor_insert(&d, 5, 5, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of two");
-    CHECK(vor_insert(&d, 7, 5, &id) == VOR_OK && id == 2, "third site, collinear");
+    CHECK(vor_insert(&d, (vor_point_t){5, 5}, &id) == VOR_ERR_DUPLICATE && id == 0, "duplicate of two");
+    CHECK(vor_insert(&d, (vor_point_t){7, 5}, &id) == VOR_OK && id == 2, "third site, collinear");
     validate_ok(&d, "three collinear sites");
     CHECK(test_fingerprint_of(&d, NULL).count == 0u, "three collinear sites: no triangle");
-    CHECK(vor_insert(&d, 8, 5, &id) == VOR_ERR_FULL, "full");
+    CHECK(vor_insert(&d, (vor_point_t){8, 5}, &id) == VOR_ERR_FULL, "full");
 }
 
 /* Small random sets against brute force, validating after every insert. */
@@ -257,7 +257,7 @@ static void check_brute_force(void)
             int32_t x = test_rng_range(&rng, -range, range);
             int32_t y = test_rng_range(&rng, -range, range);
             uint32_t id;
-            int err = vor_insert(&d, x, y, &id);
+            int err = vor_insert(&d, (vor_point_t){x, y}, &id);
             if (err == VOR_OK) {
                 sites[inserted] = (vor_point_t){x, y};
                 dup[inserted] = inserted;
@@ -305,7 +305,7 @@ static void check_families(void)
             CHECK(quadtree.count + 2u <= 2u * distinct || distinct < 3u,
                   "%s: %u triangles for %u sites", family_names[f], quadtree.count, distinct);
 
-            vor_build_options_t input = {VOR_ORDER_INPUT};
+            vor_build_options_t input = {VOR_ORDER_INPUT, VOR_DC_QUADTREE, 0};
             CHECK(vor_build(&b, points, n, &input, NULL) == VOR_OK, "build in input order");
             test_fingerprint_t in_input_order = test_fingerprint_of(&b, NULL);
             ok &= validate_ok(&b, "input order") && test_same_fingerprint(in_input_order, quadtree);
@@ -314,7 +314,7 @@ static void check_families(void)
              * same duplicates */
             for (unsigned split = VOR_DC_QUADTREE; split <= VOR_DC_XSPLIT; split++) {
                 static uint32_t dc_duplicate_of[BIG_SITES];
-                CHECK(vor_build_dc(&b, points, n, (enum vor_dc_split)split, dc_duplicate_of) ==
+                CHECK(vor_build_dc(&b, points, n, TEST_SPLIT(split), dc_duplicate_of) ==
                           VOR_OK,
                       "build d&c");
                 bool same_dups = b.vertex_count == a.vertex_count;
@@ -335,7 +335,7 @@ static void check_families(void)
                 static uint32_t id_to_point[BIG_SITES];
                 for (uint32_t i = 0; i < n; i++) {
                     uint32_t id;
-                    int err = vor_insert(&c, points[i].x, points[i].y, &id);
+                    int err = vor_insert(&c, points[i], &id);
                     if (err == VOR_OK) {
                         id_to_point[id] = i;
                     }
@@ -421,7 +421,7 @@ static void check_failures_change_nothing(void)
                 y = d.sites[k].y;
             }
             uint32_t id;
-            int err = vor_insert(&d, x, y, &id);
+            int err = vor_insert(&d, (vor_point_t){x, y}, &id);
             if (err != VOR_OK) {
                 tried++;
                 bad += unchanged(&d, &before, bytes) ? 0u : 1u;
@@ -437,20 +437,20 @@ static void check_failures_change_nothing(void)
             err = vor_build(&d, points, max + 1u, NULL, NULL);
             tried++;
             bad += (err == VOR_ERR_FULL && unchanged(&d, &before, bytes)) ? 0u : 1u;
-            err = vor_build_dc(&d, points, max + 1u, VOR_DC_QUADTREE, NULL);
+            err = vor_build_dc(&d, points, max + 1u, NULL, NULL);
             tried++;
             bad += (err == VOR_ERR_FULL && unchanged(&d, &before, bytes)) ? 0u : 1u;
         }
         /* bad arguments */
         vor_t before = d;
-        CHECK(vor_insert_near(&d, 1, 1, d.site_count + 5u, NULL) == VOR_ERR_ARG ||
+        CHECK(vor_insert_near(&d, (vor_point_t){1, 1}, d.site_count + 5u, NULL) == VOR_ERR_ARG ||
                   d.site_count == max,
               "bad hint accepted");
-        vor_build_options_t weird = {(enum vor_order)7};
+        vor_build_options_t weird = {(enum vor_order)7, VOR_DC_QUADTREE, 0};
         CHECK(vor_build(&d, points, 1, &weird, NULL) == VOR_ERR_ARG &&
                   unchanged(&d, &before, 0),
               "unknown order accepted");
-        CHECK(vor_build_dc(&d, points, 1, (enum vor_dc_split)2, NULL) == VOR_ERR_ARG &&
+        CHECK(vor_build_dc(&d, points, 1, TEST_SPLIT(2), NULL) == VOR_ERR_ARG &&
                   unchanged(&d, &before, 0),
               "unknown split accepted");
     }

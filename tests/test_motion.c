@@ -68,8 +68,8 @@ static bool move(uint32_t n, uint32_t i, vor_point_t p, const char *what, uint32
 {
     uint32_t twin = site_at(n, p), calls = test_predicate_calls(&with), existing = VOR_NO_HINT;
     test_fingerprint_t before = test_fingerprint_of(&without, NULL);
-    int err = vor_move(&with, i, p.x, p.y, &existing);
-    int twin_err = vor_move(&without, i, p.x, p.y, NULL);
+    int err = vor_move(&with, i, p, &existing);
+    int twin_err = vor_move(&without, i, p, NULL);
     if (twin != VOR_NO_HINT && twin != i) {
         CHECK(err == VOR_ERR_DUPLICATE && existing == twin && twin_err == err,
               "%s step %u: move onto site %u gave %d", what, step, twin, err);
@@ -260,7 +260,7 @@ static void api_safety(void)
     CHECK(vor_motion_attach(&with, cache, 0) == VOR_ERR_NOMEM, "attach no memory");
     CHECK(unchanged(), "a failing attach changed something");
     CHECK(vor_motion_attach(&with, NULL, 0) == VOR_OK, "detach without a cache");
-    CHECK(vor_move(NULL, 0, 1, 1, NULL) == VOR_ERR_ARG, "move in NULL");
+    CHECK(vor_move(NULL, 0, (vor_point_t){1, 1}, NULL) == VOR_ERR_ARG, "move in NULL");
 
     /* attached to an empty diagram, then filled one site at a time */
     CHECK(vor_motion_attach(&with, cache, sizeof cache) == VOR_OK, "attach to an empty diagram");
@@ -273,8 +273,8 @@ static void api_safety(void)
             at[n].x = test_rng_range(&rng, 0, 5000000);
             at[n].y = test_rng_range(&rng, 0, 5000000);
         } while (site_at(n, at[n]) != VOR_NO_HINT);
-        CHECK(vor_insert(&with, at[n].x, at[n].y, NULL) == VOR_OK, "insert %u", n);
-        CHECK(vor_insert(&without, at[n].x, at[n].y, NULL) == VOR_OK, "insert %u", n);
+        CHECK(vor_insert(&with, at[n], NULL) == VOR_OK, "insert %u", n);
+        CHECK(vor_insert(&without, at[n], NULL) == VOR_OK, "insert %u", n);
         if (n >= 1u) { /* moves in meshes of 2 .. 20 sites */
             move(n + 1u, n - 1u, offset(at[n - 1u], 1, 1), "filling", n);
         }
@@ -282,9 +282,9 @@ static void api_safety(void)
     settle(n);
     /* with boxes everywhere: failing calls change nothing, cache included */
     save();
-    CHECK(vor_move(&with, 3, at[5].x, at[5].y, NULL) == VOR_ERR_DUPLICATE, "move onto a site");
-    CHECK(vor_move(&with, MOTION_SITES - 1u, 0, 0, NULL) == VOR_ERR_ARG, "move an unused id");
-    CHECK(vor_insert(&with, at[7].x, at[7].y, NULL) == VOR_ERR_DUPLICATE, "insert a duplicate");
+    CHECK(vor_move(&with, 3, at[5], NULL) == VOR_ERR_DUPLICATE, "move onto a site");
+    CHECK(vor_move(&with, MOTION_SITES - 1u, (vor_point_t){0, 0}, NULL) == VOR_ERR_ARG, "move an unused id");
+    CHECK(vor_insert(&with, at[7], NULL) == VOR_ERR_DUPLICATE, "insert a duplicate");
     CHECK(vor_remove(&with, MOTION_SITES - 1u) == VOR_ERR_ARG, "remove an unused id");
     CHECK(vor_motion_attach(&with, cache + 1, sizeof cache - 1u) == VOR_ERR_ALIGN,
           "re-attach misaligned");
@@ -294,8 +294,8 @@ static void api_safety(void)
     /* every change of triangles voids the boxes: the next tiny move is
      * checked in full */
     at[n] = (vor_point_t){2500000, 2600000};
-    CHECK(vor_insert(&with, at[n].x, at[n].y, NULL) == VOR_OK, "insert");
-    CHECK(vor_insert(&without, at[n].x, at[n].y, NULL) == VOR_OK, "insert");
+    CHECK(vor_insert(&with, at[n], NULL) == VOR_OK, "insert");
+    CHECK(vor_insert(&without, at[n], NULL) == VOR_OK, "insert");
     n++;
     CHECK(!move(n, 4, offset(at[4], -1, 0), "after insert", 0), "fast move after an insert");
     settle(n);
@@ -308,7 +308,7 @@ static void api_safety(void)
     CHECK(!move(n, 4, offset(at[4], -1, 0), "after build", 0), "fast move after a build");
     settle(n);
     CHECK(move(n, 4, offset(at[4], 1, 0), "build keeps", 0), "vor_build dropped the cache");
-    CHECK(vor_build_dc(&with, at, n, VOR_DC_XSPLIT, NULL) == VOR_OK, "d&c rebuild");
+    CHECK(vor_build_dc(&with, at, n, TEST_SPLIT(VOR_DC_XSPLIT), NULL) == VOR_OK, "d&c rebuild");
     CHECK(!move(n, 4, offset(at[4], -1, 0), "after d&c build", 0), "fast move after a build");
 
     /* the 24-bit epoch wraps: stamps of 2^24 changes ago must not look

@@ -11,6 +11,7 @@
 
 #include "multiword.h"
 #include "predicate_vectors.h"
+#include "predicates.h"
 #include "vor.h"
 
 static const char *const op_names[] = {"orient2d", "incircle", "closer"};
@@ -26,27 +27,38 @@ static unsigned rank_of(const struct predicate_vector *v, unsigned k)
     return (v->ranks >> (2 * k)) & 3u;
 }
 
-/* The exact predicate of v with its points in the order given by perm. */
+/* The exact predicate of v with its points in the order given by perm:
+ * the public call, and with stats the library's counted evaluation too
+ * (the counters are VOR_STATS's, private to the diagram otherwise), which
+ * must agree (9 when it does not). */
 static int exact_sign(const struct predicate_vector *v, const unsigned perm[4],
-                      vor_predicate_stats_t *stats)
+                      vor_stats_t *stats)
 {
     vor_point_t p[4];
     for (unsigned k = 0; k < 4; k++) {
         p[k] = point_of(v, perm[k]);
     }
+    int sign, counted;
     switch (v->op) {
     case PV_ORIENT2D:
-        return vor_orient2d(&p[0], &p[1], &p[2], stats);
+        sign = vor_orient2d(p[0], p[1], p[2]);
+        counted = (stats != NULL) ? vor__orient2d_exact(&p[0], &p[1], &p[2], stats) : sign;
+        break;
     case PV_INCIRCLE:
-        return vor_incircle(&p[0], &p[1], &p[2], &p[3], stats);
+        sign = vor_incircle(p[0], p[1], p[2], p[3]);
+        counted = (stats != NULL) ? vor__incircle_exact(&p[0], &p[1], &p[2], &p[3], stats) : sign;
+        break;
     default:
-        return vor_closer(&p[0], &p[1], &p[2], stats);
+        sign = vor_closer(p[0], p[1], p[2]);
+        counted = (stats != NULL) ? vor__closer_sign(&p[0], &p[1], &p[2], stats) : sign;
+        break;
     }
+    return (sign == counted) ? sign : 9;
 }
 
 /* The perturbed predicate of v: site rank_of(k) holds point k. */
 static int perturbed_sign(const struct predicate_vector *v,
-                          const unsigned perm[4], vor_predicate_stats_t *stats)
+                          const unsigned perm[4], vor_stats_t *stats)
 {
     unsigned points = (v->op == PV_ORIENT2D) ? 3u : 4u;
     vor_point_t sites[4];
@@ -57,10 +69,27 @@ static int perturbed_sign(const struct predicate_vector *v,
     for (unsigned k = 0; k < points; k++) {
         id[k] = rank_of(v, perm[k]);
     }
+    int sign, counted;
     if (v->op == PV_ORIENT2D) {
-        return vor_orient2d_sos(sites, id[0], id[1], id[2], stats);
+        sign = vor_orient2d_sos(sites, id[0], id[1], id[2]);
+        counted = sign;
+        if (stats != NULL) {
+            counted = vor__orient2d_exact(&sites[id[0]], &sites[id[1]], &sites[id[2]], stats);
+            counted = (counted != 0) ? counted
+                                     : vor__orient2d_perturbed(sites, id[0], id[1], id[2], stats);
+        }
+    } else {
+        sign = vor_incircle_sos(sites, id[0], id[1], id[2], id[3]);
+        counted = sign;
+        if (stats != NULL) {
+            counted = vor__incircle_exact(&sites[id[0]], &sites[id[1]], &sites[id[2]],
+                                          &sites[id[3]], stats);
+            counted = (counted != 0)
+                          ? counted
+                          : vor__incircle_perturbed(sites, id[0], id[1], id[2], id[3], stats);
+        }
     }
-    return vor_incircle_sos(sites, id[0], id[1], id[2], id[3], stats);
+    return (sign == counted) ? sign : 9;
 }
 
 static void check_vectors(void)
@@ -69,7 +98,7 @@ static void check_vectors(void)
     static const unsigned swap01[4] = {1, 0, 2, 3};   /* one transposition */
     static const unsigned swap12[4] = {0, 2, 1, 3};   /* closer: a <-> b */
     static const unsigned rotate[4] = {1, 2, 0, 3};   /* even permutation */
-    vor_predicate_stats_t stats = {0};
+    vor_stats_t stats = {0};
     unsigned long calls[3] = {0, 0, 0}, zeros[3] = {0, 0, 0};
     unsigned long families[PF_FAMILIES] = {0};
     unsigned long vector_failures = 0;
@@ -207,19 +236,19 @@ static void check_grid_antisymmetry(void)
                 if (i == j || j == k || i == k) {
                     continue;
                 }
-                int s = vor_orient2d_sos(sites, i, j, k, NULL);
-                bad += (s == 0 || vor_orient2d_sos(sites, j, i, k, NULL) != -s ||
-                        vor_orient2d_sos(sites, j, k, i, NULL) != s)
+                int s = vor_orient2d_sos(sites, i, j, k);
+                bad += (s == 0 || vor_orient2d_sos(sites, j, i, k) != -s ||
+                        vor_orient2d_sos(sites, j, k, i) != s)
                            ? 1u
                            : 0u;
                 for (uint32_t l = 0; l < 10; l += 3) {
                     if (l == i || l == j || l == k) {
                         continue;
                     }
-                    int c = vor_incircle_sos(sites, i, j, k, l, NULL);
-                    bad += (c == 0 || vor_incircle_sos(sites, j, i, k, l, NULL) != -c ||
-                            vor_incircle_sos(sites, i, j, l, k, NULL) != -c ||
-                            vor_incircle_sos(sites, l, k, j, i, NULL) != c)
+                    int c = vor_incircle_sos(sites, i, j, k, l);
+                    bad += (c == 0 || vor_incircle_sos(sites, j, i, k, l) != -c ||
+                            vor_incircle_sos(sites, i, j, l, k) != -c ||
+                            vor_incircle_sos(sites, l, k, j, i) != c)
                                ? 1u
                                : 0u;
                     count++;
@@ -452,7 +481,6 @@ static void check_perturbation_reference(void)
     static const unsigned sizes[] = {8, 14, 15, 20, 30, 31, 32};
     test_rng_t rng;
     test_rng_seed(&rng, 16);
-    vor_predicate_stats_t stats = {0};
     unsigned long checked = 0, bad = 0, later_terms = 0, perturbed = 0;
     for (unsigned n = 0; n < 420; n++) {
         vor_point_t q[4];
@@ -465,7 +493,7 @@ static void check_perturbation_reference(void)
             index_order(p, q, ids, sites);
             unsigned first;
             int want = ref_perturbed(sites, ids, 4, &first);
-            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3], &stats);
+            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3]);
             bad += (got != want || want == 0) ? 1u : 0u;
             perturbed += (first != 0u) ? 1u : 0u;
             later_terms += (first > 1u && bits <= 30u) ? 1u : 0u;
@@ -479,7 +507,7 @@ static void check_perturbation_reference(void)
             }
             if (ids[3] == 3u) { /* the first three points, all 6 orders */
                 want = ref_perturbed(sites, ids, 3, &first);
-                got = vor_orient2d_sos(sites, ids[0], ids[1], ids[2], NULL);
+                got = vor_orient2d_sos(sites, ids[0], ids[1], ids[2]);
                 bad += (got != want || want == 0) ? 1u : 0u;
                 checked++;
             }
@@ -491,9 +519,8 @@ static void check_perturbation_reference(void)
                 checked, perturbed, later_terms);
     CHECK(bad == 0, "perturbed signs: %lu of %lu differ from the reference", bad, checked);
     /* the mid tier's first term and its later terms both ran */
-    CHECK(stats.incircle_perturbed > 2000u && later_terms > 100u,
-          "perturbed incircle %u, decided by later terms %lu", stats.incircle_perturbed,
-          later_terms);
+    CHECK(perturbed > 2000u && later_terms > 100u,
+          "perturbed incircle %lu, decided by later terms %lu", perturbed, later_terms);
 }
 
 /* vor_incircle_sos against ref_perturbed where the first perturbation
@@ -538,7 +565,7 @@ static void check_first_term_filter(void)
             index_order(p, q, ids, sites);
             unsigned first;
             int want = ref_perturbed(sites, ids, 4, &first);
-            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3], NULL);
+            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3]);
             bad += (got != want || want == 0 || first == 0u) ? 1u : 0u;
             checked++;
         }
@@ -623,7 +650,7 @@ static void check_near_circles(void)
             }
             q[3].x = (int32_t)(gx + t * ux);
             q[3].y = (int32_t)(gy + t * uy);
-            int want = ref_incircle(q), got = vor_incircle(&q[0], &q[1], &q[2], &q[3], NULL);
+            int want = ref_incircle(q), got = vor_incircle(q[0], q[1], q[2], q[3]);
             if (got != want && bad++ < 5) {
                 test_printf("incircle (%d,%d) (%d,%d) (%d,%d) (%d,%d): %d, expected %d\n",
                             (int)q[0].x, (int)q[0].y, (int)q[1].x, (int)q[1].y, (int)q[2].x,

@@ -61,7 +61,7 @@ static unsigned check_k_nearest(const vor_t *d, uint32_t n, vor_point_t q, uint3
                                 uint32_t hint)
 {
     uint32_t got[KMAX], expect[KMAX], found = 0, count = 0;
-    if (vor_nearest_k(d, q.x, q.y, hint, k, got, &found) != VOR_OK) {
+    if (vor_nearest_k(d, q, hint, k, got, &found) != VOR_OK) {
         return 1;
     }
     while (count < k) { /* the next site after expect[count - 1] */
@@ -112,7 +112,7 @@ static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_p
         uint32_t h = (k % 3u == 0u) ? hint : (k % 3u == 1u) ? VOR_NO_HINT
                                                              : first_of[test_rng_u32(rng) % n];
         uint32_t got = VOR_NO_HINT;
-        int err = vor_nearest(&d, q.x, q.y, h, &got);
+        int err = vor_nearest(&d, q, h, &got);
         uint32_t expect = brute_nearest(n, q);
         queries++;
         if (err != VOR_OK || got != expect) {
@@ -155,7 +155,7 @@ static void check_set(const char *name, uint32_t n, test_rng_t *rng, const vor_p
         if (k % 50u == 0u) { /* a grid centre or circle centre: a tie */
             q = (extras > 0u) ? extra[k % extras] : q;
         }
-        if (vor_track(&tracker, q.x, q.y, &got) != VOR_OK || got != brute_nearest(n, q)) {
+        if (vor_track(&tracker, q, &got) != VOR_OK || got != brute_nearest(n, q)) {
             tracked_wrong++;
         }
     }
@@ -273,28 +273,28 @@ static void errors(void)
     vor_t d;
     uint32_t got;
     CHECK(vor_init(&d, arena, sizeof arena, 10) == VOR_OK, "init");
-    CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &got) == VOR_ERR_EMPTY, "empty diagram");
-    CHECK(vor_insert(&d, 7, 7, NULL) == VOR_OK, "insert");
-    CHECK(vor_nearest(&d, 0, 0, VOR_NO_HINT, &got) == VOR_OK && got == 0, "one site");
-    CHECK(vor_nearest(&d, 0, 0, 5, &got) == VOR_ERR_ARG, "hint out of range");
-    CHECK(vor_nearest(&d, 0, 0, 0, NULL) == VOR_ERR_ARG, "NULL result");
+    CHECK(vor_nearest(&d, (vor_point_t){0, 0}, VOR_NO_HINT, &got) == VOR_ERR_EMPTY, "empty diagram");
+    CHECK(vor_insert(&d, (vor_point_t){7, 7}, NULL) == VOR_OK, "insert");
+    CHECK(vor_nearest(&d, (vor_point_t){0, 0}, VOR_NO_HINT, &got) == VOR_OK && got == 0, "one site");
+    CHECK(vor_nearest(&d, (vor_point_t){0, 0}, 5, &got) == VOR_ERR_ARG, "hint out of range");
+    CHECK(vor_nearest(&d, (vor_point_t){0, 0}, 0, NULL) == VOR_ERR_ARG, "NULL result");
     uint32_t list[3] = {9, 9, 9}, found = 9;
-    CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 3, list, &found) == VOR_OK && found == 1 &&
+    CHECK(vor_nearest_k(&d, (vor_point_t){0, 0}, VOR_NO_HINT, 3, list, &found) == VOR_OK && found == 1 &&
               list[0] == 0 && list[1] == 9,
           "k-nearest of one site");
-    CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 0, NULL, &found) == VOR_OK && found == 0,
+    CHECK(vor_nearest_k(&d, (vor_point_t){0, 0}, VOR_NO_HINT, 0, NULL, &found) == VOR_OK && found == 0,
           "0-nearest");
-    CHECK(vor_nearest_k(&d, 0, 0, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG, "NULL found");
-    CHECK(vor_nearest_k(&d, 0, 0, 4, 3, list, &found) == VOR_ERR_ARG, "k-nearest bad hint");
+    CHECK(vor_nearest_k(&d, (vor_point_t){0, 0}, VOR_NO_HINT, 3, list, NULL) == VOR_ERR_ARG, "NULL found");
+    CHECK(vor_nearest_k(&d, (vor_point_t){0, 0}, 4, 3, list, &found) == VOR_ERR_ARG, "k-nearest bad hint");
 
     vor_tracker_t tracker;
     static vor_tracker_t zeroed; /* never begun: no diagram */
     CHECK(vor_tracker_begin(&zeroed, NULL) == VOR_ERR_ARG && zeroed.d == NULL,
           "tracker begun without a diagram");
-    CHECK(vor_track(&zeroed, 0, 0, &got) == VOR_ERR_ARG, "tracker without a diagram");
+    CHECK(vor_track(&zeroed, (vor_point_t){0, 0}, &got) == VOR_ERR_ARG, "tracker without a diagram");
     CHECK(vor_tracker_begin(&tracker, &d) == VOR_OK, "tracker begin");
-    CHECK(vor_track(&tracker, 0, 0, NULL) == VOR_ERR_ARG, "tracker, NULL result");
-    CHECK(vor_track(NULL, 0, 0, &got) == VOR_ERR_ARG, "NULL tracker");
+    CHECK(vor_track(&tracker, (vor_point_t){0, 0}, NULL) == VOR_ERR_ARG, "tracker, NULL result");
+    CHECK(vor_track(NULL, (vor_point_t){0, 0}, &got) == VOR_ERR_ARG, "NULL tracker");
 }
 
 static void inserts(void)
@@ -308,7 +308,7 @@ static void inserts(void)
      * cold queries start from it, and a tracker notices every insertion */
     CHECK(vor_init(&d, arena, sizeof arena, QUERY_SITES) == VOR_OK, "init");
     vor_tracker_begin(&tracker, &d);
-    CHECK(vor_track(&tracker, 0, 0, &got) == VOR_ERR_EMPTY, "tracker on an empty diagram");
+    CHECK(vor_track(&tracker, (vor_point_t){0, 0}, &got) == VOR_ERR_EMPTY, "tracker on an empty diagram");
     for (uint32_t i = 0; i < 700u; i++) {
         sites[i].x = test_rng_range(&rng, -5000, 5000) + (int32_t)i * 50;
         sites[i].y = test_rng_range(&rng, -5000, 5000);
@@ -316,16 +316,16 @@ static void inserts(void)
         /* the tracker stands where the next site lands: the cell it caches
          * there is out of date after the insertion */
         vor_point_t here = {sites[i].x + 1, sites[i].y};
-        CHECK(i == 0u || vor_track(&tracker, here.x, here.y, &got) == VOR_OK, "track");
-        CHECK(vor_insert(&d, sites[i].x, sites[i].y, NULL) == VOR_OK, "insert %u", i);
+        CHECK(i == 0u || vor_track(&tracker, here, &got) == VOR_OK, "track");
+        CHECK(vor_insert(&d, sites[i], NULL) == VOR_OK, "insert %u", i);
         if ((i & (i + 1u)) == 0u || i % 97u == 0u) { /* around each redraw */
             CHECK(vor_validate(&d, NULL) == VOR_OK, "grid after %u inserts", i + 1u);
             vor_point_t q = {test_rng_range(&rng, -6000, 40000), test_rng_range(&rng, -6000, 6000)};
-            CHECK(vor_nearest(&d, q.x, q.y, VOR_NO_HINT, &got) == VOR_OK &&
+            CHECK(vor_nearest(&d, q, VOR_NO_HINT, &got) == VOR_OK &&
                       got == brute_nearest(i + 1u, q),
                   "cold query after %u inserts", i + 1u);
         }
-        CHECK(vor_track(&tracker, here.x, here.y, &got) == VOR_OK &&
+        CHECK(vor_track(&tracker, here, &got) == VOR_OK &&
                   got == brute_nearest(i + 1u, here),
               "tracker after %u inserts", i + 1u);
     }

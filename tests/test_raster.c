@@ -112,11 +112,11 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
     out.palette565 = palette565;
     out.palette888 = palette888;
     out.areas = areas;
-    out.method = method;
+    vor_raster_options_t options = {method};
     for (uint32_t k = 0; k < set->count; k++) {
         areas[k] = 0xDEADu;
     }
-    int err = vor_raster(f, set, &out, work, sizeof work);
+    int err = vor_raster(f, set, &out, &options, work, sizeof work);
     const char *how = method == VOR_RASTER_FAST ? "fast" : "brute";
     if (!CHECK(err == VOR_OK && !cap.bad_order && cap.next_row == f->height,
                "%s %s %s rows %u: err %d, order %d, rows %u", name, how, kind_names[kind],
@@ -416,7 +416,7 @@ static void check_bands(const char *name, const vor_raster_frame_t *f, uint32_t 
     out.band_rows = band_rows;
     out.flush = big_flush;
     out.user = &cap;
-    int err = vor_raster(f, &set, &out, bands_work, sizeof bands_work);
+    int err = vor_raster(f, &set, &out, NULL, bands_work, sizeof bands_work);
     if (!CHECK(err == VOR_OK && !cap.bad_order && cap.next_row == f->height,
                "%s: err %d, rows %u", name, err, cap.next_row)) {
         return;
@@ -588,7 +588,7 @@ static void error_cases(void)
     for (uint32_t k = 0; k < MAX_SITES; k++) {
         areas[k] = 12345u;
     }
-    CHECK(vor_raster(&f, &set, &out, work, sizeof work) == VOR_OK && flushes == 3u,
+    CHECK(vor_raster(&f, &set, &out, NULL, work, sizeof work) == VOR_OK && flushes == 3u,
           "errors: the valid base request works (%u flushes)", flushes);
     for (uint32_t k = 0; k < MAX_SITES; k++) {
         areas[k] = 12345u;
@@ -596,22 +596,22 @@ static void error_cases(void)
     flushes = 0;
 
     vor_raster_frame_t bad = f;
-    CHECK(vor_raster(NULL, &set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: NULL frame");
-    CHECK(vor_raster(&f, NULL, &out, work, sizeof work) == VOR_ERR_ARG, "errors: NULL sites");
-    CHECK(vor_raster(&f, &set, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: NULL output");
-    CHECK(vor_raster(&f, &set, &out, NULL, sizeof work) == VOR_ERR_ARG, "errors: NULL work");
+    CHECK(vor_raster(NULL, &set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: NULL frame");
+    CHECK(vor_raster(&f, NULL, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: NULL sites");
+    CHECK(vor_raster(&f, &set, NULL, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: NULL output");
+    CHECK(vor_raster(&f, &set, &out, NULL, NULL, sizeof work) == VOR_ERR_ARG, "errors: NULL work");
     bad.width = 0;
-    CHECK(vor_raster(&bad, &set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: width 0");
+    CHECK(vor_raster(&bad, &set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: width 0");
     bad = f;
     bad.step_y = 0;
-    CHECK(vor_raster(&bad, &set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: step 0");
+    CHECK(vor_raster(&bad, &set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: step 0");
     bad.step_y = -1;
-    CHECK(vor_raster(&bad, &set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: step < 0");
+    CHECK(vor_raster(&bad, &set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: step < 0");
     bad = f;
     bad.origin_x = INT32_MAX - 8; /* the last centre is INT32_MAX + 1 */
-    CHECK(vor_raster(&bad, &set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: centre > int32");
+    CHECK(vor_raster(&bad, &set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: centre > int32");
     bad.origin_x = INT32_MAX - 9;
-    CHECK(vor_raster(&bad, &set, &out, work, sizeof work) == VOR_OK, "errors: last centre INT32_MAX");
+    CHECK(vor_raster(&bad, &set, &out, NULL, work, sizeof work) == VOR_OK, "errors: last centre INT32_MAX");
     for (uint32_t k = 0; k < MAX_SITES; k++) {
         areas[k] = 12345u;
     }
@@ -619,36 +619,35 @@ static void error_cases(void)
 
     vor_raster_sites_t bad_set = set;
     bad_set.count = 0;
-    CHECK(vor_raster(&f, &bad_set, &out, work, sizeof work) == VOR_ERR_EMPTY, "errors: no sites");
+    CHECK(vor_raster(&f, &bad_set, &out, NULL, work, sizeof work) == VOR_ERR_EMPTY, "errors: no sites");
     bad_set = set;
     bad_set.points = NULL;
-    CHECK(vor_raster(&f, &bad_set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: NULL points");
+    CHECK(vor_raster(&f, &bad_set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: NULL points");
     bad_set = set;
     bad_set.metric = (enum vor_metric)99;
-    CHECK(vor_raster(&f, &bad_set, &out, work, sizeof work) == VOR_ERR_ARG, "errors: metric");
+    CHECK(vor_raster(&f, &bad_set, &out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: metric");
 
     vor_raster_output_t bad_out = out;
     bad_out.kind = (enum vor_raster_kind)42;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == VOR_ERR_ARG, "errors: kind");
-    bad_out = out;
-    bad_out.method = (enum vor_raster_method)3;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == VOR_ERR_ARG, "errors: method");
+    CHECK(vor_raster(&f, &set, &bad_out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: kind");
+    vor_raster_options_t bad_method = {(enum vor_raster_method)3};
+    CHECK(vor_raster(&f, &set, &out, &bad_method, work, sizeof work) == VOR_ERR_ARG, "errors: method");
     bad_out = out;
     bad_out.kind = VOR_RASTER_RGB565;
     bad_out.band_bytes = 10u * 4u * 2u;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == VOR_ERR_ARG, "errors: no palette");
+    CHECK(vor_raster(&f, &set, &bad_out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: no palette");
     bad_out = out;
     bad_out.flush = NULL;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == VOR_ERR_ARG, "errors: no flush");
+    CHECK(vor_raster(&f, &set, &bad_out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: no flush");
     bad_out = out;
     bad_out.band_rows = 0;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == VOR_ERR_ARG, "errors: 0 band rows");
+    CHECK(vor_raster(&f, &set, &bad_out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: 0 band rows");
     bad_out = out;
     bad_out.band_bytes = 10u * 4u - 1u;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == VOR_ERR_NOMEM, "errors: small band");
-    CHECK(vor_raster(&f, &set, &out, work, VOR_RASTER_WORK_BYTES(5, 10) - 1u) == VOR_ERR_NOMEM,
+    CHECK(vor_raster(&f, &set, &bad_out, NULL, work, sizeof work) == VOR_ERR_NOMEM, "errors: small band");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, VOR_RASTER_WORK_BYTES(5, 10) - 1u) == VOR_ERR_NOMEM,
           "errors: small work");
-    CHECK(vor_raster(&f, &set, &out, work + 4, VOR_RASTER_WORK_BYTES(5, 10)) == VOR_ERR_ALIGN,
+    CHECK(vor_raster(&f, &set, &out, NULL, work + 4, VOR_RASTER_WORK_BYTES(5, 10)) == VOR_ERR_ALIGN,
           "errors: misaligned work");
     bad_set = set;
     bad_set.count = 257;
@@ -659,7 +658,7 @@ static void error_cases(void)
     }
     bad_set.points = many;
     static uint8_t big_work[VOR_RASTER_WORK_BYTES(257, 10)] __attribute__((aligned(8)));
-    CHECK(vor_raster(&f, &bad_set, &out, big_work, sizeof big_work) == VOR_ERR_ARG,
+    CHECK(vor_raster(&f, &bad_set, &out, NULL, big_work, sizeof big_work) == VOR_ERR_ARG,
           "errors: label8 with 257 sites");
     uint32_t untouched = 0;
     for (uint32_t k = 0; k < MAX_SITES; k++) {
@@ -671,16 +670,18 @@ static void error_cases(void)
     bad_out.kind = VOR_RASTER_LABEL16;
     bad_out.band_bytes = 10u * 4u * 2u;
     bad_out.areas = NULL;
-    CHECK(vor_raster(&f, &bad_set, &bad_out, big_work, sizeof big_work) == VOR_OK,
+    CHECK(vor_raster(&f, &bad_set, &bad_out, NULL, big_work, sizeof big_work) == VOR_OK,
           "errors: label16 takes 257 sites");
 
-    /* a flush that stops the render: its value comes back */
+    /* a flush that stops the render (returning 77): VOR_ERR_STOPPED, never
+     * the flush's own code, after the bands before it */
     capture_t cap = {0, 4, 10, 0, 0, 2};
     bad_out = out;
     bad_out.flush = capture_flush;
     bad_out.user = &cap;
-    CHECK(vor_raster(&f, &set, &bad_out, work, sizeof work) == 77 && cap.flushes == 2u,
-          "errors: a stopping flush returns its value after %u flushes", cap.flushes);
+    int stopped = vor_raster(&f, &set, &bad_out, NULL, work, sizeof work);
+    CHECK(stopped == VOR_ERR_STOPPED && cap.flushes == 2u,
+          "errors: a stopping flush gives %d after %u flushes", stopped, cap.flushes);
 }
 
 void test_raster(void)

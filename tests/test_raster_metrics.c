@@ -72,12 +72,12 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
     out.flush = capture_flush;
     out.user = &cap;
     out.areas = areas;
-    out.method = method;
+    vor_raster_options_t options = {method};
     for (uint32_t k = 0; k < set->count; k++) {
         areas[k] = 0xDEADu;
     }
     /* exactly the documented work memory */
-    int err = vor_raster(f, set, &out, work, VOR_RASTER_WORK_BYTES(set->count, f->width));
+    int err = vor_raster(f, set, &out, &options, work, VOR_RASTER_WORK_BYTES(set->count, f->width));
     const char *how = method == VOR_RASTER_FAST ? "fast" : "brute";
     const char *metric = metric_names[set->metric];
     if (!CHECK(err == VOR_OK && !cap.bad && cap.next_row == f->height,
@@ -592,7 +592,7 @@ static uint32_t distance_at(const vor_raster_sites_t *set, int32_t qx, int32_t q
     out.band_rows = 1;
     out.flush = one_pixel_flush;
     one_pixel = 0xDEADBEEFu;
-    int err = vor_raster(&f, set, &out, work, sizeof work);
+    int err = vor_raster(&f, set, &out, NULL, work, sizeof work);
     return err == VOR_OK ? one_pixel : 0xDEADBEEFu;
 }
 
@@ -744,83 +744,83 @@ static void error_cases(void)
     size_t bytes = VOR_RASTER_WORK_BYTES(8, 10);
     for (int m = VOR_METRIC_L1; m <= VOR_METRIC_POLYLINE; m++) {
         vor_raster_sites_t set = point_set((enum vor_metric)m, 4);
-        CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors %s: valid base",
+        CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_OK, "errors %s: valid base",
               metric_names[m]);
         vor_raster_output_t d = out;
         d.kind = VOR_RASTER_DISTANCE;
         d.band_bytes = 400;
-        CHECK(vor_raster(&f, &set, &d, work, bytes) == VOR_OK, "errors %s: DISTANCE kind",
+        CHECK(vor_raster(&f, &set, &d, NULL, work, bytes) == VOR_OK, "errors %s: DISTANCE kind",
               metric_names[m]);
         set.points = NULL;
-        CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors %s: NULL points",
+        CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors %s: NULL points",
               metric_names[m]);
         set.points = points;
-        CHECK(vor_raster(&f, &set, &out, work, VOR_RASTER_WORK_BYTES(4, 10) - 1u) ==
+        CHECK(vor_raster(&f, &set, &out, NULL, work, VOR_RASTER_WORK_BYTES(4, 10) - 1u) ==
                   VOR_ERR_NOMEM,
               "errors %s: small work", metric_names[m]);
     }
     flushes = 0;
     vor_raster_sites_t set = point_set(VOR_METRIC_LP, 4);
     set.lp_exponent = 0;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: p = 0");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: p = 0");
     set.lp_exponent = 9;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: p = 9");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: p = 9");
     set.lp_exponent = 8;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors: p = 8");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_OK, "errors: p = 8");
     flushes = 0;
     set = point_set(VOR_METRIC_ELLIPTIC, 4);
     set.form_a = 0;
     set.form_b = 0;
     set.form_c = 1;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: a = 0");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: a = 0");
     set.form_a = 2;
     set.form_b = 2;
     set.form_c = 2;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: ac = b^2");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: ac = b^2");
     set.form_a = -1;
     set.form_b = 0;
     set.form_c = -1;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: negative definite");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: negative definite");
     set.form_a = INT32_MAX;
     set.form_b = INT32_MIN;
     set.form_c = INT32_MAX;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: b = INT32_MIN");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: b = INT32_MIN");
     set = point_set(VOR_METRIC_MULT, 4);
     mult[2] = 0;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: weight 0");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: weight 0");
     set.metric = VOR_METRIC_COMPOUND;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: compound weight 0");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: compound weight 0");
     mult[2] = -5;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: negative weight");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: negative weight");
     mult[2] = 1;
     set.add_weights = NULL;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: compound without w2");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: compound without w2");
     set.metric = VOR_METRIC_ADD;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: add without weights");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: add without weights");
     set.add_weights = add;
     set.mult_weights = NULL;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors: add needs no w1");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_OK, "errors: add needs no w1");
     flushes = 0;
     set.metric = VOR_METRIC_MULT;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: mult without weights");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: mult without weights");
     set = point_set(VOR_METRIC_POLYGON, 4);
     offsets[2] = offsets[1];
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty polygon");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: empty polygon");
     set.metric = VOR_METRIC_HAUSDORFF;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty point set");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: empty point set");
     set.metric = VOR_METRIC_POLYLINE;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: empty polyline");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: empty polyline");
     offsets[2] = 2;
     mult[3] = 0;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: polyline weight 0");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: polyline weight 0");
     set.mult_weights = NULL;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_OK, "errors: polyline needs no weights");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_OK, "errors: polyline needs no weights");
     flushes = 0;
     mult[3] = 1;
     set.offsets = NULL;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: no offsets");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: no offsets");
     set.metric = (enum vor_metric)13;
-    CHECK(vor_raster(&f, &set, &out, work, bytes) == VOR_ERR_ARG, "errors: metric 13");
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: metric 13");
     CHECK(flushes == 0, "errors: a failed call flushed %u bands", flushes);
 }
 

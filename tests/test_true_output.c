@@ -208,7 +208,7 @@ static bool empty_circle(const vor_t *d, uint32_t a, uint32_t b, uint32_t c)
 {
     const vor_point_t *s = d->sites;
     for (uint32_t i = 0; i < ref.n; i++) {
-        if (vor_incircle(&s[a], &s[b], &s[c], &s[ref.ids[i]], NULL) > 0) {
+        if (vor_incircle(s[a], s[b], s[c], s[ref.ids[i]]) > 0) {
             return false;
         }
     }
@@ -255,7 +255,7 @@ static void brute_force(const vor_t *d, brute_t *b)
                 uint32_t a = id[i], bb = (o > 0) ? id[j] : id[k], c = (o > 0) ? id[k] : id[j];
                 bool empty = true;
                 for (uint32_t l = 0; l < n; l++) {
-                    int in = vor_incircle(&s[a], &s[bb], &s[c], &s[id[l]], NULL);
+                    int in = vor_incircle(s[a], s[bb], s[c], s[id[l]]);
                     empty &= in <= 0;
                     b->cocircular |= in == 0 && l != i && l != j && l != k;
                 }
@@ -431,18 +431,17 @@ static void check_set(const char *set, int32_t a, int32_t b, uint32_t n, test_rn
         const char *name;
         bool dc;
         vor_build_options_t options;
-        enum vor_dc_split split;
     } builders[] = {
-        {"incremental", false, {VOR_ORDER_QUADTREE}, VOR_DC_QUADTREE},
-        {"incremental, input order", false, {VOR_ORDER_INPUT}, VOR_DC_QUADTREE},
-        {"divide and conquer", true, {VOR_ORDER_QUADTREE}, VOR_DC_XSPLIT},
-        {"divide and conquer, quadtree", true, {VOR_ORDER_QUADTREE}, VOR_DC_QUADTREE},
+        {"incremental", false, {VOR_ORDER_QUADTREE, VOR_DC_QUADTREE, 0}},
+        {"incremental, input order", false, {VOR_ORDER_INPUT, VOR_DC_QUADTREE, 0}},
+        {"divide and conquer", true, {VOR_ORDER_QUADTREE, VOR_DC_XSPLIT, 0}},
+        {"divide and conquer, quadtree", true, {VOR_ORDER_QUADTREE, VOR_DC_QUADTREE, 0}},
     };
     vor_t d;
     for (unsigned k = 0; k < sizeof builders / sizeof builders[0]; k++) {
         CHECK(vor_init(&d, arena, sizeof arena, MAX_SITES) == VOR_OK, "init");
         int err = builders[k].dc
-                      ? vor_build_dc(&d, input, n, builders[k].split, duplicate_of)
+                      ? vor_build_dc(&d, input, n, &builders[k].options, duplicate_of)
                       : vor_build(&d, input, n, &builders[k].options, duplicate_of);
         CHECK(err == VOR_OK, "%s [%d %d], %s: build", set, (int)a, (int)b, builders[k].name);
         check_diagram(&d, duplicate_of, set, a, b, builders[k].name);
@@ -461,7 +460,7 @@ static void check_set(const char *set, int32_t a, int32_t b, uint32_t n, test_rn
     bool inserted = true;
     for (uint32_t i = 0; i < n; i++) {
         uint32_t id;
-        int err = vor_insert(&d, shuffled[i].x, shuffled[i].y, &id);
+        int err = vor_insert(&d, shuffled[i], &id);
         inserted &= err == VOR_OK || err == VOR_ERR_DUPLICATE;
     }
     CHECK(inserted, "%s [%d %d]: vor_insert", set, (int)a, (int)b);

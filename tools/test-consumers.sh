@@ -74,24 +74,24 @@ install_vor() {
 
 m3_toolchain=-DCMAKE_TOOLCHAIN_FILE=$root/cmake/toolchains/arm-none-eabi-cortex-m3.cmake
 
-# host: 64-bit default is 32-bit indices, so ask for 16; with the trap
+# host: the default is 16-bit indices everywhere, so ask for 32; with the trap
 # assertions of the tests, through the generated configuration header.
-check host-subdirectory-build consumer host-sub 16 -DVOR_CONSUME=subdirectory -DVOR_ASSERT_TRAP=ON
+check host-subdirectory-build consumer host-sub 32 -DVOR_CONSUME=subdirectory -DVOR_ASSERT_TRAP=ON
 check host-subdirectory-run run_consumer "$work/host-sub"
-check host-install install_vor host-vor 16
-check host-package-build consumer host-pkg 16 -DVOR_CONSUME=package \
+check host-install install_vor host-vor 32
+check host-package-build consumer host-pkg 32 -DVOR_CONSUME=package \
     -DCMAKE_PREFIX_PATH="$root/$work/host-vor-prefix"
 check host-package-run run_consumer "$work/host-pkg"
 
-check host-fetchcontent-build consumer host-fetch 16 -DVOR_CONSUME=fetchcontent
+check host-fetchcontent-build consumer host-fetch 32 -DVOR_CONSUME=fetchcontent
 check host-fetchcontent-run run_consumer "$work/host-fetch"
 
 # The ESP-IDF and Zephyr glue with their Kconfig values, under stand-ins
 # for the build-system functions they call (the real tools are not here).
-check esp-idf-mock-build consumer host-esp 16 -DVOR_CONSUME=esp-idf-mock
+check esp-idf-mock-build consumer host-esp 32 -DVOR_CONSUME=esp-idf-mock
 check esp-idf-mock-run run_consumer "$work/host-esp"
 check esp-idf-mock-options grep -q 'VOR_TRACKER_EDGES=16' "$work/host-esp/vor/CMakeFiles/idf_vor.dir/flags.make"
-check zephyr-mock-build consumer host-zephyr 16 -DVOR_CONSUME=zephyr-mock
+check zephyr-mock-build consumer host-zephyr 32 -DVOR_CONSUME=zephyr-mock
 check zephyr-mock-run run_consumer "$work/host-zephyr"
 check zephyr-mock-options grep -q 'VOR_LIMB_BITS=32' "$work/host-zephyr/CMakeFiles/consumer.dir/flags.make"
 # ESP-IDF first reads the file in script mode for its requirements.
@@ -134,7 +134,7 @@ version=$(for part in MAJOR MINOR PATCH; do
 done | paste -sd.)
 check package-version grep -q "set(PACKAGE_VERSION \"$version\")" \
     "$work/host-vor-prefix/lib/cmake/vor/vorConfigVersion.cmake"
-check package-records-options grep -q 'INTERFACE_COMPILE_DEFINITIONS "VOR_INDEX_BITS=16"' \
+check package-records-options grep -q 'INTERFACE_COMPILE_DEFINITIONS "VOR_INDEX_BITS=32"' \
     "$work/host-vor-prefix/lib/cmake/vor/vorTargets.cmake"
 refuse_version() {
     mkdir -p "$work/old-version"

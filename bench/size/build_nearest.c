@@ -17,6 +17,6 @@ int main(void)
     }
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
     acc |= vor_build(&d, points, SIZE_SITES, NULL, NULL);
-    acc |= vor_nearest(&d, size_x(0), size_y(1), VOR_NO_HINT, &site);
+    acc |= vor_nearest(&d, (vor_point_t){size_x(0), size_y(1)}, VOR_NO_HINT, &site);
     return acc + (int)site;
 }

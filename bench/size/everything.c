@@ -15,21 +15,21 @@ int main(void)
     vor_t d;
     uint32_t site = 0, count = 0, found = 0;
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
-    vor_build_options_t options = {(enum vor_order)size_x(6)};
+    vor_build_options_t options = {(enum vor_order)size_x(6), (enum vor_dc_split)size_x(7), 0};
     acc |= vor_build(&d, raster_points, SIZE_SITES / 2u, &options, ids);
-    acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7), ids);
-    acc |= vor_build_dc_forked(&d, raster_points, SIZE_SITES / 2u, (enum vor_dc_split)size_x(7),
+    acc |= vor_build_dc(&d, raster_points, SIZE_SITES / 2u, &options, ids);
+    acc |= vor_build_dc_forked(&d, raster_points, SIZE_SITES / 2u, &options,
                                ids, NULL);
-    acc |= vor_insert(&d, size_x(1), size_y(1), &site);
-    acc |= vor_insert_near(&d, size_x(2), size_y(2), site, &site);
+    acc |= vor_insert(&d, (vor_point_t){size_x(1), size_y(1)}, &site);
+    acc |= vor_insert_near(&d, (vor_point_t){size_x(2), size_y(2)}, site, &site);
     acc |= vor_motion_attach(&d, motion, sizeof motion);
-    acc |= vor_move(&d, site, size_x(8), size_y(8), &site);
+    acc |= vor_move(&d, site, (vor_point_t){size_x(8), size_y(8)}, &site);
     acc |= vor_remove(&d, site);
-    acc |= vor_nearest(&d, size_x(3), size_y(3), VOR_NO_HINT, &site);
-    acc |= vor_nearest_k(&d, size_x(3), size_y(3), site, 4, ids, &found);
+    acc |= vor_nearest(&d, (vor_point_t){size_x(3), size_y(3)}, VOR_NO_HINT, &site);
+    acc |= vor_nearest_k(&d, (vor_point_t){size_x(3), size_y(3)}, site, 4, ids, &found);
     vor_tracker_t tracker;
     vor_tracker_begin(&tracker, &d);
-    acc |= vor_track(&tracker, size_x(4), size_y(4), &site);
+    acc |= vor_track(&tracker, (vor_point_t){size_x(4), size_y(4)}, &site);
     vor_violation_t violation;
     acc |= vor_validate(&d, &violation);
     vor_memory_t memory;
@@ -60,13 +60,13 @@ int main(void)
     vor_centroid_t centroid;
     acc |= vor_cell_centroid(&d, site, &box, centroid_scratch, sizeof centroid_scratch, &centroid);
     vor_vertex_t centre;
-    acc |= vor_circumcentre(&raster_points[0], &raster_points[1], &raster_points[2], &centre);
+    acc |= vor_circumcentre(raster_points[0], raster_points[1], raster_points[2], &centre);
     acc |= vor_voronoi_vertex(&d, 0, 1, 2, &centre);
-    acc += vor_orient2d(&raster_points[0], &raster_points[1], &raster_points[2], NULL);
-    acc += vor_incircle(&raster_points[0], &raster_points[1], &raster_points[2], &raster_points[3], NULL);
-    acc += vor_closer(&raster_points[0], &raster_points[1], &raster_points[2], NULL);
-    acc += vor_orient2d_sos(raster_points, 0, 1, 2, NULL);
-    acc += vor_incircle_sos(raster_points, 0, 1, 2, 3, NULL);
-    acc += vor_closer_sos(raster_points, 0, 1, 2, NULL);
+    acc += vor_orient2d(raster_points[0], raster_points[1], raster_points[2]);
+    acc += vor_incircle(raster_points[0], raster_points[1], raster_points[2], raster_points[3]);
+    acc += vor_closer(raster_points[0], raster_points[1], raster_points[2]);
+    acc += vor_orient2d_sos(raster_points, 0, 1, 2);
+    acc += vor_incircle_sos(raster_points, 0, 1, 2, 3);
+    acc += vor_closer_sos(raster_points, 0, 1, 2);
     return acc + raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
 }

@@ -27,7 +27,8 @@ static int raster_flush(void *user, uint32_t first_row, uint32_t rows, const voi
 
 /* vor_raster or vor_raster_euclid: the program links the one it passes. */
 typedef int (*raster_entry_t)(const vor_raster_frame_t *, const vor_raster_sites_t *,
-                              const vor_raster_output_t *, void *, size_t);
+                              const vor_raster_output_t *, const vor_raster_options_t *,
+                              void *, size_t);
 
 static int raster_render(raster_entry_t entry, enum vor_metric metric)
 {
@@ -46,7 +47,7 @@ static int raster_render(raster_entry_t entry, enum vor_metric metric)
     out.band_bytes = sizeof raster_band;
     out.band_rows = SIZE_ROWS;
     out.flush = raster_flush;
-    return entry(&frame, &sites, &out, raster_work, sizeof raster_work);
+    return entry(&frame, &sites, &out, NULL, raster_work, sizeof raster_work);
 }
 
 #endif

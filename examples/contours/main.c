@@ -205,7 +205,7 @@ static void render(const vor_raster_frame_t *frame, const vor_point_t *points,
     out.band_rows = BAND_ROWS;
     out.flush = collect;
     out.user = &sink;
-    int err = vor_raster(frame, &sites, &out, work, work_bytes);
+    int err = vor_raster(frame, &sites, &out, NULL, work, work_bytes);
     if (err != VOR_OK) {
         fprintf(stderr, "error: vor_raster returned %d\n", err);
         exit(2);
@@ -244,10 +244,10 @@ static int inside(const map_t *m, uint32_t k, const vor_point_t *q)
     for (uint32_t i = m->offsets[k]; i + 1u < m->offsets[k + 1u]; i++) {
         const vor_point_t *a = &m->points[i], *b = &m->points[i + 1u];
         if (a->y <= q->y) {
-            if (b->y > q->y && vor_orient2d(a, b, q, NULL) > 0) {
+            if (b->y > q->y && vor_orient2d(*a, *b, *q) > 0) {
                 winding++;
             }
-        } else if (b->y <= q->y && vor_orient2d(a, b, q, NULL) < 0) {
+        } else if (b->y <= q->y && vor_orient2d(*a, *b, *q) < 0) {
             winding--;
         }
     }

@@ -60,7 +60,7 @@ static uint64_t coverage_cost(const vor_t *d)
     for (int32_t y = COST_SPACING / 2; y < HEIGHT; y += COST_SPACING) {
         for (int32_t x = COST_SPACING / 2; x < WIDTH; x += COST_SPACING) {
             uint32_t site;
-            if (vor_nearest(d, x, y, hint, &site) != VOR_OK) {
+            if (vor_nearest(d, (vor_point_t){x, y}, hint, &site) != VOR_OK) {
                 return UINT64_MAX;
             }
             int64_t dx = (int64_t)robot[site].x - x, dy = (int64_t)robot[site].y - y;
@@ -86,7 +86,7 @@ static int lloyd_step(vor_t *d)
     }
     for (uint32_t i = 0; i < ROBOTS; i++) {
         uint32_t other;
-        int err = vor_move(d, i, goal[i].x, goal[i].y, &other);
+        int err = vor_move(d, i, goal[i], &other);
         if (err == VOR_OK) {
             robot[i] = goal[i];
         } else if (err != VOR_ERR_DUPLICATE) { /* two goals met: stay */
@@ -137,7 +137,7 @@ int main(void)
         robot[i].x = (int32_t)(example_random(&state) % 20000u);
         robot[i].y = (int32_t)(example_random(&state) % 20000u);
         uint32_t id;
-        err = vor_insert(&d, robot[i].x, robot[i].y, &id);
+        err = vor_insert(&d, robot[i], &id);
         if (err == VOR_ERR_DUPLICATE) { /* draw again */
             i--;
             err = VOR_OK;

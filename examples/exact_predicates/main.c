@@ -4,8 +4,8 @@
  * floating-point geometry, run as firmware (`make demo` runs it on the
  * emulated Cortex-M3).
  *
- * Copy from here: a predicate call needs nothing but the points; pass a
- * vor_predicate_stats_t to see which evaluation width each call needed.
+ * Copy from here: a predicate call needs nothing but the points, passed
+ * by value, and always answers -1, 0 or 1.
  */
 #include "example_io.h"
 #include "port.h"
@@ -32,42 +32,30 @@ int main(void)
         {cx - 1069469830, cy + 0},
         {cx + 641681898, cy - 855575864},
     };
-    vor_predicate_stats_t stats = {0};
     print_sign("incircle of four cocircular points near 2^31:          ",
-               vor_incircle(&circle[0], &circle[1], &circle[2], &circle[3], &stats));
+               vor_incircle(circle[0], circle[1], circle[2], circle[3]));
     /* moving the fourth point one unit outward puts it outside */
     vor_point_t nudged = {circle[3].x + 1, circle[3].y - 1};
     print_sign("the same with the last point moved one unit outward:  ",
-               vor_incircle(&circle[0], &circle[1], &circle[2], &nudged, &stats));
+               vor_incircle(circle[0], circle[1], circle[2], nudged));
     /* the perturbation decides the tie the same way every time */
     print_sign("perturbed incircle of the cocircular points:          ",
-               vor_incircle_sos(circle, 0, 1, 2, 3, &stats));
+               vor_incircle_sos(circle, 0, 1, 2, 3));
     print_sign("  ...with indices 0 and 1 swapped (must flip):        ",
-               vor_incircle_sos(circle, 1, 0, 2, 3, &stats));
+               vor_incircle_sos(circle, 1, 0, 2, 3));
 
     /* three collinear points spanning the whole int32 range */
     vor_point_t line[3] = {{INT32_MIN, INT32_MIN}, {0, 0}, {INT32_MAX, INT32_MAX}};
     print_sign("orient2d of (MIN,MIN), (0,0), (MAX,MAX):              ",
-               vor_orient2d(&line[0], &line[1], &line[2], &stats));
+               vor_orient2d(line[0], line[1], line[2]));
     print_sign("perturbed orient2d of the same:                       ",
-               vor_orient2d_sos(line, 0, 1, 2, &stats));
-
-    /* which widths were needed */
-    example_print("\nincircle calls by width: narrow ");
-    example_print_int(stats.incircle[VOR_TIER_NARROW]);
-    example_print(", mid ");
-    example_print_int(stats.incircle[VOR_TIER_MID]);
-    example_print(", wide ");
-    example_print_int(stats.incircle[VOR_TIER_WIDE]);
-    example_print("; decided by the perturbation: ");
-    example_print_int(stats.incircle_perturbed);
-    example_print("\n");
+               vor_orient2d_sos(line, 0, 1, 2));
 
     /* cost of one full-range incircle */
     uint64_t start = vor_port_counter();
     int sink = 0;
     for (int i = 0; i < 100; i++) {
-        sink += vor_incircle(&circle[0], &circle[1], &circle[2], &nudged, NULL);
+        sink += vor_incircle(circle[0], circle[1], circle[2], nudged);
     }
     uint64_t spent = vor_port_counter() - start;
     example_print("full-range incircle: ");

@@ -65,12 +65,13 @@ int main(void)
         x += heading_x;
         y += heading_y;
         int32_t px = (int32_t)(x >> 16), py = (int32_t)(y >> 16);
+        vor_point_t robot = {px, py};
 
         uint64_t start = vor_port_counter();
-        int err = vor_track(&tracker, px, py, &answer);
+        int err = vor_track(&tracker, robot, &answer);
         spent += vor_port_counter() - start;
         start = vor_port_counter();
-        err |= vor_nearest(&map, px, py, hint, &hinted);
+        err |= vor_nearest(&map, robot, hint, &hinted);
         spent_hinted += vor_port_counter() - start;
         if (err != VOR_OK || hinted != answer) {
             example_print("query failed\n");

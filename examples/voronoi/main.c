@@ -83,9 +83,9 @@ static int render_frame(void)
     vor_raster_sites_t set = {.metric = VOR_METRIC_EUCLID, .points = sites, .count = FRAME_SITES};
     stream_t stream = {vor_port_file_open("build/demo.rgb565"), 0, 0, 0};
     vor_raster_output_t out = {VOR_RASTER_RGB565, band, sizeof band, BAND_ROWS, send_band,
-                               &stream, colours, NULL, NULL, VOR_RASTER_FAST};
+                               &stream, colours, NULL, NULL};
     uint64_t start = vor_port_counter();
-    int err = vor_raster(&frame, &set, &out, raster_work, sizeof raster_work);
+    int err = vor_raster(&frame, &set, &out, NULL, raster_work, sizeof raster_work);
     uint64_t spent = vor_port_counter() - start - stream.spent;
     if (stream.file >= 0) {
         (void)vor_port_file_close(stream.file);
@@ -168,7 +168,7 @@ int main(void)
     for (int32_t step = 0; step <= 4; step++) {
         int32_t x = -40000 + step * 20000, y = 12345 - step * 7000;
         uint32_t site;
-        err = vor_nearest(&diagram, x, y, hint, &site);
+        err = vor_nearest(&diagram, (vor_point_t){x, y}, hint, &site);
         wrong += (err != VOR_OK || site != example_brute_nearest(sites, SITES, first_of, x, y)) ? 1u : 0u;
         hint = site;
         example_print("(");

@@ -11,6 +11,7 @@ void config_same(const char *name);
 void config_tracker_edges(const char *name);
 void config_index_bits(const char *name);
 void config_sites_per_bucket(const char *name);
+void config_stats(const char *name);
 
 /* The case filter and flags (the Makefile's ONLY, V and LIST). */
 #ifndef TEST_ONLY
@@ -30,5 +31,6 @@ int main(void)
     TEST_CASE("config/sites_per_bucket") {
         config_sites_per_bucket("VOR_SITES_PER_BUCKET 16 against 4");
     }
+    TEST_CASE("config/stats") config_stats("VOR_STATS 1 against 0");
     return test_finish();
 }

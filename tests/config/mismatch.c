@@ -85,20 +85,28 @@ void CONFIG_CASE(const char *name)
     test_rng_t rng;
     test_rng_seed(&rng, 0xC0F1);
     for (uint32_t i = 0; i < CONFIG_SITES; i++) {
-        err |= vor_insert(&guarded_diagram.d, test_rng_range(&rng, -1000, 1000),
-                          test_rng_range(&rng, -1000, 1000), NULL);
+        vor_point_t p;
+        p.x = test_rng_range(&rng, -1000, 1000);
+        p.y = test_rng_range(&rng, -1000, 1000);
+        err |= vor_insert(&guarded_diagram.d, p, NULL);
     }
     err |= vor_tracker_begin(&guarded_tracker.t, &guarded_diagram.d);
     uint32_t wrong = 0;
     for (int32_t y = -1100; y <= 1100; y += 50) {
         for (int32_t x = -1100; x <= 1100; x += 50) {
             uint32_t tracked = 0, nearest = 1;
-            err |= vor_track(&guarded_tracker.t, x, y, &tracked);
-            err |= vor_nearest(&guarded_diagram.d, x, y, VOR_NO_HINT, &nearest);
+            err |= vor_track(&guarded_tracker.t, (vor_point_t){x, y}, &tracked);
+            err |= vor_nearest(&guarded_diagram.d, (vor_point_t){x, y}, VOR_NO_HINT, &nearest);
             wrong += (tracked != nearest) ? 1u : 0u;
         }
     }
     CHECK(err == VOR_OK && wrong == 0u, "%s: %u tracked answers wrong (err %d)", name, wrong,
           err);
+    /* the contract library counts nothing (VOR_STATS 0): nothing to read */
+    vor_stats_t counters;
+    fill(&counters, sizeof counters);
+    CHECK(vor_stats(&guarded_diagram.d, &counters) == VOR_ERR_ARG &&
+              changed(&counters, sizeof counters) == 0u,
+          "%s: vor_stats without VOR_STATS", name);
     CHECK(canaries_changed() == 0u, "%s: %u canary bytes overwritten", name, canaries_changed());
 }

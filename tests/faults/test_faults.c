@@ -75,8 +75,8 @@ int main(void)
         static uint32_t dup[SITES];
         /* batch build */
         CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
-        d.stats.fault_rate = rate;
-        d.stats.fault_state = 0x9E3779B97F4A7C15ull + k;
+        d.fault_rate = rate;
+        d.fault_state = 0x9E3779B97F4A7C15ull + k;
         CHECK(vor_build(&d, points, SITES, NULL, dup) == VOR_OK, "build");
         uint32_t distinct = 0;
         for (uint32_t i = 0; i < SITES; i++) {
@@ -86,9 +86,9 @@ int main(void)
         /* the divide-and-conquer builds: guards C1-C5, T1, T2 */
         for (unsigned split = VOR_DC_QUADTREE; split <= VOR_DC_XSPLIT; split++) {
             CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
-            d.stats.fault_rate = rate;
-            d.stats.fault_state = 0x2545F4914F6CDD1Dull + k * 3u + 2u - split;
-            CHECK(vor_build_dc(&d, points, SITES, (enum vor_dc_split)split, dup) == VOR_OK,
+            d.fault_rate = rate;
+            d.fault_state = 0x2545F4914F6CDD1Dull + k * 3u + 2u - split;
+            CHECK(vor_build_dc(&d, points, SITES, TEST_SPLIT(split), dup) == VOR_OK,
                   "d&c build");
             check_topology(&d, split == VOR_DC_XSPLIT ? "d&c build of 10000 sites"
                                                       : "d&c quadtree build of 10000 sites",
@@ -100,19 +100,19 @@ int main(void)
                 grid[i].y = (int32_t)(i / 50u) * 7;
             }
             CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
-            d.stats.fault_rate = rate;
-            d.stats.fault_state = 0x9E3779B97F4A7C15ull ^ (k * 7u + 2u - split);
-            CHECK(vor_build_dc(&d, grid, 2500, (enum vor_dc_split)split, NULL) == VOR_OK,
+            d.fault_rate = rate;
+            d.fault_state = 0x9E3779B97F4A7C15ull ^ (k * 7u + 2u - split);
+            CHECK(vor_build_dc(&d, grid, 2500, TEST_SPLIT(split), NULL) == VOR_OK,
                   "d&c grid build");
             check_topology(&d, "d&c build of a 50x50 grid", percents[k], 2500);
         }
         /* one by one: the dynamic path, with its duplicate search */
         CHECK(vor_init(&d, arena, sizeof arena, SITES) == VOR_OK, "init");
-        d.stats.fault_rate = rate;
-        d.stats.fault_state = 0x5851F42D4C957F2Dull + k;
+        d.fault_rate = rate;
+        d.fault_state = 0x5851F42D4C957F2Dull + k;
         uint32_t inserted = 0;
         for (uint32_t i = 0; i < 3000u; i++) {
-            int err = vor_insert(&d, points[i].x / 1000, points[i].y / 1000, NULL);
+            int err = vor_insert(&d, (vor_point_t){points[i].x / 1000, points[i].y / 1000}, NULL);
             inserted += (err == VOR_OK) ? 1u : 0u;
             CHECK(err == VOR_OK || err == VOR_ERR_DUPLICATE, "insert %u: %d", i, err);
         }
@@ -137,15 +137,17 @@ int main(void)
                 to.x = d.sites[site].x + test_rng_range(&rng, -3, 3);
                 to.y = d.sites[site].y + test_rng_range(&rng, -3, 3);
             }
-            int err = vor_move(&d, site, to.x, to.y, NULL);
+            int err = vor_move(&d, site, to, NULL);
             CHECK(err == VOR_OK || err == VOR_ERR_ARG || err == VOR_ERR_DUPLICATE, "move %u: %d",
                   i, err);
         }
         check_topology(&d, "2000 moves", percents[k], live);
         for (uint32_t i = 0; i < 4000u; i++) { /* tiny steps: many inside their boxes */
             uint32_t site = test_rng_u32(&rng) % d.site_count;
-            int err = vor_move(&d, site, d.sites[site].x + test_rng_range(&rng, -1, 1),
-                               d.sites[site].y + test_rng_range(&rng, -1, 1), NULL);
+            vor_point_t step = d.sites[site];
+            step.x += test_rng_range(&rng, -1, 1);
+            step.y += test_rng_range(&rng, -1, 1);
+            int err = vor_move(&d, site, step, NULL);
             CHECK(err == VOR_OK || err == VOR_ERR_ARG || err == VOR_ERR_DUPLICATE, "move %u: %d",
                   i, err);
         }
@@ -170,14 +172,14 @@ int main(void)
                 y--;
             }
             if ((int64_t)y * y == 5525 * 5525 - (int64_t)x * x && found++ % 6u == 0u) {
-                ring += (vor_insert(&d, x, y, NULL) == VOR_OK) ? 1u : 0u;
-                ring += (vor_insert(&d, -y, x, NULL) == VOR_OK) ? 1u : 0u;
-                ring += (vor_insert(&d, -x, -y, NULL) == VOR_OK) ? 1u : 0u;
-                ring += (vor_insert(&d, y, -x, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, (vor_point_t){x, y}, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, (vor_point_t){-y, x}, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, (vor_point_t){-x, -y}, NULL) == VOR_OK) ? 1u : 0u;
+                ring += (vor_insert(&d, (vor_point_t){y, -x}, NULL) == VOR_OK) ? 1u : 0u;
             }
         }
         uint32_t centre = 0;
-        CHECK(vor_insert(&d, 0, 0, &centre) == VOR_OK && vor_remove(&d, centre) == VOR_OK,
+        CHECK(vor_insert(&d, (vor_point_t){0, 0}, &centre) == VOR_OK && vor_remove(&d, centre) == VOR_OK,
               "ring centre");
         check_topology(&d, "a ring's centre removed", percents[k], ring);
         test_case_end();

@@ -148,10 +148,11 @@ static void op_build(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int di
         points[i] = fuzz_point(r, previous);
     snapshot(m);
     int result;
-    if (divide)
-        result = vor_build_dc(&m->d, points, n, (enum vor_dc_split)(how % 3u), duplicate_of);
-    else {
-        vor_build_options_t options = {(enum vor_order)(how % 3u)};
+    if (divide) {
+        vor_build_options_t options = {VOR_ORDER_QUADTREE, (enum vor_dc_split)(how % 3u), 0};
+        result = vor_build_dc(&m->d, points, n, &options, duplicate_of);
+    } else {
+        vor_build_options_t options = {(enum vor_order)(how % 3u), VOR_DC_QUADTREE, 0};
         result = vor_build(&m->d, points, n, (how & 4u) ? NULL : &options, duplicate_of);
     }
     int bad_mode = how % 3u == 2u && (divide || !(how & 4u));
@@ -173,8 +174,8 @@ static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int n
     uint32_t hint = near ? draw_hint(r, m) : VOR_NO_HINT;
     uint32_t id = 0xdeadbeefu;
     snapshot(m);
-    int result = near ? vor_insert_near(&m->d, p.x, p.y, hint, &id)
-                      : vor_insert(&m->d, p.x, p.y, &id);
+    int result = near ? vor_insert_near(&m->d, p, hint, &id)
+                      : vor_insert(&m->d, p, &id);
     uint32_t first = site_at(m, p);
     if (near && !hint_valid(m, hint)) {
         FUZZ_REQUIRE(result == VOR_ERR_ARG, "insert_near: a bad hint was accepted");
@@ -202,7 +203,7 @@ static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t n = brute_order(m, q.x, q.y, order);
     uint32_t id = 0xdeadbeefu;
     snapshot(m);
-    int result = vor_nearest(&m->d, q.x, q.y, hint, &id);
+    int result = vor_nearest(&m->d, q, hint, &id);
     FUZZ_REQUIRE(unchanged(m), "nearest changed the diagram");
     if (!hint_valid(m, hint) || n == 0) {
         FUZZ_REQUIRE(result < 0 && id == 0xdeadbeefu, "nearest: bad hint or empty accepted");
@@ -223,7 +224,7 @@ static void op_nearest_k(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t n = brute_order(m, q.x, q.y, order);
     memset(got, 0xa5, sizeof got);
     snapshot(m);
-    int result = vor_nearest_k(&m->d, q.x, q.y, hint, k, got, &found);
+    int result = vor_nearest_k(&m->d, q, hint, k, got, &found);
     FUZZ_REQUIRE(unchanged(m), "nearest_k changed the diagram");
     if (!hint_valid(m, hint) || n == 0) {
         FUZZ_REQUIRE(result < 0 && found == 0xdeadbeefu && got[0] == 0xa5a5a5a5u,
@@ -245,7 +246,7 @@ static void op_track(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
         vor_point_t q = fuzz_point(r, previous);
         uint32_t n = brute_order(m, q.x, q.y, order);
         uint32_t id = 0xdeadbeefu;
-        int result = vor_track(&m->tracker, q.x, q.y, &id);
+        int result = vor_track(&m->tracker, q, &id);
         if (n == 0)
             FUZZ_REQUIRE(result == VOR_ERR_EMPTY && id == 0xdeadbeefu, "track on empty");
         else
@@ -289,22 +290,30 @@ static void op_cells(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     int inverted = box.x0 > box.x1 || box.y0 > box.y1;
     vor_cell_iter_t it;
     uint32_t site, count, cells = 0, last = 0;
-    vor_cells_begin(&it, &m->d, &box);
+    int begun = vor_cells_begin(&it, &m->d, &box);
+    FUZZ_REQUIRE(begun == (inverted ? VOR_ERR_ARG : VOR_OK), "cells: begin");
+    /* next is 1 or 0, and a while over it ends: the guard only bounds
+     * the retries with larger buffers */
     for (uint32_t guard = 0; guard < 2u * MOST_SITES + 2u; guard++) {
         int result = vor_cells_next(&it, &site, vertices, capacity, &count);
-        if (result == 0)
-            break;
-        if (inverted) {
-            FUZZ_REQUIRE(result == VOR_ERR_ARG, "cells: inverted box accepted");
-            break;
-        }
-        if (result == VOR_ERR_BUFFER) {
-            FUZZ_REQUIRE(count > capacity && count <= VOR_CELL_MAX_VERTICES(MOST_SITES),
+        FUZZ_REQUIRE(result == 0 || result == 1, "cells: next neither 1 nor 0");
+        if (result == 0) {
+            int why = vor_cells_error(&it);
+            if (inverted) {
+                FUZZ_REQUIRE(why == VOR_ERR_ARG, "cells: inverted box accepted");
+                break;
+            }
+            if (why != VOR_ERR_BUFFER) {
+                FUZZ_REQUIRE(why == VOR_OK, "cells: wrong reason to stop");
+                break;
+            }
+            FUZZ_REQUIRE(count > capacity && count <= VOR_CELL_MAX_VERTICES(MOST_SITES) &&
+                             is_site(m, site),
                          "cells: wrong size needed");
             capacity = count;
             continue;
         }
-        FUZZ_REQUIRE(result == 1 && is_site(m, site) && (cells == 0 || site > last),
+        FUZZ_REQUIRE(!inverted && is_site(m, site) && (cells == 0 || site > last),
                      "cells: wrong site");
         for (uint32_t i = 0; i < count; i++)
             FUZZ_REQUIRE(vertices[i].x >= box.x0 && vertices[i].x <= box.x1 &&
@@ -340,7 +349,7 @@ static void op_move(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
         p = m->point[fuzz_u8(r) % m->count];
     uint32_t existing = 0xdeadbeefu, other = site_at(m, p);
     snapshot(m);
-    int result = vor_move(&m->d, id, p.x, p.y, &existing);
+    int result = vor_move(&m->d, id, p, &existing);
     if (!is_site(m, id)) {
         FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "move: a non-site accepted");
         return;
@@ -444,7 +453,7 @@ static void op_triangles(model_t *m)
     uint32_t n = distinct_sites(m), h = brute_hull_sites(m, &collinear), ids[3];
     uint32_t triangles = 0;
     vor_triangle_iter_t it;
-    vor_triangles_begin(&it, &m->d);
+    FUZZ_REQUIRE(vor_triangles_begin(&it, &m->d) == VOR_OK, "triangles: begin");
     while (vor_triangles_next(&it, ids)) {
         FUZZ_REQUIRE(is_site(m, ids[0]) && is_site(m, ids[1]) && is_site(m, ids[2]),
                      "triangles: not a site");
@@ -459,7 +468,7 @@ static void op_triangles(model_t *m)
 
     uint32_t site, hull = 0;
     vor_hull_iter_t hi;
-    vor_hull_begin(&hi, &m->d);
+    FUZZ_REQUIRE(vor_hull_begin(&hi, &m->d) == VOR_OK, "hull: begin");
     while (vor_hull_next(&hi, &site)) {
         FUZZ_REQUIRE(is_site(m, site), "hull: not a site");
         FUZZ_REQUIRE(++hull <= MOST_SITES, "hull: endless");
@@ -472,7 +481,7 @@ static void op_edges_neighbours(fuzz_reader_t *r, model_t *m)
     vor_edge_iter_t it;
     vor_edge_t edge;
     uint32_t edges = 0, neighbour;
-    vor_edges_begin(&it, &m->d);
+    FUZZ_REQUIRE(vor_edges_begin(&it, &m->d) == VOR_OK, "edges: begin");
     while (vor_edges_next(&it, &edge)) {
         FUZZ_REQUIRE(is_site(m, edge.sites[0]) && is_site(m, edge.sites[1]) &&
                          edge.sites[0] != edge.sites[1],
@@ -482,7 +491,8 @@ static void op_edges_neighbours(fuzz_reader_t *r, model_t *m)
     uint32_t site = m->count ? fuzz_u8(r) % (m->count + 1u) : fuzz_u8(r);
     vor_neighbour_iter_t ni;
     uint32_t seen = 0;
-    vor_neighbours_begin(&ni, &m->d, site);
+    FUZZ_REQUIRE(vor_neighbours_begin(&ni, &m->d, site) == (is_site(m, site) ? VOR_OK : VOR_ERR_ARG),
+                 "neighbours: begin");
     while (vor_neighbours_next(&ni, &neighbour)) {
         FUZZ_REQUIRE(is_site(m, site) && is_site(m, neighbour) && neighbour != site,
                      "neighbours: not a site");

@@ -146,7 +146,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     vor_raster_output_t out = {0};
     uint8_t how = fuzz_u8(&r);
     out.kind = (enum vor_raster_kind)(how % 8u); /* 7: unknown */
-    out.method = (enum vor_raster_method)((how >> 3) % 3u); /* 2: unknown */
+    vor_raster_options_t options = {(enum vor_raster_method)((how >> 3) % 3u)}; /* 2: unknown */
     out.band_rows = fuzz_u8(&r) % (MOST_SIDE + 3u);
     uint32_t pixel_bytes = VOR_RASTER_PIXEL_BYTES(out.kind);
     size_t band_needed = (size_t)out.band_rows * frame.width * pixel_bytes;
@@ -175,15 +175,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         for (uint32_t k = 0; k < sites.count; k++)
             params &= mult[k] >= 1;
     int valid = params && frame_valid(&frame) && out.kind <= VOR_RASTER_DISTANCE &&
-                out.method <= VOR_RASTER_BRUTE && out.band_rows >= 1u &&
+                options.method <= VOR_RASTER_BRUTE && out.band_rows >= 1u &&
                 !(out.kind == VOR_RASTER_LABEL8 && sites.count > 256u) &&
                 (!euclid_entry || sites.metric == VOR_METRIC_EUCLID);
     int sized = sites.count && !(how & 0x40u) && !(memory & 3u);
 
     memset(band, 0x5a, sizeof band);
     memset(areas, 0x5a, sizeof areas);
-    int result = (euclid_entry ? vor_raster_euclid : vor_raster)(&frame, &sites, &out, work_at,
-                                                                 work_bytes);
+    int result = (euclid_entry ? vor_raster_euclid : vor_raster)(&frame, &sites, &out, &options,
+                                                                 work_at, work_bytes);
     if (!valid || !sized) {
         FUZZ_REQUIRE(result != VOR_OK, "raster: an invalid request succeeded");
         if (result < 0) {
@@ -196,7 +196,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     if (capture.stop_after && capture.flushes == capture.stop_after) {
-        FUZZ_REQUIRE(result == 1234, "raster: a stopping flush's value not returned");
+        FUZZ_REQUIRE(result == VOR_ERR_STOPPED, "raster: a stopping flush gave no VOR_ERR_STOPPED");
         FUZZ_REQUIRE(!capture.bad, "raster: rows out of order");
         return 0;
     }

@@ -69,7 +69,7 @@ static double seconds_now(void)
 static uint32_t site_at(const model_t *m, int32_t x, int32_t y)
 {
     uint32_t id;
-    if (m->live_count == 0 || vor_nearest(&m->d, x, y, VOR_NO_HINT, &id) != VOR_OK)
+    if (m->live_count == 0 || vor_nearest(&m->d, (vor_point_t){x, y}, VOR_NO_HINT, &id) != VOR_OK)
         return VOR_NO_HINT;
     return m->point[id].x == x && m->point[id].y == y ? id : VOR_NO_HINT;
 }
@@ -101,7 +101,7 @@ static void do_insert(model_t *m, unsigned long long op)
         y = m->point[other].y;
     }
     uint32_t existing = site_at(m, x, y), id = VOR_NO_HINT;
-    int result = vor_insert(&m->d, x, y, &id);
+    int result = vor_insert(&m->d, (vor_point_t){x, y}, &id);
     if (existing != VOR_NO_HINT) {
         if (result != VOR_ERR_DUPLICATE || id != existing)
             fail("insert onto a site: not its duplicate", op);
@@ -144,7 +144,7 @@ static void do_move(model_t *m, unsigned long long op)
         y = m->point[other].y;
     }
     uint32_t existing = site_at(m, x, y), reported = VOR_NO_HINT;
-    int result = vor_move(&m->d, id, x, y, &reported);
+    int result = vor_move(&m->d, id, (vor_point_t){x, y}, &reported);
     if (existing != VOR_NO_HINT && existing != id) {
         if (result != VOR_ERR_DUPLICATE || reported != existing)
             fail("move onto another site: not its duplicate", op);
@@ -160,7 +160,7 @@ static void do_query(model_t *m, unsigned long long op)
 {
     int32_t x = random_coordinate(), y = random_coordinate();
     uint32_t id;
-    if (vor_nearest(&m->d, x, y, VOR_NO_HINT, &id) != VOR_OK || !m->alive[id])
+    if (vor_nearest(&m->d, (vor_point_t){x, y}, VOR_NO_HINT, &id) != VOR_OK || !m->alive[id])
         fail("nearest failed or answered a free id", op);
     if (op % 1000u != 0u)
         return;

@@ -60,6 +60,7 @@ const char *cli_error_text(int err)
     case VOR_ERR_EMPTY: return "VOR_ERR_EMPTY: a query on a diagram without sites";
     case VOR_ERR_BUFFER: return "VOR_ERR_BUFFER: the caller's buffer is too small";
     case VOR_ERR_CONFIG: return "VOR_ERR_CONFIG: library and tool were compiled with different vor_config.h";
+    case VOR_ERR_STOPPED: return "VOR_ERR_STOPPED: the raster's flush asked to stop";
     default: return "unknown error code";
     }
 }

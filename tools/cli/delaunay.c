@@ -42,9 +42,8 @@ const char cli_delaunay_help[] =
 int cli_delaunay(int argc, char **argv)
 {
     bool stats = false;
-    vor_build_options_t options = {VOR_ORDER_QUADTREE};
+    vor_build_options_t options = {VOR_ORDER_QUADTREE, VOR_DC_QUADTREE, 0};
     bool dc = false; /* vor_build_dc instead of vor_build */
-    enum vor_dc_split split = VOR_DC_QUADTREE;
     const char *path = NULL;
     enum { STATS, ORDER, ALGO };
     static const cli_option_t flags[] = {[STATS] = {"--stats", 0}, [ORDER] = {"--order", 1}, [ALGO] = {"--algo", 1}};
@@ -64,10 +63,10 @@ int cli_delaunay(int argc, char **argv)
             dc = false;
         } else if (o == ALGO && strcmp(value, "dc") == 0) {
             dc = true;
-            split = VOR_DC_XSPLIT;
+            options.split = VOR_DC_XSPLIT;
         } else if (o == ALGO && strcmp(value, "dc-quadtree") == 0) {
             dc = true;
-            split = VOR_DC_QUADTREE;
+            options.split = VOR_DC_QUADTREE;
         } else if (o == ALGO) {
             cli_usage_error("delaunay", USAGE, "--algo takes incremental, dc or dc-quadtree, not", value);
         } else if (path == NULL) {
@@ -89,7 +88,7 @@ int cli_delaunay(int argc, char **argv)
     vor_t d;
     void *arena = cli_diagram(&d, capacity);
     double start = cli_seconds();
-    int built = dc ? vor_build_dc(&d, sites, n, split, duplicate_of)
+    int built = dc ? vor_build_dc(&d, sites, n, &options, duplicate_of)
                    : vor_build(&d, sites, n, &options, duplicate_of);
     if (built != VOR_OK) {
         cli_library_error(dc ? "vor_build_dc" : "vor_build", built);
@@ -107,7 +106,9 @@ int cli_delaunay(int argc, char **argv)
     if (stats) {
         vor_memory_t memory;
         vor_memory(&d, &memory);
-        const vor_predicate_stats_t *s = &d.stats;
+        vor_stats_t counters = {0}; /* zeros from a library without VOR_STATS */
+        (void)vor_stats(&d, &counters);
+        const vor_stats_t *s = &counters;
         fprintf(stderr, "sites=%u triangles=%zu bytes=%zu bytes_per_site=%u.%02u seconds=%.6f\n",
                 n, count, memory.used_bytes, memory.bytes_per_site_x100 / 100u,
                 memory.bytes_per_site_x100 % 100u, seconds);

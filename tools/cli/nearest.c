@@ -91,7 +91,7 @@ int cli_nearest(int argc, char **argv)
     uint32_t hint = VOR_NO_HINT;
     for (uint32_t q = 0; q < queries; q++) {
         uint32_t found;
-        err = vor_nearest_k(&d, points[q].x, points[q].y, hint, k, nearest, &found);
+        err = vor_nearest_k(&d, points[q], hint, k, nearest, &found);
         if (err != VOR_OK) {
             cli_library_error("vor_nearest_k", err);
         }

@@ -151,7 +151,7 @@ int cli_ops(int argc, char **argv)
         switch (op) {
         case 'i':
             fields(&in, cursor, v, 2);
-            err = vor_insert(&d, v[0], v[1], &id);
+            err = vor_insert(&d, (vor_point_t){v[0], v[1]}, &id);
             if (err == VOR_ERR_FULL) {
                 cli_line_error(&in, "the diagram is full (--capacity)");
             }
@@ -169,7 +169,7 @@ int cli_ops(int argc, char **argv)
             if (v[0] < 0) {
                 cli_line_error(&in, "unknown site id");
             }
-            err = vor_move(&d, (uint32_t)v[0], v[1], v[2], &id);
+            err = vor_move(&d, (uint32_t)v[0], (vor_point_t){v[1], v[2]}, &id);
             if (err == VOR_ERR_DUPLICATE) {
                 cli_append(&out, "d %u\n", id);
             } else if (err != VOR_OK) {
@@ -180,7 +180,7 @@ int cli_ops(int argc, char **argv)
             break;
         case 'n':
             fields(&in, cursor, v, 2);
-            if (vor_nearest(&d, v[0], v[1], VOR_NO_HINT, &id) != VOR_OK) {
+            if (vor_nearest(&d, (vor_point_t){v[0], v[1]}, VOR_NO_HINT, &id) != VOR_OK) {
                 cli_line_error(&in, "no sites to answer with");
             }
             cli_append(&out, "%u\n", id);

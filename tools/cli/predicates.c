@@ -71,8 +71,8 @@ int cli_predicates(int argc, char **argv)
             snprintf(reason, sizeof reason, "too many fields (expected %s)", shape);
             cli_line_error(&in, reason);
         }
-        int sign = (op == 'o') ? vor_orient2d(&v[0], &v[1], &v[2], NULL)
-                               : vor_incircle(&v[0], &v[1], &v[2], &v[3], NULL);
+        int sign = (op == 'o') ? vor_orient2d(v[0], v[1], v[2])
+                               : vor_incircle(v[0], v[1], v[2], v[3]);
         cli_append(&out, "%d\n", sign);
     }
     cli_close(&in);

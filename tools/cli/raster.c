@@ -131,7 +131,7 @@ static uint8_t *render(const vor_raster_frame_t *frame, const vor_raster_sites_t
     out.flush = collect_band;
     out.user = &c;
     out.palette888 = palette888;
-    int err = vor_raster(frame, sites, &out, work, work_bytes);
+    int err = vor_raster(frame, sites, &out, NULL, work, work_bytes);
     if (err != VOR_OK) {
         cli_library_error("vor_raster", err);
     }

@@ -57,12 +57,17 @@ PEER_FLAGS := $(if $(PEER_D32),-DVOR_BENCH_DELAUNAY32 -I$(PEERS)/delaunay32/incl
               $(if $(PEER_JCV),-DVOR_BENCH_JCV)
 
 # A host program, build/bench/NAME-host from tools/peer-bench/NAME.cpp, links the
-# host release library, so it is built with PORT=host (run.sh does that);
-# other ports have no rule for it. The Delaunay benchmark also links the peers.
+# host release library (32-bit ids: up to 10^6 sites), so it is built with
+# PORT=host (run.sh does that); other ports have no rule for it. The Delaunay
+# benchmark also links the peers, and the library with predicate counters
+# (VOR_STATS), which it reports per site.
 ifeq ($(B),build/host)
-build/bench/%-host: tools/peer-bench/%.cpp tools/peer-bench/bench_common.hpp $(LIB_HDRS_BENCH) $(B)/libvor.a
+bench_peer_lib = $(if $(filter delaunay,$(1)),$(B)/libvor-stats.a,$(B)/libvor.a)
+build/bench/%-host: tools/peer-bench/%.cpp tools/peer-bench/bench_common.hpp $(LIB_HDRS_BENCH) \
+                    $(B)/libvor.a $(B)/libvor-stats.a
 	@mkdir -p $(@D)
-	$(BENCH_CXX) $(BENCH_CXXFLAGS) $(BENCH_PEERS_$*) -Iinclude tools/peer-bench/$*.cpp $(B)/libvor.a \
+	$(BENCH_CXX) $(BENCH_CXXFLAGS) $(BENCH_PEERS_$*) -Iinclude -DVOR_INDEX_BITS=32 \
+	    $(if $(filter delaunay,$*),-DVOR_STATS=1) tools/peer-bench/$*.cpp $(call bench_peer_lib,$*) \
 	    $(if $(BENCH_PEERS_$*),$(PEER_OBJS) -pthread -lm) $(BENCH_THREADS_$*) $(BENCH_LDLIBS) -o $@
 
 BENCH_PEERS_delaunay = $(PEER_FLAGS)

@@ -290,6 +290,7 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     }
     vor_build_options_t opt = {};
     opt.order = order;
+    opt.split = (builder == VOR_DC_X) ? VOR_DC_XSPLIT : VOR_DC_QUADTREE;
     if (vor_init(&v.d, v.arena, bytes, n) != VOR_OK) {
         die("vor_init failed");
     }
@@ -297,9 +298,8 @@ static void build_vor(vor_run &v, const std::vector<vor_point_t> &p, enum vor_or
     vor_fork_join_t hook = {thread_fork, thread_join, &worker};
     int err = (builder == VOR_INCREMENTAL)
                   ? vor_build(&v.d, p.data(), n, &opt, nullptr)
-                  : vor_build_dc_forked(&v.d, p.data(), n,
-                                        builder == VOR_DC_X ? VOR_DC_XSPLIT : VOR_DC_QUADTREE,
-                                        nullptr, builder == VOR_DC_Q2 ? &hook : nullptr);
+                  : vor_build_dc_forked(&v.d, p.data(), n, &opt, nullptr,
+                                        builder == VOR_DC_Q2 ? &hook : nullptr);
     if (err != VOR_OK) {
         die("vor_build failed");
     }
@@ -547,7 +547,7 @@ struct row {
     peer_result d32_one, d32_two, jcv; // best of the repetitions
     std::string check = "ok";
     uint32_t flat = 0;            // vor's zero-area triangles
-    vor_predicate_stats_t stats{}; // of vor's first build
+    vor_stats_t stats{}; // of vor's first build
 };
 
 static std::string per_site(double bytes, uint32_t n)
@@ -671,14 +671,14 @@ static row run_row(kind k, uint32_t n, unsigned reps, uint32_t input_order_max, 
                     // the iterator reports the true triangulation: none of
                     // the perturbed mesh's zero-area triangles on the hull
                     const vor_point_t *s = v.d.sites;
-                    if (vor_orient2d(&s[ids[0]], &s[ids[1]], &s[ids[2]], nullptr) != 0) {
+                    if (vor_orient2d(s[ids[0]], s[ids[1]], s[ids[2]]) != 0) {
                         vor_triangles++;
                     } else {
                         r.flat++;
                     }
                 }
                 add_check(r, r.flat == 0, "vor zero-area triangles");
-                r.stats = v.d.stats;
+                vor_stats(&v.d, &r.stats);
                 vor_memory_t m;
                 vor_memory(&v.d, &m);
                 r.vor_arena = (double)m.arena_bytes;
@@ -894,7 +894,7 @@ int main(int argc, char **argv)
             rows.push_back(run_row((kind)k, n, reps, input_order_max, mem));
             const row &r = rows.back();
             ok &= r.check == "ok";
-            const vor_predicate_stats_t &st = r.stats;
+            const vor_stats_t &st = r.stats;
             std::fprintf(stderr,
                          "bench: %-14s %8u  vor %9.2f  CGAL %9.2f  Boost %9.2f ms  %s\n"
                          "       per site: orient2d %.1f (%.1f perturbed), incircle narrow "

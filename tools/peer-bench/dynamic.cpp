@@ -138,7 +138,7 @@ static double run_vor(vor_run &v, kind k, const std::vector<operation> &ops)
     double t0 = now_s();
     for (const operation &op : ops) {
         int err = (k == kind::remove) ? vor_remove(&v.d, op.site)
-                                      : vor_move(&v.d, op.site, op.to.x, op.to.y, nullptr);
+                                      : vor_move(&v.d, op.site, op.to, nullptr);
         if (err != VOR_OK && err != VOR_ERR_DUPLICATE) {
             die("vor_remove or vor_move failed");
         }

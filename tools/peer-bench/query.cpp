@@ -190,12 +190,12 @@ static double run_vor(const vor_t *d, const std::vector<vor_point_t> &q, vor_way
     double t0 = now_s();
     if (way == vor_way::tracked) {
         for (size_t i = 0; i < q.size(); i++) {
-            failed |= vor_track(&tracker, q[i].x, q[i].y, &site);
+            failed |= vor_track(&tracker, q[i], &site);
             answer[i] = site;
         }
     } else {
         for (size_t i = 0; i < q.size(); i++) {
-            failed |= vor_nearest(d, q[i].x, q[i].y, hint, &site);
+            failed |= vor_nearest(d, q[i], hint, &site);
             answer[i] = site;
             hint = (way == vor_way::hinted) ? site : VOR_NO_HINT;
         }

@@ -56,7 +56,7 @@ int main(void)
                 best = j;
             }
         }
-        CHECK(vor_nearest(&diagram, x, y, VOR_NO_HINT, &site) == VOR_OK && site < SITE_COUNT &&
+        CHECK(vor_nearest(&diagram, (vor_point_t){x, y}, VOR_NO_HINT, &site) == VOR_OK && site < SITE_COUNT &&
                   distance_squared(points[site], x, y) == distance_squared(points[best], x, y),
               "query (%d, %d): site %u, brute force %u", (int)x, (int)y, (unsigned)site,
               (unsigned)best);
