@@ -221,19 +221,6 @@ void test_copy_bytes(void *to, const void *from, size_t n)
     }
 }
 
-uint32_t test_predicate_calls(const vor_t *d)
-{
-    vor_stats_t s;
-    if (vor_stats(d, &s) != VOR_OK) {
-        return UINT32_MAX; /* a library without VOR_STATS: no count to compare */
-    }
-    uint32_t n = s.orient2d_perturbed + s.incircle_perturbed + s.closer_perturbed;
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        n += s.orient2d[t] + s.incircle[t] + s.closer[t];
-    }
-    return n;
-}
-
 /* ---- named cases and the filter (test.h) ---- */
 
 static const char *only = ""; /* comma-separated patterns; "" selects all */
