@@ -338,6 +338,11 @@ typedef struct vor {
  *   VOR_ERR_NOMEM  arena_bytes < VOR_ARENA_BYTES(max_sites)
  * Writes only *d (never the arena), and nothing on failure. The arena
  * must stay valid and untouched by the caller while d is in use.
+ * Reads one field of *d, d->revision, whatever it holds (uninitialised
+ * memory is fine): the count moves on from it instead of restarting, so a
+ * tracker begun on d before this call never answers for the new diagram
+ * (it searches afresh, see vor_track). No design that reads nothing can
+ * tell a rebuilt diagram from the old one at a tracker's cost.
  * vor_init_checked is the library's symbol: the inline vor_init passes
  * it the application's VOR_CONFIG_FINGERPRINT.
  */
@@ -849,8 +854,11 @@ typedef struct vor_tracker {
     vor_index_t neighbour[VOR_TRACKER_EDGES]; /* the site across each edge */
 } vor_tracker_t;
 
-/* Starts a tracker on diagram d (no answer yet, nothing cached). Begin it
- * again after vor_init of the same vor_t.
+/* Starts a tracker on diagram d (no answer yet, nothing cached). A
+ * tracker stays valid across every change to d, vor_init of the same
+ * vor_t included: d->revision never repeats a value the tracker cached
+ * (vor_init moves it on too), so after any change vor_track searches
+ * afresh and answers for the current diagram.
  *   VOR_ERR_CONFIG the library was compiled with another VOR_TRACKER_EDGES
  *                  (or other vor_config.h options) than this file
  *   VOR_ERR_ARG    tracker or d NULL
