@@ -652,7 +652,9 @@ int vor_circumcentre(const vor_point_t *a, const vor_point_t *b,
 /*
  * vor_circumcentre of sites a, b, c of d (e.g. a triangle from
  * vor_triangles_next).
- *   VOR_ERR_ARG  d or out NULL, an id >= the number of site ids
+ *   VOR_ERR_ARG  d or out NULL, an id that is no site in the mesh (an
+ *                unused or removed id, a duplicate's id)
+ * On failure *out is unchanged.
  */
 int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c,
                        vor_vertex_t *out);

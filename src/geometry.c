@@ -309,8 +309,9 @@ int vor_circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point
 
 int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_vertex_t *out)
 {
-    if (d == NULL || out == NULL || a >= d->site_count || b >= d->site_count ||
-        c >= d->site_count) {
+    /* a removed site's or a duplicate's coordinates are no site's */
+    if (d == NULL || out == NULL || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b) ||
+        !vor__site_in_mesh(d, c)) {
         return VOR_ERR_ARG;
     }
     return vor_circumcentre(&d->sites[a], &d->sites[b], &d->sites[c], out);
