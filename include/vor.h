@@ -327,6 +327,10 @@ typedef struct vor {
      * 24-bit count of triangle changes its entries are stamped with. */
     struct vor__motion_entry *motion;
     uint32_t motion_epoch;
+    /* The cache's upkeep after a slow vor_move, stored by
+     * vor_motion_attach (NULL when none): reached only through this
+     * pointer, so a firmware that attaches no cache links none of it. */
+    void (*motion_update)(struct vor *d, uint32_t site, vor_point_t from, uint32_t epoch);
 } vor_t;
 
 /*
@@ -425,7 +429,9 @@ int vor_move(vor_t *d, uint32_t site, int32_t x, int32_t y, uint32_t *existing);
  *     vor_motion_attach(&d, cache, sizeof cache);  // after vor_init
  *
  * VOR_MOTION_BYTES(n) is a constant expression: 12 bytes a site, apart
- * from the arena (VOR_ARENA_BYTES does not change).
+ * from the arena (VOR_ARENA_BYTES does not change). vor_move reaches the
+ * cache's code only through what vor_motion_attach stores in d, so a
+ * firmware that never attaches a cache links none of it.
  */
 #define VOR_MOTION_ENTRY_BYTES 12u
 #define VOR_MOTION_BYTES(n) ((size_t)(n) * VOR_MOTION_ENTRY_BYTES)

@@ -44,6 +44,7 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->revision++;
     d->free_site = 0;
     d->motion = NULL; /* a cache is attached afterwards (vor_motion_attach) */
+    d->motion_update = NULL;
     d->motion_epoch = 0;
     vor_predicate_stats_t *stats = &d->stats;
     for (unsigned t = 0; t < VOR_TIERS; t++) {

@@ -91,6 +91,8 @@ static bool entry_valid(const vor_t *d, uint32_t site)
     return (stamp >> 8) == d->motion_epoch && (stamp & VOR__BOX_MASK) != 0u;
 }
 
+static void motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch);
+
 int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
 {
     if (d == NULL || (mem == NULL && bytes > 0u)) {
@@ -98,6 +100,7 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
     }
     if (mem == NULL) {
         d->motion = NULL;
+        d->motion_update = NULL;
         return VOR_OK;
     }
     if (((uintptr_t)mem % VOR_MOTION_ALIGN) != 0u) {
@@ -112,6 +115,7 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
         cache[i].stamp = 0; /* no box */
     }
     d->motion = cache;
+    d->motion_update = motion_update; /* vor_move reaches the upkeep only so */
     return VOR_OK;
 }
 
@@ -385,11 +389,9 @@ static bool size_now(struct vor__motion_entry *e, vor_point_t from, uint32_t epo
     return true;
 }
 
-void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch)
+/* vor__motion_update (motion.h) through d->motion_update. */
+static void motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch)
 {
-    if (d->motion == NULL) {
-        return;
-    }
     struct vor__motion_entry *entry = &d->motion[p];
     bool sizing = size_now(entry, from, epoch);
     if (d->vertex_count < 3u) {
