@@ -50,14 +50,16 @@ static void write_label8(const vor_raster_output_t *out, const vor__run_t *runs,
     }
 }
 
-static void write_label16(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
-                          void *dst)
+/* LABEL16 and RGB565: a run's value is its site, or the site's colour. */
+static void write_16(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
+                     void *dst)
 {
-    (void)out;
+    const uint16_t *palette = out->kind == VOR_RASTER_RGB565 ? out->palette565 : NULL;
     uint16_t *px = dst;
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
-        fill16(px, i, runs[r].end, (uint16_t)runs[r].site);
+        uint32_t site = runs[r].site;
+        fill16(px, i, runs[r].end, palette != NULL ? palette[site] : (uint16_t)site);
         i = runs[r].end;
     }
 }
@@ -72,17 +74,6 @@ static void write_label32(const vor_raster_output_t *out, const vor__run_t *runs
         for (; i < runs[r].end; i++) {
             px[i] = runs[r].site;
         }
-    }
-}
-
-static void write_rgb565(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
-                         void *dst)
-{
-    uint16_t *px = dst;
-    uint32_t i = 0;
-    for (uint32_t r = 0; r < count; r++) {
-        fill16(px, i, runs[r].end, out->palette565[runs[r].site]);
-        i = runs[r].end;
     }
 }
 
@@ -148,8 +139,8 @@ static void write_row(const vor_raster_output_t *out, uint32_t width, const vor_
                       uint32_t count, const vor__run_t *below, uint32_t below_count, void *dst)
 {
     static run_writer_t *const writers[] = {
-        [VOR_RASTER_LABEL8] = write_label8,   [VOR_RASTER_LABEL16] = write_label16,
-        [VOR_RASTER_LABEL32] = write_label32, [VOR_RASTER_RGB565] = write_rgb565,
+        [VOR_RASTER_LABEL8] = write_label8,   [VOR_RASTER_LABEL16] = write_16,
+        [VOR_RASTER_LABEL32] = write_label32, [VOR_RASTER_RGB565] = write_16,
         [VOR_RASTER_RGB888] = write_rgb888,
     };
     if (out->kind == VOR_RASTER_BOUNDARY) {
