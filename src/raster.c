@@ -15,7 +15,6 @@
 
 /* -------------------------------------------------------------- output */
 
-
 /* px[from .. to) = value, four pixels per step (the hot loop of RGB565
  * output: a run is usually tens of pixels). */
 static void fill16(uint16_t *px, uint32_t from, uint32_t to, uint16_t value)

@@ -39,6 +39,8 @@
  * picked once per frame from a table (metric_ops). */
 #define METRIC(name) (1u << VOR_METRIC_##name)
 #define IN(bit, set) (((bit) & (set)) != 0u)
+/* the metrics whose keys are rationals (rank_key_t) */
+#define RATIONAL_METRICS (METRIC(ELLIPTIC) | METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))
 
 /* Rows per culling tile. */
 #define TILE_ROWS 16u
@@ -338,7 +340,7 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         return vor__mw_u128_compare(&a->num, &b->num);
     } else if (IN(bit, METRIC(FARTHEST))) {
         return vor__mw_u128_compare(&b->num, &a->num);
-    } else if (IN(bit, METRIC(ELLIPTIC) | METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))) {
+    } else if (IN(bit, RATIONAL_METRICS)) {
         return rational_compare(a, b);
     } else if (IN(bit, METRIC(MULT))) {
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
@@ -650,7 +652,7 @@ static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, in
         return signed_distance(isqrt128(&k.num), k.w2);
     } else if (IN(m->metric_bit, METRIC(COMPOUND))) {
         return signed_distance(divide_u64(isqrt128(&k.num), (uint32_t)k.w1), k.w2);
-    } else if (IN(m->metric_bit, METRIC(ELLIPTIC) | METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))) {
+    } else if (IN(m->metric_bit, RATIONAL_METRICS)) {
         return rational_distance(&k);
     } else { /* FARTHEST, HAUSDORFF: the squared distance */
         return saturate_u32(isqrt128(&k.num));
