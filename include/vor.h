@@ -330,7 +330,7 @@ typedef struct vor {
     /* The cache's upkeep after a slow vor_move, stored by
      * vor_motion_attach (NULL when none): reached only through this
      * pointer, so a firmware that attaches no cache links none of it. */
-    void (*motion_update)(struct vor *d, uint32_t site, vor_point_t from, uint32_t epoch);
+    void (*motion_update)(struct vor *d, uint32_t site, const vor_point_t *from, uint32_t epoch);
 } vor_t;
 
 /*
