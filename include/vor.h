@@ -349,6 +349,10 @@ typedef struct vor {
      * 24-bit count of triangle changes its entries are stamped with. */
     struct vor__motion_entry *motion;
     uint32_t motion_epoch;
+    /* The cache's upkeep after a slow vor_move, stored by
+     * vor_motion_attach (NULL when none): reached only through this
+     * pointer, so a firmware that attaches no cache links none of it. */
+    void (*motion_update)(struct vor *d, uint32_t site, const vor_point_t *from, uint32_t epoch);
 } vor_t;
 
 /*
@@ -360,6 +364,11 @@ typedef struct vor {
  *   VOR_ERR_NOMEM  arena_bytes < VOR_ARENA_BYTES(max_sites)
  * Writes only *d (never the arena), and nothing on failure. The arena
  * must stay valid and untouched by the caller while d is in use.
+ * Reads one field of *d, d->revision, whatever it holds (uninitialised
+ * memory is fine): the count moves on from it instead of restarting, so a
+ * tracker begun on d before this call never answers for the new diagram
+ * (it searches afresh, see vor_track). No design that reads nothing can
+ * tell a rebuilt diagram from the old one at a tracker's cost.
  * vor_init_checked is the library's symbol: the inline vor_init passes
  * it the application's VOR_CONFIG_FINGERPRINT.
  */
@@ -442,7 +451,9 @@ int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing);
  *     vor_motion_attach(&d, cache, sizeof cache);  // after vor_init
  *
  * VOR_MOTION_BYTES(n) is a constant expression: 12 bytes a site, apart
- * from the arena (VOR_ARENA_BYTES does not change).
+ * from the arena (VOR_ARENA_BYTES does not change). vor_move reaches the
+ * cache's code only through what vor_motion_attach stores in d, so a
+ * firmware that never attaches a cache links none of it.
  */
 #define VOR_MOTION_ENTRY_BYTES 12u
 #define VOR_MOTION_BYTES(n) ((size_t)(n) * VOR_MOTION_ENTRY_BYTES)
@@ -709,7 +720,9 @@ int vor_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, vor_vertex_t *
 /*
  * vor_circumcentre of sites a, b, c of d (e.g. a triangle from
  * vor_triangles_next).
- *   VOR_ERR_ARG  d or out NULL, an id >= the number of site ids
+ *   VOR_ERR_ARG  d or out NULL, an id that is no site in the mesh (an
+ *                unused or removed id, a duplicate's id)
+ * On failure *out is unchanged.
  */
 int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c,
                        vor_vertex_t *out);
@@ -923,8 +936,11 @@ typedef struct vor_tracker {
     vor_index_t neighbour[VOR_TRACKER_EDGES]; /* the site across each edge */
 } vor_tracker_t;
 
-/* Starts a tracker on diagram d (no answer yet, nothing cached). Begin it
- * again after vor_init of the same vor_t.
+/* Starts a tracker on diagram d (no answer yet, nothing cached). A
+ * tracker stays valid across every change to d, vor_init of the same
+ * vor_t included: d->revision never repeats a value the tracker cached
+ * (vor_init moves it on too), so after any change vor_track searches
+ * afresh and answers for the current diagram.
  *   VOR_ERR_CONFIG the library was compiled with another VOR_TRACKER_EDGES
  *                  (or other vor_config.h options) than this file
  *   VOR_ERR_ARG    tracker or d NULL

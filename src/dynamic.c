@@ -744,7 +744,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     }
     if (same_triangles) {
         move_in_place(d, site, x, y);
-        vor__motion_update(d, site, old, epoch);
+        vor__motion_update(d, site, &old, epoch);
         return VOR_OK;
     }
     /* remove, then insert again under the same id (the free list's head),
@@ -758,7 +758,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
          * query did not: the site goes back where it was */
         vor_insert_near(d, old, VOR_NO_HINT, &id);
     } else {
-        vor__motion_update(d, site, old, epoch); /* a box in the new epoch */
+        vor__motion_update(d, site, &old, epoch); /* a box in the new epoch */
     }
     return err;
 }

@@ -315,8 +315,9 @@ int vor_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, vor_vertex_t *
 
 int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_vertex_t *out)
 {
-    if (d == NULL || out == NULL || a >= d->site_count || b >= d->site_count ||
-        c >= d->site_count) {
+    /* a removed site's or a duplicate's coordinates are no site's */
+    if (d == NULL || out == NULL || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b) ||
+        !vor__site_in_mesh(d, c)) {
         return VOR_ERR_ARG;
     }
     circumcentre(&d->sites[a], &d->sites[b], &d->sites[c], out);
@@ -975,17 +976,6 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
     return (e.count >= 3u) ? e.count : 0u;
 }
 
-static bool in_mesh(const vor_t *d, uint32_t site)
-{
-    if (site >= d->site_count) {
-        return false;
-    }
-    if (d->vertex_count == 1u) {
-        return site == d->last_site;
-    }
-    return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
-}
-
 static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t *box)
 {
     c->d = d;
@@ -1006,7 +996,7 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
              uint32_t capacity, uint32_t *count)
 {
     if (d == NULL || box == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
-        box->x0 > box->x1 || box->y0 > box->y1 || !in_mesh(d, site)) {
+        box->x0 > box->x1 || box->y0 > box->y1 || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     if (box->x0 == box->x1 || box->y0 == box->y1) {
@@ -1060,7 +1050,7 @@ int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, u
         it->error = VOR_ERR_ARG;
         return 0;
     }
-    while (it->next_site < d->site_count && !in_mesh(d, it->next_site)) {
+    while (it->next_site < d->site_count && !vor__site_in_mesh(d, it->next_site)) {
         it->next_site++;
     }
     if (it->next_site >= d->site_count) {
@@ -1393,7 +1383,7 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
                       size_t scratch_bytes, vor_centroid_t *out)
 {
     if (d == NULL || box == NULL || out == NULL || (scratch == NULL && scratch_bytes > 0u) ||
-        box->x0 > box->x1 || box->y0 > box->y1 || !in_mesh(d, site)) {
+        box->x0 > box->x1 || box->y0 > box->y1 || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     const vor_point_t *s = &d->sites[site];

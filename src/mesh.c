@@ -37,9 +37,14 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->bucket_origin.x = d->bucket_origin.y = 0;
     d->bucket_columns = d->bucket_rows = d->bucket_scale = 0;
     d->bucket_rebuild_at = 2;
-    d->revision = 0;
+    /* moved on, never reset: a tracker begun before this call must not
+     * find its revision again after the rebuild. Read even from an
+     * uninitialised *d: a uint32_t has no trap representation, and any
+     * first value will do (no tracker can have seen a diagram there). */
+    d->revision++;
     d->free_site = 0;
     d->motion = NULL; /* a cache is attached afterwards (vor_motion_attach) */
+    d->motion_update = NULL;
     d->motion_epoch = 0;
 #if VOR_STATS
     vor_stats_t *stats = &d->stats;

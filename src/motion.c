@@ -91,6 +91,8 @@ static bool entry_valid(const vor_t *d, uint32_t site)
     return (stamp >> 8) == d->motion_epoch && (stamp & VOR__BOX_MASK) != 0u;
 }
 
+static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_t epoch);
+
 int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
 {
     if (d == NULL || (mem == NULL && bytes > 0u)) {
@@ -98,6 +100,7 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
     }
     if (mem == NULL) {
         d->motion = NULL;
+        d->motion_update = NULL;
         return VOR_OK;
     }
     if (((uintptr_t)mem % VOR_MOTION_ALIGN) != 0u) {
@@ -112,6 +115,7 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
         cache[i].stamp = 0; /* no box */
     }
     d->motion = cache;
+    d->motion_update = motion_update; /* vor_move reaches the upkeep only so */
     return VOR_OK;
 }
 
@@ -361,14 +365,14 @@ static bool star_boxed(const vor_t *d, uint32_t p)
  * a box while its predicates are examined. */
 #define MAX_LEVEL 5u
 
-static bool size_now(struct vor__motion_entry *e, vor_point_t from, uint32_t epoch)
+static bool size_now(struct vor__motion_entry *e, const vor_point_t *from, uint32_t epoch)
 {
     uint32_t level = (e->stamp >> 5) & 7u;
     if ((e->stamp & VOR__BOX_MASK) != 0u) {
         /* a box voided by a change of the triangles before this move
          * tells nothing: the level stays */
         bool current = (e->stamp >> 8) == epoch;
-        bool unused = current && e->x == from.x && e->y == from.y;
+        bool unused = current && e->x == from->x && e->y == from->y;
         level = unused ? level + ((level < MAX_LEVEL) ? 1u : 0u) : current ? 0u : level;
         e->x = unused ? (int32_t)(1u << level) : 0;
         e->y = 1;
@@ -385,11 +389,9 @@ static bool size_now(struct vor__motion_entry *e, vor_point_t from, uint32_t epo
     return true;
 }
 
-void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch)
+/* vor__motion_update (motion.h) through d->motion_update. */
+static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_t epoch)
 {
-    if (d->motion == NULL) {
-        return;
-    }
     struct vor__motion_entry *entry = &d->motion[p];
     bool sizing = size_now(entry, from, epoch);
     if (d->vertex_count < 3u) {
@@ -403,10 +405,10 @@ void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch)
      * fit uint32 as magnitudes). Once a predicate limits p below need,
      * the rest are only re-proved for the other sites. */
     const vor_point_t *at = &d->sites[p];
-    uint32_t dx = (at->x > from.x) ? (uint32_t)at->x - (uint32_t)from.x
-                                   : (uint32_t)from.x - (uint32_t)at->x;
-    uint32_t dy = (at->y > from.y) ? (uint32_t)at->y - (uint32_t)from.y
-                                   : (uint32_t)from.y - (uint32_t)at->y;
+    uint32_t dx = (at->x > from->x) ? (uint32_t)at->x - (uint32_t)from->x
+                                    : (uint32_t)from->x - (uint32_t)at->x;
+    uint32_t dy = (at->y > from->y) ? (uint32_t)at->y - (uint32_t)from->y
+                                    : (uint32_t)from->y - (uint32_t)at->y;
     uint32_t step = (dx > dy) ? dx : dy;
     int need = (step <= 1u) ? 0 : (int)vor__mw_bit_length32(step - 1u);
     need = sizing ? need : MAX_EXPONENT + 1;

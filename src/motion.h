@@ -71,7 +71,16 @@ static inline bool vor__motion_fast(const vor_t *d, uint32_t site, int32_t x, in
 /* After a slow move of p from `from`, begun in `epoch`, that kept the
  * triangles or changed them (p at its new place, the mesh final): restores invariant J for
  * p's predicates and, when the backoff allows and a box can hold another
- * such step, gives p a new box (motion.c). Only with a cache attached. */
-void vor__motion_update(vor_t *d, uint32_t p, vor_point_t from, uint32_t epoch);
+ * such step, gives p a new box (motion.c). Only with a cache attached:
+ * through the pointer vor_motion_attach stores, so that vor_move links
+ * none of motion.c unless the firmware attaches a cache. from by pointer:
+ * a structure passed by value is a memcpy call on Cortex-M0 at -Og. */
+static inline void vor__motion_update(vor_t *d, uint32_t p, const vor_point_t *from,
+                                      uint32_t epoch)
+{
+    if (d->motion_update != NULL) {
+        d->motion_update(d, p, from, epoch);
+    }
+}
 
 #endif

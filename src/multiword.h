@@ -517,18 +517,17 @@ VOR__ALWAYS_INLINE int vor__mw_u128_is_zero(const vor__mw_u128_t *a)
 
 /* r[0..n) = *v, zero-extended (n >= 128 bits of limbs). v by pointer: a
  * structure passed by value to a function left out of line is a memcpy
- * call at -Os. */
+ * call at -Os. Each limb is chosen by the bits of its index, not by a
+ * chain of == tests on it: that would be a case table (a libgcc call on
+ * ARMv6-M at -Os). */
 VOR__HELPER void vor__mw_from_u128(vor__limb *r, size_t n, const vor__mw_u128_t *v)
 {
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 64
-        r[i] = i == 0u ? v->lo : i == 1u ? v->hi : 0u;
+        r[i] = i >= 2u ? 0u : (i & 1u) ? v->hi : v->lo;
 #else
-        r[i] = i == 0u   ? (uint32_t)v->lo
-               : i == 1u ? (uint32_t)(v->lo >> 32)
-               : i == 2u ? (uint32_t)v->hi
-               : i == 3u ? (uint32_t)(v->hi >> 32)
-                         : 0u;
+        uint64_t half = (i & 2u) ? v->hi : v->lo;
+        r[i] = i >= 4u ? 0u : (i & 1u) ? (uint32_t)(half >> 32) : (uint32_t)half;
 #endif
     }
 }

@@ -31,96 +31,121 @@ static void fill16(uint16_t *px, uint32_t from, uint32_t to, uint16_t value)
     }
 }
 
+/* The pixels of a row (runs) in one output kind. */
+typedef void run_writer_t(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
+                          void *dst);
+
+static void write_label8(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
+                         void *dst)
+{
+    (void)out;
+    uint8_t *px = dst;
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        uint8_t label = (uint8_t)runs[r].site;
+        for (; i < runs[r].end; i++) {
+            px[i] = label;
+        }
+    }
+}
+
+/* LABEL16 and RGB565: a run's value is its site, or the site's colour. */
+static void write_16(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
+                     void *dst)
+{
+    const uint16_t *palette = out->kind == VOR_RASTER_RGB565 ? out->palette565 : NULL;
+    uint16_t *px = dst;
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        uint32_t site = runs[r].site;
+        fill16(px, i, runs[r].end, palette != NULL ? palette[site] : (uint16_t)site);
+        i = runs[r].end;
+    }
+}
+
+static void write_label32(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
+                          void *dst)
+{
+    (void)out;
+    uint32_t *px = dst;
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        for (; i < runs[r].end; i++) {
+            px[i] = runs[r].site;
+        }
+    }
+}
+
+static void write_rgb888(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
+                         void *dst)
+{
+    uint8_t *px = dst;
+    uint32_t i = 0;
+    for (uint32_t r = 0; r < count; r++) {
+        uint32_t colour = out->palette888[runs[r].site];
+        uint8_t red = (uint8_t)(colour >> 16), green = (uint8_t)(colour >> 8),
+                blue = (uint8_t)colour;
+        for (; i < runs[r].end; i++) {
+            px[3u * i] = red;
+            px[3u * i + 1u] = green;
+            px[3u * i + 2u] = blue;
+        }
+    }
+}
+
+/* BOUNDARY: 1 where the right or the lower neighbour has another site.
+ * below: the runs of the next row (NULL on the last row). */
+static void write_boundary(uint32_t width, const vor__run_t *runs, uint32_t count,
+                           const vor__run_t *below, uint32_t below_count, uint8_t *px)
+{
+    uint32_t i;
+    for (i = 0; i < width; i++) {
+        px[i] = 0;
+    }
+    /* right neighbour: the last pixel of every run but the final one */
+    for (uint32_t r = 0; r + 1u < count; r++) {
+        px[runs[r].end - 1u] = 1;
+    }
+    /* lower neighbour: walk both rows' runs together */
+    if (below != NULL) {
+        uint32_t r = 0, s = 0;
+        i = 0;
+        while (i < width) { /* each step ends a run of one row */
+            uint32_t end = runs[r].end < below[s].end ? runs[r].end : below[s].end;
+            if (runs[r].site != below[s].site) {
+                for (; i < end; i++) {
+                    px[i] = 1;
+                }
+            }
+            i = end;
+            if (runs[r].end == end && r + 1u < count) {
+                r++;
+            }
+            if (below[s].end == end && s + 1u < below_count) {
+                s++;
+            }
+        }
+    }
+}
+
 /* Writes a row (runs) into dst in the output's kind, except DISTANCE,
  * which the entry point writes (it knows the metric). below: the runs of
- * the next row (BOUNDARY only; NULL on the last row). */
+ * the next row (BOUNDARY only; NULL on the last row). The writer comes
+ * from a table: a switch on the kind, or a chain of == tests, which
+ * compilers turn into one, is a case table, and GCC for ARMv6-M at -Os
+ * reads those through libgcc (__gnu_thumb1_case_*), outside the library. */
 static void write_row(const vor_raster_output_t *out, uint32_t width, const vor__run_t *runs,
                       uint32_t count, const vor__run_t *below, uint32_t below_count, void *dst)
 {
-    uint32_t i = 0;
-    switch (out->kind) {
-    case VOR_RASTER_LABEL8: {
-        uint8_t *px = dst;
-        for (uint32_t r = 0; r < count; r++) {
-            uint8_t label = (uint8_t)runs[r].site;
-            for (; i < runs[r].end; i++) {
-                px[i] = label;
-            }
-        }
-        break;
-    }
-    case VOR_RASTER_LABEL16: {
-        uint16_t *px = dst;
-        for (uint32_t r = 0; r < count; r++) {
-            fill16(px, i, runs[r].end, (uint16_t)runs[r].site);
-            i = runs[r].end;
-        }
-        break;
-    }
-    case VOR_RASTER_LABEL32: {
-        uint32_t *px = dst;
-        for (uint32_t r = 0; r < count; r++) {
-            for (; i < runs[r].end; i++) {
-                px[i] = runs[r].site;
-            }
-        }
-        break;
-    }
-    case VOR_RASTER_RGB565: {
-        uint16_t *px = dst;
-        for (uint32_t r = 0; r < count; r++) {
-            fill16(px, i, runs[r].end, out->palette565[runs[r].site]);
-            i = runs[r].end;
-        }
-        break;
-    }
-    case VOR_RASTER_RGB888: {
-        uint8_t *px = dst;
-        for (uint32_t r = 0; r < count; r++) {
-            uint32_t colour = out->palette888[runs[r].site];
-            uint8_t red = (uint8_t)(colour >> 16), green = (uint8_t)(colour >> 8),
-                    blue = (uint8_t)colour;
-            for (; i < runs[r].end; i++) {
-                px[3u * i] = red;
-                px[3u * i + 1u] = green;
-                px[3u * i + 2u] = blue;
-            }
-        }
-        break;
-    }
-    case VOR_RASTER_BOUNDARY: {
-        uint8_t *px = dst;
-        for (i = 0; i < width; i++) {
-            px[i] = 0;
-        }
-        /* right neighbour: the last pixel of every run but the final one */
-        for (uint32_t r = 0; r + 1u < count; r++) {
-            px[runs[r].end - 1u] = 1;
-        }
-        /* lower neighbour: walk both rows' runs together */
-        if (below != NULL) {
-            uint32_t r = 0, s = 0;
-            i = 0;
-            while (i < width) { /* each step ends a run of one row */
-                uint32_t end = runs[r].end < below[s].end ? runs[r].end : below[s].end;
-                if (runs[r].site != below[s].site) {
-                    for (; i < end; i++) {
-                        px[i] = 1;
-                    }
-                }
-                i = end;
-                if (runs[r].end == end && r + 1u < count) {
-                    r++;
-                }
-                if (below[s].end == end && s + 1u < below_count) {
-                    s++;
-                }
-            }
-        }
-        break;
-    }
-    case VOR_RASTER_DISTANCE:
-        break;
+    static run_writer_t *const writers[] = {
+        [VOR_RASTER_LABEL8] = write_label8,   [VOR_RASTER_LABEL16] = write_16,
+        [VOR_RASTER_LABEL32] = write_label32, [VOR_RASTER_RGB565] = write_16,
+        [VOR_RASTER_RGB888] = write_rgb888,
+    };
+    if (out->kind == VOR_RASTER_BOUNDARY) {
+        write_boundary(width, runs, count, below, below_count, dst);
+    } else if (out->kind != VOR_RASTER_DISTANCE) {
+        writers[out->kind](out, runs, count, dst);
     }
 }
 
@@ -229,40 +254,15 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
         return VOR_ERR_ARG;
     }
     const uint32_t n = sites->count;
-    size_t pixel_bytes;
-    switch (out->kind) {
-    case VOR_RASTER_LABEL8:
-        pixel_bytes = 1;
-        if (n > 256u) {
-            return VOR_ERR_ARG;
-        }
-        break;
-    case VOR_RASTER_LABEL16:
-        pixel_bytes = 2;
-        if (n > 65536u) {
-            return VOR_ERR_ARG;
-        }
-        break;
-    case VOR_RASTER_RGB565:
-        pixel_bytes = 2;
-        if (out->palette565 == NULL) {
-            return VOR_ERR_ARG;
-        }
-        break;
-    case VOR_RASTER_RGB888:
-        pixel_bytes = 3;
-        if (out->palette888 == NULL) {
-            return VOR_ERR_ARG;
-        }
-        break;
-    case VOR_RASTER_BOUNDARY:
-        pixel_bytes = 1;
-        break;
-    case VOR_RASTER_LABEL32:
-    case VOR_RASTER_DISTANCE:
-        pixel_bytes = 4;
-        break;
-    default:
+    const size_t pixel_bytes = VOR_RASTER_PIXEL_BYTES(out->kind); /* 0: unknown kind */
+    if (pixel_bytes == 0u) {
+        return VOR_ERR_ARG;
+    }
+    /* the sites a label tells apart, the palette a colour needs */
+    if ((out->kind == VOR_RASTER_LABEL8 && n > 256u) ||
+        (out->kind == VOR_RASTER_LABEL16 && n > 65536u) ||
+        (out->kind == VOR_RASTER_RGB565 && out->palette565 == NULL) ||
+        (out->kind == VOR_RASTER_RGB888 && out->palette888 == NULL)) {
         return VOR_ERR_ARG;
     }
     if (n > 0x07FFFFFFu || frame->width > 0x07FFFFFFu) {

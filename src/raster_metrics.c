@@ -29,8 +29,24 @@
 
 #include "multiword.h"
 
+/* A set of metrics, as bits: every dispatch on the metric tests a set
+ * (IN) in an if-chain. A switch on the metric, or a chain of == tests,
+ * which compilers turn into one, becomes a case table with four cases or
+ * more, and GCC for ARMv6-M at -Os reads those through libgcc
+ * (__gnu_thumb1_case_*): the library must call nothing outside itself.
+ * Per site and per tile, the chains are compiled away: the key, the
+ * comparison and the bounds are instances for one metric's constant bit,
+ * picked once per frame from a table (metric_ops). */
+#define METRIC(name) (1u << VOR_METRIC_##name)
+#define IN(bit, set) (((bit) & (set)) != 0u)
+/* the metrics whose keys are rationals (rank_key_t) */
+#define RATIONAL_METRICS (METRIC(ELLIPTIC) | METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))
+
 /* Rows per culling tile. */
 #define TILE_ROWS 16u
+
+struct key;
+struct rect;
 
 /* The family's state: the frame and sites of the request, the widths of
  * its exact comparisons, and the culling of sites per tile. */
@@ -39,6 +55,12 @@ typedef struct metric {
     int32_t origin_x, step_x; /* frame's: read per pixel, kept beside m's other fields */
     const vor_raster_sites_t *sites;
     enum vor_metric metric;
+    uint32_t metric_bit; /* 1 << metric, tested against METRIC() sets */
+    /* the metric's key, comparison and bounds (metric_ops) */
+    void (*key)(const struct metric *m, uint32_t site, int32_t qx, int32_t qy, struct key *k);
+    int (*compare)(const struct metric *m, const struct key *a, const struct key *b);
+    void (*bounds)(const struct metric *m, uint32_t site, const struct rect *r, int worst,
+                   struct key *k);
     uint32_t n;
     uint32_t limbs;      /* limbs of the wide comparisons of this frame */
     int lp_narrow;       /* LP: every sum below 2^128 */
@@ -121,17 +143,15 @@ static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
 
 /* The key of a point site at offsets of magnitude (ax, ay): every metric
  * whose distance grows with |dx| and with |dy|. */
-static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay, rank_key_t *k)
+VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site, uint32_t ax,
+                                  uint32_t ay, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
-    switch (m->metric) {
-    case VOR_METRIC_L1:
+    if (IN(bit, METRIC(L1))) {
         vor__mw_u128_set(&k->num, (uint64_t)ax + ay);
-        break;
-    case VOR_METRIC_LINF:
+    } else if (IN(bit, METRIC(LINF))) {
         vor__mw_u128_set(&k->num, ax > ay ? ax : ay);
-        break;
-    case VOR_METRIC_LP:
+    } else if (IN(bit, METRIC(LP))) {
         if (m->lp_narrow) {
             vor__mw_u128_t x_power, y_power;
             power128(&x_power, ax, s->lp_exponent);
@@ -143,16 +163,14 @@ static void point_key(const metric_t *m, uint32_t site, uint32_t ax, uint32_t ay
             power_limbs(other, m->limbs, ay, s->lp_exponent);
             vor__mw_add(k->wide, other, m->limbs);
         }
-        break;
-    default: /* MULT, ADD, COMPOUND, FARTHEST, HAUSDORFF */
+    } else { /* MULT, ADD, COMPOUND, FARTHEST, HAUSDORFF */
         square_sum(&k->num, ax, ay);
-        if (m->metric == VOR_METRIC_MULT || m->metric == VOR_METRIC_COMPOUND) {
+        if (IN(bit, METRIC(MULT) | METRIC(COMPOUND))) {
             k->w1 = s->mult_weights[site];
         }
-        if (m->metric == VOR_METRIC_ADD || m->metric == VOR_METRIC_COMPOUND) {
+        if (IN(bit, METRIC(ADD) | METRIC(COMPOUND))) {
             k->w2 = s->add_weights[site];
         }
-        break;
     }
 }
 
@@ -312,22 +330,19 @@ static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u1
 
 /* Negative when key a ranks before key b (nearer; farther for FARTHEST),
  * 0 when they tie. */
-static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t *b)
+VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_key_t *a,
+                                   const rank_key_t *b)
 {
-    switch (m->metric) {
-    case VOR_METRIC_LP:
+    if (IN(bit, METRIC(LP))) {
         if (!m->lp_narrow) {
             return vor__mw_compare(a->wide, b->wide, m->limbs);
         }
         return vor__mw_u128_compare(&a->num, &b->num);
-    case VOR_METRIC_FARTHEST:
+    } else if (IN(bit, METRIC(FARTHEST))) {
         return vor__mw_u128_compare(&b->num, &a->num);
-    case VOR_METRIC_ELLIPTIC:
-    case VOR_METRIC_SEGMENT:
-    case VOR_METRIC_POLYGON:
-    case VOR_METRIC_POLYLINE:
+    } else if (IN(bit, RATIONAL_METRICS)) {
         return rational_compare(a, b);
-    case VOR_METRIC_MULT: {
+    } else if (IN(bit, METRIC(MULT))) {
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
@@ -335,15 +350,13 @@ static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t 
         vor__mw_u128_mul64(&left, &a->num, wb2);
         vor__mw_u128_mul64(&right, &b->num, wa2);
         return vor__mw_u128_compare(&left, &right);
-    }
-    case VOR_METRIC_ADD: {
+    } else if (IN(bit, METRIC(ADD))) {
         vor__mw_s128_t delta; /* wa - wb, below 2^32 */
         int64_t diff = (int64_t)a->w2 - b->w2;
         vor__mw_u128_set(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
         delta.neg = diff < 0;
         return additive_sign(m->limbs, &a->num, &b->num, &delta);
-    }
-    case VOR_METRIC_COMPOUND: {
+    } else if (IN(bit, METRIC(COMPOUND))) {
         /* sqrt(A)/wa1 - wa2 vs sqrt(B)/wb1 - wb2, times wa1 wb1 > 0:
          * sqrt(A wb1^2) - sqrt(B wa1^2) vs (wa2 - wb2) wa1 wb1 */
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
@@ -357,8 +370,7 @@ static int key_compare(const metric_t *m, const rank_key_t *a, const rank_key_t 
         vor__mw_u128_mul64(&big_a, &a->num, wb2);
         vor__mw_u128_mul64(&big_b, &b->num, wa2);
         return additive_sign(m->limbs, &big_a, &big_b, &delta);
-    }
-    default: /* L1, LINF, HAUSDORFF */
+    } else { /* L1, LINF, HAUSDORFF */
         return vor__mw_u128_compare(&a->num, &b->num);
     }
 }
@@ -404,17 +416,15 @@ static uint64_t polyline_weight2(const vor_raster_sites_t *s, uint32_t site)
 }
 
 /* The key of site `site` at the pixel centre (qx, qy). */
-static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k)
+VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site, int32_t qx,
+                                 int32_t qy, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
-    switch (m->metric) {
-    case VOR_METRIC_ELLIPTIC: {
+    if (IN(bit, METRIC(ELLIPTIC))) {
         const vor_point_t *p = &s->points[site];
         elliptic_form(&k->num, s, (int64_t)qx - p->x, (int64_t)qy - p->y);
         set_unit_denominator(k);
-        break;
-    }
-    case VOR_METRIC_HAUSDORFF: {
+    } else if (IN(bit, METRIC(HAUSDORFF))) {
         vor__mw_u128_t far, d;
         vor__mw_u128_set(&far, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
@@ -425,12 +435,9 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
             }
         }
         vor__mw_u128_copy(&k->num, &far);
-        break;
-    }
-    case VOR_METRIC_SEGMENT:
+    } else if (IN(bit, METRIC(SEGMENT))) {
         segment_key(&s->points[2u * site], &s->points[2u * site + 1u], qx, qy, k);
-        break;
-    case VOR_METRIC_POLYGON: {
+    } else if (IN(bit, METRIC(POLYGON))) {
         const vor_point_t *p = &s->points[s->offsets[site]];
         uint32_t count = s->offsets[site + 1u] - s->offsets[site];
         vor_point_t q;
@@ -439,7 +446,7 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
         if (count >= 3u && winds_around(p, count, &q)) {
             vor__mw_u128_set(&k->num, 0);
             set_unit_denominator(k);
-            break;
+            return;
         }
         segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
         rank_key_t edge;
@@ -447,9 +454,7 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
             segment_key(&p[i], &p[i + 1u == count ? 0u : i + 1u], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
-        break;
-    }
-    case VOR_METRIC_POLYLINE: {
+    } else if (IN(bit, METRIC(POLYLINE))) {
         /* the smallest segment key (unweighted: one weight per site), then
          * divided by w^2: the denominator stays below 2^65 * 2^62 */
         const vor_point_t *p = &s->points[s->offsets[site]];
@@ -461,13 +466,9 @@ static void site_key(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, r
             keep_smaller(k, &edge);
         }
         vor__mw_u128_mul64(&k->den, &k->den, polyline_weight2(s, site));
-        break;
-    }
-    default: {
+    } else {
         const vor_point_t *p = &s->points[site];
-        point_key(m, site, vor__mw_magnitude((int64_t)qx - p->x), vor__mw_magnitude((int64_t)qy - p->y), k);
-        break;
-    }
+        point_key(m, bit, site, vor__mw_magnitude((int64_t)qx - p->x), vor__mw_magnitude((int64_t)qy - p->y), k);
     }
 }
 
@@ -638,28 +639,22 @@ static uint32_t rational_distance(const rank_key_t *k)
 static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
-    site_key(m, site, qx, qy, &k);
+    m->key(m, site, qx, qy, &k);
     const vor_raster_sites_t *s = m->sites;
-    switch (m->metric) {
-    case VOR_METRIC_L1:   /* ax + ay < 2^33 */
-    case VOR_METRIC_LINF: /* < 2^32 */
+    if (IN(m->metric_bit, METRIC(L1) | METRIC(LINF))) { /* L1: ax + ay < 2^33; LINF: < 2^32 */
         return saturate_u32(k.num.lo);
-    case VOR_METRIC_LP: {
+    } else if (IN(m->metric_bit, METRIC(LP))) {
         const vor_point_t *p = &s->points[site];
         return lp_distance(m, &k, vor__mw_magnitude((int64_t)qx - p->x), vor__mw_magnitude((int64_t)qy - p->y));
-    }
-    case VOR_METRIC_MULT: /* isqrt(A) < 2^33 */
+    } else if (IN(m->metric_bit, METRIC(MULT))) { /* isqrt(A) < 2^33 */
         return saturate_u32(divide_u64(isqrt128(&k.num), (uint32_t)k.w1));
-    case VOR_METRIC_ADD:
+    } else if (IN(m->metric_bit, METRIC(ADD))) {
         return signed_distance(isqrt128(&k.num), k.w2);
-    case VOR_METRIC_COMPOUND:
+    } else if (IN(m->metric_bit, METRIC(COMPOUND))) {
         return signed_distance(divide_u64(isqrt128(&k.num), (uint32_t)k.w1), k.w2);
-    case VOR_METRIC_ELLIPTIC:
-    case VOR_METRIC_SEGMENT:
-    case VOR_METRIC_POLYGON:
-    case VOR_METRIC_POLYLINE:
+    } else if (IN(m->metric_bit, RATIONAL_METRICS)) {
         return rational_distance(&k);
-    default: /* FARTHEST, HAUSDORFF: the squared distance */
+    } else { /* FARTHEST, HAUSDORFF: the squared distance */
         return saturate_u32(isqrt128(&k.num));
     }
 }
@@ -711,11 +706,11 @@ VOR__ALWAYS_INLINE void farthest_corner(vor__mw_u128_t *d, const vor_point_t *p,
  *   POLYLINE: the same bounding-box gap below, the nearest vertex's
  *     farthest corner above, both divided by the site's w^2.
  */
-static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k)
+VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, const rect_t *r,
+                               int worst, rank_key_t *k)
 {
     const vor_raster_sites_t *s = m->sites;
-    switch (m->metric) {
-    case VOR_METRIC_ELLIPTIC: {
+    if (IN(bit, METRIC(ELLIPTIC))) {
         const vor_point_t *p = &s->points[site];
         if (!worst) {
             vor__mw_u128_t near;
@@ -723,7 +718,7 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
             vor__mw_u128_mul64(&k->num, &near, m->det); /* < 2^65 * 2^62 */
             vor__mw_u128_set(&k->den, m->trace);
             k->squared = 0;
-            break;
+            return;
         }
         vor__mw_u128_t top, q;
         vor__mw_u128_set(&top, 0);
@@ -736,9 +731,7 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
         }
         vor__mw_u128_copy(&k->num, &top);
         set_unit_denominator(k);
-        break;
-    }
-    case VOR_METRIC_HAUSDORFF: {
+    } else if (IN(bit, METRIC(HAUSDORFF))) {
         vor__mw_u128_t top, d;
         vor__mw_u128_set(&top, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
@@ -753,14 +746,10 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
             }
         }
         vor__mw_u128_copy(&k->num, &top);
-        break;
-    }
-    case VOR_METRIC_SEGMENT:
-    case VOR_METRIC_POLYGON:
-    case VOR_METRIC_POLYLINE: {
+    } else if (IN(bit, METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))) {
         const vor_point_t *p;
         uint32_t count;
-        if (m->metric == VOR_METRIC_SEGMENT) {
+        if (IN(bit, METRIC(SEGMENT))) {
             p = &s->points[2u * site];
             count = 2;
         } else {
@@ -770,9 +759,9 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
         if (worst) {
             vor__mw_u128_t d, other;
             farthest_corner(&d, &p[0], r);
-            uint32_t reached = m->metric == VOR_METRIC_SEGMENT    ? 2u
-                               : m->metric == VOR_METRIC_POLYLINE ? count
-                                                                  : 1u;
+            uint32_t reached = IN(bit, METRIC(SEGMENT))    ? 2u
+                               : IN(bit, METRIC(POLYLINE)) ? count
+                                                           : 1u;
             for (uint32_t i = 1; i < reached; i++) {
                 farthest_corner(&other, &p[i], r);
                 if (vor__mw_u128_compare(&other, &d) < 0) {
@@ -781,10 +770,10 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
             }
             vor__mw_u128_copy(&k->num, &d);
             set_unit_denominator(k);
-            if (m->metric == VOR_METRIC_POLYLINE) {
+            if (IN(bit, METRIC(POLYLINE))) {
                 vor__mw_u128_set(&k->den, polyline_weight2(s, site));
             }
-            break;
+            return;
         }
         int32_t x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
         for (uint32_t i = 1; i < count; i++) {
@@ -795,24 +784,67 @@ static void bounds(const metric_t *m, uint32_t site, const rect_t *r, int worst,
         }
         square_sum(&k->num, interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1));
         set_unit_denominator(k);
-        if (m->metric == VOR_METRIC_POLYLINE) {
+        if (IN(bit, METRIC(POLYLINE))) {
             vor__mw_u128_set(&k->den, polyline_weight2(s, site));
         }
-        break;
-    }
-    default: {
+    } else {
         const vor_point_t *p = &s->points[site];
         /* FARTHEST ranks larger distances first: its best case is far */
-        int far = (m->metric == VOR_METRIC_FARTHEST) ? !worst : worst;
+        int far = IN(bit, METRIC(FARTHEST)) ? !worst : worst;
         if (far) {
-            point_key(m, site, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1), k);
+            point_key(m, bit, site, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1), k);
         } else {
-            point_key(m, site, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1), k);
+            point_key(m, bit, site, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1), k);
         }
-        break;
-    }
     }
 }
+
+/* One metric's key, comparison and bounds: site_key, key_compare and
+ * bounds for its constant bit, every test on the metric decided at compile
+ * time. */
+#define METRIC_OPS(name)                                                       \
+    static void key_##name(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, \
+                           rank_key_t *k)                                      \
+    {                                                                          \
+        site_key(m, METRIC(name), site, qx, qy, k);                            \
+    }                                                                          \
+    static int compare_##name(const metric_t *m, const rank_key_t *a, const rank_key_t *b) \
+    {                                                                          \
+        return key_compare(m, METRIC(name), a, b);                             \
+    }                                                                          \
+    static void bounds_##name(const metric_t *m, uint32_t site, const rect_t *r, int worst, \
+                              rank_key_t *k)                                   \
+    {                                                                          \
+        bounds(m, METRIC(name), site, r, worst, k);                            \
+    }
+METRIC_OPS(L1)
+METRIC_OPS(LINF)
+METRIC_OPS(LP)
+METRIC_OPS(ELLIPTIC)
+METRIC_OPS(MULT)
+METRIC_OPS(ADD)
+METRIC_OPS(COMPOUND)
+METRIC_OPS(FARTHEST)
+METRIC_OPS(HAUSDORFF)
+METRIC_OPS(SEGMENT)
+METRIC_OPS(POLYGON)
+METRIC_OPS(POLYLINE)
+
+typedef struct metric_ops {
+    void (*key)(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k);
+    int (*compare)(const metric_t *m, const rank_key_t *a, const rank_key_t *b);
+    void (*bounds)(const metric_t *m, uint32_t site, const rect_t *r, int worst, rank_key_t *k);
+} metric_ops_t;
+
+/* Indexed by metric (EUCLID has its own family, raster_euclid.c). */
+static const metric_ops_t metric_ops[] = {
+#define METRIC_ENTRY(name) [VOR_METRIC_##name] = {key_##name, compare_##name, bounds_##name}
+    METRIC_ENTRY(L1),       METRIC_ENTRY(LINF),     METRIC_ENTRY(LP),
+    METRIC_ENTRY(ELLIPTIC), METRIC_ENTRY(MULT),     METRIC_ENTRY(ADD),
+    METRIC_ENTRY(COMPOUND), METRIC_ENTRY(FARTHEST), METRIC_ENTRY(HAUSDORFF),
+    METRIC_ENTRY(SEGMENT),  METRIC_ENTRY(POLYGON),  METRIC_ENTRY(POLYLINE),
+#undef METRIC_ENTRY
+};
 
 /* ----------------------------------------------------------- culling */
 
@@ -827,10 +859,10 @@ static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t 
 {
     rank_key_t keys[2], best_case;
     uint32_t slot = 0;
-    bounds(m, list != NULL ? list[0] : 0u, r, 1, &keys[0]);
+    m->bounds(m, list != NULL ? list[0] : 0u, r, 1, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
-        bounds(m, list != NULL ? list[c] : c, r, 1, &keys[slot ^ 1u]);
-        if (key_compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
+        m->bounds(m, list != NULL ? list[c] : c, r, 1, &keys[slot ^ 1u]);
+        if (m->compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
             slot ^= 1u;
         }
     }
@@ -838,8 +870,8 @@ static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t 
     uint32_t kept = 0;
     for (uint32_t c = 0; c < count; c++) {
         uint32_t site = list != NULL ? list[c] : c;
-        bounds(m, site, r, 0, &best_case);
-        if (key_compare(m, &best_case, &keys[slot]) <= 0) {
+        m->bounds(m, site, r, 0, &best_case);
+        if (m->compare(m, &best_case, &keys[slot]) <= 0) {
             if (kept == capacity) {
                 return ALL_SITES;
             }
@@ -902,11 +934,11 @@ static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count,
     rank_key_t keys[2];
     uint32_t slot = 0;
     uint32_t best = list != NULL ? list[0] : 0u;
-    site_key(m, best, qx, qy, &keys[0]);
+    m->key(m, best, qx, qy, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
         uint32_t site = list != NULL ? list[c] : c;
-        site_key(m, site, qx, qy, &keys[slot ^ 1u]);
-        if (key_compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
+        m->key(m, site, qx, qy, &keys[slot ^ 1u]);
+        if (m->compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
             slot ^= 1u;
             best = site;
         }
@@ -955,23 +987,21 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
  * offsets); else VOR_ERR_ARG. Reads every site once. */
 static int metric_check(const vor_raster_sites_t *s)
 {
-    switch (s->metric) {
-    case VOR_METRIC_L1:
-    case VOR_METRIC_LINF:
-    case VOR_METRIC_FARTHEST:
-    case VOR_METRIC_SEGMENT:
+    if ((unsigned)s->metric > (unsigned)VOR_METRIC_POLYLINE) {
+        return VOR_ERR_ARG;
+    }
+    const uint32_t bit = 1u << s->metric;
+    if (IN(bit, METRIC(L1) | METRIC(LINF) | METRIC(FARTHEST) | METRIC(SEGMENT))) {
         return VOR_OK;
-    case VOR_METRIC_LP:
+    } else if (IN(bit, METRIC(LP))) {
         return s->lp_exponent >= 1u && s->lp_exponent <= 8u ? VOR_OK : VOR_ERR_ARG;
-    case VOR_METRIC_ELLIPTIC:
+    } else if (IN(bit, METRIC(ELLIPTIC))) {
         /* positive definite: a > 0 and a c - b^2 > 0 (each product < 2^62) */
         return s->form_a > 0 &&
                        vor__mul_i32(s->form_a, s->form_c) > vor__mul_i32(s->form_b, s->form_b)
                    ? VOR_OK
                    : VOR_ERR_ARG;
-    case VOR_METRIC_MULT:
-    case VOR_METRIC_ADD:
-    case VOR_METRIC_COMPOUND:
+    } else if (IN(bit, METRIC(MULT) | METRIC(ADD) | METRIC(COMPOUND))) {
         if ((s->metric != VOR_METRIC_ADD && s->mult_weights == NULL) ||
             (s->metric != VOR_METRIC_MULT && s->add_weights == NULL)) {
             return VOR_ERR_ARG;
@@ -982,9 +1012,7 @@ static int metric_check(const vor_raster_sites_t *s)
             }
         }
         return VOR_OK;
-    case VOR_METRIC_HAUSDORFF:
-    case VOR_METRIC_POLYGON:
-    case VOR_METRIC_POLYLINE:
+    } else if (IN(bit, METRIC(HAUSDORFF) | METRIC(POLYGON) | METRIC(POLYLINE))) {
         if (s->offsets == NULL) {
             return VOR_ERR_ARG;
         }
@@ -998,7 +1026,7 @@ static int metric_check(const vor_raster_sites_t *s)
             }
         }
         return VOR_OK;
-    default:
+    } else {
         return VOR_ERR_ARG;
     }
 }
@@ -1040,6 +1068,10 @@ static void prepare(metric_t *m, const vor__raster_t *r)
     m->step_x = frame->step_x;
     m->sites = s;
     m->metric = s->metric;
+    m->metric_bit = 1u << s->metric;
+    m->key = metric_ops[s->metric].key;
+    m->compare = metric_ops[s->metric].compare;
+    m->bounds = metric_ops[s->metric].bounds;
     m->n = s->count;
     m->brute = r->brute;
     m->pool = (uint32_t *)(void *)r->rest;
@@ -1076,19 +1108,14 @@ static void prepare(metric_t *m, const vor__raster_t *r)
     uint64_t span_x = (uint64_t)((int64_t)x1 - x0), span_y = (uint64_t)((int64_t)y1 - y0);
     uint32_t span_bits = vor__mw_bit_length(span_x > span_y ? span_x : span_y); /* <= 32 */
 
-    switch (s->metric) {
-    case VOR_METRIC_LP: {
+    if (IN(m->metric_bit, METRIC(LP))) {
         uint32_t bits = s->lp_exponent * span_bits + 1u; /* |dx|^p + |dy|^p < 2^bits */
         m->lp_narrow = bits <= 128u;
         m->limbs = (bits + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
-        break;
-    }
-    case VOR_METRIC_ELLIPTIC:
+    } else if (IN(m->metric_bit, METRIC(ELLIPTIC))) {
         m->det = (uint64_t)(vor__mul_i32(s->form_a, s->form_c) - vor__mul_i32(s->form_b, s->form_b));
         m->trace = (uint32_t)s->form_a + (uint32_t)s->form_c; /* < 2^32 */
-        break;
-    case VOR_METRIC_ADD:
-    case VOR_METRIC_COMPOUND: {
+    } else if (IN(m->metric_bit, METRIC(ADD) | METRIC(COMPOUND))) {
         int32_t lo = s->add_weights[0], hi = s->add_weights[0];
         int32_t heaviest = 1;
         for (uint32_t k = 0; k < s->count; k++) {
@@ -1107,10 +1134,6 @@ static void prepare(metric_t *m, const vor__raster_t *r)
             delta_bits += 2u * w_bits;
         }
         m->limbs = additive_limbs(a_bits, delta_bits);
-        break;
-    }
-    default:
-        break;
     }
 
     /* tiles: 16 columns, wider when the pool could not hold one count

@@ -921,8 +921,21 @@ static void test_errors(void)
     CHECK(vor_voronoi_vertex(&d, 0, 2, 3, &v) == VOR_OK && v.status == VOR_VERTEX_IN_RANGE,
           "vertex of three sites");
     CHECK(vor_voronoi_vertex(&d, 0, 2, 4, &v) == VOR_ERR_ARG, "vertex of an unknown id");
-    CHECK(vor_voronoi_vertex(&d, 0, 1, 2, &v) == VOR_OK && v.status == VOR_VERTEX_AT_INFINITY,
-          "a duplicate's vertex is at infinity");
+    /* ids that are no site of the mesh are refused, as every other call
+     * refuses them, and *out keeps what it held */
+    const vor_vertex_t mark = {{12345, -12345}, VOR_VERTEX_OUT_OF_RANGE};
+    v = mark;
+    CHECK(vor_voronoi_vertex(&d, 0, 1, 2, &v) == VOR_ERR_ARG && v.point.x == mark.point.x &&
+              v.point.y == mark.point.y && v.status == mark.status,
+          "vertex with a duplicate's id");
+    v = mark;
+    CHECK(vor_voronoi_vertex(&d, 2, 3, 1, &v) == VOR_ERR_ARG && v.point.x == mark.point.x,
+          "vertex with a duplicate's id last");
+    CHECK(vor_remove(&d, 3) == VOR_OK, "remove site 3");
+    v = mark;
+    CHECK(vor_voronoi_vertex(&d, 0, 2, 3, &v) == VOR_ERR_ARG && v.point.x == mark.point.x &&
+              v.point.y == mark.point.y && v.status == mark.status,
+          "vertex with a removed id");
 }
 
 void test_geometry(void)

@@ -329,6 +329,28 @@ static void inserts(void)
                   got == brute_nearest(i + 1u, here),
               "tracker after %u inserts", i + 1u);
     }
+
+    /* a tracker begun before vor_init of the same vor_t and arena, which
+     * is then rebuilt with the revision count it had: the cell it cached
+     * belongs to the old diagram and must not answer for the new one */
+    for (uint32_t shift = 0; shift <= 100u; shift += 100u) {
+        CHECK(vor_init(&d, arena, sizeof arena, QUERY_SITES) == VOR_OK, "init %u", shift);
+        for (uint32_t i = 0; i < 9u; i++) { /* a 3 x 3 grid, moved right by shift */
+            sites[i].x = (int32_t)(i % 3u * 100u + shift);
+            sites[i].y = (int32_t)(i / 3u * 100u);
+            first_of[i] = i;
+        }
+        CHECK(vor_build(&d, sites, 9, NULL, NULL) == VOR_OK, "build %u", shift);
+        if (shift == 0u) {
+            CHECK(vor_tracker_begin(&tracker, &d) == VOR_OK, "tracker begin");
+        }
+        vor_point_t q = {101, 100}; /* the centre site's, then the left one's */
+        got = VOR_NO_HINT;
+        int rc = vor_track(&tracker, q, &got);
+        CHECK(rc == VOR_OK && got == brute_nearest(9, q),
+              "tracker across vor_init, grid moved by %u: rc %d, site %u, brute force %u", shift,
+              rc, got, brute_nearest(9, q));
+    }
 }
 
 void test_queries(void)

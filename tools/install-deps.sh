@@ -4,11 +4,13 @@
 # build needs are installed; the Makefile runs it before each build that
 # needs them, so `make`, `make demo` and `make test` work on a fresh machine.
 #
-#   host        the host C compiler (make: library, CLI, host tests)
+#   host        the host C compiler and C library headers (make: library,
+#               CLI, host tests)
 #   cli         stb_image_write.h from libstb-dev (the CLI's PNG output
 #               and examples/contours; host programs only, never the library)
 #   python      python3 (test vectors, CLI tests, the demo's PNG)
-#   toolchains  the cross compilers and QEMU of every target
+#   toolchains  the cross compilers and QEMU of every target (the firmware
+#               is linked with -nostdlib: no cross C library)
 #   clang       clang, for make test's freestanding check (the library
 #               compiled with a second compiler at every level)
 #   cmake       cmake, for make test's consumers of the CMake package
@@ -20,12 +22,16 @@
 #               test's fuzz suite (tests/fuzz/)
 #   doxygen     doxygen, for make docs (the API reference from the headers)
 #               and make test's docs suite
+#   jcv         picolibc for Cortex-M, the C library of the embedded peer
+#               benchmark (make bench-jcv: malloc and libm for jc_voronoi)
 #
 # Quiet and exit 0 when every package of the named groups is present; safe
 # to run any number of times. When something is missing: as root, installs
 # all missing packages with one apt-get call; otherwise prints the command
-# to run and exits 1 (tools/apt-install.sh). A new group is one more case
-# in members().
+# to run and exits 1 (tools/apt-install.sh). Recommended packages are not
+# installed (--no-install-recommends), so each group lists everything its
+# builds need, even what a package only recommends (gcc recommends the C
+# library headers, libc6-dev). A new group is one more case in members().
 set -eu
 
 # members GROUP: one "PACKAGE PROBE" line per package of GROUP. The probe
@@ -33,15 +39,15 @@ set -eu
 # of a file it installs.
 members() {
     case $1 in
-    host) echo "gcc gcc" ;;
+    host)
+        echo "gcc gcc"
+        echo "libc6-dev /usr/include/stdio.h"
+        ;;
     cli) echo "libstb-dev /usr/include/stb/stb_image_write.h" ;;
     python) echo "python3 python3" ;;
     toolchains)
         echo "gcc-arm-none-eabi arm-none-eabi-gcc"
-        echo "libnewlib-arm-none-eabi /usr/lib/arm-none-eabi/newlib"
-        echo "picolibc-arm-none-eabi /usr/lib/picolibc/arm-none-eabi/picolibc.specs"
         echo "gcc-riscv64-unknown-elf riscv64-unknown-elf-gcc"
-        echo "picolibc-riscv64-unknown-elf /usr/lib/picolibc/riscv64-unknown-elf/picolibc.specs"
         echo "qemu-system-arm qemu-system-arm"
         echo "qemu-system-misc qemu-system-riscv32"
         ;;
@@ -61,6 +67,7 @@ members() {
         echo "libxml2-utils /usr/bin/xmllint"
         echo "librsvg2-bin /usr/bin/rsvg-convert"
         ;;
+    jcv) echo "picolibc-arm-none-eabi /usr/lib/picolibc/arm-none-eabi/picolibc.specs" ;;
     fuzz)
         echo "clang-14 clang-14"
         echo "libclang-rt-14-dev /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a"
@@ -90,7 +97,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen jcv)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

@@ -270,10 +270,10 @@ freestanding() {
         fi
     done
     # The sources as a firmware may compile them: Cortex-M0 and RISC-V 32,
-    # with GCC and clang, at every optimisation level, warnings as errors.
-    # GCC on ARMv6-M needs -fno-jump-tables, which port/cortex-m0/port.mk
-    # has (docs/porting.md); without it only libgcc's case helpers may
-    # appear. Every level must be clean: no exception is allowed.
+    # with GCC and clang, at every optimisation level, warnings as errors,
+    # with no special flag (GCC's case tables on ARMv6-M at -Os would call
+    # libgcc's __gnu_thumb1_case_*). Every level must be clean: no
+    # exception is allowed.
     local compiler level dir opt
     local -a args
     for target in cortex-m0 riscv32; do
@@ -298,16 +298,6 @@ freestanding() {
             done
         done
     done
-    dir=build/freestanding/gcc-cortex-m0-Os-jump-tables
-    if make -s -j"$jobs" PORT=cortex-m0 B="$dir" OPT=-Os CPU_CFLAGS="-mcpu=cortex-m0 -mthumb" \
-            lib >>"$log" 2>&1 &&
-        ! tools/check-freestanding.sh arm-none-eabi-nm "$dir/libvor.a" 2>&1 |
-            grep -v 'calls external symbol __gnu_thumb1_case_' | tee -a "$log" | grep -q .; then
-        passed=$((passed + 1))
-    else
-        echo "FAIL gcc cortex-m0 -Os with jump tables calls more than __gnu_thumb1_case_*" >>"$log"
-        failed=$((failed + 1))
-    fi
     # an object that uses float and memcpy must be rejected
     local bad=build/test-logs/bad
     mkdir -p "$bad"

@@ -21,10 +21,12 @@ lower bound, ">=N"):
   - a frame GCC marks "dynamic" or "dynamic,bounded" (alloca, VLA);
   - a call to a function outside the graph (memset/memcpy emitted by GCC,
     a libgcc helper such as __aeabi_ldivmod, anything else undefined);
-  - an indirect call (function pointer), except where a public function
-    calls back into its caller's code (CALLER_CALLBACKS below): that stack
-    is the caller's, like the caller's own frame, and is left out with a
-    note.
+  - an indirect call (function pointer), except through one of the
+    library's own tables of functions (TABLE_CALLS below: counted as a
+    call to every function of the table, the deepest deciding), and where
+    a public function calls back into its caller's code (CALLER_CALLBACKS
+    below): that stack is the caller's, like the caller's own frame, and
+    is left out with a note.
 A cycle in the call graph (recursion) has no bound at all: it is reported
 and nothing else is printed.
 
@@ -48,6 +50,15 @@ INDIRECT = "__indirect_call"
 # the static helper of one public function that makes the call (matched
 # without GCC's clone suffixes such as ".constprop.0"): build_forked calls
 # vor_build_dc_forked's fork and join hooks.
+# The library's own function pointers: every indirect call made in a
+# source file (its base name) goes to one of the functions these names
+# match (without clone suffixes), and to nothing else of the library.
+TABLE_CALLS = {"raster.c": (r"write_(label8|label16|label32|rgb565|rgb888)",
+                            "a row writer of write_row's table"),
+               "raster_metrics.c": (r"(key|compare|bounds)_[A-Z0-9]+",
+                                    "a metric's key, comparison or bounds (metric_ops)"),
+               "dynamic.c": (r"motion_update",
+                             "the motion cache's upkeep (set by vor_motion_attach)")}
 CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback",
                     "vor_raster_euclid": "the caller's flush callback",
                     "build_forked": "the caller's fork and join hooks"}
@@ -234,6 +245,21 @@ def main(argv):
     except Input as e:
         print(f"stack-depth: {e}", file=sys.stderr)
         return 2
+
+    for title in sorted(frames):
+        source = os.path.basename(where[title].split(":", 1)[0])
+        if source not in TABLE_CALLS or INDIRECT not in edges.get(title, ()):
+            continue
+        pattern, what = TABLE_CALLS[source]
+        table = {t for t in frames if re.fullmatch(pattern, short(t).split(".", 1)[0])}
+        if not table:
+            continue  # stays unknown: the warning below names the caller
+        # a public function's callbacks to its caller (CALLER_CALLBACKS)
+        # stay marked, to be left out below
+        caller = {INDIRECT} if short(title).split(".", 1)[0] in CALLER_CALLBACKS else set()
+        edges[title] = (edges[title] - {INDIRECT}) | table | caller
+        print(f"stack-depth: note: {short(title)} calls {what}: the deepest of "
+              f"{len(table)} counted", file=sys.stderr)
 
     for title in frames:
         name = short(title).split(".", 1)[0]

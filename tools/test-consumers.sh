@@ -83,6 +83,29 @@ check host-package-build consumer host-pkg 32 -DVOR_CONSUME=package \
     -DCMAKE_PREFIX_PATH="$root/$work/host-vor-prefix"
 check host-package-run run_consumer "$work/host-pkg"
 
+# Added by a project that sets no build type (CMake then passes no -O
+# flag), vor is still compiled optimised: -O2 on the host, -Os in a cross
+# build; an -O flag of the project's own wins. Configured only: the
+# compile commands are written then.
+vor_level() {
+    local name=$1 want=$2
+    shift 2
+    cmake -S tests/consumers/cmake -B "$work/$name" -DVOR_ROOT="$root" -DVOR_CONSUME=subdirectory \
+        -DCMAKE_EXPORT_COMPILE_COMMANDS=ON "$@" || return 1
+    python3 - "$work/$name/compile_commands.json" "$root/src/" "$want" <<'PY'
+import json, re, sys
+path, src, want = sys.argv[1:]
+commands = [c for c in json.load(open(path)) if c["file"].startswith(src)]
+# the last -O flag of each vor source's command decides its level
+levels = {(re.findall(r"(?:^|\s)(-O\S*)", c["command"]) or ["no -O flag"])[-1] for c in commands}
+print(f"{len(commands)} vor sources, levels {sorted(levels)}, wanted {want}")
+sys.exit(0 if commands and levels == {want} else 1)
+PY
+}
+check host-no-build-type-O2 vor_level host-level -O2
+check host-own-level-wins vor_level host-own-level -O1 -DCMAKE_C_FLAGS=-O1
+check m3-no-build-type-Os vor_level m3-level -Os -DCONSUMER_PORT=cortex-m3 "$m3_toolchain"
+
 check host-fetchcontent-build consumer host-fetch 32 -DVOR_CONSUME=fetchcontent
 check host-fetchcontent-run run_consumer "$work/host-fetch"
 

@@ -2,10 +2,7 @@
 # port/cortex-m0/port.mk - Cortex-M0 under QEMU's microbit board (nRF51),
 # its memory enlarged to 4 MB flash and 2 MB RAM for the test tables.
 TARGET_NAME = cortex-m0
-# -fno-jump-tables: GCC's switch tables on ARMv6-M at -Os/-Oz call
-# libgcc's __gnu_thumb1_case_*; without tables the library calls nothing
-# outside itself (the same code at -O2).
-CPU_CFLAGS = -mcpu=cortex-m0 -mthumb -fno-jump-tables
+CPU_CFLAGS = -mcpu=cortex-m0 -mthumb
 QEMU_MACHINE = -M microbit -cpu cortex-m0 \
                -global nrf51-soc.sram-size=2097152 -global nrf51-soc.flash-size=4194304
 # QEMU gives the nRF51 a SysTick on its 16 MHz HCLK (real nRF51 silicon has

@@ -88,7 +88,7 @@ LIB_HDRS_BENCH = $(wildcard include/*.h)
 
 # The embedded peer: jc_voronoi on the Cortex-M4F beside vor
 # (tools/peer-bench/jcv_firmware.c), with picolibc's malloc and libm, which the
-# toolchains group installs. picolibc's sbrk hands out RAM from the end of
+# jcv group installs. picolibc's sbrk hands out RAM from the end of
 # .bss to the end of RAM (4 MB on mps2-an386). jc_voronoi is compiled with
 # its own flags: it is the peer's code, not ours to hold to our warnings.
 ifeq ($(PORT),cortex-m4f)
@@ -97,7 +97,7 @@ ifneq ($(PEER_JCV),)
 BENCH_PORT_OBJS = $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 
 bench-jcv:
-	@tools/install-deps.sh toolchains
+	@tools/install-deps.sh toolchains jcv
 	@$(MAKE) -s PORT=cortex-m4f SANITIZE= $(B)/bench-jcv.elf
 	$(RUN) $(B)/bench-jcv.elf
 
