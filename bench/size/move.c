@@ -12,9 +12,9 @@ int main(void)
     uint32_t site = 0;
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
     for (uint32_t i = 0; i < SIZE_SITES; i++) {
-        acc |= vor_insert(&d, size_x(i), size_y(i), &site);
+        acc |= vor_insert(&d, (vor_point_t){size_x(i), size_y(i)}, &site);
     }
-    acc |= vor_move(&d, site, size_x(1), size_y(0), &site);
-    acc |= vor_nearest(&d, size_x(0), size_y(1), VOR_NO_HINT, &site);
+    acc |= vor_move(&d, site, (vor_point_t){size_x(1), size_y(0)}, &site);
+    acc |= vor_nearest(&d, (vor_point_t){size_x(0), size_y(1)}, VOR_NO_HINT, &site);
     return acc + (int)site;
 }
