@@ -227,8 +227,8 @@ BENCH_ROUNDS_host := 20000
 BENCH_CFLAGS := $(TEST_CFLAGS) -DBENCH_ROUNDS=$(or $(BENCH_ROUNDS_$(PORT)),8)
 BENCH_COUNTING := dynamic predicates
 bench_lib = $(if $(filter $(1),$(BENCH_COUNTING)),$(B)/libvor-stats.a,$(B)/libvor.a)
-$(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(PORT_OBJS) $$(call bench_lib,$$*)
-	$(CC) $(BENCH_CFLAGS) $(if $(filter $*,$(BENCH_COUNTING)),$(STATS_DEFS)) $< $(B)/tests/harness.o $(PORT_OBJS) $(call bench_lib,$*) $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
+$(B)/bench-%$(EXE): bench/%.c $(B)/tests/harness.o $(B)/tests/counters.o $(PORT_OBJS) $$(call bench_lib,$$*)
+	$(CC) $(BENCH_CFLAGS) $(if $(filter $*,$(BENCH_COUNTING)),$(STATS_DEFS)) $< $(B)/tests/harness.o $(B)/tests/counters.o $(PORT_OBJS) $(call bench_lib,$*) $(FW_LDFLAGS) $(FW_LDLIBS) -o $@
 
 STATS_OBJS := $(LIB_SRCS:src/%.c=$(B)/stats/%.o)
 $(B)/libvor-stats.a: $(STATS_OBJS)

@@ -442,6 +442,9 @@ int main(int argc, char **argv)
         fail("cannot write the labels file");
     }
     draw_contours(&m, &frame, rgb);
+    /* row 0 is the frame's lowest y: written last, so the map shows y up
+     * like every picture of the vor tool */
+    stbi_flip_vertically_on_write(1);
     if (!stbi_write_png(png_path, (int)frame.width, (int)frame.height, 3, rgb, (int)frame.width * 3)) {
         fail("cannot write the PNG");
     }
