@@ -40,7 +40,7 @@ only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
 suites="host host-sanitize host-faults host-config host-limb32 cli fuzz coverage harness"
-suites="$suites freestanding linking memory-tables manifests layers consumers spdx docs"
+suites="$suites freestanding linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
 done
@@ -366,6 +366,30 @@ if wanted layers; then
 else
     skip layers
 fi
+
+# Every benchmark program and example builds, on the host and on the
+# emulated Cortex-M3 (contours is a host program): the tests do not link
+# them, so a changed call or helper would otherwise break them unseen.
+programs() {
+    local log="$logs/programs.log" passed=0 failed=0 name port exe
+    : >"$log"
+    for name in $(ls bench/*.c | sed 's|bench/\(.*\)\.c|bench-\1|') \
+        $(ls -d examples/*/ | sed 's|examples/\(.*\)/|example-\1|' | grep -v '^example-common$'); do
+        for port in host cortex-m3; do
+            [ "$port" != host ] && [ "$name" = example-contours ] && continue
+            exe=$([ "$port" = host ] || echo .elf)
+            if make -s PORT="$port" "build/$port/$name$exe" >>"$log" 2>&1; then
+                passed=$((passed + 1))
+            else
+                echo "FAIL $port: $name does not build" >>"$log"
+                failed=$((failed + 1))
+            fi
+        done
+    done
+    echo "$passed passed, $failed failed" >>"$log"
+    record programs "$log" 0
+}
+if wanted programs; then programs; else skip programs; fi
 
 # Every source, header, script and build file names its licence.
 if wanted spdx; then
