@@ -2,15 +2,6 @@
 /* main.c - runs every test group; the port's startup calls it. */
 #include "test.h"
 
-/* The case filter and flags, compiled in so that they work on every target
- * (the Makefile's ONLY, V and LIST). */
-#ifndef TEST_ONLY
-#define TEST_ONLY ""
-#endif
-#ifndef TEST_MODE
-#define TEST_MODE 0u
-#endif
-
 int main(void)
 {
     vor_port_init();

@@ -59,6 +59,15 @@ bool test_case_end(void);
 
 /* The filter: comma-separated patterns, "" for every case. */
 void test_select(const char *patterns, unsigned flags);
+/* The filter and flags each test program's main passes to test_select,
+ * compiled in so that they work on every target: the Makefile's ONLY, V
+ * and LIST define them for the objects that hold a main. */
+#ifndef TEST_ONLY
+#define TEST_ONLY ""
+#endif
+#ifndef TEST_MODE
+#define TEST_MODE 0u
+#endif
 /* Runs a group function, its cases named "name/...". */
 void test_group(const char *name, void (*run)(void));
 /* Prints "cases: N passed, N failed" and the closing line, and returns

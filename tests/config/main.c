@@ -13,14 +13,6 @@ void config_index_bits(const char *name);
 void config_sites_per_bucket(const char *name);
 void config_stats(const char *name);
 
-/* The case filter and flags (the Makefile's ONLY, V and LIST). */
-#ifndef TEST_ONLY
-#define TEST_ONLY ""
-#endif
-#ifndef TEST_MODE
-#define TEST_MODE 0u
-#endif
-
 int main(void)
 {
     vor_port_init();

@@ -45,14 +45,6 @@ static void check_topology(const vor_t *d, const char *what, uint32_t rate_perce
                 err == VOR_OK ? "exact" : check_names[v.check]);
 }
 
-/* The case filter and flags (the Makefile's ONLY, V and LIST). */
-#ifndef TEST_ONLY
-#define TEST_ONLY ""
-#endif
-#ifndef TEST_MODE
-#define TEST_MODE 0u
-#endif
-
 int main(void)
 {
     vor_port_init();
