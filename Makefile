@@ -18,6 +18,8 @@
 #   make run-example-contours  contour interpolation (host): build/contours.png
 #   make coverage           Lloyd coverage control of 64 robots on the
 #                           emulated Cortex-M3: build/coverage.svg
+#   make coverage-report    line and branch coverage of src/ by the host
+#                           suites: build/coverage-report/index.html
 #   make pictures           README's pictures: docs/diagram.png, docs/raster.png
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
@@ -29,8 +31,8 @@
 #                           build/docs/html/index.html; fails on any warning
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
-# rsvg-convert, doxygen) is installed on demand by tools/install-deps.sh, so these
-# work on a fresh Debian machine.
+# rsvg-convert, doxygen, gcovr) is installed on demand by
+# tools/install-deps.sh, so these work on a fresh Debian machine.
 
 PORT ?= host
 TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
@@ -51,6 +53,14 @@ ifeq ($(LIMB_BITS),32)
 B := $(B)-limb32
 LIMB_FLAGS := -DVOR_LIMB_BITS=32
 endif
+# COVERAGE=1 builds the host tests with gcov's counters, at -O0 and with
+# no forced inlining (VOR__COVERAGE, src/multiword.h), so that each line
+# and branch counted is one of the source (make coverage-report).
+COV_FLAGS :=
+ifeq ($(COVERAGE),1)
+B := $(B)-gcov
+COV_FLAGS := --coverage -DVOR__COVERAGE
+endif
 GEN := build/gen
 
 include port/$(PORT)/port.mk
@@ -60,7 +70,7 @@ include tools/peer-bench/bench.mk
 
 WARNINGS := -Wall -Wextra -Werror -pedantic -Wconversion -Wsign-conversion \
             -Wcast-align -Wundef -Wshadow
-OPT := -O2
+OPT := $(if $(COV_FLAGS),-O0,-O2)
 # VOR_INDEX_BITS defaults to 16 everywhere; the host builds everything
 # with 32-bit ids, explicitly: its benchmarks and the CLI take more than
 # 32,767 sites, and the suite then covers both widths (the targets run it
@@ -68,7 +78,7 @@ OPT := -O2
 WIDTH_DEFS := $(if $(filter host,$(PORT)),-DVOR_INDEX_BITS=32)
 LIB_CFLAGS := -std=c99 -ffreestanding $(WARNINGS) $(OPT) -ffunction-sections \
               -fdata-sections -fstack-usage -Iinclude $(ARCH_CFLAGS) $(SAN_FLAGS) $(LIMB_FLAGS) \
-              $(WIDTH_DEFS)
+              $(COV_FLAGS) $(WIDTH_DEFS)
 # Test builds of the library trap on a failed internal assertion.
 CHECKED_DEFS := '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)'
 # The tests, the fault tests and the benchmarks that count predicate calls
@@ -76,7 +86,7 @@ CHECKED_DEFS := '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)'
 STATS_DEFS := -DVOR_STATS=1
 TEST_CFLAGS := -std=c99 $(WARNINGS) $(OPT) -ffunction-sections -fdata-sections \
                -Iinclude -Isrc -Iport -Itests -Itests/vectors $(ARCH_CFLAGS) $(SAN_FLAGS) \
-               $(LIMB_FLAGS) $(WIDTH_DEFS)
+               $(LIMB_FLAGS) $(COV_FLAGS) $(WIDTH_DEFS)
 HOST_TOOL_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARNINGS) -O2 -Iinclude -Isrc \
                     -DVOR_INDEX_BITS=32 -DVOR_STATS=1
 
@@ -91,7 +101,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage pictures size bench-predicates bench-raster docs clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -331,8 +341,14 @@ docs:
 	@if [ -s build/docs/warnings.log ]; then cat build/docs/warnings.log; exit 1; fi
 	@echo "docs:      build/docs/html/index.html"
 
+# Line and branch coverage of src/ by the host suites (gcov, gcovr):
+# build/coverage-report/index.html (docs/testing.md, "Coverage").
+coverage-report:
+	@tools/install-deps.sh host python gcovr
+	+@tools/coverage-report.sh
+
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr
 	+@tools/run-tests.sh
 
 size:

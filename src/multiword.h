@@ -29,8 +29,11 @@
 /* The helpers below run with constant limb counts on the predicates' hot
  * paths; forcing them inline lets the compiler unroll the loops. The wider
  * tiers are kept out of line (VOR__NOINLINE) so that the narrow path does
- * not pay for their registers and stack. */
-#if defined(__GNUC__)
+ * not pay for their registers and stack. The coverage build (make
+ * coverage-report) defines VOR__COVERAGE: each helper then stays one
+ * function, so that gcov counts a branch of the source once, not once per
+ * inlined copy. */
+#if defined(__GNUC__) && !defined(VOR__COVERAGE)
 #define VOR__ALWAYS_INLINE static inline __attribute__((always_inline))
 #define VOR__NOINLINE __attribute__((noinline))
 #else

@@ -22,6 +22,8 @@
 #               test's fuzz suite (tests/fuzz/)
 #   doxygen     doxygen, for make docs (the API reference from the headers)
 #               and make test's docs suite
+#   gcovr       gcovr, for make coverage-report (line and branch coverage of
+#               src/ by the host suites; gcov comes with gcc)
 #   jcv         picolibc for Cortex-M, the C library of the embedded peer
 #               benchmark (make bench-jcv: malloc and libm for jc_voronoi)
 #
@@ -73,6 +75,7 @@ members() {
         echo "libclang-rt-14-dev /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a"
         ;;
     doxygen) echo "doxygen doxygen" ;;
+    gcovr) echo "gcovr gcovr" ;;
     *)
         echo "install-deps: unknown group $1" >&2
         exit 2
@@ -97,7 +100,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen jcv)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen gcovr jcv)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing
