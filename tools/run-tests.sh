@@ -6,6 +6,7 @@
 # the fault injection test (wrong predicate signs) on every port, the
 # configuration contract (an application and a library compiled with
 # different vor_config.h options get VOR_ERR_CONFIG) on every port, the
+# line and branch coverage of src/ by the host suites (gcov), the
 # command-line tool,
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
@@ -39,7 +40,7 @@ skipped=()
 only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
-suites="host host-sanitize host-faults host-config host-limb32 cli fuzz coverage harness"
+suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli fuzz coverage harness"
 suites="$suites freestanding linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
@@ -145,6 +146,22 @@ suite host-sanitize tests PORT=host SANITIZE=1
 suite host-faults fault-tests PORT=host SANITIZE=1
 suite host-config config-tests PORT=host SANITIZE=1
 suite host-limb32 tests PORT=host SANITIZE=1 LIMB_BITS=32
+
+# Line and branch coverage of src/ by the host suites (gcov, gcovr):
+# tools/coverage-report.sh fails if a suite fails or the coverage falls
+# below the floors of docs/testing.md, "Coverage".
+if wanted coverage-report; then
+    coverage_report_log="$logs/coverage-report.log"
+    if tools/coverage-report.sh >"$coverage_report_log" 2>&1; then
+        echo "1 passed, 0 failed" >>"$coverage_report_log"
+        record coverage-report "$coverage_report_log" 0
+    else
+        echo "0 passed, 1 failed" >>"$coverage_report_log"
+        record coverage-report "$coverage_report_log" 1
+    fi
+else
+    skip coverage-report
+fi
 
 # The host command-line tool and examples/contours, against a Python
 # big-integer oracle.
