@@ -26,10 +26,12 @@ done
 
 # run LOG MAKE-ARGS...: build and run host test programs, their output in
 # build/coverage-report/LOG.log, their closing lines on stdout.
+# Every case runs, whatever ONLY make test was given (make passes its
+# command-line variables down to sub-makes).
 run() {
     log=$out/$1.log
     shift
-    if ! make -s -j"$jobs" PORT=host COVERAGE=1 "$@" >>"$log" 2>&1; then
+    if ! make -s -j"$jobs" PORT=host COVERAGE=1 ONLY= V= LIST= "$@" >>"$log" 2>&1; then
         tail -n 20 "$log"
         echo "coverage-report: a suite failed: make $* (log: $log)" >&2
         exit 1
