@@ -22,6 +22,7 @@
 #               test's fuzz suite (tests/fuzz/)
 #   doxygen     doxygen, for make docs (the API reference from the headers)
 #               and make test's docs suite
+#   prove       Frama-C (frama-c-base: the EVA analyser), for make prove
 #   jcv         picolibc for Cortex-M, the C library of the embedded peer
 #               benchmark (make bench-jcv: malloc and libm for jc_voronoi)
 #
@@ -73,6 +74,7 @@ members() {
         echo "libclang-rt-14-dev /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a"
         ;;
     doxygen) echo "doxygen doxygen" ;;
+    prove) echo "frama-c-base /usr/bin/frama-c" ;;
     *)
         echo "install-deps: unknown group $1" >&2
         exit 2
