@@ -11,8 +11,9 @@ cd "$(dirname "$0")/../.."
 out=build/prove
 mkdir -p "$out"
 status=0
-# harness: the library sources it needs
-for job in "predicates:src/predicates.c"; do
+# each harness, with the library sources it calls (comma-separated)
+harnesses="predicates:src/predicates.c"
+for job in $harnesses; do
     name=${job%%:*}
     sources=$(echo "${job#*:}" | tr , ' ')
     report=$out/$name.txt
