@@ -27,11 +27,13 @@
 #                           (tests/fuzz/, docs/testing.md)
 #   make soak               10^7 random inserts, removes, moves and queries on
 #                           one diagram, checked against fresh builds
+#   make prove              Frama-C EVA: no runtime error in the exact predicates
+#                           for any int32 input (tools/prove/, docs/testing.md)
 #   make docs               the API reference from the headers (Doxygen):
 #                           build/docs/html/index.html; fails on any warning
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
-# rsvg-convert, doxygen, gcovr) is installed on demand by
+# rsvg-convert, doxygen, gcovr, frama-c) is installed on demand by
 # tools/install-deps.sh, so these work on a fresh Debian machine.
 
 PORT ?= host
@@ -101,7 +103,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -355,6 +357,10 @@ size:
 	@tools/install-deps.sh python toolchains
 	+@tools/size-report.sh $(TARGETS)
 	+@tools/size-features.sh cortex-m0 cortex-m3 riscv32
+
+prove:
+	@tools/install-deps.sh prove
+	@tools/prove/prove.sh
 
 bench-predicates:
 	@tools/install-deps.sh host python toolchains
