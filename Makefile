@@ -332,7 +332,7 @@ docs:
 	@echo "docs:      build/docs/html/index.html"
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen analyzer
 	+@tools/run-tests.sh
 
 size:

@@ -22,6 +22,9 @@
 #               test's fuzz suite (tests/fuzz/)
 #   doxygen     doxygen, for make docs (the API reference from the headers)
 #               and make test's docs suite
+#   analyzer    clang and its static analyser's scan-build (clang-tools),
+#               for make test's analyzer suite (GCC's -fanalyzer comes with
+#               gcc, group host)
 #   jcv         picolibc for Cortex-M, the C library of the embedded peer
 #               benchmark (make bench-jcv: malloc and libm for jc_voronoi)
 #
@@ -73,6 +76,10 @@ members() {
         echo "libclang-rt-14-dev /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a"
         ;;
     doxygen) echo "doxygen doxygen" ;;
+    analyzer)
+        echo "clang clang"
+        echo "clang-tools /usr/bin/scan-build"
+        ;;
     *)
         echo "install-deps: unknown group $1" >&2
         exit 2
@@ -97,7 +104,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen jcv)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen analyzer jcv)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

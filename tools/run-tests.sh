@@ -323,8 +323,11 @@ if wanted freestanding; then freestanding; else skip freestanding; fi
 # release build's flags (make lib: -std=c99 -ffreestanding, the warning
 # set, -O2, -Werror, so a finding fails the build), in each configuration
 # the library ships in: 16- and 32-bit ids, with and without the counters
-# (VOR_STATS=1). Each run starts from nothing, so every file is analysed
-# every time; and a file with a NULL dereference shows a finding fails.
+# (VOR_STATS=1). Then clang's (scan-build --status-bugs: a report fails)
+# over the test build of the library (16- and 32-bit ids, VOR_STATS=1),
+# whose VOR_ASSERTs tell it the mesh's invariants. Each run starts from
+# nothing, so every file is analysed every time; and a file with a NULL
+# dereference shows that each analyser's finding fails the suite.
 analyzer() {
     local log="$logs/analyzer.log" passed=0 failed=0 bits dir target
     : >"$log"
@@ -340,6 +343,14 @@ analyzer() {
                 failed=$((failed + 1))
             fi
         done
+        dir=build/analyzer/clang-$bits
+        if scan-build --status-bugs --use-cc=clang -o "$dir-reports" make -s -j"$jobs" PORT=host B="$dir" \
+            WIDTH_DEFS=-DVOR_INDEX_BITS="$bits" "$dir/libvor-checked.a" >>"$log" 2>&1; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL scan-build, VOR_INDEX_BITS=$bits: a report (above, and in $dir-reports/)" >>"$log"
+            failed=$((failed + 1))
+        fi
     done
     local bad=build/test-logs/analyzer-bad
     mkdir -p "$bad"
@@ -349,6 +360,15 @@ analyzer() {
         passed=$((passed + 1))
     else
         echo "FAIL gcc -fanalyzer did not fail on a NULL dereference ($bad/bad.c)" >>"$log"
+        failed=$((failed + 1))
+    fi
+    rm -rf "$bad/reports"
+    if ! scan-build --status-bugs --use-cc=clang -o "$bad/reports" clang -std=c99 -ffreestanding -O2 \
+        -c "$bad/bad.c" -o "$bad/bad.o" >"$bad/clang.txt" 2>&1 &&
+        grep -q 'core.NullDereference' "$bad/clang.txt"; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL scan-build did not fail on a NULL dereference ($bad/bad.c)" >>"$log"
         failed=$((failed + 1))
     fi
     echo "$passed passed, $failed failed" >>"$log"
