@@ -350,7 +350,7 @@ coverage-report:
 	+@tools/coverage-report.sh
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer
 	+@tools/run-tests.sh
 
 size:

@@ -468,6 +468,7 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
     vor_index_t pv[3], v[3];
     vor__vertices(&tri[pocket], pv);
     unsigned inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
+    VOR_ASSERT(inf < 3u);
     vor_index_t c1 = left ? pv[vor__next(inf)] : pv[vor__prev(inf)];
     for (;;) {
         *valid = on_side(b, c1, left) && (still_valid || orient(b, l, r, c1) > 0);
@@ -678,6 +679,7 @@ static inline uint32_t leaf_size(uint32_t left)
 
 VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
 {
+    VOR_ASSERT(v > 0u);
     struct pending stack[SPLIT_STACK];
     unsigned top = 0;
     uint32_t pos = 0;

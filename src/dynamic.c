@@ -548,6 +548,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         from = star_cut(d, p, &st, i);
     }
 
+    VOR_ASSERT(st.deg == 3u); /* every vertex has at least three neighbours */
     /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
     vor_index_t a = st.nb[0], b = st.nb[1], c = st.nb[2];
     vor_index_t s2 = st.sl[1], s3 = st.sl[2];

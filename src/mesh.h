@@ -161,6 +161,7 @@ static inline void vor__relink_before(vor__tri_t *tri, vor_index_t slot, vor_ind
     vor_index_t v[3];
     vor__vertices(t, v);
     unsigned i = (unsigned)(v[1] == a) | ((unsigned)(v[2] == a) << 1);
+    VOR_ASSERT(i < 3u); /* a triangle's three vertices differ */
     if (v[i] == a) { /* always in a valid mesh */
         t->n[vor__next(i)] = to;
     }

@@ -244,6 +244,7 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     if (others < 0 && !sizing) {
         return -1;
     }
+    VOR_ASSERT(count >= 3u); /* at most one vertex of a triangle is infinite */
     const vor_point_t *s = d->sites;
     unsigned b = (count == 3u) ? 0u : 3u;
     uint32_t spread = 0;

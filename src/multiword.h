@@ -284,6 +284,7 @@ VOR__INLINE void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
 /* Sign of a two's complement number: -1, 0 or 1. */
 VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
 {
+    VOR_ASSERT(n > 0u);
     if ((a[n - 1] >> (VOR_LIMB_BITS - 1)) != 0u) {
         return -1;
     }

@@ -166,7 +166,9 @@ int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site)
     uint32_t best;
     int err = query_start(d, q.x, q.y, hint, &best);
     if (err != VOR_OK || d->vertex_count == 1u) {
-        *site = (err == VOR_OK) ? best : *site;
+        if (err == VOR_OK) {
+            *site = best; /* untouched on failure: not even rewritten */
+        }
         return err;
     }
     bool tie = false;

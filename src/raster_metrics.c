@@ -1177,6 +1177,7 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     if (status != VOR_OK) {
         return status;
     }
+    VOR_ASSERT(sites != NULL); /* vor__raster_check rejects NULL */
     if (metric_check(sites) != VOR_OK) {
         return VOR_ERR_ARG;
     }

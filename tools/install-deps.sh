@@ -25,6 +25,9 @@
 #   gcovr       gcovr, for make coverage-report (line and branch coverage of
 #               src/ by the host suites; gcov comes with gcc)
 #   prove       Frama-C (frama-c-base: the EVA analyser), for make prove
+#   analyzer    clang and its static analyser's scan-build (clang-tools),
+#               for make test's analyzer suite (GCC's -fanalyzer comes with
+#               gcc, group host)
 #   jcv         picolibc for Cortex-M, the C library of the embedded peer
 #               benchmark (make bench-jcv: malloc and libm for jc_voronoi)
 #
@@ -78,6 +81,10 @@ members() {
     doxygen) echo "doxygen doxygen" ;;
     gcovr) echo "gcovr gcovr" ;;
     prove) echo "frama-c-base /usr/bin/frama-c" ;;
+    analyzer)
+        echo "clang clang"
+        echo "clang-tools /usr/bin/scan-build"
+        ;;
     *)
         echo "install-deps: unknown group $1" >&2
         exit 2
@@ -102,7 +109,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen gcovr prove jcv)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen gcovr prove analyzer jcv)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

@@ -10,7 +10,8 @@
 # command-line tool,
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
-# else outside itself (also built with GCC and clang at -O1 to -Oz), the check that a firmware links only the
+# else outside itself (also built with GCC and clang at -O1 to -Oz), GCC's
+# static analyser over the library, the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
 # the build-system manifests, the layer rule of src/ (tools/check-layers.py),
 # the CMake package in consumer programs (tools/test-consumers.sh), the SPDX
@@ -41,7 +42,7 @@ only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
 suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli fuzz coverage harness"
-suites="$suites freestanding linking programs memory-tables manifests layers consumers spdx docs"
+suites="$suites freestanding analyzer linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
 done
@@ -334,6 +335,63 @@ freestanding() {
     record freestanding "$log" 0
 }
 if wanted freestanding; then freestanding; else skip freestanding; fi
+
+# GCC's static analyser (-fanalyzer) over every library source, with the
+# release build's flags (make lib: -std=c99 -ffreestanding, the warning
+# set, -O2, -Werror, so a finding fails the build), in each configuration
+# the library ships in: 16- and 32-bit ids, with and without the counters
+# (VOR_STATS=1). Then clang's (scan-build --status-bugs: a report fails)
+# over the test build of the library (16- and 32-bit ids, VOR_STATS=1),
+# whose VOR_ASSERTs tell it the mesh's invariants. Each run starts from
+# nothing, so every file is analysed every time; and a file with a NULL
+# dereference shows that each analyser's finding fails the suite.
+analyzer() {
+    local log="$logs/analyzer.log" passed=0 failed=0 bits dir target
+    : >"$log"
+    rm -rf build/analyzer
+    for bits in 16 32; do
+        dir=build/analyzer/gcc-$bits
+        for target in lib "$dir/libvor-stats.a"; do
+            if make -s -j"$jobs" PORT=host CC=gcc B="$dir" WIDTH_DEFS=-DVOR_INDEX_BITS="$bits" \
+                OPT="-O2 -fanalyzer" "$target" >>"$log" 2>&1; then
+                passed=$((passed + 1))
+            else
+                echo "FAIL gcc -fanalyzer, VOR_INDEX_BITS=$bits, $target: a finding (above)" >>"$log"
+                failed=$((failed + 1))
+            fi
+        done
+        dir=build/analyzer/clang-$bits
+        if scan-build --status-bugs --use-cc=clang -o "$dir-reports" make -s -j"$jobs" PORT=host B="$dir" \
+            WIDTH_DEFS=-DVOR_INDEX_BITS="$bits" "$dir/libvor-checked.a" >>"$log" 2>&1; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL scan-build, VOR_INDEX_BITS=$bits: a report (above, and in $dir-reports/)" >>"$log"
+            failed=$((failed + 1))
+        fi
+    done
+    local bad=build/test-logs/analyzer-bad
+    mkdir -p "$bad"
+    printf 'int bad(int k)\n{\n    int *p = 0;\n    if (k > 3)\n        p = &k;\n    return *p;\n}\n' >"$bad/bad.c"
+    if ! gcc -std=c99 -ffreestanding -Wall -Werror -O2 -fanalyzer -c "$bad/bad.c" -o "$bad/bad.o" \
+        >"$bad/gcc.txt" 2>&1 && grep -q 'analyzer-null-dereference' "$bad/gcc.txt"; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL gcc -fanalyzer did not fail on a NULL dereference ($bad/bad.c)" >>"$log"
+        failed=$((failed + 1))
+    fi
+    rm -rf "$bad/reports"
+    if ! scan-build --status-bugs --use-cc=clang -o "$bad/reports" clang -std=c99 -ffreestanding -O2 \
+        -c "$bad/bad.c" -o "$bad/bad.o" >"$bad/clang.txt" 2>&1 &&
+        grep -q 'core.NullDereference' "$bad/clang.txt"; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL scan-build did not fail on a NULL dereference ($bad/bad.c)" >>"$log"
+        failed=$((failed + 1))
+    fi
+    echo "$passed passed, $failed failed" >>"$log"
+    record analyzer "$log" 0
+}
+if wanted analyzer; then analyzer; else skip analyzer; fi
 
 # A firmware links only what it calls: the bench/size/ programs, linked
 # at -Os with --gc-sections, keep only the library files of their feature
