@@ -1141,14 +1141,6 @@ static void build_half(void *arg)
 }
 
 #if VOR_STATS
-static void stats_clear(vor_stats_t *s)
-{
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        s->orient2d[t] = s->incircle[t] = s->closer[t] = 0;
-    }
-    s->orient2d_perturbed = s->incircle_perturbed = s->closer_perturbed = 0;
-}
-
 /* Counters add modulo 2^32, as one build's would have wrapped. */
 static void stats_add(vor_stats_t *to, const vor_stats_t *from)
 {
@@ -1301,7 +1293,7 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     for (unsigned h = 0; h < 2u; h++) {
         half_t *x = &half[h];
 #if VOR_STATS
-        stats_clear(&x->stats);
+        vor__stats_clear(&x->stats);
 #endif
         builder_init(&x->b, d, n, b->duplicate_of, HALF_STATS(x), (h == 0u) ? d->max_sites : gap_end,
                      b->square);

@@ -47,11 +47,7 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->motion_update = NULL;
     d->motion_epoch = 0;
 #if VOR_STATS
-    vor_stats_t *stats = &d->stats;
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        stats->orient2d[t] = stats->incircle[t] = stats->closer[t] = 0;
-    }
-    stats->orient2d_perturbed = stats->incircle_perturbed = stats->closer_perturbed = 0;
+    vor__stats_clear(&d->stats);
 #endif
 #ifdef VOR_FAULT_INJECTION
     d->fault_rate = 0;
@@ -133,15 +129,7 @@ int vor_stats(const vor_t *d, vor_stats_t *out)
     if (d == NULL || out == NULL) {
         return VOR_ERR_ARG;
     }
-    const vor_stats_t *from = &d->stats;
-    for (unsigned t = 0; t < VOR_TIERS; t++) { /* field by field: no memcpy */
-        out->orient2d[t] = from->orient2d[t];
-        out->incircle[t] = from->incircle[t];
-        out->closer[t] = from->closer[t];
-    }
-    out->orient2d_perturbed = from->orient2d_perturbed;
-    out->incircle_perturbed = from->incircle_perturbed;
-    out->closer_perturbed = from->closer_perturbed;
+    vor__stats_copy(out, &d->stats);
     return VOR_OK;
 #else
     (void)d;

@@ -360,4 +360,30 @@ static inline bool vor__star_advance(const vor_t *d, vor_index_t p, vor__star_st
     return true;
 }
 
+#if VOR_STATS
+/* The counters vor_t keeps in a VOR_STATS build (vor_init clears them,
+ * vor_stats reads them, failing calls restore them), copied and cleared
+ * field by field: a structure assignment of this size becomes a memcpy
+ * call on some targets. */
+static inline void vor__stats_copy(vor_stats_t *to, const vor_stats_t *from)
+{
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        to->orient2d[t] = from->orient2d[t];
+        to->incircle[t] = from->incircle[t];
+        to->closer[t] = from->closer[t];
+    }
+    to->orient2d_perturbed = from->orient2d_perturbed;
+    to->incircle_perturbed = from->incircle_perturbed;
+    to->closer_perturbed = from->closer_perturbed;
+}
+
+static inline void vor__stats_clear(vor_stats_t *s)
+{
+    for (unsigned t = 0; t < VOR_TIERS; t++) {
+        s->orient2d[t] = s->incircle[t] = s->closer[t] = 0;
+    }
+    s->orient2d_perturbed = s->incircle_perturbed = s->closer_perturbed = 0;
+}
+#endif
+
 #endif

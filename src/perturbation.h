@@ -110,9 +110,7 @@ static inline bool vor__conflicts(vor_t *d, vor_index_t v0, vor_index_t v1, vor_
 /* What a call that fails after evaluating predicates restores, so that
  * it changes nothing: the VOR_STATS counters and the fault generator's
  * state (test builds). Empty in a release build, where predicates write
- * nothing but their answers. Field by field: a structure assignment of
- * this size becomes a memcpy call on some targets, and the library calls
- * nothing outside itself. */
+ * nothing but their answers. */
 typedef struct {
 #if VOR_STATS
     vor_stats_t stats;
@@ -126,15 +124,7 @@ typedef struct {
 static inline void vor__tally_save(vor__tally_t *to, const vor_t *d)
 {
 #if VOR_STATS
-    const vor_stats_t *from = &d->stats;
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        to->stats.orient2d[t] = from->orient2d[t];
-        to->stats.incircle[t] = from->incircle[t];
-        to->stats.closer[t] = from->closer[t];
-    }
-    to->stats.orient2d_perturbed = from->orient2d_perturbed;
-    to->stats.incircle_perturbed = from->incircle_perturbed;
-    to->stats.closer_perturbed = from->closer_perturbed;
+    vor__stats_copy(&to->stats, &d->stats);
 #endif
 #ifdef VOR_FAULT_INJECTION
     to->fault_state = d->fault_state;
@@ -146,15 +136,7 @@ static inline void vor__tally_save(vor__tally_t *to, const vor_t *d)
 static inline void vor__tally_restore(vor_t *d, const vor__tally_t *from)
 {
 #if VOR_STATS
-    vor_stats_t *to = &d->stats;
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
-        to->orient2d[t] = from->stats.orient2d[t];
-        to->incircle[t] = from->stats.incircle[t];
-        to->closer[t] = from->stats.closer[t];
-    }
-    to->orient2d_perturbed = from->stats.orient2d_perturbed;
-    to->incircle_perturbed = from->stats.incircle_perturbed;
-    to->closer_perturbed = from->stats.closer_perturbed;
+    vor__stats_copy(&d->stats, &from->stats);
 #endif
 #ifdef VOR_FAULT_INJECTION
     d->fault_state = from->fault_state;

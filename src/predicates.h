@@ -24,6 +24,7 @@
         }                                                                      \
     } while (0)
 #define VOR__STATS_OF(d) (&(d)->stats)
+
 #else
 #define VOR__COUNT(stats, counter) ((void)(stats))
 #define VOR__STATS_OF(d) ((vor_stats_t *)NULL)
