@@ -9,6 +9,7 @@
  * the perturbed Delaunay triangulation, so that the batch build in both
  * orders and one-by-one insertion must give the same triangles.
  */
+#include "insertion_order.h" /* white-box: vor__sort_ids, for its worst case */
 #include "mesh.h" /* white-box: the triangle layout, for the corrupted diagrams */
 #include "test.h"
 #include "vor.h"
@@ -654,6 +655,133 @@ static void check_corrupted(void)
     expect_violation(VOR_CHECK_ORIENTATION, "a site moved across a diagonal");
 }
 
+/* ------------------------------------------------------------------ */
+/* The sort's worst case                                               */
+
+#define SORT_SITES 256u
+#define GAS UINT32_MAX /* a value not decided yet */
+
+static uint32_t sort_value[SORT_SITES], frozen, candidate;
+
+/* McIlroy's adversary ("A killer adversary for quicksort", 1999): values
+ * are decided only when a comparison needs them, each new one below all
+ * undecided ones, and the one frozen is the likely pivot, so that every
+ * partition splits off as little as it can. */
+static bool adversary_less(uint32_t a, uint32_t b)
+{
+    if (sort_value[a] == GAS && sort_value[b] == GAS) {
+        sort_value[(a == candidate) ? a : b] = frozen++;
+    }
+    if (sort_value[a] == GAS) {
+        candidate = a;
+    } else if (sort_value[b] == GAS) {
+        candidate = b;
+    }
+    return sort_value[a] < sort_value[b];
+}
+
+static void swap_u32(uint32_t *ids, uint32_t i, uint32_t j)
+{
+    uint32_t t = ids[i];
+    ids[i] = ids[j];
+    ids[j] = t;
+}
+
+/* Plays the introsort's quicksort steps (src/insertion_order.c: median of
+ * three, Hoare partition, the smaller part first) against the adversary on
+ * ids 0 .. n - 1 until a range of 16 or more ids gets deeper than
+ * 2 log2 n, where the sort turns to heapsort; then decides the values
+ * still open. Returns whether that depth was reached: sites[i].x =
+ * sort_value[i] is then an input that takes vor__sort_ids there. */
+static bool play_adversary(uint32_t n)
+{
+    static uint32_t ids[SORT_SITES];
+    struct range {
+        uint32_t first, count, depth;
+    } stack[64];
+    unsigned top = 0, log2n = 0;
+    bool deep = false;
+    while ((1u << log2n) < n) {
+        log2n++;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        ids[i] = i;
+        sort_value[i] = GAS;
+    }
+    frozen = candidate = 0;
+    stack[top++] = (struct range){0, n, 0};
+    while (top > 0u && !deep && top + 2u <= 64u) {
+        struct range r = stack[--top];
+        uint32_t *a = ids + r.first;
+        if (r.count < 16u) {
+            continue; /* insertion sort: within the range, the others unaffected */
+        }
+        if (r.depth > 2u * log2n) {
+            deep = true;
+            break;
+        }
+        uint32_t mid = r.count / 2u, last = r.count - 1u;
+        if (adversary_less(a[mid], a[0])) {
+            swap_u32(a, mid, 0);
+        }
+        if (adversary_less(a[last], a[0])) {
+            swap_u32(a, last, 0);
+        }
+        if (adversary_less(a[last], a[mid])) {
+            swap_u32(a, last, mid);
+        }
+        swap_u32(a, 0, mid);
+        uint32_t pivot = a[0], i = 0, j = r.count;
+        for (;;) {
+            do {
+                i++;
+            } while (i < r.count && adversary_less(a[i], pivot));
+            do {
+                j--;
+            } while (adversary_less(pivot, a[j]));
+            if (i >= j) {
+                break;
+            }
+            swap_u32(a, i, j);
+        }
+        swap_u32(a, 0, j);
+        struct range left = {r.first, j, r.depth + 1u};
+        struct range right = {r.first + j + 1u, r.count - j - 1u, r.depth + 1u};
+        stack[top++] = (left.count > right.count) ? left : right;
+        stack[top++] = (left.count > right.count) ? right : left;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        sort_value[i] = (sort_value[i] == GAS) ? frozen++ : sort_value[i];
+    }
+    return deep;
+}
+
+/* The adversary's input, sorted by both keys: the values are 0 .. n - 1
+ * (y = 0, so the Z-order is the x order too), so the k-th id must be the
+ * one of value k. */
+static void check_sort_worst_case(void)
+{
+    static vor_point_t sites[SORT_SITES];
+    static vor_index_t ids[SORT_SITES];
+    static const uint32_t sizes[3] = {64, 100, SORT_SITES};
+    for (unsigned s = 0; s < 3u; s++) {
+        uint32_t n = sizes[s];
+        CHECK(play_adversary(n), "%u sites: the adversary did not get deep enough", n);
+        for (unsigned key = 0; key < 2u; key++) {
+            for (uint32_t i = 0; i < n; i++) {
+                sites[i] = (vor_point_t){(int32_t)sort_value[i] - 1000, 0};
+                ids[i] = (vor_index_t)i;
+            }
+            vor__sort_ids(sites, ids, n, (key == 0u) ? VOR__SORT_LEX : VOR__SORT_Z);
+            unsigned bad = 0;
+            for (uint32_t k = 0; k < n; k++) {
+                bad += sort_value[ids[k]] != k;
+            }
+            CHECK(bad == 0, "%u sites, key %u: %u ids out of place", n, key, bad);
+        }
+    }
+}
+
 void test_mesh(void)
 {
     TEST_CASE("init") check_init();
@@ -663,4 +791,5 @@ void test_mesh(void)
     TEST_CASE("memory") check_memory();
     TEST_CASE("failures_change_nothing") check_failures_change_nothing();
     TEST_CASE("corrupted") check_corrupted();
+    TEST_CASE("sort_worst_case") check_sort_worst_case();
 }
