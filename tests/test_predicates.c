@@ -698,6 +698,25 @@ static void check_wide_magnitudes(void)
           "incircle magnitude -D^2 (D - 1): %u", vor__incircle_bits(&right, &up, &right1, &lo));
 }
 
+/* vor_closer_sos when a and b coincide and q has the smallest index, from
+ * the perturbation's definition (docs/design/predicates.md): with A = a~
+ * and B = b~ at one point, |q~ - A|^2 - |q~ - B|^2 =
+ * (dx_B - dx_A)(2 X + ...) + (dy_B - dy_A)(2 Y + 2 dy_q - dy_A - dy_B),
+ * X, Y = q - a. Its lowest term belongs to the smaller of a and b, m:
+ * -+2 Y eps^(16^m) (minus when m = a), so the sign is that of a_y - q_y
+ * (m = a) or q_y - b_y (m = b); when Y = 0, -+2 dy_q dy_m, eps^(16^q +
+ * 16^m), which precedes dy_m^2 as q < m: -1 (m = a) or 1 (m = b). */
+static void check_closer_coincident(void)
+{
+    const vor_point_t above[3] = {{0, 0}, {5, 3}, {5, 3}}, level[3] = {{0, 0}, {-7, 0}, {-7, 0}};
+    CHECK(vor_closer_sos(above, 0, 1, 2) == 1 && vor_closer_sos(above, 0, 2, 1) == -1,
+          "closer, coincident a and b above q: %d %d", vor_closer_sos(above, 0, 1, 2),
+          vor_closer_sos(above, 0, 2, 1));
+    CHECK(vor_closer_sos(level, 0, 1, 2) == -1 && vor_closer_sos(level, 0, 2, 1) == 1,
+          "closer, coincident a and b level with q: %d %d", vor_closer_sos(level, 0, 1, 2),
+          vor_closer_sos(level, 0, 2, 1));
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -708,4 +727,5 @@ void test_predicates(void)
     TEST_CASE("first_term_filter") check_first_term_filter();
     TEST_CASE("near_circles") check_near_circles();
     TEST_CASE("wide_magnitudes") check_wide_magnitudes();
+    TEST_CASE("closer_coincident") check_closer_coincident();
 }
