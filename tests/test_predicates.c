@@ -666,6 +666,57 @@ static void check_near_circles(void)
           bad, checked, crossings);
 }
 
+/* The magnitudes the motion cache sizes its boxes with
+ * (vor__orient2d_bits, vor__incircle_bits) when differences take 33 bits:
+ * sites at the ends of the int32 range, D = 2^32 - 1 apart, whose
+ * determinants have closed forms. Orientation of (D, 0), (0, D) from the
+ * corner: D^2 (64 bits), negated when the two swap; along the diagonal,
+ * 0; (D, 1), (D - 1, 1): D - (D - 1) = 1. Incircle, offsets from the
+ * corner (D, 0), (0, D) and then (1, 1): -2 D^2 (D - 1), 97 bits; (D, D):
+ * the corners of a square, 0; (D, 1): -D^2 (D - 1), 96 bits. The signs
+ * of the exact predicates agree (zero exactly when the magnitude is). */
+static void check_wide_magnitudes(void)
+{
+    const vor_point_t lo = {INT32_MIN, INT32_MIN}, right = {INT32_MAX, INT32_MIN},
+                      up = {INT32_MIN, INT32_MAX}, far = {INT32_MAX, INT32_MAX},
+                      centre = {0, 0}, next = {INT32_MIN + 1, INT32_MIN + 1},
+                      right1 = {INT32_MAX, INT32_MIN + 1}, left1 = {INT32_MAX - 1, INT32_MIN + 1};
+    CHECK(vor__orient2d_bits(&right, &up, &lo) == 64u && vor__orient2d_bits(&up, &right, &lo) == 64u &&
+              vor_orient2d(right, up, lo) == 1 && vor_orient2d(up, right, lo) == -1,
+          "orient2d magnitude, differences of 2^32 - 1: %u, %u", vor__orient2d_bits(&right, &up, &lo),
+          vor__orient2d_bits(&up, &right, &lo));
+    CHECK(vor__orient2d_bits(&far, &centre, &lo) == 0u && vor_orient2d(far, centre, lo) == 0,
+          "orient2d magnitude, collinear across the range: %u", vor__orient2d_bits(&far, &centre, &lo));
+    CHECK(vor__orient2d_bits(&right1, &left1, &lo) == 1u && vor_orient2d(right1, left1, lo) == 1,
+          "orient2d magnitude 1 from 33-bit differences: %u", vor__orient2d_bits(&right1, &left1, &lo));
+    CHECK(vor__incircle_bits(&right, &up, &next, &lo) == 97u && vor_incircle(right, up, next, lo) != 0,
+          "incircle magnitude -2 D^2 (D - 1): %u", vor__incircle_bits(&right, &up, &next, &lo));
+    CHECK(vor__incircle_bits(&right, &up, &far, &lo) == 0u && vor_incircle(right, up, far, lo) == 0,
+          "incircle magnitude, a square's corners: %u", vor__incircle_bits(&right, &up, &far, &lo));
+    CHECK(vor__incircle_bits(&right, &up, &right1, &lo) == 96u &&
+              vor_incircle(right, up, right1, lo) != 0,
+          "incircle magnitude -D^2 (D - 1): %u", vor__incircle_bits(&right, &up, &right1, &lo));
+}
+
+/* vor_closer_sos when a and b coincide and q has the smallest index, from
+ * the perturbation's definition (docs/design/predicates.md): with A = a~
+ * and B = b~ at one point, |q~ - A|^2 - |q~ - B|^2 =
+ * (dx_B - dx_A)(2 X + ...) + (dy_B - dy_A)(2 Y + 2 dy_q - dy_A - dy_B),
+ * X, Y = q - a. Its lowest term belongs to the smaller of a and b, m:
+ * -+2 Y eps^(16^m) (minus when m = a), so the sign is that of a_y - q_y
+ * (m = a) or q_y - b_y (m = b); when Y = 0, -+2 dy_q dy_m, eps^(16^q +
+ * 16^m), which precedes dy_m^2 as q < m: -1 (m = a) or 1 (m = b). */
+static void check_closer_coincident(void)
+{
+    const vor_point_t above[3] = {{0, 0}, {5, 3}, {5, 3}}, level[3] = {{0, 0}, {-7, 0}, {-7, 0}};
+    CHECK(vor_closer_sos(above, 0, 1, 2) == 1 && vor_closer_sos(above, 0, 2, 1) == -1,
+          "closer, coincident a and b above q: %d %d", vor_closer_sos(above, 0, 1, 2),
+          vor_closer_sos(above, 0, 2, 1));
+    CHECK(vor_closer_sos(level, 0, 1, 2) == -1 && vor_closer_sos(level, 0, 2, 1) == 1,
+          "closer, coincident a and b level with q: %d %d", vor_closer_sos(level, 0, 1, 2),
+          vor_closer_sos(level, 0, 2, 1));
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -675,4 +726,6 @@ void test_predicates(void)
     TEST_CASE("perturbation_reference") check_perturbation_reference();
     TEST_CASE("first_term_filter") check_first_term_filter();
     TEST_CASE("near_circles") check_near_circles();
+    TEST_CASE("wide_magnitudes") check_wide_magnitudes();
+    TEST_CASE("closer_coincident") check_closer_coincident();
 }
