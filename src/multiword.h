@@ -296,13 +296,29 @@ VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
     return 0;
 }
 
+/* All ones for negative d, else 0 (the sign bit spread by an unsigned
+ * shift: compilers emit one arithmetic shift). */
+VOR__INLINE uint64_t vor__mw_sign_mask(int64_t d)
+{
+    return 0u - ((uint64_t)d >> 63);
+}
+
 /* |d| rounded down for negative d (~d = -d - 1), two instructions on most
  * machines: vor__mw_bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1].
  * The OR of bounds is below 2^k exactly when every bound is: one test
  * picks the width a group of differences fits. */
 VOR__INLINE uint64_t vor__mw_bound(int64_t d)
 {
-    return (uint64_t)(d < 0 ? ~d : d);
+    return (uint64_t)d ^ vor__mw_sign_mask(d);
+}
+
+/* d again from b = vor__mw_bound(d), as int32 when b < 2^31: the same
+ * mask undone, which compilers fold to (int32_t)d. For an analyser it ties
+ * d's range to b's, which a tier's test of an OR of bounds gives it (it
+ * keeps no relation between d and b). */
+VOR__INLINE int32_t vor__mw_unbound(uint64_t b, int64_t d)
+{
+    return (int32_t)b ^ (int32_t)vor__mw_sign_mask(d);
 }
 
 /* Sign of v: -1, 0 or 1. */
@@ -488,7 +504,7 @@ VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
 #else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
-        if ((v >> half) != 0u) {
+        if (v >= (1u << half)) { /* (v >> half) != 0, which bounds v plainly */
             v >>= half;
             k += half;
         }

@@ -184,16 +184,21 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
 #endif
 
 #if MID_FILTER
-/* floor(v / 2^s), shifting only a non-negative value (a right shift of a
- * negative one is implementation-defined); compilers emit one ASR. */
-VOR__INLINE int64_t floor_shift(int64_t v, unsigned s)
+/* floor(v / 2^(17 - t)) for v in [-2^(31 - t), 2^(31 - t) - 1], t <= 17:
+ * v shifted left by t fits 32 bits, and its top 15 bits are taken (a
+ * right shift of a negative value is implementation-defined, so only a
+ * non-negative one is shifted; compilers emit one ASR). The result lies
+ * in [-2^14, 2^14 - 1] whatever v and t: the filters' narrow evaluations
+ * are bounded by this function alone, not by a relation between t and
+ * the caller's OR of bounds, which an analyser does not keep. */
+VOR__INLINE int32_t top_bits(int64_t v, unsigned t)
 {
-    int32_t w = (int32_t)v;
-    return (w >= 0) ? (w >> s) : ~((~w) >> s);
+    int32_t w = (int32_t)((uint32_t)v << t);
+    return (w >= 0) ? (w >> 17) : ~((~w) >> 17);
 }
 
 /* max(|x|, |y|) + 1 of a shifted difference pair (x, y), |x|, |y| <= 2^14. */
-VOR__INLINE uint32_t pair_size(const int64_t xy[2])
+VOR__INLINE uint32_t pair_size(const int32_t xy[2])
 {
     uint32_t x = (uint32_t)vor__mw_magnitude(xy[0]), y = (uint32_t)vor__mw_magnitude(xy[1]);
     return ((x > y) ? x : y) + 1u;
@@ -208,7 +213,7 @@ VOR__INLINE uint32_t pair_size(const int64_t xy[2])
  *   |P(d) - 2^4s P(d')| <= 2^4s 4 (6abc + a^2 (b + c) + b^2 (c + a) + c^2 (a + b)),
  * below 2^4s 48 (2^14 + 1)^3 < 2^4s 2^48, and |P(d')| above that bound
  * decides. */
-static uint64_t point_bound(const int64_t shifted[6])
+static uint64_t point_bound(const int32_t shifted[6])
 {
     uint32_t a = pair_size(&shifted[0]), b = pair_size(&shifted[2]), c = pair_size(&shifted[4]);
     uint64_t sum = vor__mul_u32(a * b, 6u * c) + vor__mul_u32(a * a, b + c) +
@@ -229,14 +234,16 @@ static uint64_t point_bound(const int64_t shifted[6])
  * from each point's size may decide (point_bound). Returns 0 when neither
  * does (an exact zero among them: the exact sums then decide). Straight-line
  * code on 32-bit values: loops cost a Cortex-M3 more than they save. */
-static int incircle_filter(const int64_t d[6], uint32_t m)
+static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
 {
-    unsigned bits = vor__mw_bit_length32(m), s = (bits > 14u) ? bits - 14u : 0u;
-    int64_t shifted[6] = {floor_shift(d[0], s), floor_shift(d[1], s), floor_shift(d[2], s),
-                          floor_shift(d[3], s), floor_shift(d[4], s), floor_shift(d[5], s)};
+    /* m in [2^14, 2^31) (the mid tier's): s = bits - 14 in [1, 17], and
+     * the differences shifted left by t = 17 - s fit 32 bits */
+    unsigned t = 31u - vor__mw_bit_length32(m);
+    int32_t shifted[6] = {top_bits(d[0], t), top_bits(d[1], t), top_bits(d[2], t),
+                          top_bits(d[3], t), top_bits(d[4], t), top_bits(d[5], t)};
     int64_t det = vor__incircle_narrow(shifted);
     const int64_t error = ((int64_t)3 << 46) + ((int64_t)1 << 35);
-    if (s == 0u || det >= error || det <= -error) {
+    if (det >= error || det <= -error) {
         return vor__mw_sign64(det);
     }
     uint64_t size = (uint64_t)((det < 0) ? -det : det);
@@ -477,14 +484,15 @@ VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int3
      * a lattice decides here, a lattice square's term being near 2^42;
      * the others take the 192-bit sums (term_sign), which cost a
      * Cortex-M0 less flash than 128-bit ones for this term alone. */
-    unsigned s = (m < (1u << 14)) ? 0u : vor__mw_bit_length32(m) - 14u;
-    int32_t syl = (int32_t)floor_shift(yl, s), sxp = (int32_t)floor_shift(xp, s);
-    int32_t syp = (int32_t)floor_shift(yp, s), sxq = (int32_t)floor_shift(xq, s);
-    int32_t syq = (int32_t)floor_shift(yq, s);
+    /* t = 17 - s: the entries shifted left by t fit 32 bits (top_bits) */
+    unsigned t = (m < (1u << 14)) ? 17u : 31u - vor__mw_bit_length32(m);
+    int32_t syl = top_bits(yl, t), sxp = top_bits(xp, t);
+    int32_t syp = top_bits(yp, t), sxq = top_bits(xq, t);
+    int32_t syq = top_bits(yq, t);
     int64_t by_y = vor__mul_i32(sxp, syq) - vor__mul_i32(syp, sxq);
     int64_t filtered = first_term_narrow(syl, sxp, syp, sxq, syq, by_y);
     const int64_t error = (int64_t)1 << 33;
-    if (s != 0u) {
+    if (t != 17u) {
         bool decided = filtered >= error || filtered <= -error;
         *next = decided ? 3u : 1u;
         return decided ? vor__mw_sign64(filtered) : 0;
@@ -752,10 +760,11 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
                     (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
-                 vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
+    uint64_t bounds[6];
+    vor__incircle_bounds(bounds, d);
+    uint64_t m = bounds[0] | bounds[1] | bounds[2] | bounds[3] | bounds[4] | bounds[5];
     if (m < (1u << 14)) { /* as the narrow tier: |det| < 2^60 */
-        int64_t det = vor__incircle_narrow(d);
+        int64_t det = vor__incircle_narrow_of(bounds, d);
         return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
     }
     /* the sign tiers' positive and negative sums; |det| is their
