@@ -116,14 +116,15 @@ VOR__INLINE int64_t vor__mul_i32(int32_t a, int32_t b)
 }
 
 /* a * b for a product known to fit int64, via two 32x32 products on
- * ARMv6-M (no 64-bit multiply call). */
+ * ARMv6-M (no 64-bit multiply call). The magnitude is negated unsigned:
+ * the product -2^63 has magnitude 2^63, which int64 cannot negate. */
 VOR__INLINE int64_t vor__mul_i64_i32(int64_t a, int32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
     uint64_t ma = (a < 0) ? 0u - (uint64_t)a : (uint64_t)a;
     uint32_t mb = (b < 0) ? 0u - (uint32_t)b : (uint32_t)b;
     uint64_t m = vor__mul_u32((uint32_t)ma, mb) + (vor__mul_u32((uint32_t)(ma >> 32), mb) << 32);
-    return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
+    return (int64_t)(((a < 0) != (b < 0)) ? 0u - m : m);
 #else
     return a * b;
 #endif
