@@ -513,14 +513,23 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
     *next = decided ? 3u : 1u;
     return decided ? vor__mw_sign64(filtered) : 0;
 #else
-    int32_t yl = (int32_t)e[0], xp = (int32_t)e[1], yp = (int32_t)e[2];
-    int32_t xq = (int32_t)e[3], yq = (int32_t)e[4];
+#if VOR_LIMB_BITS == 32
+    /* 32-bit limbs at -Os: the closed form in int64 only */
+    if (m >= (1u << 14)) {
+        *next = 1u;
+        return 0;
+    }
+#endif
+    /* the entries, from their bounds (below 2^14 at -Os, 2^31 here) */
+    int32_t yl = vor__mw_unbound(b[0], e[0]), xp = vor__mw_unbound(b[1], e[1]);
+    int32_t yp = vor__mw_unbound(b[2], e[2]), xq = vor__mw_unbound(b[3], e[3]);
+    int32_t yq = vor__mw_unbound(b[4], e[4]);
+    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
 #if VOR_LIMB_BITS == 64
     /* |by_y| <= 2^63 - 2^31: the two products cannot both reach 2^62
      * with opposite signs. Beyond 15 bits, z <= 2^63 fits uint64, and the
      * first term's products are below 2^95, 2^94 and 2^94: one signed
      * 128-bit sum. */
-    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
     int sign;
     if (m < (1u << 14)) {
         sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
@@ -532,12 +541,6 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
         sign = (det > 0) - (det < 0);
     }
 #else
-    /* 32-bit limbs at -Os: the closed form in int64 only */
-    if (m >= (1u << 14)) {
-        *next = 1u;
-        return 0;
-    }
-    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
     int sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
 #endif
     return (sign != 0) ? sign : vor__mw_sign64(by_y);

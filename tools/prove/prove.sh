@@ -12,7 +12,7 @@ out=build/prove
 mkdir -p "$out"
 status=0
 # each harness, with the library sources it calls (comma-separated)
-harnesses="predicates:src/predicates.c multiword: multiword_armv6m:"
+harnesses="predicates:src/predicates.c predicates_os: multiword: multiword_armv6m:"
 for job in $harnesses; do
     name=${job%%:*}
     sources=$(echo "${job#*:}" | tr , ' ')
