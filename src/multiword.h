@@ -505,7 +505,8 @@ VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
 #else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
-        if (v >= (1u << half)) { /* (v >> half) != 0, which bounds v plainly */
+        /* (v >> half) != 0 as a comparison, which an analyser bounds v by */
+        if (v >= (1u << half)) {
             v >>= half;
             k += half;
         }

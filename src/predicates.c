@@ -234,8 +234,8 @@ static uint64_t point_bound(const int32_t shifted[6])
  * from each point's size may decide (point_bound). Returns 0 when neither
  * does (an exact zero among them: the exact sums then decide). Straight-line
  * code on 32-bit values: loops cost a Cortex-M3 more than they save. Out
- * of line: inlined, its registers are saved and restored on every mid-tier
- * call (RISC-V: 16 instructions more a call). */
+ * of line: inlined, the registers it needs are saved and restored on
+ * every mid-tier call, which costs RISC-V more than the call. */
 static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
 {
     /* m in [2^14, 2^31) (the mid tier's): s = bits - 14 in [1, 17], and
