@@ -194,6 +194,54 @@ static void check_multiply(void)
     CHECK(bad_i == 0, "vor__mul_i32 wrong %u times", bad_i);
 }
 
+/* The helpers the tiers state their bounds with: the bit length against
+ * a count of halvings, every difference's bound taken back to it
+ * (vor__mw_unbound), and the 64x32 product at the edges of its domain,
+ * -2^63 included, against the compiler's own multiply. */
+static void check_bounds(void)
+{
+    unsigned bad_length = 0, bad_unbound = 0, bad_product = 0;
+    for (unsigned k = 0; k < 32u; k++) {
+        uint32_t v = (uint32_t)1 << k;
+        unsigned want = 0;
+        for (uint32_t w = v; w != 0u; w >>= 1) {
+            want++;
+        }
+        bad_length += (vor__mw_bit_length32(v) != want) ? 1u : 0u;
+        bad_length += (vor__mw_bit_length32(v - 1u) != want - 1u) ? 1u : 0u;
+        bad_length += (vor__mw_bit_length32(v | (v - 1u)) != want) ? 1u : 0u;
+    }
+    bad_length += (vor__mw_bit_length32(0xFFFFFFFFu) != 32u) ? 1u : 0u;
+    static const int64_t differences[] = {INT32_MIN, -16385, -16384, -1, 0, 1, 16383, 16384,
+                                          INT32_MAX};
+    for (unsigned i = 0; i < sizeof differences / sizeof differences[0]; i++) {
+        int64_t d = differences[i];
+        bad_unbound += (vor__mw_unbound(vor__mw_bound(d), d) != (int32_t)d) ? 1u : 0u;
+    }
+    static const int64_t wide[] = {(int64_t)1 << 32, -((int64_t)1 << 32), ((int64_t)1 << 32) - 1,
+                                   (int64_t)1 << 47, -((int64_t)1 << 47), 3, -3, 0};
+    static const int32_t narrow[] = {INT32_MIN, INT32_MAX, -32768, 32767, -1, 1, 0};
+    for (unsigned i = 0; i < sizeof wide / sizeof wide[0]; i++) {
+        for (unsigned j = 0; j < sizeof narrow / sizeof narrow[0]; j++) {
+            int64_t a = wide[i];
+            int32_t b = narrow[j];
+            /* only products that fit int64 (its domain): |a b| below
+             * 2^63, or -2^63 itself */
+            uint64_t ma = (a < 0) ? 0u - (uint64_t)a : (uint64_t)a;
+            uint64_t mb = (b < 0) ? 0u - (uint64_t)(int64_t)b : (uint64_t)b;
+            uint64_t most = ((a < 0) != (b < 0)) ? (uint64_t)1 << 63 : ((uint64_t)1 << 63) - 1u;
+            if (mb != 0u && ma > most / mb) {
+                continue;
+            }
+            volatile int64_t wa = a, wb = b; /* the compiler's own multiply */
+            bad_product += (vor__mul_i64_i32(a, b) != wa * wb) ? 1u : 0u;
+        }
+    }
+    CHECK(bad_length == 0, "vor__mw_bit_length32 wrong %u times", bad_length);
+    CHECK(bad_unbound == 0, "vor__mw_unbound wrong %u times", bad_unbound);
+    CHECK(bad_product == 0, "vor__mul_i64_i32 wrong %u times", bad_product);
+}
+
 /* The 64-bit shifts on 32-bit halves, against the compiler's own shift
  * (on 32-bit targets a libgcc routine or its inline code), for every
  * amount 0..63 on edge and random values. */
@@ -721,6 +769,7 @@ void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
     TEST_CASE("shift") check_shift();
+    TEST_CASE("bounds") check_bounds();
     TEST_CASE("vectors") check_vectors();
     TEST_CASE("grid_antisymmetry") check_grid_antisymmetry();
     TEST_CASE("perturbation_reference") check_perturbation_reference();
