@@ -158,6 +158,7 @@ int main(void)
     r |= vor_stats(&d, Frama_C_nondet_ptr(&stats, NULL));
     r |= vor_motion_attach(Frama_C_nondet_ptr(&d, NULL), Frama_C_nondet_ptr(cache, NULL),
                            any_u32());
+    r |= vor_motion_attach(&d, NULL, 0u); /* detached: the analysis knows it */
     /* the inserts one by one into the empty diagram, then every update
      * without a cache and with one */
     /*@ loop unroll N; */

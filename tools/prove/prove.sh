@@ -14,7 +14,7 @@ cd "$(dirname "$0")/../.."
 out=build/prove
 mkdir -p "$out"
 status=0
-harnesses=${*:-predicates diagram queries raster}
+harnesses=${*:-predicates diagram queries geometry raster}
 
 # Options every harness shares.
 # -machdep gcc_x86_32: x86_32 with GCC's builtins (__builtin_prefetch).
@@ -46,12 +46,14 @@ sources_of() {
 
 # The library's functions: every function defined in src/ or include/
 # (static and inline ones included), by name, from the symbols of each
-# source compiled with every function kept.
+# source compiled with every function kept, in the configuration Frama-C
+# parses (32-bit limbs, no __OPTIMIZE__; VOR__COVERAGE only turns the
+# forced inlining off, which would keep a function out of the symbols).
 functions=$out/functions.txt
 objects=$(mktemp -d)
 trap 'rm -rf "$objects"' EXIT
 for source in $(grep '^src/' sources.txt); do
-    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -Iinclude -Isrc \
+    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -DVOR__COVERAGE -Iinclude -Isrc \
         -fkeep-static-functions -fkeep-inline-functions -c "$source" \
         -o "$objects/$(basename "$source" .c).o"
 done
