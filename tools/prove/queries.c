@@ -64,19 +64,30 @@ static int iterate(const vor_t *d)
 static int nearest(const vor_t *d)
 {
     vor_tracker_t tracker;
-    uint32_t site, found, k = Frama_C_unsigned_int_interval(0u, N + 1u);
+    uint32_t site, found;
     uint32_t list[N + 1u];
     int r = 0;
 
     r |= vor_nearest(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(),
                      Frama_C_nondet_ptr(&site, NULL));
-    r |= vor_nearest_k(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(), k,
-                       Frama_C_nondet_ptr(list, NULL), Frama_C_nondet_ptr(&found, NULL));
+    r |= vor_nearest_k(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(), any_u32(),
+                       NULL, &found);
+    r |= vor_nearest_k(d, any_point(), any_id(), 1u, list, NULL);
+    /* each count in turn (unrolled), a count beyond the sites included:
+     * how many entries of list[] are written depends on it */
+    /*@ loop unroll N + 2; */
+    for (uint32_t k = 0; k <= N + 1u; k++) {
+        r |= vor_nearest_k(d, any_point(), any_id(), k, list, &found);
+    }
     r |= vor_tracker_begin_checked(Frama_C_nondet_ptr(&tracker, NULL),
                                    Frama_C_nondet_ptr((void *)d, NULL), any_u32());
     if (vor_tracker_begin(&tracker, d) == VOR_OK) {
         /* a moving query: from anywhere, then anywhere again */
         r |= vor_track(&tracker, any_point(), &site);
+        /* one state per answer, so that each cached cell stays exact (a
+         * non-relational analysis would mix one cell's bounds with
+         * another's position) */
+        /*@ split tracker.site; */
         r |= vor_track(&tracker, any_point(), Frama_C_nondet_ptr(&site, NULL));
     }
     r |= vor_track(NULL, any_point(), &site);
