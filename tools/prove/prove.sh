@@ -52,7 +52,7 @@ sources_of() {
 functions=$out/functions.txt
 objects=$(mktemp -d)
 trap 'rm -rf "$objects"' EXIT
-for source in $(grep '^src/' sources.txt); do
+grep '^src/' sources.txt | while read -r source; do
     "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -DVOR__COVERAGE -Iinclude -Isrc \
         -fkeep-static-functions -fkeep-inline-functions -c "$source" \
         -o "$objects/$(basename "$source" .c).o"
@@ -92,7 +92,8 @@ for name in $harnesses; do
         ! grep -q '100% of the logical properties reached have been proven' "$report"; then
         grep -A1 '^\[eva:alarm\]' "$report" | grep -v '^--' | paste - - |
             sed 's/\[eva:alarm\] //; s/: Warning: *\t */: /' >&2
-        grep -A1 'Warning' "$report" | grep -v 'eva:alarm' | grep -v '^--' >&2 || true
+        # warnings other than alarms, with the line that says what
+        awk '/Warning/ && !/eva:alarm/ { print; getline; print }' "$report" >&2
         echo "prove: $name: not proven: $alarms alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)" >&2
         status=1
     else
