@@ -17,14 +17,16 @@ status=0
 harnesses=${*:-predicates diagram queries geometry raster}
 
 # Options every harness shares.
-# -machdep gcc_x86_32: x86_32 with GCC's builtins (__builtin_prefetch).
+# -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
+#   the microcontroller targets, where the cache hints compile away
+#   (VOR__PREFETCHING, src/mesh.h).
 # typing:implicit-conv-void-ptr off: Frama-C warns on a void * passed to
 #   an object pointer parameter, which C99 converts implicitly (6.3.2.3).
 # -eva-precision 3: enough to follow the small fixed loops of the
 #   multi-word arithmetic one iteration at a time (below it, merged
 #   iterations read as maybe-uninitialised limbs); higher levels find
 #   nothing more and cost minutes.
-common="-machdep gcc_x86_32 -kernel-warn-key typing:implicit-conv-void-ptr=inactive
+common="-machdep x86_32 -kernel-warn-key typing:implicit-conv-void-ptr=inactive
     -eva -eva-precision 3 -eva-no-show-progress"
 
 # Per harness: the options it adds and the sources it needs.
@@ -47,13 +49,13 @@ sources_of() {
 # The library's functions: every function defined in src/ or include/
 # (static and inline ones included), by name, from the symbols of each
 # source compiled with every function kept, in the configuration Frama-C
-# parses (32-bit limbs, no __OPTIMIZE__; VOR__COVERAGE only turns the
+# parses (32-bit limbs, M profile, no __OPTIMIZE__; VOR__COVERAGE turns the
 # forced inlining off, which would keep a function out of the symbols).
 functions=$out/functions.txt
 objects=$(mktemp -d)
 trap 'rm -rf "$objects"' EXIT
 grep '^src/' sources.txt | while read -r source; do
-    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -DVOR__COVERAGE -Iinclude -Isrc \
+    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -D__ARM_ARCH_PROFILE=77 -DVOR__COVERAGE -Iinclude -Isrc \
         -fkeep-static-functions -fkeep-inline-functions -c "$source" \
         -o "$objects/$(basename "$source" .c).o"
 done
@@ -65,7 +67,7 @@ for name in $harnesses; do
     start=$(date +%s)
     # shellcheck disable=SC2046,SC2086
     if ! frama-c $common $(options_of "$name") \
-        -cpp-extra-args="-Iinclude -Isrc -DVOR_LIMB_BITS=32" \
+        -cpp-extra-args="-Iinclude -Isrc -DVOR_LIMB_BITS=32 -D__ARM_ARCH_PROFILE=77" \
         "tools/prove/$name.c" $(sources_of "$name") >"$report" 2>&1; then
         cat "$report"
         echo "prove: $name: frama-c failed ($report)" >&2

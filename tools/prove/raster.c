@@ -154,6 +154,7 @@ int main(void)
     vor_raster_sites_t sites = {0};
     vor_raster_output_t out = {0};
     vor_raster_options_t options = {0};
+    vor_point_t spread[SITES];
     int r = 0;
 
     sites.points = points;
@@ -191,7 +192,6 @@ int main(void)
     /*@ loop unroll 4; */
     for (int tier = 0; tier < 4; tier++) {
         static const int32_t scale[4] = {1 << 12, 1 << 17, 1 << 22, 1 << 28};
-        vor_point_t spread[SITES];
         vor_raster_frame_t wide = frame;
         /*@ loop unroll SITES; */
         for (uint32_t k = 0; k < SITES; k++) {
