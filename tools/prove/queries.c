@@ -82,13 +82,17 @@ static int nearest(const vor_t *d)
     r |= vor_tracker_begin_checked(Frama_C_nondet_ptr(&tracker, NULL),
                                    Frama_C_nondet_ptr((void *)d, NULL), any_u32());
     if (vor_tracker_begin(&tracker, d) == VOR_OK) {
-        /* a moving query: from anywhere, then anywhere again */
-        r |= vor_track(&tracker, any_point(), &site);
-        /* one state per answer, so that each cached cell stays exact (a
-         * non-relational analysis would mix one cell's bounds with
-         * another's position) */
-        /*@ split tracker.site; */
-        r |= vor_track(&tracker, any_point(), Frama_C_nondet_ptr(&site, NULL));
+        r |= vor_track(&tracker, any_point(), &site); /* from anywhere */
+    }
+    /* from the cell cached at each answer (unrolled: a non-relational
+     * analysis would mix one cell's bounds with another's position), on
+     * to anywhere */
+    /*@ loop unroll N; */
+    for (uint32_t s = 0; s < N; s++) {
+        if (vor_tracker_begin(&tracker, d) == VOR_OK &&
+            vor_track(&tracker, points[s], &site) == VOR_OK) {
+            r |= vor_track(&tracker, any_point(), Frama_C_nondet_ptr(&site, NULL));
+        }
     }
     r |= vor_track(NULL, any_point(), &site);
     return r;
