@@ -27,8 +27,8 @@
 #                           (tests/fuzz/, docs/testing.md)
 #   make soak               10^7 random inserts, removes, moves and queries on
 #                           one diagram, checked against fresh builds
-#   make prove              Frama-C EVA: no runtime error in the exact predicates
-#                           for any int32 input (tools/prove/, docs/testing.md)
+#   make prove              Frama-C EVA: no runtime error in the public calls
+#                           over their inputs (tools/prove/, docs/testing.md)
 #   make docs               the API reference from the headers (Doxygen):
 #                           build/docs/html/index.html; fails on any warning
 #

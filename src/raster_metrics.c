@@ -564,10 +564,11 @@ VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
 }
 
 /* v - w as an int32 bit pattern, saturated at INT32_MAX: v < 2^34 and
- * w >= -2^31, so v - w < 2^35; w < 2^31 keeps it above -2^31. */
+ * w >= -2^31, so v - w < 2^35; w < 2^31 keeps it above -2^31. Subtracted
+ * in uint64_t (the same instructions), whose wrap needs no bound on v. */
 VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
 {
-    int64_t d = (int64_t)v - w;
+    int64_t d = (int64_t)(v - (uint64_t)(int64_t)w);
     return d > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)d;
 }
 
