@@ -87,14 +87,14 @@
  * hull vertex even when many sites share an x. */
 static inline bool lex_less(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
-    return s[a].x < s[b].x || (s[a].x == s[b].x && s[a].y < s[b].y);
+    return (s[a].x < s[b].x) || ((s[a].x == s[b].x) && (s[a].y < s[b].y));
 }
 
 /* The same turned by 90 degrees, (x', y') = (-y, x): top to bottom, for
  * vertical merges (Oishi and Sugihara, section 3.2: "rotate the algorithm"). */
 static inline bool lex_less_rotated(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
-    return s[a].y > s[b].y || (s[a].y == s[b].y && s[a].x < s[b].x);
+    return (s[a].y > s[b].y) || ((s[a].y == s[b].y) && (s[a].x < s[b].x));
 }
 
 /* Axis 0: lex_less; axis 1: lex_less_rotated. */
@@ -192,12 +192,12 @@ static inline unsigned find(const vor_index_t v[3], vor_index_t x)
 /* The vertex among decoded vertices v that is neither a nor c. */
 static inline vor_index_t third(const vor_index_t v[3], vor_index_t a, vor_index_t c)
 {
-    return (v[0] != a && v[0] != c) ? v[0] : (v[1] != a && v[1] != c) ? v[1] : v[2];
+    return ((v[0] != a) && (v[0] != c)) ? v[0] : ((v[1] != a) && (v[1] != c)) ? v[1] : v[2];
 }
 
 static bool is_home(const builder_t *b, vor_index_t slot, vor_index_t v)
 {
-    return slot == v && v < b->d->max_sites;
+    return (slot == v) && (v < b->d->max_sites);
 }
 
 /* Flips the edge opposite vertex i1 of the triangle in slot s1 = (a, b, c)
@@ -249,7 +249,7 @@ static bool has_edge(const builder_t *b, vor_index_t p, vor_index_t q)
         if (i == 3u) {
             return true; /* only on a corrupted mesh: refuse the edge */
         }
-        if (v[vor__next(i)] == q || v[vor__prev(i)] == q) {
+        if ((v[vor__next(i)] == q) || v[vor__prev(i)] == q) {
             return true;
         }
         slot = t->n[vor__next(i)];
@@ -306,7 +306,7 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
     e->length = 1;
     /* the next ghost (w, x, inf) lies across (w, inf) from (a, w, inf) */
     vor_index_t slot = tri[g].n[vor__next(i)];
-    while (slot != g && e->length < b->bound) {
+    while ((slot != g) && (e->length < b->bound)) {
         const vor__tri_t *t = &tri[slot];
         vor__vertices(t, v);
         i = find(v, VOR__INFINITE);
@@ -368,7 +368,7 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
         /* C4: the F end stays between R1 and L1 (clockwise), the S end
          * between L2 and R2 (counterclockwise); C5: no move back. The
          * move counts bound the walks if the hulls are not convex. */
-        if (g1 != VOR__NONE && l != l_stop && moves1 < f_hull) {
+        if (g1 != VOR__NONE && (l != l_stop) && (moves1 < f_hull)) {
             vor__vertices(&tri[g1], v);
             unsigned i = find(v, l);
             vor_index_t w = v[vor__next(i)];
@@ -379,7 +379,7 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
                 continue;
             }
         }
-        if (g2 != VOR__NONE && r != r_stop && moves2 < s_hull) {
+        if (g2 != VOR__NONE && (r != r_stop) && (moves2 < s_hull)) {
             vor__vertices(&tri[g2], v);
             unsigned i = find(v, r);
             vor_index_t u = v[vor__prev(i)];
@@ -515,7 +515,7 @@ static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t
      * where the segment (r, e) crosses (l, c) and no line could separate
      * F from S (mirrored for F). Its test is skipped. */
     bool l_still_valid = false, r_still_valid = false;
-    uint32_t steps_left = 4u * b->bound + 16u, advances = 0;
+    uint32_t steps_left = (4u * b->bound) + 16u, advances = 0;
     while (steps_left-- > 0u) {
         bool lvalid, rvalid; /* the candidates above the base */
         vor_index_t c1 = delete_side(b, tri[cap].n[ir], true, l, r, l_still_valid, &lvalid);
@@ -674,7 +674,7 @@ static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_inde
 /* The size of the x-split's next leaf when `left` sites remain. */
 static inline uint32_t leaf_size(uint32_t left)
 {
-    return (left <= 2u || left == 4u) ? ((left == 1u) ? 1u : 2u) : 3u;
+    return ((left <= 2u) || (left == 4u)) ? ((left == 1u) ? 1u : 2u) : 3u;
 }
 
 VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
@@ -683,7 +683,7 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
     struct pending stack[SPLIT_STACK];
     unsigned top = 0;
     uint32_t pos = 0;
-    for (uint32_t i = 0; pos < v || top > 1u; i++) {
+    for (uint32_t i = 0; (pos < v) || (top > 1u); i++) {
         if (pos < v) {
             VOR_ASSERT(top < SPLIT_STACK);
             uint32_t size = leaf_size(v - pos);
@@ -701,7 +701,7 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
             top++;
         }
         /* merge pairs of equal size; once every leaf is in, all pairs */
-        for (uint32_t c = i + 1u; top > 1u && (pos == v || (c & 1u) == 0u); c >>= 1) {
+        for (uint32_t c = i + 1u; (top > 1u) && ((pos == v) || (c & 1u) == 0u); c >>= 1) {
             b->by_line = false;
             b->split = stack[top - 1u].least;
             stack[top - 2u].part = merge(b, stack[top - 2u].part, stack[top - 1u].part, 0);
@@ -722,7 +722,7 @@ VOR__ALWAYS_INLINE uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32
     for (uint32_t i = 0; i < count; i++) {
         vor_index_t s = ids[i];
         vor_index_t first = (m > 0u) ? ids[m - 1u] : s;
-        if (m > 0u && p[s].x == p[first].x && p[s].y == p[first].y) {
+        if ((m > 0u) && (p[s].x == p[first].x) && (p[s].y == p[first].y)) {
             vor__tri_fresh(&b->tri[s]); /* a duplicate's home slot stays empty */
             b->tri[s].n[0] = VOR__NONE;
         } else {
@@ -835,10 +835,10 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
     uint32_t pos = 0;
     for (;;) {
         uint32_t end = pos;
-        while (end < count && in_square(&p[ids[end]], ox, oy, s)) {
+        while ((end < count) && in_square(&p[ids[end]], ox, oy, s)) {
             end++;
         }
-        if (end - pos > CROWDED && s > 0u && level + 1u < CROWDED_LEVELS) {
+        if (((end - pos) > CROWDED) && (s > 0u) && ((level + 1u) < CROWDED_LEVELS)) {
             /* split it and go on with its first child */
             s--;
             int64_t side = (int64_t)vor__shl_u64(1u, s);
@@ -859,7 +859,7 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
             }
             int64_t side = (int64_t)vor__shl_u64(1u, s);
             unsigned c = child[level];
-            if (c == 0u || c == 2u) {
+            if ((c == 0u) || (c == 2u)) {
                 if (c == 0u) {
                     bottom[level] = part;
                 } else {
@@ -946,18 +946,18 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
     uint32_t pos = 0;
     for (uint32_t c = from_cell; c < to_cell; c++) {
         uint32_t end = pos;
-        while (end < n && vor__grid_z(d, ids[end], k, b->square) == c) {
+        while ((end < n) && vor__grid_z(d, ids[end], k, b->square) == c) {
             end++;
         }
         /* sites are numbered in input order, so the next buckets' sites
          * and home slots lie anywhere in the arena */
-        for (uint32_t ahead = end; VOR__PREFETCHING && ahead < end + 4u && ahead + 12u < n;
+        for (uint32_t ahead = end; VOR__PREFETCHING && (ahead < (end + 4u)) && ((ahead + 12u) < n);
              ahead++) {
             VOR__PREFETCH(&d->sites[ids[ahead + 12u]]);
             VOR__PREFETCH(&b->tri[ids[ahead + 12u]]);
         }
         /* each bucket is sorted and built while its sites are in the cache */
-        vor_index_t part = (end - pos > CROWDED) ? build_crowded(b, ids + pos, end - pos)
+        vor_index_t part = ((end - pos) > CROWDED) ? build_crowded(b, ids + pos, end - pos)
                                                  : build_sites(b, ids + pos, end - pos);
         pos = end;
         /* the children of one square are the squares of side 2^(k -
@@ -969,7 +969,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
                 break;
             }
             unsigned side_log = k - level;
-            uint32_t z0 = (c >> (2u * side_log + 2u)) << (2u * side_log + 2u);
+            uint32_t z0 = (c >> ((2u * side_log) + 2u)) << ((2u * side_log) + 2u);
             unsigned child = (c >> (2u * side_log)) & 3u;
             if (child == 0u) {
                 bottom[level] = part;
@@ -1021,9 +1021,9 @@ static uint32_t box_cells(const vor_t *d, const vor__grid_square_t *square, unsi
 VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
 {
     vor__grid_square(b->d, true, b->square);
-    while (b->k + 1u < QUADTREE_LEVELS &&
+    while ((b->k + 1u) < QUADTREE_LEVELS &&
            vor__shl_u64(box_cells(b->d, b->square, b->k), 3u) <= n &&
-           vor__shl_u64(1u, 2u * (b->k + 1u)) <= 2u * (uint64_t)n) {
+           vor__shl_u64(1u, 2u * (b->k + 1u)) <= (2u * (uint64_t)n)) {
         b->k++;
     }
     vor__grid_sort(b->d, n, b->k, b->square, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
@@ -1052,7 +1052,7 @@ static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate
     b->line = 0;
     b->k = 0;
     b->square = square;
-    b->bound = 2u * n + 2u;
+    b->bound = (2u * n) + 2u;
 }
 
 /* What both entry points do first: the checks and vor__build_start (a
@@ -1069,7 +1069,7 @@ VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, 
                              enum vor_dc_split split, uint32_t *duplicate_of,
                              vor__grid_square_t *square, vor_index_t **ids)
 {
-    if (split != VOR_DC_QUADTREE && split != VOR_DC_XSPLIT) {
+    if ((split != VOR_DC_QUADTREE) && (split != VOR_DC_XSPLIT)) {
         return VOR_ERR_ARG;
     }
     int status = vor__build_start(d, points, n, duplicate_of);
@@ -1096,7 +1096,7 @@ static void all_ids(vor_index_t *ids, uint32_t n)
 VOR__ALWAYS_INLINE void build_all(builder_t *b, vor_index_t *ids, uint32_t n,
                                   enum vor_dc_split split)
 {
-    if (split == VOR_DC_QUADTREE && n >= 8u) {
+    if ((split == VOR_DC_QUADTREE) && (n >= 8u)) {
         group_by_bucket(b, ids, n);
         (void)build_quadtree(b, ids, n, 0, 1u << (2u * b->k));
     } else {
@@ -1169,7 +1169,7 @@ static uint32_t xsplit_first_part(uint32_t m)
         pos += leaf_size(m - pos);
     }
     uint32_t first = 1;
-    while (2u * first < leaves) {
+    while ((2u * first) < leaves) {
         first *= 2u;
     }
     uint32_t sites = 0;
@@ -1204,9 +1204,9 @@ static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, 
  * are empty. */
 static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count, uint32_t gap)
 {
-    for (uint32_t slot = 0; slot < n + count; slot++) {
-        uint32_t at = (slot < n) ? slot : from + (slot - n);
-        vor__tri_t *t = &tri[(slot < n) ? at : at - gap];
+    for (uint32_t slot = 0; slot < (n + count); slot++) {
+        uint32_t at = (slot < n) ? slot : (from + (slot - n));
+        vor__tri_t *t = &tri[(slot < n) ? at : (at - gap)];
         if (slot >= n) { /* field by field: no memmove */
             const vor__tri_t *old = &tri[at];
             for (unsigned i = 0; i < sizeof t->v / sizeof t->v[0]; i++) {
@@ -1219,7 +1219,7 @@ static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count
             continue;
         }
         for (unsigned i = 0; i < 3u; i++) {
-            if ((uint32_t)t->n[i] - from < count) {
+            if (((uint32_t)t->n[i] - from) < count) {
                 t->n[i] = (vor_index_t)(t->n[i] - gap);
             }
         }
@@ -1274,7 +1274,7 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
         count = sort_distinct(b, ids, n);
         n_a = xsplit_first_part(count);
     }
-    if (n_a < 3u || count - n_a < 3u) { /* one side (nearly) empty: no fork */
+    if ((n_a < 3u) || (count - n_a) < 3u) { /* one side (nearly) empty: no fork */
         if (split == VOR_DC_QUADTREE) {
             (void)build_quadtree(b, ids, n, 0, cells);
         } else {
@@ -1298,10 +1298,10 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
         builder_init(&x->b, d, n, b->duplicate_of, HALF_STATS(x), (h == 0u) ? d->max_sites : gap_end,
                      b->square);
         x->b.k = b->k;
-        x->ids = (h == 0u) ? ids_a : ids + n_a;
-        x->count = (h == 0u) ? n_a : count - n_a;
-        x->from_cell = (h == 0u) ? 0u : cells >> 1;
-        x->to_cell = (h == 0u) ? cells >> 1 : cells;
+        x->ids = (h == 0u) ? ids_a : (ids + n_a);
+        x->count = (h == 0u) ? n_a : (count - n_a);
+        x->from_cell = (h == 0u) ? 0u : (cells >> 1);
+        x->to_cell = (h == 0u) ? (cells >> 1) : cells;
         x->part = VOR__NONE;
     }
     half_t *a = &half[0], *s = &half[1];
@@ -1317,7 +1317,7 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     uint32_t gap = gap_end - a->b.next_extra;
     if (gap > 0u) {
         close_gap(b->tri, n, gap_end, used_b, gap);
-        if ((uint32_t)s->part - gap_end < used_b) { /* B's part is one of its ghosts */
+        if (((uint32_t)s->part - gap_end) < used_b) { /* B's part is one of its ghosts */
             s->part = (vor_index_t)(s->part - gap);
         }
     }
@@ -1358,11 +1358,11 @@ VOR__ALWAYS_INLINE int build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
     faults = d->fault_rate != 0u; /* one fault sequence: one core */
 #endif
     uint32_t fork_min = VOR_DC_FORK_MIN_SITES_DEFAULT;
-    if (hook != NULL && options != NULL && options->fork_min_sites != 0u) {
+    if ((hook != NULL) && (options != NULL) && (options->fork_min_sites != 0u)) {
         fork_min = (options->fork_min_sites > FORK_MIN_SITES_LEAST) ? options->fork_min_sites
                                                                     : FORK_MIN_SITES_LEAST;
     }
-    if (hook == NULL || n < fork_min || faults) {
+    if ((hook == NULL) || (n < fork_min) || faults) {
         build_all(&b, ids, n, split);
     } else {
         build_forked(&b, ids, n, split, hook);
@@ -1381,7 +1381,7 @@ int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
                         const vor_build_options_t *options, uint32_t *duplicate_of,
                         const vor_fork_join_t *hook)
 {
-    if (hook != NULL && (hook->fork == NULL || hook->join == NULL)) {
+    if ((hook != NULL) && ((hook->fork == NULL) || (hook->join == NULL))) {
         return VOR_ERR_ARG;
     }
     return build_dc(d, points, n, options, duplicate_of, hook);

@@ -39,7 +39,7 @@
 
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 {
-    return slot == v && v < d->max_sites;
+    return (slot == v) && (v < d->max_sites);
 }
 
 /* In triangle `slot`, points the link that pointed at `from` at `to`. */
@@ -111,7 +111,7 @@ static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t st
             break;
         }
         vor__vertices(&tri[slot], v);
-        if (v[0] == b || v[1] == b || v[2] == b) {
+        if ((v[0] == b) || (v[1] == b) || (v[2] == b)) {
             return true;
         }
     }
@@ -151,7 +151,7 @@ static bool guard_blocks(const vor_t *d, vor_index_t a, vor_index_t c, vor_index
 static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t b,
                             vor_index_t c, vor_index_t after)
 {
-    if (a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE &&
+    if (a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE) &&
         vor__orient(d, a, b, c) <= 0) {
         return false;
     }
@@ -195,7 +195,7 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
      * which keeps only one of the last three slots. */
     vor_index_t ear = s1, star = s2;
     if (!is_home(d, s2, p) && !is_home(d, s1, b) &&
-        (is_home(d, s1, p) || is_home(d, s2, b) || s2 < d->max_sites)) {
+        (is_home(d, s1, p) || is_home(d, s2, b) || (s2 < d->max_sites))) {
         ear = s2;
         star = s1;
     }
@@ -235,12 +235,12 @@ static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first
     bool skipping = after != VOR__NONE;
     vor_index_t slot = first;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (!skipping && slot < d->max_sites && slot != cur &&
+        if (!skipping && (slot < d->max_sites) && (slot != cur) &&
             vor__marked(&tri[slot]) == want_marked &&
             (!want_marked || vor__vertex(&tri[slot], 0) == cur)) {
             return slot;
         }
-        skipping = skipping && slot != after;
+        skipping = skipping && (slot != after);
         slot = star_next(tri, slot, cur);
         if (slot == first) {
             break;
@@ -279,9 +279,9 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
     vor__tri_t *tri = d->triangles;
     vor_index_t cur = h, after = VOR__NONE, packed = VOR__NONE;
     /* each step marks a site or goes back up the tree: 2 v steps */
-    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u && packed == VOR__NONE; left--) {
+    for (uint32_t left = (2u * d->vertex_count) + 2u; (left > 0u) && (packed == VOR__NONE); left--) {
         vor_index_t first = (cur == h) ? start : cur, slot = first;
-        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && turn > 0u; turn--) {
+        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && (turn > 0u); turn--) {
             if (slot >= d->max_sites) {
                 packed = slot; /* cur's triangle in a packed slot: the path ends */
                 break;
@@ -309,7 +309,7 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
     }
     /* clear the marks: the same tree, each site unmarked on the way back */
     vor_index_t at = h, back = VOR__NONE;
-    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u; left--) {
+    for (uint32_t left = (2u * d->vertex_count) + 2u; left > 0u; left--) {
         vor_index_t child = next_child(d, at, (at == h) ? start : at, back, true);
         if (child != VOR__NONE) {
             at = child;
@@ -329,7 +329,7 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
     /* shift along the path from its end, slot h (empty) as the spare:
      * slot r takes what P holds, P takes r's triangle (its first vertex
      * is r's parent); at most one step per site */
-    for (uint32_t left = d->vertex_count; cur != h && left > 0u; left--) {
+    for (uint32_t left = d->vertex_count; (cur != h) && (left > 0u); left--) {
         vor_index_t parent = vor__vertex(&tri[cur], 0);
         move_triangle(tri, cur, h);
         move_triangle(tri, packed, cur);
@@ -372,7 +372,7 @@ typedef struct {
 
 static inline uint32_t wrap(uint32_t i, uint32_t deg)
 {
-    return (i >= deg) ? i - deg : i; /* i < 2 deg */
+    return (i >= deg) ? (i - deg) : i; /* i < 2 deg */
 }
 
 /* Is the ear (nb[i], nb[i + 1], nb[i + 2]) a triangle of the triangulation
@@ -385,7 +385,7 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
 {
     uint32_t deg = st->deg;
     vor_index_t a = st->nb[i], b = st->nb[wrap(i + 1u, deg)], c = st->nb[wrap(i + 2u, deg)];
-    bool finite = a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE;
+    bool finite = a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE);
     if (finite && vor__orient(d, a, b, c) <= 0) {
         return false;
     }
@@ -396,12 +396,12 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
     /* the other deg - 3 neighbours at offsets 3, deg - 1, 4, deg - 2, ..
      * from the ear's first; one call site each for the two tests keeps
      * the stack frame small */
-    for (uint32_t t = 0; t + 3u < deg; t++) {
-        vor_index_t y = st->nb[wrap(i + ((t & 1u) ? deg - 1u - t / 2u : 3u + t / 2u), deg)];
+    for (uint32_t t = 0; (t + 3u) < deg; t++) {
+        vor_index_t y = st->nb[wrap(i + ((t & 1u) ? (deg - 1u - (t / 2u)) : (3u + (t / 2u))), deg)];
         if (y == VOR__INFINITE) {
             continue; /* infinity lies in no circle of finite sites */
         }
-        if (finite ? vor__incircle(d, a, b, c, y) > 0 : vor__orient(d, u, w, y) > 0) {
+        if (finite ? (vor__incircle(d, a, b, c, y) > 0) : vor__orient(d, u, w, y) > 0) {
             return false;
         }
     }
@@ -455,13 +455,13 @@ static uint32_t star_cut(vor_t *d, vor_index_t p, star_t *st, uint32_t i)
 {
     uint32_t j = wrap(i + 1u, st->deg);
     st->sl[i] = cut_ear(d, p, st->sl[i], st->sl[j]);
-    for (uint32_t k = j; k + 1u < st->deg; k++) {
+    for (uint32_t k = j; (k + 1u) < st->deg; k++) {
         st->nb[k] = st->nb[k + 1u];
         st->sl[k] = st->sl[k + 1u];
     }
     st->deg--;
-    uint32_t at = (j == 0u) ? i - 1u : i; /* the new star triangle */
-    return (at == 0u) ? st->deg - 1u : at - 1u;
+    uint32_t at = (j == 0u) ? (i - 1u) : i; /* the new star triangle */
+    return (at == 0u) ? (st->deg - 1u) : (at - 1u);
 }
 
 /* The ear of a star of four or more to cut: the first Delaunay ear from
@@ -475,7 +475,7 @@ static uint32_t star_choose(vor_t *d, const star_t *st, uint32_t from)
     uint32_t deg = st->deg;
     if (deg == 4u) {
         uint32_t i = star_ear_ok(d, st, 0) ? 0u : 1u;
-        return star_guarded(d, st, i) ? i : 1u - i;
+        return star_guarded(d, st, i) ? i : (1u - i);
     }
     for (uint32_t k = 0; k < deg; k++) {
         uint32_t i = wrap(from + k, deg);
@@ -509,11 +509,11 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         do {
             degree++;
             slot = star_next(tri, slot, p);
-        } while (slot != p && degree <= d->vertex_count);
+        } while ((slot != p) && (degree <= d->vertex_count));
         while (degree > STAR_MAX) {
             vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
             slot = s1;
-            for (uint32_t k = 0; k < degree && chosen == VOR__NONE; k++) {
+            for (uint32_t k = 0; (k < degree) && (chosen == VOR__NONE); k++) {
                 vor_index_t s2 = star_next(tri, slot, p), a, b, c;
                 star_edge(tri, slot, p, &a, &b);
                 star_edge(tri, s2, p, &b, &c);
@@ -535,7 +535,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         }
         star_load(d, p, s1, &st);
     }
-    for (unsigned k = 0; VOR__PREFETCHING && k < 3u; k++) {
+    for (unsigned k = 0; VOR__PREFETCHING && (k < 3u); k++) {
         VOR__PREFETCH(&tri[tail->n[k]]);
     }
     /* each cut removes one neighbour: deg - 3 cuts */
@@ -582,7 +582,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
 
 int vor_remove(vor_t *d, uint32_t site)
 {
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     vor__tri_t *tri = d->triangles;
@@ -596,7 +596,7 @@ int vor_remove(vor_t *d, uint32_t site)
         vor__vertices(&tri[p], v);
         unsigned i = corner(&tri[p], p);
         vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
-        if (a == VOR__INFINITE || b == VOR__INFINITE) {
+        if (a == VOR__INFINITE || (b == VOR__INFINITE)) {
             /* p's home holds a triangle at infinity; its finite triangle
              * is across the hull edge and holds both others */
             const vor__tri_t *f = &tri[tri[p].n[corner(&tri[p], VOR__INFINITE)]];
@@ -611,7 +611,7 @@ int vor_remove(vor_t *d, uint32_t site)
         const vor__tri_t *t = &tri[p];
         for (unsigned i = 0; i < 3u; i++) { /* the other finite vertex */
             vor_index_t v = vor__vertex(t, i);
-            other = (v != p && v != VOR__INFINITE) ? v : other;
+            other = ((v != p) && (v != VOR__INFINITE)) ? v : other;
         }
         vor__tri_fresh(&tri[other]);
         tri[other].n[0] = VOR__NONE; /* one site has no triangles */
@@ -649,10 +649,10 @@ static bool star_still_delaunay(vor_t *d, vor_index_t p, vor_index_t *twin)
     vor__star_begin(d, p, &s);
     *twin = VOR__NONE;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (s.x != VOR__INFINITE && d->sites[s.x].x == at->x && d->sites[s.x].y == at->y) {
+        if (s.x != VOR__INFINITE && (d->sites[s.x].x == at->x) && (d->sites[s.x].y == at->y)) {
             *twin = s.x;
         }
-        if (s.x != VOR__INFINITE && s.y != VOR__INFINITE && vor__orient(d, p, s.x, s.y) <= 0) {
+        if (s.x != VOR__INFINITE && (s.y != VOR__INFINITE) && vor__orient(d, p, s.x, s.y) <= 0) {
             return false;
         }
         if (s.far != VOR__INFINITE && vor__conflicts(d, s.v[0], s.v[1], s.v[2], s.far)) {
@@ -674,7 +674,7 @@ static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
     vor_index_t v[3], found = p;
     vor__vertices(&d->triangles[p], v);
     for (unsigned i = 0; i < 3u; i++) {
-        found = (v[i] != p && v[i] != VOR__INFINITE) ? v[i] : found;
+        found = ((v[i] != p) && (v[i] != VOR__INFINITE)) ? v[i] : found;
     }
     return found;
 }
@@ -713,7 +713,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     uint32_t twin = VOR__NONE;
     if (d->vertex_count == 2u) { /* the other site is the only neighbour */
         uint32_t other = any_neighbour(d, (vor_index_t)site);
-        twin = (d->sites[other].x == x && d->sites[other].y == y) ? other : VOR__NONE;
+        twin = ((d->sites[other].x == x) && (d->sites[other].y == y)) ? other : VOR__NONE;
     }
     /* the common small step first: the same triangles at the new place.
      * In test builds the tests count, restored if the move fails. */
@@ -722,17 +722,17 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     s->x = x;
     s->y = y;
     vor_index_t star_twin = VOR__NONE;
-    bool same_triangles = d->vertex_count <= 2u || star_still_delaunay(d, (vor_index_t)site,
+    bool same_triangles = (d->vertex_count <= 2u) || star_still_delaunay(d, (vor_index_t)site,
                                                                        &star_twin);
     twin = (star_twin != VOR__NONE) ? star_twin : twin;
     *s = old;
-    if (!same_triangles && d->vertex_count >= 3u) {
+    if (!same_triangles && (d->vertex_count >= 3u)) {
         /* a site at (x, y) is the nearest site to it (a read-only query
          * from the bucket grid) */
         uint32_t nearest;
         vor_point_t q = {x, y};
-        if (vor_nearest(d, q, VOR_NO_HINT, &nearest) == VOR_OK && d->sites[nearest].x == x &&
-            d->sites[nearest].y == y) {
+        if ((vor_nearest(d, q, VOR_NO_HINT, &nearest) == VOR_OK) && (d->sites[nearest].x == x) &&
+            (d->sites[nearest].y == y)) {
             twin = nearest;
         }
     }
@@ -766,12 +766,12 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
 
 int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
 {
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     int32_t x = p.x, y = p.y;
     const vor_point_t *s = &d->sites[site];
-    if (s->x == x && s->y == y) {
+    if ((s->x == x) && (s->y == y)) {
         return VOR_OK;
     }
     if (vor__motion_fast(d, site, x, y)) {

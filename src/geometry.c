@@ -233,7 +233,7 @@ static int64_t floor_quotient(vor__limb *rest, vor__limb *step, size_t n, unsign
     bool negative, exact;
     if (!divide(rest, step, n, bits, &quotient, &negative, &exact)) {
         int64_t saturated = (int64_t)vor__shl_u64(1u, bits);
-        return negative ? -saturated - 1 : saturated;
+        return negative ? (-saturated - 1) : saturated;
     }
     /* floor of a negative quotient: -ceil(|n| / d) */
     return negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
@@ -316,7 +316,7 @@ int vor_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, vor_vertex_t *
 int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_vertex_t *out)
 {
     /* a removed site's or a duplicate's coordinates are no site's */
-    if (d == NULL || out == NULL || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b) ||
+    if ((d == NULL) || (out == NULL) || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b) ||
         !vor__site_in_mesh(d, c)) {
         return VOR_ERR_ARG;
     }
@@ -377,7 +377,7 @@ static uint32_t third_vertex(const vor__tri_t *t, uint32_t p, uint32_t q)
     vor_index_t v[3];
     vor__vertices(t, v);
     for (unsigned i = 0; i < 2u; i++) {
-        if (v[i] != p && v[i] != q) {
+        if ((v[i] != p) && (v[i] != q)) {
             return v[i];
         }
     }
@@ -448,7 +448,7 @@ int vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
 int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
 {
     /* a zeroed iterator, or one begun on no diagram, is at its end */
-    if (it == NULL || it->d == NULL || edge == NULL) {
+    if ((it == NULL) || (it->d == NULL) || (edge == NULL)) {
         return 0;
     }
     const vor_t *d = it->d;
@@ -465,14 +465,14 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
         unsigned first = (slot == it->slot) ? it->edge : 0u;
         for (unsigned i = first; i < 3u; i++) {
             uint32_t p = v[vor__next(i)], q = v[vor__prev(i)], l = v[i];
-            if (p == VOR__INFINITE || q == VOR__INFINITE) {
+            if (p == VOR__INFINITE || (q == VOR__INFINITE)) {
                 continue;
             }
             uint32_t other = t->n[i];
             uint32_t r = third_vertex(&d->triangles[other], p, q);
             /* each edge once: from its finite side, or the smaller slot */
             bool ghost_here = l == VOR__INFINITE, ghost_there = r == VOR__INFINITE;
-            if (ghost_here != ghost_there ? ghost_here : other < slot) {
+            if ((ghost_here != ghost_there) ? ghost_here : (other < slot)) {
                 continue;
             }
             bool has_start, has_end;
@@ -564,7 +564,7 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     ghost_edge(d, g, &w, &u, &next);
     uint32_t second = u;
     it->collinear = 1;
-    for (uint32_t step = 0; step < d->vertex_count && it->collinear; step++) {
+    for (uint32_t step = 0; (step < d->vertex_count) && it->collinear; step++) {
         ghost_edge(d, next, &w, &u, &next);
         if (vor__orient2d_sign(&s[low], &s[second], &s[u]) != 0) {
             it->collinear = 0;
@@ -575,14 +575,14 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     }
     it->site = it->first = low;
     /* collinear: every site once, up the line; else back to the start */
-    it->left = it->collinear ? d->vertex_count : d->vertex_count + 1u;
+    it->left = it->collinear ? d->vertex_count : (d->vertex_count + 1u);
     return VOR_OK;
 }
 
 int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
 {
     /* a zeroed iterator, or one begun on no diagram, is at its end */
-    if (it == NULL || it->d == NULL || site == NULL) {
+    if ((it == NULL) || (it->d == NULL) || (site == NULL)) {
         return 0;
     }
     const vor_t *d = it->d;
@@ -604,7 +604,7 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     vor_neighbour_iter_t ni;
     (void)vor_neighbours_begin(&ni, d, it->site); /* a hull site: in the mesh */
     while (vor_neighbours_next(&ni, &n)) {
-        if (n != u && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
+        if ((n != u) && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
             vor__strictly_between(&s[it->site], &s[n], &s[u]) &&
             (best == VOR__NONE || vor__strictly_between(&s[it->site], &s[n], &s[best]))) {
             best = n;
@@ -616,7 +616,7 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
         it->site = u;
         it->ghost = next;
     }
-    if (!it->collinear && it->site == it->first) {
+    if (!it->collinear && (it->site == it->first)) {
         it->left = 0;
     }
     return 1;
@@ -654,13 +654,13 @@ static void make_line(const cell_t *c, uint32_t name, geo_line_t *l)
  * normal. */
 static unsigned quadrant(int64_t x, int64_t y)
 {
-    if (x >= 0 && y < 0) {
+    if ((x >= 0) && (y < 0)) {
         return 0;
     }
-    if (x > 0 && y >= 0) {
+    if ((x > 0) && (y >= 0)) {
         return 1;
     }
-    if (x <= 0 && y > 0) {
+    if ((x <= 0) && (y > 0)) {
         return 2;
     }
     return 3;
@@ -845,7 +845,7 @@ static void confirm(emitter_t *e, int index)
 static int scratch(const emitter_t *e)
 {
     int i = 0;
-    while (i == e->first || i == e->last) {
+    while ((i == e->first) || (i == e->last)) {
         i++;
     }
     return i;
@@ -857,7 +857,7 @@ static void emit(emitter_t *e, uint32_t a, uint32_t b)
     int i = scratch(e);
     e->names[i][0] = a;
     e->names[i][1] = b;
-    if (e->last >= 0 && same_point(e, e->last, &e->pool[i])) {
+    if ((e->last >= 0) && same_point(e, e->last, &e->pool[i])) {
         return;
     }
     if (e->first < 0) {
@@ -904,18 +904,18 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
                 return;
             }
         } else if (g > 0) {
-            if (hi_name == NO_LINE || side_of(&line, &hi) > 0) {
+            if ((hi_name == NO_LINE) || side_of(&line, &hi) > 0) {
                 hi_name = bounds[k];
                 intersect(&hi, &edge, &line);
             }
-        } else if (lo_name == NO_LINE || side_of(&line, lo) > 0) {
+        } else if ((lo_name == NO_LINE) || side_of(&line, lo) > 0) {
             lo_name = bounds[k];
             intersect(lo, &edge, &line);
         }
     }
     /* two opposite box sides are never both parallel to a line */
     VOR_ASSERT(lo_name != NO_LINE && hi_name != NO_LINE);
-    if (lo_name == NO_LINE || hi_name == NO_LINE) {
+    if ((lo_name == NO_LINE) || (hi_name == NO_LINE)) {
         return;
     }
     make_line(c, hi_name, &line);
@@ -969,7 +969,7 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
         emit_side(&e, next_side);
         add_held_vertex(sum);
     }
-    if (e.last >= 0 && e.last != e.first && !same_point(&e, e.first, &e.pool[e.last])) {
+    if ((e.last >= 0) && (e.last != e.first) && !same_point(&e, e.first, &e.pool[e.last])) {
         confirm(&e, e.last);
         add_held_vertex(sum);
     }
@@ -995,11 +995,11 @@ static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t
 int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
              uint32_t capacity, uint32_t *count)
 {
-    if (d == NULL || box == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
-        box->x0 > box->x1 || box->y0 > box->y1 || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || (box == NULL) || (count == NULL) || ((vertices == NULL) && (capacity > 0u)) ||
+        (box->x0 > box->x1) || (box->y0 > box->y1) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
-    if (box->x0 == box->x1 || box->y0 == box->y1) {
+    if ((box->x0 == box->x1) || (box->y0 == box->y1)) {
         *count = 0;
         return VOR_OK;
     }
@@ -1007,7 +1007,7 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
     begin_cell(&c, d, site, box);
     /* at most one vertex per neighbour and per box side: write at once
      * when that fits, else count first */
-    if (capacity < c.degree + 4u) {
+    if (capacity < (c.degree + 4u)) {
         uint32_t needed = trace(&c, NULL, NULL);
         if (needed > capacity) {
             *count = needed;
@@ -1026,7 +1026,7 @@ int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
     it->next_site = 0;
     it->error = VOR_OK;
     it->box.x0 = it->box.y0 = it->box.x1 = it->box.y1 = 0;
-    if (d == NULL || box == NULL || box->x0 > box->x1 || box->y0 > box->y1) {
+    if ((d == NULL) || (box == NULL) || (box->x0 > box->x1) || (box->y0 > box->y1)) {
         it->d = NULL; /* closed */
         it->error = VOR_ERR_ARG;
         return VOR_ERR_ARG;
@@ -1042,15 +1042,15 @@ int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, uint32_t capacity,
                    uint32_t *count)
 {
-    if (it == NULL || it->d == NULL) {
+    if ((it == NULL) || (it->d == NULL)) {
         return 0; /* a zeroed iterator, or a closed one */
     }
     const vor_t *d = it->d;
-    if (site == NULL || count == NULL || (vertices == NULL && capacity > 0u)) {
+    if ((site == NULL) || (count == NULL) || ((vertices == NULL) && (capacity > 0u))) {
         it->error = VOR_ERR_ARG;
         return 0;
     }
-    while (it->next_site < d->site_count && !vor__site_in_mesh(d, it->next_site)) {
+    while ((it->next_site < d->site_count) && !vor__site_in_mesh(d, it->next_site)) {
         it->next_site++;
     }
     if (it->next_site >= d->site_count) {
@@ -1117,7 +1117,7 @@ struct centroid_sum {
 #define MAX_SUM_VERTICES (1u << 24)
 static size_t sum_limbs(uint32_t j)
 {
-    return ((size_t)j * 130u + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+    return (((size_t)j * 130u) + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
 /* Does scratch of `bytes` hold the sums of a cell of k vertices? Then
@@ -1188,7 +1188,7 @@ static size_t significant(const vor__limb *a, size_t n)
 {
     vor__limb fill = (vor__mw_sign(a, n) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
     size_t m = n;
-    while (m > 1u && a[m - 1u] == fill && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
+    while ((m > 1u) && (a[m - 1u] == fill) && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
         m--;
     }
     return m;
@@ -1242,10 +1242,10 @@ VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
         size_t limbs = significant(sums[i], sum->width);
         widest = (limbs > widest) ? limbs : widest;
     }
-    widest = (before_limbs + TERM_LIMBS > widest + square_limbs) ? before_limbs + TERM_LIMBS
-                                                                 : widest + square_limbs;
+    widest = (before_limbs + TERM_LIMBS > (widest + square_limbs)) ? before_limbs + TERM_LIMBS
+                                                                 : (widest + square_limbs);
     size_t width = sum_limbs(sum->vertices);
-    width = (widest + 1u < width) ? widest + 1u : width;
+    width = ((widest + 1u) < width) ? (widest + 1u) : width;
     widen_sums(sum, width);
 
     /* t and u below 2^165, the cross product below 2^197 */
@@ -1318,7 +1318,7 @@ static void write_centroid(vor_centroid_t *out, const vor_centroid_t *from)
 
 static void add_held_vertex(centroid_sum_t *sum)
 {
-    if (sum != NULL && sum->held) {
+    if ((sum != NULL) && sum->held) {
         sum->held = false;
         add_vertex(sum, &sum->next);
     }
@@ -1336,11 +1336,11 @@ static size_t division_width(const vor__limb *rest, const vor__limb *step, size_
                              unsigned bits)
 {
     size_t m = n;
-    while (m > 1u && step[m - 1u] == 0u) {
+    while ((m > 1u) && (step[m - 1u] == 0u)) {
         m--;
     }
     m += VOR__LIMBS(bits) + 1u;
-    if (m >= n || vor__mw_sign(rest, n) < 0) {
+    if ((m >= n) || vor__mw_sign(rest, n) < 0) {
         return n;
     }
     for (size_t i = m - 1u; i < n; i++) {
@@ -1382,8 +1382,8 @@ static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
 int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void *scratch,
                       size_t scratch_bytes, vor_centroid_t *out)
 {
-    if (d == NULL || box == NULL || out == NULL || (scratch == NULL && scratch_bytes > 0u) ||
-        box->x0 > box->x1 || box->y0 > box->y1 || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || (box == NULL) || (out == NULL) || ((scratch == NULL) && (scratch_bytes > 0u)) ||
+        (box->x0 > box->x1) || (box->y0 > box->y1) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     const vor_point_t *s = &d->sites[site];
@@ -1393,7 +1393,7 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     result.point.y = clamp(s->y, box->y0, box->y1);
     result.area = 0;
     result.vertices = 0;
-    if (box->x0 == box->x1 || box->y0 == box->y1) {
+    if ((box->x0 == box->x1) || (box->y0 == box->y1)) {
         write_centroid(out, &result);
         return VOR_OK;
     }
@@ -1401,7 +1401,7 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     begin_cell(&c, d, site, box);
     /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
-    size_t usable = (scratch_bytes > skip) ? scratch_bytes - skip : 0u, stride;
+    size_t usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u, stride;
     /* at most one vertex per neighbour and per box side: count first only
      * when the scratch might be too small */
     if (!scratch_fits(usable, c.degree + 4u, &stride)) {
@@ -1419,10 +1419,10 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     centroid_sum_t sum;
     sum.area = limbs;
     sum.x = limbs + stride;
-    sum.y = limbs + 2u * stride;
-    sum.before = limbs + 3u * stride;
-    sum.denominator = limbs + 4u * stride;
-    sum.spare = limbs + 5u * stride;
+    sum.y = limbs + (2u * stride);
+    sum.before = limbs + (3u * stride);
+    sum.denominator = limbs + (4u * stride);
+    sum.spare = limbs + (5u * stride);
     sum.width = 0;
     sum.vertices = 0;
     sum.held = false;

@@ -40,7 +40,7 @@
 /* Is slot a home slot of site v (v may be infinity, which has none)? */
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 {
-    return slot == v && v < d->max_sites;
+    return (slot == v) && (v < d->max_sites);
 }
 
 /* ------------------------------------------------------------------ */
@@ -246,7 +246,7 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
 
 static bool same_point(const vor_point_t *a, const vor_point_t *b)
 {
-    return a->x == b->x && a->y == b->y;
+    return (a->x == b->x) && (a->y == b->y);
 }
 
 /* Takes the most recently freed id off the free list (vor_remove puts
@@ -264,18 +264,18 @@ static void take_free_id(vor_t *d)
 
 int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
 {
-    if (d == NULL || (hint != VOR_NO_HINT && !vor__site_in_mesh(d, hint))) {
+    if ((d == NULL) || ((hint != VOR_NO_HINT) && !vor__site_in_mesh(d, hint))) {
         return VOR_ERR_ARG;
     }
     if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
         hint = (d->vertex_count >= 2u) ? vor__grid_start(d, point.x, point.y) : d->last_site;
     }
     bool reused = d->free_site != 0u; /* a removed site's id */
-    if (!reused && d->site_count >= d->max_sites) {
+    if (!reused && (d->site_count >= d->max_sites)) {
         /* no free coordinates slot to locate from: a read-only query
          * tells a duplicate, which needs no slot, from a new site */
         uint32_t nearest;
-        if (vor_nearest(d, point, hint, &nearest) == VOR_OK &&
+        if ((vor_nearest(d, point, hint, &nearest) == VOR_OK) &&
             same_point(&d->sites[nearest], &point)) {
             if (site != NULL) {
                 *site = nearest;
@@ -284,7 +284,7 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
         }
         return VOR_ERR_FULL;
     }
-    uint32_t p = reused ? d->free_site - 1u : d->site_count;
+    uint32_t p = reused ? (d->free_site - 1u) : d->site_count;
     vor__tri_t *tri = d->triangles;
 
     if (d->vertex_count == 0u) {
@@ -369,7 +369,7 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
               const vor_build_options_t *options, uint32_t *duplicate_of)
 {
     enum vor_order order = (options != NULL) ? options->order : VOR_ORDER_QUADTREE;
-    if (order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) {
+    if ((order != VOR_ORDER_QUADTREE) && (order != VOR_ORDER_INPUT)) {
         return VOR_ERR_ARG;
     }
     int status = vor__build_start(d, points, n, duplicate_of);
@@ -383,13 +383,13 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
-    vor_index_t *plan = base + entries - 2u * (size_t)n;
+    vor_index_t *plan = base + entries - (2u * (size_t)n);
     uint32_t distinct = vor__plan(d, n, order, base, plan, duplicate_of);
 
     vor__tri_t *tri = d->triangles;
     for (uint32_t i = 0; i < n; i++) {
-        vor_index_t s = plan[2u * i], from = plan[2u * i + 1u];
-        if (VOR__PREFETCHING && i + 8u < distinct) { /* the memory of the insertion 8 ahead */
+        vor_index_t s = plan[2u * i], from = plan[(2u * i) + 1u];
+        if (VOR__PREFETCHING && ((i + 8u) < distinct)) { /* the memory of the insertion 8 ahead */
             vor_index_t ahead = plan[2u * (i + 8u)], ahead_from = plan[2u * (i + 8u) + 1u];
             VOR__PREFETCH(&d->sites[ahead]);
             VOR__PREFETCH(&tri[ahead]);

@@ -62,7 +62,7 @@ static inline uint32_t vor__grid_cell(int32_t c, int64_t corner, unsigned k, uns
     if (shift < k) {
         return offset << (k - shift); /* < 2^k */
     }
-    return (shift - k < 32u) ? offset >> (shift - k) : 0u;
+    return ((shift - k) < 32u) ? offset >> (shift - k) : 0u;
 }
 
 /* Spreads the low 16 bits of x to the even bit positions. */

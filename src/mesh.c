@@ -14,7 +14,7 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     if (config != VOR_CONFIG_FINGERPRINT) {
         return VOR_ERR_CONFIG; /* *d and the arena are laid out differently */
     }
-    if (d == NULL || arena == NULL || max_sites == 0u || max_sites > VOR_MAX_SITES) {
+    if ((d == NULL) || (arena == NULL) || (max_sites == 0u) || (max_sites > VOR_MAX_SITES)) {
         return VOR_ERR_ARG;
     }
     if (((uintptr_t)arena % VOR_ARENA_ALIGN) != 0u) {
@@ -73,7 +73,7 @@ void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
 int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
                      uint32_t *duplicate_of)
 {
-    if (d == NULL || (points == NULL && n > 0u)) {
+    if ((d == NULL) || ((points == NULL) && (n > 0u))) {
         return VOR_ERR_ARG;
     }
     if (n > d->max_sites) {
@@ -92,7 +92,7 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
     }
     if (n <= 1u) {
         d->vertex_count = n;
-        if (n == 1u && duplicate_of != NULL) {
+        if ((n == 1u) && (duplicate_of != NULL)) {
             duplicate_of[0] = 0;
         }
         return VOR_OK;
@@ -126,7 +126,7 @@ static uint64_t divide(uint64_t numerator, uint64_t denominator)
 int vor_stats(const vor_t *d, vor_stats_t *out)
 {
 #if VOR_STATS
-    if (d == NULL || out == NULL) {
+    if ((d == NULL) || (out == NULL)) {
         return VOR_ERR_ARG;
     }
     vor__stats_copy(out, &d->stats);
@@ -140,12 +140,12 @@ int vor_stats(const vor_t *d, vor_stats_t *out)
 
 int vor_memory(const vor_t *d, vor_memory_t *memory)
 {
-    if (d == NULL || memory == NULL) {
+    if ((d == NULL) || (memory == NULL)) {
         return VOR_ERR_ARG;
     }
     uint32_t triangles = vor__triangle_count(d->vertex_count);
     memory->arena_bytes = VOR_ARENA_BYTES(d->max_sites);
-    uint32_t buckets = (d->vertex_count >= 2u) ? d->bucket_columns * d->bucket_rows : 0u;
+    uint32_t buckets = (d->vertex_count >= 2u) ? (d->bucket_columns * d->bucket_rows) : 0u;
     memory->used_bytes = (size_t)d->site_count * sizeof(vor_point_t) +
                          (size_t)triangles * VOR_TRIANGLE_BYTES +
                          (size_t)buckets * sizeof(vor_index_t);
@@ -154,7 +154,7 @@ int vor_memory(const vor_t *d, vor_memory_t *memory)
     memory->bytes_per_site_x100 =
         (d->site_count == 0u)
             ? 0u
-            : (uint32_t)divide(memory->used_bytes * 100u + d->site_count / 2u,
+            : (uint32_t)divide((memory->used_bytes * 100u) + (d->site_count / 2u),
                                d->site_count); /* size_t: a native multiply */
     return VOR_OK;
 }

@@ -79,11 +79,11 @@ typedef char vor__triangle_size_check[(sizeof(vor__tri_t) == VOR_TRIANGLE_BYTES)
  * analysis quiet at no cost (one compare either way). */
 static inline unsigned vor__next(unsigned i)
 {
-    return (i >= 2u) ? 0u : i + 1u;
+    return (i >= 2u) ? 0u : (i + 1u);
 }
 static inline unsigned vor__prev(unsigned i)
 {
-    return (i == 0u) ? 2u : i - 1u;
+    return (i == 0u) ? 2u : (i - 1u);
 }
 
 static inline vor_index_t vor__vertex(const vor__tri_t *t, unsigned i)
@@ -146,7 +146,7 @@ static inline bool vor__site_in_mesh(const vor_t *d, uint32_t site)
     if (d->vertex_count == 1u) {
         return site == d->last_site;
     }
-    return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
+    return (d->vertex_count >= 2u) && !vor__slot_empty(&d->triangles[site]);
 }
 
 /* In triangle `slot`, points the link across its edge that ends at
@@ -224,9 +224,9 @@ static inline void vor__fan_begin(vor_neighbour_iter_t *it, const vor_t *d, uint
     it->site = site;
     it->slot = site;
     /* no triangles: one site, or a duplicate's id */
-    it->left = (d != NULL && d->vertex_count >= 2u && site < d->site_count &&
+    it->left = ((d != NULL) && (d->vertex_count >= 2u) && (site < d->site_count) &&
                 !vor__slot_empty(&d->triangles[site]))
-                   ? d->vertex_count + 1u
+                   ? (d->vertex_count + 1u)
                    : 0u;
 }
 
@@ -243,7 +243,7 @@ static inline bool vor__fan_next(vor_neighbour_iter_t *it, uint32_t *neighbour, 
         vor_index_t n = vor__vertex(t, vor__next(i));
         *third = vor__vertex(t, vor__prev(i));
         it->slot = t->n[vor__prev(i)];
-        it->left = (it->slot == it->site) ? 0u : it->left - 1u;
+        it->left = (it->slot == it->site) ? 0u : (it->left - 1u);
         if (n != VOR__INFINITE) {
             *neighbour = n;
             return true;
@@ -259,7 +259,7 @@ static inline bool vor__fan_next(vor_neighbour_iter_t *it, uint32_t *neighbour, 
  * the next used slot at or after `slot`, or that end when none is left. */
 static inline uint32_t vor__used_slots_end(const vor_t *d)
 {
-    return d->max_sites + ((d->vertex_count >= 2u) ? d->vertex_count - 2u : 0u);
+    return d->max_sites + ((d->vertex_count >= 2u) ? (d->vertex_count - 2u) : 0u);
 }
 
 static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot)
@@ -279,7 +279,7 @@ static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot)
 /* Slots in use for v sites in the mesh: 2v - 2 for v >= 2, else 0. */
 static inline uint32_t vor__triangle_count(uint32_t vertices)
 {
-    return (vertices >= 2u) ? 2u * vertices - 2u : 0u;
+    return (vertices >= 2u) ? ((2u * vertices) - 2u) : 0u;
 }
 
 /* The first two sites: two triangles at infinity sharing the edge ab

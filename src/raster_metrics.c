@@ -150,7 +150,7 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
     if (IN(bit, METRIC(L1))) {
         vor__mw_u128_set(&k->num, (uint64_t)ax + ay);
     } else if (IN(bit, METRIC(LINF))) {
-        vor__mw_u128_set(&k->num, ax > ay ? ax : ay);
+        vor__mw_u128_set(&k->num, (ax > ay) ? ax : ay);
     } else if (IN(bit, METRIC(LP))) {
         if (m->lp_narrow) {
             vor__mw_u128_t x_power, y_power;
@@ -185,7 +185,7 @@ VOR__ALWAYS_INLINE void elliptic_form(vor__mw_u128_t *r, const vor_raster_sites_
     vor__mw_u128_mul(&sum, vor__mul_u32(ax, ax), (uint32_t)s->form_a);
     vor__mw_u128_mul(&term, vor__mul_u32(ay, ay), (uint32_t)s->form_c);
     vor__mw_u128_add(&sum, &sum, &term);
-    if (s->form_b != 0 && ax != 0u && ay != 0u) {
+    if ((s->form_b != 0) && (ax != 0u) && (ay != 0u)) {
         /* |b| < 2^31 since b^2 < a c < 2^62 */
         vor__mw_u128_mul(&term, vor__mul_u32(ax, ay), 2u * vor__mw_magnitude(s->form_b));
         if ((s->form_b < 0) != ((dx < 0) != (dy < 0))) {
@@ -239,13 +239,13 @@ static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, 
  * products stay below 2^257. */
 static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 {
-    int a_unit = !a->squared && a->den.lo == 1u && a->den.hi == 0u;
-    int b_unit = !b->squared && b->den.lo == 1u && b->den.hi == 0u;
+    int a_unit = !a->squared && (a->den.lo == 1u) && (a->den.hi == 0u);
+    int b_unit = !b->squared && (b->den.lo == 1u) && (b->den.hi == 0u);
     if (a_unit && b_unit) {
         return vor__mw_u128_compare(&a->num, &b->num);
     }
-    int a_small = a->den.hi == 0u && a->num.hi == 0u && (!a->squared || a->num.lo >> 32 == 0u);
-    int b_small = b->den.hi == 0u && b->num.hi == 0u && (!b->squared || b->num.lo >> 32 == 0u);
+    int a_small = (a->den.hi == 0u) && (a->num.hi == 0u) && (!a->squared || ((a->num.lo >> 32) == 0u));
+    int b_small = (b->den.hi == 0u) && (b->num.hi == 0u) && (!b->squared || ((b->num.lo >> 32) == 0u));
     if (a_small && b_small) { /* numerators and denominators below 2^64 */
         uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
@@ -353,7 +353,7 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
     } else if (IN(bit, METRIC(ADD))) {
         vor__mw_s128_t delta; /* wa - wb, below 2^32 */
         int64_t diff = (int64_t)a->w2 - b->w2;
-        vor__mw_u128_set(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
+        vor__mw_u128_set(&delta.mag, (diff < 0) ? (uint64_t)-diff : (uint64_t)diff);
         delta.neg = diff < 0;
         return additive_sign(m->limbs, &a->num, &b->num, &delta);
     } else if (IN(bit, METRIC(COMPOUND))) {
@@ -363,7 +363,7 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
         int64_t diff = (int64_t)a->w2 - b->w2;
         vor__mw_s128_t delta;
-        vor__mw_u128_mul(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
+        vor__mw_u128_mul(&delta.mag, (diff < 0) ? (uint64_t)-diff : (uint64_t)diff,
                          vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
         delta.neg = diff < 0;
         vor__mw_u128_t big_a, big_b;
@@ -381,12 +381,12 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
 {
     int64_t winding = 0;
     for (uint32_t i = 0; i < count; i++) {
-        const vor_point_t *a = &p[i], *b = &p[i + 1u == count ? 0u : i + 1u];
+        const vor_point_t *a = &p[i], *b = &p[((i + 1u) == count) ? 0u : (i + 1u)];
         if (a->y <= q->y) {
-            if (b->y > q->y && vor_orient2d(*a, *b, *q) > 0) {
+            if ((b->y > q->y) && vor_orient2d(*a, *b, *q) > 0) {
                 winding++; /* an upward edge with q on its left */
             }
-        } else if (b->y <= q->y && vor_orient2d(*a, *b, *q) < 0) {
+        } else if ((b->y <= q->y) && vor_orient2d(*a, *b, *q) < 0) {
             winding--; /* a downward edge with q on its right */
         }
     }
@@ -436,22 +436,22 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
         }
         vor__mw_u128_copy(&k->num, &far);
     } else if (IN(bit, METRIC(SEGMENT))) {
-        segment_key(&s->points[2u * site], &s->points[2u * site + 1u], qx, qy, k);
+        segment_key(&s->points[2u * site], &s->points[(2u * site) + 1u], qx, qy, k);
     } else if (IN(bit, METRIC(POLYGON))) {
         const vor_point_t *p = &s->points[s->offsets[site]];
         uint32_t count = s->offsets[site + 1u] - s->offsets[site];
         vor_point_t q;
         q.x = qx;
         q.y = qy;
-        if (count >= 3u && winds_around(p, count, &q)) {
+        if ((count >= 3u) && winds_around(p, count, &q)) {
             vor__mw_u128_set(&k->num, 0);
             set_unit_denominator(k);
             return;
         }
-        segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
+        segment_key(&p[0], &p[(count > 1u) ? 1u : 0u], qx, qy, k);
         rank_key_t edge;
-        for (uint32_t i = 1; count >= 3u && i < count; i++) {
-            segment_key(&p[i], &p[i + 1u == count ? 0u : i + 1u], qx, qy, &edge);
+        for (uint32_t i = 1; (count >= 3u) && (i < count); i++) {
+            segment_key(&p[i], &p[((i + 1u) == count) ? 0u : (i + 1u)], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
     } else if (IN(bit, METRIC(POLYLINE))) {
@@ -459,9 +459,9 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
          * divided by w^2: the denominator stays below 2^65 * 2^62 */
         const vor_point_t *p = &s->points[s->offsets[site]];
         uint32_t count = s->offsets[site + 1u] - s->offsets[site];
-        segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
+        segment_key(&p[0], &p[(count > 1u) ? 1u : 0u], qx, qy, k);
         rank_key_t edge;
-        for (uint32_t i = 1; i + 1u < count; i++) {
+        for (uint32_t i = 1; (i + 1u) < count; i++) {
             segment_key(&p[i], &p[i + 1u], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
@@ -543,7 +543,7 @@ static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
         q[i] = 0;
     }
     size_t top = DIV_LIMBS;
-    while (top > 0u && a[top - 1u] == 0u) {
+    while ((top > 0u) && (a[top - 1u] == 0u)) {
         top--;
     }
     for (size_t i = top; i-- > 0u;) {
@@ -560,7 +560,7 @@ static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
 
 VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
 {
-    return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
+    return (v > 0xFFFFFFFFu) ? 0xFFFFFFFFu : (uint32_t)v;
 }
 
 /* v - w as an int32 bit pattern, saturated at INT32_MAX: v < 2^34 and
@@ -568,7 +568,7 @@ VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
 VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
 {
     int64_t d = (int64_t)v - w;
-    return d > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)d;
+    return (d > INT32_MAX) ? (uint32_t)INT32_MAX : (uint32_t)d;
 }
 
 /* floor((ax^p + ay^p)^(1/p)) (the key's sum), saturated: the root is
@@ -585,7 +585,7 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
         vor__mw_from_u128(sum, LP_LIMBS, &k->num);
     } else {
         for (size_t i = 0; i < LP_LIMBS; i++) {
-            sum[i] = i < m->limbs ? k->wide[i] : 0u;
+            sum[i] = (i < m->limbs) ? k->wide[i] : 0u;
         }
     }
     for (size_t i = 0; i < LP_LIMBS; i++) {
@@ -595,10 +595,10 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
     if (vor__mw_compare(sum, power, LP_LIMBS) >= 0) {
         return 0xFFFFFFFFu;
     }
-    uint64_t lo = ax > ay ? ax : ay;
+    uint64_t lo = (ax > ay) ? ax : ay;
     uint64_t hi = (uint64_t)ax + ay + 1u;
-    hi = hi > ((uint64_t)1 << 32) ? (uint64_t)1 << 32 : hi;
-    while (hi - lo > 1u) {
+    hi = hi > ((uint64_t)1 << 32) ? ((uint64_t)1 << 32) : hi;
+    while ((hi - lo) > 1u) {
         uint32_t mid = (uint32_t)(lo + ((hi - lo) >> 1));
         power_limbs(power, LP_LIMBS, mid, p);
         if (vor__mw_compare(power, sum, LP_LIMBS) <= 0) {
@@ -616,7 +616,7 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
  * from 2^64 on. */
 static uint32_t rational_distance(const rank_key_t *k)
 {
-    if (!k->squared && k->den.lo == 1u && k->den.hi == 0u) {
+    if (!k->squared && (k->den.lo == 1u) && (k->den.hi == 0u)) {
         return saturate_u32(isqrt128(&k->num));
     }
     vor__limb num[DIV_LIMBS], x[DIV_LIMBS], den[DIV_LIMBS], q[DIV_LIMBS];
@@ -669,19 +669,19 @@ typedef struct rect {
 /* Distance from v to [lo, hi], and to the farther end. */
 static uint32_t gap(int32_t v, int32_t lo, int32_t hi)
 {
-    return v < lo ? (uint32_t)lo - (uint32_t)v : v > hi ? (uint32_t)v - (uint32_t)hi : 0u;
+    return (v < lo) ? (uint32_t)lo - (uint32_t)v : (v > hi) ? (uint32_t)v - (uint32_t)hi : 0u;
 }
 
 static uint32_t reach(int32_t v, int32_t lo, int32_t hi)
 {
     uint32_t a = vor__mw_magnitude((int64_t)v - lo), b = vor__mw_magnitude((int64_t)v - hi);
-    return a > b ? a : b;
+    return (a > b) ? a : b;
 }
 
 /* Distance between the intervals [lo1, hi1] and [lo2, hi2]. */
 static uint32_t interval_gap(int32_t lo1, int32_t hi1, int32_t lo2, int32_t hi2)
 {
-    return lo1 > hi2 ? (uint32_t)lo1 - (uint32_t)hi2 : lo2 > hi1 ? (uint32_t)lo2 - (uint32_t)hi1 : 0u;
+    return (lo1 > hi2) ? (uint32_t)lo1 - (uint32_t)hi2 : (lo2 > hi1) ? (uint32_t)lo2 - (uint32_t)hi1 : 0u;
 }
 
 /* *d = the squared distance from p to the farthest corner of r. */
@@ -777,10 +777,10 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
         }
         int32_t x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
         for (uint32_t i = 1; i < count; i++) {
-            x0 = p[i].x < x0 ? p[i].x : x0;
-            x1 = p[i].x > x1 ? p[i].x : x1;
-            y0 = p[i].y < y0 ? p[i].y : y0;
-            y1 = p[i].y > y1 ? p[i].y : y1;
+            x0 = (p[i].x < x0) ? p[i].x : x0;
+            x1 = (p[i].x > x1) ? p[i].x : x1;
+            y0 = (p[i].y < y0) ? p[i].y : y0;
+            y1 = (p[i].y > y1) ? p[i].y : y1;
         }
         square_sum(&k->num, interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1));
         set_unit_denominator(k);
@@ -859,9 +859,9 @@ static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t 
 {
     rank_key_t keys[2], best_case;
     uint32_t slot = 0;
-    m->bounds(m, list != NULL ? list[0] : 0u, r, 1, &keys[0]);
+    m->bounds(m, (list != NULL) ? list[0] : 0u, r, 1, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
-        m->bounds(m, list != NULL ? list[c] : c, r, 1, &keys[slot ^ 1u]);
+        m->bounds(m, (list != NULL) ? list[c] : c, r, 1, &keys[slot ^ 1u]);
         if (m->compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
             slot ^= 1u;
         }
@@ -869,7 +869,7 @@ static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t 
     /* keys[slot]: the best worst case, reached at every pixel of r */
     uint32_t kept = 0;
     for (uint32_t c = 0; c < count; c++) {
-        uint32_t site = list != NULL ? list[c] : c;
+        uint32_t site = (list != NULL) ? list[c] : c;
         m->bounds(m, site, r, 0, &best_case);
         if (m->compare(m, &best_case, &keys[slot]) <= 0) {
             if (kept == capacity) {
@@ -909,17 +909,17 @@ static void cull_band(metric_t *m)
     uint32_t tile = 0;
     uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
     for (uint32_t first = 0; first < m->frame->width; first += block_columns) {
-        uint32_t end = m->frame->width - first > block_columns ? first + block_columns : m->frame->width;
+        uint32_t end = ((m->frame->width - first) > block_columns) ? (first + block_columns) : m->frame->width;
         rect_t r = columns_rect(m, first, end - 1u, y0, y1);
         uint32_t block_count = select_sites(m, &r, NULL, m->n, block, m->n);
         for (uint32_t column = first; column < end; column += m->tile_width) {
-            uint32_t tile_end = end - column > m->tile_width ? column + m->tile_width : end;
+            uint32_t tile_end = ((end - column) > m->tile_width) ? (column + m->tile_width) : end;
             rect_t t = columns_rect(m, column, tile_end - 1u, y0, y1);
             size_t later = m->tiles - tile - 1u; /* one word kept for each later tile */
             size_t capacity = room - at - 1u - later;
             uint32_t kept = select_sites(m, &t, block, block_count, lists + at + 1u, capacity);
             lists[at] = kept;
-            at += 1u + (kept == ALL_SITES ? 0u : kept);
+            at += 1u + ((kept == ALL_SITES) ? 0u : kept);
             tile++;
         }
     }
@@ -933,10 +933,10 @@ static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count,
 {
     rank_key_t keys[2];
     uint32_t slot = 0;
-    uint32_t best = list != NULL ? list[0] : 0u;
+    uint32_t best = (list != NULL) ? list[0] : 0u;
     m->key(m, best, qx, qy, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
-        uint32_t site = list != NULL ? list[c] : c;
+        uint32_t site = (list != NULL) ? list[c] : c;
         m->key(m, site, qx, qy, &keys[slot ^ 1u]);
         if (m->compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
             slot ^= 1u;
@@ -951,8 +951,8 @@ static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count,
 static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
 {
     metric_t *m = state;
-    if (!m->brute && (!m->band_valid || j >= m->band_first + TILE_ROWS)) {
-        m->band_first = j - j % TILE_ROWS;
+    if (!m->brute && (!m->band_valid || (j >= (m->band_first + TILE_ROWS)))) {
+        m->band_first = j - (j % TILE_ROWS);
         m->band_valid = 1;
         cull_band(m);
     }
@@ -963,7 +963,7 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
     uint32_t count = 0;
     uint32_t span = m->brute ? width : m->tile_width;
     for (uint32_t first = 0; first < width; first += span) {
-        uint32_t end = width - first > span ? first + span : width;
+        uint32_t end = ((width - first) > span) ? (first + span) : width;
         const uint32_t *list = NULL;
         uint32_t candidates = m->n;
         if (!m->brute) {
@@ -971,7 +971,7 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
                 list = lists + at + 1u;
                 candidates = lists[at];
             }
-            at += 1u + (list != NULL ? candidates : 0u);
+            at += 1u + ((list != NULL) ? candidates : 0u);
         }
         for (uint32_t i = first; i < end; i++) {
             int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
@@ -994,19 +994,19 @@ static int metric_check(const vor_raster_sites_t *s)
     if (IN(bit, METRIC(L1) | METRIC(LINF) | METRIC(FARTHEST) | METRIC(SEGMENT))) {
         return VOR_OK;
     } else if (IN(bit, METRIC(LP))) {
-        return s->lp_exponent >= 1u && s->lp_exponent <= 8u ? VOR_OK : VOR_ERR_ARG;
+        return ((s->lp_exponent >= 1u) && (s->lp_exponent <= 8u)) ? VOR_OK : VOR_ERR_ARG;
     } else if (IN(bit, METRIC(ELLIPTIC))) {
         /* positive definite: a > 0 and a c - b^2 > 0 (each product < 2^62) */
-        return s->form_a > 0 &&
+        return (s->form_a > 0) &&
                        vor__mul_i32(s->form_a, s->form_c) > vor__mul_i32(s->form_b, s->form_b)
                    ? VOR_OK
                    : VOR_ERR_ARG;
     } else if (IN(bit, METRIC(MULT) | METRIC(ADD) | METRIC(COMPOUND))) {
-        if ((s->metric != VOR_METRIC_ADD && s->mult_weights == NULL) ||
-            (s->metric != VOR_METRIC_MULT && s->add_weights == NULL)) {
+        if (((s->metric != VOR_METRIC_ADD) && (s->mult_weights == NULL)) ||
+            ((s->metric != VOR_METRIC_MULT) && (s->add_weights == NULL))) {
             return VOR_ERR_ARG;
         }
-        for (uint32_t k = 0; s->metric != VOR_METRIC_ADD && k < s->count; k++) {
+        for (uint32_t k = 0; (s->metric != VOR_METRIC_ADD) && (k < s->count); k++) {
             if (s->mult_weights[k] < 1) {
                 return VOR_ERR_ARG;
             }
@@ -1020,8 +1020,8 @@ static int metric_check(const vor_raster_sites_t *s)
             if (s->offsets[k] >= s->offsets[k + 1u]) {
                 return VOR_ERR_ARG; /* every site has a point */
             }
-            if (s->metric == VOR_METRIC_POLYLINE && s->mult_weights != NULL &&
-                s->mult_weights[k] < 1) {
+            if ((s->metric == VOR_METRIC_POLYLINE) && (s->mult_weights != NULL) &&
+                (s->mult_weights[k] < 1)) {
                 return VOR_ERR_ARG;
             }
         }
@@ -1034,8 +1034,8 @@ static int metric_check(const vor_raster_sites_t *s)
 /* Widens [lo, hi] to hold v. */
 static void widen(int32_t v, int32_t *lo, int32_t *hi)
 {
-    *lo = v < *lo ? v : *lo;
-    *hi = v > *hi ? v : *hi;
+    *lo = (v < *lo) ? v : *lo;
+    *hi = (v > *hi) ? v : *hi;
 }
 
 /* Limbs holding the additive comparison of square roots of values below
@@ -1045,11 +1045,11 @@ static void widen(int32_t v, int32_t *lo, int32_t *hi)
 static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
 {
     uint32_t bits = 2u * a_bits;
-    if (2u + 2u * delta_bits + a_bits > bits) {
-        bits = 2u + 2u * delta_bits + a_bits;
+    if ((2u + (2u * delta_bits) + a_bits) > bits) {
+        bits = 2u + (2u * delta_bits) + a_bits;
     }
-    if (2u * delta_bits + 2u > bits) {
-        bits = 2u * delta_bits + 2u;
+    if (((2u * delta_bits) + 2u) > bits) {
+        bits = (2u * delta_bits) + 2u;
     }
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
@@ -1093,8 +1093,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
         end = 2u * s->count;
     }
     for (uint32_t k = 0; k < s->count; k++) {
-        if (s->metric == VOR_METRIC_HAUSDORFF || s->metric == VOR_METRIC_POLYGON ||
-            s->metric == VOR_METRIC_POLYLINE) {
+        if ((s->metric == VOR_METRIC_HAUSDORFF) || (s->metric == VOR_METRIC_POLYGON) ||
+            (s->metric == VOR_METRIC_POLYLINE)) {
             first = s->offsets[k];
             end = s->offsets[k + 1u];
         } else if (k > 0u) {
@@ -1106,10 +1106,10 @@ static void prepare(metric_t *m, const vor__raster_t *r)
         }
     }
     uint64_t span_x = (uint64_t)((int64_t)x1 - x0), span_y = (uint64_t)((int64_t)y1 - y0);
-    uint32_t span_bits = vor__mw_bit_length(span_x > span_y ? span_x : span_y); /* <= 32 */
+    uint32_t span_bits = vor__mw_bit_length((span_x > span_y) ? span_x : span_y); /* <= 32 */
 
     if (IN(m->metric_bit, METRIC(LP))) {
-        uint32_t bits = s->lp_exponent * span_bits + 1u; /* |dx|^p + |dy|^p < 2^bits */
+        uint32_t bits = (s->lp_exponent * span_bits) + 1u; /* |dx|^p + |dy|^p < 2^bits */
         m->lp_narrow = bits <= 128u;
         m->limbs = (bits + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
     } else if (IN(m->metric_bit, METRIC(ELLIPTIC))) {
@@ -1120,13 +1120,13 @@ static void prepare(metric_t *m, const vor__raster_t *r)
         int32_t heaviest = 1;
         for (uint32_t k = 0; k < s->count; k++) {
             widen(s->add_weights[k], &lo, &hi);
-            if (s->metric == VOR_METRIC_COMPOUND && s->mult_weights[k] > heaviest) {
+            if ((s->metric == VOR_METRIC_COMPOUND) && (s->mult_weights[k] > heaviest)) {
                 heaviest = s->mult_weights[k];
             }
         }
         /* squared distances < 2^(2 span_bits + 1); weight differences
          * < 2^delta_bits; COMPOUND multiplies by the w1 products */
-        uint32_t a_bits = 2u * span_bits + 1u;
+        uint32_t a_bits = (2u * span_bits) + 1u;
         uint32_t delta_bits = vor__mw_bit_length((uint64_t)((int64_t)hi - lo));
         if (s->metric == VOR_METRIC_COMPOUND) {
             uint32_t w_bits = vor__mw_bit_length((uint32_t)heaviest);
@@ -1139,7 +1139,7 @@ static void prepare(metric_t *m, const vor__raster_t *r)
     /* tiles: 16 columns, wider when the pool could not hold one count
      * word per tile after the block list */
     uint32_t shift = 4;
-    while ((size_t)((frame->width + (1u << shift) - 1u) >> shift) > pool_words - m->n) {
+    while ((size_t)((frame->width + (1u << shift) - 1u) >> shift) > (pool_words - m->n)) {
         shift++;
     }
     m->tile_width = 1u << shift;
@@ -1169,7 +1169,7 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                const vor_raster_output_t *out, const vor_raster_options_t *options,
                void *work, size_t work_bytes)
 {
-    if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
+    if ((sites != NULL) && (sites->metric == VOR_METRIC_EUCLID)) {
         return vor_raster_euclid(frame, sites, out, options, work, work_bytes);
     }
     vor__raster_t r;
