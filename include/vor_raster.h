@@ -177,7 +177,10 @@ typedef struct vor_raster_sites {
     const int32_t *add_weights;     /* ADD, COMPOUND: [count], any int32 */
     const uint32_t *offsets;        /* HAUSDORFF, POLYGON, POLYLINE: [count + 1] */
     uint32_t lp_exponent;           /* LP: p in 1 .. 8 */
-    int32_t form_a, form_b, form_c; /* ELLIPTIC: a > 0 and a c > b^2 */
+    /* ELLIPTIC: a > 0 and a c > b^2 */
+    int32_t form_a;
+    int32_t form_b;
+    int32_t form_c;
 } vor_raster_sites_t;
 
 enum vor_raster_kind {

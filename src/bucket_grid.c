@@ -74,13 +74,15 @@ void vor__grid_rebuild(vor_t *d)
     uint32_t height = (uint32_t)d->high.y - (uint32_t)d->low.y;
     /* the largest scale whose grid fits: scale 0 is one bucket, and the
      * count grows with the scale; 32 halvings of [0, 2^32) */
-    uint32_t fits = 0, step = 0x80000000u;
+    uint32_t fits = 0;
+    uint32_t step = 0x80000000u;
     for (; step != 0u; step >>= 1) {
         if (grid_size(width, height, fits | step) <= capacity) {
             fits |= step;
         }
     }
-    uint32_t columns = line_of(width, fits) + 1u, rows = line_of(height, fits) + 1u;
+    uint32_t columns = line_of(width, fits) + 1u;
+    uint32_t rows = line_of(height, fits) + 1u;
     d->bucket_origin.x = d->low.x;
     d->bucket_origin.y = d->low.y;
     d->bucket_scale = fits;
@@ -172,7 +174,8 @@ void vor__grid_forget(vor_t *d, uint32_t site, uint32_t fallback)
      * start), whose own bucket then still lies in the merged run. */
     uint32_t count = d->bucket_columns * d->bucket_rows;
     vor_index_t *bucket = d->buckets;
-    uint32_t low = bucket_of(d, d->sites[site].x, d->sites[site].y), high = low;
+    uint32_t low = bucket_of(d, d->sites[site].x, d->sites[site].y);
+    uint32_t high = low;
     if (bucket[low] != site) {
         return; /* the site shares its bucket and is not its entry */
     }

@@ -134,7 +134,8 @@ typedef struct {
      *   by_line true: F = the sites whose coordinate (x on axis 0, y on
      *     axis 1) is below `line`, or at or above it if f_above (quadtree
      *     merges: the children are separated by a grid line). */
-    bool by_line, f_above;
+    bool by_line;
+    bool f_above;
     vor_index_t split;
     int64_t line;
     unsigned k;          /* the quadtree's grid: 2^k x 2^k buckets over */
@@ -212,16 +213,22 @@ static inline void flip(builder_t *b, vor_index_t s1, const vor_index_t tv[3], u
 {
     vor__tri_t *tri = b->tri;
     vor__tri_t *t = &tri[s1];
-    vor_index_t a = tv[i1], bb = tv[vor__next(i1)], c = tv[vor__prev(i1)];
-    vor_index_t s2 = t->n[i1], nab = t->n[vor__prev(i1)], nca = t->n[vor__next(i1)];
+    vor_index_t a = tv[i1];
+    vor_index_t bb = tv[vor__next(i1)];
+    vor_index_t c = tv[vor__prev(i1)];
+    vor_index_t s2 = t->n[i1];
+    vor_index_t nab = t->n[vor__prev(i1)];
+    vor_index_t nca = t->n[vor__next(i1)];
     vor__tri_t *u = &tri[s2];
     vor_index_t uv[3];
     vor__vertices(u, uv);
     unsigned ib = find(uv, bb);
     ib = (ib == 3u) ? 0u : ib; /* always found: the two share the edge */
     vor_index_t e = uv[vor__next(ib)];
-    vor_index_t nbe = u->n[vor__prev(ib)], nec = u->n[ib];
-    vor_index_t x1 = s1, x2 = s2;
+    vor_index_t nbe = u->n[vor__prev(ib)];
+    vor_index_t nec = u->n[ib];
+    vor_index_t x1 = s1;
+    vor_index_t x2 = s2;
     if (is_home(b, s1, c) || is_home(b, s2, bb)) {
         x1 = s2;
         x2 = s1;
@@ -288,7 +295,10 @@ static void put(vor__tri_t *tri, vor_index_t slot, vor_index_t v0, vor_index_t v
  * there, Oishi and Sugihara, section 4.1); if earlier signs lied they are still hull
  * sites, which is all the search and guards C4 and C5 need. */
 typedef struct {
-    vor_index_t least, least_ghost, most, most_ghost;
+    vor_index_t least;
+    vor_index_t least_ghost;
+    vor_index_t most;
+    vor_index_t most_ghost;
     uint32_t length;
 } extremes_t;
 
@@ -332,7 +342,10 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
 /* The lower common tangent (l, r) of F and S and the ghosts at its ends,
  * (l, w, inf) in F and (u, r, inf) in S (VOR__NONE for a single site). */
 typedef struct {
-    vor_index_t l, r, g1, g2;
+    vor_index_t l;
+    vor_index_t r;
+    vor_index_t g1;
+    vor_index_t g2;
 } tangent_t;
 
 /* Step 1 (Oishi and Sugihara, section 4): the lower common tangent of F
@@ -342,9 +355,14 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
 {
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
-    vor_index_t l = f, r = s, l_stop = f, r_stop = s;
-    vor_index_t g1 = VOR__NONE, g2 = VOR__NONE;
-    uint32_t f_hull = 1, s_hull = 1;
+    vor_index_t l = f;
+    vor_index_t r = s;
+    vor_index_t l_stop = f;
+    vor_index_t r_stop = s;
+    vor_index_t g1 = VOR__NONE;
+    vor_index_t g2 = VOR__NONE;
+    uint32_t f_hull = 1;
+    uint32_t s_hull = 1;
     extremes_t e;
     if (!f_single) {
         hull_extremes(b, f, b->axis, &e);
@@ -363,7 +381,8 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
         vor__vertices(&tri[h], v);
         g2 = tri[h].n[vor__next(find(v, r))];
     }
-    uint32_t moves1 = 0, moves2 = 0;
+    uint32_t moves1 = 0;
+    uint32_t moves2 = 0;
     for (;;) {
         /* C4: the F end stays between R1 and L1 (clockwise), the S end
          * between L2 and R2 (counterclockwise); C5: no move back. The
@@ -406,8 +425,12 @@ static vor_index_t glue(builder_t *b, const tangent_t *t, bool f_single, bool s_
 {
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
-    vor_index_t l0 = t->l, r0 = t->r;
-    vor_index_t ga = t->g1, gb = VOR__NONE, ha = VOR__NONE, hb = t->g2;
+    vor_index_t l0 = t->l;
+    vor_index_t r0 = t->r;
+    vor_index_t ga = t->g1;
+    vor_index_t gb = VOR__NONE;
+    vor_index_t ha = VOR__NONE;
+    vor_index_t hb = t->g2;
     if (ga != VOR__NONE) { /* (u, l0, inf), across (inf, l0) from (l0, w, inf) */
         vor__vertices(&tri[ga], v);
         gb = tri[ga].n[vor__next(find(v, l0))];
@@ -416,7 +439,8 @@ static vor_index_t glue(builder_t *b, const tangent_t *t, bool f_single, bool s_
         vor__vertices(&tri[hb], v);
         ha = tri[hb].n[vor__prev(find(v, r0))];
     }
-    vor_index_t lower, cap;
+    vor_index_t lower;
+    vor_index_t cap;
     if (f_single) {
         lower = l0; /* the single site's home slot */
     } else if (s_single) {
@@ -465,7 +489,8 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
                                            bool *valid)
 {
     vor__tri_t *tri = b->tri;
-    vor_index_t pv[3], v[3];
+    vor_index_t pv[3];
+    vor_index_t v[3];
     vor__vertices(&tri[pocket], pv);
     unsigned inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
     VOR_ASSERT(inf < 3u);
@@ -481,7 +506,8 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
         if (!on_side(b, c2, left) || incircle(b, l, r, c1, c2) <= 0) {
             return c1;
         }
-        vor_index_t x1, x2;
+        vor_index_t x1;
+        vor_index_t x2;
         flip(b, pocket, pv, inf, &x1, &x2);
         /* the next pocket ghost: x2 = (inf, c2, l), or x1 = (inf, r, c2) */
         pocket = left ? x2 : x1;
@@ -500,24 +526,31 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
 static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t cap)
 {
     vor__tri_t *tri = b->tri;
-    vor_index_t l = l0, r = r0;
+    vor_index_t l = l0;
+    vor_index_t r = r0;
     /* The cap (l, r, inf) is always written by put() or flip() in a
      * known rotation: cv holds its vertices, with l at cv[il] and r at
      * cv[ir]; the F pocket ghost lies across (l, inf), the S one across
      * (inf, r). */
     vor_index_t cv[3] = {l0, r0, VOR__INFINITE};
-    unsigned il = 0, ir = 1;
-    bool l_moved = false, r_moved = false;
+    unsigned il = 0;
+    unsigned ir = 1;
+    bool l_moved = false;
+    bool r_moved = false;
     /* A candidate that stayed while the other side advanced by the circle
      * test is still above the new base, exactly: were the S candidate e
      * below (c, r) after the base (l, r) moved to (c, r), it would lie in
      * the triangle (l, r, c), which its circle contains, or beyond (c, l),
      * where the segment (r, e) crosses (l, c) and no line could separate
      * F from S (mirrored for F). Its test is skipped. */
-    bool l_still_valid = false, r_still_valid = false;
-    uint32_t steps_left = (4u * b->bound) + 16u, advances = 0;
+    bool l_still_valid = false;
+    bool r_still_valid = false;
+    uint32_t steps_left = (4u * b->bound) + 16u;
+    uint32_t advances = 0;
     while (steps_left-- > 0u) {
-        bool lvalid, rvalid; /* the candidates above the base */
+        /* the candidates above the base */
+        bool lvalid;
+        bool rvalid;
         vor_index_t c1 = delete_side(b, tri[cap].n[ir], true, l, r, l_still_valid, &lvalid);
         vor_index_t e1 = delete_side(b, tri[cap].n[il], false, l, r, r_still_valid, &rvalid);
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
@@ -548,7 +581,8 @@ static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t
         }
         r_still_valid = left && circle_left;
         l_still_valid = right && circle_right;
-        vor_index_t x1, x2;
+        vor_index_t x1;
+        vor_index_t x2;
         if (left) { /* cap (l, r, inf) + (c1, l, inf) -> (r, inf, c1) + (r, c1, l) */
             flip(b, cap, cv, ir, &x1, &x2);
             cap = x1;
@@ -587,7 +621,8 @@ static void clear_marks(builder_t *b, vor_index_t lower, vor_index_t l0, vor_ind
 {
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
-    vor_index_t l = l0, r = r0;
+    vor_index_t l = l0;
+    vor_index_t r = r0;
     vor__set_mark(&tri[l], false);
     vor__set_mark(&tri[r], false);
     vor__vertices(&tri[lower], v);
@@ -616,7 +651,8 @@ static void clear_marks(builder_t *b, vor_index_t lower, vor_index_t l0, vor_ind
 static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
 {
     b->axis = axis;
-    bool f_single = is_single(b, f), s_single = is_single(b, s);
+    bool f_single = is_single(b, f);
+    bool s_single = is_single(b, s);
     if (f_single && s_single) {
         vor__make_edge(b->d, f, s);
         return f;
@@ -635,7 +671,8 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
 
 /* Pending parts of the x-split, the least site of each for in_f. */
 struct pending {
-    vor_index_t part, least;
+    vor_index_t part;
+    vor_index_t least;
 };
 
 /* Three sites as a part: the triangle (p, q, r) or (p, r, q), whichever
@@ -785,7 +822,8 @@ static vor_index_t combine(builder_t *b, vor_index_t f, vor_index_t s, unsigned 
 static uint32_t partition_below(const vor_point_t *p, vor_index_t *ids, uint32_t count,
                                 unsigned axis, int64_t line)
 {
-    uint32_t i = 0, j = count;
+    uint32_t i = 0;
+    uint32_t j = count;
     while (i < j) {
         const vor_point_t *q = &p[ids[i]];
         if ((int64_t)((axis == 0u) ? q->x : q->y) < line) {
@@ -816,7 +854,10 @@ static inline bool in_square(const vor_point_t *q, int64_t ox, int64_t oy, unsig
 VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, uint32_t count)
 {
     const vor_point_t *p = b->d->sites;
-    int64_t ox = p[ids[0]].x, oy = p[ids[0]].y, hx = ox, hy = oy;
+    int64_t ox = p[ids[0]].x;
+    int64_t oy = p[ids[0]].y;
+    int64_t hx = ox;
+    int64_t hy = oy;
     for (uint32_t i = 1; i < count; i++) {
         const vor_point_t *q = &p[ids[i]];
         ox = (q->x < ox) ? q->x : ox;
@@ -829,7 +870,8 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
     while (vor__shr_u64(span, s) != 0u) {
         s++;
     }
-    vor_index_t bottom[CROWDED_LEVELS], third_child[CROWDED_LEVELS];
+    vor_index_t bottom[CROWDED_LEVELS];
+    vor_index_t third_child[CROWDED_LEVELS];
     uint8_t child[CROWDED_LEVELS];
     unsigned level = 0;
     uint32_t pos = 0;
@@ -940,7 +982,8 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
     vor_t *d = b->d;
     unsigned k = b->k;
     uint32_t cells = 1u << (2u * k);
-    vor_index_t bottom[QUADTREE_LEVELS], third_child[QUADTREE_LEVELS];
+    vor_index_t bottom[QUADTREE_LEVELS];
+    vor_index_t third_child[QUADTREE_LEVELS];
     vor_index_t root = VOR__NONE;
     bottom[1] = VOR__NONE; /* the top half alone has no bottom pair */
     uint32_t pos = 0;
@@ -1127,7 +1170,8 @@ typedef struct {
 #endif
     vor_index_t *ids;
     uint32_t count;
-    uint32_t from_cell, to_cell;
+    uint32_t from_cell;
+    uint32_t to_cell;
     vor_index_t part;
 } half_t;
 
@@ -1184,7 +1228,8 @@ static uint32_t xsplit_first_part(uint32_t m)
 static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, uint32_t n,
                                     uint32_t half)
 {
-    uint32_t low = 0, high = n;
+    uint32_t low = 0;
+    uint32_t high = n;
     while (low < high) {
         uint32_t mid = low + ((high - low) >> 1);
         if (vor__grid_z(b->d, ids[mid], b->k, b->square) < half) {
@@ -1264,7 +1309,9 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
                                        enum vor_dc_split split, const vor_fork_join_t *hook)
 {
     vor_t *d = b->d;
-    uint32_t count = n, n_a, cells = 0;
+    uint32_t count = n;
+    uint32_t n_a;
+    uint32_t cells = 0;
     if (split == VOR_DC_QUADTREE) {
         group_by_bucket(b, ids, n);
         cells = 1u << (2u * b->k);
@@ -1304,7 +1351,8 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
         x->to_cell = (h == 0u) ? (cells >> 1) : cells;
         x->part = VOR__NONE;
     }
-    half_t *a = &half[0], *s = &half[1];
+    half_t *a = &half[0];
+    half_t *s = &half[1];
     /* A on the other core if the hook can; B here meanwhile */
     bool forked = hook->fork(hook->context, build_half, a) == 0;
     build_half(s);

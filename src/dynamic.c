@@ -100,7 +100,8 @@ static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t st
                     vor_index_t stop)
 {
     const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = start, v[3];
+    vor_index_t slot = start;
+    vor_index_t v[3];
     vor__vertices(&tri[slot], v);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
         /* clockwise: from a star triangle (p, a, b) across a-b first,
@@ -158,7 +159,9 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
     /* the other neighbours: second vertices of the star triangles after
      * the ear's up to the one ending at a (degree - 3 of them) */
     const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = after, x, y;
+    vor_index_t slot = after;
+    vor_index_t x;
+    vor_index_t y;
     for (uint32_t left = d->vertex_count; left > 0u; left--) {
         star_edge(tri, slot, p, &x, &y);
         if (y == a) {
@@ -179,21 +182,28 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
 static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t s2)
 {
     vor__tri_t *tri = d->triangles;
-    const vor__tri_t *t1 = &tri[s1], *t2 = &tri[s2];
-    vor_index_t v1[3], v2[3];
+    const vor__tri_t *t1 = &tri[s1];
+    const vor__tri_t *t2 = &tri[s2];
+    vor_index_t v1[3];
+    vor_index_t v2[3];
     vor__vertices(t1, v1);
     vor__vertices(t2, v2);
     unsigned i1 = (v1[1] == p) ? 1u : (v1[2] == p) ? 2u : 0u;
     unsigned i2 = (v2[1] == p) ? 1u : (v2[2] == p) ? 2u : 0u;
-    vor_index_t a = v1[vor__next(i1)], b = v1[vor__prev(i1)], c = v2[vor__prev(i2)];
-    vor_index_t outer1 = t1->n[i1], before = t1->n[vor__prev(i1)];
-    vor_index_t outer2 = t2->n[i2], after = t2->n[vor__next(i2)];
+    vor_index_t a = v1[vor__next(i1)];
+    vor_index_t b = v1[vor__prev(i1)];
+    vor_index_t c = v2[vor__prev(i2)];
+    vor_index_t outer1 = t1->n[i1];
+    vor_index_t before = t1->n[vor__prev(i1)];
+    vor_index_t outer2 = t2->n[i2];
+    vor_index_t after = t2->n[vor__next(i2)];
     /* keep home slots home: the ear holds a, b, c, the star triangle p, a,
      * c; p's slot must take the star triangle and b's the ear (never both
      * asked of one slot). Otherwise a packed slot goes to the star, so
      * that home slots settle in ears and fewer reach the final merge,
      * which keeps only one of the last three slots. */
-    vor_index_t ear = s1, star = s2;
+    vor_index_t ear = s1;
+    vor_index_t star = s2;
     if (!is_home(d, s2, p) && !is_home(d, s1, b) &&
         (is_home(d, s1, p) || is_home(d, s2, b) || (s2 < d->max_sites))) {
         ear = s2;
@@ -218,8 +228,11 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
 static void rotate_to(vor__tri_t *tri, vor_index_t slot, vor_index_t v)
 {
     vor__tri_t *t = &tri[slot];
-    unsigned i = corner(t, v), j = vor__next(i), k = vor__prev(i);
-    vor_index_t w[3], n[3] = {t->n[0], t->n[1], t->n[2]};
+    unsigned i = corner(t, v);
+    unsigned j = vor__next(i);
+    unsigned k = vor__prev(i);
+    vor_index_t w[3];
+    vor_index_t n[3] = {t->n[0], t->n[1], t->n[2]};
     vor__vertices(t, w);
     vor__tri_set(t, w[i], w[j], w[k], n[i], n[j], n[k]);
 }
@@ -277,10 +290,13 @@ static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first
 void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t cur = h, after = VOR__NONE, packed = VOR__NONE;
+    vor_index_t cur = h;
+    vor_index_t after = VOR__NONE;
+    vor_index_t packed = VOR__NONE;
     /* each step marks a site or goes back up the tree: 2 v steps */
     for (uint32_t left = (2u * d->vertex_count) + 2u; (left > 0u) && (packed == VOR__NONE); left--) {
-        vor_index_t first = (cur == h) ? start : cur, slot = first;
+        vor_index_t first = (cur == h) ? start : cur;
+        vor_index_t slot = first;
         for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && (turn > 0u); turn--) {
             if (slot >= d->max_sites) {
                 packed = slot; /* cur's triangle in a packed slot: the path ends */
@@ -308,7 +324,8 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
         }
     }
     /* clear the marks: the same tree, each site unmarked on the way back */
-    vor_index_t at = h, back = VOR__NONE;
+    vor_index_t at = h;
+    vor_index_t back = VOR__NONE;
     for (uint32_t left = (2u * d->vertex_count) + 2u; left > 0u; left--) {
         vor_index_t child = next_child(d, at, (at == h) ? start : at, back, true);
         if (child != VOR__NONE) {
@@ -366,7 +383,8 @@ static void free_id(vor_t *d, uint32_t p)
 /* The star of p as arrays: neighbour nb[i] and the slot sl[i] of the star
  * triangle (p, nb[i], nb[i + 1]), counterclockwise, indices mod deg. */
 typedef struct {
-    vor_index_t nb[STAR_MAX], sl[STAR_MAX];
+    vor_index_t nb[STAR_MAX];
+    vor_index_t sl[STAR_MAX];
     uint32_t deg;
 } star_t;
 
@@ -384,7 +402,9 @@ static inline uint32_t wrap(uint32_t i, uint32_t deg)
 static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
 {
     uint32_t deg = st->deg;
-    vor_index_t a = st->nb[i], b = st->nb[wrap(i + 1u, deg)], c = st->nb[wrap(i + 2u, deg)];
+    vor_index_t a = st->nb[i];
+    vor_index_t b = st->nb[wrap(i + 1u, deg)];
+    vor_index_t c = st->nb[wrap(i + 2u, deg)];
     bool finite = a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE);
     if (finite && vor__orient(d, a, b, c) <= 0) {
         return false;
@@ -511,10 +531,14 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
             slot = star_next(tri, slot, p);
         } while ((slot != p) && (degree <= d->vertex_count));
         while (degree > STAR_MAX) {
-            vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
+            vor_index_t chosen = VOR__NONE;
+            vor_index_t guarded = VOR__NONE;
             slot = s1;
             for (uint32_t k = 0; (k < degree) && (chosen == VOR__NONE); k++) {
-                vor_index_t s2 = star_next(tri, slot, p), a, b, c;
+                vor_index_t s2 = star_next(tri, slot, p);
+                vor_index_t a;
+                vor_index_t b;
+                vor_index_t c;
                 star_edge(tri, slot, p, &a, &b);
                 star_edge(tri, s2, p, &b, &c);
                 if (!guard_blocks(d, a, c, slot, slot, s2, s2)) {
@@ -550,15 +574,20 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
 
     VOR_ASSERT(st.deg == 3u); /* every vertex has at least three neighbours */
     /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
-    vor_index_t a = st.nb[0], b = st.nb[1], c = st.nb[2];
-    vor_index_t s2 = st.sl[1], s3 = st.sl[2];
+    vor_index_t a = st.nb[0];
+    vor_index_t b = st.nb[1];
+    vor_index_t c = st.nb[2];
+    vor_index_t s2 = st.sl[1];
+    vor_index_t s3 = st.sl[2];
     s1 = st.sl[0];
     vor_index_t o1 = tri[s1].n[corner(&tri[s1], p)];
     vor_index_t o2 = tri[s2].n[corner(&tri[s2], p)];
     vor_index_t o3 = tri[s3].n[corner(&tri[s3], p)];
     /* the two slots besides p's home (p's home is one of the three) */
-    vor_index_t x1 = (s1 == p) ? s2 : s1, x2 = (s3 == p) ? s2 : s3;
-    vor_index_t keep = x2, freed = x1;
+    vor_index_t x1 = (s1 == p) ? s2 : s1;
+    vor_index_t x2 = (s3 == p) ? s2 : s3;
+    vor_index_t keep = x2;
+    vor_index_t freed = x1;
     if (x2 >= d->max_sites) {
         keep = x1;
         freed = x2;
@@ -595,7 +624,8 @@ int vor_remove(vor_t *d, uint32_t site)
         vor_index_t v[3];
         vor__vertices(&tri[p], v);
         unsigned i = corner(&tri[p], p);
-        vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
+        vor_index_t a = v[vor__next(i)];
+        vor_index_t b = v[vor__prev(i)];
         if (a == VOR__INFINITE || (b == VOR__INFINITE)) {
             /* p's home holds a triangle at infinity; its finite triangle
              * is across the hull edge and holds both others */
@@ -671,7 +701,8 @@ static bool star_still_delaunay(vor_t *d, vor_index_t p, vor_index_t *twin)
 /* A site sharing a triangle with p (p in a mesh of two or more). */
 static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
 {
-    vor_index_t v[3], found = p;
+    vor_index_t v[3];
+    vor_index_t found = p;
     vor__vertices(&d->triangles[p], v);
     for (unsigned i = 0; i < 3u; i++) {
         found = ((v[i] != p) && (v[i] != VOR__INFINITE)) ? v[i] : found;
@@ -687,7 +718,8 @@ static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
  * off the common path). */
 static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
 {
-    vor_point_t *s = &d->sites[site], old = *s;
+    vor_point_t *s = &d->sites[site];
+    vor_point_t old = *s;
     s->x = x;
     s->y = y;
     vor__box_add(d, s, false);
@@ -769,7 +801,8 @@ int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
     if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
-    int32_t x = p.x, y = p.y;
+    int32_t x = p.x;
+    int32_t y = p.y;
     const vor_point_t *s = &d->sites[site];
     if ((s->x == x) && (s->y == y)) {
         return VOR_OK;

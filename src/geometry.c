@@ -43,9 +43,11 @@
 /* A line a x + b y = c in a site's doubled frame, with an integer point
  * (px, py) on it for the test of a parallel line. */
 typedef struct geo_line {
-    int64_t a, b;
+    int64_t a;
+    int64_t b;
     vor__limb c[GEO_LIMBS];
-    int64_t px, py;
+    int64_t px;
+    int64_t py;
 } geo_line_t;
 
 /* A point (x / w, y / w), w > 0, in the same frame. */
@@ -80,8 +82,10 @@ static void mul_i64_i64(vor__limb *r, int64_t a, int64_t b)
  * s as to n: 2 e.p <= |e|^2 for p relative to s, e.p' <= |e|^2 doubled. */
 static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
 {
-    int64_t ex = (int64_t)n->x - s->x, ey = (int64_t)n->y - s->y;
-    uint32_t mx = vor__mw_magnitude(ex), my = vor__mw_magnitude(ey);
+    int64_t ex = (int64_t)n->x - s->x;
+    int64_t ey = (int64_t)n->y - s->y;
+    uint32_t mx = vor__mw_magnitude(ex);
+    uint32_t my = vor__mw_magnitude(ey);
     vor__limb t[GEO_LIMBS];
     l->a = ex;
     l->b = ey;
@@ -171,7 +175,8 @@ static bool intersect(geo_point_t *p, const geo_line_t *l1, const geo_line_t *l2
  * 0 on the line, -1 strictly inside. */
 static int side_of(const geo_line_t *l, const geo_point_t *p)
 {
-    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    vor__limb sum[GEO_LIMBS];
+    vor__limb t[GEO_LIMBS];
     mul_i64(sum, p->x, l->a);
     mul_i64(t, p->y, l->b);
     vor__mw_add(sum, t, GEO_LIMBS);
@@ -183,7 +188,8 @@ static int side_of(const geo_line_t *l, const geo_point_t *p)
 /* side_of for the integer point of line `on` (|px|, |py| < 2^34). */
 static int side_of_line(const geo_line_t *l, const geo_line_t *on)
 {
-    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    vor__limb sum[GEO_LIMBS];
+    vor__limb t[GEO_LIMBS];
     mul_i64_i64(sum, on->px, l->a);
     mul_i64_i64(t, on->py, l->b);
     vor__mw_add(sum, t, GEO_LIMBS);
@@ -230,7 +236,8 @@ static bool divide(vor__limb *rest, vor__limb *step, size_t n, unsigned bits,
 static int64_t floor_quotient(vor__limb *rest, vor__limb *step, size_t n, unsigned bits)
 {
     uint64_t quotient;
-    bool negative, exact;
+    bool negative;
+    bool exact;
     if (!divide(rest, step, n, bits, &quotient, &negative, &exact)) {
         int64_t saturated = (int64_t)vor__shl_u64(1u, bits);
         return negative ? (-saturated - 1) : saturated;
@@ -263,7 +270,8 @@ static bool add_saturated(int32_t origin, int64_t q, int32_t *out)
 static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
                              int32_t *out)
 {
-    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
+    vor__limb rest[GEO_LIMBS];
+    vor__limb step[GEO_LIMBS];
     /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
     for (size_t i = 0; i < GEO_LIMBS; i++) {
         rest[i] = v[i];
@@ -289,7 +297,8 @@ static void round_point(const geo_point_t *p, const vor_point_t *origin, vor_ver
 static void circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
                          vor_vertex_t *out)
 {
-    geo_line_t lb, lc;
+    geo_line_t lb;
+    geo_line_t lc;
     geo_point_t p;
     bisector(&lb, a, b);
     bisector(&lc, a, c);
@@ -464,18 +473,22 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
         vor__vertices(t, v);
         unsigned first = (slot == it->slot) ? it->edge : 0u;
         for (unsigned i = first; i < 3u; i++) {
-            uint32_t p = v[vor__next(i)], q = v[vor__prev(i)], l = v[i];
+            uint32_t p = v[vor__next(i)];
+            uint32_t q = v[vor__prev(i)];
+            uint32_t l = v[i];
             if (p == VOR__INFINITE || (q == VOR__INFINITE)) {
                 continue;
             }
             uint32_t other = t->n[i];
             uint32_t r = third_vertex(&d->triangles[other], p, q);
             /* each edge once: from its finite side, or the smaller slot */
-            bool ghost_here = l == VOR__INFINITE, ghost_there = r == VOR__INFINITE;
+            bool ghost_here = l == VOR__INFINITE;
+            bool ghost_there = r == VOR__INFINITE;
             if ((ghost_here != ghost_there) ? ghost_here : (other < slot)) {
                 continue;
             }
-            bool has_start, has_end;
+            bool has_start;
+            bool has_end;
             if (!true_edge(d->sites, p, q, r, l, &has_start, &has_end)) {
                 continue;
             }
@@ -560,7 +573,10 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     }
     /* all sites are collinear exactly when the hull's corners are: one
      * turn around the hull (at most vertex_count edges) */
-    uint32_t w, u, next, g = it->ghost;
+    uint32_t w;
+    uint32_t u;
+    uint32_t next;
+    uint32_t g = it->ghost;
     ghost_edge(d, g, &w, &u, &next);
     uint32_t second = u;
     it->collinear = 1;
@@ -599,7 +615,11 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
      * on the segment (a Delaunay neighbour: consecutive sites on a hull
      * edge have a Voronoi ray in common), else u and the next hull edge */
     const vor_point_t *s = d->sites;
-    uint32_t w, u, next, n, best = VOR__NONE;
+    uint32_t w;
+    uint32_t u;
+    uint32_t next;
+    uint32_t n;
+    uint32_t best = VOR__NONE;
     ghost_edge(d, it->ghost, &w, &u, &next);
     vor_neighbour_iter_t ni;
     (void)vor_neighbours_begin(&ni, d, it->site); /* a hull site: in the mesh */
@@ -636,7 +656,9 @@ typedef struct cell {
     const vor_box_t *box;
     uint32_t start_slot; /* the fan triangle where the edges' angles begin */
     uint32_t degree;     /* Delaunay neighbours */
-    uint32_t side_lo[4], side_hi[4]; /* each box side's part in the cell */
+    /* each box side's part in the cell */
+    uint32_t side_lo[4];
+    uint32_t side_hi[4];
     bool side_empty[4];
 } cell_t;
 
@@ -676,7 +698,8 @@ static unsigned quadrant_of(const cell_t *c, uint32_t n)
  * from (0, -1) counterclockwise? */
 static bool angle_before(const cell_t *c, uint32_t a, uint32_t b)
 {
-    unsigned qa = quadrant_of(c, a), qb = quadrant_of(c, b);
+    unsigned qa = quadrant_of(c, a);
+    unsigned qb = quadrant_of(c, b);
     if (qa != qb) {
         return qa < qb;
     }
@@ -705,8 +728,13 @@ static void fan_triangle(const cell_t *c, uint32_t slot, uint32_t *x, uint32_t *
 VOR__NOINLINE static void find_start(cell_t *c)
 {
     const vor_t *d = c->d;
-    uint32_t slot = c->site, x, y, next;
-    uint32_t first = VOR__NONE, first_slot = slot, previous = VOR__NONE;
+    uint32_t slot = c->site;
+    uint32_t x;
+    uint32_t y;
+    uint32_t next;
+    uint32_t first = VOR__NONE;
+    uint32_t first_slot = slot;
+    uint32_t previous = VOR__NONE;
     c->start_slot = slot;
     c->degree = 0;
     bool found = false;
@@ -741,8 +769,10 @@ VOR__NOINLINE static void find_start(cell_t *c)
 VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
 {
     const vor_t *d = c->d;
-    geo_line_t side, line;
-    geo_point_t lo, hi;
+    geo_line_t side;
+    geo_line_t line;
+    geo_point_t lo;
+    geo_point_t hi;
     box_side(&side, c->box, c->s, k);
     c->side_lo[k] = BOX_LINE + ((k + 3u) & 3u);
     c->side_hi[k] = BOX_LINE + ((k + 1u) & 3u);
@@ -752,7 +782,10 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
     make_line(c, c->side_hi[k], &line);
     intersect(&hi, &side, &line);
     if (d->vertex_count >= 2u) {
-        uint32_t slot = c->site, x, y, next;
+        uint32_t slot = c->site;
+        uint32_t x;
+        uint32_t y;
+        uint32_t next;
         for (uint32_t step = 0; step <= d->vertex_count; step++) {
             fan_triangle(c, slot, &x, &y, &next);
             if (y != VOR__INFINITE) {
@@ -797,7 +830,9 @@ typedef struct emitter {
     vor_point_t held[2];
     geo_point_t pool[3];
     uint32_t names[3][2]; /* the two lines through each pooled point */
-    int first, last;      /* pool indices, -1 while empty */
+    /* pool indices, -1 while empty */
+    int first;
+    int last;
 } emitter_t;
 
 static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
@@ -874,7 +909,8 @@ VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
     if (c->side_empty[k]) {
         return;
     }
-    geo_line_t side, line;
+    geo_line_t side;
+    geo_line_t line;
     box_side(&side, c->box, c->s, k);
     make_line(c, c->side_lo[k], &line);
     intersect(&e->pool[scratch(e)], &side, &line);
@@ -887,10 +923,12 @@ VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
 VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32_t l)
 {
     const cell_t *c = e->c;
-    geo_line_t edge, line;
+    geo_line_t edge;
+    geo_line_t line;
     geo_point_t hi;
     geo_point_t *lo = &e->pool[scratch(e)];
-    uint32_t lo_name = NO_LINE, hi_name = NO_LINE;
+    uint32_t lo_name = NO_LINE;
+    uint32_t hi_name = NO_LINE;
     uint32_t bounds[6] = {r, l, BOX_LINE, BOX_LINE + 1u, BOX_LINE + 2u, BOX_LINE + 3u};
     bisector(&edge, c->s, &c->d->sites[n]);
     for (unsigned k = 0; k < 6u; k++) {
@@ -944,7 +982,12 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
     e.first = e.last = -1;
     unsigned next_side = 0;
     if (d->vertex_count >= 2u) {
-        uint32_t slot = c->start_slot, x, y, next, z, dummy;
+        uint32_t slot = c->start_slot;
+        uint32_t x;
+        uint32_t y;
+        uint32_t next;
+        uint32_t z;
+        uint32_t dummy;
         for (uint32_t step = 0; step <= d->vertex_count; step++) {
             fan_triangle(c, slot, &x, &y, &next);
             if (y != VOR__INFINITE) {
@@ -953,7 +996,8 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
                     emit_side(&e, next_side);
                     add_held_vertex(sum);
                 }
-                bool has_start, has_end;
+                bool has_start;
+                bool has_end;
                 if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
                     emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
                     add_held_vertex(sum);
@@ -1104,13 +1148,18 @@ int vor_cells_error(const vor_cell_iter_t *it)
 #define SUM_NUMBERS 6u /* N_A, N_X, N_Y, Q_{i-1}, Q_i and a spare */
 
 struct centroid_sum {
-    vor__limb *area, *x, *y;          /* N_A, N_X, N_Y over the denominator */
-    vor__limb *before, *denominator;  /* Q_{i-1}, Q_i */
+    vor__limb *area;
+    vor__limb *x;
+    vor__limb *y;          /* N_A, N_X, N_Y over the denominator */
+    vor__limb *before;
+    vor__limb *denominator;  /* Q_{i-1}, Q_i */
     vor__limb *spare;
     size_t width;                     /* live limbs of every number */
     uint32_t vertices;
     bool held;                        /* a confirmed vertex waits in `next` */
-    geo_point_t first, previous, next;
+    geo_point_t first;
+    geo_point_t previous;
+    geo_point_t next;
 };
 
 /* Limbs of step j's numbers, for j <= MAX_SUM_VERTICES (130 j < 2^32). */
@@ -1163,8 +1212,10 @@ static void widen_sums(centroid_sum_t *sum, size_t width)
 static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor__limb *b,
                          size_t nb)
 {
-    vor__limb ma[FACTOR_LIMBS], mb[FACTOR_LIMBS];
-    bool a_negative = vor__mw_sign(a, na) < 0, b_negative = vor__mw_sign(b, nb) < 0;
+    vor__limb ma[FACTOR_LIMBS];
+    vor__limb mb[FACTOR_LIMBS];
+    bool a_negative = vor__mw_sign(a, na) < 0;
+    bool b_negative = vor__mw_sign(b, nb) < 0;
     for (size_t i = 0; i < na; i++) {
         ma[i] = a[i];
     }
@@ -1223,7 +1274,10 @@ static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
 VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
                                    const geo_point_t *q)
 {
-    vor__limb cross[TERM_LIMBS], t[TERM_LIMBS], u[TERM_LIMBS], term[TERM_LIMBS];
+    vor__limb cross[TERM_LIMBS];
+    vor__limb t[TERM_LIMBS];
+    vor__limb u[TERM_LIMBS];
+    vor__limb term[TERM_LIMBS];
     vor__limb square[GEO_LIMBS];
     term_product(cross, p->x, GEO_LIMBS, q->y, GEO_LIMBS);
     term_product(t, q->x, GEO_LIMBS, p->y, GEO_LIMBS);
@@ -1401,7 +1455,8 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     begin_cell(&c, d, site, box);
     /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
-    size_t usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u, stride;
+    size_t usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u;
+    size_t stride;
     /* at most one vertex per neighbour and per box side: count first only
      * when the scratch might be too small */
     if (!scratch_fits(usable, c.degree + 4u, &stride)) {
@@ -1451,7 +1506,8 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     vor__mw_add(sum.area, sum.spare, width);
     vor__mw_shl1(sum.spare, width);
     uint64_t area;
-    bool negative, exact;
+    bool negative;
+    bool exact;
     bool fits = divide(sum.area, sum.spare, division_width(sum.area, sum.spare, width, 64u),
                        64u, &area, &negative, &exact);
     VOR_ASSERT(fits && !negative);

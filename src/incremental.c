@@ -146,12 +146,15 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t
 {
     vor__tri_t *tri = d->triangles;
     vor__tri_t *t = &tri[x_slot];
-    vor_index_t y_slot = t->n[0], nx = t->n[1], ny = t->n[2];
+    vor_index_t y_slot = t->n[0];
+    vor_index_t nx = t->n[1];
+    vor_index_t ny = t->n[2];
     vor__tri_t *u = &tri[y_slot];
     vor_index_t across_xc = u->n[vor__next(apex)];
     vor_index_t across_cy = u->n[vor__prev(apex)];
     /* keep home slots home: (p, x, c) holds x, (p, c, y) holds y, both c */
-    vor_index_t s1 = x_slot, s2 = y_slot;
+    vor_index_t s1 = x_slot;
+    vor_index_t s2 = y_slot;
     if (is_home(d, x_slot, y) || is_home(d, y_slot, x)) {
         s1 = y_slot;
         s2 = x_slot;
@@ -172,14 +175,20 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
     vor__tri_t *r = &tri[root];
-    vor_index_t a = vor__vertex(r, 0), b = vor__vertex(r, 1), c = vor__vertex(r, 2);
-    vor_index_t na = r->n[0], nb = r->n[1], nc = r->n[2];
+    vor_index_t a = vor__vertex(r, 0);
+    vor_index_t b = vor__vertex(r, 1);
+    vor_index_t c = vor__vertex(r, 2);
+    vor_index_t na = r->n[0];
+    vor_index_t nb = r->n[1];
+    vor_index_t nc = r->n[2];
 
     /* split into A = (p, b, c), B = (p, c, a), C = (p, a, b) in the root's
      * slot, p's home slot and one new slot, the root's slot going to a
      * triangle that holds the site it is home to */
     vor_index_t extra = (vor_index_t)(d->max_sites + d->vertex_count - 2u);
-    vor_index_t sa = root, sb = sp, sc = extra;
+    vor_index_t sa = root;
+    vor_index_t sb = sp;
+    vor_index_t sc = extra;
     if (is_home(d, root, a)) { /* A lacks a; C = (p, a, b) takes the slot */
         sa = extra;
         sc = root;
@@ -211,10 +220,13 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
      * a row were refused as the star has; every flip uses up a triangle
      * not on the star, so the loop ends even if the predicates lie. */
     vor_index_t slot = sa;
-    uint32_t star = 3, refused = 0;
+    uint32_t star = 3;
+    uint32_t refused = 0;
     while (refused < star) {
         vor__tri_t *t = &tri[slot];
-        vor_index_t tv[3], uv[3]; /* t = (p, x, y), u = (y, x, c) */
+        /* t = (p, x, y), u = (y, x, c) */
+        vor_index_t tv[3];
+        vor_index_t uv[3];
         vor__vertices(t, tv);
         vor__vertices(&tri[t->n[0]], uv);
         unsigned ix = (uv[0] == tv[1]) ? 0u : (uv[1] == tv[1]) ? 1u : (uv[2] == tv[1]) ? 2u : 3u;
@@ -315,7 +327,8 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
         /* strictly inside its triangle (or strictly outside the hull) p can
          * only coincide with a vertex of it; on an edge line, degenerate
          * thin triangles can put its twin elsewhere: find the nearest site */
-        uint32_t twin = VOR__NONE, corner = 0;
+        uint32_t twin = VOR__NONE;
+        uint32_t corner = 0;
         for (unsigned i = 0; i < 3u; i++) {
             vor_index_t v = vor__vertex(&tri[root], i);
             if (v != VOR__INFINITE) {
@@ -388,9 +401,11 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
 
     vor__tri_t *tri = d->triangles;
     for (uint32_t i = 0; i < n; i++) {
-        vor_index_t s = plan[2u * i], from = plan[(2u * i) + 1u];
+        vor_index_t s = plan[2u * i];
+        vor_index_t from = plan[(2u * i) + 1u];
         if (VOR__PREFETCHING && ((i + 8u) < distinct)) { /* the memory of the insertion 8 ahead */
-            vor_index_t ahead = plan[2u * (i + 8u)], ahead_from = plan[2u * (i + 8u) + 1u];
+            vor_index_t ahead = plan[2u * (i + 8u)];
+            vor_index_t ahead_from = plan[2u * (i + 8u) + 1u];
             VOR__PREFETCH(&d->sites[ahead]);
             VOR__PREFETCH(&tri[ahead]);
             if (ahead_from != VOR__NONE) {

@@ -37,8 +37,10 @@ static inline bool lower_top_bit(uint32_t a, uint32_t b)
 static inline bool z_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
 {
     /* flipping the sign bit maps int32 order onto uint32 order */
-    uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u, ay = (uint32_t)sites[a].y ^ 0x80000000u;
-    uint32_t bx = (uint32_t)sites[b].x ^ 0x80000000u, by = (uint32_t)sites[b].y ^ 0x80000000u;
+    uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u;
+    uint32_t ay = (uint32_t)sites[a].y ^ 0x80000000u;
+    uint32_t bx = (uint32_t)sites[b].x ^ 0x80000000u;
+    uint32_t by = (uint32_t)sites[b].y ^ 0x80000000u;
     if ((ax == bx) && (ay == by)) {
         return a < b;
     }
@@ -128,9 +130,12 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
                    enum vor__sort_key key)
 {
     struct range {
-        uint32_t first, count, depth;
+        uint32_t first;
+        uint32_t count;
+        uint32_t depth;
     } stack[34];
-    unsigned top = 0, log2n = 0;
+    unsigned top = 0;
+    unsigned log2n = 0;
     while (vor__shl_u64(1u, log2n) < n) {
         log2n++;
     }
@@ -155,7 +160,8 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
             continue;
         }
         /* median of three to a[0], then Hoare partition around it */
-        uint32_t mid = r.count / 2u, last = r.count - 1u;
+        uint32_t mid = r.count / 2u;
+        uint32_t last = r.count - 1u;
         if (site_less(sites, a[mid], a[0], key)) {
             swap_ids(a, mid, 0);
         }
@@ -167,7 +173,8 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
         }
         swap_ids(a, 0, mid);
         vor_index_t pivot = a[0];
-        uint32_t i = 0, j = r.count;
+        uint32_t i = 0;
+        uint32_t j = r.count;
         for (;;) { /* i and j move toward each other: ends within count steps */
             do {
                 i++;
@@ -209,7 +216,8 @@ static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
     }
     int32_t u = ((k % 2u) == 1u) ? 1 : -1; /* (-1)^(k+1) */
     int32_t s = (2 * c) + u;
-    uint32_t m = 1, r = 0;
+    uint32_t m = 1;
+    uint32_t r = 0;
     cell_i[0] = (vor_index_t)c;
     cell_j[0] = (vor_index_t)c;
     for (unsigned t = 1; t <= k; t++) {
@@ -234,7 +242,8 @@ static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
 static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
                            uint32_t *duplicate_of)
 {
-    uint32_t count = 0, dups = 0;
+    uint32_t count = 0;
+    uint32_t dups = 0;
     vor_index_t previous = VOR__NONE;
     for (uint32_t s = 0; s < n; s++) {
         uint32_t first = s;
@@ -294,7 +303,8 @@ static void find_duplicates(const plan_grid_t *g)
 {
     const vor_index_t *start = g->start;
     vor_index_t *sorted = g->sorted;
-    uint32_t n = start[g->buckets], asked = 0;
+    uint32_t n = start[g->buckets];
+    uint32_t asked = 0;
     for (uint32_t b = 0; b < g->buckets; b++) {
         /* coordinates are read by id, at random places: the next buckets'
          * are asked for while this one is sorted */
@@ -345,7 +355,8 @@ static inline vor_index_t square_site(const plan_grid_t *g, uint32_t r0, uint32_
 static uint32_t plan_squares(const plan_grid_t *g, vor_index_t *plan)
 {
     uint32_t buckets = g->buckets;
-    vor_index_t *bucket_at = g->bucket_at, *next = g->next;
+    vor_index_t *bucket_at = g->bucket_at;
+    vor_index_t *next = g->next;
     quadtree_cells(g->k, bucket_at, g->cell_j); /* (I(r), J(r)), I in place */
     for (uint32_t r = 0; r < buckets; r++) {
         bucket_at[r] = (vor_index_t)(((uint32_t)bucket_at[r] << g->k) | g->cell_j[r]);
@@ -397,7 +408,8 @@ static uint32_t plan_buckets(const plan_grid_t *g, vor_index_t *plan, uint32_t c
         }
         for (; (step > 0u) && (size > 1u); step /= 2u) {
             for (uint32_t pos = step; pos < size; pos += 2u * step) {
-                vor_index_t s = in[pos], from = in[pos - step];
+                vor_index_t s = in[pos];
+                vor_index_t from = in[pos - step];
                 if (rep[s] != s) {
                     continue;
                 }

@@ -32,7 +32,8 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
  * The corner may lie below INT32_MIN, so it is an int64; every site's
  * offset from it is at most 2^shift - 1 < 2^32. */
 typedef struct {
-    int64_t x0, y0;
+    int64_t x0;
+    int64_t y0;
     unsigned shift;
 } vor__grid_square_t;
 

@@ -62,7 +62,8 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t sa = (vor_index_t)a, sb = (vor_index_t)b;
+    vor_index_t sa = (vor_index_t)a;
+    vor_index_t sb = (vor_index_t)b;
     /* fresh slots: clear any mark bits left by earlier contents */
     vor__tri_fresh(&tri[a]);
     vor__tri_fresh(&tri[b]);
@@ -110,7 +111,8 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
  * in at the bottom (shifts by constants only: no shift routine either). */
 static uint64_t divide(uint64_t numerator, uint64_t denominator)
 {
-    uint64_t quotient = 0, remainder = 0;
+    uint64_t quotient = 0;
+    uint64_t remainder = 0;
     for (unsigned step = 0; step < 64u; step++) {
         remainder = (remainder << 1) | (numerator >> 63);
         numerator <<= 1;

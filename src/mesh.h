@@ -105,7 +105,8 @@ static inline void vor__vertices(const vor__tri_t *t, vor_index_t v[3])
     v[1] = t->v[1];
     v[2] = t->v[2];
 #else
-    uint32_t w0 = t->v[0], w1 = t->v[1];
+    uint32_t w0 = t->v[0];
+    uint32_t w1 = t->v[1];
     v[0] = w0 & 0x1FFFFFu;
     v[1] = (w0 >> 21) | ((w1 & 0x3FFu) << 11);
     v[2] = (w1 >> 10) & 0x1FFFFFu;
@@ -315,15 +316,20 @@ static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
  * (dynamic.c) and the motion cache (motion.c) walk the same predicates
  * with it. Each triangle's vertices are decoded once. */
 typedef struct vor__star_step {
-    vor_index_t slot, v[3];  /* the star triangle and its vertices, as stored */
-    vor_index_t x, y;        /* p's neighbours in it, counterclockwise */
-    vor_index_t far, across;
-    vor_index_t next, w[3];  /* the next star triangle and its vertices */
+    vor_index_t slot;
+    vor_index_t v[3];  /* the star triangle and its vertices, as stored */
+    vor_index_t x;
+    vor_index_t y;        /* p's neighbours in it, counterclockwise */
+    vor_index_t far;
+    vor_index_t across;
+    vor_index_t next;
+    vor_index_t w[3];  /* the next star triangle and its vertices */
 } vor__star_step_t;
 
 static inline void vor__star_look(const vor_t *d, vor_index_t p, vor__star_step_t *s)
 {
-    const vor__tri_t *tri = d->triangles, *t = &tri[s->slot];
+    const vor__tri_t *tri = d->triangles;
+    const vor__tri_t *t = &tri[s->slot];
     unsigned i = (s->v[1] == p) ? 1u : (s->v[2] == p) ? 2u : 0u;
     s->x = s->v[vor__next(i)];
     s->y = s->v[vor__prev(i)];

@@ -151,16 +151,19 @@ static int gradient_bits(int64_t wide[3][2], int m)
             v[r][c] = (wide[r][c] < 0) ? -(int32_t)cut : (int32_t)cut; /* cut < 2^18 */
         }
     }
-    int64_t z[3], cross[3];
+    int64_t z[3];
+    int64_t cross[3];
     for (unsigned r = 0; r < 3u; r++) {
-        unsigned r1 = vor__next(r), r2 = vor__prev(r);
+        unsigned r1 = vor__next(r);
+        unsigned r2 = vor__prev(r);
         z[r] = vor__mul_i32(v[r][0], v[r][0]) + vor__mul_i32(v[r][1], v[r][1]);
         /* the cross product of the two other rows: (b x c) for a */
         cross[r] = vor__mul_i32(v[r1][0], v[r2][1]) - vor__mul_i32(v[r1][1], v[r2][0]);
     }
     uint64_t sum = 0;
     for (unsigned r = 0; r < 3u; r++) {
-        unsigned r1 = vor__next(r), r2 = vor__prev(r);
+        unsigned r1 = vor__next(r);
+        unsigned r2 = vor__prev(r);
         int64_t gx = 2 * vor__mul_i64_i32(cross[r], v[r][0]) -
                      vor__mul_i64_i32(z[r1], v[r2][1]) + vor__mul_i64_i32(z[r2], v[r1][1]);
         int64_t gy = 2 * vor__mul_i64_i32(cross[r], v[r][1]) +
@@ -171,7 +174,8 @@ static int gradient_bits(int64_t wide[3][2], int m)
     if (k == 0) {
         return bits; /* exact */
     }
-    int scaled = (3 * k) + bits, cut_error = (2 * m) + k + 8;
+    int scaled = (3 * k) + bits;
+    int cut_error = (2 * m) + k + 8;
     return ((scaled > cut_error) ? scaled : cut_error) + 1;
 }
 
@@ -188,14 +192,16 @@ static int gradient_bound(int m, int Lg, int E)
     if (E > (m - 3)) {
         return 1000;
     }
-    int first = Lg + E, rest = (2 * m) + (2 * E) + 7;
+    int first = Lg + E;
+    int rest = (2 * m) + (2 * E) + 7;
     return ((first > rest) ? first : rest) + 1;
 }
 
 /* The largest E with gradient_bound(m, Lg, E) <= T (it increases with E). */
 static int gradient_motion(int m, int Lg, int T)
 {
-    int E = T - 1 - Lg, square = floor_half(T - 8 - (2 * m));
+    int E = T - 1 - Lg;
+    int square = floor_half(T - 8 - (2 * m));
     E = (square < E) ? square : E;
     return ((m - 3) < E) ? (m - 3) : E;
 }
@@ -251,8 +257,10 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     int64_t v[3][2]; /* the vectors (all three set for an incircle test) */
     for (unsigned k = 0, r = 0; k < count; k++) {
         /* |difference| of two int32 fits uint32 */
-        int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x, dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
-        uint32_t ax = (uint32_t)((dx < 0) ? -dx : dx), ay = (uint32_t)((dy < 0) ? -dy : dy);
+        int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x;
+        int64_t dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
+        uint32_t ax = (uint32_t)((dx < 0) ? -dx : dx);
+        uint32_t ay = (uint32_t)((dy < 0) ? -dy : dy);
         spread |= ax | ay; /* same bit length as the larger */
         if (k != b) {
             v[r][0] = dx;

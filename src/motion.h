@@ -20,7 +20,8 @@
  * The level (0 to 5) is the backoff of a site whose boxes went unused
  * (motion.c, "The backoff"). */
 struct vor__motion_entry {
-    int32_t x, y;
+    int32_t x;
+    int32_t y;
     uint32_t stamp;
 };
 
@@ -59,7 +60,8 @@ static inline bool vor__motion_fast(const vor_t *d, uint32_t site, int32_t x, in
         return false;
     }
     const struct vor__motion_entry *e = &d->motion[site];
-    uint32_t stamp = e->stamp, size = stamp & VOR__BOX_MASK;
+    uint32_t stamp = e->stamp;
+    uint32_t size = stamp & VOR__BOX_MASK;
     if (((stamp >> 8) != d->motion_epoch) || (size == 0u)) {
         return false;
     }

@@ -116,7 +116,9 @@ static uint32_t next_on_circle(const vor_t *d, const vor_point_t *q, uint32_t be
                                uint32_t current)
 {
     vor_neighbour_iter_t it;
-    uint32_t n, third, next = current;
+    uint32_t n;
+    uint32_t third;
+    uint32_t next = current;
     vor__fan_begin(&it, d, current);
     while (vor__fan_next(&it, &n, &third)) {
         if ((vor__closer_sign(q, &d->sites[n], &d->sites[best], NULL) == 0) &&
@@ -238,10 +240,12 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
 
     /* the nearest circle, by id: each round walks it once for the smallest
      * id above the last one listed (at most vertex_count steps a round) */
-    uint32_t count = 0, last = 0;
+    uint32_t count = 0;
+    uint32_t last = 0;
     bool any = false;
     while (count < k) {
-        uint32_t pick = VOR__NONE, current = best;
+        uint32_t pick = VOR__NONE;
+        uint32_t current = best;
         for (uint32_t steps = 0; steps <= d->vertex_count; steps++) {
             if ((!any || (current > last)) && (pick == VOR__NONE || (current < pick))) {
                 pick = current;
@@ -261,7 +265,9 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
 
     /* then the best unlisted neighbour of a listed site, each round */
     while (count < k) {
-        uint32_t pick = VOR__NONE, n, third;
+        uint32_t pick = VOR__NONE;
+        uint32_t n;
+        uint32_t third;
         for (uint32_t i = 0; i < count; i++) {
             vor_neighbour_iter_t it;
             vor__fan_begin(&it, d, nearest[i]);
@@ -318,10 +324,13 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
     tracker->high.y = (int32_t)((s->y >= 0) ? INT32_MAX : (s->y + reach));
 
     vor_neighbour_iter_t it;
-    uint32_t n, third, edges = 0;
+    uint32_t n;
+    uint32_t third;
+    uint32_t edges = 0;
     vor__fan_begin(&it, d, site);
     while (vor__fan_next(&it, &n, &third)) {
-        int64_t dx = (int64_t)d->sites[n].x - s->x, dy = (int64_t)d->sites[n].y - s->y;
+        int64_t dx = (int64_t)d->sites[n].x - s->x;
+        int64_t dy = (int64_t)d->sites[n].y - s->y;
         const int64_t limit = (int64_t)1 << 30;
         if ((edges == VOR_TRACKER_EDGES) || (dx <= -limit) || (dx >= limit) || (dy <= -limit) ||
             (dy >= limit)) {
@@ -364,12 +373,15 @@ int vor_track(vor_tracker_t *tracker, vor_point_t q, uint32_t *site)
     if ((tracker == NULL) || (tracker->d == NULL) || (site == NULL)) {
         return VOR_ERR_ARG;
     }
-    int32_t x = q.x, y = q.y;
+    int32_t x = q.x;
+    int32_t y = q.y;
     if (tracker->cached && (tracker->revision == tracker->d->revision) &&
         (x >= tracker->low.x) && (x <= tracker->high.x) && (y >= tracker->low.y) &&
         (y <= tracker->high.y)) {
-        int32_t ex = x - tracker->at.x, ey = y - tracker->at.y;
-        const vor_tracker_edge_t *edge = tracker->edge, *end = edge + tracker->edges;
+        int32_t ex = x - tracker->at.x;
+        int32_t ey = y - tracker->at.y;
+        const vor_tracker_edge_t *edge = tracker->edge;
+        const vor_tracker_edge_t *end = edge + tracker->edges;
         /* strictly inside the cell: every neighbour strictly farther */
         while ((edge != end) &&
                (edge->square > vor__mul_i32(ex, edge->twice_dx) + vor__mul_i32(ey, edge->twice_dy))) {
@@ -396,7 +408,9 @@ int vor_track(vor_tracker_t *tracker, vor_point_t q, uint32_t *site)
 /* vor__conflicts with the true predicates, uncounted. */
 static bool exact_conflict(const vor_t *d, const vor__tri_t *t, uint32_t p)
 {
-    vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);
+    vor_index_t v0 = vor__vertex(t, 0);
+    vor_index_t v1 = vor__vertex(t, 1);
+    vor_index_t v2 = vor__vertex(t, 2);
     if (v0 == VOR__INFINITE) {
         return vor_orient2d_sos(d->sites, v1, v2, p) > 0;
     }
@@ -432,7 +446,8 @@ static bool slot_in_use(const vor_t *d, uint32_t slot)
  * fan does not close within `limit` steps or leaves the site. */
 static uint32_t fan_size(const vor_t *d, uint32_t start, vor_index_t site, uint32_t limit)
 {
-    uint32_t slot = start, count = 0;
+    uint32_t slot = start;
+    uint32_t count = 0;
     do {
         const vor__tri_t *t = &d->triangles[slot];
         unsigned i = vor__vertex_index(t, site);
@@ -473,7 +488,9 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
 {
     const vor_point_t *s = d->sites;
     const vor__tri_t *tri = d->triangles;
-    uint32_t end = vor__used_slots_end(d), reported = 0, boundary = 0;
+    uint32_t end = vor__used_slots_end(d);
+    uint32_t reported = 0;
+    uint32_t boundary = 0;
     for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
          slot = vor__next_used_slot(d, slot + 1u)) {
         const vor__tri_t *t = &tri[slot];
@@ -492,7 +509,8 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
             }
             /* a boundary edge a -> b: the boundary turns left (or goes
              * straight on, past a hull site) at b */
-            vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
+            vor_index_t a = v[vor__next(i)];
+            vor_index_t b = v[vor__prev(i)];
             uint32_t c = boundary_after(d, slot, b);
             if (c == VOR__INFINITE || (c == a) || vor__orient2d_sign(&s[a], &s[b], &s[c]) < 0) {
                 return violation(out, VOR_CHECK_TRUE_OUTPUT, slot, b);
@@ -510,7 +528,8 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
             continue;
         }
         vor_neighbour_iter_t it;
-        uint32_t n, degree = 0;
+        uint32_t n;
+        uint32_t degree = 0;
         vor__fan_begin(&it, d, site);
         while (vor__true_neighbour_next(&it, &n)) {
             degree++;
@@ -577,12 +596,14 @@ static int check_neighbours(const vor_t *d, vor_violation_t *out)
         const vor__tri_t *t = &tri[s];
         for (unsigned i = 0; i < 3u; i++) {
             vor_index_t u = t->n[i];
-            vor_index_t a = vor__vertex(t, vor__next(i)), b = vor__vertex(t, vor__prev(i));
+            vor_index_t a = vor__vertex(t, vor__next(i));
+            vor_index_t b = vor__vertex(t, vor__prev(i));
             if (u == VOR__NONE || !slot_in_use(d, u)) {
                 return violation(out, VOR_CHECK_NEIGHBOURS, s, a);
             }
             const vor__tri_t *o = &tri[u];
-            unsigned ia = vor__vertex_index(o, a), ib = vor__vertex_index(o, b);
+            unsigned ia = vor__vertex_index(o, a);
+            unsigned ib = vor__vertex_index(o, b);
             /* in o the edge runs b -> a, and o's neighbour across it is t */
             if ((ia == 3u) || (ib == 3u) || vor__next(ib) != ia ||
                 o->n[vor__next(ia)] != s) {

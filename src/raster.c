@@ -83,7 +83,9 @@ static void write_rgb888(const vor_raster_output_t *out, const vor__run_t *runs,
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         uint32_t colour = out->palette888[runs[r].site];
-        uint8_t red = (uint8_t)(colour >> 16), green = (uint8_t)(colour >> 8),
+        uint8_t red = (uint8_t)(colour >> 16);
+        uint8_t green = (uint8_t)(colour >> 8);
+        uint8_t 
                 blue = (uint8_t)colour;
         for (; i < runs[r].end; i++) {
             px[3u * i] = red;
@@ -108,7 +110,8 @@ static void write_boundary(uint32_t width, const vor__run_t *runs, uint32_t coun
     }
     /* lower neighbour: walk both rows' runs together */
     if (below != NULL) {
-        uint32_t r = 0, s = 0;
+        uint32_t r = 0;
+        uint32_t s = 0;
         i = 0;
         while (i < width) { /* each step ends a run of one row */
             uint32_t end = (runs[r].end < below[s].end) ? runs[r].end : below[s].end;

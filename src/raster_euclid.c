@@ -75,7 +75,9 @@
  * per array). */
 typedef struct euclid {
     const vor_raster_frame_t *frame;
-    int32_t origin_x, origin_y; /* frame's: rel_x, rel_y read them in per-site loops */
+    /* frame's: rel_x, rel_y read them in per-site loops */
+    int32_t origin_x;
+    int32_t origin_y;
     const vor_point_t *points;
     uint32_t n;
     int fast;             /* the fast path; else the brute-force search */
@@ -90,10 +92,14 @@ typedef struct euclid {
     uint32_t *stack;      /* scratch: edge envelope stack */
     uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
     uint32_t *right;      /* and of the right edge */
-    uint32_t left_count, right_count;
-    uint32_t left_next, right_next; /* first pieces that may meet the next band */
+    uint32_t left_count;
+    uint32_t right_count;
+    uint32_t left_next;
+    uint32_t right_next; /* first pieces that may meet the next band */
     uint32_t cand_count;
-    uint32_t band_first, band_last; /* rows of the current culling band */
+    /* rows of the current culling band */
+    uint32_t band_first;
+    uint32_t band_last;
     uint32_t inside_next;           /* by_y position: first site not yet below the band */
     uint32_t quotient_bits;         /* 2^quotient_bits >= width */
     uint32_t reach_row;             /* the last row of the previous band ... */
@@ -159,7 +165,8 @@ static int32_t frame_u(const euclid_t *e)
 static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_t n)
 {
     for (uint32_t k = 0; k < n; k++) {
-        uint32_t block = k - (k % SORT_BLOCK), p = k;
+        uint32_t block = k - (k % SORT_BLOCK);
+        uint32_t p = k;
         int32_t v = value[k];
         while ((p > block) && (value[ids[p - 1u]] > v)) {
             ids[p] = ids[p - 1u];
@@ -167,15 +174,20 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
         }
         ids[p] = k;
     }
-    uint32_t *from = ids, *to = tmp;
+    uint32_t *from = ids;
+    uint32_t *to = tmp;
     for (uint32_t width = SORT_BLOCK; width < n; width *= 2u) { /* n < 2^27: no overflow */
         for (uint32_t lo = 0; lo < n; lo += 2u * width) {
             const uint32_t mid = ((n - lo) > width) ? (lo + width) : n;
             const uint32_t hi = ((n - mid) > width) ? (mid + width) : n;
-            uint32_t i = lo, j = mid, k = lo;
+            uint32_t i = lo;
+            uint32_t j = mid;
+            uint32_t k = lo;
             if (j < hi) {
-                uint32_t id_i = from[i], id_j = from[j];
-                int32_t v_i = value[id_i], v_j = value[id_j];
+                uint32_t id_i = from[i];
+                uint32_t id_j = from[j];
+                int32_t v_i = value[id_i];
+                int32_t v_j = value[id_j];
                 for (;;) {
                     if (v_j < v_i) { /* equal values: the left run first */
                         to[k++] = id_j;
@@ -243,7 +255,8 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
         /* pop j (between i and rep) while its crossing with i lies
          * strictly right of its crossing with rep: then j is never lowest */
         while (top >= 2u) {
-            uint32_t i = stack[top - 2u], j = stack[top - 1u];
+            uint32_t i = stack[top - 2u];
+            uint32_t j = stack[top - 1u];
             int greater;
             if (tier == 1) { /* value differences fit int32, key ones 2^15 */
                 int64_t left = vor__mul_i32((int32_t)(val[j] - val[i]), key[rep] - key[j]);
@@ -254,7 +267,8 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
                 int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
                 greater = left > right;
             } else {
-                vor__mw_i96_t left, right;
+                vor__mw_i96_t left;
+                vor__mw_i96_t right;
                 vor__mw_i96_mul(&left, val[j] - val[i], (uint32_t)(key[rep] - key[j]));
                 vor__mw_i96_mul(&right, val[rep] - val[j], (uint32_t)(key[j] - key[i]));
                 greater = vor__mw_i96_greater(&left, &right);
@@ -434,7 +448,8 @@ static void fast_prepare(euclid_t *e)
     int64_t tall = vor__offset(e->frame->height - 1u, e->frame->step_y);
     int64_t most = (reach > tall) ? reach : tall;
     for (uint32_t k = 0; k < n; k++) {
-        int64_t a = rel_x(e, k), b = rel_y(e, k);
+        int64_t a = rel_x(e, k);
+        int64_t b = rel_y(e, k);
         a = (a < 0) ? -a : a;
         b = (b < 0) ? -b : b;
         most = (a > most) ? a : most;
@@ -519,7 +534,8 @@ static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
  * each biased by 2^29 into (0, 2^30), one int64 below 2^62. */
 static int64_t pack_line(int32_t a, int32_t b)
 {
-    uint64_t lo = (uint32_t)(a + (int32_t)BUDGET), hi = (uint32_t)(b + (int32_t)BUDGET);
+    uint64_t lo = (uint32_t)(a + (int32_t)BUDGET);
+    uint64_t hi = (uint32_t)(b + (int32_t)BUDGET);
     return (int64_t)((hi << 32) | lo); /* < 2^62 */
 }
 
@@ -594,7 +610,8 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
     int32_t top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
     int32_t top_dy = vb - (int32_t)((uint32_t)x >> 16);
     int32_t top_val = (top_a * top_a) + (top_dy * top_dy);
-    uint32_t top_start = 0, top_site = (uint32_t)(x >> 32);
+    uint32_t top_start = 0;
+    uint32_t top_site = (uint32_t)(x >> 32);
     uint32_t top_u = 0;
     runs[0].end = 0;
     runs[0].site = 0;
@@ -663,7 +680,8 @@ static uint32_t row_envelope_wide(const euclid_t *e, int32_t v, vor__run_t *runs
     int32_t top_a = line_a(line[0]);
     int32_t top_dy = line_dy(line[0], vb);
     int64_t top_val = square(top_a) + square(top_dy);
-    uint32_t top_start = 0, top_site = site[0];
+    uint32_t top_start = 0;
+    uint32_t top_site = site[0];
     int32_t top_u = 0;
     runs[0].end = 0;
     runs[0].site = 0;
@@ -965,7 +983,8 @@ static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
  * index. */
 static uint32_t brute_nearest(const euclid_t *e, int32_t qx, int32_t qy)
 {
-    uint32_t best = 0, best_high;
+    uint32_t best = 0;
+    uint32_t best_high;
     uint64_t best_low = squared_distance(qx, qy, &e->points[0], &best_high);
     for (uint32_t k = 1; k < e->n; k++) {
         uint32_t high;
@@ -981,7 +1000,8 @@ static uint32_t brute_nearest(const euclid_t *e, int32_t qx, int32_t qy)
 
 static uint32_t brute_row(const euclid_t *e, uint32_t j, vor__run_t *runs)
 {
-    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    const int32_t origin_x = e->frame->origin_x;
+    const int32_t step_x = e->frame->step_x;
     const uint32_t width = e->frame->width;
     int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
     uint32_t count = 0;
@@ -1043,7 +1063,8 @@ static void distances(const void *state, uint32_t j, const vor__run_t *runs, uin
                       uint32_t *px)
 {
     const euclid_t *e = state;
-    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    const int32_t origin_x = e->frame->origin_x;
+    const int32_t step_x = e->frame->step_x;
     int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {

@@ -52,7 +52,9 @@ struct rect;
  * its exact comparisons, and the culling of sites per tile. */
 typedef struct metric {
     const vor_raster_frame_t *frame;
-    int32_t origin_x, step_x; /* frame's: read per pixel, kept beside m's other fields */
+    /* frame's: read per pixel, kept beside m's other fields */
+    int32_t origin_x;
+    int32_t step_x;
     const vor_raster_sites_t *sites;
     enum vor_metric metric;
     uint32_t metric_bit; /* 1 << metric, tested against METRIC() sets */
@@ -80,7 +82,8 @@ typedef struct metric {
 /* *r = ax^2 + ay^2 < 2^65. */
 VOR__ALWAYS_INLINE void square_sum(vor__mw_u128_t *r, uint32_t ax, uint32_t ay)
 {
-    uint64_t x2 = vor__mul_u32(ax, ax), sum = x2 + vor__mul_u32(ay, ay);
+    uint64_t x2 = vor__mul_u32(ax, ax);
+    uint64_t sum = x2 + vor__mul_u32(ay, ay);
     r->lo = sum;
     r->hi = (sum < x2) ? 1u : 0u; /* the carry */
 }
@@ -107,7 +110,8 @@ typedef struct key {
     vor__mw_u128_t num;
     vor__mw_u128_t den;
     int squared;
-    int32_t w1, w2;
+    int32_t w1;
+    int32_t w2;
     vor__limb wide[LP_LIMBS];
 } rank_key_t;
 
@@ -153,7 +157,8 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
         vor__mw_u128_set(&k->num, (ax > ay) ? ax : ay);
     } else if (IN(bit, METRIC(LP))) {
         if (m->lp_narrow) {
-            vor__mw_u128_t x_power, y_power;
+            vor__mw_u128_t x_power;
+            vor__mw_u128_t y_power;
             power128(&x_power, ax, s->lp_exponent);
             power128(&y_power, ay, s->lp_exponent);
             vor__mw_u128_add(&k->num, &x_power, &y_power);
@@ -180,8 +185,10 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
 VOR__ALWAYS_INLINE void elliptic_form(vor__mw_u128_t *r, const vor_raster_sites_t *s, int64_t dx,
                                       int64_t dy)
 {
-    uint32_t ax = vor__mw_magnitude(dx), ay = vor__mw_magnitude(dy);
-    vor__mw_u128_t sum, term;
+    uint32_t ax = vor__mw_magnitude(dx);
+    uint32_t ay = vor__mw_magnitude(dy);
+    vor__mw_u128_t sum;
+    vor__mw_u128_t term;
     vor__mw_u128_mul(&sum, vor__mul_u32(ax, ax), (uint32_t)s->form_a);
     vor__mw_u128_mul(&term, vor__mul_u32(ay, ay), (uint32_t)s->form_c);
     vor__mw_u128_add(&sum, &sum, &term);
@@ -204,11 +211,14 @@ VOR__ALWAYS_INLINE void elliptic_form(vor__mw_u128_t *r, const vor_raster_sites_
 static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, int32_t qy,
                         rank_key_t *k)
 {
-    int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
-    int64_t ux = (int64_t)qx - a->x, uy = (int64_t)qy - a->y;
+    int64_t ex = (int64_t)b->x - a->x;
+    int64_t ey = (int64_t)b->y - a->y;
+    int64_t ux = (int64_t)qx - a->x;
+    int64_t uy = (int64_t)qy - a->y;
     vor__mw_u128_t length;
     square_sum(&length, vor__mw_magnitude(ex), vor__mw_magnitude(ey));
-    vor__mw_s128_t along, term;
+    vor__mw_s128_t along;
+    vor__mw_s128_t term;
     vor__mw_s128_product(&along, ux, ex);
     vor__mw_s128_product(&term, uy, ey);
     vor__mw_s128_add(&along, &along, &term);
@@ -249,13 +259,18 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     if (a_small && b_small) { /* numerators and denominators below 2^64 */
         uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
-        vor__mw_u128_t left, right;
+        vor__mw_u128_t left;
+        vor__mw_u128_t right;
         vor__mw_u128_mul(&left, an, b->den.lo);
         vor__mw_u128_mul(&right, bn, a->den.lo);
         return vor__mw_u128_compare(&left, &right);
     }
     enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
-    vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
+    vor__limb num[NUM];
+    vor__limb square[SQUARE];
+    vor__limb den[NUM];
+    vor__limb left[CROSS];
+    vor__limb right[CROSS];
     vor__mw_from_u128(num, NUM, &a->num);
     if (a->squared) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
@@ -290,8 +305,14 @@ static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u1
     if (vor__mw_u128_is_zero(&delta->mag)) {
         return vor__mw_u128_compare(big_a, big_b);
     }
-    vor__limb a[MAX_LIMBS], b[MAX_LIMBS], d[MAX_LIMBS], d2[MAX_LIMBS], e[MAX_LIMBS];
-    vor__limb product[MAX_LIMBS], left[MAX_LIMBS], right[MAX_LIMBS];
+    vor__limb a[MAX_LIMBS];
+    vor__limb b[MAX_LIMBS];
+    vor__limb d[MAX_LIMBS];
+    vor__limb d2[MAX_LIMBS];
+    vor__limb e[MAX_LIMBS];
+    vor__limb product[MAX_LIMBS];
+    vor__limb left[MAX_LIMBS];
+    vor__limb right[MAX_LIMBS];
     vor__mw_from_u128(a, n, big_a);
     vor__mw_from_u128(b, n, big_b);
     vor__mw_from_u128(d, n, &delta->mag);
@@ -346,7 +367,8 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
-        vor__mw_u128_t left, right;
+        vor__mw_u128_t left;
+        vor__mw_u128_t right;
         vor__mw_u128_mul64(&left, &a->num, wb2);
         vor__mw_u128_mul64(&right, &b->num, wa2);
         return vor__mw_u128_compare(&left, &right);
@@ -366,7 +388,8 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         vor__mw_u128_mul(&delta.mag, (diff < 0) ? (uint64_t)-diff : (uint64_t)diff,
                          vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
         delta.neg = diff < 0;
-        vor__mw_u128_t big_a, big_b;
+        vor__mw_u128_t big_a;
+        vor__mw_u128_t big_b;
         vor__mw_u128_mul64(&big_a, &a->num, wb2);
         vor__mw_u128_mul64(&big_b, &b->num, wa2);
         return additive_sign(m->limbs, &big_a, &big_b, &delta);
@@ -381,7 +404,8 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
 {
     int64_t winding = 0;
     for (uint32_t i = 0; i < count; i++) {
-        const vor_point_t *a = &p[i], *b = &p[((i + 1u) == count) ? 0u : (i + 1u)];
+        const vor_point_t *a = &p[i];
+        const vor_point_t *b = &p[((i + 1u) == count) ? 0u : (i + 1u)];
         if (a->y <= q->y) {
             if ((b->y > q->y) && vor_orient2d(*a, *b, *q) > 0) {
                 winding++; /* an upward edge with q on its left */
@@ -425,7 +449,8 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
         elliptic_form(&k->num, s, (int64_t)qx - p->x, (int64_t)qy - p->y);
         set_unit_denominator(k);
     } else if (IN(bit, METRIC(HAUSDORFF))) {
-        vor__mw_u128_t far, d;
+        vor__mw_u128_t far;
+        vor__mw_u128_t d;
         vor__mw_u128_set(&far, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             square_sum(&d, vor__mw_magnitude((int64_t)qx - s->points[i].x),
@@ -492,7 +517,10 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
  * call on Cortex-M0). */
 static uint64_t isqrt128(const vor__mw_u128_t *value)
 {
-    vor__mw_u128_t x, root, bit, trial;
+    vor__mw_u128_t x;
+    vor__mw_u128_t root;
+    vor__mw_u128_t bit;
+    vor__mw_u128_t trial;
     vor__mw_u128_copy(&x, value);
     vor__mw_u128_set(&root, 0);
     bit.lo = 0;
@@ -516,7 +544,8 @@ static uint64_t isqrt128(const vor__mw_u128_t *value)
  * Cortex-M0): 64 steps, the remainder stays below 2 d < 2^33. */
 static uint64_t divide_u64(uint64_t a, uint32_t d)
 {
-    uint64_t quotient = 0, rest = 0;
+    uint64_t quotient = 0;
+    uint64_t rest = 0;
     for (int step = 0; step < 64; step++) {
         rest = (rest << 1) | (a >> 63);
         a <<= 1;
@@ -580,7 +609,8 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
                             uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
-    vor__limb sum[LP_LIMBS], power[LP_LIMBS];
+    vor__limb sum[LP_LIMBS];
+    vor__limb power[LP_LIMBS];
     if (m->lp_narrow) {
         vor__mw_from_u128(sum, LP_LIMBS, &k->num);
     } else {
@@ -619,7 +649,10 @@ static uint32_t rational_distance(const rank_key_t *k)
     if (!k->squared && (k->den.lo == 1u) && (k->den.hi == 0u)) {
         return saturate_u32(isqrt128(&k->num));
     }
-    vor__limb num[DIV_LIMBS], x[DIV_LIMBS], den[DIV_LIMBS], q[DIV_LIMBS];
+    vor__limb num[DIV_LIMBS];
+    vor__limb x[DIV_LIMBS];
+    vor__limb den[DIV_LIMBS];
+    vor__limb q[DIV_LIMBS];
     vor__mw_from_u128(num, DIV_LIMBS, &k->num);
     if (k->squared) {
         vor__mw_mul(x, DIV_LIMBS, num, DIV_LIMBS, num, DIV_LIMBS); /* < 2^130 */
@@ -663,7 +696,10 @@ static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, in
 
 /* A rectangle of pixel centres, corners included. */
 typedef struct rect {
-    int32_t x0, x1, y0, y1;
+    int32_t x0;
+    int32_t x1;
+    int32_t y0;
+    int32_t y1;
 } rect_t;
 
 /* Distance from v to [lo, hi], and to the farther end. */
@@ -674,7 +710,8 @@ static uint32_t gap(int32_t v, int32_t lo, int32_t hi)
 
 static uint32_t reach(int32_t v, int32_t lo, int32_t hi)
 {
-    uint32_t a = vor__mw_magnitude((int64_t)v - lo), b = vor__mw_magnitude((int64_t)v - hi);
+    uint32_t a = vor__mw_magnitude((int64_t)v - lo);
+    uint32_t b = vor__mw_magnitude((int64_t)v - hi);
     return (a > b) ? a : b;
 }
 
@@ -720,10 +757,12 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             k->squared = 0;
             return;
         }
-        vor__mw_u128_t top, q;
+        vor__mw_u128_t top;
+        vor__mw_u128_t q;
         vor__mw_u128_set(&top, 0);
         for (int corner = 0; corner < 4; corner++) {
-            int32_t x = (corner & 1) ? r->x1 : r->x0, y = (corner & 2) ? r->y1 : r->y0;
+            int32_t x = (corner & 1) ? r->x1 : r->x0;
+            int32_t y = (corner & 2) ? r->y1 : r->y0;
             elliptic_form(&q, s, (int64_t)x - p->x, (int64_t)y - p->y);
             if (vor__mw_u128_compare(&q, &top) > 0) {
                 vor__mw_u128_copy(&top, &q);
@@ -732,7 +771,8 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
         vor__mw_u128_copy(&k->num, &top);
         set_unit_denominator(k);
     } else if (IN(bit, METRIC(HAUSDORFF))) {
-        vor__mw_u128_t top, d;
+        vor__mw_u128_t top;
+        vor__mw_u128_t d;
         vor__mw_u128_set(&top, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             const vor_point_t *p = &s->points[i];
@@ -757,7 +797,8 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             count = s->offsets[site + 1u] - s->offsets[site];
         }
         if (worst) {
-            vor__mw_u128_t d, other;
+            vor__mw_u128_t d;
+            vor__mw_u128_t other;
             farthest_corner(&d, &p[0], r);
             uint32_t reached = IN(bit, METRIC(SEGMENT))    ? 2u
                                : IN(bit, METRIC(POLYLINE)) ? count
@@ -775,7 +816,10 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             }
             return;
         }
-        int32_t x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
+        int32_t x0 = p[0].x;
+        int32_t x1 = p[0].x;
+        int32_t y0 = p[0].y;
+        int32_t y1 = p[0].y;
         for (uint32_t i = 1; i < count; i++) {
             x0 = (p[i].x < x0) ? p[i].x : x0;
             x1 = (p[i].x > x1) ? p[i].x : x1;
@@ -857,7 +901,8 @@ static const metric_ops_t metric_ops[] = {
 static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t *list,
                              uint32_t count, uint32_t *out, size_t capacity)
 {
-    rank_key_t keys[2], best_case;
+    rank_key_t keys[2];
+    rank_key_t best_case;
     uint32_t slot = 0;
     m->bounds(m, (list != NULL) ? list[0] : 0u, r, 1, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
@@ -1085,10 +1130,12 @@ static void prepare(metric_t *m, const vor__raster_t *r)
 
     /* span: the largest coordinate difference between any two of the
      * site points and pixel centres (< 2^32); it sets the widths */
-    int32_t x0 = frame->origin_x, y0 = frame->origin_y;
+    int32_t x0 = frame->origin_x;
+    int32_t y0 = frame->origin_y;
     int32_t x1 = (int32_t)(frame->origin_x + vor__offset(frame->width - 1u, frame->step_x));
     int32_t y1 = (int32_t)(frame->origin_y + vor__offset(frame->height - 1u, frame->step_y));
-    uint32_t first = 0, end = s->count;
+    uint32_t first = 0;
+    uint32_t end = s->count;
     if (s->metric == VOR_METRIC_SEGMENT) {
         end = 2u * s->count;
     }
@@ -1105,7 +1152,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
             widen(s->points[i].y, &y0, &y1);
         }
     }
-    uint64_t span_x = (uint64_t)((int64_t)x1 - x0), span_y = (uint64_t)((int64_t)y1 - y0);
+    uint64_t span_x = (uint64_t)((int64_t)x1 - x0);
+    uint64_t span_y = (uint64_t)((int64_t)y1 - y0);
     uint32_t span_bits = vor__mw_bit_length((span_x > span_y) ? span_x : span_y); /* <= 32 */
 
     if (IN(m->metric_bit, METRIC(LP))) {
@@ -1116,7 +1164,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
         m->det = (uint64_t)(vor__mul_i32(s->form_a, s->form_c) - vor__mul_i32(s->form_b, s->form_b));
         m->trace = (uint32_t)s->form_a + (uint32_t)s->form_c; /* < 2^32 */
     } else if (IN(m->metric_bit, METRIC(ADD) | METRIC(COMPOUND))) {
-        int32_t lo = s->add_weights[0], hi = s->add_weights[0];
+        int32_t lo = s->add_weights[0];
+        int32_t hi = s->add_weights[0];
         int32_t heaviest = 1;
         for (uint32_t k = 0; k < s->count; k++) {
             widen(s->add_weights[k], &lo, &hi);

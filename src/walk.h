@@ -84,7 +84,9 @@ static inline bool vor__walk_is_narrow(const vor_t *d, int32_t x, int32_t y)
 static inline int vor__narrow_closer(int32_t ex, int32_t ey, const vor_point_t *s,
                                      const vor_point_t *n)
 {
-    int32_t dx = n->x - s->x, dy = n->y - s->y; /* |.| < 2^30 */
+    /* |.| < 2^30 */
+    int32_t dx = n->x - s->x;
+    int32_t dy = n->y - s->y;
     int64_t square = vor__mul_i32(dx, dx) + vor__mul_i32(dy, dy);
     int64_t twice_dot = vor__mul_i32(ex, 2 * dx) + vor__mul_i32(ey, 2 * dy);
     return (square < twice_dot) ? -1 : (square > twice_dot) ? 1 : 0;
@@ -123,8 +125,10 @@ static inline uint32_t vor__walk(vor__walk_t *w, uint32_t from)
     for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
         const vor_point_t *at = &s[site];
         bool offset = (w->goal == VOR__WALK_POINT) && w->narrow;
-        int32_t ex = offset ? (w->q->x - at->x) : 0, ey = offset ? (w->q->y - at->y) : 0;
-        uint32_t slot = site, best = site;
+        int32_t ex = offset ? (w->q->x - at->x) : 0;
+        int32_t ey = offset ? (w->q->y - at->y) : 0;
+        uint32_t slot = site;
+        uint32_t best = site;
         w->tie = false;
         for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
             const vor__tri_t *t = &tri[slot];
