@@ -305,9 +305,9 @@ typedef uint32_t vor_index_t;
  * No other memory is used, and vor_build takes its scratch space from the
  * same arena. */
 #define VOR_ARENA_BYTES(n)                                                     \
-    ((size_t)(n) * sizeof(vor_point_t) +                                       \
-     ((n) >= 2u ? 2u * (size_t)(n) - 2u : 0u) * VOR_TRIANGLE_BYTES +           \
-     VOR_BUCKETS(n) * sizeof(vor_index_t))
+    (((size_t)(n) * sizeof(vor_point_t)) +                                     \
+     ((((n) >= 2u) ? ((2u * (size_t)(n)) - 2u) : 0u) * VOR_TRIANGLE_BYTES) +   \
+     (VOR_BUCKETS(n) * sizeof(vor_index_t)))
 
 /* The arena's required alignment (a static uint8_t array needs
  * _Alignas(4) or __attribute__((aligned(4))); malloc's is enough). */

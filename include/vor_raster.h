@@ -235,7 +235,7 @@ typedef struct vor_raster_options {
  * bytes per site (sort orders, candidates, envelopes) and 16 per pixel of
  * width (two rows of runs), plus alignment slack. A constant expression. */
 #define VOR_RASTER_WORK_BYTES(n, width)                                        \
-    ((size_t)(n) * 48u + (size_t)(width) * 16u + 64u)
+    (((size_t)(n) * 48u) + ((size_t)(width) * 16u) + 64u)
 #define VOR_RASTER_WORK_ALIGN 8u
 
 /*

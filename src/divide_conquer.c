@@ -311,8 +311,10 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
     unsigned i = find(v, VOR__INFINITE);
     i = (i == 3u) ? 2u : i; /* never: a part's ghost is a ghost */
     vor_index_t a = v[vor__next(i)];
-    e->least = e->most = a;
-    e->least_ghost = e->most_ghost = g;
+    e->most = a;
+    e->least = e->most;
+    e->most_ghost = g;
+    e->least_ghost = e->most_ghost;
     e->length = 1;
     /* the next ghost (w, x, inf) lies across (w, inf) from (a, w, inf) */
     vor_index_t slot = tri[g].n[vor__next(i)];
@@ -330,6 +332,8 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
         } else if (axis_less(s, e->most, a, axis)) {
             e->most = a;
             e->most_ghost = slot;
+        } else {
+            /* no other case */
         }
         e->length++;
         slot = t->n[vor__next(i)];
@@ -446,9 +450,11 @@ static vor_index_t glue(builder_t *b, const tangent_t *t, bool f_single, bool s_
     } else if (s_single) {
         lower = r0;
     } else {
-        lower = (vor_index_t)b->next_extra++;
+        lower = (vor_index_t)b->next_extra;
+        b->next_extra++;
     }
-    cap = (vor_index_t)b->next_extra++;
+    cap = (vor_index_t)b->next_extra;
+    b->next_extra++;
     put(tri, lower, r0, l0, VOR__INFINITE, (ga != VOR__NONE) ? ga : cap,
         (hb != VOR__NONE) ? hb : cap, cap);
     put(tri, cap, l0, r0, VOR__INFINITE, (ha != VOR__NONE) ? ha : lower,
@@ -567,6 +573,8 @@ static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t
         } else if (right && joined(b, e1, l)) {
             right = false;
             left = lvalid && !joined(b, c1, r);
+        } else {
+            /* no other case */
         }
         if (!left && !right) {
             /* T2: each end moves at least once (never needed when the
@@ -689,7 +697,8 @@ static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_inde
         q = r;
         r = swap;
     }
-    vor_index_t t = (vor_index_t)b->next_extra++;
+    vor_index_t t = (vor_index_t)b->next_extra;
+    b->next_extra++;
     put(tri, t, p, q, r, q, r, p);
     put(tri, p, q, p, VOR__INFINITE, r, q, t);
     put(tri, q, r, q, VOR__INFINITE, p, r, t);
@@ -763,7 +772,8 @@ VOR__ALWAYS_INLINE uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32
             vor__tri_fresh(&b->tri[s]); /* a duplicate's home slot stays empty */
             b->tri[s].n[0] = VOR__NONE;
         } else {
-            ids[m++] = s;
+            ids[m] = s;
+            m++;
             first = s;
         }
         if (b->duplicate_of != NULL) {
@@ -1262,6 +1272,8 @@ static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count
             }
         } else if (vor__slot_empty(t)) {
             continue;
+        } else {
+            /* no other case */
         }
         for (unsigned i = 0; i < 3u; i++) {
             if (((uint32_t)t->n[i] - from) < count) {

@@ -462,7 +462,8 @@ static bool star_load(const vor_t *d, vor_index_t p, vor_index_t start, star_t *
         }
         VOR__PREFETCH(&tri[t->n[i]]);
         st->nb[st->deg] = x;
-        st->sl[st->deg++] = slot;
+        st->sl[st->deg] = slot;
+        st->deg++;
         slot = t->n[vor__next(i)]; /* star_next */
     } while (slot != start);
     return true;
@@ -557,7 +558,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
             s1 = cut_ear(d, p, chosen, star_next(tri, chosen, p));
             degree--;
         }
-        star_load(d, p, s1, &st);
+        (void)star_load(d, p, s1, &st);
     }
     for (unsigned k = 0; VOR__PREFETCHING && (k < 3u); k++) {
         VOR__PREFETCH(&tri[tail->n[k]]);
@@ -605,6 +606,8 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         vor__rehome(d, freed, keep, last);
     } else if (freed != last) {
         move_triangle(tri, last, freed);
+    } else {
+        /* no other case */
     }
     return (a != VOR__INFINITE) ? a : b;
 }
@@ -782,14 +785,14 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     }
     /* remove, then insert again under the same id (the free list's head),
      * from the bucket grid's site near the new place */
-    vor_remove(d, site);
+    (void)vor_remove(d, site);
     uint32_t id;
     vor_point_t to = {x, y};
     int err = vor_insert_near(d, to, VOR_NO_HINT, &id);
     if (err != VOR_OK) {
         /* only lying predicates (fault injection) find a twin the exact
          * query did not: the site goes back where it was */
-        vor_insert_near(d, old, VOR_NO_HINT, &id);
+        (void)vor_insert_near(d, old, VOR_NO_HINT, &id);
     } else {
         vor__motion_update(d, site, &old, epoch); /* a box in the new epoch */
     }

@@ -363,6 +363,8 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
             *has_start = true;
         } else if (vor__strictly_between(&s[p], &s[r], &s[q])) {
             return false;
+        } else {
+            /* no other case */
         }
     }
     if (l != VOR__INFINITE) {
@@ -372,6 +374,8 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
             *has_end = true;
         } else if (vor__strictly_between(&s[p], &s[l], &s[q])) {
             return false;
+        } else {
+            /* no other case */
         }
     }
     if (*has_start && *has_end && vor__incircle_sign(&s[p], &s[q], &s[l], &s[r]) == 0) {
@@ -542,11 +546,13 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     it->left = 0;
     it->ghost = VOR__NONE;
     it->collinear = 0;
-    it->site = it->first = 0;
+    it->site = 0;
+    it->first = 0;
     if (d == NULL) {
         return VOR_ERR_ARG; /* left = 0: closed */
     }
-    it->site = it->first = d->last_site;
+    it->first = d->last_site;
+    it->site = it->first;
     if (d->vertex_count < 2u) {
         it->left = d->vertex_count; /* one site: itself */
         return VOR_OK;
@@ -589,7 +595,8 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
             break;
         }
     }
-    it->site = it->first = low;
+    it->first = low;
+    it->site = it->first;
     /* collinear: every site once, up the line; else back to the start */
     it->left = it->collinear ? d->vertex_count : (d->vertex_count + 1u);
     return VOR_OK;
@@ -623,7 +630,7 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     ghost_edge(d, it->ghost, &w, &u, &next);
     vor_neighbour_iter_t ni;
     (void)vor_neighbours_begin(&ni, d, it->site); /* a hull site: in the mesh */
-    while (vor_neighbours_next(&ni, &n)) {
+    while (vor_neighbours_next(&ni, &n) != 0) {
         if ((n != u) && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
             vor__strictly_between(&s[it->site], &s[n], &s[u]) &&
             (best == VOR__NONE || vor__strictly_between(&s[it->site], &s[n], &s[best]))) {
@@ -748,6 +755,8 @@ VOR__NOINLINE static void find_start(cell_t *c)
             } else if (!found && angle_before(c, y, previous)) {
                 c->start_slot = slot;
                 found = true;
+            } else {
+                /* no other case */
             }
             previous = y;
         }
@@ -778,9 +787,9 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
     c->side_hi[k] = BOX_LINE + ((k + 1u) & 3u);
     c->side_empty[k] = false;
     make_line(c, c->side_lo[k], &line);
-    intersect(&lo, &side, &line);
+    (void)intersect(&lo, &side, &line);
     make_line(c, c->side_hi[k], &line);
-    intersect(&hi, &side, &line);
+    (void)intersect(&hi, &side, &line);
     if (d->vertex_count >= 2u) {
         uint32_t slot = c->site;
         uint32_t x;
@@ -799,11 +808,13 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
                 } else if (g > 0) {
                     if (side_of(&line, &hi) > 0) {
                         c->side_hi[k] = y;
-                        intersect(&hi, &side, &line);
+                        (void)intersect(&hi, &side, &line);
                     }
                 } else if (side_of(&line, &lo) > 0) {
                     c->side_lo[k] = y;
-                    intersect(&lo, &side, &line);
+                    (void)intersect(&lo, &side, &line);
+                } else {
+                    /* no other case */
                 }
             }
             slot = next;
@@ -896,7 +907,8 @@ static void emit(emitter_t *e, uint32_t a, uint32_t b)
         return;
     }
     if (e->first < 0) {
-        e->first = e->last = i;
+        e->last = i;
+        e->first = e->last;
         return;
     }
     confirm(e, e->last);
@@ -913,7 +925,7 @@ VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
     geo_line_t line;
     box_side(&side, c->box, c->s, k);
     make_line(c, c->side_lo[k], &line);
-    intersect(&e->pool[scratch(e)], &side, &line);
+    (void)intersect(&e->pool[scratch(e)], &side, &line);
     emit(e, BOX_LINE + k, c->side_lo[k]);
 }
 
@@ -944,11 +956,13 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
         } else if (g > 0) {
             if ((hi_name == NO_LINE) || side_of(&line, &hi) > 0) {
                 hi_name = bounds[k];
-                intersect(&hi, &edge, &line);
+                (void)intersect(&hi, &edge, &line);
             }
         } else if ((lo_name == NO_LINE) || side_of(&line, lo) > 0) {
             lo_name = bounds[k];
-            intersect(lo, &edge, &line);
+            (void)intersect(lo, &edge, &line);
+        } else {
+            /* no other case */
         }
     }
     /* two opposite box sides are never both parallel to a line */
@@ -979,7 +993,8 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
     e.out = out;
     e.sum = sum;
     e.count = 0;
-    e.first = e.last = -1;
+    e.first = -1;
+    e.last = -1;
     unsigned next_side = 0;
     if (d->vertex_count >= 2u) {
         uint32_t slot = c->start_slot;
@@ -1069,7 +1084,10 @@ int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
     }
     it->next_site = 0;
     it->error = VOR_OK;
-    it->box.x0 = it->box.y0 = it->box.x1 = it->box.y1 = 0;
+    it->box.x0 = 0;
+    it->box.y0 = 0;
+    it->box.x1 = 0;
+    it->box.y1 = 0;
     if ((d == NULL) || (box == NULL) || (box->x0 > box->x1) || (box->y0 > box->y1)) {
         it->d = NULL; /* closed */
         it->error = VOR_ERR_ARG;
@@ -1163,7 +1181,7 @@ struct centroid_sum {
 };
 
 /* Limbs of step j's numbers, for j <= MAX_SUM_VERTICES (130 j < 2^32). */
-#define MAX_SUM_VERTICES (1u << 24)
+#define MAX_SUM_VERTICES ((uint32_t)1 << 24)
 static size_t sum_limbs(uint32_t j)
 {
     return (((size_t)j * 130u) + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;

@@ -424,6 +424,8 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
             vor_index_t start = (from == VOR__NONE) ? (vor_index_t)d->last_site : from;
             bool on_line;
             vor__insert_at(d, vor__locate(d, start, s, &on_line), s);
+        } else {
+            /* no other case */
         }
         d->vertex_count++;
         d->last_site = s;

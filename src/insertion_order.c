@@ -139,9 +139,11 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
     while (vor__shl_u64(1u, log2n) < n) {
         log2n++;
     }
-    stack[top++] = (struct range){0, n, 0};
+    stack[top] = (struct range){0, n, 0};
+    top++;
     while (top > 0u) {
-        struct range r = stack[--top];
+        top--;
+        struct range r = stack[top];
         vor_index_t *a = ids + r.first;
         if (r.count < 16u) {
             for (uint32_t i = 1; i < r.count; i++) {
@@ -192,13 +194,17 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
          * first so that the smaller is sorted next */
         struct range left = {r.first, j, r.depth + 1u};
         struct range right = {r.first + j + 1u, r.count - j - 1u, r.depth + 1u};
-        VOR_ASSERT(top + 2u <= sizeof stack / sizeof stack[0]);
+        VOR_ASSERT((top + 2u) <= (sizeof(stack) / sizeof(stack[0])));
         if (left.count > right.count) {
-            stack[top++] = left;
-            stack[top++] = right;
+            stack[top] = left;
+            top++;
+            stack[top] = right;
+            top++;
         } else {
-            stack[top++] = right;
-            stack[top++] = left;
+            stack[top] = right;
+            top++;
+            stack[top] = left;
+            top++;
         }
     }
 }

@@ -33,9 +33,15 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->site_count = 0;
     d->vertex_count = 0;
     d->last_site = 0;
-    d->low.x = d->low.y = d->high.x = d->high.y = 0;
-    d->bucket_origin.x = d->bucket_origin.y = 0;
-    d->bucket_columns = d->bucket_rows = d->bucket_scale = 0;
+    d->low.x = 0;
+    d->low.y = 0;
+    d->high.x = 0;
+    d->high.y = 0;
+    d->bucket_origin.x = 0;
+    d->bucket_origin.y = 0;
+    d->bucket_columns = 0;
+    d->bucket_rows = 0;
+    d->bucket_scale = 0;
     d->bucket_rebuild_at = 2;
     /* moved on, never reset: a tracker begun before this call must not
      * find its revision again after the rebuild. Read even from an

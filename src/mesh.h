@@ -299,8 +299,10 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
 static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
 {
     if (first) {
-        d->low.x = d->high.x = p->x;
-        d->low.y = d->high.y = p->y;
+        d->high.x = p->x;
+        d->low.x = d->high.x;
+        d->high.y = p->y;
+        d->low.y = d->high.y;
         return;
     }
     d->low.x = (p->x < d->low.x) ? p->x : d->low.x;
@@ -386,9 +388,13 @@ static inline void vor__stats_copy(vor_stats_t *to, const vor_stats_t *from)
 static inline void vor__stats_clear(vor_stats_t *s)
 {
     for (unsigned t = 0; t < VOR_TIERS; t++) {
-        s->orient2d[t] = s->incircle[t] = s->closer[t] = 0;
+        s->orient2d[t] = 0;
+        s->incircle[t] = 0;
+        s->closer[t] = 0;
     }
-    s->orient2d_perturbed = s->incircle_perturbed = s->closer_perturbed = 0;
+    s->orient2d_perturbed = 0;
+    s->incircle_perturbed = 0;
+    s->closer_perturbed = 0;
 }
 #endif
 

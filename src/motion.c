@@ -111,7 +111,8 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
     }
     struct vor__motion_entry *cache = (struct vor__motion_entry *)mem;
     for (uint32_t i = 0; i < d->max_sites; i++) {
-        cache[i].x = cache[i].y = 0;
+        cache[i].x = 0;
+        cache[i].y = 0;
         cache[i].stamp = 0; /* no box */
     }
     d->motion = cache;
@@ -125,7 +126,7 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
 static int change_bound(unsigned count, int m, int E)
 {
     int n = (m > E) ? m : E;
-    return (count == 3u) ? (n + E + 3) : (3 * n) + E + 10;
+    return (count == 3u) ? (n + E + 3) : ((3 * n) + E + 10);
 }
 
 /* The gradient is evaluated on vectors cut to GRADIENT_BITS bits: below
@@ -255,7 +256,8 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     unsigned b = (count == 3u) ? 0u : 3u;
     uint32_t spread = 0;
     int64_t v[3][2]; /* the vectors (all three set for an incircle test) */
-    for (unsigned k = 0, r = 0; k < count; k++) {
+    unsigned r = 0;
+    for (unsigned k = 0; k < count; k++) {
         /* |difference| of two int32 fits uint32 */
         int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x;
         int64_t dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
@@ -313,10 +315,12 @@ static int conflict_limit(vor_t *d, uint32_t p, const vor_index_t v[3], vor_inde
     unsigned count = 0;
     for (unsigned k = 0; k < 3u; k++) {
         if (v[k] != VOR__INFINITE) {
-            ids[count++] = v[k];
+            ids[count] = v[k];
+            count++;
         }
     }
-    ids[count++] = t;
+    ids[count] = t;
+    count++;
     return predicate_limit(d, p, ids, count, sizing);
 }
 
@@ -453,5 +457,7 @@ static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_
         level = (level >> 5) + (((level >> 5) < MAX_LEVEL) ? 1u : 0u);
         entry->x = (int32_t)(1u << level);
         entry->stamp = level << 5;
+    } else {
+        /* no other case */
     }
 }

@@ -44,7 +44,8 @@ static inline void vor__topology_changed(vor_t *d)
     if (d->motion_epoch == 0u) {
         d->motion_epoch = 1u;
         for (uint32_t i = 0; (d->motion != NULL) && (i < d->max_sites); i++) {
-            d->motion[i].x = d->motion[i].y = 0; /* the backoff starts again */
+            d->motion[i].x = 0;
+            d->motion[i].y = 0; /* the backoff starts again */
             d->motion[i].stamp = 0;
         }
     }

@@ -340,7 +340,8 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
          * triangle (the neighbour's home slot) is fetched meanwhile */
         VOR__PREFETCH(&d->triangles[n]);
         tracker->neighbour[edges] = (vor_index_t)n;
-        vor_tracker_edge_t *e = &tracker->edge[edges++];
+        vor_tracker_edge_t *e = &tracker->edge[edges];
+        edges++;
         e->twice_dx = (int32_t)(2 * dx);
         e->twice_dy = (int32_t)(2 * dy);
         e->square = vor__mul_i32((int32_t)dx, (int32_t)dx) + vor__mul_i32((int32_t)dy, (int32_t)dy);

@@ -149,6 +149,8 @@ static void write_row(const vor_raster_output_t *out, uint32_t width, const vor_
         write_boundary(width, runs, count, below, below_count, dst);
     } else if (out->kind != VOR_RASTER_DISTANCE) {
         writers[out->kind](out, runs, count, dst);
+    } else {
+        /* no other case */
     }
 }
 
@@ -170,7 +172,8 @@ static void bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32
     b->row_bytes = row_bytes;
     b->rows[0] = rows[0];
     b->rows[1] = rows[1];
-    b->counts[0] = b->counts[1] = 0;
+    b->counts[0] = 0;
+    b->counts[1] = 0;
     b->cur = 0;
     b->next = 0;
     b->written = 0;
@@ -195,7 +198,7 @@ uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
             }
         }
     }
-    if (b->hold) {
+    if (b->hold != 0) {
         /* row j - 1 is written now that the row below it is known */
         uint32_t held = b->cur ^ 1u;
         if (j > 0u) {
@@ -209,6 +212,8 @@ uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
         write_row(out, b->width, b->rows[b->cur], count, NULL, 0,
                   band + (size_t)(j - b->band_first) * b->row_bytes);
         b->written = j + 1u;
+    } else {
+        /* no other case */
     }
     b->next = j + 1u;
     uint32_t rows = b->written - b->band_first;

@@ -190,14 +190,16 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
                 int32_t v_j = value[id_j];
                 for (;;) {
                     if (v_j < v_i) { /* equal values: the left run first */
-                        to[k++] = id_j;
+                        to[k] = id_j;
+                        k++;
                         if (++j == hi) {
                             break;
                         }
                         id_j = from[j];
                         v_j = value[id_j];
                     } else {
-                        to[k++] = id_i;
+                        to[k] = id_i;
+                        k++;
                         if (++i == mid) {
                             break;
                         }
@@ -207,10 +209,12 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
                 }
             }
             for (; i < mid; i++) {
-                to[k++] = from[i];
+                to[k] = from[i];
+                k++;
             }
             for (; j < hi; j++) {
-                to[k++] = from[j];
+                to[k] = from[j];
+                k++;
             }
         }
         uint32_t *t = from;
@@ -278,7 +282,8 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
             }
             top--;
         }
-        stack[top++] = rep;
+        stack[top] = rep;
+        top++;
     }
     return top;
 }
@@ -330,7 +335,7 @@ VOR__ALWAYS_INLINE int32_t edge_key(const edge_lines_t *l, uint32_t pos, int ver
 
 VOR__ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical)
 {
-    if (vertical) {
+    if (vertical != 0) {
         uint32_t id = l->e->by_y[pos];
         return square(rel_x(l->e, id) - l->u) + square(rel_y(l->e, id));
     }
@@ -769,7 +774,8 @@ static uint32_t gather_positions(euclid_t *e, uint8_t flags)
     uint32_t m = 0;
     for (uint32_t p = 0; p < e->n; p++) {
         if ((e->mark[e->by_x[p]] & flags) != 0u) {
-            e->cand[m++] = p;
+            e->cand[m] = p;
+            m++;
         }
     }
     return m;
@@ -1044,7 +1050,7 @@ static void prepare(euclid_t *e, const vor__raster_t *r)
     e->points = r->sites->points;
     e->n = r->sites->count;
     e->fast = !r->brute && fits(e->frame, e->points, e->n);
-    if (e->fast) {
+    if (e->fast != 0) {
         carve(e, r->rest);
         fast_prepare(e);
     }

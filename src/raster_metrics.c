@@ -156,7 +156,7 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
     } else if (IN(bit, METRIC(LINF))) {
         vor__mw_u128_set(&k->num, (ax > ay) ? ax : ay);
     } else if (IN(bit, METRIC(LP))) {
-        if (m->lp_narrow) {
+        if (m->lp_narrow != 0) {
             vor__mw_u128_t x_power;
             vor__mw_u128_t y_power;
             power128(&x_power, ax, s->lp_exponent);
@@ -272,7 +272,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     vor__limb left[CROSS];
     vor__limb right[CROSS];
     vor__mw_from_u128(num, NUM, &a->num);
-    if (a->squared) {
+    if (a->squared != 0) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
         vor__mw_from_u128(square, SQUARE, &a->num);
@@ -280,7 +280,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     vor__mw_from_u128(den, NUM, &b->den);
     vor__mw_mul(left, CROSS, square, SQUARE, den, NUM);
     vor__mw_from_u128(num, NUM, &b->num);
-    if (b->squared) {
+    if (b->squared != 0) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
         vor__mw_from_u128(square, SQUARE, &b->num);
@@ -302,7 +302,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u128_t *big_b,
                          const vor__mw_s128_t *delta)
 {
-    if (vor__mw_u128_is_zero(&delta->mag)) {
+    if (vor__mw_u128_is_zero(&delta->mag) != 0) {
         return vor__mw_u128_compare(big_a, big_b);
     }
     vor__limb a[MAX_LIMBS];
@@ -412,6 +412,8 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
             }
         } else if ((b->y <= q->y) && vor_orient2d(*a, *b, *q) < 0) {
             winding--; /* a downward edge with q on its right */
+        } else {
+            /* no other case */
         }
     }
     return winding != 0;
@@ -611,7 +613,7 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
     uint32_t p = m->sites->lp_exponent;
     vor__limb sum[LP_LIMBS];
     vor__limb power[LP_LIMBS];
-    if (m->lp_narrow) {
+    if (m->lp_narrow != 0) {
         vor__mw_from_u128(sum, LP_LIMBS, &k->num);
     } else {
         for (size_t i = 0; i < LP_LIMBS; i++) {
@@ -654,7 +656,7 @@ static uint32_t rational_distance(const rank_key_t *k)
     vor__limb den[DIV_LIMBS];
     vor__limb q[DIV_LIMBS];
     vor__mw_from_u128(num, DIV_LIMBS, &k->num);
-    if (k->squared) {
+    if (k->squared != 0) {
         vor__mw_mul(x, DIV_LIMBS, num, DIV_LIMBS, num, DIV_LIMBS); /* < 2^130 */
     } else {
         vor__mw_copy(x, num, DIV_LIMBS);
@@ -776,7 +778,7 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
         vor__mw_u128_set(&top, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             const vor_point_t *p = &s->points[i];
-            if (worst) {
+            if (worst != 0) {
                 farthest_corner(&d, p, r);
             } else {
                 square_sum(&d, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
@@ -796,7 +798,7 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             p = &s->points[s->offsets[site]];
             count = s->offsets[site + 1u] - s->offsets[site];
         }
-        if (worst) {
+        if (worst != 0) {
             vor__mw_u128_t d;
             vor__mw_u128_t other;
             farthest_corner(&d, &p[0], r);
@@ -835,7 +837,7 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
         const vor_point_t *p = &s->points[site];
         /* FARTHEST ranks larger distances first: its best case is far */
         int far = IN(bit, METRIC(FARTHEST)) ? !worst : worst;
-        if (far) {
+        if (far != 0) {
             point_key(m, bit, site, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1), k);
         } else {
             point_key(m, bit, site, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1), k);
@@ -920,7 +922,8 @@ static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t 
             if (kept == capacity) {
                 return ALL_SITES;
             }
-            out[kept++] = site;
+            out[kept] = site;
+            kept++;
         }
     }
     return kept;
@@ -1146,6 +1149,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
             end = s->offsets[k + 1u];
         } else if (k > 0u) {
             break; /* the points are one array: walked once below */
+        } else {
+            /* no other case */
         }
         for (uint32_t i = first; i < end; i++) {
             widen(s->points[i].x, &x0, &x1);
@@ -1183,6 +1188,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
             delta_bits += 2u * w_bits;
         }
         m->limbs = additive_limbs(a_bits, delta_bits);
+    } else {
+        /* no other case */
     }
 
     /* tiles: 16 columns, wider when the pool could not hold one count

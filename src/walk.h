@@ -74,8 +74,8 @@ static inline void vor__walk_begin(vor__walk_t *w, const vor_t *d, enum vor__wal
 static inline bool vor__walk_is_narrow(const vor_t *d, int32_t x, int32_t y)
 {
     const int64_t reach = INT32_MAX;
-    return (uint32_t)d->high.x - (uint32_t)d->low.x < (1u << 30) &&
-           (uint32_t)d->high.y - (uint32_t)d->low.y < (1u << 30) &&
+    return (uint32_t)d->high.x - (uint32_t)d->low.x < ((uint32_t)1 << 30) &&
+           (uint32_t)d->high.y - (uint32_t)d->low.y < ((uint32_t)1 << 30) &&
            ((int64_t)x - d->high.x) >= -reach && ((int64_t)x - d->low.x) <= reach &&
            ((int64_t)y - d->high.y) >= -reach && ((int64_t)y - d->low.y) <= reach;
 }
