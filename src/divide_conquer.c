@@ -490,10 +490,12 @@ static inline bool on_side(const builder_t *b, vor_index_t v, bool left)
  * and the candidate: a flip, after which c2 is the candidate. Returns the
  * last candidate; *valid tells whether it is valid. At most one deletion
  * per F-F-F (S-S-S) triangle: bounded with the merge. */
-VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, bool left,
-                                           vor_index_t l, vor_index_t r, bool still_valid,
+VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket_in, bool left,
+                                           vor_index_t l, vor_index_t r, bool still_valid_in,
                                            bool *valid)
 {
+    vor_index_t pocket = pocket_in;
+    bool still_valid = still_valid_in;
     vor__tri_t *tri = b->tri;
     vor_index_t pv[3];
     vor_index_t v[3];
@@ -529,8 +531,9 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
  * fig. 3.1), from the base (l0, r0) under the cap. Bounded by the counts
  * in the header comment; `steps_left` is a last resort. Returns the
  * number of advances (cross triangles made). */
-static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t cap)
+static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t cap_in)
 {
+    vor_index_t cap = cap_in;
     vor__tri_t *tri = b->tri;
     vor_index_t l = l0;
     vor_index_t r = r0;
@@ -689,8 +692,10 @@ struct pending {
  * triangulation of the sphere). The ghost (y, x, inf) behind the hull
  * edge (x, y) takes x's home slot, the finite triangle an extra slot.
  * Returns p's slot, a ghost. */
-static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r)
+static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q_in, vor_index_t r_in)
 {
+    vor_index_t q = q_in;
+    vor_index_t r = r_in;
     vor__tri_t *tri = b->tri;
     if (orient(b, p, q, r) < 0) {
         vor_index_t swap = q;

@@ -279,15 +279,16 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
     if ((d == NULL) || ((hint != VOR_NO_HINT) && !vor__site_in_mesh(d, hint))) {
         return VOR_ERR_ARG;
     }
-    if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
-        hint = (d->vertex_count >= 2u) ? vor__grid_start(d, point.x, point.y) : d->last_site;
+    uint32_t start = hint;
+    if (start == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
+        start = (d->vertex_count >= 2u) ? vor__grid_start(d, point.x, point.y) : d->last_site;
     }
     bool reused = d->free_site != 0u; /* a removed site's id */
     if (!reused && (d->site_count >= d->max_sites)) {
         /* no free coordinates slot to locate from: a read-only query
          * tells a duplicate, which needs no slot, from a new site */
         uint32_t nearest;
-        if ((vor_nearest(d, point, hint, &nearest) == VOR_OK) &&
+        if ((vor_nearest(d, point, start, &nearest) == VOR_OK) &&
             same_point(&d->sites[nearest], &point)) {
             if (site != NULL) {
                 *site = nearest;
@@ -323,7 +324,7 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
         vor__tally_save(&tally, d);
         d->sites[p] = point;
         bool on_line;
-        vor_index_t root = vor__locate(d, (vor_index_t)hint, p, &on_line);
+        vor_index_t root = vor__locate(d, (vor_index_t)start, p, &on_line);
         /* strictly inside its triangle (or strictly outside the hull) p can
          * only coincide with a vertex of it; on an edge line, degenerate
          * thin triangles can put its twin elsewhere: find the nearest site */

@@ -71,9 +71,10 @@ static inline bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_
     return (key == VOR__SORT_LEX) ? lex_less_id(sites, a, b) : z_less(sites, a, b);
 }
 
-static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
+static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root_in,
                       uint32_t n, enum vor__sort_key key)
 {
+    uint32_t root = root_in;
     /* each step at least doubles root, so this ends */
     for (;;) {
         uint32_t child = (2u * root) + 1u;
@@ -401,8 +402,9 @@ static uint32_t plan_squares(const plan_grid_t *g, vor_index_t *plan)
  * from the site one step back, already inserted (a crowded bucket, as
  * with clustered sites, then gets short walks and small cavities too).
  * Returns the new count. */
-static uint32_t plan_buckets(const plan_grid_t *g, vor_index_t *plan, uint32_t count)
+static uint32_t plan_buckets(const plan_grid_t *g, vor_index_t *plan, uint32_t count_in)
 {
+    uint32_t count = count_in;
     const vor_index_t *rep = g->rep;
     for (uint32_t r = 0; r < g->buckets; r++) {
         uint32_t b = g->bucket_at[r];

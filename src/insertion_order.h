@@ -67,8 +67,9 @@ static inline uint32_t vor__grid_cell(int32_t c, int64_t corner, unsigned k, uns
 }
 
 /* Spreads the low 16 bits of x to the even bit positions. */
-static inline uint32_t vor__spread_bits(uint32_t x)
+static inline uint32_t vor__spread_bits(uint32_t x_in)
 {
+    uint32_t x = x_in;
     x &= 0xFFFFu;
     x = (x | (x << 8)) & 0x00FF00FFu;
     x = (x | (x << 4)) & 0x0F0F0F0Fu;
@@ -78,8 +79,9 @@ static inline uint32_t vor__spread_bits(uint32_t x)
 }
 
 /* The inverse: the even bits of x, packed. */
-static inline uint32_t vor__compact_bits(uint32_t x)
+static inline uint32_t vor__compact_bits(uint32_t x_in)
 {
+    uint32_t x = x_in;
     x &= 0x55555555u;
     x = (x | (x >> 1)) & 0x33333333u;
     x = (x | (x >> 2)) & 0x0F0F0F0Fu;

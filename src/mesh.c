@@ -115,8 +115,9 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
  * instruction and the library calls no runtime routine. 64 steps, each
  * moving the numerator's top bit into the remainder and one quotient bit
  * in at the bottom (shifts by constants only: no shift routine either). */
-static uint64_t divide(uint64_t numerator, uint64_t denominator)
+static uint64_t divide(uint64_t numerator_in, uint64_t denominator)
 {
+    uint64_t numerator = numerator_in;
     uint64_t quotient = 0;
     uint64_t remainder = 0;
     for (unsigned step = 0; step < 64u; step++) {

@@ -263,8 +263,9 @@ static inline uint32_t vor__used_slots_end(const vor_t *d)
     return d->max_sites + ((d->vertex_count >= 2u) ? (d->vertex_count - 2u) : 0u);
 }
 
-static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot)
+static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot_in)
 {
+    uint32_t slot = slot_in;
     for (; slot < d->site_count; slot++) {
         if (!vor__slot_empty(&d->triangles[slot])) {
             return slot;

@@ -331,8 +331,9 @@ static int min_limit(int a, int b)
 
 /* The largest exponent e <= limit whose box around c stays in int32
  * (the fast test's offsets then cannot wrap), < 0 when none. */
-static int in_range(int limit, int32_t c)
+static int in_range(int limit_in, int32_t c)
 {
+    int limit = limit_in;
     /* distance to the nearer end of int32 */
     uint32_t room = (c < 0) ? (uint32_t)((int64_t)c - INT32_MIN) : (uint32_t)(INT32_MAX - c);
     while ((limit >= 0) && (1u << limit) > room) {

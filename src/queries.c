@@ -465,8 +465,9 @@ static uint32_t fan_size(const vor_t *d, uint32_t start, vor_index_t site, uint3
  * clockwise around b from the reported triangle at `slot` that has the
  * boundary edge a -> b; VOR__INFINITE if the turn does not end within
  * vertex_count + 1 steps (only on a broken mesh). */
-static uint32_t boundary_after(const vor_t *d, uint32_t slot, vor_index_t b)
+static uint32_t boundary_after(const vor_t *d, uint32_t slot_in, vor_index_t b)
 {
+    uint32_t slot = slot_in;
     for (uint32_t step = 0; step <= d->vertex_count; step++) {
         const vor__tri_t *t = &d->triangles[slot];
         unsigned j = vor__vertex_index(t, b);

@@ -495,8 +495,9 @@ static void fast_prepare(euclid_t *e)
  * both fit 32 bits, else restoring division, one quotient bit per step
  * (bits steps). (r >> b) >= g exactly when r >= g 2^b, and g 2^b <= r
  * never overflows. */
-static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
+static uint32_t quotient32(uint32_t r_in, uint32_t g, uint32_t bits)
 {
+    uint32_t r = r_in;
 #if HARDWARE_DIVIDE
     (void)bits;
     return r / g;
@@ -512,8 +513,9 @@ static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
 #endif
 }
 
-static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
+static uint32_t quotient64(uint64_t r_in, uint64_t g, uint32_t bits)
 {
+    uint64_t r = r_in;
 #if HARDWARE_DIVIDE64
     (void)bits;
     return (uint32_t)(r / g);
@@ -942,8 +944,9 @@ static uint32_t fast_row(euclid_t *e, uint32_t j, vor__run_t *runs)
 /* ------------------------------------------------------------ distances */
 
 /* floor(sqrt(x)) by the bit-by-bit method (no division). */
-static uint32_t isqrt64(uint64_t x)
+static uint32_t isqrt64(uint64_t x_in)
 {
+    uint64_t x = x_in;
     uint64_t root = 0;
     uint64_t bit = (uint64_t)1 << 62;
     while (bit > x) {

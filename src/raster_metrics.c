@@ -544,8 +544,9 @@ static uint64_t isqrt128(const vor__mw_u128_t *value)
 
 /* floor(a / d) for d >= 1, by shift and subtract (no divider on
  * Cortex-M0): 64 steps, the remainder stays below 2 d < 2^33. */
-static uint64_t divide_u64(uint64_t a, uint32_t d)
+static uint64_t divide_u64(uint64_t a_in, uint32_t d)
 {
+    uint64_t a = a_in;
     uint64_t quotient = 0;
     uint64_t rest = 0;
     for (int step = 0; step < 64; step++) {
