@@ -37,7 +37,7 @@
  * Per site and per tile, the chains are compiled away: the key, the
  * comparison and the bounds are instances for one metric's constant bit,
  * picked once per frame from a table (metric_ops). */
-#define METRIC(name) (1u << VOR_METRIC_##name)
+#define METRIC(name) ((uint32_t)1 << (uint32_t)VOR_METRIC_##name)
 #define IN(bit, set) (((bit) & (set)) != 0u)
 /* the metrics whose keys are rationals (rank_key_t) */
 #define RATIONAL_METRICS (METRIC(ELLIPTIC) | METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))
@@ -1039,7 +1039,7 @@ static int metric_check(const vor_raster_sites_t *s)
     if ((unsigned)s->metric > (unsigned)VOR_METRIC_POLYLINE) {
         return VOR_ERR_ARG;
     }
-    const uint32_t bit = 1u << s->metric;
+    const uint32_t bit = (uint32_t)1 << (uint32_t)s->metric;
     if (IN(bit, METRIC(L1) | METRIC(LINF) | METRIC(FARTHEST) | METRIC(SEGMENT))) {
         return VOR_OK;
     } else if (IN(bit, METRIC(LP))) {
@@ -1117,7 +1117,7 @@ static void prepare(metric_t *m, const vor__raster_t *r)
     m->step_x = frame->step_x;
     m->sites = s;
     m->metric = s->metric;
-    m->metric_bit = 1u << s->metric;
+    m->metric_bit = (uint32_t)1 << (uint32_t)s->metric;
     m->key = metric_ops[s->metric].key;
     m->compare = metric_ops[s->metric].compare;
     m->bounds = metric_ops[s->metric].bounds;
