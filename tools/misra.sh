@@ -29,7 +29,7 @@
 #     those two findings (so the suite cannot pass with the addon broken).
 # Nothing is cached: cppcheck's build directory is emptied on every run.
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/.." || exit 1
 
 counts=0
 [ "${1-}" = "--counts" ] && counts=1
