@@ -124,7 +124,7 @@ VOR__INLINE int64_t vor__mul_i64_i32(int64_t a, int32_t b)
     uint64_t ma = (a < 0) ? 0u - (uint64_t)a : (uint64_t)a;
     uint32_t mb = (b < 0) ? 0u - (uint32_t)b : (uint32_t)b;
     uint64_t m = vor__mul_u32((uint32_t)ma, mb) + (vor__mul_u32((uint32_t)(ma >> 32), mb) << 32);
-    return (int64_t)(((a < 0) != (b < 0)) ? 0u - m : m);
+    return (int64_t)(((a < 0) != (b < 0)) ? (0u - m) : m);
 #else
     return a * b;
 #endif
@@ -167,7 +167,7 @@ VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
 VOR__INLINE int vor__mw_sign_of_products(int64_t p0, int64_t q0, int64_t p1, int64_t q1,
                                          int64_t p2, int64_t q2)
 {
-    vor__sdlimb sum = (vor__sdlimb)p0 * q0 + (vor__sdlimb)p1 * q1 + (vor__sdlimb)p2 * q2;
+    vor__sdlimb sum = ((vor__sdlimb)p0 * q0) + (vor__sdlimb)p1 * q1 + (vor__sdlimb)p2 * q2;
     return (sum > 0) - (sum < 0);
 }
 #endif
@@ -216,7 +216,7 @@ VOR__INLINE void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 32
         r[i] = (vor__limb)v;
-        v = (i == 0) ? v >> 32 : 0u;
+        v = (i == 0) ? (v >> 32) : 0u;
 #else
         r[i] = (i == 0) ? v : 0u;
 #endif
@@ -269,14 +269,14 @@ VOR__INLINE void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
     for (size_t i = 0; i < nr; i++) {
         r[i] = 0;
     }
-    for (size_t i = 0; i < na && i < nr; i++) {
+    for (size_t i = 0; (i < na) && (i < nr); i++) {
         vor__limb carry = 0;
-        for (size_t j = 0; j < nb && i + j < nr; j++) {
+        for (size_t j = 0; (j < nb) && ((i + j) < nr); j++) {
             vor__dlimb t = vor__mul_limb(a[i], b[j]) + r[i + j] + carry;
             r[i + j] = (vor__limb)t;
             carry = (vor__limb)(t >> VOR_LIMB_BITS);
         }
-        if (i + nb < nr) {
+        if ((i + nb) < nr) {
             r[i + nb] = carry;
         }
     }
@@ -331,7 +331,7 @@ VOR__INLINE int vor__mw_sign64(int64_t v)
 /* |d| for the difference of two int32 values: at most 2^32 - 1. */
 VOR__ALWAYS_INLINE uint32_t vor__mw_magnitude(int64_t d)
 {
-    return (uint32_t)(d < 0 ? -d : d);
+    return (uint32_t)((d < 0) ? -d : d);
 }
 
 /* r = -r over n limbs (two's complement). */
@@ -368,7 +368,7 @@ VOR__INLINE void vor__mw_shl1(vor__limb *r, size_t n)
 /* r >>= 1 over n limbs, as an unsigned number. */
 VOR__INLINE void vor__mw_shr1(vor__limb *r, size_t n)
 {
-    for (size_t i = 0; i + 1 < n; i++) {
+    for (size_t i = 0; (i + 1) < n; i++) {
         r[i] = (vor__limb)((r[i] >> 1) | (r[i + 1] << (VOR_LIMB_BITS - 1)));
     }
     r[n - 1] >>= 1;
@@ -448,7 +448,7 @@ VOR__ALWAYS_INLINE void vor__mw_u128_add(vor__mw_u128_t *r, const vor__mw_u128_t
                                          const vor__mw_u128_t *b)
 {
     uint64_t lo = a->lo + b->lo;
-    uint64_t hi = a->hi + b->hi + (lo < a->lo ? 1u : 0u);
+    uint64_t hi = a->hi + b->hi + ((lo < a->lo) ? 1u : 0u);
     r->lo = lo;
     r->hi = hi;
 }
@@ -466,7 +466,7 @@ VOR__ALWAYS_INLINE void vor__mw_u128_sub(vor__mw_u128_t *r, const vor__mw_u128_t
                                          const vor__mw_u128_t *b)
 {
     uint64_t lo = a->lo - b->lo;
-    uint64_t hi = a->hi - b->hi - (a->lo < b->lo ? 1u : 0u);
+    uint64_t hi = a->hi - b->hi - ((a->lo < b->lo) ? 1u : 0u);
     r->lo = lo;
     r->hi = hi;
 }
@@ -487,10 +487,10 @@ VOR__ALWAYS_INLINE void vor__mw_u128_shr(vor__mw_u128_t *r, const vor__mw_u128_t
 VOR__ALWAYS_INLINE int vor__mw_u128_compare(const vor__mw_u128_t *a, const vor__mw_u128_t *b)
 {
     if (a->hi != b->hi) {
-        return a->hi < b->hi ? -1 : 1;
+        return (a->hi < b->hi) ? -1 : 1;
     }
     if (a->lo != b->lo) {
-        return a->lo < b->lo ? -1 : 1;
+        return (a->lo < b->lo) ? -1 : 1;
     }
     return 0;
 }
@@ -501,7 +501,7 @@ VOR__ALWAYS_INLINE int vor__mw_u128_compare(const vor__mw_u128_t *a, const vor__
 VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
 {
 #if defined(__GNUC__) && defined(__ARM_FEATURE_CLZ)
-    return (v == 0u) ? 0u : 32u - (unsigned)__builtin_clz(v);
+    return (v == 0u) ? 0u : (32u - (unsigned)__builtin_clz(v));
 #else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
@@ -534,7 +534,7 @@ VOR__INLINE unsigned vor__mw_bit_length_limbs(const vor__limb *a, size_t n)
 
 VOR__ALWAYS_INLINE int vor__mw_u128_is_zero(const vor__mw_u128_t *a)
 {
-    return a->lo == 0u && a->hi == 0u;
+    return (a->lo == 0u) && (a->hi == 0u);
 }
 
 /* r[0..n) = *v, zero-extended (n >= 128 bits of limbs). v by pointer: a
@@ -546,10 +546,10 @@ VOR__HELPER void vor__mw_from_u128(vor__limb *r, size_t n, const vor__mw_u128_t 
 {
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 64
-        r[i] = i >= 2u ? 0u : (i & 1u) ? v->hi : v->lo;
+        r[i] = (i >= 2u) ? 0u : (i & 1u) ? v->hi : v->lo;
 #else
         uint64_t half = (i & 2u) ? v->hi : v->lo;
-        r[i] = i >= 4u ? 0u : (i & 1u) ? (uint32_t)(half >> 32) : (uint32_t)half;
+        r[i] = (i >= 4u) ? 0u : (i & 1u) ? (uint32_t)(half >> 32) : (uint32_t)half;
 #endif
     }
 }
@@ -571,7 +571,7 @@ VOR__ALWAYS_INLINE void vor__mw_s128_product(vor__mw_s128_t *r, int64_t x, int64
 {
     uint64_t mag = vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(y));
     vor__mw_u128_set(&r->mag, mag);
-    r->neg = (x < 0) != (y < 0) && mag != 0u;
+    r->neg = (x < 0) != (y < 0) && (mag != 0u);
 }
 
 /* *r = *a + *b, for sums below 2^128 in magnitude. */
@@ -618,7 +618,7 @@ VOR__HELPER void vor__mw_i96_mul(vor__mw_i96_t *r, int64_t x, uint32_t y)
 /* *p > *q. */
 VOR__HELPER int vor__mw_i96_greater(const vor__mw_i96_t *p, const vor__mw_i96_t *q)
 {
-    return p->hi > q->hi || (p->hi == q->hi && p->lo > q->lo);
+    return (p->hi > q->hi) || ((p->hi == q->hi) && (p->lo > q->lo));
 }
 
 /* ------------------------------------------------------------ 192 bits */

@@ -158,7 +158,7 @@ static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
-    return v[0] != VOR__INFINITE && v[1] != VOR__INFINITE && v[2] != VOR__INFINITE &&
+    return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
            vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
 }
 
@@ -169,7 +169,7 @@ static inline bool vor__strictly_between(const vor_point_t *a, const vor_point_t
                                          const vor_point_t *b)
 {
     int sx = vor__mw_sign64((int64_t)b->x - a->x), sy = vor__mw_sign64((int64_t)b->y - a->y);
-    return vor__mw_sign64((int64_t)m->x - a->x) == sx && vor__mw_sign64((int64_t)m->y - a->y) == sy &&
+    return (vor__mw_sign64((int64_t)m->x - a->x) == sx) && vor__mw_sign64((int64_t)m->y - a->y) == sy &&
            vor__mw_sign64((int64_t)b->x - m->x) == sx && vor__mw_sign64((int64_t)b->y - m->y) == sy;
 }
 

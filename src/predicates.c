@@ -159,7 +159,7 @@ VOR__INLINE bool wide_cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy, uint
         return n1;
     }
     bool second = m2 > m1; /* opposite signs: the larger magnitude wins */
-    *low = second ? m2 - m1 : m1 - m2;
+    *low = second ? (m2 - m1) : (m1 - m2);
     *high = 0u;
     return second ? n2 : n1;
 }
@@ -194,7 +194,7 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
 VOR__INLINE int32_t top_bits(int64_t v, unsigned t)
 {
     int32_t w = (int32_t)((uint32_t)v << t);
-    return (w >= 0) ? (w >> 17) : ~((~w) >> 17);
+    return (w >= 0) ? ((w >> 17)) : ~((~w) >> 17);
 }
 
 /* max(|x|, |y|) + 1 of a shifted difference pair (x, y), |x|, |y| <= 2^14. */
@@ -245,7 +245,7 @@ static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
                           top_bits(d[3], t), top_bits(d[4], t), top_bits(d[5], t)};
     int64_t det = vor__incircle_narrow(shifted);
     const int64_t error = ((int64_t)3 << 46) + ((int64_t)1 << 35);
-    if (det >= error || det <= -error) {
+    if ((det >= error) || (det <= -error)) {
         return vor__mw_sign64(det);
     }
     uint64_t size = (uint64_t)((det < 0) ? -det : det);
@@ -352,7 +352,7 @@ enum row_kind { ROW_POINT, ROW_DY, ROW_SQUARE, ROW_DX, ROW_KINDS };
 
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k)
 {
-    if (sites == NULL || i == j || j == k || i == k) {
+    if ((sites == NULL) || (i == j) || (j == k) || (i == k)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     int sign = vor__orient2d_exact(&sites[i], &sites[j], &sites[k], NULL);
@@ -368,7 +368,7 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      * largest index, the origin, to the last place, (u, v, w). The minor
      * is then det [[u - w], [v - w]], cofactor sign +1. */
     uint32_t u = i, v = j, w = k;
-    if (u > v && u > w) { /* (j, k, i) */
+    if ((u > v) && (u > w)) { /* (j, k, i) */
         u = j;
         v = k;
         w = i;
@@ -427,7 +427,7 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
         uint64_t twice = 2u * (uint64_t)vor__mw_magnitude(halved);
         c[r] = (kind[r] == ROW_POINT) ? lift : (kind[r] == ROW_SQUARE) ? 1u : twice;
         c_high[r] = (kind[r] == ROW_POINT) ? lift_high : 0u;
-        c_negative[r] = (kind[r] == ROW_DY || kind[r] == ROW_DX) && halved < 0;
+        c_negative[r] = ((kind[r] == ROW_DY) || (kind[r] == ROW_DX)) && (halved < 0);
     }
     vor__mw_u192_t sums[2]; /* positive, negative */
     clear_sums(sums);
@@ -443,7 +443,7 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k,
                      uint32_t l)
 {
-    if (sites == NULL || i == j || i == k || i == l || j == k || j == l || k == l) {
+    if ((sites == NULL) || (i == j) || (i == k) || (i == l) || (j == k) || (j == l) || (k == l)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     int sign = vor__incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], NULL);
@@ -457,7 +457,7 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t 
 VOR__INLINE int64_t first_term_narrow(int32_t yl, int32_t xp, int32_t yp, int32_t xq,
                                       int32_t yq, int64_t by_y)
 {
-    int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
+    int32_t zp = (xp * xp) + (yp * yp), zq = (xq * xq) + (yq * yq);
     int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
     return vor__mul_i64_i32(by_y, 2 * yl) - by_z;
 }
@@ -509,7 +509,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
     int64_t by_y = vor__mul_i32(f[1], f[4]) - vor__mul_i32(f[2], f[3]);
     int64_t filtered = first_term_narrow(f[0], f[1], f[2], f[3], f[4], by_y);
     const int64_t error = (int64_t)1 << 33;
-    bool decided = filtered >= error || filtered <= -error;
+    bool decided = (filtered >= error) || (filtered <= -error);
     *next = decided ? 3u : 1u;
     return decided ? vor__mw_sign64(filtered) : 0;
 #else
@@ -590,7 +590,7 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then.
      * The rows' kinds go to term_sign packed, 2 bits a row. */
     int sign = 0;
-    for (unsigned t = first; t < 64 && sign == 0; t++) {
+    for (unsigned t = first; (t < 64) && (sign == 0); t++) {
         unsigned kinds = 0, squares = 0;
         for (unsigned r = 0; r < 3; r++) {
             unsigned kind = (t >> ((shifts >> (4u * r)) & 15u)) & 3u;
@@ -654,7 +654,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     VOR__COUNT(stats, incircle_perturbed);
     VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
     int sign = first_two_terms(sites, i, j, k, l);
-    if (sign == 1 || sign == -1) {
+    if ((sign == 1) || (sign == -1)) {
         return sign;
     }
     return later_terms(sites, i, j, k, l, (sign == 0) ? 1u : 3u);
@@ -681,7 +681,7 @@ int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b)
 int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
                     vor_stats_t *stats)
 {
-    if (sites == NULL || q == a || q == b || a == b) {
+    if ((sites == NULL) || (q == a) || (q == b) || (a == b)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     const vor_point_t *pq = &sites[q], *pa = &sites[a], *pb = &sites[b];
@@ -691,10 +691,10 @@ int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b
     }
     VOR__COUNT(stats, closer_perturbed);
     VOR_ASSERT(q != a && q != b && a != b);
-    if (a < q || b < q) {
+    if ((a < q) || (b < q)) {
         bool a_first = a < b;
         /* L = a: -2 (qy - ay), then +1; L = b: 2 (qy - by), then -1 */
-        int64_t coefficient = a_first ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
+        int64_t coefficient = a_first ? ((int64_t)pa->y - pq->y) : (int64_t)pq->y - pb->y;
         sign = vor__mw_sign64(coefficient);
         return (sign != 0) ? sign : (a_first ? 1 : -1);
     }
@@ -705,7 +705,7 @@ int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b
     }
     if (sign == 0) {
         bool a_middle = a < b;
-        int64_t coefficient = a_middle ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
+        int64_t coefficient = a_middle ? ((int64_t)pa->y - pq->y) : (int64_t)pq->y - pb->y;
         sign = vor__mw_sign64(coefficient);
         if (sign == 0) {
             sign = a_middle ? -1 : 1;
@@ -735,11 +735,11 @@ static unsigned difference_bits(const vor__mw_u192_t sums[2])
     uint64_t borrow = 0, w[3];
     for (unsigned i = 0; i < 3u; i++) {
         w[i] = a->w[i] - b->w[i] - borrow;
-        borrow = (a->w[i] < b->w[i] || (a->w[i] == b->w[i] && borrow != 0u)) ? 1u : 0u;
+        borrow = ((a->w[i] < b->w[i]) || ((a->w[i] == b->w[i]) && (borrow != 0u))) ? 1u : 0u;
     }
     for (unsigned i = 3; i-- > 0;) {
         if (w[i] != 0u) {
-            return 64u * i + vor__mw_bit_length(w[i]);
+            return (64u * i) + vor__mw_bit_length(w[i]);
         }
     }
     return 0;
@@ -753,7 +753,7 @@ unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vo
         /* as the narrow tier: |det| < 2^63 */
         int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
                       vor__mul_i32((int32_t)acy, (int32_t)bcx);
-        return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
+        return vor__mw_bit_length((uint64_t)((det < 0) ? -det : det));
     }
     /* 33-bit differences: products < 2^66, det < 2^67 */
     vor__limb e[4][VOR__WIDE_LIMBS], det[VOR__WIDE_LIMBS], other[VOR__WIDE_LIMBS];
@@ -779,7 +779,7 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
     uint64_t m = bounds[0] | bounds[1] | bounds[2] | bounds[3] | bounds[4] | bounds[5];
     if (m < (1u << 14)) { /* as the narrow tier: |det| < 2^60 */
         int64_t det = vor__incircle_narrow_of(bounds, d);
-        return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
+        return vor__mw_bit_length((uint64_t)((det < 0) ? -det : det));
     }
     /* the sign tiers' positive and negative sums; |det| is their
      * difference */

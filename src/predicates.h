@@ -86,10 +86,10 @@ VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
 VOR__INLINE int64_t vor__incircle_narrow(const int32_t d[6])
 {
     int32_t ax = d[0], ay = d[1], bx = d[2], by = d[3], cx = d[4], cy = d[5];
-    int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
-    int32_t lc = cx * cx + cy * cy;
-    return vor__mul_i32(la, bx * cy - by * cx) + vor__mul_i32(lb, cx * ay - cy * ax) +
-           vor__mul_i32(lc, ax * by - ay * bx);
+    int32_t la = (ax * ax) + (ay * ay), lb = (bx * bx) + (by * by);
+    int32_t lc = (cx * cx) + (cy * cy);
+    return vor__mul_i32(la, (bx * cy) - (by * cx)) + vor__mul_i32(lb, (cx * ay) - (cy * ax)) +
+           vor__mul_i32(lc, (ax * by) - (ay * bx));
 }
 
 /* The bounds of the six differences d (vor__mw_bound). The caller ORs
