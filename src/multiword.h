@@ -83,8 +83,10 @@ typedef uint64_t vor__dlimb;
 VOR__INLINE uint64_t vor__mul_u32(uint32_t a, uint32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
-    uint32_t al = a & 0xFFFFu, ah = a >> 16;
-    uint32_t bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t al = a & 0xFFFFu;
+    uint32_t ah = a >> 16;
+    uint32_t bl = b & 0xFFFFu;
+    uint32_t bh = b >> 16;
     uint32_t lo = al * bl;
     uint32_t hi = ah * bh;
     uint32_t mid1 = al * bh;
@@ -149,10 +151,14 @@ VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
     *high = (uint64_t)(p >> 64);
     return (uint64_t)p;
 #else
-    uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32);
-    uint32_t b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
-    uint64_t p00 = vor__mul_u32(a0, b0), p01 = vor__mul_u32(a0, b1);
-    uint64_t p10 = vor__mul_u32(a1, b0), p11 = vor__mul_u32(a1, b1);
+    uint32_t a0 = (uint32_t)a;
+    uint32_t a1 = (uint32_t)(a >> 32);
+    uint32_t b0 = (uint32_t)b;
+    uint32_t b1 = (uint32_t)(b >> 32);
+    uint64_t p00 = vor__mul_u32(a0, b0);
+    uint64_t p01 = vor__mul_u32(a0, b1);
+    uint64_t p10 = vor__mul_u32(a1, b0);
+    uint64_t p11 = vor__mul_u32(a1, b1);
     /* three values below 2^32 each: no overflow */
     uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
     *high = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
@@ -181,13 +187,16 @@ VOR__INLINE uint64_t vor__shl_u64(uint64_t v, unsigned s)
 #if VOR_LIMB_BITS == 64
     return v << s;
 #else
-    uint32_t lo = (uint32_t)v, hi = (uint32_t)(v >> 32);
+    uint32_t lo = (uint32_t)v;
+    uint32_t hi = (uint32_t)(v >> 32);
     if (s >= 32u) {
         hi = lo << (s - 32u);
         lo = 0;
     } else if (s != 0u) { /* lo >> 32 would be undefined */
         hi = (hi << s) | (lo >> (32u - s));
         lo <<= s;
+    } else {
+        /* s == 0: v as it is */
     }
     return ((uint64_t)hi << 32) | lo;
 #endif
@@ -198,13 +207,16 @@ VOR__INLINE uint64_t vor__shr_u64(uint64_t v, unsigned s)
 #if VOR_LIMB_BITS == 64
     return v >> s;
 #else
-    uint32_t lo = (uint32_t)v, hi = (uint32_t)(v >> 32);
+    uint32_t lo = (uint32_t)v;
+    uint32_t hi = (uint32_t)(v >> 32);
     if (s >= 32u) {
         lo = hi >> (s - 32u);
         hi = 0;
     } else if (s != 0u) {
         lo = (lo >> s) | (hi << (32u - s));
         hi >>= s;
+    } else {
+        /* s == 0: v as it is */
     }
     return ((uint64_t)hi << 32) | lo;
 #endif
@@ -402,7 +414,8 @@ VOR__HELPER void vor__mw_times4(vor__limb *r, const vor__limb *a, size_t n)
  * registers when optimising. Every helper reads its operands before it
  * writes r, so r may be one of them. */
 typedef struct vor__mw_u128 {
-    uint64_t lo, hi;
+    uint64_t lo;
+    uint64_t hi;
 } vor__mw_u128_t;
 
 /* A signed value below 2^128 in magnitude, as sign and magnitude (neg is
@@ -437,7 +450,9 @@ VOR__ALWAYS_INLINE void vor__mw_u128_mul(vor__mw_u128_t *r, uint64_t a, uint64_t
 /* *r = *a * b, for a product known to be below 2^128. */
 VOR__ALWAYS_INLINE void vor__mw_u128_mul64(vor__mw_u128_t *r, const vor__mw_u128_t *a, uint64_t b)
 {
-    uint64_t a_hi = a->hi, high, ignored;
+    uint64_t a_hi = a->hi;
+    uint64_t high;
+    uint64_t ignored;
     uint64_t low = vor__mul_u64(a->lo, b, &high);
     r->lo = low;
     r->hi = high + vor__mul_u64(a_hi, b, &ignored);
@@ -456,7 +471,8 @@ VOR__ALWAYS_INLINE void vor__mw_u128_add(vor__mw_u128_t *r, const vor__mw_u128_t
 /* *acc += a * b, modulo 2^128: the product never leaves registers. */
 VOR__ALWAYS_INLINE void vor__mw_u128_add_product(vor__mw_u128_t *acc, uint64_t a, uint64_t b)
 {
-    uint64_t high, low = vor__mul_u64(a, b, &high);
+    uint64_t high;
+    uint64_t low = vor__mul_u64(a, b, &high);
     acc->lo += low;
     acc->hi += high + ((acc->lo < low) ? 1u : 0u);
 }
@@ -498,15 +514,16 @@ VOR__ALWAYS_INLINE int vor__mw_u128_compare(const vor__mw_u128_t *a, const vor__
 /* Bit length of v: the least k with v < 2^k, 0 for 0. One CLZ where the
  * core has it (Armv7-M and up); elsewhere by halving, not the builtin,
  * which becomes a runtime call on ARMv6-M and 32-bit RISC-V without Zbb. */
-VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
+VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v_in)
 {
+    uint32_t v = v_in;
 #if defined(__GNUC__) && defined(__ARM_FEATURE_CLZ)
     return (v == 0u) ? 0u : (32u - (unsigned)__builtin_clz(v));
 #else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
         /* (v >> half) != 0 as a comparison, which an analyser bounds v by */
-        if (v >= (1u << half)) {
+        if (v >= ((uint32_t)1 << half)) {
             v >>= half;
             k += half;
         }
@@ -633,7 +650,8 @@ typedef struct vor__mw_u192 {
 VOR__INLINE void vor__mw_u192_add_product(vor__mw_u192_t *acc, uint64_t a, uint64_t a_high,
                                           uint64_t b, uint64_t b_high)
 {
-    uint64_t w1, w0 = vor__mul_u64(a, b, &w1);
+    uint64_t w1;
+    uint64_t w0 = vor__mul_u64(a, b, &w1);
     uint64_t w2 = a_high & b_high;
     uint64_t add = (0u - a_high) & b;
     w1 += add;
