@@ -29,11 +29,13 @@
 #                           one diagram, checked against fresh builds
 #   make prove              Frama-C EVA: no runtime error in the public calls
 #                           over their inputs (tools/prove/, docs/testing.md)
+#   make misra              cppcheck's MISRA C:2012 addon over the library: no
+#                           finding outside tools/misra-deviations.txt (docs/misra.md)
 #   make docs               the API reference from the headers (Doxygen):
 #                           build/docs/html/index.html; fails on any warning
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
-# rsvg-convert, doxygen, gcovr, frama-c) is installed on demand by
+# rsvg-convert, doxygen, gcovr, frama-c, cppcheck) is installed on demand by
 # tools/install-deps.sh, so these work on a fresh Debian machine.
 
 PORT ?= host
@@ -103,7 +105,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove misra clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -350,7 +352,7 @@ coverage-report:
 	+@tools/coverage-report.sh
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer misra
 	+@tools/run-tests.sh
 
 size:
@@ -361,6 +363,10 @@ size:
 prove:
 	@tools/install-deps.sh prove
 	@tools/prove/prove.sh
+
+misra:
+	@tools/install-deps.sh misra
+	@tools/misra.sh --counts
 
 bench-predicates:
 	@tools/install-deps.sh host python toolchains

@@ -11,7 +11,8 @@
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself (also built with GCC and clang at -O1 to -Oz), GCC's
-# static analyser over the library, the check that a firmware links only the
+# static analyser over the library, cppcheck's MISRA C:2012 addon over it
+# (every finding a recorded deviation), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
 # the build-system manifests, the layer rule of src/ (tools/check-layers.py),
 # the CMake package in consumer programs (tools/test-consumers.sh), the SPDX
@@ -42,7 +43,7 @@ only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
 suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli fuzz coverage harness"
-suites="$suites freestanding analyzer linking programs memory-tables manifests layers consumers spdx docs"
+suites="$suites freestanding analyzer misra linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
 done
@@ -392,6 +393,19 @@ analyzer() {
     record analyzer "$log" 0
 }
 if wanted analyzer; then analyzer; else skip analyzer; fi
+
+# cppcheck's MISRA C:2012 addon over the library in three configurations
+# (tools/misra.sh): every finding must be a deviation of
+# tools/misra-deviations.txt, every deviation must still be needed, every
+# header must be analysed, and a file with known violations must be
+# reported (so the suite cannot pass with the addon broken).
+if wanted misra; then
+    misra_log="$logs/misra.log"
+    tools/misra.sh >"$misra_log" 2>&1
+    record misra "$misra_log" $?
+else
+    skip misra
+fi
 
 # A firmware links only what it calls: the bench/size/ programs, linked
 # at -Os with --gc-sections, keep only the library files of their feature
