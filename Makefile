@@ -352,7 +352,7 @@ coverage-report:
 	+@tools/coverage-report.sh
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer misra
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer misra prove
 	+@tools/run-tests.sh
 
 size:

@@ -43,7 +43,7 @@ only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
 suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli fuzz coverage harness"
-suites="$suites freestanding analyzer misra linking programs memory-tables manifests layers consumers spdx docs"
+suites="$suites freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
 done
@@ -405,6 +405,19 @@ if wanted misra; then
     record misra "$misra_log" $?
 else
     skip misra
+fi
+
+# Frama-C's EVA (tools/prove/prove.sh) over the harnesses that show 0
+# alarms and finish in about a minute each: the predicates (as built at
+# -O2 and -Os), the multi-word arithmetic (generic and Cortex-M0), every
+# diagram update and the raster. make prove runs every harness.
+if wanted prove; then
+    prove_log="$logs/prove.log"
+    tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram raster \
+        >"$prove_log" 2>&1
+    record prove "$prove_log" $?
+else
+    skip prove
 fi
 
 # A firmware links only what it calls: the bench/size/ programs, linked

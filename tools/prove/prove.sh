@@ -9,11 +9,17 @@
 # property, or when the harnesses together analyse less than 95 % of the
 # library's functions.
 #   tools/prove/prove.sh [HARNESS...]   (default: every harness)
+# With harnesses named (make test's suite prove runs those that finish in
+# about a minute), the share of functions is printed but not required.
+# Ends with "N passed, M failed": one check per harness, and the share.
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/prove
 mkdir -p "$out"
 status=0
+named=$#
+passed=0
+failed=0
 harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries geometry raster}
 
 # Options every harness shares.
@@ -75,6 +81,7 @@ for name in $harnesses; do
         cat "$report"
         echo "prove: $name: frama-c failed ($report)" >&2
         status=1
+        failed=$((failed + 1))
         continue
     fi
     seconds=$(($(date +%s) - start))
@@ -101,7 +108,9 @@ for name in $harnesses; do
         awk '/Warning/ && !/eva:alarm/ { print; getline; print }' "$report" >&2
         echo "prove: $name: not proven: $alarms alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)" >&2
         status=1
+        failed=$((failed + 1))
     else
+        passed=$((passed + 1))
         echo "prove: $name: 0 alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)"
     fi
 done
@@ -111,8 +120,14 @@ analysed=$(wc -l <"$out/analysed.txt")
 share=$((analysed * 100 / total))
 echo "prove: $analysed of the library's $total functions analysed ($share %); the others: $out/not-analysed.txt"
 comm -23 "$functions" "$out/analysed.txt" >"$out/not-analysed.txt"
-if [ "$share" -lt 95 ]; then
-    echo "prove: less than 95 % of the library's functions analysed" >&2
-    status=1
+if [ "$named" -eq 0 ]; then
+    if [ "$share" -lt 95 ]; then
+        echo "prove: less than 95 % of the library's functions analysed" >&2
+        status=1
+        failed=$((failed + 1))
+    else
+        passed=$((passed + 1))
+    fi
 fi
+echo "$passed passed, $failed failed"
 exit $status
