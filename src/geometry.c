@@ -620,7 +620,10 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     }
     /* advance: along the hull edge w -> u, the next site between site and u
      * on the segment (a Delaunay neighbour: consecutive sites on a hull
-     * edge have a Voronoi ray in common), else u and the next hull edge */
+     * edge have a Voronoi ray in common), else u and the next hull edge.
+     * The neighbours are the true diagram's, so at most one lies strictly
+     * inside the segment: of two, the nearer is strictly closer than site
+     * and the farther on their whole bisector, which cuts them apart. */
     const vor_point_t *s = d->sites;
     uint32_t w;
     uint32_t u;
@@ -632,8 +635,7 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
     (void)vor_neighbours_begin(&ni, d, it->site); /* a hull site: in the mesh */
     while (vor_neighbours_next(&ni, &n) != 0) {
         if ((n != u) && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
-            vor__strictly_between(&s[it->site], &s[n], &s[u]) &&
-            (best == VOR__NONE || vor__strictly_between(&s[it->site], &s[n], &s[best]))) {
+            vor__strictly_between(&s[it->site], &s[n], &s[u])) {
             best = n;
         }
     }
@@ -1187,14 +1189,17 @@ static size_t sum_limbs(uint32_t j)
     return (((size_t)j * 130u) + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
+/* k <= MAX_SUM_VERTICES for every cell: both counts scratch_fits is
+ * given (the neighbours met plus 4, and trace's vertices, at most one per
+ * box side, one per fan step and the closing one) are at most
+ * vertex_count + 5, and vertex_count <= max_sites <= VOR_MAX_SITES. */
+typedef char vor__sum_vertices_check[((VOR_MAX_SITES + 5u) <= MAX_SUM_VERTICES) ? 1 : -1];
+
 /* Does scratch of `bytes` hold the sums of a cell of k vertices? Then
- * *stride = the limbs of each number. More than MAX_SUM_VERTICES would
- * need more scratch than a 32-bit address space has. */
+ * *stride = the limbs of each number. */
 static bool scratch_fits(size_t bytes, uint32_t k, size_t *stride)
 {
-    if (k > MAX_SUM_VERTICES) {
-        return false;
-    }
+    VOR_ASSERT(k <= MAX_SUM_VERTICES);
     size_t limbs = sum_limbs(k);
     if (limbs * SUM_NUMBERS * sizeof(vor__limb) > bytes) {
         return false;

@@ -94,13 +94,13 @@ static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root_
     }
 }
 
-/* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place. */
+/* Heapsort of ids[0..n) by site_less: O(n log n) worst case, in place.
+ * n is at least 1 (the introsort hands it ranges of 16 or more), so
+ * n - 1 does not wrap. */
 static void heap_sort(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
                       enum vor__sort_key key)
 {
-    if (n < 2u) {
-        return;
-    }
+    VOR_ASSERT(n > 0u);
     for (uint32_t i = n / 2u; i-- > 0u;) {
         sift_down(sites, ids, i, n, key);
     }

@@ -1090,16 +1090,14 @@ static void widen(int32_t v, int32_t *lo, int32_t *hi)
 
 /* Limbs holding the additive comparison of square roots of values below
  * 2^a_bits with a weight term below 2^delta_bits: E^2 < 2^(2 a_bits),
- * 4 delta^2 B < 2^(2 + 2 delta_bits + a_bits), and E, F in signed form
- * (below 2^(max(a_bits, 2 delta_bits) + 1)), plus a sign bit. */
+ * 4 delta^2 B < 2^(2 + 2 delta_bits + a_bits), plus a sign bit. E, F in
+ * signed form (below 2^(max(a_bits, 2 delta_bits) + 1)) fit in the
+ * second bound's bits already. */
 static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
 {
     uint32_t bits = 2u * a_bits;
     if ((2u + (2u * delta_bits) + a_bits) > bits) {
         bits = 2u + (2u * delta_bits) + a_bits;
-    }
-    if (((2u * delta_bits) + 2u) > bits) {
-        bits = (2u * delta_bits) + 2u;
     }
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
