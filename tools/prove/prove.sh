@@ -20,7 +20,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries geometry raster}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries geometry cells centroid raster}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
