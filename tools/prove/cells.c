@@ -24,7 +24,8 @@ static const vor_box_t boxes[BOXES] = {{-20, -20, 30, 30},
                                        {5, 5, 5, 9},
                                        {1, 0, 0, 1}};
 
-static int iterate(const vor_t *d) {
+static int iterate(const vor_t *d)
+{
     vor_cell_iter_t ci;
     vor_point_t vertices[VOR_CELL_MAX_VERTICES(N)];
     uint32_t site, count;
@@ -42,7 +43,8 @@ static int iterate(const vor_t *d) {
     return r;
 }
 
-int main(void) {
+int main(void)
+{
     vor_t d;
     int r = 0;
     d.revision = Frama_C_unsigned_int_interval(0u, UINT32_MAX);

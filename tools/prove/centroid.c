@@ -22,7 +22,8 @@ static const vor_box_t boxes[BOXES] = {{-20, -20, 30, 30},
                                        {5, 5, 5, 9},
                                        {1, 0, 0, 1}};
 
-static int centroids(const vor_t *d) {
+static int centroids(const vor_t *d)
+{
     vor_centroid_t centroid;
     int r = 0;
     /*@ loop unroll BOXES; */
@@ -40,7 +41,8 @@ static int centroids(const vor_t *d) {
     return r;
 }
 
-int main(void) {
+int main(void)
+{
     vor_t d;
     int r = 0;
     d.revision = 0u;
