@@ -116,7 +116,7 @@ static uint32_t next_on_circle(const vor_t *d, const vor_point_t *q, uint32_t be
                                uint32_t current)
 {
     vor_neighbour_iter_t it;
-    uint32_t n;
+    uint32_t n = current; /* set when the fan answers: said for the prover */
     uint32_t third;
     uint32_t next = current;
     vor__fan_begin(&it, d, current);
@@ -263,10 +263,13 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
         any = true;
     }
 
-    /* then the best unlisted neighbour of a listed site, each round */
+    /* then the best unlisted neighbour of a listed site, each round.
+     * (For Frama-C's EVA: one state per count, so that it sees
+     * nearest[0 .. count) written.) */
+    /*@ split count; */
     while (count < k) {
         uint32_t pick = VOR__NONE;
-        uint32_t n;
+        uint32_t n = 0; /* set when the fan answers: said for the prover */
         uint32_t third;
         for (uint32_t i = 0; i < count; i++) {
             vor_neighbour_iter_t it;

@@ -410,10 +410,11 @@ fi
 # Frama-C's EVA (tools/prove/prove.sh) over the harnesses that show 0
 # alarms and finish in about a minute each: the predicates (as built at
 # -O2 and -Os), the multi-word arithmetic (generic and Cortex-M0), every
-# diagram update and the raster. make prove runs every harness.
+# diagram update, the Voronoi vertices and edges, and the raster. make
+# prove runs every harness.
 if wanted prove; then
     prove_log="$logs/prove.log"
-    tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram raster \
+    tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram geometry raster \
         >"$prove_log" 2>&1
     record prove "$prove_log" $?
 else

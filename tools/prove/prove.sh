@@ -20,7 +20,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries geometry raster}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries geometry cells centroid raster}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
@@ -39,6 +39,10 @@ common="-machdep x86_32 -kernel-warn-key typing:implicit-conv-void-ptr=inactive
 options_of() {
     case $1 in
     predicates | predicates_os | multiword | multiword_armv6m) echo "" ;;
+    # cells: states kept apart through the cell's trace and clipping (on
+    # concrete boxes they stay few), so that the emitter's pool indices
+    # and held vertices are not merged across the fan's steps.
+    cells) echo "-eva-split-return full -eva-slevel-function trace:2000,find_start:500,clip_side:500,emit_edge:500" ;;
     # -eva-split-return full: a call's states stay apart by its return
     # value, so a caller's `if (call() != VOR_OK)` leaves only the states
     # where the call succeeded (vor_init's failures leave *d unwritten).

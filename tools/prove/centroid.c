@@ -1,0 +1,59 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * centroid.c - the harness of `make prove` for vor_cell_centroid: every
+ * site of each small concrete diagram in each box of cells.c, with the
+ * scratch VOR_CENTROID_SCRATCH_BYTES gives and with a misaligned one too
+ * small; then any id, any scratch size below one limb and every pointer
+ * the header allows to be NULL, NULL or not.
+ */
+#include <__fc_builtin.h>
+#include "vor.h"
+/* the diagrams of geometry.c */
+#define N 6u
+static const vor_point_t points[N] = {{0, 0},  {10, 0}, {10, 10},
+                                      {0, 10}, {0, 0},  {INT32_MIN, INT32_MAX}};
+static const vor_point_t collinear[3] = {{0, 0}, {10, 0}, {20, 0}};
+static uint32_t arena[(VOR_ARENA_BYTES(N) + 3u) / 4u];
+static uint64_t scratch[(VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(N)) + 7u) / 8u];
+#define BOXES 5u
+static const vor_box_t boxes[BOXES] = {{-20, -20, 30, 30},
+                                       {2, 3, 8, 7},
+                                       {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX},
+                                       {5, 5, 5, 9},
+                                       {1, 0, 0, 1}};
+
+static int centroids(const vor_t *d)
+{
+    vor_centroid_t centroid;
+    int r = 0;
+    /*@ loop unroll BOXES; */
+    for (unsigned b = 0; b < BOXES; b++) {
+        /*@ loop unroll N; */
+        for (uint32_t s = 0; s < N; s++) {
+            r |= vor_cell_centroid(d, s, &boxes[b], scratch, sizeof scratch, &centroid);
+            r |= vor_cell_centroid(d, s, &boxes[b], (unsigned char *)scratch + 1, 40u, &centroid);
+        }
+    }
+    r |= vor_cell_centroid(
+        Frama_C_nondet_ptr((void *)d, NULL), Frama_C_unsigned_int_interval(0u, UINT32_MAX),
+        Frama_C_nondet_ptr((void *)&boxes[0], NULL), Frama_C_nondet_ptr(scratch, NULL),
+        Frama_C_unsigned_int_interval(0u, 7u), Frama_C_nondet_ptr(&centroid, NULL));
+    return r;
+}
+
+int main(void)
+{
+    vor_t d;
+    int r = 0;
+    d.revision = 0u;
+    if (vor_init(&d, arena, sizeof arena, N) != VOR_OK) {
+        return 1;
+    }
+    r |= vor_build(&d, points, 1u, NULL, NULL);
+    r |= centroids(&d);
+    r |= vor_build(&d, collinear, 3u, NULL, NULL);
+    r |= centroids(&d);
+    r |= vor_build(&d, points, N, NULL, NULL);
+    r |= centroids(&d);
+    return r;
+}
