@@ -666,6 +666,56 @@ static void check_near_circles(void)
           bad, checked, crossings);
 }
 
+/* The documented tiers at their edges (vor.h): orient2d and closer run
+ * narrow while every coordinate difference lies in [-2^31, 2^31 - 1],
+ * incircle narrow in [-2^14, 2^14 - 1] and mid in [-2^31, 2^31 - 1]; one
+ * step outside, the next tier. The points are placed by their differences
+ * E (the largest, one on each side of an edge) and 0 or +-1 (which add no
+ * bit the bound does not have, so the bound is exactly the edge): a - c =
+ * (E, 0), b - c = (0, E) turn counterclockwise (determinant E^2); c is
+ * closer to itself than to a; and d inside the circle through d + (E, 0),
+ * d + (0, E), d - (s, s) (s the sign of E), which turn counterclockwise. */
+static void check_tier_edges(void)
+{
+    static const int64_t edges[] = {16383, 16384, -16384, -16385,
+                                    2147483647, 2147483648, -2147483648, -2147483649};
+    for (unsigned k = 0; k < sizeof edges / sizeof edges[0]; k++) {
+        int64_t e = edges[k];
+        int32_t s = (e > 0) ? 1 : -1;
+        /* a base point from which base + e and base - s fit int32 */
+        int32_t base = (int32_t)((e > 0) ? INT32_MAX - e : INT32_MIN - e);
+        vor_point_t c = {base, base};
+        vor_point_t a = {(int32_t)(base + e), base};
+        vor_point_t b = {base, (int32_t)(base + e)};
+        vor_point_t third = {base - s, base - s};
+        uint64_t magnitude = (uint64_t)(e < 0 ? -(e + 1) : e); /* of [-2^k, 2^k - 1] */
+        unsigned narrow32 = magnitude < 0x80000000u, narrow14 = magnitude < 16384u;
+        vor_stats_t stats = {0};
+        CHECK(vor__orient2d_exact(&a, &b, &c, &stats) == 1 &&
+                  stats.orient2d[VOR_TIER_NARROW] == narrow32 &&
+                  stats.orient2d[VOR_TIER_WIDE] == 1u - narrow32,
+              "orient2d, difference %d%09d: narrow %u, wide %u", (int)(e / 1000000000),
+              (int)((e < 0 ? -e : e) % 1000000000), stats.orient2d[VOR_TIER_NARROW],
+              stats.orient2d[VOR_TIER_WIDE]);
+        CHECK(vor__closer_sign(&c, &a, &c, &stats) == 1 &&
+                  stats.closer[VOR_TIER_NARROW] == narrow32 &&
+                  stats.closer[VOR_TIER_WIDE] == 1u - narrow32,
+              "closer, difference %d%09d: narrow %u, wide %u", (int)(e / 1000000000),
+              (int)((e < 0 ? -e : e) % 1000000000), stats.closer[VOR_TIER_NARROW],
+              stats.closer[VOR_TIER_WIDE]);
+        CHECK(vor__incircle_exact(&a, &b, &third, &c, &stats) == 1 &&
+                  stats.incircle[VOR_TIER_NARROW] == narrow14 &&
+                  stats.incircle[VOR_TIER_MID] == narrow32 - narrow14 &&
+                  stats.incircle[VOR_TIER_WIDE] == 1u - narrow32,
+              "incircle, difference %d%09d: narrow %u, mid %u, wide %u", (int)(e / 1000000000),
+              (int)((e < 0 ? -e : e) % 1000000000), stats.incircle[VOR_TIER_NARROW],
+              stats.incircle[VOR_TIER_MID], stats.incircle[VOR_TIER_WIDE]);
+        CHECK(vor_orient2d(a, b, c) == 1 && vor_closer(c, a, c) == 1 &&
+                  vor_incircle(a, b, third, c) == 1,
+              "public predicates, difference index %u", k);
+    }
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -675,4 +725,5 @@ void test_predicates(void)
     TEST_CASE("perturbation_reference") check_perturbation_reference();
     TEST_CASE("first_term_filter") check_first_term_filter();
     TEST_CASE("near_circles") check_near_circles();
+    TEST_CASE("tier_edges") check_tier_edges();
 }

@@ -424,7 +424,7 @@ class Mutant:
         self.detail = ''
 
     def key(self):
-        return '%s | %s | %s' % (self.path, ' '.join(self.text.split()), self.description)
+        return '%s :: %s :: %s' % (self.path, ' '.join(self.text.split()), self.description)
 
 
 def generate(files):
@@ -541,10 +541,11 @@ def load_equivalent():
             line = line.rstrip('\n')
             if not line.strip() or line.startswith('#'):
                 continue
-            parts = [p.strip() for p in line.split(' | ')]
+            parts = [p.strip() for p in line.split(' :: ')]
             if len(parts) != 4 or not parts[3]:
-                sys.exit('mutants: %s:%d: want "file | line | mutation | reason"' % (EQUIVALENT, n))
-            known['%s | %s | %s' % tuple(parts[:3])] = parts[3]
+                sys.exit('mutants: %s:%d: want "file :: line :: mutation :: reason"'
+                         % (EQUIVALENT, n))
+            known[' :: '.join(parts[:3])] = parts[3]
     return known
 
 
