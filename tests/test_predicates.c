@@ -716,6 +716,131 @@ static void check_tier_edges(void)
     }
 }
 
+/* The test's own exact integers for check_magnitudes: 16 digits of 16
+ * bits in uint32_t words, two's complement modulo 2^256, schoolbook
+ * arithmetic sharing nothing with src/multiword.h. */
+typedef struct {
+    uint32_t d[16];
+} big_t;
+
+static big_t big_of(int64_t v)
+{
+    big_t r;
+    for (unsigned i = 0; i < 16u; i++) {
+        r.d[i] = (i < 4u) ? (uint32_t)(((uint64_t)v >> (16u * i)) & 0xFFFFu)
+                          : (v < 0 ? 0xFFFFu : 0u);
+    }
+    return r;
+}
+
+static big_t big_add(big_t a, big_t b, bool subtract)
+{
+    uint32_t carry = subtract ? 1u : 0u;
+    for (unsigned i = 0; i < 16u; i++) {
+        uint32_t sum = a.d[i] + (subtract ? (~b.d[i] & 0xFFFFu) : b.d[i]) + carry;
+        a.d[i] = sum & 0xFFFFu;
+        carry = sum >> 16;
+    }
+    return a;
+}
+
+static big_t big_mul(big_t a, big_t b)
+{
+    uint64_t column[16] = {0};
+    for (unsigned i = 0; i < 16u; i++) {
+        for (unsigned j = 0; i + j < 16u; j++) {
+            column[i + j] += (uint64_t)a.d[i] * b.d[j];
+        }
+    }
+    big_t r;
+    uint64_t carry = 0;
+    for (unsigned i = 0; i < 16u; i++) {
+        carry += column[i];
+        r.d[i] = (uint32_t)(carry & 0xFFFFu);
+        carry >>= 16;
+    }
+    return r;
+}
+
+/* Bit length of |a|: the least k with |a| < 2^k. */
+static unsigned big_bits(big_t a)
+{
+    if (a.d[15] & 0x8000u) {
+        a = big_add(big_of(0), a, true);
+    }
+    for (unsigned i = 16; i-- > 0;) {
+        if (a.d[i] != 0u) {
+            unsigned k = 0;
+            while ((a.d[i] >> k) != 0u) {
+                k++;
+            }
+            return 16u * i + k;
+        }
+    }
+    return 0;
+}
+
+static int32_t magnitude_coordinate(test_rng_t *rng, unsigned scale)
+{
+    switch (scale) {
+    case 0: return test_rng_range(rng, -5000, 5000);
+    case 1: return test_rng_range(rng, -(1 << 22), 1 << 22);
+    case 2: return test_rng_range(rng, -(1 << 30), (1 << 30) - 1);
+    default: return (int32_t)test_rng_u32(rng);
+    }
+}
+
+/* vor__orient2d_bits and vor__incircle_bits (the motion cache's bounds):
+ * the bit length of the exact determinant, against the test's own big
+ * integers, for coordinates at each tier's scale and anywhere in int32
+ * (differences of 33 bits), with a shared point now and then so that
+ * small and zero determinants occur. The first five wrong cases are
+ * printed (as failed checks), then the count. */
+static void check_magnitudes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 2024);
+    unsigned bad = 0;
+    for (unsigned n = 0; n < 4000u; n++) {
+        unsigned scale = n % 4u;
+        vor_point_t p[4];
+        for (unsigned k = 0; k < 4u; k++) {
+            p[k].x = magnitude_coordinate(&rng, scale);
+            p[k].y = magnitude_coordinate(&rng, scale);
+        }
+        if (n % 7u == 0u && scale < 3u) { /* p[2] near the line of p[0], p[1] */
+            p[2].x = (int32_t)(p[0].x + ((int64_t)p[0].x - p[1].x) / 2);
+            p[2].y = (int32_t)(p[0].y + ((int64_t)p[0].y - p[1].y) / 2);
+        }
+        if (n % 11u == 0u) {
+            p[1] = p[0];
+        }
+        big_t dx[3], dy[3];
+        for (unsigned k = 0; k < 3u; k++) {
+            dx[k] = big_of((int64_t)p[k].x - p[3].x);
+            dy[k] = big_of((int64_t)p[k].y - p[3].y);
+        }
+        /* orient2d of p0, p1, p3: (p0 - p3) x (p1 - p3) */
+        big_t orient = big_add(big_mul(dx[0], dy[1]), big_mul(dy[0], dx[1]), true);
+        /* incircle of p0, p1, p2, p3: sum of lift(k) cross(k + 1, k + 2) */
+        big_t incircle = big_of(0);
+        for (unsigned k = 0; k < 3u; k++) {
+            unsigned u = (k + 1u) % 3u, v = (k + 2u) % 3u;
+            big_t lift = big_add(big_mul(dx[k], dx[k]), big_mul(dy[k], dy[k]), false);
+            big_t cross = big_add(big_mul(dx[u], dy[v]), big_mul(dy[u], dx[v]), true);
+            incircle = big_add(incircle, big_mul(lift, cross), false);
+        }
+        unsigned got_orient = vor__orient2d_bits(&p[0], &p[1], &p[3]);
+        unsigned got_incircle = vor__incircle_bits(&p[0], &p[1], &p[2], &p[3]);
+        if (got_orient != big_bits(orient) || got_incircle != big_bits(incircle)) {
+            bad++;
+            CHECK(bad > 5u, "case %u: orient2d %u bits (want %u), incircle %u bits (want %u)", n,
+                  got_orient, big_bits(orient), got_incircle, big_bits(incircle));
+        }
+    }
+    CHECK(bad == 0u, "%u of 4000 magnitudes wrong", bad);
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -726,4 +851,5 @@ void test_predicates(void)
     TEST_CASE("first_term_filter") check_first_term_filter();
     TEST_CASE("near_circles") check_near_circles();
     TEST_CASE("tier_edges") check_tier_edges();
+    TEST_CASE("magnitudes") check_magnitudes();
 }
