@@ -805,10 +805,13 @@ static void check_magnitudes(void)
         unsigned scale = n % 4u;
         vor_point_t p[4];
         for (unsigned k = 0; k < 4u; k++) {
-            p[k].x = magnitude_coordinate(&rng, scale);
-            p[k].y = magnitude_coordinate(&rng, scale);
+            /* every other round, each coordinate at its own scale: one
+             * large difference among small ones picks the tier */
+            bool mixed = n % 8u >= 4u;
+            p[k].x = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 4u : scale);
+            p[k].y = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 4u : scale);
         }
-        if (n % 7u == 0u && scale < 3u) { /* p[2] near the line of p[0], p[1] */
+        if (n % 7u == 0u && n % 8u < 3u) { /* p[2] near the line of p[0], p[1] */
             p[2].x = (int32_t)(p[0].x + ((int64_t)p[0].x - p[1].x) / 2);
             p[2].y = (int32_t)(p[0].y + ((int64_t)p[0].y - p[1].y) / 2);
         }
@@ -841,6 +844,82 @@ static void check_magnitudes(void)
     CHECK(bad == 0u, "%u of 4000 magnitudes wrong", bad);
 }
 
+/* vor_closer_sos against the perturbation's definition (vor.h): site i
+ * moves by (eps^(4 16^i), eps^(16^i)), and the answer is the sign of
+ * |q~ - a~|^2 - |q~ - b~|^2 as eps -> 0+, that of the nonzero coefficient
+ * of the lowest power of eps. The polynomial is expanded here term by term
+ * (exponents up to 2 4 16^3 for ids 0..3); coordinates on a 5 x 5 grid,
+ * so that most exact answers are ties. */
+typedef struct {
+    uint32_t exponent;
+    int64_t coefficient;
+} eps_term_t;
+
+static int closer_sos_reference(const vor_point_t s[4], uint32_t q, uint32_t a, uint32_t b)
+{
+    eps_term_t t[32];
+    unsigned n = 0;
+    const uint32_t id[3] = {q, a, b};
+    for (unsigned axis = 0; axis < 2u; axis++) {
+        uint32_t e[3]; /* the exponent of each point's move along this axis */
+        int64_t c[3];  /* q, a, b's coordinates along it */
+        for (unsigned k = 0; k < 3u; k++) {
+            e[k] = (axis == 0u ? 4u : 1u) << (4u * id[k]);
+            c[k] = (axis == 0u) ? s[id[k]].x : s[id[k]].y;
+        }
+        int64_t da = c[0] - c[1], db = c[0] - c[2];
+        /* (da + m_q - m_a)^2 - (db + m_q - m_b)^2 */
+        t[n++] = (eps_term_t){0, da * da - db * db};
+        t[n++] = (eps_term_t){e[0], 2 * da - 2 * db};
+        t[n++] = (eps_term_t){e[1], -2 * da};
+        t[n++] = (eps_term_t){e[2], 2 * db};
+        t[n++] = (eps_term_t){e[0] + e[1], -2};
+        t[n++] = (eps_term_t){e[1] + e[1], 1};
+        t[n++] = (eps_term_t){e[0] + e[2], 2};
+        t[n++] = (eps_term_t){e[2] + e[2], -1};
+    }
+    uint32_t best = UINT32_MAX;
+    int64_t sum = 0;
+    for (unsigned i = 0; i < n; i++) {
+        int64_t c = 0;
+        for (unsigned j = 0; j < n; j++) {
+            c += (t[j].exponent == t[i].exponent) ? t[j].coefficient : 0;
+        }
+        if (c != 0 && t[i].exponent < best) {
+            best = t[i].exponent;
+            sum = c;
+        }
+    }
+    return (sum > 0) - (sum < 0);
+}
+
+static void check_closer_sos_reference(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 4242);
+    unsigned bad = 0, ties = 0;
+    for (unsigned n = 0; n < 20000u; n++) {
+        vor_point_t s[4];
+        for (unsigned k = 0; k < 4u; k++) {
+            s[k].x = test_rng_range(&rng, -2, 2);
+            s[k].y = test_rng_range(&rng, -2, 2);
+        }
+        uint32_t q = test_rng_u32(&rng) % 4u, a = (q + 1u + test_rng_u32(&rng) % 3u) % 4u;
+        uint32_t b = a;
+        while (b == a || b == q) {
+            b = test_rng_u32(&rng) % 4u;
+        }
+        int want = closer_sos_reference(s, q, a, b), got = vor_closer_sos(s, q, a, b);
+        ties += vor_closer(s[q], s[a], s[b]) == 0;
+        if (got != want) {
+            bad++;
+            CHECK(bad > 5u, "closer_sos(q %u (%d, %d), a %u (%d, %d), b %u (%d, %d)) = %d, want %d",
+                  q, s[q].x, s[q].y, a, s[a].x, s[a].y, b, s[b].x, s[b].y, got, want);
+        }
+    }
+    CHECK(bad == 0u && ties > 2000u, "%u of 20000 wrong, %u ties", bad, ties);
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -852,4 +931,5 @@ void test_predicates(void)
     TEST_CASE("near_circles") check_near_circles();
     TEST_CASE("tier_edges") check_tier_edges();
     TEST_CASE("magnitudes") check_magnitudes();
+    TEST_CASE("closer_sos_reference") check_closer_sos_reference();
 }
