@@ -652,53 +652,57 @@ def main():
                 print('  %d of %d, %.0f s' % (done, len(chosen), time.time() - began), flush=True)
 
     known = load_equivalent()
+    for m in chosen:
+        if m.status == 'survived' and m.key() in known:
+            m.status, m.detail = 'equivalent', known[m.key()]
     report = []
     report.append('Mutation testing of the host suite (tools/mutants.py, every %d of %d mutants)'
                   % (args.every, len(mutants)))
+    report.append('killed%: killed / (killed + survived); equivalent: survivors shown')
+    report.append('equivalent in tools/mutants-equivalent.txt; same-code: objects unchanged')
     report.append('')
-    report.append('%-20s %8s %7s %8s %9s %9s %10s %8s' % (
-        'file', 'mutants', 'killed', 'survived', 'same-code', 'not-built', 'no-compile', 'killed%'))
+    states = ('killed', 'survived', 'equivalent', 'same-object', 'not-built', 'no-compile')
+    report.append('%-19s %7s %6s %8s %10s %9s %9s %10s %7s' % (
+        'file', 'mutants', 'killed', 'survived', 'equivalent', 'same-code', 'not-built',
+        'no-compile', 'killed%'))
     totals = {}
     for path in files + ['total']:
         ms = [m for m in chosen if m.path == path or path == 'total']
-        c = {s: sum(1 for m in ms if m.status == s)
-             for s in ('killed', 'survived', 'same-object', 'not-built', 'no-compile')}
+        c = {st: sum(1 for m in ms if m.status == st) for st in states}
         scored = c['killed'] + c['survived']
-        pct = 100.0 * c['killed'] / scored if scored else 100.0
-        report.append('%-20s %8d %7d %8d %9d %9d %10d %7.1f%%' % (
-            path, len(ms), c['killed'], c['survived'], c['same-object'], c['not-built'],
-            c['no-compile'], pct))
+        c['pct'] = 100.0 * c['killed'] / scored if scored else 100.0
+        report.append('%-19s %7d %6d %8d %10d %9d %9d %10d %6.1f%%' % (
+            (path, len(ms)) + tuple(c[st] for st in states) + (c['pct'],)))
         totals = c
-        totals['pct'] = pct
     report.append('')
     survivors = [m for m in chosen if m.status == 'survived']
-    unknown = [m for m in survivors if m.key() not in known]
-    report.append('Survivors (%d; %d not in tools/mutants-equivalent.txt):'
-                  % (len(survivors), len(unknown)))
+    report.append('Survivors not shown equivalent (%d):' % len(survivors))
     for m in survivors:
-        reason = known.get(m.key())
-        report.append('  %s:%d: %s  [%s]' % (m.path, m.line + 1, m.description,
-                                           'equivalent: ' + reason if reason else 'NEW'))
+        report.append('  %s:%d: %s' % (m.path, m.line + 1, m.description))
         report.append('      %s' % m.text.strip())
+    equivalent = [m for m in chosen if m.status == 'equivalent']
+    report.append('Equivalent survivors (%d), tools/mutants-equivalent.txt:' % len(equivalent))
+    for m in equivalent:
+        report.append('  %s:%d: %s: %s' % (m.path, m.line + 1, m.description, m.detail))
     elapsed = time.time() - began
     report.append('')
+    below = 1 if totals['pct'] < FLOOR else 0
     if problems:
         report.extend('FAIL ' + p for p in problems)
-    if totals['pct'] < FLOOR:
+    if below:
         report.append('FAIL killed %.1f %% < %.0f %%' % (totals['pct'], FLOOR))
-    for m in unknown:
-        report.append('FAIL a survivor not shown equivalent: %s:%d: %s'
+    for m in survivors:
+        report.append('FAIL a survivor neither killed nor shown equivalent: %s:%d: %s'
                       % (m.path, m.line + 1, m.description))
-    failed = bool(problems) or totals['pct'] < FLOOR or bool(unknown)
+    failed = bool(problems) or below or bool(survivors)
     report.append('run time: %.0f s' % elapsed)
     # the checks: each mutant killed or shown equivalent, the self-test's
     # (an unmutated run per configuration and group set, one killed
     # mutant), and the floor
-    below = 1 if totals['pct'] < FLOOR else 0
     self_checks = 2 * len(CONFIGS) + 1
     report.append('%d passed, %d failed' % (
-        totals['killed'] + len(survivors) - len(unknown) + self_checks - len(problems) + 1 - below,
-        len(unknown) + len(problems) + below))
+        totals['killed'] + len(equivalent) + self_checks - len(problems) + 1 - below,
+        len(survivors) + len(problems) + below))
     text = '\n'.join(report) + '\n'
     with open(os.path.join(OUT, 'report.txt'), 'w') as f:
         f.write(text)
