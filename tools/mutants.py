@@ -63,6 +63,11 @@ CONFIGS = [
     ('limb32', ['-DVOR_INDEX_BITS=32', '-DVOR_LIMB_BITS=32']),
     ('index16', ['-DVOR_INDEX_BITS=16']),
 ]
+# A mutant that survives the test suite then meets the fault injection test
+# (tests/faults/): predicates that lie are what the mesh updates' guards
+# are for, and nothing else exercises them.
+FAULT_DEFS = ['-DVOR_INDEX_BITS=32', '-DVOR_FAULT_INJECTION']
+FAULT_PROGRAM = 'tests/faults/test_faults.c'
 COMMON = ['-std=c99', '-O1', '-w', '-Iinclude', '-Isrc', '-Iport', '-Itests', '-Itests/vectors',
           '-DVOR_STATS=1']
 # The library traps on a failed assertion, as in the test build, and on a
@@ -361,7 +366,7 @@ class Tree:
                     os.path.join(self.path, 'gen', 'predicate_vectors.c'))
 
     def flags(self, config, unit):
-        cflags = COMMON + dict(CONFIGS)[config]
+        cflags = COMMON + (FAULT_DEFS if config == 'faults' else dict(CONFIGS)[config])
         if unit.startswith('src/'):
             return cflags + LIB_FLAGS
         return cflags + TEST_FLAGS
@@ -390,6 +395,14 @@ class Tree:
         objs.append(self.main_obj(config, only))
         return run(['gcc'] + objs + ['-o', exe], self.path)
 
+    def link_faults(self, replaced, exe):
+        objs = [replaced.get(u, os.path.join(self.base('faults'), obj_name(u)))
+                for u in self.lib_units]
+        objs.append(os.path.join(self.base('faults'), obj_name(FAULT_PROGRAM)))
+        for u in ['tests/harness.c'] + self.port_units:
+            objs.append(os.path.join(self.base('host'), obj_name(u)))
+        return run(['gcc'] + objs + ['-o', exe], self.path)
+
 
 def build_base(trees, config, onlys, jobs):
     """Compiles the unmutated objects in the first tree, copies them to the
@@ -398,6 +411,8 @@ def build_base(trees, config, onlys, jobs):
     first = trees[0]
     os.makedirs(first.base(config), exist_ok=True)
     units = first.lib_units + first.test_units + first.port_units
+    if config == 'faults':
+        units = first.lib_units + [FAULT_PROGRAM]
     with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
         results = list(pool.map(
             lambda u: (u,) + first.compile(config, u, os.path.join(first.base(config), obj_name(u))),
@@ -405,7 +420,7 @@ def build_base(trees, config, onlys, jobs):
     for u, rc, out in results:
         if rc != 0:
             sys.exit('mutants: the unmutated %s does not compile (%s):\n%s' % (u, config, out))
-    for only in onlys:
+    for only in (onlys if config != 'faults' else []):
         rc, out = first.compile_main(config, only)
         if rc != 0:
             sys.exit('mutants: tests/main.c does not compile:\n' + out)
@@ -512,12 +527,51 @@ def try_mutant(tree, m, uses, originals, primary, configs, timeouts):
                 return
             survived_in.append(config)
         if changed_any:
+            verdict, detail = faults_run(tree, m, units)
+            if verdict not in ('pass', 'same', 'no-compile', 'link'):
+                m.status, m.detail = 'killed', 'faults: %s %s' % (verdict, detail)
+                return
             m.status, m.detail = 'survived', 'in ' + ', '.join(survived_in)
+            if verdict == 'pass':
+                m.detail += ', faults'
             return
         m.status = 'same-object' if preprocessed_differs(tree, m, units, originals) else 'not-built'
     finally:
         with open(os.path.join(tree.path, m.path), 'w') as f:
             f.write(originals[m.path])
+
+
+def faults_run(tree, m, units):
+    """The fault injection test on the mutant's library: 'same' when its
+    objects do not change in that build."""
+    replaced = {}
+    for u in units:
+        if not u.startswith('src/'):
+            continue
+        out = os.path.join(tree.path, 'mut-faults-' + obj_name(u))
+        rc, text = tree.compile('faults', u, out)
+        if rc != 0:
+            return 'no-compile', text.strip().split('\n')[0]
+        with open(out, 'rb') as f, open(os.path.join(tree.base('faults'), obj_name(u)), 'rb') as g:
+            if f.read() != g.read():
+                replaced[u] = out
+    if not replaced:
+        return 'same', ''
+    return faults_program_run(tree, replaced)
+
+
+def faults_program_run(tree, replaced):
+    exe = os.path.join(tree.path, 'mutant-faults')
+    rc, out = tree.link_faults(replaced, exe)
+    if rc != 0:
+        return 'link', out.strip().split('\n')[0]
+    rc, out = run([exe], tree.path, 60)
+    if rc is None:
+        return 'timeout', ''
+    if rc == 0:
+        return 'pass', ''
+    fails = [x for x in out.split('\n') if x.startswith('FAIL ')]
+    return ('signal %d' % -rc if rc < 0 else 'fail'), (fails[0] if fails else '')
 
 
 def preprocessed_differs(tree, m, units, originals):
@@ -564,6 +618,9 @@ def self_test(tree, uses, originals, primary, configs, timeouts):
             if verdict != 'pass':
                 problems.append('the unmutated build fails (%s, ONLY=%s): %s %s'
                                 % (config, only, verdict, detail))
+    verdict, detail = faults_program_run(tree, {})
+    if verdict != 'pass':
+        problems.append('the unmutated fault injection test fails: %s %s' % (verdict, detail))
     lines = originals['src/predicates.c'].split('\n')
     at = [n for n, x in enumerate(lines) if x.startswith('int vor_orient2d(')]
     brace = [n for n in range(at[0], len(lines)) if lines[n] == '{'] if at else []
@@ -611,7 +668,7 @@ def main():
     for t in trees:
         t.copy_sources()
     onlys = sorted(set(primary.values())) + ['']
-    for config, _ in CONFIGS:
+    for config in [c for c, _ in CONFIGS] + ['faults']:
         build_base(trees, config, onlys, args.jobs)
 
     # time limits: a generous multiple of the unmutated run
@@ -697,9 +754,9 @@ def main():
     failed = bool(problems) or below or bool(survivors)
     report.append('run time: %.0f s' % elapsed)
     # the checks: each mutant killed or shown equivalent, the self-test's
-    # (an unmutated run per configuration and group set, one killed
-    # mutant), and the floor
-    self_checks = 2 * len(CONFIGS) + 1
+    # (an unmutated run per configuration and group set, the unmutated
+    # fault injection test, one killed mutant), and the floor
+    self_checks = 2 * len(CONFIGS) + 2
     report.append('%d passed, %d failed' % (
         totals['killed'] + len(equivalent) + self_checks - len(problems) + 1 - below,
         len(survivors) + len(problems) + below))
