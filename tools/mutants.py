@@ -70,12 +70,12 @@ FAULT_DEFS = ['-DVOR_INDEX_BITS=32', '-DVOR_FAULT_INJECTION']
 FAULT_PROGRAM = 'tests/faults/test_faults.c'
 COMMON = ['-std=c99', '-O1', '-w', '-Iinclude', '-Isrc', '-Iport', '-Itests', '-Itests/vectors',
           '-DVOR_STATS=1']
-# The library traps on a failed assertion, as in the test build, and on a
-# shift by the operand's width or more: x86 masks the count, so such a
-# mutant would pass here where ARM and RISC-V give 0 (and the sanitizer
-# suites of make test reject it).
+# The library traps on a failed assertion, as in the test build, on a
+# shift by the operand's width or more (x86 masks the count, so such a
+# mutant would pass here where ARM and RISC-V give 0) and on an index past
+# an array's end: the sanitizer suites of make test reject both.
 LIB_FLAGS = ['-ffreestanding', '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)',
-             '-fsanitize=shift', '-fsanitize-undefined-trap-on-error']
+             '-fsanitize=shift,bounds', '-fsanitize-undefined-trap-on-error']
 TEST_FLAGS = ['-DTEST_STOP_AT_FAILURE']
 
 # ------------------------------------------------------------ C tokens
