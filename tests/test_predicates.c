@@ -786,14 +786,17 @@ static int32_t magnitude_coordinate(test_rng_t *rng, unsigned scale)
     case 0: return test_rng_range(rng, -5000, 5000);
     case 1: return test_rng_range(rng, -(1 << 22), 1 << 22);
     case 2: return test_rng_range(rng, -(1 << 30), (1 << 30) - 1);
-    default: return (int32_t)test_rng_u32(rng);
+    case 3: return (int32_t)test_rng_u32(rng);
+    default: /* near the range's ends: lifts and cross products near 2^65 */
+        return (test_rng_u32(rng) & 1u) ? INT32_MAX - test_rng_range(rng, 0, 1000)
+                                         : INT32_MIN + test_rng_range(rng, 0, 1000);
     }
 }
 
 /* vor__orient2d_bits and vor__incircle_bits (the motion cache's bounds):
  * the bit length of the exact determinant, against the test's own big
- * integers, for coordinates at each tier's scale and anywhere in int32
- * (differences of 33 bits), with a shared point now and then so that
+ * integers, for coordinates at each tier's scale, anywhere in int32
+ * (differences of 33 bits) and near its ends (determinants near 2^127), with a shared point now and then so that
  * small and zero determinants occur. The first five wrong cases are
  * printed (as failed checks), then the count. */
 static void check_magnitudes(void)
@@ -801,17 +804,17 @@ static void check_magnitudes(void)
     test_rng_t rng;
     test_rng_seed(&rng, 2024);
     unsigned bad = 0;
-    for (unsigned n = 0; n < 4000u; n++) {
-        unsigned scale = n % 4u;
+    for (unsigned n = 0; n < 5000u; n++) {
+        unsigned scale = n % 5u;
         vor_point_t p[4];
         for (unsigned k = 0; k < 4u; k++) {
             /* every other round, each coordinate at its own scale: one
              * large difference among small ones picks the tier */
-            bool mixed = n % 8u >= 4u;
-            p[k].x = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 4u : scale);
-            p[k].y = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 4u : scale);
+            bool mixed = n % 10u >= 5u;
+            p[k].x = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 5u : scale);
+            p[k].y = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 5u : scale);
         }
-        if (n % 7u == 0u && n % 8u < 3u) { /* p[2] near the line of p[0], p[1] */
+        if (n % 7u == 0u && n % 10u < 3u) { /* p[2] near the line of p[0], p[1] */
             p[2].x = (int32_t)(p[0].x + ((int64_t)p[0].x - p[1].x) / 2);
             p[2].y = (int32_t)(p[0].y + ((int64_t)p[0].y - p[1].y) / 2);
         }
@@ -841,7 +844,7 @@ static void check_magnitudes(void)
                   got_orient, big_bits(orient), got_incircle, big_bits(incircle));
         }
     }
-    CHECK(bad == 0u, "%u of 4000 magnitudes wrong", bad);
+    CHECK(bad == 0u, "%u of 5000 magnitudes wrong", bad);
 }
 
 /* vor_closer_sos against the perturbation's definition (vor.h): site i
