@@ -796,9 +796,10 @@ static int32_t magnitude_coordinate(test_rng_t *rng, unsigned scale)
 /* vor__orient2d_bits and vor__incircle_bits (the motion cache's bounds):
  * the bit length of the exact determinant, against the test's own big
  * integers, for coordinates at each tier's scale, anywhere in int32
- * (differences of 33 bits) and near its ends (determinants near 2^127), with a shared point now and then so that
- * small and zero determinants occur. The first five wrong cases are
- * printed (as failed checks), then the count. */
+ * (differences of 33 bits) and near its ends (determinants near 2^127),
+ * with a shared point now and then so that small and zero determinants
+ * occur. The first five wrong cases are printed (as failed checks), then
+ * the count. */
 static void check_magnitudes(void)
 {
     test_rng_t rng;
