@@ -116,14 +116,15 @@ VOR__INLINE int64_t vor__mul_i32(int32_t a, int32_t b)
 }
 
 /* a * b for a product known to fit int64, via two 32x32 products on
- * ARMv6-M (no 64-bit multiply call). */
+ * ARMv6-M (no 64-bit multiply call). The magnitude is negated unsigned:
+ * the product -2^63 has magnitude 2^63, which int64 cannot negate. */
 VOR__INLINE int64_t vor__mul_i64_i32(int64_t a, int32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
     uint64_t ma = (a < 0) ? 0u - (uint64_t)a : (uint64_t)a;
     uint32_t mb = (b < 0) ? 0u - (uint32_t)b : (uint32_t)b;
     uint64_t m = vor__mul_u32((uint32_t)ma, mb) + (vor__mul_u32((uint32_t)(ma >> 32), mb) << 32);
-    return ((a < 0) != (b < 0)) ? -(int64_t)m : (int64_t)m;
+    return (int64_t)(((a < 0) != (b < 0)) ? 0u - m : m);
 #else
     return a * b;
 #endif
@@ -296,13 +297,29 @@ VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
     return 0;
 }
 
+/* All ones for negative d, else 0 (the sign bit spread by an unsigned
+ * shift: compilers emit one arithmetic shift). */
+VOR__INLINE uint64_t vor__mw_sign_mask(int64_t d)
+{
+    return 0u - ((uint64_t)d >> 63);
+}
+
 /* |d| rounded down for negative d (~d = -d - 1), two instructions on most
  * machines: vor__mw_bound(d) < 2^k exactly when d lies in [-2^k, 2^k - 1].
  * The OR of bounds is below 2^k exactly when every bound is: one test
  * picks the width a group of differences fits. */
 VOR__INLINE uint64_t vor__mw_bound(int64_t d)
 {
-    return (uint64_t)(d < 0 ? ~d : d);
+    return (uint64_t)d ^ vor__mw_sign_mask(d);
+}
+
+/* d again from b = vor__mw_bound(d), as int32 when b < 2^31: the same
+ * mask undone, which compilers fold to (int32_t)d. For an analyser it ties
+ * d's range to b's, which a tier's test of an OR of bounds gives it (it
+ * keeps no relation between d and b). */
+VOR__INLINE int32_t vor__mw_unbound(uint64_t b, int64_t d)
+{
+    return (int32_t)b ^ (int32_t)vor__mw_sign_mask(d);
 }
 
 /* Sign of v: -1, 0 or 1. */
@@ -488,7 +505,8 @@ VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
 #else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
-        if ((v >> half) != 0u) {
+        /* (v >> half) != 0 as a comparison, which an analyser bounds v by */
+        if (v >= (1u << half)) {
             v >>= half;
             k += half;
         }

@@ -184,16 +184,21 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
 #endif
 
 #if MID_FILTER
-/* floor(v / 2^s), shifting only a non-negative value (a right shift of a
- * negative one is implementation-defined); compilers emit one ASR. */
-VOR__INLINE int64_t floor_shift(int64_t v, unsigned s)
+/* floor(v / 2^(17 - t)) for v in [-2^(31 - t), 2^(31 - t) - 1], t <= 17:
+ * v shifted left by t fits 32 bits, and its top 15 bits are taken (a
+ * right shift of a negative value is implementation-defined, so only a
+ * non-negative one is shifted; compilers emit one ASR). The result lies
+ * in [-2^14, 2^14 - 1] whatever v and t: the filters' narrow evaluations
+ * are bounded by this function alone, not by a relation between t and
+ * the caller's OR of bounds, which an analyser does not keep. */
+VOR__INLINE int32_t top_bits(int64_t v, unsigned t)
 {
-    int32_t w = (int32_t)v;
-    return (w >= 0) ? (w >> s) : ~((~w) >> s);
+    int32_t w = (int32_t)((uint32_t)v << t);
+    return (w >= 0) ? (w >> 17) : ~((~w) >> 17);
 }
 
 /* max(|x|, |y|) + 1 of a shifted difference pair (x, y), |x|, |y| <= 2^14. */
-VOR__INLINE uint32_t pair_size(const int64_t xy[2])
+VOR__INLINE uint32_t pair_size(const int32_t xy[2])
 {
     uint32_t x = (uint32_t)vor__mw_magnitude(xy[0]), y = (uint32_t)vor__mw_magnitude(xy[1]);
     return ((x > y) ? x : y) + 1u;
@@ -208,7 +213,7 @@ VOR__INLINE uint32_t pair_size(const int64_t xy[2])
  *   |P(d) - 2^4s P(d')| <= 2^4s 4 (6abc + a^2 (b + c) + b^2 (c + a) + c^2 (a + b)),
  * below 2^4s 48 (2^14 + 1)^3 < 2^4s 2^48, and |P(d')| above that bound
  * decides. */
-static uint64_t point_bound(const int64_t shifted[6])
+static uint64_t point_bound(const int32_t shifted[6])
 {
     uint32_t a = pair_size(&shifted[0]), b = pair_size(&shifted[2]), c = pair_size(&shifted[4]);
     uint64_t sum = vor__mul_u32(a * b, 6u * c) + vor__mul_u32(a * a, b + c) +
@@ -228,15 +233,19 @@ static uint64_t point_bound(const int64_t shifted[6])
  * |P(d')| is at least that bound its sign is P(d)'s; else a finer bound
  * from each point's size may decide (point_bound). Returns 0 when neither
  * does (an exact zero among them: the exact sums then decide). Straight-line
- * code on 32-bit values: loops cost a Cortex-M3 more than they save. */
-static int incircle_filter(const int64_t d[6], uint32_t m)
+ * code on 32-bit values: loops cost a Cortex-M3 more than they save. Out
+ * of line: inlined, the registers it needs are saved and restored on
+ * every mid-tier call, which costs RISC-V more than the call. */
+static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
 {
-    unsigned bits = vor__mw_bit_length32(m), s = (bits > 14u) ? bits - 14u : 0u;
-    int64_t shifted[6] = {floor_shift(d[0], s), floor_shift(d[1], s), floor_shift(d[2], s),
-                          floor_shift(d[3], s), floor_shift(d[4], s), floor_shift(d[5], s)};
+    /* m in [2^14, 2^31) (the mid tier's): s = bits - 14 in [1, 17], and
+     * the differences shifted left by t = 17 - s fit 32 bits */
+    unsigned t = 31u - vor__mw_bit_length32(m);
+    int32_t shifted[6] = {top_bits(d[0], t), top_bits(d[1], t), top_bits(d[2], t),
+                          top_bits(d[3], t), top_bits(d[4], t), top_bits(d[5], t)};
     int64_t det = vor__incircle_narrow(shifted);
     const int64_t error = ((int64_t)3 << 46) + ((int64_t)1 << 35);
-    if (s == 0u || det >= error || det <= -error) {
+    if (det >= error || det <= -error) {
         return vor__mw_sign64(det);
     }
     uint64_t size = (uint64_t)((det < 0) ? -det : det);
@@ -453,16 +462,24 @@ VOR__INLINE int64_t first_term_narrow(int32_t yl, int32_t xp, int32_t yp, int32_
     return vor__mul_i64_i32(by_y, 2 * yl) - by_z;
 }
 
-/* The perturbed incircle's first two terms (vor__incircle_perturbed), for
- * entries that fit int32 (m, the OR of their bounds, below 2^31): the sign
- * of the first nonzero one, or 0, and then *next, the term from which the
- * enumeration goes on: 3 when both are 0, 1 when they are too wide for
- * the closed forms here. The second term (t = 2) has L's row ROW_SQUARE
+/* The perturbed incircle's first two terms (vor__incircle_perturbed) of
+ * the entries e = yL, xP, yP, xQ, yQ: the sign of the first nonzero one,
+ * or 0, and then *next, the term from which the enumeration goes on: 3
+ * when both are 0, 1 when the entries are too wide for the closed forms
+ * here (beyond int32). The second term (t = 2) has L's row ROW_SQUARE
  * (0, 0, 1): along it, by_y itself (times the same (-1)^low), 0 only when
  * P, Q and the top site are collinear. */
-VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int32_t yq,
-                            uint32_t m, unsigned *next)
+VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
 {
+    /* the OR of the bounds tested in this scope, where an analyser
+     * narrows each bound by the test (vor__mw_unbound) */
+    uint64_t b[5] = {vor__mw_bound(e[0]), vor__mw_bound(e[1]), vor__mw_bound(e[2]),
+                     vor__mw_bound(e[3]), vor__mw_bound(e[4])};
+    uint64_t m = b[0] | b[1] | b[2] | b[3] | b[4];
+    *next = 1u;
+    if (m >= 0x80000000u) {
+        return 0;
+    }
     *next = 3u;
 #if MID_FILTER
     /* As the exact mid tier's filter: the entries shifted right by s until
@@ -472,30 +489,47 @@ VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int3
      * 1, 1, 1, and such a product differs from 2^3s times that of the d'
      * by at most 2^3s ((A + 1)^3 - A^3), so the term differs from 2^3s
      * times the filtered one by at most 2^3s 8 (3 A^2 + 3 A + 1) < 2^3s
-     * 2^33: from 2^33 on, its sign is the term's. With s = 0 (entries of
-     * 15 bits) the shifted terms are the exact ones. Nearly every tie on
-     * a lattice decides here, a lattice square's term being near 2^42;
-     * the others take the 192-bit sums (term_sign), which cost a
-     * Cortex-M0 less flash than 128-bit ones for this term alone. */
-    unsigned s = (m < (1u << 14)) ? 0u : vor__mw_bit_length32(m) - 14u;
-    int32_t syl = (int32_t)floor_shift(yl, s), sxp = (int32_t)floor_shift(xp, s);
-    int32_t syp = (int32_t)floor_shift(yp, s), sxq = (int32_t)floor_shift(xq, s);
-    int32_t syq = (int32_t)floor_shift(yq, s);
-    int64_t by_y = vor__mul_i32(sxp, syq) - vor__mul_i32(syp, sxq);
-    int64_t filtered = first_term_narrow(syl, sxp, syp, sxq, syq, by_y);
-    const int64_t error = (int64_t)1 << 33;
-    if (s != 0u) {
-        bool decided = filtered >= error || filtered <= -error;
-        *next = decided ? 3u : 1u;
-        return decided ? vor__mw_sign64(filtered) : 0;
+     * 2^33: from 2^33 on, its sign is the term's. Entries of 15 bits
+     * (s = 0) give the exact terms. Nearly every tie on a lattice decides
+     * here, a lattice square's term being near 2^42; the others take the
+     * 192-bit sums (term_sign), which cost a Cortex-M0 less flash than
+     * 128-bit ones for this term alone. */
+    if (m < (1u << 14)) { /* s = 0: the entries, from their bounds */
+        int32_t f[5] = {vor__mw_unbound(b[0], e[0]), vor__mw_unbound(b[1], e[1]),
+                        vor__mw_unbound(b[2], e[2]), vor__mw_unbound(b[3], e[3]),
+                        vor__mw_unbound(b[4], e[4])};
+        int64_t by_y = vor__mul_i32(f[1], f[4]) - vor__mul_i32(f[2], f[3]);
+        int sign = vor__mw_sign64(first_term_narrow(f[0], f[1], f[2], f[3], f[4], by_y));
+        return (sign != 0) ? sign : vor__mw_sign64(by_y);
     }
-    int sign = vor__mw_sign64(filtered);
-#elif VOR_LIMB_BITS == 64
+    /* t = 17 - s: the entries shifted left by t fit 32 bits (top_bits) */
+    unsigned t = 31u - vor__mw_bit_length32((uint32_t)m);
+    int32_t f[5] = {top_bits(e[0], t), top_bits(e[1], t), top_bits(e[2], t), top_bits(e[3], t),
+                    top_bits(e[4], t)};
+    int64_t by_y = vor__mul_i32(f[1], f[4]) - vor__mul_i32(f[2], f[3]);
+    int64_t filtered = first_term_narrow(f[0], f[1], f[2], f[3], f[4], by_y);
+    const int64_t error = (int64_t)1 << 33;
+    bool decided = filtered >= error || filtered <= -error;
+    *next = decided ? 3u : 1u;
+    return decided ? vor__mw_sign64(filtered) : 0;
+#else
+#if VOR_LIMB_BITS == 32
+    /* 32-bit limbs at -Os: the closed form in int64 only */
+    if (m >= (1u << 14)) {
+        *next = 1u;
+        return 0;
+    }
+#endif
+    /* the entries, from their bounds (below 2^14 at -Os, 2^31 here) */
+    int32_t yl = vor__mw_unbound(b[0], e[0]), xp = vor__mw_unbound(b[1], e[1]);
+    int32_t yp = vor__mw_unbound(b[2], e[2]), xq = vor__mw_unbound(b[3], e[3]);
+    int32_t yq = vor__mw_unbound(b[4], e[4]);
+    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
+#if VOR_LIMB_BITS == 64
     /* |by_y| <= 2^63 - 2^31: the two products cannot both reach 2^62
      * with opposite signs. Beyond 15 bits, z <= 2^63 fits uint64, and the
      * first term's products are below 2^95, 2^94 and 2^94: one signed
      * 128-bit sum. */
-    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
     int sign;
     if (m < (1u << 14)) {
         sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
@@ -507,15 +541,10 @@ VOR__INLINE int first_terms(int32_t yl, int32_t xp, int32_t yp, int32_t xq, int3
         sign = (det > 0) - (det < 0);
     }
 #else
-    /* 32-bit limbs at -Os: the closed form in int64 only */
-    if (m >= (1u << 14)) {
-        *next = 1u;
-        return 0;
-    }
-    int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
     int sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
 #endif
     return (sign != 0) ? sign : vor__mw_sign64(by_y);
+#endif
 }
 
 /* The site with the largest index of (i, j, k, l) is the origin: one
@@ -609,17 +638,10 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
         odd = false;
     }
     const vor_point_t *o = &sites[top], *pl = &sites[il], *pp = &sites[ip], *pq = &sites[iq];
-    int64_t yl = (int64_t)pl->y - o->y;
-    int64_t xp = (int64_t)pp->x - o->x, yp = (int64_t)pp->y - o->y;
-    int64_t xq = (int64_t)pq->x - o->x, yq = (int64_t)pq->y - o->y;
-    uint64_t m = vor__mw_bound(yl) | vor__mw_bound(xp) | vor__mw_bound(yp) |
-                 vor__mw_bound(xq) | vor__mw_bound(yq);
-    if (m >= 0x80000000u) {
-        return 0;
-    }
+    int64_t e[5] = {(int64_t)pl->y - o->y, (int64_t)pp->x - o->x, (int64_t)pp->y - o->y,
+                    (int64_t)pq->x - o->x, (int64_t)pq->y - o->y};
     unsigned next;
-    int sign = first_terms((int32_t)yl, (int32_t)xp, (int32_t)yp, (int32_t)xq, (int32_t)yq,
-                           (uint32_t)m, &next);
+    int sign = first_terms(e, &next);
     if (sign == 0) {
         return (next == 1u) ? 0 : 3;
     }
@@ -752,10 +774,11 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
                     (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
-                 vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
+    uint64_t bounds[6];
+    vor__incircle_bounds(bounds, d);
+    uint64_t m = bounds[0] | bounds[1] | bounds[2] | bounds[3] | bounds[4] | bounds[5];
     if (m < (1u << 14)) { /* as the narrow tier: |det| < 2^60 */
-        int64_t det = vor__incircle_narrow(d);
+        int64_t det = vor__incircle_narrow_of(bounds, d);
         return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
     }
     /* the sign tiers' positive and negative sums; |det| is their

@@ -81,17 +81,38 @@ VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
 }
 
 /* The incircle determinant of d (a - d, b - d, c - d as x, y pairs) when
- * every |d| <= 2^14: lifts and |crosses| <= 2^29 fit int32, the three
- * products <= 2^58 and their sum < 2^60 fit int64. */
-VOR__INLINE int64_t vor__incircle_narrow(const int64_t d[6])
+ * every d lies in [-2^14, 2^14 - 1]: lifts and |crosses| <= 2^29 fit
+ * int32, the three products <= 2^58 and their sum < 2^60 fit int64. */
+VOR__INLINE int64_t vor__incircle_narrow(const int32_t d[6])
 {
-    int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
-    int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
-    int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+    int32_t ax = d[0], ay = d[1], bx = d[2], by = d[3], cx = d[4], cy = d[5];
     int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
     int32_t lc = cx * cx + cy * cy;
     return vor__mul_i32(la, bx * cy - by * cx) + vor__mul_i32(lb, cx * ay - cy * ax) +
            vor__mul_i32(lc, ax * by - ay * bx);
+}
+
+/* The bounds of the six differences d (vor__mw_bound). The caller ORs
+ * them in its own scope to pick the tier: an analyser then narrows each
+ * bound by the test of that OR (not through a returned value). */
+VOR__INLINE void vor__incircle_bounds(uint64_t b[6], const int64_t d[6])
+{
+    b[0] = vor__mw_bound(d[0]);
+    b[1] = vor__mw_bound(d[1]);
+    b[2] = vor__mw_bound(d[2]);
+    b[3] = vor__mw_bound(d[3]);
+    b[4] = vor__mw_bound(d[4]);
+    b[5] = vor__mw_bound(d[5]);
+}
+
+/* The narrow tier's determinant, of the differences d taken back from
+ * their bounds b (vor__mw_unbound) once the OR of b is below 2^14. */
+VOR__INLINE int64_t vor__incircle_narrow_of(const uint64_t b[6], const int64_t d[6])
+{
+    int32_t n[6] = {vor__mw_unbound(b[0], d[0]), vor__mw_unbound(b[1], d[1]),
+                    vor__mw_unbound(b[2], d[2]), vor__mw_unbound(b[3], d[3]),
+                    vor__mw_unbound(b[4], d[4]), vor__mw_unbound(b[5], d[5])};
+    return vor__incircle_narrow(n);
 }
 
 VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
@@ -101,11 +122,12 @@ VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
     int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
                     (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
                     (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
-    uint64_t m = vor__mw_bound(d[0]) | vor__mw_bound(d[1]) | vor__mw_bound(d[2]) |
-                 vor__mw_bound(d[3]) | vor__mw_bound(d[4]) | vor__mw_bound(d[5]);
+    uint64_t bounds[6];
+    vor__incircle_bounds(bounds, d);
+    uint64_t m = bounds[0] | bounds[1] | bounds[2] | bounds[3] | bounds[4] | bounds[5];
     if (m < (1u << 14)) {
         VOR__COUNT(stats, incircle[VOR_TIER_NARROW]);
-        return vor__mw_sign64(vor__incircle_narrow(d));
+        return vor__mw_sign64(vor__incircle_narrow_of(bounds, d));
     }
     if (m < 0x80000000u) {
         VOR__COUNT(stats, incircle[VOR_TIER_MID]);

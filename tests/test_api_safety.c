@@ -660,6 +660,109 @@ static void check_zeroed_diagram(void)
     CHECK(bad == 0 && out == 77, "a never-initialised diagram: %u wrong answers", bad);
 }
 
+/* The arguments each check tells apart one by one: every repeated index
+ * of the perturbed predicates (each pair of positions, the others
+ * distinct), each limit of a raster frame and output on its own, and the
+ * calls whose NULL is allowed. Every refusal leaves everything as it was. */
+static void check_each_argument(void)
+{
+    CHECK(build_all(SAFE_SITES), "build");
+    snapshot();
+    unsigned bad = 0;
+    for (uint32_t i = 0; i < 4u; i++) {
+        for (uint32_t j = i + 1u; j < 4u; j++) {
+            uint32_t id[4] = {4, 5, 6, 7}; /* distinct, then positions i and j equal */
+            id[j] = id[i];
+            bad += vor_incircle_sos(points, id[0], id[1], id[2], id[3]) != 0;
+            if (j < 3u) {
+                bad += vor_orient2d_sos(points, id[0], id[1], id[2]) != 0;
+                bad += vor_closer_sos(points, id[0], id[1], id[2]) != 0;
+            }
+        }
+    }
+    /* the same ids distinct: an answer, never 0 */
+    bad += vor_incircle_sos(points, 4, 5, 6, 7) == 0 || vor_orient2d_sos(points, 4, 5, 6) == 0 ||
+           vor_closer_sos(points, 4, 5, 6) == 0;
+    CHECK(bad == 0 && unchanged(), "perturbed predicates, repeated indices: %u wrong", bad);
+
+    /* cells: vertices NULL with capacity 0 asks for the count only */
+    vor_box_t box = {-10, -10, 9000, 5000};
+    vor_point_t poly[VOR_CELL_MAX_VERTICES(SAFE_SITES)];
+    uint32_t want = 0, site = 77, count = 77;
+    vor_cell_iter_t cells;
+    bad = vor_cell(&diagram, 0, &box, poly, VOR_CELL_MAX_VERTICES(SAFE_SITES), &want) != VOR_OK;
+    bad += vor_cells_begin(&cells, &diagram, &box) != VOR_OK;
+    bad += vor_cells_next(&cells, &site, NULL, 0, &count) != 0;
+    bad += vor_cells_error(&cells) != VOR_ERR_BUFFER || site != 0u || count != want || want < 3u;
+    CHECK(bad == 0 && unchanged(), "cells: the count alone: %u wrong", bad);
+
+    /* one site duplicated with NULL for its id: the duplicate is still
+     * told (a full diagram, and one of a single vertex) */
+    CHECK(vor_insert(&diagram, points[3], NULL) == VOR_ERR_DUPLICATE && unchanged(),
+          "full diagram: a duplicate, id not wanted");
+    CHECK(vor_init(&diagram, arena, sizeof arena, SAFE_SITES) == VOR_OK &&
+              vor_insert(&diagram, points[0], NULL) == VOR_OK,
+          "one site");
+    snapshot();
+    CHECK(vor_insert(&diagram, points[0], NULL) == VOR_ERR_DUPLICATE && unchanged(),
+          "one-vertex diagram: a duplicate, id not wanted");
+    /* no points at all is a valid build: it empties the diagram */
+    uint32_t nearest = 77;
+    CHECK(vor_build(&diagram, NULL, 0, NULL, NULL) == VOR_OK &&
+              vor_nearest(&diagram, points[0], VOR_NO_HINT, &nearest) == VOR_ERR_EMPTY &&
+              nearest == 77u && vor_validate(&diagram, NULL) == VOR_OK,
+          "vor_build of no points (NULL)");
+    snapshot();
+
+    /* raster: each limit alone (the frame, then the output's kind) */
+    static uint8_t work[VOR_RASTER_WORK_BYTES(SAFE_SITES, 8)]
+        __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
+    uint8_t band[8 * 4 * 4], band_before[sizeof band];
+    fill(band, sizeof band, 0x99);
+    test_copy_bytes(band_before, band, sizeof band);
+    unsigned flushes = 0;
+    const vor_raster_frame_t good = {0, 0, 100, 100, 8, 4};
+    vor_raster_frame_t frames[8];
+    for (unsigned k = 0; k < 8u; k++) {
+        frames[k] = good;
+    }
+    frames[0].height = 0;
+    frames[1].step_y = 0;
+    frames[2].width = 0x80000000u;
+    frames[3].height = 0x80000000u;
+    frames[4].origin_x = INT32_MAX - 699; /* last centre x = INT32_MAX + 1 */
+    frames[5].origin_y = INT32_MAX - 299; /* last centre y = INT32_MAX + 1 */
+    /* 2^27 columns of step 1 from INT32_MIN: the centres fit, the work
+     * size would not */
+    frames[6].origin_x = INT32_MIN;
+    frames[6].step_x = 1;
+    frames[6].width = 0x08000000u;
+    frames[7].origin_x = INT32_MAX - 700; /* the widest frame that fits: valid */
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
+    vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
+                               NULL, NULL, NULL};
+    bad = 0;
+    for (unsigned k = 0; k < 7u; k++) {
+        bad += vor_raster(&frames[k], &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+    }
+    vor_raster_sites_t many = set; /* counts refused before any point is read */
+    vor_raster_output_t kinds = out;
+    kinds.kind = VOR_RASTER_LABEL16;
+    many.count = 65537u;
+    bad += vor_raster(&good, &many, &kinds, NULL, work, sizeof work) != VOR_ERR_ARG;
+    kinds.kind = VOR_RASTER_RGB565;
+    bad += vor_raster(&good, &set, &kinds, NULL, work, sizeof work) != VOR_ERR_ARG;
+    kinds.kind = VOR_RASTER_RGB888;
+    bad += vor_raster(&good, &set, &kinds, NULL, work, sizeof work) != VOR_ERR_ARG;
+    kinds.kind = VOR_RASTER_LABEL32;
+    many.count = 0x08000000u;
+    bad += vor_raster(&good, &many, &kinds, NULL, work, sizeof work) != VOR_ERR_ARG;
+    bad += (flushes != 0u || !test_same_bytes(band, band_before, sizeof band));
+    CHECK(bad == 0 && unchanged(), "raster limits: %u bad arguments accepted or wrote", bad);
+    CHECK(vor_raster(&frames[7], &set, &out, NULL, work, sizeof work) == VOR_OK && flushes == 1u,
+          "raster: the frame ending at INT32_MAX");
+}
+
 void test_api_safety(void)
 {
     test_rng_t rng;
@@ -673,4 +776,5 @@ void test_api_safety(void)
     TEST_CASE("iterators") check_iterators();
     TEST_CASE("raster") check_raster();
     TEST_CASE("zeroed_diagram") check_zeroed_diagram();
+    TEST_CASE("each_argument") check_each_argument();
 }

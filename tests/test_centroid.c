@@ -604,6 +604,31 @@ static void test_errors(void)
           out.point.y);
 }
 
+/* Boxes of no area on either axis, the site inside or beside them: no
+ * scratch is needed, the answer is the box's point nearest the site. */
+static void test_flat_boxes(void)
+{
+    for (uint32_t i = 0; i < 9u; i++) { /* a 3 x 3 grid */
+        sites[i].x = (int32_t)(i % 3u) * 10;
+        sites[i].y = (int32_t)(i / 3u) * 10;
+    }
+    vor_t d;
+    if (!build(&d, 9)) {
+        return;
+    }
+    /* site 4 = (10, 10) */
+    const vor_box_t boxes[4] = {{3, -100, 3, 100}, {3, 20, 3, 100}, {-100, 3, 100, 3}, {7, 7, 7, 7}};
+    const vor_point_t want[4] = {{3, 10}, {3, 20}, {10, 3}, {7, 7}};
+    for (unsigned k = 0; k < 4u; k++) {
+        vor_centroid_t out = {{12345, -678}, 99, 77};
+        int err = vor_cell_centroid(&d, 4, &boxes[k], NULL, 0, &out);
+        CHECK(err == VOR_OK && out.area == 0 && out.vertices == 0 && out.point.x == want[k].x &&
+                  out.point.y == want[k].y,
+              "flat box %u: %d, area %u, (%d, %d)", k, err, (unsigned)out.area, out.point.x,
+              out.point.y);
+    }
+}
+
 void test_centroid(void)
 {
     test_rng_t rng;
@@ -611,4 +636,5 @@ void test_centroid(void)
     TEST_CASE("grids") test_grids(test_rng_seed(&rng, 0xCE27701Du));
     TEST_CASE("wide") test_wide(test_rng_seed(&rng, 0xCE27701Du));
     TEST_CASE("brute_force") test_brute_force(test_rng_seed(&rng, 0xCE27701Du));
+    TEST_CASE("flat_boxes") test_flat_boxes();
 }

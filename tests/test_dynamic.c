@@ -632,6 +632,37 @@ static void one_site(void)
     }
 }
 
+/* Two sites: vor_move tells a move onto the other site (a duplicate,
+ * nothing changed) from moves that share only its x or only its y. And
+ * the 24-bit change counter wraps to 1 on a diagram without a motion
+ * cache too (white box: d.motion_epoch). */
+static void two_sites(void)
+{
+    vor_t d;
+    const vor_point_t two[2] = {{10, 20}, {-5, 7}};
+    CHECK(vor_init(&d, arena, sizeof arena, DYN_SITES) == VOR_OK &&
+              vor_build(&d, two, 2, NULL, NULL) == VOR_OK,
+          "two sites");
+    save(&d);
+    uint32_t existing = 77;
+    CHECK(vor_move(&d, 0, two[1], &existing) == VOR_ERR_DUPLICATE && existing == 1u &&
+              unchanged(&d),
+          "a move onto the other site");
+    const vor_point_t to[2] = {{-5, 30}, {40, 7}}; /* the other's x, then its y */
+    for (unsigned k = 0; k < 2u; k++) {
+        uint32_t nearest = 77;
+        CHECK(vor_move(&d, 0, to[k], NULL) == VOR_OK && vor_validate(&d, NULL) == VOR_OK &&
+                  d.sites[0].x == to[k].x && d.sites[0].y == to[k].y &&
+                  vor_nearest(&d, to[k], VOR_NO_HINT, &nearest) == VOR_OK && nearest == 0u,
+              "a move sharing one coordinate with the other site (%u)", k);
+    }
+    d.motion_epoch = 0xFFFFFFu;
+    uint32_t id = 77;
+    CHECK(vor_insert(&d, (vor_point_t){100, 100}, &id) == VOR_OK && id == 2u &&
+              d.motion_epoch == 1u && vor_validate(&d, NULL) == VOR_OK,
+          "the change counter wraps to 1 without a cache (epoch %u)", d.motion_epoch);
+}
+
 void test_dynamic(void)
 {
     for (unsigned shape = UNIFORM; shape < SHAPES; shape++) {
@@ -647,4 +678,5 @@ void test_dynamic(void)
     TEST_CASE("build_duplicates") build_duplicates();
     TEST_CASE("trackers") trackers();
     TEST_CASE("one_site") one_site();
+    TEST_CASE("two_sites") two_sites();
 }

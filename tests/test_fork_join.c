@@ -273,6 +273,38 @@ static void check_fork_min(test_rng_t *rng)
     }
 }
 
+/* The x-split over few distinct sites: 40 copies of 2 to 6 points on a
+ * parabola, fork_min_sites 3 (which means 8). With fewer than 3 distinct
+ * sites on a side (the first part takes 3 of 5 or 6, in leaves of 2 or 3)
+ * there is nothing to fork, as for the quadtree's "top" family; the
+ * diagram is vor_build_dc's either way. */
+static void check_few_distinct(void)
+{
+    for (uint32_t distinct = 2; distinct <= 6u; distinct++) {
+        for (uint32_t i = 0; i < 40u; i++) {
+            points[i].x = (int32_t)(i % distinct) * 1000 + 7;
+            points[i].y = (int32_t)((i % distinct) * (i % distinct)) * 300;
+        }
+        vor_t seq, d;
+        fill(arena_seq, sizeof arena_seq);
+        fill(arena_fork, sizeof arena_fork);
+        test_hook_t h = {HOOK_AT_ONCE, 0, 0, 0, NULL, NULL};
+        vor_fork_join_t hook = {hook_fork, hook_join, &h};
+        vor_build_options_t options = {VOR_ORDER_QUADTREE, VOR_DC_XSPLIT, 3};
+        CHECK(vor_init(&seq, arena_seq, sizeof arena_seq, FJ_SITES) == VOR_OK &&
+                  vor_init(&d, arena_fork, sizeof arena_fork, FJ_SITES) == VOR_OK,
+              "init");
+        CHECK(vor_build_dc(&seq, points, 40, &options, dup_seq) == VOR_OK &&
+                  vor_build_dc_forked(&d, points, 40, &options, dup_fork, &hook) == VOR_OK,
+              "builds");
+        const char *diff = first_difference(&seq, &d, 40);
+        CHECK(diff == NULL && vor_validate(&d, NULL) == VOR_OK && d.vertex_count == distinct,
+              "%u distinct sites: %s differ", distinct, (diff != NULL) ? diff : "none");
+        CHECK(h.forks == ((distinct >= 6u) ? 1u : 0u), "%u distinct sites: %u forks", distinct,
+              h.forks);
+    }
+}
+
 void test_fork_join(void)
 {
     test_rng_t rng;
@@ -293,4 +325,5 @@ void test_fork_join(void)
     }
     TEST_CASE("no_hook") check_no_hook(test_rng_seed(&rng, 0xF0F0));
     TEST_CASE("fork_min") check_fork_min(test_rng_seed(&rng, 0xF0F1));
+    TEST_CASE("few_distinct") check_few_distinct();
 }

@@ -938,10 +938,45 @@ static void test_errors(void)
           "vertex with a removed id");
 }
 
+/* Hulls with many sites along each edge: the border of a k x k lattice
+ * square (or of a triangle's lattice, its slanted side too), a few sites
+ * inside, ids shuffled, so that the perturbation leaves runs of sites on
+ * a hull edge inside the perturbed hull (the iterator must still list
+ * them, in order). */
+static void test_hull_borders(test_rng_t *rng)
+{
+    vor_box_t box = {-(1 << 20), -(1 << 20), 1 << 20, 1 << 20};
+    for (unsigned round = 0; round < 12u; round++) {
+        int32_t k = 3 + (int32_t)(round % 6u);
+        bool triangle = round >= 6u;
+        uint32_t n = 0;
+        for (int32_t y = 0; y <= k; y++) {
+            for (int32_t x = 0; x <= k; x++) {
+                bool border = triangle ? (y == 0 || x == 0 || x + y == k)
+                                       : (x == 0 || y == 0 || x == k || y == k);
+                bool inside = triangle ? (x + y <= k) : true;
+                if (inside && (border || test_rng_u32(rng) % 8u == 0u) && n < GEO_SITES) {
+                    sites[n].x = x * 1000 - 2000;
+                    sites[n].y = y * 1000 + 500;
+                    n++;
+                }
+            }
+        }
+        for (uint32_t i = n; i > 1u; i--) {
+            uint32_t j = test_rng_u32(rng) % i;
+            vor_point_t t = sites[i - 1u];
+            sites[i - 1u] = sites[j];
+            sites[j] = t;
+        }
+        check_all(n, box, triangle ? "lattice triangle border" : "lattice square border");
+    }
+}
+
 void test_geometry(void)
 {
     test_rng_t rng;
     TEST_CASE("vertices") test_vertices(test_rng_seed(&rng, 4242));
     TEST_CASE("errors") test_errors();
     TEST_CASE("sets") test_sets(test_rng_seed(&rng, 4242));
+    TEST_CASE("hull_borders") test_hull_borders(test_rng_seed(&rng, 4243));
 }

@@ -9,6 +9,8 @@
  * the perturbed Delaunay triangulation, so that the batch build in both
  * orders and one-by-one insertion must give the same triangles.
  */
+#include "insertion_order.h" /* white-box: vor__sort_ids, for its worst case */
+#include "mesh.h" /* white-box: the triangle layout, for the corrupted diagrams */
 #include "test.h"
 #include "vor.h"
 
@@ -515,6 +517,329 @@ static void check_memory_figures(void)
           "vor_build of no site writes no duplicate_of");
 }
 
+/* ------------------------------------------------------------------ */
+/* vor_validate on corrupted diagrams                                  */
+
+#define CORRUPT_SITES 40u
+#define CORRUPT_DUPLICATE 7u /* a copy of site 0: its home slot stays empty */
+
+static uint8_t corrupt_arena[VOR_ARENA_BYTES(CORRUPT_SITES)] __attribute__((aligned(8)));
+static uint8_t pristine_arena[sizeof corrupt_arena], corrupted_arena[sizeof corrupt_arena];
+static vor_t corrupt, pristine;
+
+/* The first of sites[0 .. i] at p. */
+static uint32_t site_index(const vor_point_t *sites, uint32_t i, vor_point_t p)
+{
+    uint32_t j = 0;
+    while (sites[j].x != p.x || sites[j].y != p.y) {
+        j++;
+    }
+    return (j < i) ? j : i;
+}
+
+/* The diagram back to the valid one built below. */
+static void restore(void)
+{
+    test_copy_bytes(corrupt_arena, pristine_arena, sizeof corrupt_arena);
+    corrupt = pristine;
+}
+
+/* vor_validate must name `check` for the corruption just made, with and
+ * without a violation record, and read only: the arena and the diagram
+ * stay as the corruption left them. */
+static void expect_violation(enum vor_check check, const char *what)
+{
+    vor_t before = corrupt;
+    test_copy_bytes(corrupted_arena, corrupt_arena, sizeof corrupt_arena);
+    vor_violation_t v = {VOR_CHECK_TRUE_OUTPUT, 77, 77};
+    int err = vor_validate(&corrupt, &v);
+    CHECK(err == VOR_ERR_INVALID && v.check == check && vor_validate(&corrupt, NULL) == err &&
+              test_same_bytes(corrupted_arena, corrupt_arena, sizeof corrupt_arena) &&
+              test_same_bytes(&before, &corrupt, sizeof corrupt),
+          "%s: vor_validate %d, check %d (expected %d)", what, err, (int)v.check, (int)check);
+    restore();
+}
+
+/* Rewrites one vertex (k) or one neighbour link (k - 3) of a slot. */
+static void set_field(uint32_t slot, unsigned k, vor_index_t value)
+{
+    vor__tri_t *t = &corrupt.triangles[slot];
+    vor_index_t v[3], n[3] = {t->n[0], t->n[1], t->n[2]};
+    vor__vertices(t, v);
+    if (k < 3u) {
+        v[k] = value;
+    } else {
+        n[k - 3u] = value;
+    }
+    vor__tri_set(t, v[0], v[1], v[2], n[0], n[1], n[2]);
+}
+
+/* The first used slot at or after `from` whose triangle has (or lacks,
+ * with has false) vertex a, and b when b is not VOR__NONE. */
+static uint32_t find_slot(uint32_t from, vor_index_t a, bool has, vor_index_t b)
+{
+    uint32_t end = vor__used_slots_end(&corrupt);
+    for (uint32_t s = vor__next_used_slot(&corrupt, from); s < end;
+         s = vor__next_used_slot(&corrupt, s + 1u)) {
+        const vor__tri_t *t = &corrupt.triangles[s];
+        bool with_a = vor__vertex_index(t, a) != 3u;
+        if (with_a == has && (b == VOR__NONE || vor__vertex_index(t, b) == 3u)) {
+            return s;
+        }
+    }
+    return VOR__NONE;
+}
+
+/* One corruption per test of vor_validate (each passes the tests before
+ * it): counts, vertices, neighbour links, fans, the box and the buckets,
+ * then geometry on four sites whose coordinates are moved. */
+static void check_corrupted(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 0xBAD);
+    vor_point_t sites[CORRUPT_SITES];
+    for (uint32_t i = 0; i < CORRUPT_SITES; i++) {
+        do { /* distinct, but for the one copy */
+            sites[i].x = test_rng_range(&rng, -5000, 5000);
+            sites[i].y = test_rng_range(&rng, -5000, 5000);
+        } while (i != CORRUPT_DUPLICATE && site_index(sites, i, sites[i]) != i);
+    }
+    sites[CORRUPT_DUPLICATE] = sites[0];
+    CHECK(vor_init(&corrupt, corrupt_arena, sizeof corrupt_arena, CORRUPT_SITES) == VOR_OK &&
+              vor_build(&corrupt, sites, CORRUPT_SITES, NULL, NULL) == VOR_OK &&
+              vor_validate(&corrupt, NULL) == VOR_OK &&
+              corrupt.vertex_count == CORRUPT_SITES - 1u &&
+              vor__slot_empty(&corrupt.triangles[CORRUPT_DUPLICATE]),
+          "the valid diagram");
+    pristine = corrupt;
+    test_copy_bytes(pristine_arena, corrupt_arena, sizeof corrupt_arena);
+    const uint32_t packed = corrupt.max_sites, end = vor__used_slots_end(&corrupt);
+
+    corrupt.vertex_count = corrupt.site_count + 1u;
+    expect_violation(VOR_CHECK_COUNTS, "more vertices than sites");
+    corrupt.site_count = corrupt.max_sites + 1u;
+    expect_violation(VOR_CHECK_COUNTS, "more sites than room");
+    corrupt.vertex_count--;
+    expect_violation(VOR_CHECK_COUNTS, "a vertex fewer");
+
+    set_field(packed, 0, (vor_index_t)corrupt.site_count);
+    expect_violation(VOR_CHECK_VERTICES, "a vertex past the sites");
+    set_field(packed, 1, CORRUPT_DUPLICATE);
+    expect_violation(VOR_CHECK_VERTICES, "a duplicate's id as a vertex");
+    for (unsigned k = 0; k < 3u; k++) { /* vertex k made equal to the next */
+        set_field(packed, k, vor__vertex(&corrupt.triangles[packed], vor__next(k)));
+        expect_violation(VOR_CHECK_VERTICES, "two equal vertices");
+    }
+
+    set_field(packed, 4, VOR__NONE);
+    expect_violation(VOR_CHECK_NEIGHBOURS, "no neighbour");
+    set_field(packed, 4, CORRUPT_DUPLICATE);
+    expect_violation(VOR_CHECK_NEIGHBOURS, "an empty slot as neighbour");
+    set_field(packed, 4, (vor_index_t)end);
+    expect_violation(VOR_CHECK_NEIGHBOURS, "a slot past the used ones as neighbour");
+    /* slot 0's edge opposite its vertex 0 runs a -> b */
+    const vor__tri_t *t0 = &corrupt.triangles[0];
+    vor_index_t a = vor__vertex(t0, 1), b = vor__vertex(t0, 2);
+    set_field(0, 3, (vor_index_t)find_slot(0, a, false, VOR__NONE));
+    expect_violation(VOR_CHECK_NEIGHBOURS, "a neighbour without the edge's first vertex");
+    set_field(0, 3, (vor_index_t)find_slot(1, a, true, b));
+    expect_violation(VOR_CHECK_NEIGHBOURS, "a neighbour without the edge's second vertex");
+    set_field(0, 3, 0);
+    expect_violation(VOR_CHECK_NEIGHBOURS, "a triangle its own neighbour");
+    {
+        /* the neighbour across a -> b links elsewhere across b -> a */
+        uint32_t u = t0->n[0];
+        const vor__tri_t *o = &corrupt.triangles[u];
+        unsigned ia = vor__vertex_index(o, a);
+        set_field(u, 3u + vor__next(ia), o->n[vor__prev(ia)]);
+        expect_violation(VOR_CHECK_NEIGHBOURS, "a link that does not point back");
+    }
+
+    /* site 0's triangle and a packed one without site 0 trade slots, every
+     * link following: the topology holds, but home slot 0 misses site 0 */
+    uint32_t other = find_slot(packed, 0, false, VOR__NONE);
+    vor__tri_t swap = corrupt.triangles[0];
+    corrupt.triangles[0] = corrupt.triangles[other];
+    corrupt.triangles[other] = swap;
+    for (uint32_t s = vor__next_used_slot(&corrupt, 0); s < end;
+         s = vor__next_used_slot(&corrupt, s + 1u)) {
+        for (unsigned i = 0; i < 3u; i++) {
+            vor_index_t n = corrupt.triangles[s].n[i];
+            set_field(s, 3u + i, (n == 0u) ? (vor_index_t)other : (n == other) ? 0u : n);
+        }
+    }
+    {
+        /* reads on it end (the turn around site 0 finds it in no triangle) */
+        vor_neighbour_iter_t it;
+        uint32_t n = 77, near = 77;
+        vor_neighbours_begin(&it, &corrupt, 0);
+        CHECK(vor_neighbours_next(&it, &n) == 0 && n == 77u &&
+                  vor_nearest(&corrupt, sites[1], 0, &near) == VOR_OK && near < CORRUPT_SITES,
+              "reads on a home slot without its site end");
+    }
+    expect_violation(VOR_CHECK_SITES, "a home slot without its site");
+
+    corrupt.low.x++;
+    expect_violation(VOR_CHECK_BUCKETS, "a site left of the box");
+    corrupt.high.x--;
+    expect_violation(VOR_CHECK_BUCKETS, "a site right of the box");
+    corrupt.low.y++;
+    expect_violation(VOR_CHECK_BUCKETS, "a site below the box");
+    corrupt.high.y--;
+    expect_violation(VOR_CHECK_BUCKETS, "a site above the box");
+    corrupt.bucket_columns = 0;
+    expect_violation(VOR_CHECK_BUCKETS, "no buckets");
+    corrupt.bucket_rows = VOR_BUCKETS(CORRUPT_SITES) + 1u;
+    expect_violation(VOR_CHECK_BUCKETS, "more buckets than room");
+    corrupt.buckets[0] = (vor_index_t)corrupt.site_count;
+    expect_violation(VOR_CHECK_BUCKETS, "a bucket naming no site");
+    corrupt.buckets[0] = CORRUPT_DUPLICATE;
+    expect_violation(VOR_CHECK_BUCKETS, "a bucket naming a duplicate");
+
+    /* geometry: the square-ish (0,0) (10,0) (10,10) (0,11) takes the
+     * diagonal (0,0)-(10,10), as (0,11) lies outside the circle through
+     * the other three (centre (5,5), 61 > 50); the fourth site moved to
+     * (0,9) lies inside it (41 < 50), to (5,4) right of the diagonal */
+    const vor_point_t four[4] = {{0, 0}, {10, 0}, {10, 10}, {0, 11}};
+    CHECK(vor_init(&corrupt, corrupt_arena, sizeof corrupt_arena, CORRUPT_SITES) == VOR_OK &&
+              vor_build(&corrupt, four, 4, NULL, NULL) == VOR_OK &&
+              vor_validate(&corrupt, NULL) == VOR_OK,
+          "four sites");
+    pristine = corrupt;
+    test_copy_bytes(pristine_arena, corrupt_arena, sizeof corrupt_arena);
+    corrupt.sites[3] = (vor_point_t){0, 9};
+    expect_violation(VOR_CHECK_DELAUNAY, "a site moved into a circle");
+    corrupt.sites[3] = (vor_point_t){5, 4};
+    expect_violation(VOR_CHECK_ORIENTATION, "a site moved across a diagonal");
+}
+
+/* ------------------------------------------------------------------ */
+/* The sort's worst case                                               */
+
+#define SORT_SITES 256u
+#define GAS UINT32_MAX /* a value not decided yet */
+
+static uint32_t sort_value[SORT_SITES], frozen, candidate;
+
+/* McIlroy's adversary ("A killer adversary for quicksort", 1999): values
+ * are decided only when a comparison needs them, each new one below all
+ * undecided ones, and the one frozen is the likely pivot, so that every
+ * partition splits off as little as it can. */
+static bool adversary_less(uint32_t a, uint32_t b)
+{
+    if (sort_value[a] == GAS && sort_value[b] == GAS) {
+        sort_value[(a == candidate) ? a : b] = frozen++;
+    }
+    if (sort_value[a] == GAS) {
+        candidate = a;
+    } else if (sort_value[b] == GAS) {
+        candidate = b;
+    }
+    return sort_value[a] < sort_value[b];
+}
+
+static void swap_u32(uint32_t *ids, uint32_t i, uint32_t j)
+{
+    uint32_t t = ids[i];
+    ids[i] = ids[j];
+    ids[j] = t;
+}
+
+/* Plays the introsort's quicksort steps (src/insertion_order.c: median of
+ * three, Hoare partition, the smaller part first) against the adversary on
+ * ids 0 .. n - 1 until a range of 16 or more ids gets deeper than
+ * 2 log2 n, where the sort turns to heapsort; then decides the values
+ * still open. Returns whether that depth was reached: sites[i].x =
+ * sort_value[i] is then an input that takes vor__sort_ids there. */
+static bool play_adversary(uint32_t n)
+{
+    static uint32_t ids[SORT_SITES];
+    struct range {
+        uint32_t first, count, depth;
+    } stack[64];
+    unsigned top = 0, log2n = 0;
+    bool deep = false;
+    while ((1u << log2n) < n) {
+        log2n++;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        ids[i] = i;
+        sort_value[i] = GAS;
+    }
+    frozen = candidate = 0;
+    stack[top++] = (struct range){0, n, 0};
+    while (top > 0u && !deep && top + 2u <= 64u) {
+        struct range r = stack[--top];
+        uint32_t *a = ids + r.first;
+        if (r.count < 16u) {
+            continue; /* insertion sort: within the range, the others unaffected */
+        }
+        if (r.depth > 2u * log2n) {
+            deep = true;
+            break;
+        }
+        uint32_t mid = r.count / 2u, last = r.count - 1u;
+        if (adversary_less(a[mid], a[0])) {
+            swap_u32(a, mid, 0);
+        }
+        if (adversary_less(a[last], a[0])) {
+            swap_u32(a, last, 0);
+        }
+        if (adversary_less(a[last], a[mid])) {
+            swap_u32(a, last, mid);
+        }
+        swap_u32(a, 0, mid);
+        uint32_t pivot = a[0], i = 0, j = r.count;
+        for (;;) {
+            do {
+                i++;
+            } while (i < r.count && adversary_less(a[i], pivot));
+            do {
+                j--;
+            } while (adversary_less(pivot, a[j]));
+            if (i >= j) {
+                break;
+            }
+            swap_u32(a, i, j);
+        }
+        swap_u32(a, 0, j);
+        struct range left = {r.first, j, r.depth + 1u};
+        struct range right = {r.first + j + 1u, r.count - j - 1u, r.depth + 1u};
+        stack[top++] = (left.count > right.count) ? left : right;
+        stack[top++] = (left.count > right.count) ? right : left;
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        sort_value[i] = (sort_value[i] == GAS) ? frozen++ : sort_value[i];
+    }
+    return deep;
+}
+
+/* The adversary's input, sorted by both keys: the values are 0 .. n - 1
+ * (y = 0, so the Z-order is the x order too), so the k-th id must be the
+ * one of value k. */
+static void check_sort_worst_case(void)
+{
+    static vor_point_t sites[SORT_SITES];
+    static vor_index_t ids[SORT_SITES];
+    static const uint32_t sizes[3] = {64, 100, SORT_SITES};
+    for (unsigned s = 0; s < 3u; s++) {
+        uint32_t n = sizes[s];
+        CHECK(play_adversary(n), "%u sites: the adversary did not get deep enough", n);
+        for (unsigned key = 0; key < 2u; key++) {
+            for (uint32_t i = 0; i < n; i++) {
+                sites[i] = (vor_point_t){(int32_t)sort_value[i] - 1000, 0};
+                ids[i] = (vor_index_t)i;
+            }
+            vor__sort_ids(sites, ids, n, (key == 0u) ? VOR__SORT_LEX : VOR__SORT_Z);
+            unsigned bad = 0;
+            for (uint32_t k = 0; k < n; k++) {
+                bad += sort_value[ids[k]] != k;
+            }
+            CHECK(bad == 0, "%u sites, key %u: %u ids out of place", n, key, bad);
+        }
+    }
+}
+
 void test_mesh(void)
 {
     TEST_CASE("init") check_init();
@@ -524,4 +849,6 @@ void test_mesh(void)
     TEST_CASE("memory") check_memory();
     TEST_CASE("failures_change_nothing") check_failures_change_nothing();
     TEST_CASE("memory_figures") check_memory_figures();
+    TEST_CASE("corrupted") check_corrupted();
+    TEST_CASE("sort_worst_case") check_sort_worst_case();
 }

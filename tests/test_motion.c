@@ -400,6 +400,39 @@ static void backoff(void)
     }
 }
 
+/* Sites over the whole int32 range, four of them a few units from its
+ * corners, taking tiny steps: predicates whose differences take 33 bits
+ * and boxes cut short by the end of the range. */
+static void full_range(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 21);
+    const uint32_t n = 24;
+    static const vor_point_t corner[4] = {{INT32_MIN + 2, INT32_MIN + 2},
+                                          {INT32_MAX - 2, INT32_MIN + 5},
+                                          {INT32_MIN + 3, INT32_MAX - 2},
+                                          {INT32_MAX - 3, INT32_MAX - 4}};
+    for (uint32_t i = 0; i < n; i++) {
+        do {
+            at[i].x = (int32_t)test_rng_u32(&rng);
+            at[i].y = (int32_t)test_rng_u32(&rng);
+            at[i] = (i < 4u) ? corner[i] : at[i];
+        } while (site_at(i, at[i]) != VOR_NO_HINT);
+    }
+    start(n);
+    unsigned long failures = test_failures();
+    uint32_t fast = 0, steps = 400;
+    for (uint32_t step = 0; step < steps && test_failures() == failures; step++) {
+        uint32_t i = (step % 2u == 0u) ? step / 2u % 4u : test_rng_u32(&rng) % n;
+        int64_t x = (int64_t)at[i].x + test_rng_range(&rng, -2, 2);
+        int64_t y = (int64_t)at[i].y + test_rng_range(&rng, -2, 2);
+        vor_point_t p = {(int32_t)((x < INT32_MIN) ? INT32_MIN : (x > INT32_MAX) ? INT32_MAX : x),
+                         (int32_t)((y < INT32_MIN) ? INT32_MIN : (y > INT32_MAX) ? INT32_MAX : y)};
+        fast += move(n, i, p, "full range", step) ? 1u : 0u;
+    }
+    CHECK(fast > 0u, "full range: no fast move (a test that cannot fail)");
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
@@ -439,4 +472,5 @@ void test_motion(void)
     TEST_CASE("degenerate_walks") degenerate_walks();
     TEST_CASE("backoff") backoff();
     TEST_CASE("api_safety") api_safety();
+    TEST_CASE("full_range") full_range();
 }

@@ -194,6 +194,54 @@ static void check_multiply(void)
     CHECK(bad_i == 0, "vor__mul_i32 wrong %u times", bad_i);
 }
 
+/* The helpers the tiers state their bounds with: the bit length against
+ * a count of halvings, every difference's bound taken back to it
+ * (vor__mw_unbound), and the 64x32 product at the edges of its domain,
+ * -2^63 included, against the compiler's own multiply. */
+static void check_bounds(void)
+{
+    unsigned bad_length = 0, bad_unbound = 0, bad_product = 0;
+    for (unsigned k = 0; k < 32u; k++) {
+        uint32_t v = (uint32_t)1 << k;
+        unsigned want = 0;
+        for (uint32_t w = v; w != 0u; w >>= 1) {
+            want++;
+        }
+        bad_length += (vor__mw_bit_length32(v) != want) ? 1u : 0u;
+        bad_length += (vor__mw_bit_length32(v - 1u) != want - 1u) ? 1u : 0u;
+        bad_length += (vor__mw_bit_length32(v | (v - 1u)) != want) ? 1u : 0u;
+    }
+    bad_length += (vor__mw_bit_length32(0xFFFFFFFFu) != 32u) ? 1u : 0u;
+    static const int64_t differences[] = {INT32_MIN, -16385, -16384, -1, 0, 1, 16383, 16384,
+                                          INT32_MAX};
+    for (unsigned i = 0; i < sizeof differences / sizeof differences[0]; i++) {
+        int64_t d = differences[i];
+        bad_unbound += (vor__mw_unbound(vor__mw_bound(d), d) != (int32_t)d) ? 1u : 0u;
+    }
+    static const int64_t wide[] = {(int64_t)1 << 32, -((int64_t)1 << 32), ((int64_t)1 << 32) - 1,
+                                   (int64_t)1 << 47, -((int64_t)1 << 47), 3, -3, 0};
+    static const int32_t narrow[] = {INT32_MIN, INT32_MAX, -32768, 32767, -1, 1, 0};
+    for (unsigned i = 0; i < sizeof wide / sizeof wide[0]; i++) {
+        for (unsigned j = 0; j < sizeof narrow / sizeof narrow[0]; j++) {
+            int64_t a = wide[i];
+            int32_t b = narrow[j];
+            /* only products that fit int64 (its domain): |a b| below
+             * 2^63, or -2^63 itself */
+            uint64_t ma = (a < 0) ? 0u - (uint64_t)a : (uint64_t)a;
+            uint64_t mb = (b < 0) ? 0u - (uint64_t)(int64_t)b : (uint64_t)b;
+            uint64_t most = ((a < 0) != (b < 0)) ? (uint64_t)1 << 63 : ((uint64_t)1 << 63) - 1u;
+            if (mb != 0u && ma > most / mb) {
+                continue;
+            }
+            volatile int64_t wa = a, wb = b; /* the compiler's own multiply */
+            bad_product += (vor__mul_i64_i32(a, b) != wa * wb) ? 1u : 0u;
+        }
+    }
+    CHECK(bad_length == 0, "vor__mw_bit_length32 wrong %u times", bad_length);
+    CHECK(bad_unbound == 0, "vor__mw_unbound wrong %u times", bad_unbound);
+    CHECK(bad_product == 0, "vor__mul_i64_i32 wrong %u times", bad_product);
+}
+
 /* The 64-bit shifts on 32-bit halves, against the compiler's own shift
  * (on 32-bit targets a libgcc routine or its inline code), for every
  * amount 0..63 on edge and random values. */
@@ -924,10 +972,62 @@ static void check_closer_sos_reference(void)
     CHECK(bad == 0u && ties > 2000u, "%u of 20000 wrong, %u ties", bad, ties);
 }
 
+/* The magnitudes the motion cache sizes its boxes with
+ * (vor__orient2d_bits, vor__incircle_bits) when differences take 33 bits:
+ * sites at the ends of the int32 range, D = 2^32 - 1 apart, whose
+ * determinants have closed forms. Orientation of (D, 0), (0, D) from the
+ * corner: D^2 (64 bits), negated when the two swap; along the diagonal,
+ * 0; (D, 1), (D - 1, 1): D - (D - 1) = 1. Incircle, offsets from the
+ * corner (D, 0), (0, D) and then (1, 1): -2 D^2 (D - 1), 97 bits; (D, D):
+ * the corners of a square, 0; (D, 1): -D^2 (D - 1), 96 bits. The signs
+ * of the exact predicates agree (zero exactly when the magnitude is). */
+static void check_wide_magnitudes(void)
+{
+    const vor_point_t lo = {INT32_MIN, INT32_MIN}, right = {INT32_MAX, INT32_MIN},
+                      up = {INT32_MIN, INT32_MAX}, far = {INT32_MAX, INT32_MAX},
+                      centre = {0, 0}, next = {INT32_MIN + 1, INT32_MIN + 1},
+                      right1 = {INT32_MAX, INT32_MIN + 1}, left1 = {INT32_MAX - 1, INT32_MIN + 1};
+    CHECK(vor__orient2d_bits(&right, &up, &lo) == 64u && vor__orient2d_bits(&up, &right, &lo) == 64u &&
+              vor_orient2d(right, up, lo) == 1 && vor_orient2d(up, right, lo) == -1,
+          "orient2d magnitude, differences of 2^32 - 1: %u, %u", vor__orient2d_bits(&right, &up, &lo),
+          vor__orient2d_bits(&up, &right, &lo));
+    CHECK(vor__orient2d_bits(&far, &centre, &lo) == 0u && vor_orient2d(far, centre, lo) == 0,
+          "orient2d magnitude, collinear across the range: %u", vor__orient2d_bits(&far, &centre, &lo));
+    CHECK(vor__orient2d_bits(&right1, &left1, &lo) == 1u && vor_orient2d(right1, left1, lo) == 1,
+          "orient2d magnitude 1 from 33-bit differences: %u", vor__orient2d_bits(&right1, &left1, &lo));
+    CHECK(vor__incircle_bits(&right, &up, &next, &lo) == 97u && vor_incircle(right, up, next, lo) != 0,
+          "incircle magnitude -2 D^2 (D - 1): %u", vor__incircle_bits(&right, &up, &next, &lo));
+    CHECK(vor__incircle_bits(&right, &up, &far, &lo) == 0u && vor_incircle(right, up, far, lo) == 0,
+          "incircle magnitude, a square's corners: %u", vor__incircle_bits(&right, &up, &far, &lo));
+    CHECK(vor__incircle_bits(&right, &up, &right1, &lo) == 96u &&
+              vor_incircle(right, up, right1, lo) != 0,
+          "incircle magnitude -D^2 (D - 1): %u", vor__incircle_bits(&right, &up, &right1, &lo));
+}
+
+/* vor_closer_sos when a and b coincide and q has the smallest index, from
+ * the perturbation's definition (docs/design/predicates.md): with A = a~
+ * and B = b~ at one point, |q~ - A|^2 - |q~ - B|^2 =
+ * (dx_B - dx_A)(2 X + ...) + (dy_B - dy_A)(2 Y + 2 dy_q - dy_A - dy_B),
+ * X, Y = q - a. Its lowest term belongs to the smaller of a and b, m:
+ * -+2 Y eps^(16^m) (minus when m = a), so the sign is that of a_y - q_y
+ * (m = a) or q_y - b_y (m = b); when Y = 0, -+2 dy_q dy_m, eps^(16^q +
+ * 16^m), which precedes dy_m^2 as q < m: -1 (m = a) or 1 (m = b). */
+static void check_closer_coincident(void)
+{
+    const vor_point_t above[3] = {{0, 0}, {5, 3}, {5, 3}}, level[3] = {{0, 0}, {-7, 0}, {-7, 0}};
+    CHECK(vor_closer_sos(above, 0, 1, 2) == 1 && vor_closer_sos(above, 0, 2, 1) == -1,
+          "closer, coincident a and b above q: %d %d", vor_closer_sos(above, 0, 1, 2),
+          vor_closer_sos(above, 0, 2, 1));
+    CHECK(vor_closer_sos(level, 0, 1, 2) == -1 && vor_closer_sos(level, 0, 2, 1) == 1,
+          "closer, coincident a and b level with q: %d %d", vor_closer_sos(level, 0, 1, 2),
+          vor_closer_sos(level, 0, 2, 1));
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
     TEST_CASE("shift") check_shift();
+    TEST_CASE("bounds") check_bounds();
     TEST_CASE("vectors") check_vectors();
     TEST_CASE("grid_antisymmetry") check_grid_antisymmetry();
     TEST_CASE("perturbation_reference") check_perturbation_reference();
@@ -936,4 +1036,6 @@ void test_predicates(void)
     TEST_CASE("tier_edges") check_tier_edges();
     TEST_CASE("magnitudes") check_magnitudes();
     TEST_CASE("closer_sos_reference") check_closer_sos_reference();
+    TEST_CASE("wide_magnitudes") check_wide_magnitudes();
+    TEST_CASE("closer_coincident") check_closer_coincident();
 }

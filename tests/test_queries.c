@@ -353,6 +353,37 @@ static void inserts(void)
     }
 }
 
+/* Boxes a walk cannot take in int64 alone: sites spanning 2^30 or more
+ * on one axis only, and a small box at a corner of the range queried
+ * from the far corners (more than 2^31 away). */
+static void strip_sets(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 78);
+    vor_point_t far[6] = {{INT32_MIN, INT32_MIN}, {INT32_MAX, INT32_MIN}, {INT32_MIN, INT32_MAX},
+                          {INT32_MAX, INT32_MAX}, {INT32_MIN, 0},          {0, INT32_MIN}};
+    for (uint32_t i = 0; i < 300u; i++) {
+        sites[i].x = test_rng_range(&rng, 0, 999);
+        sites[i].y = (int32_t)test_rng_u32(&rng);
+    }
+    check_set("tall strip", 300, &rng, far, 6);
+    for (uint32_t i = 0; i < 300u; i++) {
+        sites[i].x = (int32_t)test_rng_u32(&rng);
+        sites[i].y = test_rng_range(&rng, 0, 999);
+    }
+    check_set("wide strip", 300, &rng, far, 6);
+    for (uint32_t i = 0; i < 300u; i++) {
+        sites[i].x = INT32_MAX - test_rng_range(&rng, 0, 1000000);
+        sites[i].y = INT32_MAX - test_rng_range(&rng, 0, 1000000);
+    }
+    check_set("small box at the top corner", 300, &rng, far, 6);
+    for (uint32_t i = 0; i < 300u; i++) {
+        sites[i].x = INT32_MIN + test_rng_range(&rng, 0, 1000000);
+        sites[i].y = INT32_MIN + test_rng_range(&rng, 0, 1000000);
+    }
+    check_set("small box at the bottom corner", 300, &rng, far, 6);
+}
+
 void test_queries(void)
 {
     TEST_CASE("uniform") uniform_set();
@@ -361,4 +392,5 @@ void test_queries(void)
     TEST_CASE("collinear") collinear_set();
     TEST_CASE("errors") errors();
     TEST_CASE("inserts") inserts();
+    TEST_CASE("strips") strip_sets();
 }

@@ -684,6 +684,30 @@ static void error_cases(void)
           "errors: a stopping flush gives %d after %u flushes", stopped, cap.flushes);
 }
 
+/* The fast path's budget (2^29) broken one way at a time: the frame's
+ * height alone, then one site past it on each side of a small frame. */
+static void budget_edges(test_rng_t *rng)
+{
+    const int32_t budget = 536870912; /* 2^29 */
+    vor_raster_frame_t f = ref_frame(0, 0, 1000, 13765921, 20, 40); /* 39 step_y >= 2^29 */
+    for (uint32_t k = 0; k < 20u; k++) {
+        sites[k].x = test_rng_range(rng, -100, 20000);
+        sites[k].y = test_rng_range(rng, -100, budget);
+    }
+    check_frame("height past the budget", &f, 20);
+    static const int32_t off[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    for (unsigned side = 0; side < 4u; side++) {
+        f = ref_frame(-30, 40, 3, 3, 20, 20);
+        for (uint32_t k = 0; k < 15u; k++) {
+            sites[k].x = f.origin_x + test_rng_range(rng, -10, 70);
+            sites[k].y = f.origin_y + test_rng_range(rng, -10, 70);
+        }
+        sites[15].x = f.origin_x + off[side][0] * budget;
+        sites[15].y = f.origin_y + off[side][1] * budget;
+        check_frame("a site past the budget", &f, 16);
+    }
+}
+
 void test_raster(void)
 {
     test_rng_t rng;
@@ -691,4 +715,5 @@ void test_raster(void)
     TEST_CASE("random") random_cases(test_rng_seed(&rng, 2024));
     TEST_CASE("adversarial") adversarial_cases(test_rng_seed(&rng, 2024));
     TEST_CASE("bands") band_cases(test_rng_seed(&rng, 2024));
+    TEST_CASE("budget_edges") budget_edges(test_rng_seed(&rng, 2025));
 }

@@ -824,6 +824,24 @@ static void error_cases(void)
     CHECK(flushes == 0, "errors: a failed call flushed %u bands", flushes);
 }
 
+/* One site and a frame 480 pixels wide: the documented work memory's
+ * pool (12 n + 16 words) holds no count word per 16-column tile (30
+ * tiles), so the tiles widen (32 columns); every pixel is the site's. */
+static void wide_tiles_case(void)
+{
+    vor_raster_frame_t f = ref_frame(-240, 0, 1, 1, 480, 3);
+    typedef char fits[(VOR_RASTER_WORK_BYTES(1, 480) <= sizeof work && 480u * 3u <= MAX_PIXELS) ? 1 : -1];
+    (void)sizeof(fits);
+    static const enum vor_metric metrics[3] = {VOR_METRIC_L1, VOR_METRIC_LINF,
+                                               VOR_METRIC_FARTHEST};
+    for (unsigned k = 0; k < 3u; k++) {
+        vor_raster_sites_t set = point_set(metrics[k], 1);
+        points[0].x = 17;
+        points[0].y = -5;
+        check_frame("wide tiles", &f, &set);
+    }
+}
+
 void test_raster_metrics(void)
 {
     test_rng_t rng;
@@ -845,4 +863,5 @@ void test_raster_metrics(void)
         always_distance = 0;
     }
     TEST_CASE("pool_overflow") pool_overflow_case();
+    TEST_CASE("wide_tiles") wide_tiles_case();
 }

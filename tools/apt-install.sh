@@ -15,8 +15,14 @@ if [ "$(id -u)" -ne 0 ]; then
     exit 1
 fi
 # Two builds started at once (make -j, or two checkouts) may both install:
-# the second waits for the first's dpkg lock instead of failing.
+# the second waits for the first. apt's DPkg::Lock::Timeout waits for
+# dpkg's lock but not for the package lists' lock that `apt-get update`
+# takes, so the project's installs also queue on a lock of their own
+# (flock, util-linux: essential on Debian). Another program's apt run is
+# still waited for only at dpkg's lock.
 lock_wait="-o DPkg::Lock::Timeout=600"
+exec 9>/var/lock/vor-apt-install.lock
+flock -w 1200 9
 # shellcheck disable=SC2086  # lock_wait is two words on purpose
 apt-get $lock_wait update
 # shellcheck disable=SC2086

@@ -3,8 +3,10 @@
  * fuzz_api.c - libFuzzer harness: the fuzz bytes are a program of calls on
  * one small diagram (arenas that run out, both index widths: built with
  * -DVOR_INDEX_BITS=16 and 32): builds, inserts, removes, moves, queries,
- * iterators. After every call vor_validate must pass; every failing call
- * must leave the vor_t and the arena byte-for-byte unchanged; answers are
+ * iterators, the two-core builder through a one-thread hook, Voronoi
+ * vertices, the memory figures and the counters. After every call
+ * vor_validate must pass; every failing call must leave the vor_t and the
+ * arena byte-for-byte unchanged; answers are
  * checked against a model kept here (the sites by id, each duplicate's
  * first occurrence, the freed ids) and brute force with exact wide-integer
  * distances; on small sets the triangles are checked for empty
@@ -117,10 +119,26 @@ static uint32_t brute_order(const model_t *m, int32_t qx, int32_t qy, uint32_t *
     return n;
 }
 
+/* After every call: the invariants, the memory figures against the model,
+ * and the counters (read-only: neither may change the diagram). */
 static void check_valid(const model_t *m)
 {
     vor_violation_t violation;
     FUZZ_REQUIRE(vor_validate(&m->d, &violation) == VOR_OK, "vor_validate failed");
+    vor_memory_t memory;
+    vor_stats_t stats;
+    uint32_t n = distinct_sites(m);
+    snapshot(m);
+    FUZZ_REQUIRE(vor_memory(&m->d, &memory) == VOR_OK && memory.sites == m->count &&
+                     memory.arena_bytes == VOR_ARENA_BYTES(m->capacity) &&
+                     memory.triangles == (n >= 2u ? 2u * n - 2u : 0u) &&
+                     memory.used_bytes <= memory.arena_bytes,
+                 "memory: figures disagree with the model");
+    FUZZ_REQUIRE(vor_stats(&m->d, &stats) == (VOR_STATS ? VOR_OK : VOR_ERR_ARG),
+                 "stats: wrong result for this build");
+    FUZZ_REQUIRE(vor_memory(&m->d, NULL) == VOR_ERR_ARG && vor_stats(&m->d, NULL) == VOR_ERR_ARG,
+                 "memory, stats: NULL accepted");
+    FUZZ_REQUIRE(unchanged(m), "memory or stats changed the diagram");
 }
 
 /* The model after a successful build of points[0 .. n). */
@@ -138,6 +156,28 @@ static void model_build(model_t *m, const vor_point_t *points, uint32_t n,
     }
 }
 
+/* Fork hooks of vor_build_dc_forked on one thread: the "other core" runs
+ * the work before fork returns, or there is none. */
+static int fork_now(void *context, void (*work)(void *arg), void *arg)
+{
+    (void)context;
+    work(arg);
+    return 0;
+}
+
+static int fork_refuse(void *context, void (*work)(void *arg), void *arg)
+{
+    (void)context;
+    (void)work;
+    (void)arg;
+    return 1;
+}
+
+static void join_now(void *context)
+{
+    (void)context;
+}
+
 static void op_build(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int divide)
 {
     vor_point_t points[BUILD_POINTS];
@@ -148,7 +188,14 @@ static void op_build(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int di
         points[i] = fuzz_point(r, previous);
     snapshot(m);
     int result;
-    if (divide) {
+    if (divide && (how & 8u)) {
+        /* the two-core builder through a hook that runs the work at once,
+         * or refuses to fork (vor runs it itself); 8..15 sites or more */
+        vor_build_options_t options = {VOR_ORDER_QUADTREE, (enum vor_dc_split)(how % 3u),
+                                       (uint32_t)how >> 5};
+        vor_fork_join_t hook = {(how & 16u) ? fork_refuse : fork_now, join_now, NULL};
+        result = vor_build_dc_forked(&m->d, points, n, &options, duplicate_of, &hook);
+    } else if (divide) {
         vor_build_options_t options = {VOR_ORDER_QUADTREE, (enum vor_dc_split)(how % 3u), 0};
         result = vor_build_dc(&m->d, points, n, &options, duplicate_of);
     } else {
@@ -462,7 +509,27 @@ static void op_triangles(model_t *m)
         for (uint32_t i = 0; i < m->count; i++)
             FUZZ_REQUIRE(!is_site(m, i) || fuzz_incircle(a, b, c, m->point[i]) <= 0,
                          "triangles: a site inside a circumcircle");
+        /* the Voronoi vertex of a triangle is its sites' circumcentre */
+        vor_vertex_t vertex, direct;
+        FUZZ_REQUIRE(vor_voronoi_vertex(&m->d, ids[0], ids[1], ids[2], &vertex) == VOR_OK &&
+                         vor_circumcentre(a, b, c, &direct) == VOR_OK &&
+                         vertex.status != VOR_VERTEX_AT_INFINITY &&
+                         vertex.status == direct.status && vertex.point.x == direct.point.x &&
+                         vertex.point.y == direct.point.y,
+                     "voronoi_vertex: not the circumcentre of a triangle");
         FUZZ_REQUIRE(++triangles <= 2u * MOST_SITES, "triangles: endless");
+    }
+    /* ids that are no site: refused, *out unchanged */
+    for (uint32_t i = 0; i <= m->count; i++) {
+        if (is_site(m, i) || n < 2u)
+            continue;
+        vor_vertex_t out = {{7, 7}, VOR_VERTEX_IN_RANGE};
+        uint32_t other = 0;
+        while (!is_site(m, other))
+            other++;
+        FUZZ_REQUIRE(vor_voronoi_vertex(&m->d, other, i, other, &out) == VOR_ERR_ARG &&
+                         out.point.x == 7 && out.point.y == 7,
+                     "voronoi_vertex: a non-site accepted, or wrote");
     }
     FUZZ_REQUIRE(triangles == (collinear ? 0u : 2u * n - h - 2u), "triangles: not 2n - h - 2");
 
@@ -506,13 +573,20 @@ static void op_bad_init(fuzz_reader_t *r, model_t *m)
     uint8_t how = fuzz_u8(r);
     snapshot(m);
     int result;
-    if (how % 3u == 0u)
+    vor_tracker_t tracker = m->tracker;
+    if (how % 4u == 0u)
         result = vor_init(&m->d, arena, VOR_ARENA_BYTES(m->capacity) - 1u, m->capacity);
-    else if (how % 3u == 1u)
+    else if (how % 4u == 1u)
         result = vor_init(&m->d, arena + 2, sizeof arena - 2u, 1);
-    else
+    else if (how % 4u == 2u)
         result = vor_init(&m->d, arena, sizeof arena, VOR_MAX_SITES + 1u + how);
+    else /* a library of other vor_config.h options */
+        result = vor_init_checked(&m->d, arena, sizeof arena, 1, VOR_CONFIG_FINGERPRINT ^ how);
     FUZZ_REQUIRE(result < 0 && unchanged(m), "init: failure changed the diagram");
+    FUZZ_REQUIRE(vor_tracker_begin_checked(&m->tracker, &m->d, VOR_CONFIG_FINGERPRINT ^ 1u) ==
+                         VOR_ERR_CONFIG &&
+                     memcmp(&tracker, &m->tracker, sizeof tracker) == 0,
+                 "tracker_begin: another configuration accepted, or wrote");
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
