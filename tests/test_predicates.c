@@ -1023,6 +1023,51 @@ static void check_closer_coincident(void)
           vor_closer_sos(level, 0, 2, 1));
 }
 
+/* Two helpers of src/multiword.h the raster code alone calls, so no
+ * predicate vector reaches them: vor__mw_i96_mul against the test's own
+ * integers over its domain's edges and random values, and
+ * vor__mw_to_u128 on limbs whose every word differs. */
+static void check_wide_helpers(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 96);
+    static const int64_t xs[] = {0, 1, -1, 0xFFFFFFFF, -0xFFFFFFFFll, 0x100000000ll,
+                                 INT64_C(0x3FFFFFFFFFFFFFFF), -INT64_C(0x3FFFFFFFFFFFFFFF)};
+    static const uint32_t ys[] = {0u, 1u, 0xFFFFu, 0x7FFFFFFFu};
+    unsigned bad = 0;
+    for (unsigned n = 0; n < 4000u; n++) {
+        int64_t x = (n < 32u) ? xs[n % 8u]
+                              : (int64_t)(((uint64_t)test_rng_u32(&rng) << 32) | test_rng_u32(&rng)) /
+                                    (int64_t)(1u + (n % 4u) * 3u) / 2;
+        uint32_t y = (n < 32u) ? ys[n / 8u] : test_rng_u32(&rng) >> 1;
+        vor__mw_i96_t r;
+        vor__mw_i96_mul(&r, x, y);
+        big_t got = big_add(big_mul(big_of(r.hi), big_of(INT64_C(0x100000000))), big_of(r.lo), false);
+        big_t want = big_mul(big_of(x), big_of(y));
+        bool same = true;
+        for (unsigned i = 0; i < 16u; i++) {
+            same = same && got.d[i] == want.d[i];
+        }
+        if (!same && bad++ < 5u) {
+            CHECK(false, "vor__mw_i96_mul, case %u: x = %lx %08lx, y = %lu", n,
+                  (unsigned long)((uint64_t)x >> 32), (unsigned long)((uint64_t)x & 0xFFFFFFFFu),
+                  (unsigned long)y);
+        }
+    }
+    CHECK(bad == 0u, "vor__mw_i96_mul wrong %u times", bad);
+    const uint64_t lo = UINT64_C(0x0123456789ABCDEF), hi = UINT64_C(0xFEDCBA9876543210);
+#if VOR_LIMB_BITS == 64
+    const vor__limb limbs[2] = {lo, hi};
+#else
+    const vor__limb limbs[4] = {(uint32_t)lo, (uint32_t)(lo >> 32), (uint32_t)hi,
+                                (uint32_t)(hi >> 32)};
+#endif
+    vor__mw_u128_t w;
+    vor__mw_to_u128(&w, limbs);
+    CHECK(w.lo == lo && w.hi == hi, "vor__mw_to_u128: high word %lx %08lx",
+          (unsigned long)(w.hi >> 32), (unsigned long)(w.hi & 0xFFFFFFFFu));
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -1038,4 +1083,5 @@ void test_predicates(void)
     TEST_CASE("closer_sos_reference") check_closer_sos_reference();
     TEST_CASE("wide_magnitudes") check_wide_magnitudes();
     TEST_CASE("closer_coincident") check_closer_coincident();
+    TEST_CASE("wide_helpers") check_wide_helpers();
 }
