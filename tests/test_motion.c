@@ -433,6 +433,48 @@ static void full_range(void)
     CHECK(fast > 0u, "full range: no fast move (a test that cannot fail)");
 }
 
+/* A site's first slow move sizes no box of its own (the backoff), yet
+ * its star's other boxes must be proven again: site 1 moves into the box
+ * of its neighbour 0 without changing a triangle (the ring lies far from
+ * their bisector), after which no jump of 0 to a corner of its box may
+ * be fast, each crossing a line through site 1 (white box: the box read
+ * from the cache). */
+static void neighbour_moves_in(void)
+{
+    const uint32_t n = 9;
+    static const vor_point_t ring[7] = {{1000000, 0},       {623490, 781831},   {-222521, 974928},
+                                        {-900969, 433884},  {-900969, -433884}, {-222521, -974928},
+                                        {623490, -781831}};
+    at[0] = (vor_point_t){0, 0};
+    at[1] = (vor_point_t){3000, 0};
+    for (uint32_t k = 0; k < 7u; k++) {
+        at[2u + k] = ring[k];
+    }
+    start(n);
+    for (uint32_t k = 0; k < 4u; k++) {
+        move(n, 0, offset(at[0], (k % 2u == 0u) ? 1 : -1, 0), "neighbour settles", k);
+    }
+    if (!CHECK(boxed(0), "neighbour: site 0 has no box (a test that cannot fail)")) {
+        return;
+    }
+    const struct vor__motion_entry *e = &with.motion[0];
+    int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
+    vor_point_t anchor = {e->x, e->y};
+    vor_point_t inside = offset(anchor, r / 2 + 1, 0);
+    CHECK(r >= 2 && site_at(n, inside) == VOR_NO_HINT, "neighbour: box of %d", (int)r);
+    test_fingerprint_t before = test_fingerprint_of(&with, NULL);
+    move(n, 1, inside, "neighbour moves in", 0);
+    CHECK(test_same_fingerprint(before, test_fingerprint_of(&with, NULL)),
+          "neighbour: the move changed triangles (a test that cannot fail)");
+    static const int32_t sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+    for (uint32_t k = 0; k < 4u; k++) {
+        vor_point_t corner = offset(anchor, sign[k][0] * r, sign[k][1] * r);
+        CHECK(!move(n, 0, corner, "neighbour: a corner", k),
+              "neighbour: a jump of site 0 to (%d, %d) was fast", corner.x, corner.y);
+        move(n, 0, anchor, "neighbour: back", k);
+    }
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
@@ -473,4 +515,5 @@ void test_motion(void)
     TEST_CASE("backoff") backoff();
     TEST_CASE("api_safety") api_safety();
     TEST_CASE("full_range") full_range();
+    TEST_CASE("neighbour_moves_in") neighbour_moves_in();
 }

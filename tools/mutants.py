@@ -20,12 +20,14 @@ killed, so the check cannot pass by not running.
 
     tools/mutants.py [--jobs N] [--every N] [--files src/a.c,...]
 
---every N runs every Nth mutant of the deterministic list (make test's
-sample). The report goes to build/mutants/report.txt and is printed.
+--every N runs about one mutant in N (make test's sample): those whose
+key (file, line text, mutation) hashes to 0 modulo N, so that an edit of
+other lines leaves the sample as it was. The report goes to build/mutants/report.txt and is printed.
 See docs/testing.md, "Mutation testing".
 """
 import argparse
 import concurrent.futures
+import hashlib
 import os
 import re
 import shutil
@@ -446,6 +448,12 @@ class Mutant:
     def key(self):
         return '%s :: %s :: %s' % (self.path, ' '.join(self.text.split()), self.description)
 
+    def sampled(self, every):
+        """In the sample of one in `every`: chosen by the mutant's own
+        key, not its place in the list, which every edit above it moves."""
+        digest = hashlib.sha256(self.key().encode('utf-8')).digest()
+        return int.from_bytes(digest[:8], 'big') % every == 0
+
 
 def generate(files):
     mutants = []
@@ -638,7 +646,7 @@ def self_test(tree, uses, originals, primary, configs, timeouts):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split('\n')[0])
     ap.add_argument('--jobs', type=int, default=2)
-    ap.add_argument('--every', type=int, default=1, help='run every Nth mutant only')
+    ap.add_argument('--every', type=int, default=1, help='run about one mutant in N only (by its key)')
     ap.add_argument('--files', default='', help='comma-separated subset of the targets')
     args = ap.parse_args()
     began = time.time()
@@ -681,11 +689,9 @@ def main():
 
     problems = self_test(trees[0], uses, originals, primary, configs, timeouts)
 
-    # the sample is drawn from the list of every target file, so that a
-    # mutant's index does not depend on --files
     mutants = generate([t[0] for t in TARGETS])
-    chosen = [m for m in mutants if m.index % args.every == 0 and m.path in files]
-    print('mutants: %d generated, running %d (every %d) on %d jobs'
+    chosen = [m for m in mutants if m.sampled(args.every) and m.path in files]
+    print('mutants: %d generated, running %d (one in %d) on %d jobs'
           % (len(mutants), len(chosen), args.every, args.jobs), flush=True)
     free = list(trees)
     done = 0
@@ -713,8 +719,8 @@ def main():
         if m.status == 'survived' and m.key() in known:
             m.status, m.detail = 'equivalent', known[m.key()]
     report = []
-    report.append('Mutation testing of the host suite (tools/mutants.py, every %d of %d mutants)'
-                  % (args.every, len(mutants)))
+    report.append('Mutation testing of the host suite (tools/mutants.py, %d of %d mutants, one in %d)'
+                  % (len(chosen), len(mutants), args.every))
     report.append('killed%: killed / (killed + survived); equivalent: survivors shown')
     report.append('equivalent in tools/mutants-equivalent.txt; same-code: objects unchanged')
     report.append('')
