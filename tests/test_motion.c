@@ -475,6 +475,38 @@ static void neighbour_moves_in(void)
     }
 }
 
+/* A box near the end of the int32 range is cut to the largest power of
+ * two that keeps it inside (so that the fast test's offsets cannot
+ * wrap), and no smaller: site 0 lies about 100 units from INT32_MAX, its
+ * neighbours a million away, so its predicates alone would allow a far
+ * larger box; 2^e <= room < 2^(e+1) (white box: the box read from the
+ * cache). */
+static void box_at_range_end(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 31);
+    const uint32_t n = 10;
+    at[0] = (vor_point_t){INT32_MAX - 100, 0};
+    for (uint32_t i = 1; i < n; i++) {
+        do {
+            at[i].x = INT32_MAX - test_rng_range(&rng, 1000000, 4000000);
+            at[i].y = test_rng_range(&rng, -2000000, 2000000);
+        } while (site_at(i, at[i]) != VOR_NO_HINT);
+    }
+    start(n);
+    for (uint32_t k = 0; k < 4u; k++) {
+        move(n, 0, offset(at[0], (k % 2u == 0u) ? 1 : -1, 0), "range end settles", k);
+    }
+    if (!CHECK(boxed(0), "range end: site 0 has no box (a test that cannot fail)")) {
+        return;
+    }
+    const struct vor__motion_entry *e = &with.motion[0];
+    uint32_t exponent = (e->stamp & VOR__BOX_MASK) - 1u;
+    uint32_t room = (uint32_t)(INT32_MAX - e->x);
+    CHECK((1u << exponent) <= room && (2u << exponent) > room,
+          "range end: box 2^%u at %u from the end", exponent, room);
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
@@ -516,4 +548,5 @@ void test_motion(void)
     TEST_CASE("api_safety") api_safety();
     TEST_CASE("full_range") full_range();
     TEST_CASE("neighbour_moves_in") neighbour_moves_in();
+    TEST_CASE("box_at_range_end") box_at_range_end();
 }
