@@ -507,6 +507,113 @@ static void box_at_range_end(void)
           "range end: box 2^%u at %u from the end", exponent, room);
 }
 
+/* Bit length of v: the least k with v < 2^k. */
+static int bit_length(uint64_t v)
+{
+    int k = 0;
+    while (k < 64 && (v >> k) != 0u) {
+        k++;
+    }
+    return k;
+}
+
+/* The box of a three-site diagram, whose predicates are all the one
+ * orientation (its triangle's and the hull's, whichever site they are
+ * taken from), against the derivation in src/motion.c: with |P| of bit
+ * length L, vectors below 2^m from every site, moves within 2^E, E = e + 2,
+ * the bound 2^(max(m, E) + E + 3) must stay at or below 2^(L - 3); the
+ * box has the largest such e >= 0, found here by trying each (white box:
+ * the box read from the cache). */
+static void triangle_boxes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 41);
+    uint32_t tried = 0, boxes = 0;
+    for (uint32_t round = 0; round < 400u && tried < 60u; round++) {
+        int32_t span = 1 << test_rng_range(&rng, 4, 20);
+        for (uint32_t i = 0; i < 3u; i++) {
+            at[i].x = test_rng_range(&rng, 0, span);
+            at[i].y = test_rng_range(&rng, 0, span);
+        }
+        int64_t ux = (int64_t)at[1].x - at[0].x, uy = (int64_t)at[1].y - at[0].y;
+        int64_t vx = (int64_t)at[2].x - at[0].x, vy = (int64_t)at[2].y - at[0].y;
+        int64_t det = ux * vy - uy * vx;
+        /* the same m from each site: every predicate has the same bound */
+        int m[3];
+        for (uint32_t b = 0; b < 3u; b++) {
+            uint32_t spread = 0;
+            for (uint32_t k = 0; k < 3u; k++) {
+                int64_t dx = (int64_t)at[k].x - at[b].x, dy = (int64_t)at[k].y - at[b].y;
+                spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+            }
+            m[b] = bit_length(spread);
+        }
+        if (det == 0 || m[0] != m[1] || m[1] != m[2]) {
+            continue;
+        }
+        tried++;
+        int L = bit_length((uint64_t)(det < 0 ? -det : det)), want = -1;
+        for (int e = 0; e <= 30; e++) {
+            int E = e + 2, n = (m[0] > E) ? m[0] : E;
+            want = (L >= 3 && n + E + 3 <= L - 3) ? e : want;
+        }
+        start(3);
+        move(3, 0, offset(at[0], 1, 0), "triangle box", round);
+        move(3, 0, offset(at[0], -1, 0), "triangle box", round); /* sizes the box */
+        const struct vor__motion_entry *e = &with.motion[0];
+        int got = boxed(0) ? (int)(e->stamp & VOR__BOX_MASK) - 1 : -1;
+        boxes += (want >= 0) ? 1u : 0u;
+        CHECK(got == want, "triangle (%d, %d) (%d, %d) (%d, %d): box 2^%d, want 2^%d (L %d, m %d)",
+              at[0].x, at[0].y, at[1].x, at[1].y, at[2].x, at[2].y, got, want, L, m[0]);
+    }
+    CHECK(tried >= 60u && boxes >= 20u, "triangle boxes: %u triangles, %u boxes", tried, boxes);
+}
+
+/* A move that brings a line close to a boxed site must void its box:
+ * site 1 moves so that the line of sites 0 and 1 passes just inside the
+ * reach of site 2's box (|P| at least 2^(m + e), well below what the
+ * derivation allows for the box, 2^(m + e + 6)); the jump of site 2 to the
+ * corner across the line must then be slow and exact. Site 2 starts
+ * `below` under the line's midpoint: 16384 gives it a box of 2^6, 200 one
+ * of 2^0. */
+static void line_comes_close(int32_t below)
+{
+    const int32_t B = 65535; /* vectors of m = 16 bits */
+    at[0] = (vor_point_t){0, 0};
+    at[1] = (vor_point_t){B, B};
+    at[2] = (vor_point_t){32768, 32768 - below};
+    start(3);
+    move(3, 2, offset(at[2], 1, 0), "line settles", 0);
+    move(3, 2, offset(at[2], -1, 0), "line settles", 1);
+    if (!CHECK(boxed(2), "line: site 2 has no box (a test that cannot fail)")) {
+        return;
+    }
+    const struct vor__motion_entry *e = &with.motion[2];
+    int exponent = (int)(e->stamp & VOR__BOX_MASK) - 1;
+    int32_t r = (int32_t)(1u << exponent);
+    vor_point_t q = {e->x, e->y}, corner = offset(q, -r, r);
+    int64_t reach = (int64_t)1 << (16 + exponent);
+    int32_t s = 0;
+    for (; s < B; s++) { /* site 1 lowered by s */
+        vor_point_t b = {B, B - s};
+        int64_t ux = b.x, uy = b.y;
+        int64_t P = ux * q.y - uy * q.x; /* orient(site 0, b, q), site 0 at the origin */
+        if ((P < 0 ? -P : P) < reach) {
+            break; /* no such place */
+        }
+        if (vor_orient2d(at[0], b, corner) != vor_orient2d(at[0], b, q)) {
+            break;
+        }
+    }
+    vor_point_t b = {B, B - s};
+    CHECK(s < B && vor_orient2d(at[0], b, corner) != vor_orient2d(at[0], b, q) &&
+              exponent == ((below > 1000) ? 6 : 0),
+          "line: box 2^%d, no place for site 1", exponent);
+    move(3, 1, b, "line comes close", 0);
+    CHECK(!move(3, 2, corner, "line: the corner across", 0),
+          "line: the jump of site 2 across the line was fast");
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
@@ -549,4 +656,9 @@ void test_motion(void)
     TEST_CASE("full_range") full_range();
     TEST_CASE("neighbour_moves_in") neighbour_moves_in();
     TEST_CASE("box_at_range_end") box_at_range_end();
+    TEST_CASE("triangle_boxes") triangle_boxes();
+    TEST_CASE("line_comes_close") {
+        line_comes_close(16384);
+        line_comes_close(200);
+    }
 }
