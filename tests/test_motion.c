@@ -614,6 +614,53 @@ static void line_comes_close(int32_t below)
           "line: the jump of site 2 across the line was fast");
 }
 
+/* The incircle test's counterpart of line_comes_close: site 2 moves up so
+ * that the circle through sites 0, 1, 2 comes within 64 heights of site
+ * 3, which holds a box; at each height every corner jump of site 3 must
+ * be exact (a box the circle now reaches must have been voided by site
+ * 2's move, the far vertex's re-proof). With the circle's radius R near
+ * 2^25 and a small box, the first-order term decides the re-proof. */
+static void circle_comes_close(int32_t R, int32_t h)
+{
+    const vor_point_t a = {-R, 0}, b = {R, 0}, q0 = {0, R + h};
+    /* the first height of site 2 whose circle holds site 3 (b, a, c
+     * counterclockwise: > 0 inside) */
+    int32_t reach = 0;
+    while (reach < R && vor_incircle(b, a, (vor_point_t){0, -R + reach}, q0) < 0) {
+        reach++;
+    }
+    uint32_t crossing = 0;
+    for (int32_t t = reach - 64; t < reach; t++) {
+        at[0] = a;
+        at[1] = b;
+        at[2] = (vor_point_t){0, -R};
+        at[3] = q0;
+        start(4);
+        move(4, 3, offset(at[3], 1, 0), "circle settles", 0);
+        move(4, 3, offset(at[3], -1, 0), "circle settles", 1);
+        if (!CHECK(boxed(3), "circle: site 3 has no box (a test that cannot fail)")) {
+            return;
+        }
+        const struct vor__motion_entry *e = &with.motion[3];
+        int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
+        vor_point_t q = {e->x, e->y}, c = {0, -R + t};
+        move(4, 2, c, "circle comes close", (uint32_t)t);
+        static const int32_t sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+        unsigned long failures = test_failures();
+        for (uint32_t k = 0; k < 4u && test_failures() == failures; k++) {
+            vor_point_t corner = offset(q, sign[k][0] * r, sign[k][1] * r);
+            crossing += (vor_incircle(b, a, c, corner) >= 0) ? 1u : 0u;
+            move(4, 3, corner, "circle: a corner", (uint32_t)t);
+            move(4, 3, q, "circle: back", (uint32_t)t);
+        }
+        if (test_failures() != failures) {
+            break;
+        }
+    }
+    CHECK(reach > 64 && reach < R && crossing > 0u,
+          "circle: reached at %d, %u corners inside (a test that cannot fail)", reach, crossing);
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
@@ -660,5 +707,10 @@ void test_motion(void)
     TEST_CASE("line_comes_close") {
         line_comes_close(16384);
         line_comes_close(200);
+    }
+    TEST_CASE("circle_comes_close") {
+        circle_comes_close(30000, 3000);
+        circle_comes_close(30720000, 1000);
+        circle_comes_close(30720000, 6000);
     }
 }
