@@ -30,14 +30,16 @@
 #   make mutants            mutation testing of the predicates, the multi-word
 #                           arithmetic, the perturbation and the mesh updates
 #                           against the host suite (tools/mutants.py,
-#                           docs/testing.md); MUTANTS_EVERY=N: every Nth mutant
-#   make prove              Frama-C EVA: no runtime error in the exact predicates
-#                           for any int32 input (tools/prove/, docs/testing.md)
+#                           docs/testing.md); MUTANTS_EVERY=N: about one in N
+#   make prove              Frama-C EVA: no runtime error in the public calls
+#                           over their inputs (tools/prove/, docs/testing.md)
+#   make misra              cppcheck's MISRA C:2012 addon over the library: no
+#                           finding outside tools/misra-deviations.txt (docs/misra.md)
 #   make docs               the API reference from the headers (Doxygen):
 #                           build/docs/html/index.html; fails on any warning
 #
 # Everything a build needs (compilers, QEMU, python3, libstb-dev, xmllint,
-# rsvg-convert, doxygen, gcovr, frama-c) is installed on demand by
+# rsvg-convert, doxygen, gcovr, frama-c, cppcheck) is installed on demand by
 # tools/install-deps.sh, so these work on a fresh Debian machine.
 
 PORT ?= host
@@ -107,7 +109,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove mutants clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove misra mutants clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -354,7 +356,7 @@ coverage-report:
 	+@tools/coverage-report.sh
 
 test:
-	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer
+	@tools/install-deps.sh host cli python toolchains clang cmake svg doxygen gcovr analyzer misra prove
 	+@tools/run-tests.sh
 
 size:
@@ -369,12 +371,17 @@ prove:
 # Every mutant of the files tools/mutants.py names, each compiled and run
 # against the host suite; the report is build/mutants/report.txt. It fails
 # below 95 % killed or on a survivor tools/mutants-equivalent.txt does not
-# show equivalent. MUTANTS_EVERY=N runs every Nth mutant (make test's sample).
+# show equivalent. MUTANTS_EVERY=N runs about one mutant in N, chosen by
+# its own text (make test's sample).
 MUTANTS_EVERY ?= 1
 mutants:
 	@tools/install-deps.sh host python
 	@$(MAKE) -s $(GEN)/predicate_vectors.c
 	@nice -n 10 python3 tools/mutants.py --every $(MUTANTS_EVERY)
+
+misra:
+	@tools/install-deps.sh misra
+	@tools/misra.sh --counts
 
 bench-predicates:
 	@tools/install-deps.sh host python toolchains

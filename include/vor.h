@@ -305,9 +305,9 @@ typedef uint32_t vor_index_t;
  * No other memory is used, and vor_build takes its scratch space from the
  * same arena. */
 #define VOR_ARENA_BYTES(n)                                                     \
-    ((size_t)(n) * sizeof(vor_point_t) +                                       \
-     ((n) >= 2u ? 2u * (size_t)(n) - 2u : 0u) * VOR_TRIANGLE_BYTES +           \
-     VOR_BUCKETS(n) * sizeof(vor_index_t))
+    (((size_t)(n) * sizeof(vor_point_t)) +                                     \
+     ((((n) >= 2u) ? ((2u * (size_t)(n)) - 2u) : 0u) * VOR_TRIANGLE_BYTES) +   \
+     (VOR_BUCKETS(n) * sizeof(vor_index_t)))
 
 /* The arena's required alignment (a static uint8_t array needs
  * _Alignas(4) or __attribute__((aligned(4))); malloc's is enough). */
@@ -324,13 +324,17 @@ typedef struct vor {
     uint32_t site_count;   /* site ids handed out: 0 .. site_count - 1 */
     uint32_t vertex_count; /* of those, the ones in the mesh (not duplicates) */
     uint32_t last_site;    /* where the next search starts by default */
-    vor_point_t low, high; /* bounding box of the sites in the mesh */
+    /* bounding box of the sites in the mesh */
+    vor_point_t low;
+    vor_point_t high;
     /* The bucket grid (queries without a hint start at the site of the
      * query's bucket): square buckets of side 2^32 / bucket_scale from
      * bucket_origin, bucket_columns x bucket_rows of them, row by row. */
     vor_index_t *buckets;  /* [VOR_BUCKETS(max_sites)], in the arena */
     vor_point_t bucket_origin;
-    uint32_t bucket_columns, bucket_rows, bucket_scale;
+    uint32_t bucket_columns;
+    uint32_t bucket_rows;
+    uint32_t bucket_scale;
     uint32_t bucket_rebuild_at; /* site count at which the grid is redrawn */
     uint32_t revision;     /* counts the changes: trackers notice them */
     uint32_t free_site;    /* the most recently freed id plus one (0: none),
@@ -744,7 +748,8 @@ typedef struct vor_edge {
     enum vor_edge_kind kind;
     vor_vertex_t from;
     vor_vertex_t to;
-    int64_t dx, dy;
+    int64_t dx;
+    int64_t dy;
 } vor_edge_t;
 
 /* Iterator over the edges of the Voronoi diagram: each edge of positive
@@ -781,7 +786,10 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site);
 
 /* A closed axis-aligned box [x0, x1] x [y0, y1]. */
 typedef struct vor_box {
-    int32_t x0, y0, x1, y1;
+    int32_t x0;
+    int32_t y0;
+    int32_t x1;
+    int32_t y1;
 } vor_box_t;
 
 /* Most vertices a clipped cell of a diagram of n sites can have (a
@@ -920,7 +928,9 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
  * only read, so any number of trackers may follow one diagram at once.
  */
 typedef struct vor_tracker_edge {
-    int32_t twice_dx, twice_dy; /* 2 (neighbour - site), |.| < 2^31 */
+    /* 2 (neighbour - site), |.| < 2^31 */
+    int32_t twice_dx;
+    int32_t twice_dy;
     int64_t square;             /* |neighbour - site|^2 < 2^61 */
 } vor_tracker_edge_t;
 
@@ -931,7 +941,9 @@ typedef struct vor_tracker {
     uint32_t edges;     /* the cached cell's edges, when cached */
     int cached;         /* 1: the cell below is the site's whole cell */
     vor_point_t at;     /* the site's coordinates */
-    vor_point_t low, high; /* where the int64 tests are exact (q - at fits int32) */
+    /* where the int64 tests are exact (q - at fits int32) */
+    vor_point_t low;
+    vor_point_t high;
     vor_tracker_edge_t edge[VOR_TRACKER_EDGES];
     vor_index_t neighbour[VOR_TRACKER_EDGES]; /* the site across each edge */
 } vor_tracker_t;

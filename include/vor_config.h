@@ -110,11 +110,11 @@
  * 7 bits of layout version:
  * two configurations have the same fingerprint only when they agree. */
 #define VOR_CONFIG_FINGERPRINT                                                 \
-    ((uint32_t)(VOR_LAYOUT_VERSION << 25 |                                     \
-                (VOR_INDEX_BITS == 32 ? 1u : 0u) << 24 |                       \
-                VOR__CONFIG_FAULTS << 23 |                                     \
-                (uint32_t)(VOR_STATS) << 22 |                                  \
-                (uint32_t)(VOR_SITES_PER_BUCKET) << 11 |                       \
+    ((uint32_t)(((uint32_t)VOR_LAYOUT_VERSION << 25) |                         \
+                ((uint32_t)((VOR_INDEX_BITS == 32) ? 1u : 0u) << 24) |         \
+                ((uint32_t)VOR__CONFIG_FAULTS << 23) |                         \
+                ((uint32_t)(VOR_STATS) << 22) |                                \
+                ((uint32_t)(VOR_SITES_PER_BUCKET) << 11) |                     \
                 (uint32_t)(VOR_TRACKER_EDGES)))
 
 #endif

@@ -177,7 +177,10 @@ typedef struct vor_raster_sites {
     const int32_t *add_weights;     /* ADD, COMPOUND: [count], any int32 */
     const uint32_t *offsets;        /* HAUSDORFF, POLYGON, POLYLINE: [count + 1] */
     uint32_t lp_exponent;           /* LP: p in 1 .. 8 */
-    int32_t form_a, form_b, form_c; /* ELLIPTIC: a > 0 and a c > b^2 */
+    /* ELLIPTIC: a > 0 and a c > b^2 */
+    int32_t form_a;
+    int32_t form_b;
+    int32_t form_c;
 } vor_raster_sites_t;
 
 enum vor_raster_kind {
@@ -232,7 +235,7 @@ typedef struct vor_raster_options {
  * bytes per site (sort orders, candidates, envelopes) and 16 per pixel of
  * width (two rows of runs), plus alignment slack. A constant expression. */
 #define VOR_RASTER_WORK_BYTES(n, width)                                        \
-    ((size_t)(n) * 48u + (size_t)(width) * 16u + 64u)
+    (((size_t)(n) * 48u) + ((size_t)(width) * 16u) + 64u)
 #define VOR_RASTER_WORK_ALIGN 8u
 
 /*

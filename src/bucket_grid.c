@@ -37,13 +37,13 @@ static uint32_t bucket_line(int32_t c, int32_t origin, uint32_t scale, uint32_t 
     }
     /* c > origin: the difference is below 2^32 in unsigned arithmetic */
     uint32_t line = line_of((uint32_t)c - (uint32_t)origin, scale);
-    return (line < count) ? line : count - 1u;
+    return (line < count) ? line : (count - 1u);
 }
 
 static uint32_t bucket_of(const vor_t *d, int32_t x, int32_t y)
 {
-    return bucket_line(y, d->bucket_origin.y, d->bucket_scale, d->bucket_rows) *
-               d->bucket_columns +
+    return (bucket_line(y, d->bucket_origin.y, d->bucket_scale, d->bucket_rows) *
+               d->bucket_columns) +
            bucket_line(x, d->bucket_origin.x, d->bucket_scale, d->bucket_columns);
 }
 
@@ -56,8 +56,8 @@ static uint32_t off_centre(const vor_t *d, const vor_point_t *p)
                                          d->bucket_scale);
     uint32_t fy = (uint32_t)vor__mul_u32((uint32_t)p->y - (uint32_t)d->bucket_origin.y,
                                          d->bucket_scale);
-    uint32_t dx = (fx >= 0x80000000u) ? fx - 0x80000000u : 0x80000000u - fx;
-    uint32_t dy = (fy >= 0x80000000u) ? fy - 0x80000000u : 0x80000000u - fy;
+    uint32_t dx = (fx >= 0x80000000u) ? (fx - 0x80000000u) : (0x80000000u - fx);
+    uint32_t dy = (fy >= 0x80000000u) ? (fy - 0x80000000u) : (0x80000000u - fy);
     return (dx > dy) ? dx : dy;
 }
 
@@ -74,13 +74,15 @@ void vor__grid_rebuild(vor_t *d)
     uint32_t height = (uint32_t)d->high.y - (uint32_t)d->low.y;
     /* the largest scale whose grid fits: scale 0 is one bucket, and the
      * count grows with the scale; 32 halvings of [0, 2^32) */
-    uint32_t fits = 0, step = 0x80000000u;
+    uint32_t fits = 0;
+    uint32_t step = 0x80000000u;
     for (; step != 0u; step >>= 1) {
         if (grid_size(width, height, fits | step) <= capacity) {
             fits |= step;
         }
     }
-    uint32_t columns = line_of(width, fits) + 1u, rows = line_of(height, fits) + 1u;
+    uint32_t columns = line_of(width, fits) + 1u;
+    uint32_t rows = line_of(height, fits) + 1u;
     d->bucket_origin.x = d->low.x;
     d->bucket_origin.y = d->low.y;
     d->bucket_scale = fits;
@@ -106,7 +108,7 @@ void vor__grid_rebuild(vor_t *d)
              * comparison reads no coordinates from elsewhere in the arena:
              * on a cached host those reads were most of the rebuild. An
              * empty bucket, VOR__NONE, is above every packed entry. */
-            vor_index_t packed = (off_centre(d, p) >> 20) << 21 | s;
+            vor_index_t packed = ((off_centre(d, p) >> 20) << 21) | s;
             bucket[b] = (packed < bucket[b]) ? packed : bucket[b];
 #else
             if (bucket[b] == VOR__NONE ||
@@ -153,11 +155,11 @@ void vor__grid_add(vor_t *d, uint32_t site)
          * each site's entries in one run through its own bucket) */
         uint32_t count = d->bucket_columns * d->bucket_rows;
         if (held_at < b) {
-            for (uint32_t k = b + 1u; k < count && d->buckets[k] == held; k++) {
+            for (uint32_t k = b + 1u; (k < count) && (d->buckets[k] == held); k++) {
                 d->buckets[k] = (vor_index_t)site;
             }
         } else {
-            for (uint32_t k = b; k > 0u && d->buckets[k - 1u] == held; k--) {
+            for (uint32_t k = b; (k > 0u) && (d->buckets[k - 1u] == held); k--) {
                 d->buckets[k - 1u] = (vor_index_t)site;
             }
         }
@@ -172,18 +174,19 @@ void vor__grid_forget(vor_t *d, uint32_t site, uint32_t fallback)
      * start), whose own bucket then still lies in the merged run. */
     uint32_t count = d->bucket_columns * d->bucket_rows;
     vor_index_t *bucket = d->buckets;
-    uint32_t low = bucket_of(d, d->sites[site].x, d->sites[site].y), high = low;
+    uint32_t low = bucket_of(d, d->sites[site].x, d->sites[site].y);
+    uint32_t high = low;
     if (bucket[low] != site) {
         return; /* the site shares its bucket and is not its entry */
     }
-    while (low > 0u && bucket[low - 1u] == site) {
+    while ((low > 0u) && (bucket[low - 1u] == site)) {
         low--;
     }
-    while (high + 1u < count && bucket[high + 1u] == site) {
+    while (((high + 1u) < count) && (bucket[high + 1u] == site)) {
         high++;
     }
     vor_index_t heir = (low > 0u)           ? bucket[low - 1u]
-                       : (high + 1u < count) ? bucket[high + 1u]
+                       : ((high + 1u) < count) ? bucket[high + 1u]
                                              : (vor_index_t)fallback;
     for (uint32_t k = low; k <= high; k++) {
         bucket[k] = heir;

@@ -87,14 +87,14 @@
  * hull vertex even when many sites share an x. */
 static inline bool lex_less(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
-    return s[a].x < s[b].x || (s[a].x == s[b].x && s[a].y < s[b].y);
+    return (s[a].x < s[b].x) || ((s[a].x == s[b].x) && (s[a].y < s[b].y));
 }
 
 /* The same turned by 90 degrees, (x', y') = (-y, x): top to bottom, for
  * vertical merges (Oishi and Sugihara, section 3.2: "rotate the algorithm"). */
 static inline bool lex_less_rotated(const vor_point_t *s, vor_index_t a, vor_index_t b)
 {
-    return s[a].y > s[b].y || (s[a].y == s[b].y && s[a].x < s[b].x);
+    return (s[a].y > s[b].y) || ((s[a].y == s[b].y) && (s[a].x < s[b].x));
 }
 
 /* Axis 0: lex_less; axis 1: lex_less_rotated. */
@@ -134,7 +134,8 @@ typedef struct {
      *   by_line true: F = the sites whose coordinate (x on axis 0, y on
      *     axis 1) is below `line`, or at or above it if f_above (quadtree
      *     merges: the children are separated by a grid line). */
-    bool by_line, f_above;
+    bool by_line;
+    bool f_above;
     vor_index_t split;
     int64_t line;
     unsigned k;          /* the quadtree's grid: 2^k x 2^k buckets over */
@@ -192,12 +193,12 @@ static inline unsigned find(const vor_index_t v[3], vor_index_t x)
 /* The vertex among decoded vertices v that is neither a nor c. */
 static inline vor_index_t third(const vor_index_t v[3], vor_index_t a, vor_index_t c)
 {
-    return (v[0] != a && v[0] != c) ? v[0] : (v[1] != a && v[1] != c) ? v[1] : v[2];
+    return ((v[0] != a) && (v[0] != c)) ? v[0] : ((v[1] != a) && (v[1] != c)) ? v[1] : v[2];
 }
 
 static bool is_home(const builder_t *b, vor_index_t slot, vor_index_t v)
 {
-    return slot == v && v < b->d->max_sites;
+    return (slot == v) && (v < b->d->max_sites);
 }
 
 /* Flips the edge opposite vertex i1 of the triangle in slot s1 = (a, b, c)
@@ -212,16 +213,22 @@ static inline void flip(builder_t *b, vor_index_t s1, const vor_index_t tv[3], u
 {
     vor__tri_t *tri = b->tri;
     vor__tri_t *t = &tri[s1];
-    vor_index_t a = tv[i1], bb = tv[vor__next(i1)], c = tv[vor__prev(i1)];
-    vor_index_t s2 = t->n[i1], nab = t->n[vor__prev(i1)], nca = t->n[vor__next(i1)];
+    vor_index_t a = tv[i1];
+    vor_index_t bb = tv[vor__next(i1)];
+    vor_index_t c = tv[vor__prev(i1)];
+    vor_index_t s2 = t->n[i1];
+    vor_index_t nab = t->n[vor__prev(i1)];
+    vor_index_t nca = t->n[vor__next(i1)];
     vor__tri_t *u = &tri[s2];
     vor_index_t uv[3];
     vor__vertices(u, uv);
     unsigned ib = find(uv, bb);
     ib = (ib == 3u) ? 0u : ib; /* always found: the two share the edge */
     vor_index_t e = uv[vor__next(ib)];
-    vor_index_t nbe = u->n[vor__prev(ib)], nec = u->n[ib];
-    vor_index_t x1 = s1, x2 = s2;
+    vor_index_t nbe = u->n[vor__prev(ib)];
+    vor_index_t nec = u->n[ib];
+    vor_index_t x1 = s1;
+    vor_index_t x2 = s2;
     if (is_home(b, s1, c) || is_home(b, s2, bb)) {
         x1 = s2;
         x2 = s1;
@@ -249,7 +256,7 @@ static bool has_edge(const builder_t *b, vor_index_t p, vor_index_t q)
         if (i == 3u) {
             return true; /* only on a corrupted mesh: refuse the edge */
         }
-        if (v[vor__next(i)] == q || v[vor__prev(i)] == q) {
+        if ((v[vor__next(i)] == q) || v[vor__prev(i)] == q) {
             return true;
         }
         slot = t->n[vor__next(i)];
@@ -288,7 +295,10 @@ static void put(vor__tri_t *tri, vor_index_t slot, vor_index_t v0, vor_index_t v
  * there, Oishi and Sugihara, section 4.1); if earlier signs lied they are still hull
  * sites, which is all the search and guards C4 and C5 need. */
 typedef struct {
-    vor_index_t least, least_ghost, most, most_ghost;
+    vor_index_t least;
+    vor_index_t least_ghost;
+    vor_index_t most;
+    vor_index_t most_ghost;
     uint32_t length;
 } extremes_t;
 
@@ -301,12 +311,14 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
     unsigned i = find(v, VOR__INFINITE);
     i = (i == 3u) ? 2u : i; /* never: a part's ghost is a ghost */
     vor_index_t a = v[vor__next(i)];
-    e->least = e->most = a;
-    e->least_ghost = e->most_ghost = g;
+    e->most = a;
+    e->least = e->most;
+    e->most_ghost = g;
+    e->least_ghost = e->most_ghost;
     e->length = 1;
     /* the next ghost (w, x, inf) lies across (w, inf) from (a, w, inf) */
     vor_index_t slot = tri[g].n[vor__next(i)];
-    while (slot != g && e->length < b->bound) {
+    while ((slot != g) && (e->length < b->bound)) {
         const vor__tri_t *t = &tri[slot];
         vor__vertices(t, v);
         i = find(v, VOR__INFINITE);
@@ -320,6 +332,8 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
         } else if (axis_less(s, e->most, a, axis)) {
             e->most = a;
             e->most_ghost = slot;
+        } else {
+            /* no other case */
         }
         e->length++;
         slot = t->n[vor__next(i)];
@@ -332,7 +346,10 @@ static void hull_extremes(const builder_t *b, vor_index_t g, unsigned axis, extr
 /* The lower common tangent (l, r) of F and S and the ghosts at its ends,
  * (l, w, inf) in F and (u, r, inf) in S (VOR__NONE for a single site). */
 typedef struct {
-    vor_index_t l, r, g1, g2;
+    vor_index_t l;
+    vor_index_t r;
+    vor_index_t g1;
+    vor_index_t g2;
 } tangent_t;
 
 /* Step 1 (Oishi and Sugihara, section 4): the lower common tangent of F
@@ -342,9 +359,14 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
 {
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
-    vor_index_t l = f, r = s, l_stop = f, r_stop = s;
-    vor_index_t g1 = VOR__NONE, g2 = VOR__NONE;
-    uint32_t f_hull = 1, s_hull = 1;
+    vor_index_t l = f;
+    vor_index_t r = s;
+    vor_index_t l_stop = f;
+    vor_index_t r_stop = s;
+    vor_index_t g1 = VOR__NONE;
+    vor_index_t g2 = VOR__NONE;
+    uint32_t f_hull = 1;
+    uint32_t s_hull = 1;
     extremes_t e;
     if (!f_single) {
         hull_extremes(b, f, b->axis, &e);
@@ -363,12 +385,13 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
         vor__vertices(&tri[h], v);
         g2 = tri[h].n[vor__next(find(v, r))];
     }
-    uint32_t moves1 = 0, moves2 = 0;
+    uint32_t moves1 = 0;
+    uint32_t moves2 = 0;
     for (;;) {
         /* C4: the F end stays between R1 and L1 (clockwise), the S end
          * between L2 and R2 (counterclockwise); C5: no move back. The
          * move counts bound the walks if the hulls are not convex. */
-        if (g1 != VOR__NONE && l != l_stop && moves1 < f_hull) {
+        if (g1 != VOR__NONE && (l != l_stop) && (moves1 < f_hull)) {
             vor__vertices(&tri[g1], v);
             unsigned i = find(v, l);
             vor_index_t w = v[vor__next(i)];
@@ -379,7 +402,7 @@ static void lower_tangent(builder_t *b, vor_index_t f, vor_index_t s, bool f_sin
                 continue;
             }
         }
-        if (g2 != VOR__NONE && r != r_stop && moves2 < s_hull) {
+        if (g2 != VOR__NONE && (r != r_stop) && (moves2 < s_hull)) {
             vor__vertices(&tri[g2], v);
             unsigned i = find(v, r);
             vor_index_t u = v[vor__prev(i)];
@@ -406,8 +429,12 @@ static vor_index_t glue(builder_t *b, const tangent_t *t, bool f_single, bool s_
 {
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
-    vor_index_t l0 = t->l, r0 = t->r;
-    vor_index_t ga = t->g1, gb = VOR__NONE, ha = VOR__NONE, hb = t->g2;
+    vor_index_t l0 = t->l;
+    vor_index_t r0 = t->r;
+    vor_index_t ga = t->g1;
+    vor_index_t gb = VOR__NONE;
+    vor_index_t ha = VOR__NONE;
+    vor_index_t hb = t->g2;
     if (ga != VOR__NONE) { /* (u, l0, inf), across (inf, l0) from (l0, w, inf) */
         vor__vertices(&tri[ga], v);
         gb = tri[ga].n[vor__next(find(v, l0))];
@@ -416,15 +443,18 @@ static vor_index_t glue(builder_t *b, const tangent_t *t, bool f_single, bool s_
         vor__vertices(&tri[hb], v);
         ha = tri[hb].n[vor__prev(find(v, r0))];
     }
-    vor_index_t lower, cap;
+    vor_index_t lower;
+    vor_index_t cap;
     if (f_single) {
         lower = l0; /* the single site's home slot */
     } else if (s_single) {
         lower = r0;
     } else {
-        lower = (vor_index_t)b->next_extra++;
+        lower = (vor_index_t)b->next_extra;
+        b->next_extra++;
     }
-    cap = (vor_index_t)b->next_extra++;
+    cap = (vor_index_t)b->next_extra;
+    b->next_extra++;
     put(tri, lower, r0, l0, VOR__INFINITE, (ga != VOR__NONE) ? ga : cap,
         (hb != VOR__NONE) ? hb : cap, cap);
     put(tri, cap, l0, r0, VOR__INFINITE, (ha != VOR__NONE) ? ha : lower,
@@ -460,12 +490,15 @@ static inline bool on_side(const builder_t *b, vor_index_t v, bool left)
  * and the candidate: a flip, after which c2 is the candidate. Returns the
  * last candidate; *valid tells whether it is valid. At most one deletion
  * per F-F-F (S-S-S) triangle: bounded with the merge. */
-VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, bool left,
-                                           vor_index_t l, vor_index_t r, bool still_valid,
+VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket_in, bool left,
+                                           vor_index_t l, vor_index_t r, bool still_valid_in,
                                            bool *valid)
 {
+    vor_index_t pocket = pocket_in;
+    bool still_valid = still_valid_in;
     vor__tri_t *tri = b->tri;
-    vor_index_t pv[3], v[3];
+    vor_index_t pv[3];
+    vor_index_t v[3];
     vor__vertices(&tri[pocket], pv);
     unsigned inf = find(pv, VOR__INFINITE); /* found: the cap's edge */
     VOR_ASSERT(inf < 3u);
@@ -481,7 +514,8 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
         if (!on_side(b, c2, left) || incircle(b, l, r, c1, c2) <= 0) {
             return c1;
         }
-        vor_index_t x1, x2;
+        vor_index_t x1;
+        vor_index_t x2;
         flip(b, pocket, pv, inf, &x1, &x2);
         /* the next pocket ghost: x2 = (inf, c2, l), or x1 = (inf, r, c2) */
         pocket = left ? x2 : x1;
@@ -497,27 +531,35 @@ VOR__ALWAYS_INLINE vor_index_t delete_side(builder_t *b, vor_index_t pocket, boo
  * fig. 3.1), from the base (l0, r0) under the cap. Bounded by the counts
  * in the header comment; `steps_left` is a last resort. Returns the
  * number of advances (cross triangles made). */
-static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t cap)
+static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t cap_in)
 {
+    vor_index_t cap = cap_in;
     vor__tri_t *tri = b->tri;
-    vor_index_t l = l0, r = r0;
+    vor_index_t l = l0;
+    vor_index_t r = r0;
     /* The cap (l, r, inf) is always written by put() or flip() in a
      * known rotation: cv holds its vertices, with l at cv[il] and r at
      * cv[ir]; the F pocket ghost lies across (l, inf), the S one across
      * (inf, r). */
     vor_index_t cv[3] = {l0, r0, VOR__INFINITE};
-    unsigned il = 0, ir = 1;
-    bool l_moved = false, r_moved = false;
+    unsigned il = 0;
+    unsigned ir = 1;
+    bool l_moved = false;
+    bool r_moved = false;
     /* A candidate that stayed while the other side advanced by the circle
      * test is still above the new base, exactly: were the S candidate e
      * below (c, r) after the base (l, r) moved to (c, r), it would lie in
      * the triangle (l, r, c), which its circle contains, or beyond (c, l),
      * where the segment (r, e) crosses (l, c) and no line could separate
      * F from S (mirrored for F). Its test is skipped. */
-    bool l_still_valid = false, r_still_valid = false;
-    uint32_t steps_left = 4u * b->bound + 16u, advances = 0;
+    bool l_still_valid = false;
+    bool r_still_valid = false;
+    uint32_t steps_left = (4u * b->bound) + 16u;
+    uint32_t advances = 0;
     while (steps_left-- > 0u) {
-        bool lvalid, rvalid; /* the candidates above the base */
+        /* the candidates above the base */
+        bool lvalid;
+        bool rvalid;
         vor_index_t c1 = delete_side(b, tri[cap].n[ir], true, l, r, l_still_valid, &lvalid);
         vor_index_t e1 = delete_side(b, tri[cap].n[il], false, l, r, r_still_valid, &rvalid);
         /* the next F-S edge: (c1, r) or (l, e1), whichever keeps the
@@ -534,6 +576,8 @@ static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t
         } else if (right && joined(b, e1, l)) {
             right = false;
             left = lvalid && !joined(b, c1, r);
+        } else {
+            /* no other case */
         }
         if (!left && !right) {
             /* T2: each end moves at least once (never needed when the
@@ -548,7 +592,8 @@ static uint32_t zipper(builder_t *b, vor_index_t l0, vor_index_t r0, vor_index_t
         }
         r_still_valid = left && circle_left;
         l_still_valid = right && circle_right;
-        vor_index_t x1, x2;
+        vor_index_t x1;
+        vor_index_t x2;
         if (left) { /* cap (l, r, inf) + (c1, l, inf) -> (r, inf, c1) + (r, c1, l) */
             flip(b, cap, cv, ir, &x1, &x2);
             cap = x1;
@@ -587,7 +632,8 @@ static void clear_marks(builder_t *b, vor_index_t lower, vor_index_t l0, vor_ind
 {
     vor__tri_t *tri = b->tri;
     vor_index_t v[3];
-    vor_index_t l = l0, r = r0;
+    vor_index_t l = l0;
+    vor_index_t r = r0;
     vor__set_mark(&tri[l], false);
     vor__set_mark(&tri[r], false);
     vor__vertices(&tri[lower], v);
@@ -616,7 +662,8 @@ static void clear_marks(builder_t *b, vor_index_t lower, vor_index_t l0, vor_ind
 static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned axis)
 {
     b->axis = axis;
-    bool f_single = is_single(b, f), s_single = is_single(b, s);
+    bool f_single = is_single(b, f);
+    bool s_single = is_single(b, s);
     if (f_single && s_single) {
         vor__make_edge(b->d, f, s);
         return f;
@@ -635,7 +682,8 @@ static vor_index_t merge(builder_t *b, vor_index_t f, vor_index_t s, unsigned ax
 
 /* Pending parts of the x-split, the least site of each for in_f. */
 struct pending {
-    vor_index_t part, least;
+    vor_index_t part;
+    vor_index_t least;
 };
 
 /* Three sites as a part: the triangle (p, q, r) or (p, r, q), whichever
@@ -644,15 +692,18 @@ struct pending {
  * triangulation of the sphere). The ghost (y, x, inf) behind the hull
  * edge (x, y) takes x's home slot, the finite triangle an extra slot.
  * Returns p's slot, a ghost. */
-static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_index_t r)
+static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q_in, vor_index_t r_in)
 {
+    vor_index_t q = q_in;
+    vor_index_t r = r_in;
     vor__tri_t *tri = b->tri;
     if (orient(b, p, q, r) < 0) {
         vor_index_t swap = q;
         q = r;
         r = swap;
     }
-    vor_index_t t = (vor_index_t)b->next_extra++;
+    vor_index_t t = (vor_index_t)b->next_extra;
+    b->next_extra++;
     put(tri, t, p, q, r, q, r, p);
     put(tri, p, q, p, VOR__INFINITE, r, q, t);
     put(tri, q, r, q, VOR__INFINITE, p, r, t);
@@ -674,7 +725,7 @@ static vor_index_t triangle(builder_t *b, vor_index_t p, vor_index_t q, vor_inde
 /* The size of the x-split's next leaf when `left` sites remain. */
 static inline uint32_t leaf_size(uint32_t left)
 {
-    return (left <= 2u || left == 4u) ? ((left == 1u) ? 1u : 2u) : 3u;
+    return ((left <= 2u) || (left == 4u)) ? ((left == 1u) ? 1u : 2u) : 3u;
 }
 
 VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *order, uint32_t v)
@@ -683,7 +734,7 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
     struct pending stack[SPLIT_STACK];
     unsigned top = 0;
     uint32_t pos = 0;
-    for (uint32_t i = 0; pos < v || top > 1u; i++) {
+    for (uint32_t i = 0; (pos < v) || (top > 1u); i++) {
         if (pos < v) {
             VOR_ASSERT(top < SPLIT_STACK);
             uint32_t size = leaf_size(v - pos);
@@ -701,7 +752,7 @@ VOR__NOINLINE static vor_index_t build_split(builder_t *b, const vor_index_t *or
             top++;
         }
         /* merge pairs of equal size; once every leaf is in, all pairs */
-        for (uint32_t c = i + 1u; top > 1u && (pos == v || (c & 1u) == 0u); c >>= 1) {
+        for (uint32_t c = i + 1u; (top > 1u) && ((pos == v) || (c & 1u) == 0u); c >>= 1) {
             b->by_line = false;
             b->split = stack[top - 1u].least;
             stack[top - 2u].part = merge(b, stack[top - 2u].part, stack[top - 1u].part, 0);
@@ -722,11 +773,12 @@ VOR__ALWAYS_INLINE uint32_t keep_distinct(builder_t *b, vor_index_t *ids, uint32
     for (uint32_t i = 0; i < count; i++) {
         vor_index_t s = ids[i];
         vor_index_t first = (m > 0u) ? ids[m - 1u] : s;
-        if (m > 0u && p[s].x == p[first].x && p[s].y == p[first].y) {
+        if ((m > 0u) && (p[s].x == p[first].x) && (p[s].y == p[first].y)) {
             vor__tri_fresh(&b->tri[s]); /* a duplicate's home slot stays empty */
             b->tri[s].n[0] = VOR__NONE;
         } else {
-            ids[m++] = s;
+            ids[m] = s;
+            m++;
             first = s;
         }
         if (b->duplicate_of != NULL) {
@@ -785,7 +837,8 @@ static vor_index_t combine(builder_t *b, vor_index_t f, vor_index_t s, unsigned 
 static uint32_t partition_below(const vor_point_t *p, vor_index_t *ids, uint32_t count,
                                 unsigned axis, int64_t line)
 {
-    uint32_t i = 0, j = count;
+    uint32_t i = 0;
+    uint32_t j = count;
     while (i < j) {
         const vor_point_t *q = &p[ids[i]];
         if ((int64_t)((axis == 0u) ? q->x : q->y) < line) {
@@ -816,7 +869,10 @@ static inline bool in_square(const vor_point_t *q, int64_t ox, int64_t oy, unsig
 VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, uint32_t count)
 {
     const vor_point_t *p = b->d->sites;
-    int64_t ox = p[ids[0]].x, oy = p[ids[0]].y, hx = ox, hy = oy;
+    int64_t ox = p[ids[0]].x;
+    int64_t oy = p[ids[0]].y;
+    int64_t hx = ox;
+    int64_t hy = oy;
     for (uint32_t i = 1; i < count; i++) {
         const vor_point_t *q = &p[ids[i]];
         ox = (q->x < ox) ? q->x : ox;
@@ -829,16 +885,17 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
     while (vor__shr_u64(span, s) != 0u) {
         s++;
     }
-    vor_index_t bottom[CROWDED_LEVELS], third_child[CROWDED_LEVELS];
+    vor_index_t bottom[CROWDED_LEVELS];
+    vor_index_t third_child[CROWDED_LEVELS];
     uint8_t child[CROWDED_LEVELS];
     unsigned level = 0;
     uint32_t pos = 0;
     for (;;) {
         uint32_t end = pos;
-        while (end < count && in_square(&p[ids[end]], ox, oy, s)) {
+        while ((end < count) && in_square(&p[ids[end]], ox, oy, s)) {
             end++;
         }
-        if (end - pos > CROWDED && s > 0u && level + 1u < CROWDED_LEVELS) {
+        if (((end - pos) > CROWDED) && (s > 0u) && ((level + 1u) < CROWDED_LEVELS)) {
             /* split it and go on with its first child */
             s--;
             int64_t side = (int64_t)vor__shl_u64(1u, s);
@@ -859,7 +916,7 @@ VOR__NOINLINE static vor_index_t build_crowded(builder_t *b, vor_index_t *ids, u
             }
             int64_t side = (int64_t)vor__shl_u64(1u, s);
             unsigned c = child[level];
-            if (c == 0u || c == 2u) {
+            if ((c == 0u) || (c == 2u)) {
                 if (c == 0u) {
                     bottom[level] = part;
                 } else {
@@ -940,24 +997,25 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
     vor_t *d = b->d;
     unsigned k = b->k;
     uint32_t cells = 1u << (2u * k);
-    vor_index_t bottom[QUADTREE_LEVELS], third_child[QUADTREE_LEVELS];
+    vor_index_t bottom[QUADTREE_LEVELS];
+    vor_index_t third_child[QUADTREE_LEVELS];
     vor_index_t root = VOR__NONE;
     bottom[1] = VOR__NONE; /* the top half alone has no bottom pair */
     uint32_t pos = 0;
     for (uint32_t c = from_cell; c < to_cell; c++) {
         uint32_t end = pos;
-        while (end < n && vor__grid_z(d, ids[end], k, b->square) == c) {
+        while ((end < n) && vor__grid_z(d, ids[end], k, b->square) == c) {
             end++;
         }
         /* sites are numbered in input order, so the next buckets' sites
          * and home slots lie anywhere in the arena */
-        for (uint32_t ahead = end; VOR__PREFETCHING && ahead < end + 4u && ahead + 12u < n;
+        for (uint32_t ahead = end; VOR__PREFETCHING && (ahead < (end + 4u)) && ((ahead + 12u) < n);
              ahead++) {
             VOR__PREFETCH(&d->sites[ids[ahead + 12u]]);
             VOR__PREFETCH(&b->tri[ids[ahead + 12u]]);
         }
         /* each bucket is sorted and built while its sites are in the cache */
-        vor_index_t part = (end - pos > CROWDED) ? build_crowded(b, ids + pos, end - pos)
+        vor_index_t part = ((end - pos) > CROWDED) ? build_crowded(b, ids + pos, end - pos)
                                                  : build_sites(b, ids + pos, end - pos);
         pos = end;
         /* the children of one square are the squares of side 2^(k -
@@ -969,7 +1027,7 @@ VOR__NOINLINE static vor_index_t build_quadtree(builder_t *b, vor_index_t *ids, 
                 break;
             }
             unsigned side_log = k - level;
-            uint32_t z0 = (c >> (2u * side_log + 2u)) << (2u * side_log + 2u);
+            uint32_t z0 = (c >> ((2u * side_log) + 2u)) << ((2u * side_log) + 2u);
             unsigned child = (c >> (2u * side_log)) & 3u;
             if (child == 0u) {
                 bottom[level] = part;
@@ -1021,9 +1079,9 @@ static uint32_t box_cells(const vor_t *d, const vor__grid_square_t *square, unsi
 VOR__NOINLINE static void group_by_bucket(builder_t *b, vor_index_t *ids, uint32_t n)
 {
     vor__grid_square(b->d, true, b->square);
-    while (b->k + 1u < QUADTREE_LEVELS &&
+    while ((b->k + 1u) < QUADTREE_LEVELS &&
            vor__shl_u64(box_cells(b->d, b->square, b->k), 3u) <= n &&
-           vor__shl_u64(1u, 2u * (b->k + 1u)) <= 2u * (uint64_t)n) {
+           vor__shl_u64(1u, 2u * (b->k + 1u)) <= (2u * (uint64_t)n)) {
         b->k++;
     }
     vor__grid_sort(b->d, n, b->k, b->square, VOR__CELL_Z, ids - ((1u << (2u * b->k)) + 1u), ids);
@@ -1052,7 +1110,7 @@ static void builder_init(builder_t *b, vor_t *d, uint32_t n, uint32_t *duplicate
     b->line = 0;
     b->k = 0;
     b->square = square;
-    b->bound = 2u * n + 2u;
+    b->bound = (2u * n) + 2u;
 }
 
 /* What both entry points do first: the checks and vor__build_start (a
@@ -1069,7 +1127,7 @@ VOR__ALWAYS_INLINE int start(builder_t *b, vor_t *d, const vor_point_t *points, 
                              enum vor_dc_split split, uint32_t *duplicate_of,
                              vor__grid_square_t *square, vor_index_t **ids)
 {
-    if (split != VOR_DC_QUADTREE && split != VOR_DC_XSPLIT) {
+    if ((split != VOR_DC_QUADTREE) && (split != VOR_DC_XSPLIT)) {
         return VOR_ERR_ARG;
     }
     int status = vor__build_start(d, points, n, duplicate_of);
@@ -1096,7 +1154,7 @@ static void all_ids(vor_index_t *ids, uint32_t n)
 VOR__ALWAYS_INLINE void build_all(builder_t *b, vor_index_t *ids, uint32_t n,
                                   enum vor_dc_split split)
 {
-    if (split == VOR_DC_QUADTREE && n >= 8u) {
+    if ((split == VOR_DC_QUADTREE) && (n >= 8u)) {
         group_by_bucket(b, ids, n);
         (void)build_quadtree(b, ids, n, 0, 1u << (2u * b->k));
     } else {
@@ -1127,7 +1185,8 @@ typedef struct {
 #endif
     vor_index_t *ids;
     uint32_t count;
-    uint32_t from_cell, to_cell;
+    uint32_t from_cell;
+    uint32_t to_cell;
     vor_index_t part;
 } half_t;
 
@@ -1169,7 +1228,7 @@ static uint32_t xsplit_first_part(uint32_t m)
         pos += leaf_size(m - pos);
     }
     uint32_t first = 1;
-    while (2u * first < leaves) {
+    while ((2u * first) < leaves) {
         first *= 2u;
     }
     uint32_t sites = 0;
@@ -1184,7 +1243,8 @@ static uint32_t xsplit_first_part(uint32_t m)
 static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, uint32_t n,
                                     uint32_t half)
 {
-    uint32_t low = 0, high = n;
+    uint32_t low = 0;
+    uint32_t high = n;
     while (low < high) {
         uint32_t mid = low + ((high - low) >> 1);
         if (vor__grid_z(b->d, ids[mid], b->k, b->square) < half) {
@@ -1204,9 +1264,9 @@ static uint32_t quadtree_first_part(const builder_t *b, const vor_index_t *ids, 
  * are empty. */
 static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count, uint32_t gap)
 {
-    for (uint32_t slot = 0; slot < n + count; slot++) {
-        uint32_t at = (slot < n) ? slot : from + (slot - n);
-        vor__tri_t *t = &tri[(slot < n) ? at : at - gap];
+    for (uint32_t slot = 0; slot < (n + count); slot++) {
+        uint32_t at = (slot < n) ? slot : (from + (slot - n));
+        vor__tri_t *t = &tri[(slot < n) ? at : (at - gap)];
         if (slot >= n) { /* field by field: no memmove */
             const vor__tri_t *old = &tri[at];
             for (unsigned i = 0; i < sizeof t->v / sizeof t->v[0]; i++) {
@@ -1217,9 +1277,11 @@ static void close_gap(vor__tri_t *tri, uint32_t n, uint32_t from, uint32_t count
             }
         } else if (vor__slot_empty(t)) {
             continue;
+        } else {
+            /* no other case */
         }
         for (unsigned i = 0; i < 3u; i++) {
-            if ((uint32_t)t->n[i] - from < count) {
+            if (((uint32_t)t->n[i] - from) < count) {
                 t->n[i] = (vor_index_t)(t->n[i] - gap);
             }
         }
@@ -1264,7 +1326,9 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
                                        enum vor_dc_split split, const vor_fork_join_t *hook)
 {
     vor_t *d = b->d;
-    uint32_t count = n, n_a, cells = 0;
+    uint32_t count = n;
+    uint32_t n_a;
+    uint32_t cells = 0;
     if (split == VOR_DC_QUADTREE) {
         group_by_bucket(b, ids, n);
         cells = 1u << (2u * b->k);
@@ -1274,7 +1338,7 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
         count = sort_distinct(b, ids, n);
         n_a = xsplit_first_part(count);
     }
-    if (n_a < 3u || count - n_a < 3u) { /* one side (nearly) empty: no fork */
+    if ((n_a < 3u) || (count - n_a) < 3u) { /* one side (nearly) empty: no fork */
         if (split == VOR_DC_QUADTREE) {
             (void)build_quadtree(b, ids, n, 0, cells);
         } else {
@@ -1298,13 +1362,14 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
         builder_init(&x->b, d, n, b->duplicate_of, HALF_STATS(x), (h == 0u) ? d->max_sites : gap_end,
                      b->square);
         x->b.k = b->k;
-        x->ids = (h == 0u) ? ids_a : ids + n_a;
-        x->count = (h == 0u) ? n_a : count - n_a;
-        x->from_cell = (h == 0u) ? 0u : cells >> 1;
-        x->to_cell = (h == 0u) ? cells >> 1 : cells;
+        x->ids = (h == 0u) ? ids_a : (ids + n_a);
+        x->count = (h == 0u) ? n_a : (count - n_a);
+        x->from_cell = (h == 0u) ? 0u : (cells >> 1);
+        x->to_cell = (h == 0u) ? (cells >> 1) : cells;
         x->part = VOR__NONE;
     }
-    half_t *a = &half[0], *s = &half[1];
+    half_t *a = &half[0];
+    half_t *s = &half[1];
     /* A on the other core if the hook can; B here meanwhile */
     bool forked = hook->fork(hook->context, build_half, a) == 0;
     build_half(s);
@@ -1317,7 +1382,7 @@ VOR__NOINLINE static void build_forked(builder_t *b, vor_index_t *ids, uint32_t 
     uint32_t gap = gap_end - a->b.next_extra;
     if (gap > 0u) {
         close_gap(b->tri, n, gap_end, used_b, gap);
-        if ((uint32_t)s->part - gap_end < used_b) { /* B's part is one of its ghosts */
+        if (((uint32_t)s->part - gap_end) < used_b) { /* B's part is one of its ghosts */
             s->part = (vor_index_t)(s->part - gap);
         }
     }
@@ -1358,11 +1423,11 @@ VOR__ALWAYS_INLINE int build_dc(vor_t *d, const vor_point_t *points, uint32_t n,
     faults = d->fault_rate != 0u; /* one fault sequence: one core */
 #endif
     uint32_t fork_min = VOR_DC_FORK_MIN_SITES_DEFAULT;
-    if (hook != NULL && options != NULL && options->fork_min_sites != 0u) {
+    if ((hook != NULL) && (options != NULL) && (options->fork_min_sites != 0u)) {
         fork_min = (options->fork_min_sites > FORK_MIN_SITES_LEAST) ? options->fork_min_sites
                                                                     : FORK_MIN_SITES_LEAST;
     }
-    if (hook == NULL || n < fork_min || faults) {
+    if ((hook == NULL) || (n < fork_min) || faults) {
         build_all(&b, ids, n, split);
     } else {
         build_forked(&b, ids, n, split, hook);
@@ -1381,7 +1446,7 @@ int vor_build_dc_forked(vor_t *d, const vor_point_t *points, uint32_t n,
                         const vor_build_options_t *options, uint32_t *duplicate_of,
                         const vor_fork_join_t *hook)
 {
-    if (hook != NULL && (hook->fork == NULL || hook->join == NULL)) {
+    if ((hook != NULL) && ((hook->fork == NULL) || (hook->join == NULL))) {
         return VOR_ERR_ARG;
     }
     return build_dc(d, points, n, options, duplicate_of, hook);

@@ -39,7 +39,7 @@
 
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 {
-    return slot == v && v < d->max_sites;
+    return (slot == v) && (v < d->max_sites);
 }
 
 /* In triangle `slot`, points the link that pointed at `from` at `to`. */
@@ -100,7 +100,8 @@ static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t st
                     vor_index_t stop)
 {
     const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = start, v[3];
+    vor_index_t slot = start;
+    vor_index_t v[3];
     vor__vertices(&tri[slot], v);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
         /* clockwise: from a star triangle (p, a, b) across a-b first,
@@ -111,7 +112,7 @@ static bool is_edge(const vor_t *d, vor_index_t a, vor_index_t b, vor_index_t st
             break;
         }
         vor__vertices(&tri[slot], v);
-        if (v[0] == b || v[1] == b || v[2] == b) {
+        if ((v[0] == b) || (v[1] == b) || (v[2] == b)) {
             return true;
         }
     }
@@ -151,14 +152,16 @@ static bool guard_blocks(const vor_t *d, vor_index_t a, vor_index_t c, vor_index
 static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t b,
                             vor_index_t c, vor_index_t after)
 {
-    if (a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE &&
+    if (a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE) &&
         vor__orient(d, a, b, c) <= 0) {
         return false;
     }
     /* the other neighbours: second vertices of the star triangles after
      * the ear's up to the one ending at a (degree - 3 of them) */
     const vor__tri_t *tri = d->triangles;
-    vor_index_t slot = after, x, y;
+    vor_index_t slot = after;
+    vor_index_t x;
+    vor_index_t y;
     for (uint32_t left = d->vertex_count; left > 0u; left--) {
         star_edge(tri, slot, p, &x, &y);
         if (y == a) {
@@ -179,23 +182,30 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
 static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t s2)
 {
     vor__tri_t *tri = d->triangles;
-    const vor__tri_t *t1 = &tri[s1], *t2 = &tri[s2];
-    vor_index_t v1[3], v2[3];
+    const vor__tri_t *t1 = &tri[s1];
+    const vor__tri_t *t2 = &tri[s2];
+    vor_index_t v1[3];
+    vor_index_t v2[3];
     vor__vertices(t1, v1);
     vor__vertices(t2, v2);
     unsigned i1 = (v1[1] == p) ? 1u : (v1[2] == p) ? 2u : 0u;
     unsigned i2 = (v2[1] == p) ? 1u : (v2[2] == p) ? 2u : 0u;
-    vor_index_t a = v1[vor__next(i1)], b = v1[vor__prev(i1)], c = v2[vor__prev(i2)];
-    vor_index_t outer1 = t1->n[i1], before = t1->n[vor__prev(i1)];
-    vor_index_t outer2 = t2->n[i2], after = t2->n[vor__next(i2)];
+    vor_index_t a = v1[vor__next(i1)];
+    vor_index_t b = v1[vor__prev(i1)];
+    vor_index_t c = v2[vor__prev(i2)];
+    vor_index_t outer1 = t1->n[i1];
+    vor_index_t before = t1->n[vor__prev(i1)];
+    vor_index_t outer2 = t2->n[i2];
+    vor_index_t after = t2->n[vor__next(i2)];
     /* keep home slots home: the ear holds a, b, c, the star triangle p, a,
      * c; p's slot must take the star triangle and b's the ear (never both
      * asked of one slot). Otherwise a packed slot goes to the star, so
      * that home slots settle in ears and fewer reach the final merge,
      * which keeps only one of the last three slots. */
-    vor_index_t ear = s1, star = s2;
+    vor_index_t ear = s1;
+    vor_index_t star = s2;
     if (!is_home(d, s2, p) && !is_home(d, s1, b) &&
-        (is_home(d, s1, p) || is_home(d, s2, b) || s2 < d->max_sites)) {
+        (is_home(d, s1, p) || is_home(d, s2, b) || (s2 < d->max_sites))) {
         ear = s2;
         star = s1;
     }
@@ -218,8 +228,11 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
 static void rotate_to(vor__tri_t *tri, vor_index_t slot, vor_index_t v)
 {
     vor__tri_t *t = &tri[slot];
-    unsigned i = corner(t, v), j = vor__next(i), k = vor__prev(i);
-    vor_index_t w[3], n[3] = {t->n[0], t->n[1], t->n[2]};
+    unsigned i = corner(t, v);
+    unsigned j = vor__next(i);
+    unsigned k = vor__prev(i);
+    vor_index_t w[3];
+    vor_index_t n[3] = {t->n[0], t->n[1], t->n[2]};
     vor__vertices(t, w);
     vor__tri_set(t, w[i], w[j], w[k], n[i], n[j], n[k]);
 }
@@ -235,12 +248,12 @@ static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first
     bool skipping = after != VOR__NONE;
     vor_index_t slot = first;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (!skipping && slot < d->max_sites && slot != cur &&
+        if (!skipping && (slot < d->max_sites) && (slot != cur) &&
             vor__marked(&tri[slot]) == want_marked &&
             (!want_marked || vor__vertex(&tri[slot], 0) == cur)) {
             return slot;
         }
-        skipping = skipping && slot != after;
+        skipping = skipping && (slot != after);
         slot = star_next(tri, slot, cur);
         if (slot == first) {
             break;
@@ -277,11 +290,14 @@ static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first
 void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t cur = h, after = VOR__NONE, packed = VOR__NONE;
+    vor_index_t cur = h;
+    vor_index_t after = VOR__NONE;
+    vor_index_t packed = VOR__NONE;
     /* each step marks a site or goes back up the tree: 2 v steps */
-    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u && packed == VOR__NONE; left--) {
-        vor_index_t first = (cur == h) ? start : cur, slot = first;
-        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && turn > 0u; turn--) {
+    for (uint32_t left = (2u * d->vertex_count) + 2u; (left > 0u) && (packed == VOR__NONE); left--) {
+        vor_index_t first = (cur == h) ? start : cur;
+        vor_index_t slot = first;
+        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && (turn > 0u); turn--) {
             if (slot >= d->max_sites) {
                 packed = slot; /* cur's triangle in a packed slot: the path ends */
                 break;
@@ -308,8 +324,9 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
         }
     }
     /* clear the marks: the same tree, each site unmarked on the way back */
-    vor_index_t at = h, back = VOR__NONE;
-    for (uint32_t left = 2u * d->vertex_count + 2u; left > 0u; left--) {
+    vor_index_t at = h;
+    vor_index_t back = VOR__NONE;
+    for (uint32_t left = (2u * d->vertex_count) + 2u; left > 0u; left--) {
         vor_index_t child = next_child(d, at, (at == h) ? start : at, back, true);
         if (child != VOR__NONE) {
             at = child;
@@ -329,7 +346,7 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
     /* shift along the path from its end, slot h (empty) as the spare:
      * slot r takes what P holds, P takes r's triangle (its first vertex
      * is r's parent); at most one step per site */
-    for (uint32_t left = d->vertex_count; cur != h && left > 0u; left--) {
+    for (uint32_t left = d->vertex_count; (cur != h) && (left > 0u); left--) {
         vor_index_t parent = vor__vertex(&tri[cur], 0);
         move_triangle(tri, cur, h);
         move_triangle(tri, packed, cur);
@@ -366,13 +383,14 @@ static void free_id(vor_t *d, uint32_t p)
 /* The star of p as arrays: neighbour nb[i] and the slot sl[i] of the star
  * triangle (p, nb[i], nb[i + 1]), counterclockwise, indices mod deg. */
 typedef struct {
-    vor_index_t nb[STAR_MAX], sl[STAR_MAX];
+    vor_index_t nb[STAR_MAX];
+    vor_index_t sl[STAR_MAX];
     uint32_t deg;
 } star_t;
 
 static inline uint32_t wrap(uint32_t i, uint32_t deg)
 {
-    return (i >= deg) ? i - deg : i; /* i < 2 deg */
+    return (i >= deg) ? (i - deg) : i; /* i < 2 deg */
 }
 
 /* Is the ear (nb[i], nb[i + 1], nb[i + 2]) a triangle of the triangulation
@@ -384,8 +402,10 @@ static inline uint32_t wrap(uint32_t i, uint32_t deg)
 static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
 {
     uint32_t deg = st->deg;
-    vor_index_t a = st->nb[i], b = st->nb[wrap(i + 1u, deg)], c = st->nb[wrap(i + 2u, deg)];
-    bool finite = a != VOR__INFINITE && b != VOR__INFINITE && c != VOR__INFINITE;
+    vor_index_t a = st->nb[i];
+    vor_index_t b = st->nb[wrap(i + 1u, deg)];
+    vor_index_t c = st->nb[wrap(i + 2u, deg)];
+    bool finite = a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE);
     if (finite && vor__orient(d, a, b, c) <= 0) {
         return false;
     }
@@ -396,12 +416,12 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
     /* the other deg - 3 neighbours at offsets 3, deg - 1, 4, deg - 2, ..
      * from the ear's first; one call site each for the two tests keeps
      * the stack frame small */
-    for (uint32_t t = 0; t + 3u < deg; t++) {
-        vor_index_t y = st->nb[wrap(i + ((t & 1u) ? deg - 1u - t / 2u : 3u + t / 2u), deg)];
+    for (uint32_t t = 0; (t + 3u) < deg; t++) {
+        vor_index_t y = st->nb[wrap(i + ((t & 1u) ? (deg - 1u - (t / 2u)) : (3u + (t / 2u))), deg)];
         if (y == VOR__INFINITE) {
             continue; /* infinity lies in no circle of finite sites */
         }
-        if (finite ? vor__incircle(d, a, b, c, y) > 0 : vor__orient(d, u, w, y) > 0) {
+        if (finite ? (vor__incircle(d, a, b, c, y) > 0) : vor__orient(d, u, w, y) > 0) {
             return false;
         }
     }
@@ -442,7 +462,8 @@ static bool star_load(const vor_t *d, vor_index_t p, vor_index_t start, star_t *
         }
         VOR__PREFETCH(&tri[t->n[i]]);
         st->nb[st->deg] = x;
-        st->sl[st->deg++] = slot;
+        st->sl[st->deg] = slot;
+        st->deg++;
         slot = t->n[vor__next(i)]; /* star_next */
     } while (slot != start);
     return true;
@@ -455,13 +476,13 @@ static uint32_t star_cut(vor_t *d, vor_index_t p, star_t *st, uint32_t i)
 {
     uint32_t j = wrap(i + 1u, st->deg);
     st->sl[i] = cut_ear(d, p, st->sl[i], st->sl[j]);
-    for (uint32_t k = j; k + 1u < st->deg; k++) {
+    for (uint32_t k = j; (k + 1u) < st->deg; k++) {
         st->nb[k] = st->nb[k + 1u];
         st->sl[k] = st->sl[k + 1u];
     }
     st->deg--;
-    uint32_t at = (j == 0u) ? i - 1u : i; /* the new star triangle */
-    return (at == 0u) ? st->deg - 1u : at - 1u;
+    uint32_t at = (j == 0u) ? (i - 1u) : i; /* the new star triangle */
+    return (at == 0u) ? (st->deg - 1u) : (at - 1u);
 }
 
 /* The ear of a star of four or more to cut: the first Delaunay ear from
@@ -475,7 +496,7 @@ static uint32_t star_choose(vor_t *d, const star_t *st, uint32_t from)
     uint32_t deg = st->deg;
     if (deg == 4u) {
         uint32_t i = star_ear_ok(d, st, 0) ? 0u : 1u;
-        return star_guarded(d, st, i) ? i : 1u - i;
+        return star_guarded(d, st, i) ? i : (1u - i);
     }
     for (uint32_t k = 0; k < deg; k++) {
         uint32_t i = wrap(from + k, deg);
@@ -509,12 +530,16 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         do {
             degree++;
             slot = star_next(tri, slot, p);
-        } while (slot != p && degree <= d->vertex_count);
+        } while ((slot != p) && (degree <= d->vertex_count));
         while (degree > STAR_MAX) {
-            vor_index_t chosen = VOR__NONE, guarded = VOR__NONE;
+            vor_index_t chosen = VOR__NONE;
+            vor_index_t guarded = VOR__NONE;
             slot = s1;
-            for (uint32_t k = 0; k < degree && chosen == VOR__NONE; k++) {
-                vor_index_t s2 = star_next(tri, slot, p), a, b, c;
+            for (uint32_t k = 0; (k < degree) && (chosen == VOR__NONE); k++) {
+                vor_index_t s2 = star_next(tri, slot, p);
+                vor_index_t a;
+                vor_index_t b;
+                vor_index_t c;
                 star_edge(tri, slot, p, &a, &b);
                 star_edge(tri, s2, p, &b, &c);
                 if (!guard_blocks(d, a, c, slot, slot, s2, s2)) {
@@ -533,9 +558,9 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
             s1 = cut_ear(d, p, chosen, star_next(tri, chosen, p));
             degree--;
         }
-        star_load(d, p, s1, &st);
+        (void)star_load(d, p, s1, &st);
     }
-    for (unsigned k = 0; VOR__PREFETCHING && k < 3u; k++) {
+    for (unsigned k = 0; VOR__PREFETCHING && (k < 3u); k++) {
         VOR__PREFETCH(&tri[tail->n[k]]);
     }
     /* each cut removes one neighbour: deg - 3 cuts */
@@ -550,15 +575,20 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
 
     VOR_ASSERT(st.deg == 3u); /* every vertex has at least three neighbours */
     /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
-    vor_index_t a = st.nb[0], b = st.nb[1], c = st.nb[2];
-    vor_index_t s2 = st.sl[1], s3 = st.sl[2];
+    vor_index_t a = st.nb[0];
+    vor_index_t b = st.nb[1];
+    vor_index_t c = st.nb[2];
+    vor_index_t s2 = st.sl[1];
+    vor_index_t s3 = st.sl[2];
     s1 = st.sl[0];
     vor_index_t o1 = tri[s1].n[corner(&tri[s1], p)];
     vor_index_t o2 = tri[s2].n[corner(&tri[s2], p)];
     vor_index_t o3 = tri[s3].n[corner(&tri[s3], p)];
     /* the two slots besides p's home (p's home is one of the three) */
-    vor_index_t x1 = (s1 == p) ? s2 : s1, x2 = (s3 == p) ? s2 : s3;
-    vor_index_t keep = x2, freed = x1;
+    vor_index_t x1 = (s1 == p) ? s2 : s1;
+    vor_index_t x2 = (s3 == p) ? s2 : s3;
+    vor_index_t keep = x2;
+    vor_index_t freed = x1;
     if (x2 >= d->max_sites) {
         keep = x1;
         freed = x2;
@@ -576,13 +606,15 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         vor__rehome(d, freed, keep, last);
     } else if (freed != last) {
         move_triangle(tri, last, freed);
+    } else {
+        /* no other case */
     }
     return (a != VOR__INFINITE) ? a : b;
 }
 
 int vor_remove(vor_t *d, uint32_t site)
 {
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     vor__tri_t *tri = d->triangles;
@@ -595,8 +627,9 @@ int vor_remove(vor_t *d, uint32_t site)
         vor_index_t v[3];
         vor__vertices(&tri[p], v);
         unsigned i = corner(&tri[p], p);
-        vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
-        if (a == VOR__INFINITE || b == VOR__INFINITE) {
+        vor_index_t a = v[vor__next(i)];
+        vor_index_t b = v[vor__prev(i)];
+        if (a == VOR__INFINITE || (b == VOR__INFINITE)) {
             /* p's home holds a triangle at infinity; its finite triangle
              * is across the hull edge and holds both others */
             const vor__tri_t *f = &tri[tri[p].n[corner(&tri[p], VOR__INFINITE)]];
@@ -611,7 +644,7 @@ int vor_remove(vor_t *d, uint32_t site)
         const vor__tri_t *t = &tri[p];
         for (unsigned i = 0; i < 3u; i++) { /* the other finite vertex */
             vor_index_t v = vor__vertex(t, i);
-            other = (v != p && v != VOR__INFINITE) ? v : other;
+            other = ((v != p) && (v != VOR__INFINITE)) ? v : other;
         }
         vor__tri_fresh(&tri[other]);
         tri[other].n[0] = VOR__NONE; /* one site has no triangles */
@@ -649,10 +682,10 @@ static bool star_still_delaunay(vor_t *d, vor_index_t p, vor_index_t *twin)
     vor__star_begin(d, p, &s);
     *twin = VOR__NONE;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (s.x != VOR__INFINITE && d->sites[s.x].x == at->x && d->sites[s.x].y == at->y) {
+        if (s.x != VOR__INFINITE && (d->sites[s.x].x == at->x) && (d->sites[s.x].y == at->y)) {
             *twin = s.x;
         }
-        if (s.x != VOR__INFINITE && s.y != VOR__INFINITE && vor__orient(d, p, s.x, s.y) <= 0) {
+        if (s.x != VOR__INFINITE && (s.y != VOR__INFINITE) && vor__orient(d, p, s.x, s.y) <= 0) {
             return false;
         }
         if (s.far != VOR__INFINITE && vor__conflicts(d, s.v[0], s.v[1], s.v[2], s.far)) {
@@ -671,10 +704,11 @@ static bool star_still_delaunay(vor_t *d, vor_index_t p, vor_index_t *twin)
 /* A site sharing a triangle with p (p in a mesh of two or more). */
 static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
 {
-    vor_index_t v[3], found = p;
+    vor_index_t v[3];
+    vor_index_t found = p;
     vor__vertices(&d->triangles[p], v);
     for (unsigned i = 0; i < 3u; i++) {
-        found = (v[i] != p && v[i] != VOR__INFINITE) ? v[i] : found;
+        found = ((v[i] != p) && (v[i] != VOR__INFINITE)) ? v[i] : found;
     }
     return found;
 }
@@ -687,7 +721,8 @@ static uint32_t any_neighbour(const vor_t *d, vor_index_t p)
  * off the common path). */
 static void move_in_place(vor_t *d, uint32_t site, int32_t x, int32_t y)
 {
-    vor_point_t *s = &d->sites[site], old = *s;
+    vor_point_t *s = &d->sites[site];
+    vor_point_t old = *s;
     s->x = x;
     s->y = y;
     vor__box_add(d, s, false);
@@ -713,7 +748,7 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     uint32_t twin = VOR__NONE;
     if (d->vertex_count == 2u) { /* the other site is the only neighbour */
         uint32_t other = any_neighbour(d, (vor_index_t)site);
-        twin = (d->sites[other].x == x && d->sites[other].y == y) ? other : VOR__NONE;
+        twin = ((d->sites[other].x == x) && (d->sites[other].y == y)) ? other : VOR__NONE;
     }
     /* the common small step first: the same triangles at the new place.
      * In test builds the tests count, restored if the move fails. */
@@ -722,17 +757,17 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     s->x = x;
     s->y = y;
     vor_index_t star_twin = VOR__NONE;
-    bool same_triangles = d->vertex_count <= 2u || star_still_delaunay(d, (vor_index_t)site,
+    bool same_triangles = (d->vertex_count <= 2u) || star_still_delaunay(d, (vor_index_t)site,
                                                                        &star_twin);
     twin = (star_twin != VOR__NONE) ? star_twin : twin;
     *s = old;
-    if (!same_triangles && d->vertex_count >= 3u) {
+    if (!same_triangles && (d->vertex_count >= 3u)) {
         /* a site at (x, y) is the nearest site to it (a read-only query
          * from the bucket grid) */
         uint32_t nearest;
         vor_point_t q = {x, y};
-        if (vor_nearest(d, q, VOR_NO_HINT, &nearest) == VOR_OK && d->sites[nearest].x == x &&
-            d->sites[nearest].y == y) {
+        if ((vor_nearest(d, q, VOR_NO_HINT, &nearest) == VOR_OK) && (d->sites[nearest].x == x) &&
+            (d->sites[nearest].y == y)) {
             twin = nearest;
         }
     }
@@ -750,14 +785,14 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     }
     /* remove, then insert again under the same id (the free list's head),
      * from the bucket grid's site near the new place */
-    vor_remove(d, site);
+    (void)vor_remove(d, site);
     uint32_t id;
     vor_point_t to = {x, y};
     int err = vor_insert_near(d, to, VOR_NO_HINT, &id);
     if (err != VOR_OK) {
         /* only lying predicates (fault injection) find a twin the exact
          * query did not: the site goes back where it was */
-        vor_insert_near(d, old, VOR_NO_HINT, &id);
+        (void)vor_insert_near(d, old, VOR_NO_HINT, &id);
     } else {
         vor__motion_update(d, site, &old, epoch); /* a box in the new epoch */
     }
@@ -766,12 +801,13 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
 
 int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
 {
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
-    int32_t x = p.x, y = p.y;
+    int32_t x = p.x;
+    int32_t y = p.y;
     const vor_point_t *s = &d->sites[site];
-    if (s->x == x && s->y == y) {
+    if ((s->x == x) && (s->y == y)) {
         return VOR_OK;
     }
     if (vor__motion_fast(d, site, x, y)) {

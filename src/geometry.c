@@ -43,9 +43,11 @@
 /* A line a x + b y = c in a site's doubled frame, with an integer point
  * (px, py) on it for the test of a parallel line. */
 typedef struct geo_line {
-    int64_t a, b;
+    int64_t a;
+    int64_t b;
     vor__limb c[GEO_LIMBS];
-    int64_t px, py;
+    int64_t px;
+    int64_t py;
 } geo_line_t;
 
 /* A point (x / w, y / w), w > 0, in the same frame. */
@@ -80,8 +82,10 @@ static void mul_i64_i64(vor__limb *r, int64_t a, int64_t b)
  * s as to n: 2 e.p <= |e|^2 for p relative to s, e.p' <= |e|^2 doubled. */
 static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
 {
-    int64_t ex = (int64_t)n->x - s->x, ey = (int64_t)n->y - s->y;
-    uint32_t mx = vor__mw_magnitude(ex), my = vor__mw_magnitude(ey);
+    int64_t ex = (int64_t)n->x - s->x;
+    int64_t ey = (int64_t)n->y - s->y;
+    uint32_t mx = vor__mw_magnitude(ex);
+    uint32_t my = vor__mw_magnitude(ey);
     vor__limb t[GEO_LIMBS];
     l->a = ex;
     l->b = ey;
@@ -171,7 +175,8 @@ static bool intersect(geo_point_t *p, const geo_line_t *l1, const geo_line_t *l2
  * 0 on the line, -1 strictly inside. */
 static int side_of(const geo_line_t *l, const geo_point_t *p)
 {
-    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    vor__limb sum[GEO_LIMBS];
+    vor__limb t[GEO_LIMBS];
     mul_i64(sum, p->x, l->a);
     mul_i64(t, p->y, l->b);
     vor__mw_add(sum, t, GEO_LIMBS);
@@ -183,7 +188,8 @@ static int side_of(const geo_line_t *l, const geo_point_t *p)
 /* side_of for the integer point of line `on` (|px|, |py| < 2^34). */
 static int side_of_line(const geo_line_t *l, const geo_line_t *on)
 {
-    vor__limb sum[GEO_LIMBS], t[GEO_LIMBS];
+    vor__limb sum[GEO_LIMBS];
+    vor__limb t[GEO_LIMBS];
     mul_i64_i64(sum, on->px, l->a);
     mul_i64_i64(t, on->py, l->b);
     vor__mw_add(sum, t, GEO_LIMBS);
@@ -230,10 +236,11 @@ static bool divide(vor__limb *rest, vor__limb *step, size_t n, unsigned bits,
 static int64_t floor_quotient(vor__limb *rest, vor__limb *step, size_t n, unsigned bits)
 {
     uint64_t quotient;
-    bool negative, exact;
+    bool negative;
+    bool exact;
     if (!divide(rest, step, n, bits, &quotient, &negative, &exact)) {
         int64_t saturated = (int64_t)vor__shl_u64(1u, bits);
-        return negative ? -saturated - 1 : saturated;
+        return negative ? (-saturated - 1) : saturated;
     }
     /* floor of a negative quotient: -ceil(|n| / d) */
     return negative ? -(int64_t)quotient - (exact ? 0 : 1) : (int64_t)quotient;
@@ -263,7 +270,8 @@ static bool add_saturated(int32_t origin, int64_t q, int32_t *out)
 static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t origin,
                              int32_t *out)
 {
-    vor__limb rest[GEO_LIMBS], step[GEO_LIMBS];
+    vor__limb rest[GEO_LIMBS];
+    vor__limb step[GEO_LIMBS];
     /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
     for (size_t i = 0; i < GEO_LIMBS; i++) {
         rest[i] = v[i];
@@ -289,7 +297,8 @@ static void round_point(const geo_point_t *p, const vor_point_t *origin, vor_ver
 static void circumcentre(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
                          vor_vertex_t *out)
 {
-    geo_line_t lb, lc;
+    geo_line_t lb;
+    geo_line_t lc;
     geo_point_t p;
     bisector(&lb, a, b);
     bisector(&lc, a, c);
@@ -316,7 +325,7 @@ int vor_circumcentre(vor_point_t a, vor_point_t b, vor_point_t c, vor_vertex_t *
 int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_vertex_t *out)
 {
     /* a removed site's or a duplicate's coordinates are no site's */
-    if (d == NULL || out == NULL || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b) ||
+    if ((d == NULL) || (out == NULL) || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b) ||
         !vor__site_in_mesh(d, c)) {
         return VOR_ERR_ARG;
     }
@@ -354,6 +363,8 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
             *has_start = true;
         } else if (vor__strictly_between(&s[p], &s[r], &s[q])) {
             return false;
+        } else {
+            /* no other case */
         }
     }
     if (l != VOR__INFINITE) {
@@ -363,6 +374,8 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
             *has_end = true;
         } else if (vor__strictly_between(&s[p], &s[l], &s[q])) {
             return false;
+        } else {
+            /* no other case */
         }
     }
     if (*has_start && *has_end && vor__incircle_sign(&s[p], &s[q], &s[l], &s[r]) == 0) {
@@ -377,7 +390,7 @@ static uint32_t third_vertex(const vor__tri_t *t, uint32_t p, uint32_t q)
     vor_index_t v[3];
     vor__vertices(t, v);
     for (unsigned i = 0; i < 2u; i++) {
-        if (v[i] != p && v[i] != q) {
+        if ((v[i] != p) && (v[i] != q)) {
             return v[i];
         }
     }
@@ -448,7 +461,7 @@ int vor_edges_begin(vor_edge_iter_t *it, const vor_t *d)
 int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
 {
     /* a zeroed iterator, or one begun on no diagram, is at its end */
-    if (it == NULL || it->d == NULL || edge == NULL) {
+    if ((it == NULL) || (it->d == NULL) || (edge == NULL)) {
         return 0;
     }
     const vor_t *d = it->d;
@@ -464,18 +477,22 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
         vor__vertices(t, v);
         unsigned first = (slot == it->slot) ? it->edge : 0u;
         for (unsigned i = first; i < 3u; i++) {
-            uint32_t p = v[vor__next(i)], q = v[vor__prev(i)], l = v[i];
-            if (p == VOR__INFINITE || q == VOR__INFINITE) {
+            uint32_t p = v[vor__next(i)];
+            uint32_t q = v[vor__prev(i)];
+            uint32_t l = v[i];
+            if (p == VOR__INFINITE || (q == VOR__INFINITE)) {
                 continue;
             }
             uint32_t other = t->n[i];
             uint32_t r = third_vertex(&d->triangles[other], p, q);
             /* each edge once: from its finite side, or the smaller slot */
-            bool ghost_here = l == VOR__INFINITE, ghost_there = r == VOR__INFINITE;
-            if (ghost_here != ghost_there ? ghost_here : other < slot) {
+            bool ghost_here = l == VOR__INFINITE;
+            bool ghost_there = r == VOR__INFINITE;
+            if ((ghost_here != ghost_there) ? ghost_here : (other < slot)) {
                 continue;
             }
-            bool has_start, has_end;
+            bool has_start;
+            bool has_end;
             if (!true_edge(d->sites, p, q, r, l, &has_start, &has_end)) {
                 continue;
             }
@@ -529,11 +546,13 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     it->left = 0;
     it->ghost = VOR__NONE;
     it->collinear = 0;
-    it->site = it->first = 0;
+    it->site = 0;
+    it->first = 0;
     if (d == NULL) {
         return VOR_ERR_ARG; /* left = 0: closed */
     }
-    it->site = it->first = d->last_site;
+    it->first = d->last_site;
+    it->site = it->first;
     if (d->vertex_count < 2u) {
         it->left = d->vertex_count; /* one site: itself */
         return VOR_OK;
@@ -560,11 +579,14 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
     }
     /* all sites are collinear exactly when the hull's corners are: one
      * turn around the hull (at most vertex_count edges) */
-    uint32_t w, u, next, g = it->ghost;
+    uint32_t w;
+    uint32_t u;
+    uint32_t next;
+    uint32_t g = it->ghost;
     ghost_edge(d, g, &w, &u, &next);
     uint32_t second = u;
     it->collinear = 1;
-    for (uint32_t step = 0; step < d->vertex_count && it->collinear; step++) {
+    for (uint32_t step = 0; (step < d->vertex_count) && it->collinear; step++) {
         ghost_edge(d, next, &w, &u, &next);
         if (vor__orient2d_sign(&s[low], &s[second], &s[u]) != 0) {
             it->collinear = 0;
@@ -573,16 +595,17 @@ int vor_hull_begin(vor_hull_iter_t *it, const vor_t *d)
             break;
         }
     }
-    it->site = it->first = low;
+    it->first = low;
+    it->site = it->first;
     /* collinear: every site once, up the line; else back to the start */
-    it->left = it->collinear ? d->vertex_count : d->vertex_count + 1u;
+    it->left = it->collinear ? d->vertex_count : (d->vertex_count + 1u);
     return VOR_OK;
 }
 
 int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
 {
     /* a zeroed iterator, or one begun on no diagram, is at its end */
-    if (it == NULL || it->d == NULL || site == NULL) {
+    if ((it == NULL) || (it->d == NULL) || (site == NULL)) {
         return 0;
     }
     const vor_t *d = it->d;
@@ -599,12 +622,16 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
      * on the segment (a Delaunay neighbour: consecutive sites on a hull
      * edge have a Voronoi ray in common), else u and the next hull edge */
     const vor_point_t *s = d->sites;
-    uint32_t w, u, next, n, best = VOR__NONE;
+    uint32_t w;
+    uint32_t u;
+    uint32_t next;
+    uint32_t n;
+    uint32_t best = VOR__NONE;
     ghost_edge(d, it->ghost, &w, &u, &next);
     vor_neighbour_iter_t ni;
     (void)vor_neighbours_begin(&ni, d, it->site); /* a hull site: in the mesh */
-    while (vor_neighbours_next(&ni, &n)) {
-        if (n != u && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
+    while (vor_neighbours_next(&ni, &n) != 0) {
+        if ((n != u) && vor__orient2d_sign(&s[it->site], &s[u], &s[n]) == 0 &&
             vor__strictly_between(&s[it->site], &s[n], &s[u]) &&
             (best == VOR__NONE || vor__strictly_between(&s[it->site], &s[n], &s[best]))) {
             best = n;
@@ -616,7 +643,7 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
         it->site = u;
         it->ghost = next;
     }
-    if (!it->collinear && it->site == it->first) {
+    if (!it->collinear && (it->site == it->first)) {
         it->left = 0;
     }
     return 1;
@@ -636,7 +663,9 @@ typedef struct cell {
     const vor_box_t *box;
     uint32_t start_slot; /* the fan triangle where the edges' angles begin */
     uint32_t degree;     /* Delaunay neighbours */
-    uint32_t side_lo[4], side_hi[4]; /* each box side's part in the cell */
+    /* each box side's part in the cell */
+    uint32_t side_lo[4];
+    uint32_t side_hi[4];
     bool side_empty[4];
 } cell_t;
 
@@ -654,13 +683,13 @@ static void make_line(const cell_t *c, uint32_t name, geo_line_t *l)
  * normal. */
 static unsigned quadrant(int64_t x, int64_t y)
 {
-    if (x >= 0 && y < 0) {
+    if ((x >= 0) && (y < 0)) {
         return 0;
     }
-    if (x > 0 && y >= 0) {
+    if ((x > 0) && (y >= 0)) {
         return 1;
     }
-    if (x <= 0 && y > 0) {
+    if ((x <= 0) && (y > 0)) {
         return 2;
     }
     return 3;
@@ -676,7 +705,8 @@ static unsigned quadrant_of(const cell_t *c, uint32_t n)
  * from (0, -1) counterclockwise? */
 static bool angle_before(const cell_t *c, uint32_t a, uint32_t b)
 {
-    unsigned qa = quadrant_of(c, a), qb = quadrant_of(c, b);
+    unsigned qa = quadrant_of(c, a);
+    unsigned qb = quadrant_of(c, b);
     if (qa != qb) {
         return qa < qb;
     }
@@ -705,8 +735,13 @@ static void fan_triangle(const cell_t *c, uint32_t slot, uint32_t *x, uint32_t *
 VOR__NOINLINE static void find_start(cell_t *c)
 {
     const vor_t *d = c->d;
-    uint32_t slot = c->site, x, y, next;
-    uint32_t first = VOR__NONE, first_slot = slot, previous = VOR__NONE;
+    uint32_t slot = c->site;
+    uint32_t x;
+    uint32_t y;
+    uint32_t next;
+    uint32_t first = VOR__NONE;
+    uint32_t first_slot = slot;
+    uint32_t previous = VOR__NONE;
     c->start_slot = slot;
     c->degree = 0;
     bool found = false;
@@ -720,6 +755,8 @@ VOR__NOINLINE static void find_start(cell_t *c)
             } else if (!found && angle_before(c, y, previous)) {
                 c->start_slot = slot;
                 found = true;
+            } else {
+                /* no other case */
             }
             previous = y;
         }
@@ -741,18 +778,23 @@ VOR__NOINLINE static void find_start(cell_t *c)
 VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
 {
     const vor_t *d = c->d;
-    geo_line_t side, line;
-    geo_point_t lo, hi;
+    geo_line_t side;
+    geo_line_t line;
+    geo_point_t lo;
+    geo_point_t hi;
     box_side(&side, c->box, c->s, k);
     c->side_lo[k] = BOX_LINE + ((k + 3u) & 3u);
     c->side_hi[k] = BOX_LINE + ((k + 1u) & 3u);
     c->side_empty[k] = false;
     make_line(c, c->side_lo[k], &line);
-    intersect(&lo, &side, &line);
+    (void)intersect(&lo, &side, &line);
     make_line(c, c->side_hi[k], &line);
-    intersect(&hi, &side, &line);
+    (void)intersect(&hi, &side, &line);
     if (d->vertex_count >= 2u) {
-        uint32_t slot = c->site, x, y, next;
+        uint32_t slot = c->site;
+        uint32_t x;
+        uint32_t y;
+        uint32_t next;
         for (uint32_t step = 0; step <= d->vertex_count; step++) {
             fan_triangle(c, slot, &x, &y, &next);
             if (y != VOR__INFINITE) {
@@ -766,11 +808,13 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
                 } else if (g > 0) {
                     if (side_of(&line, &hi) > 0) {
                         c->side_hi[k] = y;
-                        intersect(&hi, &side, &line);
+                        (void)intersect(&hi, &side, &line);
                     }
                 } else if (side_of(&line, &lo) > 0) {
                     c->side_lo[k] = y;
-                    intersect(&lo, &side, &line);
+                    (void)intersect(&lo, &side, &line);
+                } else {
+                    /* no other case */
                 }
             }
             slot = next;
@@ -797,7 +841,9 @@ typedef struct emitter {
     vor_point_t held[2];
     geo_point_t pool[3];
     uint32_t names[3][2]; /* the two lines through each pooled point */
-    int first, last;      /* pool indices, -1 while empty */
+    /* pool indices, -1 while empty */
+    int first;
+    int last;
 } emitter_t;
 
 static bool same_point(const emitter_t *e, int a, const geo_point_t *p)
@@ -845,7 +891,7 @@ static void confirm(emitter_t *e, int index)
 static int scratch(const emitter_t *e)
 {
     int i = 0;
-    while (i == e->first || i == e->last) {
+    while ((i == e->first) || (i == e->last)) {
         i++;
     }
     return i;
@@ -857,11 +903,12 @@ static void emit(emitter_t *e, uint32_t a, uint32_t b)
     int i = scratch(e);
     e->names[i][0] = a;
     e->names[i][1] = b;
-    if (e->last >= 0 && same_point(e, e->last, &e->pool[i])) {
+    if ((e->last >= 0) && same_point(e, e->last, &e->pool[i])) {
         return;
     }
     if (e->first < 0) {
-        e->first = e->last = i;
+        e->last = i;
+        e->first = e->last;
         return;
     }
     confirm(e, e->last);
@@ -874,10 +921,11 @@ VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
     if (c->side_empty[k]) {
         return;
     }
-    geo_line_t side, line;
+    geo_line_t side;
+    geo_line_t line;
     box_side(&side, c->box, c->s, k);
     make_line(c, c->side_lo[k], &line);
-    intersect(&e->pool[scratch(e)], &side, &line);
+    (void)intersect(&e->pool[scratch(e)], &side, &line);
     emit(e, BOX_LINE + k, c->side_lo[k]);
 }
 
@@ -887,10 +935,12 @@ VOR__NOINLINE static void emit_side(emitter_t *e, unsigned k)
 VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32_t l)
 {
     const cell_t *c = e->c;
-    geo_line_t edge, line;
+    geo_line_t edge;
+    geo_line_t line;
     geo_point_t hi;
     geo_point_t *lo = &e->pool[scratch(e)];
-    uint32_t lo_name = NO_LINE, hi_name = NO_LINE;
+    uint32_t lo_name = NO_LINE;
+    uint32_t hi_name = NO_LINE;
     uint32_t bounds[6] = {r, l, BOX_LINE, BOX_LINE + 1u, BOX_LINE + 2u, BOX_LINE + 3u};
     bisector(&edge, c->s, &c->d->sites[n]);
     for (unsigned k = 0; k < 6u; k++) {
@@ -904,18 +954,20 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
                 return;
             }
         } else if (g > 0) {
-            if (hi_name == NO_LINE || side_of(&line, &hi) > 0) {
+            if ((hi_name == NO_LINE) || side_of(&line, &hi) > 0) {
                 hi_name = bounds[k];
-                intersect(&hi, &edge, &line);
+                (void)intersect(&hi, &edge, &line);
             }
-        } else if (lo_name == NO_LINE || side_of(&line, lo) > 0) {
+        } else if ((lo_name == NO_LINE) || side_of(&line, lo) > 0) {
             lo_name = bounds[k];
-            intersect(lo, &edge, &line);
+            (void)intersect(lo, &edge, &line);
+        } else {
+            /* no other case */
         }
     }
     /* two opposite box sides are never both parallel to a line */
     VOR_ASSERT(lo_name != NO_LINE && hi_name != NO_LINE);
-    if (lo_name == NO_LINE || hi_name == NO_LINE) {
+    if ((lo_name == NO_LINE) || (hi_name == NO_LINE)) {
         return;
     }
     make_line(c, hi_name, &line);
@@ -941,10 +993,16 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
     e.out = out;
     e.sum = sum;
     e.count = 0;
-    e.first = e.last = -1;
+    e.first = -1;
+    e.last = -1;
     unsigned next_side = 0;
     if (d->vertex_count >= 2u) {
-        uint32_t slot = c->start_slot, x, y, next, z, dummy;
+        uint32_t slot = c->start_slot;
+        uint32_t x;
+        uint32_t y;
+        uint32_t next;
+        uint32_t z;
+        uint32_t dummy;
         for (uint32_t step = 0; step <= d->vertex_count; step++) {
             fan_triangle(c, slot, &x, &y, &next);
             if (y != VOR__INFINITE) {
@@ -953,7 +1011,8 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
                     emit_side(&e, next_side);
                     add_held_vertex(sum);
                 }
-                bool has_start, has_end;
+                bool has_start;
+                bool has_end;
                 if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
                     emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
                     add_held_vertex(sum);
@@ -969,7 +1028,7 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
         emit_side(&e, next_side);
         add_held_vertex(sum);
     }
-    if (e.last >= 0 && e.last != e.first && !same_point(&e, e.first, &e.pool[e.last])) {
+    if ((e.last >= 0) && (e.last != e.first) && !same_point(&e, e.first, &e.pool[e.last])) {
         confirm(&e, e.last);
         add_held_vertex(sum);
     }
@@ -995,11 +1054,11 @@ static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t
 int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
              uint32_t capacity, uint32_t *count)
 {
-    if (d == NULL || box == NULL || count == NULL || (vertices == NULL && capacity > 0u) ||
-        box->x0 > box->x1 || box->y0 > box->y1 || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || (box == NULL) || (count == NULL) || ((vertices == NULL) && (capacity > 0u)) ||
+        (box->x0 > box->x1) || (box->y0 > box->y1) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
-    if (box->x0 == box->x1 || box->y0 == box->y1) {
+    if ((box->x0 == box->x1) || (box->y0 == box->y1)) {
         *count = 0;
         return VOR_OK;
     }
@@ -1007,7 +1066,7 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
     begin_cell(&c, d, site, box);
     /* at most one vertex per neighbour and per box side: write at once
      * when that fits, else count first */
-    if (capacity < c.degree + 4u) {
+    if (capacity < (c.degree + 4u)) {
         uint32_t needed = trace(&c, NULL, NULL);
         if (needed > capacity) {
             *count = needed;
@@ -1025,8 +1084,11 @@ int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
     }
     it->next_site = 0;
     it->error = VOR_OK;
-    it->box.x0 = it->box.y0 = it->box.x1 = it->box.y1 = 0;
-    if (d == NULL || box == NULL || box->x0 > box->x1 || box->y0 > box->y1) {
+    it->box.x0 = 0;
+    it->box.y0 = 0;
+    it->box.x1 = 0;
+    it->box.y1 = 0;
+    if ((d == NULL) || (box == NULL) || (box->x0 > box->x1) || (box->y0 > box->y1)) {
         it->d = NULL; /* closed */
         it->error = VOR_ERR_ARG;
         return VOR_ERR_ARG;
@@ -1042,15 +1104,15 @@ int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
 int vor_cells_next(vor_cell_iter_t *it, uint32_t *site, vor_point_t *vertices, uint32_t capacity,
                    uint32_t *count)
 {
-    if (it == NULL || it->d == NULL) {
+    if ((it == NULL) || (it->d == NULL)) {
         return 0; /* a zeroed iterator, or a closed one */
     }
     const vor_t *d = it->d;
-    if (site == NULL || count == NULL || (vertices == NULL && capacity > 0u)) {
+    if ((site == NULL) || (count == NULL) || ((vertices == NULL) && (capacity > 0u))) {
         it->error = VOR_ERR_ARG;
         return 0;
     }
-    while (it->next_site < d->site_count && !vor__site_in_mesh(d, it->next_site)) {
+    while ((it->next_site < d->site_count) && !vor__site_in_mesh(d, it->next_site)) {
         it->next_site++;
     }
     if (it->next_site >= d->site_count) {
@@ -1104,20 +1166,25 @@ int vor_cells_error(const vor_cell_iter_t *it)
 #define SUM_NUMBERS 6u /* N_A, N_X, N_Y, Q_{i-1}, Q_i and a spare */
 
 struct centroid_sum {
-    vor__limb *area, *x, *y;          /* N_A, N_X, N_Y over the denominator */
-    vor__limb *before, *denominator;  /* Q_{i-1}, Q_i */
+    vor__limb *area;
+    vor__limb *x;
+    vor__limb *y;          /* N_A, N_X, N_Y over the denominator */
+    vor__limb *before;
+    vor__limb *denominator;  /* Q_{i-1}, Q_i */
     vor__limb *spare;
     size_t width;                     /* live limbs of every number */
     uint32_t vertices;
     bool held;                        /* a confirmed vertex waits in `next` */
-    geo_point_t first, previous, next;
+    geo_point_t first;
+    geo_point_t previous;
+    geo_point_t next;
 };
 
 /* Limbs of step j's numbers, for j <= MAX_SUM_VERTICES (130 j < 2^32). */
-#define MAX_SUM_VERTICES (1u << 24)
+#define MAX_SUM_VERTICES ((uint32_t)1 << 24)
 static size_t sum_limbs(uint32_t j)
 {
-    return ((size_t)j * 130u + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+    return (((size_t)j * 130u) + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
 
 /* Does scratch of `bytes` hold the sums of a cell of k vertices? Then
@@ -1163,8 +1230,10 @@ static void widen_sums(centroid_sum_t *sum, size_t width)
 static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor__limb *b,
                          size_t nb)
 {
-    vor__limb ma[FACTOR_LIMBS], mb[FACTOR_LIMBS];
-    bool a_negative = vor__mw_sign(a, na) < 0, b_negative = vor__mw_sign(b, nb) < 0;
+    vor__limb ma[FACTOR_LIMBS];
+    vor__limb mb[FACTOR_LIMBS];
+    bool a_negative = vor__mw_sign(a, na) < 0;
+    bool b_negative = vor__mw_sign(b, nb) < 0;
     for (size_t i = 0; i < na; i++) {
         ma[i] = a[i];
     }
@@ -1188,7 +1257,7 @@ static size_t significant(const vor__limb *a, size_t n)
 {
     vor__limb fill = (vor__mw_sign(a, n) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
     size_t m = n;
-    while (m > 1u && a[m - 1u] == fill && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
+    while ((m > 1u) && (a[m - 1u] == fill) && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
         m--;
     }
     return m;
@@ -1223,7 +1292,10 @@ static void accumulate(centroid_sum_t *sum, vor__limb *n, const vor__limb *t,
 VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
                                    const geo_point_t *q)
 {
-    vor__limb cross[TERM_LIMBS], t[TERM_LIMBS], u[TERM_LIMBS], term[TERM_LIMBS];
+    vor__limb cross[TERM_LIMBS];
+    vor__limb t[TERM_LIMBS];
+    vor__limb u[TERM_LIMBS];
+    vor__limb term[TERM_LIMBS];
     vor__limb square[GEO_LIMBS];
     term_product(cross, p->x, GEO_LIMBS, q->y, GEO_LIMBS);
     term_product(t, q->x, GEO_LIMBS, p->y, GEO_LIMBS);
@@ -1242,10 +1314,10 @@ VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
         size_t limbs = significant(sums[i], sum->width);
         widest = (limbs > widest) ? limbs : widest;
     }
-    widest = (before_limbs + TERM_LIMBS > widest + square_limbs) ? before_limbs + TERM_LIMBS
-                                                                 : widest + square_limbs;
+    widest = (before_limbs + TERM_LIMBS > (widest + square_limbs)) ? before_limbs + TERM_LIMBS
+                                                                 : (widest + square_limbs);
     size_t width = sum_limbs(sum->vertices);
-    width = (widest + 1u < width) ? widest + 1u : width;
+    width = ((widest + 1u) < width) ? (widest + 1u) : width;
     widen_sums(sum, width);
 
     /* t and u below 2^165, the cross product below 2^197 */
@@ -1318,7 +1390,7 @@ static void write_centroid(vor_centroid_t *out, const vor_centroid_t *from)
 
 static void add_held_vertex(centroid_sum_t *sum)
 {
-    if (sum != NULL && sum->held) {
+    if ((sum != NULL) && sum->held) {
         sum->held = false;
         add_vertex(sum, &sum->next);
     }
@@ -1336,11 +1408,11 @@ static size_t division_width(const vor__limb *rest, const vor__limb *step, size_
                              unsigned bits)
 {
     size_t m = n;
-    while (m > 1u && step[m - 1u] == 0u) {
+    while ((m > 1u) && (step[m - 1u] == 0u)) {
         m--;
     }
     m += VOR__LIMBS(bits) + 1u;
-    if (m >= n || vor__mw_sign(rest, n) < 0) {
+    if ((m >= n) || vor__mw_sign(rest, n) < 0) {
         return n;
     }
     for (size_t i = m - 1u; i < n; i++) {
@@ -1382,8 +1454,8 @@ static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
 int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void *scratch,
                       size_t scratch_bytes, vor_centroid_t *out)
 {
-    if (d == NULL || box == NULL || out == NULL || (scratch == NULL && scratch_bytes > 0u) ||
-        box->x0 > box->x1 || box->y0 > box->y1 || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || (box == NULL) || (out == NULL) || ((scratch == NULL) && (scratch_bytes > 0u)) ||
+        (box->x0 > box->x1) || (box->y0 > box->y1) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
     const vor_point_t *s = &d->sites[site];
@@ -1393,7 +1465,7 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     result.point.y = clamp(s->y, box->y0, box->y1);
     result.area = 0;
     result.vertices = 0;
-    if (box->x0 == box->x1 || box->y0 == box->y1) {
+    if ((box->x0 == box->x1) || (box->y0 == box->y1)) {
         write_centroid(out, &result);
         return VOR_OK;
     }
@@ -1401,7 +1473,8 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     begin_cell(&c, d, site, box);
     /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
-    size_t usable = (scratch_bytes > skip) ? scratch_bytes - skip : 0u, stride;
+    size_t usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u;
+    size_t stride;
     /* at most one vertex per neighbour and per box side: count first only
      * when the scratch might be too small */
     if (!scratch_fits(usable, c.degree + 4u, &stride)) {
@@ -1419,10 +1492,10 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     centroid_sum_t sum;
     sum.area = limbs;
     sum.x = limbs + stride;
-    sum.y = limbs + 2u * stride;
-    sum.before = limbs + 3u * stride;
-    sum.denominator = limbs + 4u * stride;
-    sum.spare = limbs + 5u * stride;
+    sum.y = limbs + (2u * stride);
+    sum.before = limbs + (3u * stride);
+    sum.denominator = limbs + (4u * stride);
+    sum.spare = limbs + (5u * stride);
     sum.width = 0;
     sum.vertices = 0;
     sum.held = false;
@@ -1451,7 +1524,8 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     vor__mw_add(sum.area, sum.spare, width);
     vor__mw_shl1(sum.spare, width);
     uint64_t area;
-    bool negative, exact;
+    bool negative;
+    bool exact;
     bool fits = divide(sum.area, sum.spare, division_width(sum.area, sum.spare, width, 64u),
                        64u, &area, &negative, &exact);
     VOR_ASSERT(fits && !negative);

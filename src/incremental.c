@@ -40,7 +40,7 @@
 /* Is slot a home slot of site v (v may be infinity, which has none)? */
 static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 {
-    return slot == v && v < d->max_sites;
+    return (slot == v) && (v < d->max_sites);
 }
 
 /* ------------------------------------------------------------------ */
@@ -146,12 +146,15 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t
 {
     vor__tri_t *tri = d->triangles;
     vor__tri_t *t = &tri[x_slot];
-    vor_index_t y_slot = t->n[0], nx = t->n[1], ny = t->n[2];
+    vor_index_t y_slot = t->n[0];
+    vor_index_t nx = t->n[1];
+    vor_index_t ny = t->n[2];
     vor__tri_t *u = &tri[y_slot];
     vor_index_t across_xc = u->n[vor__next(apex)];
     vor_index_t across_cy = u->n[vor__prev(apex)];
     /* keep home slots home: (p, x, c) holds x, (p, c, y) holds y, both c */
-    vor_index_t s1 = x_slot, s2 = y_slot;
+    vor_index_t s1 = x_slot;
+    vor_index_t s2 = y_slot;
     if (is_home(d, x_slot, y) || is_home(d, y_slot, x)) {
         s1 = y_slot;
         s2 = x_slot;
@@ -172,14 +175,20 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
     vor__tri_t *r = &tri[root];
-    vor_index_t a = vor__vertex(r, 0), b = vor__vertex(r, 1), c = vor__vertex(r, 2);
-    vor_index_t na = r->n[0], nb = r->n[1], nc = r->n[2];
+    vor_index_t a = vor__vertex(r, 0);
+    vor_index_t b = vor__vertex(r, 1);
+    vor_index_t c = vor__vertex(r, 2);
+    vor_index_t na = r->n[0];
+    vor_index_t nb = r->n[1];
+    vor_index_t nc = r->n[2];
 
     /* split into A = (p, b, c), B = (p, c, a), C = (p, a, b) in the root's
      * slot, p's home slot and one new slot, the root's slot going to a
      * triangle that holds the site it is home to */
     vor_index_t extra = (vor_index_t)(d->max_sites + d->vertex_count - 2u);
-    vor_index_t sa = root, sb = sp, sc = extra;
+    vor_index_t sa = root;
+    vor_index_t sb = sp;
+    vor_index_t sc = extra;
     if (is_home(d, root, a)) { /* A lacks a; C = (p, a, b) takes the slot */
         sa = extra;
         sc = root;
@@ -211,10 +220,13 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
      * a row were refused as the star has; every flip uses up a triangle
      * not on the star, so the loop ends even if the predicates lie. */
     vor_index_t slot = sa;
-    uint32_t star = 3, refused = 0;
+    uint32_t star = 3;
+    uint32_t refused = 0;
     while (refused < star) {
         vor__tri_t *t = &tri[slot];
-        vor_index_t tv[3], uv[3]; /* t = (p, x, y), u = (y, x, c) */
+        /* t = (p, x, y), u = (y, x, c) */
+        vor_index_t tv[3];
+        vor_index_t uv[3];
         vor__vertices(t, tv);
         vor__vertices(&tri[t->n[0]], uv);
         unsigned ix = (uv[0] == tv[1]) ? 0u : (uv[1] == tv[1]) ? 1u : (uv[2] == tv[1]) ? 2u : 3u;
@@ -246,7 +258,7 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
 
 static bool same_point(const vor_point_t *a, const vor_point_t *b)
 {
-    return a->x == b->x && a->y == b->y;
+    return (a->x == b->x) && (a->y == b->y);
 }
 
 /* Takes the most recently freed id off the free list (vor_remove puts
@@ -264,18 +276,19 @@ static void take_free_id(vor_t *d)
 
 int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
 {
-    if (d == NULL || (hint != VOR_NO_HINT && !vor__site_in_mesh(d, hint))) {
+    if ((d == NULL) || ((hint != VOR_NO_HINT) && !vor__site_in_mesh(d, hint))) {
         return VOR_ERR_ARG;
     }
-    if (hint == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
-        hint = (d->vertex_count >= 2u) ? vor__grid_start(d, point.x, point.y) : d->last_site;
+    uint32_t start = hint;
+    if (start == VOR_NO_HINT) { /* as vor_nearest: the bucket grid's site */
+        start = (d->vertex_count >= 2u) ? vor__grid_start(d, point.x, point.y) : d->last_site;
     }
     bool reused = d->free_site != 0u; /* a removed site's id */
-    if (!reused && d->site_count >= d->max_sites) {
+    if (!reused && (d->site_count >= d->max_sites)) {
         /* no free coordinates slot to locate from: a read-only query
          * tells a duplicate, which needs no slot, from a new site */
         uint32_t nearest;
-        if (vor_nearest(d, point, hint, &nearest) == VOR_OK &&
+        if ((vor_nearest(d, point, start, &nearest) == VOR_OK) &&
             same_point(&d->sites[nearest], &point)) {
             if (site != NULL) {
                 *site = nearest;
@@ -284,7 +297,7 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
         }
         return VOR_ERR_FULL;
     }
-    uint32_t p = reused ? d->free_site - 1u : d->site_count;
+    uint32_t p = reused ? (d->free_site - 1u) : d->site_count;
     vor__tri_t *tri = d->triangles;
 
     if (d->vertex_count == 0u) {
@@ -311,11 +324,12 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
         vor__tally_save(&tally, d);
         d->sites[p] = point;
         bool on_line;
-        vor_index_t root = vor__locate(d, (vor_index_t)hint, p, &on_line);
+        vor_index_t root = vor__locate(d, (vor_index_t)start, p, &on_line);
         /* strictly inside its triangle (or strictly outside the hull) p can
          * only coincide with a vertex of it; on an edge line, degenerate
          * thin triangles can put its twin elsewhere: find the nearest site */
-        uint32_t twin = VOR__NONE, corner = 0;
+        uint32_t twin = VOR__NONE;
+        uint32_t corner = 0;
         for (unsigned i = 0; i < 3u; i++) {
             vor_index_t v = vor__vertex(&tri[root], i);
             if (v != VOR__INFINITE) {
@@ -369,7 +383,7 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
               const vor_build_options_t *options, uint32_t *duplicate_of)
 {
     enum vor_order order = (options != NULL) ? options->order : VOR_ORDER_QUADTREE;
-    if (order != VOR_ORDER_QUADTREE && order != VOR_ORDER_INPUT) {
+    if ((order != VOR_ORDER_QUADTREE) && (order != VOR_ORDER_INPUT)) {
         return VOR_ERR_ARG;
     }
     int status = vor__build_start(d, points, n, duplicate_of);
@@ -383,14 +397,16 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
     vor_index_t *base = (vor_index_t *)(void *)d->triangles;
     size_t entries = (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t) /
                      sizeof(vor_index_t);
-    vor_index_t *plan = base + entries - 2u * (size_t)n;
+    vor_index_t *plan = base + entries - (2u * (size_t)n);
     uint32_t distinct = vor__plan(d, n, order, base, plan, duplicate_of);
 
     vor__tri_t *tri = d->triangles;
     for (uint32_t i = 0; i < n; i++) {
-        vor_index_t s = plan[2u * i], from = plan[2u * i + 1u];
-        if (VOR__PREFETCHING && i + 8u < distinct) { /* the memory of the insertion 8 ahead */
-            vor_index_t ahead = plan[2u * (i + 8u)], ahead_from = plan[2u * (i + 8u) + 1u];
+        vor_index_t s = plan[2u * i];
+        vor_index_t from = plan[(2u * i) + 1u];
+        if (VOR__PREFETCHING && ((i + 8u) < distinct)) { /* the memory of the insertion 8 ahead */
+            vor_index_t ahead = plan[2u * (i + 8u)];
+            vor_index_t ahead_from = plan[2u * (i + 8u) + 1u];
             VOR__PREFETCH(&d->sites[ahead]);
             VOR__PREFETCH(&tri[ahead]);
             if (ahead_from != VOR__NONE) {
@@ -409,6 +425,8 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
             vor_index_t start = (from == VOR__NONE) ? (vor_index_t)d->last_site : from;
             bool on_line;
             vor__insert_at(d, vor__locate(d, start, s, &on_line), s);
+        } else {
+            /* no other case */
         }
         d->vertex_count++;
         d->last_site = s;

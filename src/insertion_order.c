@@ -27,7 +27,7 @@
 /* Is the highest set bit of a below that of b? */
 static inline bool lower_top_bit(uint32_t a, uint32_t b)
 {
-    return a < b && a < (a ^ b);
+    return (a < b) && (a < (a ^ b));
 }
 
 /* Z-order (Morton order) of sites, ids breaking ties: consecutive sites
@@ -37,9 +37,11 @@ static inline bool lower_top_bit(uint32_t a, uint32_t b)
 static inline bool z_less(const vor_point_t *sites, vor_index_t a, vor_index_t b)
 {
     /* flipping the sign bit maps int32 order onto uint32 order */
-    uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u, ay = (uint32_t)sites[a].y ^ 0x80000000u;
-    uint32_t bx = (uint32_t)sites[b].x ^ 0x80000000u, by = (uint32_t)sites[b].y ^ 0x80000000u;
-    if (ax == bx && ay == by) {
+    uint32_t ax = (uint32_t)sites[a].x ^ 0x80000000u;
+    uint32_t ay = (uint32_t)sites[a].y ^ 0x80000000u;
+    uint32_t bx = (uint32_t)sites[b].x ^ 0x80000000u;
+    uint32_t by = (uint32_t)sites[b].y ^ 0x80000000u;
+    if ((ax == bx) && (ay == by)) {
         return a < b;
     }
     if (lower_top_bit(ax ^ bx, ay ^ by)) {
@@ -69,16 +71,17 @@ static inline bool site_less(const vor_point_t *sites, vor_index_t a, vor_index_
     return (key == VOR__SORT_LEX) ? lex_less_id(sites, a, b) : z_less(sites, a, b);
 }
 
-static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root,
+static void sift_down(const vor_point_t *sites, vor_index_t *ids, uint32_t root_in,
                       uint32_t n, enum vor__sort_key key)
 {
+    uint32_t root = root_in;
     /* each step at least doubles root, so this ends */
     for (;;) {
-        uint32_t child = 2u * root + 1u;
+        uint32_t child = (2u * root) + 1u;
         if (child >= n) {
             return;
         }
-        if (child + 1u < n && site_less(sites, ids[child], ids[child + 1u], key)) {
+        if (((child + 1u) < n) && site_less(sites, ids[child], ids[child + 1u], key)) {
             child++;
         }
         if (!site_less(sites, ids[root], ids[child], key)) {
@@ -128,21 +131,26 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
                    enum vor__sort_key key)
 {
     struct range {
-        uint32_t first, count, depth;
+        uint32_t first;
+        uint32_t count;
+        uint32_t depth;
     } stack[34];
-    unsigned top = 0, log2n = 0;
+    unsigned top = 0;
+    unsigned log2n = 0;
     while (vor__shl_u64(1u, log2n) < n) {
         log2n++;
     }
-    stack[top++] = (struct range){0, n, 0};
+    stack[top] = (struct range){0, n, 0};
+    top++;
     while (top > 0u) {
-        struct range r = stack[--top];
+        top--;
+        struct range r = stack[top];
         vor_index_t *a = ids + r.first;
         if (r.count < 16u) {
             for (uint32_t i = 1; i < r.count; i++) {
                 vor_index_t v = a[i];
                 uint32_t j = i;
-                while (j > 0u && site_less(sites, v, a[j - 1u], key)) {
+                while ((j > 0u) && site_less(sites, v, a[j - 1u], key)) {
                     a[j] = a[j - 1u];
                     j--;
                 }
@@ -150,12 +158,13 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
             }
             continue;
         }
-        if (r.depth > 2u * log2n) {
+        if (r.depth > (2u * log2n)) {
             heap_sort(sites, a, r.count, key);
             continue;
         }
         /* median of three to a[0], then Hoare partition around it */
-        uint32_t mid = r.count / 2u, last = r.count - 1u;
+        uint32_t mid = r.count / 2u;
+        uint32_t last = r.count - 1u;
         if (site_less(sites, a[mid], a[0], key)) {
             swap_ids(a, mid, 0);
         }
@@ -167,11 +176,12 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
         }
         swap_ids(a, 0, mid);
         vor_index_t pivot = a[0];
-        uint32_t i = 0, j = r.count;
+        uint32_t i = 0;
+        uint32_t j = r.count;
         for (;;) { /* i and j move toward each other: ends within count steps */
             do {
                 i++;
-            } while (i < r.count && site_less(sites, a[i], pivot, key));
+            } while ((i < r.count) && site_less(sites, a[i], pivot, key));
             do {
                 j--;
             } while (site_less(sites, pivot, a[j], key));
@@ -185,13 +195,17 @@ void vor__sort_ids(const vor_point_t *sites, vor_index_t *ids, uint32_t n,
          * first so that the smaller is sorted next */
         struct range left = {r.first, j, r.depth + 1u};
         struct range right = {r.first + j + 1u, r.count - j - 1u, r.depth + 1u};
-        VOR_ASSERT(top + 2u <= sizeof stack / sizeof stack[0]);
+        VOR_ASSERT((top + 2u) <= (sizeof(stack) / sizeof(stack[0])));
         if (left.count > right.count) {
-            stack[top++] = left;
-            stack[top++] = right;
+            stack[top] = left;
+            top++;
+            stack[top] = right;
+            top++;
         } else {
-            stack[top++] = right;
-            stack[top++] = left;
+            stack[top] = right;
+            top++;
+            stack[top] = left;
+            top++;
         }
     }
 }
@@ -205,11 +219,12 @@ static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
     /* c = floor(2^k / 3) without a division: c(t+1) = 2 c(t) + (t odd) */
     int32_t c = 0;
     for (unsigned t = 0; t < k; t++) {
-        c = 2 * c + (int32_t)(t & 1u);
+        c = (2 * c) + (int32_t)(t & 1u);
     }
-    int32_t u = (k % 2u == 1u) ? 1 : -1; /* (-1)^(k+1) */
-    int32_t s = 2 * c + u;
-    uint32_t m = 1, r = 0;
+    int32_t u = ((k % 2u) == 1u) ? 1 : -1; /* (-1)^(k+1) */
+    int32_t s = (2 * c) + u;
+    uint32_t m = 1;
+    uint32_t r = 0;
     cell_i[0] = (vor_index_t)c;
     cell_j[0] = (vor_index_t)c;
     for (unsigned t = 1; t <= k; t++) {
@@ -234,12 +249,13 @@ static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
 static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
                            uint32_t *duplicate_of)
 {
-    uint32_t count = 0, dups = 0;
+    uint32_t count = 0;
+    uint32_t dups = 0;
     vor_index_t previous = VOR__NONE;
     for (uint32_t s = 0; s < n; s++) {
         uint32_t first = s;
-        for (uint32_t e = 0; e < s && first == s; e++) {
-            if (d->sites[e].x == d->sites[s].x && d->sites[e].y == d->sites[s].y) {
+        for (uint32_t e = 0; (e < s) && (first == s); e++) {
+            if ((d->sites[e].x == d->sites[s].x) && (d->sites[e].y == d->sites[s].y)) {
                 first = e;
             }
         }
@@ -248,7 +264,7 @@ static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
         }
         if (first == s) {
             plan[2u * count] = (vor_index_t)s;
-            plan[2u * count + 1u] = previous;
+            plan[(2u * count) + 1u] = previous;
             previous = (vor_index_t)s;
             count++;
         } else {
@@ -257,16 +273,16 @@ static uint32_t plan_small(const vor_t *d, uint32_t n, vor_index_t *plan,
     }
     /* duplicates after the sites, with their first occurrence */
     uint32_t at = count;
-    for (uint32_t s = 0; s < n && dups > 0u; s++) {
+    for (uint32_t s = 0; (s < n) && (dups > 0u); s++) {
         uint32_t first = s;
-        for (uint32_t e = 0; e < s && first == s; e++) {
-            if (d->sites[e].x == d->sites[s].x && d->sites[e].y == d->sites[s].y) {
+        for (uint32_t e = 0; (e < s) && (first == s); e++) {
+            if ((d->sites[e].x == d->sites[s].x) && (d->sites[e].y == d->sites[s].y)) {
                 first = e;
             }
         }
         if (first != s) {
             plan[2u * at] = (vor_index_t)s;
-            plan[2u * at + 1u] = (vor_index_t)first;
+            plan[(2u * at) + 1u] = (vor_index_t)first;
             at++;
         }
     }
@@ -294,21 +310,22 @@ static void find_duplicates(const plan_grid_t *g)
 {
     const vor_index_t *start = g->start;
     vor_index_t *sorted = g->sorted;
-    uint32_t n = start[g->buckets], asked = 0;
+    uint32_t n = start[g->buckets];
+    uint32_t asked = 0;
     for (uint32_t b = 0; b < g->buckets; b++) {
         /* coordinates are read by id, at random places: the next buckets'
          * are asked for while this one is sorted */
-        uint32_t ahead = (n - start[b + 1u] > 32u) ? start[b + 1u] + 32u : n;
-        for (; VOR__PREFETCHING && asked < ahead; asked++) {
+        uint32_t ahead = ((n - start[b + 1u]) > 32u) ? (start[b + 1u] + 32u) : n;
+        for (; VOR__PREFETCHING && (asked < ahead); asked++) {
             VOR__PREFETCH(&g->sites[sorted[asked]]);
         }
         vor__sort_ids(g->sites, &sorted[start[b]], (uint32_t)(start[b + 1u] - start[b]),
                       VOR__SORT_Z);
         for (uint32_t e = start[b]; e < start[b + 1u]; e++) {
             vor_index_t s = sorted[e];
-            bool same = e > start[b] &&
-                        g->sites[sorted[e - 1u]].x == g->sites[s].x &&
-                        g->sites[sorted[e - 1u]].y == g->sites[s].y;
+            bool same = (e > start[b]) &&
+                        (g->sites[sorted[e - 1u]].x == g->sites[s].x) &&
+                        (g->sites[sorted[e - 1u]].y == g->sites[s].y);
             g->rep[s] = same ? g->rep[sorted[e - 1u]] : s;
         }
     }
@@ -323,7 +340,7 @@ static uint32_t plan_input(const plan_grid_t *g, uint32_t n, vor_index_t *plan)
     for (uint32_t s = 0; s < n; s++) {
         if (g->rep[s] == s) {
             plan[2u * count] = (vor_index_t)s;
-            plan[2u * count + 1u] = previous;
+            plan[(2u * count) + 1u] = previous;
             previous = (vor_index_t)s;
             count++;
         }
@@ -336,7 +353,7 @@ static uint32_t plan_input(const plan_grid_t *g, uint32_t n, vor_index_t *plan)
 static inline vor_index_t square_site(const plan_grid_t *g, uint32_t r0, uint32_t size)
 {
     vor_index_t r = g->next[r0];
-    return (r < r0 + size) ? g->sorted[g->start[g->bucket_at[r]]] : VOR__NONE;
+    return (r < (r0 + size)) ? g->sorted[g->start[g->bucket_at[r]]] : VOR__NONE;
 }
 
 /* Ranks the buckets in quadtree order (bucket_at, next), then plans the
@@ -345,7 +362,8 @@ static inline vor_index_t square_site(const plan_grid_t *g, uint32_t r0, uint32_
 static uint32_t plan_squares(const plan_grid_t *g, vor_index_t *plan)
 {
     uint32_t buckets = g->buckets;
-    vor_index_t *bucket_at = g->bucket_at, *next = g->next;
+    vor_index_t *bucket_at = g->bucket_at;
+    vor_index_t *next = g->next;
     quadtree_cells(g->k, bucket_at, g->cell_j); /* (I(r), J(r)), I in place */
     for (uint32_t r = 0; r < buckets; r++) {
         bucket_at[r] = (vor_index_t)(((uint32_t)bucket_at[r] << g->k) | g->cell_j[r]);
@@ -370,7 +388,7 @@ static uint32_t plan_squares(const plan_grid_t *g, vor_index_t *plan)
             }
             if (s != parent) {
                 plan[2u * count] = s;
-                plan[2u * count + 1u] = parent;
+                plan[(2u * count) + 1u] = parent;
                 count++;
             }
         }
@@ -384,27 +402,29 @@ static uint32_t plan_squares(const plan_grid_t *g, vor_index_t *plan)
  * from the site one step back, already inserted (a crowded bucket, as
  * with clustered sites, then gets short walks and small cavities too).
  * Returns the new count. */
-static uint32_t plan_buckets(const plan_grid_t *g, vor_index_t *plan, uint32_t count)
+static uint32_t plan_buckets(const plan_grid_t *g, vor_index_t *plan, uint32_t count_in)
 {
+    uint32_t count = count_in;
     const vor_index_t *rep = g->rep;
     for (uint32_t r = 0; r < g->buckets; r++) {
         uint32_t b = g->bucket_at[r];
         uint32_t size = (uint32_t)(g->start[b + 1u] - g->start[b]);
         const vor_index_t *in = &g->sorted[g->start[b]];
         uint32_t step = 1;
-        while (2u * step < size) {
+        while ((2u * step) < size) {
             step *= 2u;
         }
-        for (; step > 0u && size > 1u; step /= 2u) {
+        for (; (step > 0u) && (size > 1u); step /= 2u) {
             for (uint32_t pos = step; pos < size; pos += 2u * step) {
-                vor_index_t s = in[pos], from = in[pos - step];
+                vor_index_t s = in[pos];
+                vor_index_t from = in[pos - step];
                 if (rep[s] != s) {
                     continue;
                 }
                 plan[2u * count] = s;
                 /* a duplicate is not in the mesh: start at the bucket's
                  * representative instead */
-                plan[2u * count + 1u] = (rep[from] == from) ? from : in[0];
+                plan[(2u * count) + 1u] = (rep[from] == from) ? from : in[0];
                 count++;
             }
         }
@@ -450,7 +470,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     for (uint32_t s = 0; s < n; s++) {
         if (g.rep[s] != s) {
             plan[2u * at] = (vor_index_t)s;
-            plan[2u * at + 1u] = g.rep[s];
+            plan[(2u * at) + 1u] = g.rep[s];
             at++;
         }
     }

@@ -32,7 +32,8 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
  * The corner may lie below INT32_MIN, so it is an int64; every site's
  * offset from it is at most 2^shift - 1 < 2^32. */
 typedef struct {
-    int64_t x0, y0;
+    int64_t x0;
+    int64_t y0;
     unsigned shift;
 } vor__grid_square_t;
 
@@ -62,12 +63,13 @@ static inline uint32_t vor__grid_cell(int32_t c, int64_t corner, unsigned k, uns
     if (shift < k) {
         return offset << (k - shift); /* < 2^k */
     }
-    return (shift - k < 32u) ? offset >> (shift - k) : 0u;
+    return ((shift - k) < 32u) ? offset >> (shift - k) : 0u;
 }
 
 /* Spreads the low 16 bits of x to the even bit positions. */
-static inline uint32_t vor__spread_bits(uint32_t x)
+static inline uint32_t vor__spread_bits(uint32_t x_in)
 {
+    uint32_t x = x_in;
     x &= 0xFFFFu;
     x = (x | (x << 8)) & 0x00FF00FFu;
     x = (x | (x << 4)) & 0x0F0F0F0Fu;
@@ -77,8 +79,9 @@ static inline uint32_t vor__spread_bits(uint32_t x)
 }
 
 /* The inverse: the even bits of x, packed. */
-static inline uint32_t vor__compact_bits(uint32_t x)
+static inline uint32_t vor__compact_bits(uint32_t x_in)
 {
+    uint32_t x = x_in;
     x &= 0x55555555u;
     x = (x | (x >> 1)) & 0x33333333u;
     x = (x | (x >> 2)) & 0x0F0F0F0Fu;

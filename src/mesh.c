@@ -14,7 +14,7 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     if (config != VOR_CONFIG_FINGERPRINT) {
         return VOR_ERR_CONFIG; /* *d and the arena are laid out differently */
     }
-    if (d == NULL || arena == NULL || max_sites == 0u || max_sites > VOR_MAX_SITES) {
+    if ((d == NULL) || (arena == NULL) || (max_sites == 0u) || (max_sites > VOR_MAX_SITES)) {
         return VOR_ERR_ARG;
     }
     if (((uintptr_t)arena % VOR_ARENA_ALIGN) != 0u) {
@@ -33,9 +33,15 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->site_count = 0;
     d->vertex_count = 0;
     d->last_site = 0;
-    d->low.x = d->low.y = d->high.x = d->high.y = 0;
-    d->bucket_origin.x = d->bucket_origin.y = 0;
-    d->bucket_columns = d->bucket_rows = d->bucket_scale = 0;
+    d->low.x = 0;
+    d->low.y = 0;
+    d->high.x = 0;
+    d->high.y = 0;
+    d->bucket_origin.x = 0;
+    d->bucket_origin.y = 0;
+    d->bucket_columns = 0;
+    d->bucket_rows = 0;
+    d->bucket_scale = 0;
     d->bucket_rebuild_at = 2;
     /* moved on, never reset: a tracker begun before this call must not
      * find its revision again after the rebuild. Read even from an
@@ -62,7 +68,8 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t sa = (vor_index_t)a, sb = (vor_index_t)b;
+    vor_index_t sa = (vor_index_t)a;
+    vor_index_t sb = (vor_index_t)b;
     /* fresh slots: clear any mark bits left by earlier contents */
     vor__tri_fresh(&tri[a]);
     vor__tri_fresh(&tri[b]);
@@ -73,7 +80,7 @@ void vor__make_edge(vor_t *d, uint32_t a, uint32_t b)
 int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
                      uint32_t *duplicate_of)
 {
-    if (d == NULL || (points == NULL && n > 0u)) {
+    if ((d == NULL) || ((points == NULL) && (n > 0u))) {
         return VOR_ERR_ARG;
     }
     if (n > d->max_sites) {
@@ -92,7 +99,7 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
     }
     if (n <= 1u) {
         d->vertex_count = n;
-        if (n == 1u && duplicate_of != NULL) {
+        if ((n == 1u) && (duplicate_of != NULL)) {
             duplicate_of[0] = 0;
         }
         return VOR_OK;
@@ -108,9 +115,11 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
  * instruction and the library calls no runtime routine. 64 steps, each
  * moving the numerator's top bit into the remainder and one quotient bit
  * in at the bottom (shifts by constants only: no shift routine either). */
-static uint64_t divide(uint64_t numerator, uint64_t denominator)
+static uint64_t divide(uint64_t numerator_in, uint64_t denominator)
 {
-    uint64_t quotient = 0, remainder = 0;
+    uint64_t numerator = numerator_in;
+    uint64_t quotient = 0;
+    uint64_t remainder = 0;
     for (unsigned step = 0; step < 64u; step++) {
         remainder = (remainder << 1) | (numerator >> 63);
         numerator <<= 1;
@@ -126,7 +135,7 @@ static uint64_t divide(uint64_t numerator, uint64_t denominator)
 int vor_stats(const vor_t *d, vor_stats_t *out)
 {
 #if VOR_STATS
-    if (d == NULL || out == NULL) {
+    if ((d == NULL) || (out == NULL)) {
         return VOR_ERR_ARG;
     }
     vor__stats_copy(out, &d->stats);
@@ -140,12 +149,12 @@ int vor_stats(const vor_t *d, vor_stats_t *out)
 
 int vor_memory(const vor_t *d, vor_memory_t *memory)
 {
-    if (d == NULL || memory == NULL) {
+    if ((d == NULL) || (memory == NULL)) {
         return VOR_ERR_ARG;
     }
     uint32_t triangles = vor__triangle_count(d->vertex_count);
     memory->arena_bytes = VOR_ARENA_BYTES(d->max_sites);
-    uint32_t buckets = (d->vertex_count >= 2u) ? d->bucket_columns * d->bucket_rows : 0u;
+    uint32_t buckets = (d->vertex_count >= 2u) ? (d->bucket_columns * d->bucket_rows) : 0u;
     memory->used_bytes = (size_t)d->site_count * sizeof(vor_point_t) +
                          (size_t)triangles * VOR_TRIANGLE_BYTES +
                          (size_t)buckets * sizeof(vor_index_t);
@@ -154,7 +163,7 @@ int vor_memory(const vor_t *d, vor_memory_t *memory)
     memory->bytes_per_site_x100 =
         (d->site_count == 0u)
             ? 0u
-            : (uint32_t)divide(memory->used_bytes * 100u + d->site_count / 2u,
+            : (uint32_t)divide((memory->used_bytes * 100u) + (d->site_count / 2u),
                                d->site_count); /* size_t: a native multiply */
     return VOR_OK;
 }

@@ -79,11 +79,11 @@ typedef char vor__triangle_size_check[(sizeof(vor__tri_t) == VOR_TRIANGLE_BYTES)
  * analysis quiet at no cost (one compare either way). */
 static inline unsigned vor__next(unsigned i)
 {
-    return (i >= 2u) ? 0u : i + 1u;
+    return (i >= 2u) ? 0u : (i + 1u);
 }
 static inline unsigned vor__prev(unsigned i)
 {
-    return (i == 0u) ? 2u : i - 1u;
+    return (i == 0u) ? 2u : (i - 1u);
 }
 
 static inline vor_index_t vor__vertex(const vor__tri_t *t, unsigned i)
@@ -105,7 +105,8 @@ static inline void vor__vertices(const vor__tri_t *t, vor_index_t v[3])
     v[1] = t->v[1];
     v[2] = t->v[2];
 #else
-    uint32_t w0 = t->v[0], w1 = t->v[1];
+    uint32_t w0 = t->v[0];
+    uint32_t w1 = t->v[1];
     v[0] = w0 & 0x1FFFFFu;
     v[1] = (w0 >> 21) | ((w1 & 0x3FFu) << 11);
     v[2] = (w1 >> 10) & 0x1FFFFFu;
@@ -146,7 +147,7 @@ static inline bool vor__site_in_mesh(const vor_t *d, uint32_t site)
     if (d->vertex_count == 1u) {
         return site == d->last_site;
     }
-    return d->vertex_count >= 2u && !vor__slot_empty(&d->triangles[site]);
+    return (d->vertex_count >= 2u) && !vor__slot_empty(&d->triangles[site]);
 }
 
 /* In triangle `slot`, points the link across its edge that ends at
@@ -224,9 +225,9 @@ static inline void vor__fan_begin(vor_neighbour_iter_t *it, const vor_t *d, uint
     it->site = site;
     it->slot = site;
     /* no triangles: one site, or a duplicate's id */
-    it->left = (d != NULL && d->vertex_count >= 2u && site < d->site_count &&
+    it->left = ((d != NULL) && (d->vertex_count >= 2u) && (site < d->site_count) &&
                 !vor__slot_empty(&d->triangles[site]))
-                   ? d->vertex_count + 1u
+                   ? (d->vertex_count + 1u)
                    : 0u;
 }
 
@@ -243,7 +244,7 @@ static inline bool vor__fan_next(vor_neighbour_iter_t *it, uint32_t *neighbour, 
         vor_index_t n = vor__vertex(t, vor__next(i));
         *third = vor__vertex(t, vor__prev(i));
         it->slot = t->n[vor__prev(i)];
-        it->left = (it->slot == it->site) ? 0u : it->left - 1u;
+        it->left = (it->slot == it->site) ? 0u : (it->left - 1u);
         if (n != VOR__INFINITE) {
             *neighbour = n;
             return true;
@@ -259,11 +260,12 @@ static inline bool vor__fan_next(vor_neighbour_iter_t *it, uint32_t *neighbour, 
  * the next used slot at or after `slot`, or that end when none is left. */
 static inline uint32_t vor__used_slots_end(const vor_t *d)
 {
-    return d->max_sites + ((d->vertex_count >= 2u) ? d->vertex_count - 2u : 0u);
+    return d->max_sites + ((d->vertex_count >= 2u) ? (d->vertex_count - 2u) : 0u);
 }
 
-static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot)
+static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot_in)
 {
+    uint32_t slot = slot_in;
     for (; slot < d->site_count; slot++) {
         if (!vor__slot_empty(&d->triangles[slot])) {
             return slot;
@@ -279,7 +281,7 @@ static inline uint32_t vor__next_used_slot(const vor_t *d, uint32_t slot)
 /* Slots in use for v sites in the mesh: 2v - 2 for v >= 2, else 0. */
 static inline uint32_t vor__triangle_count(uint32_t vertices)
 {
-    return (vertices >= 2u) ? 2u * vertices - 2u : 0u;
+    return (vertices >= 2u) ? ((2u * vertices) - 2u) : 0u;
 }
 
 /* The first two sites: two triangles at infinity sharing the edge ab
@@ -298,8 +300,10 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
 static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
 {
     if (first) {
-        d->low.x = d->high.x = p->x;
-        d->low.y = d->high.y = p->y;
+        d->high.x = p->x;
+        d->low.x = d->high.x;
+        d->high.y = p->y;
+        d->low.y = d->high.y;
         return;
     }
     d->low.x = (p->x < d->low.x) ? p->x : d->low.x;
@@ -315,15 +319,20 @@ static inline void vor__box_add(vor_t *d, const vor_point_t *p, bool first)
  * (dynamic.c) and the motion cache (motion.c) walk the same predicates
  * with it. Each triangle's vertices are decoded once. */
 typedef struct vor__star_step {
-    vor_index_t slot, v[3];  /* the star triangle and its vertices, as stored */
-    vor_index_t x, y;        /* p's neighbours in it, counterclockwise */
-    vor_index_t far, across;
-    vor_index_t next, w[3];  /* the next star triangle and its vertices */
+    vor_index_t slot;
+    vor_index_t v[3];  /* the star triangle and its vertices, as stored */
+    vor_index_t x;
+    vor_index_t y;        /* p's neighbours in it, counterclockwise */
+    vor_index_t far;
+    vor_index_t across;
+    vor_index_t next;
+    vor_index_t w[3];  /* the next star triangle and its vertices */
 } vor__star_step_t;
 
 static inline void vor__star_look(const vor_t *d, vor_index_t p, vor__star_step_t *s)
 {
-    const vor__tri_t *tri = d->triangles, *t = &tri[s->slot];
+    const vor__tri_t *tri = d->triangles;
+    const vor__tri_t *t = &tri[s->slot];
     unsigned i = (s->v[1] == p) ? 1u : (s->v[2] == p) ? 2u : 0u;
     s->x = s->v[vor__next(i)];
     s->y = s->v[vor__prev(i)];
@@ -380,9 +389,13 @@ static inline void vor__stats_copy(vor_stats_t *to, const vor_stats_t *from)
 static inline void vor__stats_clear(vor_stats_t *s)
 {
     for (unsigned t = 0; t < VOR_TIERS; t++) {
-        s->orient2d[t] = s->incircle[t] = s->closer[t] = 0;
+        s->orient2d[t] = 0;
+        s->incircle[t] = 0;
+        s->closer[t] = 0;
     }
-    s->orient2d_perturbed = s->incircle_perturbed = s->closer_perturbed = 0;
+    s->orient2d_perturbed = 0;
+    s->incircle_perturbed = 0;
+    s->closer_perturbed = 0;
 }
 #endif
 

@@ -88,14 +88,14 @@
 static bool entry_valid(const vor_t *d, uint32_t site)
 {
     uint32_t stamp = d->motion[site].stamp;
-    return (stamp >> 8) == d->motion_epoch && (stamp & VOR__BOX_MASK) != 0u;
+    return ((stamp >> 8) == d->motion_epoch) && (stamp & VOR__BOX_MASK) != 0u;
 }
 
 static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_t epoch);
 
 int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
 {
-    if (d == NULL || (mem == NULL && bytes > 0u)) {
+    if ((d == NULL) || ((mem == NULL) && (bytes > 0u))) {
         return VOR_ERR_ARG;
     }
     if (mem == NULL) {
@@ -111,7 +111,8 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
     }
     struct vor__motion_entry *cache = (struct vor__motion_entry *)mem;
     for (uint32_t i = 0; i < d->max_sites; i++) {
-        cache[i].x = cache[i].y = 0;
+        cache[i].x = 0;
+        cache[i].y = 0;
         cache[i].stamp = 0; /* no box */
     }
     d->motion = cache;
@@ -125,7 +126,7 @@ int vor_motion_attach(vor_t *d, void *mem, size_t bytes)
 static int change_bound(unsigned count, int m, int E)
 {
     int n = (m > E) ? m : E;
-    return (count == 3u) ? n + E + 3 : 3 * n + E + 10;
+    return (count == 3u) ? (n + E + 3) : ((3 * n) + E + 10);
 }
 
 /* The gradient is evaluated on vectors cut to GRADIENT_BITS bits: below
@@ -143,7 +144,7 @@ static int change_bound(unsigned count, int m, int E)
  * 2^(3k) G' + 2^(2m+k+8), G' the sum for the cut vectors. */
 static int gradient_bits(int64_t wide[3][2], int m)
 {
-    int k = (m > GRADIENT_BITS) ? m - GRADIENT_BITS : 0;
+    int k = (m > GRADIENT_BITS) ? (m - GRADIENT_BITS) : 0;
     int32_t v[3][2];
     for (unsigned r = 0; r < 3u; r++) {
         for (unsigned c = 0; c < 2u; c++) {
@@ -151,53 +152,59 @@ static int gradient_bits(int64_t wide[3][2], int m)
             v[r][c] = (wide[r][c] < 0) ? -(int32_t)cut : (int32_t)cut; /* cut < 2^18 */
         }
     }
-    int64_t z[3], cross[3];
+    int64_t z[3];
+    int64_t cross[3];
     for (unsigned r = 0; r < 3u; r++) {
-        unsigned r1 = vor__next(r), r2 = vor__prev(r);
+        unsigned r1 = vor__next(r);
+        unsigned r2 = vor__prev(r);
         z[r] = vor__mul_i32(v[r][0], v[r][0]) + vor__mul_i32(v[r][1], v[r][1]);
         /* the cross product of the two other rows: (b x c) for a */
         cross[r] = vor__mul_i32(v[r1][0], v[r2][1]) - vor__mul_i32(v[r1][1], v[r2][0]);
     }
     uint64_t sum = 0;
     for (unsigned r = 0; r < 3u; r++) {
-        unsigned r1 = vor__next(r), r2 = vor__prev(r);
+        unsigned r1 = vor__next(r);
+        unsigned r2 = vor__prev(r);
         int64_t gx = 2 * vor__mul_i64_i32(cross[r], v[r][0]) -
                      vor__mul_i64_i32(z[r1], v[r2][1]) + vor__mul_i64_i32(z[r2], v[r1][1]);
         int64_t gy = 2 * vor__mul_i64_i32(cross[r], v[r][1]) +
                      vor__mul_i64_i32(z[r1], v[r2][0]) - vor__mul_i64_i32(z[r2], v[r1][0]);
-        sum += (uint64_t)(gx < 0 ? -gx : gx) + (uint64_t)(gy < 0 ? -gy : gy);
+        sum += (uint64_t)((gx < 0) ? -gx : gx) + (uint64_t)((gy < 0) ? -gy : gy);
     }
     int bits = (int)vor__mw_bit_length(sum);
     if (k == 0) {
         return bits; /* exact */
     }
-    int scaled = 3 * k + bits, cut_error = 2 * m + k + 8;
+    int scaled = (3 * k) + bits;
+    int cut_error = (2 * m) + k + 8;
     return ((scaled > cut_error) ? scaled : cut_error) + 1;
 }
 
 /* floor(v / 2) for any sign (C's division truncates toward zero). */
 static int floor_half(int v)
 {
-    return (v >= 0) ? v / 2 : -((1 - v) / 2);
+    return (v >= 0) ? (v / 2) : -((1 - v) / 2);
 }
 
 /* The first-order incircle bound's exponent for moves of 2^E (above), or
  * a value past any limit when it does not apply (E > m - 3). */
 static int gradient_bound(int m, int Lg, int E)
 {
-    if (E > m - 3) {
+    if (E > (m - 3)) {
         return 1000;
     }
-    int first = Lg + E, rest = 2 * m + 2 * E + 7;
+    int first = Lg + E;
+    int rest = (2 * m) + (2 * E) + 7;
     return ((first > rest) ? first : rest) + 1;
 }
 
 /* The largest E with gradient_bound(m, Lg, E) <= T (it increases with E). */
 static int gradient_motion(int m, int Lg, int T)
 {
-    int E = T - 1 - Lg, square = floor_half(T - 8 - 2 * m);
+    int E = T - 1 - Lg;
+    int square = floor_half(T - 8 - (2 * m));
     E = (square < E) ? square : E;
-    return (m - 3 < E) ? m - 3 : E;
+    return ((m - 3) < E) ? (m - 3) : E;
 }
 
 /* The largest E whose change bound is at most 2^T (change_bound is
@@ -211,7 +218,7 @@ static int largest_motion(unsigned count, int m, int T)
         int low = T - 3 - m;
         return (low <= m) ? low : (T - 3) / 2;
     }
-    int low = T - 10 - 3 * m;
+    int low = T - 10 - (3 * m);
     return (low <= m) ? low : (T - 10) / 4;
 }
 
@@ -236,12 +243,12 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
 {
     int others = -1; /* largest exponent among the other valid sites */
     for (unsigned k = 0; k < count; k++) {
-        if (ids[k] != p && entry_valid(d, ids[k])) {
+        if ((ids[k] != p) && entry_valid(d, ids[k])) {
             int e = (int)(d->motion[ids[k]].stamp & VOR__BOX_MASK) - 1;
             others = (e > others) ? e : others;
         }
     }
-    if (others < 0 && !sizing) {
+    if ((others < 0) && !sizing) {
         return -1;
     }
     VOR_ASSERT(count >= 3u); /* at most one vertex of a triangle is infinite */
@@ -249,10 +256,13 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     unsigned b = (count == 3u) ? 0u : 3u;
     uint32_t spread = 0;
     int64_t v[3][2]; /* the vectors (all three set for an incircle test) */
-    for (unsigned k = 0, r = 0; k < count; k++) {
+    unsigned r = 0;
+    for (unsigned k = 0; k < count; k++) {
         /* |difference| of two int32 fits uint32 */
-        int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x, dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
-        uint32_t ax = (uint32_t)(dx < 0 ? -dx : dx), ay = (uint32_t)(dy < 0 ? -dy : dy);
+        int64_t dx = (int64_t)s[ids[k]].x - s[ids[b]].x;
+        int64_t dy = (int64_t)s[ids[k]].y - s[ids[b]].y;
+        uint32_t ax = (uint32_t)((dx < 0) ? -dx : dx);
+        uint32_t ay = (uint32_t)((dy < 0) ? -dy : dy);
         spread |= ax | ay; /* same bit length as the larger */
         if (k != b) {
             v[r][0] = dx;
@@ -265,11 +275,11 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
                                 : vor__incircle_bits(&s[ids[0]], &s[ids[1]], &s[ids[2]],
                                                      &s[ids[3]]));
     int Lg = (count == 4u) ? gradient_bits(v, m) : -1; /* -1: an orientation */
-    if (others >= 0 && (L < 2 || bound_of(count, m, Lg, others + 2) > L - 2)) {
+    if ((others >= 0) && ((L < 2) || bound_of(count, m, Lg, others + 2) > (L - 2))) {
         /* the others may no longer move freely: fixed where they are,
          * their boxes sized again at their next slow moves */
         for (unsigned k = 0; k < count; k++) {
-            if (ids[k] != p && entry_valid(d, ids[k])) {
+            if ((ids[k] != p) && entry_valid(d, ids[k])) {
                 struct vor__motion_entry *e = &d->motion[ids[k]];
                 e->stamp &= ~VOR__BOX_MASK;
                 e->x = 0;
@@ -289,7 +299,7 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     /* p's and the others' exponents e share one E = max e + 2: the bound
      * leaves a quarter of |P| when p's e is below E - 2, and p may share
      * the others' largest e, which the check above allowed, at no cost */
-    if (others + 2 > E) {
+    if ((others + 2) > E) {
         return others;
     }
     return E - 2;
@@ -305,10 +315,12 @@ static int conflict_limit(vor_t *d, uint32_t p, const vor_index_t v[3], vor_inde
     unsigned count = 0;
     for (unsigned k = 0; k < 3u; k++) {
         if (v[k] != VOR__INFINITE) {
-            ids[count++] = v[k];
+            ids[count] = v[k];
+            count++;
         }
     }
-    ids[count++] = t;
+    ids[count] = t;
+    count++;
     return predicate_limit(d, p, ids, count, sizing);
 }
 
@@ -319,11 +331,12 @@ static int min_limit(int a, int b)
 
 /* The largest exponent e <= limit whose box around c stays in int32
  * (the fast test's offsets then cannot wrap), < 0 when none. */
-static int in_range(int limit, int32_t c)
+static int in_range(int limit_in, int32_t c)
 {
+    int limit = limit_in;
     /* distance to the nearer end of int32 */
     uint32_t room = (c < 0) ? (uint32_t)((int64_t)c - INT32_MIN) : (uint32_t)(INT32_MAX - c);
-    while (limit >= 0 && (1u << limit) > room) {
+    while ((limit >= 0) && (1u << limit) > room) {
         limit--;
     }
     return limit;
@@ -373,7 +386,7 @@ static bool size_now(struct vor__motion_entry *e, const vor_point_t *from, uint3
         /* a box voided by a change of the triangles before this move
          * tells nothing: the level stays */
         bool current = (e->stamp >> 8) == epoch;
-        bool unused = current && e->x == from->x && e->y == from->y;
+        bool unused = current && (e->x == from->x) && (e->y == from->y);
         level = unused ? level + ((level < MAX_LEVEL) ? 1u : 0u) : current ? 0u : level;
         e->x = unused ? (int32_t)(1u << level) : 0;
         e->y = 1;
@@ -412,7 +425,7 @@ static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_
                                     : (uint32_t)from->y - (uint32_t)at->y;
     uint32_t step = (dx > dy) ? dx : dy;
     int need = (step <= 1u) ? 0 : (int)vor__mw_bit_length32(step - 1u);
-    need = sizing ? need : MAX_EXPONENT + 1;
+    need = sizing ? need : (MAX_EXPONENT + 1);
     /* p's star as star_still_delaunay walks it (vor__star_step, mesh.h):
      * per triangle its orientation, the test across its far edge, the
      * test across the spoke to the next triangle. */
@@ -420,7 +433,7 @@ static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_
     vor__star_step_t s;
     vor__star_begin(d, (vor_index_t)p, &s);
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (s.x != VOR__INFINITE && s.y != VOR__INFINITE) {
+        if (s.x != VOR__INFINITE && (s.y != VOR__INFINITE)) {
             const vor_index_t ids[4] = {(vor_index_t)p, s.x, s.y, 0};
             limit = min_limit(limit, predicate_limit(d, p, ids, 3u, limit >= need));
         }
@@ -445,5 +458,7 @@ static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_
         level = (level >> 5) + (((level >> 5) < MAX_LEVEL) ? 1u : 0u);
         entry->x = (int32_t)(1u << level);
         entry->stamp = level << 5;
+    } else {
+        /* no other case */
     }
 }

@@ -20,7 +20,8 @@
  * The level (0 to 5) is the backoff of a site whose boxes went unused
  * (motion.c, "The backoff"). */
 struct vor__motion_entry {
-    int32_t x, y;
+    int32_t x;
+    int32_t y;
     uint32_t stamp;
 };
 
@@ -42,8 +43,9 @@ static inline void vor__topology_changed(vor_t *d)
     d->motion_epoch = (d->motion_epoch + 1u) & VOR__EPOCH_MASK;
     if (d->motion_epoch == 0u) {
         d->motion_epoch = 1u;
-        for (uint32_t i = 0; d->motion != NULL && i < d->max_sites; i++) {
-            d->motion[i].x = d->motion[i].y = 0; /* the backoff starts again */
+        for (uint32_t i = 0; (d->motion != NULL) && (i < d->max_sites); i++) {
+            d->motion[i].x = 0;
+            d->motion[i].y = 0; /* the backoff starts again */
             d->motion[i].stamp = 0;
         }
     }
@@ -59,13 +61,14 @@ static inline bool vor__motion_fast(const vor_t *d, uint32_t site, int32_t x, in
         return false;
     }
     const struct vor__motion_entry *e = &d->motion[site];
-    uint32_t stamp = e->stamp, size = stamp & VOR__BOX_MASK;
-    if ((stamp >> 8) != d->motion_epoch || size == 0u) {
+    uint32_t stamp = e->stamp;
+    uint32_t size = stamp & VOR__BOX_MASK;
+    if (((stamp >> 8) != d->motion_epoch) || (size == 0u)) {
         return false;
     }
     uint32_t r = 1u << (size - 1u); /* e <= 30: 2r fits */
-    return (uint32_t)x - (uint32_t)e->x + r <= 2u * r &&
-           (uint32_t)y - (uint32_t)e->y + r <= 2u * r;
+    return (((uint32_t)x - (uint32_t)e->x + r) <= (2u * r)) &&
+           ((uint32_t)y - (uint32_t)e->y + r) <= (2u * r);
 }
 
 /* After a slow move of p from `from`, begun in `epoch`, that kept the

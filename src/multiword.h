@@ -83,8 +83,10 @@ typedef uint64_t vor__dlimb;
 VOR__INLINE uint64_t vor__mul_u32(uint32_t a, uint32_t b)
 {
 #if defined(__ARM_ARCH_6M__)
-    uint32_t al = a & 0xFFFFu, ah = a >> 16;
-    uint32_t bl = b & 0xFFFFu, bh = b >> 16;
+    uint32_t al = a & 0xFFFFu;
+    uint32_t ah = a >> 16;
+    uint32_t bl = b & 0xFFFFu;
+    uint32_t bh = b >> 16;
     uint32_t lo = al * bl;
     uint32_t hi = ah * bh;
     uint32_t mid1 = al * bh;
@@ -124,7 +126,7 @@ VOR__INLINE int64_t vor__mul_i64_i32(int64_t a, int32_t b)
     uint64_t ma = (a < 0) ? 0u - (uint64_t)a : (uint64_t)a;
     uint32_t mb = (b < 0) ? 0u - (uint32_t)b : (uint32_t)b;
     uint64_t m = vor__mul_u32((uint32_t)ma, mb) + (vor__mul_u32((uint32_t)(ma >> 32), mb) << 32);
-    return (int64_t)(((a < 0) != (b < 0)) ? 0u - m : m);
+    return (int64_t)(((a < 0) != (b < 0)) ? (0u - m) : m);
 #else
     return a * b;
 #endif
@@ -149,10 +151,14 @@ VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
     *high = (uint64_t)(p >> 64);
     return (uint64_t)p;
 #else
-    uint32_t a0 = (uint32_t)a, a1 = (uint32_t)(a >> 32);
-    uint32_t b0 = (uint32_t)b, b1 = (uint32_t)(b >> 32);
-    uint64_t p00 = vor__mul_u32(a0, b0), p01 = vor__mul_u32(a0, b1);
-    uint64_t p10 = vor__mul_u32(a1, b0), p11 = vor__mul_u32(a1, b1);
+    uint32_t a0 = (uint32_t)a;
+    uint32_t a1 = (uint32_t)(a >> 32);
+    uint32_t b0 = (uint32_t)b;
+    uint32_t b1 = (uint32_t)(b >> 32);
+    uint64_t p00 = vor__mul_u32(a0, b0);
+    uint64_t p01 = vor__mul_u32(a0, b1);
+    uint64_t p10 = vor__mul_u32(a1, b0);
+    uint64_t p11 = vor__mul_u32(a1, b1);
     /* three values below 2^32 each: no overflow */
     uint64_t mid = (p00 >> 32) + (uint32_t)p01 + (uint32_t)p10;
     *high = p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32);
@@ -167,7 +173,7 @@ VOR__INLINE uint64_t vor__mul_u64(uint64_t a, uint64_t b, uint64_t *high)
 VOR__INLINE int vor__mw_sign_of_products(int64_t p0, int64_t q0, int64_t p1, int64_t q1,
                                          int64_t p2, int64_t q2)
 {
-    vor__sdlimb sum = (vor__sdlimb)p0 * q0 + (vor__sdlimb)p1 * q1 + (vor__sdlimb)p2 * q2;
+    vor__sdlimb sum = ((vor__sdlimb)p0 * q0) + (vor__sdlimb)p1 * q1 + (vor__sdlimb)p2 * q2;
     return (sum > 0) - (sum < 0);
 }
 #endif
@@ -181,13 +187,16 @@ VOR__INLINE uint64_t vor__shl_u64(uint64_t v, unsigned s)
 #if VOR_LIMB_BITS == 64
     return v << s;
 #else
-    uint32_t lo = (uint32_t)v, hi = (uint32_t)(v >> 32);
+    uint32_t lo = (uint32_t)v;
+    uint32_t hi = (uint32_t)(v >> 32);
     if (s >= 32u) {
         hi = lo << (s - 32u);
         lo = 0;
     } else if (s != 0u) { /* lo >> 32 would be undefined */
         hi = (hi << s) | (lo >> (32u - s));
         lo <<= s;
+    } else {
+        /* s == 0: v as it is */
     }
     return ((uint64_t)hi << 32) | lo;
 #endif
@@ -198,13 +207,16 @@ VOR__INLINE uint64_t vor__shr_u64(uint64_t v, unsigned s)
 #if VOR_LIMB_BITS == 64
     return v >> s;
 #else
-    uint32_t lo = (uint32_t)v, hi = (uint32_t)(v >> 32);
+    uint32_t lo = (uint32_t)v;
+    uint32_t hi = (uint32_t)(v >> 32);
     if (s >= 32u) {
         lo = hi >> (s - 32u);
         hi = 0;
     } else if (s != 0u) {
         lo = (lo >> s) | (hi << (32u - s));
         hi >>= s;
+    } else {
+        /* s == 0: v as it is */
     }
     return ((uint64_t)hi << 32) | lo;
 #endif
@@ -216,7 +228,7 @@ VOR__INLINE void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 32
         r[i] = (vor__limb)v;
-        v = (i == 0) ? v >> 32 : 0u;
+        v = (i == 0) ? (v >> 32) : 0u;
 #else
         r[i] = (i == 0) ? v : 0u;
 #endif
@@ -269,14 +281,14 @@ VOR__INLINE void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
     for (size_t i = 0; i < nr; i++) {
         r[i] = 0;
     }
-    for (size_t i = 0; i < na && i < nr; i++) {
+    for (size_t i = 0; (i < na) && (i < nr); i++) {
         vor__limb carry = 0;
-        for (size_t j = 0; j < nb && i + j < nr; j++) {
+        for (size_t j = 0; (j < nb) && ((i + j) < nr); j++) {
             vor__dlimb t = vor__mul_limb(a[i], b[j]) + r[i + j] + carry;
             r[i + j] = (vor__limb)t;
             carry = (vor__limb)(t >> VOR_LIMB_BITS);
         }
-        if (i + nb < nr) {
+        if ((i + nb) < nr) {
             r[i + nb] = carry;
         }
     }
@@ -331,7 +343,7 @@ VOR__INLINE int vor__mw_sign64(int64_t v)
 /* |d| for the difference of two int32 values: at most 2^32 - 1. */
 VOR__ALWAYS_INLINE uint32_t vor__mw_magnitude(int64_t d)
 {
-    return (uint32_t)(d < 0 ? -d : d);
+    return (uint32_t)((d < 0) ? -d : d);
 }
 
 /* r = -r over n limbs (two's complement). */
@@ -368,7 +380,7 @@ VOR__INLINE void vor__mw_shl1(vor__limb *r, size_t n)
 /* r >>= 1 over n limbs, as an unsigned number. */
 VOR__INLINE void vor__mw_shr1(vor__limb *r, size_t n)
 {
-    for (size_t i = 0; i + 1 < n; i++) {
+    for (size_t i = 0; (i + 1) < n; i++) {
         r[i] = (vor__limb)((r[i] >> 1) | (r[i + 1] << (VOR_LIMB_BITS - 1)));
     }
     r[n - 1] >>= 1;
@@ -402,7 +414,8 @@ VOR__HELPER void vor__mw_times4(vor__limb *r, const vor__limb *a, size_t n)
  * registers when optimising. Every helper reads its operands before it
  * writes r, so r may be one of them. */
 typedef struct vor__mw_u128 {
-    uint64_t lo, hi;
+    uint64_t lo;
+    uint64_t hi;
 } vor__mw_u128_t;
 
 /* A signed value below 2^128 in magnitude, as sign and magnitude (neg is
@@ -437,7 +450,9 @@ VOR__ALWAYS_INLINE void vor__mw_u128_mul(vor__mw_u128_t *r, uint64_t a, uint64_t
 /* *r = *a * b, for a product known to be below 2^128. */
 VOR__ALWAYS_INLINE void vor__mw_u128_mul64(vor__mw_u128_t *r, const vor__mw_u128_t *a, uint64_t b)
 {
-    uint64_t a_hi = a->hi, high, ignored;
+    uint64_t a_hi = a->hi;
+    uint64_t high;
+    uint64_t ignored;
     uint64_t low = vor__mul_u64(a->lo, b, &high);
     r->lo = low;
     r->hi = high + vor__mul_u64(a_hi, b, &ignored);
@@ -448,7 +463,7 @@ VOR__ALWAYS_INLINE void vor__mw_u128_add(vor__mw_u128_t *r, const vor__mw_u128_t
                                          const vor__mw_u128_t *b)
 {
     uint64_t lo = a->lo + b->lo;
-    uint64_t hi = a->hi + b->hi + (lo < a->lo ? 1u : 0u);
+    uint64_t hi = a->hi + b->hi + ((lo < a->lo) ? 1u : 0u);
     r->lo = lo;
     r->hi = hi;
 }
@@ -456,7 +471,8 @@ VOR__ALWAYS_INLINE void vor__mw_u128_add(vor__mw_u128_t *r, const vor__mw_u128_t
 /* *acc += a * b, modulo 2^128: the product never leaves registers. */
 VOR__ALWAYS_INLINE void vor__mw_u128_add_product(vor__mw_u128_t *acc, uint64_t a, uint64_t b)
 {
-    uint64_t high, low = vor__mul_u64(a, b, &high);
+    uint64_t high;
+    uint64_t low = vor__mul_u64(a, b, &high);
     acc->lo += low;
     acc->hi += high + ((acc->lo < low) ? 1u : 0u);
 }
@@ -466,7 +482,7 @@ VOR__ALWAYS_INLINE void vor__mw_u128_sub(vor__mw_u128_t *r, const vor__mw_u128_t
                                          const vor__mw_u128_t *b)
 {
     uint64_t lo = a->lo - b->lo;
-    uint64_t hi = a->hi - b->hi - (a->lo < b->lo ? 1u : 0u);
+    uint64_t hi = a->hi - b->hi - ((a->lo < b->lo) ? 1u : 0u);
     r->lo = lo;
     r->hi = hi;
 }
@@ -487,10 +503,10 @@ VOR__ALWAYS_INLINE void vor__mw_u128_shr(vor__mw_u128_t *r, const vor__mw_u128_t
 VOR__ALWAYS_INLINE int vor__mw_u128_compare(const vor__mw_u128_t *a, const vor__mw_u128_t *b)
 {
     if (a->hi != b->hi) {
-        return a->hi < b->hi ? -1 : 1;
+        return (a->hi < b->hi) ? -1 : 1;
     }
     if (a->lo != b->lo) {
-        return a->lo < b->lo ? -1 : 1;
+        return (a->lo < b->lo) ? -1 : 1;
     }
     return 0;
 }
@@ -498,15 +514,16 @@ VOR__ALWAYS_INLINE int vor__mw_u128_compare(const vor__mw_u128_t *a, const vor__
 /* Bit length of v: the least k with v < 2^k, 0 for 0. One CLZ where the
  * core has it (Armv7-M and up); elsewhere by halving, not the builtin,
  * which becomes a runtime call on ARMv6-M and 32-bit RISC-V without Zbb. */
-VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v)
+VOR__INLINE unsigned vor__mw_bit_length32(uint32_t v_in)
 {
+    uint32_t v = v_in;
 #if defined(__GNUC__) && defined(__ARM_FEATURE_CLZ)
-    return (v == 0u) ? 0u : 32u - (unsigned)__builtin_clz(v);
+    return (v == 0u) ? 0u : (32u - (unsigned)__builtin_clz(v));
 #else
     unsigned k = 0;
     for (unsigned half = 16; half > 0u; half >>= 1) {
         /* (v >> half) != 0 as a comparison, which an analyser bounds v by */
-        if (v >= (1u << half)) {
+        if (v >= ((uint32_t)1 << half)) {
             v >>= half;
             k += half;
         }
@@ -534,7 +551,7 @@ VOR__INLINE unsigned vor__mw_bit_length_limbs(const vor__limb *a, size_t n)
 
 VOR__ALWAYS_INLINE int vor__mw_u128_is_zero(const vor__mw_u128_t *a)
 {
-    return a->lo == 0u && a->hi == 0u;
+    return (a->lo == 0u) && (a->hi == 0u);
 }
 
 /* r[0..n) = *v, zero-extended (n >= 128 bits of limbs). v by pointer: a
@@ -546,10 +563,10 @@ VOR__HELPER void vor__mw_from_u128(vor__limb *r, size_t n, const vor__mw_u128_t 
 {
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 64
-        r[i] = i >= 2u ? 0u : (i & 1u) ? v->hi : v->lo;
+        r[i] = (i >= 2u) ? 0u : (i & 1u) ? v->hi : v->lo;
 #else
         uint64_t half = (i & 2u) ? v->hi : v->lo;
-        r[i] = i >= 4u ? 0u : (i & 1u) ? (uint32_t)(half >> 32) : (uint32_t)half;
+        r[i] = (i >= 4u) ? 0u : (i & 1u) ? (uint32_t)(half >> 32) : (uint32_t)half;
 #endif
     }
 }
@@ -571,7 +588,7 @@ VOR__ALWAYS_INLINE void vor__mw_s128_product(vor__mw_s128_t *r, int64_t x, int64
 {
     uint64_t mag = vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(y));
     vor__mw_u128_set(&r->mag, mag);
-    r->neg = (x < 0) != (y < 0) && mag != 0u;
+    r->neg = (x < 0) != (y < 0) && (mag != 0u);
 }
 
 /* *r = *a + *b, for sums below 2^128 in magnitude. */
@@ -618,7 +635,7 @@ VOR__HELPER void vor__mw_i96_mul(vor__mw_i96_t *r, int64_t x, uint32_t y)
 /* *p > *q. */
 VOR__HELPER int vor__mw_i96_greater(const vor__mw_i96_t *p, const vor__mw_i96_t *q)
 {
-    return p->hi > q->hi || (p->hi == q->hi && p->lo > q->lo);
+    return (p->hi > q->hi) || ((p->hi == q->hi) && (p->lo > q->lo));
 }
 
 /* ------------------------------------------------------------ 192 bits */
@@ -633,7 +650,8 @@ typedef struct vor__mw_u192 {
 VOR__INLINE void vor__mw_u192_add_product(vor__mw_u192_t *acc, uint64_t a, uint64_t a_high,
                                           uint64_t b, uint64_t b_high)
 {
-    uint64_t w1, w0 = vor__mul_u64(a, b, &w1);
+    uint64_t w1;
+    uint64_t w0 = vor__mul_u64(a, b, &w1);
     uint64_t w2 = a_high & b_high;
     uint64_t add = (0u - a_high) & b;
     w1 += add;

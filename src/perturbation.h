@@ -158,7 +158,7 @@ static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
-    return v[0] != VOR__INFINITE && v[1] != VOR__INFINITE && v[2] != VOR__INFINITE &&
+    return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
            vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
 }
 
@@ -168,8 +168,9 @@ static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
 static inline bool vor__strictly_between(const vor_point_t *a, const vor_point_t *m,
                                          const vor_point_t *b)
 {
-    int sx = vor__mw_sign64((int64_t)b->x - a->x), sy = vor__mw_sign64((int64_t)b->y - a->y);
-    return vor__mw_sign64((int64_t)m->x - a->x) == sx && vor__mw_sign64((int64_t)m->y - a->y) == sy &&
+    int sx = vor__mw_sign64((int64_t)b->x - a->x);
+    int sy = vor__mw_sign64((int64_t)b->y - a->y);
+    return (vor__mw_sign64((int64_t)m->x - a->x) == sx) && vor__mw_sign64((int64_t)m->y - a->y) == sy &&
            vor__mw_sign64((int64_t)b->x - m->x) == sx && vor__mw_sign64((int64_t)b->y - m->y) == sy;
 }
 
@@ -209,7 +210,8 @@ static inline bool vor__true_edge(const vor_point_t *s, uint32_t a, uint32_t b, 
 static inline bool vor__true_neighbour_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
 {
     const vor_t *d = it->d;
-    uint32_t n, third;
+    uint32_t n;
+    uint32_t third;
     while (vor__fan_next(it, &n, &third)) {
         const vor__tri_t *after = &d->triangles[it->slot];
         unsigned j = vor__vertex_index(after, (vor_index_t)it->site);

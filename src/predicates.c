@@ -65,8 +65,10 @@ int vor_closer(vor_point_t q, vor_point_t a, vor_point_t b)
 int vor__closer_sign(const vor_point_t *q, const vor_point_t *a, const vor_point_t *b,
                      vor_stats_t *stats)
 {
-    int64_t ax = (int64_t)a->x - q->x, ay = (int64_t)a->y - q->y;
-    int64_t bx = (int64_t)b->x - q->x, by = (int64_t)b->y - q->y;
+    int64_t ax = (int64_t)a->x - q->x;
+    int64_t ay = (int64_t)a->y - q->y;
+    int64_t bx = (int64_t)b->x - q->x;
+    int64_t by = (int64_t)b->y - q->y;
     uint64_t m = vor__mw_bound(ax) | vor__mw_bound(ay) | vor__mw_bound(bx) | vor__mw_bound(by);
     if (m < 0x80000000u) {
         /* the differences fit int32: squares <= 2^62, sums of two <= 2^63
@@ -123,9 +125,12 @@ VOR__INLINE void clear_sums(vor__mw_u192_t sums[2])
 VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p,
                           unsigned u, unsigned v)
 {
-    int32_t px = (int32_t)d[p], py = (int32_t)d[p + 1];
-    int32_t ux = (int32_t)d[u], uy = (int32_t)d[u + 1];
-    int32_t vx = (int32_t)d[v], vy = (int32_t)d[v + 1];
+    int32_t px = (int32_t)d[p];
+    int32_t py = (int32_t)d[p + 1];
+    int32_t ux = (int32_t)d[u];
+    int32_t uy = (int32_t)d[u + 1];
+    int32_t vx = (int32_t)d[v];
+    int32_t vy = (int32_t)d[v + 1];
     uint64_t lift = (uint64_t)vor__mul_i32(px, px) + (uint64_t)vor__mul_i32(py, py);
     int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
     bool negative = cross < 0;
@@ -159,7 +164,7 @@ VOR__INLINE bool wide_cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy, uint
         return n1;
     }
     bool second = m2 > m1; /* opposite signs: the larger magnitude wins */
-    *low = second ? m2 - m1 : m1 - m2;
+    *low = second ? (m2 - m1) : (m1 - m2);
     *high = 0u;
     return second ? n2 : n1;
 }
@@ -169,8 +174,10 @@ VOR__INLINE bool wide_cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy, uint
 VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned p,
                            unsigned u, unsigned v)
 {
-    uint64_t lift_high, lift = wide_lift(d[p], d[p + 1], &lift_high);
-    uint64_t low, high;
+    uint64_t lift_high;
+    uint64_t lift = wide_lift(d[p], d[p + 1], &lift_high);
+    uint64_t low;
+    uint64_t high;
     bool negative = wide_cross(d[u], d[u + 1], d[v], d[v + 1], &low, &high);
     vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
 }
@@ -194,13 +201,14 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
 VOR__INLINE int32_t top_bits(int64_t v, unsigned t)
 {
     int32_t w = (int32_t)((uint32_t)v << t);
-    return (w >= 0) ? (w >> 17) : ~((~w) >> 17);
+    return (w >= 0) ? ((w >> 17)) : ~((~w) >> 17);
 }
 
 /* max(|x|, |y|) + 1 of a shifted difference pair (x, y), |x|, |y| <= 2^14. */
 VOR__INLINE uint32_t pair_size(const int32_t xy[2])
 {
-    uint32_t x = (uint32_t)vor__mw_magnitude(xy[0]), y = (uint32_t)vor__mw_magnitude(xy[1]);
+    uint32_t x = (uint32_t)vor__mw_magnitude(xy[0]);
+    uint32_t y = (uint32_t)vor__mw_magnitude(xy[1]);
     return ((x > y) ? x : y) + 1u;
 }
 
@@ -215,7 +223,9 @@ VOR__INLINE uint32_t pair_size(const int32_t xy[2])
  * decides. */
 static uint64_t point_bound(const int32_t shifted[6])
 {
-    uint32_t a = pair_size(&shifted[0]), b = pair_size(&shifted[2]), c = pair_size(&shifted[4]);
+    uint32_t a = pair_size(&shifted[0]);
+    uint32_t b = pair_size(&shifted[2]);
+    uint32_t c = pair_size(&shifted[4]);
     uint64_t sum = vor__mul_u32(a * b, 6u * c) + vor__mul_u32(a * a, b + c) +
                    vor__mul_u32(b * b, c + a) + vor__mul_u32(c * c, a + b);
     return sum << 2;
@@ -245,7 +255,7 @@ static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
                           top_bits(d[3], t), top_bits(d[4], t), top_bits(d[5], t)};
     int64_t det = vor__incircle_narrow(shifted);
     const int64_t error = ((int64_t)3 << 46) + ((int64_t)1 << 35);
-    if (det >= error || det <= -error) {
+    if ((det >= error) || (det <= -error)) {
         return vor__mw_sign64(det);
     }
     uint64_t size = (uint64_t)((det < 0) ? -det : det);
@@ -268,9 +278,12 @@ int vor__incircle_mid(const int64_t d[6], uint64_t bound)
      * 2^61 too (|u x v| <= |u| |v|), the products below 2^122 and their sum
      * fits a signed double limb: one sum, no accumulator chosen per sign.
      * Lifts up to 2^63 (differences near 2^31) take the two sums below. */
-    int32_t ax = (int32_t)d[0], ay = (int32_t)d[1];
-    int32_t bx = (int32_t)d[2], by = (int32_t)d[3];
-    int32_t cx = (int32_t)d[4], cy = (int32_t)d[5];
+    int32_t ax = (int32_t)d[0];
+    int32_t ay = (int32_t)d[1];
+    int32_t bx = (int32_t)d[2];
+    int32_t by = (int32_t)d[3];
+    int32_t cx = (int32_t)d[4];
+    int32_t cy = (int32_t)d[5];
     uint64_t la = (uint64_t)vor__mul_i32(ax, ax) + (uint64_t)vor__mul_i32(ay, ay);
     uint64_t lb = (uint64_t)vor__mul_i32(bx, bx) + (uint64_t)vor__mul_i32(by, by);
     uint64_t lc = (uint64_t)vor__mul_i32(cx, cx) + (uint64_t)vor__mul_i32(cy, cy);
@@ -283,7 +296,10 @@ int vor__incircle_mid(const int64_t d[6], uint64_t bound)
 #endif
     vor__mw_u128_t sums[2]; /* positive, negative */
     /* field by field: a structure copy is a memcpy call on Cortex-M0 */
-    sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+    sums[0].lo = 0u;
+    sums[0].hi = 0u;
+    sums[1].lo = 0u;
+    sums[1].hi = 0u;
     mid_term(sums, d, 0, 2, 4);
     mid_term(sums, d, 2, 4, 0);
     mid_term(sums, d, 4, 0, 2);
@@ -352,7 +368,7 @@ enum row_kind { ROW_POINT, ROW_DY, ROW_SQUARE, ROW_DX, ROW_KINDS };
 
 int vor_orient2d_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k)
 {
-    if (sites == NULL || i == j || j == k || i == k) {
+    if ((sites == NULL) || (i == j) || (j == k) || (i == k)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     int sign = vor__orient2d_exact(&sites[i], &sites[j], &sites[k], NULL);
@@ -367,8 +383,10 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     /* orient2d is invariant under rotation of its points: rotate the
      * largest index, the origin, to the last place, (u, v, w). The minor
      * is then det [[u - w], [v - w]], cofactor sign +1. */
-    uint32_t u = i, v = j, w = k;
-    if (u > v && u > w) { /* (j, k, i) */
+    uint32_t u = i;
+    uint32_t v = j;
+    uint32_t w = k;
+    if ((u > v) && (u > w)) { /* (j, k, i) */
         u = j;
         v = k;
         w = i;
@@ -376,6 +394,8 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
         u = k;
         v = i;
         w = j;
+    } else {
+        /* (i, j, k) already */
     }
     /* L: the rank-0 site (the smaller of u, v), H the other; s = +1 when
      * L is the minor's first row. The terms after the exact one (0), with
@@ -386,7 +406,8 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
      *   (DX, DY): s              (each coordinate relative to w)
      * No products, and no tiers: the first nonzero one is the sign. */
     bool l_first = u < v;
-    const vor_point_t *low = &sites[l_first ? u : v], *high = &sites[l_first ? v : u];
+    const vor_point_t *low = &sites[l_first ? u : v];
+    const vor_point_t *high = &sites[l_first ? v : u];
     const vor_point_t *origin = &sites[w];
     int sign = -vor__mw_sign64((int64_t)high->x - origin->x);
     if (sign == 0) {
@@ -415,25 +436,29 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsigned kinds)
 {
     int64_t e[3][2];
-    uint64_t c[3], c_high[3];
+    uint64_t c[3];
+    uint64_t c_high[3];
     bool c_negative[3];
     enum row_kind kind[3];
     for (size_t r = 0; r < 3; r++) {
         kind[r] = (enum row_kind)((kinds >> (2u * r)) & 3u);
         e[r][0] = (kind[r] == ROW_POINT) ? x[r] : (kind[r] == ROW_DX) ? 1 : 0;
         e[r][1] = (kind[r] == ROW_POINT) ? y[r] : (kind[r] == ROW_DY) ? 1 : 0;
-        uint64_t lift_high, lift = wide_lift(x[r], y[r], &lift_high);
+        uint64_t lift_high;
+        uint64_t lift = wide_lift(x[r], y[r], &lift_high);
         int64_t halved = (kind[r] == ROW_DY) ? y[r] : x[r]; /* of 2y or 2x */
         uint64_t twice = 2u * (uint64_t)vor__mw_magnitude(halved);
         c[r] = (kind[r] == ROW_POINT) ? lift : (kind[r] == ROW_SQUARE) ? 1u : twice;
         c_high[r] = (kind[r] == ROW_POINT) ? lift_high : 0u;
-        c_negative[r] = (kind[r] == ROW_DY || kind[r] == ROW_DX) && halved < 0;
+        c_negative[r] = ((kind[r] == ROW_DY) || (kind[r] == ROW_DX)) && (halved < 0);
     }
     vor__mw_u192_t sums[2]; /* positive, negative */
     clear_sums(sums);
     for (unsigned r = 0; r < 3; r++) {
-        unsigned u = next_of[r], v = next_of[u];
-        uint64_t low, high;
+        unsigned u = next_of[r];
+        unsigned v = next_of[u];
+        uint64_t low;
+        uint64_t high;
         bool negative = wide_cross(e[u][0], e[u][1], e[v][0], e[v][1], &low, &high);
         vor__mw_u192_add_product(&sums[negative != c_negative[r]], c[r], c_high[r], low, high);
     }
@@ -443,7 +468,7 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k,
                      uint32_t l)
 {
-    if (sites == NULL || i == j || i == k || i == l || j == k || j == l || k == l) {
+    if ((sites == NULL) || (i == j) || (i == k) || (i == l) || (j == k) || (j == l) || (k == l)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     int sign = vor__incircle_exact(&sites[i], &sites[j], &sites[k], &sites[l], NULL);
@@ -457,7 +482,8 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t 
 VOR__INLINE int64_t first_term_narrow(int32_t yl, int32_t xp, int32_t yp, int32_t xq,
                                       int32_t yq, int64_t by_y)
 {
-    int32_t zp = xp * xp + yp * yp, zq = xq * xq + yq * yq;
+    int32_t zp = (xp * xp) + (yp * yp);
+    int32_t zq = (xq * xq) + (yq * yq);
     int64_t by_z = vor__mul_i32(xp, zq) - vor__mul_i32(zp, xq);
     return vor__mul_i64_i32(by_y, 2 * yl) - by_z;
 }
@@ -494,7 +520,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
      * here, a lattice square's term being near 2^42; the others take the
      * 192-bit sums (term_sign), which cost a Cortex-M0 less flash than
      * 128-bit ones for this term alone. */
-    if (m < (1u << 14)) { /* s = 0: the entries, from their bounds */
+    if (m < ((uint32_t)1 << 14)) { /* s = 0: the entries, from their bounds */
         int32_t f[5] = {vor__mw_unbound(b[0], e[0]), vor__mw_unbound(b[1], e[1]),
                         vor__mw_unbound(b[2], e[2]), vor__mw_unbound(b[3], e[3]),
                         vor__mw_unbound(b[4], e[4])};
@@ -509,20 +535,22 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
     int64_t by_y = vor__mul_i32(f[1], f[4]) - vor__mul_i32(f[2], f[3]);
     int64_t filtered = first_term_narrow(f[0], f[1], f[2], f[3], f[4], by_y);
     const int64_t error = (int64_t)1 << 33;
-    bool decided = filtered >= error || filtered <= -error;
+    bool decided = (filtered >= error) || (filtered <= -error);
     *next = decided ? 3u : 1u;
     return decided ? vor__mw_sign64(filtered) : 0;
 #else
 #if VOR_LIMB_BITS == 32
     /* 32-bit limbs at -Os: the closed form in int64 only */
-    if (m >= (1u << 14)) {
+    if (m >= ((uint32_t)1 << 14)) {
         *next = 1u;
         return 0;
     }
 #endif
     /* the entries, from their bounds (below 2^14 at -Os, 2^31 here) */
-    int32_t yl = vor__mw_unbound(b[0], e[0]), xp = vor__mw_unbound(b[1], e[1]);
-    int32_t yp = vor__mw_unbound(b[2], e[2]), xq = vor__mw_unbound(b[3], e[3]);
+    int32_t yl = vor__mw_unbound(b[0], e[0]);
+    int32_t xp = vor__mw_unbound(b[1], e[1]);
+    int32_t yp = vor__mw_unbound(b[2], e[2]);
+    int32_t xq = vor__mw_unbound(b[3], e[3]);
     int32_t yq = vor__mw_unbound(b[4], e[4]);
     int64_t by_y = vor__mul_i32(xp, yq) - vor__mul_i32(yp, xq);
 #if VOR_LIMB_BITS == 64
@@ -531,7 +559,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
      * first term's products are below 2^95, 2^94 and 2^94: one signed
      * 128-bit sum. */
     int sign;
-    if (m < (1u << 14)) {
+    if (m < ((uint32_t)1 << 14)) {
         sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
     } else {
         uint64_t zp = (uint64_t)vor__mul_i32(xp, xp) + (uint64_t)vor__mul_i32(yp, yp);
@@ -574,9 +602,11 @@ VOR__INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32
 static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
                                      uint32_t k, uint32_t l, unsigned first)
 {
-    uint32_t ids[3], top;
+    uint32_t ids[3];
+    uint32_t top;
     bool swapped = move_top(i, j, k, l, ids, &top);
-    int64_t x[3], y[3];
+    int64_t x[3];
+    int64_t y[3];
     unsigned shifts = 0; /* 2 rank(r) for row r, in bits 4r .. 4r + 3 */
     for (size_t r = 0; r < 3; r++) {
         x[r] = (int64_t)sites[ids[r]].x - sites[top].x;
@@ -590,8 +620,9 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then.
      * The rows' kinds go to term_sign packed, 2 bits a row. */
     int sign = 0;
-    for (unsigned t = first; t < 64 && sign == 0; t++) {
-        unsigned kinds = 0, squares = 0;
+    for (unsigned t = first; (t < 64) && (sign == 0); t++) {
+        unsigned kinds = 0;
+        unsigned squares = 0;
         for (unsigned r = 0; r < 3; r++) {
             unsigned kind = (t >> ((shifts >> (4u * r)) & 15u)) & 3u;
             kinds |= kind << (2u * r);
@@ -613,7 +644,8 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
 static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
                                          uint32_t k, uint32_t l)
 {
-    uint32_t ids[3], top;
+    uint32_t ids[3];
+    uint32_t top;
     bool swapped = move_top(i, j, k, l, ids, &top);
     /* The first term (t = 1) nearly always decides: the smallest index's
      * row (at `low`, L) is ROW_DY (0, 1, 2y), the other two (P, Q, in row
@@ -624,7 +656,10 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
      * cocircular sites), |.| <= 2^14: int64 (first_term_narrow). In int32:
      * 128 bits with 64-bit limbs, a filter with 32-bit ones (first_terms).
      * Else term_sign's 192-bit sums, with the later terms. */
-    uint32_t il = ids[0], ip = ids[1], iq = ids[2]; /* L, P, Q */
+    /* L, P, Q */
+    uint32_t il = ids[0];
+    uint32_t ip = ids[1];
+    uint32_t iq = ids[2];
     bool odd = false;                               /* low == 1 */
     if (ip < il) {                                  /* L = ids[1] */
         il = ids[1];
@@ -637,7 +672,10 @@ static VOR__NOINLINE int first_two_terms(const vor_point_t *sites, uint32_t i, u
         iq = ids[1];
         odd = false;
     }
-    const vor_point_t *o = &sites[top], *pl = &sites[il], *pp = &sites[ip], *pq = &sites[iq];
+    const vor_point_t *o = &sites[top];
+    const vor_point_t *pl = &sites[il];
+    const vor_point_t *pp = &sites[ip];
+    const vor_point_t *pq = &sites[iq];
     int64_t e[5] = {(int64_t)pl->y - o->y, (int64_t)pp->x - o->x, (int64_t)pp->y - o->y,
                     (int64_t)pq->x - o->x, (int64_t)pq->y - o->y};
     unsigned next;
@@ -654,7 +692,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     VOR__COUNT(stats, incircle_perturbed);
     VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
     int sign = first_two_terms(sites, i, j, k, l);
-    if (sign == 1 || sign == -1) {
+    if ((sign == 1) || (sign == -1)) {
         return sign;
     }
     return later_terms(sites, i, j, k, l, (sign == 0) ? 1u : 3u);
@@ -681,20 +719,22 @@ int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b)
 int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
                     vor_stats_t *stats)
 {
-    if (sites == NULL || q == a || q == b || a == b) {
+    if ((sites == NULL) || (q == a) || (q == b) || (a == b)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
-    const vor_point_t *pq = &sites[q], *pa = &sites[a], *pb = &sites[b];
+    const vor_point_t *pq = &sites[q];
+    const vor_point_t *pa = &sites[a];
+    const vor_point_t *pb = &sites[b];
     int sign = vor__closer_sign(pq, pa, pb, stats);
     if (sign != 0) {
         return sign;
     }
     VOR__COUNT(stats, closer_perturbed);
     VOR_ASSERT(q != a && q != b && a != b);
-    if (a < q || b < q) {
+    if ((a < q) || (b < q)) {
         bool a_first = a < b;
         /* L = a: -2 (qy - ay), then +1; L = b: 2 (qy - by), then -1 */
-        int64_t coefficient = a_first ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
+        int64_t coefficient = a_first ? ((int64_t)pa->y - pq->y) : (int64_t)pq->y - pb->y;
         sign = vor__mw_sign64(coefficient);
         return (sign != 0) ? sign : (a_first ? 1 : -1);
     }
@@ -705,7 +745,7 @@ int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b
     }
     if (sign == 0) {
         bool a_middle = a < b;
-        int64_t coefficient = a_middle ? (int64_t)pa->y - pq->y : (int64_t)pq->y - pb->y;
+        int64_t coefficient = a_middle ? ((int64_t)pa->y - pq->y) : (int64_t)pq->y - pb->y;
         sign = vor__mw_sign64(coefficient);
         if (sign == 0) {
             sign = a_middle ? -1 : 1;
@@ -731,15 +771,17 @@ static unsigned wide_bit_length(vor__limb *v)
 static unsigned difference_bits(const vor__mw_u192_t sums[2])
 {
     bool swap = vor__mw_u192_compare(&sums[0], &sums[1]) < 0;
-    const vor__mw_u192_t *a = &sums[swap ? 1 : 0], *b = &sums[swap ? 0 : 1];
-    uint64_t borrow = 0, w[3];
+    const vor__mw_u192_t *a = &sums[swap ? 1 : 0];
+    const vor__mw_u192_t *b = &sums[swap ? 0 : 1];
+    uint64_t borrow = 0;
+    uint64_t w[3];
     for (unsigned i = 0; i < 3u; i++) {
         w[i] = a->w[i] - b->w[i] - borrow;
-        borrow = (a->w[i] < b->w[i] || (a->w[i] == b->w[i] && borrow != 0u)) ? 1u : 0u;
+        borrow = ((a->w[i] < b->w[i]) || ((a->w[i] == b->w[i]) && (borrow != 0u))) ? 1u : 0u;
     }
     for (unsigned i = 3; i-- > 0;) {
         if (w[i] != 0u) {
-            return 64u * i + vor__mw_bit_length(w[i]);
+            return (64u * i) + vor__mw_bit_length(w[i]);
         }
     }
     return 0;
@@ -747,16 +789,20 @@ static unsigned difference_bits(const vor__mw_u192_t sums[2])
 
 unsigned vor__orient2d_bits(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c)
 {
-    int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
-    int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
+    int64_t acx = (int64_t)a->x - c->x;
+    int64_t acy = (int64_t)a->y - c->y;
+    int64_t bcx = (int64_t)b->x - c->x;
+    int64_t bcy = (int64_t)b->y - c->y;
     if ((vor__mw_bound(acx) | vor__mw_bound(acy) | vor__mw_bound(bcx) | vor__mw_bound(bcy)) < 0x80000000u) {
         /* as the narrow tier: |det| < 2^63 */
         int64_t det = vor__mul_i32((int32_t)acx, (int32_t)bcy) -
                       vor__mul_i32((int32_t)acy, (int32_t)bcx);
-        return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
+        return vor__mw_bit_length((uint64_t)((det < 0) ? -det : det));
     }
     /* 33-bit differences: products < 2^66, det < 2^67 */
-    vor__limb e[4][VOR__WIDE_LIMBS], det[VOR__WIDE_LIMBS], other[VOR__WIDE_LIMBS];
+    vor__limb e[4][VOR__WIDE_LIMBS];
+    vor__limb det[VOR__WIDE_LIMBS];
+    vor__limb other[VOR__WIDE_LIMBS];
     vor__mw_from_i64(e[0], VOR__WIDE_LIMBS, acx);
     vor__mw_from_i64(e[1], VOR__WIDE_LIMBS, acy);
     vor__mw_from_i64(e[2], VOR__WIDE_LIMBS, bcx);
@@ -777,16 +823,19 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
     uint64_t bounds[6];
     vor__incircle_bounds(bounds, d);
     uint64_t m = bounds[0] | bounds[1] | bounds[2] | bounds[3] | bounds[4] | bounds[5];
-    if (m < (1u << 14)) { /* as the narrow tier: |det| < 2^60 */
+    if (m < ((uint32_t)1 << 14)) { /* as the narrow tier: |det| < 2^60 */
         int64_t det = vor__incircle_narrow_of(bounds, d);
-        return vor__mw_bit_length((uint64_t)(det < 0 ? -det : det));
+        return vor__mw_bit_length((uint64_t)((det < 0) ? -det : det));
     }
     /* the sign tiers' positive and negative sums; |det| is their
      * difference */
     if (m < 0x80000000u) {
         vor__mw_u128_t sums[2];
         /* field by field: a structure copy is a memcpy call on Cortex-M0 */
-        sums[0].lo = sums[0].hi = sums[1].lo = sums[1].hi = 0u;
+        sums[0].lo = 0u;
+        sums[0].hi = 0u;
+        sums[1].lo = 0u;
+        sums[1].hi = 0u;
         mid_term(sums, d, 0, 2, 4);
         mid_term(sums, d, 2, 4, 0);
         mid_term(sums, d, 4, 0, 2);

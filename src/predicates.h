@@ -64,8 +64,10 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
 VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
                                     const vor_point_t *c, vor_stats_t *stats)
 {
-    int64_t acx = (int64_t)a->x - c->x, acy = (int64_t)a->y - c->y;
-    int64_t bcx = (int64_t)b->x - c->x, bcy = (int64_t)b->y - c->y;
+    int64_t acx = (int64_t)a->x - c->x;
+    int64_t acy = (int64_t)a->y - c->y;
+    int64_t bcx = (int64_t)b->x - c->x;
+    int64_t bcy = (int64_t)b->y - c->y;
     uint64_t m = vor__mw_bound(acx) | vor__mw_bound(acy) | vor__mw_bound(bcx) |
                  vor__mw_bound(bcy);
     if (m < 0x80000000u) {
@@ -85,11 +87,17 @@ VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
  * int32, the three products <= 2^58 and their sum < 2^60 fit int64. */
 VOR__INLINE int64_t vor__incircle_narrow(const int32_t d[6])
 {
-    int32_t ax = d[0], ay = d[1], bx = d[2], by = d[3], cx = d[4], cy = d[5];
-    int32_t la = ax * ax + ay * ay, lb = bx * bx + by * by;
-    int32_t lc = cx * cx + cy * cy;
-    return vor__mul_i32(la, bx * cy - by * cx) + vor__mul_i32(lb, cx * ay - cy * ax) +
-           vor__mul_i32(lc, ax * by - ay * bx);
+    int32_t ax = d[0];
+    int32_t ay = d[1];
+    int32_t bx = d[2];
+    int32_t by = d[3];
+    int32_t cx = d[4];
+    int32_t cy = d[5];
+    int32_t la = (ax * ax) + (ay * ay);
+    int32_t lb = (bx * bx) + (by * by);
+    int32_t lc = (cx * cx) + (cy * cy);
+    return vor__mul_i32(la, (bx * cy) - (by * cx)) + vor__mul_i32(lb, (cx * ay) - (cy * ax)) +
+           vor__mul_i32(lc, (ax * by) - (ay * bx));
 }
 
 /* The bounds of the six differences d (vor__mw_bound). The caller ORs
@@ -125,7 +133,7 @@ VOR__INLINE int vor__incircle_exact(const vor_point_t *a, const vor_point_t *b,
     uint64_t bounds[6];
     vor__incircle_bounds(bounds, d);
     uint64_t m = bounds[0] | bounds[1] | bounds[2] | bounds[3] | bounds[4] | bounds[5];
-    if (m < (1u << 14)) {
+    if (m < ((uint32_t)1 << 14)) {
         VOR__COUNT(stats, incircle[VOR_TIER_NARROW]);
         return vor__mw_sign64(vor__incircle_narrow_of(bounds, d));
     }

@@ -39,7 +39,7 @@ int vor_triangles_begin(vor_triangle_iter_t *it, const vor_t *d)
 int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
 {
     /* a zeroed iterator, or one begun on no diagram, is at its end */
-    if (it == NULL || it->d == NULL || ids == NULL) {
+    if ((it == NULL) || (it->d == NULL) || (ids == NULL)) {
         return 0;
     }
     const vor_t *d = it->d;
@@ -51,7 +51,7 @@ int vor_triangles_next(vor_triangle_iter_t *it, uint32_t ids[3])
     for (uint32_t s = vor__next_used_slot(d, it->next_slot); s < end;
          s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *t = &d->triangles[s];
-        if (VOR__PREFETCHING && s + 4u < end) {
+        if (VOR__PREFETCHING && ((s + 4u) < end)) {
             /* the sites of a triangle ahead, fetched while this one's are
              * compared: site ids are input positions, anywhere in memory */
             vor_index_t ahead[3];
@@ -79,7 +79,7 @@ int vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site
     if (it == NULL) {
         return VOR_ERR_ARG;
     }
-    if (d == NULL || !vor__site_in_mesh(d, site)) {
+    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         vor__fan_begin(it, NULL, site); /* closed */
         return VOR_ERR_ARG;
     }
@@ -90,7 +90,7 @@ int vor_neighbours_begin(vor_neighbour_iter_t *it, const vor_t *d, uint32_t site
 int vor_neighbours_next(vor_neighbour_iter_t *it, uint32_t *neighbour)
 {
     /* a zeroed iterator, or one begun on no diagram, is at its end */
-    if (it == NULL || it->d == NULL || neighbour == NULL) {
+    if ((it == NULL) || (it->d == NULL) || (neighbour == NULL)) {
         return 0;
     }
     return vor__true_neighbour_next(it, neighbour) ? 1 : 0;
@@ -116,11 +116,13 @@ static uint32_t next_on_circle(const vor_t *d, const vor_point_t *q, uint32_t be
                                uint32_t current)
 {
     vor_neighbour_iter_t it;
-    uint32_t n, third, next = current;
+    uint32_t n;
+    uint32_t third;
+    uint32_t next = current;
     vor__fan_begin(&it, d, current);
     while (vor__fan_next(&it, &n, &third)) {
-        if (vor__closer_sign(q, &d->sites[n], &d->sites[best], NULL) == 0 &&
-            (next == current || before(d, q, current, n, next))) {
+        if ((vor__closer_sign(q, &d->sites[n], &d->sites[best], NULL) == 0) &&
+            ((next == current) || before(d, q, current, n, next))) {
             next = n;
         }
     }
@@ -160,12 +162,12 @@ static uint32_t walk_to_nearest(const vor_t *d, const vor_point_t *q, uint32_t f
 
 int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site)
 {
-    if (d == NULL || site == NULL) {
+    if ((d == NULL) || (site == NULL)) {
         return VOR_ERR_ARG;
     }
     uint32_t best;
     int err = query_start(d, q.x, q.y, hint, &best);
-    if (err != VOR_OK || d->vertex_count == 1u) {
+    if ((err != VOR_OK) || (d->vertex_count == 1u)) {
         if (err == VOR_OK) {
             *site = best; /* untouched on failure: not even rewritten */
         }
@@ -179,7 +181,7 @@ int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site)
      * neighbours. The walk visits each circle site once. */
     uint32_t smallest = best;
     uint32_t current = tie ? next_on_circle(d, &q, best, best) : best;
-    for (uint32_t steps = 0; current != best && steps < d->vertex_count; steps++) {
+    for (uint32_t steps = 0; (current != best) && (steps < d->vertex_count); steps++) {
         smallest = (current < smallest) ? current : smallest;
         current = next_on_circle(d, &q, best, current);
     }
@@ -192,7 +194,7 @@ int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site)
 static bool ranks_before(const vor_t *d, const vor_point_t *q, uint32_t a, uint32_t b)
 {
     int c = vor__closer_sign(q, &d->sites[a], &d->sites[b], NULL);
-    return c < 0 || (c == 0 && a < b);
+    return (c < 0) || ((c == 0) && (a < b));
 }
 
 static bool listed(const uint32_t *list, uint32_t count, uint32_t site)
@@ -218,7 +220,7 @@ static bool listed(const uint32_t *list, uint32_t count, uint32_t site)
 int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
                   uint32_t *nearest, uint32_t *found)
 {
-    if (d == NULL || (nearest == NULL && k > 0u) || found == NULL) {
+    if ((d == NULL) || ((nearest == NULL) && (k > 0u)) || (found == NULL)) {
         return VOR_ERR_ARG;
     }
     uint32_t best;
@@ -226,7 +228,7 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
     if (err != VOR_OK) {
         return err;
     }
-    if (k == 0u || d->vertex_count == 1u) {
+    if ((k == 0u) || (d->vertex_count == 1u)) {
         if (k > 0u) {
             nearest[0] = best;
         }
@@ -238,12 +240,14 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
 
     /* the nearest circle, by id: each round walks it once for the smallest
      * id above the last one listed (at most vertex_count steps a round) */
-    uint32_t count = 0, last = 0;
+    uint32_t count = 0;
+    uint32_t last = 0;
     bool any = false;
     while (count < k) {
-        uint32_t pick = VOR__NONE, current = best;
+        uint32_t pick = VOR__NONE;
+        uint32_t current = best;
         for (uint32_t steps = 0; steps <= d->vertex_count; steps++) {
-            if ((!any || current > last) && (pick == VOR__NONE || current < pick)) {
+            if ((!any || (current > last)) && (pick == VOR__NONE || (current < pick))) {
                 pick = current;
             }
             current = tie ? next_on_circle(d, &q, best, current) : best;
@@ -261,7 +265,9 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
 
     /* then the best unlisted neighbour of a listed site, each round */
     while (count < k) {
-        uint32_t pick = VOR__NONE, n, third;
+        uint32_t pick = VOR__NONE;
+        uint32_t n;
+        uint32_t third;
         for (uint32_t i = 0; i < count; i++) {
             vor_neighbour_iter_t it;
             vor__fan_begin(&it, d, nearest[i]);
@@ -286,7 +292,7 @@ int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t c
     if (config != VOR_CONFIG_FINGERPRINT) {
         return VOR_ERR_CONFIG; /* *tracker may be smaller than this library's */
     }
-    if (tracker == NULL || d == NULL) {
+    if ((tracker == NULL) || (d == NULL)) {
         return VOR_ERR_ARG;
     }
     tracker->d = d;
@@ -312,26 +318,30 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
     tracker->at.x = s->x;
     tracker->at.y = s->y;
     const int64_t reach = INT32_MAX;
-    tracker->low.x = (int32_t)((s->x >= 0) ? s->x - reach : INT32_MIN);
-    tracker->low.y = (int32_t)((s->y >= 0) ? s->y - reach : INT32_MIN);
-    tracker->high.x = (int32_t)((s->x >= 0) ? INT32_MAX : s->x + reach);
-    tracker->high.y = (int32_t)((s->y >= 0) ? INT32_MAX : s->y + reach);
+    tracker->low.x = (int32_t)((s->x >= 0) ? (s->x - reach) : INT32_MIN);
+    tracker->low.y = (int32_t)((s->y >= 0) ? (s->y - reach) : INT32_MIN);
+    tracker->high.x = (int32_t)((s->x >= 0) ? INT32_MAX : (s->x + reach));
+    tracker->high.y = (int32_t)((s->y >= 0) ? INT32_MAX : (s->y + reach));
 
     vor_neighbour_iter_t it;
-    uint32_t n, third, edges = 0;
+    uint32_t n;
+    uint32_t third;
+    uint32_t edges = 0;
     vor__fan_begin(&it, d, site);
     while (vor__fan_next(&it, &n, &third)) {
-        int64_t dx = (int64_t)d->sites[n].x - s->x, dy = (int64_t)d->sites[n].y - s->y;
+        int64_t dx = (int64_t)d->sites[n].x - s->x;
+        int64_t dy = (int64_t)d->sites[n].y - s->y;
         const int64_t limit = (int64_t)1 << 30;
-        if (edges == VOR_TRACKER_EDGES || dx <= -limit || dx >= limit || dy <= -limit ||
-            dy >= limit) {
+        if ((edges == VOR_TRACKER_EDGES) || (dx <= -limit) || (dx >= limit) || (dy <= -limit) ||
+            (dy >= limit)) {
             return; /* not cached: vor_nearest answers */
         }
         /* the cell the point moves into next is one of these: its first
          * triangle (the neighbour's home slot) is fetched meanwhile */
         VOR__PREFETCH(&d->triangles[n]);
         tracker->neighbour[edges] = (vor_index_t)n;
-        vor_tracker_edge_t *e = &tracker->edge[edges++];
+        vor_tracker_edge_t *e = &tracker->edge[edges];
+        edges++;
         e->twice_dx = (int32_t)(2 * dx);
         e->twice_dy = (int32_t)(2 * dy);
         e->square = vor__mul_i32((int32_t)dx, (int32_t)dx) + vor__mul_i32((int32_t)dy, (int32_t)dy);
@@ -347,7 +357,7 @@ static VOR__NOINLINE int track_by_walk(vor_tracker_t *tracker, int32_t x, int32_
                                        uint32_t hint, uint32_t *site)
 {
     const vor_t *d = tracker->d;
-    bool current = tracker->revision == d->revision && tracker->site != VOR_NO_HINT;
+    bool current = (tracker->revision == d->revision) && (tracker->site != VOR_NO_HINT);
     uint32_t answer;
     vor_point_t q = {x, y};
     int err = vor_nearest(d, q, current ? hint : VOR_NO_HINT, &answer);
@@ -361,18 +371,21 @@ static VOR__NOINLINE int track_by_walk(vor_tracker_t *tracker, int32_t x, int32_
 
 int vor_track(vor_tracker_t *tracker, vor_point_t q, uint32_t *site)
 {
-    if (tracker == NULL || tracker->d == NULL || site == NULL) {
+    if ((tracker == NULL) || (tracker->d == NULL) || (site == NULL)) {
         return VOR_ERR_ARG;
     }
-    int32_t x = q.x, y = q.y;
-    if (tracker->cached && tracker->revision == tracker->d->revision &&
-        x >= tracker->low.x && x <= tracker->high.x && y >= tracker->low.y &&
-        y <= tracker->high.y) {
-        int32_t ex = x - tracker->at.x, ey = y - tracker->at.y;
-        const vor_tracker_edge_t *edge = tracker->edge, *end = edge + tracker->edges;
+    int32_t x = q.x;
+    int32_t y = q.y;
+    if (tracker->cached && (tracker->revision == tracker->d->revision) &&
+        (x >= tracker->low.x) && (x <= tracker->high.x) && (y >= tracker->low.y) &&
+        (y <= tracker->high.y)) {
+        int32_t ex = x - tracker->at.x;
+        int32_t ey = y - tracker->at.y;
+        const vor_tracker_edge_t *edge = tracker->edge;
+        const vor_tracker_edge_t *end = edge + tracker->edges;
         /* strictly inside the cell: every neighbour strictly farther */
-        while (edge != end &&
-               edge->square > vor__mul_i32(ex, edge->twice_dx) + vor__mul_i32(ey, edge->twice_dy)) {
+        while ((edge != end) &&
+               (edge->square > vor__mul_i32(ex, edge->twice_dx) + vor__mul_i32(ey, edge->twice_dy))) {
             edge++;
         }
         if (edge == end) {
@@ -396,7 +409,9 @@ int vor_track(vor_tracker_t *tracker, vor_point_t q, uint32_t *site)
 /* vor__conflicts with the true predicates, uncounted. */
 static bool exact_conflict(const vor_t *d, const vor__tri_t *t, uint32_t p)
 {
-    vor_index_t v0 = vor__vertex(t, 0), v1 = vor__vertex(t, 1), v2 = vor__vertex(t, 2);
+    vor_index_t v0 = vor__vertex(t, 0);
+    vor_index_t v1 = vor__vertex(t, 1);
+    vor_index_t v2 = vor__vertex(t, 2);
     if (v0 == VOR__INFINITE) {
         return vor_orient2d_sos(d->sites, v1, v2, p) > 0;
     }
@@ -423,7 +438,7 @@ static int violation(vor_violation_t *out, enum vor_check check, uint32_t triang
 static bool slot_in_use(const vor_t *d, uint32_t slot)
 {
     if (slot < d->max_sites) {
-        return slot < d->site_count && !vor__slot_empty(&d->triangles[slot]);
+        return (slot < d->site_count) && !vor__slot_empty(&d->triangles[slot]);
     }
     return slot < vor__used_slots_end(d);
 }
@@ -432,11 +447,12 @@ static bool slot_in_use(const vor_t *d, uint32_t slot)
  * fan does not close within `limit` steps or leaves the site. */
 static uint32_t fan_size(const vor_t *d, uint32_t start, vor_index_t site, uint32_t limit)
 {
-    uint32_t slot = start, count = 0;
+    uint32_t slot = start;
+    uint32_t count = 0;
     do {
         const vor__tri_t *t = &d->triangles[slot];
         unsigned i = vor__vertex_index(t, site);
-        if (i == 3u || count == limit) {
+        if ((i == 3u) || (count == limit)) {
             return 0;
         }
         count++;
@@ -449,8 +465,9 @@ static uint32_t fan_size(const vor_t *d, uint32_t start, vor_index_t site, uint3
  * clockwise around b from the reported triangle at `slot` that has the
  * boundary edge a -> b; VOR__INFINITE if the turn does not end within
  * vertex_count + 1 steps (only on a broken mesh). */
-static uint32_t boundary_after(const vor_t *d, uint32_t slot, vor_index_t b)
+static uint32_t boundary_after(const vor_t *d, uint32_t slot_in, vor_index_t b)
 {
+    uint32_t slot = slot_in;
     for (uint32_t step = 0; step <= d->vertex_count; step++) {
         const vor__tri_t *t = &d->triangles[slot];
         unsigned j = vor__vertex_index(t, b);
@@ -473,7 +490,9 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
 {
     const vor_point_t *s = d->sites;
     const vor__tri_t *tri = d->triangles;
-    uint32_t end = vor__used_slots_end(d), reported = 0, boundary = 0;
+    uint32_t end = vor__used_slots_end(d);
+    uint32_t reported = 0;
+    uint32_t boundary = 0;
     for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
          slot = vor__next_used_slot(d, slot + 1u)) {
         const vor__tri_t *t = &tri[slot];
@@ -492,16 +511,17 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
             }
             /* a boundary edge a -> b: the boundary turns left (or goes
              * straight on, past a hull site) at b */
-            vor_index_t a = v[vor__next(i)], b = v[vor__prev(i)];
+            vor_index_t a = v[vor__next(i)];
+            vor_index_t b = v[vor__prev(i)];
             uint32_t c = boundary_after(d, slot, b);
-            if (c == VOR__INFINITE || c == a || vor__orient2d_sign(&s[a], &s[b], &s[c]) < 0) {
+            if (c == VOR__INFINITE || (c == a) || vor__orient2d_sign(&s[a], &s[b], &s[c]) < 0) {
                 return violation(out, VOR_CHECK_TRUE_OUTPUT, slot, b);
             }
             boundary++;
         }
     }
     uint32_t v = d->vertex_count;
-    if (reported != 0u && reported + boundary + 2u != 2u * v) {
+    if ((reported != 0u) && (reported + boundary + 2u) != (2u * v)) {
         return violation(out, VOR_CHECK_TRUE_OUTPUT, 0, v);
     }
     uint32_t ends = 0;
@@ -510,17 +530,18 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
             continue;
         }
         vor_neighbour_iter_t it;
-        uint32_t n, degree = 0;
+        uint32_t n;
+        uint32_t degree = 0;
         vor__fan_begin(&it, d, site);
         while (vor__true_neighbour_next(&it, &n)) {
             degree++;
         }
-        if (degree == 0u || (reported == 0u && degree > 2u)) {
+        if ((degree == 0u) || ((reported == 0u) && (degree > 2u))) {
             return violation(out, VOR_CHECK_TRUE_OUTPUT, site, site);
         }
         ends += degree;
     }
-    if (ends != ((reported != 0u) ? 3u * reported + boundary : 2u * (v - 1u))) {
+    if (ends != ((reported != 0u) ? ((3u * reported) + boundary) : (2u * (v - 1u)))) {
         return violation(out, VOR_CHECK_TRUE_OUTPUT, 0, v);
     }
     return VOR_OK;
@@ -529,7 +550,7 @@ static int check_true_output(const vor_t *d, vor_violation_t *out)
 /* Counts: the used slots are exactly 2v - 2 (none below two sites). */
 static int check_counts(const vor_t *d, vor_violation_t *out)
 {
-    if (d->vertex_count > d->site_count || d->site_count > d->max_sites) {
+    if ((d->vertex_count > d->site_count) || (d->site_count > d->max_sites)) {
         return violation(out, VOR_CHECK_COUNTS, 0, d->vertex_count);
     }
     if (d->vertex_count < 2u) {
@@ -540,7 +561,7 @@ static int check_counts(const vor_t *d, vor_violation_t *out)
         present += vor__slot_empty(&d->triangles[s]) ? 0u : 1u;
     }
     uint32_t used = present + (vor__used_slots_end(d) - d->max_sites);
-    if (used != vor__triangle_count(d->vertex_count) || present != d->vertex_count) {
+    if (used != vor__triangle_count(d->vertex_count) || (present != d->vertex_count)) {
         return violation(out, VOR_CHECK_COUNTS, 0, d->vertex_count);
     }
     return VOR_OK;
@@ -556,7 +577,7 @@ static int check_vertices(const vor_t *d, vor_violation_t *out)
         for (unsigned i = 0; i < 3u; i++) {
             vor_index_t v = vor__vertex(t, i);
             if (v != VOR__INFINITE &&
-                (v >= d->site_count || vor__slot_empty(&tri[v]))) {
+                ((v >= d->site_count) || vor__slot_empty(&tri[v]))) {
                 return violation(out, VOR_CHECK_VERTICES, s, v);
             }
         }
@@ -577,14 +598,16 @@ static int check_neighbours(const vor_t *d, vor_violation_t *out)
         const vor__tri_t *t = &tri[s];
         for (unsigned i = 0; i < 3u; i++) {
             vor_index_t u = t->n[i];
-            vor_index_t a = vor__vertex(t, vor__next(i)), b = vor__vertex(t, vor__prev(i));
+            vor_index_t a = vor__vertex(t, vor__next(i));
+            vor_index_t b = vor__vertex(t, vor__prev(i));
             if (u == VOR__NONE || !slot_in_use(d, u)) {
                 return violation(out, VOR_CHECK_NEIGHBOURS, s, a);
             }
             const vor__tri_t *o = &tri[u];
-            unsigned ia = vor__vertex_index(o, a), ib = vor__vertex_index(o, b);
+            unsigned ia = vor__vertex_index(o, a);
+            unsigned ib = vor__vertex_index(o, b);
             /* in o the edge runs b -> a, and o's neighbour across it is t */
-            if (ia == 3u || ib == 3u || vor__next(ib) != ia ||
+            if ((ia == 3u) || (ib == 3u) || vor__next(ib) != ia ||
                 o->n[vor__next(ia)] != s) {
                 return violation(out, VOR_CHECK_NEIGHBOURS, s, a);
             }
@@ -613,11 +636,11 @@ static int check_fans(const vor_t *d, vor_violation_t *out)
         corners += fan;
     }
     uint32_t ghost = vor__next_used_slot(d, 0);
-    while (ghost < end && !vor__is_ghost(&tri[ghost])) {
+    while ((ghost < end) && !vor__is_ghost(&tri[ghost])) {
         ghost = vor__next_used_slot(d, ghost + 1u);
     }
     corners += (ghost < end) ? fan_size(d, ghost, VOR__INFINITE, triangles) : 0u;
-    if (corners != 3u * triangles) {
+    if (corners != (3u * triangles)) {
         return violation(out, VOR_CHECK_SITES, 0, VOR__INFINITE);
     }
     return VOR_OK;
@@ -629,18 +652,18 @@ static int check_buckets(const vor_t *d, vor_violation_t *out)
     const vor__tri_t *tri = d->triangles;
     for (uint32_t s = 0; s < d->site_count; s++) {
         const vor_point_t *p = &d->sites[s];
-        if (!vor__slot_empty(&tri[s]) && (p->x < d->low.x || p->x > d->high.x ||
-                                          p->y < d->low.y || p->y > d->high.y)) {
+        if (!vor__slot_empty(&tri[s]) && ((p->x < d->low.x) || (p->x > d->high.x) ||
+                                          (p->y < d->low.y) || (p->y > d->high.y))) {
             return violation(out, VOR_CHECK_BUCKETS, s, s);
         }
     }
     uint64_t buckets = vor__mul_u32(d->bucket_columns, d->bucket_rows);
-    if (buckets == 0u || buckets > VOR_BUCKETS(d->max_sites)) {
+    if ((buckets == 0u) || (buckets > VOR_BUCKETS(d->max_sites))) {
         return violation(out, VOR_CHECK_BUCKETS, 0, VOR__INFINITE);
     }
     for (uint32_t b = 0; b < (uint32_t)buckets; b++) {
         vor_index_t s = d->buckets[b];
-        if (s >= d->site_count || vor__slot_empty(&tri[s])) {
+        if ((s >= d->site_count) || vor__slot_empty(&tri[s])) {
             return violation(out, VOR_CHECK_BUCKETS, b, s);
         }
     }
@@ -690,7 +713,7 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
         return VOR_ERR_ARG;
     }
     int err = check_counts(d, out);
-    if (err != VOR_OK || d->vertex_count < 2u) {
+    if ((err != VOR_OK) || (d->vertex_count < 2u)) {
         return err;
     }
     err = check_vertices(d, out);

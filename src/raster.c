@@ -20,7 +20,7 @@
 static void fill16(uint16_t *px, uint32_t from, uint32_t to, uint16_t value)
 {
     uint32_t i = from;
-    for (; i + 4u <= to; i += 4u) {
+    for (; (i + 4u) <= to; i += 4u) {
         px[i] = value;
         px[i + 1u] = value;
         px[i + 2u] = value;
@@ -53,12 +53,12 @@ static void write_label8(const vor_raster_output_t *out, const vor__run_t *runs,
 static void write_16(const vor_raster_output_t *out, const vor__run_t *runs, uint32_t count,
                      void *dst)
 {
-    const uint16_t *palette = out->kind == VOR_RASTER_RGB565 ? out->palette565 : NULL;
+    const uint16_t *palette = (out->kind == VOR_RASTER_RGB565) ? out->palette565 : NULL;
     uint16_t *px = dst;
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         uint32_t site = runs[r].site;
-        fill16(px, i, runs[r].end, palette != NULL ? palette[site] : (uint16_t)site);
+        fill16(px, i, runs[r].end, (palette != NULL) ? palette[site] : (uint16_t)site);
         i = runs[r].end;
     }
 }
@@ -83,12 +83,14 @@ static void write_rgb888(const vor_raster_output_t *out, const vor__run_t *runs,
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {
         uint32_t colour = out->palette888[runs[r].site];
-        uint8_t red = (uint8_t)(colour >> 16), green = (uint8_t)(colour >> 8),
+        uint8_t red = (uint8_t)(colour >> 16);
+        uint8_t green = (uint8_t)(colour >> 8);
+        uint8_t 
                 blue = (uint8_t)colour;
         for (; i < runs[r].end; i++) {
             px[3u * i] = red;
-            px[3u * i + 1u] = green;
-            px[3u * i + 2u] = blue;
+            px[(3u * i) + 1u] = green;
+            px[(3u * i) + 2u] = blue;
         }
     }
 }
@@ -103,25 +105,26 @@ static void write_boundary(uint32_t width, const vor__run_t *runs, uint32_t coun
         px[i] = 0;
     }
     /* right neighbour: the last pixel of every run but the final one */
-    for (uint32_t r = 0; r + 1u < count; r++) {
+    for (uint32_t r = 0; (r + 1u) < count; r++) {
         px[runs[r].end - 1u] = 1;
     }
     /* lower neighbour: walk both rows' runs together */
     if (below != NULL) {
-        uint32_t r = 0, s = 0;
+        uint32_t r = 0;
+        uint32_t s = 0;
         i = 0;
         while (i < width) { /* each step ends a run of one row */
-            uint32_t end = runs[r].end < below[s].end ? runs[r].end : below[s].end;
+            uint32_t end = (runs[r].end < below[s].end) ? runs[r].end : below[s].end;
             if (runs[r].site != below[s].site) {
                 for (; i < end; i++) {
                     px[i] = 1;
                 }
             }
             i = end;
-            if (runs[r].end == end && r + 1u < count) {
+            if ((runs[r].end == end) && (r + 1u) < count) {
                 r++;
             }
-            if (below[s].end == end && s + 1u < below_count) {
+            if ((below[s].end == end) && (s + 1u) < below_count) {
                 s++;
             }
         }
@@ -146,6 +149,8 @@ static void write_row(const vor_raster_output_t *out, uint32_t width, const vor_
         write_boundary(width, runs, count, below, below_count, dst);
     } else if (out->kind != VOR_RASTER_DISTANCE) {
         writers[out->kind](out, runs, count, dst);
+    } else {
+        /* no other case */
     }
 }
 
@@ -167,7 +172,8 @@ static void bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32
     b->row_bytes = row_bytes;
     b->rows[0] = rows[0];
     b->rows[1] = rows[1];
-    b->counts[0] = b->counts[1] = 0;
+    b->counts[0] = 0;
+    b->counts[1] = 0;
     b->cur = 0;
     b->next = 0;
     b->written = 0;
@@ -192,12 +198,12 @@ uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
             }
         }
     }
-    if (b->hold) {
+    if (b->hold != 0) {
         /* row j - 1 is written now that the row below it is known */
         uint32_t held = b->cur ^ 1u;
         if (j > 0u) {
             write_row(out, b->width, b->rows[held], b->counts[held],
-                      j < b->height ? b->rows[b->cur] : NULL, count,
+                      (j < b->height) ? b->rows[b->cur] : NULL, count,
                       band + (size_t)(j - 1u - b->band_first) * b->row_bytes);
             b->written = j;
         }
@@ -206,10 +212,12 @@ uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
         write_row(out, b->width, b->rows[b->cur], count, NULL, 0,
                   band + (size_t)(j - b->band_first) * b->row_bytes);
         b->written = j + 1u;
+    } else {
+        /* no other case */
     }
     b->next = j + 1u;
     uint32_t rows = b->written - b->band_first;
-    if (rows == out->band_rows || (b->written == b->height && rows > 0u)) {
+    if ((rows == out->band_rows) || ((b->written == b->height) && (rows > 0u))) {
         b->flush_first = b->band_first;
         b->band_first = b->written;
         return rows;
@@ -221,14 +229,14 @@ uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
 
 static int frame_ok(const vor_raster_frame_t *f)
 {
-    if (f->width == 0u || f->height == 0u || f->step_x <= 0 || f->step_y <= 0 ||
-        f->width > 0x7FFFFFFFu || f->height > 0x7FFFFFFFu) {
+    if ((f->width == 0u) || (f->height == 0u) || (f->step_x <= 0) || (f->step_y <= 0) ||
+        (f->width > 0x7FFFFFFFu) || (f->height > 0x7FFFFFFFu)) {
         return 0;
     }
     /* the last centre must be an int32 point: (w - 1) step < 2^62 here */
     int64_t last_x = f->origin_x + vor__offset(f->width - 1u, f->step_x);
     int64_t last_y = f->origin_y + vor__offset(f->height - 1u, f->step_y);
-    return last_x <= INT32_MAX && last_y <= INT32_MAX;
+    return (last_x <= INT32_MAX) && (last_y <= INT32_MAX);
 }
 
 /* Rounds an offset up to a multiple of 8 (the work memory's alignment). */
@@ -242,15 +250,15 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       const vor_raster_options_t *options, void *work, size_t work_bytes)
 {
     enum vor_raster_method method = (options != NULL) ? options->method : VOR_RASTER_FAST;
-    if (frame == NULL || sites == NULL || out == NULL || work == NULL || !frame_ok(frame)) {
+    if ((frame == NULL) || (sites == NULL) || (out == NULL) || (work == NULL) || !frame_ok(frame)) {
         return VOR_ERR_ARG;
     }
     if (sites->count == 0u) {
         return VOR_ERR_EMPTY;
     }
-    if (sites->points == NULL || out->band == NULL ||
-        out->flush == NULL || out->band_rows == 0u ||
-        (method != VOR_RASTER_FAST && method != VOR_RASTER_BRUTE)) {
+    if ((sites->points == NULL) || (out->band == NULL) ||
+        (out->flush == NULL) || (out->band_rows == 0u) ||
+        ((method != VOR_RASTER_FAST) && (method != VOR_RASTER_BRUTE))) {
         return VOR_ERR_ARG;
     }
     const uint32_t n = sites->count;
@@ -259,13 +267,13 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
         return VOR_ERR_ARG;
     }
     /* the sites a label tells apart, the palette a colour needs */
-    if ((out->kind == VOR_RASTER_LABEL8 && n > 256u) ||
-        (out->kind == VOR_RASTER_LABEL16 && n > 65536u) ||
-        (out->kind == VOR_RASTER_RGB565 && out->palette565 == NULL) ||
-        (out->kind == VOR_RASTER_RGB888 && out->palette888 == NULL)) {
+    if (((out->kind == VOR_RASTER_LABEL8) && (n > 256u)) ||
+        ((out->kind == VOR_RASTER_LABEL16) && (n > 65536u)) ||
+        ((out->kind == VOR_RASTER_RGB565) && (out->palette565 == NULL)) ||
+        ((out->kind == VOR_RASTER_RGB888) && (out->palette888 == NULL))) {
         return VOR_ERR_ARG;
     }
-    if (n > 0x07FFFFFFu || frame->width > 0x07FFFFFFu) {
+    if ((n > 0x07FFFFFFu) || (frame->width > 0x07FFFFFFu)) {
         return VOR_ERR_ARG; /* the work size below must not overflow */
     }
     size_t row_bytes = (size_t)frame->width * pixel_bytes;
@@ -289,8 +297,8 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
     size_t rows8 = align8((size_t)frame->width * sizeof(vor__run_t));
     r->rows[0] = (vor__run_t *)work;
     r->rows[1] = (vor__run_t *)(void *)((uint8_t *)work + rows8);
-    r->rest = (uint8_t *)work + 2u * rows8;
-    r->rest_bytes = work_bytes - 2u * rows8;
+    r->rest = (uint8_t *)work + (2u * rows8);
+    r->rest_bytes = work_bytes - (2u * rows8);
     return VOR_OK;
 }
 

@@ -28,7 +28,7 @@ typedef struct vor__run {
  * it extends the last run when the label repeats. Returns the new count. */
 static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t i, uint32_t site)
 {
-    if (count > 0u && runs[count - 1u].site == site) {
+    if ((count > 0u) && (runs[count - 1u].site == site)) {
         runs[count - 1u].end = i + 1u;
         return count;
     }
@@ -45,7 +45,8 @@ static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t 
  * the row below is known. */
 typedef struct vor__bands {
     const vor_raster_output_t *out;
-    uint32_t width, height;
+    uint32_t width;
+    uint32_t height;
     size_t row_bytes;
     vor__run_t *rows[2];
     uint32_t counts[2];

@@ -75,7 +75,9 @@
  * per array). */
 typedef struct euclid {
     const vor_raster_frame_t *frame;
-    int32_t origin_x, origin_y; /* frame's: rel_x, rel_y read them in per-site loops */
+    /* frame's: rel_x, rel_y read them in per-site loops */
+    int32_t origin_x;
+    int32_t origin_y;
     const vor_point_t *points;
     uint32_t n;
     int fast;             /* the fast path; else the brute-force search */
@@ -90,10 +92,14 @@ typedef struct euclid {
     uint32_t *stack;      /* scratch: edge envelope stack */
     uint32_t *left;       /* envelope of the left frame edge (positions in by_y) */
     uint32_t *right;      /* and of the right edge */
-    uint32_t left_count, right_count;
-    uint32_t left_next, right_next; /* first pieces that may meet the next band */
+    uint32_t left_count;
+    uint32_t right_count;
+    uint32_t left_next;
+    uint32_t right_next; /* first pieces that may meet the next band */
     uint32_t cand_count;
-    uint32_t band_first, band_last; /* rows of the current culling band */
+    /* rows of the current culling band */
+    uint32_t band_first;
+    uint32_t band_last;
     uint32_t inside_next;           /* by_y position: first site not yet below the band */
     uint32_t quotient_bits;         /* 2^quotient_bits >= width */
     uint32_t reach_row;             /* the last row of the previous band ... */
@@ -114,7 +120,7 @@ static int fits(const vor_raster_frame_t *frame, const vor_point_t *points, uint
     for (uint32_t k = 0; k < n; k++) {
         int64_t a = (int64_t)points[k].x - frame->origin_x;
         int64_t b = (int64_t)points[k].y - frame->origin_y;
-        if (a <= -BUDGET || a >= BUDGET || b <= -BUDGET || b >= BUDGET) {
+        if (a <= -BUDGET || (a >= BUDGET) || (b <= -BUDGET) || (b >= BUDGET)) {
             return 0;
         }
     }
@@ -159,33 +165,41 @@ static int32_t frame_u(const euclid_t *e)
 static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_t n)
 {
     for (uint32_t k = 0; k < n; k++) {
-        uint32_t block = k - (k % SORT_BLOCK), p = k;
+        uint32_t block = k - (k % SORT_BLOCK);
+        uint32_t p = k;
         int32_t v = value[k];
-        while (p > block && value[ids[p - 1u]] > v) {
+        while ((p > block) && (value[ids[p - 1u]] > v)) {
             ids[p] = ids[p - 1u];
             p--;
         }
         ids[p] = k;
     }
-    uint32_t *from = ids, *to = tmp;
+    uint32_t *from = ids;
+    uint32_t *to = tmp;
     for (uint32_t width = SORT_BLOCK; width < n; width *= 2u) { /* n < 2^27: no overflow */
         for (uint32_t lo = 0; lo < n; lo += 2u * width) {
-            const uint32_t mid = (n - lo > width) ? lo + width : n;
-            const uint32_t hi = (n - mid > width) ? mid + width : n;
-            uint32_t i = lo, j = mid, k = lo;
+            const uint32_t mid = ((n - lo) > width) ? (lo + width) : n;
+            const uint32_t hi = ((n - mid) > width) ? (mid + width) : n;
+            uint32_t i = lo;
+            uint32_t j = mid;
+            uint32_t k = lo;
             if (j < hi) {
-                uint32_t id_i = from[i], id_j = from[j];
-                int32_t v_i = value[id_i], v_j = value[id_j];
+                uint32_t id_i = from[i];
+                uint32_t id_j = from[j];
+                int32_t v_i = value[id_i];
+                int32_t v_j = value[id_j];
                 for (;;) {
                     if (v_j < v_i) { /* equal values: the left run first */
-                        to[k++] = id_j;
+                        to[k] = id_j;
+                        k++;
                         if (++j == hi) {
                             break;
                         }
                         id_j = from[j];
                         v_j = value[id_j];
                     } else {
-                        to[k++] = id_i;
+                        to[k] = id_i;
+                        k++;
                         if (++i == mid) {
                             break;
                         }
@@ -195,10 +209,12 @@ static void sort_ids(uint32_t *ids, uint32_t *tmp, const int32_t *value, uint32_
                 }
             }
             for (; i < mid; i++) {
-                to[k++] = from[i];
+                to[k] = from[i];
+                k++;
             }
             for (; j < hi; j++) {
-                to[k++] = from[j];
+                to[k] = from[j];
+                k++;
             }
         }
         uint32_t *t = from;
@@ -233,7 +249,7 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
     while (p < m) {
         uint32_t rep = p;
         uint32_t q = p + 1u;
-        while (q < m && key[q] == key[p]) {
+        while ((q < m) && (key[q] == key[p])) {
             if (val[q] < val[rep]) {
                 rep = q;
             }
@@ -243,7 +259,8 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
         /* pop j (between i and rep) while its crossing with i lies
          * strictly right of its crossing with rep: then j is never lowest */
         while (top >= 2u) {
-            uint32_t i = stack[top - 2u], j = stack[top - 1u];
+            uint32_t i = stack[top - 2u];
+            uint32_t j = stack[top - 1u];
             int greater;
             if (tier == 1) { /* value differences fit int32, key ones 2^15 */
                 int64_t left = vor__mul_i32((int32_t)(val[j] - val[i]), key[rep] - key[j]);
@@ -254,7 +271,8 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
                 int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
                 greater = left > right;
             } else {
-                vor__mw_i96_t left, right;
+                vor__mw_i96_t left;
+                vor__mw_i96_t right;
                 vor__mw_i96_mul(&left, val[j] - val[i], (uint32_t)(key[rep] - key[j]));
                 vor__mw_i96_mul(&right, val[rep] - val[j], (uint32_t)(key[j] - key[i]));
                 greater = vor__mw_i96_greater(&left, &right);
@@ -264,7 +282,8 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
             }
             top--;
         }
-        stack[top++] = rep;
+        stack[top] = rep;
+        top++;
     }
     return top;
 }
@@ -316,7 +335,7 @@ VOR__ALWAYS_INLINE int32_t edge_key(const edge_lines_t *l, uint32_t pos, int ver
 
 VOR__ALWAYS_INLINE int64_t edge_val(const edge_lines_t *l, uint32_t pos, int vertical)
 {
-    if (vertical) {
+    if (vertical != 0) {
         uint32_t id = l->e->by_y[pos];
         return square(rel_x(l->e, id) - l->u) + square(rel_y(l->e, id));
     }
@@ -338,7 +357,7 @@ VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(euclid_t *e, const edge_lines_t *l,
 {
     uint32_t t = from;
     /* piece t ends at crossing(t, t+1) = (val_next - val) / (2 dkey) */
-    while (t + 1u < count) {
+    while ((t + 1u) < count) {
         int32_t dkey = edge_key(l, hull[t + 1u], vertical) - edge_key(l, hull[t], vertical);
         if (edge_val(l, hull[t + 1u], vertical) - edge_val(l, hull[t], vertical) >=
             crossing_scaled(dkey, lo)) {
@@ -360,10 +379,10 @@ VOR__ALWAYS_INLINE uint32_t mark_pieces_impl(euclid_t *e, const edge_lines_t *l,
         }
         /* the equal lines sit next to pos in the order (same key) */
         uint32_t first = pos;
-        while (first > 0u && edge_key(l, first - 1u, vertical) == key) {
+        while ((first > 0u) && edge_key(l, first - 1u, vertical) == key) {
             first--;
         }
-        for (uint32_t q = first; q < l->m && edge_key(l, q, vertical) == key; q++) {
+        for (uint32_t q = first; (q < l->m) && edge_key(l, q, vertical) == key; q++) {
             if (edge_val(l, q, vertical) == val) {
                 e->mark[edge_site(l, q, vertical)] |= flags;
             }
@@ -432,13 +451,14 @@ static void fast_prepare(euclid_t *e)
 
     int64_t reach = vor__offset(e->frame->width - 1u, e->frame->step_x);
     int64_t tall = vor__offset(e->frame->height - 1u, e->frame->step_y);
-    int64_t most = reach > tall ? reach : tall;
+    int64_t most = (reach > tall) ? reach : tall;
     for (uint32_t k = 0; k < n; k++) {
-        int64_t a = rel_x(e, k), b = rel_y(e, k);
-        a = a < 0 ? -a : a;
-        b = b < 0 ? -b : b;
-        most = a > most ? a : most;
-        most = b > most ? b : most;
+        int64_t a = rel_x(e, k);
+        int64_t b = rel_y(e, k);
+        a = (a < 0) ? -a : a;
+        b = (b < 0) ? -b : b;
+        most = (a > most) ? a : most;
+        most = (b > most) ? b : most;
     }
     e->narrow = most < NARROW ? 1 : most < MID ? 2 : 0;
     e->left_count = vertical_envelope(e, 0, e->left);
@@ -457,7 +477,7 @@ static void fast_prepare(euclid_t *e)
     }
     /* quotients of the row envelope stay below width: bits enough */
     uint32_t bits = 1;
-    while (bits < 31u && ((uint32_t)1 << bits) < e->frame->width) {
+    while ((bits < 31u) && ((uint32_t)1 << bits) < e->frame->width) {
         bits++;
     }
     e->quotient_bits = bits;
@@ -475,8 +495,9 @@ static void fast_prepare(euclid_t *e)
  * both fit 32 bits, else restoring division, one quotient bit per step
  * (bits steps). (r >> b) >= g exactly when r >= g 2^b, and g 2^b <= r
  * never overflows. */
-static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
+static uint32_t quotient32(uint32_t r_in, uint32_t g, uint32_t bits)
 {
+    uint32_t r = r_in;
 #if HARDWARE_DIVIDE
     (void)bits;
     return r / g;
@@ -492,13 +513,14 @@ static uint32_t quotient32(uint32_t r, uint32_t g, uint32_t bits)
 #endif
 }
 
-static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
+static uint32_t quotient64(uint64_t r_in, uint64_t g, uint32_t bits)
 {
+    uint64_t r = r_in;
 #if HARDWARE_DIVIDE64
     (void)bits;
     return (uint32_t)(r / g);
 #else
-    if ((r >> 32) == 0u && (g >> 32) == 0u) {
+    if (((r >> 32) == 0u) && (g >> 32) == 0u) {
         return quotient32((uint32_t)r, (uint32_t)g, bits);
     }
     uint32_t q = 0;
@@ -519,7 +541,8 @@ static uint32_t quotient64(uint64_t r, uint64_t g, uint32_t bits)
  * each biased by 2^29 into (0, 2^30), one int64 below 2^62. */
 static int64_t pack_line(int32_t a, int32_t b)
 {
-    uint64_t lo = (uint32_t)(a + (int32_t)BUDGET), hi = (uint32_t)(b + (int32_t)BUDGET);
+    uint64_t lo = (uint32_t)(a + (int32_t)BUDGET);
+    uint64_t hi = (uint32_t)(b + (int32_t)BUDGET);
     return (int64_t)((hi << 32) | lo); /* < 2^62 */
 }
 
@@ -547,7 +570,7 @@ static int64_t pack_narrow(int32_t a, int32_t b, uint32_t id)
 static void set_line(euclid_t *e, uint32_t q, uint32_t id, int32_t a, int32_t b)
 {
     e->cand[q] = id;
-    e->val[q] = e->narrow == 1 ? pack_narrow(a, b, id) : pack_line(a, b);
+    e->val[q] = (e->narrow == 1) ? pack_narrow(a, b, id) : pack_line(a, b);
 }
 
 /*
@@ -593,8 +616,9 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
     uint64_t x = (uint64_t)line[0];
     int32_t top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
     int32_t top_dy = vb - (int32_t)((uint32_t)x >> 16);
-    int32_t top_val = top_a * top_a + top_dy * top_dy;
-    uint32_t top_start = 0, top_site = (uint32_t)(x >> 32);
+    int32_t top_val = (top_a * top_a) + (top_dy * top_dy);
+    uint32_t top_start = 0;
+    uint32_t top_site = (uint32_t)(x >> 32);
     uint32_t top_u = 0;
     runs[0].end = 0;
     runs[0].site = 0;
@@ -604,18 +628,18 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
         const int32_t a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
         const int32_t dy = vb - (int32_t)((uint32_t)x >> 16);
         const uint32_t id = (uint32_t)(x >> 32);
-        const int32_t val = a * a + dy * dy;
+        const int32_t val = (a * a) + (dy * dy);
         uint32_t start;
         for (;;) {
             const int32_t da = a - top_a; /* >= 0: slope order */
-            const int32_t d = (top_val - val) + 2 * da * (int32_t)top_u;
-            if (d > 0 || (d == 0 && id < top_site)) {
+            const int32_t d = (top_val - val) + (2 * da * (int32_t)top_u);
+            if ((d > 0) || ((d == 0) && (id < top_site))) {
                 goto pop; /* l beats the top on all of its pixels */
             }
             /* l wins from the first t >= 1 with d + 2 da step t > -bias */
-            const uint32_t r = (uint32_t)-d - (id < top_site ? 1u : 0u);
+            const uint32_t r = (uint32_t)-d - ((id < top_site) ? 1u : 0u);
             const uint32_t g = 2u * (uint32_t)da;
-            if (da == 0 || r >= g * (last_u - top_u)) {
+            if ((da == 0) || (r >= (g * (last_u - top_u)))) {
                 goto dropped; /* l never beats the top within the row */
             }
             const uint32_t skip = quotient32(r, g * step, bits);
@@ -634,7 +658,7 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
                 top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
                 top_site = (uint32_t)(x >> 32);
                 top_dy = vb - (int32_t)((uint32_t)x >> 16);
-                top_val = top_a * top_a + top_dy * top_dy;
+                top_val = (top_a * top_a) + (top_dy * top_dy);
             }
         }
         runs[top].end = start;
@@ -663,7 +687,8 @@ static uint32_t row_envelope_wide(const euclid_t *e, int32_t v, vor__run_t *runs
     int32_t top_a = line_a(line[0]);
     int32_t top_dy = line_dy(line[0], vb);
     int64_t top_val = square(top_a) + square(top_dy);
-    uint32_t top_start = 0, top_site = site[0];
+    uint32_t top_start = 0;
+    uint32_t top_site = site[0];
     int32_t top_u = 0;
     runs[0].end = 0;
     runs[0].site = 0;
@@ -679,12 +704,12 @@ static uint32_t row_envelope_wide(const euclid_t *e, int32_t v, vor__run_t *runs
             const int32_t da = a - top_a; /* >= 0: slope order */
             const int32_t da2 = 2 * da;
             const int64_t d = (top_val - val) + vor__mul_i32(da2, top_u);
-            if (d > 0 || (d == 0 && id < top_site)) {
+            if ((d > 0) || ((d == 0) && (id < top_site))) {
                 goto pop; /* l beats the top on all of its pixels */
             }
             /* l wins from the first t >= 1 with d + 2 da step t > -bias */
-            const uint64_t r = (uint64_t)-d - (id < top_site ? 1u : 0u);
-            if (da == 0 || r >= (uint64_t)vor__mul_i32(da2, last_u - top_u)) {
+            const uint64_t r = (uint64_t)-d - ((id < top_site) ? 1u : 0u);
+            if ((da == 0) || (r >= (uint64_t)vor__mul_i32(da2, last_u - top_u))) {
                 goto dropped; /* l never beats the top within the row */
             }
             const uint32_t skip = quotient64(r, (uint64_t)vor__mul_i32(da2, step), bits);
@@ -751,7 +776,8 @@ static uint32_t gather_positions(euclid_t *e, uint8_t flags)
     uint32_t m = 0;
     for (uint32_t p = 0; p < e->n; p++) {
         if ((e->mark[e->by_x[p]] & flags) != 0u) {
-            e->cand[m++] = p;
+            e->cand[m] = p;
+            m++;
         }
     }
     return m;
@@ -762,13 +788,13 @@ static uint32_t gather_positions(euclid_t *e, uint8_t flags)
 static uint32_t band_last_row(const euclid_t *e, uint32_t first)
 {
     uint32_t last = first + (CULL_ROWS - 1u);
-    return (last >= e->frame->height || last < first) ? e->frame->height - 1u : last;
+    return ((last >= e->frame->height) || (last < first)) ? (e->frame->height - 1u) : last;
 }
 
 static uint32_t band_bottom(const euclid_t *e, uint32_t first)
 {
     uint32_t last = band_last_row(e, first);
-    return (last + 1u < e->frame->height) ? last + 1u : last;
+    return ((last + 1u) < e->frame->height) ? (last + 1u) : last;
 }
 
 /* The largest squared distance from a pixel centre of row offset v to
@@ -780,13 +806,13 @@ static uint64_t farthest(const euclid_t *e, int32_t v, const vor__run_t *runs,
     uint64_t most = 0;
     for (uint32_t t = 0; t < count; t++) {
         uint32_t id = e->cand[runs[t].site];
-        uint32_t end = (t + 1u < count) ? runs[t + 1u].end : e->frame->width;
+        uint32_t end = ((t + 1u) < count) ? runs[t + 1u].end : e->frame->width;
         int32_t a = rel_x(e, id);
         int64_t dy2 = square(rel_y(e, id) - v);
         int64_t d1 = square((int32_t)vor__offset(runs[t].end, e->frame->step_x) - a) + dy2;
         int64_t d2 = square((int32_t)vor__offset(end - 1u, e->frame->step_x) - a) + dy2;
-        uint64_t d = (uint64_t)(d1 > d2 ? d1 : d2);
-        most = d > most ? d : most;
+        uint64_t d = (uint64_t)((d1 > d2) ? d1 : d2);
+        most = (d > most) ? d : most;
     }
     return most;
 }
@@ -830,17 +856,17 @@ static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
     /* sites inside the band's rectangle; bands come in increasing order,
      * so sites above the next band's top (v1) are never needed again */
     uint32_t p = e->inside_next;
-    while (p < n && rel_y(e, e->by_y[p]) < v0) {
+    while ((p < n) && rel_y(e, e->by_y[p]) < v0) {
         p++;
     }
     uint32_t next = p;
-    while (p < n && rel_y(e, e->by_y[p]) <= v1) {
+    while ((p < n) && rel_y(e, e->by_y[p]) <= v1) {
         uint32_t id = e->by_y[p];
         int32_t a = rel_x(e, id);
-        if (a >= 0 && a <= u1) {
+        if ((a >= 0) && (a <= u1)) {
             e->mark[id] |= 1u;
         }
-        next += rel_y(e, id) < v1 ? 1u : 0u;
+        next += (rel_y(e, id) < v1) ? 1u : 0u;
         p++;
     }
     e->inside_next = next;
@@ -851,7 +877,7 @@ static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
     } else {
         /* E (see above) */
         uint64_t most;
-        if (first > 0u && e->reach_row + 1u == first) {
+        if ((first > 0u) && (e->reach_row + 1u) == first) {
             most = e->reach_most;
         } else {
             e->cand_count = gather_lines(e, 1u);
@@ -864,7 +890,7 @@ static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
         for (; p < n; p++) {
             uint32_t id = e->by_y[p];
             int64_t d = (int64_t)rel_y(e, id) - v1 - h;
-            if (d > 0 && vor__mul_u32((uint32_t)d, (uint32_t)d) > most) {
+            if ((d > 0) && vor__mul_u32((uint32_t)d, (uint32_t)d) > most) {
                 break;
             }
             e->mark[id] |= 4u;
@@ -893,12 +919,12 @@ static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
 /* Runs of row j by the fast path. */
 static uint32_t fast_row(euclid_t *e, uint32_t j, vor__run_t *runs)
 {
-    if (!e->band_valid || j > e->band_last) {
+    if (!e->band_valid || (j > e->band_last)) {
         select_band(e, j, runs);
     }
     const int32_t v = (int32_t)(vor__offset(j, e->frame->step_y));
     const uint32_t count = row_envelope(e, v, runs);
-    if (j == e->band_last && j + 1u < e->frame->height) {
+    if ((j == e->band_last) && (j + 1u) < e->frame->height) {
         /* this row's sites, at the next band's bottom edge */
         uint32_t bottom = band_bottom(e, j + 1u);
         e->reach_most = farthest(e, (int32_t)vor__offset(bottom, e->frame->step_y), runs, count);
@@ -906,7 +932,7 @@ static uint32_t fast_row(euclid_t *e, uint32_t j, vor__run_t *runs)
     }
     /* (first pixel, list position) to (end, site) */
     const uint32_t *site = e->cand;
-    for (uint32_t t = 0; t + 1u < count; t++) {
+    for (uint32_t t = 0; (t + 1u) < count; t++) {
         runs[t].end = runs[t + 1u].end;
         runs[t].site = site[runs[t].site];
     }
@@ -918,15 +944,16 @@ static uint32_t fast_row(euclid_t *e, uint32_t j, vor__run_t *runs)
 /* ------------------------------------------------------------ distances */
 
 /* floor(sqrt(x)) by the bit-by-bit method (no division). */
-static uint32_t isqrt64(uint64_t x)
+static uint32_t isqrt64(uint64_t x_in)
 {
+    uint64_t x = x_in;
     uint64_t root = 0;
     uint64_t bit = (uint64_t)1 << 62;
     while (bit > x) {
         bit >>= 2;
     }
     while (bit != 0u) { /* 32 steps at most: bit moves 2 places each */
-        if (x >= root + bit) {
+        if (x >= (root + bit)) {
             x -= root + bit;
             root = (root >> 1) + bit;
         } else {
@@ -946,7 +973,7 @@ static uint64_t squared_distance(int32_t qx, int32_t qy, const vor_point_t *s, u
     uint64_t dy2 = vor__mul_u32(vor__mw_magnitude((int64_t)qy - s->y),
                                 vor__mw_magnitude((int64_t)qy - s->y));
     uint64_t low = dx2 + dy2;
-    *high = low < dx2 ? 1u : 0u;
+    *high = (low < dx2) ? 1u : 0u;
     return low;
 }
 
@@ -956,7 +983,7 @@ static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
 {
     uint32_t high;
     uint64_t low = squared_distance(qx, qy, s, &high);
-    return high != 0u ? 0xFFFFFFFFu : isqrt64(low);
+    return (high != 0u) ? 0xFFFFFFFFu : isqrt64(low);
 }
 
 /* ---------------------------------------------------------- brute force */
@@ -965,12 +992,13 @@ static uint32_t euclid_distance(int32_t qx, int32_t qy, const vor_point_t *s)
  * index. */
 static uint32_t brute_nearest(const euclid_t *e, int32_t qx, int32_t qy)
 {
-    uint32_t best = 0, best_high;
+    uint32_t best = 0;
+    uint32_t best_high;
     uint64_t best_low = squared_distance(qx, qy, &e->points[0], &best_high);
     for (uint32_t k = 1; k < e->n; k++) {
         uint32_t high;
         uint64_t low = squared_distance(qx, qy, &e->points[k], &high);
-        if (high < best_high || (high == best_high && low < best_low)) {
+        if ((high < best_high) || ((high == best_high) && (low < best_low))) {
             best = k;
             best_high = high;
             best_low = low;
@@ -981,7 +1009,8 @@ static uint32_t brute_nearest(const euclid_t *e, int32_t qx, int32_t qy)
 
 static uint32_t brute_row(const euclid_t *e, uint32_t j, vor__run_t *runs)
 {
-    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    const int32_t origin_x = e->frame->origin_x;
+    const int32_t step_x = e->frame->step_x;
     const uint32_t width = e->frame->width;
     int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
     uint32_t count = 0;
@@ -1001,17 +1030,17 @@ static void carve(euclid_t *e, uint8_t *base)
 {
     const size_t n = e->n;
     e->val = (int64_t *)(void *)base;
-    uint32_t *words = (uint32_t *)(void *)(base + n * sizeof(int64_t));
+    uint32_t *words = (uint32_t *)(void *)(base + (n * sizeof(int64_t)));
     e->by_x = words;
     e->by_y = words + n;
-    e->cand = words + 2u * n;
-    e->key = (int32_t *)(void *)(words + 3u * n);
-    e->stack = words + 4u * n;
-    e->left = words + 5u * n;
-    e->right = words + 6u * n;
-    e->sorted_x = (int32_t *)(void *)(words + 7u * n);
-    e->sorted_y = (int32_t *)(void *)(words + 8u * n);
-    e->mark = (uint8_t *)(void *)(words + 9u * n);
+    e->cand = words + (2u * n);
+    e->key = (int32_t *)(void *)(words + (3u * n));
+    e->stack = words + (4u * n);
+    e->left = words + (5u * n);
+    e->right = words + (6u * n);
+    e->sorted_x = (int32_t *)(void *)(words + (7u * n));
+    e->sorted_y = (int32_t *)(void *)(words + (8u * n));
+    e->mark = (uint8_t *)(void *)(words + (9u * n));
 }
 
 /* Sets e up for the checked request r: the fast path when r asks for it
@@ -1024,7 +1053,7 @@ static void prepare(euclid_t *e, const vor__raster_t *r)
     e->points = r->sites->points;
     e->n = r->sites->count;
     e->fast = !r->brute && fits(e->frame, e->points, e->n);
-    if (e->fast) {
+    if (e->fast != 0) {
         carve(e, r->rest);
         fast_prepare(e);
     }
@@ -1043,7 +1072,8 @@ static void distances(const void *state, uint32_t j, const vor__run_t *runs, uin
                       uint32_t *px)
 {
     const euclid_t *e = state;
-    const int32_t origin_x = e->frame->origin_x, step_x = e->frame->step_x;
+    const int32_t origin_x = e->frame->origin_x;
+    const int32_t step_x = e->frame->step_x;
     int32_t qy = (int32_t)(e->frame->origin_y + vor__offset(j, e->frame->step_y));
     uint32_t i = 0;
     for (uint32_t r = 0; r < count; r++) {

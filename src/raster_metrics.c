@@ -37,7 +37,7 @@
  * Per site and per tile, the chains are compiled away: the key, the
  * comparison and the bounds are instances for one metric's constant bit,
  * picked once per frame from a table (metric_ops). */
-#define METRIC(name) (1u << VOR_METRIC_##name)
+#define METRIC(name) ((uint32_t)1 << (uint32_t)VOR_METRIC_##name)
 #define IN(bit, set) (((bit) & (set)) != 0u)
 /* the metrics whose keys are rationals (rank_key_t) */
 #define RATIONAL_METRICS (METRIC(ELLIPTIC) | METRIC(SEGMENT) | METRIC(POLYGON) | METRIC(POLYLINE))
@@ -52,7 +52,9 @@ struct rect;
  * its exact comparisons, and the culling of sites per tile. */
 typedef struct metric {
     const vor_raster_frame_t *frame;
-    int32_t origin_x, step_x; /* frame's: read per pixel, kept beside m's other fields */
+    /* frame's: read per pixel, kept beside m's other fields */
+    int32_t origin_x;
+    int32_t step_x;
     const vor_raster_sites_t *sites;
     enum vor_metric metric;
     uint32_t metric_bit; /* 1 << metric, tested against METRIC() sets */
@@ -80,7 +82,8 @@ typedef struct metric {
 /* *r = ax^2 + ay^2 < 2^65. */
 VOR__ALWAYS_INLINE void square_sum(vor__mw_u128_t *r, uint32_t ax, uint32_t ay)
 {
-    uint64_t x2 = vor__mul_u32(ax, ax), sum = x2 + vor__mul_u32(ay, ay);
+    uint64_t x2 = vor__mul_u32(ax, ax);
+    uint64_t sum = x2 + vor__mul_u32(ay, ay);
     r->lo = sum;
     r->hi = (sum < x2) ? 1u : 0u; /* the carry */
 }
@@ -107,7 +110,8 @@ typedef struct key {
     vor__mw_u128_t num;
     vor__mw_u128_t den;
     int squared;
-    int32_t w1, w2;
+    int32_t w1;
+    int32_t w2;
     vor__limb wide[LP_LIMBS];
 } rank_key_t;
 
@@ -150,10 +154,11 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
     if (IN(bit, METRIC(L1))) {
         vor__mw_u128_set(&k->num, (uint64_t)ax + ay);
     } else if (IN(bit, METRIC(LINF))) {
-        vor__mw_u128_set(&k->num, ax > ay ? ax : ay);
+        vor__mw_u128_set(&k->num, (ax > ay) ? ax : ay);
     } else if (IN(bit, METRIC(LP))) {
-        if (m->lp_narrow) {
-            vor__mw_u128_t x_power, y_power;
+        if (m->lp_narrow != 0) {
+            vor__mw_u128_t x_power;
+            vor__mw_u128_t y_power;
             power128(&x_power, ax, s->lp_exponent);
             power128(&y_power, ay, s->lp_exponent);
             vor__mw_u128_add(&k->num, &x_power, &y_power);
@@ -180,12 +185,14 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
 VOR__ALWAYS_INLINE void elliptic_form(vor__mw_u128_t *r, const vor_raster_sites_t *s, int64_t dx,
                                       int64_t dy)
 {
-    uint32_t ax = vor__mw_magnitude(dx), ay = vor__mw_magnitude(dy);
-    vor__mw_u128_t sum, term;
+    uint32_t ax = vor__mw_magnitude(dx);
+    uint32_t ay = vor__mw_magnitude(dy);
+    vor__mw_u128_t sum;
+    vor__mw_u128_t term;
     vor__mw_u128_mul(&sum, vor__mul_u32(ax, ax), (uint32_t)s->form_a);
     vor__mw_u128_mul(&term, vor__mul_u32(ay, ay), (uint32_t)s->form_c);
     vor__mw_u128_add(&sum, &sum, &term);
-    if (s->form_b != 0 && ax != 0u && ay != 0u) {
+    if ((s->form_b != 0) && (ax != 0u) && (ay != 0u)) {
         /* |b| < 2^31 since b^2 < a c < 2^62 */
         vor__mw_u128_mul(&term, vor__mul_u32(ax, ay), 2u * vor__mw_magnitude(s->form_b));
         if ((s->form_b < 0) != ((dx < 0) != (dy < 0))) {
@@ -204,11 +211,14 @@ VOR__ALWAYS_INLINE void elliptic_form(vor__mw_u128_t *r, const vor_raster_sites_
 static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, int32_t qy,
                         rank_key_t *k)
 {
-    int64_t ex = (int64_t)b->x - a->x, ey = (int64_t)b->y - a->y;
-    int64_t ux = (int64_t)qx - a->x, uy = (int64_t)qy - a->y;
+    int64_t ex = (int64_t)b->x - a->x;
+    int64_t ey = (int64_t)b->y - a->y;
+    int64_t ux = (int64_t)qx - a->x;
+    int64_t uy = (int64_t)qy - a->y;
     vor__mw_u128_t length;
     square_sum(&length, vor__mw_magnitude(ex), vor__mw_magnitude(ey));
-    vor__mw_s128_t along, term;
+    vor__mw_s128_t along;
+    vor__mw_s128_t term;
     vor__mw_s128_product(&along, ux, ex);
     vor__mw_s128_product(&term, uy, ey);
     vor__mw_s128_add(&along, &along, &term);
@@ -239,25 +249,30 @@ static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, 
  * products stay below 2^257. */
 static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 {
-    int a_unit = !a->squared && a->den.lo == 1u && a->den.hi == 0u;
-    int b_unit = !b->squared && b->den.lo == 1u && b->den.hi == 0u;
+    int a_unit = !a->squared && (a->den.lo == 1u) && (a->den.hi == 0u);
+    int b_unit = !b->squared && (b->den.lo == 1u) && (b->den.hi == 0u);
     if (a_unit && b_unit) {
         return vor__mw_u128_compare(&a->num, &b->num);
     }
-    int a_small = a->den.hi == 0u && a->num.hi == 0u && (!a->squared || a->num.lo >> 32 == 0u);
-    int b_small = b->den.hi == 0u && b->num.hi == 0u && (!b->squared || b->num.lo >> 32 == 0u);
+    int a_small = (a->den.hi == 0u) && (a->num.hi == 0u) && (!a->squared || ((a->num.lo >> 32) == 0u));
+    int b_small = (b->den.hi == 0u) && (b->num.hi == 0u) && (!b->squared || ((b->num.lo >> 32) == 0u));
     if (a_small && b_small) { /* numerators and denominators below 2^64 */
         uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
-        vor__mw_u128_t left, right;
+        vor__mw_u128_t left;
+        vor__mw_u128_t right;
         vor__mw_u128_mul(&left, an, b->den.lo);
         vor__mw_u128_mul(&right, bn, a->den.lo);
         return vor__mw_u128_compare(&left, &right);
     }
     enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
-    vor__limb num[NUM], square[SQUARE], den[NUM], left[CROSS], right[CROSS];
+    vor__limb num[NUM];
+    vor__limb square[SQUARE];
+    vor__limb den[NUM];
+    vor__limb left[CROSS];
+    vor__limb right[CROSS];
     vor__mw_from_u128(num, NUM, &a->num);
-    if (a->squared) {
+    if (a->squared != 0) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
         vor__mw_from_u128(square, SQUARE, &a->num);
@@ -265,7 +280,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
     vor__mw_from_u128(den, NUM, &b->den);
     vor__mw_mul(left, CROSS, square, SQUARE, den, NUM);
     vor__mw_from_u128(num, NUM, &b->num);
-    if (b->squared) {
+    if (b->squared != 0) {
         vor__mw_mul(square, SQUARE, num, NUM, num, NUM);
     } else {
         vor__mw_from_u128(square, SQUARE, &b->num);
@@ -287,11 +302,17 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 static int additive_sign(size_t n, const vor__mw_u128_t *big_a, const vor__mw_u128_t *big_b,
                          const vor__mw_s128_t *delta)
 {
-    if (vor__mw_u128_is_zero(&delta->mag)) {
+    if (vor__mw_u128_is_zero(&delta->mag) != 0) {
         return vor__mw_u128_compare(big_a, big_b);
     }
-    vor__limb a[MAX_LIMBS], b[MAX_LIMBS], d[MAX_LIMBS], d2[MAX_LIMBS], e[MAX_LIMBS];
-    vor__limb product[MAX_LIMBS], left[MAX_LIMBS], right[MAX_LIMBS];
+    vor__limb a[MAX_LIMBS];
+    vor__limb b[MAX_LIMBS];
+    vor__limb d[MAX_LIMBS];
+    vor__limb d2[MAX_LIMBS];
+    vor__limb e[MAX_LIMBS];
+    vor__limb product[MAX_LIMBS];
+    vor__limb left[MAX_LIMBS];
+    vor__limb right[MAX_LIMBS];
     vor__mw_from_u128(a, n, big_a);
     vor__mw_from_u128(b, n, big_b);
     vor__mw_from_u128(d, n, &delta->mag);
@@ -346,14 +367,15 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         /* sqrt(A) / wa < sqrt(B) / wb iff A wb^2 < B wa^2: below 2^65 * 2^62 */
         uint64_t wa2 = vor__mul_u32((uint32_t)a->w1, (uint32_t)a->w1);
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
-        vor__mw_u128_t left, right;
+        vor__mw_u128_t left;
+        vor__mw_u128_t right;
         vor__mw_u128_mul64(&left, &a->num, wb2);
         vor__mw_u128_mul64(&right, &b->num, wa2);
         return vor__mw_u128_compare(&left, &right);
     } else if (IN(bit, METRIC(ADD))) {
         vor__mw_s128_t delta; /* wa - wb, below 2^32 */
         int64_t diff = (int64_t)a->w2 - b->w2;
-        vor__mw_u128_set(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff);
+        vor__mw_u128_set(&delta.mag, (diff < 0) ? (uint64_t)-diff : (uint64_t)diff);
         delta.neg = diff < 0;
         return additive_sign(m->limbs, &a->num, &b->num, &delta);
     } else if (IN(bit, METRIC(COMPOUND))) {
@@ -363,10 +385,11 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         uint64_t wb2 = vor__mul_u32((uint32_t)b->w1, (uint32_t)b->w1);
         int64_t diff = (int64_t)a->w2 - b->w2;
         vor__mw_s128_t delta;
-        vor__mw_u128_mul(&delta.mag, diff < 0 ? (uint64_t)-diff : (uint64_t)diff,
+        vor__mw_u128_mul(&delta.mag, (diff < 0) ? (uint64_t)-diff : (uint64_t)diff,
                          vor__mul_u32((uint32_t)a->w1, (uint32_t)b->w1));
         delta.neg = diff < 0;
-        vor__mw_u128_t big_a, big_b;
+        vor__mw_u128_t big_a;
+        vor__mw_u128_t big_b;
         vor__mw_u128_mul64(&big_a, &a->num, wb2);
         vor__mw_u128_mul64(&big_b, &b->num, wa2);
         return additive_sign(m->limbs, &big_a, &big_b, &delta);
@@ -381,13 +404,16 @@ static int winds_around(const vor_point_t *p, uint32_t count, const vor_point_t 
 {
     int64_t winding = 0;
     for (uint32_t i = 0; i < count; i++) {
-        const vor_point_t *a = &p[i], *b = &p[i + 1u == count ? 0u : i + 1u];
+        const vor_point_t *a = &p[i];
+        const vor_point_t *b = &p[((i + 1u) == count) ? 0u : (i + 1u)];
         if (a->y <= q->y) {
-            if (b->y > q->y && vor_orient2d(*a, *b, *q) > 0) {
+            if ((b->y > q->y) && vor_orient2d(*a, *b, *q) > 0) {
                 winding++; /* an upward edge with q on its left */
             }
-        } else if (b->y <= q->y && vor_orient2d(*a, *b, *q) < 0) {
+        } else if ((b->y <= q->y) && vor_orient2d(*a, *b, *q) < 0) {
             winding--; /* a downward edge with q on its right */
+        } else {
+            /* no other case */
         }
     }
     return winding != 0;
@@ -425,7 +451,8 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
         elliptic_form(&k->num, s, (int64_t)qx - p->x, (int64_t)qy - p->y);
         set_unit_denominator(k);
     } else if (IN(bit, METRIC(HAUSDORFF))) {
-        vor__mw_u128_t far, d;
+        vor__mw_u128_t far;
+        vor__mw_u128_t d;
         vor__mw_u128_set(&far, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             square_sum(&d, vor__mw_magnitude((int64_t)qx - s->points[i].x),
@@ -436,22 +463,22 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
         }
         vor__mw_u128_copy(&k->num, &far);
     } else if (IN(bit, METRIC(SEGMENT))) {
-        segment_key(&s->points[2u * site], &s->points[2u * site + 1u], qx, qy, k);
+        segment_key(&s->points[2u * site], &s->points[(2u * site) + 1u], qx, qy, k);
     } else if (IN(bit, METRIC(POLYGON))) {
         const vor_point_t *p = &s->points[s->offsets[site]];
         uint32_t count = s->offsets[site + 1u] - s->offsets[site];
         vor_point_t q;
         q.x = qx;
         q.y = qy;
-        if (count >= 3u && winds_around(p, count, &q)) {
+        if ((count >= 3u) && winds_around(p, count, &q)) {
             vor__mw_u128_set(&k->num, 0);
             set_unit_denominator(k);
             return;
         }
-        segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
+        segment_key(&p[0], &p[(count > 1u) ? 1u : 0u], qx, qy, k);
         rank_key_t edge;
-        for (uint32_t i = 1; count >= 3u && i < count; i++) {
-            segment_key(&p[i], &p[i + 1u == count ? 0u : i + 1u], qx, qy, &edge);
+        for (uint32_t i = 1; (count >= 3u) && (i < count); i++) {
+            segment_key(&p[i], &p[((i + 1u) == count) ? 0u : (i + 1u)], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
     } else if (IN(bit, METRIC(POLYLINE))) {
@@ -459,9 +486,9 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
          * divided by w^2: the denominator stays below 2^65 * 2^62 */
         const vor_point_t *p = &s->points[s->offsets[site]];
         uint32_t count = s->offsets[site + 1u] - s->offsets[site];
-        segment_key(&p[0], &p[count > 1u ? 1u : 0u], qx, qy, k);
+        segment_key(&p[0], &p[(count > 1u) ? 1u : 0u], qx, qy, k);
         rank_key_t edge;
-        for (uint32_t i = 1; i + 1u < count; i++) {
+        for (uint32_t i = 1; (i + 1u) < count; i++) {
             segment_key(&p[i], &p[i + 1u], qx, qy, &edge);
             keep_smaller(k, &edge);
         }
@@ -492,7 +519,10 @@ VOR__ALWAYS_INLINE void site_key(const metric_t *m, uint32_t bit, uint32_t site,
  * call on Cortex-M0). */
 static uint64_t isqrt128(const vor__mw_u128_t *value)
 {
-    vor__mw_u128_t x, root, bit, trial;
+    vor__mw_u128_t x;
+    vor__mw_u128_t root;
+    vor__mw_u128_t bit;
+    vor__mw_u128_t trial;
     vor__mw_u128_copy(&x, value);
     vor__mw_u128_set(&root, 0);
     bit.lo = 0;
@@ -514,9 +544,11 @@ static uint64_t isqrt128(const vor__mw_u128_t *value)
 
 /* floor(a / d) for d >= 1, by shift and subtract (no divider on
  * Cortex-M0): 64 steps, the remainder stays below 2 d < 2^33. */
-static uint64_t divide_u64(uint64_t a, uint32_t d)
+static uint64_t divide_u64(uint64_t a_in, uint32_t d)
 {
-    uint64_t quotient = 0, rest = 0;
+    uint64_t a = a_in;
+    uint64_t quotient = 0;
+    uint64_t rest = 0;
     for (int step = 0; step < 64; step++) {
         rest = (rest << 1) | (a >> 63);
         a <<= 1;
@@ -543,7 +575,7 @@ static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
         q[i] = 0;
     }
     size_t top = DIV_LIMBS;
-    while (top > 0u && a[top - 1u] == 0u) {
+    while ((top > 0u) && (a[top - 1u] == 0u)) {
         top--;
     }
     for (size_t i = top; i-- > 0u;) {
@@ -560,15 +592,16 @@ static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
 
 VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
 {
-    return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)v;
+    return (v > 0xFFFFFFFFu) ? 0xFFFFFFFFu : (uint32_t)v;
 }
 
 /* v - w as an int32 bit pattern, saturated at INT32_MAX: v < 2^34 and
- * w >= -2^31, so v - w < 2^35; w < 2^31 keeps it above -2^31. */
+ * w >= -2^31, so v - w < 2^35; w < 2^31 keeps it above -2^31. Subtracted
+ * in uint64_t (the same instructions), whose wrap needs no bound on v. */
 VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
 {
-    int64_t d = (int64_t)v - w;
-    return d > INT32_MAX ? (uint32_t)INT32_MAX : (uint32_t)d;
+    int64_t d = (int64_t)(v - (uint64_t)(int64_t)w);
+    return (d > INT32_MAX) ? (uint32_t)INT32_MAX : (uint32_t)d;
 }
 
 /* floor((ax^p + ay^p)^(1/p)) (the key's sum), saturated: the root is
@@ -580,12 +613,13 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
                             uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
-    vor__limb sum[LP_LIMBS], power[LP_LIMBS];
-    if (m->lp_narrow) {
+    vor__limb sum[LP_LIMBS];
+    vor__limb power[LP_LIMBS];
+    if (m->lp_narrow != 0) {
         vor__mw_from_u128(sum, LP_LIMBS, &k->num);
     } else {
         for (size_t i = 0; i < LP_LIMBS; i++) {
-            sum[i] = i < m->limbs ? k->wide[i] : 0u;
+            sum[i] = (i < m->limbs) ? k->wide[i] : 0u;
         }
     }
     for (size_t i = 0; i < LP_LIMBS; i++) {
@@ -595,10 +629,10 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
     if (vor__mw_compare(sum, power, LP_LIMBS) >= 0) {
         return 0xFFFFFFFFu;
     }
-    uint64_t lo = ax > ay ? ax : ay;
+    uint64_t lo = (ax > ay) ? ax : ay;
     uint64_t hi = (uint64_t)ax + ay + 1u;
-    hi = hi > ((uint64_t)1 << 32) ? (uint64_t)1 << 32 : hi;
-    while (hi - lo > 1u) {
+    hi = hi > ((uint64_t)1 << 32) ? ((uint64_t)1 << 32) : hi;
+    while ((hi - lo) > 1u) {
         uint32_t mid = (uint32_t)(lo + ((hi - lo) >> 1));
         power_limbs(power, LP_LIMBS, mid, p);
         if (vor__mw_compare(power, sum, LP_LIMBS) <= 0) {
@@ -616,12 +650,15 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
  * from 2^64 on. */
 static uint32_t rational_distance(const rank_key_t *k)
 {
-    if (!k->squared && k->den.lo == 1u && k->den.hi == 0u) {
+    if (!k->squared && (k->den.lo == 1u) && (k->den.hi == 0u)) {
         return saturate_u32(isqrt128(&k->num));
     }
-    vor__limb num[DIV_LIMBS], x[DIV_LIMBS], den[DIV_LIMBS], q[DIV_LIMBS];
+    vor__limb num[DIV_LIMBS];
+    vor__limb x[DIV_LIMBS];
+    vor__limb den[DIV_LIMBS];
+    vor__limb q[DIV_LIMBS];
     vor__mw_from_u128(num, DIV_LIMBS, &k->num);
-    if (k->squared) {
+    if (k->squared != 0) {
         vor__mw_mul(x, DIV_LIMBS, num, DIV_LIMBS, num, DIV_LIMBS); /* < 2^130 */
     } else {
         vor__mw_copy(x, num, DIV_LIMBS);
@@ -663,25 +700,29 @@ static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, in
 
 /* A rectangle of pixel centres, corners included. */
 typedef struct rect {
-    int32_t x0, x1, y0, y1;
+    int32_t x0;
+    int32_t x1;
+    int32_t y0;
+    int32_t y1;
 } rect_t;
 
 /* Distance from v to [lo, hi], and to the farther end. */
 static uint32_t gap(int32_t v, int32_t lo, int32_t hi)
 {
-    return v < lo ? (uint32_t)lo - (uint32_t)v : v > hi ? (uint32_t)v - (uint32_t)hi : 0u;
+    return (v < lo) ? (uint32_t)lo - (uint32_t)v : (v > hi) ? (uint32_t)v - (uint32_t)hi : 0u;
 }
 
 static uint32_t reach(int32_t v, int32_t lo, int32_t hi)
 {
-    uint32_t a = vor__mw_magnitude((int64_t)v - lo), b = vor__mw_magnitude((int64_t)v - hi);
-    return a > b ? a : b;
+    uint32_t a = vor__mw_magnitude((int64_t)v - lo);
+    uint32_t b = vor__mw_magnitude((int64_t)v - hi);
+    return (a > b) ? a : b;
 }
 
 /* Distance between the intervals [lo1, hi1] and [lo2, hi2]. */
 static uint32_t interval_gap(int32_t lo1, int32_t hi1, int32_t lo2, int32_t hi2)
 {
-    return lo1 > hi2 ? (uint32_t)lo1 - (uint32_t)hi2 : lo2 > hi1 ? (uint32_t)lo2 - (uint32_t)hi1 : 0u;
+    return (lo1 > hi2) ? (uint32_t)lo1 - (uint32_t)hi2 : (lo2 > hi1) ? (uint32_t)lo2 - (uint32_t)hi1 : 0u;
 }
 
 /* *d = the squared distance from p to the farthest corner of r. */
@@ -720,10 +761,12 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             k->squared = 0;
             return;
         }
-        vor__mw_u128_t top, q;
+        vor__mw_u128_t top;
+        vor__mw_u128_t q;
         vor__mw_u128_set(&top, 0);
         for (int corner = 0; corner < 4; corner++) {
-            int32_t x = (corner & 1) ? r->x1 : r->x0, y = (corner & 2) ? r->y1 : r->y0;
+            int32_t x = (corner & 1) ? r->x1 : r->x0;
+            int32_t y = (corner & 2) ? r->y1 : r->y0;
             elliptic_form(&q, s, (int64_t)x - p->x, (int64_t)y - p->y);
             if (vor__mw_u128_compare(&q, &top) > 0) {
                 vor__mw_u128_copy(&top, &q);
@@ -732,11 +775,12 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
         vor__mw_u128_copy(&k->num, &top);
         set_unit_denominator(k);
     } else if (IN(bit, METRIC(HAUSDORFF))) {
-        vor__mw_u128_t top, d;
+        vor__mw_u128_t top;
+        vor__mw_u128_t d;
         vor__mw_u128_set(&top, 0);
         for (uint32_t i = s->offsets[site]; i < s->offsets[site + 1u]; i++) {
             const vor_point_t *p = &s->points[i];
-            if (worst) {
+            if (worst != 0) {
                 farthest_corner(&d, p, r);
             } else {
                 square_sum(&d, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1));
@@ -756,8 +800,9 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             p = &s->points[s->offsets[site]];
             count = s->offsets[site + 1u] - s->offsets[site];
         }
-        if (worst) {
-            vor__mw_u128_t d, other;
+        if (worst != 0) {
+            vor__mw_u128_t d;
+            vor__mw_u128_t other;
             farthest_corner(&d, &p[0], r);
             uint32_t reached = IN(bit, METRIC(SEGMENT))    ? 2u
                                : IN(bit, METRIC(POLYLINE)) ? count
@@ -775,12 +820,15 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
             }
             return;
         }
-        int32_t x0 = p[0].x, x1 = p[0].x, y0 = p[0].y, y1 = p[0].y;
+        int32_t x0 = p[0].x;
+        int32_t x1 = p[0].x;
+        int32_t y0 = p[0].y;
+        int32_t y1 = p[0].y;
         for (uint32_t i = 1; i < count; i++) {
-            x0 = p[i].x < x0 ? p[i].x : x0;
-            x1 = p[i].x > x1 ? p[i].x : x1;
-            y0 = p[i].y < y0 ? p[i].y : y0;
-            y1 = p[i].y > y1 ? p[i].y : y1;
+            x0 = (p[i].x < x0) ? p[i].x : x0;
+            x1 = (p[i].x > x1) ? p[i].x : x1;
+            y0 = (p[i].y < y0) ? p[i].y : y0;
+            y1 = (p[i].y > y1) ? p[i].y : y1;
         }
         square_sum(&k->num, interval_gap(x0, x1, r->x0, r->x1), interval_gap(y0, y1, r->y0, r->y1));
         set_unit_denominator(k);
@@ -791,7 +839,7 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
         const vor_point_t *p = &s->points[site];
         /* FARTHEST ranks larger distances first: its best case is far */
         int far = IN(bit, METRIC(FARTHEST)) ? !worst : worst;
-        if (far) {
+        if (far != 0) {
             point_key(m, bit, site, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1), k);
         } else {
             point_key(m, bit, site, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1), k);
@@ -857,11 +905,12 @@ static const metric_ops_t metric_ops[] = {
 static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t *list,
                              uint32_t count, uint32_t *out, size_t capacity)
 {
-    rank_key_t keys[2], best_case;
+    rank_key_t keys[2];
+    rank_key_t best_case;
     uint32_t slot = 0;
-    m->bounds(m, list != NULL ? list[0] : 0u, r, 1, &keys[0]);
+    m->bounds(m, (list != NULL) ? list[0] : 0u, r, 1, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
-        m->bounds(m, list != NULL ? list[c] : c, r, 1, &keys[slot ^ 1u]);
+        m->bounds(m, (list != NULL) ? list[c] : c, r, 1, &keys[slot ^ 1u]);
         if (m->compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
             slot ^= 1u;
         }
@@ -869,13 +918,14 @@ static uint32_t select_sites(const metric_t *m, const rect_t *r, const uint32_t 
     /* keys[slot]: the best worst case, reached at every pixel of r */
     uint32_t kept = 0;
     for (uint32_t c = 0; c < count; c++) {
-        uint32_t site = list != NULL ? list[c] : c;
+        uint32_t site = (list != NULL) ? list[c] : c;
         m->bounds(m, site, r, 0, &best_case);
         if (m->compare(m, &best_case, &keys[slot]) <= 0) {
             if (kept == capacity) {
                 return ALL_SITES;
             }
-            out[kept++] = site;
+            out[kept] = site;
+            kept++;
         }
     }
     return kept;
@@ -909,17 +959,17 @@ static void cull_band(metric_t *m)
     uint32_t tile = 0;
     uint32_t block_columns = m->tile_width * TILES_PER_BLOCK;
     for (uint32_t first = 0; first < m->frame->width; first += block_columns) {
-        uint32_t end = m->frame->width - first > block_columns ? first + block_columns : m->frame->width;
+        uint32_t end = ((m->frame->width - first) > block_columns) ? (first + block_columns) : m->frame->width;
         rect_t r = columns_rect(m, first, end - 1u, y0, y1);
         uint32_t block_count = select_sites(m, &r, NULL, m->n, block, m->n);
         for (uint32_t column = first; column < end; column += m->tile_width) {
-            uint32_t tile_end = end - column > m->tile_width ? column + m->tile_width : end;
+            uint32_t tile_end = ((end - column) > m->tile_width) ? (column + m->tile_width) : end;
             rect_t t = columns_rect(m, column, tile_end - 1u, y0, y1);
             size_t later = m->tiles - tile - 1u; /* one word kept for each later tile */
             size_t capacity = room - at - 1u - later;
             uint32_t kept = select_sites(m, &t, block, block_count, lists + at + 1u, capacity);
             lists[at] = kept;
-            at += 1u + (kept == ALL_SITES ? 0u : kept);
+            at += 1u + ((kept == ALL_SITES) ? 0u : kept);
             tile++;
         }
     }
@@ -933,10 +983,10 @@ static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count,
 {
     rank_key_t keys[2];
     uint32_t slot = 0;
-    uint32_t best = list != NULL ? list[0] : 0u;
+    uint32_t best = (list != NULL) ? list[0] : 0u;
     m->key(m, best, qx, qy, &keys[0]);
     for (uint32_t c = 1; c < count; c++) {
-        uint32_t site = list != NULL ? list[c] : c;
+        uint32_t site = (list != NULL) ? list[c] : c;
         m->key(m, site, qx, qy, &keys[slot ^ 1u]);
         if (m->compare(m, &keys[slot ^ 1u], &keys[slot]) < 0) {
             slot ^= 1u;
@@ -951,8 +1001,8 @@ static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count,
 static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
 {
     metric_t *m = state;
-    if (!m->brute && (!m->band_valid || j >= m->band_first + TILE_ROWS)) {
-        m->band_first = j - j % TILE_ROWS;
+    if (!m->brute && (!m->band_valid || (j >= (m->band_first + TILE_ROWS)))) {
+        m->band_first = j - (j % TILE_ROWS);
         m->band_valid = 1;
         cull_band(m);
     }
@@ -963,7 +1013,7 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
     uint32_t count = 0;
     uint32_t span = m->brute ? width : m->tile_width;
     for (uint32_t first = 0; first < width; first += span) {
-        uint32_t end = width - first > span ? first + span : width;
+        uint32_t end = ((width - first) > span) ? (first + span) : width;
         const uint32_t *list = NULL;
         uint32_t candidates = m->n;
         if (!m->brute) {
@@ -971,7 +1021,7 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
                 list = lists + at + 1u;
                 candidates = lists[at];
             }
-            at += 1u + (list != NULL ? candidates : 0u);
+            at += 1u + ((list != NULL) ? candidates : 0u);
         }
         for (uint32_t i = first; i < end; i++) {
             int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
@@ -990,23 +1040,23 @@ static int metric_check(const vor_raster_sites_t *s)
     if ((unsigned)s->metric > (unsigned)VOR_METRIC_POLYLINE) {
         return VOR_ERR_ARG;
     }
-    const uint32_t bit = 1u << s->metric;
+    const uint32_t bit = (uint32_t)1 << (uint32_t)s->metric;
     if (IN(bit, METRIC(L1) | METRIC(LINF) | METRIC(FARTHEST) | METRIC(SEGMENT))) {
         return VOR_OK;
     } else if (IN(bit, METRIC(LP))) {
-        return s->lp_exponent >= 1u && s->lp_exponent <= 8u ? VOR_OK : VOR_ERR_ARG;
+        return ((s->lp_exponent >= 1u) && (s->lp_exponent <= 8u)) ? VOR_OK : VOR_ERR_ARG;
     } else if (IN(bit, METRIC(ELLIPTIC))) {
         /* positive definite: a > 0 and a c - b^2 > 0 (each product < 2^62) */
-        return s->form_a > 0 &&
+        return (s->form_a > 0) &&
                        vor__mul_i32(s->form_a, s->form_c) > vor__mul_i32(s->form_b, s->form_b)
                    ? VOR_OK
                    : VOR_ERR_ARG;
     } else if (IN(bit, METRIC(MULT) | METRIC(ADD) | METRIC(COMPOUND))) {
-        if ((s->metric != VOR_METRIC_ADD && s->mult_weights == NULL) ||
-            (s->metric != VOR_METRIC_MULT && s->add_weights == NULL)) {
+        if (((s->metric != VOR_METRIC_ADD) && (s->mult_weights == NULL)) ||
+            ((s->metric != VOR_METRIC_MULT) && (s->add_weights == NULL))) {
             return VOR_ERR_ARG;
         }
-        for (uint32_t k = 0; s->metric != VOR_METRIC_ADD && k < s->count; k++) {
+        for (uint32_t k = 0; (s->metric != VOR_METRIC_ADD) && (k < s->count); k++) {
             if (s->mult_weights[k] < 1) {
                 return VOR_ERR_ARG;
             }
@@ -1020,8 +1070,8 @@ static int metric_check(const vor_raster_sites_t *s)
             if (s->offsets[k] >= s->offsets[k + 1u]) {
                 return VOR_ERR_ARG; /* every site has a point */
             }
-            if (s->metric == VOR_METRIC_POLYLINE && s->mult_weights != NULL &&
-                s->mult_weights[k] < 1) {
+            if ((s->metric == VOR_METRIC_POLYLINE) && (s->mult_weights != NULL) &&
+                (s->mult_weights[k] < 1)) {
                 return VOR_ERR_ARG;
             }
         }
@@ -1034,8 +1084,8 @@ static int metric_check(const vor_raster_sites_t *s)
 /* Widens [lo, hi] to hold v. */
 static void widen(int32_t v, int32_t *lo, int32_t *hi)
 {
-    *lo = v < *lo ? v : *lo;
-    *hi = v > *hi ? v : *hi;
+    *lo = (v < *lo) ? v : *lo;
+    *hi = (v > *hi) ? v : *hi;
 }
 
 /* Limbs holding the additive comparison of square roots of values below
@@ -1045,11 +1095,11 @@ static void widen(int32_t v, int32_t *lo, int32_t *hi)
 static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
 {
     uint32_t bits = 2u * a_bits;
-    if (2u + 2u * delta_bits + a_bits > bits) {
-        bits = 2u + 2u * delta_bits + a_bits;
+    if ((2u + (2u * delta_bits) + a_bits) > bits) {
+        bits = 2u + (2u * delta_bits) + a_bits;
     }
-    if (2u * delta_bits + 2u > bits) {
-        bits = 2u * delta_bits + 2u;
+    if (((2u * delta_bits) + 2u) > bits) {
+        bits = (2u * delta_bits) + 2u;
     }
     return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
 }
@@ -1068,7 +1118,7 @@ static void prepare(metric_t *m, const vor__raster_t *r)
     m->step_x = frame->step_x;
     m->sites = s;
     m->metric = s->metric;
-    m->metric_bit = 1u << s->metric;
+    m->metric_bit = (uint32_t)1 << (uint32_t)s->metric;
     m->key = metric_ops[s->metric].key;
     m->compare = metric_ops[s->metric].compare;
     m->bounds = metric_ops[s->metric].bounds;
@@ -1085,48 +1135,54 @@ static void prepare(metric_t *m, const vor__raster_t *r)
 
     /* span: the largest coordinate difference between any two of the
      * site points and pixel centres (< 2^32); it sets the widths */
-    int32_t x0 = frame->origin_x, y0 = frame->origin_y;
+    int32_t x0 = frame->origin_x;
+    int32_t y0 = frame->origin_y;
     int32_t x1 = (int32_t)(frame->origin_x + vor__offset(frame->width - 1u, frame->step_x));
     int32_t y1 = (int32_t)(frame->origin_y + vor__offset(frame->height - 1u, frame->step_y));
-    uint32_t first = 0, end = s->count;
+    uint32_t first = 0;
+    uint32_t end = s->count;
     if (s->metric == VOR_METRIC_SEGMENT) {
         end = 2u * s->count;
     }
     for (uint32_t k = 0; k < s->count; k++) {
-        if (s->metric == VOR_METRIC_HAUSDORFF || s->metric == VOR_METRIC_POLYGON ||
-            s->metric == VOR_METRIC_POLYLINE) {
+        if ((s->metric == VOR_METRIC_HAUSDORFF) || (s->metric == VOR_METRIC_POLYGON) ||
+            (s->metric == VOR_METRIC_POLYLINE)) {
             first = s->offsets[k];
             end = s->offsets[k + 1u];
         } else if (k > 0u) {
             break; /* the points are one array: walked once below */
+        } else {
+            /* no other case */
         }
         for (uint32_t i = first; i < end; i++) {
             widen(s->points[i].x, &x0, &x1);
             widen(s->points[i].y, &y0, &y1);
         }
     }
-    uint64_t span_x = (uint64_t)((int64_t)x1 - x0), span_y = (uint64_t)((int64_t)y1 - y0);
-    uint32_t span_bits = vor__mw_bit_length(span_x > span_y ? span_x : span_y); /* <= 32 */
+    uint64_t span_x = (uint64_t)((int64_t)x1 - x0);
+    uint64_t span_y = (uint64_t)((int64_t)y1 - y0);
+    uint32_t span_bits = vor__mw_bit_length((span_x > span_y) ? span_x : span_y); /* <= 32 */
 
     if (IN(m->metric_bit, METRIC(LP))) {
-        uint32_t bits = s->lp_exponent * span_bits + 1u; /* |dx|^p + |dy|^p < 2^bits */
+        uint32_t bits = (s->lp_exponent * span_bits) + 1u; /* |dx|^p + |dy|^p < 2^bits */
         m->lp_narrow = bits <= 128u;
         m->limbs = (bits + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
     } else if (IN(m->metric_bit, METRIC(ELLIPTIC))) {
         m->det = (uint64_t)(vor__mul_i32(s->form_a, s->form_c) - vor__mul_i32(s->form_b, s->form_b));
         m->trace = (uint32_t)s->form_a + (uint32_t)s->form_c; /* < 2^32 */
     } else if (IN(m->metric_bit, METRIC(ADD) | METRIC(COMPOUND))) {
-        int32_t lo = s->add_weights[0], hi = s->add_weights[0];
+        int32_t lo = s->add_weights[0];
+        int32_t hi = s->add_weights[0];
         int32_t heaviest = 1;
         for (uint32_t k = 0; k < s->count; k++) {
             widen(s->add_weights[k], &lo, &hi);
-            if (s->metric == VOR_METRIC_COMPOUND && s->mult_weights[k] > heaviest) {
+            if ((s->metric == VOR_METRIC_COMPOUND) && (s->mult_weights[k] > heaviest)) {
                 heaviest = s->mult_weights[k];
             }
         }
         /* squared distances < 2^(2 span_bits + 1); weight differences
          * < 2^delta_bits; COMPOUND multiplies by the w1 products */
-        uint32_t a_bits = 2u * span_bits + 1u;
+        uint32_t a_bits = (2u * span_bits) + 1u;
         uint32_t delta_bits = vor__mw_bit_length((uint64_t)((int64_t)hi - lo));
         if (s->metric == VOR_METRIC_COMPOUND) {
             uint32_t w_bits = vor__mw_bit_length((uint32_t)heaviest);
@@ -1134,12 +1190,14 @@ static void prepare(metric_t *m, const vor__raster_t *r)
             delta_bits += 2u * w_bits;
         }
         m->limbs = additive_limbs(a_bits, delta_bits);
+    } else {
+        /* no other case */
     }
 
     /* tiles: 16 columns, wider when the pool could not hold one count
      * word per tile after the block list */
     uint32_t shift = 4;
-    while ((size_t)((frame->width + (1u << shift) - 1u) >> shift) > pool_words - m->n) {
+    while ((size_t)((frame->width + (1u << shift) - 1u) >> shift) > (pool_words - m->n)) {
         shift++;
     }
     m->tile_width = 1u << shift;
@@ -1169,7 +1227,7 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                const vor_raster_output_t *out, const vor_raster_options_t *options,
                void *work, size_t work_bytes)
 {
-    if (sites != NULL && sites->metric == VOR_METRIC_EUCLID) {
+    if ((sites != NULL) && (sites->metric == VOR_METRIC_EUCLID)) {
         return vor_raster_euclid(frame, sites, out, options, work, work_bytes);
     }
     vor__raster_t r;

@@ -74,17 +74,19 @@ static inline void vor__walk_begin(vor__walk_t *w, const vor_t *d, enum vor__wal
 static inline bool vor__walk_is_narrow(const vor_t *d, int32_t x, int32_t y)
 {
     const int64_t reach = INT32_MAX;
-    return (uint32_t)d->high.x - (uint32_t)d->low.x < (1u << 30) &&
-           (uint32_t)d->high.y - (uint32_t)d->low.y < (1u << 30) &&
-           (int64_t)x - d->high.x >= -reach && (int64_t)x - d->low.x <= reach &&
-           (int64_t)y - d->high.y >= -reach && (int64_t)y - d->low.y <= reach;
+    return (uint32_t)d->high.x - (uint32_t)d->low.x < ((uint32_t)1 << 30) &&
+           (uint32_t)d->high.y - (uint32_t)d->low.y < ((uint32_t)1 << 30) &&
+           ((int64_t)x - d->high.x) >= -reach && ((int64_t)x - d->low.x) <= reach &&
+           ((int64_t)y - d->high.y) >= -reach && ((int64_t)y - d->low.y) <= reach;
 }
 
 /* Sign of |q - n|^2 - |q - s|^2 in the narrow case above (e = q - s). */
 static inline int vor__narrow_closer(int32_t ex, int32_t ey, const vor_point_t *s,
                                      const vor_point_t *n)
 {
-    int32_t dx = n->x - s->x, dy = n->y - s->y; /* |.| < 2^30 */
+    /* |.| < 2^30 */
+    int32_t dx = n->x - s->x;
+    int32_t dy = n->y - s->y;
     int64_t square = vor__mul_i32(dx, dx) + vor__mul_i32(dy, dy);
     int64_t twice_dot = vor__mul_i32(ex, 2 * dx) + vor__mul_i32(ey, 2 * dy);
     return (square < twice_dot) ? -1 : (square > twice_dot) ? 1 : 0;
@@ -105,7 +107,7 @@ static inline int vor__walk_compare(vor__walk_t *w, const vor_point_t *s, uint32
         return w->narrow ? vor__narrow_closer(ex, ey, at, &s[n])
                          : vor__closer_sign(w->q, &s[n], at, NULL);
     }
-    return (s[n].y < s[best].y || (s[n].y == s[best].y && s[n].x < s[best].x)) ? -1 : 1;
+    return ((s[n].y < s[best].y) || ((s[n].y == s[best].y) && (s[n].x < s[best].x))) ? -1 : 1;
 }
 
 /* The walk from site `from` (in the mesh, which has two or more sites);
@@ -122,9 +124,11 @@ static inline uint32_t vor__walk(vor__walk_t *w, uint32_t from)
     uint32_t site = from;
     for (uint32_t moves = 0; moves < d->vertex_count; moves++) {
         const vor_point_t *at = &s[site];
-        bool offset = w->goal == VOR__WALK_POINT && w->narrow;
-        int32_t ex = offset ? w->q->x - at->x : 0, ey = offset ? w->q->y - at->y : 0;
-        uint32_t slot = site, best = site;
+        bool offset = (w->goal == VOR__WALK_POINT) && w->narrow;
+        int32_t ex = offset ? (w->q->x - at->x) : 0;
+        int32_t ey = offset ? (w->q->y - at->y) : 0;
+        uint32_t slot = site;
+        uint32_t best = site;
         w->tie = false;
         for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
             const vor__tri_t *t = &tri[slot];
@@ -136,12 +140,12 @@ static inline uint32_t vor__walk(vor__walk_t *w, uint32_t from)
             slot = t->n[vor__prev(i)];
             if (n != VOR__INFINITE) {
                 int c = vor__walk_compare(w, s, n, best, at, ex, ey);
-                if (c < 0 && w->goal == VOR__WALK_POINT) {
+                if ((c < 0) && (w->goal == VOR__WALK_POINT)) {
                     best = n;
                     break;
                 }
                 best = (c < 0) ? n : best;
-                w->tie = w->tie || c == 0;
+                w->tie = w->tie || (c == 0);
             }
             if (slot == site) {
                 break;

@@ -28,6 +28,8 @@
 #   analyzer    clang and its static analyser's scan-build (clang-tools),
 #               for make test's analyzer suite (GCC's -fanalyzer comes with
 #               gcc, group host)
+#   misra       cppcheck and python3 (its MISRA C:2012 addon is a Python
+#               script), for make misra and make test's misra suite
 #   jcv         picolibc for Cortex-M, the C library of the embedded peer
 #               benchmark (make bench-jcv: malloc and libm for jc_voronoi)
 #
@@ -73,6 +75,10 @@ members() {
         echo "libxml2-utils /usr/bin/xmllint"
         echo "librsvg2-bin /usr/bin/rsvg-convert"
         ;;
+    misra)
+        echo "cppcheck cppcheck"
+        echo "python3 python3"
+        ;;
     jcv) echo "picolibc-arm-none-eabi /usr/lib/picolibc/arm-none-eabi/picolibc.specs" ;;
     fuzz)
         echo "clang-14 clang-14"
@@ -109,7 +115,7 @@ missing_packages() {
 }
 
 if [ $# -eq 0 ]; then
-    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen gcovr prove analyzer jcv)" >&2
+    echo "usage: tools/install-deps.sh GROUP... (host cli python toolchains clang cmake bench bench-query svg fuzz doxygen gcovr prove analyzer misra jcv)" >&2
     exit 2
 fi
 # an unknown group is an error even when nothing is missing

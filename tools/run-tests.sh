@@ -11,7 +11,8 @@
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself (also built with GCC and clang at -O1 to -Oz), GCC's
-# static analyser over the library, the check that a firmware links only the
+# static analyser over the library, cppcheck's MISRA C:2012 addon over it
+# (every finding a recorded deviation), the check that a firmware links only the
 # library files of the features it calls, the memory tables of the docs,
 # a fixed sample of the mutation tests (tools/mutants.py), the build-system
 # manifests, the layer rule of src/ (tools/check-layers.py),
@@ -43,7 +44,7 @@ only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
 suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli fuzz coverage harness"
-suites="$suites mutants freestanding analyzer linking programs memory-tables manifests layers consumers spdx docs"
+suites="$suites mutants freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
 done
@@ -394,8 +395,9 @@ analyzer() {
 }
 if wanted analyzer; then analyzer; else skip analyzer; fi
 
-# Mutation testing (tools/mutants.py, docs/testing.md): every
-# MUTANTS_EVERY-th mutant of the predicates, the multi-word arithmetic, the
+# Mutation testing (tools/mutants.py, docs/testing.md): about one in
+# MUTANTS_EVERY mutants (chosen by each one's file, line text and
+# mutation) of the predicates, the multi-word arithmetic, the
 # perturbation and the mesh updates must be killed by the host suite or be
 # listed as equivalent in tools/mutants-equivalent.txt, with 95 % killed;
 # its self-test shows an unmutated build passes and a broken one is killed.
@@ -411,6 +413,32 @@ if wanted mutants; then
     fi
 else
     skip mutants
+fi
+
+# cppcheck's MISRA C:2012 addon over the library in three configurations
+# (tools/misra.sh): every finding must be a deviation of
+# tools/misra-deviations.txt, every deviation must still be needed, every
+# header must be analysed, and a file with known violations must be
+# reported (so the suite cannot pass with the addon broken).
+if wanted misra; then
+    misra_log="$logs/misra.log"
+    tools/misra.sh >"$misra_log" 2>&1
+    record misra "$misra_log" $?
+else
+    skip misra
+fi
+
+# Frama-C's EVA (tools/prove/prove.sh) over the harnesses that show 0
+# alarms and finish in about a minute each: the predicates (as built at
+# -O2 and -Os), the multi-word arithmetic (generic and Cortex-M0), every
+# diagram update and the raster. make prove runs every harness.
+if wanted prove; then
+    prove_log="$logs/prove.log"
+    tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram raster \
+        >"$prove_log" 2>&1
+    record prove "$prove_log" $?
+else
+    skip prove
 fi
 
 # A firmware links only what it calls: the bench/size/ programs, linked

@@ -1,0 +1,122 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * queries.c - the harness of `make prove` for the calls that read a
+ * diagram's topology: vor_nearest(_k), the tracker and the iterators over
+ * triangles, neighbours and the hull (geometry.c has the Voronoi
+ * geometry). The diagrams are small and concrete; every query point, id
+ * and count is anywhere in its type, and every pointer the header allows
+ * to be NULL is NULL or not.
+ */
+#include <__fc_builtin.h>
+
+#include "vor.h"
+
+/* 6 points, 5 sites: four cocircular (0 to 3, on the circle of centre
+ * (5, 5)), a duplicate (4 repeats 0) and one far away (5), beyond the
+ * tracker's 2^30 reach and where vertices round out of int32. Then three
+ * collinear sites, one site and none: each shape the calls tell apart. */
+#define N 6u
+static const vor_point_t points[N] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0},
+                                      {INT32_MIN, INT32_MAX}};
+static const vor_point_t collinear[3] = {{0, 0}, {10, 0}, {20, 0}};
+
+static uint32_t arena[(VOR_ARENA_BYTES(N) + 3u) / 4u];
+
+static uint32_t any_u32(void)
+{
+    return Frama_C_unsigned_int_interval(0u, UINT32_MAX);
+}
+
+/* a site id or anything else: in range most of the time, as a caller's */
+static uint32_t any_id(void)
+{
+    return any_u32();
+}
+
+static vor_point_t any_point(void)
+{
+    vor_point_t p;
+    p.x = Frama_C_interval(INT32_MIN, INT32_MAX);
+    p.y = Frama_C_interval(INT32_MIN, INT32_MAX);
+    return p;
+}
+
+static int iterate(const vor_t *d)
+{
+    vor_triangle_iter_t ti;
+    vor_neighbour_iter_t ni;
+    vor_hull_iter_t hi;
+    uint32_t ids[3], site;
+    int r = 0;
+
+    /* a NULL iterator: nothing done; a NULL diagram: the iterator closed */
+    r |= vor_triangles_begin(NULL, d);
+    r |= vor_triangles_begin(&ti, Frama_C_nondet_ptr((void *)d, NULL));
+    while (vor_triangles_next(&ti, Frama_C_nondet_ptr(ids, NULL))) {
+    }
+    r |= vor_neighbours_begin(NULL, d, any_id());
+    r |= vor_neighbours_begin(&ni, Frama_C_nondet_ptr((void *)d, NULL), any_id());
+    while (vor_neighbours_next(&ni, Frama_C_nondet_ptr(&site, NULL))) {
+    }
+    return r;
+}
+
+static int nearest(const vor_t *d)
+{
+    vor_tracker_t tracker;
+    uint32_t site, found;
+    uint32_t list[N + 1u];
+    int r = 0;
+
+    r |= vor_nearest(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(),
+                     Frama_C_nondet_ptr(&site, NULL));
+    r |= vor_nearest_k(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(), any_u32(),
+                       NULL, &found);
+    r |= vor_nearest_k(d, any_point(), any_id(), 1u, list, NULL);
+    /* each count in turn (unrolled), a count beyond the sites included:
+     * how many entries of list[] are written depends on it */
+    /*@ loop unroll N + 2; */
+    for (uint32_t k = 0; k <= N + 1u; k++) {
+        r |= vor_nearest_k(d, any_point(), any_id(), k, list, &found);
+    }
+    r |= vor_tracker_begin_checked(Frama_C_nondet_ptr(&tracker, NULL),
+                                   Frama_C_nondet_ptr((void *)d, NULL), any_u32());
+    if (vor_tracker_begin(&tracker, d) == VOR_OK) {
+        r |= vor_track(&tracker, any_point(), &site); /* from anywhere */
+    }
+    /* from the cell cached at each answer (unrolled: a non-relational
+     * analysis would mix one cell's bounds with another's position), on
+     * to anywhere */
+    /*@ loop unroll N; */
+    for (uint32_t s = 0; s < N; s++) {
+        if (vor_tracker_begin(&tracker, d) == VOR_OK &&
+            vor_track(&tracker, points[s], &site) == VOR_OK) {
+            r |= vor_track(&tracker, any_point(), Frama_C_nondet_ptr(&site, NULL));
+        }
+    }
+    r |= vor_track(NULL, any_point(), &site);
+    return r;
+}
+
+int main(void)
+{
+    vor_t d;
+    int r = 0;
+
+    d.revision = any_u32();
+    if (vor_init(&d, arena, sizeof arena, N) != VOR_OK) {
+        return 1;
+    }
+    /* an empty diagram, one site, then all of them */
+    r |= nearest(&d);
+    r |= iterate(&d);
+    r |= vor_build(&d, points, 1u, NULL, NULL);
+    r |= iterate(&d);
+    r |= vor_build(&d, collinear, 3u, NULL, NULL);
+    r |= nearest(&d);
+    r |= iterate(&d);
+    r |= vor_build(&d, points, N, NULL, NULL);
+    r |= nearest(&d);
+    r |= iterate(&d);
+    return r;
+}
