@@ -27,6 +27,10 @@
 #                           (tests/fuzz/, docs/testing.md)
 #   make soak               10^7 random inserts, removes, moves and queries on
 #                           one diagram, checked against fresh builds
+#   make mutants            mutation testing of the predicates, the multi-word
+#                           arithmetic, the perturbation and the mesh updates
+#                           against the host suite (tools/mutants.py,
+#                           docs/testing.md); MUTANTS_EVERY=N: about one in N
 #   make prove              Frama-C EVA: no runtime error in the public calls
 #                           over their inputs (tools/prove/, docs/testing.md)
 #   make misra              cppcheck's MISRA C:2012 addon over the library: no
@@ -105,7 +109,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove misra clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage coverage-report pictures size bench-predicates bench-raster docs prove misra mutants clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -363,6 +367,17 @@ size:
 prove:
 	@tools/install-deps.sh prove
 	@tools/prove/prove.sh
+
+# Every mutant of the files tools/mutants.py names, each compiled and run
+# against the host suite; the report is build/mutants/report.txt. It fails
+# below 95 % killed or on a survivor tools/mutants-equivalent.txt does not
+# show equivalent. MUTANTS_EVERY=N runs about one mutant in N, chosen by
+# its own text (make test's sample).
+MUTANTS_EVERY ?= 1
+mutants:
+	@tools/install-deps.sh host python
+	@$(MAKE) -s $(GEN)/predicate_vectors.c
+	@nice -n 10 python3 tools/mutants.py --every $(MUTANTS_EVERY)
 
 misra:
 	@tools/install-deps.sh misra

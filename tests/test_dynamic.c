@@ -607,6 +607,31 @@ static void trackers(void)
     }
 }
 
+/* A diagram of one site, whose arena has no triangle slots to hold the
+ * free list: its id is reused after a removal, and the bytes after the
+ * arena (filled with a pattern) are never taken for an id. */
+static void one_site(void)
+{
+    static uint8_t memory[VOR_ARENA_BYTES(1) + 64u] __attribute__((aligned(8)));
+    for (size_t i = 0; i < sizeof memory; i++) {
+        memory[i] = 0xA5u;
+    }
+    vor_t d;
+    uint32_t id = UINT32_MAX, other = UINT32_MAX;
+    CHECK(vor_init(&d, memory, VOR_ARENA_BYTES(1), 1) == VOR_OK &&
+              vor_insert(&d, (vor_point_t){3, 4}, &id) == VOR_OK && id == 0u,
+          "first site: id %u", id);
+    for (int round = 0; round < 3; round++) {
+        CHECK(vor_remove(&d, 0) == VOR_OK, "remove, round %d", round);
+        id = UINT32_MAX;
+        CHECK(vor_insert(&d, (vor_point_t){round, -round}, &id) == VOR_OK && id == 0u &&
+                  vor_validate(&d, NULL) == VOR_OK,
+              "insert after a removal, round %d: id %u", round, id);
+        CHECK(vor_insert(&d, (vor_point_t){100, 100}, &other) == VOR_ERR_FULL,
+              "a second site, round %d", round);
+    }
+}
+
 /* Two sites: vor_move tells a move onto the other site (a duplicate,
  * nothing changed) from moves that share only its x or only its y. And
  * the 24-bit change counter wraps to 1 on a diagram without a motion
@@ -652,5 +677,6 @@ void test_dynamic(void)
     TEST_CASE("rehoming") rehoming();
     TEST_CASE("build_duplicates") build_duplicates();
     TEST_CASE("trackers") trackers();
+    TEST_CASE("one_site") one_site();
     TEST_CASE("two_sites") two_sites();
 }

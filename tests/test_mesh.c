@@ -459,6 +459,64 @@ static void check_failures_change_nothing(void)
     CHECK(bad == 0 && tried > 60u, "%u of %u failing calls changed the diagram", bad, tried);
 }
 
+/* vor_memory's figures, exactly: the documented sizes of the current
+ * sites, the 2v - 2 triangle slots of v >= 2 sites in the mesh and the
+ * bucket grid (columns x rows ids once the mesh has two sites), and the
+ * bytes per site in hundredths rounded to nearest, here by the compiler's
+ * own 64-bit division; and vor_init's and vor_build's argument limits at
+ * their edges (the mutation tests showed them unchecked). */
+static void check_memory_figures(void)
+{
+    /* every size to 40 (each rounding of the hundredths), and larger */
+    static const uint32_t larger[] = {50, 333, 3000};
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    for (unsigned k = 0; k < 41u + sizeof larger / sizeof larger[0]; k++) {
+        uint32_t n = (k <= 40u) ? k : larger[k - 41u], max = n + 5u;
+        vor_t d;
+        vor_memory_t m;
+        for (uint32_t i = 0; i < n; i++) {
+            points[i].x = test_rng_range(&rng, -100000, 100000);
+            points[i].y = test_rng_range(&rng, -100000, 100000);
+        }
+        if (max > BIG_SITES) {
+            max = BIG_SITES;
+        }
+        CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(max), max) == VOR_OK &&
+                  vor_build(&d, points, n, NULL, NULL) == VOR_OK &&
+                  vor_memory(&d, &m) == VOR_OK,
+              "build %u", n);
+        uint32_t triangles = (n >= 2u) ? 2u * n - 2u : 0u;
+        uint32_t buckets = (n >= 2u) ? d.bucket_columns * d.bucket_rows : 0u;
+        uint64_t used = (uint64_t)n * sizeof(vor_point_t) +
+                        (uint64_t)triangles * VOR_TRIANGLE_BYTES +
+                        (uint64_t)buckets * sizeof(vor_index_t);
+        uint64_t x100 = (n == 0u) ? 0u : (used * 100u + n / 2u) / n;
+        CHECK(m.arena_bytes == VOR_ARENA_BYTES(max) && m.sites == n && m.triangles == triangles &&
+                  m.used_bytes == used && m.bytes_per_site_x100 == x100,
+              "memory of %u sites: %u bytes, %u per site x100 (want %u, %u)", n,
+              (unsigned)m.used_bytes, m.bytes_per_site_x100, (unsigned)used, (unsigned)x100);
+        CHECK(n < 2u || buckets > 0u, "%u sites: a bucket grid", n);
+    }
+    /* the limits of the arguments */
+    vor_t d;
+    uint32_t dup[1] = {UINT32_MAX};
+    CHECK(vor_init(&d, arena_a, 64u, VOR_MAX_SITES) == VOR_ERR_NOMEM &&
+              vor_init(&d, arena_a, 64u, VOR_MAX_SITES + 1u) == VOR_ERR_ARG,
+          "vor_init at VOR_MAX_SITES");
+    CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(4), 4) == VOR_OK &&
+              vor_build(&d, NULL, 0, NULL, NULL) == VOR_OK && d.site_count == 0u &&
+              vor_build(&d, NULL, 1, NULL, NULL) == VOR_ERR_ARG,
+          "vor_build with no points");
+    points[0].x = 7;
+    points[0].y = -7;
+    CHECK(vor_build(&d, points, 1, NULL, dup) == VOR_OK && dup[0] == 0u && d.site_count == 1u,
+          "vor_build of one site: duplicate_of[0] = %u", dup[0]);
+    dup[0] = UINT32_MAX;
+    CHECK(vor_build(&d, points, 0, NULL, dup) == VOR_OK && dup[0] == UINT32_MAX,
+          "vor_build of no site writes no duplicate_of");
+}
+
 /* ------------------------------------------------------------------ */
 /* vor_validate on corrupted diagrams                                  */
 
@@ -790,6 +848,7 @@ void test_mesh(void)
     TEST_CASE("families") check_families();
     TEST_CASE("memory") check_memory();
     TEST_CASE("failures_change_nothing") check_failures_change_nothing();
+    TEST_CASE("memory_figures") check_memory_figures();
     TEST_CASE("corrupted") check_corrupted();
     TEST_CASE("sort_worst_case") check_sort_worst_case();
 }

@@ -433,6 +433,234 @@ static void full_range(void)
     CHECK(fast > 0u, "full range: no fast move (a test that cannot fail)");
 }
 
+/* A site's first slow move sizes no box of its own (the backoff), yet
+ * its star's other boxes must be proven again: site 1 moves into the box
+ * of its neighbour 0 without changing a triangle (the ring lies far from
+ * their bisector), after which no jump of 0 to a corner of its box may
+ * be fast, each crossing a line through site 1 (white box: the box read
+ * from the cache). */
+static void neighbour_moves_in(void)
+{
+    const uint32_t n = 9;
+    static const vor_point_t ring[7] = {{1000000, 0},       {623490, 781831},   {-222521, 974928},
+                                        {-900969, 433884},  {-900969, -433884}, {-222521, -974928},
+                                        {623490, -781831}};
+    at[0] = (vor_point_t){0, 0};
+    at[1] = (vor_point_t){3000, 0};
+    for (uint32_t k = 0; k < 7u; k++) {
+        at[2u + k] = ring[k];
+    }
+    start(n);
+    for (uint32_t k = 0; k < 4u; k++) {
+        move(n, 0, offset(at[0], (k % 2u == 0u) ? 1 : -1, 0), "neighbour settles", k);
+    }
+    if (!CHECK(boxed(0), "neighbour: site 0 has no box (a test that cannot fail)")) {
+        return;
+    }
+    const struct vor__motion_entry *e = &with.motion[0];
+    int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
+    vor_point_t anchor = {e->x, e->y};
+    vor_point_t inside = offset(anchor, r / 2 + 1, 0);
+    CHECK(r >= 2 && site_at(n, inside) == VOR_NO_HINT, "neighbour: box of %d", (int)r);
+    test_fingerprint_t before = test_fingerprint_of(&with, NULL);
+    move(n, 1, inside, "neighbour moves in", 0);
+    CHECK(test_same_fingerprint(before, test_fingerprint_of(&with, NULL)),
+          "neighbour: the move changed triangles (a test that cannot fail)");
+    static const int32_t sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+    for (uint32_t k = 0; k < 4u; k++) {
+        vor_point_t corner = offset(anchor, sign[k][0] * r, sign[k][1] * r);
+        CHECK(!move(n, 0, corner, "neighbour: a corner", k),
+              "neighbour: a jump of site 0 to (%d, %d) was fast", corner.x, corner.y);
+        move(n, 0, anchor, "neighbour: back", k);
+    }
+}
+
+/* A box near the end of the int32 range is cut to the largest power of
+ * two that keeps it inside (so that the fast test's offsets cannot
+ * wrap), and no smaller: site 0 lies about 100 units from INT32_MAX, its
+ * neighbours a million away, so its predicates alone would allow a far
+ * larger box; 2^e <= room < 2^(e+1) (white box: the box read from the
+ * cache). */
+static void box_at_range_end(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 31);
+    const uint32_t n = 10;
+    at[0] = (vor_point_t){INT32_MAX - 100, 0};
+    for (uint32_t i = 1; i < n; i++) {
+        do {
+            at[i].x = INT32_MAX - test_rng_range(&rng, 1000000, 4000000);
+            at[i].y = test_rng_range(&rng, -2000000, 2000000);
+        } while (site_at(i, at[i]) != VOR_NO_HINT);
+    }
+    start(n);
+    for (uint32_t k = 0; k < 4u; k++) {
+        move(n, 0, offset(at[0], (k % 2u == 0u) ? 1 : -1, 0), "range end settles", k);
+    }
+    if (!CHECK(boxed(0), "range end: site 0 has no box (a test that cannot fail)")) {
+        return;
+    }
+    const struct vor__motion_entry *e = &with.motion[0];
+    uint32_t exponent = (e->stamp & VOR__BOX_MASK) - 1u;
+    uint32_t room = (uint32_t)(INT32_MAX - e->x);
+    CHECK((1u << exponent) <= room && (2u << exponent) > room,
+          "range end: box 2^%u at %u from the end", exponent, room);
+}
+
+/* Bit length of v: the least k with v < 2^k. */
+static int bit_length(uint64_t v)
+{
+    int k = 0;
+    while (k < 64 && (v >> k) != 0u) {
+        k++;
+    }
+    return k;
+}
+
+/* The box of a three-site diagram, whose predicates are all the one
+ * orientation (its triangle's and the hull's, whichever site they are
+ * taken from), against the derivation in src/motion.c: with |P| of bit
+ * length L, vectors below 2^m from every site, moves within 2^E, E = e + 2,
+ * the bound 2^(max(m, E) + E + 3) must stay at or below 2^(L - 3); the
+ * box has the largest such e >= 0, found here by trying each (white box:
+ * the box read from the cache). */
+static void triangle_boxes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 41);
+    uint32_t tried = 0, boxes = 0;
+    for (uint32_t round = 0; round < 400u && tried < 60u; round++) {
+        int32_t span = 1 << test_rng_range(&rng, 4, 20);
+        for (uint32_t i = 0; i < 3u; i++) {
+            at[i].x = test_rng_range(&rng, 0, span);
+            at[i].y = test_rng_range(&rng, 0, span);
+        }
+        int64_t ux = (int64_t)at[1].x - at[0].x, uy = (int64_t)at[1].y - at[0].y;
+        int64_t vx = (int64_t)at[2].x - at[0].x, vy = (int64_t)at[2].y - at[0].y;
+        int64_t det = ux * vy - uy * vx;
+        /* the same m from each site: every predicate has the same bound */
+        int m[3];
+        for (uint32_t b = 0; b < 3u; b++) {
+            uint32_t spread = 0;
+            for (uint32_t k = 0; k < 3u; k++) {
+                int64_t dx = (int64_t)at[k].x - at[b].x, dy = (int64_t)at[k].y - at[b].y;
+                spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+            }
+            m[b] = bit_length(spread);
+        }
+        if (det == 0 || m[0] != m[1] || m[1] != m[2]) {
+            continue;
+        }
+        tried++;
+        int L = bit_length((uint64_t)(det < 0 ? -det : det)), want = -1;
+        for (int e = 0; e <= 30; e++) {
+            int E = e + 2, n = (m[0] > E) ? m[0] : E;
+            want = (L >= 3 && n + E + 3 <= L - 3) ? e : want;
+        }
+        start(3);
+        move(3, 0, offset(at[0], 1, 0), "triangle box", round);
+        move(3, 0, offset(at[0], -1, 0), "triangle box", round); /* sizes the box */
+        const struct vor__motion_entry *e = &with.motion[0];
+        int got = boxed(0) ? (int)(e->stamp & VOR__BOX_MASK) - 1 : -1;
+        boxes += (want >= 0) ? 1u : 0u;
+        CHECK(got == want, "triangle (%d, %d) (%d, %d) (%d, %d): box 2^%d, want 2^%d (L %d, m %d)",
+              at[0].x, at[0].y, at[1].x, at[1].y, at[2].x, at[2].y, got, want, L, m[0]);
+    }
+    CHECK(tried >= 60u && boxes >= 20u, "triangle boxes: %u triangles, %u boxes", tried, boxes);
+}
+
+/* A move that brings a line close to a boxed site must void its box:
+ * site 1 moves so that the line of sites 0 and 1 passes just inside the
+ * reach of site 2's box (|P| at least 2^(m + e), well below what the
+ * derivation allows for the box, 2^(m + e + 6)); the jump of site 2 to the
+ * corner across the line must then be slow and exact. Site 2 starts
+ * `below` under the line's midpoint: 16384 gives it a box of 2^6, 200 one
+ * of 2^0. */
+static void line_comes_close(int32_t below)
+{
+    const int32_t B = 65535; /* vectors of m = 16 bits */
+    at[0] = (vor_point_t){0, 0};
+    at[1] = (vor_point_t){B, B};
+    at[2] = (vor_point_t){32768, 32768 - below};
+    start(3);
+    move(3, 2, offset(at[2], 1, 0), "line settles", 0);
+    move(3, 2, offset(at[2], -1, 0), "line settles", 1);
+    if (!CHECK(boxed(2), "line: site 2 has no box (a test that cannot fail)")) {
+        return;
+    }
+    const struct vor__motion_entry *e = &with.motion[2];
+    int exponent = (int)(e->stamp & VOR__BOX_MASK) - 1;
+    int32_t r = (int32_t)(1u << exponent);
+    vor_point_t q = {e->x, e->y}, corner = offset(q, -r, r);
+    int64_t reach = (int64_t)1 << (16 + exponent);
+    int32_t s = 0;
+    for (; s < B; s++) { /* site 1 lowered by s */
+        vor_point_t b = {B, B - s};
+        int64_t ux = b.x, uy = b.y;
+        int64_t P = ux * q.y - uy * q.x; /* orient(site 0, b, q), site 0 at the origin */
+        if ((P < 0 ? -P : P) < reach) {
+            break; /* no such place */
+        }
+        if (vor_orient2d(at[0], b, corner) != vor_orient2d(at[0], b, q)) {
+            break;
+        }
+    }
+    vor_point_t b = {B, B - s};
+    CHECK(s < B && vor_orient2d(at[0], b, corner) != vor_orient2d(at[0], b, q) &&
+              exponent == ((below > 1000) ? 6 : 0),
+          "line: box 2^%d, no place for site 1", exponent);
+    move(3, 1, b, "line comes close", 0);
+    CHECK(!move(3, 2, corner, "line: the corner across", 0),
+          "line: the jump of site 2 across the line was fast");
+}
+
+/* The incircle test's counterpart of line_comes_close: site 2 moves up so
+ * that the circle through sites 0, 1, 2 comes within 64 heights of site
+ * 3, which holds a box; at each height every corner jump of site 3 must
+ * be exact (a box the circle now reaches must have been voided by site
+ * 2's move, the far vertex's re-proof). With the circle's radius R near
+ * 2^25 and a small box, the first-order term decides the re-proof. */
+static void circle_comes_close(int32_t R, int32_t h)
+{
+    const vor_point_t a = {-R, 0}, b = {R, 0}, q0 = {0, R + h};
+    /* the first height of site 2 whose circle holds site 3 (b, a, c
+     * counterclockwise: > 0 inside) */
+    int32_t reach = 0;
+    while (reach < R && vor_incircle(b, a, (vor_point_t){0, -R + reach}, q0) < 0) {
+        reach++;
+    }
+    uint32_t crossing = 0;
+    for (int32_t t = reach - 64; t < reach; t++) {
+        at[0] = a;
+        at[1] = b;
+        at[2] = (vor_point_t){0, -R};
+        at[3] = q0;
+        start(4);
+        move(4, 3, offset(at[3], 1, 0), "circle settles", 0);
+        move(4, 3, offset(at[3], -1, 0), "circle settles", 1);
+        if (!CHECK(boxed(3), "circle: site 3 has no box (a test that cannot fail)")) {
+            return;
+        }
+        const struct vor__motion_entry *e = &with.motion[3];
+        int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
+        vor_point_t q = {e->x, e->y}, c = {0, -R + t};
+        move(4, 2, c, "circle comes close", (uint32_t)t);
+        static const int32_t sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+        unsigned long failures = test_failures();
+        for (uint32_t k = 0; k < 4u && test_failures() == failures; k++) {
+            vor_point_t corner = offset(q, sign[k][0] * r, sign[k][1] * r);
+            crossing += (vor_incircle(b, a, c, corner) >= 0) ? 1u : 0u;
+            move(4, 3, corner, "circle: a corner", (uint32_t)t);
+            move(4, 3, q, "circle: back", (uint32_t)t);
+        }
+        if (test_failures() != failures) {
+            break;
+        }
+    }
+    CHECK(reach > 64 && reach < R && crossing > 0u,
+          "circle: reached at %d, %u corners inside (a test that cannot fail)", reach, crossing);
+}
+
 void test_motion(void)
 {
     /* tiny steps (1/10,000 of the spacing, about 144,000, or less) on
@@ -473,4 +701,16 @@ void test_motion(void)
     TEST_CASE("backoff") backoff();
     TEST_CASE("api_safety") api_safety();
     TEST_CASE("full_range") full_range();
+    TEST_CASE("neighbour_moves_in") neighbour_moves_in();
+    TEST_CASE("box_at_range_end") box_at_range_end();
+    TEST_CASE("triangle_boxes") triangle_boxes();
+    TEST_CASE("line_comes_close") {
+        line_comes_close(16384);
+        line_comes_close(200);
+    }
+    TEST_CASE("circle_comes_close") {
+        circle_comes_close(30000, 3000);
+        circle_comes_close(30720000, 1000);
+        circle_comes_close(30720000, 6000);
+    }
 }

@@ -714,6 +714,264 @@ static void check_near_circles(void)
           bad, checked, crossings);
 }
 
+/* The documented tiers at their edges (vor.h): orient2d and closer run
+ * narrow while every coordinate difference lies in [-2^31, 2^31 - 1],
+ * incircle narrow in [-2^14, 2^14 - 1] and mid in [-2^31, 2^31 - 1]; one
+ * step outside, the next tier. The points are placed by their differences
+ * E (the largest, one on each side of an edge) and 0 or +-1 (which add no
+ * bit the bound does not have, so the bound is exactly the edge): a - c =
+ * (E, 0), b - c = (0, E) turn counterclockwise (determinant E^2); c is
+ * closer to itself than to a; and d inside the circle through d + (E, 0),
+ * d + (0, E), d - (s, s) (s the sign of E), which turn counterclockwise. */
+static void check_tier_edges(void)
+{
+    static const int64_t edges[] = {16383, 16384, -16384, -16385,
+                                    2147483647, 2147483648, -2147483648, -2147483649};
+    for (unsigned k = 0; k < sizeof edges / sizeof edges[0]; k++) {
+        int64_t e = edges[k];
+        int32_t s = (e > 0) ? 1 : -1;
+        /* a base point from which base + e and base - s fit int32 */
+        int32_t base = (int32_t)((e > 0) ? INT32_MAX - e : INT32_MIN - e);
+        vor_point_t c = {base, base};
+        vor_point_t a = {(int32_t)(base + e), base};
+        vor_point_t b = {base, (int32_t)(base + e)};
+        vor_point_t third = {base - s, base - s};
+        uint64_t magnitude = (uint64_t)(e < 0 ? -(e + 1) : e); /* of [-2^k, 2^k - 1] */
+        unsigned narrow32 = magnitude < 0x80000000u, narrow14 = magnitude < 16384u;
+        vor_stats_t stats = {0};
+        CHECK(vor__orient2d_exact(&a, &b, &c, &stats) == 1 &&
+                  stats.orient2d[VOR_TIER_NARROW] == narrow32 &&
+                  stats.orient2d[VOR_TIER_WIDE] == 1u - narrow32,
+              "orient2d, difference %d%09d: narrow %u, wide %u", (int)(e / 1000000000),
+              (int)((e < 0 ? -e : e) % 1000000000), stats.orient2d[VOR_TIER_NARROW],
+              stats.orient2d[VOR_TIER_WIDE]);
+        CHECK(vor__closer_sign(&c, &a, &c, &stats) == 1 &&
+                  stats.closer[VOR_TIER_NARROW] == narrow32 &&
+                  stats.closer[VOR_TIER_WIDE] == 1u - narrow32,
+              "closer, difference %d%09d: narrow %u, wide %u", (int)(e / 1000000000),
+              (int)((e < 0 ? -e : e) % 1000000000), stats.closer[VOR_TIER_NARROW],
+              stats.closer[VOR_TIER_WIDE]);
+        CHECK(vor__incircle_exact(&a, &b, &third, &c, &stats) == 1 &&
+                  stats.incircle[VOR_TIER_NARROW] == narrow14 &&
+                  stats.incircle[VOR_TIER_MID] == narrow32 - narrow14 &&
+                  stats.incircle[VOR_TIER_WIDE] == 1u - narrow32,
+              "incircle, difference %d%09d: narrow %u, mid %u, wide %u", (int)(e / 1000000000),
+              (int)((e < 0 ? -e : e) % 1000000000), stats.incircle[VOR_TIER_NARROW],
+              stats.incircle[VOR_TIER_MID], stats.incircle[VOR_TIER_WIDE]);
+        CHECK(vor_orient2d(a, b, c) == 1 && vor_closer(c, a, c) == 1 &&
+                  vor_incircle(a, b, third, c) == 1,
+              "public predicates, difference index %u", k);
+    }
+}
+
+/* The test's own exact integers for check_magnitudes: 16 digits of 16
+ * bits in uint32_t words, two's complement modulo 2^256, schoolbook
+ * arithmetic sharing nothing with src/multiword.h. */
+typedef struct {
+    uint32_t d[16];
+} big_t;
+
+static big_t big_of(int64_t v)
+{
+    big_t r;
+    for (unsigned i = 0; i < 16u; i++) {
+        r.d[i] = (i < 4u) ? (uint32_t)(((uint64_t)v >> (16u * i)) & 0xFFFFu)
+                          : (v < 0 ? 0xFFFFu : 0u);
+    }
+    return r;
+}
+
+static big_t big_add(big_t a, big_t b, bool subtract)
+{
+    uint32_t carry = subtract ? 1u : 0u;
+    for (unsigned i = 0; i < 16u; i++) {
+        uint32_t sum = a.d[i] + (subtract ? (~b.d[i] & 0xFFFFu) : b.d[i]) + carry;
+        a.d[i] = sum & 0xFFFFu;
+        carry = sum >> 16;
+    }
+    return a;
+}
+
+static big_t big_mul(big_t a, big_t b)
+{
+    uint64_t column[16] = {0};
+    for (unsigned i = 0; i < 16u; i++) {
+        for (unsigned j = 0; i + j < 16u; j++) {
+            column[i + j] += (uint64_t)a.d[i] * b.d[j];
+        }
+    }
+    big_t r;
+    uint64_t carry = 0;
+    for (unsigned i = 0; i < 16u; i++) {
+        carry += column[i];
+        r.d[i] = (uint32_t)(carry & 0xFFFFu);
+        carry >>= 16;
+    }
+    return r;
+}
+
+/* Bit length of |a|: the least k with |a| < 2^k. */
+static unsigned big_bits(big_t a)
+{
+    if (a.d[15] & 0x8000u) {
+        a = big_add(big_of(0), a, true);
+    }
+    for (unsigned i = 16; i-- > 0;) {
+        if (a.d[i] != 0u) {
+            unsigned k = 0;
+            while ((a.d[i] >> k) != 0u) {
+                k++;
+            }
+            return 16u * i + k;
+        }
+    }
+    return 0;
+}
+
+static int32_t magnitude_coordinate(test_rng_t *rng, unsigned scale)
+{
+    switch (scale) {
+    case 0: return test_rng_range(rng, -5000, 5000);
+    case 1: return test_rng_range(rng, -(1 << 22), 1 << 22);
+    case 2: return test_rng_range(rng, -(1 << 30), (1 << 30) - 1);
+    case 3: return (int32_t)test_rng_u32(rng);
+    default: /* near the range's ends: lifts and cross products near 2^65 */
+        return (test_rng_u32(rng) & 1u) ? INT32_MAX - test_rng_range(rng, 0, 1000)
+                                         : INT32_MIN + test_rng_range(rng, 0, 1000);
+    }
+}
+
+/* vor__orient2d_bits and vor__incircle_bits (the motion cache's bounds):
+ * the bit length of the exact determinant, against the test's own big
+ * integers, for coordinates at each tier's scale, anywhere in int32
+ * (differences of 33 bits) and near its ends (determinants near 2^127),
+ * with a shared point now and then so that small and zero determinants
+ * occur. The first five wrong cases are printed (as failed checks), then
+ * the count. */
+static void check_magnitudes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 2024);
+    unsigned bad = 0;
+    for (unsigned n = 0; n < 5000u; n++) {
+        unsigned scale = n % 5u;
+        vor_point_t p[4];
+        for (unsigned k = 0; k < 4u; k++) {
+            /* every other round, each coordinate at its own scale: one
+             * large difference among small ones picks the tier */
+            bool mixed = n % 10u >= 5u;
+            p[k].x = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 5u : scale);
+            p[k].y = magnitude_coordinate(&rng, mixed ? test_rng_u32(&rng) % 5u : scale);
+        }
+        if (n % 7u == 0u && n % 10u < 3u) { /* p[2] near the line of p[0], p[1] */
+            p[2].x = (int32_t)(p[0].x + ((int64_t)p[0].x - p[1].x) / 2);
+            p[2].y = (int32_t)(p[0].y + ((int64_t)p[0].y - p[1].y) / 2);
+        }
+        if (n % 11u == 0u) {
+            p[1] = p[0];
+        }
+        big_t dx[3], dy[3];
+        for (unsigned k = 0; k < 3u; k++) {
+            dx[k] = big_of((int64_t)p[k].x - p[3].x);
+            dy[k] = big_of((int64_t)p[k].y - p[3].y);
+        }
+        /* orient2d of p0, p1, p3: (p0 - p3) x (p1 - p3) */
+        big_t orient = big_add(big_mul(dx[0], dy[1]), big_mul(dy[0], dx[1]), true);
+        /* incircle of p0, p1, p2, p3: sum of lift(k) cross(k + 1, k + 2) */
+        big_t incircle = big_of(0);
+        for (unsigned k = 0; k < 3u; k++) {
+            unsigned u = (k + 1u) % 3u, v = (k + 2u) % 3u;
+            big_t lift = big_add(big_mul(dx[k], dx[k]), big_mul(dy[k], dy[k]), false);
+            big_t cross = big_add(big_mul(dx[u], dy[v]), big_mul(dy[u], dx[v]), true);
+            incircle = big_add(incircle, big_mul(lift, cross), false);
+        }
+        unsigned got_orient = vor__orient2d_bits(&p[0], &p[1], &p[3]);
+        unsigned got_incircle = vor__incircle_bits(&p[0], &p[1], &p[2], &p[3]);
+        if (got_orient != big_bits(orient) || got_incircle != big_bits(incircle)) {
+            bad++;
+            CHECK(bad > 5u, "case %u: orient2d %u bits (want %u), incircle %u bits (want %u)", n,
+                  got_orient, big_bits(orient), got_incircle, big_bits(incircle));
+        }
+    }
+    CHECK(bad == 0u, "%u of 5000 magnitudes wrong", bad);
+}
+
+/* vor_closer_sos against the perturbation's definition (vor.h): site i
+ * moves by (eps^(4 16^i), eps^(16^i)), and the answer is the sign of
+ * |q~ - a~|^2 - |q~ - b~|^2 as eps -> 0+, that of the nonzero coefficient
+ * of the lowest power of eps. The polynomial is expanded here term by term
+ * (exponents up to 2 4 16^3 for ids 0..3); coordinates on a 5 x 5 grid,
+ * so that most exact answers are ties. */
+typedef struct {
+    uint32_t exponent;
+    int64_t coefficient;
+} eps_term_t;
+
+static int closer_sos_reference(const vor_point_t s[4], uint32_t q, uint32_t a, uint32_t b)
+{
+    eps_term_t t[32];
+    unsigned n = 0;
+    const uint32_t id[3] = {q, a, b};
+    for (unsigned axis = 0; axis < 2u; axis++) {
+        uint32_t e[3]; /* the exponent of each point's move along this axis */
+        int64_t c[3];  /* q, a, b's coordinates along it */
+        for (unsigned k = 0; k < 3u; k++) {
+            e[k] = (axis == 0u ? 4u : 1u) << (4u * id[k]);
+            c[k] = (axis == 0u) ? s[id[k]].x : s[id[k]].y;
+        }
+        int64_t da = c[0] - c[1], db = c[0] - c[2];
+        /* (da + m_q - m_a)^2 - (db + m_q - m_b)^2 */
+        t[n++] = (eps_term_t){0, da * da - db * db};
+        t[n++] = (eps_term_t){e[0], 2 * da - 2 * db};
+        t[n++] = (eps_term_t){e[1], -2 * da};
+        t[n++] = (eps_term_t){e[2], 2 * db};
+        t[n++] = (eps_term_t){e[0] + e[1], -2};
+        t[n++] = (eps_term_t){e[1] + e[1], 1};
+        t[n++] = (eps_term_t){e[0] + e[2], 2};
+        t[n++] = (eps_term_t){e[2] + e[2], -1};
+    }
+    uint32_t best = UINT32_MAX;
+    int64_t sum = 0;
+    for (unsigned i = 0; i < n; i++) {
+        int64_t c = 0;
+        for (unsigned j = 0; j < n; j++) {
+            c += (t[j].exponent == t[i].exponent) ? t[j].coefficient : 0;
+        }
+        if (c != 0 && t[i].exponent < best) {
+            best = t[i].exponent;
+            sum = c;
+        }
+    }
+    return (sum > 0) - (sum < 0);
+}
+
+static void check_closer_sos_reference(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 4242);
+    unsigned bad = 0, ties = 0;
+    for (unsigned n = 0; n < 20000u; n++) {
+        vor_point_t s[4];
+        for (unsigned k = 0; k < 4u; k++) {
+            s[k].x = test_rng_range(&rng, -2, 2);
+            s[k].y = test_rng_range(&rng, -2, 2);
+        }
+        uint32_t q = test_rng_u32(&rng) % 4u, a = (q + 1u + test_rng_u32(&rng) % 3u) % 4u;
+        uint32_t b = a;
+        while (b == a || b == q) {
+            b = test_rng_u32(&rng) % 4u;
+        }
+        int want = closer_sos_reference(s, q, a, b), got = vor_closer_sos(s, q, a, b);
+        ties += vor_closer(s[q], s[a], s[b]) == 0;
+        if (got != want) {
+            bad++;
+            CHECK(bad > 5u, "closer_sos(q %u (%d, %d), a %u (%d, %d), b %u (%d, %d)) = %d, want %d",
+                  q, s[q].x, s[q].y, a, s[a].x, s[a].y, b, s[b].x, s[b].y, got, want);
+        }
+    }
+    CHECK(bad == 0u && ties > 2000u, "%u of 20000 wrong, %u ties", bad, ties);
+}
+
 /* The magnitudes the motion cache sizes its boxes with
  * (vor__orient2d_bits, vor__incircle_bits) when differences take 33 bits:
  * sites at the ends of the int32 range, D = 2^32 - 1 apart, whose
@@ -765,6 +1023,51 @@ static void check_closer_coincident(void)
           vor_closer_sos(level, 0, 2, 1));
 }
 
+/* Two helpers of src/multiword.h the raster code alone calls, so no
+ * predicate vector reaches them: vor__mw_i96_mul against the test's own
+ * integers over its domain's edges and random values, and
+ * vor__mw_to_u128 on limbs whose every word differs. */
+static void check_wide_helpers(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 96);
+    static const int64_t xs[] = {0, 1, -1, 0xFFFFFFFF, -0xFFFFFFFFll, 0x100000000ll,
+                                 INT64_C(0x3FFFFFFFFFFFFFFF), -INT64_C(0x3FFFFFFFFFFFFFFF)};
+    static const uint32_t ys[] = {0u, 1u, 0xFFFFu, 0x7FFFFFFFu};
+    unsigned bad = 0;
+    for (unsigned n = 0; n < 4000u; n++) {
+        int64_t x = (n < 32u) ? xs[n % 8u]
+                              : (int64_t)(((uint64_t)test_rng_u32(&rng) << 32) | test_rng_u32(&rng)) /
+                                    (int64_t)(1u + (n % 4u) * 3u) / 2;
+        uint32_t y = (n < 32u) ? ys[n / 8u] : test_rng_u32(&rng) >> 1;
+        vor__mw_i96_t r;
+        vor__mw_i96_mul(&r, x, y);
+        big_t got = big_add(big_mul(big_of(r.hi), big_of(INT64_C(0x100000000))), big_of(r.lo), false);
+        big_t want = big_mul(big_of(x), big_of(y));
+        bool same = true;
+        for (unsigned i = 0; i < 16u; i++) {
+            same = same && got.d[i] == want.d[i];
+        }
+        if (!same && bad++ < 5u) {
+            CHECK(false, "vor__mw_i96_mul, case %u: x = %lx %08lx, y = %lu", n,
+                  (unsigned long)((uint64_t)x >> 32), (unsigned long)((uint64_t)x & 0xFFFFFFFFu),
+                  (unsigned long)y);
+        }
+    }
+    CHECK(bad == 0u, "vor__mw_i96_mul wrong %u times", bad);
+    const uint64_t lo = UINT64_C(0x0123456789ABCDEF), hi = UINT64_C(0xFEDCBA9876543210);
+#if VOR_LIMB_BITS == 64
+    const vor__limb limbs[2] = {lo, hi};
+#else
+    const vor__limb limbs[4] = {(uint32_t)lo, (uint32_t)(lo >> 32), (uint32_t)hi,
+                                (uint32_t)(hi >> 32)};
+#endif
+    vor__mw_u128_t w;
+    vor__mw_to_u128(&w, limbs);
+    CHECK(w.lo == lo && w.hi == hi, "vor__mw_to_u128: high word %lx %08lx",
+          (unsigned long)(w.hi >> 32), (unsigned long)(w.hi & 0xFFFFFFFFu));
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -775,6 +1078,10 @@ void test_predicates(void)
     TEST_CASE("perturbation_reference") check_perturbation_reference();
     TEST_CASE("first_term_filter") check_first_term_filter();
     TEST_CASE("near_circles") check_near_circles();
+    TEST_CASE("tier_edges") check_tier_edges();
+    TEST_CASE("magnitudes") check_magnitudes();
+    TEST_CASE("closer_sos_reference") check_closer_sos_reference();
     TEST_CASE("wide_magnitudes") check_wide_magnitudes();
     TEST_CASE("closer_coincident") check_closer_coincident();
+    TEST_CASE("wide_helpers") check_wide_helpers();
 }
