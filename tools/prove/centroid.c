@@ -7,20 +7,10 @@
  * the header allows to be NULL, NULL or not.
  */
 #include <__fc_builtin.h>
-#include "vor.h"
-/* the diagrams of geometry.c */
-#define N 6u
-static const vor_point_t points[N] = {{0, 0},  {10, 0}, {10, 10},
-                                      {0, 10}, {0, 0},  {INT32_MIN, INT32_MAX}};
-static const vor_point_t collinear[3] = {{0, 0}, {10, 0}, {20, 0}};
-static uint32_t arena[(VOR_ARENA_BYTES(N) + 3u) / 4u];
+
+#include "far_sites.h"
+
 static uint64_t scratch[(VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(N)) + 7u) / 8u];
-#define BOXES 5u
-static const vor_box_t boxes[BOXES] = {{-20, -20, 30, 30},
-                                       {2, 3, 8, 7},
-                                       {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX},
-                                       {5, 5, 5, 9},
-                                       {1, 0, 0, 1}};
 
 static int centroids(const vor_t *d)
 {

@@ -12,6 +12,8 @@
 
 #include "vor.h"
 
+#include "inputs.h"
+
 /* 6 points, 5 sites: four cocircular (0 to 3, on the circle of centre
  * (5, 5)), a duplicate (4 repeats 0) and one collinear with 0 and 1 (5):
  * every degenerate case of the predicates' perturbation. Larger diagrams
@@ -22,19 +24,6 @@ static const vor_point_t points[N] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}
 
 static uint32_t arena[(VOR_ARENA_BYTES(N) + 3u) / 4u];
 static uint32_t cache[VOR_MOTION_BYTES(N) / 4u];
-
-static uint32_t any_u32(void)
-{
-    return Frama_C_unsigned_int_interval(0u, UINT32_MAX);
-}
-
-static vor_point_t any_point(void)
-{
-    vor_point_t p;
-    p.x = Frama_C_interval(INT32_MIN, INT32_MAX);
-    p.y = Frama_C_interval(INT32_MIN, INT32_MAX);
-    return p;
-}
 
 /* the caller's fork: runs the work itself or declines, either way */
 static int fork_here(void *context, void (*work)(void *arg), void *arg)

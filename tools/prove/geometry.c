@@ -6,38 +6,13 @@
  * small and concrete; every point and id is anywhere in its type, and
  * every pointer the header allows to be NULL is NULL or not.
  */
-#include <__fc_builtin.h>
-
-#include "vor.h"
-
-/* 6 points, 5 sites: four cocircular (0 to 3, on the circle of centre
- * (5, 5)), a duplicate (4 repeats 0) and one far away (5), beyond the
- * tracker's 2^30 reach and where vertices round out of int32. Then three
- * collinear sites, one site and none: each shape the calls tell apart. */
-#define N 6u
-static const vor_point_t points[N] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0},
-                                      {INT32_MIN, INT32_MAX}};
-static const vor_point_t collinear[3] = {{0, 0}, {10, 0}, {20, 0}};
-
-static uint32_t arena[(VOR_ARENA_BYTES(N) + 3u) / 4u];
-
-static uint32_t any_u32(void)
-{
-    return Frama_C_unsigned_int_interval(0u, UINT32_MAX);
-}
+#include "far_sites.h"
+#include "inputs.h"
 
 /* a site id or anything else: in range most of the time, as a caller's */
 static uint32_t any_id(void)
 {
     return any_u32();
-}
-
-static vor_point_t any_point(void)
-{
-    vor_point_t p;
-    p.x = Frama_C_interval(INT32_MIN, INT32_MAX);
-    p.y = Frama_C_interval(INT32_MIN, INT32_MAX);
-    return p;
 }
 
 static int iterate(const vor_t *d)

@@ -10,17 +10,11 @@
 
 #include "vor.h"
 
+#include "inputs.h"
+
 /* Enough sites for every order of the indices of vor_incircle_sos (four
  * distinct ones), plus room for equal indices (the rejected calls). */
 #define SITES 5
-
-static vor_point_t any_point(void)
-{
-    vor_point_t p;
-    p.x = Frama_C_interval(INT32_MIN, INT32_MAX);
-    p.y = Frama_C_interval(INT32_MIN, INT32_MAX);
-    return p;
-}
 
 static uint32_t any_index(void)
 {
