@@ -856,7 +856,9 @@ static uint32_t partition_below(const vor_point_t *p, vor_index_t *ids, uint32_t
 /* Is site q in the square with corner (ox, oy) and side 2^s? */
 static inline bool in_square(const vor_point_t *q, int64_t ox, int64_t oy, unsigned s)
 {
-    return vor__shr_u64((uint64_t)((int64_t)q->x - ox) | (uint64_t)((int64_t)q->y - oy), s) == 0u;
+    int64_t dx = (int64_t)q->x - ox;
+    int64_t dy = (int64_t)q->y - oy;
+    return vor__shr_u64((uint64_t)dx | (uint64_t)dy, s) == 0u;
 }
 
 /* Builds the crowded bucket ids[0, count) (count > CROWDED): over the
@@ -1203,7 +1205,7 @@ static void build_half(void *arg)
 /* Counters add modulo 2^32, as one build's would have wrapped. */
 static void stats_add(vor_stats_t *to, const vor_stats_t *from)
 {
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
+    for (unsigned t = 0; t < (unsigned)VOR_TIERS; t++) {
         to->orient2d[t] += from->orient2d[t];
         to->incircle[t] += from->incircle[t];
         to->closer[t] += from->closer[t];

@@ -37,8 +37,8 @@
 #include "predicates.h"
 #include "walk.h"
 
-#define GEO_LIMBS VOR__LIMBS(160)
-#define U64_LIMBS VOR__LIMBS(64)
+#define GEO_LIMBS VOR__LIMBS(160u)
+#define U64_LIMBS VOR__LIMBS(64u)
 
 /* A line a x + b y = c in a site's doubled frame, with an integer point
  * (px, py) on it for the test of a parallel line. */
@@ -404,7 +404,7 @@ static uint32_t third_vertex(const vor__tri_t *t, uint32_t p, uint32_t q)
 static int32_t floor_half(int64_t v)
 {
     uint64_t biased = (uint64_t)v + ((uint64_t)1 << 33);
-    return (int32_t)((int64_t)(biased >> 1) - ((int64_t)1 << 32));
+    return (int32_t)((int64_t)(biased >> 1) - 4294967296 /* 2^32 */);
 }
 
 static void fill_edge(const vor_t *d, vor_edge_t *e, uint32_t p, uint32_t q, uint32_t r,
@@ -531,7 +531,8 @@ static void ghost_edge(const vor_t *d, uint32_t slot, uint32_t *w, uint32_t *u, 
 static uint32_t lowest_site(const vor_t *d)
 {
     uint32_t half_width = ((uint32_t)d->high.x - (uint32_t)d->low.x) >> 1;
-    int32_t middle = (int32_t)((uint32_t)d->low.x + half_width);
+    uint32_t middle_bits = (uint32_t)d->low.x + half_width;
+    int32_t middle = (int32_t)middle_bits;
     vor__walk_t w;
     vor__walk_begin(&w, d, VOR__WALK_LOWEST);
     return vor__walk(&w, vor__grid_start(d, middle, d->low.y));
@@ -1164,7 +1165,7 @@ int vor_cells_error(const vor_cell_iter_t *it)
  * values fill (at most that bound), so the cost is O(k^2) limb products
  * for k vertices, less for narrow denominators.
  */
-#define TERM_LIMBS VOR__LIMBS(384)
+#define TERM_LIMBS VOR__LIMBS(384u)
 #define SUM_NUMBERS 6u /* N_A, N_X, N_Y, Q_{i-1}, Q_i and a spare */
 
 struct centroid_sum {
@@ -1186,7 +1187,7 @@ struct centroid_sum {
 #define MAX_SUM_VERTICES ((uint32_t)1 << 24)
 static size_t sum_limbs(uint32_t j)
 {
-    return (((size_t)j * 130u) + 288u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+    return (((size_t)j * 130u) + 288u + VOR__LIMB_WIDTH - 1u) / VOR__LIMB_WIDTH;
 }
 
 /* k <= MAX_SUM_VERTICES for every cell: both counts scratch_fits is
@@ -1231,7 +1232,7 @@ static void widen_sums(centroid_sum_t *sum, size_t width)
  * limbs), at most FACTOR_LIMBS each, through their magnitudes: the
  * toolkit's product is exact for operands narrower than the result only
  * when they are non-negative. */
-#define FACTOR_LIMBS VOR__LIMBS(224) /* |c| < 2^197, the widest factor */
+#define FACTOR_LIMBS VOR__LIMBS(224u) /* |c| < 2^197, the widest factor */
 static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor__limb *b,
                          size_t nb)
 {
@@ -1262,7 +1263,7 @@ static size_t significant(const vor__limb *a, size_t n)
 {
     vor__limb fill = (vor__mw_sign(a, n) < 0) ? (vor__limb)~(vor__limb)0 : 0u;
     size_t m = n;
-    while ((m > 1u) && (a[m - 1u] == fill) && (a[m - 2u] >> (VOR_LIMB_BITS - 1)) == (fill & 1u)) {
+    while ((m > 1u) && (a[m - 1u] == fill) && (a[m - 2u] >> (VOR__LIMB_WIDTH - 1u)) == (fill & 1u)) {
         m--;
     }
     return m;
@@ -1416,7 +1417,7 @@ static size_t division_width(const vor__limb *rest, const vor__limb *step, size_
     while ((m > 1u) && (step[m - 1u] == 0u)) {
         m--;
     }
-    m += VOR__LIMBS(bits) + 1u;
+    m += VOR__LIMBS((size_t)bits) + 1u;
     if ((m >= n) || vor__mw_sign(rest, n) < 0) {
         return n;
     }

@@ -219,7 +219,7 @@ static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
     /* c = floor(2^k / 3) without a division: c(t+1) = 2 c(t) + (t odd) */
     int32_t c = 0;
     for (unsigned t = 0; t < k; t++) {
-        c = (2 * c) + (int32_t)(t & 1u);
+        c = (2 * c) + (((t % 2u) != 0u) ? 1 : 0);
     }
     int32_t u = ((k % 2u) == 1u) ? 1 : -1; /* (-1)^(k+1) */
     int32_t s = (2 * c) + u;
@@ -230,14 +230,16 @@ static void quadtree_cells(unsigned k, vor_index_t *cell_i, vor_index_t *cell_j)
     for (unsigned t = 1; t <= k; t++) {
         for (uint32_t p = 0; p < m; p++) {
             r++;
-            cell_i[r] = (vor_index_t)(s - (int32_t)cell_i[r - m]);
+            int32_t mirrored = s - (int32_t)cell_i[r - m];
+            cell_i[r] = (vor_index_t)mirrored;
             cell_j[r] = cell_j[r - m];
         }
         m *= 2u;
         for (uint32_t p = 0; p < m; p++) {
             r++;
             cell_i[r] = cell_i[r - m];
-            cell_j[r] = (vor_index_t)(s - (int32_t)cell_j[r - m]);
+            int32_t mirrored = s - (int32_t)cell_j[r - m];
+            cell_j[r] = (vor_index_t)mirrored;
         }
         m *= 2u;
         u *= -2;
@@ -448,7 +450,7 @@ uint32_t vor__plan(const vor_t *d, uint32_t n, enum vor_order order,
     g.buckets = 1u << (2u * g.k);
     /* scratch: 4 buckets + 2 n + 2 <= 6 n + 2 entries (insertion_order.h) */
     g.start = scratch;
-    g.sorted = g.start + g.buckets + 1;
+    g.sorted = g.start + g.buckets + 1u;
     g.rep = g.sorted + n;
     g.bucket_at = g.rep + n;
     g.cell_j = g.bucket_at + g.buckets;

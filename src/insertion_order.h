@@ -59,7 +59,7 @@ static inline void vor__grid_square(const vor_t *d, bool centred, vor__grid_squa
  * some targets. */
 static inline uint32_t vor__grid_cell(int32_t c, int64_t corner, unsigned k, unsigned shift)
 {
-    uint32_t offset = (uint32_t)((int64_t)c - corner);
+    uint32_t offset = (uint32_t)c - (uint32_t)corner; /* c - corner, in [0, 2^32) */
     if (shift < k) {
         return offset << (k - shift); /* < 2^k */
     }

@@ -161,7 +161,8 @@ static inline void vor__relink_before(vor__tri_t *tri, vor_index_t slot, vor_ind
     vor__tri_t *t = &tri[slot];
     vor_index_t v[3];
     vor__vertices(t, v);
-    unsigned i = (unsigned)(v[1] == a) | ((unsigned)(v[2] == a) << 1);
+    unsigned i = (v[1] == a) ? 1u : 0u;
+    i |= (v[2] == a) ? 2u : 0u;
     VOR_ASSERT(i < 3u); /* a triangle's three vertices differ */
     if (v[i] == a) { /* always in a valid mesh */
         t->n[vor__next(i)] = to;
@@ -376,7 +377,7 @@ static inline bool vor__star_advance(const vor_t *d, vor_index_t p, vor__star_st
  * call on some targets. */
 static inline void vor__stats_copy(vor_stats_t *to, const vor_stats_t *from)
 {
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
+    for (unsigned t = 0; t < (unsigned)VOR_TIERS; t++) {
         to->orient2d[t] = from->orient2d[t];
         to->incircle[t] = from->incircle[t];
         to->closer[t] = from->closer[t];
@@ -388,7 +389,7 @@ static inline void vor__stats_copy(vor_stats_t *to, const vor_stats_t *from)
 
 static inline void vor__stats_clear(vor_stats_t *s)
 {
-    for (unsigned t = 0; t < VOR_TIERS; t++) {
+    for (unsigned t = 0; t < (unsigned)VOR_TIERS; t++) {
         s->orient2d[t] = 0;
         s->incircle[t] = 0;
         s->closer[t] = 0;

@@ -148,7 +148,7 @@ static int gradient_bits(int64_t wide[3][2], int m)
     int32_t v[3][2];
     for (unsigned r = 0; r < 3u; r++) {
         for (unsigned c = 0; c < 2u; c++) {
-            uint32_t cut = (uint32_t)((wide[r][c] < 0) ? -wide[r][c] : wide[r][c]) >> k;
+            uint32_t cut = (uint32_t)((wide[r][c] < 0) ? -wide[r][c] : wide[r][c]) >> (unsigned)k;
             v[r][c] = (wide[r][c] < 0) ? -(int32_t)cut : (int32_t)cut; /* cut < 2^18 */
         }
     }
@@ -244,7 +244,8 @@ static int predicate_limit(vor_t *d, uint32_t p, const vor_index_t ids[4], unsig
     int others = -1; /* largest exponent among the other valid sites */
     for (unsigned k = 0; k < count; k++) {
         if ((ids[k] != p) && entry_valid(d, ids[k])) {
-            int e = (int)(d->motion[ids[k]].stamp & VOR__BOX_MASK) - 1;
+            uint32_t box = d->motion[ids[k]].stamp & VOR__BOX_MASK;
+            int e = (int)box - 1;
             others = (e > others) ? e : others;
         }
     }
@@ -452,11 +453,12 @@ static void motion_update(vor_t *d, uint32_t p, const vor_point_t *from, uint32_
     if (limit >= need) {
         entry->x = at->x;
         entry->y = at->y;
-        entry->stamp = (d->motion_epoch << 8) | level | (uint32_t)(limit + 1);
+        entry->stamp = (d->motion_epoch << 8) | level | ((uint32_t)limit + 1u);
     } else if (sizing) {
         /* no box to hold such steps: the sizing was of no use */
         level = (level >> 5) + (((level >> 5) < MAX_LEVEL) ? 1u : 0u);
-        entry->x = (int32_t)(1u << level);
+        uint32_t side = 1u << level;
+        entry->x = (int32_t)side;
         entry->stamp = level << 5;
     } else {
         /* no other case */

@@ -70,12 +70,16 @@ typedef uint64_t vor__dlimb;
 #error "VOR_LIMB_BITS must be 32 or 64"
 #endif
 
+/* The limb width as an unsigned constant, for the arithmetic on limb
+ * counts and bit positions (VOR_LIMB_BITS is a plain int for #if). */
+#define VOR__LIMB_WIDTH ((unsigned)VOR_LIMB_BITS)
+
 /* Limbs needed to hold a value of the given number of bits (sign included). */
-#define VOR__LIMBS(bits) (((bits) + VOR_LIMB_BITS - 1) / VOR_LIMB_BITS)
+#define VOR__LIMBS(bits) (((bits) + VOR__LIMB_WIDTH - 1u) / VOR__LIMB_WIDTH)
 
 /* Limbs of the widest value any predicate needs: 3x3 determinants whose
  * entries are up to 66 bits wide (docs/design/predicates.md, "Symbolic perturbation"). */
-#define VOR__WIDE_LIMBS VOR__LIMBS(160)
+#define VOR__WIDE_LIMBS VOR__LIMBS(160u)
 
 /* 32x32->64 unsigned multiply. ARMv6-M (Cortex-M0) has only a 32x32->32
  * multiply, and the compiler would call a generic 64x64 library routine;
@@ -228,9 +232,9 @@ VOR__INLINE void vor__mw_from_u64(vor__limb *r, size_t n, uint64_t v)
     for (size_t i = 0; i < n; i++) {
 #if VOR_LIMB_BITS == 32
         r[i] = (vor__limb)v;
-        v = (i == 0) ? (v >> 32) : 0u;
+        v = (i == 0u) ? (v >> 32) : 0u;
 #else
-        r[i] = (i == 0) ? v : 0u;
+        r[i] = (i == 0u) ? v : 0u;
 #endif
     }
 }
@@ -241,7 +245,7 @@ VOR__INLINE void vor__mw_from_i64(vor__limb *r, size_t n, int64_t v)
     vor__limb fill = (v < 0) ? (vor__limb)~(vor__limb)0 : 0u;
     vor__mw_from_u64(r, n, (uint64_t)v);
     /* 64 bits fill one 64-bit limb or two 32-bit limbs; the rest is sign */
-    for (size_t i = 64 / VOR_LIMB_BITS; i < n; i++) {
+    for (size_t i = 64u / VOR__LIMB_WIDTH; i < n; i++) {
         r[i] = fill;
     }
 }
@@ -298,7 +302,7 @@ VOR__INLINE void vor__mw_mul(vor__limb *r, size_t nr, const vor__limb *a,
 VOR__INLINE int vor__mw_sign(const vor__limb *a, size_t n)
 {
     VOR_ASSERT(n > 0u);
-    if ((a[n - 1] >> (VOR_LIMB_BITS - 1)) != 0u) {
+    if ((a[n - 1u] >> (VOR__LIMB_WIDTH - 1u)) != 0u) {
         return -1;
     }
     for (size_t i = 0; i < n; i++) {
@@ -372,7 +376,7 @@ VOR__INLINE int vor__mw_compare(const vor__limb *a, const vor__limb *b, size_t n
 VOR__INLINE void vor__mw_shl1(vor__limb *r, size_t n)
 {
     for (size_t i = n; i-- > 1;) {
-        r[i] = (vor__limb)((r[i] << 1) | (r[i - 1] >> (VOR_LIMB_BITS - 1)));
+        r[i] = (vor__limb)((r[i] << 1) | (r[i - 1u] >> (VOR__LIMB_WIDTH - 1u)));
     }
     r[0] = (vor__limb)(r[0] << 1);
 }
@@ -380,10 +384,10 @@ VOR__INLINE void vor__mw_shl1(vor__limb *r, size_t n)
 /* r >>= 1 over n limbs, as an unsigned number. */
 VOR__INLINE void vor__mw_shr1(vor__limb *r, size_t n)
 {
-    for (size_t i = 0; (i + 1) < n; i++) {
-        r[i] = (vor__limb)((r[i] >> 1) | (r[i + 1] << (VOR_LIMB_BITS - 1)));
+    for (size_t i = 0; (i + 1u) < n; i++) {
+        r[i] = (vor__limb)((r[i] >> 1) | (r[i + 1u] << (VOR__LIMB_WIDTH - 1u)));
     }
-    r[n - 1] >>= 1;
+    r[n - 1u] >>= 1;
 }
 
 /* r = a over n limbs. */
@@ -400,7 +404,7 @@ VOR__HELPER void vor__mw_times4(vor__limb *r, const vor__limb *a, size_t n)
     vor__limb carry = 0;
     for (size_t i = 0; i < n; i++) {
         r[i] = (vor__limb)(a[i] << 2) | carry;
-        carry = a[i] >> (VOR_LIMB_BITS - 2);
+        carry = a[i] >> (VOR__LIMB_WIDTH - 2u);
     }
 }
 
@@ -543,7 +547,7 @@ VOR__INLINE unsigned vor__mw_bit_length_limbs(const vor__limb *a, size_t n)
 {
     for (size_t i = n; i-- > 0;) {
         if (a[i] != 0u) {
-            return (unsigned)(i * VOR_LIMB_BITS) + vor__mw_bit_length((uint64_t)a[i]);
+            return (unsigned)(i * VOR__LIMB_WIDTH) + vor__mw_bit_length((uint64_t)a[i]);
         }
     }
     return 0;

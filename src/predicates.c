@@ -110,7 +110,7 @@ int vor__closer_sign(const vor_point_t *q, const vor_point_t *a, const vor_point
  * becomes a memset call on some targets, and the library calls nothing. */
 VOR__INLINE void clear_sums(vor__mw_u192_t sums[2])
 {
-    for (unsigned i = 0; i < 2; i++) {
+    for (unsigned i = 0; i < 2u; i++) {
         sums[i].w[0] = 0u;
         sums[i].w[1] = 0u;
         sums[i].w[2] = 0u;
@@ -126,11 +126,11 @@ VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p
                           unsigned u, unsigned v)
 {
     int32_t px = (int32_t)d[p];
-    int32_t py = (int32_t)d[p + 1];
+    int32_t py = (int32_t)d[p + 1u];
     int32_t ux = (int32_t)d[u];
-    int32_t uy = (int32_t)d[u + 1];
+    int32_t uy = (int32_t)d[u + 1u];
     int32_t vx = (int32_t)d[v];
-    int32_t vy = (int32_t)d[v + 1];
+    int32_t vy = (int32_t)d[v + 1u];
     uint64_t lift = (uint64_t)vor__mul_i32(px, px) + (uint64_t)vor__mul_i32(py, py);
     int64_t cross = vor__mul_i32(ux, vy) - vor__mul_i32(uy, vx);
     bool negative = cross < 0;
@@ -175,10 +175,10 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
                            unsigned u, unsigned v)
 {
     uint64_t lift_high;
-    uint64_t lift = wide_lift(d[p], d[p + 1], &lift_high);
+    uint64_t lift = wide_lift(d[p], d[p + 1u], &lift_high);
     uint64_t low;
     uint64_t high;
-    bool negative = wide_cross(d[u], d[u + 1], d[v], d[v + 1], &low, &high);
+    bool negative = wide_cross(d[u], d[u + 1u], d[v], d[v + 1u], &low, &high);
     vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
 }
 
@@ -200,7 +200,8 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
  * the caller's OR of bounds, which an analyser does not keep. */
 VOR__INLINE int32_t top_bits(int64_t v, unsigned t)
 {
-    int32_t w = (int32_t)((uint32_t)v << t);
+    uint32_t shifted = (uint32_t)v << t;
+    int32_t w = (int32_t)shifted;
     return (w >= 0) ? ((w >> 17)) : ~((~w) >> 17);
 }
 
@@ -254,7 +255,7 @@ static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
     int32_t shifted[6] = {top_bits(d[0], t), top_bits(d[1], t), top_bits(d[2], t),
                           top_bits(d[3], t), top_bits(d[4], t), top_bits(d[5], t)};
     int64_t det = vor__incircle_narrow(shifted);
-    const int64_t error = ((int64_t)3 << 46) + ((int64_t)1 << 35);
+    const int64_t error = 211140592271360; /* 3 2^46 + 2^35 */
     if ((det >= error) || (det <= -error)) {
         return vor__mw_sign64(det);
     }
@@ -440,8 +441,9 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
     uint64_t c_high[3];
     bool c_negative[3];
     enum row_kind kind[3];
-    for (size_t r = 0; r < 3; r++) {
-        kind[r] = (enum row_kind)((kinds >> (2u * r)) & 3u);
+    for (unsigned r = 0; r < 3u; r++) {
+        unsigned packed = (kinds >> (2u * r)) & 3u;
+        kind[r] = (enum row_kind)packed;
         e[r][0] = (kind[r] == ROW_POINT) ? x[r] : (kind[r] == ROW_DX) ? 1 : 0;
         e[r][1] = (kind[r] == ROW_POINT) ? y[r] : (kind[r] == ROW_DY) ? 1 : 0;
         uint64_t lift_high;
@@ -454,7 +456,7 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
     }
     vor__mw_u192_t sums[2]; /* positive, negative */
     clear_sums(sums);
-    for (unsigned r = 0; r < 3; r++) {
+    for (unsigned r = 0; r < 3u; r++) {
         unsigned u = next_of[r];
         unsigned v = next_of[u];
         uint64_t low;
@@ -534,7 +536,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
                     top_bits(e[4], t)};
     int64_t by_y = vor__mul_i32(f[1], f[4]) - vor__mul_i32(f[2], f[3]);
     int64_t filtered = first_term_narrow(f[0], f[1], f[2], f[3], f[4], by_y);
-    const int64_t error = (int64_t)1 << 33;
+    const int64_t error = 8589934592; /* 2^33 */
     bool decided = (filtered >= error) || (filtered <= -error);
     *next = decided ? 3u : 1u;
     return decided ? vor__mw_sign64(filtered) : 0;
@@ -566,7 +568,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
         uint64_t zq = (uint64_t)vor__mul_i32(xq, xq) + (uint64_t)vor__mul_i32(yq, yq);
         vor__sdlimb det = (vor__sdlimb)by_y * (2 * (int64_t)yl) -
                           (vor__sdlimb)xp * (vor__sdlimb)zq + (vor__sdlimb)xq * (vor__sdlimb)zp;
-        sign = (det > 0) - (det < 0);
+        sign = (det > 0) ? 1 : ((det < 0) ? -1 : 0);
     }
 #else
     int sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
@@ -608,11 +610,11 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
     int64_t x[3];
     int64_t y[3];
     unsigned shifts = 0; /* 2 rank(r) for row r, in bits 4r .. 4r + 3 */
-    for (size_t r = 0; r < 3; r++) {
+    for (unsigned r = 0; r < 3u; r++) {
         x[r] = (int64_t)sites[ids[r]].x - sites[top].x;
         y[r] = (int64_t)sites[ids[r]].y - sites[top].y;
-        unsigned rank = ((ids[next_of[r]] < ids[r]) ? 1u : 0u) +
-                        ((ids[next_of[next_of[r]]] < ids[r]) ? 1u : 0u);
+        unsigned rank = (ids[next_of[r]] < ids[r]) ? 1u : 0u;
+        rank += (ids[next_of[next_of[r]]] < ids[r]) ? 1u : 0u;
         shifts |= (2u * rank) << (4u * r);
     }
     /* term t: digit r of t in base 4 is the kind of the rank-r site, the
@@ -620,15 +622,15 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
      * t = 27 (ROW_DX, ROW_SQUARE, ROW_DY) is +-1, so the loop ends by then.
      * The rows' kinds go to term_sign packed, 2 bits a row. */
     int sign = 0;
-    for (unsigned t = first; (t < 64) && (sign == 0); t++) {
+    for (unsigned t = first; (t < 64u) && (sign == 0); t++) {
         unsigned kinds = 0;
         unsigned squares = 0;
-        for (unsigned r = 0; r < 3; r++) {
+        for (unsigned r = 0; r < 3u; r++) {
             unsigned kind = (t >> ((shifts >> (4u * r)) & 15u)) & 3u;
             kinds |= kind << (2u * r);
-            squares += (kind == ROW_SQUARE) ? 1u : 0u;
+            squares += (kind == (unsigned)ROW_SQUARE) ? 1u : 0u;
         }
-        if (squares < 2) { /* else two equal rows: the term is 0 */
+        if (squares < 2u) { /* else two equal rows: the term is 0 */
             sign = term_sign(x, y, kinds);
         }
     }

@@ -334,8 +334,8 @@ static void cache_cell(vor_tracker_t *tracker, uint32_t site)
     while (vor__fan_next(&it, &n, &third)) {
         int64_t dx = (int64_t)d->sites[n].x - s->x;
         int64_t dy = (int64_t)d->sites[n].y - s->y;
-        const int64_t limit = (int64_t)1 << 30;
-        if ((edges == VOR_TRACKER_EDGES) || (dx <= -limit) || (dx >= limit) || (dy <= -limit) ||
+        const int64_t limit = 1073741824; /* 2^30 */
+        if ((edges == (uint32_t)VOR_TRACKER_EDGES) || (dx <= -limit) || (dx >= limit) || (dy <= -limit) ||
             (dy >= limit)) {
             return; /* not cached: vor_nearest answers */
         }

@@ -47,7 +47,7 @@
 
 #include "multiword.h"
 
-#define BUDGET ((int64_t)1 << 29)
+#define BUDGET ((int64_t)536870912) /* 2^29 */
 
 /* A 32-bit division instruction (Cortex-M3/M4, RV32IM, 64-bit hosts).
  * Without one (Cortex-M0) the compiler would call a library routine, so
@@ -64,8 +64,8 @@
 #else
 #define HARDWARE_DIVIDE64 0
 #endif
-#define NARROW ((int64_t)1 << 14)
-#define MID ((int64_t)1 << 19)
+#define NARROW ((int64_t)16384) /* 2^14 */
+#define MID ((int64_t)524288) /* 2^19 */
 
 /* Rows per culling band. */
 #define CULL_ROWS 16u
@@ -265,11 +265,11 @@ VOR__ALWAYS_INLINE uint32_t envelope_impl(const int32_t *key, const int64_t *val
             if (tier == 1) { /* value differences fit int32, key ones 2^15 */
                 int64_t left = vor__mul_i32((int32_t)(val[j] - val[i]), key[rep] - key[j]);
                 int64_t right = vor__mul_i32((int32_t)(val[rep] - val[j]), key[j] - key[i]);
-                greater = left > right;
+                greater = (left > right) ? 1 : 0;
             } else if (tier == 2) { /* values < 2^41, key differences < 2^20 */
                 int64_t left = vor__mul_i64_i32(val[j] - val[i], key[rep] - key[j]);
                 int64_t right = vor__mul_i64_i32(val[rep] - val[j], key[j] - key[i]);
-                greater = left > right;
+                greater = (left > right) ? 1 : 0;
             } else {
                 vor__mw_i96_t left;
                 vor__mw_i96_t right;
@@ -541,9 +541,12 @@ static uint32_t quotient64(uint64_t r_in, uint64_t g, uint32_t bits)
  * each biased by 2^29 into (0, 2^30), one int64 below 2^62. */
 static int64_t pack_line(int32_t a, int32_t b)
 {
-    uint64_t lo = (uint32_t)(a + (int32_t)BUDGET);
-    uint64_t hi = (uint32_t)(b + (int32_t)BUDGET);
-    return (int64_t)((hi << 32) | lo); /* < 2^62 */
+    int32_t a_biased = a + (int32_t)BUDGET;
+    int32_t b_biased = b + (int32_t)BUDGET;
+    uint64_t lo = (uint32_t)a_biased;
+    uint64_t hi = (uint32_t)b_biased;
+    uint64_t packed = (hi << 32) | lo; /* < 2^62 */
+    return (int64_t)packed;
 }
 
 VOR__ALWAYS_INLINE int32_t line_a(int64_t line)
@@ -562,8 +565,25 @@ VOR__ALWAYS_INLINE int32_t line_dy(int64_t line, int32_t v_biased)
 #define NARROW_BIAS 16384
 static int64_t pack_narrow(int32_t a, int32_t b, uint32_t id)
 {
-    uint32_t lo = (uint32_t)(a + NARROW_BIAS) | ((uint32_t)(b + NARROW_BIAS) << 16);
-    return (int64_t)(((uint64_t)id << 32) | lo);
+    int32_t a_biased = a + NARROW_BIAS;
+    int32_t b_biased = b + NARROW_BIAS;
+    uint32_t lo = (uint32_t)a_biased | ((uint32_t)b_biased << 16);
+    uint64_t packed = ((uint64_t)id << 32) | lo;
+    return (int64_t)packed;
+}
+
+/* The fields of a narrow-tier line x (pack_narrow): its slope a, and
+ * v - b from v + 2^14. */
+VOR__ALWAYS_INLINE int32_t narrow_a(uint64_t x)
+{
+    uint32_t a_biased = (uint32_t)x & 0xFFFFu;
+    return (int32_t)a_biased - NARROW_BIAS;
+}
+
+VOR__ALWAYS_INLINE int32_t narrow_dy(uint64_t x, int32_t v_biased)
+{
+    uint32_t b_biased = (uint32_t)x >> 16;
+    return v_biased - (int32_t)b_biased;
 }
 
 /* Sets list line q. */
@@ -614,8 +634,8 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
     const int32_t vb = v + NARROW_BIAS;
     /* the top entry: slope, value, first pixel and its offset, site */
     uint64_t x = (uint64_t)line[0];
-    int32_t top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
-    int32_t top_dy = vb - (int32_t)((uint32_t)x >> 16);
+    int32_t top_a = narrow_a(x);
+    int32_t top_dy = narrow_dy(x, vb);
     int32_t top_val = (top_a * top_a) + (top_dy * top_dy);
     uint32_t top_start = 0;
     uint32_t top_site = (uint32_t)(x >> 32);
@@ -625,8 +645,8 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
     uint32_t top = 1; /* entries */
     for (uint32_t q = 1; q < m; q++) {
         x = (uint64_t)line[q];
-        const int32_t a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
-        const int32_t dy = vb - (int32_t)((uint32_t)x >> 16);
+        const int32_t a = narrow_a(x);
+        const int32_t dy = narrow_dy(x, vb);
         const uint32_t id = (uint32_t)(x >> 32);
         const int32_t val = (a * a) + (dy * dy);
         uint32_t start;
@@ -655,9 +675,9 @@ static uint32_t row_envelope_narrow(const euclid_t *e, int32_t v, vor__run_t *ru
                 x = (uint64_t)line[runs[top - 1u].site];
                 top_start = runs[top - 1u].end;
                 top_u = top_start * step;
-                top_a = (int32_t)(x & 0xFFFFu) - NARROW_BIAS;
+                top_a = narrow_a(x);
                 top_site = (uint32_t)(x >> 32);
-                top_dy = vb - (int32_t)((uint32_t)x >> 16);
+                top_dy = narrow_dy(x, vb);
                 top_val = (top_a * top_a) + (top_dy * top_dy);
             }
         }
@@ -886,7 +906,8 @@ static void select_band(euclid_t *e, uint32_t first, vor__run_t *runs)
         }
         /* the sites below the edge, in y order, while b - v1 - h <= sqrt(E)
          * (d below 2^30 when positive: its square fits) */
-        const int64_t h = (int64_t)(((uint32_t)e->frame->step_x + 1u) / 2u);
+        const uint32_t half_step = ((uint32_t)e->frame->step_x + 1u) / 2u;
+        const int64_t h = (int64_t)half_step;
         for (; p < n; p++) {
             uint32_t id = e->by_y[p];
             int64_t d = (int64_t)rel_y(e, id) - v1 - h;

@@ -25,6 +25,8 @@
  * of 8 tiles are culled from all sites first, and their tiles from the
  * block's survivors, so a band costs O(n) bounds per block.
  */
+#include <stdbool.h>
+
 #include "raster.h"
 
 #include "multiword.h"
@@ -89,9 +91,9 @@ VOR__ALWAYS_INLINE void square_sum(vor__mw_u128_t *r, uint32_t ax, uint32_t ay)
 }
 
 /* Widest comparison: the compound weights' squares, 318 bits (below). */
-#define MAX_LIMBS VOR__LIMBS(320)
+#define MAX_LIMBS VOR__LIMBS(320u)
 /* Lp sums: |dx|^8 + |dy|^8 < 2^257. */
-#define LP_LIMBS VOR__LIMBS(258)
+#define LP_LIMBS VOR__LIMBS(258u)
 
 /* ------------------------------------------------------------ keys */
 
@@ -249,13 +251,13 @@ static void segment_key(const vor_point_t *a, const vor_point_t *b, int32_t qx, 
  * products stay below 2^257. */
 static int rational_compare(const rank_key_t *a, const rank_key_t *b)
 {
-    int a_unit = !a->squared && (a->den.lo == 1u) && (a->den.hi == 0u);
-    int b_unit = !b->squared && (b->den.lo == 1u) && (b->den.hi == 0u);
+    bool a_unit = !a->squared && (a->den.lo == 1u) && (a->den.hi == 0u);
+    bool b_unit = !b->squared && (b->den.lo == 1u) && (b->den.hi == 0u);
     if (a_unit && b_unit) {
         return vor__mw_u128_compare(&a->num, &b->num);
     }
-    int a_small = (a->den.hi == 0u) && (a->num.hi == 0u) && (!a->squared || ((a->num.lo >> 32) == 0u));
-    int b_small = (b->den.hi == 0u) && (b->num.hi == 0u) && (!b->squared || ((b->num.lo >> 32) == 0u));
+    bool a_small = (a->den.hi == 0u) && (a->num.hi == 0u) && (!a->squared || ((a->num.lo >> 32) == 0u));
+    bool b_small = (b->den.hi == 0u) && (b->num.hi == 0u) && (!b->squared || ((b->num.lo >> 32) == 0u));
     if (a_small && b_small) { /* numerators and denominators below 2^64 */
         uint64_t an = a->squared ? vor__mul_u32((uint32_t)a->num.lo, (uint32_t)a->num.lo) : a->num.lo;
         uint64_t bn = b->squared ? vor__mul_u32((uint32_t)b->num.lo, (uint32_t)b->num.lo) : b->num.lo;
@@ -265,7 +267,7 @@ static int rational_compare(const rank_key_t *a, const rank_key_t *b)
         vor__mw_u128_mul(&right, bn, a->den.lo);
         return vor__mw_u128_compare(&left, &right);
     }
-    enum { NUM = VOR__LIMBS(128), SQUARE = VOR__LIMBS(192), CROSS = VOR__LIMBS(258) };
+    enum { NUM = VOR__LIMBS(128u), SQUARE = VOR__LIMBS(192u), CROSS = VOR__LIMBS(258u) };
     vor__limb num[NUM];
     vor__limb square[SQUARE];
     vor__limb den[NUM];
@@ -563,7 +565,7 @@ static uint64_t divide_u64(uint64_t a_in, uint32_t d)
 
 /* Limbs of the rational distances: numerators below 2^130, denominators
  * below 2^127, so a remainder shifted once stays below 2^128. */
-#define DIV_LIMBS VOR__LIMBS(192)
+#define DIV_LIMBS VOR__LIMBS(192u)
 
 /* q = floor(a / d) over DIV_LIMBS limbs, d >= 1 and below 2^127: long
  * division bit by bit from a's top limb (at most 192 steps). */
@@ -579,7 +581,7 @@ static void mw_divide(vor__limb *q, const vor__limb *a, const vor__limb *d)
         top--;
     }
     for (size_t i = top; i-- > 0u;) {
-        for (uint32_t bit = VOR_LIMB_BITS; bit-- > 0u;) {
+        for (uint32_t bit = VOR__LIMB_WIDTH; bit-- > 0u;) {
             vor__mw_shl1(rest, DIV_LIMBS);
             rest[0] |= (a[i] >> bit) & 1u;
             if (vor__mw_compare(rest, d, DIV_LIMBS) >= 0) {
@@ -600,7 +602,8 @@ VOR__ALWAYS_INLINE uint32_t saturate_u32(uint64_t v)
  * in uint64_t (the same instructions), whose wrap needs no bound on v. */
 VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
 {
-    int64_t d = (int64_t)(v - (uint64_t)(int64_t)w);
+    uint64_t difference = v - (uint64_t)(int64_t)w;
+    int64_t d = (int64_t)difference;
     return (d > INT32_MAX) ? (uint32_t)INT32_MAX : (uint32_t)d;
 }
 
@@ -625,7 +628,8 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
     for (size_t i = 0; i < LP_LIMBS; i++) {
         power[i] = 0;
     }
-    power[(32u * p) / VOR_LIMB_BITS] = (vor__limb)1 << ((32u * p) % VOR_LIMB_BITS);
+    uint32_t bit = 32u * p; /* power = 2^(32 p) */
+    power[bit / VOR__LIMB_WIDTH] = (vor__limb)1 << (bit % VOR__LIMB_WIDTH);
     if (vor__mw_compare(sum, power, LP_LIMBS) >= 0) {
         return 0xFFFFFFFFu;
     }
@@ -838,8 +842,8 @@ VOR__ALWAYS_INLINE void bounds(const metric_t *m, uint32_t bit, uint32_t site, c
     } else {
         const vor_point_t *p = &s->points[site];
         /* FARTHEST ranks larger distances first: its best case is far */
-        int far = IN(bit, METRIC(FARTHEST)) ? !worst : worst;
-        if (far != 0) {
+        bool far = IN(bit, METRIC(FARTHEST)) ? (worst == 0) : (worst != 0);
+        if (far) {
             point_key(m, bit, site, reach(p->x, r->x0, r->x1), reach(p->y, r->y0, r->y1), k);
         } else {
             point_key(m, bit, site, gap(p->x, r->x0, r->x1), gap(p->y, r->y0, r->y1), k);
@@ -1099,7 +1103,7 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
     if ((2u + (2u * delta_bits) + a_bits) > bits) {
         bits = 2u + (2u * delta_bits) + a_bits;
     }
-    return (bits + 1u + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+    return (bits + 1u + VOR__LIMB_WIDTH - 1u) / VOR__LIMB_WIDTH;
 }
 
 /* Sets m up for the checked request r (its sites past metric_check): the
@@ -1157,16 +1161,19 @@ static void prepare(metric_t *m, const vor__raster_t *r)
             widen(s->points[i].y, &y0, &y1);
         }
     }
-    uint64_t span_x = (uint64_t)((int64_t)x1 - x0);
-    uint64_t span_y = (uint64_t)((int64_t)y1 - y0);
+    int64_t width = (int64_t)x1 - x0; /* >= 0 */
+    int64_t height = (int64_t)y1 - y0;
+    uint64_t span_x = (uint64_t)width;
+    uint64_t span_y = (uint64_t)height;
     uint32_t span_bits = vor__mw_bit_length((span_x > span_y) ? span_x : span_y); /* <= 32 */
 
     if (IN(m->metric_bit, METRIC(LP))) {
         uint32_t bits = (s->lp_exponent * span_bits) + 1u; /* |dx|^p + |dy|^p < 2^bits */
         m->lp_narrow = bits <= 128u;
-        m->limbs = (bits + VOR_LIMB_BITS - 1u) / VOR_LIMB_BITS;
+        m->limbs = (bits + VOR__LIMB_WIDTH - 1u) / VOR__LIMB_WIDTH;
     } else if (IN(m->metric_bit, METRIC(ELLIPTIC))) {
-        m->det = (uint64_t)(vor__mul_i32(s->form_a, s->form_c) - vor__mul_i32(s->form_b, s->form_b));
+        int64_t det = vor__mul_i32(s->form_a, s->form_c) - vor__mul_i32(s->form_b, s->form_b);
+        m->det = (uint64_t)det; /* > 0, checked by metric_check */
         m->trace = (uint32_t)s->form_a + (uint32_t)s->form_c; /* < 2^32 */
     } else if (IN(m->metric_bit, METRIC(ADD) | METRIC(COMPOUND))) {
         int32_t lo = s->add_weights[0];
@@ -1181,7 +1188,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
         /* squared distances < 2^(2 span_bits + 1); weight differences
          * < 2^delta_bits; COMPOUND multiplies by the w1 products */
         uint32_t a_bits = (2u * span_bits) + 1u;
-        uint32_t delta_bits = vor__mw_bit_length((uint64_t)((int64_t)hi - lo));
+        int64_t delta = (int64_t)hi - lo; /* >= 0 */
+        uint32_t delta_bits = vor__mw_bit_length((uint64_t)delta);
         if (s->metric == VOR_METRIC_COMPOUND) {
             uint32_t w_bits = vor__mw_bit_length((uint32_t)heaviest);
             a_bits += 2u * w_bits;
