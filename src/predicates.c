@@ -255,7 +255,7 @@ static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
     int32_t shifted[6] = {top_bits(d[0], t), top_bits(d[1], t), top_bits(d[2], t),
                           top_bits(d[3], t), top_bits(d[4], t), top_bits(d[5], t)};
     int64_t det = vor__incircle_narrow(shifted);
-    const int64_t error = 211140592271360; /* 3 2^46 + 2^35 */
+    const int64_t error = ((int64_t)3 << 46) + ((int64_t)1 << 35);
     if ((det >= error) || (det <= -error)) {
         return vor__mw_sign64(det);
     }
@@ -536,7 +536,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
                     top_bits(e[4], t)};
     int64_t by_y = vor__mul_i32(f[1], f[4]) - vor__mul_i32(f[2], f[3]);
     int64_t filtered = first_term_narrow(f[0], f[1], f[2], f[3], f[4], by_y);
-    const int64_t error = 8589934592; /* 2^33 */
+    const int64_t error = (int64_t)1 << 33;
     bool decided = (filtered >= error) || (filtered <= -error);
     *next = decided ? 3u : 1u;
     return decided ? vor__mw_sign64(filtered) : 0;
