@@ -12,6 +12,7 @@
  * leave the twin's triangles as they were.
  */
 #include "motion.h"
+#include "predicates.h" /* white box: the exact magnitudes, vor__incircle_bits */
 #include "test.h"
 #include "vor.h"
 
@@ -569,6 +570,150 @@ static void triangle_boxes(void)
     CHECK(tried >= 60u && boxes >= 20u, "triangle boxes: %u triangles, %u boxes", tried, boxes);
 }
 
+/* The derivation's incircle box (src/motion.c, the head comment) for a
+ * predicate whose vectors from its base are v[0..3), |P| of bit length L:
+ * with moves within 2^E, the crude bound 2^(3 max(m, E) + E + 10) and,
+ * for E <= m - 3, the first-order one 2^(max(Lg + E, 2m + 2E + 7) + 1),
+ * Lg the bit length bound of the gradient's absolute sum G: exact for
+ * vectors below 2^18, else from the vectors cut by k = m - 18 bits,
+ * max(3k + bits(G'), 2m + k + 8) + 1. The largest E whose smaller bound
+ * stays at or below 2^(L - 3), found by trying each; the box is 2^(E - 2)
+ * (-1: none). *which tells the bound that decided (0: crude, 1: the
+ * first-order term, 2: its square term, 3: E = m - 3). */
+static int incircle_box(int64_t v[3][2], int L, int *which)
+{
+    uint64_t spread = 0;
+    for (unsigned r = 0; r < 3u; r++) {
+        for (unsigned c = 0; c < 2u; c++) {
+            spread |= (uint64_t)(v[r][c] < 0 ? -v[r][c] : v[r][c]);
+        }
+    }
+    int m = bit_length(spread), k = (m > 18) ? m - 18 : 0;
+    int64_t w[3][2], z[3], cross[3];
+    for (unsigned r = 0; r < 3u; r++) {
+        for (unsigned c = 0; c < 2u; c++) {
+            int64_t a = (v[r][c] < 0 ? -v[r][c] : v[r][c]) >> k;
+            w[r][c] = (v[r][c] < 0) ? -a : a;
+        }
+        z[r] = w[r][0] * w[r][0] + w[r][1] * w[r][1];
+    }
+    for (unsigned r = 0; r < 3u; r++) {
+        unsigned r1 = (r + 1u) % 3u, r2 = (r + 2u) % 3u;
+        cross[r] = w[r1][0] * w[r2][1] - w[r1][1] * w[r2][0];
+    }
+    uint64_t G = 0;
+    for (unsigned r = 0; r < 3u; r++) { /* g_a and cyclically */
+        unsigned r1 = (r + 1u) % 3u, r2 = (r + 2u) % 3u;
+        int64_t gx = 2 * w[r][0] * cross[r] - z[r1] * w[r2][1] + z[r2] * w[r1][1];
+        int64_t gy = 2 * w[r][1] * cross[r] + z[r1] * w[r2][0] - z[r2] * w[r1][0];
+        G += (uint64_t)(gx < 0 ? -gx : gx) + (uint64_t)(gy < 0 ? -gy : gy);
+    }
+    int Lg = bit_length(G);
+    if (k > 0) {
+        Lg = ((3 * k + Lg > 2 * m + k + 8) ? 3 * k + Lg : 2 * m + k + 8) + 1;
+    }
+    int best = -100, T = L - 3;
+    *which = -1;
+    for (int E = -60; E <= 40 && L >= 3; E++) {
+        int n = (m > E) ? m : E;
+        int crude = 3 * n + E + 10;
+        int first = (Lg + E > 2 * m + 2 * E + 7) ? Lg + E : 2 * m + 2 * E + 7;
+        bool first_ok = E <= m - 3 && first + 1 <= T;
+        if (crude <= T || first_ok) {
+            best = E; /* what stops E + 1: */
+            *which = (crude <= T && !first_ok) ? 0 : (Lg + E + 2 > T) ? 1
+                     : (2 * m + 2 * E + 10 > T) ? 2 : 3;
+        }
+    }
+    return (best - 2 >= 0) ? best - 2 : -1;
+}
+
+/* The orientation box (as triangle_boxes) of a, b, c from base a. */
+static int orient_box(vor_point_t a, vor_point_t b, vor_point_t c)
+{
+    uint32_t spread = 0;
+    const vor_point_t *p[3] = {&a, &b, &c};
+    for (unsigned k = 0; k < 3u; k++) {
+        int64_t dx = (int64_t)p[k]->x - a.x, dy = (int64_t)p[k]->y - a.y;
+        spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+    }
+    int m = bit_length(spread), want = -1;
+    int L = (int)vor__orient2d_bits(&a, &b, &c);
+    for (int e = 0; e <= 30; e++) {
+        int E = e + 2, n = (m > E) ? m : E;
+        want = (L >= 3 && n + E + 3 <= L - 3) ? e : want;
+    }
+    return want;
+}
+
+/* The box of site q in a convex quad a, c, b, q (diagonal a-b), against
+ * the derivation: q's predicates are the orientations of triples with q
+ * and the incircle test of its triangle (a, b, q) with the far vertex c,
+ * whose vectors are taken from c. The quads are chosen so that an
+ * orientation never limits q (checked: every orientation of a triple with
+ * q, from each base, allows more), so the box is the incircle test's.
+ * The radius spans 2^5 to 2^28 and q's distance to the circle 1 to 8R, so
+ * that each term of the first-order bound decides in turn, with vectors below and beyond the
+ * gradient's 18 bits (white box: the box read from the cache). */
+static void quad_boxes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 43);
+    uint32_t tried = 0, decided[4] = {0, 0, 0, 0}, cut = 0;
+    for (uint32_t round = 0; round < 3000u && tried < 120u; round++) {
+        int32_t R = (int32_t)1 << test_rng_range(&rng, 5, 28);
+        int32_t j = R / 8;
+        int32_t h = (int32_t)1 << test_rng_range(&rng, 0, bit_length((uint64_t)R) + 1);
+        h += test_rng_range(&rng, 0, h);
+        vor_point_t a = {-R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+        vor_point_t b = {R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+        vor_point_t c = {test_rng_range(&rng, -j, j), -R + test_rng_range(&rng, 0, R / 2)};
+        vor_point_t q = {test_rng_range(&rng, -j, j), R + h};
+        /* convex, diagonal a-b: q left of a->b, c right; c outside (b, a, q)'s circle */
+        if (vor_orient2d(a, b, q) <= 0 || vor_orient2d(a, b, c) >= 0 ||
+            vor_orient2d(c, q, a) * vor_orient2d(c, q, b) >= 0 || vor_incircle(a, b, q, c) >= 0) {
+            continue;
+        }
+        int64_t v[3][2] = {{(int64_t)a.x - c.x, (int64_t)a.y - c.y},
+                           {(int64_t)b.x - c.x, (int64_t)b.y - c.y},
+                           {(int64_t)q.x - c.x, (int64_t)q.y - c.y}};
+        int which;
+        int want = incircle_box(v, (int)vor__incircle_bits(&a, &b, &q, &c), &which);
+        const vor_point_t tri[3][2] = {{a, b}, {b, c}, {c, a}};
+        int least = 100;
+        for (uint32_t t = 0; t < 3u; t++) {
+            int o[3] = {orient_box(q, tri[t][0], tri[t][1]), orient_box(tri[t][0], tri[t][1], q),
+                        orient_box(tri[t][1], q, tri[t][0])};
+            for (uint32_t k = 0; k < 3u; k++) {
+                least = (o[k] < least) ? o[k] : least;
+            }
+        }
+        if (want < 0 || least <= want) {
+            continue; /* no box, or an orientation may decide */
+        }
+        tried++;
+        decided[which]++;
+        cut += (bit_length((uint64_t)(R + R / 2)) > 18) ? 1u : 0u;
+        at[0] = a;
+        at[1] = b;
+        at[2] = c;
+        at[3] = q;
+        start(4);
+        move(4, 3, offset(at[3], 1, 0), "quad box", round);
+        move(4, 3, offset(at[3], -1, 0), "quad box", round); /* sizes the box */
+        const struct vor__motion_entry *e = &with.motion[3];
+        int got = boxed(3) ? (int)(e->stamp & VOR__BOX_MASK) - 1 : -1;
+        CHECK(got == want, "quad (%d, %d) (%d, %d) (%d, %d) (%d, %d): box 2^%d, want 2^%d (bound %d)",
+              a.x, a.y, b.x, b.y, c.x, c.y, q.x, q.y, got, want, which);
+    }
+    test_printf("quad boxes: %u quads, decided by the crude bound %u, the first order %u, its "
+                "square term %u, m - 3 %u; %u with cut vectors\n",
+                tried, decided[0], decided[1], decided[2], decided[3], cut);
+    CHECK(tried >= 100u && decided[1] >= 10u && decided[2] >= 5u && cut >= 10u,
+          "quad boxes: %u quads (crude %u, first order %u, square %u, m - 3 %u, cut %u)", tried,
+          decided[0], decided[1], decided[2], decided[3], cut);
+}
+
 /* A move that brings a line close to a boxed site must void its box:
  * site 1 moves so that the line of sites 0 and 1 passes just inside the
  * reach of site 2's box (|P| at least 2^(m + e), well below what the
@@ -704,6 +849,7 @@ void test_motion(void)
     TEST_CASE("neighbour_moves_in") neighbour_moves_in();
     TEST_CASE("box_at_range_end") box_at_range_end();
     TEST_CASE("triangle_boxes") triangle_boxes();
+    TEST_CASE("quad_boxes") quad_boxes();
     TEST_CASE("line_comes_close") {
         line_comes_close(16384);
         line_comes_close(200);
