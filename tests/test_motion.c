@@ -579,8 +579,9 @@ static void triangle_boxes(void)
  * max(3k + bits(G'), 2m + k + 8) + 1. The largest E whose smaller bound
  * stays at or below 2^(L - 3), found by trying each; the box is 2^(E - 2)
  * (-1: none). *which tells the bound that decided (0: crude, 1: the
- * first-order term, 2: its square term, 3: E = m - 3). */
-static int incircle_box(int64_t v[3][2], int L, int *which)
+ * first-order term, 2: its square term, 3: E = m - 3), *cut whether the
+ * vectors were cut (1) and the cut's error term made Lg (2). */
+static int incircle_terms(int64_t v[3][2], int *m_out, int *cut)
 {
     uint64_t spread = 0;
     for (unsigned r = 0; r < 3u; r++) {
@@ -609,9 +610,27 @@ static int incircle_box(int64_t v[3][2], int L, int *which)
         G += (uint64_t)(gx < 0 ? -gx : gx) + (uint64_t)(gy < 0 ? -gy : gy);
     }
     int Lg = bit_length(G);
+    *cut = (k == 0) ? 0 : (3 * k + Lg <= 2 * m + k + 8) ? 2 : 1;
     if (k > 0) {
         Lg = ((3 * k + Lg > 2 * m + k + 8) ? 3 * k + Lg : 2 * m + k + 8) + 1;
     }
+    *m_out = m;
+    return Lg;
+}
+
+/* The smaller of the two incircle bounds' exponents for moves of 2^E. */
+static int incircle_bound(int m, int Lg, int E)
+{
+    int n = (m > E) ? m : E;
+    int crude = 3 * n + E + 10;
+    int first = ((Lg + E > 2 * m + 2 * E + 7) ? Lg + E : 2 * m + 2 * E + 7) + 1;
+    return (E <= m - 3 && first < crude) ? first : crude;
+}
+
+static int incircle_box(int64_t v[3][2], int L, int *which, int *cut)
+{
+    int m;
+    int Lg = incircle_terms(v, &m, cut);
     int best = -100, T = L - 3;
     *which = -1;
     for (int E = -60; E <= 40 && L >= 3; E++) {
@@ -652,23 +671,40 @@ static int orient_box(vor_point_t a, vor_point_t b, vor_point_t c)
  * whose vectors are taken from c. The quads are chosen so that an
  * orientation never limits q (checked: every orientation of a triple with
  * q, from each base, allows more), so the box is the incircle test's.
- * The radius spans 2^5 to 2^28 and q's distance to the circle 1 to 8R, so
- * that each term of the first-order bound decides in turn, with vectors below and beyond the
+ * The radius spans 2^5 to 2^26 and q's distance to the circle 1 to 16R, so
+ * that each term of the first-order bound decides in turn (its square
+ * term for vectors below 2^18 and q about R away); and tails, q
+ * up to 2^28 away from a, b, c within 2^17, whose gradient is small, so
+ * that the cut's error term makes Lg; with vectors below and beyond the
  * gradient's 18 bits (white box: the box read from the cache). */
 static void quad_boxes(void)
 {
     test_rng_t rng;
     test_rng_seed(&rng, 43);
-    uint32_t tried = 0, decided[4] = {0, 0, 0, 0}, cut = 0;
-    for (uint32_t round = 0; round < 3000u && tried < 120u; round++) {
-        int32_t R = (int32_t)1 << test_rng_range(&rng, 5, 28);
+    uint32_t tried = 0, decided[4] = {0, 0, 0, 0}, cut = 0, cut_decided = 0;
+    for (uint32_t round = 0; round < 12000u && tried < 300u; round++) {
+        int32_t R = (int32_t)1 << test_rng_range(&rng, 5, 26);
         int32_t j = R / 8;
-        int32_t h = (int32_t)1 << test_rng_range(&rng, 0, bit_length((uint64_t)R) + 1);
+        int32_t h = (int32_t)1 << test_rng_range(&rng, 0, bit_length((uint64_t)R) + 2);
         h += test_rng_range(&rng, 0, h);
+        if (round % 4u == 2u) { /* small vectors, q about R from the circle: the square term */
+            R >>= (R > (1 << 14)) ? 12 : 0;
+            j = R / 8;
+            h = R / 4 + test_rng_range(&rng, 0, 2 * R);
+        }
         vor_point_t a = {-R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
         vor_point_t b = {R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
         vor_point_t c = {test_rng_range(&rng, -j, j), -R + test_rng_range(&rng, 0, R / 2)};
         vor_point_t q = {test_rng_range(&rng, -j, j), R + h};
+        if (round % 2u == 1u) { /* a tail: q far from a small a, b, c */
+            int32_t F = (int32_t)1 << test_rng_range(&rng, 20, 28);
+            R = (int32_t)1 << test_rng_range(&rng, 8, 16);
+            j = R / 8;
+            a = (vor_point_t){-R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+            b = (vor_point_t){R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+            c = (vor_point_t){test_rng_range(&rng, -j, j), -test_rng_range(&rng, 1, R)};
+            q = (vor_point_t){test_rng_range(&rng, -F / 4, F / 4), F};
+        }
         /* convex, diagonal a-b: q left of a->b, c right; c outside (b, a, q)'s circle */
         if (vor_orient2d(a, b, q) <= 0 || vor_orient2d(a, b, c) >= 0 ||
             vor_orient2d(c, q, a) * vor_orient2d(c, q, b) >= 0 || vor_incircle(a, b, q, c) >= 0) {
@@ -678,7 +714,8 @@ static void quad_boxes(void)
                            {(int64_t)b.x - c.x, (int64_t)b.y - c.y},
                            {(int64_t)q.x - c.x, (int64_t)q.y - c.y}};
         int which;
-        int want = incircle_box(v, (int)vor__incircle_bits(&a, &b, &q, &c), &which);
+        int cut_by;
+        int want = incircle_box(v, (int)vor__incircle_bits(&a, &b, &q, &c), &which, &cut_by);
         const vor_point_t tri[3][2] = {{a, b}, {b, c}, {c, a}};
         int least = 100;
         for (uint32_t t = 0; t < 3u; t++) {
@@ -693,7 +730,8 @@ static void quad_boxes(void)
         }
         tried++;
         decided[which]++;
-        cut += (bit_length((uint64_t)(R + R / 2)) > 18) ? 1u : 0u;
+        cut += (cut_by > 0) ? 1u : 0u;
+        cut_decided += (cut_by == 2) ? 1u : 0u;
         at[0] = a;
         at[1] = b;
         at[2] = c;
@@ -707,11 +745,14 @@ static void quad_boxes(void)
               a.x, a.y, b.x, b.y, c.x, c.y, q.x, q.y, got, want, which);
     }
     test_printf("quad boxes: %u quads, decided by the crude bound %u, the first order %u, its "
-                "square term %u, m - 3 %u; %u with cut vectors\n",
-                tried, decided[0], decided[1], decided[2], decided[3], cut);
-    CHECK(tried >= 100u && decided[1] >= 10u && decided[2] >= 5u && cut >= 10u,
-          "quad boxes: %u quads (crude %u, first order %u, square %u, m - 3 %u, cut %u)", tried,
-          decided[0], decided[1], decided[2], decided[3], cut);
+                "square term %u, m - 3 %u; %u with cut vectors, %u sized by the cut's "
+                "error\n",
+                tried, decided[0], decided[1], decided[2], decided[3], cut, cut_decided);
+    CHECK(tried >= 300u && decided[1] >= 10u && decided[2] >= 3u && cut >= 10u &&
+              cut_decided >= 5u,
+          "quad boxes: %u quads (crude %u, first order %u, square %u, m - 3 %u, cut %u, by its "
+          "error %u)",
+          tried, decided[0], decided[1], decided[2], decided[3], cut, cut_decided);
 }
 
 /* A move that brings a line close to a boxed site must void its box:
@@ -761,9 +802,10 @@ static void line_comes_close(int32_t below)
 
 /* The incircle test's counterpart of line_comes_close: site 2 moves up so
  * that the circle through sites 0, 1, 2 comes within 64 heights of site
- * 3, which holds a box; at each height every corner jump of site 3 must
- * be exact (a box the circle now reaches must have been voided by site
- * 2's move, the far vertex's re-proof). With the circle's radius R near
+ * 3, which holds a box (and to heights 2^j below those); at each height
+ * every corner jump of site 3 must be exact (a box the circle now reaches
+ * must have been voided by site 2's move, the far vertex's re-proof), and
+ * the box must be kept exactly when the derivation's bound allows it. With the circle's radius R near
  * 2^25 and a small box, the first-order term decides the re-proof. */
 static void circle_comes_close(int32_t R, int32_t h)
 {
@@ -774,8 +816,13 @@ static void circle_comes_close(int32_t R, int32_t h)
     while (reach < R && vor_incircle(b, a, (vor_point_t){0, -R + reach}, q0) < 0) {
         reach++;
     }
-    uint32_t crossing = 0;
-    for (int32_t t = reach - 64; t < reach; t++) {
+    uint32_t crossing = 0, reproved = 0, voided = 0;
+    for (int32_t i = 0; i < 64 + 24; i++) {
+        /* the 64 heights below reach, then farther ones, where boxes stay */
+        int32_t t = (i < 64) ? reach - 64 + i : reach - 64 - ((int32_t)1 << (i - 64));
+        if (t < -R / 2) {
+            break;
+        }
         at[0] = a;
         at[1] = b;
         at[2] = (vor_point_t){0, -R};
@@ -789,7 +836,42 @@ static void circle_comes_close(int32_t R, int32_t h)
         const struct vor__motion_entry *e = &with.motion[3];
         int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
         vor_point_t q = {e->x, e->y}, c = {0, -R + t};
+        int E = (int)(e->stamp & VOR__BOX_MASK) + 1; /* e + 2 */
         move(4, 2, c, "circle comes close", (uint32_t)t);
+        /* site 2's move re-proves site 3's box for the incircle test with
+         * site 3 the far vertex (vectors from it) and the orientations of
+         * triples with both: kept exactly when every bound for moves of
+         * 2^(e + 2) stays at or below 2^(L - 2), here decided by the
+         * incircle test (the orientations' bounds, from every base, are
+         * checked to allow it) */
+        int64_t v[3][2] = {{(int64_t)a.x - q.x, (int64_t)a.y - q.y},
+                           {(int64_t)b.x - q.x, (int64_t)b.y - q.y},
+                           {(int64_t)c.x - q.x, (int64_t)c.y - q.y}};
+        int m, cut;
+        int Lg = incircle_terms(v, &m, &cut), L = (int)vor__incircle_bits(&a, &b, &c, &q);
+        bool kept = L >= 2 && incircle_bound(m, Lg, E) <= L - 2;
+        bool orientations = true;
+        const vor_point_t other[2] = {a, b};
+        for (uint32_t k = 0; k < 2u; k++) {
+            const vor_point_t tri[3] = {q, c, other[k]};
+            for (uint32_t base = 0; base < 3u; base++) {
+                vor_point_t o = tri[base], u = tri[(base + 1u) % 3u], w = tri[(base + 2u) % 3u];
+                uint32_t spread = 0;
+                for (uint32_t j = 0; j < 3u; j++) {
+                    int64_t dx = (int64_t)tri[j].x - o.x, dy = (int64_t)tri[j].y - o.y;
+                    spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+                }
+                int mo = bit_length(spread), n = (mo > E) ? mo : E;
+                int Lo = (int)vor__orient2d_bits(&o, &u, &w);
+                orientations = orientations && Lo >= 2 && n + E + 3 <= Lo - 2;
+            }
+        }
+        if (orientations) {
+            reproved++;
+            voided += kept ? 0u : 1u;
+            CHECK(boxed(3) == kept, "circle at height %d: box of site 3 %s, the bound %s it", t,
+                  boxed(3) ? "kept" : "voided", kept ? "keeps" : "voids");
+        }
         static const int32_t sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
         unsigned long failures = test_failures();
         for (uint32_t k = 0; k < 4u && test_failures() == failures; k++) {
@@ -802,8 +884,11 @@ static void circle_comes_close(int32_t R, int32_t h)
             break;
         }
     }
-    CHECK(reach > 64 && reach < R && crossing > 0u,
-          "circle: reached at %d, %u corners inside (a test that cannot fail)", reach, crossing);
+    CHECK(reach > 64 && reach < R && crossing > 0u && reproved >= 32u && voided > 0u &&
+              voided < reproved,
+          "circle: reached at %d, %u corners inside, %u boxes re-proved, %u voided (a test "
+          "that cannot fail)",
+          reach, crossing, reproved, voided);
 }
 
 void test_motion(void)
