@@ -226,6 +226,12 @@ static void check_tiny(void)
         CHECK(vor_memory(&d, &m) == VOR_OK && m.sites == n &&
                   m.triangles == (n >= 2u ? 2u * n - 2u : 0u),
               "memory of %u sites: %u triangles", n, m.triangles);
+        /* the rest inserted one by one: a build of one site or none
+         * leaves the bucket grid to be drawn at the second site */
+        for (uint32_t k = n; k < 3u; k++) {
+            CHECK(vor_insert(&d, three[k], NULL) == VOR_OK, "%u built, insert %u", n, k);
+            validate_ok(&d, "tiny build and insertions");
+        }
     }
     /* one site: a second identical one is a duplicate */
     CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(3), 3) == VOR_OK, "init");
@@ -589,6 +595,15 @@ static void check_memory_figures(void)
     dup[0] = UINT32_MAX;
     CHECK(vor_build(&d, points, 0, NULL, dup) == VOR_OK && dup[0] == UINT32_MAX,
           "vor_build of no site writes no duplicate_of");
+    /* rebuilt with one site or none after a grid was drawn: no grid counts */
+    for (uint32_t n = 0; n < 2u; n++) {
+        vor_memory_t m;
+        CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(64), 64) == VOR_OK &&
+                  vor_build(&d, points, 64, NULL, NULL) == VOR_OK &&
+                  vor_build(&d, points, n, NULL, NULL) == VOR_OK && vor_memory(&d, &m) == VOR_OK &&
+                  m.used_bytes == n * sizeof(vor_point_t) && m.triangles == 0u,
+              "rebuilt with %u sites: %u bytes used", n, (unsigned)m.used_bytes);
+    }
 }
 
 /* ------------------------------------------------------------------ */

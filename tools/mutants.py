@@ -365,6 +365,7 @@ class Tree:
         self.lib_units = lib_units
         self.test_units = test_units
         self.port_units = port_units
+        self.preprocessed = {}  # (config, unit): the unmutated unit through gcc -E
 
     def copy_sources(self):
         shutil.rmtree(self.path, ignore_errors=True)
@@ -597,11 +598,13 @@ def preprocessed_differs(tree, m, units, originals):
         for u in units:
             cmd = ['gcc', '-E', '-P'] + tree.flags(config, u) + [u]
             _, mutated = run(cmd, tree.path)
-            with open(os.path.join(tree.path, m.path), 'w') as f:
-                f.write(originals[m.path])
-            _, original = run(cmd, tree.path)
-            apply(tree, m, originals[m.path])
-            if mutated != original:
+            key = (config, u)
+            if key not in tree.preprocessed:  # the unmutated unit's, once per tree
+                with open(os.path.join(tree.path, m.path), 'w') as f:
+                    f.write(originals[m.path])
+                tree.preprocessed[key] = run(cmd, tree.path)[1]
+                apply(tree, m, originals[m.path])
+            if mutated != tree.preprocessed[key]:
                 return True
     return False
 
