@@ -253,7 +253,9 @@ static void api_safety(void)
     vor_init(&with, arena, sizeof arena, MOTION_SITES);
     save();
     CHECK(vor_motion_attach(NULL, cache, sizeof cache) == VOR_ERR_ARG, "attach to NULL");
-    CHECK(vor_motion_attach(&with, NULL, 12) == VOR_ERR_ARG, "attach NULL memory");
+    CHECK(vor_motion_attach(&with, NULL, 12) == VOR_ERR_ARG &&
+              vor_motion_attach(&with, NULL, 1) == VOR_ERR_ARG,
+          "attach NULL memory");
     CHECK(vor_motion_attach(&with, cache + 1, VOR_MOTION_BYTES(MOTION_SITES)) == VOR_ERR_ALIGN,
           "attach misaligned memory");
     CHECK(vor_motion_attach(&with, cache, VOR_MOTION_BYTES(MOTION_SITES) - 1u) == VOR_ERR_NOMEM,
@@ -263,6 +265,14 @@ static void api_safety(void)
     CHECK(vor_motion_attach(&with, NULL, 0) == VOR_OK, "detach without a cache");
     CHECK(vor_move(NULL, 0, (vor_point_t){1, 1}, NULL) == VOR_ERR_ARG, "move in NULL");
 
+    /* the attach writes its entries and not a byte past them */
+    for (size_t i = VOR_MOTION_BYTES(MOTION_SITES); i < sizeof cache; i++) {
+        cache[i] = 0xA5u;
+    }
+    CHECK(vor_motion_attach(&with, cache, VOR_MOTION_BYTES(MOTION_SITES)) == VOR_OK &&
+              cache[VOR_MOTION_BYTES(MOTION_SITES)] == 0xA5u &&
+              cache[sizeof cache - 1u] == 0xA5u,
+          "the attach wrote past its memory");
     /* attached to an empty diagram, then filled one site at a time */
     CHECK(vor_motion_attach(&with, cache, sizeof cache) == VOR_OK, "attach to an empty diagram");
     vor_init(&without, twin_arena, sizeof twin_arena, MOTION_SITES);
@@ -798,6 +808,49 @@ static void line_comes_close(int32_t below)
     move(3, 1, b, "line comes close", 0);
     CHECK(!move(3, 2, corner, "line: the corner across", 0),
           "line: the jump of site 2 across the line was fast");
+    /* site 1 lowered by s + 1 - 2^j instead, close to far: site 2's box is
+     * kept exactly when the orientation's bound for moves of 2^(e + 2),
+     * 2^(max(m, E) + E + 3), stays at or below 2^(L - 2) (the one
+     * predicate of three sites, from whichever base: the cases where
+     * the bases disagree, or the line passes site 2, are skipped) */
+    uint32_t kept = 0, voided = 0;
+    for (int j = 0; j < 16; j++) {
+        at[0] = (vor_point_t){0, 0};
+        at[1] = (vor_point_t){B, B};
+        at[2] = (vor_point_t){32768, 32768 - below};
+        start(3);
+        move(3, 2, offset(at[2], 1, 0), "line settles", 0);
+        move(3, 2, offset(at[2], -1, 0), "line settles", 1);
+        int E = (int)(e->stamp & VOR__BOX_MASK) + 1; /* e + 2 */
+        if (s - (1 << j) + 1 < 0) {
+            break;
+        }
+        vor_point_t low = {B, B - (s - (1 << j) + 1)};
+        int side = vor_orient2d(at[0], at[1], at[2]);
+        move(3, 1, low, "line lowered", (uint32_t)j);
+        /* past site 2 the triangle turns: a new epoch voids every box */
+        int keep = (vor_orient2d(at[0], at[1], at[2]) != side) ? 2 : -1;
+        for (uint32_t k = 0; k < 3u && keep != 2; k++) {
+            vor_point_t o = at[k], u = at[(k + 1u) % 3u], w = at[(k + 2u) % 3u];
+            uint32_t spread = 0;
+            for (uint32_t i = 0; i < 3u; i++) {
+                int64_t dx = (int64_t)at[i].x - o.x, dy = (int64_t)at[i].y - o.y;
+                spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+            }
+            int m = bit_length(spread), n = (m > E) ? m : E;
+            int L = (int)vor__orient2d_bits(&o, &u, &w);
+            int here = (L >= 2 && n + E + 3 <= L - 2) ? 1 : 0;
+            keep = (keep == -1 || keep == here) ? here : 2;
+        }
+        if (keep != 2) {
+            kept += (keep == 1) ? 1u : 0u;
+            voided += (keep == 0) ? 1u : 0u;
+            CHECK(boxed(2) == (keep == 1), "line lowered by 2^%d: box of site 2 %s, the bound %s it",
+                  j, boxed(2) ? "kept" : "voided", (keep == 1) ? "keeps" : "voids");
+        }
+    }
+    CHECK(kept > 0u && voided > 0u, "line: %u boxes kept, %u voided (a test that cannot fail)",
+          kept, voided);
 }
 
 /* The incircle test's counterpart of line_comes_close: site 2 moves up so
