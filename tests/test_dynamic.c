@@ -609,7 +609,8 @@ static void trackers(void)
 
 /* A diagram of one site, whose arena has no triangle slots to hold the
  * free list: its id is reused after a removal, and the bytes after the
- * arena (filled with a pattern) are never taken for an id; and one of two,
+ * arena (filled with a pattern) are never taken for an id nor written;
+ * and one of two,
  * whose free list holds both ids. */
 static void one_site(void)
 {
@@ -631,6 +632,11 @@ static void one_site(void)
         CHECK(vor_insert(&d, (vor_point_t){100, 100}, &other) == VOR_ERR_FULL,
               "a second site, round %d", round);
     }
+    bool kept = true;
+    for (size_t i = VOR_ARENA_BYTES(1); i < sizeof memory; i++) {
+        kept = kept && memory[i] == 0xA5u;
+    }
+    CHECK(kept, "one site: a byte after the arena was written");
     /* room for two: both removed, both ids come back, the last freed
      * first (the list's link in the first one's home slot) */
     static uint8_t pair[VOR_ARENA_BYTES(2)] __attribute__((aligned(8)));
