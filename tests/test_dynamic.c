@@ -609,7 +609,9 @@ static void trackers(void)
 
 /* A diagram of one site, whose arena has no triangle slots to hold the
  * free list: its id is reused after a removal, and the bytes after the
- * arena (filled with a pattern) are never taken for an id. */
+ * arena (filled with a pattern) are never taken for an id nor written;
+ * and one of two,
+ * whose free list holds both ids. */
 static void one_site(void)
 {
     static uint8_t memory[VOR_ARENA_BYTES(1) + 64u] __attribute__((aligned(8)));
@@ -630,6 +632,24 @@ static void one_site(void)
         CHECK(vor_insert(&d, (vor_point_t){100, 100}, &other) == VOR_ERR_FULL,
               "a second site, round %d", round);
     }
+    bool kept = true;
+    for (size_t i = VOR_ARENA_BYTES(1); i < sizeof memory; i++) {
+        kept = kept && memory[i] == 0xA5u;
+    }
+    CHECK(kept, "one site: a byte after the arena was written");
+    /* room for two: both removed, both ids come back, the last freed
+     * first (the list's link in the first one's home slot) */
+    static uint8_t pair[VOR_ARENA_BYTES(2)] __attribute__((aligned(8)));
+    CHECK(vor_init(&d, pair, sizeof pair, 2) == VOR_OK &&
+              vor_insert(&d, (vor_point_t){3, 4}, NULL) == VOR_OK &&
+              vor_insert(&d, (vor_point_t){5, 6}, NULL) == VOR_OK && vor_remove(&d, 0) == VOR_OK &&
+              vor_remove(&d, 1) == VOR_OK,
+          "two sites removed");
+    id = other = UINT32_MAX;
+    CHECK(vor_insert(&d, (vor_point_t){7, 8}, &id) == VOR_OK && id == 1u &&
+              vor_insert(&d, (vor_point_t){9, 1}, &other) == VOR_OK && other == 0u &&
+              vor_validate(&d, NULL) == VOR_OK,
+          "the two ids again: %u, %u", id, other);
 }
 
 /* Two sites: vor_move tells a move onto the other site (a duplicate,

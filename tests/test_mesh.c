@@ -226,6 +226,12 @@ static void check_tiny(void)
         CHECK(vor_memory(&d, &m) == VOR_OK && m.sites == n &&
                   m.triangles == (n >= 2u ? 2u * n - 2u : 0u),
               "memory of %u sites: %u triangles", n, m.triangles);
+        /* the rest inserted one by one: a build of one site or none
+         * leaves the bucket grid to be drawn at the second site */
+        for (uint32_t k = n; k < 3u; k++) {
+            CHECK(vor_insert(&d, three[k], NULL) == VOR_OK, "%u built, insert %u", n, k);
+            validate_ok(&d, "tiny build and insertions");
+        }
     }
     /* one site: a second identical one is a duplicate */
     CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(3), 3) == VOR_OK, "init");
@@ -239,6 +245,80 @@ static void check_tiny(void)
     validate_ok(&d, "three collinear sites");
     CHECK(test_fingerprint_of(&d, NULL).count == 0u, "three collinear sites: no triangle");
     CHECK(vor_insert(&d, (vor_point_t){8, 5}, &id) == VOR_ERR_FULL, "full");
+}
+
+/* An insertion's predicates, counted (vor_stats) against what the
+ * algorithm must evaluate on a layout where the count follows from the
+ * geometry: site p strictly inside the Delaunay triangle (a, b, c), no
+ * three sites collinear, each edge of abc with a finite triangle beyond
+ * whose circle does not hold p. The walk finds abc without an exact zero,
+ * so the insertion takes no nearest-site walk (no vor_closer), and the
+ * pass around p refuses each of the star's three edges once: exactly
+ * three incircle tests (an infinite triangle beyond would be an
+ * orientation), no flip. The premises are checked by brute force. */
+static void check_insertion_counts(void)
+{
+    static const vor_point_t six[6] = {{0, 0},     {2000, 0},    {1000, 1732},
+                                       {1000, -4000}, {4964, 2866}, {-2964, 2866}};
+    const vor_point_t p = {1001, 577};
+    /* the triangles beyond edges ab, bc, ca: (a, b, 3), (b, c, 4), (c, a, 5) */
+    static const uint32_t beyond[3][3] = {{1, 0, 3}, {2, 1, 4}, {0, 2, 5}};
+    bool premises = true;
+    for (uint32_t t = 0; t < 4u; t++) {
+        uint32_t ids[3] = {0, 1, 2};
+        if (t > 0u) {
+            for (uint32_t k = 0; k < 3u; k++) {
+                ids[k] = beyond[t - 1u][k];
+            }
+        }
+        premises = premises && vor_orient2d(six[ids[0]], six[ids[1]], six[ids[2]]) > 0;
+        for (uint32_t l = 0; l < 6u; l++) {
+            if (l != ids[0] && l != ids[1] && l != ids[2]) {
+                premises = premises && vor_incircle(six[ids[0]], six[ids[1]], six[ids[2]],
+                                                    six[l]) < 0;
+            }
+        }
+        /* p inside abc, outside each triangle beyond */
+        premises = premises && ((t == 0u) ? vor_orient2d(six[ids[0]], six[ids[1]], p) > 0 &&
+                                                vor_orient2d(six[ids[1]], six[ids[2]], p) > 0 &&
+                                                vor_orient2d(six[ids[2]], six[ids[0]], p) > 0
+                                          : vor_incircle(six[ids[0]], six[ids[1]], six[ids[2]],
+                                                         p) < 0);
+    }
+    for (uint32_t i = 0; i < 6u; i++) {
+        for (uint32_t j = i + 1u; j < 6u; j++) {
+            for (uint32_t k = j + 1u; k < 6u; k++) {
+                premises = premises && vor_orient2d(six[i], six[j], six[k]) != 0;
+            }
+            premises = premises && vor_orient2d(six[i], six[j], p) != 0;
+        }
+    }
+    CHECK(premises, "insertion counts: the layout is not as described");
+    vor_t d;
+    vor_stats_t before, after;
+    /* from each site's neighbourhood: the walk's start does not matter */
+    for (uint32_t hint = 0; hint < 6u; hint++) {
+        CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(7), 7) == VOR_OK &&
+                  vor_build(&d, six, 6, NULL, duplicate_of) == VOR_OK,
+              "insertion counts: build");
+        if (vor_stats(&d, &before) != VOR_OK) {
+            return; /* a library without VOR_STATS: no count to compare */
+        }
+        uint32_t id = 0;
+        CHECK(vor_insert_near(&d, p, hint, &id) == VOR_OK && id == 6u, "insertion counts: insert");
+        vor_stats(&d, &after);
+        uint32_t incircle = 0, closer = 0;
+        for (unsigned t = 0; t < VOR_TIERS; t++) {
+            incircle += after.incircle[t] - before.incircle[t];
+            closer += after.closer[t] - before.closer[t];
+        }
+        incircle += after.incircle_perturbed - before.incircle_perturbed;
+        closer += after.closer_perturbed - before.closer_perturbed;
+        CHECK(incircle == 3u && closer == 0u,
+              "insertion counts from site %u: %u incircle tests, %u closer (want 3, 0)", hint,
+              incircle, closer);
+        validate_ok(&d, "insertion counts");
+    }
 }
 
 /* Small random sets against brute force, validating after every insert. */
@@ -515,6 +595,15 @@ static void check_memory_figures(void)
     dup[0] = UINT32_MAX;
     CHECK(vor_build(&d, points, 0, NULL, dup) == VOR_OK && dup[0] == UINT32_MAX,
           "vor_build of no site writes no duplicate_of");
+    /* rebuilt with one site or none after a grid was drawn: no grid counts */
+    for (uint32_t n = 0; n < 2u; n++) {
+        vor_memory_t m;
+        CHECK(vor_init(&d, arena_a, VOR_ARENA_BYTES(64), 64) == VOR_OK &&
+                  vor_build(&d, points, 64, NULL, NULL) == VOR_OK &&
+                  vor_build(&d, points, n, NULL, NULL) == VOR_OK && vor_memory(&d, &m) == VOR_OK &&
+                  m.used_bytes == n * sizeof(vor_point_t) && m.triangles == 0u,
+              "rebuilt with %u sites: %u bytes used", n, (unsigned)m.used_bytes);
+    }
 }
 
 /* ------------------------------------------------------------------ */
@@ -844,6 +933,7 @@ void test_mesh(void)
 {
     TEST_CASE("init") check_init();
     TEST_CASE("tiny") check_tiny();
+    TEST_CASE("insertion_counts") check_insertion_counts();
     TEST_CASE("brute_force") check_brute_force();
     TEST_CASE("families") check_families();
     TEST_CASE("memory") check_memory();

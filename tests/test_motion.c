@@ -12,6 +12,7 @@
  * leave the twin's triangles as they were.
  */
 #include "motion.h"
+#include "predicates.h" /* white box: the exact magnitudes, vor__incircle_bits */
 #include "test.h"
 #include "vor.h"
 
@@ -252,7 +253,9 @@ static void api_safety(void)
     vor_init(&with, arena, sizeof arena, MOTION_SITES);
     save();
     CHECK(vor_motion_attach(NULL, cache, sizeof cache) == VOR_ERR_ARG, "attach to NULL");
-    CHECK(vor_motion_attach(&with, NULL, 12) == VOR_ERR_ARG, "attach NULL memory");
+    CHECK(vor_motion_attach(&with, NULL, 12) == VOR_ERR_ARG &&
+              vor_motion_attach(&with, NULL, 1) == VOR_ERR_ARG,
+          "attach NULL memory");
     CHECK(vor_motion_attach(&with, cache + 1, VOR_MOTION_BYTES(MOTION_SITES)) == VOR_ERR_ALIGN,
           "attach misaligned memory");
     CHECK(vor_motion_attach(&with, cache, VOR_MOTION_BYTES(MOTION_SITES) - 1u) == VOR_ERR_NOMEM,
@@ -262,6 +265,14 @@ static void api_safety(void)
     CHECK(vor_motion_attach(&with, NULL, 0) == VOR_OK, "detach without a cache");
     CHECK(vor_move(NULL, 0, (vor_point_t){1, 1}, NULL) == VOR_ERR_ARG, "move in NULL");
 
+    /* the attach writes its entries and not a byte past them */
+    for (size_t i = VOR_MOTION_BYTES(MOTION_SITES); i < sizeof cache; i++) {
+        cache[i] = 0xA5u;
+    }
+    CHECK(vor_motion_attach(&with, cache, VOR_MOTION_BYTES(MOTION_SITES)) == VOR_OK &&
+              cache[VOR_MOTION_BYTES(MOTION_SITES)] == 0xA5u &&
+              cache[sizeof cache - 1u] == 0xA5u,
+          "the attach wrote past its memory");
     /* attached to an empty diagram, then filled one site at a time */
     CHECK(vor_motion_attach(&with, cache, sizeof cache) == VOR_OK, "attach to an empty diagram");
     vor_init(&without, twin_arena, sizeof twin_arena, MOTION_SITES);
@@ -569,6 +580,191 @@ static void triangle_boxes(void)
     CHECK(tried >= 60u && boxes >= 20u, "triangle boxes: %u triangles, %u boxes", tried, boxes);
 }
 
+/* The derivation's incircle box (src/motion.c, the head comment) for a
+ * predicate whose vectors from its base are v[0..3), |P| of bit length L:
+ * with moves within 2^E, the crude bound 2^(3 max(m, E) + E + 10) and,
+ * for E <= m - 3, the first-order one 2^(max(Lg + E, 2m + 2E + 7) + 1),
+ * Lg the bit length bound of the gradient's absolute sum G: exact for
+ * vectors below 2^18, else from the vectors cut by k = m - 18 bits,
+ * max(3k + bits(G'), 2m + k + 8) + 1. The largest E whose smaller bound
+ * stays at or below 2^(L - 3), found by trying each; the box is 2^(E - 2)
+ * (-1: none). *which tells the bound that decided (0: crude, 1: the
+ * first-order term, 2: its square term, 3: E = m - 3), *cut whether the
+ * vectors were cut (1) and the cut's error term made Lg (2). */
+static int incircle_terms(int64_t v[3][2], int *m_out, int *cut)
+{
+    uint64_t spread = 0;
+    for (unsigned r = 0; r < 3u; r++) {
+        for (unsigned c = 0; c < 2u; c++) {
+            spread |= (uint64_t)(v[r][c] < 0 ? -v[r][c] : v[r][c]);
+        }
+    }
+    int m = bit_length(spread), k = (m > 18) ? m - 18 : 0;
+    int64_t w[3][2], z[3], cross[3];
+    for (unsigned r = 0; r < 3u; r++) {
+        for (unsigned c = 0; c < 2u; c++) {
+            int64_t a = (v[r][c] < 0 ? -v[r][c] : v[r][c]) >> k;
+            w[r][c] = (v[r][c] < 0) ? -a : a;
+        }
+        z[r] = w[r][0] * w[r][0] + w[r][1] * w[r][1];
+    }
+    for (unsigned r = 0; r < 3u; r++) {
+        unsigned r1 = (r + 1u) % 3u, r2 = (r + 2u) % 3u;
+        cross[r] = w[r1][0] * w[r2][1] - w[r1][1] * w[r2][0];
+    }
+    uint64_t G = 0;
+    for (unsigned r = 0; r < 3u; r++) { /* g_a and cyclically */
+        unsigned r1 = (r + 1u) % 3u, r2 = (r + 2u) % 3u;
+        int64_t gx = 2 * w[r][0] * cross[r] - z[r1] * w[r2][1] + z[r2] * w[r1][1];
+        int64_t gy = 2 * w[r][1] * cross[r] + z[r1] * w[r2][0] - z[r2] * w[r1][0];
+        G += (uint64_t)(gx < 0 ? -gx : gx) + (uint64_t)(gy < 0 ? -gy : gy);
+    }
+    int Lg = bit_length(G);
+    *cut = (k == 0) ? 0 : (3 * k + Lg <= 2 * m + k + 8) ? 2 : 1;
+    if (k > 0) {
+        Lg = ((3 * k + Lg > 2 * m + k + 8) ? 3 * k + Lg : 2 * m + k + 8) + 1;
+    }
+    *m_out = m;
+    return Lg;
+}
+
+/* The smaller of the two incircle bounds' exponents for moves of 2^E. */
+static int incircle_bound(int m, int Lg, int E)
+{
+    int n = (m > E) ? m : E;
+    int crude = 3 * n + E + 10;
+    int first = ((Lg + E > 2 * m + 2 * E + 7) ? Lg + E : 2 * m + 2 * E + 7) + 1;
+    return (E <= m - 3 && first < crude) ? first : crude;
+}
+
+static int incircle_box(int64_t v[3][2], int L, int *which, int *cut)
+{
+    int m;
+    int Lg = incircle_terms(v, &m, cut);
+    int best = -100, T = L - 3;
+    *which = -1;
+    for (int E = -60; E <= 40 && L >= 3; E++) {
+        int n = (m > E) ? m : E;
+        int crude = 3 * n + E + 10;
+        int first = (Lg + E > 2 * m + 2 * E + 7) ? Lg + E : 2 * m + 2 * E + 7;
+        bool first_ok = E <= m - 3 && first + 1 <= T;
+        if (crude <= T || first_ok) {
+            best = E; /* what stops E + 1: */
+            *which = (crude <= T && !first_ok) ? 0 : (Lg + E + 2 > T) ? 1
+                     : (2 * m + 2 * E + 10 > T) ? 2 : 3;
+        }
+    }
+    return (best - 2 >= 0) ? best - 2 : -1;
+}
+
+/* The orientation box (as triangle_boxes) of a, b, c from base a. */
+static int orient_box(vor_point_t a, vor_point_t b, vor_point_t c)
+{
+    uint32_t spread = 0;
+    const vor_point_t *p[3] = {&a, &b, &c};
+    for (unsigned k = 0; k < 3u; k++) {
+        int64_t dx = (int64_t)p[k]->x - a.x, dy = (int64_t)p[k]->y - a.y;
+        spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+    }
+    int m = bit_length(spread), want = -1;
+    int L = (int)vor__orient2d_bits(&a, &b, &c);
+    for (int e = 0; e <= 30; e++) {
+        int E = e + 2, n = (m > E) ? m : E;
+        want = (L >= 3 && n + E + 3 <= L - 3) ? e : want;
+    }
+    return want;
+}
+
+/* The box of site q in a convex quad a, c, b, q (diagonal a-b), against
+ * the derivation: q's predicates are the orientations of triples with q
+ * and the incircle test of its triangle (a, b, q) with the far vertex c,
+ * whose vectors are taken from c. The quads are chosen so that an
+ * orientation never limits q (checked: every orientation of a triple with
+ * q, from each base, allows more), so the box is the incircle test's.
+ * The radius spans 2^5 to 2^26 and q's distance to the circle 1 to 16R, so
+ * that each term of the first-order bound decides in turn (its square
+ * term for vectors below 2^18 and q about R away); and tails, q
+ * up to 2^28 away from a, b, c within 2^17, whose gradient is small, so
+ * that the cut's error term makes Lg; with vectors below and beyond the
+ * gradient's 18 bits (white box: the box read from the cache). */
+static void quad_boxes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 43);
+    uint32_t tried = 0, decided[4] = {0, 0, 0, 0}, cut = 0, cut_decided = 0;
+    for (uint32_t round = 0; round < 12000u && tried < 300u; round++) {
+        int32_t R = (int32_t)1 << test_rng_range(&rng, 5, 26);
+        int32_t j = R / 8;
+        int32_t h = (int32_t)1 << test_rng_range(&rng, 0, bit_length((uint64_t)R) + 2);
+        h += test_rng_range(&rng, 0, h);
+        if (round % 4u == 2u) { /* small vectors, q about R from the circle: the square term */
+            R >>= (R > (1 << 14)) ? 12 : 0;
+            j = R / 8;
+            h = R / 4 + test_rng_range(&rng, 0, 2 * R);
+        }
+        vor_point_t a = {-R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+        vor_point_t b = {R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+        vor_point_t c = {test_rng_range(&rng, -j, j), -R + test_rng_range(&rng, 0, R / 2)};
+        vor_point_t q = {test_rng_range(&rng, -j, j), R + h};
+        if (round % 2u == 1u) { /* a tail: q far from a small a, b, c */
+            int32_t F = (int32_t)1 << test_rng_range(&rng, 20, 28);
+            R = (int32_t)1 << test_rng_range(&rng, 8, 16);
+            j = R / 8;
+            a = (vor_point_t){-R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+            b = (vor_point_t){R + test_rng_range(&rng, -j, j), test_rng_range(&rng, -j, j)};
+            c = (vor_point_t){test_rng_range(&rng, -j, j), -test_rng_range(&rng, 1, R)};
+            q = (vor_point_t){test_rng_range(&rng, -F / 4, F / 4), F};
+        }
+        /* convex, diagonal a-b: q left of a->b, c right; c outside (b, a, q)'s circle */
+        if (vor_orient2d(a, b, q) <= 0 || vor_orient2d(a, b, c) >= 0 ||
+            vor_orient2d(c, q, a) * vor_orient2d(c, q, b) >= 0 || vor_incircle(a, b, q, c) >= 0) {
+            continue;
+        }
+        int64_t v[3][2] = {{(int64_t)a.x - c.x, (int64_t)a.y - c.y},
+                           {(int64_t)b.x - c.x, (int64_t)b.y - c.y},
+                           {(int64_t)q.x - c.x, (int64_t)q.y - c.y}};
+        int which;
+        int cut_by;
+        int want = incircle_box(v, (int)vor__incircle_bits(&a, &b, &q, &c), &which, &cut_by);
+        const vor_point_t tri[3][2] = {{a, b}, {b, c}, {c, a}};
+        int least = 100;
+        for (uint32_t t = 0; t < 3u; t++) {
+            int o[3] = {orient_box(q, tri[t][0], tri[t][1]), orient_box(tri[t][0], tri[t][1], q),
+                        orient_box(tri[t][1], q, tri[t][0])};
+            for (uint32_t k = 0; k < 3u; k++) {
+                least = (o[k] < least) ? o[k] : least;
+            }
+        }
+        if (want < 0 || least <= want) {
+            continue; /* no box, or an orientation may decide */
+        }
+        tried++;
+        decided[which]++;
+        cut += (cut_by > 0) ? 1u : 0u;
+        cut_decided += (cut_by == 2) ? 1u : 0u;
+        at[0] = a;
+        at[1] = b;
+        at[2] = c;
+        at[3] = q;
+        start(4);
+        move(4, 3, offset(at[3], 1, 0), "quad box", round);
+        move(4, 3, offset(at[3], -1, 0), "quad box", round); /* sizes the box */
+        const struct vor__motion_entry *e = &with.motion[3];
+        int got = boxed(3) ? (int)(e->stamp & VOR__BOX_MASK) - 1 : -1;
+        CHECK(got == want, "quad (%d, %d) (%d, %d) (%d, %d) (%d, %d): box 2^%d, want 2^%d (bound %d)",
+              a.x, a.y, b.x, b.y, c.x, c.y, q.x, q.y, got, want, which);
+    }
+    test_printf("quad boxes: %u quads, decided by the crude bound %u, the first order %u, its "
+                "square term %u, m - 3 %u; %u with cut vectors, %u sized by the cut's "
+                "error\n",
+                tried, decided[0], decided[1], decided[2], decided[3], cut, cut_decided);
+    CHECK(tried >= 300u && decided[1] >= 10u && decided[2] >= 3u && cut >= 10u &&
+              cut_decided >= 5u,
+          "quad boxes: %u quads (crude %u, first order %u, square %u, m - 3 %u, cut %u, by its "
+          "error %u)",
+          tried, decided[0], decided[1], decided[2], decided[3], cut, cut_decided);
+}
+
 /* A move that brings a line close to a boxed site must void its box:
  * site 1 moves so that the line of sites 0 and 1 passes just inside the
  * reach of site 2's box (|P| at least 2^(m + e), well below what the
@@ -612,13 +808,57 @@ static void line_comes_close(int32_t below)
     move(3, 1, b, "line comes close", 0);
     CHECK(!move(3, 2, corner, "line: the corner across", 0),
           "line: the jump of site 2 across the line was fast");
+    /* site 1 lowered by s + 1 - 2^j instead, close to far: site 2's box is
+     * kept exactly when the orientation's bound for moves of 2^(e + 2),
+     * 2^(max(m, E) + E + 3), stays at or below 2^(L - 2) (the one
+     * predicate of three sites, from whichever base: the cases where
+     * the bases disagree, or the line passes site 2, are skipped) */
+    uint32_t kept = 0, voided = 0;
+    for (int j = 0; j < 16; j++) {
+        at[0] = (vor_point_t){0, 0};
+        at[1] = (vor_point_t){B, B};
+        at[2] = (vor_point_t){32768, 32768 - below};
+        start(3);
+        move(3, 2, offset(at[2], 1, 0), "line settles", 0);
+        move(3, 2, offset(at[2], -1, 0), "line settles", 1);
+        int E = (int)(e->stamp & VOR__BOX_MASK) + 1; /* e + 2 */
+        if (s - (1 << j) + 1 < 0) {
+            break;
+        }
+        vor_point_t low = {B, B - (s - (1 << j) + 1)};
+        int side = vor_orient2d(at[0], at[1], at[2]);
+        move(3, 1, low, "line lowered", (uint32_t)j);
+        /* past site 2 the triangle turns: a new epoch voids every box */
+        int keep = (vor_orient2d(at[0], at[1], at[2]) != side) ? 2 : -1;
+        for (uint32_t k = 0; k < 3u && keep != 2; k++) {
+            vor_point_t o = at[k], u = at[(k + 1u) % 3u], w = at[(k + 2u) % 3u];
+            uint32_t spread = 0;
+            for (uint32_t i = 0; i < 3u; i++) {
+                int64_t dx = (int64_t)at[i].x - o.x, dy = (int64_t)at[i].y - o.y;
+                spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+            }
+            int m = bit_length(spread), n = (m > E) ? m : E;
+            int L = (int)vor__orient2d_bits(&o, &u, &w);
+            int here = (L >= 2 && n + E + 3 <= L - 2) ? 1 : 0;
+            keep = (keep == -1 || keep == here) ? here : 2;
+        }
+        if (keep != 2) {
+            kept += (keep == 1) ? 1u : 0u;
+            voided += (keep == 0) ? 1u : 0u;
+            CHECK(boxed(2) == (keep == 1), "line lowered by 2^%d: box of site 2 %s, the bound %s it",
+                  j, boxed(2) ? "kept" : "voided", (keep == 1) ? "keeps" : "voids");
+        }
+    }
+    CHECK(kept > 0u && voided > 0u, "line: %u boxes kept, %u voided (a test that cannot fail)",
+          kept, voided);
 }
 
 /* The incircle test's counterpart of line_comes_close: site 2 moves up so
  * that the circle through sites 0, 1, 2 comes within 64 heights of site
- * 3, which holds a box; at each height every corner jump of site 3 must
- * be exact (a box the circle now reaches must have been voided by site
- * 2's move, the far vertex's re-proof). With the circle's radius R near
+ * 3, which holds a box (and to heights 2^j below those); at each height
+ * every corner jump of site 3 must be exact (a box the circle now reaches
+ * must have been voided by site 2's move, the far vertex's re-proof), and
+ * the box must be kept exactly when the derivation's bound allows it. With the circle's radius R near
  * 2^25 and a small box, the first-order term decides the re-proof. */
 static void circle_comes_close(int32_t R, int32_t h)
 {
@@ -629,8 +869,13 @@ static void circle_comes_close(int32_t R, int32_t h)
     while (reach < R && vor_incircle(b, a, (vor_point_t){0, -R + reach}, q0) < 0) {
         reach++;
     }
-    uint32_t crossing = 0;
-    for (int32_t t = reach - 64; t < reach; t++) {
+    uint32_t crossing = 0, reproved = 0, voided = 0;
+    for (int32_t i = 0; i < 64 + 24; i++) {
+        /* the 64 heights below reach, then farther ones, where boxes stay */
+        int32_t t = (i < 64) ? reach - 64 + i : reach - 64 - ((int32_t)1 << (i - 64));
+        if (t < -R / 2) {
+            break;
+        }
         at[0] = a;
         at[1] = b;
         at[2] = (vor_point_t){0, -R};
@@ -644,7 +889,42 @@ static void circle_comes_close(int32_t R, int32_t h)
         const struct vor__motion_entry *e = &with.motion[3];
         int32_t r = (int32_t)(1u << ((e->stamp & VOR__BOX_MASK) - 1u));
         vor_point_t q = {e->x, e->y}, c = {0, -R + t};
+        int E = (int)(e->stamp & VOR__BOX_MASK) + 1; /* e + 2 */
         move(4, 2, c, "circle comes close", (uint32_t)t);
+        /* site 2's move re-proves site 3's box for the incircle test with
+         * site 3 the far vertex (vectors from it) and the orientations of
+         * triples with both: kept exactly when every bound for moves of
+         * 2^(e + 2) stays at or below 2^(L - 2), here decided by the
+         * incircle test (the orientations' bounds, from every base, are
+         * checked to allow it) */
+        int64_t v[3][2] = {{(int64_t)a.x - q.x, (int64_t)a.y - q.y},
+                           {(int64_t)b.x - q.x, (int64_t)b.y - q.y},
+                           {(int64_t)c.x - q.x, (int64_t)c.y - q.y}};
+        int m, cut;
+        int Lg = incircle_terms(v, &m, &cut), L = (int)vor__incircle_bits(&a, &b, &c, &q);
+        bool kept = L >= 2 && incircle_bound(m, Lg, E) <= L - 2;
+        bool orientations = true;
+        const vor_point_t other[2] = {a, b};
+        for (uint32_t k = 0; k < 2u; k++) {
+            const vor_point_t tri[3] = {q, c, other[k]};
+            for (uint32_t base = 0; base < 3u; base++) {
+                vor_point_t o = tri[base], u = tri[(base + 1u) % 3u], w = tri[(base + 2u) % 3u];
+                uint32_t spread = 0;
+                for (uint32_t j = 0; j < 3u; j++) {
+                    int64_t dx = (int64_t)tri[j].x - o.x, dy = (int64_t)tri[j].y - o.y;
+                    spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+                }
+                int mo = bit_length(spread), n = (mo > E) ? mo : E;
+                int Lo = (int)vor__orient2d_bits(&o, &u, &w);
+                orientations = orientations && Lo >= 2 && n + E + 3 <= Lo - 2;
+            }
+        }
+        if (orientations) {
+            reproved++;
+            voided += kept ? 0u : 1u;
+            CHECK(boxed(3) == kept, "circle at height %d: box of site 3 %s, the bound %s it", t,
+                  boxed(3) ? "kept" : "voided", kept ? "keeps" : "voids");
+        }
         static const int32_t sign[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
         unsigned long failures = test_failures();
         for (uint32_t k = 0; k < 4u && test_failures() == failures; k++) {
@@ -657,8 +937,11 @@ static void circle_comes_close(int32_t R, int32_t h)
             break;
         }
     }
-    CHECK(reach > 64 && reach < R && crossing > 0u,
-          "circle: reached at %d, %u corners inside (a test that cannot fail)", reach, crossing);
+    CHECK(reach > 64 && reach < R && crossing > 0u && reproved >= 32u && voided > 0u &&
+              voided < reproved,
+          "circle: reached at %d, %u corners inside, %u boxes re-proved, %u voided (a test "
+          "that cannot fail)",
+          reach, crossing, reproved, voided);
 }
 
 void test_motion(void)
@@ -704,12 +987,14 @@ void test_motion(void)
     TEST_CASE("neighbour_moves_in") neighbour_moves_in();
     TEST_CASE("box_at_range_end") box_at_range_end();
     TEST_CASE("triangle_boxes") triangle_boxes();
+    TEST_CASE("quad_boxes") quad_boxes();
     TEST_CASE("line_comes_close") {
         line_comes_close(16384);
         line_comes_close(200);
     }
     TEST_CASE("circle_comes_close") {
         circle_comes_close(30000, 3000);
+        circle_comes_close(3000, 2000); /* q's box large: the square term decides */
         circle_comes_close(30720000, 1000);
         circle_comes_close(30720000, 6000);
     }

@@ -846,7 +846,7 @@ static int32_t magnitude_coordinate(test_rng_t *rng, unsigned scale)
  * integers, for coordinates at each tier's scale, anywhere in int32
  * (differences of 33 bits) and near its ends (determinants near 2^127),
  * with a shared point now and then so that small and zero determinants
- * occur. The first five wrong cases are printed (as failed checks), then
+ * occur, and two quads whose differences lie just past a tier's edge. The first five wrong cases are printed (as failed checks), then
  * the count. */
 static void check_magnitudes(void)
 {
@@ -869,6 +869,19 @@ static void check_magnitudes(void)
         }
         if (n % 11u == 0u) {
             p[1] = p[0];
+        }
+        if (n < 2u) { /* at the tiers' edges (after the draws: the stream stays) */
+            static const vor_point_t edge[2][4] = {
+                /* p0 - p3 = (2^31, 0), p1 - p3 = (-1, -2^31 - 1), p2 - p3
+                 * = (-1, 0): the OR of their bounds is 2^31, one past
+                 * int32 */
+                {{INT32_MAX, INT32_MAX}, {-2, -2}, {-2, INT32_MAX}, {-1, INT32_MAX}},
+                /* differences of 15 bits, past the narrow tier's 14:
+                 * p1 - p3 = (-2^15, -2^15) has the lift 2^31 */
+                {{32767, -32768}, {-32768, -32768}, {-32768, 1046}, {0, 0}}};
+            for (unsigned k = 0; k < 4u; k++) {
+                p[k] = edge[n][k];
+            }
         }
         big_t dx[3], dy[3];
         for (unsigned k = 0; k < 3u; k++) {
