@@ -3,8 +3,10 @@
  * centroid.c - the harness of `make prove` for vor_cell_centroid: every
  * site of each small concrete diagram in each box of cells.c, with the
  * scratch VOR_CENTROID_SCRATCH_BYTES gives and with a misaligned one too
- * small; then any id, any scratch size below one limb and every pointer
- * the header allows to be NULL, NULL or not.
+ * small; then any other id, any scratch size below one limb and each
+ * pointer the header allows to be NULL, NULL in turn. Each call has
+ * concrete arguments but for those (unrolled), so that EVA follows each
+ * cell's trace and sums exactly.
  */
 #include <__fc_builtin.h>
 
@@ -24,10 +26,17 @@ static int centroids(const vor_t *d)
             r |= vor_cell_centroid(d, s, &boxes[b], (unsigned char *)scratch + 1, 40u, &centroid);
         }
     }
-    r |= vor_cell_centroid(
-        Frama_C_nondet_ptr((void *)d, NULL), Frama_C_unsigned_int_interval(0u, UINT32_MAX),
-        Frama_C_nondet_ptr((void *)&boxes[0], NULL), Frama_C_nondet_ptr(scratch, NULL),
-        Frama_C_unsigned_int_interval(0u, 7u), Frama_C_nondet_ptr(&centroid, NULL));
+    /* any other id, any scratch size below one limb, and each NULL the
+     * header lists, one at a time */
+    r |= vor_cell_centroid(d, Frama_C_unsigned_int_interval(N, UINT32_MAX), &boxes[0], scratch,
+                           sizeof scratch, &centroid);
+    r |= vor_cell_centroid(d, 0u, &boxes[0], scratch, Frama_C_unsigned_int_interval(0u, 7u),
+                           &centroid);
+    r |= vor_cell_centroid(NULL, 0u, &boxes[0], scratch, sizeof scratch, &centroid);
+    r |= vor_cell_centroid(d, 0u, NULL, scratch, sizeof scratch, &centroid);
+    r |= vor_cell_centroid(d, 0u, &boxes[0], NULL, sizeof scratch, &centroid);
+    r |= vor_cell_centroid(d, 0u, &boxes[0], NULL, 0u, &centroid);
+    r |= vor_cell_centroid(d, 0u, &boxes[0], scratch, sizeof scratch, NULL);
     return r;
 }
 

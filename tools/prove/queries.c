@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * queries.c - the harness of `make prove` for the calls that read a
- * diagram's topology: vor_nearest(_k), the tracker and the iterators over
- * triangles, neighbours and the hull (geometry.c has the Voronoi
- * geometry). The diagrams are small and concrete; every query point, id
+ * diagram's topology: vor_nearest, the tracker and the iterators over
+ * triangles, neighbours and the hull (nearest_k.c has vor_nearest_k,
+ * geometry.c the Voronoi geometry). The diagrams are small and concrete; every query point, id
  * and count is anywhere in its type, and every pointer the header allows
  * to be NULL is NULL or not.
  */
@@ -33,27 +33,22 @@ static int iterate(const vor_t *d)
     r |= vor_neighbours_begin(&ni, Frama_C_nondet_ptr((void *)d, NULL), any_id());
     while (vor_neighbours_next(&ni, Frama_C_nondet_ptr(&site, NULL))) {
     }
+    r |= vor_hull_begin(NULL, d);
+    r |= vor_hull_begin(&hi, Frama_C_nondet_ptr((void *)d, NULL));
+    while (vor_hull_next(&hi, Frama_C_nondet_ptr(&site, NULL))) {
+    }
+    r |= vor_hull_next(NULL, &site);
     return r;
 }
 
 static int nearest(const vor_t *d)
 {
     vor_tracker_t tracker;
-    uint32_t site, found;
-    uint32_t list[N + 1u];
+    uint32_t site;
     int r = 0;
 
     r |= vor_nearest(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(),
                      Frama_C_nondet_ptr(&site, NULL));
-    r |= vor_nearest_k(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(), any_u32(),
-                       NULL, &found);
-    r |= vor_nearest_k(d, any_point(), any_id(), 1u, list, NULL);
-    /* each count in turn (unrolled), a count beyond the sites included:
-     * how many entries of list[] are written depends on it */
-    /*@ loop unroll N + 2; */
-    for (uint32_t k = 0; k <= N + 1u; k++) {
-        r |= vor_nearest_k(d, any_point(), any_id(), k, list, &found);
-    }
     r |= vor_tracker_begin_checked(Frama_C_nondet_ptr(&tracker, NULL),
                                    Frama_C_nondet_ptr((void *)d, NULL), any_u32());
     if (vor_tracker_begin(&tracker, d) == VOR_OK) {
