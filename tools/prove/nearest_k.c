@@ -2,7 +2,8 @@
 /*
  * nearest_k.c - the harness of `make prove` for vor_nearest_k over the
  * small concrete diagrams of far_sites.h: every query point anywhere in
- * int32, every hint anywhere in uint32, each count k from 0 to beyond the
+ * int32, every hint anywhere in uint32 (each site's id in turn, then any
+ * other value), each count k from 0 to beyond the
  * sites (and any k with NULL output), every pointer NULL or not.
  */
 #include "far_sites.h"
@@ -17,11 +18,14 @@ static int nearest(const vor_t *d)
     r |= vor_nearest_k(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_u32(), any_u32(),
                        NULL, &found);
     r |= vor_nearest_k(d, any_point(), any_u32(), 1u, list, NULL);
-    /* each count in turn (unrolled), a count beyond the sites included:
-     * how many entries of list[] are written depends on it */
+    /* each count in turn, a count beyond the sites included (how many
+     * entries of list[] are written depends on it), from each hint */
     /*@ loop unroll N + 2; */
     for (uint32_t k = 0; k <= N + 1u; k++) {
-        r |= vor_nearest_k(d, any_point(), any_u32(), k, list, &found);
+        /*@ loop unroll N + 1; */
+        for (uint32_t h = 0; h <= N; h++) {
+            r |= vor_nearest_k(d, any_point(), id_or_any(h, N), k, list, &found);
+        }
     }
     return r;
 }

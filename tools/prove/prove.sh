@@ -43,6 +43,11 @@ options_of() {
     # call early, so every state can be kept apart (a slevel no loop
     # reaches) and EVA follows each build and cell trace exactly
     large | cells | centroid) echo "-eva-split-return full -eva-slevel 1000000" ;;
+    # queries, nearest_k: loops over a site's fan (the walk, the k nearest's
+    # rounds) run up to 7 turns on these diagrams; EVA widens the slot
+    # they read next after 3 merged turns (to an interval past the
+    # triangles), after 12 it has met every slot of the fan
+    queries | nearest_k) echo "-eva-split-return full -eva-widening-delay 12" ;;
     # -eva-split-return full: a call's states stay apart by its return
     # value, so a caller's `if (call() != VOR_OK)` leaves only the states
     # where the call succeeded (vor_init's failures leave *d unwritten).
