@@ -42,7 +42,9 @@ options_of() {
     # large, cells, centroid: every input concrete but a few that end a
     # call early, so every state can be kept apart (a slevel no loop
     # reaches) and EVA follows each build and cell trace exactly
-    large | cells | centroid) echo "-eva-split-return full -eva-slevel 1000000" ;;
+    large | cells) echo "-eva-split-return full -eva-slevel 1000000" ;;
+    # centroid: the same, and the scratch at a fixed address (centroid.c)
+    centroid) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
     # queries, nearest_k: loops over a site's fan (the walk, the k nearest's
     # rounds) run up to 7 turns on these diagrams; EVA widens the slot
     # they read next after 3 merged turns (to an interval past the
