@@ -431,11 +431,11 @@ else
     skip misra
 fi
 
-# Frama-C's EVA (tools/prove/prove.sh) over the harnesses that show 0
-# alarms and finish in about a minute each: the predicates (as built at
+# Frama-C's EVA (tools/prove/prove.sh) over the harnesses that finish in
+# about a minute each: the predicates (as built at
 # -O2 and -Os), the multi-word arithmetic (generic and Cortex-M0), every
 # diagram update, the Voronoi vertices and edges, and the raster. make
-# prove runs every harness.
+# prove runs every harness (each takes minutes more).
 if wanted prove; then
     prove_log="$logs/prove.log"
     tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram geometry raster \
