@@ -3,10 +3,12 @@
  * large.c - the harness of `make prove` for the paths that need more
  * sites than the small diagrams have: the builders' quadtree paths (8
  * sites or more), a crowded bucket (a cluster of more than 8 sites), the
- * forked build's halves, the removal of a site with more than 16
- * neighbours, and the motion cache's sizing of boxes for incircle tests.
- * The 38 sites are concrete (a site with 20 neighbours around it, a
- * cluster of 10 and 7 scattered), so that EVA follows each build exactly.
+ * forked build's halves (the first with a duplicate), the removal of a
+ * site with more than 16 neighbours, and the motion cache's sizing of
+ * boxes for incircle tests.
+ * The 39 points are concrete (a site with 20 neighbours around it, a
+ * cluster of 10, 7 scattered and a duplicate), so that EVA follows each
+ * build exactly.
  */
 #include "large_sites.h"
 
