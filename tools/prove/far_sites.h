@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * far_sites.h - the diagrams of the query harnesses of `make prove`
- * (queries.c, geometry.c, cells.c, centroid.c) and their boxes.
+ * (queries.c, nearest_k.c, geometry.c, cells.c, centroid.c) and their
+ * boxes.
  * 6 points, 5 sites: four cocircular (0 to 3, on the circle of centre
  * (5, 5)), a duplicate (4 repeats 0) and one far away (5), beyond the
  * tracker's 2^30 reach and where vertices round out of int32. Then three

@@ -24,4 +24,14 @@ static vor_point_t any_point(void)
     return p;
 }
 
+/* Site ids in turn: i below n gives id i, i == n any other uint32
+ * (VOR_NO_HINT included). Callers unroll the loop over i, so that a walk
+ * or a fan starts from one concrete site in each state: from an id
+ * anywhere, EVA could not tell a duplicate's id (which the mesh check
+ * turns away by reading its slot) from a site's. */
+static uint32_t id_or_any(uint32_t i, uint32_t n)
+{
+    return (i < n) ? i : Frama_C_unsigned_int_interval(n, UINT32_MAX);
+}
+
 #endif

@@ -1,20 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * queries.c - the harness of `make prove` for the calls that read a
- * diagram's topology: vor_nearest(_k), the tracker and the iterators over
- * triangles, neighbours and the hull (geometry.c has the Voronoi
- * geometry). The diagrams are small and concrete; every query point, id
- * and count is anywhere in its type, and every pointer the header allows
- * to be NULL is NULL or not.
+ * diagram's topology: vor_nearest, the tracker and the iterators over
+ * triangles, neighbours and the hull (nearest_k.c has vor_nearest_k,
+ * geometry.c the Voronoi geometry). The diagrams are small and concrete;
+ * every query point is anywhere in int32, every hint and id anywhere in
+ * uint32 (each site's id in turn, then any other value), and every
+ * pointer the header allows to be NULL is NULL or not.
  */
 #include "far_sites.h"
 #include "inputs.h"
-
-/* a site id or anything else: in range most of the time, as a caller's */
-static uint32_t any_id(void)
-{
-    return any_u32();
-}
 
 static int iterate(const vor_t *d)
 {
@@ -29,30 +24,36 @@ static int iterate(const vor_t *d)
     r |= vor_triangles_begin(&ti, Frama_C_nondet_ptr((void *)d, NULL));
     while (vor_triangles_next(&ti, Frama_C_nondet_ptr(ids, NULL))) {
     }
-    r |= vor_neighbours_begin(NULL, d, any_id());
-    r |= vor_neighbours_begin(&ni, Frama_C_nondet_ptr((void *)d, NULL), any_id());
-    while (vor_neighbours_next(&ni, Frama_C_nondet_ptr(&site, NULL))) {
+    r |= vor_neighbours_begin(NULL, d, any_u32());
+    r |= vor_neighbours_begin(&ni, NULL, any_u32());
+    r |= vor_neighbours_next(&ni, &site);
+    /* each site's neighbours, then any other id's */
+    /*@ loop unroll N + 1; */
+    for (uint32_t i = 0; i <= N; i++) {
+        r |= vor_neighbours_begin(&ni, d, id_or_any(i, N));
+        while (vor_neighbours_next(&ni, Frama_C_nondet_ptr(&site, NULL))) {
+        }
     }
+    r |= vor_hull_begin(NULL, d);
+    r |= vor_hull_begin(&hi, Frama_C_nondet_ptr((void *)d, NULL));
+    while (vor_hull_next(&hi, Frama_C_nondet_ptr(&site, NULL))) {
+    }
+    r |= vor_hull_next(NULL, &site);
     return r;
 }
 
 static int nearest(const vor_t *d)
 {
     vor_tracker_t tracker;
-    uint32_t site, found;
-    uint32_t list[N + 1u];
+    uint32_t site;
     int r = 0;
 
-    r |= vor_nearest(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(),
-                     Frama_C_nondet_ptr(&site, NULL));
-    r |= vor_nearest_k(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_id(), any_u32(),
-                       NULL, &found);
-    r |= vor_nearest_k(d, any_point(), any_id(), 1u, list, NULL);
-    /* each count in turn (unrolled), a count beyond the sites included:
-     * how many entries of list[] are written depends on it */
-    /*@ loop unroll N + 2; */
-    for (uint32_t k = 0; k <= N + 1u; k++) {
-        r |= vor_nearest_k(d, any_point(), any_id(), k, list, &found);
+    r |= vor_nearest(NULL, any_point(), any_u32(), &site);
+    r |= vor_nearest(d, any_point(), any_u32(), NULL);
+    /* from each hint: each site's id, then any other value */
+    /*@ loop unroll N + 1; */
+    for (uint32_t h = 0; h <= N; h++) {
+        r |= vor_nearest(d, any_point(), id_or_any(h, N), &site);
     }
     r |= vor_tracker_begin_checked(Frama_C_nondet_ptr(&tracker, NULL),
                                    Frama_C_nondet_ptr((void *)d, NULL), any_u32());
