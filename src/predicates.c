@@ -568,7 +568,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
         uint64_t zq = (uint64_t)vor__mul_i32(xq, xq) + (uint64_t)vor__mul_i32(yq, yq);
         vor__sdlimb det = (vor__sdlimb)by_y * (2 * (int64_t)yl) -
                           (vor__sdlimb)xp * (vor__sdlimb)zq + (vor__sdlimb)xq * (vor__sdlimb)zp;
-        sign = (det > 0) - (det < 0);
+        sign = (det > 0) ? 1 : ((det < 0) ? -1 : 0);
     }
 #else
     int sign = vor__mw_sign64(first_term_narrow(yl, xp, yp, xq, yq, by_y));
