@@ -1081,6 +1081,85 @@ static void check_wide_helpers(void)
           (unsigned long)(w.hi >> 32), (unsigned long)(w.hi & 0xFFFFFFFFu));
 }
 
+/* Limbs as the test's integers: n limbs (n * VOR_LIMB_BITS <= 256 bits),
+ * unsigned, 16 bits a digit. */
+#define LIMB_DIGITS (VOR_LIMB_BITS / 16)
+static big_t big_of_limbs(const vor__limb *a, size_t n)
+{
+    big_t r = {{0}};
+    for (size_t i = 0; i < n; i++) {
+        for (unsigned k = 0; k < LIMB_DIGITS; k++) {
+            r.d[(i * LIMB_DIGITS) + k] = (uint32_t)(a[i] >> (16u * k)) & 0xFFFFu;
+        }
+    }
+    return r;
+}
+
+/* Do a and b agree on their low `digits` digits? */
+static bool big_low_equal(big_t a, big_t b, size_t digits)
+{
+    bool same = true;
+    for (size_t i = 0; i < digits; i++) {
+        same = same && (a.d[i] == b.d[i]);
+    }
+    return same;
+}
+
+/* The multi-word helpers at the edges of their limbs, against the test's
+ * integers: the sign fill of vor__mw_from_i64, the sign of a top limb
+ * with only its second bit set, a halving and a multiplication by 4 of
+ * values with every limb's top bits set; a guard limb after the n limbs
+ * must stay untouched. */
+static void check_limb_edges(void)
+{
+    enum { N = 256 / VOR_LIMB_BITS };
+    const vor__limb guard = (vor__limb)0x5A5A5A5Au;
+    test_rng_t rng;
+    test_rng_seed(&rng, 4);
+    vor__limb r[N + 1];
+    vor__limb a[N + 1];
+    static const int64_t values[] = {0, 1, -1, INT64_MIN, INT64_MAX, -0x123456789ll};
+    for (unsigned k = 0; k < 6u; k++) {
+        r[N] = guard;
+        vor__mw_from_i64(r, N, values[k]);
+        CHECK(r[N] == guard && big_low_equal(big_of_limbs(r, N), big_of(values[k]), 16u),
+              "vor__mw_from_i64, value %u", k);
+    }
+    /* the top limb's second bit alone: positive; its top bit: negative */
+    for (size_t i = 0; i < N; i++) {
+        a[i] = 0u;
+    }
+    a[N - 1u] = (vor__limb)1u << (VOR_LIMB_BITS - 2);
+    CHECK(vor__mw_sign(a, N) == 1, "vor__mw_sign, bit L - 2 of the top limb");
+    a[N - 1u] = (vor__limb)1u << (VOR_LIMB_BITS - 1);
+    CHECK(vor__mw_sign(a, N) == -1, "vor__mw_sign, the top bit");
+    for (unsigned n = 0; n < 200u; n++) {
+        for (size_t i = 0; i < N; i++) {
+            a[i] = (vor__limb)test_rng_u32(&rng);
+#if VOR_LIMB_BITS == 64
+            a[i] = (a[i] << 32) | test_rng_u32(&rng);
+#endif
+            a[i] |= (n % 2u == 0u) ? ((vor__limb)7u << (VOR_LIMB_BITS - 3)) : 0u;
+        }
+        big_t before = big_of_limbs(a, N);
+        /* a / 2, unsigned */
+        a[N] = guard;
+        vor__mw_shr1(a, N);
+        big_t half = before;
+        for (unsigned i = 0; i < 16u; i++) {
+            half.d[i] = (before.d[i] >> 1) | ((i + 1u < 16u) ? ((before.d[i + 1u] & 1u) << 15) : 0u);
+        }
+        CHECK(a[N] == guard && big_low_equal(big_of_limbs(a, N), half, 16u),
+              "vor__mw_shr1, value %u", n);
+        /* 4 a modulo 2^256 */
+        r[N] = guard;
+        vor__mw_times4(r, a, N);
+        big_t twice = big_add(big_of_limbs(a, N), big_of_limbs(a, N), false);
+        CHECK(r[N] == guard && big_low_equal(big_of_limbs(r, N), big_add(twice, twice, false), 16u),
+              "vor__mw_times4, value %u", n);
+    }
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -1096,5 +1175,6 @@ void test_predicates(void)
     TEST_CASE("closer_sos_reference") check_closer_sos_reference();
     TEST_CASE("wide_magnitudes") check_wide_magnitudes();
     TEST_CASE("closer_coincident") check_closer_coincident();
+    TEST_CASE("limb_edges") check_limb_edges();
     TEST_CASE("wide_helpers") check_wide_helpers();
 }
