@@ -368,6 +368,45 @@ static void big_star(void)
     }
 }
 
+/* A site inside a ring of 24 sites at radii 1000 to 1059, none four on a
+ * circle by construction (each radius differs): the large star's ears
+ * are decided by the incircle tests themselves, not the perturbation.
+ * The centre goes first, then the ring's sites in a scrambled order, each
+ * step against a fresh build. */
+static void big_star_irregular(void)
+{
+    static vor_t d;
+    static model_t m;
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    /* cos and sin of k 15 degrees, times 2^14, rounded */
+    static const int32_t c15[24] = {16384, 15826, 14189, 11585, 8192, 4240, 0, -4240,
+                                    -8192, -11585, -14189, -15826, -16384, -15826, -14189,
+                                    -11585, -8192, -4240, 0, 4240, 8192, 11585, 14189, 15826};
+    uint32_t step = 0;
+    for (uint32_t k = 0; k < 24u; k++) {
+        int32_t r = 1000 + (int32_t)((k * 37u) % 60u);
+        vor_point_t p = {(c15[k] * r) / 16384, (c15[(k + 18u) % 24u] * r) / 16384};
+        do_insert(&d, &m, p, "irregular ring", step++);
+    }
+    do_insert(&d, &m, (vor_point_t){3, -2}, "irregular ring", step++);
+    uint32_t degree = 0, n;
+    vor_neighbour_iter_t it;
+    vor_neighbours_begin(&it, &d, 24);
+    while (vor_neighbours_next(&it, &n)) {
+        degree++;
+    }
+    CHECK(degree > 16u, "irregular ring: the centre has %u neighbours, expected more than 16",
+          degree);
+    do_remove(&d, &m, 24, "irregular ring", step);
+    check_state(&d, &m, "irregular ring", step++);
+    for (uint32_t i = 0; i < 24u; i++) {
+        do_remove(&d, &m, (i * 5u) % 24u, "irregular ring", step);
+        check_state(&d, &m, "irregular ring", step++);
+    }
+}
+
 /* Moves the triangle in slot `from` to the unused slot `to`. */
 static void move_slot(vor_t *d, vor_index_t from, vor_index_t to)
 {
@@ -694,6 +733,7 @@ void test_dynamic(void)
     }
     TEST_CASE("down_to_nothing") down_to_nothing();
     TEST_CASE("big_star") big_star();
+    TEST_CASE("big_star_irregular") big_star_irregular();
     TEST_CASE("rehoming") rehoming();
     TEST_CASE("build_duplicates") build_duplicates();
     TEST_CASE("trackers") trackers();
