@@ -1160,6 +1160,90 @@ static void check_limb_edges(void)
     }
 }
 
+/* 64-bit words as the test's integers, unsigned. */
+static big_t big_of_words(const uint64_t *w, unsigned n)
+{
+    big_t r = {{0}};
+    for (unsigned i = 0; i < n; i++) {
+        for (unsigned k = 0; k < 4u; k++) {
+            r.d[(4u * i) + k] = (uint32_t)(w[i] >> (16u * k)) & 0xFFFFu;
+        }
+    }
+    return r;
+}
+
+static uint64_t random_u64(test_rng_t *rng)
+{
+    uint64_t high = test_rng_u32(rng);
+    return (high << 32) | test_rng_u32(rng);
+}
+
+/* The fixed-width helpers of src/multiword.h at their words' edges,
+ * against the test's integers: a 128-bit subtraction that borrows, a
+ * 192-bit product sum whose middle word carries, the exact -1 and 1 of
+ * the comparisons, the 96-bit comparison on a tie, and the sign mask of
+ * values with bit 62 set. */
+static void check_word_edges(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 192);
+    unsigned bad_sub = 0;
+    unsigned bad_product = 0;
+    for (unsigned n = 0; n < 500u; n++) {
+        /* a >= b, a.lo < b.lo: the low word borrows */
+        vor__mw_u128_t b = {random_u64(&rng) | 1u, random_u64(&rng) >> 2};
+        vor__mw_u128_t a = {b.lo - 1u - (random_u64(&rng) % b.lo),
+                            b.hi + 1u + (random_u64(&rng) >> 3)};
+        vor__mw_u128_t r;
+        vor__mw_u128_sub(&r, &a, &b);
+        const uint64_t aw[2] = {a.lo, a.hi};
+        const uint64_t bw[2] = {b.lo, b.hi};
+        const uint64_t rw[2] = {r.lo, r.hi};
+        big_t difference = big_add(big_of_words(aw, 2u), big_of_words(bw, 2u), true);
+        if (!big_low_equal(big_of_words(rw, 2u), difference, 8u)) {
+            bad_sub++;
+        }
+        CHECK(vor__mw_u128_compare(&a, &b) == 1 && vor__mw_u128_compare(&b, &a) == -1,
+              "vor__mw_u128_compare, case %u", n);
+        vor__mw_u128_t same_high = {a.lo, b.hi};
+        CHECK(vor__mw_u128_compare(&same_high, &b) == -1 &&
+                  vor__mw_u128_compare(&b, &same_high) == 1,
+              "vor__mw_u128_compare, equal high words, case %u", n);
+        /* acc + (x + xh 2^64)(y + yh 2^64) modulo 2^192, every word's top
+         * bits set so that the middle word carries */
+        vor__mw_u192_t acc = {
+            {random_u64(&rng), random_u64(&rng) | (UINT64_C(3) << 62), random_u64(&rng)}};
+        uint64_t x = random_u64(&rng) | (UINT64_C(1) << 63);
+        uint64_t y = random_u64(&rng) | (UINT64_C(1) << 63);
+        uint64_t xh = n % 2u;
+        uint64_t yh = (n / 2u) % 2u;
+        const uint64_t xw[2] = {x, xh};
+        const uint64_t yw[2] = {y, yh};
+        big_t product = big_mul(big_of_words(xw, 2u), big_of_words(yw, 2u));
+        big_t want = big_add(big_of_words(acc.w, 3u), product, false);
+        vor__mw_u192_add_product(&acc, x, xh, y, yh);
+        if (!big_low_equal(big_of_words(acc.w, 3u), want, 12u)) {
+            bad_product++;
+        }
+    }
+    CHECK(bad_sub == 0u, "vor__mw_u128_sub wrong %u times", bad_sub);
+    CHECK(bad_product == 0u, "vor__mw_u192_add_product wrong %u times", bad_product);
+    vor__limb one[2] = {1u, 0u};
+    vor__limb two[2] = {2u, 0u};
+    CHECK(vor__mw_compare(two, one, 2u) == 1 && vor__mw_compare(one, two, 2u) == -1 &&
+              vor__mw_compare(one, one, 2u) == 0,
+          "vor__mw_compare: %d %d", vor__mw_compare(two, one, 2u), vor__mw_compare(one, two, 2u));
+    vor__mw_i96_t p = {-5, 7u};
+    vor__mw_i96_t q = {-5, 7u};
+    CHECK(vor__mw_i96_greater(&p, &q) == 0, "vor__mw_i96_greater on a tie");
+    q.lo = 6u;
+    CHECK(vor__mw_i96_greater(&p, &q) != 0 && vor__mw_i96_greater(&q, &p) == 0,
+          "vor__mw_i96_greater, low words");
+    CHECK(vor__mw_sign_mask(INT64_C(1) << 62) == 0u && vor__mw_sign_mask(-1) == ~UINT64_C(0) &&
+              vor__mw_sign_mask(INT64_MIN) == ~UINT64_C(0),
+          "vor__mw_sign_mask");
+}
+
 void test_predicates(void)
 {
     TEST_CASE("multiply") check_multiply();
@@ -1176,5 +1260,6 @@ void test_predicates(void)
     TEST_CASE("wide_magnitudes") check_wide_magnitudes();
     TEST_CASE("closer_coincident") check_closer_coincident();
     TEST_CASE("limb_edges") check_limb_edges();
+    TEST_CASE("word_edges") check_word_edges();
     TEST_CASE("wide_helpers") check_wide_helpers();
 }
