@@ -7,12 +7,14 @@
  * (5, 5)), a duplicate (4 repeats 0) and one far away (5), beyond the
  * tracker's 2^30 reach and where vertices round out of int32. Then three
  * collinear sites, one site and none: each shape the calls tell apart.
- * The boxes (cells.c, centroid.c): one around the sites, one inside the
- * cocircular ones, the whole int32 plane, a flat one and an inverted one.
+ * far_sites_init starts a harness's diagram. The boxes (cells.c,
+ * centroid.c): one around the sites, one inside the cocircular ones, the
+ * whole int32 plane, a flat one and an inverted one.
  */
 #ifndef PROVE_FAR_SITES_H
 #define PROVE_FAR_SITES_H
 
+#include "inputs.h"
 #include "vor.h"
 
 #define N 6u
@@ -21,6 +23,14 @@ static const vor_point_t points[N] = {{0, 0},  {10, 0}, {10, 10},
 static const vor_point_t collinear[3] = {{0, 0}, {10, 0}, {20, 0}};
 
 static uint32_t arena[(VOR_ARENA_BYTES(N) + 3u) / 4u];
+
+/* *d empty over the arena, whatever revision it held before (vor_init
+ * reads it). */
+static int far_sites_init(vor_t *d)
+{
+    d->revision = any_u32();
+    return vor_init(d, arena, sizeof arena, N);
+}
 
 #define BOXES 5u
 static const vor_box_t boxes[BOXES] = {{-20, -20, 30, 30},

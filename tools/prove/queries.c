@@ -79,8 +79,7 @@ int main(void)
     vor_t d;
     int r = 0;
 
-    d.revision = any_u32();
-    if (vor_init(&d, arena, sizeof arena, N) != VOR_OK) {
+    if (far_sites_init(&d) != VOR_OK) {
         return 1;
     }
     /* an empty diagram, one site, then all of them */
