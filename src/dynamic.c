@@ -29,7 +29,7 @@
  * freed must be a packed one, and the last packed triangle moves into it,
  * so the layout stays what vor_init set up (mesh.h). When the other slot
  * is a neighbour's home, vor__rehome finds that neighbour another
- * triangle, provably (an augmenting path, see there).
+ * triangle, provably within its star or one neighbour's (see there).
  */
 #include "bucket_grid.h"
 #include "dynamic.h"
@@ -223,43 +223,23 @@ static vor_index_t cut_ear(vor_t *d, vor_index_t p, vor_index_t s1, vor_index_t 
     return star;
 }
 
-/* Rotates the triangle in `slot` so that its vertex v comes first (its
- * links turn with it; no other triangle changes). */
-static void rotate_to(vor__tri_t *tri, vor_index_t slot, vor_index_t v)
+/* The first packed slot (max_sites or above) of v's star, turning from
+ * slot `first` (which holds a triangle of v); VOR__NONE if none. */
+static vor_index_t packed_in_star(const vor_t *d, vor_index_t v, vor_index_t first)
 {
-    vor__tri_t *t = &tri[slot];
-    unsigned i = corner(t, v);
-    unsigned j = vor__next(i);
-    unsigned k = vor__prev(i);
-    vor_index_t w[3];
-    vor_index_t n[3] = {t->n[0], t->n[1], t->n[2]};
-    vor__vertices(t, w);
-    vor__tri_set(t, w[i], w[j], w[k], n[i], n[j], n[k]);
-}
-
-/* The first slot of cur's star after slot `after` (from the start when
- * VOR__NONE) that is the home slot of another site, unmarked (want_marked
- * false) or marked with its triangle's first vertex cur (true: a child in
- * the search tree below); VOR__NONE if none. One turn around cur. */
-static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first,
-                              vor_index_t after, bool want_marked)
-{
-    const vor__tri_t *tri = d->triangles;
-    bool skipping = after != VOR__NONE;
     vor_index_t slot = first;
+    vor_index_t packed = VOR__NONE;
     for (uint32_t left = d->vertex_count + 1u; left > 0u; left--) {
-        if (!skipping && (slot < d->max_sites) && (slot != cur) &&
-            vor__marked(&tri[slot]) == want_marked &&
-            (!want_marked || vor__vertex(&tri[slot], 0) == cur)) {
-            return slot;
+        if (slot >= d->max_sites) {
+            packed = slot;
+            break;
         }
-        skipping = skipping && (slot != after);
-        slot = star_next(tri, slot, cur);
+        slot = star_next(d->triangles, slot, v);
         if (slot == first) {
             break;
         }
     }
-    return VOR__NONE;
+    return packed;
 }
 
 /* Home slot h of site h is empty (removal merged its triangle away),
@@ -267,93 +247,33 @@ static vor_index_t next_child(const vor_t *d, vor_index_t cur, vor_index_t first
  * slot `last`, one too many. Fills slot h with a triangle of h, which
  * empties a packed slot, and moves the triangle in `last` into it.
  *
- * Why it always succeeds: matching each site to the triangle in its home
- * slot, only h is unmatched. Call r a child of site u when r's home slot
- * holds a triangle of u; let X be h and every site reachable from h
- * through children. If no triangle of a site in X were in a packed slot,
- * all triangles of X would lie in the |X| - 1 home slots of X \ {h}; but
- * every site has three or more triangles (the vertex at infinity closes
- * the hull, and three or more sites remain) and a triangle has three
- * corners, so X has at least |X| triangles (Hall's condition). So some
- * site r_k of X has a triangle in a packed slot P, reached by a path
- * h, r_1, .., r_k of children, and shifting along it (slot h takes r_1's
- * triangle, which holds h; slot r_1 takes r_2's, ..; slot r_k takes P's)
- * rehomes everyone and empties P (Berge's augmenting path).
- *
- * The search is a depth-first search in bounded memory: a site's home
- * slot mark (mesh.h) says "visited", and the parent of a visited site
- * is its home triangle rotated to put the parent first, so the path is
- * read back from the triangles themselves. Every site is marked at most
- * once and every turn around a star is bounded, so it ends; the marks are
- * cleared by walking the same tree again. The first look, at h's own
- * triangles, finds a packed one nearly always. */
+ * Why a look at two stars always finds one. A home slot (below max_sites)
+ * holds a triangle of its own site, so distinct home slots hold
+ * triangles of distinct sites. If no triangle of h is in a packed slot,
+ * h's k triangles fill the home slots of k distinct neighbours of h; h
+ * has k neighbours, infinity among them at the hull, and infinity has no
+ * home, so h is inside the hull and every neighbour's home holds a
+ * triangle of h. Take such a neighbour c, whose home slot is `start`: two
+ * of c's m triangles hold h, and the other m - 2 can only be in the home
+ * slots of their corners other than c (c's holds a triangle of h), h
+ * (empty), and a and b, the third corners of the two triangles on edge
+ * h-c (their homes hold triangles of h too): m - 3 sites at most. So one
+ * of c's triangles is in a packed slot P. Slot h takes c's home triangle
+ * (a triangle of h), slot c takes P's (a triangle of c), P the last. */
 void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
 {
     vor__tri_t *tri = d->triangles;
-    vor_index_t cur = h;
-    vor_index_t after = VOR__NONE;
-    vor_index_t packed = VOR__NONE;
-    /* each step marks a site or goes back up the tree: 2 v steps */
-    for (uint32_t left = (2u * d->vertex_count) + 2u; (left > 0u) && (packed == VOR__NONE); left--) {
-        vor_index_t first = (cur == h) ? start : cur;
-        vor_index_t slot = first;
-        for (uint32_t turn = d->vertex_count + 1u; after == VOR__NONE && (turn > 0u); turn--) {
-            if (slot >= d->max_sites) {
-                packed = slot; /* cur's triangle in a packed slot: the path ends */
-                break;
-            }
-            slot = star_next(tri, slot, cur);
-            if (slot == first) {
-                break;
-            }
-        }
-        if (packed != VOR__NONE) {
-            break;
-        }
-        vor_index_t child = next_child(d, cur, first, after, false);
-        if (child != VOR__NONE) {
-            rotate_to(tri, child, cur); /* records the parent */
-            vor__set_mark(&tri[child], true);
-            cur = child;
-            after = VOR__NONE;
-        } else if (cur == h) {
-            break; /* nothing left to visit: only on a broken mesh */
-        } else {
-            after = cur;
-            cur = vor__vertex(&tri[cur], 0);
-        }
-    }
-    /* clear the marks: the same tree, each site unmarked on the way back */
-    vor_index_t at = h;
-    vor_index_t back = VOR__NONE;
-    for (uint32_t left = (2u * d->vertex_count) + 2u; left > 0u; left--) {
-        vor_index_t child = next_child(d, at, (at == h) ? start : at, back, true);
-        if (child != VOR__NONE) {
-            at = child;
-            back = VOR__NONE;
-            continue;
-        }
-        if (at == h) {
-            break;
-        }
-        vor__set_mark(&tri[at], false);
-        back = at;
-        at = vor__vertex(&tri[at], 0);
-    }
+    vor_index_t packed = packed_in_star(d, h, start);
     if (packed == VOR__NONE) {
-        return; /* a broken mesh only */
+        packed = packed_in_star(d, start, start);
+        if (packed == VOR__NONE) {
+            return; /* a broken mesh only */
+        }
+        move_triangle(tri, start, h);
+        move_triangle(tri, packed, start);
+    } else {
+        move_triangle(tri, packed, h);
     }
-    /* shift along the path from its end, slot h (empty) as the spare:
-     * slot r takes what P holds, P takes r's triangle (its first vertex
-     * is r's parent); at most one step per site */
-    for (uint32_t left = d->vertex_count; (cur != h) && (left > 0u); left--) {
-        vor_index_t parent = vor__vertex(&tri[cur], 0);
-        move_triangle(tri, cur, h);
-        move_triangle(tri, packed, cur);
-        move_triangle(tri, h, packed);
-        cur = parent;
-    }
-    move_triangle(tri, packed, h);
     if (packed != last) {
         move_triangle(tri, last, packed);
     }
@@ -641,13 +561,11 @@ int vor_remove(vor_t *d, uint32_t site)
         vor__make_edge(d, a, b);
         other = a;
     } else if (d->vertex_count == 2u) {
-        const vor__tri_t *t = &tri[p];
-        for (unsigned i = 0; i < 3u; i++) { /* the other finite vertex */
-            vor_index_t v = vor__vertex(t, i);
-            other = ((v != p) && (v != VOR__INFINITE)) ? v : other;
-        }
-        vor__tri_fresh(&tri[other]);
-        tri[other].n[0] = VOR__NONE; /* one site has no triangles */
+        /* two sites are vor__make_edge's edge: p's home holds (p, other,
+         * infinity). The other's slot is not read while it is the only
+         * site (vor__site_in_mesh: the last site), and the next site's
+         * vor__make_edge rewrites it. */
+        other = vor__vertex(&tri[p], 1);
         free_id(d, p);
     } else {
         free_id(d, p);

@@ -241,6 +241,83 @@ static uint32_t random_id(test_rng_t *rng, const model_t *m)
     return id;
 }
 
+/* The live site nearest (x, y), the smaller id on a tie (vor_nearest's
+ * rule), by looking at every site. */
+static uint32_t brute_nearest(const model_t *m, int32_t x, int32_t y)
+{
+    uint32_t best = VOR_NO_HINT;
+    int64_t best_distance = 0;
+    for (uint32_t i = 0; i < m->handed_out; i++) {
+        int64_t dx = (int64_t)m->at[i].x - x, dy = (int64_t)m->at[i].y - y;
+        int64_t distance = dx * dx + dy * dy;
+        if (m->live[i] && (best == VOR_NO_HINT || distance < best_distance)) {
+            best = i;
+            best_distance = distance;
+        }
+    }
+    return best;
+}
+
+/* Inserts, removals and moves that keep between none and four sites, so
+ * that the diagram passes often through its smallest states (no site,
+ * one, two, three: no triangles, an edge, one triangle), and moves land
+ * on other sites too; after each step the state of check_state, each
+ * site's neighbours (live other sites, none for a lone site) and
+ * vor_nearest from a few points, against brute force. */
+static void few_sites(uint64_t seed)
+{
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    uint32_t failures_before = (uint32_t)test_failures();
+    for (uint32_t step = 0; step < 400u; step++) {
+        uint32_t live = live_count(&m), r = test_rng_u32(&rng) % 8u, id = random_id(&rng, &m);
+        uint32_t to = random_id(&rng, &m);
+        if (live == 0u || (r < 3u && live < 4u)) {
+            do_insert(&d, &m, random_point(&rng, UNIFORM), "few", step);
+        } else if (r < 5u) {
+            do_remove(&d, &m, id, "few", step);
+        } else if (r < 6u) {
+            do_move(&d, &m, id, random_point(&rng, UNIFORM), "few", step);
+        } else if (r < 7u && id < m.handed_out) { /* a small step */
+            vor_point_t p = m.at[id];
+            p.x += test_rng_range(&rng, -300, 300);
+            p.y += test_rng_range(&rng, -300, 300);
+            do_move(&d, &m, id, p, "few", step);
+        } else if (id < m.handed_out && to < m.handed_out) { /* onto another site */
+            do_move(&d, &m, id, m.at[to], "few", step);
+        }
+        bool ok = check_state(&d, &m, "few", step);
+        for (uint32_t i = 0; i < m.handed_out; i++) { /* neighbours: live others, none of one */
+            vor_neighbour_iter_t it;
+            uint32_t n = VOR_NO_HINT, count = 0;
+            bool good = vor_neighbours_begin(&it, &d, i) == (m.live[i] ? VOR_OK : VOR_ERR_ARG);
+            while (m.live[i] && vor_neighbours_next(&it, &n) == 1 && count <= DYN_SITES) {
+                good = good && n < m.handed_out && m.live[n] && n != i;
+                count++;
+            }
+            ok = CHECK(good && count < live_count(&m) + (m.live[i] ? 0u : 1u),
+                       "few step %u: the neighbours of %u (%u of them)", step, i, count) &&
+                 ok;
+        }
+        for (uint32_t k = 0; k < 3u && live_count(&m) > 0u; k++) {
+            int32_t x = test_rng_range(&rng, -1200, 1200), y = test_rng_range(&rng, -1200, 1200);
+            uint32_t got = VOR_NO_HINT;
+            ok = CHECK(vor_nearest(&d, (vor_point_t){x, y}, VOR_NO_HINT, &got) == VOR_OK &&
+                           got == brute_nearest(&m, x, y),
+                       "few step %u: nearest to (%d, %d) %u, brute force %u", step, (int)x, (int)y,
+                       got, brute_nearest(&m, x, y)) && ok;
+        }
+        if (!ok || test_failures() > failures_before + 4u) {
+            return;
+        }
+    }
+}
+
 static void random_sequence(enum shape shape, uint64_t seed, uint32_t steps)
 {
     static vor_t d;
@@ -426,65 +503,92 @@ static int64_t distance2(const vor_point_t *a, const vor_point_t *b)
     return dx * dx + dy * dy;
 }
 
-/* How far a triangle reaches from site c: its farthest vertex's squared
- * distance (infinity: farther than any site). */
-static int64_t reach(const vor_t *d, const vor__tri_t *t, vor_index_t c)
+/* How near a triangle comes to site c: its nearest vertex's squared
+ * distance, then its farthest's (by halves: distances are below 2^32). */
+static uint64_t nearness(const vor_t *d, const vor__tri_t *t, vor_index_t c)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
-    int64_t worst = 0;
+    uint64_t nearest = UINT32_MAX, farthest = 0;
     for (unsigned i = 0; i < 3u; i++) {
-        int64_t e = (v[i] == VOR__INFINITE) ? INT64_MAX : distance2(&d->sites[v[i]], &d->sites[c]);
-        worst = (e > worst) ? e : worst;
+        uint64_t e = (v[i] == VOR__INFINITE) ? UINT32_MAX : (uint64_t)distance2(&d->sites[v[i]], &d->sites[c]);
+        nearest = (e < nearest) ? e : nearest;
+        farthest = (e > farthest) ? e : farthest;
     }
-    return worst;
+    return (nearest << 32) | farthest;
 }
 
-/* Another legal layout, hostile to removal: sites in order of distance
- * from c each take as home their free triangle nearest c, so that the
- * packed slots hold the triangles far from c. False (nothing changed)
- * when the greedy choice strands a site. */
-static bool relayout(vor_t *d, vor_index_t c)
+/* Another legal layout: triangles in order of a key each take an owner
+ * among their sites, by an augmenting path through the owners so far
+ * when all are taken (a matching of sites to their triangles, grown in
+ * key order); the triangles left over fill the packed slots. With no
+ * generator the key is nearness to site c, a layout hostile to removal:
+ * near c every triangle is a home, so a search for a packed slot from
+ * there runs through other homes. With one, the key is random: any
+ * legal layout can come out. */
+static void relayout(vor_t *d, vor_index_t c, test_rng_t *rng)
 {
     static vor__tri_t copy[2u * DYN_SITES];
-    static vor_index_t to[2u * DYN_SITES], order[DYN_SITES];
-    static bool taken[2u * DYN_SITES];
+    static vor_index_t to[2u * DYN_SITES], order[2u * DYN_SITES], owner[2u * DYN_SITES];
+    static vor_index_t from[2u * DYN_SITES], queue[2u * DYN_SITES], home[DYN_SITES];
+    static uint32_t seen[2u * DYN_SITES];
+    static uint64_t key[2u * DYN_SITES];
     vor__tri_t *tri = d->triangles;
-    uint32_t slots = d->max_sites + d->vertex_count - 2u, n = 0;
+    uint32_t slots = d->max_sites + d->vertex_count - 2u, used = 0;
     for (uint32_t s = 0; s < slots; s++) {
-        taken[s] = s < d->max_sites && (s >= d->site_count || vor__slot_empty(&tri[s]));
         to[s] = VOR__NONE;
-        if (!taken[s] && s < d->max_sites) { /* insertion sort by distance */
-            uint32_t j = n++;
-            for (; j > 0u && distance2(&d->sites[order[j - 1u]], &d->sites[c]) >
-                                 distance2(&d->sites[s], &d->sites[c]);
-                 j--) {
-                order[j] = order[j - 1u];
-            }
-            order[j] = (vor_index_t)s;
+        owner[s] = VOR__NONE;
+        seen[s] = 0;
+        if (s < d->max_sites && (s >= d->site_count || vor__slot_empty(&tri[s]))) {
+            continue; /* a free id's slot: no triangle */
         }
+        key[s] = (rng != NULL) ? test_rng_u32(rng) : nearness(d, &tri[s], c);
+        uint32_t j = used++; /* insertion sort by key */
+        for (; j > 0u && key[order[j - 1u]] > key[s]; j--) {
+            order[j] = order[j - 1u];
+        }
+        order[j] = (vor_index_t)s;
     }
-    for (uint32_t i = 0; i < n; i++) {
-        vor_index_t s = order[i], slot = s, best = VOR__NONE;
-        for (uint32_t left = DYN_SITES; left > 0u; left--) { /* s's triangles */
-            if (!taken[slot] && (best == VOR__NONE || reach(d, &tri[slot], c) <
-                                                          reach(d, &tri[best], c))) {
-                best = slot;
-            }
-            slot = tri[slot].n[vor__next(vor__vertex_index(&tri[slot], s))];
-            if (slot == s) {
-                break;
+    for (uint32_t s = 0; s < d->site_count; s++) {
+        home[s] = VOR__NONE;
+    }
+    for (uint32_t i = 0; i < used; i++) {
+        /* breadth first from triangle t through its sites' homes to a
+         * site with none */
+        vor_index_t t = order[i], free_site = VOR__NONE, last = VOR__NONE;
+        uint32_t head = 0, tail = 0;
+        queue[tail++] = t;
+        seen[t] = i + 1u;
+        while (head < tail && free_site == VOR__NONE) {
+            vor_index_t x = queue[head++], v[3];
+            vor__vertices(&tri[x], v);
+            for (unsigned k = 0; k < 3u && free_site == VOR__NONE; k++) {
+                if (v[k] == VOR__INFINITE) {
+                    continue;
+                }
+                if (home[v[k]] == VOR__NONE) {
+                    free_site = v[k];
+                    last = x;
+                } else if (seen[home[v[k]]] != i + 1u) {
+                    seen[home[v[k]]] = i + 1u;
+                    from[home[v[k]]] = x;
+                    queue[tail++] = home[v[k]];
+                }
             }
         }
-        if (best == VOR__NONE) {
-            return false;
+        /* shift the owners along the path back to t */
+        for (vor_index_t u = free_site, x = last; u != VOR__NONE;) {
+            vor_index_t before = owner[x];
+            owner[x] = u;
+            home[u] = x;
+            u = (x == t) ? VOR__NONE : before;
+            x = from[x];
         }
-        taken[best] = true;
-        to[best] = s;
     }
     uint32_t next = d->max_sites;
-    for (uint32_t s = 0; s < slots; s++) {
-        to[s] = (!taken[s] && to[s] == VOR__NONE) ? (vor_index_t)next++ : to[s];
+    for (uint32_t i = 0; i < used; i++) {
+        vor_index_t s = order[i];
+        to[s] = (owner[s] != VOR__NONE) ? owner[s] : (vor_index_t)next++;
     }
     for (uint32_t s = 0; s < slots; s++) {
         if (to[s] != VOR__NONE) {
@@ -499,7 +603,6 @@ static bool relayout(vor_t *d, vor_index_t c)
             tri[to[s]] = copy[to[s]];
         }
     }
-    return true;
 }
 
 /* Home slots whose triangle changed, slot `except` aside. */
@@ -543,9 +646,10 @@ static void rehoming(void)
             do_insert(&d, &m, random_point(&rng, UNIFORM), "rehome", i);
         }
         vor_index_t h = (vor_index_t)(test_rng_u32(&rng) % d.site_count), r = VOR__NONE, v[3];
-        if (d.vertex_count < 4u || !m.live[h] || !relayout(&d, h)) {
+        if (d.vertex_count < 4u || !m.live[h]) {
             continue;
         }
+        relayout(&d, h, NULL);
         vor__tri_t *tri = d.triangles;
         vor__vertices(&tri[h], v);
         for (unsigned i = 0; i < 3u; i++) {
@@ -567,15 +671,96 @@ static void rehoming(void)
               "rehome seed %u: check %d, or the triangles changed", (unsigned)seed,
               (int)why.check);
         /* a removal beside the hostile layout */
-        if (relayout(&d, h)) {
-            do_remove(&d, &m, (test_rng_u32(&rng) % 2u == 0u) ? h : r, "rehome", 1000);
-            check_state(&d, &m, "rehome", 1000);
-        }
+        relayout(&d, h, NULL);
+        do_remove(&d, &m, (test_rng_u32(&rng) % 2u == 0u) ? h : r, "rehome", 1000);
+        check_state(&d, &m, "rehome", 1000);
     }
     /* the search beyond h's own triangles must have been needed */
     CHECK(runs > 100u && searched > 3u, "rehome: %u runs, %u searched other homes", runs,
           searched);
     test_printf("rehoming: %u hostile layouts, %u needed other sites' homes\n", runs, searched);
+}
+
+/* No home slot of a site keeps the search's visited mark. */
+static bool marks_clear(const vor_t *d)
+{
+    bool clear = true;
+    for (uint32_t s = 0; s < d->site_count; s++) {
+        clear = clear && (vor__slot_empty(&d->triangles[s]) || !vor__marked(&d->triangles[s]));
+    }
+    return clear;
+}
+
+/* vor__rehome in small meshes under random legal layouts: slot h is
+ * emptied along a random chain h = c0, c1, .., ck of sites (each c(i+1)
+ * a vertex of c(i)'s home triangle; c(k)'s home triangle goes to the
+ * extra packed slot, each c(i)'s to c(i+1)'s), so that any legal state
+ * before a refill can come up, and with it both of the refill's cases:
+ * a triangle of h packed, or none and one of c1's. The refill must change
+ * no triangle, keep the layout legal (vor_validate) and leave no mark. */
+static void rehome_search(void)
+{
+    static vor_t d;
+    static vor_point_t points[DYN_SITES];
+    static vor__tri_t before[DYN_SITES];
+    uint32_t runs = 0, neighbours = 0;
+    for (uint64_t seed = 1; seed <= 3000u; seed++) {
+        test_rng_t rng;
+        test_rng_seed(&rng, 7100u + seed);
+        uint32_t n = 4u + test_rng_u32(&rng) % 10u;
+        for (uint32_t i = 0; i < n; i++) {
+            points[i] = (vor_point_t){test_rng_range(&rng, -40, 40), test_rng_range(&rng, -40, 40)};
+        }
+        vor_init(&d, arena, sizeof arena, DYN_SITES);
+        (void)vor_build(&d, points, n, NULL, NULL);
+        vor_index_t h = (vor_index_t)(test_rng_u32(&rng) % n);
+        if (d.vertex_count < 4u || !vor__site_in_mesh(&d, h)) {
+            continue;
+        }
+        relayout(&d, h, &rng);
+        vor__tri_t *tri = d.triangles;
+        test_fingerprint_t want = test_fingerprint_of(&d, NULL);
+        vor_index_t extra = (vor_index_t)(d.max_sites + d.vertex_count - 2u);
+        vor_index_t chain[6] = {h};
+        uint32_t k = 1u + test_rng_u32(&rng) % 5u;
+        for (uint32_t i = 0; i < k; i++) {
+            vor_index_t v[3], fresh[3];
+            unsigned count = 0;
+            vor__vertices(&tri[chain[i]], v);
+            for (unsigned j = 0; j < 3u; j++) {
+                bool is_new = v[j] != VOR__INFINITE;
+                for (uint32_t e = 0; e <= i; e++) {
+                    is_new = is_new && v[j] != chain[e];
+                }
+                fresh[count] = v[j];
+                count += is_new ? 1u : 0u;
+            }
+            if (count == 0u) {
+                k = i;
+                break;
+            }
+            chain[i + 1u] = fresh[test_rng_u32(&rng) % count];
+        }
+        move_slot(&d, chain[k], extra);
+        for (uint32_t i = k; i > 0u; i--) {
+            move_slot(&d, chain[i - 1u], chain[i]);
+        }
+        for (uint32_t s = 0; s < d.site_count; s++) {
+            before[s] = tri[s];
+        }
+        vor__rehome(&d, h, chain[1], extra);
+        runs++;
+        neighbours += (homes_changed(&d, before, h) > 0u) ? 1u : 0u;
+        vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
+        CHECK(vor_validate(&d, &why) == VOR_OK &&
+                  test_same_fingerprint(test_fingerprint_of(&d, NULL), want) && marks_clear(&d),
+              "rehome search seed %u: check %d, the triangles changed or a mark stayed",
+              (unsigned)seed, (int)why.check);
+    }
+    /* both cases must have come up */
+    CHECK(runs >= 2000u && neighbours >= 10u, "rehome search: %u runs, %u through a neighbour",
+          runs, neighbours);
+    test_printf("rehome search: %u refills, %u from a neighbour's star\n", runs, neighbours);
 }
 
 /* Duplicates' ids from vor_build stay reserved: not sites, never reused. */
@@ -598,21 +783,6 @@ static void build_duplicates(void)
 
 /* A tracker whose answer was removed or moved recovers: its answers stay
  * those of a brute-force nearest site. */
-static uint32_t brute_nearest(const model_t *m, int32_t x, int32_t y)
-{
-    uint32_t best = VOR_NO_HINT;
-    int64_t best_distance = 0;
-    for (uint32_t i = 0; i < m->handed_out; i++) {
-        int64_t dx = (int64_t)m->at[i].x - x, dy = (int64_t)m->at[i].y - y;
-        int64_t distance = dx * dx + dy * dy;
-        if (m->live[i] && (best == VOR_NO_HINT || distance < best_distance)) {
-            best = i;
-            best_distance = distance;
-        }
-    }
-    return best;
-}
-
 static void trackers(void)
 {
     static vor_t d;
@@ -643,6 +813,50 @@ static void trackers(void)
         } else {
             do_insert(&d, &m, random_point(&rng, UNIFORM), "tracker", step);
         }
+    }
+}
+
+/* A tracker must see every change, also two in a row: with an answer
+ * cached, a removal or a small move of another site, then an insertion
+ * next to the query, then the same query again, against brute force. */
+static void tracker_two_changes(void)
+{
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, 4343);
+    vor_init(&d, arena, sizeof arena, DYN_SITES);
+    m.handed_out = 0;
+    m.free_count = 0;
+    for (uint32_t i = 0; i < 20u; i++) {
+        do_insert(&d, &m, random_point(&rng, UNIFORM), "two changes", i);
+    }
+    vor_tracker_t robot;
+    vor_tracker_begin(&robot, &d);
+    for (uint32_t round = 0; round < 45u; round++) {
+        int32_t x = test_rng_range(&rng, -900, 900), y = test_rng_range(&rng, -900, 900);
+        uint32_t answer = VOR_NO_HINT, again = VOR_NO_HINT;
+        CHECK(vor_track(&robot, (vor_point_t){x, y}, &answer) == VOR_OK &&
+                  answer == brute_nearest(&m, x, y),
+              "two changes round %u: %u, brute force %u", round, answer, brute_nearest(&m, x, y));
+        uint32_t other = random_id(&rng, &m);
+        for (uint32_t tries = 0; tries < 64u && (other == answer || other >= m.handed_out ||
+                                                 !m.live[other]); tries++) {
+            other = random_id(&rng, &m);
+        }
+        if (other != answer && other < m.handed_out && m.live[other]) {
+            if (round % 3u != 2u) {
+                do_remove(&d, &m, other, "two changes", round);
+            } else { /* one unit: the triangles mostly stay */
+                do_move(&d, &m, other, (vor_point_t){m.at[other].x + 1, m.at[other].y},
+                        "two changes", round);
+            }
+        }
+        do_insert(&d, &m, (vor_point_t){x + 1, y}, "two changes", round);
+        CHECK(vor_track(&robot, (vor_point_t){x, y}, &again) == VOR_OK &&
+                  again == brute_nearest(&m, x, y),
+              "two changes round %u, after: %u, brute force %u", round, again,
+              brute_nearest(&m, x, y));
     }
 }
 
@@ -731,12 +945,16 @@ void test_dynamic(void)
             }
         }
     }
+    TEST_CASE("few_sites/1") few_sites(5151);
+    TEST_CASE("few_sites/2") few_sites(5252);
     TEST_CASE("down_to_nothing") down_to_nothing();
     TEST_CASE("big_star") big_star();
     TEST_CASE("big_star_irregular") big_star_irregular();
     TEST_CASE("rehoming") rehoming();
+    TEST_CASE("rehome_search") rehome_search();
     TEST_CASE("build_duplicates") build_duplicates();
     TEST_CASE("trackers") trackers();
+    TEST_CASE("tracker_two_changes") tracker_two_changes();
     TEST_CASE("one_site") one_site();
     TEST_CASE("two_sites") two_sites();
 }
