@@ -488,16 +488,17 @@ static void neighbour_moves_in(void)
 
 /* A box near the end of the int32 range is cut to the largest power of
  * two that keeps it inside (so that the fast test's offsets cannot
- * wrap), and no smaller: site 0 lies about 100 units from INT32_MAX, its
+ * wrap), and no smaller: site 0 lies `room` units from INT32_MAX, its
  * neighbours a million away, so its predicates alone would allow a far
- * larger box; 2^e <= room < 2^(e+1) (white box: the box read from the
- * cache). */
-static void box_at_range_end(void)
+ * larger box; 2^e <= room < 2^(e+1), and no box at all with no room
+ * (white box: the box read from the cache). Rooms of 100, a power of two
+ * and 0: the cut's both edges. */
+static void box_at_range_end(int32_t room_wanted)
 {
     test_rng_t rng;
     test_rng_seed(&rng, 31);
     const uint32_t n = 10;
-    at[0] = (vor_point_t){INT32_MAX - 100, 0};
+    at[0] = (vor_point_t){INT32_MAX - room_wanted, 0};
     for (uint32_t i = 1; i < n; i++) {
         do {
             at[i].x = INT32_MAX - test_rng_range(&rng, 1000000, 4000000);
@@ -505,8 +506,12 @@ static void box_at_range_end(void)
         } while (site_at(i, at[i]) != VOR_NO_HINT);
     }
     start(n);
-    for (uint32_t k = 0; k < 4u; k++) {
-        move(n, 0, offset(at[0], (k % 2u == 0u) ? 1 : -1, 0), "range end settles", k);
+    for (uint32_t k = 0; k < 4u; k++) { /* down and back: it ends where it began */
+        move(n, 0, offset(at[0], (k % 2u == 0u) ? -1 : 1, 0), "range end settles", k);
+    }
+    if (room_wanted == 0) {
+        CHECK(!boxed(0), "range end: a box for a site at INT32_MAX");
+        return;
     }
     if (!CHECK(boxed(0), "range end: site 0 has no box (a test that cannot fail)")) {
         return;
@@ -514,7 +519,7 @@ static void box_at_range_end(void)
     const struct vor__motion_entry *e = &with.motion[0];
     uint32_t exponent = (e->stamp & VOR__BOX_MASK) - 1u;
     uint32_t room = (uint32_t)(INT32_MAX - e->x);
-    CHECK((1u << exponent) <= room && (2u << exponent) > room,
+    CHECK(room == (uint32_t)room_wanted && (1u << exponent) <= room && (2u << exponent) > room,
           "range end: box 2^%u at %u from the end", exponent, room);
 }
 
@@ -985,7 +990,11 @@ void test_motion(void)
     TEST_CASE("api_safety") api_safety();
     TEST_CASE("full_range") full_range();
     TEST_CASE("neighbour_moves_in") neighbour_moves_in();
-    TEST_CASE("box_at_range_end") box_at_range_end();
+    TEST_CASE("box_at_range_end") {
+        box_at_range_end(100);
+        box_at_range_end(64);
+        box_at_range_end(0);
+    }
     TEST_CASE("triangle_boxes") triangle_boxes();
     TEST_CASE("quad_boxes") quad_boxes();
     TEST_CASE("line_comes_close") {
