@@ -231,6 +231,22 @@ static vor_point_t random_point(test_rng_t *rng, enum shape shape)
 
 static const char *const shape_names[SHAPES] = {"uniform", "grid", "line", "circle", "heaped"};
 
+/* An empty diagram over the shared arena, and its model. */
+static void begin_model(vor_t *d, model_t *m)
+{
+    vor_init(d, arena, sizeof arena, DYN_SITES);
+    m->handed_out = 0;
+    m->free_count = 0;
+}
+
+/* `count` insertions of uniform random points, each checked. */
+static void insert_uniform(vor_t *d, model_t *m, test_rng_t *rng, uint32_t count, const char *what)
+{
+    for (uint32_t i = 0; i < count; i++) {
+        do_insert(d, m, random_point(rng, UNIFORM), what, i);
+    }
+}
+
 static uint32_t random_id(test_rng_t *rng, const model_t *m)
 {
     /* mostly live sites, sometimes a free or unused id */
@@ -270,9 +286,7 @@ static void few_sites(uint64_t seed)
     static model_t m;
     test_rng_t rng;
     test_rng_seed(&rng, seed);
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
+    begin_model(&d, &m);
     uint32_t failures_before = (uint32_t)test_failures();
     for (uint32_t step = 0; step < 400u; step++) {
         uint32_t live = live_count(&m), r = test_rng_u32(&rng) % 8u, id = random_id(&rng, &m);
@@ -324,9 +338,7 @@ static void random_sequence(enum shape shape, uint64_t seed, uint32_t steps)
     static model_t m;
     test_rng_t rng;
     test_rng_seed(&rng, seed);
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
+    begin_model(&d, &m);
     const char *what = shape_names[shape];
     uint32_t failures_before = (uint32_t)test_failures();
     for (uint32_t step = 0; step < steps; step++) {
@@ -364,9 +376,7 @@ static void down_to_nothing(void)
     static model_t m;
     test_rng_t rng;
     test_rng_seed(&rng, 77);
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
+    begin_model(&d, &m);
     for (uint32_t i = 0; i < 12u; i++) {
         do_insert(&d, &m, random_point(&rng, UNIFORM), "drain", i);
     }
@@ -410,9 +420,7 @@ static void big_star(void)
 {
     static vor_t d;
     static model_t m;
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
+    begin_model(&d, &m);
     const int32_t r = 5525;
     uint32_t found = 0, step = 0;
     int32_t y = r;
@@ -454,9 +462,7 @@ static void big_star_irregular(void)
 {
     static vor_t d;
     static model_t m;
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
+    begin_model(&d, &m);
     /* cos and sin of k 15 degrees, times 2^14, rounded */
     static const int32_t c15[24] = {16384, 15826, 14189, 11585, 8192, 4240, 0, -4240,
                                     -8192, -11585, -14189, -15826, -16384, -15826, -14189,
@@ -638,13 +644,8 @@ static void rehoming(void)
     for (uint64_t seed = 1; seed <= 200u; seed++) {
         test_rng_t rng;
         test_rng_seed(&rng, 9000u + seed);
-        vor_init(&d, arena, sizeof arena, DYN_SITES);
-        m.handed_out = 0;
-        m.free_count = 0;
-        uint32_t count = 4u + test_rng_u32(&rng) % (DYN_SITES - 4u);
-        for (uint32_t i = 0; i < count; i++) {
-            do_insert(&d, &m, random_point(&rng, UNIFORM), "rehome", i);
-        }
+        begin_model(&d, &m);
+        insert_uniform(&d, &m, &rng, 4u + test_rng_u32(&rng) % (DYN_SITES - 4u), "rehome");
         vor_index_t h = (vor_index_t)(test_rng_u32(&rng) % d.site_count), r = VOR__NONE, v[3];
         if (d.vertex_count < 4u || !m.live[h]) {
             continue;
@@ -789,12 +790,8 @@ static void trackers(void)
     static model_t m;
     test_rng_t rng;
     test_rng_seed(&rng, 4242);
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
-    for (uint32_t i = 0; i < 30u; i++) {
-        do_insert(&d, &m, random_point(&rng, UNIFORM), "tracker", i);
-    }
+    begin_model(&d, &m);
+    insert_uniform(&d, &m, &rng, 30u, "tracker");
     vor_tracker_t robot;
     vor_tracker_begin(&robot, &d);
     int32_t x = 0, y = 0;
@@ -825,12 +822,8 @@ static void tracker_two_changes(void)
     static model_t m;
     test_rng_t rng;
     test_rng_seed(&rng, 4343);
-    vor_init(&d, arena, sizeof arena, DYN_SITES);
-    m.handed_out = 0;
-    m.free_count = 0;
-    for (uint32_t i = 0; i < 20u; i++) {
-        do_insert(&d, &m, random_point(&rng, UNIFORM), "two changes", i);
-    }
+    begin_model(&d, &m);
+    insert_uniform(&d, &m, &rng, 20u, "two changes");
     vor_tracker_t robot;
     vor_tracker_begin(&robot, &d);
     for (uint32_t round = 0; round < 45u; round++) {
