@@ -1226,6 +1226,17 @@ static void check_word_edges(void)
             bad_product++;
         }
     }
+    /* the carry out of the low word meeting a middle word of all ones:
+     * 1 + (1 + 2^64)(2^64 - 1) = 2^128, the carry runs into the top word */
+    {
+        vor__mw_u192_t acc = {{1u, 0u, 0u}};
+        const uint64_t xw[2] = {1u, 1u};
+        const uint64_t yw[2] = {UINT64_MAX, 0u};
+        big_t want = big_add(big_of_words(acc.w, 3u),
+                             big_mul(big_of_words(xw, 2u), big_of_words(yw, 2u)), false);
+        vor__mw_u192_add_product(&acc, 1u, 1u, UINT64_MAX, 0u);
+        bad_product += big_low_equal(big_of_words(acc.w, 3u), want, 12u) ? 0u : 1u;
+    }
     CHECK(bad_sub == 0u, "vor__mw_u128_sub wrong %u times", bad_sub);
     CHECK(bad_product == 0u, "vor__mw_u192_add_product wrong %u times", bad_product);
     vor__limb one[2] = {1u, 0u};
