@@ -21,11 +21,14 @@ only shrinks: its line must go). Before the mutants, a self-test: the
 unmutated build must pass, and a mutant that breaks vor_orient2d must be
 killed, so the check cannot pass by not running.
 
-    tools/mutants.py [--jobs N] [--every N] [--files src/a.c,...]
+    tools/mutants.py [--jobs N] [--every N] [--files src/a.c,...] [--lines TEXT]...
 
 --every N runs about one mutant in N (make test's sample): those whose
 key (file, line text, mutation) hashes to 0 modulo N, so that an edit of
-other lines leaves the sample as it was. The report goes to build/mutants/report.txt and is printed.
+other lines leaves the sample as it was. --lines TEXT runs only the
+mutants of lines whose text, spaces squeezed, holds TEXT (given again,
+any of them): after an edit, the edited lines' mutants, with --floor 0.
+The report goes to build/mutants/report.txt and is printed.
 See docs/testing.md, "Mutation testing".
 """
 import argparse
@@ -659,6 +662,9 @@ def main():
     ap.add_argument('--jobs', type=int, default=2)
     ap.add_argument('--every', type=int, default=1, help='run about one mutant in N only (by its key)')
     ap.add_argument('--files', default='', help='comma-separated subset of the targets')
+    ap.add_argument('--lines', action='append', default=[],
+                    help='only the mutants of lines whose text (spaces squeezed) holds this; '
+                         'may be given again (after an edit: run the edited lines again)')
     ap.add_argument('--floor', type=float, default=FLOOR,
                     help='the least share killed, in %% (default %(default).0f)')
     args = ap.parse_args()
@@ -703,7 +709,9 @@ def main():
     problems = self_test(trees[0], uses, originals, primary, configs, timeouts)
 
     mutants = generate([t[0] for t in TARGETS])
-    chosen = [m for m in mutants if m.sampled(args.every) and m.path in files]
+    wanted = [' '.join(x.split()) for x in args.lines]
+    chosen = [m for m in mutants if m.sampled(args.every) and m.path in files and
+              (not wanted or any(w in ' '.join(m.text.split()) for w in wanted))]
     print('mutants: %d generated, running %d (one in %d) on %d jobs'
           % (len(mutants), len(chosen), args.every, args.jobs), flush=True)
     free = list(trees)
