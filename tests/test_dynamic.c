@@ -458,6 +458,37 @@ static void big_star(void)
  * are decided by the incircle tests themselves, not the perturbation.
  * The centre goes first, then the ring's sites in a scrambled order, each
  * step against a fresh build. */
+/* A ring of 24 sites around a centre, every third one pulled in to 96 %
+ * of the radius so that it is a reflex corner of the centre's star (the
+ * chord of its two neighbours passes at 96.6 %), yet still its
+ * neighbour; the pattern turned by `turn` of the 24 places, so that the
+ * walk that cuts stars above 16 neighbours meets a reflex candidate first
+ * at some turn. The centre's removal against a fresh build. */
+static void big_star_reflex(uint32_t turn)
+{
+    static vor_t d;
+    static model_t m;
+    begin_model(&d, &m);
+    static const int32_t c15[24] = {16384, 15826, 14189, 11585, 8192, 4240, 0, -4240,
+                                    -8192, -11585, -14189, -15826, -16384, -15826, -14189,
+                                    -11585, -8192, -4240, 0, 4240, 8192, 11585, 14189, 15826};
+    for (uint32_t k = 0; k < 24u; k++) {
+        int32_t r = ((k + turn) % 3u == 0u) ? 960 : 1000;
+        vor_point_t p = {(c15[k] * r) / 16384, (c15[(k + 18u) % 24u] * r) / 16384};
+        do_insert(&d, &m, p, "reflex ring", k);
+    }
+    do_insert(&d, &m, (vor_point_t){1, 2}, "reflex ring", 24);
+    uint32_t degree = 0, n;
+    vor_neighbour_iter_t it;
+    vor_neighbours_begin(&it, &d, 24);
+    while (vor_neighbours_next(&it, &n)) {
+        degree++;
+    }
+    CHECK(degree == 24u, "reflex ring %u: the centre has %u neighbours, expected 24", turn, degree);
+    do_remove(&d, &m, 24, "reflex ring", 25);
+    check_state(&d, &m, "reflex ring", 25);
+}
+
 static void big_star_irregular(void)
 {
     static vor_t d;
@@ -943,6 +974,11 @@ void test_dynamic(void)
     TEST_CASE("down_to_nothing") down_to_nothing();
     TEST_CASE("big_star") big_star();
     TEST_CASE("big_star_irregular") big_star_irregular();
+    TEST_CASE("big_star_reflex") {
+        for (uint32_t turn = 0; turn < 3u; turn++) {
+            big_star_reflex(turn);
+        }
+    }
     TEST_CASE("rehoming") rehoming();
     TEST_CASE("rehome_search") rehome_search();
     TEST_CASE("build_duplicates") build_duplicates();
