@@ -813,6 +813,17 @@ static void build_duplicates(void)
     CHECK(vor_validate(&d, NULL) == VOR_OK, "valid after reuse");
 }
 
+/* The tracker's answer for (x, y) is the brute-force nearest site;
+ * *answer is set to it (VOR_NO_HINT when the call fails). */
+static bool tracks(vor_tracker_t *robot, const model_t *m, int32_t x, int32_t y, uint32_t *answer,
+                   const char *what, uint32_t step)
+{
+    *answer = VOR_NO_HINT;
+    return CHECK(vor_track(robot, (vor_point_t){x, y}, answer) == VOR_OK &&
+                     *answer == brute_nearest(m, x, y),
+                 "%s %u: %u, brute force %u", what, step, *answer, brute_nearest(m, x, y));
+}
+
 /* A tracker whose answer was removed or moved recovers: its answers stay
  * those of a brute-force nearest site. */
 static void trackers(void)
@@ -827,12 +838,10 @@ static void trackers(void)
     vor_tracker_begin(&robot, &d);
     int32_t x = 0, y = 0;
     for (uint32_t step = 0; step < 60u; step++) {
-        uint32_t answer = VOR_NO_HINT;
+        uint32_t answer;
         x += test_rng_range(&rng, -40, 40);
         y += test_rng_range(&rng, -40, 40);
-        CHECK(vor_track(&robot, (vor_point_t){x, y}, &answer) == VOR_OK &&
-                  answer == brute_nearest(&m, x, y),
-              "tracker step %u: %u, brute force %u", step, answer, brute_nearest(&m, x, y));
+        tracks(&robot, &m, x, y, &answer, "tracker step", step);
         if (step % 3u == 0u && live_count(&m) > 4u) {
             do_remove(&d, &m, answer, "tracker", step); /* its answer goes */
         } else if (step % 3u == 1u) {
@@ -859,10 +868,8 @@ static void tracker_two_changes(void)
     vor_tracker_begin(&robot, &d);
     for (uint32_t round = 0; round < 45u; round++) {
         int32_t x = test_rng_range(&rng, -900, 900), y = test_rng_range(&rng, -900, 900);
-        uint32_t answer = VOR_NO_HINT, again = VOR_NO_HINT;
-        CHECK(vor_track(&robot, (vor_point_t){x, y}, &answer) == VOR_OK &&
-                  answer == brute_nearest(&m, x, y),
-              "two changes round %u: %u, brute force %u", round, answer, brute_nearest(&m, x, y));
+        uint32_t answer, again;
+        tracks(&robot, &m, x, y, &answer, "two changes round", round);
         uint32_t other = random_id(&rng, &m);
         for (uint32_t tries = 0; tries < 64u && (other == answer || other >= m.handed_out ||
                                                  !m.live[other]); tries++) {
@@ -877,10 +884,7 @@ static void tracker_two_changes(void)
             }
         }
         do_insert(&d, &m, (vor_point_t){x + 1, y}, "two changes", round);
-        CHECK(vor_track(&robot, (vor_point_t){x, y}, &again) == VOR_OK &&
-                  again == brute_nearest(&m, x, y),
-              "two changes round %u, after: %u, brute force %u", round, again,
-              brute_nearest(&m, x, y));
+        tracks(&robot, &m, x, y, &again, "two changes, after, round", round);
     }
 }
 
