@@ -411,6 +411,245 @@ static void down_to_nothing(void)
 /* ------------------------------------------------------------------ */
 /* Large stars and home slots                                          */
 
+/* ------------------------------------------------------------------ */
+/* The cost of a removal                                               */
+
+/* Every order of ears gives the same triangulation, so only the number
+ * of predicates a removal evaluates tells one order from another. The
+ * model here follows the order docs/design/dynamic.md states: p's
+ * neighbours counterclockwise by exact angle (the vertex at infinity in a
+ * hull site's gap), from the star triangle in p's home slot (the one
+ * white-box read, mesh.h); above 16 neighbours ears by walking, each
+ * against the others counterclockwise, each pass from the last cut's new
+ * star triangle; then the arrays from there: ears from `from`, the other
+ * neighbours at offsets 3, deg - 1, 4, deg - 2, .., a quadrilateral with
+ * one ear test, and after a cut the scan resumes at the ear before the
+ * new edge. Its signs are vor_orient2d_sos and vor_incircle_sos: the
+ * same perturbation over the same ids. */
+#define RING_MAX (DYN_SITES + 1u)
+#define RING_INFINITE ((uint32_t)VOR__INFINITE)
+#define RING_ARRAYS 16u /* STAR_MAX */
+
+typedef struct {
+    const vor_point_t *at;
+    uint32_t nb[RING_MAX];
+    uint32_t deg;
+    uint32_t orient;
+    uint32_t incircle;
+} ring_t;
+
+/* p's star as removal reads it: the mesh's triangles around p (home
+ * slots of live sites, then the packed ones, mesh.h), chained
+ * counterclockwise from the one in p's home slot. */
+static bool ring_load(ring_t *r, const vor_t *d, const model_t *m, uint32_t p)
+{
+    uint32_t next[RING_MAX], prev[RING_MAX], count = 0;
+    uint32_t slots = d->max_sites + d->vertex_count - 2u;
+    r->at = m->at;
+    r->orient = r->incircle = 0;
+    for (uint32_t s = 0; s < slots; s++) {
+        const vor__tri_t *t = &d->triangles[s];
+        unsigned i = vor__vertex_index(t, (vor_index_t)p);
+        if ((s >= d->max_sites || (s < m->handed_out && m->live[s])) && i < 3u &&
+            count < RING_MAX) {
+            next[count] = vor__vertex(t, vor__next(i));
+            prev[count] = vor__vertex(t, vor__prev(i));
+            count++;
+        }
+    }
+    const vor__tri_t *home = &d->triangles[p];
+    uint32_t at = vor__vertex(home, vor__next(vor__vertex_index(home, (vor_index_t)p)));
+    for (r->deg = 0; r->deg < count; r->deg++) {
+        uint32_t j = 0;
+        while (j < count && next[j] != at) {
+            j++;
+        }
+        if (!CHECK(j < count, "cost: the star of %u is broken at %u", p, at)) {
+            return false;
+        }
+        r->nb[r->deg] = at;
+        at = prev[j];
+    }
+    return CHECK(count >= 3u && at == r->nb[0], "cost: the star of %u (%u triangles) is open", p,
+                 count);
+}
+
+/* Neighbour `first` to index 0, the order kept. */
+static void ring_start_at(ring_t *r, uint32_t first)
+{
+    for (uint32_t turns = 0; turns < r->deg && r->nb[0] != first; turns++) {
+        uint32_t head = r->nb[0];
+        for (uint32_t k = 0; k + 1u < r->deg; k++) {
+            r->nb[k] = r->nb[k + 1u];
+        }
+        r->nb[r->deg - 1u] = head;
+    }
+}
+
+/* Is y in the perturbed circle of (a, b, c), or beyond its hull edge? */
+static bool ring_conflicts(ring_t *r, uint32_t a, uint32_t b, uint32_t c, uint32_t y)
+{
+    const uint32_t hull[3][2] = {{b, c}, {c, a}, {a, b}};
+    unsigned at = (a == RING_INFINITE) ? 0u : (b == RING_INFINITE) ? 1u : 2u;
+    if (a != RING_INFINITE && b != RING_INFINITE && c != RING_INFINITE) {
+        r->incircle++;
+        return vor_incircle_sos(r->at, a, b, c, y) > 0;
+    }
+    r->orient++;
+    return vor_orient2d_sos(r->at, hull[at][0], hull[at][1], y) > 0;
+}
+
+/* Is ear i a triangle of the result? The others in the arrays' order
+ * (`alternate`) or counterclockwise (the walk). */
+static bool ring_ear(ring_t *r, uint32_t i, bool alternate)
+{
+    uint32_t deg = r->deg;
+    uint32_t a = r->nb[i], b = r->nb[(i + 1u) % deg], c = r->nb[(i + 2u) % deg];
+    if (a != RING_INFINITE && b != RING_INFINITE && c != RING_INFINITE) {
+        r->orient++;
+        if (vor_orient2d_sos(r->at, a, b, c) < 0) {
+            return false;
+        }
+    }
+    for (uint32_t t = 0; t + 3u < deg; t++) {
+        uint32_t offset = !alternate ? 3u + t : (t % 2u == 0u) ? 3u + t / 2u : deg - 1u - t / 2u;
+        uint32_t y = r->nb[(i + offset) % deg];
+        if (y != RING_INFINITE && ring_conflicts(r, a, b, c, y)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* Cuts ear i (its middle neighbour leaves); returns the index of its
+ * first neighbour after the cut. */
+static uint32_t ring_cut(ring_t *r, uint32_t i)
+{
+    uint32_t j = (i + 1u) % r->deg;
+    for (uint32_t k = j; k + 1u < r->deg; k++) {
+        r->nb[k] = r->nb[k + 1u];
+    }
+    r->deg--;
+    return (j == 0u) ? i - 1u : i;
+}
+
+/* The predicates the removal of the star in r evaluates, into r. */
+static bool ring_remove(ring_t *r)
+{
+    uint32_t start = 0;
+    while (r->deg > RING_ARRAYS) {
+        uint32_t k = 0;
+        while (k < r->deg && !ring_ear(r, (start + k) % r->deg, false)) {
+            k++;
+        }
+        if (!CHECK(k < r->deg, "cost: a star of %u without an ear", r->deg)) {
+            return false;
+        }
+        start = ring_cut(r, (start + k) % r->deg);
+    }
+    ring_start_at(r, r->nb[start]);
+    uint32_t from = 0;
+    while (r->deg > 3u) {
+        uint32_t i = 0;
+        if (r->deg == 4u) {
+            i = ring_ear(r, 0, true) ? 0u : 1u;
+        } else {
+            uint32_t k = 0;
+            while (k < r->deg && !ring_ear(r, (from + k) % r->deg, true)) {
+                k++;
+            }
+            if (!CHECK(k < r->deg, "cost: a star of %u without an ear", r->deg)) {
+                return false;
+            }
+            i = (from + k) % r->deg;
+        }
+        uint32_t at = ring_cut(r, i);
+        from = (at == 0u) ? r->deg - 1u : at - 1u;
+    }
+    return true;
+}
+
+static uint32_t tier_sum(const uint32_t count[VOR_TIERS])
+{
+    return count[VOR_TIER_NARROW] + count[VOR_TIER_MID] + count[VOR_TIER_WIDE];
+}
+
+/* do_remove, with the predicates counted (vor_stats) against the model's. */
+static bool remove_as_modelled(vor_t *d, model_t *m, uint32_t p, const char *what, uint32_t step)
+{
+    ring_t r;
+    vor_stats_t before, after;
+    bool mesh = d->vertex_count >= 4u;
+    if (mesh && (!ring_load(&r, d, m, p) || !ring_remove(&r))) {
+        return false;
+    }
+    CHECK(vor_stats(d, &before) == VOR_OK, "cost: no counters");
+    do_remove(d, m, p, what, step);
+    CHECK(vor_stats(d, &after) == VOR_OK, "cost: no counters");
+    uint32_t orient = tier_sum(after.orient2d) - tier_sum(before.orient2d);
+    uint32_t incircle = tier_sum(after.incircle) - tier_sum(before.incircle);
+    uint32_t closer = tier_sum(after.closer) - tier_sum(before.closer);
+    return CHECK(orient == (mesh ? r.orient : 0u) && incircle == (mesh ? r.incircle : 0u) &&
+                     closer == 0u,
+                 "%s step %u: removing %u took %u orientation, %u incircle and %u closer tests; "
+                 "the model %u, %u and 0",
+                 what, step, p, orient, incircle, closer, mesh ? r.orient : 0u,
+                 mesh ? r.incircle : 0u);
+}
+
+/* Sets of each shape emptied in a random order, every removal's
+ * predicates counted against the model (the rings above 16 neighbours
+ * are big_star's). */
+static void removal_cost(void)
+{
+    static vor_t d;
+    static model_t m;
+    static const enum shape shapes[3] = {UNIFORM, GRID, CIRCLE};
+    for (uint32_t round = 0; round < 60u; round++) {
+        test_rng_t rng;
+        test_rng_seed(&rng, 7000u + round);
+        begin_model(&d, &m);
+        for (uint32_t i = 0; i < DYN_SITES; i++) {
+            do_insert(&d, &m, random_point(&rng, shapes[round % 3u]), "cost", i);
+        }
+        for (uint32_t step = 0; live_count(&m) > 0u; step++) {
+            uint32_t id = (uint32_t)test_rng_range(&rng, 0, (int32_t)m.handed_out - 1);
+            while (!m.live[id]) {
+                id = (id + 1u) % m.handed_out;
+            }
+            if (!remove_as_modelled(&d, &m, id, "cost", step)) {
+                return;
+            }
+        }
+        check_state(&d, &m, "cost", round);
+    }
+}
+
+/* A fan: a site below 17 sites on one line, each of its triangles with
+ * two neighbours of the line Delaunay (its circle meets the line only at
+ * them), so its star holds every other site and the vertex at infinity:
+ * a star above removal's arrays whose degree is the site count. */
+static void fan(void)
+{
+    static vor_t d;
+    static model_t m;
+    begin_model(&d, &m);
+    do_insert(&d, &m, (vor_point_t){0, 0}, "fan", 0);
+    for (int32_t k = -8; k <= 8; k++) {
+        do_insert(&d, &m, (vor_point_t){100 * k, 1000}, "fan", 1);
+    }
+    uint32_t degree = 0, n;
+    vor_neighbour_iter_t it;
+    vor_neighbours_begin(&it, &d, 0);
+    while (vor_neighbours_next(&it, &n)) {
+        degree++;
+    }
+    CHECK(degree == 17u && d.vertex_count == 18u, "fan: the apex has %u neighbours of %u",
+          degree, d.vertex_count - 1u);
+    remove_as_modelled(&d, &m, 0, "fan", 2);
+    check_state(&d, &m, "fan", 2);
+}
+
 /* A site inside a ring of 32 cocircular sites (x^2 + y^2 = 5525^2 has 180
  * lattice points; every sixth of the first quadrant's, turned four ways):
  * its star is larger than removal's arrays (STAR_MAX, dynamic.c), so the
@@ -445,10 +684,10 @@ static void big_star(void)
         degree++;
     }
     CHECK(degree == 32u, "ring: the centre has %u neighbours, expected 32", degree);
-    do_remove(&d, &m, 32, "ring", step);
+    remove_as_modelled(&d, &m, 32, "ring", step);
     check_state(&d, &m, "ring", step++);
     for (uint32_t i = 0; i < 32u; i++) {
-        do_remove(&d, &m, (i * 7u) % 32u, "ring", step);
+        remove_as_modelled(&d, &m, (i * 7u) % 32u, "ring", step);
         check_state(&d, &m, "ring", step++);
     }
 }
@@ -485,7 +724,7 @@ static void big_star_reflex(uint32_t turn)
         degree++;
     }
     CHECK(degree == 24u, "reflex ring %u: the centre has %u neighbours, expected 24", turn, degree);
-    do_remove(&d, &m, 24, "reflex ring", 25);
+    remove_as_modelled(&d, &m, 24, "reflex ring", 25);
     check_state(&d, &m, "reflex ring", 25);
 }
 
@@ -513,10 +752,10 @@ static void big_star_irregular(void)
     }
     CHECK(degree > 16u, "irregular ring: the centre has %u neighbours, expected more than 16",
           degree);
-    do_remove(&d, &m, 24, "irregular ring", step);
+    remove_as_modelled(&d, &m, 24, "irregular ring", step);
     check_state(&d, &m, "irregular ring", step++);
     for (uint32_t i = 0; i < 24u; i++) {
-        do_remove(&d, &m, (i * 5u) % 24u, "irregular ring", step);
+        remove_as_modelled(&d, &m, (i * 5u) % 24u, "irregular ring", step);
         check_state(&d, &m, "irregular ring", step++);
     }
 }
@@ -976,7 +1215,9 @@ void test_dynamic(void)
     TEST_CASE("few_sites/1") few_sites(5151);
     TEST_CASE("few_sites/2") few_sites(5252);
     TEST_CASE("down_to_nothing") down_to_nothing();
+    TEST_CASE("removal_cost") removal_cost();
     TEST_CASE("big_star") big_star();
+    TEST_CASE("fan") fan();
     TEST_CASE("big_star_irregular") big_star_irregular();
     TEST_CASE("big_star_reflex") {
         for (uint32_t turn = 0; turn < 3u; turn++) {
