@@ -48,7 +48,7 @@ TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
 # SANITIZE=1 builds the host tests with AddressSanitizer and UBSan.
 ifeq ($(SANITIZE),1)
 B := build/$(PORT)-sanitize
-SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SAN_FLAGS := -fsanitize=address,undefined,bounds-strict -fno-sanitize-recover=all -fno-omit-frame-pointer
 else
 B := build/$(PORT)
 SAN_FLAGS :=

@@ -625,6 +625,41 @@ static void removal_cost(void)
     }
 }
 
+/* Diagrams filled to capacity in arenas of exactly VOR_ARENA_BYTES(n),
+ * n = 4 and 5 (one or two buckets after the triangles), each site removed
+ * and put back in turn against a fresh build: the last packed triangle,
+ * which a removal moves, is then the arena's last slot, and a read past
+ * it leaves the arena (the sanitizer suites see it). */
+static void full_arenas(void)
+{
+    static uint8_t four[VOR_ARENA_BYTES(4)] __attribute__((aligned(8)));
+    static uint8_t five[VOR_ARENA_BYTES(5)] __attribute__((aligned(8)));
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    for (uint32_t round = 0; round < 40u; round++) {
+        uint32_t n = 4u + round % 2u;
+        vor_init(&d, (n == 4u) ? four : five, (n == 4u) ? sizeof four : sizeof five, n);
+        m.handed_out = 0;
+        m.free_count = 0;
+        for (uint32_t i = 0; i < n; i++) {
+            vor_point_t p;
+            do {
+                p = random_point(&rng, UNIFORM);
+            } while (site_at(&m, p.x, p.y) != VOR_NO_HINT);
+            do_insert(&d, &m, p, "full", i);
+        }
+        for (uint32_t i = 0; i < n; i++) {
+            vor_point_t p = m.at[i];
+            remove_as_modelled(&d, &m, i, "full", i);
+            check_state(&d, &m, "full", i);
+            do_insert(&d, &m, p, "full", i);
+            check_state(&d, &m, "full", i);
+        }
+    }
+}
+
 /* A fan: a site below 17 sites on one line, each of its triangles with
  * two neighbours of the line Delaunay (its circle meets the line only at
  * them), so its star holds every other site and the vertex at infinity:
@@ -1218,6 +1253,7 @@ void test_dynamic(void)
     TEST_CASE("removal_cost") removal_cost();
     TEST_CASE("big_star") big_star();
     TEST_CASE("fan") fan();
+    TEST_CASE("full_arenas") full_arenas();
     TEST_CASE("big_star_irregular") big_star_irregular();
     TEST_CASE("big_star_reflex") {
         for (uint32_t turn = 0; turn < 3u; turn++) {

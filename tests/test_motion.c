@@ -11,6 +11,7 @@
  * at least one on meshes of three or more sites), and a fast move must
  * leave the twin's triangles as they were.
  */
+#include "mesh.h" /* white box: the star around a site, for the upkeep model */
 #include "motion.h"
 #include "predicates.h" /* white box: the exact magnitudes, vor__incircle_bits */
 #include "test.h"
@@ -391,23 +392,27 @@ static void backoff(void)
     int32_t r = (int32_t)(1u << ((with.motion[i].stamp & VOR__BOX_MASK) - 1u));
     CHECK(!move(n, i, offset(at[i], r, 0), "backoff", 8) && boxed(i),
           "a used box's successor was not sized");
+    CHECK(((with.motion[i].stamp >> 5) & 7u) == 0u, "a used box left the level at %u",
+          (with.motion[i].stamp >> 5) & 7u);
     /* steps of 2^13 (the spacing about 144,000, the boxes about 2^-12 of
      * it) no box holds: each sizing raises the level, and the next
-     * 2^level slow moves size nothing (the entry's counters) */
+     * 2^level slow moves size nothing (the entry's counters), the level
+     * going up to 5 and staying there */
     uint32_t j = 9;
     move(n, j, offset(at[j], 8192, 0), "big steps", 0); /* the first: no sizing */
-    for (uint32_t level = 1; level <= 3u; level++) {
-        int32_t sign = (level % 2u == 1u) ? -1 : 1;
-        move(n, j, offset(at[j], sign * 8192, 0), "big steps", level);
+    for (uint32_t round = 1; round <= 6u; round++) {
+        uint32_t level = (round < 5u) ? round : 5u;
+        int32_t sign = (round % 2u == 1u) ? -1 : 1;
+        move(n, j, offset(at[j], sign * 8192, 0), "big steps", round);
         const struct vor__motion_entry *e = &with.motion[j];
         CHECK(!boxed(j) && ((e->stamp >> 5) & 7u) == level && e->x == (int32_t)(1u << level),
-              "big steps: level %u, entry %x %d", level, e->stamp, e->x);
+              "big steps: round %u, entry %x %d", round, e->stamp, e->x);
         for (uint32_t k = 0; k < (1u << level); k++) {
             move(n, j, offset(at[j], (k % 2u == 0u) ? sign * 8192 : -sign * 8192, 0), "big steps",
-                 level);
+                 round);
         }
         CHECK(e->x == 0 && ((e->stamp >> 5) & 7u) == level,
-              "big steps: level %u after the skipped moves, entry %x %d", level, e->stamp, e->x);
+              "big steps: round %u after the skipped moves, entry %x %d", round, e->stamp, e->x);
     }
 }
 
@@ -770,6 +775,346 @@ static void quad_boxes(void)
           tried, decided[0], decided[1], decided[2], decided[3], cut, cut_decided);
 }
 
+/* ------------------------------------------------------------------ */
+/* The upkeep of a slow move, against a model (white box)              */
+
+/* The model of what a slow move of an interior site p that keeps the
+ * triangles does to the cache (src/motion.c, the head comment): p's
+ * predicates as star_still_delaunay evaluates them (per star triangle
+ * (p, x, y), counterclockwise from the one in p's home slot: its
+ * orientation, the incircle test with the far vertex across x-y, the one
+ * with the next neighbour z), each re-proved for the other valid sites
+ * free within 2^(e + 1) (E the largest e + 2), voiding them all where
+ * the bound exceeds |P| / 4 (bit lengths: bound > L - 2, or L < 2); and,
+ * when the move sizes p, p's box: per predicate the largest e the
+ * derivation allows (orient_box, incircle_box), or the others' largest
+ * e when that is larger (a box they were proven with), the least over
+ * the predicates, if it holds a step as long as this one. Sites within
+ * 2^20 of the origin: every box is far from the ends of int32. */
+
+/* p's neighbours counterclockwise from the star triangle in its home
+ * slot (mesh.h: the one white-box read of the layout); 0 if p is on the
+ * hull. */
+static uint32_t interior_star(const vor_t *d, uint32_t n, uint32_t p, uint32_t nb[])
+{
+    uint32_t next[MOTION_SITES], prev[MOTION_SITES], count = 0;
+    for (uint32_t s = 0; s < d->max_sites + n - 2u; s++) {
+        const vor__tri_t *t = &d->triangles[s];
+        unsigned i = vor__vertex_index(t, (vor_index_t)p);
+        if ((s < n || s >= d->max_sites) && i < 3u && count < MOTION_SITES) {
+            next[count] = vor__vertex(t, vor__next(i));
+            prev[count] = vor__vertex(t, vor__prev(i));
+            count++;
+        }
+    }
+    const vor__tri_t *home = &d->triangles[p];
+    uint32_t v = vor__vertex(home, vor__next(vor__vertex_index(home, (vor_index_t)p)));
+    for (uint32_t k = 0; k < count; k++) {
+        uint32_t j = 0;
+        while (j < count && next[j] != v) {
+            j++;
+        }
+        if (j == count || v == (uint32_t)VOR__INFINITE) {
+            return 0;
+        }
+        nb[k] = v;
+        v = prev[j];
+    }
+    return count;
+}
+
+/* The third vertex of the triangle on x-y that is not p's. */
+static uint32_t far_vertex(const vor_t *d, uint32_t n, uint32_t p, uint32_t x, uint32_t y)
+{
+    for (uint32_t s = 0; s < d->max_sites + n - 2u; s++) {
+        const vor__tri_t *t = &d->triangles[s];
+        if ((s < n || s >= d->max_sites) && vor__vertex_index(t, (vor_index_t)x) < 3u &&
+            vor__vertex_index(t, (vor_index_t)y) < 3u && vor__vertex_index(t, (vor_index_t)p) == 3u) {
+            uint32_t v[3] = {vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2)};
+            return (v[0] != x && v[0] != y) ? v[0] : (v[1] != x && v[1] != y) ? v[1] : v[2];
+        }
+    }
+    return (uint32_t)VOR__INFINITE;
+}
+
+static bool model_valid(const struct vor__motion_entry *e, uint32_t epoch)
+{
+    return (e->stamp >> 8) == epoch && (e->stamp & VOR__BOX_MASK) != 0u;
+}
+
+/* One predicate of p (an orientation of ids[0 .. 3) from p = ids[0], or
+ * the incircle test of ids[0 .. 3) with ids[3], vectors from ids[3]):
+ * the re-proof, and p's limit (-1: none). *voids counts voidings. */
+static int model_predicate(struct vor__motion_entry *c, uint32_t epoch, uint32_t p,
+                           const uint32_t ids[4], unsigned count, bool sizing, uint32_t *voids)
+{
+    int others = -1;
+    for (unsigned k = 0; k < count; k++) {
+        if (ids[k] != p && model_valid(&c[ids[k]], epoch)) {
+            int e = (int)(c[ids[k]].stamp & VOR__BOX_MASK) - 1;
+            others = (e > others) ? e : others;
+        }
+    }
+    if (others < 0 && !sizing) {
+        return -1;
+    }
+    int L, box, bound, E = others + 2;
+    if (count == 3u) {
+        L = (int)vor__orient2d_bits(&at[ids[0]], &at[ids[1]], &at[ids[2]]);
+        box = orient_box(at[ids[0]], at[ids[1]], at[ids[2]]);
+        uint32_t spread = 0;
+        for (unsigned k = 1; k < 3u; k++) {
+            int64_t dx = (int64_t)at[ids[k]].x - at[ids[0]].x;
+            int64_t dy = (int64_t)at[ids[k]].y - at[ids[0]].y;
+            spread |= (uint32_t)(dx < 0 ? -dx : dx) | (uint32_t)(dy < 0 ? -dy : dy);
+        }
+        int m = bit_length(spread), n = (m > E) ? m : E;
+        bound = n + E + 3;
+    } else {
+        int64_t v[3][2];
+        for (unsigned r = 0; r < 3u; r++) {
+            v[r][0] = (int64_t)at[ids[r]].x - at[ids[3]].x;
+            v[r][1] = (int64_t)at[ids[r]].y - at[ids[3]].y;
+        }
+        L = (int)vor__incircle_bits(&at[ids[0]], &at[ids[1]], &at[ids[2]], &at[ids[3]]);
+        int which, cut, m;
+        box = incircle_box(v, L, &which, &cut);
+        int Lg = incircle_terms(v, &m, &cut);
+        bound = incircle_bound(m, Lg, E);
+    }
+    if (others >= 0 && (L < 2 || bound > L - 2)) {
+        for (unsigned k = 0; k < count; k++) {
+            if (ids[k] != p && model_valid(&c[ids[k]], epoch)) {
+                c[ids[k]].stamp &= ~VOR__BOX_MASK;
+                c[ids[k]].x = 0;
+                c[ids[k]].y = 1;
+                (*voids)++;
+            }
+        }
+        others = -1;
+    }
+    if (L < 3) {
+        return -1;
+    }
+    return (others >= 0 && others > box) ? others : box;
+}
+
+/* The cache after p's slow move from `from` (at[] holds the new place),
+ * p's entry due to size (sizing) or at its first slow move; its star nb. */
+static void model_update(struct vor__motion_entry *c, uint32_t epoch, uint32_t p,
+                         vor_point_t from, bool sizing, const uint32_t nb[], uint32_t deg,
+                         uint32_t n, uint32_t *voids)
+{
+    uint32_t level = (c[p].stamp >> 5) & 7u;
+    c[p].stamp = level << 5;
+    c[p].y = 1;
+    uint32_t dx = (uint32_t)(at[p].x > from.x ? at[p].x - from.x : from.x - at[p].x);
+    uint32_t dy = (uint32_t)(at[p].y > from.y ? at[p].y - from.y : from.y - at[p].y);
+    uint32_t step = (dx > dy) ? dx : dy;
+    int need = 0;
+    while (((uint64_t)1 << need) < step) { /* the least 2^need >= step */
+        need++;
+    }
+    int limit = 30;
+    for (uint32_t k = 0; k < deg; k++) {
+        uint32_t x = nb[k], y = nb[(k + 1u) % deg], z = nb[(k + 2u) % deg];
+        uint32_t far = far_vertex(&with, n, p, x, y);
+        const uint32_t tri[4] = {p, x, y, far}, turn[4] = {p, x, y, z};
+        int l = model_predicate(c, epoch, p, tri, 3u, sizing && limit >= need, voids);
+        limit = (l < limit) ? l : limit;
+        if (far != (uint32_t)VOR__INFINITE) {
+            l = model_predicate(c, epoch, p, tri, 4u, sizing && limit >= need, voids);
+            limit = (l < limit) ? l : limit;
+        }
+        l = model_predicate(c, epoch, p, turn, 4u, sizing && limit >= need, voids);
+        limit = (l < limit) ? l : limit;
+    }
+    if (sizing && limit >= need) {
+        c[p].x = at[p].x;
+        c[p].y = at[p].y;
+        c[p].stamp = (epoch << 8) | (level << 5) | (uint32_t)(limit + 1);
+    } else if (sizing) {
+        level += (level < 5u) ? 1u : 0u;
+        c[p].x = (int32_t)(1u << level);
+        c[p].stamp = level << 5;
+    }
+}
+
+/* Random small diagrams, an interior site p moved by a step that keeps
+ * the triangles, with boxes planted around it: valid ones of random
+ * sizes (most of them larger than the derivation would give, so that
+ * the re-proof has something to void), stale ones (an older epoch) and
+ * current entries without a box counting down their backoff, which the
+ * move must leave alone; p due to size its box or at its first slow
+ * move. Every entry afterwards must be the model's. */
+static void slow_move_upkeep(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 47);
+    static struct vor__motion_entry model[MOTION_SITES];
+    uint32_t tried = 0, voids = 0, kept = 0, sized = 0, unsized = 0;
+    for (uint32_t round = 0; round < 20000u && tried < 1500u; round++) {
+        uint32_t n = 5u + test_rng_u32(&rng) % 8u;
+        int bits = test_rng_range(&rng, 2, 20);
+        int32_t span = (int32_t)1 << bits;
+        for (uint32_t i = 0; i < n; i++) {
+            do {
+                at[i].x = test_rng_range(&rng, 0, span);
+                at[i].y = test_rng_range(&rng, 0, span);
+            } while (site_at(i, at[i]) != VOR_NO_HINT);
+        }
+        start(n);
+        uint32_t p = test_rng_u32(&rng) % n, nb[MOTION_SITES];
+        uint32_t deg = interior_star(&with, n, p, nb);
+        if (deg == 0u) {
+            continue;
+        }
+        uint32_t epoch = with.motion_epoch;
+        for (uint32_t i = 0; i < n; i++) {
+            struct vor__motion_entry *e = &with.motion[i];
+            uint32_t kind = test_rng_u32(&rng) % 8u;
+            int most = (kind < 2u) ? bits + 2 : (bits > 12) ? bits - 12 : 0;
+            uint32_t size = 1u + (uint32_t)test_rng_range(&rng, 0, most);
+            e->x = at[i].x;
+            e->y = at[i].y;
+            e->stamp = (kind < 4u) ? ((epoch << 8) | ((kind & 1u) << 6) | size) /* valid */
+                       : (kind == 4u) ? ((((epoch - 1u) & VOR__EPOCH_MASK) << 8) | size) /* stale */
+                       : (kind == 5u) ? ((epoch << 8) | (2u << 5))                   /* waiting */
+                                      : 0u;                                          /* none */
+            if (kind == 5u) {
+                e->x = 3;
+                e->y = 1;
+            }
+        }
+        bool sizing = test_rng_u32(&rng) % 2u == 0u;
+        with.motion[p].x = 0;
+        with.motion[p].y = sizing ? 1 : 0;
+        with.motion[p].stamp = 0;
+        for (uint32_t i = 0; i < n; i++) {
+            model[i] = with.motion[i];
+        }
+        vor_point_t from = at[p];
+        int32_t reach = (int32_t)1 << test_rng_range(&rng, 0, (bits > 4) ? bits - 4 : 0);
+        vor_point_t to = offset(from, test_rng_range(&rng, -reach, reach),
+                                test_rng_range(&rng, -reach, reach));
+        if (site_at(n, to) != VOR_NO_HINT) {
+            continue;
+        }
+        move(n, p, to, "upkeep", round);
+        if (with.motion_epoch != epoch) {
+            continue; /* the triangles changed: every entry void */
+        }
+        tried++;
+        uint32_t before = voids;
+        model_update(model, epoch, p, from, sizing, nb, deg, n, &voids);
+        kept += (voids == before) ? 1u : 0u;
+        sized += (sizing && (model[p].stamp & VOR__BOX_MASK) != 0u) ? 1u : 0u;
+        unsized += (sizing && (model[p].stamp & VOR__BOX_MASK) == 0u) ? 1u : 0u;
+        for (uint32_t i = 0; i < n; i++) {
+            const struct vor__motion_entry *e = &with.motion[i];
+            if (!CHECK(e->x == model[i].x && e->y == model[i].y && e->stamp == model[i].stamp,
+                       "upkeep %u: site %u of %u (p %u, %s) entry (%d, %d, %x), the model's "
+                       "(%d, %d, %x)",
+                       round, i, n, p, sizing ? "sizing" : "first move", e->x, e->y, e->stamp,
+                       model[i].x, model[i].y, model[i].stamp)) {
+                return;
+            }
+        }
+    }
+    test_printf("slow move upkeep: %u moves, %u voidings, %u moves voiding none, p sized %u "
+                "times, %u times not\n",
+                tried, voids, kept, sized, unsized);
+    CHECK(tried >= 1500u && voids >= 1000u && kept >= 150u && sized >= 100u && unsized >= 300u,
+          "upkeep: %u moves, %u voidings, %u none, %u sized, %u not", tried, voids, kept, sized,
+          unsized);
+}
+
+/* One or two sites have no finite triangle, so no box (the twin
+ * argument in src/motion.c needs one): slow moves size nothing. Also a
+ * diagram of at most one site, whose arena (exactly VOR_ARENA_BYTES(1))
+ * has no triangle slot for the upkeep to read. */
+static void few_sites(void)
+{
+    at[0] = (vor_point_t){0, 0};
+    at[1] = (vor_point_t){1000000, 0};
+    for (uint32_t n = 1; n <= 2u; n++) {
+        start(n);
+        for (uint32_t step = 0; step < 6u; step++) {
+            uint32_t i = step % n;
+            move(n, i, offset(at[i], (step < 2u) ? 1 : -1, 0), "few sites", step);
+        }
+        /* and no sizing was tried, so the backoff stays at its start */
+        CHECK(!boxed(0) && !boxed(1) && with.motion[0].stamp == 0u && with.motion[0].x == 0 &&
+                  with.motion[n - 1u].stamp == 0u && with.motion[n - 1u].x == 0,
+              "%u sites: entries (%d, %x) (%d, %x)", n, with.motion[0].x, with.motion[0].stamp,
+              with.motion[1].x, with.motion[1].stamp);
+    }
+    static uint8_t one_arena[VOR_ARENA_BYTES(1)] __attribute__((aligned(8)));
+    static uint8_t one_cache[VOR_MOTION_BYTES(1)] __attribute__((aligned(8)));
+    vor_t one;
+    uint32_t id = 1;
+    bool ok = vor_init(&one, one_arena, sizeof one_arena, 1) == VOR_OK &&
+              vor_motion_attach(&one, one_cache, sizeof one_cache) == VOR_OK &&
+              vor_insert(&one, (vor_point_t){5, 5}, &id) == VOR_OK && id == 0u;
+    for (int32_t step = 1; step <= 4; step++) {
+        ok = ok && vor_move(&one, 0, (vor_point_t){5 + step, 5}, NULL) == VOR_OK;
+    }
+    CHECK(ok && (one.motion[0].stamp & VOR__BOX_MASK) == 0u && one.sites[0].x == 9,
+          "one site of one: moves %s, stamp %x", ok ? "done" : "failed", one.motion[0].stamp);
+}
+
+/* A hull site p adjacent to every other site: its star has as many
+ * triangles as the mesh has sites, and the walks over it (star_boxed's
+ * and the upkeep's) must reach the last. a, b, c lie on a circle of
+ * radius 10^6; p, 1 below the middle of chord a-c and deep inside the
+ * circle, takes the diagonal to b. Its one tight predicate is the
+ * orientation of (p, a, c), |P| = 2 or 4, tested across the hull edge
+ * p-a; every other predicate allows a box. For each of the 24 orders of
+ * ids (each lays the star out from another home triangle):
+ * - p sized at its second slow move gets no box;
+ * - a box planted far too large on a neighbour q is voided by p's first
+ *   slow move (every predicate with q fails). */
+static void hull_star(void)
+{
+    const vor_point_t a = {-1000000, -1}, c = {1000000, 1}, b = {0, 1000000}, p = {1, 0};
+    const vor_point_t four[4] = {a, b, c, p};
+    uint32_t checked = 0;
+    for (uint32_t order = 0; order < 24u; order++) {
+        uint32_t id[4] = {0, 1, 2, 3}, rest = order;
+        for (uint32_t k = 0; k < 4u; k++) { /* the order-th permutation */
+            uint32_t pick = k + rest % (4u - k), t = id[k];
+            rest /= 4u - k;
+            id[k] = id[pick];
+            id[pick] = t;
+        }
+        for (uint32_t q = 0; q < 4u; q++) { /* q == 3: p sized */
+            for (uint32_t k = 0; k < 4u; k++) {
+                at[id[k]] = four[k];
+            }
+            start(4);
+            uint32_t epoch = with.motion_epoch;
+            if (q < 3u) {
+                struct vor__motion_entry *e = &with.motion[id[q]];
+                e->x = at[id[q]].x;
+                e->y = at[id[q]].y;
+                e->stamp = (epoch << 8) | 26u; /* 2^25 */
+            }
+            move(4, id[3], offset(p, 1, 0), "hull star", order);
+            if (q == 3u) {
+                move(4, id[3], p, "hull star", order);
+            }
+            if (!CHECK(with.motion_epoch == epoch, "hull star %u: the triangles changed", order)) {
+                return;
+            }
+            CHECK(q == 3u ? !boxed(id[3]) : !boxed(id[q]),
+                  "hull star, ids %u %u %u %u: %s", id[0], id[1], id[2], id[3],
+                  q == 3u ? "p took a box" : "a box too large kept");
+            checked++;
+        }
+    }
+    CHECK(checked == 96u, "hull star: %u cases", checked);
+}
+
 /* A move that brings a line close to a boxed site must void its box:
  * site 1 moves so that the line of sites 0 and 1 passes just inside the
  * reach of site 2's box (|P| at least 2^(m + e), well below what the
@@ -997,6 +1342,9 @@ void test_motion(void)
     }
     TEST_CASE("triangle_boxes") triangle_boxes();
     TEST_CASE("quad_boxes") quad_boxes();
+    TEST_CASE("slow_move_upkeep") slow_move_upkeep();
+    TEST_CASE("few_sites") few_sites();
+    TEST_CASE("hull_star") hull_star();
     TEST_CASE("line_comes_close") {
         line_comes_close(16384);
         line_comes_close(200);
