@@ -660,6 +660,42 @@ static void full_arenas(void)
     }
 }
 
+/* Two or three sites moving across the whole bucket grid, with
+ * insertions and removals between: the grid's runs must follow every
+ * move (each site's entries one run through its own bucket), or a later
+ * removal leaves entries naming the removed site, which vor_validate
+ * rejects. */
+static void grid_at_two_sites(void)
+{
+    static vor_t d;
+    static model_t m;
+    test_rng_t rng;
+    test_rng_seed(&rng, 88);
+    for (uint32_t round = 0; round < 300u; round++) {
+        begin_model(&d, &m);
+        do_insert(&d, &m, (vor_point_t){-1000, -1000}, "grid", round);
+        do_insert(&d, &m, (vor_point_t){1000, 1000}, "grid", round);
+        for (uint32_t step = 0; step < 12u; step++) {
+            uint32_t live = live_count(&m), r = test_rng_u32(&rng) % 4u;
+            uint32_t id = (uint32_t)test_rng_range(&rng, 0, (int32_t)m.handed_out - 1);
+            while (!m.live[id]) {
+                id = (id + 1u) % m.handed_out;
+            }
+            vor_point_t p = {test_rng_range(&rng, -1000, 1000), test_rng_range(&rng, -1000, 1000)};
+            if (r < 2u || live == 1u) {
+                do_move(&d, &m, id, p, "grid", step);
+            } else if (r == 2u && live < 3u) {
+                do_insert(&d, &m, p, "grid", step);
+            } else {
+                do_remove(&d, &m, id, "grid", step);
+            }
+            if (!check_state(&d, &m, "grid", round * 100u + step)) {
+                return;
+            }
+        }
+    }
+}
+
 /* A fan: a site below 17 sites on one line, each of its triangles with
  * two neighbours of the line Delaunay (its circle meets the line only at
  * them), so its star holds every other site and the vertex at infinity:
@@ -1253,6 +1289,7 @@ void test_dynamic(void)
     TEST_CASE("removal_cost") removal_cost();
     TEST_CASE("big_star") big_star();
     TEST_CASE("fan") fan();
+    TEST_CASE("grid_at_two_sites") grid_at_two_sites();
     TEST_CASE("full_arenas") full_arenas();
     TEST_CASE("big_star_irregular") big_star_irregular();
     TEST_CASE("big_star_reflex") {

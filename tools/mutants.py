@@ -75,7 +75,10 @@ CONFIGS = [
 # A mutant that survives the test suite then meets the fault injection test
 # (tests/faults/): predicates that lie are what the mesh updates' guards
 # are for, and nothing else exercises them.
-FAULT_DEFS = ['-DVOR_INDEX_BITS=32', '-DVOR_FAULT_INJECTION']
+# It runs with 32-bit ids, and with 16-bit ones for the files built so
+# (the targets' fault suites run with 16-bit ids: the mark bit moves).
+FAULT_CONFIGS = [('faults', ['-DVOR_INDEX_BITS=32', '-DVOR_FAULT_INJECTION']),
+                 ('faults16', ['-DVOR_INDEX_BITS=16', '-DVOR_FAULT_INJECTION'])]
 FAULT_PROGRAM = 'tests/faults/test_faults.c'
 # A survivor of both then meets its file's quick groups built with
 # AddressSanitizer, as make test's host-sanitize suite: a read past an
@@ -385,7 +388,8 @@ class Tree:
                     os.path.join(self.path, 'gen', 'predicate_vectors.c'))
 
     def flags(self, config, unit):
-        defs = {'faults': FAULT_DEFS, 'asan': ASAN_DEFS}.get(config) or dict(CONFIGS)[config]
+        defs = (dict(FAULT_CONFIGS + [('asan', ASAN_DEFS)]).get(config) or
+                dict(CONFIGS)[config])
         extra = ASAN_FLAGS if config == 'asan' else []
         if unit.startswith('src/'):
             return COMMON + defs + LIB_FLAGS + extra
@@ -416,10 +420,10 @@ class Tree:
         return run(['gcc'] + (ASAN_FLAGS if config == 'asan' else []) + objs + ['-o', exe],
                    self.path)
 
-    def link_faults(self, replaced, exe):
-        objs = [replaced.get(u, os.path.join(self.base('faults'), obj_name(u)))
+    def link_faults(self, config, replaced, exe):
+        objs = [replaced.get(u, os.path.join(self.base(config), obj_name(u)))
                 for u in self.lib_units]
-        objs.append(os.path.join(self.base('faults'), obj_name(FAULT_PROGRAM)))
+        objs.append(os.path.join(self.base(config), obj_name(FAULT_PROGRAM)))
         for u in ['tests/harness.c'] + self.port_units:
             objs.append(os.path.join(self.base('host'), obj_name(u)))
         return run(['gcc'] + objs + ['-o', exe], self.path)
@@ -432,7 +436,7 @@ def build_base(trees, config, onlys, jobs):
     first = trees[0]
     os.makedirs(first.base(config), exist_ok=True)
     units = first.lib_units + first.test_units + first.port_units
-    if config == 'faults':
+    if config.startswith('faults'):
         units = first.lib_units + [FAULT_PROGRAM]
     with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
         results = list(pool.map(
@@ -441,7 +445,7 @@ def build_base(trees, config, onlys, jobs):
     for u, rc, out in results:
         if rc != 0:
             sys.exit('mutants: the unmutated %s does not compile (%s):\n%s' % (u, config, out))
-    for only in (onlys if config != 'faults' else []):
+    for only in (onlys if not config.startswith('faults') else []):
         rc, out = first.compile_main(config, only)
         if rc != 0:
             sys.exit('mutants: tests/main.c does not compile:\n' + out)
@@ -554,7 +558,7 @@ def try_mutant(tree, m, uses, originals, primary, configs, timeouts):
                 return
             survived_in.append(config)
         if changed_any:
-            verdict, detail = faults_run(tree, m, units)
+            verdict, detail = faults_run(tree, m, units, configs[m.path])
             if verdict not in ('pass', 'same', 'no-compile', 'link'):
                 m.status, m.detail = 'killed', 'faults: %s %s' % (verdict, detail)
                 return
@@ -574,23 +578,33 @@ def try_mutant(tree, m, uses, originals, primary, configs, timeouts):
             f.write(originals[m.path])
 
 
-def faults_run(tree, m, units):
-    """The fault injection test on the mutant's library: 'same' when its
-    objects do not change in that build."""
-    replaced = {}
-    for u in units:
-        if not u.startswith('src/'):
+def faults_run(tree, m, units, configs):
+    """The fault injection test on the mutant's library, with 32-bit ids and,
+    for a file built with 16-bit ones, with those: 'same' when its objects
+    change in neither build, 'pass' when it passes where they change."""
+    verdict = 'same'
+    for config, _ in FAULT_CONFIGS:
+        if config == 'faults16' and 'index16' not in configs:
             continue
-        out = os.path.join(tree.path, 'mut-faults-' + obj_name(u))
-        rc, text = tree.compile('faults', u, out)
-        if rc != 0:
-            return 'no-compile', text.strip().split('\n')[0]
-        with open(out, 'rb') as f, open(os.path.join(tree.base('faults'), obj_name(u)), 'rb') as g:
-            if f.read() != g.read():
-                replaced[u] = out
-    if not replaced:
-        return 'same', ''
-    return faults_program_run(tree, replaced)
+        replaced = {}
+        for u in units:
+            if not u.startswith('src/'):
+                continue
+            out = os.path.join(tree.path, 'mut-%s-%s' % (config, obj_name(u)))
+            rc, text = tree.compile(config, u, out)
+            if rc != 0:
+                return 'no-compile', text.strip().split('\n')[0]
+            with open(out, 'rb') as f, \
+                    open(os.path.join(tree.base(config), obj_name(u)), 'rb') as g:
+                if f.read() != g.read():
+                    replaced[u] = out
+        if not replaced:
+            continue
+        result, detail = faults_program_run(tree, config, replaced)
+        if result != 'pass':
+            return result, ('%s: %s' % (config, detail)) if config != 'faults' else detail
+        verdict = 'pass'
+    return verdict, ''
 
 
 def asan_run(tree, m, units, only, timeout):
@@ -610,9 +624,9 @@ def asan_run(tree, m, units, only, timeout):
     return test_run(tree, 'asan', replaced, only, timeout, 'asan')
 
 
-def faults_program_run(tree, replaced):
-    exe = os.path.join(tree.path, 'mutant-faults')
-    rc, out = tree.link_faults(replaced, exe)
+def faults_program_run(tree, config, replaced):
+    exe = os.path.join(tree.path, 'mutant-' + config)
+    rc, out = tree.link_faults(config, replaced, exe)
     if rc != 0:
         return 'link', out.strip().split('\n')[0]
     rc, out = run([exe], tree.path, 60)
@@ -671,9 +685,11 @@ def self_test(tree, uses, originals, primary, configs, timeouts):
             if verdict != 'pass':
                 problems.append('the unmutated build fails (%s, ONLY=%s): %s %s'
                                 % (config, only, verdict, detail))
-    verdict, detail = faults_program_run(tree, {})
-    if verdict != 'pass':
-        problems.append('the unmutated fault injection test fails: %s %s' % (verdict, detail))
+    for config, _ in FAULT_CONFIGS:
+        verdict, detail = faults_program_run(tree, config, {})
+        if verdict != 'pass':
+            problems.append('the unmutated fault injection test fails (%s): %s %s'
+                            % (config, verdict, detail))
     for only in sorted(set(primary.values())):
         verdict, detail = test_run(tree, 'asan', {}, only, timeouts[1], 'self')
         if verdict != 'pass':
@@ -731,7 +747,7 @@ def main():
     for t in trees:
         t.copy_sources()
     onlys = sorted(set(primary.values())) + ['']
-    for config in [c for c, _ in CONFIGS] + ['faults']:
+    for config in [c for c, _ in CONFIGS + FAULT_CONFIGS]:
         build_base(trees, config, onlys, args.jobs)
     build_base(trees, 'asan', sorted(set(primary.values())), args.jobs)
 
