@@ -1063,6 +1063,25 @@ static void few_sites(void)
           "one site of one: moves %s, stamp %x", ok ? "done" : "failed", one.motion[0].stamp);
 }
 
+/* A hull site whose hull test across its hull edge p-y has |P| below 4:
+ * y lies 1 / 2,000,001 of the way off the line from p to x (|P| = 1 at
+ * p = (0, 0), 2 at (1, 0)), q makes the triangles fat. p's orientation
+ * and incircle tests allow a box; the hull test allows none, so p,
+ * sized at its second slow move, gets none. */
+static void hull_sliver(void)
+{
+    at[0] = (vor_point_t){1, 0};        /* p */
+    at[1] = (vor_point_t){1000000, 1};  /* y */
+    at[2] = (vor_point_t){2000001, 2};  /* x */
+    at[3] = (vor_point_t){1000000, -1000000};
+    start(4);
+    uint32_t epoch = with.motion_epoch;
+    move(4, 0, (vor_point_t){0, 0}, "hull sliver", 0);
+    move(4, 0, (vor_point_t){1, 0}, "hull sliver", 1); /* sizes */
+    CHECK(with.motion_epoch == epoch && !boxed(0) && ((with.motion[0].stamp >> 5) & 7u) == 1u,
+          "hull sliver: epoch %u of %u, entry %x", with.motion_epoch, epoch, with.motion[0].stamp);
+}
+
 /* A hull site p adjacent to every other site: its star has as many
  * triangles as the mesh has sites, and the walks over it (star_boxed's
  * and the upkeep's) must reach the last. a, b, c lie on a circle of
@@ -1345,6 +1364,7 @@ void test_motion(void)
     TEST_CASE("slow_move_upkeep") slow_move_upkeep();
     TEST_CASE("few_sites") few_sites();
     TEST_CASE("hull_star") hull_star();
+    TEST_CASE("hull_sliver") hull_sliver();
     TEST_CASE("line_comes_close") {
         line_comes_close(16384);
         line_comes_close(200);
