@@ -7,7 +7,8 @@
 # to build/prove/NAME.txt and its alarms, time and analysed functions are
 # printed. Fails when any report shows an alarm, a warning or an unproven
 # property, or when the harnesses together analyse less than 95 % of the
-# library's functions.
+# library's functions; and runs tools/prove/filter_error.c, which proves
+# the rounding filters' error bounds.
 #   tools/prove/prove.sh [HARNESS...]   (default: every harness)
 # With harnesses named (make test's suite prove runs those that finish in
 # about a minute), the share of functions is printed but not required.
@@ -127,6 +128,18 @@ for name in $harnesses; do
         echo "prove: $name: 0 alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)"
     fi
 done
+
+# The two filters of src/predicates.c that round their entries to 15 bits
+# (32-bit limbs): their rounding errors proven below the code's bounds by
+# exact interval arithmetic (tools/prove/filter_error.c), a second or so.
+if "${CC:-cc}" -std=gnu99 -O2 -Wall -Wextra -Werror tools/prove/filter_error.c -lm \
+    -o "$out/filter_error" && "$out/filter_error" >"$out/filter_error.txt"; then
+    passed=$((passed + 1))
+else
+    status=1
+    failed=$((failed + 1))
+fi
+grep '^filter_error' "$out/filter_error.txt" || true
 
 total=$(wc -l <"$functions")
 analysed=$(wc -l <"$out/analysed.txt")
