@@ -9,7 +9,9 @@
  * operation the triangles must be those of a fresh vor_build of the live
  * sites in id order (the perturbation depends only on that order).
  * The rehoming tests lay the triangles out in their slots another legal
- * way (mesh.h), so that removal must search for home triangles.
+ * way (mesh.h), so that removal must search for home triangles. The
+ * removal's predicate counts (vor_stats) against a model of the ear
+ * order docs/design/dynamic.md states.
  */
 #include "dynamic.h" /* white-box: vor__rehome and the slot layout, for the rehoming tests */
 #include "test.h"

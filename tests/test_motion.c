@@ -9,7 +9,10 @@
  * moves. A move counts as fast when it evaluated no predicate (the
  * diagram's stats did not change; every other successful move evaluates
  * at least one on meshes of three or more sites), and a fast move must
- * leave the twin's triangles as they were.
+ * leave the twin's triangles as they were. White box: boxes against the
+ * derivation in src/motion.c's head comment, computed here by trying
+ * each exponent (orient_box, incircle_box), and every cache entry after
+ * a slow move against a model of the upkeep built on them.
  */
 #include "mesh.h" /* white box: the star around a site, for the upkeep model */
 #include "motion.h"
