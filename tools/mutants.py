@@ -530,17 +530,10 @@ def try_mutant(tree, m, uses, originals, primary, configs, timeouts):
         changed_any = False
         survived_in = []
         for config in configs[m.path]:
-            replaced = {}
-            for u in units:
-                out = os.path.join(tree.path, 'mut-' + obj_name(u))
-                rc, text = tree.compile(config, u, out)
-                if rc != 0:
-                    m.status, m.detail = 'no-compile', text.strip().split('\n')[0]
-                    return
-                with open(out, 'rb') as f, \
-                        open(os.path.join(tree.base(config), obj_name(u)), 'rb') as g:
-                    if f.read() != g.read():
-                        replaced[u] = out
+            replaced, error = changed_objects(tree, config, units, '')
+            if error is not None:
+                m.status, m.detail = 'no-compile', error
+                return
             if not replaced:
                 continue
             verdict = 'pass'
@@ -578,6 +571,22 @@ def try_mutant(tree, m, uses, originals, primary, configs, timeouts):
             f.write(originals[m.path])
 
 
+def changed_objects(tree, config, units, tag):
+    """Compiles the mutant's units in a configuration: (those whose objects
+    differ from the unmutated build's, None), or (None, the first line of
+    the compiler's error)."""
+    replaced = {}
+    for u in units:
+        out = os.path.join(tree.path, 'mut-%s%s' % (tag, obj_name(u)))
+        rc, text = tree.compile(config, u, out)
+        if rc != 0:
+            return None, text.strip().split('\n')[0]
+        with open(out, 'rb') as f, open(os.path.join(tree.base(config), obj_name(u)), 'rb') as g:
+            if f.read() != g.read():
+                replaced[u] = out
+    return replaced, None
+
+
 def faults_run(tree, m, units, configs):
     """The fault injection test on the mutant's library, with 32-bit ids and,
     for a file built with 16-bit ones, with those: 'same' when its objects
@@ -586,18 +595,10 @@ def faults_run(tree, m, units, configs):
     for config, _ in FAULT_CONFIGS:
         if config == 'faults16' and 'index16' not in configs:
             continue
-        replaced = {}
-        for u in units:
-            if not u.startswith('src/'):
-                continue
-            out = os.path.join(tree.path, 'mut-%s-%s' % (config, obj_name(u)))
-            rc, text = tree.compile(config, u, out)
-            if rc != 0:
-                return 'no-compile', text.strip().split('\n')[0]
-            with open(out, 'rb') as f, \
-                    open(os.path.join(tree.base(config), obj_name(u)), 'rb') as g:
-                if f.read() != g.read():
-                    replaced[u] = out
+        replaced, error = changed_objects(tree, config, [u for u in units if u.startswith('src/')],
+                                          config + '-')
+        if error is not None:
+            return 'no-compile', error
         if not replaced:
             continue
         result, detail = faults_program_run(tree, config, replaced)
@@ -610,15 +611,9 @@ def faults_run(tree, m, units, configs):
 def asan_run(tree, m, units, only, timeout):
     """The file's quick groups with AddressSanitizer on the mutant's
     library: 'same' when its objects do not change in that build."""
-    replaced = {}
-    for u in units:
-        out = os.path.join(tree.path, 'mut-asan-' + obj_name(u))
-        rc, text = tree.compile('asan', u, out)
-        if rc != 0:
-            return 'no-compile', text.strip().split('\n')[0]
-        with open(out, 'rb') as f, open(os.path.join(tree.base('asan'), obj_name(u)), 'rb') as g:
-            if f.read() != g.read():
-                replaced[u] = out
+    replaced, error = changed_objects(tree, 'asan', units, 'asan-')
+    if error is not None:
+        return 'no-compile', error
     if not replaced:
         return 'same', ''
     return test_run(tree, 'asan', replaced, only, timeout, 'asan')
