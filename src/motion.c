@@ -180,12 +180,6 @@ static int gradient_bits(int64_t wide[3][2], int m)
     return ((scaled > cut_error) ? scaled : cut_error) + 1;
 }
 
-/* floor(v / 2) for any sign (C's division truncates toward zero). */
-static int floor_half(int v)
-{
-    return (v >= 0) ? (v / 2) : -((1 - v) / 2);
-}
-
 /* The first-order incircle bound's exponent for moves of 2^E (above), or
  * a value past any limit when it does not apply (E > m - 3). */
 static int gradient_bound(int m, int Lg, int E)
@@ -198,11 +192,14 @@ static int gradient_bound(int m, int Lg, int E)
     return ((first > rest) ? first : rest) + 1;
 }
 
-/* The largest E with gradient_bound(m, Lg, E) <= T (it increases with E). */
+/* The largest E with gradient_bound(m, Lg, E) <= T (it increases with E).
+ * The square term's E is floor((T - 8 - 2m) / 2); C's division truncates
+ * toward zero instead, which differs only for a negative odd value, where
+ * both are at most 0: then E - 2 < 0 and no box follows either way. */
 static int gradient_motion(int m, int Lg, int T)
 {
     int E = T - 1 - Lg;
-    int square = floor_half(T - 8 - (2 * m));
+    int square = (T - 8 - (2 * m)) / 2;
     E = (square < E) ? square : E;
     return ((m - 3) < E) ? (m - 3) : E;
 }
