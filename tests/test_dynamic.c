@@ -698,6 +698,29 @@ static void grid_at_two_sites(void)
     }
 }
 
+/* A site's number of neighbours (vor_neighbours). */
+static uint32_t degree_of(const vor_t *d, uint32_t site)
+{
+    uint32_t degree = 0, n;
+    vor_neighbour_iter_t it;
+    vor_neighbours_begin(&it, d, site);
+    while (vor_neighbours_next(&it, &n)) {
+        degree++;
+    }
+    return degree;
+}
+
+/* The point at angle k 15 degrees and radius r around the origin (the
+ * cosine and sine times 2^14, rounded). */
+static vor_point_t ring_point(uint32_t k, int32_t r)
+{
+    static const int32_t c15[24] = {16384, 15826, 14189, 11585, 8192, 4240, 0, -4240,
+                                    -8192, -11585, -14189, -15826, -16384, -15826, -14189,
+                                    -11585, -8192, -4240, 0, 4240, 8192, 11585, 14189, 15826};
+    vor_point_t p = {(c15[k % 24u] * r) / 16384, (c15[(k + 18u) % 24u] * r) / 16384};
+    return p;
+}
+
 /* A fan: a site below 17 sites on one line, each of its triangles with
  * two neighbours of the line Delaunay (its circle meets the line only at
  * them), so its star holds every other site and the vertex at infinity:
@@ -711,12 +734,7 @@ static void fan(void)
     for (int32_t k = -8; k <= 8; k++) {
         do_insert(&d, &m, (vor_point_t){100 * k, 1000}, "fan", 1);
     }
-    uint32_t degree = 0, n;
-    vor_neighbour_iter_t it;
-    vor_neighbours_begin(&it, &d, 0);
-    while (vor_neighbours_next(&it, &n)) {
-        degree++;
-    }
+    uint32_t degree = degree_of(&d, 0);
     CHECK(degree == 17u && d.vertex_count == 18u, "fan: the apex has %u neighbours of %u",
           degree, d.vertex_count - 1u);
     remove_as_modelled(&d, &m, 0, "fan", 2);
@@ -750,12 +768,7 @@ static void big_star(void)
     CHECK(found == 45u && m.handed_out == 32u, "ring: %u lattice points, %u sites", found,
           m.handed_out);
     do_insert(&d, &m, (vor_point_t){0, 0}, "ring", step++);
-    uint32_t degree = 0, n;
-    vor_neighbour_iter_t it;
-    vor_neighbours_begin(&it, &d, 32);
-    while (vor_neighbours_next(&it, &n)) {
-        degree++;
-    }
+    uint32_t degree = degree_of(&d, 32);
     CHECK(degree == 32u, "ring: the centre has %u neighbours, expected 32", degree);
     remove_as_modelled(&d, &m, 32, "ring", step);
     check_state(&d, &m, "ring", step++);
@@ -765,11 +778,6 @@ static void big_star(void)
     }
 }
 
-/* A site inside a ring of 24 sites at radii 1000 to 1059, none four on a
- * circle by construction (each radius differs): the large star's ears
- * are decided by the incircle tests themselves, not the perturbation.
- * The centre goes first, then the ring's sites in a scrambled order, each
- * step against a fresh build. */
 /* A ring of 24 sites around a centre, every third one pulled in to 96 %
  * of the radius so that it is a reflex corner of the centre's star (the
  * chord of its two neighbours passes at 96.6 %), yet still its
@@ -781,48 +789,36 @@ static void big_star_reflex(uint32_t turn)
     static vor_t d;
     static model_t m;
     begin_model(&d, &m);
-    static const int32_t c15[24] = {16384, 15826, 14189, 11585, 8192, 4240, 0, -4240,
-                                    -8192, -11585, -14189, -15826, -16384, -15826, -14189,
-                                    -11585, -8192, -4240, 0, 4240, 8192, 11585, 14189, 15826};
     for (uint32_t k = 0; k < 24u; k++) {
         int32_t r = ((k + turn) % 3u == 0u) ? 960 : 1000;
-        vor_point_t p = {(c15[k] * r) / 16384, (c15[(k + 18u) % 24u] * r) / 16384};
+        vor_point_t p = ring_point(k, r);
         do_insert(&d, &m, p, "reflex ring", k);
     }
     do_insert(&d, &m, (vor_point_t){1, 2}, "reflex ring", 24);
-    uint32_t degree = 0, n;
-    vor_neighbour_iter_t it;
-    vor_neighbours_begin(&it, &d, 24);
-    while (vor_neighbours_next(&it, &n)) {
-        degree++;
-    }
+    uint32_t degree = degree_of(&d, 24);
     CHECK(degree == 24u, "reflex ring %u: the centre has %u neighbours, expected 24", turn, degree);
     remove_as_modelled(&d, &m, 24, "reflex ring", 25);
     check_state(&d, &m, "reflex ring", 25);
 }
 
+/* A site inside a ring of 24 sites at radii 1000 to 1059, none four on a
+ * circle by construction (each radius differs): the large star's ears
+ * are decided by the incircle tests themselves, not the perturbation.
+ * The centre goes first, then the ring's sites in a scrambled order, each
+ * step against a fresh build. */
 static void big_star_irregular(void)
 {
     static vor_t d;
     static model_t m;
     begin_model(&d, &m);
-    /* cos and sin of k 15 degrees, times 2^14, rounded */
-    static const int32_t c15[24] = {16384, 15826, 14189, 11585, 8192, 4240, 0, -4240,
-                                    -8192, -11585, -14189, -15826, -16384, -15826, -14189,
-                                    -11585, -8192, -4240, 0, 4240, 8192, 11585, 14189, 15826};
     uint32_t step = 0;
     for (uint32_t k = 0; k < 24u; k++) {
         int32_t r = 1000 + (int32_t)((k * 37u) % 60u);
-        vor_point_t p = {(c15[k] * r) / 16384, (c15[(k + 18u) % 24u] * r) / 16384};
+        vor_point_t p = ring_point(k, r);
         do_insert(&d, &m, p, "irregular ring", step++);
     }
     do_insert(&d, &m, (vor_point_t){3, -2}, "irregular ring", step++);
-    uint32_t degree = 0, n;
-    vor_neighbour_iter_t it;
-    vor_neighbours_begin(&it, &d, 24);
-    while (vor_neighbours_next(&it, &n)) {
-        degree++;
-    }
+    uint32_t degree = degree_of(&d, 24);
     CHECK(degree > 16u, "irregular ring: the centre has %u neighbours, expected more than 16",
           degree);
     remove_as_modelled(&d, &m, 24, "irregular ring", step);
