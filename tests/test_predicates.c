@@ -623,6 +623,54 @@ static void check_first_term_filter(void)
           checked);
 }
 
+/* vor_incircle_sos against ref_perturbed where the first perturbation
+ * term is +-1, the least it can be without being 0, so that no width of
+ * closed form may round it away or read 1 as a tie. P = (n, 1) and
+ * Q = (n + 1, 1) span a triangle of area 1/2 with the top site O at 0, so
+ * xP yQ - yP xQ = -1; their circle x^2 + y^2 = (2n + 1) x + (1 - 2T) y,
+ * T = n (n + 1) / 2, holds L = (n + T + 1, -T) too, whose height is 1/2
+ * below the centre's: the term 2 (xP yQ - yP xQ) (yL - y_center) is 1.
+ * n up to 30,000 puts the entries (T up to 2^28.7) on every tier; the
+ * eight symmetries of the lattice and every index order move the term to
+ * every site and sign. */
+static void check_unit_first_term(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 29);
+    unsigned long checked = 0, bad = 0, first_decided = 0;
+    for (unsigned n = 0; n < 96; n++) {
+        int64_t m = test_rng_range(&rng, 1, (n % 2u == 0u) ? 200 : 30000);
+        int64_t t = m * (m + 1) / 2;
+        const int64_t base[4][2] = {{0, 0}, {m, 1}, {m + 1, 1}, {m + t + 1, -t}};
+        int32_t ox = test_rng_range(&rng, -(1 << 30), 1 << 30);
+        int32_t oy = test_rng_range(&rng, -(1 << 30), 1 << 30);
+        unsigned symmetry = n % 8u;
+        vor_point_t q[4];
+        for (unsigned k = 0; k < 4; k++) {
+            int64_t x = (symmetry & 1u) ? -base[k][0] : base[k][0];
+            int64_t y = (symmetry & 2u) ? -base[k][1] : base[k][1];
+            q[k].x = (int32_t)(ox + ((symmetry & 4u) ? y : x));
+            q[k].y = (int32_t)(oy + ((symmetry & 4u) ? x : y));
+        }
+        for (unsigned p = 0; p < 24; p++) {
+            uint32_t ids[4];
+            vor_point_t sites[4];
+            index_order(p, q, ids, sites);
+            unsigned first;
+            int want = ref_perturbed(sites, ids, 4, &first);
+            int got = vor_incircle_sos(sites, ids[0], ids[1], ids[2], ids[3]);
+            bad += (got != want || want == 0 || first == 0u) ? 1u : 0u;
+            first_decided += (first == 1u) ? 1u : 0u;
+            checked++;
+        }
+    }
+    test_printf("unit first term: %lu perturbed signs, %lu decided by the first term\n", checked,
+                first_decided);
+    CHECK(bad == 0, "unit first term: %lu of %lu signs differ from the reference", bad, checked);
+    CHECK(first_decided > checked / 8u, "unit first term: only %lu of %lu by the first term",
+          first_decided, checked);
+}
+
 /* The exact sign of incircle(q[0], q[1], q[2], q[3]) by the reference. */
 static int ref_incircle(const vor_point_t q[4])
 {
@@ -1264,6 +1312,7 @@ void test_predicates(void)
     TEST_CASE("grid_antisymmetry") check_grid_antisymmetry();
     TEST_CASE("perturbation_reference") check_perturbation_reference();
     TEST_CASE("first_term_filter") check_first_term_filter();
+    TEST_CASE("unit_first_term") check_unit_first_term();
     TEST_CASE("near_circles") check_near_circles();
     TEST_CASE("tier_edges") check_tier_edges();
     TEST_CASE("magnitudes") check_magnitudes();
