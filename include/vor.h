@@ -272,7 +272,9 @@ enum vor_error {
     VOR_ERR_BUFFER = -8,    /* the caller's buffer is too small (the size needed is returned) */
     VOR_ERR_CONFIG = -9,    /* library and application were compiled with different
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
-    VOR_ERR_STOPPED = -10   /* vor_raster: the caller's flush asked to stop */
+    VOR_ERR_STOPPED = -10,  /* vor_raster: the caller's flush asked to stop */
+    VOR_ERR_CROSS = -11,    /* vor_constrain: the segment crosses a constrained edge */
+    VOR_ERR_CONSTRAINED = -12 /* vor_remove, vor_move: the site ends a constrained edge */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -315,6 +317,7 @@ typedef uint32_t vor_index_t;
 
 struct vor__triangle;
 struct vor__motion_entry;
+struct vor__cdt;
 
 /* The diagram object: owned by the caller, fields private. */
 typedef struct vor {
@@ -357,6 +360,11 @@ typedef struct vor {
      * vor_motion_attach (NULL when none): reached only through this
      * pointer, so a firmware that attaches no cache links none of it. */
     void (*motion_update)(struct vor *d, uint32_t site, const vor_point_t *from, uint32_t epoch);
+    /* The constrained triangulation (vor_cdt_attach, vor_cdt.h), NULL
+     * when none, and its upkeep (src/cdt.h, the events), stored by the
+     * attach so that a firmware without constraints links none of it. */
+    struct vor__cdt *cdt;
+    int (*cdt_update)(struct vor *d, uint32_t site, unsigned event);
 } vor_t;
 
 /*

@@ -73,6 +73,7 @@
  * region of slots, then merges them on the calling core (build_forked).
  */
 #include "bucket_grid.h"
+#include "cdt.h"
 #include "insertion_order.h"
 #include "mesh.h"
 #include "multiword.h"
@@ -1171,6 +1172,9 @@ VOR__ALWAYS_INLINE void finish(const builder_t *b)
     d->vertex_count = b->distinct;
     d->last_site = b->last;
     vor__grid_rebuild(d);
+    if (d->cdt_update != NULL) {
+        (void)d->cdt_update(d, VOR_NO_HINT, VOR__CDT_REBUILT);
+    }
 }
 
 

@@ -32,6 +32,7 @@
  * triangle, provably within its star or one neighbour's (see there).
  */
 #include "bucket_grid.h"
+#include "cdt.h"
 #include "dynamic.h"
 #include "mesh.h"
 #include "motion.h"
@@ -532,11 +533,8 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
     return (a != VOR__INFINITE) ? a : b;
 }
 
-int vor_remove(vor_t *d, uint32_t site)
+uint32_t vor__unlink_site(vor_t *d, uint32_t site)
 {
-    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
-        return VOR_ERR_ARG;
-    }
     vor__tri_t *tri = d->triangles;
     vor_index_t p = (vor_index_t)site;
     uint32_t other = site;
@@ -571,6 +569,21 @@ int vor_remove(vor_t *d, uint32_t site)
         free_id(d, p);
     }
     d->vertex_count--;
+    return other;
+}
+
+int vor_remove(vor_t *d, uint32_t site)
+{
+    if ((d == NULL) || !vor__site_in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    if (d->cdt_update != NULL) { /* a constraint's end stays */
+        int err = d->cdt_update(d, site, VOR__CDT_REMOVE);
+        if (err != VOR_OK) {
+            return err;
+        }
+    }
+    uint32_t other = vor__unlink_site(d, site);
     if (d->vertex_count < 2u) {
         d->bucket_rebuild_at = 2; /* the grid is redrawn with the second site */
     } else {
@@ -717,6 +730,42 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     return err;
 }
 
+/* vor_move with constraint memory: the constrained mesh loses the site
+ * first (at its old place; refused when a constraint ends there), then
+ * the diagram moves it, with the upkeep off, then the constrained mesh
+ * takes it at the new place. A twin there is found before anything
+ * changes (the query is read-only). */
+static VOR__NOINLINE int move_constrained(vor_t *d, uint32_t site, vor_point_t p,
+                                          uint32_t *existing)
+{
+    uint32_t nearest;
+    if ((vor_nearest(d, p, VOR_NO_HINT, &nearest) == VOR_OK) && (d->sites[nearest].x == p.x) &&
+        (d->sites[nearest].y == p.y)) {
+        if (existing != NULL) {
+            *existing = nearest;
+        }
+        return VOR_ERR_DUPLICATE;
+    }
+    int (*update)(vor_t *, uint32_t, unsigned) = d->cdt_update;
+    int err = update(d, site, VOR__CDT_REMOVE);
+    if (err != VOR_OK) {
+        return err;
+    }
+    vor_point_t old = d->sites[site];
+    d->sites[site] = p;
+    err = update(d, site, VOR__CDT_CHECK_INSERT);
+    d->sites[site] = old;
+    if (err != VOR_OK) { /* the constrained mesh takes the site back */
+        (void)update(d, site, VOR__CDT_INSERTED);
+        return err;
+    }
+    d->cdt_update = NULL;
+    err = vor_move(d, site, p, existing);
+    d->cdt_update = update;
+    (void)update(d, site, VOR__CDT_INSERTED);
+    return err;
+}
+
 int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
 {
     if ((d == NULL) || !vor__site_in_mesh(d, site)) {
@@ -727,6 +776,9 @@ int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
     const vor_point_t *s = &d->sites[site];
     if ((s->x == x) && (s->y == y)) {
         return VOR_OK;
+    }
+    if (d->cdt_update != NULL) {
+        return move_constrained(d, site, p, existing);
     }
     if (vor__motion_fast(d, site, x, y)) {
         /* inside the site's box: no triangle changes and no site is

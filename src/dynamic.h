@@ -13,4 +13,10 @@
  * Refills slot h and packs the slots again (the proof is in dynamic.c). */
 void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last);
 
+/* Takes site `site` (in the mesh) out of d's mesh and frees its id; the
+ * vertex count drops by one. Returns a former neighbour of it (itself
+ * when it was the only site). The bucket grid, the last site and the
+ * revision are the caller's (vor_remove; the constrained mesh, cdt.c). */
+uint32_t vor__unlink_site(vor_t *d, uint32_t site);
+
 #endif

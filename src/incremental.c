@@ -29,6 +29,7 @@
  * slots they reuse so that this stays true.
  */
 #include "bucket_grid.h"
+#include "cdt.h"
 #include "incremental.h"
 #include "insertion_order.h"
 #include "mesh.h"
@@ -170,7 +171,13 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t
     return s1;
 }
 
-void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
+/* The insertion proper: split, then the star's pass. With constraint
+ * memory (cdt not NULL: the constrained triangulation's own mesh) a
+ * constrained edge is never flipped, which is Lawson's insertion into a
+ * constrained Delaunay triangulation; the diagram's own insertions pass
+ * NULL, and the test compiles away in them. */
+VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
+                                     const struct vor__cdt *cdt)
 {
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
@@ -237,7 +244,9 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
         }
         unsigned apex = vor__next(ix);
         vor_index_t far = uv[apex];
-        if (!marked(d, far, infinity_marked) && vor__conflicts(d, uv[0], uv[1], uv[2], p)) {
+        bool flippable = (cdt == NULL) || !vor__cdt_constrained(cdt, tv[1], tv[2]);
+        if (flippable && !marked(d, far, infinity_marked) &&
+            vor__conflicts(d, uv[0], uv[1], uv[2], p)) {
             slot = flip(d, slot, sp, tv[1], tv[2], apex, far);
             set_mark(d, far, true, &infinity_marked);
             star++;
@@ -251,6 +260,17 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
         set_mark(d, vor__vertex(&tri[slot], 1), false, &infinity_marked);
         slot = tri[slot].n[1];
     }
+}
+
+void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
+{
+    insert_at(d, root, p, NULL);
+}
+
+void vor__insert_at_constrained(vor_t *mesh, vor_index_t root, uint32_t p,
+                                const struct vor__cdt *c)
+{
+    insert_at(mesh, root, p, c);
 }
 
 /* ------------------------------------------------------------------ */
@@ -349,6 +369,11 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
             }
             return VOR_ERR_DUPLICATE;
         }
+        if ((d->cdt_update != NULL) && (d->cdt_update(d, p, VOR__CDT_CHECK_INSERT) != VOR_OK)) {
+            d->sites[p] = saved_point;
+            vor__tally_restore(d, &tally);
+            return VOR_ERR_NOMEM;
+        }
         take_free_id(d); /* p's home slot holds the list's link */
         vor__insert_at(d, root, p);
     }
@@ -360,6 +385,9 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
     vor__topology_changed(d);
     if (d->vertex_count >= 2u) {
         vor__grid_add(d, p);
+    }
+    if (d->cdt_update != NULL) {
+        (void)d->cdt_update(d, p, VOR__CDT_INSERTED);
     }
     if (site != NULL) {
         *site = p;
@@ -432,5 +460,8 @@ int vor_build(vor_t *d, const vor_point_t *points, uint32_t n,
         d->last_site = s;
     }
     vor__grid_rebuild(d);
+    if (d->cdt_update != NULL) {
+        (void)d->cdt_update(d, VOR_NO_HINT, VOR__CDT_REBUILT);
+    }
     return VOR_OK;
 }

@@ -5,6 +5,7 @@
  * builders (incremental.c, divide_conquer.c, dynamic.c) change the mesh
  * with the predicates, queries.c reads and validates it.
  */
+#include "cdt.h"
 #include "mesh.h"
 #include "motion.h"
 
@@ -51,6 +52,8 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->free_site = 0;
     d->motion = NULL; /* a cache is attached afterwards (vor_motion_attach) */
     d->motion_update = NULL;
+    d->cdt = NULL; /* constraint memory is attached afterwards (vor_cdt_attach) */
+    d->cdt_update = NULL;
     d->motion_epoch = 0;
 #if VOR_STATS
     vor__stats_clear(&d->stats);
@@ -101,6 +104,9 @@ int vor__build_start(vor_t *d, const vor_point_t *points, uint32_t n,
         d->vertex_count = n;
         if ((n == 1u) && (duplicate_of != NULL)) {
             duplicate_of[0] = 0;
+        }
+        if (d->cdt_update != NULL) {
+            (void)d->cdt_update(d, VOR_NO_HINT, VOR__CDT_REBUILT);
         }
         return VOR_OK;
     }

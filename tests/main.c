@@ -18,5 +18,6 @@ int main(void)
     test_group("dynamic", test_dynamic);
     test_group("motion", test_motion);
     test_group("fork_join", test_fork_join);
+    test_group("cdt", test_cdt);
     return test_finish();
 }

@@ -127,5 +127,6 @@ void test_centroid(void);
 void test_dynamic(void);
 void test_motion(void);
 void test_fork_join(void);
+void test_cdt(void);
 
 #endif

@@ -1,0 +1,101 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * vor_cdt.h - constraints: the constrained Delaunay triangulation of a
+ * diagram's sites, kept beside the diagram in caller memory.
+ *
+ * The diagram (vor.h) stays the Delaunay triangulation and Voronoi diagram
+ * of its sites, so every query of vor.h (nearest sites, cells, centroids,
+ * the tracker, the motion cache) keeps answering for the sites alone.
+ * Attaching constraint memory adds a second triangulation of the same
+ * sites, kept up to date by every vor_insert; vor_constrain makes a
+ * segment between two sites a chain of its edges, and the iterators here
+ * read it: every edge that is not constrained is locally Delaunay.
+ *
+ *     static uint8_t walls[VOR_CDT_BYTES(500, 64, 500)]
+ *         __attribute__((aligned(VOR_CDT_ALIGN)));
+ *     vor_cdt_attach(&d, walls, sizeof walls, 64, 500);  // after vor_init
+ *     vor_constrain(&d, door_left, corner);
+ *
+ * A constraint through a site is split there; collinear constraints that
+ * overlap share their edges.
+ */
+#ifndef VOR_CDT_H
+#define VOR_CDT_H
+
+#include "vor.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A constrained edge's entry in the edge table: its two vertices and the
+ * number of constraints through it. */
+#define VOR_CDT_EDGE_BYTES ((2u * sizeof(vor_index_t)) + 4u)
+
+/* The part of the memory that holds the state (a constant, checked
+ * against the library's layout when it is built). */
+#define VOR_CDT_HEADER_BYTES (sizeof(vor_t) + (8u * sizeof(void *)))
+
+/* Bytes of constraint memory for a diagram of up to n sites (its
+ * max_sites), up to `edges` constrained edges (a constraint counts one
+ * edge for each piece the sites on it split it into) and up to `cut`
+ * triangles crossed by one constraint (n always suffices); a constant
+ * expression. */
+#define VOR_CDT_BYTES(n, edges, cut)                                           \
+    ((size_t)VOR_CDT_HEADER_BYTES +                                            \
+     ((((n) >= 2u) ? ((2u * (size_t)(n)) - 2u) : 0u) * VOR_TRIANGLE_BYTES) +   \
+     (2u * (size_t)(edges) * VOR_CDT_EDGE_BYTES) +                             \
+     (13u * ((size_t)(cut) + 2u) * sizeof(vor_index_t)))
+#define VOR_CDT_ALIGN 4u
+
+/*
+ * Attaches constraint memory mem[0 .. bytes) to d, with room for
+ * max_edges constrained edges and constraints crossing up to max_cut
+ * triangles. The constrained triangulation starts as d's Delaunay
+ * triangulation, without constraints.
+ *   VOR_ERR_ARG    d or mem NULL, max_edges 0
+ *   VOR_ERR_ALIGN  mem not aligned to VOR_CDT_ALIGN
+ *   VOR_ERR_NOMEM  bytes < VOR_CDT_BYTES(max_sites of d, max_edges, max_cut)
+ * On failure nothing changes. Cost: a copy of d's triangles.
+ */
+int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, uint32_t max_edges, uint32_t max_cut);
+
+/*
+ * Constrains the segment between sites a and b: afterwards it is a chain
+ * of edges of the constrained triangulation, split at every site on it.
+ * a == b (or the same point) does nothing.
+ *   VOR_ERR_ARG    d NULL, no constraint memory attached, a or b not a
+ *                  site in the diagram
+ *   VOR_ERR_CROSS  the segment crosses a constrained edge
+ *   VOR_ERR_NOMEM  the edge table is full, or the segment crosses more
+ *                  than max_cut triangles
+ * On failure nothing changes.
+ */
+int vor_constrain(vor_t *d, uint32_t a, uint32_t b);
+
+/* The triangles of the constrained triangulation, counterclockwise, of
+ * nonzero area (as vor_triangles_next for the Delaunay one). */
+typedef struct vor_cdt_triangle_iter {
+    const vor_t *d;
+    uint32_t slot;
+} vor_cdt_triangle_iter_t;
+
+int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d);
+/* VOR_OK and the next triangle's sites in ids, or VOR_ERR_EMPTY at the end. */
+int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3]);
+
+/* The constrained edges, in no particular order. */
+typedef struct vor_cdt_edge_iter {
+    const vor_t *d;
+    uint32_t entry;
+} vor_cdt_edge_iter_t;
+
+int vor_cdt_edges_begin(vor_cdt_edge_iter_t *it, const vor_t *d);
+/* VOR_OK and the next constrained edge's sites (a < b), or VOR_ERR_EMPTY. */
+int vor_cdt_edges_next(vor_cdt_edge_iter_t *it, uint32_t *a, uint32_t *b);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,929 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * cdt.c - constraints: the constrained Delaunay triangulation kept beside
+ * the diagram (vor_cdt.h; docs/design/constraints.md).
+ *
+ * Inserting a constraint a-b, one piece at a time (a piece ends at the
+ * first site exactly on the segment):
+ *
+ *   1. walk from a along the segment: the triangles it crosses form the
+ *      cavity, bounded by an upper chain (a, u1 .. up, e) on the left of
+ *      a -> e and a lower one (a, l1 .. lq, e) on the right, and the
+ *      triangles outside each chain edge are noted;
+ *   2. each chain with the segment is a pseudo-polygon, triangulated by
+ *      Anglada's rule: over the base x-y, the chain vertex c whose circle
+ *      through x and y holds no other chain vertex between them, then
+ *      x..c and c..y the same way (an explicit stack, no recursion);
+ *   3. the new triangles take the cavity's slots, so that every home slot
+ *      among them still holds a triangle of its site (mesh.h).
+ *
+ * Step 3 always succeeds. The cavity's m + 1 slots include the home slots
+ * of a set H of its vertices, |H| <= m + 1 = p + q, the number of new
+ * triangles. In one triangulated polygon any set of k vertices, k at most
+ * its triangle count, touches at least k triangles (the triangles missing
+ * them have all corners among the other n - k vertices, at most n - k - 2
+ * of them), so by Hall's theorem the demand can be met; a and e, in both
+ * polygons, go to the one with room. Down the recursion, the triangle
+ * (x, y, c) serves x, y or c, and the other demanded corners go to the
+ * sub-polygon that has room (assign, below): with s1 and s2 the rooms of
+ * x..c and c..y, the demanded corners number at most s1 + s2 + 1.
+ */
+#include "cdt.h"
+#include "dynamic.h"
+#include "mesh.h"
+#include "perturbation.h"
+#include "predicates.h"
+
+typedef char vor__cdt_header_check[(sizeof(struct vor__cdt) <= VOR_CDT_HEADER_BYTES) ? 1 : -1];
+
+/* ------------------------------------------------------------------ */
+/* The edge table                                                      */
+
+/* Entry of edge a-b, or the empty entry where it would go. */
+static uint32_t edge_place(const struct vor__cdt *c, vor_index_t u, vor_index_t v)
+{
+    uint32_t i = vor__cdt_home(c, u, v);
+    for (uint32_t probes = 0; probes < c->edge_slots; probes++) {
+        const vor__cdt_edge_t *e = &c->edges[i];
+        if ((e->u == VOR__NONE) || ((e->u == u) && (e->v == v))) {
+            break;
+        }
+        i = (i + 1u == c->edge_slots) ? 0u : (i + 1u);
+    }
+    return i;
+}
+
+/* Adds `count` constraints through edge a-b (the caller checked room). */
+static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, uint32_t count)
+{
+    vor_index_t u = (a < b) ? a : b;
+    vor_index_t v = (a < b) ? b : a;
+    vor__cdt_edge_t *e = &c->edges[edge_place(c, u, v)];
+    if (e->u == VOR__NONE) {
+        e->u = u;
+        e->v = v;
+        e->count = 0;
+        c->edge_count++;
+    }
+    e->count += count;
+}
+
+/* Empties entry i, moving later entries of its probe run back so that
+ * every entry stays reachable from its home (no tombstones). */
+static void edge_remove(struct vor__cdt *c, uint32_t removed)
+{
+    uint32_t hole = removed;
+    uint32_t i = removed;
+    for (uint32_t probes = 0; probes < c->edge_slots; probes++) {
+        i = (i + 1u == c->edge_slots) ? 0u : (i + 1u);
+        vor__cdt_edge_t *e = &c->edges[i];
+        if (e->u == VOR__NONE) {
+            break;
+        }
+        uint32_t home = vor__cdt_home(c, e->u, e->v);
+        /* e may fill the hole unless its home lies cyclically in (hole, i] */
+        bool stays = (hole <= i) ? ((hole < home) && (home <= i)) : ((hole < home) || (home <= i));
+        if (!stays) { /* field by field: a structure copy may be a memcpy call */
+            c->edges[hole].u = e->u;
+            c->edges[hole].v = e->v;
+            c->edges[hole].count = e->count;
+            hole = i;
+        }
+    }
+    c->edges[hole].u = VOR__NONE;
+    c->edge_count--;
+}
+
+/* ------------------------------------------------------------------ */
+/* Mesh helpers                                                        */
+
+static int exact_orient(const vor_t *m, uint32_t a, uint32_t b, uint32_t c)
+{
+    const vor_point_t *s = m->sites;
+    return vor__orient2d_exact(&s[a], &s[b], &s[c], NULL);
+}
+
+/* Index of the corner of t that is neither u nor v (3 if none). */
+static unsigned third_corner(const vor__tri_t *t, vor_index_t u, vor_index_t v)
+{
+    for (unsigned k = 0; k < 3u; k++) {
+        vor_index_t w = vor__vertex(t, k);
+        if ((w != u) && (w != v)) {
+            return k;
+        }
+    }
+    return 3u;
+}
+
+/* In triangle `slot`, the link across its edge u-v becomes `to`. */
+static void link_across(vor__tri_t *tri, vor_index_t slot, vor_index_t u, vor_index_t v,
+                        vor_index_t to)
+{
+    unsigned k = third_corner(&tri[slot], u, v);
+    if (k != 3u) {
+        tri[slot].n[k] = to;
+    }
+}
+
+/* The triangle of the constrained mesh m that holds site p (not in m yet),
+ * by the straight walk from site `from`: it works on any triangulation,
+ * where the Delaunay walk may circle. Ties are broken by the perturbation,
+ * so the segment from -> p never runs along an edge. */
+static vor_index_t locate(vor_t *m, vor_index_t from, uint32_t p)
+{
+    const vor__tri_t *tri = m->triangles;
+    /* the star triangle (from, x, y) whose corner at `from` holds p */
+    vor_index_t slot = from;
+    vor_index_t ghost = VOR__NONE;
+    vor_index_t r = VOR__INFINITE;
+    vor_index_t l = VOR__INFINITE;
+    for (uint32_t left = m->vertex_count + 1u; left > 0u; left--) {
+        const vor__tri_t *t = &tri[slot];
+        unsigned i = vor__vertex_index(t, from);
+        if (i == 3u) {
+            return slot; /* a broken mesh only */
+        }
+        vor_index_t x = vor__vertex(t, vor__next(i));
+        vor_index_t y = vor__vertex(t, vor__prev(i));
+        if ((x == VOR__INFINITE) || (y == VOR__INFINITE)) {
+            if (vor__conflicts(m, vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2), p)) {
+                ghost = slot;
+            }
+        } else if ((vor__orient(m, from, x, p) > 0) && (vor__orient(m, from, y, p) < 0)) {
+            if (vor__orient(m, x, y, p) > 0) {
+                return slot;
+            }
+            r = x;
+            l = y;
+            slot = t->n[i];
+            break;
+        } else {
+            /* p is not in this corner */
+        }
+        slot = t->n[vor__prev(i)];
+        if (slot == from) {
+            return ghost; /* p outside the hull, seen from a hull edge at `from` */
+        }
+    }
+    /* cross edges r-l (r right of from -> p, l left) until p's triangle */
+    for (uint32_t step = vor__triangle_count(m->vertex_count); step > 0u; step--) {
+        const vor__tri_t *t = &tri[slot];
+        unsigned k = third_corner(t, r, l);
+        vor_index_t w = (k == 3u) ? VOR__INFINITE : vor__vertex(t, k);
+        if (w == VOR__INFINITE) {
+            return slot; /* p beyond the hull edge r-l */
+        }
+        if ((vor__orient(m, r, w, p) > 0) && (vor__orient(m, w, l, p) > 0)) {
+            return slot;
+        }
+        bool w_left = vor__orient(m, from, p, w) > 0;
+        unsigned out = vor__vertex_index(t, w_left ? l : r);
+        l = w_left ? w : l;
+        r = w_left ? r : w;
+        slot = t->n[(out == 3u) ? 0u : out];
+    }
+    return slot; /* only if the predicates lie */
+}
+
+/* Copies d's triangles into the constrained mesh, unconstrained. */
+static void copy_delaunay(struct vor__cdt *c, const vor_t *d)
+{
+    vor_t *m = &c->mesh;
+    m->site_count = d->site_count;
+    m->vertex_count = d->vertex_count;
+    m->last_site = d->last_site;
+    m->low = d->low;
+    m->high = d->high;
+    uint32_t end = vor__used_slots_end(d);
+    for (uint32_t s = 0; s < end; s++) {
+        const vor__tri_t *from = &d->triangles[s];
+        vor__tri_t *to = &m->triangles[s];
+        for (unsigned k = 0; k < 3u; k++) {
+            to->n[k] = from->n[k];
+        }
+        for (unsigned k = 0; k < (unsigned)(sizeof from->v / sizeof from->v[0]); k++) {
+            to->v[k] = from->v[k];
+        }
+        vor__tri_fresh(to);
+    }
+    for (uint32_t i = 0; i < c->edge_slots; i++) {
+        c->edges[i].u = VOR__NONE;
+    }
+    c->edge_count = 0;
+}
+
+int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, uint32_t max_edges, uint32_t max_cut)
+{
+    if ((d == NULL) || (mem == NULL) || (max_edges == 0u) ||
+        (max_edges > 3u * d->max_sites) || (max_cut > 2u * d->max_sites)) {
+        return VOR_ERR_ARG;
+    }
+    if (((uintptr_t)mem % VOR_CDT_ALIGN) != 0u) {
+        return VOR_ERR_ALIGN;
+    }
+    if (bytes < VOR_CDT_BYTES(d->max_sites, max_edges, max_cut)) {
+        return VOR_ERR_NOMEM;
+    }
+    struct vor__cdt *c = (struct vor__cdt *)mem;
+    uint8_t *at = (uint8_t *)mem + VOR_CDT_HEADER_BYTES;
+    vor_t *m = &c->mesh;
+    m->sites = d->sites;
+    m->triangles = (vor__tri_t *)(void *)at;
+    at += (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t);
+    m->max_sites = d->max_sites;
+    m->buckets = NULL;
+    m->bucket_columns = 0;
+    m->bucket_rows = 0;
+    m->bucket_scale = 0;
+    m->bucket_rebuild_at = 0;
+    m->bucket_origin = d->low;
+    m->revision = 0;
+    m->free_site = 0;
+#if VOR_STATS
+    vor__stats_clear(&m->stats);
+#endif
+#ifdef VOR_FAULT_INJECTION
+    m->fault_rate = d->fault_rate;
+    m->fault_state = d->fault_state | 1u;
+#endif
+    m->motion = NULL;
+    m->motion_epoch = 0;
+    m->motion_update = NULL;
+    m->cdt = NULL;
+    m->cdt_update = NULL;
+    c->edges = (vor__cdt_edge_t *)(void *)at;
+    c->edge_slots = 2u * max_edges;
+    c->max_edges = max_edges;
+    at += (size_t)c->edge_slots * sizeof(vor__cdt_edge_t);
+    c->scratch = (vor_index_t *)(void *)at;
+    c->max_cut = max_cut;
+    copy_delaunay(c, d);
+    d->cdt = c;
+    d->cdt_update = vor__cdt_update;
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Sites                                                               */
+
+/* The edge of triangle t other than u-v (VOR__NONE, VOR__NONE for none)
+ * that holds p strictly inside, exactly: its ends in *a, *b. */
+static unsigned edge_through(const vor__tri_t *t, const vor_point_t *s, vor_index_t u,
+                             vor_index_t v, uint32_t p, vor_index_t *a, vor_index_t *b)
+{
+    for (unsigned k = 0; k < 3u; k++) {
+        vor_index_t x = vor__vertex(t, vor__next(k));
+        vor_index_t y = vor__vertex(t, vor__prev(k));
+        bool same = ((x == u) && (y == v)) || ((x == v) && (y == u));
+        if (!same && (x != VOR__INFINITE) && (y != VOR__INFINITE) &&
+            vor__splits_edge(s, x, y, p)) {
+            *a = x;
+            *b = y;
+            return k;
+        }
+    }
+    return 3u;
+}
+
+/* The entry of the constrained edge that holds site p (not in the mesh
+ * yet) exactly inside, its ends in *su, *sv; edge_slots if none. The
+ * edges holding p inside all lie on one line, and the triangles on them
+ * form a path: the triangle holding the perturbed p (`root`), flat
+ * triangles on the line (two such edges each), and at each end a
+ * triangle with one (or a triangle at infinity). It is walked both ways
+ * from root. There is at most one constrained edge on it: no constrained
+ * edge holds a site inside. */
+static uint32_t find_split(const struct vor__cdt *c, vor_index_t root, uint32_t p,
+                           vor_index_t *su, vor_index_t *sv)
+{
+    const vor_t *m = &c->mesh;
+    const vor__tri_t *tri = m->triangles;
+    *su = VOR__NONE;
+    *sv = VOR__NONE;
+    if (c->edge_count == 0u) {
+        return c->edge_slots;
+    }
+    vor_index_t start = root;
+    unsigned inf = vor__vertex_index(&tri[root], VOR__INFINITE);
+    if (inf != 3u) {
+        /* p outside the hull, or on its line: the perturbed p may see any
+         * hull edge on that line; the one holding p starts the path */
+        for (unsigned way = 0; (way < 2u) && (start == root); way++) {
+            vor_index_t at = root;
+            for (uint32_t left = m->vertex_count; left > 0u; left--) {
+                const vor__tri_t *g = &tri[at];
+                unsigned i = vor__vertex_index(g, VOR__INFINITE);
+                vor_index_t a = (i == 3u) ? VOR__INFINITE : vor__vertex(g, vor__next(i));
+                vor_index_t b = (i == 3u) ? VOR__INFINITE : vor__vertex(g, vor__prev(i));
+                if ((a == VOR__INFINITE) || (b == VOR__INFINITE) || (exact_orient(m, a, b, p) != 0)) {
+                    break;
+                }
+                if (vor__splits_edge(m->sites, a, b, p)) {
+                    start = at;
+                    break;
+                }
+                at = g->n[(way == 0u) ? vor__next(i) : vor__prev(i)];
+            }
+        }
+    }
+    vor_index_t first_a = VOR__NONE;
+    vor_index_t first_b = VOR__NONE;
+    for (unsigned way = 0; way < 2u; way++) {
+        vor_index_t a;
+        vor_index_t b;
+        unsigned k = edge_through(&tri[start], m->sites, first_a, first_b, p, &a, &b);
+        if (k == 3u) {
+            break;
+        }
+        first_a = a;
+        first_b = b;
+        vor_index_t at = tri[start].n[k];
+        for (uint32_t left = vor__triangle_count(m->vertex_count); left > 0u; left--) {
+            uint32_t e = vor__cdt_find(c, a, b);
+            if (e != c->edge_slots) {
+                *su = a;
+                *sv = b;
+                return e;
+            }
+            vor_index_t x;
+            vor_index_t y;
+            unsigned j = edge_through(&tri[at], m->sites, a, b, p, &x, &y);
+            if (j == 3u) {
+                break;
+            }
+            at = tri[at].n[j];
+            a = x;
+            b = y;
+        }
+    }
+    return c->edge_slots;
+}
+
+/* Has site p a constrained edge? */
+static bool ends_constraint(const struct vor__cdt *c, uint32_t p)
+{
+    vor_neighbour_iter_t it;
+    uint32_t n;
+    uint32_t third;
+    vor__fan_begin(&it, &c->mesh, p);
+    while ((c->edge_count > 0u) && vor__fan_next(&it, &n, &third)) {
+        if (vor__cdt_constrained(c, (vor_index_t)p, (vor_index_t)n)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* Places site p (not in the mesh, d->sites[p] its point) in the
+ * constrained mesh; a constrained edge holding p exactly is split. */
+static void insert_site(struct vor__cdt *c, uint32_t p)
+{
+    vor_t *m = &c->mesh;
+    if (m->vertex_count == 1u) {
+        vor__make_edge(m, m->last_site, p);
+    } else if (m->vertex_count >= 2u) {
+        vor_index_t root = locate(m, (vor_index_t)m->last_site, p);
+        vor_index_t su;
+        vor_index_t sv;
+        uint32_t split = find_split(c, root, p, &su, &sv);
+        uint32_t count = 0;
+        if (split != c->edge_slots) {
+            count = c->edges[split].count;
+            edge_remove(c, split);
+        }
+        vor__insert_at_constrained(m, root, p, c);
+        if (count != 0u) {
+            edge_add(c, su, (vor_index_t)p, count);
+            edge_add(c, (vor_index_t)p, sv, count);
+        }
+    } else {
+        /* the first site: no triangle */
+    }
+    m->vertex_count++;
+    m->last_site = p;
+}
+
+int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
+{
+    struct vor__cdt *c = d->cdt;
+    vor_t *m = &c->mesh;
+    int err = VOR_OK;
+    if (event == VOR__CDT_CHECK_INSERT) {
+        /* a split adds one edge */
+        if ((m->vertex_count >= 2u) && (c->edge_count >= c->max_edges)) {
+            vor_index_t su;
+            vor_index_t sv;
+            vor__tally_t tally; /* the walk's tests leave no trace */
+            vor__tally_save(&tally, m);
+            vor_index_t root = locate(m, (vor_index_t)m->last_site, p);
+            if (find_split(c, root, p, &su, &sv) != c->edge_slots) {
+                err = VOR_ERR_NOMEM;
+            }
+            vor__tally_restore(m, &tally);
+        }
+    } else if (event == VOR__CDT_INSERTED) {
+        insert_site(c, p);
+    } else if (event == VOR__CDT_REMOVE) {
+        if (ends_constraint(c, p)) {
+            err = VOR_ERR_CONSTRAINED;
+        } else {
+            m->last_site = vor__unlink_site(m, p);
+        }
+    } else {
+        copy_delaunay(c, d);
+    }
+    m->site_count = d->site_count;
+    m->low = d->low;
+    m->high = d->high;
+    return err;
+}
+
+/* ------------------------------------------------------------------ */
+/* Constraints                                                         */
+
+/* The scratch arrays of one piece's cavity: the chains, the triangles
+ * outside their edges, the cavity's slots, and the stack. */
+typedef struct {
+    vor_index_t *upper;       /* upper[0] = from .. upper[nu - 1] = end */
+    vor_index_t *upper_out;   /* upper_out[i]: outside upper[i]-upper[i+1] */
+    vor_index_t *lower;
+    vor_index_t *lower_out;
+    vor_index_t *slots;       /* the cavity's slots */
+    vor_index_t *side;        /* a spike edge's new triangle, by chain position */
+    vor_index_t *side_link;   /* and its link index there */
+    vor_index_t *demands;     /* demanded positions before each position */
+    vor_index_t *stack;       /* 4 entries a pending sub-polygon */
+    uint32_t nu;
+    uint32_t nl;
+    uint32_t cut;
+} cavity_t;
+
+static void cavity_init(cavity_t *cv, const struct vor__cdt *c)
+{
+    size_t n = (size_t)c->max_cut + 2u;
+    cv->upper = c->scratch;
+    cv->upper_out = cv->upper + n;
+    cv->lower = cv->upper_out + n;
+    cv->lower_out = cv->lower + n;
+    cv->slots = cv->lower_out + n;
+    cv->side = cv->slots + n;
+    cv->side_link = cv->side + n;
+    cv->demands = cv->side_link + n;
+    cv->stack = cv->demands + n;
+    cv->nu = 0;
+    cv->nl = 0;
+    cv->cut = 0;
+}
+
+/* The first step of the piece from `from` toward b: either a neighbour
+ * exactly on the segment (returned, *slot VOR__NONE), or the star
+ * triangle whose corner the segment leaves through (*slot; returns
+ * VOR__NONE). */
+static vor_index_t first_step(vor_t *m, vor_index_t from, vor_index_t b, vor_index_t *slot_out)
+{
+    const vor__tri_t *tri = m->triangles;
+    const vor_point_t *s = m->sites;
+    vor_index_t slot = from;
+    vor_index_t on_line = VOR__NONE;
+    *slot_out = VOR__NONE;
+    for (uint32_t left = m->vertex_count + 1u; left > 0u; left--) {
+        const vor__tri_t *t = &tri[slot];
+        unsigned i = vor__vertex_index(t, from);
+        if (i == 3u) {
+            break; /* a broken mesh only */
+        }
+        vor_index_t x = vor__vertex(t, vor__next(i));
+        vor_index_t y = vor__vertex(t, vor__prev(i));
+        if ((x != VOR__INFINITE) && (exact_orient(m, from, b, x) == 0) &&
+            ((x == b) || vor__strictly_between(&s[from], &s[x], &s[b]))) {
+            /* the nearest such neighbour (flat hull triangles may give two) */
+            if ((on_line == VOR__NONE) || vor__strictly_between(&s[from], &s[x], &s[on_line])) {
+                on_line = x;
+            }
+        } else if ((x != VOR__INFINITE) && (y != VOR__INFINITE) &&
+                   (exact_orient(m, from, x, b) > 0) && (exact_orient(m, from, y, b) < 0)) {
+            *slot_out = slot;
+        } else {
+            /* not this corner */
+        }
+        slot = t->n[vor__prev(i)];
+        if (slot == from) {
+            break;
+        }
+    }
+    if (on_line != VOR__NONE) {
+        *slot_out = VOR__NONE;
+    }
+    return on_line;
+}
+
+/* Walks the cavity of the piece from `from` toward b, whose first
+ * triangle is `slot`: fills cv when `record` (else only counts), and
+ * returns the piece's end (b or a site exactly on the segment), or
+ * VOR__NONE when a crossed edge is constrained (*crossed set) or the
+ * cut exceeds max_cut. */
+static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index_t from,
+                               vor_index_t b, vor_index_t slot, bool record, bool *crossed)
+{
+    const vor_t *m = &c->mesh;
+    const vor__tri_t *tri = m->triangles;
+    const vor__tri_t *t = &tri[slot];
+    unsigned i = vor__vertex_index(t, from);
+    vor_index_t r = vor__vertex(t, vor__next(i)); /* right of from -> b */
+    vor_index_t l = vor__vertex(t, vor__prev(i)); /* left */
+    *crossed = false;
+    cv->cut = 1;
+    if (record) {
+        cv->upper[0] = from;
+        cv->upper[1] = l;
+        cv->upper_out[0] = t->n[vor__next(i)];
+        cv->lower[0] = from;
+        cv->lower[1] = r;
+        cv->lower_out[0] = t->n[vor__prev(i)];
+        cv->slots[0] = slot;
+        cv->nu = 2;
+        cv->nl = 2;
+    }
+    vor_index_t at = t->n[i];
+    while (cv->cut <= c->max_cut) {
+        if (vor__cdt_constrained(c, r, l)) {
+            *crossed = true;
+            return VOR__NONE;
+        }
+        const vor__tri_t *f = &tri[at];
+        unsigned k = third_corner(f, r, l);
+        if (k == 3u) {
+            return VOR__NONE; /* a broken mesh only */
+        }
+        vor_index_t w = vor__vertex(f, k);
+        unsigned ir = vor__vertex_index(f, r);
+        unsigned il = vor__vertex_index(f, l);
+        if (record) {
+            cv->slots[cv->cut] = at;
+        }
+        cv->cut++;
+        int side = (w == b) ? 0 : exact_orient(m, from, b, w);
+        if (side == 0) { /* the piece ends at w */
+            if (record) {
+                cv->upper_out[cv->nu - 1u] = f->n[ir];
+                cv->upper[cv->nu] = w;
+                cv->nu++;
+                cv->lower_out[cv->nl - 1u] = f->n[il];
+                cv->lower[cv->nl] = w;
+                cv->nl++;
+            }
+            return w;
+        }
+        if (side > 0) { /* w above: the upper chain grows, l-w crossed no more */
+            if (record) {
+                cv->upper_out[cv->nu - 1u] = f->n[ir];
+                cv->upper[cv->nu] = w;
+                cv->nu++;
+            }
+            at = f->n[il];
+            l = w;
+        } else {
+            if (record) {
+                cv->lower_out[cv->nl - 1u] = f->n[il];
+                cv->lower[cv->nl] = w;
+                cv->nl++;
+            }
+            at = f->n[ir];
+            r = w;
+        }
+    }
+    return VOR__NONE;
+}
+
+/* Does site v still need a triangle in its home slot (a cavity slot)? */
+static bool needs_home(const vor_t *m, vor_index_t v)
+{
+    return (v < m->max_sites) && vor__marked(&m->triangles[v]);
+}
+
+/* The positions of chain[0 .. n) that demand a home, counted: demands[i]
+ * is their number before position i. A vertex whose home slot is in the
+ * cavity demands it at its first position only (a spike's base appears
+ * twice), and the ends not at all: they are placed by fill_cavity. */
+static void count_demands(const vor_t *m, const vor_index_t *chain, uint32_t n,
+                          vor_index_t *demands)
+{
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        demands[i] = (vor_index_t)count;
+        bool first = (i > 0u) && (i + 1u < n);
+        for (uint32_t j = 0; j < i; j++) {
+            first = first && (chain[j] != chain[i]);
+        }
+        count += (first && needs_home(m, chain[i])) ? 1u : 0u;
+    }
+}
+
+/* Demanded positions strictly between lo and hi. */
+static uint32_t demand(const vor_index_t *demands, uint32_t lo, uint32_t hi)
+{
+    return (uint32_t)demands[hi] - (uint32_t)demands[lo + 1u];
+}
+
+/* Triangulates the pseudo-polygon of chain[0 .. n) (left of chain[0] ->
+ * chain[n - 1]) by Anglada's rule, the triangle on the base linked to
+ * `parent` (its link n[2] set when parent is VOR__NONE later by the
+ * caller); need_first and need_last say whether the base's ends take a
+ * home from it. Returns the slot of the triangle on the base. `packed`
+ * lists the cavity's free packed slots (*free_count of them). */
+static vor_index_t triangulate(vor_t *m, const vor_index_t *chain, const vor_index_t *outside,
+                               uint32_t n, cavity_t *cv, bool need_first, bool need_last,
+                               vor_index_t parent, uint32_t *free_count)
+{
+    vor__tri_t *tri = m->triangles;
+    vor_index_t *stack = cv->stack;
+    const vor_index_t *packed = cv->slots;
+    vor_index_t root = VOR__NONE;
+    uint32_t depth = 0;
+    stack[0] = 0;
+    stack[1] = (vor_index_t)(n - 1u);
+    stack[2] = (vor_index_t)((need_first ? 1u : 0u) | (need_last ? 2u : 0u) | (2u << 2));
+    stack[3] = parent;
+    depth = 1;
+    while (depth > 0u) {
+        depth--;
+        vor_index_t *e = &stack[4u * depth];
+        uint32_t lo = e[0];
+        uint32_t hi = e[1];
+        bool need_lo = (e[2] & 1u) != 0u;
+        bool need_hi = (e[2] & 2u) != 0u;
+        unsigned link = (unsigned)(e[2] >> 2) & 3u;
+        vor_index_t up = e[3];
+        if (hi == lo + 1u) { /* a chain edge: the triangle outside it */
+            vor_index_t o = outside[lo];
+            if (o == VOR__NONE) { /* a spike: linked to its other side later */
+                cv->side[lo] = up;
+                cv->side_link[lo] = (vor_index_t)link;
+                continue;
+            }
+            if (up != VOR__NONE) {
+                tri[up].n[link] = o;
+            }
+            link_across(tri, o, chain[lo], chain[hi], up);
+            continue;
+        }
+        /* the apex: the chain vertex whose circle over the base is empty
+         * (a spike's base, met twice, is never an apex over itself) */
+        uint32_t apex = hi;
+        for (uint32_t v = lo + 1u; v < hi; v++) {
+            if ((chain[v] == chain[lo]) || (chain[v] == chain[hi])) {
+                continue;
+            }
+            if ((apex == hi) || (vor__incircle(m, chain[lo], chain[hi], chain[apex], chain[v]) > 0)) {
+                apex = v;
+            }
+        }
+        uint32_t room1 = (apex - lo - 1u) - demand(cv->demands, lo, apex);
+        uint32_t room2 = (hi - apex - 1u) - demand(cv->demands, apex, hi);
+        bool need_apex = cv->demands[apex + 1u] != cv->demands[apex];
+        /* which demanded corner this triangle serves (file comment) */
+        vor_index_t served = VOR__NONE;
+        if (need_lo && (room1 == 0u)) {
+            served = chain[lo];
+            need_lo = false;
+        } else if (need_hi && (room2 == 0u)) {
+            served = chain[hi];
+            need_hi = false;
+        } else if (need_apex) {
+            served = chain[apex];
+            need_apex = false;
+        } else if (need_lo) {
+            served = chain[lo];
+            need_lo = false;
+        } else if (need_hi) {
+            served = chain[hi];
+            need_hi = false;
+        } else {
+            /* no demand here */
+        }
+        bool apex_first = need_apex && (room1 > (need_lo ? 1u : 0u));
+        bool apex_second = need_apex && !apex_first;
+        vor_index_t slot;
+        if (served != VOR__NONE) {
+            slot = served;
+        } else {
+            (*free_count)--;
+            slot = packed[*free_count];
+        }
+        vor__tri_set(&tri[slot], chain[lo], chain[hi], chain[apex], VOR__NONE, VOR__NONE, up);
+        if (served != VOR__NONE) {
+            vor__set_mark(&tri[slot], false);
+        }
+        if (up != VOR__NONE) {
+            tri[up].n[link] = slot;
+        }
+        root = (root == VOR__NONE) ? slot : root;
+        /* x..apex across (apex, x): link 1; apex..y across (y, apex): link 0 */
+        vor_index_t *p1 = &stack[4u * depth];
+        p1[0] = (vor_index_t)lo;
+        p1[1] = (vor_index_t)apex;
+        p1[2] = (vor_index_t)((need_lo ? 1u : 0u) | (apex_first ? 2u : 0u) | (1u << 2));
+        p1[3] = slot;
+        vor_index_t *p2 = &stack[4u * (depth + 1u)];
+        p2[0] = (vor_index_t)apex;
+        p2[1] = (vor_index_t)hi;
+        p2[2] = (vor_index_t)((apex_second ? 1u : 0u) | (need_hi ? 2u : 0u) | (0u << 2));
+        p2[3] = slot;
+        depth += 2u;
+    }
+    return root;
+}
+
+/* Links the two new triangles on each spike edge of a chain: position i
+ * (chain[i] -> chain[i + 1]) and the position j running back along it. */
+static void link_spikes(vor__tri_t *tri, const vor_index_t *chain, const vor_index_t *outside,
+                        uint32_t n, const cavity_t *cv)
+{
+    for (uint32_t i = 0; i + 1u < n; i++) {
+        if (outside[i] != VOR__NONE) {
+            continue;
+        }
+        for (uint32_t j = 0; j + 1u < n; j++) {
+            if ((j != i) && (chain[j] == chain[i + 1u]) && (chain[j + 1u] == chain[i])) {
+                tri[cv->side[i]].n[cv->side_link[i]] = cv->side[j];
+            }
+        }
+    }
+}
+
+/* Retriangulates the cavity cv of the piece from -> end (step 2, 3). */
+static void fill_cavity(struct vor__cdt *c, cavity_t *cv)
+{
+    vor_t *m = &c->mesh;
+    vor__tri_t *tri = m->triangles;
+    /* a chain edge with the cavity on both sides is a spike (a vertex
+     * whose every triangle the segment crosses hangs from it) */
+    for (uint32_t i = 0; i + 1u < cv->nu; i++) {
+        for (uint32_t k = 0; k < cv->cut; k++) {
+            cv->upper_out[i] = (cv->upper_out[i] == cv->slots[k]) ? VOR__NONE : cv->upper_out[i];
+        }
+    }
+    for (uint32_t i = 0; i + 1u < cv->nl; i++) {
+        for (uint32_t k = 0; k < cv->cut; k++) {
+            cv->lower_out[i] = (cv->lower_out[i] == cv->slots[k]) ? VOR__NONE : cv->lower_out[i];
+        }
+    }
+    /* mark the home slots among the cavity's; list its packed slots */
+    uint32_t packed = 0;
+    for (uint32_t i = 0; i < cv->cut; i++) {
+        vor_index_t s = cv->slots[i];
+        if (s < m->max_sites) {
+            vor__set_mark(&tri[s], true);
+        } else {
+            cv->slots[packed] = s;
+            packed++;
+        }
+    }
+    /* the lower chain reversed, so that it lies left of its base too */
+    for (uint32_t i = 0, j = cv->nl - 1u; i < j; i++, j--) {
+        vor_index_t v = cv->lower[i];
+        cv->lower[i] = cv->lower[j];
+        cv->lower[j] = v;
+    }
+    for (uint32_t i = 0, j = cv->nl - 2u; i < j; i++, j--) {
+        vor_index_t o = cv->lower_out[i];
+        cv->lower_out[i] = cv->lower_out[j];
+        cv->lower_out[j] = o;
+    }
+    /* the ends go to the polygon with room */
+    vor_index_t from = cv->upper[0];
+    vor_index_t end = cv->upper[cv->nu - 1u];
+    count_demands(m, cv->upper, cv->nu, cv->demands);
+    uint32_t room_up = (cv->nu - 2u) - demand(cv->demands, 0, cv->nu - 1u);
+    bool from_up = needs_home(m, from) && (room_up > 0u);
+    room_up -= from_up ? 1u : 0u;
+    bool end_up = needs_home(m, end) && (room_up > 0u);
+    bool from_down = needs_home(m, from) && !from_up;
+    bool end_down = needs_home(m, end) && !end_up;
+    vor_index_t top = triangulate(m, cv->upper, cv->upper_out, cv->nu, cv, from_up, end_up,
+                                  VOR__NONE, &packed);
+    link_spikes(tri, cv->upper, cv->upper_out, cv->nu, cv);
+    count_demands(m, cv->lower, cv->nl, cv->demands);
+    vor_index_t bottom = triangulate(m, cv->lower, cv->lower_out, cv->nl, cv, end_down,
+                                     from_down, top, &packed);
+    link_spikes(tri, cv->lower, cv->lower_out, cv->nl, cv);
+    tri[top].n[2] = bottom;
+    VOR_ASSERT(packed == 0u);
+}
+
+int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
+{
+    if ((d == NULL) || (d->cdt == NULL) || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b)) {
+        return VOR_ERR_ARG;
+    }
+    if (a == b) {
+        return VOR_OK;
+    }
+    struct vor__cdt *c = d->cdt;
+    vor_t *m = &c->mesh;
+    cavity_t cv;
+    cavity_init(&cv, c);
+    /* first every piece is checked, and the new edges counted */
+    uint32_t added = 0;
+    vor_index_t from = (vor_index_t)a;
+    for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
+        vor_index_t slot;
+        vor_index_t next = first_step(m, from, (vor_index_t)b, &slot);
+        if (next == VOR__NONE) {
+            bool crossed;
+            if (slot == VOR__NONE) {
+                return VOR_ERR_ARG; /* a broken mesh only */
+            }
+            next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, false, &crossed);
+            if (next == VOR__NONE) {
+                return crossed ? VOR_ERR_CROSS : VOR_ERR_NOMEM;
+            }
+        }
+        added += vor__cdt_constrained(c, from, next) ? 0u : 1u;
+        from = next;
+    }
+    if (c->edge_count + added > c->max_edges) {
+        return VOR_ERR_NOMEM;
+    }
+    /* then each piece is made an edge */
+    from = (vor_index_t)a;
+    for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
+        vor_index_t slot;
+        vor_index_t next = first_step(m, from, (vor_index_t)b, &slot);
+        if (next == VOR__NONE) {
+            bool crossed;
+            next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, true, &crossed);
+            fill_cavity(c, &cv);
+        }
+        edge_add(c, from, next, 1u);
+        from = next;
+    }
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Output                                                              */
+
+int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d)
+{
+    if (it == NULL) {
+        return VOR_ERR_ARG;
+    }
+    it->d = ((d != NULL) && (d->cdt != NULL)) ? d : NULL;
+    it->slot = 0;
+    return (it->d != NULL) ? VOR_OK : VOR_ERR_ARG;
+}
+
+int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3])
+{
+    if ((it == NULL) || (it->d == NULL) || (ids == NULL)) {
+        return 0;
+    }
+    const vor_t *m = &it->d->cdt->mesh;
+    if (m->vertex_count < 2u) {
+        return 0;
+    }
+    uint32_t end = vor__used_slots_end(m);
+    for (uint32_t s = vor__next_used_slot(m, it->slot); s < end; s = vor__next_used_slot(m, s + 1u)) {
+        const vor__tri_t *t = &m->triangles[s];
+        if (vor__reported(m->sites, t)) {
+            vor_index_t v[3];
+            vor__vertices(t, v);
+            ids[0] = v[0];
+            ids[1] = v[1];
+            ids[2] = v[2];
+            it->slot = s + 1u;
+            return 1;
+        }
+    }
+    it->slot = end;
+    return 0;
+}
+
+int vor_cdt_edges_begin(vor_cdt_edge_iter_t *it, const vor_t *d)
+{
+    if (it == NULL) {
+        return VOR_ERR_ARG;
+    }
+    it->d = ((d != NULL) && (d->cdt != NULL)) ? d : NULL;
+    it->entry = 0;
+    return (it->d != NULL) ? VOR_OK : VOR_ERR_ARG;
+}
+
+int vor_cdt_edges_next(vor_cdt_edge_iter_t *it, uint32_t *a, uint32_t *b)
+{
+    if ((it == NULL) || (it->d == NULL) || (a == NULL) || (b == NULL)) {
+        return 0;
+    }
+    const struct vor__cdt *c = it->d->cdt;
+    for (uint32_t i = it->entry; i < c->edge_slots; i++) {
+        if (c->edges[i].u != VOR__NONE) {
+            *a = c->edges[i].u;
+            *b = c->edges[i].v;
+            it->entry = i + 1u;
+            return 1;
+        }
+    }
+    it->entry = c->edge_slots;
+    return 0;
+}

@@ -1,0 +1,97 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * cdt.h - the constrained triangulation's state, private to the library:
+ * a second mesh of the diagram's sites in the caller's constraint memory
+ * (vor_cdt_attach), and the table of its constrained edges. The mesh is a
+ * vor_t of its own that shares the diagram's coordinates, so the mesh
+ * code (mesh.h, incremental.c) runs on it unchanged; only the insertion's
+ * flips ask the table first (vor__cdt_constrained).
+ */
+#ifndef VOR_CDT_PRIVATE_H
+#define VOR_CDT_PRIVATE_H
+
+#include <stdbool.h>
+
+#include "mesh.h"
+#include "multiword.h"
+#include "vor.h"
+#include "vor_cdt.h"
+
+/* A constrained edge u < v and the number of constraints through it; u
+ * is VOR__NONE in an empty entry. */
+typedef struct vor__cdt_edge {
+    vor_index_t u;
+    vor_index_t v;
+    uint32_t count;
+} vor__cdt_edge_t;
+
+typedef char vor__cdt_edge_size_check[(sizeof(vor__cdt_edge_t) == VOR_CDT_EDGE_BYTES) ? 1 : -1];
+
+struct vor__cdt {
+    vor_t mesh;             /* the constrained triangulation */
+    vor__cdt_edge_t *edges; /* [edge_slots], open addressing */
+    uint32_t edge_slots;    /* 2 max_edges: the table at most half full */
+    uint32_t edge_count;
+    uint32_t max_edges;
+    vor_index_t *scratch;   /* [6 (max_cut + 2)], one constraint's cut */
+    uint32_t max_cut;
+};
+
+/* The first slot to probe for edge u-v (u < v): a multiplicative hash
+ * mapped onto the table by a multiply (no division). */
+static inline uint32_t vor__cdt_home(const struct vor__cdt *c, vor_index_t u, vor_index_t v)
+{
+    uint32_t h = ((uint32_t)u * 0x9E3779B1u) ^ ((uint32_t)v * 0x85EBCA77u);
+    h ^= h >> 15;
+    return (uint32_t)(vor__mul_u32(h, c->edge_slots) >> 32);
+}
+
+/* The entry of edge a-b (either order), or edge_slots when absent. */
+static inline uint32_t vor__cdt_find(const struct vor__cdt *c, vor_index_t a, vor_index_t b)
+{
+    vor_index_t u = (a < b) ? a : b;
+    vor_index_t v = (a < b) ? b : a;
+    uint32_t i = vor__cdt_home(c, u, v);
+    for (uint32_t probes = 0; probes < c->edge_slots; probes++) {
+        const vor__cdt_edge_t *e = &c->edges[i];
+        if (e->u == VOR__NONE) {
+            break;
+        }
+        if ((e->u == u) && (e->v == v)) {
+            return i;
+        }
+        i = (i + 1u == c->edge_slots) ? 0u : (i + 1u);
+    }
+    return c->edge_slots;
+}
+
+/* Is the mesh edge a-b constrained? (The insertion's flips never cross one.) */
+static inline bool vor__cdt_constrained(const struct vor__cdt *c, vor_index_t a, vor_index_t b)
+{
+    return vor__cdt_find(c, a, b) != c->edge_slots;
+}
+
+/* The upkeep vor_cdt_attach stores in d (d->cdt_update), called by the
+ * diagram's calls at these events of site p:
+ *   VOR__CDT_CHECK_INSERT  before p (its coordinates in d->sites[p])
+ *                          enters d: VOR_ERR_NOMEM when splitting a
+ *                          constrained edge would overfill the table,
+ *                          else VOR_OK; changes nothing
+ *   VOR__CDT_INSERTED      p is in d's mesh: into the constrained one too
+ *   VOR__CDT_REMOVE        p is about to leave d: VOR_ERR_CONSTRAINED when
+ *                          a constrained edge ends at p (nothing changes),
+ *                          else p leaves the constrained mesh
+ *   VOR__CDT_REBUILT       d was built anew: the constrained mesh becomes
+ *                          its Delaunay triangulation, without constraints */
+#define VOR__CDT_CHECK_INSERT 0u
+#define VOR__CDT_INSERTED 1u
+#define VOR__CDT_REMOVE 2u
+#define VOR__CDT_REBUILT 3u
+int vor__cdt_update(vor_t *d, uint32_t p, unsigned event);
+
+/* Places site p of the constrained triangulation from triangle `root`,
+ * which holds it, never flipping a constrained edge (incremental.c). */
+void vor__insert_at_constrained(vor_t *mesh, vor_index_t root, uint32_t p,
+                                const struct vor__cdt *c);
+
+#endif
