@@ -105,7 +105,7 @@ LIB_OBJS := $(LIB_SRCS:src/%.c=$(B)/lib/%.o)
 CHECKED_OBJS := $(LIB_SRCS:src/%.c=$(B)/checked/%.o)
 FAULTY_OBJS := $(LIB_SRCS:src/%.c=$(B)/faulty/%.o)
 TEST_SRCS := $(wildcard tests/*.c)
-TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.o
+TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.o $(B)/tests/crossing_vectors.o
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
@@ -157,6 +157,14 @@ $(GEN)/predicate_vectors.c: tools/gen_predicate_vectors.py tests/vectors/predica
 	python3 tools/gen_predicate_vectors.py --out $@
 
 $(B)/tests/predicate_vectors.o: $(GEN)/predicate_vectors.c | $(B)/tests
+	$(CC) $(TEST_CFLAGS) $(STATS_DEFS) -c $< -o $@
+
+$(GEN)/crossing_vectors.c: tools/gen_crossing_vectors.py tools/gen_predicate_vectors.py tests/vectors/crossing_vectors.h
+	@mkdir -p $(GEN)
+	@tools/install-deps.sh python
+	python3 tools/gen_crossing_vectors.py --out $@
+
+$(B)/tests/crossing_vectors.o: $(GEN)/crossing_vectors.c | $(B)/tests
 	$(CC) $(TEST_CFLAGS) $(STATS_DEFS) -c $< -o $@
 
 vpath %.c $(sort $(dir $(PORT_SRCS)))

@@ -11,6 +11,8 @@
 
 #include "multiword.h"
 #include "predicate_vectors.h"
+#include "crossing.h"
+#include "crossing_vectors.h"
 #include "predicates.h"
 #include "vor.h"
 
@@ -671,6 +673,49 @@ static void check_unit_first_term(void)
           first_decided, checked);
 }
 
+/* The predicates on crossing vertices (src/crossing.c) against the
+ * generated table (tools/gen_crossing_vectors.py: exact rationals): the
+ * exact sign, and the perturbed one under the table's index ranks. */
+static void check_crossing_vectors(void)
+{
+    unsigned long bad = 0;
+    unsigned long zeros = 0;
+    for (size_t n = 0; n < crossing_vector_count; n++) {
+        const struct crossing_vector *cv = &crossing_vectors[n];
+        unsigned count = (cv->op == 0u) ? 3u : 4u;
+        vor__hpoint_t h[4];
+        const vor__hpoint_t *v[4];
+        uint32_t ids[4];
+        bool made = true;
+        for (unsigned k = 0; k < count; k++) {
+            const int32_t *c = cv->xy[k];
+            vor_point_t a = {c[0], c[1]};
+            if ((cv->crossing >> k) & 1u) {
+                vor_point_t b = {c[2], c[3]};
+                vor_point_t p = {c[4], c[5]};
+                vor_point_t q = {c[6], c[7]};
+                made = made && vor__hpoint_crossing(&h[k], a, b, p, q);
+            } else {
+                vor__hpoint_site(&h[k], a);
+            }
+            v[k] = &h[k];
+            ids[k] = 10u + ((cv->ranks >> (2u * k)) & 3u); /* any ids of these ranks */
+        }
+        int exact = (count == 3u) ? vor__orient_h(v[0], v[1], v[2])
+                                  : vor__incircle_h(v[0], v[1], v[2], v[3]);
+        int perturbed = (count == 3u) ? vor__orient_h_sos(v, ids) : vor__incircle_h_sos(v, ids);
+        bool ok = made && (exact == cv->exact) && (perturbed == cv->perturbed);
+        bad += ok ? 0u : 1u;
+        zeros += (cv->exact == 0) ? 1u : 0u;
+        if (!ok && bad <= 5u) {
+            test_printf("crossing vector %u (op %u): exact %d (want %d), perturbed %d (want %d)\n",
+                        (unsigned)n, (unsigned)cv->op, exact, cv->exact, perturbed, cv->perturbed);
+        }
+    }
+    test_printf("crossing vectors: %u, %lu exact zeros\n", (unsigned)crossing_vector_count, zeros);
+    CHECK(bad == 0, "crossing vectors: %lu of %u wrong", bad, (unsigned)crossing_vector_count);
+}
+
 /* The exact sign of incircle(q[0], q[1], q[2], q[3]) by the reference. */
 static int ref_incircle(const vor_point_t q[4])
 {
@@ -1313,6 +1358,7 @@ void test_predicates(void)
     TEST_CASE("perturbation_reference") check_perturbation_reference();
     TEST_CASE("first_term_filter") check_first_term_filter();
     TEST_CASE("unit_first_term") check_unit_first_term();
+    TEST_CASE("crossing_vectors") check_crossing_vectors();
     TEST_CASE("near_circles") check_near_circles();
     TEST_CASE("tier_edges") check_tier_edges();
     TEST_CASE("magnitudes") check_magnitudes();
