@@ -273,8 +273,7 @@ enum vor_error {
     VOR_ERR_CONFIG = -9,    /* library and application were compiled with different
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
     VOR_ERR_STOPPED = -10,  /* vor_raster: the caller's flush asked to stop */
-    VOR_ERR_CROSS = -11,    /* vor_constrain: the segment crosses a constrained edge */
-    VOR_ERR_CONSTRAINED = -12 /* vor_remove, vor_move: the site ends a constrained edge */
+    VOR_ERR_CONSTRAINED = -11 /* vor_remove, vor_move: the site ends a constrained edge */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -365,6 +364,10 @@ typedef struct vor {
      * attach so that a firmware without constraints links none of it. */
     struct vor__cdt *cdt;
     int (*cdt_update)(struct vor *d, uint32_t site, unsigned event);
+    /* Set in the constrained triangulation's own mesh only (cdt.c): the
+     * perturbed orientation (count 3) or incircle test (count 4) of
+     * vertices that may be crossings, for the removal it shares. */
+    int (*cdt_predicate)(struct vor *mesh, const uint32_t *ids, unsigned count);
 } vor_t;
 
 /*

@@ -28,47 +28,74 @@
 extern "C" {
 #endif
 
-/* A constrained edge's entry in the edge table: its two vertices and the
- * number of constraints through it. */
-#define VOR_CDT_EDGE_BYTES ((2u * sizeof(vor_index_t)) + 4u)
+/* A constrained edge's entry in the edge table: its two vertices, the two
+ * sites whose line it lies on, and the number of constraints through it.
+ * A crossing vertex's entry: the four sites of its two lines. */
+#define VOR_CDT_EDGE_BYTES ((4u * sizeof(vor_index_t)) + 4u)
+#define VOR_CDT_CROSSING_BYTES (4u * sizeof(vor_index_t))
 
 /* The part of the memory that holds the state (a constant, checked
  * against the library's layout when it is built). */
-#define VOR_CDT_HEADER_BYTES (sizeof(vor_t) + (8u * sizeof(void *)))
+#define VOR_CDT_HEADER_BYTES (sizeof(vor_t) + (4u * sizeof(void *)) + (8u * sizeof(uint32_t)))
 
 /* Bytes of constraint memory for a diagram of up to n sites (its
  * max_sites), up to `edges` constrained edges (a constraint counts one
- * edge for each piece the sites on it split it into) and up to `cut`
- * triangles crossed by one constraint (n always suffices); a constant
- * expression. */
-#define VOR_CDT_BYTES(n, edges, cut)                                           \
+ * edge for each piece the sites and crossings on it split it into), up to
+ * `crossings` crossing vertices, and constraints crossing up to `cut`
+ * triangles between two vertices on them (2n + 2 crossings always
+ * suffices); a constant expression. */
+#define VOR_CDT_BYTES(n, edges, crossings, cut)                                \
     ((size_t)VOR_CDT_HEADER_BYTES +                                            \
-     ((((n) >= 2u) ? ((2u * (size_t)(n)) - 2u) : 0u) * VOR_TRIANGLE_BYTES) +   \
+     ((((n) + (crossings)) >= 2u) ? ((2u * ((size_t)(n) + (crossings))) - 2u) : 0u) * \
+         VOR_TRIANGLE_BYTES +                                                  \
      (2u * (size_t)(edges) * VOR_CDT_EDGE_BYTES) +                             \
-     (13u * ((size_t)(cut) + 2u) * sizeof(vor_index_t)))
+     ((size_t)(crossings) * VOR_CDT_CROSSING_BYTES) +                          \
+     (13u * ((size_t)(cut) + 4u) * sizeof(vor_index_t)))
 #define VOR_CDT_ALIGN 4u
 
+/* The limits vor_cdt_attach sizes the memory by (VOR_CDT_BYTES). */
+typedef struct vor_cdt_limits {
+    uint32_t edges;     /* constrained edges, at least 1 */
+    uint32_t crossings; /* crossing vertices */
+    uint32_t cut;       /* triangles a constraint crosses between two of its vertices */
+} vor_cdt_limits_t;
+
 /*
- * Attaches constraint memory mem[0 .. bytes) to d, with room for
- * max_edges constrained edges and constraints crossing up to max_cut
- * triangles. The constrained triangulation starts as d's Delaunay
- * triangulation, without constraints.
- *   VOR_ERR_ARG    d or mem NULL, max_edges 0
+ * Attaches constraint memory mem[0 .. bytes) to d, sized by *limits. The
+ * constrained triangulation starts as d's Delaunay triangulation, without
+ * constraints.
+ *   VOR_ERR_ARG    d, mem or limits NULL, limits->edges 0, or a limit
+ *                  beyond use: crossings that with d's max_sites exceed
+ *                  VOR_MAX_SITES vertices, more edges than 3 a vertex, a
+ *                  cut beyond 2 a vertex + 2
  *   VOR_ERR_ALIGN  mem not aligned to VOR_CDT_ALIGN
- *   VOR_ERR_NOMEM  bytes < VOR_CDT_BYTES(max_sites of d, max_edges, max_cut)
+ *   VOR_ERR_NOMEM  bytes < VOR_CDT_BYTES(max_sites of d, edges, crossings, cut)
  * On failure nothing changes. Cost: a copy of d's triangles.
  */
-int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, uint32_t max_edges, uint32_t max_cut);
+int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, const vor_cdt_limits_t *limits);
+
+/*
+ * The crossing vertex `id` (ids from d's max_sites on, as the triangle
+ * iterator reports them): the sites a, b, c, d of the two constraints'
+ * lines a-b and c-d it lies on, in sites[0..4). Its exact coordinates are
+ * X / W and Y / W for W = (b - a) x (d - c), X = a.x W + (b.x - a.x) T,
+ * Y = a.y W + (b.y - a.y) T, T = (c - a) x (d - c).
+ *   VOR_ERR_ARG  d or sites NULL, or id no crossing vertex of d
+ */
+int vor_cdt_crossing(const vor_t *d, uint32_t id, uint32_t sites[4]);
 
 /*
  * Constrains the segment between sites a and b: afterwards it is a chain
- * of edges of the constrained triangulation, split at every site on it.
+ * of edges of the constrained triangulation, split at every site on it and
+ * at every point where it crosses another constraint, which becomes a
+ * crossing vertex held exactly (vor_cdt_crossing); a third constraint
+ * through that point splits there too.
  * a == b (or the same point) does nothing.
  *   VOR_ERR_ARG    d NULL, no constraint memory attached, a or b not a
  *                  site in the diagram
- *   VOR_ERR_CROSS  the segment crosses a constrained edge
- *   VOR_ERR_NOMEM  the edge table is full, or the segment crosses more
- *                  than max_cut triangles
+ *   VOR_ERR_NOMEM  the edge table or the crossing table would overflow,
+ *                  or the segment crosses more than limits->cut triangles
+ *                  between two vertices on it
  * On failure nothing changes.
  */
 int vor_constrain(vor_t *d, uint32_t a, uint32_t b);

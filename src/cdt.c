@@ -29,6 +29,7 @@
  * x..c and c..y, the demanded corners number at most s1 + s2 + 1.
  */
 #include "cdt.h"
+#include "crossing.h"
 #include "dynamic.h"
 #include "mesh.h"
 #include "perturbation.h"
@@ -53,8 +54,10 @@ static uint32_t edge_place(const struct vor__cdt *c, vor_index_t u, vor_index_t 
     return i;
 }
 
-/* Adds `count` constraints through edge a-b (the caller checked room). */
-static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, uint32_t count)
+/* Adds `count` constraints on the line of sites line_a, line_b through
+ * edge a-b (the caller checked room). */
+static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t line_a,
+                     vor_index_t line_b, uint32_t count)
 {
     vor_index_t u = (a < b) ? a : b;
     vor_index_t v = (a < b) ? b : a;
@@ -62,6 +65,8 @@ static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, uint32_t 
     if (e->u == VOR__NONE) {
         e->u = u;
         e->v = v;
+        e->line_a = line_a;
+        e->line_b = line_b;
         e->count = 0;
         c->edge_count++;
     }
@@ -86,6 +91,8 @@ static void edge_remove(struct vor__cdt *c, uint32_t removed)
         if (!stays) { /* field by field: a structure copy may be a memcpy call */
             c->edges[hole].u = e->u;
             c->edges[hole].v = e->v;
+            c->edges[hole].line_a = e->line_a;
+            c->edges[hole].line_b = e->line_b;
             c->edges[hole].count = e->count;
             hole = i;
         }
@@ -97,10 +104,123 @@ static void edge_remove(struct vor__cdt *c, uint32_t removed)
 /* ------------------------------------------------------------------ */
 /* Mesh helpers                                                        */
 
-static int exact_orient(const vor_t *m, uint32_t a, uint32_t b, uint32_t c)
+/* ------------------------------------------------------------------ */
+/* Vertices: sites and crossings                                       */
+
+static bool is_crossing(const struct vor__cdt *c, vor_index_t v)
 {
-    const vor_point_t *s = m->sites;
-    return vor__orient2d_exact(&s[a], &s[b], &s[c], NULL);
+    return (v >= c->first_crossing) && (v != VOR__INFINITE);
+}
+
+/* Vertex v (finite) in homogeneous coordinates (crossing.h). */
+static void hpoint_of(const struct vor__cdt *c, vor_index_t v, vor__hpoint_t *h)
+{
+    const vor_point_t *s = c->mesh.sites;
+    if (!is_crossing(c, v)) {
+        vor__hpoint_site(h, s[v]);
+        return;
+    }
+    const vor_index_t *q = &c->crossings[4u * (v - c->first_crossing)];
+    (void)vor__hpoint_crossing(h, s[q[0]], s[q[1]], s[q[2]], s[q[3]]);
+}
+
+/* The exact orientation of finite vertices a, b, p (0 on a line). */
+static int exact_orient(const struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t p)
+{
+    if (!is_crossing(c, a) && !is_crossing(c, b) && !is_crossing(c, p)) {
+        const vor_point_t *s = c->mesh.sites;
+        return vor__orient2d_exact(&s[a], &s[b], &s[p], NULL);
+    }
+    vor__hpoint_t h[3];
+    hpoint_of(c, a, &h[0]);
+    hpoint_of(c, b, &h[1]);
+    hpoint_of(c, p, &h[2]);
+    return vor__orient_h(&h[0], &h[1], &h[2]);
+}
+
+/* The perturbed orientation (never 0) and incircle test of vertices of
+ * the mesh: the diagram's own predicates for sites, the crossing ones'
+ * else (with the same injected faults in test builds). */
+static int orient(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t p)
+{
+    if (!is_crossing(c, a) && !is_crossing(c, b) && !is_crossing(c, p)) {
+        return vor__orient(&c->mesh, a, b, p);
+    }
+    vor__hpoint_t h[3];
+    const vor__hpoint_t *v[3] = {&h[0], &h[1], &h[2]};
+    uint32_t ids[3] = {a, b, p};
+    for (unsigned k = 0; k < 3u; k++) {
+        hpoint_of(c, (vor_index_t)ids[k], &h[k]);
+    }
+    return vor__with_faults(&c->mesh, vor__orient_h_sos(v, ids));
+}
+
+static int incircle(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t q,
+                    vor_index_t p)
+{
+    if (!is_crossing(c, a) && !is_crossing(c, b) && !is_crossing(c, q) && !is_crossing(c, p)) {
+        return vor__incircle(&c->mesh, a, b, q, p);
+    }
+    vor__hpoint_t h[4];
+    const vor__hpoint_t *v[4] = {&h[0], &h[1], &h[2], &h[3]};
+    uint32_t ids[4] = {a, b, q, p};
+    for (unsigned k = 0; k < 4u; k++) {
+        hpoint_of(c, (vor_index_t)ids[k], &h[k]);
+    }
+    return vor__with_faults(&c->mesh, vor__incircle_h_sos(v, ids));
+}
+
+bool vor__cdt_conflicts(struct vor__cdt *c, vor_index_t v0, vor_index_t v1, vor_index_t v2,
+                        uint32_t p)
+{
+    vor_index_t q = (vor_index_t)p;
+    if (v0 == VOR__INFINITE) {
+        return orient(c, v1, v2, q) > 0;
+    }
+    if (v1 == VOR__INFINITE) {
+        return orient(c, v2, v0, q) > 0;
+    }
+    if (v2 == VOR__INFINITE) {
+        return orient(c, v0, v1, q) > 0;
+    }
+    return incircle(c, v0, v1, v2, q) > 0;
+}
+
+/* The removal's predicates on the mesh (vor_t cdt_predicate; dynamic.c):
+ * the mesh is the first member of its struct vor__cdt. */
+static int mesh_predicate(vor_t *mesh, const uint32_t *ids, unsigned count)
+{
+    struct vor__cdt *c = (struct vor__cdt *)(void *)mesh;
+    return (count == 3u) ? orient(c, (vor_index_t)ids[0], (vor_index_t)ids[1], (vor_index_t)ids[2])
+                         : incircle(c, (vor_index_t)ids[0], (vor_index_t)ids[1],
+                                    (vor_index_t)ids[2], (vor_index_t)ids[3]);
+}
+
+/* For finite vertices on one line: does m lie strictly between p and q?
+ * Then p -> m and m -> q step as p -> q does on each axis. */
+static bool between(const struct vor__cdt *c, vor_index_t p, vor_index_t m, vor_index_t q)
+{
+    if (!is_crossing(c, p) && !is_crossing(c, m) && !is_crossing(c, q)) {
+        const vor_point_t *s = c->mesh.sites;
+        return vor__strictly_between(&s[p], &s[m], &s[q]);
+    }
+    vor__hpoint_t h[3];
+    hpoint_of(c, p, &h[0]);
+    hpoint_of(c, m, &h[1]);
+    hpoint_of(c, q, &h[2]);
+    bool inside = true;
+    for (unsigned axis = 0; axis < 2u; axis++) {
+        int way = vor__compare_h(&h[2], &h[0], axis);
+        inside = inside && (vor__compare_h(&h[1], &h[0], axis) == way) &&
+                 (vor__compare_h(&h[2], &h[1], axis) == way);
+    }
+    return inside;
+}
+
+/* Does vertex p lie exactly inside the segment of finite vertices u-v? */
+static bool splits(const struct vor__cdt *c, vor_index_t u, vor_index_t v, vor_index_t p)
+{
+    return (exact_orient(c, u, v, p) == 0) && between(c, u, p, v);
 }
 
 /* Index of the corner of t that is neither u nor v (3 if none). */
@@ -129,9 +249,11 @@ static void link_across(vor__tri_t *tri, vor_index_t slot, vor_index_t u, vor_in
  * by the straight walk from site `from`: it works on any triangulation,
  * where the Delaunay walk may circle. Ties are broken by the perturbation,
  * so the segment from -> p never runs along an edge. */
-static vor_index_t locate(vor_t *m, vor_index_t from, uint32_t p)
+static vor_index_t locate(struct vor__cdt *c, vor_index_t from, uint32_t p)
 {
+    const vor_t *m = &c->mesh;
     const vor__tri_t *tri = m->triangles;
+    vor_index_t q = (vor_index_t)p;
     /* the star triangle (from, x, y) whose corner at `from` holds p */
     vor_index_t slot = from;
     vor_index_t ghost = VOR__NONE;
@@ -146,11 +268,11 @@ static vor_index_t locate(vor_t *m, vor_index_t from, uint32_t p)
         vor_index_t x = vor__vertex(t, vor__next(i));
         vor_index_t y = vor__vertex(t, vor__prev(i));
         if ((x == VOR__INFINITE) || (y == VOR__INFINITE)) {
-            if (vor__conflicts(m, vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2), p)) {
+            if (vor__cdt_conflicts(c, vor__vertex(t, 0), vor__vertex(t, 1), vor__vertex(t, 2), p)) {
                 ghost = slot;
             }
-        } else if ((vor__orient(m, from, x, p) > 0) && (vor__orient(m, from, y, p) < 0)) {
-            if (vor__orient(m, x, y, p) > 0) {
+        } else if ((orient(c, from, x, q) > 0) && (orient(c, from, y, q) < 0)) {
+            if (orient(c, x, y, q) > 0) {
                 return slot;
             }
             r = x;
@@ -173,10 +295,10 @@ static vor_index_t locate(vor_t *m, vor_index_t from, uint32_t p)
         if (w == VOR__INFINITE) {
             return slot; /* p beyond the hull edge r-l */
         }
-        if ((vor__orient(m, r, w, p) > 0) && (vor__orient(m, w, l, p) > 0)) {
+        if ((orient(c, r, w, q) > 0) && (orient(c, w, l, q) > 0)) {
             return slot;
         }
-        bool w_left = vor__orient(m, from, p, w) > 0;
+        bool w_left = orient(c, from, q, w) > 0;
         unsigned out = vor__vertex_index(t, w_left ? l : r);
         l = w_left ? w : l;
         r = w_left ? r : w;
@@ -185,52 +307,71 @@ static vor_index_t locate(vor_t *m, vor_index_t from, uint32_t p)
     return slot; /* only if the predicates lie */
 }
 
-/* Copies d's triangles into the constrained mesh, unconstrained. */
+/* The constrained mesh's slot of d's slot s: d's packed slots follow its
+ * max_sites home slots, the mesh's its max_sites + max_crossings. */
+static vor_index_t mesh_slot(const struct vor__cdt *c, vor_index_t s)
+{
+    return (s < c->first_crossing) ? s : (vor_index_t)(s + c->max_crossings);
+}
+
+/* Makes the constrained mesh d's Delaunay triangulation: its triangles,
+ * the packed ones moved up past the crossings' home slots; no
+ * constraint, no crossing. */
 static void copy_delaunay(struct vor__cdt *c, const vor_t *d)
 {
     vor_t *m = &c->mesh;
-    m->site_count = d->site_count;
     m->vertex_count = d->vertex_count;
     m->last_site = d->last_site;
     m->low = d->low;
     m->high = d->high;
+    for (uint32_t s = 0; s < m->max_sites; s++) { /* every id unused first */
+        vor__tri_fresh(&m->triangles[s]);
+        m->triangles[s].n[0] = VOR__NONE;
+    }
     uint32_t end = vor__used_slots_end(d);
-    for (uint32_t s = 0; s < end; s++) {
+    for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
         const vor__tri_t *from = &d->triangles[s];
-        vor__tri_t *to = &m->triangles[s];
-        for (unsigned k = 0; k < 3u; k++) {
-            to->n[k] = from->n[k];
-        }
-        for (unsigned k = 0; k < (unsigned)(sizeof from->v / sizeof from->v[0]); k++) {
-            to->v[k] = from->v[k];
-        }
+        vor__tri_t *to = &m->triangles[mesh_slot(c, (vor_index_t)s)];
+        vor_index_t v[3];
+        vor__vertices(from, v);
         vor__tri_fresh(to);
+        vor__tri_set(to, v[0], v[1], v[2], mesh_slot(c, from->n[0]), mesh_slot(c, from->n[1]),
+                     mesh_slot(c, from->n[2]));
     }
     for (uint32_t i = 0; i < c->edge_slots; i++) {
         c->edges[i].u = VOR__NONE;
     }
+    for (uint32_t i = 0; i < c->max_crossings; i++) {
+        c->crossings[4u * i] = VOR__NONE;
+    }
     c->edge_count = 0;
+    c->crossing_count = 0;
 }
 
-int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, uint32_t max_edges, uint32_t max_cut)
+int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, const vor_cdt_limits_t *limits)
 {
-    if ((d == NULL) || (mem == NULL) || (max_edges == 0u) ||
-        (max_edges > 3u * d->max_sites) || (max_cut > 2u * d->max_sites)) {
+    if ((d == NULL) || (mem == NULL) || (limits == NULL) || (limits->edges == 0u) ||
+        (limits->crossings > VOR_MAX_SITES - d->max_sites) ||
+        (limits->edges > 3u * (d->max_sites + limits->crossings)) ||
+        (limits->cut > 2u * (d->max_sites + limits->crossings) + 2u)) {
         return VOR_ERR_ARG;
     }
     if (((uintptr_t)mem % VOR_CDT_ALIGN) != 0u) {
         return VOR_ERR_ALIGN;
     }
-    if (bytes < VOR_CDT_BYTES(d->max_sites, max_edges, max_cut)) {
+    if (bytes < VOR_CDT_BYTES(d->max_sites, limits->edges, limits->crossings, limits->cut)) {
         return VOR_ERR_NOMEM;
     }
     struct vor__cdt *c = (struct vor__cdt *)mem;
     uint8_t *at = (uint8_t *)mem + VOR_CDT_HEADER_BYTES;
     vor_t *m = &c->mesh;
+    c->first_crossing = d->max_sites;
+    c->max_crossings = limits->crossings;
     m->sites = d->sites;
     m->triangles = (vor__tri_t *)(void *)at;
-    at += (size_t)vor__triangle_count(d->max_sites) * sizeof(vor__tri_t);
-    m->max_sites = d->max_sites;
+    m->max_sites = d->max_sites + limits->crossings;
+    m->site_count = m->max_sites;
+    at += (size_t)vor__triangle_count(m->max_sites) * sizeof(vor__tri_t);
     m->buckets = NULL;
     m->bucket_columns = 0;
     m->bucket_rows = 0;
@@ -251,15 +392,34 @@ int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, uint32_t max_edges, uint32
     m->motion_update = NULL;
     m->cdt = NULL;
     m->cdt_update = NULL;
+    m->cdt_predicate = mesh_predicate;
     c->edges = (vor__cdt_edge_t *)(void *)at;
-    c->edge_slots = 2u * max_edges;
-    c->max_edges = max_edges;
+    c->edge_slots = 2u * limits->edges;
+    c->max_edges = limits->edges;
     at += (size_t)c->edge_slots * sizeof(vor__cdt_edge_t);
+    c->crossings = (vor_index_t *)(void *)at;
+    at += (size_t)limits->crossings * VOR_CDT_CROSSING_BYTES;
     c->scratch = (vor_index_t *)(void *)at;
-    c->max_cut = max_cut;
+    c->max_cut = limits->cut;
     copy_delaunay(c, d);
     d->cdt = c;
     d->cdt_update = vor__cdt_update;
+    return VOR_OK;
+}
+
+int vor_cdt_crossing(const vor_t *d, uint32_t id, uint32_t sites[4])
+{
+    if ((d == NULL) || (d->cdt == NULL) || (sites == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    const struct vor__cdt *c = d->cdt;
+    if ((id < c->first_crossing) || (id - c->first_crossing >= c->max_crossings) ||
+        (c->crossings[4u * (id - c->first_crossing)] == VOR__NONE)) {
+        return VOR_ERR_ARG;
+    }
+    for (unsigned k = 0; k < 4u; k++) {
+        sites[k] = c->crossings[(4u * (id - c->first_crossing)) + k];
+    }
     return VOR_OK;
 }
 
@@ -268,15 +428,15 @@ int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, uint32_t max_edges, uint32
 
 /* The edge of triangle t other than u-v (VOR__NONE, VOR__NONE for none)
  * that holds p strictly inside, exactly: its ends in *a, *b. */
-static unsigned edge_through(const vor__tri_t *t, const vor_point_t *s, vor_index_t u,
-                             vor_index_t v, uint32_t p, vor_index_t *a, vor_index_t *b)
+static unsigned edge_through(const struct vor__cdt *c, const vor__tri_t *t, vor_index_t u,
+                             vor_index_t v, vor_index_t p, vor_index_t *a, vor_index_t *b)
 {
     for (unsigned k = 0; k < 3u; k++) {
         vor_index_t x = vor__vertex(t, vor__next(k));
         vor_index_t y = vor__vertex(t, vor__prev(k));
         bool same = ((x == u) && (y == v)) || ((x == v) && (y == u));
         if (!same && (x != VOR__INFINITE) && (y != VOR__INFINITE) &&
-            vor__splits_edge(s, x, y, p)) {
+            splits(c, x, y, p)) {
             *a = x;
             *b = y;
             return k;
@@ -315,10 +475,10 @@ static uint32_t find_split(const struct vor__cdt *c, vor_index_t root, uint32_t 
                 unsigned i = vor__vertex_index(g, VOR__INFINITE);
                 vor_index_t a = (i == 3u) ? VOR__INFINITE : vor__vertex(g, vor__next(i));
                 vor_index_t b = (i == 3u) ? VOR__INFINITE : vor__vertex(g, vor__prev(i));
-                if ((a == VOR__INFINITE) || (b == VOR__INFINITE) || (exact_orient(m, a, b, p) != 0)) {
+                if ((a == VOR__INFINITE) || (b == VOR__INFINITE) || (exact_orient(c, a, b, (vor_index_t)p) != 0)) {
                     break;
                 }
-                if (vor__splits_edge(m->sites, a, b, p)) {
+                if (splits(c, a, b, (vor_index_t)p)) {
                     start = at;
                     break;
                 }
@@ -331,7 +491,7 @@ static uint32_t find_split(const struct vor__cdt *c, vor_index_t root, uint32_t 
     for (unsigned way = 0; way < 2u; way++) {
         vor_index_t a;
         vor_index_t b;
-        unsigned k = edge_through(&tri[start], m->sites, first_a, first_b, p, &a, &b);
+        unsigned k = edge_through(c, &tri[start], first_a, first_b, (vor_index_t)p, &a, &b);
         if (k == 3u) {
             break;
         }
@@ -347,7 +507,7 @@ static uint32_t find_split(const struct vor__cdt *c, vor_index_t root, uint32_t 
             }
             vor_index_t x;
             vor_index_t y;
-            unsigned j = edge_through(&tri[at], m->sites, a, b, p, &x, &y);
+            unsigned j = edge_through(c, &tri[at], a, b, (vor_index_t)p, &x, &y);
             if (j == 3u) {
                 break;
             }
@@ -374,33 +534,37 @@ static bool ends_constraint(const struct vor__cdt *c, uint32_t p)
     return false;
 }
 
-/* Places site p (not in the mesh, d->sites[p] its point) in the
+/* Places vertex p (a site, d->sites[p] its point, or a crossing) in the
  * constrained mesh; a constrained edge holding p exactly is split. */
-static void insert_site(struct vor__cdt *c, uint32_t p)
+static void insert_vertex(struct vor__cdt *c, uint32_t p)
 {
     vor_t *m = &c->mesh;
     if (m->vertex_count == 1u) {
         vor__make_edge(m, m->last_site, p);
     } else if (m->vertex_count >= 2u) {
-        vor_index_t root = locate(m, (vor_index_t)m->last_site, p);
+        vor_index_t root = locate(c, (vor_index_t)m->last_site, p);
         vor_index_t su;
         vor_index_t sv;
         uint32_t split = find_split(c, root, p, &su, &sv);
         uint32_t count = 0;
+        vor_index_t line_a = VOR__NONE;
+        vor_index_t line_b = VOR__NONE;
         if (split != c->edge_slots) {
             count = c->edges[split].count;
+            line_a = c->edges[split].line_a;
+            line_b = c->edges[split].line_b;
             edge_remove(c, split);
         }
         vor__insert_at_constrained(m, root, p, c);
         if (count != 0u) {
-            edge_add(c, su, (vor_index_t)p, count);
-            edge_add(c, (vor_index_t)p, sv, count);
+            edge_add(c, su, (vor_index_t)p, line_a, line_b, count);
+            edge_add(c, (vor_index_t)p, sv, line_a, line_b, count);
         }
     } else {
         /* the first site: no triangle */
     }
     m->vertex_count++;
-    m->last_site = p;
+    m->last_site = is_crossing(c, (vor_index_t)p) ? m->last_site : p;
 }
 
 int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
@@ -415,14 +579,14 @@ int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
             vor_index_t sv;
             vor__tally_t tally; /* the walk's tests leave no trace */
             vor__tally_save(&tally, m);
-            vor_index_t root = locate(m, (vor_index_t)m->last_site, p);
+            vor_index_t root = locate(c, (vor_index_t)m->last_site, p);
             if (find_split(c, root, p, &su, &sv) != c->edge_slots) {
                 err = VOR_ERR_NOMEM;
             }
             vor__tally_restore(m, &tally);
         }
     } else if (event == VOR__CDT_INSERTED) {
-        insert_site(c, p);
+        insert_vertex(c, p);
     } else if (event == VOR__CDT_REMOVE) {
         if (ends_constraint(c, p)) {
             err = VOR_ERR_CONSTRAINED;
@@ -432,7 +596,6 @@ int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
     } else {
         copy_delaunay(c, d);
     }
-    m->site_count = d->site_count;
     m->low = d->low;
     m->high = d->high;
     return err;
@@ -479,10 +642,11 @@ static void cavity_init(cavity_t *cv, const struct vor__cdt *c)
  * exactly on the segment (returned, *slot VOR__NONE), or the star
  * triangle whose corner the segment leaves through (*slot; returns
  * VOR__NONE). */
-static vor_index_t first_step(vor_t *m, vor_index_t from, vor_index_t b, vor_index_t *slot_out)
+static vor_index_t first_step(const struct vor__cdt *c, vor_index_t from, vor_index_t b,
+                              vor_index_t *slot_out)
 {
+    const vor_t *m = &c->mesh;
     const vor__tri_t *tri = m->triangles;
-    const vor_point_t *s = m->sites;
     vor_index_t slot = from;
     vor_index_t on_line = VOR__NONE;
     *slot_out = VOR__NONE;
@@ -494,14 +658,14 @@ static vor_index_t first_step(vor_t *m, vor_index_t from, vor_index_t b, vor_ind
         }
         vor_index_t x = vor__vertex(t, vor__next(i));
         vor_index_t y = vor__vertex(t, vor__prev(i));
-        if ((x != VOR__INFINITE) && (exact_orient(m, from, b, x) == 0) &&
-            ((x == b) || vor__strictly_between(&s[from], &s[x], &s[b]))) {
+        if ((x != VOR__INFINITE) && (exact_orient(c, from, b, x) == 0) &&
+            ((x == b) || between(c, from, x, b))) {
             /* the nearest such neighbour (flat hull triangles may give two) */
-            if ((on_line == VOR__NONE) || vor__strictly_between(&s[from], &s[x], &s[on_line])) {
+            if ((on_line == VOR__NONE) || between(c, from, x, on_line)) {
                 on_line = x;
             }
         } else if ((x != VOR__INFINITE) && (y != VOR__INFINITE) &&
-                   (exact_orient(m, from, x, b) > 0) && (exact_orient(m, from, y, b) < 0)) {
+                   (exact_orient(c, from, x, b) > 0) && (exact_orient(c, from, y, b) < 0)) {
             *slot_out = slot;
         } else {
             /* not this corner */
@@ -518,12 +682,18 @@ static vor_index_t first_step(vor_t *m, vor_index_t from, vor_index_t b, vor_ind
 }
 
 /* Walks the cavity of the piece from `from` toward b, whose first
- * triangle is `slot`: fills cv when `record` (else only counts), and
- * returns the piece's end (b or a site exactly on the segment), or
- * VOR__NONE when a crossed edge is constrained (*crossed set) or the
- * cut exceeds max_cut. */
+ * triangle is `slot`, and returns the piece's end: b or the first vertex
+ * exactly on the segment. Recording (`record`), it fills cv, and stops at
+ * a constrained edge it would cross: VOR__NONE, the edge in crossed[].
+ * Checking, it walks on through constrained edges, counting them in
+ * *crossings, and returns VOR__NONE when a stretch between two of them
+ * (or the piece's ends) crosses more than max_cut - 2 triangles: a
+ * crossing vertex inserted at each end of a stretch adds at most one
+ * triangle there (the segment meets its star in one triangle), so the
+ * recorded cavities then stay within max_cut. */
 static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index_t from,
-                               vor_index_t b, vor_index_t slot, bool record, bool *crossed)
+                               vor_index_t b, vor_index_t slot, bool record,
+                               uint32_t *crossings, vor_index_t crossed[2])
 {
     const vor_t *m = &c->mesh;
     const vor__tri_t *tri = m->triangles;
@@ -531,7 +701,10 @@ static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index
     unsigned i = vor__vertex_index(t, from);
     vor_index_t r = vor__vertex(t, vor__next(i)); /* right of from -> b */
     vor_index_t l = vor__vertex(t, vor__prev(i)); /* left */
-    *crossed = false;
+    uint32_t limit = record ? c->max_cut : ((c->max_cut >= 2u) ? (c->max_cut - 2u) : 0u);
+    uint32_t stretch = 1;
+    crossed[0] = VOR__NONE;
+    crossed[1] = VOR__NONE;
     cv->cut = 1;
     if (record) {
         cv->upper[0] = from;
@@ -545,10 +718,18 @@ static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index
         cv->nl = 2;
     }
     vor_index_t at = t->n[i];
-    while (cv->cut <= c->max_cut) {
-        if (vor__cdt_constrained(c, r, l)) {
-            *crossed = true;
+    for (uint32_t steps = vor__triangle_count(m->vertex_count); steps > 0u; steps--) {
+        if (stretch > limit) {
             return VOR__NONE;
+        }
+        if (vor__cdt_constrained(c, r, l)) {
+            if (record) {
+                crossed[0] = r;
+                crossed[1] = l;
+                return VOR__NONE;
+            }
+            *crossings += 1u;
+            stretch = 0;
         }
         const vor__tri_t *f = &tri[at];
         unsigned k = third_corner(f, r, l);
@@ -562,7 +743,8 @@ static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index
             cv->slots[cv->cut] = at;
         }
         cv->cut++;
-        int side = (w == b) ? 0 : exact_orient(m, from, b, w);
+        stretch++;
+        int side = (w == b) ? 0 : exact_orient(c, from, b, w);
         if (side == 0) { /* the piece ends at w */
             if (record) {
                 cv->upper_out[cv->nu - 1u] = f->n[ir];
@@ -592,7 +774,7 @@ static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index
             r = w;
         }
     }
-    return VOR__NONE;
+    return VOR__NONE; /* a broken mesh only */
 }
 
 /* Does site v still need a triangle in its home slot (a cavity slot)? */
@@ -631,11 +813,12 @@ static uint32_t demand(const vor_index_t *demands, uint32_t lo, uint32_t hi)
  * caller); need_first and need_last say whether the base's ends take a
  * home from it. Returns the slot of the triangle on the base. `packed`
  * lists the cavity's free packed slots (*free_count of them). */
-static vor_index_t triangulate(vor_t *m, const vor_index_t *chain, const vor_index_t *outside,
-                               uint32_t n, cavity_t *cv, bool need_first, bool need_last,
-                               vor_index_t parent, uint32_t *free_count)
+static vor_index_t triangulate(struct vor__cdt *c, const vor_index_t *chain,
+                               const vor_index_t *outside, uint32_t n, cavity_t *cv,
+                               bool need_first, bool need_last, vor_index_t parent,
+                               uint32_t *free_count)
 {
-    vor__tri_t *tri = m->triangles;
+    vor__tri_t *tri = c->mesh.triangles;
     vor_index_t *stack = cv->stack;
     const vor_index_t *packed = cv->slots;
     vor_index_t root = VOR__NONE;
@@ -674,7 +857,7 @@ static vor_index_t triangulate(vor_t *m, const vor_index_t *chain, const vor_ind
             if ((chain[v] == chain[lo]) || (chain[v] == chain[hi])) {
                 continue;
             }
-            if ((apex == hi) || (vor__incircle(m, chain[lo], chain[hi], chain[apex], chain[v]) > 0)) {
+            if ((apex == hi) || (incircle(c, chain[lo], chain[hi], chain[apex], chain[v]) > 0)) {
                 apex = v;
             }
         }
@@ -800,15 +983,33 @@ static void fill_cavity(struct vor__cdt *c, cavity_t *cv)
     bool end_up = needs_home(m, end) && (room_up > 0u);
     bool from_down = needs_home(m, from) && !from_up;
     bool end_down = needs_home(m, end) && !end_up;
-    vor_index_t top = triangulate(m, cv->upper, cv->upper_out, cv->nu, cv, from_up, end_up,
+    vor_index_t top = triangulate(c, cv->upper, cv->upper_out, cv->nu, cv, from_up, end_up,
                                   VOR__NONE, &packed);
     link_spikes(tri, cv->upper, cv->upper_out, cv->nu, cv);
     count_demands(m, cv->lower, cv->nl, cv->demands);
-    vor_index_t bottom = triangulate(m, cv->lower, cv->lower_out, cv->nl, cv, end_down,
+    vor_index_t bottom = triangulate(c, cv->lower, cv->lower_out, cv->nl, cv, end_down,
                                      from_down, top, &packed);
     link_spikes(tri, cv->lower, cv->lower_out, cv->nl, cv);
     tri[top].n[2] = bottom;
     VOR_ASSERT(packed == 0u);
+}
+
+/* A free crossing id, holding the lines a-b and c-d (the caller checked
+ * room). */
+static vor_index_t new_crossing(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t p,
+                                vor_index_t q)
+{
+    uint32_t i = 0;
+    while ((i + 1u < c->max_crossings) && (c->crossings[4u * i] != VOR__NONE)) {
+        i++;
+    }
+    vor_index_t *e = &c->crossings[4u * i];
+    e[0] = a;
+    e[1] = b;
+    e[2] = p;
+    e[3] = q;
+    c->crossing_count++;
+    return (vor_index_t)(c->first_crossing + i);
 }
 
 int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
@@ -823,39 +1024,60 @@ int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
     vor_t *m = &c->mesh;
     cavity_t cv;
     cavity_init(&cv, c);
-    /* first every piece is checked, and the new edges counted */
+    /* first the whole segment is walked, nothing changed: its cuts
+     * checked, the new edges and crossings counted (a crossing splits the
+     * edge it crosses and adds a piece) */
     uint32_t added = 0;
+    uint32_t crossings = 0;
     vor_index_t from = (vor_index_t)a;
     for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
         vor_index_t slot;
-        vor_index_t next = first_step(m, from, (vor_index_t)b, &slot);
+        vor_index_t next = first_step(c, from, (vor_index_t)b, &slot);
         if (next == VOR__NONE) {
-            bool crossed;
             if (slot == VOR__NONE) {
                 return VOR_ERR_ARG; /* a broken mesh only */
             }
-            next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, false, &crossed);
+            uint32_t k = 0;
+            vor_index_t crossed[2];
+            next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, false, &k, crossed);
             if (next == VOR__NONE) {
-                return crossed ? VOR_ERR_CROSS : VOR_ERR_NOMEM;
+                return VOR_ERR_NOMEM;
             }
+            crossings += k;
+            added += (2u * k) + 1u;
+        } else {
+            added += vor__cdt_constrained(c, from, next) ? 0u : 1u;
         }
-        added += vor__cdt_constrained(c, from, next) ? 0u : 1u;
         from = next;
     }
-    if (c->edge_count + added > c->max_edges) {
+    if ((c->edge_count + added > c->max_edges) ||
+        (c->crossing_count + crossings > c->max_crossings)) {
         return VOR_ERR_NOMEM;
     }
-    /* then each piece is made an edge */
+    /* then piece by piece: a constrained edge in the way gets its crossing
+     * vertex (which splits it) and the piece ends there */
     from = (vor_index_t)a;
-    for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
+    uint32_t bound = m->max_sites + crossings + 1u;
+    for (uint32_t steps = 0; (from != b) && (steps < bound); steps++) {
         vor_index_t slot;
-        vor_index_t next = first_step(m, from, (vor_index_t)b, &slot);
+        vor_index_t next = first_step(c, from, (vor_index_t)b, &slot);
         if (next == VOR__NONE) {
-            bool crossed;
-            next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, true, &crossed);
+            uint32_t k = 0;
+            vor_index_t crossed[2];
+            next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, true, &k, crossed);
+            if (next == VOR__NONE) {
+                uint32_t e = vor__cdt_find(c, crossed[0], crossed[1]);
+                if (e == c->edge_slots) {
+                    break; /* a broken mesh only: the checks above saw it */
+                }
+                vor_index_t x = new_crossing(c, (vor_index_t)a, (vor_index_t)b, c->edges[e].line_a,
+                                             c->edges[e].line_b);
+                insert_vertex(c, x);
+                continue;
+            }
             fill_cavity(c, &cv);
         }
-        edge_add(c, from, next, 1u);
+        edge_add(c, from, next, (vor_index_t)a, (vor_index_t)b, 1u);
         from = next;
     }
     return VOR_OK;
@@ -879,19 +1101,21 @@ int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3])
     if ((it == NULL) || (it->d == NULL) || (ids == NULL)) {
         return 0;
     }
-    const vor_t *m = &it->d->cdt->mesh;
+    const struct vor__cdt *c = it->d->cdt;
+    const vor_t *m = &c->mesh;
     if (m->vertex_count < 2u) {
         return 0;
     }
     uint32_t end = vor__used_slots_end(m);
     for (uint32_t s = vor__next_used_slot(m, it->slot); s < end; s = vor__next_used_slot(m, s + 1u)) {
-        const vor__tri_t *t = &m->triangles[s];
-        if (vor__reported(m->sites, t)) {
-            vor_index_t v[3];
-            vor__vertices(t, v);
-            ids[0] = v[0];
-            ids[1] = v[1];
-            ids[2] = v[2];
+        vor_index_t w[3];
+        vor__vertices(&m->triangles[s], w);
+        /* of nonzero area: as vor_triangles_next reports the Delaunay ones */
+        if ((w[0] != VOR__INFINITE) && (w[1] != VOR__INFINITE) && (w[2] != VOR__INFINITE) &&
+            (exact_orient(c, w[0], w[1], w[2]) != 0)) {
+            ids[0] = w[0];
+            ids[1] = w[1];
+            ids[2] = w[2];
             it->slot = s + 1u;
             return 1;
         }

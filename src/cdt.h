@@ -17,23 +17,37 @@
 #include "vor.h"
 #include "vor_cdt.h"
 
-/* A constrained edge u < v and the number of constraints through it; u
- * is VOR__NONE in an empty entry. */
+/* A constrained edge u < v, the sites line_a, line_b of the constraint's
+ * line it lies on, and the number of constraints through it; u is
+ * VOR__NONE in an empty entry. */
 typedef struct vor__cdt_edge {
     vor_index_t u;
     vor_index_t v;
+    vor_index_t line_a;
+    vor_index_t line_b;
     uint32_t count;
 } vor__cdt_edge_t;
 
 typedef char vor__cdt_edge_size_check[(sizeof(vor__cdt_edge_t) == VOR_CDT_EDGE_BYTES) ? 1 : -1];
 
+/* The constrained triangulation's mesh is a vor_t whose vertex ids are the
+ * diagram's site ids, 0 .. first_crossing - 1 (its max_sites), and the
+ * crossing vertices' from first_crossing on, each with a home slot: the
+ * mesh's own max_sites is first_crossing + max_crossings, and its
+ * site_count that too, unused ids having empty home slots. */
 struct vor__cdt {
-    vor_t mesh;             /* the constrained triangulation */
-    vor__cdt_edge_t *edges; /* [edge_slots], open addressing */
-    uint32_t edge_slots;    /* 2 max_edges: the table at most half full */
+    vor_t mesh;                /* the constrained triangulation (first: cdt.c casts) */
+    vor__cdt_edge_t *edges;    /* [edge_slots], open addressing */
+    uint32_t edge_slots;       /* 2 max_edges: the table at most half full */
     uint32_t edge_count;
     uint32_t max_edges;
-    vor_index_t *scratch;   /* [6 (max_cut + 2)], one constraint's cut */
+    vor_index_t *crossings;    /* [4 max_crossings]: the sites a, b, c, d of
+                                  crossing first_crossing + i; VOR__NONE in
+                                  crossings[4 i] when id is free */
+    uint32_t first_crossing;
+    uint32_t max_crossings;
+    uint32_t crossing_count;
+    vor_index_t *scratch;      /* [13 (max_cut + 4)], one piece's cavity */
     uint32_t max_cut;
 };
 
@@ -89,9 +103,15 @@ static inline bool vor__cdt_constrained(const struct vor__cdt *c, vor_index_t a,
 #define VOR__CDT_REBUILT 3u
 int vor__cdt_update(vor_t *d, uint32_t p, unsigned event);
 
-/* Places site p of the constrained triangulation from triangle `root`,
+/* Places vertex p of the constrained triangulation from triangle `root`,
  * which holds it, never flipping a constrained edge (incremental.c). */
 void vor__insert_at_constrained(vor_t *mesh, vor_index_t root, uint32_t p,
-                                const struct vor__cdt *c);
+                                struct vor__cdt *c);
+
+/* Does the triangle (v0, v1, v2) of the constrained mesh (a triangle at
+ * infinity too) conflict with vertex p, under the perturbation? As
+ * vor__conflicts, for vertices that may be crossings (cdt.c). */
+bool vor__cdt_conflicts(struct vor__cdt *c, vor_index_t v0, vor_index_t v1, vor_index_t v2,
+                        uint32_t p);
 
 #endif

@@ -390,3 +390,14 @@ int vor__incircle_h_sos(const vor__hpoint_t *const v[4], const uint32_t ids[4])
     }
     return 0; /* distinct ids never get here */
 }
+
+int vor__compare_h(const vor__hpoint_t *p, const vor__hpoint_t *q, unsigned axis)
+{
+    /* p / pw - q / qw has the sign of p qw - q pw (pw, qw > 0) */
+    vor__limb a[ENTRY_LIMBS];
+    vor__limb b[ENTRY_LIMBS];
+    entry_product(a, (axis == 0u) ? p->x : p->y, q->w);
+    entry_product(b, (axis == 0u) ? q->x : q->y, p->w);
+    vor__mw_sub(a, b, ENTRY_LIMBS);
+    return vor__mw_sign(a, ENTRY_LIMBS);
+}

@@ -45,6 +45,9 @@ int vor__orient_h(const vor__hpoint_t *p, const vor__hpoint_t *q, const vor__hpo
 int vor__incircle_h(const vor__hpoint_t *p, const vor__hpoint_t *q, const vor__hpoint_t *r,
                     const vor__hpoint_t *s);
 
+/* The sign of p - q along axis 0 (x) or 1 (y). */
+int vor__compare_h(const vor__hpoint_t *p, const vor__hpoint_t *q, unsigned axis);
+
 /* The same under the symbolic perturbation, vertex k moved as the vertex
  * of index ids[k] (distinct): never 0. */
 int vor__orient_h_sos(const vor__hpoint_t *const v[3], const uint32_t ids[3]);

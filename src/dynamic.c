@@ -43,6 +43,43 @@ static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
     return (slot == v) && (v < d->max_sites);
 }
 
+/* The removal's predicates. On the constrained triangulation's own mesh
+ * (cdt.c), whose vertices may be crossing points, they go through its
+ * cdt_predicate; on a diagram (cdt_predicate NULL) straight to the sites'. */
+static int star_orient(vor_t *d, vor_index_t a, vor_index_t b, vor_index_t c)
+{
+    if (d->cdt_predicate != NULL) {
+        uint32_t ids[3] = {a, b, c};
+        return d->cdt_predicate(d, ids, 3u);
+    }
+    return vor__orient(d, a, b, c);
+}
+
+static int star_incircle(vor_t *d, vor_index_t a, vor_index_t b, vor_index_t c, vor_index_t y)
+{
+    if (d->cdt_predicate != NULL) {
+        uint32_t ids[4] = {a, b, c, y};
+        return d->cdt_predicate(d, ids, 4u);
+    }
+    return vor__incircle(d, a, b, c, y);
+}
+
+/* vor__conflicts through the two above. */
+static bool star_conflicts(vor_t *d, vor_index_t v0, vor_index_t v1, vor_index_t v2,
+                           vor_index_t y)
+{
+    if (v0 == VOR__INFINITE) {
+        return star_orient(d, v1, v2, y) > 0;
+    }
+    if (v1 == VOR__INFINITE) {
+        return star_orient(d, v2, v0, y) > 0;
+    }
+    if (v2 == VOR__INFINITE) {
+        return star_orient(d, v0, v1, y) > 0;
+    }
+    return star_incircle(d, v0, v1, v2, y) > 0;
+}
+
 /* In triangle `slot`, points the link that pointed at `from` at `to`. */
 static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_index_t to)
 {
@@ -154,7 +191,7 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
                             vor_index_t c, vor_index_t after)
 {
     if (a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE) &&
-        vor__orient(d, a, b, c) <= 0) {
+        star_orient(d, a, b, c) <= 0) {
         return false;
     }
     /* the other neighbours: second vertices of the star triangles after
@@ -169,7 +206,7 @@ static bool is_delaunay_ear(vor_t *d, vor_index_t p, vor_index_t a, vor_index_t 
             break;
         }
         /* infinity lies in no circle of finite sites */
-        if (y != VOR__INFINITE && vor__conflicts(d, a, b, c, y)) {
+        if (y != VOR__INFINITE && star_conflicts(d, a, b, c, y)) {
             return false;
         }
         slot = star_next(tri, slot, p);
@@ -327,7 +364,7 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
     vor_index_t b = st->nb[wrap(i + 1u, deg)];
     vor_index_t c = st->nb[wrap(i + 2u, deg)];
     bool finite = a != VOR__INFINITE && (b != VOR__INFINITE) && (c != VOR__INFINITE);
-    if (finite && vor__orient(d, a, b, c) <= 0) {
+    if (finite && star_orient(d, a, b, c) <= 0) {
         return false;
     }
     /* a hull ear (a vertex at infinity) is a hull edge u -> w, and a site
@@ -342,7 +379,7 @@ static bool star_ear_ok(vor_t *d, const star_t *st, uint32_t i)
         if (y == VOR__INFINITE) {
             continue; /* infinity lies in no circle of finite sites */
         }
-        if (finite ? (vor__incircle(d, a, b, c, y) > 0) : vor__orient(d, u, w, y) > 0) {
+        if (finite ? (star_incircle(d, a, b, c, y) > 0) : star_orient(d, u, w, y) > 0) {
             return false;
         }
     }

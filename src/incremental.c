@@ -177,7 +177,7 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t
  * constrained Delaunay triangulation; the diagram's own insertions pass
  * NULL, and the test compiles away in them. */
 VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
-                                     const struct vor__cdt *cdt)
+                                     struct vor__cdt *cdt)
 {
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
@@ -246,7 +246,8 @@ VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
         vor_index_t far = uv[apex];
         bool flippable = (cdt == NULL) || !vor__cdt_constrained(cdt, tv[1], tv[2]);
         if (flippable && !marked(d, far, infinity_marked) &&
-            vor__conflicts(d, uv[0], uv[1], uv[2], p)) {
+            ((cdt == NULL) ? vor__conflicts(d, uv[0], uv[1], uv[2], p)
+                           : vor__cdt_conflicts(cdt, uv[0], uv[1], uv[2], p))) {
             slot = flip(d, slot, sp, tv[1], tv[2], apex, far);
             set_mark(d, far, true, &infinity_marked);
             star++;
@@ -268,7 +269,7 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p)
 }
 
 void vor__insert_at_constrained(vor_t *mesh, vor_index_t root, uint32_t p,
-                                const struct vor__cdt *c)
+                                struct vor__cdt *c)
 {
     insert_at(mesh, root, p, c);
 }

@@ -54,6 +54,7 @@ int vor_init_checked(vor_t *d, void *arena, size_t arena_bytes, uint32_t max_sit
     d->motion_update = NULL;
     d->cdt = NULL; /* constraint memory is attached afterwards (vor_cdt_attach) */
     d->cdt_update = NULL;
+    d->cdt_predicate = NULL;
     d->motion_epoch = 0;
 #if VOR_STATS
     vor__stats_clear(&d->stats);

@@ -4,34 +4,43 @@
  * against an independent check of what it must be.
  *
  * The check reads only the public output (vor_cdt_triangles_next,
- * vor_cdt_edges_next) and decides with exact predicates:
+ * vor_cdt_edges_next, vor_cdt_crossing) and decides with exact
+ * predicates: the sites' own (vor_orient2d, vor_incircle), and for
+ * crossing vertices the homogeneous ones of src/crossing.h, which
+ * predicates/crossing_vectors checks against exact rationals:
  *   - every triangle is counterclockwise, every edge is on one triangle
  *     each way at most, and there are as many triangles as the Delaunay
- *     triangulation of the same sites has (a triangulation of the same
- *     point set: 2n - h - 2);
+ *     triangulation of the sites has plus two a crossing vertex (a
+ *     triangulation of the sites and the crossings, all inside the hull);
  *   - every edge on two triangles that is not constrained is locally
- *     Delaunay: the far vertex is not strictly inside the circle (exact
- *     vor_incircle), which makes it the constrained Delaunay triangulation;
- *   - the constrained edges are exactly the pieces of the constraints the
- *     test made: each segment cut at every site on it, found here by exact
- *     collinearity, and each is an edge of a triangle;
- *   - vor_constrain refuses exactly the segments that cross a kept one at
- *     a point that is no site (exact orientations).
+ *     Delaunay (the far vertex not strictly inside the circle), which
+ *     makes it the constrained Delaunay triangulation;
+ *   - every crossing vertex lies on its two lines and inside two of the
+ *     test's constraints, no two at one point nor at a site, and every two
+ *     constraints that cross at a point that is no site have one there;
+ *   - the constrained edges are exactly the pieces of the test's
+ *     constraints: each segment cut at every site and crossing vertex on
+ *     it, found here by exact collinearity and sorted along it.
  */
+#include "crossing.h"
 #include "test.h"
 #include "vor_cdt.h"
 
-#define CDT_SITES 160u
-#define CDT_CONSTRAINTS 96u
-#define CDT_EDGES (3u * CDT_SITES)
+#define CDT_SITES 120u
+#define CDT_CONSTRAINTS 24u
+#define CDT_CROSSINGS 200u
+#define CDT_VERTICES (CDT_SITES + CDT_CROSSINGS)
+#define CDT_EDGES (3u * CDT_VERTICES)
+#define CDT_CUT (2u * CDT_VERTICES + 2u)
 
 static uint8_t arena[VOR_ARENA_BYTES(CDT_SITES)] __attribute__((aligned(8)));
-static uint8_t memory[VOR_CDT_BYTES(CDT_SITES, CDT_EDGES, CDT_SITES)] __attribute__((aligned(8)));
+static uint8_t memory[VOR_CDT_BYTES(CDT_SITES, CDT_EDGES, CDT_CROSSINGS, CDT_CUT)]
+    __attribute__((aligned(8)));
 static uint8_t saved_arena[sizeof arena];
 static uint8_t saved_memory[sizeof memory];
+static const vor_cdt_limits_t limits = {CDT_EDGES, CDT_CROSSINGS, CDT_CUT};
 
-/* The test's own record of the diagram: points by id, and the
- * constraints it made. */
+/* The test's own record: points by site id, and the constraints made. */
 typedef struct {
     vor_point_t at[CDT_SITES];
     bool live[CDT_SITES];
@@ -42,71 +51,66 @@ typedef struct {
 
 static model_t model;
 
-/* The sign of v. */
-static int sign64(int64_t v)
+/* Vertex v of d's constrained triangulation (a site, or a crossing id
+ * from max_sites on) in homogeneous coordinates; false if v is neither. */
+static bool vertex_of(const vor_t *d, uint32_t v, vor__hpoint_t *h)
 {
-    return (v > 0) - (v < 0);
-}
-
-/* Does site m lie strictly inside segment a-b? On the line, m is inside
- * when the steps a -> m and m -> b point as a -> b does on both axes. */
-static bool strictly_inside(vor_point_t a, vor_point_t m, vor_point_t b)
-{
-    if (vor_orient2d(a, b, m) != 0) {
+    if (v < d->max_sites) {
+        vor__hpoint_site(h, model.at[v]);
+        return model.live[v];
+    }
+    uint32_t s[4];
+    if (vor_cdt_crossing(d, v, s) != VOR_OK) {
         return false;
     }
-    int sx = sign64((int64_t)b.x - a.x);
-    int sy = sign64((int64_t)b.y - a.y);
-    return (sign64((int64_t)m.x - a.x) == sx) && (sign64((int64_t)b.x - m.x) == sx) &&
-           (sign64((int64_t)m.y - a.y) == sy) && (sign64((int64_t)b.y - m.y) == sy) &&
-           ((sx != 0) || (sy != 0));
+    return vor__hpoint_crossing(h, model.at[s[0]], model.at[s[1]], model.at[s[2]],
+                                model.at[s[3]]);
 }
 
-/* |q - a| along a-b, for ordering collinear sites (the coordinate of
- * larger spread, so no product is needed). */
-static int64_t along(vor_point_t a, vor_point_t b, vor_point_t q)
+/* Is m strictly inside segment p-q (three collinear points)? */
+static bool inside(const vor__hpoint_t *p, const vor__hpoint_t *m, const vor__hpoint_t *q)
 {
-    int64_t dx = (int64_t)b.x - a.x;
-    int64_t dy = (int64_t)b.y - a.y;
-    int64_t ax = (dx < 0) ? -dx : dx;
-    int64_t ay = (dy < 0) ? -dy : dy;
-    return (ax >= ay) ? ((dx < 0) ? (a.x - (int64_t)q.x) : ((int64_t)q.x - a.x))
-                      : ((dy < 0) ? (a.y - (int64_t)q.y) : ((int64_t)q.y - a.y));
-}
-
-/* Do segments a-b and c-d cross at a point that is not a site? Proper
- * crossings only: a site on the other segment splits it there instead. */
-static bool crosses(const vor_t *d, vor_point_t a, vor_point_t b, vor_point_t c, vor_point_t e)
-{
-    int s1 = vor_orient2d(a, b, c);
-    int s2 = vor_orient2d(a, b, e);
-    int s3 = vor_orient2d(c, e, a);
-    int s4 = vor_orient2d(c, e, b);
-    if ((s1 * s2 >= 0) || (s3 * s4 >= 0)) {
-        return false;
-    }
-    for (uint32_t i = 0; i < d->site_count; i++) {
-        if (model.live[i] && strictly_inside(a, model.at[i], b) &&
-            strictly_inside(c, model.at[i], e)) {
-            return false; /* they meet at a site: both are split there */
+    bool any = false;
+    for (unsigned axis = 0; axis < 2u; axis++) {
+        int way = vor__compare_h(q, p, axis);
+        if ((vor__compare_h(m, p, axis) != way) || (vor__compare_h(q, m, axis) != way)) {
+            return false;
         }
+        any = any || (way != 0);
     }
-    return true;
+    return any;
+}
+
+static bool same_point(const vor__hpoint_t *p, const vor__hpoint_t *q)
+{
+    return (vor__compare_h(p, q, 0) == 0) && (vor__compare_h(p, q, 1) == 0);
+}
+
+/* Is vertex h strictly inside constraint k's segment? */
+static bool on_constraint(const vor__hpoint_t *h, uint32_t k)
+{
+    vor__hpoint_t a;
+    vor__hpoint_t b;
+    vor__hpoint_site(&a, model.at[model.a[k]]);
+    vor__hpoint_site(&b, model.at[model.b[k]]);
+    return (vor__orient_h(&a, &b, h) == 0) && inside(&a, h, &b);
 }
 
 /* An undirected edge as a sortable key, and the third vertex of the
- * triangle it came from (top bits: its direction). */
+ * triangle it came from, with its direction there. */
 typedef struct {
     uint64_t key;
     uint32_t apex;
     uint32_t forward;
 } half_edge_t;
 
-static half_edge_t halves[3u * 2u * CDT_SITES];
-static uint32_t pieces_a[CDT_EDGES];
-static uint32_t pieces_b[CDT_EDGES];
-static uint64_t piece_keys[CDT_EDGES];
+static half_edge_t halves[6u * CDT_VERTICES];
+static uint64_t got_keys[CDT_EDGES];
 static uint64_t expected_keys[CDT_EDGES];
+static uint32_t crossing_ids[CDT_CROSSINGS];
+static vor__hpoint_t crossing_points[CDT_CROSSINGS];
+static uint32_t on_ids[CDT_VERTICES];
+static vor__hpoint_t on_points[CDT_VERTICES];
 
 static uint64_t edge_key(uint32_t u, uint32_t v)
 {
@@ -148,7 +152,7 @@ static bool has_key(const uint64_t *k, uint32_t n, uint64_t key)
     uint32_t lo = 0;
     uint32_t hi = n;
     while (lo < hi) {
-        uint32_t mid = lo + (hi - lo) / 2u;
+        uint32_t mid = lo + ((hi - lo) / 2u);
         if (k[mid] < key) {
             lo = mid + 1u;
         } else {
@@ -158,51 +162,138 @@ static bool has_key(const uint64_t *k, uint32_t n, uint64_t key)
     return (lo < n) && (k[lo] == key);
 }
 
-/* The pieces of every constraint the test made, as sorted keys. */
-static uint32_t expected_pieces(const vor_t *d, uint64_t *keys)
+/* The crossing vertices of d, with their points; their number. */
+static uint32_t gather_crossings(const vor_t *d)
 {
     uint32_t n = 0;
-    for (uint32_t c = 0; c < model.constraints; c++) {
-        vor_point_t a = model.at[model.a[c]];
-        vor_point_t b = model.at[model.b[c]];
-        uint32_t from = model.a[c];
-        /* the sites on the segment, nearest first, by repeated search */
-        int64_t reached = 0;
-        for (;;) {
-            uint32_t next = model.b[c];
-            int64_t best = along(a, b, b);
-            for (uint32_t i = 0; i < d->site_count; i++) {
-                if (model.live[i] && strictly_inside(a, model.at[i], b)) {
-                    int64_t t = along(a, b, model.at[i]);
-                    if ((t > reached) && (t < best)) {
-                        best = t;
-                        next = i;
-                    }
-                }
-            }
-            uint64_t key = edge_key(from, next);
-            bool seen = false;
-            for (uint32_t k = 0; k < n; k++) {
-                seen = seen || (keys[k] == key);
-            }
-            if (!seen && (n < CDT_EDGES)) {
-                keys[n++] = key;
-            }
-            if (next == model.b[c]) {
-                break;
-            }
-            from = next;
-            reached = best;
+    for (uint32_t i = 0; (i < CDT_CROSSINGS) && (n < CDT_CROSSINGS); i++) {
+        if (vertex_of(d, d->max_sites + i, &crossing_points[n])) {
+            crossing_ids[n] = d->max_sites + i;
+            n++;
         }
     }
-    sort_keys(keys, n);
     return n;
+}
+
+/* The pieces of constraint k: the vertices strictly inside it, sorted
+ * along it, between its ends; added to keys[*n..] unless there. */
+static void add_pieces(const vor_t *d, uint32_t k, uint32_t crossings, uint64_t *keys,
+                       uint32_t *n)
+{
+    vor__hpoint_t a;
+    vor__hpoint_site(&a, model.at[model.a[k]]);
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < d->site_count; i++) {
+        vor__hpoint_t h;
+        vor__hpoint_site(&h, model.at[i]);
+        if (model.live[i] && on_constraint(&h, k)) {
+            on_ids[count] = i;
+            on_points[count] = h;
+            count++;
+        }
+    }
+    for (uint32_t i = 0; i < crossings; i++) {
+        if (on_constraint(&crossing_points[i], k)) {
+            on_ids[count] = crossing_ids[i];
+            on_points[count] = crossing_points[i];
+            count++;
+        }
+    }
+    /* insertion sort by distance from a: on a line, the coordinate that
+     * changes orders it (x unless the segment is vertical) */
+    vor__hpoint_t b;
+    vor__hpoint_site(&b, model.at[model.b[k]]);
+    unsigned axis = (vor__compare_h(&a, &b, 0) != 0) ? 0u : 1u;
+    int way = vor__compare_h(&b, &a, axis);
+    for (uint32_t i = 1; i < count; i++) {
+        for (uint32_t j = i; (j > 0u) && (vor__compare_h(&on_points[j - 1u], &on_points[j], axis) == way); j--) {
+            uint32_t id = on_ids[j];
+            vor__hpoint_t h = on_points[j];
+            on_ids[j] = on_ids[j - 1u];
+            on_points[j] = on_points[j - 1u];
+            on_ids[j - 1u] = id;
+            on_points[j - 1u] = h;
+        }
+    }
+    uint32_t from = model.a[k];
+    for (uint32_t i = 0; i <= count; i++) {
+        uint32_t to = (i < count) ? on_ids[i] : model.b[k];
+        uint64_t key = edge_key(from, to);
+        bool seen = false;
+        for (uint32_t j = 0; (j < *n) && !seen; j++) {
+            seen = keys[j] == key;
+        }
+        if (!seen && (*n < CDT_EDGES)) {
+            keys[(*n)++] = key;
+        }
+        from = to;
+    }
+}
+
+/* Do constraints j and k cross at a point that is no site? */
+static bool cross_off_sites(const vor_t *d, uint32_t j, uint32_t k)
+{
+    vor_point_t a = model.at[model.a[j]];
+    vor_point_t b = model.at[model.b[j]];
+    vor_point_t c = model.at[model.a[k]];
+    vor_point_t e = model.at[model.b[k]];
+    if ((vor_orient2d(a, b, c) * vor_orient2d(a, b, e) >= 0) ||
+        (vor_orient2d(c, e, a) * vor_orient2d(c, e, b) >= 0)) {
+        return false;
+    }
+    vor__hpoint_t x;
+    (void)vor__hpoint_crossing(&x, a, b, c, e);
+    for (uint32_t i = 0; i < d->site_count; i++) {
+        vor__hpoint_t h;
+        vor__hpoint_site(&h, model.at[i]);
+        if (model.live[i] && same_point(&h, &x)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 /* The checks of the file comment; returns the number of violations. */
 static unsigned long check_cdt(const vor_t *d)
 {
     unsigned long bad = 0;
+    uint32_t crossings = gather_crossings(d);
+    /* crossing vertices: on their lines, in two constraints, distinct */
+    for (uint32_t i = 0; i < crossings; i++) {
+        uint32_t s[4];
+        (void)vor_cdt_crossing(d, crossing_ids[i], s);
+        vor__hpoint_t h[4];
+        for (unsigned k = 0; k < 4u; k++) {
+            vor__hpoint_site(&h[k], model.at[s[k]]);
+        }
+        bad += (vor__orient_h(&h[0], &h[1], &crossing_points[i]) == 0) ? 0u : 1u;
+        bad += (vor__orient_h(&h[2], &h[3], &crossing_points[i]) == 0) ? 0u : 1u;
+        uint32_t through = 0;
+        for (uint32_t k = 0; k < model.constraints; k++) {
+            through += on_constraint(&crossing_points[i], k) ? 1u : 0u;
+        }
+        bad += (through >= 2u) ? 0u : 1u;
+        for (uint32_t j = 0; j < i; j++) {
+            bad += same_point(&crossing_points[i], &crossing_points[j]) ? 1u : 0u;
+        }
+        for (uint32_t j = 0; j < d->site_count; j++) {
+            vor__hpoint_t p;
+            vor__hpoint_site(&p, model.at[j]);
+            bad += (model.live[j] && same_point(&p, &crossing_points[i])) ? 1u : 0u;
+        }
+    }
+    for (uint32_t j = 0; j < model.constraints; j++) {
+        for (uint32_t k = 0; k < j; k++) {
+            if (!cross_off_sites(d, j, k)) {
+                continue;
+            }
+            bool found = false;
+            for (uint32_t i = 0; (i < crossings) && !found; i++) {
+                found = on_constraint(&crossing_points[i], j) && on_constraint(&crossing_points[i], k);
+            }
+            bad += found ? 0u : 1u;
+        }
+    }
     /* the triangles, as half-edges */
     vor_cdt_triangle_iter_t it;
     uint32_t ids[3];
@@ -211,7 +302,12 @@ static unsigned long check_cdt(const vor_t *d)
     (void)vor_cdt_triangles_begin(&it, d);
     while (vor_cdt_triangles_next(&it, ids) == 1) {
         triangles++;
-        bad += (vor_orient2d(model.at[ids[0]], model.at[ids[1]], model.at[ids[2]]) > 0) ? 0u : 1u;
+        vor__hpoint_t h[3];
+        bool known = true;
+        for (unsigned k = 0; k < 3u; k++) {
+            known = known && vertex_of(d, ids[k], &h[k]);
+        }
+        bad += (known && (vor__orient_h(&h[0], &h[1], &h[2]) > 0)) ? 0u : 1u;
         for (unsigned k = 0; (k < 3u) && (nh < sizeof halves / sizeof halves[0]); k++) {
             uint32_t u = ids[(k + 1u) % 3u];
             uint32_t v = ids[(k + 2u) % 3u];
@@ -227,7 +323,7 @@ static unsigned long check_cdt(const vor_t *d)
     while (vor_triangles_next(&dt, ids) == 1) {
         delaunay++;
     }
-    bad += (triangles == delaunay) ? 0u : 1u;
+    bad += (triangles == delaunay + ((delaunay > 0u) ? 2u * crossings : 0u)) ? 0u : 1u;
     /* the constrained edges */
     uint32_t np = 0;
     vor_cdt_edge_iter_t e;
@@ -235,15 +331,9 @@ static unsigned long check_cdt(const vor_t *d)
     uint32_t b;
     (void)vor_cdt_edges_begin(&e, d);
     while ((vor_cdt_edges_next(&e, &a, &b) == 1) && (np < CDT_EDGES)) {
-        pieces_a[np] = a;
-        pieces_b[np] = b;
-        np++;
+        got_keys[np++] = edge_key(a, b);
     }
-    uint64_t *got = piece_keys;
-    for (uint32_t i = 0; i < np; i++) {
-        got[i] = edge_key(pieces_a[i], pieces_b[i]);
-    }
-    sort_keys(got, np);
+    sort_keys(got_keys, np);
     sort_halves(halves, nh);
     /* each edge once each way at most; locally Delaunay unless constrained */
     for (uint32_t i = 0; i < nh;) {
@@ -251,32 +341,37 @@ static unsigned long check_cdt(const vor_t *d)
         while ((j < nh) && (halves[j].key == halves[i].key)) {
             j++;
         }
-        if (j - i > 2u || ((j - i == 2u) && (halves[i].forward == halves[i + 1u].forward))) {
+        if ((j - i > 2u) || ((j - i == 2u) && (halves[i].forward == halves[i + 1u].forward))) {
             bad++;
-        } else if ((j - i == 2u) && !has_key(got, np, halves[i].key)) {
+        } else if ((j - i == 2u) && !has_key(got_keys, np, halves[i].key)) {
             uint32_t u = (uint32_t)(halves[i].key >> 32);
             uint32_t v = (uint32_t)halves[i].key;
-            uint32_t w = halves[i].apex;
-            uint32_t z = halves[i + 1u].apex;
+            vor__hpoint_t h[4];
             /* (u, v, w) counterclockwise when u -> v runs forward in w's triangle */
-            vor_point_t p = model.at[halves[i].forward ? u : v];
-            vor_point_t q = model.at[halves[i].forward ? v : u];
-            bad += (vor_incircle(p, q, model.at[w], model.at[z]) > 0) ? 1u : 0u;
+            (void)vertex_of(d, halves[i].forward ? u : v, &h[0]);
+            (void)vertex_of(d, halves[i].forward ? v : u, &h[1]);
+            (void)vertex_of(d, halves[i].apex, &h[2]);
+            (void)vertex_of(d, halves[i + 1u].apex, &h[3]);
+            bad += (vor__incircle_h(&h[0], &h[1], &h[2], &h[3]) > 0) ? 1u : 0u;
         } else {
             /* a hull edge, or a constrained one */
         }
         i = j;
     }
     /* the constrained edges are the constraints' pieces, each an edge */
-    uint32_t ne = expected_pieces(d, expected_keys);
+    uint32_t ne = 0;
+    for (uint32_t k = 0; k < model.constraints; k++) {
+        add_pieces(d, k, crossings, expected_keys, &ne);
+    }
+    sort_keys(expected_keys, ne);
     bad += (ne == np) ? 0u : 1u;
     for (uint32_t i = 0; (i < ne) && (i < np); i++) {
-        bad += (expected_keys[i] == got[i]) ? 0u : 1u;
+        bad += (expected_keys[i] == got_keys[i]) ? 0u : 1u;
     }
     for (uint32_t i = 0; (triangles > 0u) && (i < np); i++) {
         bool found = false;
         for (uint32_t k = 0; (k < nh) && !found; k++) {
-            found = halves[k].key == got[i];
+            found = halves[k].key == got_keys[i];
         }
         bad += found ? 0u : 1u;
     }
@@ -337,34 +432,16 @@ static bool ends_constraint(const vor_t *d, uint32_t s)
     return false;
 }
 
-/* Random constraints between random sites: each accepted or refused as
- * the model says, and the whole checked after each. */
-static void constrain_random(vor_t *d, test_rng_t *rng, uint32_t tries, unsigned long *bad,
-                             unsigned long *refused)
+/* Random constraints between random sites, each checked after. */
+static void constrain_random(vor_t *d, test_rng_t *rng, uint32_t count, unsigned long *bad)
 {
-    for (uint32_t k = 0; (k < tries) && (model.constraints < CDT_CONSTRAINTS); k++) {
+    for (uint32_t k = 0; (k < 4u * count) && (model.constraints < count); k++) {
         uint32_t a = test_rng_u32(rng) % d->site_count;
         uint32_t b = test_rng_u32(rng) % d->site_count;
         if (!model.live[a] || !model.live[b] || (a == b)) {
             continue;
         }
-        bool cross = false;
-        for (uint32_t c = 0; (c < model.constraints) && !cross; c++) {
-            cross = crosses(d, model.at[a], model.at[b], model.at[model.a[c]],
-                            model.at[model.b[c]]);
-        }
-        test_copy_bytes(saved_arena, arena, sizeof arena);
-        test_copy_bytes(saved_memory, memory, sizeof memory);
         int err = vor_constrain(d, a, b);
-        if (cross) {
-            *bad += (err == VOR_ERR_CROSS) ? 0u : 1u;
-            *bad += (test_same_bytes(saved_arena, arena, sizeof arena) &&
-                     test_same_bytes(saved_memory, memory, sizeof memory))
-                        ? 0u
-                        : 1u;
-            *refused += 1u;
-            continue;
-        }
         *bad += (err == VOR_OK) ? 0u : 1u;
         if (err == VOR_OK) {
             model.a[model.constraints] = a;
@@ -375,30 +452,32 @@ static void constrain_random(vor_t *d, test_rng_t *rng, uint32_t tries, unsigned
     }
 }
 
-/* Random sites, random constraints, then sites inserted (some on the
- * constraints: they split them), removed and moved (the ends of
- * constrained edges refused, nothing changed), each step checked. */
+/* Random sites, random constraints (crossing each other), then sites
+ * inserted (some on the constraints: they split them), removed and moved
+ * (the ends of constrained edges refused, nothing changed), each step
+ * checked. */
 static void check_random(unsigned kind, uint64_t seed)
 {
     test_rng_t rng;
     test_rng_seed(&rng, seed);
     unsigned long bad = 0;
-    unsigned long refused = 0;
     unsigned long kept_ends = 0;
-    for (unsigned round = 0; round < 4u; round++) {
+    unsigned long crossings = 0;
+    for (unsigned round = 0; round < 3u; round++) {
         vor_t d;
         model_clear();
         (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
-        uint32_t n = 30u + (test_rng_u32(&rng) % 70u);
+        uint32_t n = 30u + (test_rng_u32(&rng) % 60u);
         for (uint32_t i = 0; i < n; i++) {
             (void)insert_random(&d, &rng, kind);
             if (i == n / 2u) { /* attached to a diagram half built */
-                bad += (vor_cdt_attach(&d, memory, sizeof memory, CDT_EDGES, CDT_SITES) == VOR_OK) ? 0u : 1u;
+                bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
             }
         }
         bad += check_cdt(&d);
-        constrain_random(&d, &rng, 60, &bad, &refused);
-        for (uint32_t k = 0; k < 40u; k++) {
+        constrain_random(&d, &rng, 6u + (test_rng_u32(&rng) % 10u), &bad);
+        crossings += gather_crossings(&d);
+        for (uint32_t k = 0; k < 30u; k++) {
             uint32_t s = test_rng_u32(&rng) % d.site_count;
             unsigned op = test_rng_u32(&rng) % 3u;
             if (op == 0u) {
@@ -431,11 +510,23 @@ static void check_random(unsigned kind, uint64_t seed)
             bad += check_cdt(&d);
         }
     }
-    test_printf("cdt random (%u): %lu constraints refused as crossing, %lu ends kept\n", kind,
-                refused, kept_ends);
+    test_printf("cdt random (%u): %lu crossing vertices, %lu ends kept\n", kind, crossings,
+                kept_ends);
     CHECK(bad == 0, "cdt random (%u): %lu violations", kind, bad);
-    CHECK(refused > 0u && kept_ends > 0u, "cdt random (%u): refused %lu, ends kept %lu", kind,
-          refused, kept_ends);
+    CHECK(crossings > 0u && kept_ends > 0u, "cdt random (%u): crossings %lu, ends kept %lu",
+          kind, crossings, kept_ends);
+}
+
+/* Inserts the points, noting them. */
+static void insert_all(vor_t *d, const vor_point_t *p, unsigned n)
+{
+    for (unsigned i = 0; i < n; i++) {
+        uint32_t id;
+        if (vor_insert(d, p[i], &id) == VOR_OK) {
+            model.at[id] = p[i];
+            model.live[id] = true;
+        }
+    }
 }
 
 /* The calls' documented errors, each leaving everything as it was. */
@@ -444,30 +535,32 @@ static void check_errors(void)
     vor_t d;
     model_clear();
     (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
-    CHECK(vor_constrain(&d, 0, 1) == VOR_ERR_ARG, "vor_constrain(&d, 0, 1) == VOR_ERR_ARG"); /* nothing attached */
-    CHECK(vor_cdt_attach(NULL, memory, sizeof memory, 4, 4) == VOR_ERR_ARG, "vor_cdt_attach(NULL, memory, sizeof memory, 4, 4) == VOR_ERR_ARG");
-    CHECK(vor_cdt_attach(&d, NULL, sizeof memory, 4, 4) == VOR_ERR_ARG, "vor_cdt_attach(&d, NULL, sizeof memory, 4, 4) == VOR_ERR_ARG");
-    CHECK(vor_cdt_attach(&d, memory, sizeof memory, 0, 4) == VOR_ERR_ARG, "vor_cdt_attach(&d, memory, sizeof memory, 0, 4) == VOR_ERR_ARG");
-    CHECK(vor_cdt_attach(&d, memory + 1, sizeof memory - 1u, 4, 4) == VOR_ERR_ALIGN, "vor_cdt_attach(&d, memory + 1, sizeof memory - 1u, 4, 4) == VOR_ERR_ALIGN");
-    CHECK(vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 4) - 1u, 4, 4) ==
-            VOR_ERR_NOMEM, "vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 4) - 1u, 4, 4) ==             VOR_ERR_NOMEM");
-    CHECK(d.cdt == NULL, "d.cdt == NULL");
+    vor_cdt_limits_t small = {4, 1, 4};
+    vor_cdt_limits_t none = {0, 1, 4};
+    CHECK(vor_constrain(&d, 0, 1) == VOR_ERR_ARG, "constrain without memory");
+    CHECK(vor_cdt_attach(NULL, memory, sizeof memory, &small) == VOR_ERR_ARG, "attach to NULL");
+    CHECK(vor_cdt_attach(&d, NULL, sizeof memory, &small) == VOR_ERR_ARG, "attach NULL memory");
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, NULL) == VOR_ERR_ARG, "attach no limits");
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, &none) == VOR_ERR_ARG, "attach no edges");
+    CHECK(vor_cdt_attach(&d, memory + 1, sizeof memory - 1u, &small) == VOR_ERR_ALIGN,
+          "attach misaligned");
+    CHECK(vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 1, 4) - 1u, &small) ==
+              VOR_ERR_NOMEM,
+          "attach one byte short");
+    CHECK(d.cdt == NULL, "a failed attach attached");
     /* a square with its centre, and two sites across its diagonals */
     static const vor_point_t square[] = {{0, 0},   {100, 0}, {100, 100}, {0, 100},
                                          {50, 50}, {20, 70}, {90, 30}};
-    for (unsigned i = 0; i < 7u; i++) {
-        uint32_t id;
-        (void)vor_insert(&d, square[i], &id);
-        model.at[id] = square[i];
-        model.live[id] = true;
-    }
+    insert_all(&d, square, 7);
     /* a cut of no triangle: only the edges there are can be constrained */
-    CHECK(vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 40, 0), 40, 0) == VOR_OK, "attach with no cut");
-    CHECK(vor_constrain(&d, 0, 99) == VOR_ERR_ARG, "vor_constrain(&d, 0, 99) == VOR_ERR_ARG");
-    CHECK(vor_constrain(NULL, 0, 1) == VOR_ERR_ARG, "vor_constrain(NULL, 0, 1) == VOR_ERR_ARG");
-    CHECK(vor_constrain(&d, 2, 2) == VOR_OK, "vor_constrain(&d, 2, 2) == VOR_OK");
+    vor_cdt_limits_t uncut = {40, 4, 0};
+    CHECK(vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 40, 4, 0), &uncut) == VOR_OK,
+          "attach with no cut");
+    CHECK(vor_constrain(&d, 0, 99) == VOR_ERR_ARG, "constrain a free id");
+    CHECK(vor_constrain(NULL, 0, 1) == VOR_ERR_ARG, "constrain NULL");
+    CHECK(vor_constrain(&d, 2, 2) == VOR_OK, "constrain a site to itself");
     test_copy_bytes(saved_memory, memory, sizeof memory);
-    unsigned too_long = 0; /* every segment that is no edge crosses a triangle */
+    unsigned too_long = 0;
     for (uint32_t a = 0; a < 7u; a++) {
         for (uint32_t b = a + 1u; b < 7u; b++) {
             int err = vor_constrain(&d, a, b);
@@ -479,9 +572,11 @@ static void check_errors(void)
         }
     }
     CHECK(too_long > 0u, "no segment crossed a triangle");
-    CHECK(vor_cdt_attach(&d, memory, sizeof memory, 4, CDT_SITES) == VOR_OK, "vor_cdt_attach(&d, memory, sizeof memory, 4, CDT_SITES) == VOR_OK");
-    CHECK(vor_constrain(&d, 0, 2) == VOR_OK, "vor_constrain(&d, 0, 2) == VOR_OK"); /* 0-4, 4-2 */
-    CHECK(vor_constrain(&d, 1, 3) == VOR_OK, "vor_constrain(&d, 1, 3) == VOR_OK"); /* meets it at the site 4 */
+    /* room for 5 edges and one crossing */
+    vor_cdt_limits_t few = {5, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, &few) == VOR_OK, "attach again");
+    CHECK(vor_constrain(&d, 0, 2) == VOR_OK, "constrain 0-2: 0-4, 4-2");
+    CHECK(vor_constrain(&d, 1, 3) == VOR_OK, "constrain 1-3: meets 0-2 at the site 4");
     model.a[0] = 0;
     model.b[0] = 2;
     model.a[1] = 1;
@@ -490,32 +585,39 @@ static void check_errors(void)
     CHECK(check_cdt(&d) == 0u, "the constrained triangulation");
     test_copy_bytes(saved_memory, memory, sizeof memory);
     test_copy_bytes(saved_arena, arena, sizeof arena);
-    CHECK(vor_constrain(&d, 5, 6) == VOR_ERR_CROSS, "vor_constrain(&d, 5, 6) == VOR_ERR_CROSS");
-    CHECK(test_same_bytes(saved_memory, memory, sizeof memory), "crossing changed the memory"); /* off any site */
-    CHECK(vor_constrain(&d, 5, 0) == VOR_ERR_NOMEM, "vor_constrain(&d, 5, 0) == VOR_ERR_NOMEM");
-    CHECK(test_same_bytes(saved_memory, memory, sizeof memory), "a full table changed the memory"); /* a fifth edge */
-    CHECK(vor_remove(&d, 4) == VOR_ERR_CONSTRAINED, "vor_remove(&d, 4) == VOR_ERR_CONSTRAINED");
-    CHECK(test_same_bytes(saved_memory, memory, sizeof memory), "a refused removal changed the memory");
+    /* 5-6 crosses 0-4 and 4-1 off any site: two crossings, 4 more edges */
+    CHECK(vor_constrain(&d, 5, 6) == VOR_ERR_NOMEM, "two crossings where one fits");
+    CHECK(test_same_bytes(saved_memory, memory, sizeof memory), "an overflow changed the memory");
+    CHECK(vor_remove(&d, 4) == VOR_ERR_CONSTRAINED, "remove a constrained site");
+    CHECK(test_same_bytes(saved_memory, memory, sizeof memory), "a refused removal changed it");
     vor_point_t away = {30, 60};
-    CHECK(vor_move(&d, 0, away, NULL) == VOR_ERR_CONSTRAINED, "vor_move(&d, 0, away, NULL) == VOR_ERR_CONSTRAINED");
+    CHECK(vor_move(&d, 0, away, NULL) == VOR_ERR_CONSTRAINED, "move a constrained site");
     CHECK(test_same_bytes(saved_memory, memory, sizeof memory) &&
-            test_same_bytes(saved_arena, arena, sizeof arena), "test_same_bytes(saved_memory, memory, sizeof memory) &&             test_same_bytes(saved_arena, arena, sizeof arena)");
+              test_same_bytes(saved_arena, arena, sizeof arena),
+          "a refused move changed the memory");
     /* a site landing on a constrained edge when the table is full */
+    CHECK(vor_constrain(&d, 5, 0) == VOR_OK, "a fifth edge");
+    model.a[2] = 5;
+    model.b[2] = 0;
+    model.constraints = 3;
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    test_copy_bytes(saved_arena, arena, sizeof arena);
     uint32_t id;
     vor_point_t on_edge = {25, 25};
-    CHECK(vor_insert(&d, on_edge, &id) == VOR_ERR_NOMEM, "vor_insert(&d, on_edge, &id) == VOR_ERR_NOMEM");
+    CHECK(vor_insert(&d, on_edge, &id) == VOR_ERR_NOMEM, "a split in a full table");
     CHECK(test_same_bytes(saved_memory, memory, sizeof memory) &&
-            test_same_bytes(saved_arena, arena, sizeof arena), "test_same_bytes(saved_memory, memory, sizeof memory) &&             test_same_bytes(saved_arena, arena, sizeof arena)");
+              test_same_bytes(saved_arena, arena, sizeof arena),
+          "a refused insertion changed the memory");
     CHECK(check_cdt(&d) == 0u, "the constrained triangulation");
     /* a build starts the constrained triangulation again, unconstrained */
-    CHECK(vor_build(&d, square, 7, NULL, NULL) == VOR_OK, "vor_build(&d, square, 7, NULL, NULL) == VOR_OK");
+    CHECK(vor_build(&d, square, 7, NULL, NULL) == VOR_OK, "build");
     model.constraints = 0;
     CHECK(!ends_constraint(&d, 4), "constraints after a build");
-    CHECK(check_cdt(&d) == 0u, "the constrained triangulation");
+    CHECK(check_cdt(&d) == 0u, "the constrained triangulation after a build");
 }
 
 /* Constraints along the lines of a grid, through its sites, overlapping
- * and repeated: every edge of a line becomes a constrained edge once. */
+ * and repeated, and its two diagonals crossing between sites. */
 static void check_grid_lines(void)
 {
     vor_t d;
@@ -525,31 +627,58 @@ static void check_grid_lines(void)
     for (int32_t y = 0; y < 8; y++) {
         for (int32_t x = 0; x < 8; x++) {
             vor_point_t p = {x * 3, y * 3};
-            uint32_t id;
-            (void)vor_insert(&d, p, &id);
-            model.at[id] = p;
-            model.live[id] = true;
+            insert_all(&d, &p, 1);
         }
     }
-    bad += (vor_cdt_attach(&d, memory, sizeof memory, CDT_EDGES, CDT_SITES) == VOR_OK) ? 0u : 1u;
-    /* rows, columns, diagonals, and overlapping pieces of them */
-    static const uint32_t lines[][2] = {{0, 7}, {8, 15}, {0, 56}, {7, 63}, {0, 63}, {2, 5},
-                                        {1, 6}, {56, 63}, {24, 31}, {27, 30}, {3, 59}, {0, 63}};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    static const uint32_t lines[][2] = {{0, 7},  {8, 15},  {0, 56},  {7, 63}, {0, 63},
+                                        {2, 5},  {1, 6},   {56, 7},  {24, 31}, {27, 30},
+                                        {3, 59}, {0, 63},  {16, 47}, {40, 23}};
     for (unsigned k = 0; k < sizeof lines / sizeof lines[0]; k++) {
-        int err = vor_constrain(&d, lines[k][0], lines[k][1]);
-        bad += (err == VOR_OK) ? 0u : 1u;
+        bad += (vor_constrain(&d, lines[k][0], lines[k][1]) == VOR_OK) ? 0u : 1u;
         model.a[model.constraints] = lines[k][0];
         model.b[model.constraints] = lines[k][1];
         model.constraints++;
         bad += check_cdt(&d);
     }
-    CHECK(bad == 0, "cdt grid lines: %lu wrong", bad);
+    uint32_t crossings = gather_crossings(&d);
+    CHECK(bad == 0 && crossings > 0u, "cdt grid lines: %lu wrong, %u crossings", bad,
+          (unsigned)crossings);
+}
+
+/* Many constraints through one point: a star of segments through the
+ * centre of a ring, which is no site: one crossing vertex. */
+static void check_star(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    /* 12 lattice points of the circle of radius 5 k, around (1, 1) / 2 */
+    static const int32_t ring[12][2] = {{5, 0},  {4, 3},  {3, 4},  {0, 5},  {-3, 4}, {-4, 3},
+                                        {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+    for (unsigned i = 0; i < 12u; i++) {
+        vor_point_t p = {2 * 1000 * ring[i][0] + 1, 2 * 1000 * ring[i][1] + 1};
+        insert_all(&d, &p, 1);
+    }
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t i = 0; i < 6u; i++) { /* opposite points: all through (1, 1) */
+        bad += (vor_constrain(&d, i, i + 6u) == VOR_OK) ? 0u : 1u;
+        model.a[model.constraints] = i;
+        model.b[model.constraints] = i + 6u;
+        model.constraints++;
+        bad += check_cdt(&d);
+    }
+    uint32_t crossings = gather_crossings(&d);
+    CHECK(bad == 0 && crossings == 1u, "cdt star: %lu wrong, %u crossings (1 expected)", bad,
+          (unsigned)crossings);
 }
 
 void test_cdt(void)
 {
     TEST_CASE("errors") check_errors();
     TEST_CASE("grid_lines") check_grid_lines();
+    TEST_CASE("star") check_star();
     TEST_CASE("random/grid") check_random(0, 11);
     TEST_CASE("random/box") check_random(1, 12);
     TEST_CASE("random/full_range") check_random(2, 13);

@@ -61,7 +61,6 @@ const char *cli_error_text(int err)
     case VOR_ERR_BUFFER: return "VOR_ERR_BUFFER: the caller's buffer is too small";
     case VOR_ERR_CONFIG: return "VOR_ERR_CONFIG: library and tool were compiled with different vor_config.h";
     case VOR_ERR_STOPPED: return "VOR_ERR_STOPPED: the raster's flush asked to stop";
-    case VOR_ERR_CROSS: return "VOR_ERR_CROSS: the constraint crosses a constrained edge";
     case VOR_ERR_CONSTRAINED: return "VOR_ERR_CONSTRAINED: a constrained edge ends at the site";
     default: return "unknown error code";
     }
