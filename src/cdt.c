@@ -534,8 +534,86 @@ static bool ends_constraint(const struct vor__cdt *c, uint32_t p)
     return false;
 }
 
+/* The crossing vertex of triangle `root` at exactly site p's point, or
+ * VOR__NONE. (The perturbed p lies in a triangle of that vertex's: they
+ * cover a neighbourhood of it.) */
+static vor_index_t crossing_at(const struct vor__cdt *c, vor_index_t root, vor_index_t p)
+{
+    vor_index_t v[3];
+    vor__vertices(&c->mesh.triangles[root], v);
+    vor__hpoint_t h;
+    hpoint_of(c, p, &h);
+    for (unsigned k = 0; (k < 3u) && (c->crossing_count > 0u); k++) {
+        if (is_crossing(c, v[k])) {
+            vor__hpoint_t x;
+            hpoint_of(c, v[k], &x);
+            if ((vor__compare_h(&x, &h, 0) == 0) && (vor__compare_h(&x, &h, 1) == 0)) {
+                return v[k];
+            }
+        }
+    }
+    return VOR__NONE;
+}
+
+/* Site p, inserted exactly at crossing vertex x, takes its place: every
+ * triangle of x names p instead, x's home triangle moves to p's (empty)
+ * home slot, and x's constrained edges become p's. No predicate: the
+ * triangulation is the same. */
+static void take_over(struct vor__cdt *c, vor_index_t x, vor_index_t p)
+{
+    vor_t *m = &c->mesh;
+    vor__tri_t *tri = m->triangles;
+    vor_index_t slot = x;
+    for (uint32_t left = m->vertex_count + 1u; left > 0u; left--) {
+        vor__tri_t *t = &tri[slot];
+        unsigned i = vor__vertex_index(t, x);
+        if (i == 3u) {
+            break; /* a broken mesh only */
+        }
+        vor_index_t next = t->n[vor__prev(i)];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        v[i] = p;
+        vor__tri_set(t, v[0], v[1], v[2], t->n[0], t->n[1], t->n[2]);
+        slot = next;
+        if (slot == x) {
+            break;
+        }
+    }
+    vor_index_t v[3];
+    vor__vertices(&tri[x], v);
+    vor__tri_fresh(&tri[p]);
+    vor__tri_set(&tri[p], v[0], v[1], v[2], tri[x].n[0], tri[x].n[1], tri[x].n[2]);
+    for (unsigned k = 0; k < 3u; k++) {
+        vor__tri_t *o = &tri[tri[p].n[k]];
+        unsigned j = vor__neighbour_index(o, x);
+        if (j != 3u) {
+            o->n[j] = p;
+        }
+    }
+    vor__tri_fresh(&tri[x]);
+    tri[x].n[0] = VOR__NONE;
+    vor_neighbour_iter_t it;
+    uint32_t n;
+    uint32_t third;
+    vor__fan_begin(&it, m, p);
+    while (vor__fan_next(&it, &n, &third)) {
+        uint32_t e = vor__cdt_find(c, x, (vor_index_t)n);
+        if (e != c->edge_slots) {
+            vor_index_t la = c->edges[e].line_a;
+            vor_index_t lb = c->edges[e].line_b;
+            uint32_t count = c->edges[e].count;
+            edge_remove(c, e);
+            edge_add(c, p, (vor_index_t)n, la, lb, count);
+        }
+    }
+    c->crossings[4u * (x - c->first_crossing)] = VOR__NONE;
+    c->crossing_count--;
+}
+
 /* Places vertex p (a site, d->sites[p] its point, or a crossing) in the
- * constrained mesh; a constrained edge holding p exactly is split. */
+ * constrained mesh; a constrained edge holding p exactly is split, and a
+ * crossing vertex at p's point gives p its place. */
 static void insert_vertex(struct vor__cdt *c, uint32_t p)
 {
     vor_t *m = &c->mesh;
@@ -543,6 +621,12 @@ static void insert_vertex(struct vor__cdt *c, uint32_t p)
         vor__make_edge(m, m->last_site, p);
     } else if (m->vertex_count >= 2u) {
         vor_index_t root = locate(c, (vor_index_t)m->last_site, p);
+        vor_index_t x = is_crossing(c, (vor_index_t)p) ? VOR__NONE : crossing_at(c, root, (vor_index_t)p);
+        if (x != VOR__NONE) {
+            take_over(c, x, (vor_index_t)p);
+            m->last_site = p;
+            return;
+        }
         vor_index_t su;
         vor_index_t sv;
         uint32_t split = find_split(c, root, p, &su, &sv);

@@ -452,6 +452,69 @@ static void constrain_random(vor_t *d, test_rng_t *rng, uint32_t count, unsigned
     }
 }
 
+/* Inserts a site at the first crossing vertex of d that lies on the
+ * integer lattice (small coordinates: exact in int64), if any. */
+static bool insert_at_crossing(vor_t *d)
+{
+    uint32_t crossings = gather_crossings(d);
+    for (uint32_t i = 0; i < crossings; i++) {
+        uint32_t s[4];
+        (void)vor_cdt_crossing(d, crossing_ids[i], s);
+        vor_point_t a = model.at[s[0]];
+        vor_point_t b = model.at[s[1]];
+        vor_point_t c = model.at[s[2]];
+        vor_point_t e = model.at[s[3]];
+        int64_t w = ((int64_t)b.x - a.x) * (e.y - c.y) - ((int64_t)b.y - a.y) * (e.x - c.x);
+        int64_t t = ((int64_t)c.x - a.x) * (e.y - c.y) - ((int64_t)c.y - a.y) * (e.x - c.x);
+        int64_t x = a.x * w + ((int64_t)b.x - a.x) * t;
+        int64_t y = a.y * w + ((int64_t)b.y - a.y) * t;
+        if ((w != 0) && (x % w == 0) && (y % w == 0)) {
+            vor_point_t p = {(int32_t)(x / w), (int32_t)(y / w)};
+            uint32_t id;
+            if (vor_insert(d, p, &id) == VOR_OK) {
+                model.at[id] = p;
+                model.live[id] = true;
+                return gather_crossings(d) == crossings - 1u;
+            }
+        }
+    }
+    return false;
+}
+
+/* Two new constraints crossing at a lattice point p that is no site:
+ * sites at p +- (1, 2) and p +- (2, -1), the segments between them. */
+static void plant_crossing(vor_t *d, test_rng_t *rng, unsigned long *bad)
+{
+    for (unsigned tries = 0; tries < 20u; tries++) {
+        vor_point_t p = random_point(rng, 0u);
+        bool taken = false;
+        for (uint32_t i = 0; i < d->site_count; i++) {
+            taken = taken || (model.live[i] && (model.at[i].x == p.x) && (model.at[i].y == p.y));
+        }
+        if (taken || (model.constraints + 2u > CDT_CONSTRAINTS)) {
+            continue;
+        }
+        vor_point_t ends[4] = {{p.x + 1, p.y + 2}, {p.x - 1, p.y - 2}, {p.x + 2, p.y - 1},
+                               {p.x - 2, p.y + 1}};
+        uint32_t id[4];
+        for (unsigned k = 0; k < 4u; k++) {
+            int err = vor_insert(d, ends[k], &id[k]);
+            if (err == VOR_OK) {
+                model.at[id[k]] = ends[k];
+                model.live[id[k]] = true;
+            }
+        }
+        for (unsigned k = 0; k < 4u; k += 2u) {
+            *bad += (vor_constrain(d, id[k], id[k + 1u]) == VOR_OK) ? 0u : 1u;
+            model.a[model.constraints] = id[k];
+            model.b[model.constraints] = id[k + 1u];
+            model.constraints++;
+        }
+        *bad += check_cdt(d);
+        return;
+    }
+}
+
 /* Random sites, random constraints (crossing each other), then sites
  * inserted (some on the constraints: they split them), removed and moved
  * (the ends of constrained edges refused, nothing changed), each step
@@ -463,6 +526,7 @@ static void check_random(unsigned kind, uint64_t seed)
     unsigned long bad = 0;
     unsigned long kept_ends = 0;
     unsigned long crossings = 0;
+    unsigned long takeovers = 0;
     for (unsigned round = 0; round < 3u; round++) {
         vor_t d;
         model_clear();
@@ -476,11 +540,16 @@ static void check_random(unsigned kind, uint64_t seed)
         }
         bad += check_cdt(&d);
         constrain_random(&d, &rng, 6u + (test_rng_u32(&rng) % 10u), &bad);
+        if (kind == 0u) { /* two constraints crossing at a lattice point */
+            plant_crossing(&d, &rng, &bad);
+        }
         crossings += gather_crossings(&d);
         for (uint32_t k = 0; k < 30u; k++) {
             uint32_t s = test_rng_u32(&rng) % d.site_count;
             unsigned op = test_rng_u32(&rng) % 3u;
-            if (op == 0u) {
+            if ((op == 0u) && (kind == 0u) && (k % 2u == 0u)) {
+                takeovers += insert_at_crossing(&d) ? 1u : 0u;
+            } else if (op == 0u) {
                 (void)insert_random(&d, &rng, kind);
             } else if (model.live[s]) {
                 bool ends = ends_constraint(&d, s);
@@ -510,11 +579,12 @@ static void check_random(unsigned kind, uint64_t seed)
             bad += check_cdt(&d);
         }
     }
-    test_printf("cdt random (%u): %lu crossing vertices, %lu ends kept\n", kind, crossings,
-                kept_ends);
+    test_printf("cdt random (%u): %lu crossing vertices, %lu ends kept, %lu taken by sites\n",
+                kind, crossings, kept_ends, takeovers);
     CHECK(bad == 0, "cdt random (%u): %lu violations", kind, bad);
-    CHECK(crossings > 0u && kept_ends > 0u, "cdt random (%u): crossings %lu, ends kept %lu",
-          kind, crossings, kept_ends);
+    CHECK(crossings > 0u && kept_ends > 0u && ((kind != 0u) || (takeovers > 0u)),
+          "cdt random (%u): crossings %lu, ends kept %lu, taken %lu", kind, crossings, kept_ends,
+          takeovers);
 }
 
 /* Inserts the points, noting them. */
@@ -672,6 +742,11 @@ static void check_star(void)
     uint32_t crossings = gather_crossings(&d);
     CHECK(bad == 0 && crossings == 1u, "cdt star: %lu wrong, %u crossings (1 expected)", bad,
           (unsigned)crossings);
+    /* a site at the crossing takes its place, and ends 12 constrained edges */
+    vor_point_t centre = {1, 1};
+    insert_all(&d, &centre, 1);
+    CHECK(gather_crossings(&d) == 0u && check_cdt(&d) == 0u, "a site at the crossing");
+    CHECK(vor_remove(&d, 12) == VOR_ERR_CONSTRAINED, "the centre ends constraints");
 }
 
 void test_cdt(void)
