@@ -148,27 +148,11 @@ static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t
     vor__tri_t *tri = d->triangles;
     vor__tri_t *t = &tri[x_slot];
     vor_index_t y_slot = t->n[0];
-    vor_index_t nx = t->n[1];
-    vor_index_t ny = t->n[2];
     vor__tri_t *u = &tri[y_slot];
-    vor_index_t across_xc = u->n[vor__next(apex)];
-    vor_index_t across_cy = u->n[vor__prev(apex)];
-    /* keep home slots home: (p, x, c) holds x, (p, c, y) holds y, both c */
-    vor_index_t s1 = x_slot;
-    vor_index_t s2 = y_slot;
-    if (is_home(d, x_slot, y) || is_home(d, y_slot, x)) {
-        s1 = y_slot;
-        s2 = x_slot;
-    }
-    /* four distinct triangles, each linked once to x_slot or y_slot:
-     * the star has at least three vertices besides p when flips happen */
-    relink(tri, across_xc, y_slot, s1);
-    relink(tri, across_cy, y_slot, s2);
-    relink(tri, ny, x_slot, s1);
-    relink(tri, nx, x_slot, s2);
-    vor__tri_set(&tri[s1], p, x, c, across_xc, s2, ny);
-    vor__tri_set(&tri[s2], p, c, y, across_cy, nx, s1);
-    return s1;
+    /* the star has at least three vertices besides p when flips happen:
+     * four distinct outer triangles */
+    return vor__flip_core(d, x_slot, y_slot, p, x, y, c, t->n[1], t->n[2], u->n[vor__next(apex)],
+                          u->n[vor__prev(apex)]);
 }
 
 /* The insertion proper: split, then the star's pass. With constraint

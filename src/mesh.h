@@ -172,6 +172,50 @@ static inline void vor__relink_before(vor__tri_t *tri, vor_index_t slot, vor_ind
 /* Writes a whole triangle into slot t, keeping the slot's site mark. */
 static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
                                 vor_index_t v2, vor_index_t n0, vor_index_t n1,
+                                vor_index_t n2);
+
+/* In triangle `slot`, points the link that pointed at `from` at `to`. */
+static inline void vor__relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from,
+                               vor_index_t to)
+{
+    vor__tri_t *t = &tri[slot];
+    unsigned i = (t->n[0] == from) ? 0u : (t->n[1] == from) ? 1u : (t->n[2] == from) ? 2u : 3u;
+    if (i != 3u) { /* always found in a valid mesh */
+        t->n[i] = to;
+    }
+}
+
+/* The edge flip: triangle (p, x, y) in slot t_slot and its neighbour
+ * across x-y, (y, x, c) in u_slot, become (p, x, c) and (p, c, y). The
+ * outer links: nx across p-y... named by the edge they cross: t's across
+ * y-p (nx) and p-x (ny), u's across x-c and c-y. Home slots stay home:
+ * (p, x, c) holds x, (p, c, y) holds y, both p and c, so the two slots go
+ * where their sites are. Four distinct outer triangles (meshes of four or
+ * more vertices). Returns the slot of (p, x, c). */
+static inline vor_index_t vor__flip_core(vor_t *d, vor_index_t t_slot, vor_index_t u_slot,
+                                         vor_index_t p, vor_index_t x, vor_index_t y,
+                                         vor_index_t c, vor_index_t nx, vor_index_t ny,
+                                         vor_index_t across_xc, vor_index_t across_cy)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t s1 = t_slot;
+    vor_index_t s2 = u_slot;
+    if (((t_slot == y) && (y < d->max_sites)) || ((u_slot == x) && (x < d->max_sites))) {
+        s1 = u_slot;
+        s2 = t_slot;
+    }
+    vor__relink(tri, across_xc, u_slot, s1);
+    vor__relink(tri, across_cy, u_slot, s2);
+    vor__relink(tri, ny, t_slot, s1);
+    vor__relink(tri, nx, t_slot, s2);
+    vor__tri_set(&tri[s1], p, x, c, across_xc, s2, ny);
+    vor__tri_set(&tri[s2], p, c, y, across_cy, nx, s1);
+    return s1;
+}
+
+/* Writes a whole triangle into slot t, keeping the slot's site mark. */
+static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
+                                vor_index_t v2, vor_index_t n0, vor_index_t n1,
                                 vor_index_t n2)
 {
 #if VOR_INDEX_BITS == 16
