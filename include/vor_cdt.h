@@ -28,10 +28,10 @@
 extern "C" {
 #endif
 
-/* A constrained edge's entry in the edge table: its two vertices, the two
- * sites whose line it lies on, and the number of constraints through it.
- * A crossing vertex's entry: the four sites of its two lines. */
-#define VOR_CDT_EDGE_BYTES ((4u * sizeof(vor_index_t)) + 4u)
+/* A constrained edge's entry in the edge table: its two vertices and the
+ * number of constraints through it. A crossing vertex's entry: the four
+ * sites of its two lines. */
+#define VOR_CDT_EDGE_BYTES ((2u * sizeof(vor_index_t)) + 4u)
 #define VOR_CDT_CROSSING_BYTES (4u * sizeof(vor_index_t))
 
 /* The part of the memory that holds the state (a constant, checked
@@ -99,6 +99,19 @@ int vor_cdt_crossing(const vor_t *d, uint32_t id, uint32_t sites[4]);
  * On failure nothing changes.
  */
 int vor_constrain(vor_t *d, uint32_t a, uint32_t b);
+
+/*
+ * Removes one constraint along the segment between sites a and b (either
+ * order): every piece of it loses one of the constraints through it, and
+ * the pieces left with none become plain edges again. A crossing vertex
+ * left on one constraint's line disappears, the two pieces through it
+ * joined; one on two or more stays. The triangulation is again the
+ * constrained Delaunay one of what remains.
+ *   VOR_ERR_ARG  d NULL, no constraint memory attached, a or b not a site
+ *                in the diagram, or some piece of the segment from a to b
+ *                not constrained (nothing changes)
+ */
+int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b);
 
 /* The triangles of the constrained triangulation, counterclockwise, of
  * nonzero area (as vor_triangles_next for the Delaunay one). */

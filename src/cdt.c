@@ -54,10 +54,8 @@ static uint32_t edge_place(const struct vor__cdt *c, vor_index_t u, vor_index_t 
     return i;
 }
 
-/* Adds `count` constraints on the line of sites line_a, line_b through
- * edge a-b (the caller checked room). */
-static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t line_a,
-                     vor_index_t line_b, uint32_t count)
+/* Adds `count` constraints through edge a-b (the caller checked room). */
+static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, uint32_t count)
 {
     vor_index_t u = (a < b) ? a : b;
     vor_index_t v = (a < b) ? b : a;
@@ -65,8 +63,6 @@ static void edge_add(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index
     if (e->u == VOR__NONE) {
         e->u = u;
         e->v = v;
-        e->line_a = line_a;
-        e->line_b = line_b;
         e->count = 0;
         c->edge_count++;
     }
@@ -91,8 +87,6 @@ static void edge_remove(struct vor__cdt *c, uint32_t removed)
         if (!stays) { /* field by field: a structure copy may be a memcpy call */
             c->edges[hole].u = e->u;
             c->edges[hole].v = e->v;
-            c->edges[hole].line_a = e->line_a;
-            c->edges[hole].line_b = e->line_b;
             c->edges[hole].count = e->count;
             hole = i;
         }
@@ -600,11 +594,9 @@ static void take_over(struct vor__cdt *c, vor_index_t x, vor_index_t p)
     while (vor__fan_next(&it, &n, &third)) {
         uint32_t e = vor__cdt_find(c, x, (vor_index_t)n);
         if (e != c->edge_slots) {
-            vor_index_t la = c->edges[e].line_a;
-            vor_index_t lb = c->edges[e].line_b;
             uint32_t count = c->edges[e].count;
             edge_remove(c, e);
-            edge_add(c, p, (vor_index_t)n, la, lb, count);
+            edge_add(c, p, (vor_index_t)n, count);
         }
     }
     c->crossings[4u * (x - c->first_crossing)] = VOR__NONE;
@@ -631,18 +623,14 @@ static void insert_vertex(struct vor__cdt *c, uint32_t p)
         vor_index_t sv;
         uint32_t split = find_split(c, root, p, &su, &sv);
         uint32_t count = 0;
-        vor_index_t line_a = VOR__NONE;
-        vor_index_t line_b = VOR__NONE;
         if (split != c->edge_slots) {
             count = c->edges[split].count;
-            line_a = c->edges[split].line_a;
-            line_b = c->edges[split].line_b;
             edge_remove(c, split);
         }
         vor__insert_at_constrained(m, root, p, c);
         if (count != 0u) {
-            edge_add(c, su, (vor_index_t)p, line_a, line_b, count);
-            edge_add(c, (vor_index_t)p, sv, line_a, line_b, count);
+            edge_add(c, su, (vor_index_t)p, count);
+            edge_add(c, (vor_index_t)p, sv, count);
         }
     } else {
         /* the first site: no triangle */
@@ -1078,6 +1066,49 @@ static void fill_cavity(struct vor__cdt *c, cavity_t *cv)
     VOR_ASSERT(packed == 0u);
 }
 
+/* The constrained neighbour of vertex `at` that continues the line from
+ * `prev` through `at` beyond it, or VOR__NONE. */
+static vor_index_t run_next(const struct vor__cdt *c, vor_index_t prev, vor_index_t at)
+{
+    vor_neighbour_iter_t it;
+    uint32_t w;
+    uint32_t third;
+    vor__fan_begin(&it, &c->mesh, at);
+    while (vor__fan_next(&it, &w, &third)) {
+        if ((w != prev) && vor__cdt_constrained(c, at, (vor_index_t)w) &&
+            (exact_orient(c, prev, at, (vor_index_t)w) == 0) &&
+            between(c, prev, at, (vor_index_t)w)) {
+            return (vor_index_t)w;
+        }
+    }
+    return VOR__NONE;
+}
+
+/* Two sites on the line of constrained edge u-v, *la and *lb: from each
+ * end outward along the constrained edges on that line, the first site
+ * (u or v when it is one). Every constraint ends at sites, so each way
+ * reaches one, and no site whose constrained edges hold it can leave. */
+static void run_line(const struct vor__cdt *c, vor_index_t u, vor_index_t v, vor_index_t *la,
+                     vor_index_t *lb)
+{
+    vor_index_t ends[2];
+    for (unsigned way = 0; way < 2u; way++) {
+        vor_index_t prev = (way == 0u) ? v : u;
+        vor_index_t at = (way == 0u) ? u : v;
+        for (uint32_t left = c->max_crossings; (left > 0u) && is_crossing(c, at); left--) {
+            vor_index_t next = run_next(c, prev, at);
+            if (next == VOR__NONE) {
+                break; /* a broken mesh only */
+            }
+            prev = at;
+            at = next;
+        }
+        ends[way] = at;
+    }
+    *la = ends[0];
+    *lb = ends[1];
+}
+
 /* A free crossing id, holding the lines a-b and c-d (the caller checked
  * room). */
 static vor_index_t new_crossing(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t p,
@@ -1150,19 +1181,362 @@ int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
             vor_index_t crossed[2];
             next = walk_cavity(c, &cv, from, (vor_index_t)b, slot, true, &k, crossed);
             if (next == VOR__NONE) {
-                uint32_t e = vor__cdt_find(c, crossed[0], crossed[1]);
-                if (e == c->edge_slots) {
-                    break; /* a broken mesh only: the checks above saw it */
-                }
-                vor_index_t x = new_crossing(c, (vor_index_t)a, (vor_index_t)b, c->edges[e].line_a,
-                                             c->edges[e].line_b);
+                vor_index_t la;
+                vor_index_t lb;
+                run_line(c, crossed[0], crossed[1], &la, &lb);
+                vor_index_t x = new_crossing(c, (vor_index_t)a, (vor_index_t)b, la, lb);
                 insert_vertex(c, x);
                 continue;
             }
             fill_cavity(c, &cv);
         }
-        edge_add(c, from, next, (vor_index_t)a, (vor_index_t)b, 1u);
+        edge_add(c, from, next, 1u);
         from = next;
+    }
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Removing constraints                                                */
+
+/* The slot of the triangle holding edge u -> v counterclockwise, its
+ * third corner's index in *corner; VOR__NONE when u-v is no edge. */
+static vor_index_t edge_slot(const vor_t *m, vor_index_t u, vor_index_t v, unsigned *corner)
+{
+    vor_index_t slot = u;
+    for (uint32_t left = m->vertex_count + 1u; (left > 0u) && !vor__slot_empty(&m->triangles[u]);
+         left--) {
+        const vor__tri_t *t = &m->triangles[slot];
+        unsigned i = vor__vertex_index(t, u);
+        if (i == 3u) {
+            break; /* a broken mesh only */
+        }
+        if (vor__vertex(t, vor__next(i)) == v) {
+            *corner = vor__prev(i);
+            return slot;
+        }
+        slot = t->n[vor__prev(i)];
+        if (slot == u) {
+            break;
+        }
+    }
+    return VOR__NONE;
+}
+
+/* Flips the edge opposite corner i of the triangle in `slot` (the two
+ * triangles on it form a convex quadrilateral). */
+static void flip_edge(vor_t *m, vor_index_t slot, unsigned i)
+{
+    vor__tri_t *tri = m->triangles;
+    vor__tri_t *t = &tri[slot];
+    vor_index_t v[3];
+    vor__vertices(t, v);
+    vor_index_t p = v[i];
+    vor_index_t x = v[vor__next(i)];
+    vor_index_t y = v[vor__prev(i)];
+    vor_index_t u_slot = t->n[i];
+    const vor__tri_t *u = &tri[u_slot];
+    unsigned k = third_corner(u, x, y);
+    (void)vor__flip_core(m, slot, u_slot, p, x, y, vor__vertex(u, k), t->n[vor__next(i)],
+                         t->n[vor__prev(i)], u->n[vor__next(k)], u->n[vor__prev(k)]);
+}
+
+/* Lawson's flips back to the constrained Delaunay triangulation. */
+typedef struct {
+    vor_index_t *edges; /* pairs of vertices to test */
+    uint32_t count;
+    uint32_t room;      /* pairs */
+    bool lost;          /* some did not fit: a sweep of every edge follows */
+    uint32_t flips;
+} lawson_t;
+
+static void lawson_push(lawson_t *w, vor_index_t u, vor_index_t v)
+{
+    if (w->count < w->room) {
+        w->edges[2u * w->count] = u;
+        w->edges[(2u * w->count) + 1u] = v;
+        w->count++;
+    } else {
+        w->lost = true;
+    }
+}
+
+/* Flips edge u-v when it is no constrained edge, no hull edge, and its far
+ * vertex lies in its circle; then its four outer edges are to test. */
+static bool lawson_test(struct vor__cdt *c, lawson_t *w, vor_index_t u, vor_index_t v)
+{
+    vor_t *m = &c->mesh;
+    unsigned k;
+    vor_index_t slot = edge_slot(m, u, v, &k);
+    if ((slot == VOR__NONE) || vor__cdt_constrained(c, u, v)) {
+        return false;
+    }
+    const vor__tri_t *t = &m->triangles[slot];
+    vor_index_t p = vor__vertex(t, k);
+    const vor__tri_t *o = &m->triangles[t->n[k]];
+    vor_index_t q = vor__vertex(o, third_corner(o, u, v));
+    if ((p == VOR__INFINITE) || (q == VOR__INFINITE) || (incircle(c, u, v, p, q) <= 0)) {
+        return false;
+    }
+    flip_edge(m, slot, k);
+    w->flips++;
+    lawson_push(w, u, q);
+    lawson_push(w, q, v);
+    lawson_push(w, v, p);
+    lawson_push(w, p, u);
+    return true;
+}
+
+/* Runs the flips. Each flip removes an edge that the end result lacks, and
+ * none comes back (Lawson), so at most 3 (vertices) flips happen; the
+ * bound only stops lying predicates (fault injection). When the stack
+ * overflowed, sweeps over every edge finish the work. */
+static void lawson_run(struct vor__cdt *c, lawson_t *w)
+{
+    vor_t *m = &c->mesh;
+    uint32_t bound = (3u * m->vertex_count) + 8u;
+    while ((w->count > 0u) && (w->flips < bound)) {
+        w->count--;
+        (void)lawson_test(c, w, w->edges[2u * w->count], w->edges[(2u * w->count) + 1u]);
+    }
+    bool changed = w->lost;
+    while (changed && (w->flips < bound)) {
+        changed = false;
+        uint32_t end = vor__used_slots_end(m);
+        for (uint32_t s = vor__next_used_slot(m, 0); s < end; s = vor__next_used_slot(m, s + 1u)) {
+            vor_index_t v[3];
+            vor__vertices(&m->triangles[s], v);
+            for (unsigned k = 0; k < 3u; k++) {
+                w->count = 0;
+                changed = lawson_test(c, w, v[vor__next(k)], v[vor__prev(k)]) || changed;
+                if (changed) {
+                    break; /* the triangle changed */
+                }
+            }
+        }
+    }
+    w->count = 0;
+}
+
+/* Removes crossing vertex x, whose constrained edges u-x and x-v now lie
+ * on one line: x's other spokes are flipped away, one side at a time
+ * (the spoke to the vertex farthest from line u-v always can be: the
+ * segment between its ring neighbours crosses the spoke), until x has
+ * four neighbours u, s, v, t; then its four triangles become (u, s, v)
+ * and (v, t, u), u-v constrained as u-x and x-v were, and every edge the
+ * flips made is left to Lawson's flips. Home slots: (u, s, v) goes to
+ * s's home if it is one of the four slots, (v, t, u) to t's; the fourth
+ * slot besides x's is freed, refilled as a removal's is (dynamic.c). */
+static void remove_crossing(struct vor__cdt *c, vor_index_t x, lawson_t *w)
+{
+    vor_t *m = &c->mesh;
+    vor__tri_t *tri = m->triangles;
+    vor_index_t u = VOR__NONE;
+    vor_index_t v = VOR__NONE;
+    vor_neighbour_iter_t it;
+    uint32_t n;
+    uint32_t third;
+    vor__fan_begin(&it, m, x);
+    while (vor__fan_next(&it, &n, &third)) {
+        if (vor__cdt_constrained(c, x, (vor_index_t)n)) {
+            v = (u == VOR__NONE) ? v : (vor_index_t)n;
+            u = (u == VOR__NONE) ? (vor_index_t)n : u;
+        }
+    }
+    uint32_t count = c->edges[vor__cdt_find(c, u, x)].count;
+    /* flip spokes until the degree is 4 */
+    for (uint32_t left = m->vertex_count; left > 0u; left--) {
+        uint32_t degree = 0;
+        bool flipped = false;
+        vor_index_t slot = x;
+        for (uint32_t k = m->vertex_count + 1u; (k > 0u) && !flipped; k--) {
+            /* star triangle (x, a, b) and the next, (x, b, e): spoke x-b */
+            const vor__tri_t *t = &tri[slot];
+            unsigned i = vor__vertex_index(t, x);
+            vor_index_t a = vor__vertex(t, vor__next(i));
+            vor_index_t b = vor__vertex(t, vor__prev(i));
+            vor_index_t next = t->n[vor__next(i)];
+            const vor__tri_t *nt = &tri[next];
+            vor_index_t e = vor__vertex(nt, vor__prev(vor__vertex_index(nt, x)));
+            degree++;
+            /* b alone on its side would leave x on a flat (u, x, v) */
+            bool alone = ((a == u) && (e == v)) || ((a == v) && (e == u));
+            if ((b != u) && (b != v) && !alone && (orient(c, x, a, e) > 0) &&
+                (orient(c, a, b, e) > 0)) {
+                flip_edge(m, next, vor__prev(vor__vertex_index(nt, x)));
+                lawson_push(w, a, e);
+                flipped = true;
+            }
+            slot = next;
+            if (slot == x) {
+                break;
+            }
+        }
+        if (!flipped) {
+            VOR_ASSERT(degree == 4u);
+            break;
+        }
+    }
+    /* the four triangles (x, u, s), (x, s, v), (x, v, t), (x, t, u) */
+    vor_index_t slots[4];
+    vor_index_t ring[4];
+    vor_index_t outer[4];
+    unsigned start = 0;
+    vor_index_t slot = x;
+    for (unsigned k = 0; k < 4u; k++) {
+        const vor__tri_t *t = &tri[slot];
+        unsigned i = vor__vertex_index(t, x);
+        slots[k] = slot;
+        ring[k] = vor__vertex(t, vor__next(i));
+        outer[k] = t->n[i]; /* across ring[k] - ring[k + 1] */
+        start = (ring[k] == u) ? k : start;
+        slot = t->n[vor__next(i)]; /* across x - ring[k + 1]: counterclockwise */
+    }
+    vor_index_t r[4];
+    vor_index_t o[4];
+    vor_index_t sl[4];
+    for (unsigned k = 0; k < 4u; k++) {
+        r[k] = ring[(start + k) & 3u];
+        o[k] = outer[(start + k) & 3u];
+        sl[k] = slots[(start + k) & 3u];
+    }
+    vor_index_t s = r[1];
+    vor_index_t t = r[3];
+    /* (u, s, v) to s's home if among the slots, (v, t, u) to t's; the
+     * others to homes of u or v first, packed slots last */
+    vor_index_t a_slot = VOR__NONE;
+    vor_index_t b_slot = VOR__NONE;
+    for (unsigned k = 0; k < 4u; k++) {
+        a_slot = ((sl[k] == s) && (s < m->max_sites)) ? sl[k] : a_slot;
+        b_slot = ((sl[k] == t) && (t < m->max_sites)) ? sl[k] : b_slot;
+    }
+    for (unsigned pass = 0; pass < 2u; pass++) {
+        for (unsigned k = 0; k < 4u; k++) {
+            vor_index_t q = sl[k];
+            bool home = (q == u) || (q == v);
+            bool free = (q != x) && (q != a_slot) && (q != b_slot) && ((pass == 1u) || home);
+            if (free && (a_slot == VOR__NONE)) {
+                a_slot = q;
+            } else if (free && (b_slot == VOR__NONE)) {
+                b_slot = q;
+            } else {
+                /* taken, or left for later */
+            }
+        }
+    }
+    vor_index_t freed = VOR__NONE;
+    for (unsigned k = 0; k < 4u; k++) {
+        freed = ((sl[k] != x) && (sl[k] != a_slot) && (sl[k] != b_slot)) ? sl[k] : freed;
+    }
+    vor__relink(tri, o[0], sl[0], a_slot);
+    vor__relink(tri, o[1], sl[1], a_slot);
+    vor__relink(tri, o[2], sl[2], b_slot);
+    vor__relink(tri, o[3], sl[3], b_slot);
+    vor__tri_set(&tri[a_slot], u, s, v, o[1], b_slot, o[0]);
+    vor__tri_set(&tri[b_slot], v, t, u, o[3], a_slot, o[2]);
+    vor__tri_fresh(&tri[x]);
+    tri[x].n[0] = VOR__NONE;
+    vor_index_t last = (vor_index_t)(m->max_sites + m->vertex_count - 3u);
+    if (freed < m->max_sites) { /* a home of u or v: refilled from its stars */
+        vor__rehome(m, freed, a_slot, last); /* (u, s, v) holds u and v */
+    } else if (freed != last) {
+        vor__move_triangle(tri, last, freed);
+    } else {
+        /* the last packed slot: nothing to move */
+    }
+    m->vertex_count--;
+    edge_remove(c, vor__cdt_find(c, u, x));
+    edge_remove(c, vor__cdt_find(c, x, v));
+    edge_add(c, u, v, count);
+    c->crossings[4u * (x - c->first_crossing)] = VOR__NONE;
+    c->crossing_count--;
+    lawson_push(w, u, s);
+    lawson_push(w, s, v);
+    lawson_push(w, v, t);
+    lawson_push(w, t, u);
+}
+
+/* The lines through crossing vertex x: how many distinct lines its
+ * constrained edges lie on (up to 2 counted), and two sites of each of
+ * the first two in sites[0..4). */
+static unsigned crossing_lines(const struct vor__cdt *c, vor_index_t x, vor_index_t sites[4])
+{
+    vor_index_t first = VOR__NONE;
+    unsigned lines = 0;
+    vor_neighbour_iter_t it;
+    uint32_t n;
+    uint32_t third;
+    vor__fan_begin(&it, &c->mesh, x);
+    while ((lines < 2u) && vor__fan_next(&it, &n, &third)) {
+        if (!vor__cdt_constrained(c, x, (vor_index_t)n)) {
+            continue;
+        }
+        if (first == VOR__NONE) {
+            first = (vor_index_t)n;
+            run_line(c, x, first, &sites[0], &sites[1]);
+            lines = 1;
+        } else if (exact_orient(c, first, x, (vor_index_t)n) != 0) {
+            run_line(c, x, (vor_index_t)n, &sites[2], &sites[3]);
+            lines = 2;
+        } else {
+            /* on the first line */
+        }
+    }
+    return lines;
+}
+
+int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b)
+{
+    if ((d == NULL) || (d->cdt == NULL) || !vor__site_in_mesh(d, a) || !vor__site_in_mesh(d, b)) {
+        return VOR_ERR_ARG;
+    }
+    struct vor__cdt *c = d->cdt;
+    vor_t *m = &c->mesh;
+    /* every piece from a to b must be a constrained edge */
+    vor_index_t from = (vor_index_t)a;
+    for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
+        vor_index_t slot;
+        vor_index_t next = first_step(c, from, (vor_index_t)b, &slot);
+        if ((next == VOR__NONE) || !vor__cdt_constrained(c, from, next)) {
+            return VOR_ERR_ARG;
+        }
+        from = next;
+    }
+    if (from != b) {
+        return VOR_ERR_ARG; /* a == b's point: never two sites */
+    }
+    /* one constraint less on each piece; the freed edges are tested */
+    lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
+    from = (vor_index_t)a;
+    for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
+        vor_index_t slot;
+        vor_index_t next = first_step(c, from, (vor_index_t)b, &slot);
+        uint32_t e = vor__cdt_find(c, from, next);
+        c->edges[e].count--;
+        if (c->edges[e].count == 0u) {
+            edge_remove(c, e);
+            lawson_push(&w, from, next);
+        }
+        from = next;
+    }
+    lawson_run(c, &w);
+    /* crossing vertices left on one line go; the others are defined
+     * again by sites of their lines that still hold constraints */
+    for (uint32_t i = 0; i < c->max_crossings; i++) {
+        vor_index_t *q = &c->crossings[4u * i];
+        if (q[0] == VOR__NONE) {
+            continue;
+        }
+        vor_index_t x = (vor_index_t)(c->first_crossing + i);
+        vor_index_t sites[4];
+        if (crossing_lines(c, x, sites) < 2u) {
+            remove_crossing(c, x, &w);
+            lawson_run(c, &w);
+        } else {
+            for (unsigned k = 0; k < 4u; k++) {
+                q[k] = sites[k];
+            }
+        }
     }
     return VOR_OK;
 }

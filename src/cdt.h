@@ -17,14 +17,11 @@
 #include "vor.h"
 #include "vor_cdt.h"
 
-/* A constrained edge u < v, the sites line_a, line_b of the constraint's
- * line it lies on, and the number of constraints through it; u is
- * VOR__NONE in an empty entry. */
+/* A constrained edge u < v and the number of constraints through it; u
+ * is VOR__NONE in an empty entry. */
 typedef struct vor__cdt_edge {
     vor_index_t u;
     vor_index_t v;
-    vor_index_t line_a;
-    vor_index_t line_b;
     uint32_t count;
 } vor__cdt_edge_t;
 

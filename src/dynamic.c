@@ -90,9 +90,7 @@ static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_inde
     }
 }
 
-/* Moves the triangle in slot `from` to the unused slot `to` (meshes of
- * three or more sites: its neighbours are three distinct triangles). */
-static void move_triangle(vor__tri_t *tri, vor_index_t from, vor_index_t to)
+void vor__move_triangle(vor__tri_t *tri, vor_index_t from, vor_index_t to)
 {
     vor__tri_t *f = &tri[from];
     vor_index_t v[3];
@@ -307,13 +305,13 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
         if (packed == VOR__NONE) {
             return; /* a broken mesh only */
         }
-        move_triangle(tri, start, h);
-        move_triangle(tri, packed, start);
+        vor__move_triangle(tri, start, h);
+        vor__move_triangle(tri, packed, start);
     } else {
-        move_triangle(tri, packed, h);
+        vor__move_triangle(tri, packed, h);
     }
     if (packed != last) {
-        move_triangle(tri, last, packed);
+        vor__move_triangle(tri, last, packed);
     }
 }
 
@@ -563,7 +561,7 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
          * of its triangles, which frees a packed slot */
         vor__rehome(d, freed, keep, last);
     } else if (freed != last) {
-        move_triangle(tri, last, freed);
+        vor__move_triangle(tri, last, freed);
     } else {
         /* no other case */
     }

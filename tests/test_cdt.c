@@ -515,6 +515,48 @@ static void plant_crossing(vor_t *d, test_rng_t *rng, unsigned long *bad)
     }
 }
 
+/* Removes about half of the constraints, each checked after; and a
+ * segment that is no constraint is refused, nothing changed. */
+static void unconstrain_random(vor_t *d, test_rng_t *rng, unsigned long *bad)
+{
+    for (uint32_t k = 0; k < model.constraints;) {
+        if ((test_rng_u32(rng) & 1u) == 0u) {
+            k++;
+            continue;
+        }
+        uint32_t a = model.a[k];
+        uint32_t b = model.b[k];
+        int err = (test_rng_u32(rng) & 1u) ? vor_unconstrain(d, a, b) : vor_unconstrain(d, b, a);
+        *bad += (err == VOR_OK) ? 0u : 1u;
+        model.constraints--;
+        model.a[k] = model.a[model.constraints];
+        model.b[k] = model.b[model.constraints];
+        *bad += check_cdt(d);
+    }
+    /* a segment between two sites that is no constraint's */
+    for (uint32_t tries = 0; tries < 10u; tries++) {
+        uint32_t a = test_rng_u32(rng) % d->site_count;
+        uint32_t b = test_rng_u32(rng) % d->site_count;
+        if (!model.live[a] || !model.live[b] || (a == b)) {
+            continue;
+        }
+        bool covered = false; /* every piece under some constraint? */
+        vor__hpoint_t pa;
+        vor__hpoint_t pb;
+        vor__hpoint_site(&pa, model.at[a]);
+        vor__hpoint_site(&pb, model.at[b]);
+        for (uint32_t k = 0; k < model.constraints; k++) {
+            covered = covered || (on_constraint(&pa, k) || (a == model.a[k]) || (a == model.b[k]));
+        }
+        if (covered) {
+            continue;
+        }
+        test_copy_bytes(saved_memory, memory, sizeof memory);
+        *bad += (vor_unconstrain(d, a, b) == VOR_ERR_ARG) ? 0u : 1u;
+        *bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    }
+}
+
 /* Random sites, random constraints (crossing each other), then sites
  * inserted (some on the constraints: they split them), removed and moved
  * (the ends of constrained edges refused, nothing changed), each step
@@ -542,6 +584,9 @@ static void check_random(unsigned kind, uint64_t seed)
         constrain_random(&d, &rng, 6u + (test_rng_u32(&rng) % 10u), &bad);
         if (kind == 0u) { /* two constraints crossing at a lattice point */
             plant_crossing(&d, &rng, &bad);
+        }
+        if (round == 1u) { /* half of them removed again */
+            unconstrain_random(&d, &rng, &bad);
         }
         crossings += gather_crossings(&d);
         for (uint32_t k = 0; k < 30u; k++) {
