@@ -22,6 +22,8 @@
 #ifndef VOR_CDT_H
 #define VOR_CDT_H
 
+#include <stdbool.h>
+
 #include "vor.h"
 
 #ifdef __cplusplus
@@ -36,7 +38,7 @@ extern "C" {
 
 /* The part of the memory that holds the state (a constant, checked
  * against the library's layout when it is built). */
-#define VOR_CDT_HEADER_BYTES (sizeof(vor_t) + (4u * sizeof(void *)) + (8u * sizeof(uint32_t)))
+#define VOR_CDT_HEADER_BYTES (sizeof(vor_t) + (6u * sizeof(void *)) + (8u * sizeof(uint32_t)))
 
 /* Bytes of constraint memory for a diagram of up to n sites (its
  * max_sites), up to `edges` constrained edges (a constraint counts one
@@ -46,11 +48,12 @@ extern "C" {
  * suffices); a constant expression. */
 #define VOR_CDT_BYTES(n, edges, crossings, cut)                                \
     ((size_t)VOR_CDT_HEADER_BYTES +                                            \
-     ((((n) + (crossings)) >= 2u) ? ((2u * ((size_t)(n) + (crossings))) - 2u) : 0u) * \
-         VOR_TRIANGLE_BYTES +                                                  \
+     (VOR__CDT_SLOTS((size_t)(n) + (crossings)) * (VOR_TRIANGLE_BYTES + 1u)) + \
      (2u * (size_t)(edges) * VOR_CDT_EDGE_BYTES) +                             \
      ((size_t)(crossings) * VOR_CDT_CROSSING_BYTES) +                          \
-     (13u * ((size_t)(cut) + 4u) * sizeof(vor_index_t)))
+     (13u * ((size_t)(cut) + 4u) * sizeof(vor_index_t)) + 4u)
+/* triangle slots of v vertices: 2 v - 2 */
+#define VOR__CDT_SLOTS(v) (((v) >= 2u) ? ((2u * (v)) - 2u) : 0u)
 #define VOR_CDT_ALIGN 4u
 
 /* The limits vor_cdt_attach sizes the memory by (VOR_CDT_BYTES). */
@@ -118,11 +121,29 @@ int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b);
 typedef struct vor_cdt_triangle_iter {
     const vor_t *d;
     uint32_t slot;
+    bool inside; /* only the domain's (vor_cdt_inside_begin) */
 } vor_cdt_triangle_iter_t;
 
 int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d);
 /* VOR_OK and the next triangle's sites in ids, or VOR_ERR_EMPTY at the end. */
 int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3]);
+
+/*
+ * Marks the domain: the triangles inside the constraints by the even-odd
+ * rule, as a polygon's inside without its holes, overlapping polygons by
+ * parity. Flooding from the outside of the hull, a triangle's nesting
+ * level is the least number of constraints crossed to reach it (an edge
+ * under k constraints counts k); it is inside when that number is odd.
+ * Levels beyond 126 count as 126. Any later change of the triangulation
+ * (a site, a constraint) clears the marks.
+ *   VOR_ERR_ARG  d NULL, or no constraint memory attached
+ */
+int vor_cdt_domain(vor_t *d);
+
+/* The triangles inside the domain (vor_cdt_domain), as the iterator above.
+ *   VOR_ERR_ARG  it or d NULL, no constraint memory, or no domain marked
+ *                since the last change */
+int vor_cdt_inside_begin(vor_cdt_triangle_iter_t *it, const vor_t *d);
 
 /* The constrained edges, in no particular order. */
 typedef struct vor_cdt_edge_iter {

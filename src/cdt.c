@@ -340,6 +340,7 @@ static void copy_delaunay(struct vor__cdt *c, const vor_t *d)
     }
     c->edge_count = 0;
     c->crossing_count = 0;
+    c->domain = false;
 }
 
 int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, const vor_cdt_limits_t *limits)
@@ -395,6 +396,8 @@ int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, const vor_cdt_limits_t *li
     at += (size_t)limits->crossings * VOR_CDT_CROSSING_BYTES;
     c->scratch = (vor_index_t *)(void *)at;
     c->max_cut = limits->cut;
+    at += 13u * ((size_t)limits->cut + 4u) * sizeof(vor_index_t);
+    c->levels = at;
     copy_delaunay(c, d);
     d->cdt = c;
     d->cdt_update = vor__cdt_update;
@@ -644,6 +647,7 @@ int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
     struct vor__cdt *c = d->cdt;
     vor_t *m = &c->mesh;
     int err = VOR_OK;
+    c->domain = c->domain && (event == VOR__CDT_CHECK_INSERT);
     if (event == VOR__CDT_CHECK_INSERT) {
         /* a split adds one edge */
         if ((m->vertex_count >= 2u) && (c->edge_count >= c->max_edges)) {
@@ -1169,6 +1173,7 @@ int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
         (c->crossing_count + crossings > c->max_crossings)) {
         return VOR_ERR_NOMEM;
     }
+    c->domain = false;
     /* then piece by piece: a constrained edge in the way gets its crossing
      * vertex (which splits it) and the piece ends there */
     from = (vor_index_t)a;
@@ -1505,6 +1510,7 @@ int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b)
     if (from != b) {
         return VOR_ERR_ARG; /* a == b's point: never two sites */
     }
+    c->domain = false;
     /* one constraint less on each piece; the freed edges are tested */
     lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
     from = (vor_index_t)a;
@@ -1542,6 +1548,117 @@ int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b)
 }
 
 /* ------------------------------------------------------------------ */
+/* The domain                                                          */
+
+#define LEVEL_UNKNOWN 0xFFu
+#define LEVEL_PENDING 0x80u /* a level reached across a constraint, not final */
+#define LEVEL_MAX 126u
+
+/* Floods the level-`level` region from the triangles stacked in w (or,
+ * after an overflow, by sweeps): its unconstrained neighbours join it,
+ * those across a constrained edge under k constraints wait at level + k. */
+/* Triangle s of level `level`: its unconstrained neighbours join the
+ * level (stacked in w when it is given), those across an edge under k
+ * constraints wait at level + k. Returns whether a neighbour changed. */
+static bool spread(struct vor__cdt *c, lawson_t *w, vor_index_t s, uint32_t level)
+{
+    const vor__tri_t *tri = c->mesh.triangles;
+    uint8_t *lv = c->levels;
+    bool changed = false;
+    vor_index_t v[3];
+    vor__vertices(&tri[s], v);
+    for (unsigned k = 0; k < 3u; k++) {
+        vor_index_t a = v[vor__next(k)];
+        vor_index_t b = v[vor__prev(k)];
+        vor_index_t u = tri[s].n[k];
+        uint32_t e = ((a == VOR__INFINITE) || (b == VOR__INFINITE)) ? c->edge_slots
+                                                                   : vor__cdt_find(c, a, b);
+        uint32_t to = (e == c->edge_slots) ? level : (level + c->edges[e].count);
+        to = (to > LEVEL_MAX) ? LEVEL_MAX : to;
+        uint32_t now = lv[u];
+        bool open = (now == LEVEL_UNKNOWN) ||
+                    (((now & LEVEL_PENDING) != 0u) && ((now & ~LEVEL_PENDING) > to));
+        if (open) {
+            lv[u] = (uint8_t)((to == level) ? level : (to | LEVEL_PENDING));
+            changed = true;
+            if ((to == level) && (w != NULL)) {
+                lawson_push(w, u, u);
+            }
+        }
+    }
+    return changed;
+}
+
+/* Floods the level-`level` region from the triangles stacked in w; when
+ * the stack overflowed, sweeps over the level's triangles finish it. */
+static void flood(struct vor__cdt *c, lawson_t *w, uint32_t level)
+{
+    const vor_t *m = &c->mesh;
+    while (w->count > 0u) {
+        w->count--;
+        (void)spread(c, w, w->edges[2u * w->count], level);
+    }
+    bool changed = w->lost;
+    w->lost = false;
+    while (changed) {
+        changed = false;
+        uint32_t end = vor__used_slots_end(m);
+        for (uint32_t s = vor__next_used_slot(m, 0); s < end; s = vor__next_used_slot(m, s + 1u)) {
+            if (c->levels[s] == level) {
+                changed = spread(c, NULL, (vor_index_t)s, level) || changed;
+            }
+        }
+    }
+}
+
+int vor_cdt_domain(vor_t *d)
+{
+    if ((d == NULL) || (d->cdt == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    struct vor__cdt *c = d->cdt;
+    const vor_t *m = &c->mesh;
+    uint8_t *lv = c->levels;
+    uint32_t end = vor__used_slots_end(m);
+    lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
+    for (uint32_t s = 0; s < end; s++) {
+        lv[s] = LEVEL_UNKNOWN;
+    }
+    for (uint32_t s = vor__next_used_slot(m, 0); s < end; s = vor__next_used_slot(m, s + 1u)) {
+        if (vor__vertex_index(&m->triangles[s], VOR__INFINITE) != 3u) { /* outside: level 0 */
+            lv[s] = 0;
+            lawson_push(&w, (vor_index_t)s, (vor_index_t)s);
+        }
+    }
+    for (uint32_t level = 0; level <= LEVEL_MAX; level++) {
+        if (level > 0u) { /* the pending triangles of this level start it */
+            for (uint32_t s = vor__next_used_slot(m, 0); s < end; s = vor__next_used_slot(m, s + 1u)) {
+                if (lv[s] == (level | LEVEL_PENDING)) {
+                    lv[s] = (uint8_t)level;
+                    lawson_push(&w, (vor_index_t)s, (vor_index_t)s);
+                }
+            }
+        }
+        flood(c, &w, level);
+    }
+    c->domain = true;
+    return VOR_OK;
+}
+
+int vor_cdt_inside_begin(vor_cdt_triangle_iter_t *it, const vor_t *d)
+{
+    int err = vor_cdt_triangles_begin(it, d);
+    if ((err == VOR_OK) && !d->cdt->domain) {
+        it->d = NULL;
+        err = VOR_ERR_ARG;
+    }
+    if (err == VOR_OK) {
+        it->inside = true;
+    }
+    return err;
+}
+
+/* ------------------------------------------------------------------ */
 /* Output                                                              */
 
 int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d)
@@ -1551,6 +1668,7 @@ int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d)
     }
     it->d = ((d != NULL) && (d->cdt != NULL)) ? d : NULL;
     it->slot = 0;
+    it->inside = false;
     return (it->d != NULL) ? VOR_OK : VOR_ERR_ARG;
 }
 
@@ -1569,8 +1687,9 @@ int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3])
         vor_index_t w[3];
         vor__vertices(&m->triangles[s], w);
         /* of nonzero area: as vor_triangles_next reports the Delaunay ones */
-        if ((w[0] != VOR__INFINITE) && (w[1] != VOR__INFINITE) && (w[2] != VOR__INFINITE) &&
-            (exact_orient(c, w[0], w[1], w[2]) != 0)) {
+        bool wanted = !it->inside || (c->domain && ((c->levels[s] & 1u) != 0u));
+        if (wanted && (w[0] != VOR__INFINITE) && (w[1] != VOR__INFINITE) &&
+            (w[2] != VOR__INFINITE) && (exact_orient(c, w[0], w[1], w[2]) != 0)) {
             ids[0] = w[0];
             ids[1] = w[1];
             ids[2] = w[2];

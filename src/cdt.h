@@ -46,6 +46,8 @@ struct vor__cdt {
     uint32_t crossing_count;
     vor_index_t *scratch;      /* [13 (max_cut + 4)], one piece's cavity */
     uint32_t max_cut;
+    uint8_t *levels;           /* [triangle slots]: the domain's nesting levels */
+    bool domain;               /* levels hold the current triangulation's */
 };
 
 /* The first slot to probe for edge u-v (u < v): a multiplicative hash

@@ -27,7 +27,7 @@
 #include "vor_cdt.h"
 
 #define CDT_SITES 120u
-#define CDT_CONSTRAINTS 24u
+#define CDT_CONSTRAINTS 40u
 #define CDT_CROSSINGS 200u
 #define CDT_VERTICES (CDT_SITES + CDT_CROSSINGS)
 #define CDT_EDGES (3u * CDT_VERTICES)
@@ -794,8 +794,184 @@ static void check_star(void)
     CHECK(vor_remove(&d, 12) == VOR_ERR_CONSTRAINED, "the centre ends constraints");
 }
 
+/* How many of the test's constraints hold both u and v (ends included):
+ * the constraints through edge u-v. */
+static uint32_t constraints_through(const vor_t *d, uint32_t u, uint32_t v)
+{
+    vor__hpoint_t hu;
+    vor__hpoint_t hv;
+    (void)vertex_of(d, u, &hu);
+    (void)vertex_of(d, v, &hv);
+    uint32_t n = 0;
+    for (uint32_t k = 0; k < model.constraints; k++) {
+        bool eu = (u == model.a[k]) || (u == model.b[k]) || on_constraint(&hu, k);
+        bool ev = (v == model.a[k]) || (v == model.b[k]) || on_constraint(&hv, k);
+        n += (eu && ev) ? 1u : 0u;
+    }
+    return n;
+}
+
+/* The domain's triangles against the even-odd rule, locally: across every
+ * edge the inside flips exactly when an odd number of the test's
+ * constraints run along it, and beside the hull's outside it is that
+ * number's parity (closed polygons make the rule path-independent). */
+static unsigned long check_domain(const vor_t *d, uint32_t *inside_count)
+{
+    unsigned long bad = 0;
+    static uint64_t inside_keys[2u * CDT_VERTICES];
+    uint32_t ni = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    bad += (vor_cdt_inside_begin(&it, d) == VOR_OK) ? 0u : 1u;
+    while ((vor_cdt_triangles_next(&it, ids) == 1) && (ni < 2u * CDT_VERTICES)) {
+        /* a triangle by its sorted corners */
+        uint32_t lo = ids[0] < ids[1] ? ids[0] : ids[1];
+        lo = lo < ids[2] ? lo : ids[2];
+        uint32_t hi = ids[0] > ids[1] ? ids[0] : ids[1];
+        hi = hi > ids[2] ? hi : ids[2];
+        uint32_t mid = ids[0] + ids[1] + ids[2] - lo - hi;
+        inside_keys[ni++] = ((uint64_t)lo << 42) | ((uint64_t)mid << 21) | hi;
+    }
+    *inside_count = ni;
+    sort_keys(inside_keys, ni);
+    uint32_t nh = 0;
+    (void)vor_cdt_triangles_begin(&it, d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        uint32_t lo = ids[0] < ids[1] ? ids[0] : ids[1];
+        lo = lo < ids[2] ? lo : ids[2];
+        uint32_t hi = ids[0] > ids[1] ? ids[0] : ids[1];
+        hi = hi > ids[2] ? hi : ids[2];
+        uint32_t mid = ids[0] + ids[1] + ids[2] - lo - hi;
+        uint32_t in = has_key(inside_keys, ni, ((uint64_t)lo << 42) | ((uint64_t)mid << 21) | hi) ? 1u : 0u;
+        for (unsigned k = 0; (k < 3u) && (nh < sizeof halves / sizeof halves[0]); k++) {
+            halves[nh].key = edge_key(ids[(k + 1u) % 3u], ids[(k + 2u) % 3u]);
+            halves[nh].apex = in; /* here: the triangle's inside bit */
+            halves[nh].forward = 0;
+            nh++;
+        }
+    }
+    sort_halves(halves, nh);
+    for (uint32_t i = 0; i < nh;) {
+        uint32_t j = i + 1u;
+        while ((j < nh) && (halves[j].key == halves[i].key)) {
+            j++;
+        }
+        uint32_t odd = constraints_through(d, (uint32_t)(halves[i].key >> 32),
+                                           (uint32_t)halves[i].key) & 1u;
+        uint32_t other = (j - i == 2u) ? halves[i + 1u].apex : 0u; /* the outside */
+        bad += ((halves[i].apex ^ other) == odd) ? 0u : 1u;
+        i = j;
+    }
+    return bad;
+}
+
+/* Adds constraint a-b to the model and the diagram. */
+static unsigned long add_constraint(vor_t *d, uint32_t a, uint32_t b)
+{
+    if (model.constraints == CDT_CONSTRAINTS) {
+        return 1; /* the test's own table is full */
+    }
+    model.a[model.constraints] = a;
+    model.b[model.constraints] = b;
+    model.constraints++;
+    return (vor_constrain(d, a, b) == VOR_OK) ? 0u : 1u;
+}
+
+/* Domains: nested squares (a hole with an island), overlapping squares
+ * (their crossings become vertices, the overlap is outside by parity), a
+ * square traced twice (outside again), and random star-shaped polygons,
+ * with sites inside and outside them. */
+static void check_domains(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 25);
+    unsigned long bad = 0;
+    uint32_t inside = 0;
+    for (unsigned round = 0; round < 6u; round++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        /* 4 squares: (0..90), (20..70), (35..55), and (60..110) x (60..110) */
+        static const int32_t squares[4][2] = {{0, 90}, {20, 70}, {35, 55}, {60, 110}};
+        uint32_t corner[4][4];
+        for (unsigned q = 0; q < 4u; q++) {
+            int32_t lo = squares[q][0];
+            int32_t hi = squares[q][1];
+            vor_point_t c4[4] = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
+            for (unsigned k = 0; k < 4u; k++) {
+                (void)vor_insert(&d, c4[k], &corner[q][k]);
+                model.at[corner[q][k]] = c4[k];
+                model.live[corner[q][k]] = true;
+            }
+        }
+        for (uint32_t i = 0; i < 30u; i++) {
+            (void)insert_random(&d, &rng, 1u);
+            vor_point_t p = {test_rng_range(&rng, -10, 120), test_rng_range(&rng, -10, 120)};
+            insert_all(&d, &p, 1);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        unsigned count = (round % 2u == 0u) ? 4u : 3u;
+        for (unsigned q = 0; q < count; q++) {
+            for (unsigned k = 0; k < 4u; k++) {
+                bad += add_constraint(&d, corner[q][k], corner[q][(k + 1u) & 3u]);
+            }
+        }
+        if (round >= 2u) { /* the first square once more: its inside flips */
+            for (unsigned k = 0; k < 4u; k++) {
+                bad += add_constraint(&d, corner[0][k], corner[0][(k + 1u) & 3u]);
+            }
+        }
+        if (round >= 4u) { /* a random star-shaped polygon around a site */
+            uint32_t ring[8];
+            uint32_t n = 0;
+            for (uint32_t tries = 0; (tries < 50u) && (n < 8u); tries++) {
+                uint32_t s = test_rng_u32(&rng) % d.site_count;
+                bool fresh = model.live[s];
+                for (uint32_t k = 0; k < n; k++) {
+                    fresh = fresh && (ring[k] != s);
+                }
+                if (fresh) {
+                    ring[n++] = s;
+                }
+            }
+            /* sort by angle around the first: half-plane, then orientation */
+            vor_point_t o = model.at[ring[0]];
+            for (uint32_t i = 2; i < n; i++) {
+                for (uint32_t j = i; j > 1u; j--) {
+                    vor_point_t p = model.at[ring[j - 1u]];
+                    vor_point_t q = model.at[ring[j]];
+                    bool hp = (p.y > o.y) || ((p.y == o.y) && (p.x > o.x));
+                    bool hq = (q.y > o.y) || ((q.y == o.y) && (q.x > o.x));
+                    if ((hp == hq) ? (vor_orient2d(o, p, q) >= 0) : hp) {
+                        break;
+                    }
+                    uint32_t t = ring[j];
+                    ring[j] = ring[j - 1u];
+                    ring[j - 1u] = t;
+                }
+            }
+            for (uint32_t i = 1; i < n; i++) {
+                bad += add_constraint(&d, ring[i], ring[(i + 1u < n) ? (i + 1u) : 1u]);
+            }
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        uint32_t in;
+        bad += check_domain(&d, &in);
+        inside += in;
+        bad += check_cdt(&d);
+        /* a change clears the domain */
+        (void)insert_random(&d, &rng, 1u);
+        vor_cdt_triangle_iter_t it;
+        bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    }
+    test_printf("cdt domains: %u inside triangles\n", (unsigned)inside);
+    CHECK(bad == 0 && inside > 0u, "cdt domains: %lu wrong", bad);
+    CHECK(vor_cdt_domain(NULL) == VOR_ERR_ARG, "vor_cdt_domain(NULL)");
+}
+
 void test_cdt(void)
 {
+    TEST_CASE("domains") check_domains();
     TEST_CASE("errors") check_errors();
     TEST_CASE("grid_lines") check_grid_lines();
     TEST_CASE("star") check_star();
