@@ -966,7 +966,7 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
-COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops")
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt")
 
 
 def help_cases(tmp):
@@ -1392,6 +1392,163 @@ def header_cases(tmp):
     check(r.returncode == 0 and r.stdout == "1\n", f"predicates header: {r.returncode} {r.stdout!r} {r.stderr!r}")
 
 
+def hull_size(pts):
+    """Points on the convex hull's boundary, collinear ones included."""
+    pts = sorted(set(pts))
+    if len(pts) < 3:
+        return len(pts)
+
+    def chain(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and orient(out[-2], out[-1], p) < 0:
+                out.pop()
+            out.append(p)
+        return out
+    lower, upper = chain(pts), chain(reversed(pts))
+    return len(lower) + len(upper) - 2
+
+
+def on_open_segment(a, b, p):
+    """Is p (Fractions) strictly inside segment a-b?"""
+    if (b[0] - a[0]) * (p[1] - a[1]) != (b[1] - a[1]) * (p[0] - a[0]):
+        return False
+    t = (p[0] - a[0]) * (b[0] - a[0]) + (p[1] - a[1]) * (b[1] - a[1])
+    return 0 < t < (b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2
+
+
+def check_cdt_output(sites, pairs, out, domain, what):
+    """vor cdt's output against the definition: crossing vertices exactly
+    where two constraints cross off the sites, counterclockwise triangles
+    covering the hull, every edge that is no constraint locally Delaunay
+    (exact rationals), the constrained edges the constraints' pieces, and
+    with --domain the inside flipping across odd edges only."""
+    from fractions import Fraction as F
+    from math import gcd
+    first = {}
+    point = {}
+    for i, p in enumerate(sites):
+        first.setdefault(p, i)
+        point[i] = (F(p[0]), F(p[1]))
+    distinct = [i for i, p in enumerate(sites) if first[p] == i]
+    cons = [(first[sites[a]], first[sites[b]]) for a, b in pairs if first[sites[a]] != first[sites[b]]]
+    lines = out.split("\n")[:-1]
+    ok = True
+    n = len(sites)
+    crossings = [l.split() for l in lines if l.startswith("s ")]
+    tris = [tuple(map(int, l.split()[1:])) for l in lines if l.startswith("t ")]
+    edges = set(tuple(map(int, l.split()[1:])) for l in lines if l.startswith("c "))
+    for k, c in enumerate(crossings):
+        cid, a, b, c2, d2, x, y, w = map(int, c[1:])
+        ok &= cid == n + k and w > 0 and gcd(gcd(abs(x), abs(y)), w) == 1
+        p = (F(x, w), F(y, w))
+        ok &= on_open_segment(point[a], point[b], p) and on_open_segment(point[c2], point[d2], p)
+        ok &= (a, b) in cons and (c2, d2) in cons
+        ok &= all(p != point[i] for i in distinct) and all(p != point[j] for j in point if j >= n)
+        point[cid] = p
+    # every crossing of two constraints off the sites has its vertex
+    for i in range(len(cons)):
+        for j in range(i):
+            a, b = (point[v] for v in cons[i])
+            c, d = (point[v] for v in cons[j])
+            den = (b[0] - a[0]) * (d[1] - c[1]) - (b[1] - a[1]) * (d[0] - c[0])
+            if den == 0:
+                continue
+            t = ((c[0] - a[0]) * (d[1] - c[1]) - (c[1] - a[1]) * (d[0] - c[0])) / den
+            p = (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]))
+            if on_open_segment(a, b, p) and on_open_segment(c, d, p) and \
+                    all(p != point[v] for v in distinct):
+                ok &= any(point[v] == p for v in point if v >= n)
+    # the pieces
+    pieces = set()
+    for a, b in cons:
+        on = sorted((v for v in point if v not in (a, b) and (v >= n or first[sites[v]] == v)
+                     and on_open_segment(point[a], point[b], point[v])),
+                    key=lambda v: abs(point[v][0] - point[a][0]) + abs(point[v][1] - point[a][1]))
+        chain = [a] + on + [b]
+        pieces |= {(min(u, v), max(u, v)) for u, v in zip(chain, chain[1:])}
+    ok &= edges == pieces
+    # triangles
+    half = {}
+    for t in tris:
+        if len(t) != 3 or orient(*(point[v] for v in t)) <= 0:
+            ok = False
+            continue
+        for k in range(3):
+            half.setdefault((t[k], t[(k + 1) % 3]), t[(k + 2) % 3])
+    for (u, v), w in half.items():
+        z = half.get((v, u))
+        if z is not None and (min(u, v), max(u, v)) not in edges:
+            ok &= incircle(point[u], point[v], point[w], point[z]) <= 0
+    if not domain:
+        h = hull_size([sites[i] for i in distinct])
+        expected = 2 * (len(distinct) + len(crossings)) - h - 2 if len(tris) else 0
+        ok &= len(tris) == expected
+    check(ok, f"vor cdt {what}: output does not satisfy the definition")
+    return tris, edges, point
+
+
+def cdt_cases(rng, tmp):
+    """vor cdt on random sites and crossing constraints, grids with
+    constraints along their lines, a polygon with a hole (--domain, checked
+    by parity), and its errors."""
+    import os
+    from fractions import Fraction as F
+    for case in range(24):
+        span = (6, 1000, 2**31 - 1)[case % 3]
+        n = rng.randint(3, 40)
+        sites = [(rng.randint(-span, span) if span < MAX else rng.randint(MIN, MAX),
+                  rng.randint(-span, span) if span < MAX else rng.randint(MIN, MAX)) for _ in range(n)]
+        pairs = [(rng.randrange(n), rng.randrange(n)) for _ in range(rng.randint(0, 10))]
+        sp, cp = os.path.join(tmp, "s.txt"), os.path.join(tmp, "c.txt")
+        open(sp, "w").write("".join(f"{x} {y}\n" for x, y in sites))
+        open(cp, "w").write("".join(f"{a} {b}\n" for a, b in pairs))
+        r = run(["cdt", sp, cp], "")
+        check(r.returncode == 0 and r.stderr == "", f"vor cdt case {case}: {r.returncode} {r.stderr!r}")
+        if r.returncode == 0:
+            check_cdt_output(sites, pairs, r.stdout, False, f"case {case}")
+    # a square with a square hole and a triangle inside the hole: --domain
+    sites = [(0, 0), (100, 0), (100, 100), (0, 100), (30, 30), (70, 30), (70, 70), (30, 70),
+             (40, 40), (60, 40), (50, 60), (10, 50), (50, 10), (85, 85), (50, 50), (120, 50)]
+    pairs = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (8, 9), (9, 10), (10, 8)]
+    open(sp, "w").write("".join(f"{x} {y}\n" for x, y in sites))
+    open(cp, "w").write("# walls\n" + "".join(f"{a} {b}\n" for a, b in pairs) + "\n3 3\n")
+    r = run(["cdt", "--domain", sp, cp], "")
+    check(r.returncode == 0, f"vor cdt --domain: {r.returncode} {r.stderr!r}")
+    inside, edges, point = check_cdt_output(sites, pairs, r.stdout, True, "--domain")
+    full, _, _ = check_cdt_output(sites, pairs, run(["cdt", sp, cp], "").stdout, False, "walls")
+    # the inside by a ray from each triangle's centroid: crossings of the walls
+    def parity(t):
+        cx = sum(point[v][0] for v in t) / 3
+        cy = sum(point[v][1] for v in t) / 3
+        count = 0
+        for a, b in pairs:
+            (ax, ay), (bx, by) = point[a], point[b]
+            if (ay > cy) != (by > cy):
+                x = ax + (cy - ay) * (bx - ax) / (by - ay)
+                count += x > cx
+        return count % 2
+    check(set(inside) == {t for t in full if parity(t)}, "vor cdt --domain: not the even-odd inside")
+    check(len(inside) > 0 and len(inside) < len(full), "vor cdt --domain: nothing or everything inside")
+    # errors: a missing site names the file and line; status 2, nothing out
+    open(cp, "w").write("0 1\n\n1 16\n")
+    r = run(["cdt", sp, cp], "")
+    check(r.returncode == 2 and r.stdout == "" and f"{cp}:3:" in r.stderr and "no site 16" in r.stderr,
+          f"vor cdt missing site: {r.returncode} {r.stderr!r}")
+    open(cp, "w").write("0 x\n")
+    r = run(["cdt", sp, cp], "")
+    check(r.returncode == 2 and f"{cp}:1:" in r.stderr, f"vor cdt bad id: {r.stderr!r}")
+    open(cp, "w").write("0 1 2\n")
+    r = run(["cdt", sp, cp], "")
+    check(r.returncode == 2 and f"{cp}:1:" in r.stderr, f"vor cdt three ids: {r.stderr!r}")
+    # a repeated site is its first: the constraint from a site to its repeat is ignored
+    open(sp, "w").write("0 0\n10 0\n0 10\n0 0\n")
+    open(cp, "w").write("0 3\n3 1\n")
+    r = run(["cdt", sp, cp], "")
+    check(r.returncode == 0 and r.stdout.splitlines()[-1] == "c 0 1" and "c 0 3" not in r.stdout,
+          f"vor cdt repeated site: {r.stdout!r}")
+
+
 def main():
     rng = random.Random(5)
     lines, expected = predicates_cases(rng)
@@ -1437,6 +1594,7 @@ def main():
         picture_cases(tmp)
         header_cases(tmp)
         option_cases(rng, tmp)
+        cdt_cases(rng, tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

@@ -178,7 +178,7 @@ double cli_seconds(void);
 /* The text of `vor COMMAND --help`: usage, input and output formats, an
  * example. */
 extern const char cli_predicates_help[], cli_delaunay_help[], cli_nearest_help[],
-    cli_raster_help[], cli_cells_help[], cli_draw_help[], cli_ops_help[];
+    cli_raster_help[], cli_cells_help[], cli_draw_help[], cli_ops_help[], cli_cdt_help[];
 
 /* Subcommands: each takes its arguments after the subcommand name and
  * returns the process exit status. */
@@ -189,5 +189,6 @@ int cli_raster(int argc, char **argv);
 int cli_cells(int argc, char **argv);
 int cli_draw(int argc, char **argv);
 int cli_ops(int argc, char **argv);
+int cli_cdt(int argc, char **argv);
 
 #endif

@@ -29,6 +29,7 @@ static const struct {
     {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
     {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
     {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
+    {"cdt", cli_cdt, "constrained Delaunay triangulation (SITES CONSTRAINTS; --domain)"},
 };
 
 /* The help of each command (cli.h); a command without one shows its
@@ -44,6 +45,7 @@ static const struct {
     {"cells", cli_cells_help},
     {"draw", cli_draw_help},
     {"ops", cli_ops_help},
+    {"cdt", cli_cdt_help},
 };
 
 static void print_usage(FILE *out)
