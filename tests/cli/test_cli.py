@@ -1530,6 +1530,16 @@ def cdt_cases(rng, tmp):
         return count % 2
     check(set(inside) == {t for t in full if parity(t)}, "vor cdt --domain: not the even-odd inside")
     check(len(inside) > 0 and len(inside) < len(full), "vor cdt --domain: nothing or everything inside")
+    # vor draw of the walls: their crossing vertices as squares, the inside shaded
+    svg = os.path.join(tmp, "walls.svg")
+    open(cp, "a").write("11 13\n")  # a wall across the hole's square: two crossings
+    r = run(["draw", "--constraints", cp, "--domain", sp, "-o", svg], "")
+    text = open(svg).read() if r.returncode == 0 else ""
+    crossings = sum(1 for l in run(["cdt", sp, cp], "").stdout.splitlines() if l.startswith("s "))
+    check(r.returncode == 0 and crossings == 2 and text.count("<rect x=") == crossings and "fill-opacity" in text
+          and 'stroke="#202020"' in text, f"vor draw --constraints: {r.returncode} {r.stderr!r}")
+    r = run(["draw", "--domain", sp, "-o", svg], "")
+    check(r.returncode == 2 and "--domain needs --constraints" in r.stderr, f"draw --domain alone: {r.stderr!r}")
     # errors: a missing site names the file and line; status 2, nothing out
     open(cp, "w").write("0 1\n\n1 16\n")
     r = run(["cdt", sp, cp], "")

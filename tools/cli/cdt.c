@@ -128,6 +128,98 @@ static int compare_triples(const void *p, const void *q)
     return 0;
 }
 
+uint32_t (*cli_read_constraints(const char *path, const uint32_t *first, uint32_t n,
+                                size_t *count))[2]
+{
+    cli_input_t in;
+    cli_open(&in, path);
+    uint32_t (*pairs)[2] = NULL;
+    size_t room = 0;
+    *count = 0;
+    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
+        int32_t ids[2];
+        const char *why = NULL;
+        for (unsigned k = 0; k < 2u; k++) {
+            if (!cli_int32_field(&line, &ids[k], &why) && (why != NULL)) {
+                cli_line_error(&in, why);
+            }
+            if ((ids[k] < 0) || ((uint32_t)ids[k] >= n)) {
+                char reason[96];
+                snprintf(reason, sizeof reason, "no site %ld (the sites are 0 .. %ld)", (long)ids[k],
+                         (long)n - 1);
+                cli_line_error(&in, reason);
+            }
+        }
+        if (!cli_at_end(line)) {
+            cli_line_error(&in, "more than two site ids");
+        }
+        uint32_t a = first[ids[0]];
+        uint32_t b = first[ids[1]];
+        if (a == b) {
+            continue; /* a site to itself: ignored */
+        }
+        if (*count == room) {
+            room = (room == 0u) ? 64u : 2u * room;
+            pairs = realloc(pairs, room * sizeof *pairs);
+            if (pairs == NULL) {
+                cli_error("out of memory");
+            }
+        }
+        pairs[*count][0] = a;
+        pairs[*count][1] = b;
+        (*count)++;
+    }
+    cli_close(&in);
+    return pairs;
+}
+
+void *cli_constrain_all(vor_t *d, uint32_t capacity, uint32_t (*pairs)[2], size_t count,
+                        uint32_t *crossings)
+{
+    vor_cdt_limits_t limits = {3u * (capacity + 64u), 64u, 0};
+    void *memory = NULL;
+    for (;;) {
+        limits.cut = (2u * (capacity + limits.crossings)) + 2u;
+        size_t bytes = VOR_CDT_BYTES(capacity, limits.edges, limits.crossings, limits.cut);
+        free(memory);
+        memory = malloc(bytes); /* malloc's alignment is VOR_CDT_ALIGN's at least */
+        if (memory == NULL) {
+            cli_error("out of memory");
+        }
+        int err = vor_cdt_attach(d, memory, bytes, &limits);
+        if (err != VOR_OK) {
+            cli_library_error("vor_cdt_attach", err);
+        }
+        size_t k = 0;
+        while ((k < count) && ((err = vor_constrain(d, pairs[k][0], pairs[k][1])) == VOR_OK)) {
+            k++;
+        }
+        if (k == count) {
+            *crossings = limits.crossings;
+            return memory;
+        }
+        if ((err != VOR_ERR_NOMEM) || (limits.crossings >= VOR_MAX_SITES - capacity)) {
+            cli_library_error("vor_constrain", err);
+        }
+        limits.crossings = (limits.crossings > (VOR_MAX_SITES - capacity) / 2u)
+                               ? VOR_MAX_SITES - capacity
+                               : 2u * limits.crossings;
+        limits.edges = 3u * (capacity + limits.crossings);
+    }
+}
+
+void cli_crossing_point(const vor_point_t *sites, const uint32_t s[4], double *x, double *y)
+{
+    wide_t xn, yn, w;
+    crossing_point(sites[s[0]], sites[s[1]], sites[s[2]], sites[s[3]], &xn, &yn, &w);
+    /* to the nearest thousandth, exactly, then to double */
+    wide_t half = w / 2;
+    wide_t xs = (xn * 1000 + ((xn < 0) ? -half : half)) / w;
+    wide_t ys = (yn * 1000 + ((yn < 0) ? -half : half)) / w;
+    *x = (double)(long long)xs / 1000.0;
+    *y = (double)(long long)ys / 1000.0;
+}
+
 int cli_cdt(int argc, char **argv)
 {
     bool domain = false;
@@ -157,82 +249,17 @@ int cli_cdt(int argc, char **argv)
     if (first == NULL) {
         cli_error("out of memory");
     }
-    /* the constraints, ids mapped to each point's first site */
-    cli_input_t in;
-    cli_open(&in, paths[1]);
-    uint32_t (*pairs)[2] = NULL;
-    size_t count = 0;
-    size_t room = 0;
     vor_t d;
     void *arena = cli_diagram(&d, capacity);
     int built = vor_build(&d, sites, n, NULL, first);
     if (built != VOR_OK) {
         cli_library_error("vor_build", built);
     }
-    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
-        int32_t ids[2];
-        const char *why = NULL;
-        for (unsigned k = 0; k < 2u; k++) {
-            if (!cli_int32_field(&line, &ids[k], &why) && (why != NULL)) {
-                cli_line_error(&in, why);
-            }
-            if ((ids[k] < 0) || ((uint32_t)ids[k] >= n)) {
-                char reason[96];
-                snprintf(reason, sizeof reason, "no site %ld (the sites are 0 .. %ld)", (long)ids[k],
-                         (long)n - 1);
-                cli_line_error(&in, reason);
-            }
-        }
-        if (!cli_at_end(line)) {
-            cli_line_error(&in, "more than two site ids");
-        }
-        uint32_t a = first[ids[0]];
-        uint32_t b = first[ids[1]];
-        if (a == b) {
-            continue; /* a site to itself: ignored */
-        }
-        if (count == room) {
-            room = (room == 0u) ? 64u : 2u * room;
-            pairs = realloc(pairs, room * sizeof *pairs);
-            if (pairs == NULL) {
-                cli_error("out of memory");
-            }
-        }
-        pairs[count][0] = a;
-        pairs[count][1] = b;
-        count++;
-    }
-    cli_close(&in);
-    /* constraint memory, grown until every constraint fits */
-    vor_cdt_limits_t limits = {3u * (capacity + 64u), 64u, 0};
-    void *memory = NULL;
-    for (;;) {
-        limits.cut = (2u * (capacity + limits.crossings)) + 2u;
-        size_t bytes = VOR_CDT_BYTES(capacity, limits.edges, limits.crossings, limits.cut);
-        free(memory);
-        memory = malloc(bytes); /* malloc's alignment is VOR_CDT_ALIGN's at least */
-        if (memory == NULL) {
-            cli_error("out of memory");
-        }
-        int err = vor_cdt_attach(&d, memory, bytes, &limits);
-        if (err != VOR_OK) {
-            cli_library_error("vor_cdt_attach", err);
-        }
-        size_t k = 0;
-        while ((k < count) && ((err = vor_constrain(&d, pairs[k][0], pairs[k][1])) == VOR_OK)) {
-            k++;
-        }
-        if (k == count) {
-            break;
-        }
-        if ((err != VOR_ERR_NOMEM) || (limits.crossings >= VOR_MAX_SITES - capacity)) {
-            cli_library_error("vor_constrain", err);
-        }
-        limits.crossings = (limits.crossings > (VOR_MAX_SITES - capacity) / 2u)
-                               ? VOR_MAX_SITES - capacity
-                               : 2u * limits.crossings;
-        limits.edges = 3u * (capacity + limits.crossings);
-    }
+    size_t count;
+    uint32_t (*pairs)[2] = cli_read_constraints(paths[1], first, n, &count);
+    vor_cdt_limits_t limits = {0, 0, 0};
+    void *memory = cli_constrain_all(&d, capacity, pairs, count, &limits.crossings);
+    limits.edges = 3u * (capacity + limits.crossings);
     if (domain && (vor_cdt_domain(&d) != VOR_OK)) {
         cli_library_error("vor_cdt_domain", VOR_ERR_ARG);
     }

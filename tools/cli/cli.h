@@ -191,4 +191,17 @@ int cli_draw(int argc, char **argv);
 int cli_ops(int argc, char **argv);
 int cli_cdt(int argc, char **argv);
 
+/* vor cdt's parts, for vor draw too (cdt.c): the constraints of a file as
+ * pairs of site ids mapped through first[] (a point's first site; a site
+ * to itself dropped), an error exit naming the line for a bad one; the
+ * constraint memory attached to d (built from capacity sites) and every
+ * pair constrained, grown until they fit (free it; *crossings its crossing
+ * limit: crossing ids are capacity + 0 .. *crossings - 1); and a crossing
+ * vertex's point to the nearest thousandth, for pictures. */
+uint32_t (*cli_read_constraints(const char *path, const uint32_t *first, uint32_t n,
+                                size_t *count))[2];
+void *cli_constrain_all(vor_t *d, uint32_t capacity, uint32_t (*pairs)[2], size_t count,
+                        uint32_t *crossings);
+void cli_crossing_point(const vor_point_t *sites, const uint32_t s[4], double *x, double *y);
+
 #endif

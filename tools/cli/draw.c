@@ -28,6 +28,12 @@
  * Colours: site i is filled with cli_site_colour(i), as in `vor raster
  * --png`.
  *
+ * --constraints FILE (pairs of site ids, as `vor cdt` reads them) draws the
+ * constrained Delaunay triangulation over the cells instead of the
+ * Delaunay one: its triangles thin, the constrained edges thick, crossing
+ * vertices as squares (at their exact point rounded to a thousandth);
+ * --domain draws only the triangles inside the constraints, shaded.
+ *
  * --cells DUMP draws what a firmware computed (examples/voronoi streams it
  * to build/demo.cells): lines "box X0 Y0 X1 Y1" (first), "s X Y" (site i
  * is the i-th s line) and "c I M X1 Y1 ... XM YM" (as `vor cells`).
@@ -37,10 +43,11 @@
 #include <string.h>
 
 #include "cli.h"
+#include "vor_cdt.h"
 
 #define USAGE                                                                                      \
     "usage: vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull] [--y-down]\n" \
-    "                SITES -o OUT.svg\n"                                                             \
+    "                [--constraints FILE [--domain]] SITES -o OUT.svg\n"                            \
     "       vor draw [--y-down] --cells DUMP -o OUT.svg"
 
 const char cli_draw_help[] =
@@ -49,7 +56,10 @@ const char cli_draw_help[] =
     "An SVG picture of the Voronoi diagram of SITES ('-': stdin): every cell\n"
     "clipped to the box and filled with its site's colour, the Voronoi edges\n"
     "and the sites; --triangles adds the Delaunay triangles, --ids the site\n"
-    "ids, --hull the convex hull. y points up, as in the library and in\n"
+    "ids, --hull the convex hull; --constraints FILE the constrained\n"
+    "triangulation (as vor cdt: constraints thick, crossing vertices as\n"
+    "squares), --domain only its triangles inside them, shaded.\n"
+    "y points up, as in the library and in\n"
     "`vor raster --png`; --y-down draws in screen order (y = Y0 at the top).\n"
     "\n"
     "input:  one site per line, \"x y\" or \"x,y\" (CSV, optional header line);\n"
@@ -248,8 +258,80 @@ static vor_box_t default_box(const vor_point_t *sites, uint32_t n)
     return box;
 }
 
+/* The coordinates of vertex v of the constrained triangulation, as text:
+ * a site's integers, a crossing's point to a thousandth. */
+static void vertex_text(const vor_t *d, const vor_point_t *sites, uint32_t v, char text[64])
+{
+    uint32_t s[4];
+    if ((v >= d->max_sites) && (vor_cdt_crossing(d, v, s) == VOR_OK)) {
+        double x, y;
+        cli_crossing_point(sites, s, &x, &y);
+        snprintf(text, 64, "%.3f %.3f", x, y);
+    } else {
+        snprintf(text, 64, "%d %d", sites[v].x, sites[v].y);
+    }
+}
+
+/* The constrained triangulation over the picture (--constraints). */
+static void draw_constrained(drawing_t *g, vor_t *d, const vor_point_t *sites, bool domain)
+{
+    char a[64], b[64], c[64];
+    if (domain && (vor_cdt_domain(d) != VOR_OK)) {
+        cli_library_error("vor_cdt_domain", VOR_ERR_ARG);
+    }
+    stroke_t stroke;
+    stroke_begin(&stroke, &g->svg, "#1f4fbf", 0.5 * g->unit);
+    vor_cdt_triangle_iter_t t;
+    (void)(domain ? vor_cdt_inside_begin(&t, d) : vor_cdt_triangles_begin(&t, d));
+    uint32_t abc[3];
+    if (domain) { /* the inside shaded, then outlined */
+        cli_append(&g->svg, "<path fill=\"#000\" fill-opacity=\"0.18\" stroke=\"none\" d=\"");
+        while (vor_cdt_triangles_next(&t, abc)) {
+            vertex_text(d, sites, abc[0], a);
+            vertex_text(d, sites, abc[1], b);
+            vertex_text(d, sites, abc[2], c);
+            cli_append(&g->svg, "M%sL%sL%sZ", a, b, c);
+        }
+        cli_append(&g->svg, "\"/>\n");
+        (void)vor_cdt_inside_begin(&t, d);
+    }
+    while (vor_cdt_triangles_next(&t, abc)) {
+        vertex_text(d, sites, abc[0], a);
+        vertex_text(d, sites, abc[1], b);
+        vertex_text(d, sites, abc[2], c);
+        stroke_piece(&stroke);
+        cli_append(&g->svg, "M%sL%sL%sZ", a, b, c);
+    }
+    stroke_end(&stroke);
+    stroke_begin(&stroke, &g->svg, "#202020", 2.5 * g->unit);
+    vor_cdt_edge_iter_t e;
+    vor_cdt_edges_begin(&e, d);
+    uint32_t u, v;
+    while (vor_cdt_edges_next(&e, &u, &v)) {
+        vertex_text(d, sites, u, a);
+        vertex_text(d, sites, v, b);
+        stroke_piece(&stroke);
+        cli_append(&g->svg, "M%sL%s", a, b);
+    }
+    stroke_end(&stroke);
+    for (uint32_t i = 0; i < VOR_MAX_SITES - d->max_sites; i++) {
+        uint32_t s[4];
+        if (vor_cdt_crossing(d, d->max_sites + i, s) != VOR_OK) {
+            if (i > 0u && vor_cdt_crossing(d, d->max_sites + i - 1u, s) != VOR_OK) {
+                break; /* crossing ids are used from the first up */
+            }
+            continue;
+        }
+        double x, y;
+        cli_crossing_point(sites, s, &x, &y);
+        double r = 2.5 * g->unit;
+        cli_append(&g->svg, "<rect x=\"%.3f\" y=\"%.3f\" width=\"%.4g\" height=\"%.4g\" fill=\"#202020\"/>\n",
+                   x - r, y - r, 2 * r, 2 * r);
+    }
+}
+
 static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vor_point_t *sites, uint32_t n,
-                         bool triangles, bool ids, bool hull)
+                         bool triangles, bool ids, bool hull, const char *constraints, bool domain)
 {
     uint32_t capacity = n;
     uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
@@ -275,7 +357,16 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
         cli_error("cell computation failed");
     }
     end_cells(g);
-    if (triangles) {
+    void *memory = NULL;
+    uint32_t (*pairs)[2] = NULL;
+    if (constraints != NULL) {
+        size_t pair_count;
+        uint32_t crossings;
+        pairs = cli_read_constraints(constraints, duplicate_of, n, &pair_count);
+        memory = cli_constrain_all(&d, capacity, pairs, pair_count, &crossings);
+        draw_constrained(g, &d, sites, domain);
+    }
+    if (triangles && (constraints == NULL)) {
         stroke_t stroke;
         stroke_begin(&stroke, &g->svg, "#1f4fbf", 0.5 * g->unit);
         vor_triangle_iter_t t;
@@ -319,6 +410,8 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
         }
         cli_append(&g->svg, "</g>\n");
     }
+    free(pairs);
+    free(memory);
     free(vertices);
     free(duplicate_of);
     free(arena);
@@ -406,13 +499,15 @@ int cli_draw(int argc, char **argv)
 {
     drawing_t g;
     memset(&g, 0, sizeof g);
-    bool have_box = false, have_size = false, triangles = false, ids = false, hull = false;
+    bool have_box = false, have_size = false, triangles = false, ids = false, hull = false, domain = false;
+    const char *constraints = NULL;
     int32_t width = DEFAULT_WIDTH, height = 0;
     const char *sites_path = NULL, *dump_path = NULL, *out_path = NULL;
-    enum { BOX, SIZE, TRIANGLES, IDS, HULL, Y_DOWN, CELLS, OUT };
+    enum { BOX, SIZE, TRIANGLES, IDS, HULL, Y_DOWN, CELLS, OUT, CONSTRAINTS, DOMAIN };
     static const cli_option_t options[] = {
         [BOX] = {"--box", 4}, [SIZE] = {"--size", 2},     [TRIANGLES] = {"--triangles", 0}, [IDS] = {"--ids", 0},
-        [HULL] = {"--hull", 0}, [Y_DOWN] = {"--y-down", 0}, [CELLS] = {"--cells", 1},       [OUT] = {"-o", 1}};
+        [HULL] = {"--hull", 0}, [Y_DOWN] = {"--y-down", 0}, [CELLS] = {"--cells", 1},       [OUT] = {"-o", 1},
+        [CONSTRAINTS] = {"--constraints", 1}, [DOMAIN] = {"--domain", 0}};
     cli_arguments_t args;
     cli_arguments_begin(&args, argc, argv, "draw", USAGE, options, sizeof options / sizeof options[0]);
     for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
@@ -440,6 +535,10 @@ int cli_draw(int argc, char **argv)
             g.y_down = true;
         } else if (o == CELLS) {
             dump_path = v[0];
+        } else if (o == CONSTRAINTS) {
+            constraints = v[0];
+        } else if (o == DOMAIN) {
+            domain = true;
         } else if (o == OUT) {
             out_path = v[0];
         } else if (sites_path == NULL) {
@@ -455,12 +554,15 @@ int cli_draw(int argc, char **argv)
         cli_usage_error("draw", USAGE, "give either SITES or --cells DUMP", NULL);
     }
     if (dump_path != NULL) {
-        if (have_box || triangles || ids || hull) {
-            cli_error("--cells takes its box from the dump and has no triangles, ids or hull");
+        if (have_box || triangles || ids || hull || (constraints != NULL) || domain) {
+            cli_error("--cells takes its box from the dump and has no triangles, ids, hull or constraints");
         }
         draw_dump(&g, (uint32_t)width, have_size, (uint32_t)height, dump_path);
         write_svg(&g, out_path);
         return 0;
+    }
+    if (domain && (constraints == NULL)) {
+        cli_usage_error("draw", USAGE, "--domain needs --constraints FILE", NULL);
     }
     if (have_box && (g.box.x0 >= g.box.x1 || g.box.y0 >= g.box.y1)) {
         cli_error("--box: need X0 < X1 and Y0 < Y1");
@@ -479,7 +581,7 @@ int cli_draw(int argc, char **argv)
         double h = (double)width * aspect + 0.5;
         height = h < 1 ? 1 : h > MAX_PIXELS ? MAX_PIXELS : (int32_t)h;
     }
-    draw_diagram(&g, (uint32_t)width, (uint32_t)height, sites, n, triangles, ids, hull);
+    draw_diagram(&g, (uint32_t)width, (uint32_t)height, sites, n, triangles, ids, hull, constraints, domain);
     free(sites);
     write_svg(&g, out_path);
     return 0;
