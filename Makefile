@@ -274,6 +274,12 @@ $(B)/example-%$(EXE): $$(wildcard examples/%/*.c) $(wildcard examples/common/*) 
 run-example-%: $(B)/example-%$(EXE)
 	$(RUN) $<
 
+# The reference of the constrained triangulation's tests (host only):
+# CGAL's, with exact constructions and intersections.
+$(B)/cgal-cdt: tests/reference/cgal_cdt.cpp
+	@tools/install-deps.sh bench
+	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
+
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)
 # It takes more than 32,767 sites and prints predicate counters (--stats):
