@@ -969,8 +969,155 @@ static void check_domains(void)
     CHECK(vor_cdt_domain(NULL) == VOR_ERR_ARG, "vor_cdt_domain(NULL)");
 }
 
+/* A vertex every triangle of which the constraint crosses hangs into the
+ * cavity from the chain (a spike): V = (0, -1) below the segment, its
+ * neighbours W far below and sites above. */
+static void check_spike(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{-100, 0}, {100, 0}, {0, -1},  {0, -50}, {-20, 5},
+                                    {0, 5},    {20, 5},  {-60, 30}, {60, 30}, {0, 60},
+                                    {-70, -40}, {70, -40}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += check_cdt(&d);
+    /* and a second one under it, through the spike's base */
+    bad += add_constraint(&d, 10, 11);
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt spike: %lu wrong", bad);
+}
+
+/* Builds the small-scratch scenario with limits *l: a square and its
+ * midline constrained among few sites, then sites crowding the midline. */
+static unsigned long crowd(vor_t *d, const vor_cdt_limits_t *l)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t frame[] = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}, {500, 20},
+                                        {500, 980}};
+    insert_all(d, frame, 6);
+    bad += (vor_cdt_attach(d, memory, VOR_CDT_BYTES(CDT_SITES, l->edges, l->crossings, l->cut), l) ==
+            VOR_OK)
+               ? 0u
+               : 1u;
+    for (unsigned k = 0; k < 4u; k++) {
+        bad += add_constraint(d, k, (k + 1u) & 3u);
+    }
+    bad += add_constraint(d, 4, 5);
+    for (uint32_t i = 0; i < 80u; i++) {
+        vor_point_t q = {test_rng_range(&rng, 470, 530), test_rng_range(&rng, 30, 970)};
+        insert_all(d, &q, 1);
+    }
+    return bad + check_cdt(d);
+}
+
+/* The domain's inside triangles, as sorted keys; their number. */
+static uint32_t inside_keys_of(const vor_t *d, uint64_t *keys)
+{
+    uint32_t n = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    (void)vor_cdt_inside_begin(&it, d);
+    while ((vor_cdt_triangles_next(&it, ids) == 1) && (n < CDT_EDGES)) {
+        unsigned lo = (ids[1] < ids[0]) ? 1u : 0u;
+        lo = (ids[2] < ids[lo]) ? 2u : lo;
+        keys[n++] = ((uint64_t)ids[lo] << 42) | ((uint64_t)ids[(lo + 1u) % 3u] << 21) |
+                    ids[(lo + 2u) % 3u];
+    }
+    sort_keys(keys, n);
+    return n;
+}
+
+/* Small scratch space: the domain's flood and Lawson's flips overflow
+ * their stacks and finish by sweeps, with the results of a large one
+ * (the same scenario built twice). Removing the crowded midline flips
+ * many edges. */
+static void check_small_scratch(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    static const vor_cdt_limits_t large = {3u * (CDT_SITES + 8u), 8, 2u * (CDT_SITES + 8u) + 2u};
+    static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 6};
+    static uint64_t first[CDT_EDGES]; /* check_cdt uses the other key arrays */
+    static uint64_t second[CDT_EDGES];
+    bad += crowd(&d, &large);
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    uint32_t n = inside_keys_of(&d, first);
+    bad += crowd(&d, &small);
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += (inside_keys_of(&d, second) == n) ? 0u : 1u;
+    for (uint32_t i = 0; i < n; i++) {
+        bad += (second[i] == first[i]) ? 0u : 1u;
+    }
+    bad += (n > 0u) ? 0u : 1u;
+    /* the midline off: its crowd flips back to Delaunay */
+    bad += (vor_unconstrain(&d, 5, 4) == VOR_OK) ? 0u : 1u;
+    model.constraints--;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt small scratch: %lu wrong", bad);
+}
+
+/* The calls' argument checks. */
+static void check_arguments(void)
+{
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    vor_cdt_triangle_iter_t it;
+    vor_cdt_edge_iter_t e;
+    uint32_t ids[3];
+    uint32_t a;
+    uint32_t b;
+    uint32_t s[4];
+    CHECK(vor_cdt_triangles_begin(NULL, &d) == VOR_ERR_ARG, "triangles_begin NULL");
+    CHECK(vor_cdt_triangles_begin(&it, &d) == VOR_ERR_ARG, "triangles_begin without memory");
+    CHECK(vor_cdt_triangles_next(&it, ids) == 0 && vor_cdt_triangles_next(NULL, ids) == 0,
+          "triangles_next of a closed iterator");
+    CHECK(vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG, "inside_begin without memory");
+    CHECK(vor_cdt_edges_begin(NULL, &d) == VOR_ERR_ARG && vor_cdt_edges_begin(&e, &d) == VOR_ERR_ARG,
+          "edges_begin NULL or without memory");
+    CHECK(vor_cdt_edges_next(&e, &a, &b) == 0 && vor_cdt_edges_next(NULL, &a, &b) == 0,
+          "edges_next of a closed iterator");
+    CHECK(vor_cdt_crossing(&d, 0, s) == VOR_ERR_ARG && vor_cdt_crossing(NULL, 0, s) == VOR_ERR_ARG,
+          "crossing without memory");
+    CHECK(vor_unconstrain(&d, 0, 1) == VOR_ERR_ARG && vor_unconstrain(NULL, 0, 1) == VOR_ERR_ARG,
+          "unconstrain without memory");
+    CHECK(vor_cdt_domain(&d) == VOR_ERR_ARG, "domain without memory");
+    /* one site attached, then a second: the meshes' first edge */
+    vor_point_t one = {5, 5};
+    insert_all(&d, &one, 1);
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK, "attach to one site");
+    CHECK(vor_cdt_triangles_begin(&it, &d) == VOR_OK && vor_cdt_triangles_next(&it, ids) == 0,
+          "no triangle of one site");
+    vor_point_t more[] = {{50, 5}, {20, 40}, {30, -20}};
+    insert_all(&d, more, 3);
+    CHECK(check_cdt(&d) == 0u, "the constrained triangulation of four sites");
+    CHECK(vor_cdt_triangles_next(&it, NULL) == 0 && vor_cdt_edges_next(&e, NULL, &b) == 0,
+          "iterators with NULL outputs");
+    CHECK(vor_cdt_crossing(&d, 4, NULL) == VOR_ERR_ARG && vor_cdt_crossing(&d, 3, s) == VOR_ERR_ARG &&
+              vor_cdt_crossing(&d, CDT_SITES, s) == VOR_ERR_ARG &&
+              vor_cdt_crossing(&d, CDT_SITES + CDT_CROSSINGS, s) == VOR_ERR_ARG,
+          "crossing of no crossing id");
+    CHECK(vor_unconstrain(&d, 0, 1) == VOR_ERR_ARG && vor_unconstrain(&d, 0, 99) == VOR_ERR_ARG &&
+              vor_unconstrain(&d, 2, 2) == VOR_OK,
+          "unconstrain no constraint, a free id; a site to itself does nothing");
+    CHECK(add_constraint(&d, 0, 1) == 0u && vor_unconstrain(&d, 1, 0) == VOR_OK &&
+              vor_unconstrain(&d, 0, 1) == VOR_ERR_ARG,
+          "a constraint removed once, not twice");
+}
+
 void test_cdt(void)
 {
+    TEST_CASE("arguments") check_arguments();
+    TEST_CASE("spike") check_spike();
+    TEST_CASE("small_scratch") check_small_scratch();
     TEST_CASE("domains") check_domains();
     TEST_CASE("errors") check_errors();
     TEST_CASE("grid_lines") check_grid_lines();
