@@ -1272,6 +1272,9 @@ static bool lawson_test(struct vor__cdt *c, lawson_t *w, vor_index_t u, vor_inde
 {
     vor_t *m = &c->mesh;
     unsigned k;
+    if ((u == VOR__INFINITE) || (v == VOR__INFINITE)) {
+        return false; /* a hull edge's spoke: never flipped */
+    }
     vor_index_t slot = edge_slot(m, u, v, &k);
     if ((slot == VOR__NONE) || vor__cdt_constrained(c, u, v)) {
         return false;

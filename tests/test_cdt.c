@@ -27,7 +27,7 @@
 #include "vor_cdt.h"
 
 #define CDT_SITES 120u
-#define CDT_CONSTRAINTS 40u
+#define CDT_CONSTRAINTS 80u
 #define CDT_CROSSINGS 200u
 #define CDT_VERTICES (CDT_SITES + CDT_CROSSINGS)
 #define CDT_EDGES (3u * CDT_VERTICES)
@@ -1064,6 +1064,41 @@ static void check_small_scratch(void)
     CHECK(bad == 0, "cdt small scratch: %lu wrong", bad);
 }
 
+/* Stacks that overflow at once: 70 sites in convex position (70 triangles
+ * at infinity seed the domain's flood) and a constraint through 50
+ * collinear sites (49 pieces freed at once), with a scratch of 39 pairs. */
+static void check_overflow(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    for (int32_t i = 0; i < 70; i++) { /* on the parabola y = x^2 / 64 */
+        vor_point_t p = {(i - 35) * 64, (i - 35) * (i - 35) * 64};
+        insert_all(&d, &p, 1);
+    }
+    for (int32_t i = 0; i < 50; i++) {
+        vor_point_t p = {-1225 + (i * 50), 30000};
+        insert_all(&d, &p, 1);
+    }
+    static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 2};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 2), &small) == VOR_OK)
+               ? 0u
+               : 1u;
+    for (unsigned k = 0; k < 70u; k++) { /* the hull, closed */
+        bad += add_constraint(&d, k, (k + 1u) % 70u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    uint32_t in;
+    bad += check_domain(&d, &in);
+    bad += add_constraint(&d, 70, 119); /* along the collinear sites' edges */
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 119, 70) == VOR_OK) ? 0u : 1u;
+    model.constraints--;
+    bad += check_cdt(&d);
+    CHECK(bad == 0 && in > 0u, "cdt overflow: %lu wrong", bad);
+}
+
 /* The calls' argument checks. */
 static void check_arguments(void)
 {
@@ -1118,6 +1153,7 @@ void test_cdt(void)
     TEST_CASE("arguments") check_arguments();
     TEST_CASE("spike") check_spike();
     TEST_CASE("small_scratch") check_small_scratch();
+    TEST_CASE("overflow") check_overflow();
     TEST_CASE("domains") check_domains();
     TEST_CASE("errors") check_errors();
     TEST_CASE("grid_lines") check_grid_lines();
