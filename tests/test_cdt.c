@@ -22,6 +22,7 @@
  *     constraints: each segment cut at every site and crossing vertex on
  *     it, found here by exact collinearity and sorted along it.
  */
+#include "cdt.h"
 #include "crossing.h"
 #include "test.h"
 #include "vor_cdt.h"
@@ -1099,6 +1100,61 @@ static void check_overflow(void)
     CHECK(bad == 0 && in > 0u, "cdt overflow: %lu wrong", bad);
 }
 
+/* The edge table under churn: a small table (6 edges, 12 entries) takes
+ * and gives back many different edges, so that its probes wrap around
+ * and its removals shift entries back across the end. */
+static void check_edge_table(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 31);
+    unsigned long bad = 0;
+    unsigned long kept = 0;
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    for (uint32_t i = 0; i < 60u; i++) {
+        (void)insert_random(&d, &rng, 1u);
+    }
+    static const vor_cdt_limits_t few = {6, 8, (2u * (CDT_SITES + 8u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 6, 8, few.cut), &few) == VOR_OK)
+               ? 0u
+               : 1u;
+    for (uint32_t round = 0; round < 300u; round++) {
+        /* an edge of the triangulation, constrained and let go again */
+        vor_cdt_triangle_iter_t it;
+        uint32_t ids[3];
+        (void)vor_cdt_triangles_begin(&it, &d);
+        uint32_t skip = test_rng_u32(&rng) % 40u;
+        while ((vor_cdt_triangles_next(&it, ids) == 1) && (skip > 0u)) {
+            skip--;
+        }
+        uint32_t k = test_rng_u32(&rng) % 3u;
+        uint32_t a = ids[k];
+        uint32_t b = ids[(k + 1u) % 3u];
+        int err = vor_constrain(&d, a, b);
+        if (err == VOR_OK) {
+            model.a[model.constraints] = a;
+            model.b[model.constraints] = b;
+            model.constraints++;
+            kept++;
+        } else {
+            bad += (err == VOR_ERR_NOMEM) ? 0u : 1u;
+        }
+        if ((model.constraints > 0u) && ((err != VOR_OK) || ((test_rng_u32(&rng) & 1u) != 0u))) {
+            uint32_t j = test_rng_u32(&rng) % model.constraints;
+            bad += (vor_unconstrain(&d, model.a[j], model.b[j]) == VOR_OK) ? 0u : 1u;
+            model.constraints--;
+            model.a[j] = model.a[model.constraints];
+            model.b[j] = model.b[model.constraints];
+        }
+        if (round % 25u == 0u) {
+            bad += check_cdt(&d);
+        }
+    }
+    bad += check_cdt(&d);
+    CHECK(bad == 0 && kept > 100u, "cdt edge table: %lu wrong, %lu kept", bad, kept);
+}
+
 /* The calls' argument checks. */
 static void check_arguments(void)
 {
@@ -1125,6 +1181,20 @@ static void check_arguments(void)
     CHECK(vor_unconstrain(&d, 0, 1) == VOR_ERR_ARG && vor_unconstrain(NULL, 0, 1) == VOR_ERR_ARG,
           "unconstrain without memory");
     CHECK(vor_cdt_domain(&d) == VOR_ERR_ARG, "domain without memory");
+    /* limits beyond use, on an empty diagram */
+    vor_cdt_limits_t too_many = {8, VOR_MAX_SITES, 8};
+    vor_cdt_limits_t many_edges = {(3u * (CDT_SITES + 2u)) + 1u, 2, 8};
+    vor_cdt_limits_t long_cut = {8, 2, (2u * (CDT_SITES + 2u)) + 3u};
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, &too_many) == VOR_ERR_ARG &&
+              vor_cdt_attach(&d, memory, sizeof memory, &many_edges) == VOR_ERR_ARG &&
+              vor_cdt_attach(&d, memory, sizeof memory, &long_cut) == VOR_ERR_ARG,
+          "attach with limits beyond use");
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK, "attach to no site");
+    vor_point_t first = {7, 7};
+    insert_all(&d, &first, 1);
+    CHECK(vor_remove(&d, 0) == VOR_OK && d.cdt->mesh.vertex_count == 0u, "the only site removed");
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    model_clear();
     /* one site attached, then a second: the meshes' first edge */
     vor_point_t one = {5, 5};
     insert_all(&d, &one, 1);
@@ -1154,6 +1224,7 @@ void test_cdt(void)
     TEST_CASE("spike") check_spike();
     TEST_CASE("small_scratch") check_small_scratch();
     TEST_CASE("overflow") check_overflow();
+    TEST_CASE("edge_table") check_edge_table();
     TEST_CASE("domains") check_domains();
     TEST_CASE("errors") check_errors();
     TEST_CASE("grid_lines") check_grid_lines();
