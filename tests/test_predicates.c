@@ -712,6 +712,10 @@ static void check_crossing_vectors(void)
                         (unsigned)n, (unsigned)cv->op, exact, cv->exact, perturbed, cv->perturbed);
         }
     }
+    /* parallel lines have no crossing */
+    vor__hpoint_t h;
+    vor_point_t a = {0, 0}, b = {4, 2}, c = {1, 5}, e = {9, 9};
+    bad += vor__hpoint_crossing(&h, a, b, c, e) ? 1u : 0u;
     test_printf("crossing vectors: %u, %lu exact zeros\n", (unsigned)crossing_vector_count, zeros);
     CHECK(bad == 0, "crossing vectors: %lu of %u wrong", bad, (unsigned)crossing_vector_count);
 }

@@ -142,11 +142,18 @@ class Gen:
                     u = (1, 2)
                 k = self.rng.randint(1, max(1, min(span, 1 << 24) // 8))
                 vs = []
-                for j in range(3):
+                for j in range(4):
                     p = (u[0] * k * (j - 1), u[1] * k * (j - 1))
                     lim = min(span, 1 << 24) if span > 6 else 6
                     vs.append(("crossing", self.through(p, lim)) if j != 1 else ("site", p))
-                self.add(OP_ORIENT2D, vs)
+                self.add(OP_ORIENT2D, vs[:3])
+                # four on one line: the incircle's first terms vanish too
+                self.add(OP_INCIRCLE, vs)
+                # an axis-parallel line: more terms vanish
+                a = [("crossing", self.through((0, k * j), lim)) if j % 2 else ("site", (0, k * j))
+                     for j in range(4)]
+                self.add(OP_ORIENT2D, a[:3])
+                self.add(OP_INCIRCLE, a)
         return self.cases
 
 
