@@ -84,22 +84,8 @@ static inline bool vor__cdt_constrained(const struct vor__cdt *c, vor_index_t a,
     return vor__cdt_find(c, a, b) != c->edge_slots;
 }
 
-/* The upkeep vor_cdt_attach stores in d (d->cdt_update), called by the
- * diagram's calls at these events of site p:
- *   VOR__CDT_CHECK_INSERT  before p (its coordinates in d->sites[p])
- *                          enters d: VOR_ERR_NOMEM when splitting a
- *                          constrained edge would overfill the table,
- *                          else VOR_OK; changes nothing
- *   VOR__CDT_INSERTED      p is in d's mesh: into the constrained one too
- *   VOR__CDT_REMOVE        p is about to leave d: VOR_ERR_CONSTRAINED when
- *                          a constrained edge ends at p (nothing changes),
- *                          else p leaves the constrained mesh
- *   VOR__CDT_REBUILT       d was built anew: the constrained mesh becomes
- *                          its Delaunay triangulation, without constraints */
-#define VOR__CDT_CHECK_INSERT 0u
-#define VOR__CDT_INSERTED 1u
-#define VOR__CDT_REMOVE 2u
-#define VOR__CDT_REBUILT 3u
+/* The upkeep vor_cdt_attach stores in d (d->cdt_update), for the events
+ * of mesh.h (VOR__CDT_*). */
 int vor__cdt_update(vor_t *d, uint32_t p, unsigned event);
 
 /* Places vertex p of the constrained triangulation from triangle `root`,

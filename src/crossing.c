@@ -22,6 +22,7 @@
  * are smaller, and its determinant below 2^262.
  */
 #include "crossing.h"
+#include "multiword.h"
 
 #define ENTRY_LIMBS VOR__LIMBS(224u)
 #define MINOR_LIMBS VOR__LIMBS(352u)

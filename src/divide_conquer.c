@@ -73,7 +73,6 @@
  * region of slots, then merges them on the calling core (build_forked).
  */
 #include "bucket_grid.h"
-#include "cdt.h"
 #include "insertion_order.h"
 #include "mesh.h"
 #include "multiword.h"

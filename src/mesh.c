@@ -5,7 +5,6 @@
  * builders (incremental.c, divide_conquer.c, dynamic.c) change the mesh
  * with the predicates, queries.c reads and validates it.
  */
-#include "cdt.h"
 #include "mesh.h"
 #include "motion.h"
 

@@ -329,6 +329,23 @@ static inline uint32_t vor__triangle_count(uint32_t vertices)
     return (vertices >= 2u) ? ((2u * vertices) - 2u) : 0u;
 }
 
+/* The constrained triangulation's upkeep (d->cdt_update, cdt.c), called
+ * by the diagram's calls at these events of site p:
+ *   VOR__CDT_CHECK_INSERT  before p (its coordinates in d->sites[p])
+ *                          enters d: VOR_ERR_NOMEM when splitting a
+ *                          constrained edge would overfill the table,
+ *                          else VOR_OK; changes nothing
+ *   VOR__CDT_INSERTED      p is in d's mesh: into the constrained one too
+ *   VOR__CDT_REMOVE        p is about to leave d: VOR_ERR_CONSTRAINED when
+ *                          a constrained edge ends at p (nothing changes),
+ *                          else p leaves the constrained mesh
+ *   VOR__CDT_REBUILT       d was built anew: the constrained mesh becomes
+ *                          its Delaunay triangulation, without constraints */
+#define VOR__CDT_CHECK_INSERT 0u
+#define VOR__CDT_INSERTED 1u
+#define VOR__CDT_REMOVE 2u
+#define VOR__CDT_REBUILT 3u
+
 /* The first two sites: two triangles at infinity sharing the edge ab
  * (mesh.c). */
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);

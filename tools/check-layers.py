@@ -43,15 +43,15 @@ LAYERS = [
     # the topology, the exact predicates, and the raster core beside them,
     # which uses only the arithmetic (nothing of the mesh)
     ("mesh, predicates, raster", [
-        "mesh.h", "mesh.c", "predicates.h", "predicates.c",
+        "mesh.h", "mesh.c", "predicates.h", "predicates.c", "crossing.h", "crossing.c",
         "raster.h", "raster.c", "raster_euclid.c", "raster_metrics.c"]),
     ("perturbation", ["perturbation.h"]),
     ("services", [
         "insertion_order.h", "insertion_order.c", "incremental.h", "dynamic.h",
-        "bucket_grid.h", "bucket_grid.c", "walk.h"]),
+        "bucket_grid.h", "bucket_grid.c", "walk.h", "cdt.h"]),
     ("parts", [
         "incremental.c", "divide_conquer.c", "dynamic.c", "motion.c",
-        "queries.c", "geometry.c"]),
+        "queries.c", "geometry.c", "cdt.c"]),
 ]
 # A file's own header, where it is not the file's name with .h.
 OWN_HEADER = {"raster_euclid.c": "raster.h", "raster_metrics.c": "raster.h"}
