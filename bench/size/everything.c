@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* bench/size/everything.c - every public function of vor.h and
- * vor_raster.h reachable: the whole library as one firmware keeps it. */
+/* bench/size/everything.c - every public function of vor.h, vor_cdt.h
+ * and vor_raster.h reachable: the whole library as one firmware keeps it. */
 #include "raster_common.h"
+#include "vor_cdt.h"
 
 static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
 static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
 static uint32_t ids[SIZE_SITES];
 static uint8_t motion[VOR_MOTION_BYTES(SIZE_SITES)] __attribute__((aligned(VOR_MOTION_ALIGN)));
+static uint8_t walls[VOR_CDT_BYTES(SIZE_SITES, 64, 16, 64)] __attribute__((aligned(VOR_CDT_ALIGN)));
 
 SIZE_ARENA(size_arena);
 
@@ -68,5 +70,22 @@ int main(void)
     acc += vor_orient2d_sos(raster_points, 0, 1, 2);
     acc += vor_incircle_sos(raster_points, 0, 1, 2, 3);
     acc += vor_closer_sos(raster_points, 0, 1, 2);
+    vor_cdt_limits_t limits = {64, 16, 64};
+    acc |= vor_cdt_attach(&d, walls, sizeof walls, &limits);
+    acc |= vor_constrain(&d, 0, site);
+    acc |= vor_cdt_domain(&d);
+    vor_cdt_triangle_iter_t cdt_triangles;
+    (void)vor_cdt_inside_begin(&cdt_triangles, &d);
+    while (vor_cdt_triangles_next(&cdt_triangles, ids) > 0) {
+        acc++;
+    }
+    vor_cdt_edge_iter_t cdt_edges;
+    vor_cdt_edges_begin(&cdt_edges, &d);
+    while (vor_cdt_edges_next(&cdt_edges, &site, &count) > 0) {
+        acc++;
+    }
+    uint32_t crossing[4];
+    acc |= vor_cdt_crossing(&d, SIZE_SITES, crossing);
+    acc |= vor_unconstrain(&d, 0, site);
     return acc + raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
 }
