@@ -765,6 +765,19 @@ static VOR__NOINLINE int move_checked(vor_t *d, uint32_t site, int32_t x, int32_
     return err;
 }
 
+/* vor_move on the diagram alone: the motion cache's fast path, else the
+ * full check (site in the mesh, p elsewhere). */
+static int move_diagram(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
+{
+    if (vor__motion_fast(d, site, p.x, p.y)) {
+        /* inside the site's box: no triangle changes and no site is
+         * there (invariant J, motion.c) */
+        move_in_place(d, site, p.x, p.y);
+        return VOR_OK;
+    }
+    return move_checked(d, site, p.x, p.y, existing);
+}
+
 /* vor_move with constraint memory: the constrained mesh loses the site
  * first (at its old place; refused when a constraint ends there), then
  * the diagram moves it, with the upkeep off, then the constrained mesh
@@ -795,7 +808,7 @@ static VOR__NOINLINE int move_constrained(vor_t *d, uint32_t site, vor_point_t p
         return err;
     }
     d->cdt_update = NULL;
-    err = vor_move(d, site, p, existing);
+    err = move_diagram(d, site, p, existing);
     d->cdt_update = update;
     (void)update(d, site, VOR__CDT_INSERTED);
     return err;
@@ -806,20 +819,12 @@ int vor_move(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existing)
     if ((d == NULL) || !vor__site_in_mesh(d, site)) {
         return VOR_ERR_ARG;
     }
-    int32_t x = p.x;
-    int32_t y = p.y;
     const vor_point_t *s = &d->sites[site];
-    if ((s->x == x) && (s->y == y)) {
+    if ((s->x == p.x) && (s->y == p.y)) {
         return VOR_OK;
     }
     if (d->cdt_update != NULL) {
         return move_constrained(d, site, p, existing);
     }
-    if (vor__motion_fast(d, site, x, y)) {
-        /* inside the site's box: no triangle changes and no site is
-         * there (invariant J, motion.c) */
-        move_in_place(d, site, x, y);
-        return VOR_OK;
-    }
-    return move_checked(d, site, x, y, existing);
+    return move_diagram(d, site, p, existing);
 }

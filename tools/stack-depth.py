@@ -53,12 +53,20 @@ INDIRECT = "__indirect_call"
 # The library's own function pointers: every indirect call made in a
 # source file (its base name) goes to one of the functions these names
 # match (without clone suffixes), and to nothing else of the library.
+# A key "file.c:function" is more specific than the file's.
 TABLE_CALLS = {"raster.c": (r"write_(label8|label16|label32|rgb565|rgb888)",
                             "a row writer of write_row's table"),
                "raster_metrics.c": (r"(key|compare|bounds)_[A-Z0-9]+",
                                     "a metric's key, comparison or bounds (metric_ops)"),
-               "dynamic.c": (r"motion_update",
-                             "the motion cache's upkeep (set by vor_motion_attach)")}
+               "dynamic.c": (r"motion_update|mesh_predicate",
+                             "the motion cache's upkeep or the constrained mesh's predicates"),
+               "dynamic.c:vor_remove": (r"vor__cdt_update|mesh_predicate",
+                                        "the constraints' upkeep or the constrained mesh's predicates"),
+               "dynamic.c:move_constrained": (r"vor__cdt_update|motion_update|mesh_predicate",
+                                              "the constraints' or the motion cache's upkeep"),
+               "incremental.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)"),
+               "mesh.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)"),
+               "divide_conquer.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)")}
 CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback",
                     "vor_raster_euclid": "the caller's flush callback",
                     "build_forked": "the caller's fork and join hooks"}
@@ -248,9 +256,11 @@ def main(argv):
 
     for title in sorted(frames):
         source = os.path.basename(where[title].split(":", 1)[0])
-        if source not in TABLE_CALLS or INDIRECT not in edges.get(title, ()):
+        key = source + ":" + short(title).split(".", 1)[0]
+        key = key if key in TABLE_CALLS else source
+        if key not in TABLE_CALLS or INDIRECT not in edges.get(title, ()):
             continue
-        pattern, what = TABLE_CALLS[source]
+        pattern, what = TABLE_CALLS[key]
         table = {t for t in frames if re.fullmatch(pattern, short(t).split(".", 1)[0])}
         if not table:
             continue  # stays unknown: the warning below names the caller
