@@ -49,7 +49,7 @@ static uint32_t edge_place(const struct vor__cdt *c, vor_index_t u, vor_index_t 
         if ((e->u == VOR__NONE) || ((e->u == u) && (e->v == v))) {
             break;
         }
-        i = (i + 1u == c->edge_slots) ? 0u : (i + 1u);
+        i = ((i + 1u) == c->edge_slots) ? 0u : (i + 1u);
     }
     return i;
 }
@@ -76,7 +76,7 @@ static void edge_remove(struct vor__cdt *c, uint32_t removed)
     uint32_t hole = removed;
     uint32_t i = removed;
     for (uint32_t probes = 0; probes < c->edge_slots; probes++) {
-        i = (i + 1u == c->edge_slots) ? 0u : (i + 1u);
+        i = ((i + 1u) == c->edge_slots) ? 0u : (i + 1u);
         vor__cdt_edge_t *e = &c->edges[i];
         if (e->u == VOR__NONE) {
             break;
@@ -141,10 +141,11 @@ static int orient(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_t 
         return vor__orient(&c->mesh, a, b, p);
     }
     vor__hpoint_t h[3];
-    const vor__hpoint_t *v[3] = {&h[0], &h[1], &h[2]};
+    const vor__hpoint_t *v[3];
     uint32_t ids[3] = {a, b, p};
     for (unsigned k = 0; k < 3u; k++) {
         hpoint_of(c, (vor_index_t)ids[k], &h[k]);
+        v[k] = &h[k];
     }
     return vor__with_faults(&c->mesh, vor__orient_h_sos(v, ids));
 }
@@ -156,10 +157,11 @@ static int incircle(struct vor__cdt *c, vor_index_t a, vor_index_t b, vor_index_
         return vor__incircle(&c->mesh, a, b, q, p);
     }
     vor__hpoint_t h[4];
-    const vor__hpoint_t *v[4] = {&h[0], &h[1], &h[2], &h[3]};
+    const vor__hpoint_t *v[4];
     uint32_t ids[4] = {a, b, q, p};
     for (unsigned k = 0; k < 4u; k++) {
         hpoint_of(c, (vor_index_t)ids[k], &h[k]);
+        v[k] = &h[k];
     }
     return vor__with_faults(&c->mesh, vor__incircle_h_sos(v, ids));
 }
@@ -346,9 +348,9 @@ static void copy_delaunay(struct vor__cdt *c, const vor_t *d)
 int vor_cdt_attach(vor_t *d, void *mem, size_t bytes, const vor_cdt_limits_t *limits)
 {
     if ((d == NULL) || (mem == NULL) || (limits == NULL) || (limits->edges == 0u) ||
-        (limits->crossings > VOR_MAX_SITES - d->max_sites) ||
-        (limits->edges > 3u * (d->max_sites + limits->crossings)) ||
-        (limits->cut > 2u * (d->max_sites + limits->crossings) + 2u)) {
+        (limits->crossings > (VOR_MAX_SITES - d->max_sites)) ||
+        (limits->edges > (3u * (d->max_sites + limits->crossings))) ||
+        (limits->cut > ((2u * (d->max_sites + limits->crossings)) + 2u))) {
         return VOR_ERR_ARG;
     }
     if (((uintptr_t)mem % VOR_CDT_ALIGN) != 0u) {
@@ -410,7 +412,7 @@ int vor_cdt_crossing(const vor_t *d, uint32_t id, uint32_t sites[4])
         return VOR_ERR_ARG;
     }
     const struct vor__cdt *c = d->cdt;
-    if ((id < c->first_crossing) || (id - c->first_crossing >= c->max_crossings) ||
+    if ((id < c->first_crossing) || ((id - c->first_crossing) >= c->max_crossings) ||
         (c->crossings[4u * (id - c->first_crossing)] == VOR__NONE)) {
         return VOR_ERR_ARG;
     }
@@ -869,7 +871,7 @@ static void count_demands(const vor_t *m, const vor_index_t *chain, uint32_t n,
     uint32_t count = 0;
     for (uint32_t i = 0; i < n; i++) {
         demands[i] = (vor_index_t)count;
-        bool first = (i > 0u) && (i + 1u < n);
+        bool first = (i > 0u) && ((i + 1u) < n);
         for (uint32_t j = 0; j < i; j++) {
             first = first && (chain[j] != chain[i]);
         }
@@ -901,7 +903,8 @@ static vor_index_t triangulate(struct vor__cdt *c, const vor_index_t *chain,
     uint32_t depth = 0;
     stack[0] = 0;
     stack[1] = (vor_index_t)(n - 1u);
-    stack[2] = (vor_index_t)((need_first ? 1u : 0u) | (need_last ? 2u : 0u) | (2u << 2));
+    uint32_t flags = (need_first ? 1u : 0u) | (need_last ? 2u : 0u) | (2u << 2);
+    stack[2] = (vor_index_t)flags;
     stack[3] = parent;
     depth = 1;
     while (depth > 0u) {
@@ -913,7 +916,7 @@ static vor_index_t triangulate(struct vor__cdt *c, const vor_index_t *chain,
         bool need_hi = (e[2] & 2u) != 0u;
         unsigned link = (unsigned)(e[2] >> 2) & 3u;
         vor_index_t up = e[3];
-        if (hi == lo + 1u) { /* a chain edge: the triangle outside it */
+        if (hi == (lo + 1u)) { /* a chain edge: the triangle outside it */
             vor_index_t o = outside[lo];
             if (o == VOR__NONE) { /* a spike: linked to its other side later */
                 cv->side[lo] = up;
@@ -981,12 +984,14 @@ static vor_index_t triangulate(struct vor__cdt *c, const vor_index_t *chain,
         vor_index_t *p1 = &stack[4u * depth];
         p1[0] = (vor_index_t)lo;
         p1[1] = (vor_index_t)apex;
-        p1[2] = (vor_index_t)((need_lo ? 1u : 0u) | (apex_first ? 2u : 0u) | (1u << 2));
+        uint32_t flags1 = (need_lo ? 1u : 0u) | (apex_first ? 2u : 0u) | (1u << 2);
+        p1[2] = (vor_index_t)flags1;
         p1[3] = slot;
         vor_index_t *p2 = &stack[4u * (depth + 1u)];
         p2[0] = (vor_index_t)apex;
         p2[1] = (vor_index_t)hi;
-        p2[2] = (vor_index_t)((apex_second ? 1u : 0u) | (need_hi ? 2u : 0u) | (0u << 2));
+        uint32_t flags2 = (apex_second ? 1u : 0u) | (need_hi ? 2u : 0u);
+        p2[2] = (vor_index_t)flags2;
         p2[3] = slot;
         depth += 2u;
     }
@@ -998,11 +1003,11 @@ static vor_index_t triangulate(struct vor__cdt *c, const vor_index_t *chain,
 static void link_spikes(vor__tri_t *tri, const vor_index_t *chain, const vor_index_t *outside,
                         uint32_t n, const cavity_t *cv)
 {
-    for (uint32_t i = 0; i + 1u < n; i++) {
+    for (uint32_t i = 0; (i + 1u) < n; i++) {
         if (outside[i] != VOR__NONE) {
             continue;
         }
-        for (uint32_t j = 0; j + 1u < n; j++) {
+        for (uint32_t j = 0; (j + 1u) < n; j++) {
             if ((j != i) && (chain[j] == chain[i + 1u]) && (chain[j + 1u] == chain[i])) {
                 tri[cv->side[i]].n[cv->side_link[i]] = cv->side[j];
             }
@@ -1017,12 +1022,12 @@ static void fill_cavity(struct vor__cdt *c, cavity_t *cv)
     vor__tri_t *tri = m->triangles;
     /* a chain edge with the cavity on both sides is a spike (a vertex
      * whose every triangle the segment crosses hangs from it) */
-    for (uint32_t i = 0; i + 1u < cv->nu; i++) {
+    for (uint32_t i = 0; (i + 1u) < cv->nu; i++) {
         for (uint32_t k = 0; k < cv->cut; k++) {
             cv->upper_out[i] = (cv->upper_out[i] == cv->slots[k]) ? VOR__NONE : cv->upper_out[i];
         }
     }
-    for (uint32_t i = 0; i + 1u < cv->nl; i++) {
+    for (uint32_t i = 0; (i + 1u) < cv->nl; i++) {
         for (uint32_t k = 0; k < cv->cut; k++) {
             cv->lower_out[i] = (cv->lower_out[i] == cv->slots[k]) ? VOR__NONE : cv->lower_out[i];
         }
@@ -1039,12 +1044,14 @@ static void fill_cavity(struct vor__cdt *c, cavity_t *cv)
         }
     }
     /* the lower chain reversed, so that it lies left of its base too */
-    for (uint32_t i = 0, j = cv->nl - 1u; i < j; i++, j--) {
+    for (uint32_t i = 0; i < (cv->nl / 2u); i++) {
+        uint32_t j = cv->nl - 1u - i;
         vor_index_t v = cv->lower[i];
         cv->lower[i] = cv->lower[j];
         cv->lower[j] = v;
     }
-    for (uint32_t i = 0, j = cv->nl - 2u; i < j; i++, j--) {
+    for (uint32_t i = 0; i < ((cv->nl - 1u) / 2u); i++) {
+        uint32_t j = cv->nl - 2u - i;
         vor_index_t o = cv->lower_out[i];
         cv->lower_out[i] = cv->lower_out[j];
         cv->lower_out[j] = o;
@@ -1119,7 +1126,7 @@ static vor_index_t new_crossing(struct vor__cdt *c, vor_index_t a, vor_index_t b
                                 vor_index_t q)
 {
     uint32_t i = 0;
-    while ((i + 1u < c->max_crossings) && (c->crossings[4u * i] != VOR__NONE)) {
+    while (((i + 1u) < c->max_crossings) && (c->crossings[4u * i] != VOR__NONE)) {
         i++;
     }
     vor_index_t *e = &c->crossings[4u * i];
@@ -1169,8 +1176,8 @@ int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
         }
         from = next;
     }
-    if ((c->edge_count + added > c->max_edges) ||
-        (c->crossing_count + crossings > c->max_crossings)) {
+    if (((c->edge_count + added) > c->max_edges) ||
+        ((c->crossing_count + crossings) > c->max_crossings)) {
         return VOR_ERR_NOMEM;
     }
     c->domain = false;

@@ -73,7 +73,7 @@ static inline uint32_t vor__cdt_find(const struct vor__cdt *c, vor_index_t a, vo
         if ((e->u == u) && (e->v == v)) {
             return i;
         }
-        i = (i + 1u == c->edge_slots) ? 0u : (i + 1u);
+        i = ((i + 1u) == c->edge_slots) ? 0u : (i + 1u);
     }
     return c->edge_slots;
 }

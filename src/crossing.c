@@ -30,7 +30,7 @@
 
 typedef vor__limb entry_t[ENTRY_LIMBS];
 
-enum row_kind { KIND_POINT, KIND_DY, KIND_DY2, KIND_DX, KIND_DX2 };
+enum term_row { KIND_POINT, KIND_DY, KIND_DY2, KIND_DX, KIND_DX2 };
 
 static bool negative(const vor__limb *a, size_t n)
 {
@@ -177,7 +177,8 @@ static void add_product(vor__limb *acc, const vor__limb *m, const vor__limb *n, 
         y[i] = (i < MINOR_LIMBS) ? mn[i] : 0u;
     }
     vor__mw_mul(p, DET_LIMBS, x, MINOR_LIMBS, y, MINOR_LIMBS);
-    if (neg != (s < 0)) {
+    bool subtract = s < 0;
+    if (neg != subtract) {
         vor__mw_sub(acc, p, DET_LIMBS);
     } else {
         vor__mw_add(acc, p, DET_LIMBS);
@@ -256,7 +257,7 @@ static void entry_product(vor__limb *r, const vor__limb *a, const vor__limb *b)
 }
 
 /* The incircle row of kind k for h, scaled as the file comment says. */
-static void incircle_row(entry_t row[4], const vor__hpoint_t *h, enum row_kind k)
+static void incircle_row(entry_t row[4], const vor__hpoint_t *h, enum term_row k)
 {
     for (unsigned c = 0; c < 4u; c++) {
         entry_zero(row[c]);
@@ -279,7 +280,7 @@ static void incircle_row(entry_t row[4], const vor__hpoint_t *h, enum row_kind k
 }
 
 /* The orientation row of kind k (KIND_POINT, KIND_DY or KIND_DX). */
-static void orient_row(entry_t row[4], const vor__hpoint_t *h, enum row_kind k)
+static void orient_row(entry_t row[4], const vor__hpoint_t *h, enum term_row k)
 {
     for (unsigned c = 0; c < 4u; c++) {
         entry_zero(row[c]);
@@ -329,16 +330,19 @@ static void ranks_of(const uint32_t *ids, unsigned n, unsigned *rank)
 
 int vor__orient_h_sos(const vor__hpoint_t *const v[3], const uint32_t ids[3])
 {
-    static const enum row_kind kinds[3] = {KIND_POINT, KIND_DY, KIND_DX};
+    static const enum term_row kinds[3] = {KIND_POINT, KIND_DY, KIND_DX};
     unsigned rank[3];
     ranks_of(ids, 3u, rank);
     entry_t e[3][4];
     /* the kinds by rank, the top rank's most significant: increasing
      * exponents (nested loops: no division) */
     unsigned digit[3];
-    for (digit[2] = 0; digit[2] < 3u; digit[2]++) {
-        for (digit[1] = 0; digit[1] < 3u; digit[1]++) {
-            for (digit[0] = 0; digit[0] < 3u; digit[0]++) {
+    for (unsigned d2 = 0; d2 < 3u; d2++) {
+        for (unsigned d1 = 0; d1 < 3u; d1++) {
+            for (unsigned d0 = 0; d0 < 3u; d0++) {
+                digit[0] = d0;
+                digit[1] = d1;
+                digit[2] = d2;
                 for (unsigned k = 0; k < 3u; k++) {
                     orient_row(e[k], v[k], kinds[digit[rank[k]]]);
                 }
@@ -357,7 +361,7 @@ int vor__orient_h_sos(const vor__hpoint_t *const v[3], const uint32_t ids[3])
 static int incircle_term(const vor__hpoint_t *const v[4], const unsigned rank[4],
                          const unsigned digit[4])
 {
-    static const enum row_kind kinds[5] = {KIND_POINT, KIND_DY, KIND_DY2, KIND_DX, KIND_DX2};
+    static const enum term_row kinds[5] = {KIND_POINT, KIND_DY, KIND_DY2, KIND_DX, KIND_DX2};
     unsigned squares = 0;
     for (unsigned r = 0; r < 4u; r++) {
         squares += ((digit[r] == 2u) || (digit[r] == 4u)) ? 1u : 0u;
@@ -377,10 +381,14 @@ int vor__incircle_h_sos(const vor__hpoint_t *const v[4], const uint32_t ids[4])
     unsigned rank[4];
     ranks_of(ids, 4u, rank);
     unsigned digit[4];
-    for (digit[3] = 0; digit[3] < 5u; digit[3]++) {
-        for (digit[2] = 0; digit[2] < 5u; digit[2]++) {
-            for (digit[1] = 0; digit[1] < 5u; digit[1]++) {
-                for (digit[0] = 0; digit[0] < 5u; digit[0]++) {
+    for (unsigned d3 = 0; d3 < 5u; d3++) {
+        for (unsigned d2 = 0; d2 < 5u; d2++) {
+            for (unsigned d1 = 0; d1 < 5u; d1++) {
+                for (unsigned d0 = 0; d0 < 5u; d0++) {
+                    digit[0] = d0;
+                    digit[1] = d1;
+                    digit[2] = d2;
+                    digit[3] = d3;
                     int sign = incircle_term(v, rank, digit);
                     if (sign != 0) {
                         return sign;
