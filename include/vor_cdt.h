@@ -11,13 +11,22 @@
  * segment between two sites a chain of its edges, and the iterators here
  * read it: every edge that is not constrained is locally Delaunay.
  *
- *     static uint8_t walls[VOR_CDT_BYTES(500, 64, 500)]
+ *     // 500 sites, 512 constrained edges, 64 crossings, cuts of 1002
+ *     static uint8_t walls[VOR_CDT_BYTES(500, 512, 64, 1002)]
  *         __attribute__((aligned(VOR_CDT_ALIGN)));
- *     vor_cdt_attach(&d, walls, sizeof walls, 64, 500);  // after vor_init
+ *     static const vor_cdt_limits_t limits = {512, 64, 1002};
+ *     vor_cdt_attach(&d, walls, sizeof walls, &limits);  // after vor_init
  *     vor_constrain(&d, door_left, corner);
+ *     vor_cdt_triangle_iter_t it;
+ *     uint32_t ids[3];                  // ids >= max_sites: crossings
+ *     vor_cdt_triangles_begin(&it, &d);
+ *     while (vor_cdt_triangles_next(&it, ids)) { ... }
  *
  * A constraint through a site is split there; collinear constraints that
- * overlap share their edges.
+ * overlap share their edges. The iterators follow vor.h's convention:
+ * x_begin returns VOR_OK or VOR_ERR_ARG (it NULL, d NULL or without
+ * constraint memory; the iterator then yields nothing), x_next returns 1
+ * with an item or 0 at the end.
  */
 #ifndef VOR_CDT_H
 #define VOR_CDT_H
@@ -124,8 +133,10 @@ typedef struct vor_cdt_triangle_iter {
     bool inside; /* only the domain's (vor_cdt_inside_begin) */
 } vor_cdt_triangle_iter_t;
 
+/*   VOR_ERR_ARG  it or d NULL, or no constraint memory attached */
 int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d);
-/* VOR_OK and the next triangle's sites in ids, or VOR_ERR_EMPTY at the end. */
+/* 1 and the next triangle's vertex ids in ids, or 0 at the end (and for a
+ * NULL argument or an iterator whose begin failed). */
 int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3]);
 
 /*
@@ -151,8 +162,11 @@ typedef struct vor_cdt_edge_iter {
     uint32_t entry;
 } vor_cdt_edge_iter_t;
 
+/*   VOR_ERR_ARG  it or d NULL, or no constraint memory attached */
 int vor_cdt_edges_begin(vor_cdt_edge_iter_t *it, const vor_t *d);
-/* VOR_OK and the next constrained edge's sites (a < b), or VOR_ERR_EMPTY. */
+/* 1 and the next constrained edge's vertex ids (a < b; crossings from
+ * max_sites on), or 0 at the end (and for a NULL argument or an iterator
+ * whose begin failed). */
 int vor_cdt_edges_next(vor_cdt_edge_iter_t *it, uint32_t *a, uint32_t *b);
 
 #ifdef __cplusplus
