@@ -1323,8 +1323,8 @@ static void lawson_run(struct vor__cdt *c, lawson_t *w)
             vor__vertices(&m->triangles[s], v);
             for (unsigned k = 0; k < 3u; k++) {
                 w->count = 0;
-                changed = lawson_test(c, w, v[vor__next(k)], v[vor__prev(k)]) || changed;
-                if (changed) {
+                if (lawson_test(c, w, v[vor__next(k)], v[vor__prev(k)])) {
+                    changed = true;
                     break; /* the triangle changed */
                 }
             }
@@ -1564,9 +1564,6 @@ int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b)
 #define LEVEL_PENDING 0x80u /* a level reached across a constraint, not final */
 #define LEVEL_MAX 126u
 
-/* Floods the level-`level` region from the triangles stacked in w (or,
- * after an overflow, by sweeps): its unconstrained neighbours join it,
- * those across a constrained edge under k constraints wait at level + k. */
 /* Triangle s of level `level`: its unconstrained neighbours join the
  * level (stacked in w when it is given), those across an edge under k
  * constraints wait at level + k. Returns whether a neighbour changed. */
@@ -1642,11 +1639,16 @@ int vor_cdt_domain(vor_t *d)
     }
     for (uint32_t level = 0; level <= LEVEL_MAX; level++) {
         if (level > 0u) { /* the pending triangles of this level start it */
+            bool waiting = false; /* a triangle pending (above this level) or unreached */
             for (uint32_t s = vor__next_used_slot(m, 0); s < end; s = vor__next_used_slot(m, s + 1u)) {
+                waiting = waiting || ((lv[s] & LEVEL_PENDING) != 0u);
                 if (lv[s] == (level | LEVEL_PENDING)) {
                     lv[s] = (uint8_t)level;
                     lawson_push(&w, (vor_index_t)s, (vor_index_t)s);
                 }
+            }
+            if (!waiting) {
+                break; /* every triangle has its level */
             }
         }
         flood(c, &w, level);

@@ -725,6 +725,16 @@ static void check_errors(void)
               test_same_bytes(saved_arena, arena, sizeof arena),
           "a refused insertion changed the memory");
     CHECK(check_cdt(&d) == 0u, "the constrained triangulation");
+    /* a full table still takes a site off every constrained edge; the
+     * change ends an inside iteration begun before it */
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    CHECK(vor_cdt_domain(&d) == VOR_OK && vor_cdt_inside_begin(&it, &d) == VOR_OK, "a domain");
+    vor_point_t off_edges = {60, 20};
+    insert_all(&d, &off_edges, 1);
+    CHECK(model.live[7], "a site off the constrained edges in a full table");
+    CHECK(vor_cdt_triangles_next(&it, ids) == 0, "inside triangles after a change");
+    CHECK(check_cdt(&d) == 0u, "the constrained triangulation");
     /* a build starts the constrained triangulation again, unconstrained */
     CHECK(vor_build(&d, square, 7, NULL, NULL) == VOR_OK, "build");
     model.constraints = 0;
@@ -1155,6 +1165,221 @@ static void check_edge_table(void)
     CHECK(bad == 0 && kept > 100u, "cdt edge table: %lu wrong, %lu kept", bad, kept);
 }
 
+/* Tables filled to their last entry: nine crossings in a table of nine
+ * (the search for a free crossing id runs to the table's end), one
+ * needing two more refused with nothing changed, and the three a removed
+ * constraint frees used again. */
+static void check_full_tables(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    /* three horizontal and three vertical segments, sites 2k and 2k + 1 */
+    static const vor_point_t ends[] = {{0, 10}, {100, 10}, {0, 50}, {100, 50}, {0, 90},  {100, 90},
+                                       {10, 0}, {10, 100}, {50, 0}, {50, 100}, {90, 0}, {90, 100}};
+    insert_all(&d, ends, 12);
+    static const vor_cdt_limits_t nine = {60, 9, (2u * (CDT_SITES + 9u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 60, 9, nine.cut), &nine) == VOR_OK)
+               ? 0u
+               : 1u;
+    for (uint32_t k = 0; k < 6u; k++) {
+        bad += add_constraint(&d, 2u * k, (2u * k) + 1u);
+    }
+    bad += check_cdt(&d);
+    bad += (gather_crossings(&d) == 9u) ? 0u : 1u;
+    /* (0, 10)-(100, 90) passes the crossing (50, 50) and makes two new ones */
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    test_copy_bytes(saved_arena, arena, sizeof arena);
+    bad += (vor_constrain(&d, 0, 5) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += (test_same_bytes(saved_memory, memory, sizeof memory) &&
+            test_same_bytes(saved_arena, arena, sizeof arena))
+               ? 0u
+               : 1u;
+    /* y = 50 gone: its three crossings free, the diagonal takes three */
+    bad += (vor_unconstrain(&d, 3, 2) == VOR_OK) ? 0u : 1u;
+    model.a[1] = model.a[5];
+    model.b[1] = model.b[5];
+    model.constraints = 5;
+    bad += (gather_crossings(&d) == 6u) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 5);
+    bad += check_cdt(&d);
+    bad += (gather_crossings(&d) == 9u) ? 0u : 1u;
+    /* a site between crossings (50, 10) and (50, 50) on x = 50 */
+    vor_point_t between_crossings = {50, 30};
+    insert_all(&d, &between_crossings, 1);
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt full tables: %lu wrong", bad);
+}
+
+/* Lawson's flips past their stack: a constraint with rows of sites just
+ * above and below it, inserted after it, so that the triangles on either
+ * side are slivers; removed with a stack of 39 pairs, its Delaunay edges
+ * across the line take far more flips than fit, and sweeps finish. */
+static void check_lawson_sweeps(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t line[] = {{0, 0}, {10000, 0}, {5000, 3000}}; /* 0-1 an edge */
+    insert_all(&d, line, 3);
+    static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 2};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 2), &small) == VOR_OK)
+               ? 0u
+               : 1u;
+    bad += add_constraint(&d, 0, 1);
+    for (int32_t i = 0; i < 100; i++) { /* alternately 3 above and 5 below */
+        vor_point_t q = {37 + (i * 97), ((i & 1) != 0) ? 3 : -5};
+        insert_all(&d, &q, 1);
+    }
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+    model.constraints = 0;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt lawson sweeps: %lu wrong", bad);
+}
+
+/* The domain's flood past its stack: a constrained square filled with 110
+ * random sites, flooded with a stack of 26 pairs (a cut of 0), which
+ * loses triangles whose neighbours only the sweeps then reach (seed 28
+ * does, often), and with a large one: the same inside either way. */
+static void check_flood_sweeps(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    static uint64_t first[CDT_EDGES];
+    static uint64_t second[CDT_EDGES];
+    static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 0};
+    static const vor_cdt_limits_t large = {3u * (CDT_SITES + 8u), 8, (2u * (CDT_SITES + 8u)) + 2u};
+    uint32_t n[2] = {0, 0};
+    for (unsigned round = 0; round < 2u; round++) {
+        const vor_cdt_limits_t *l = (round == 0u) ? &large : &small;
+        test_rng_t rng;
+        test_rng_seed(&rng, 28);
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t square[] = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+        insert_all(&d, square, 4);
+        bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, l->edges, l->crossings, l->cut),
+                               l) == VOR_OK)
+                   ? 0u
+                   : 1u;
+        for (uint32_t k = 0; k < 4u; k++) {
+            bad += add_constraint(&d, k, (k + 1u) % 4u);
+        }
+        for (uint32_t i = 0; i < 110u; i++) {
+            vor_point_t q = {test_rng_range(&rng, 1, 999), test_rng_range(&rng, 1, 999)};
+            insert_all(&d, &q, 1);
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        uint32_t in;
+        bad += check_domain(&d, &in);
+        n[round] = inside_keys_of(&d, (round == 0u) ? first : second);
+    }
+    bad += ((n[0] == n[1]) && (n[0] > 0u)) ? 0u : 1u;
+    for (uint32_t i = 0; (i < n[0]) && (i < n[1]); i++) {
+        bad += (first[i] == second[i]) ? 0u : 1u;
+    }
+    CHECK(bad == 0, "cdt flood sweeps: %lu wrong", bad);
+}
+
+/* Sites on constrained hull edges: a square with its sides constrained
+ * corner to corner through three sites each, then a site inside each
+ * side's pieces; the perturbed site may lie outside the hull, where the
+ * split is found from the triangles at infinity along the side. */
+static void check_hull_splits(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t corners[] = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
+    insert_all(&d, corners, 4);
+    for (int32_t k = 1; k < 4; k++) { /* three sites on each side */
+        vor_point_t side[] = {{250 * k, 0}, {1000, 250 * k}, {1000 - (250 * k), 1000}, {0, 1000 - (250 * k)}};
+        insert_all(&d, side, 4);
+    }
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t k = 0; k < 4u; k++) {
+        bad += add_constraint(&d, k, (k + 1u) & 3u);
+    }
+    bad += check_cdt(&d);
+    for (int32_t k = 0; k < 4; k++) { /* one site in a piece of each side */
+        int32_t at = 100 + (250 * k);
+        vor_point_t side[] = {{at, 0}, {1000, at}, {1000 - at, 1000}, {0, 1000 - at}};
+        for (unsigned j = 0; j < 4u; j++) {
+            insert_all(&d, &side[j], 1);
+            bad += check_cdt(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt hull splits: %lu wrong", bad);
+}
+
+/* A tangle: random constraints among few sites, crossing each other many
+ * times, then all removed in random order, each step checked; crossing
+ * vertices go while their neighbours are crossings too. */
+static void check_tangle(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 41);
+    unsigned long bad = 0;
+    unsigned long crossings = 0;
+    for (unsigned round = 0; round < 4u; round++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (uint32_t i = 0; i < 30u; i++) {
+            (void)insert_random(&d, &rng, 1u);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        constrain_random(&d, &rng, 16u, &bad);
+        crossings += gather_crossings(&d);
+        while (model.constraints > 0u) {
+            uint32_t k = test_rng_u32(&rng) % model.constraints;
+            bad += (vor_unconstrain(&d, model.a[k], model.b[k]) == VOR_OK) ? 0u : 1u;
+            model.constraints--;
+            model.a[k] = model.a[model.constraints];
+            model.b[k] = model.b[model.constraints];
+            bad += check_cdt(&d);
+        }
+        bad += (gather_crossings(&d) == 0u) ? 0u : 1u;
+    }
+    test_printf("cdt tangle: %lu crossing vertices\n", crossings);
+    CHECK(bad == 0 && crossings > 40u, "cdt tangle: %lu wrong, %lu crossings", bad, crossings);
+}
+
+/* Nesting levels past the cap: a triangle whose sides carry k
+ * constraints each is inside when k is odd, and levels beyond 126 count
+ * as 126 (vor_cdt.h): so for k = 125 inside, for 126 and 127 not. */
+static void check_deep_nesting(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    static const vor_point_t corners[] = {{0, 0}, {90, 10}, {30, 70}};
+    for (uint32_t k = 125; k <= 127u; k++) {
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        insert_all(&d, corners, 3);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t j = 0; j < k; j++) {
+            for (uint32_t side = 0; side < 3u; side++) {
+                bad += (vor_constrain(&d, side, (side + 1u) % 3u) == VOR_OK) ? 0u : 1u;
+            }
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        vor_cdt_triangle_iter_t it;
+        uint32_t ids[3];
+        uint32_t inside = 0;
+        (void)vor_cdt_inside_begin(&it, &d);
+        while (vor_cdt_triangles_next(&it, ids) == 1) {
+            inside++;
+        }
+        bad += (inside == ((k == 125u) ? 1u : 0u)) ? 0u : 1u;
+    }
+    CHECK(bad == 0, "cdt deep nesting: %lu wrong", bad);
+}
+
 /* The calls' argument checks. */
 static void check_arguments(void)
 {
@@ -1190,6 +1415,18 @@ static void check_arguments(void)
               vor_cdt_attach(&d, memory, sizeof memory, &long_cut) == VOR_ERR_ARG,
           "attach with limits beyond use");
     CHECK(vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK, "attach to no site");
+    /* a diagram of one site: constraint memory of no triangle slot */
+    static const vor_cdt_limits_t one_site = {1, 0, 0};
+    CHECK(vor_init(&d, arena, sizeof arena, 1) == VOR_OK &&
+              vor_cdt_attach(&d, memory, VOR_CDT_BYTES(1, 1, 0, 0), &one_site) == VOR_OK,
+          "attach to a diagram of one site");
+    vor_point_t lone = {3, 4};
+    uint32_t lone_id;
+    CHECK(vor_insert(&d, lone, &lone_id) == VOR_OK && vor_cdt_triangles_begin(&it, &d) == VOR_OK &&
+              vor_cdt_triangles_next(&it, ids) == 0,
+          "no triangle of one site");
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    CHECK(vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK, "attach to no site");
     vor_point_t first = {7, 7};
     insert_all(&d, &first, 1);
     CHECK(vor_remove(&d, 0) == VOR_OK && d.cdt->mesh.vertex_count == 0u, "the only site removed");
@@ -1210,6 +1447,14 @@ static void check_arguments(void)
               vor_cdt_crossing(&d, CDT_SITES, s) == VOR_ERR_ARG &&
               vor_cdt_crossing(&d, CDT_SITES + CDT_CROSSINGS, s) == VOR_ERR_ARG,
           "crossing of no crossing id");
+    CHECK(vor_cdt_triangles_begin(&it, NULL) == VOR_ERR_ARG &&
+              vor_cdt_triangles_next(&it, ids) == 0 && vor_cdt_edges_begin(&e, NULL) == VOR_ERR_ARG,
+          "iterators of no diagram");
+    CHECK(vor_cdt_edges_begin(&e, &d) == VOR_OK && vor_cdt_edges_next(&e, &a, NULL) == 0 &&
+              vor_cdt_edges_next(&e, NULL, &b) == 0,
+          "edges_next with NULL outputs");
+    CHECK(vor_constrain(&d, 99, 0) == VOR_ERR_ARG && vor_unconstrain(&d, 99, 0) == VOR_ERR_ARG,
+          "constrain and unconstrain from a free id");
     CHECK(vor_unconstrain(&d, 0, 1) == VOR_ERR_ARG && vor_unconstrain(&d, 0, 99) == VOR_ERR_ARG &&
               vor_unconstrain(&d, 2, 2) == VOR_OK,
           "unconstrain no constraint, a free id; a site to itself does nothing");
@@ -1225,6 +1470,12 @@ void test_cdt(void)
     TEST_CASE("small_scratch") check_small_scratch();
     TEST_CASE("overflow") check_overflow();
     TEST_CASE("edge_table") check_edge_table();
+    TEST_CASE("full_tables") check_full_tables();
+    TEST_CASE("lawson_sweeps") check_lawson_sweeps();
+    TEST_CASE("flood_sweeps") check_flood_sweeps();
+    TEST_CASE("hull_splits") check_hull_splits();
+    TEST_CASE("tangle") check_tangle();
+    TEST_CASE("deep_nesting") check_deep_nesting();
     TEST_CASE("domains") check_domains();
     TEST_CASE("errors") check_errors();
     TEST_CASE("grid_lines") check_grid_lines();
