@@ -644,32 +644,42 @@ static void insert_vertex(struct vor__cdt *c, uint32_t p)
     m->last_site = is_crossing(c, (vor_index_t)p) ? m->last_site : p;
 }
 
+/* Does site p (its coordinates in d->sites[p]) lie exactly inside a
+ * constrained edge that does not end at p? A scan of the table, which
+ * reads no triangle: p may still be in the mesh at another place (a
+ * move's check), and runs only when the table is full. */
+static bool on_constrained_edge(const struct vor__cdt *c, uint32_t p)
+{
+    for (uint32_t i = 0; i < c->edge_slots; i++) {
+        vor_index_t u = c->edges[i].u;
+        vor_index_t v = c->edges[i].v;
+        if ((u != VOR__NONE) && (u != p) && (v != p) && splits(c, u, v, (vor_index_t)p)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
 {
     struct vor__cdt *c = d->cdt;
     vor_t *m = &c->mesh;
     int err = VOR_OK;
-    c->domain = c->domain && (event == VOR__CDT_CHECK_INSERT);
+    c->domain = c->domain && ((event == VOR__CDT_CHECK_INSERT) || (event == VOR__CDT_CHECK_REMOVE));
     if (event == VOR__CDT_CHECK_INSERT) {
         /* a split adds one edge */
-        if ((m->vertex_count >= 2u) && (c->edge_count >= c->max_edges)) {
-            vor_index_t su;
-            vor_index_t sv;
-            vor__tally_t tally; /* the walk's tests leave no trace */
-            vor__tally_save(&tally, m);
-            vor_index_t root = locate(c, (vor_index_t)m->last_site, p);
-            if (find_split(c, root, p, &su, &sv) != c->edge_slots) {
-                err = VOR_ERR_NOMEM;
-            }
-            vor__tally_restore(m, &tally);
+        if ((c->edge_count >= c->max_edges) && on_constrained_edge(c, p)) {
+            err = VOR_ERR_NOMEM;
         }
     } else if (event == VOR__CDT_INSERTED) {
         insert_vertex(c, p);
-    } else if (event == VOR__CDT_REMOVE) {
+    } else if ((event == VOR__CDT_REMOVE) || (event == VOR__CDT_CHECK_REMOVE)) {
         if (ends_constraint(c, p)) {
             err = VOR_ERR_CONSTRAINED;
-        } else {
+        } else if (event == VOR__CDT_REMOVE) {
             m->last_site = vor__unlink_site(m, p);
+        } else {
+            /* the check alone */
         }
     } else {
         copy_delaunay(c, d);

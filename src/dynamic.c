@@ -778,11 +778,12 @@ static int move_diagram(vor_t *d, uint32_t site, vor_point_t p, uint32_t *existi
     return move_checked(d, site, p.x, p.y, existing);
 }
 
-/* vor_move with constraint memory: the constrained mesh loses the site
- * first (at its old place; refused when a constraint ends there), then
- * the diagram moves it, with the upkeep off, then the constrained mesh
- * takes it at the new place. A twin there is found before anything
- * changes (the query is read-only). */
+/* vor_move with constraint memory: every refusal is found before
+ * anything changes: a twin at the new place (the query is read-only), a
+ * constraint ending at the site, a full edge table where the new place
+ * splits a constrained edge. Then the constrained mesh loses the site,
+ * the diagram moves it with the upkeep off, and the constrained mesh
+ * takes it at the new place. */
 static VOR__NOINLINE int move_constrained(vor_t *d, uint32_t site, vor_point_t p,
                                           uint32_t *existing)
 {
@@ -795,7 +796,7 @@ static VOR__NOINLINE int move_constrained(vor_t *d, uint32_t site, vor_point_t p
         return VOR_ERR_DUPLICATE;
     }
     int (*update)(vor_t *, uint32_t, unsigned) = d->cdt_update;
-    int err = update(d, site, VOR__CDT_REMOVE);
+    int err = update(d, site, VOR__CDT_CHECK_REMOVE);
     if (err != VOR_OK) {
         return err;
     }
@@ -803,10 +804,10 @@ static VOR__NOINLINE int move_constrained(vor_t *d, uint32_t site, vor_point_t p
     d->sites[site] = p;
     err = update(d, site, VOR__CDT_CHECK_INSERT);
     d->sites[site] = old;
-    if (err != VOR_OK) { /* the constrained mesh takes the site back */
-        (void)update(d, site, VOR__CDT_INSERTED);
+    if (err != VOR_OK) {
         return err;
     }
+    (void)update(d, site, VOR__CDT_REMOVE);
     d->cdt_update = NULL;
     err = move_diagram(d, site, p, existing);
     d->cdt_update = update;

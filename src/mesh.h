@@ -339,12 +339,14 @@ static inline uint32_t vor__triangle_count(uint32_t vertices)
  *   VOR__CDT_REMOVE        p is about to leave d: VOR_ERR_CONSTRAINED when
  *                          a constrained edge ends at p (nothing changes),
  *                          else p leaves the constrained mesh
+ *   VOR__CDT_CHECK_REMOVE  VOR__CDT_REMOVE's check alone; changes nothing
  *   VOR__CDT_REBUILT       d was built anew: the constrained mesh becomes
  *                          its Delaunay triangulation, without constraints */
 #define VOR__CDT_CHECK_INSERT 0u
 #define VOR__CDT_INSERTED 1u
 #define VOR__CDT_REMOVE 2u
 #define VOR__CDT_REBUILT 3u
+#define VOR__CDT_CHECK_REMOVE 4u
 
 /* The first two sites: two triangles at infinity sharing the edge ab
  * (mesh.c). */

@@ -735,11 +735,29 @@ static void check_errors(void)
     CHECK(model.live[7], "a site off the constrained edges in a full table");
     CHECK(vor_cdt_triangles_next(&it, ids) == 0, "inside triangles after a change");
     CHECK(check_cdt(&d) == 0u, "the constrained triangulation");
-    /* a build starts the constrained triangulation again, unconstrained */
+    /* a free site moved onto a constrained edge of the full table */
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    test_copy_bytes(saved_arena, arena, sizeof arena);
+    CHECK(vor_move(&d, 6, on_edge, NULL) == VOR_ERR_NOMEM &&
+              test_same_bytes(saved_memory, memory, sizeof memory) &&
+              test_same_bytes(saved_arena, arena, sizeof arena),
+          "a move onto a constrained edge of a full table");
+    /* a build starts the constrained triangulation again, unconstrained:
+     * either builder, and a build of one site */
     CHECK(vor_build(&d, square, 7, NULL, NULL) == VOR_OK, "build");
+    model.live[7] = false;
     model.constraints = 0;
     CHECK(!ends_constraint(&d, 4), "constraints after a build");
     CHECK(check_cdt(&d) == 0u, "the constrained triangulation after a build");
+    CHECK(vor_constrain(&d, 5, 6) == VOR_OK && vor_build_dc(&d, square, 7, NULL, NULL) == VOR_OK,
+          "constrain, then build by divide and conquer");
+    model.constraints = 0;
+    CHECK(!ends_constraint(&d, 5) && check_cdt(&d) == 0u, "the constraints after vor_build_dc");
+    CHECK(vor_build(&d, square, 1, NULL, NULL) == VOR_OK, "build one site");
+    for (uint32_t i = 1; i < 7u; i++) {
+        model.live[i] = false;
+    }
+    CHECK(d.cdt->mesh.vertex_count == 1u && check_cdt(&d) == 0u, "the constrained mesh of one site");
 }
 
 /* Constraints along the lines of a grid, through its sites, overlapping
