@@ -50,7 +50,7 @@ typedef struct segment {
 #define COUNT(array) (sizeof(array) / sizeof((array)[0]))
 
 /* The flat's outline, counterclockwise: the living room on the left with
- * the bathroom in its top corner, the kitchen on the right, the bedroom
+ * the bathroom in its top left corner, the kitchen on the right, the bedroom
  * above the kitchen. */
 static const vor_point_t outline[] = {{0, 0},       {12000, 0},   {12000, 5000},
                                       {8000, 5000}, {8000, 9000}, {0, 9000}};
@@ -137,7 +137,8 @@ static void check(bool ok, const char *what)
  * Coordinates here stay below 2^16, so the products fit. */
 static int64_t cross(vor_point_t a, vor_point_t b, vor_point_t c)
 {
-    return ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) - ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
+    return ((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) -
+           ((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
 }
 
 static int sign(int64_t v)
