@@ -11,9 +11,10 @@
  * segment between two sites a chain of its edges, and the iterators here
  * read it: every edge that is not constrained is locally Delaunay.
  *
- *     static uint8_t walls[VOR_CDT_BYTES(500, 64, 500)]
+ *     static uint8_t walls[VOR_CDT_BYTES(500, 512, 64, 1002)]
  *         __attribute__((aligned(VOR_CDT_ALIGN)));
- *     vor_cdt_attach(&d, walls, sizeof walls, 64, 500);  // after vor_init
+ *     vor_cdt_limits_t limits = {512, 64, 1002};  // edges, crossings, cut
+ *     vor_cdt_attach(&d, walls, sizeof walls, &limits);  // after vor_init
  *     vor_constrain(&d, door_left, corner);
  *
  * A constraint through a site is split there; collinear constraints that
@@ -125,7 +126,7 @@ typedef struct vor_cdt_triangle_iter {
 } vor_cdt_triangle_iter_t;
 
 int vor_cdt_triangles_begin(vor_cdt_triangle_iter_t *it, const vor_t *d);
-/* VOR_OK and the next triangle's sites in ids, or VOR_ERR_EMPTY at the end. */
+/* 1 and the next triangle's sites in ids, or 0 at the end. */
 int vor_cdt_triangles_next(vor_cdt_triangle_iter_t *it, uint32_t ids[3]);
 
 /*
@@ -152,7 +153,7 @@ typedef struct vor_cdt_edge_iter {
 } vor_cdt_edge_iter_t;
 
 int vor_cdt_edges_begin(vor_cdt_edge_iter_t *it, const vor_t *d);
-/* VOR_OK and the next constrained edge's sites (a < b), or VOR_ERR_EMPTY. */
+/* 1 and the next constrained edge's sites (a < b), or 0 at the end. */
 int vor_cdt_edges_next(vor_cdt_edge_iter_t *it, uint32_t *a, uint32_t *b);
 
 #ifdef __cplusplus
