@@ -43,7 +43,7 @@ skipped=()
 only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
-suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference fuzz coverage harness"
+suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference fuzz coverage room harness"
 suites="$suites mutants freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
@@ -216,6 +216,34 @@ coverage() {
         make -s PORT=cortex-m3 run-example-coverage
 }
 check coverage coverage
+
+# examples/room on the host and on every emulated target: a navigation
+# mesh from walls as constraints, checked against the floor plan (the
+# shoelace area, Euler's triangle count, even-odd point location, a way
+# through the doors). Its checks add up over the ports.
+room() {
+    local passed=0 failed=0 port exe out status counts
+    for port in host $targets; do
+        exe=$([ "$port" = host ] || echo .elf)
+        out=$logs/room-$port.out
+        make -s -j"$jobs" PORT="$port" "build/$port/example-room$exe" >"$out" 2>&1 &&
+            make -s PORT="$port" run-example-room >>"$out" 2>&1
+        status=$?
+        sed -n "s/^FAIL /FAIL $port: /p" "$out"
+        counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
+        if [ -n "$counts" ]; then
+            passed=$((passed + ${counts%% passed*}))
+            counts=${counts#*, }
+            failed=$((failed + ${counts%% failed}))
+        fi
+        if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
+            echo "FAIL $port: examples/room exited with status $status ($out)"
+            failed=$((failed + 1))
+        fi
+    done
+    echo "$passed passed, $failed failed"
+}
+check room room
 
 # The harness itself: on every port a failing check, a failing or empty
 # named case, a filter that selects no case and a trap must end the run
