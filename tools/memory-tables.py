@@ -1,15 +1,21 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""memory-tables.py - the two memory tables of docs/benchmarks.md, measured.
+"""memory-tables.py - the three memory tables of docs/benchmarks.md, measured.
 
-    tools/memory-tables.py            print both tables (Markdown)
+    tools/memory-tables.py            print the tables (Markdown)
     tools/memory-tables.py --check F  exit 1 unless file F holds each verbatim
 
-1. Stack per public call and target: tools/size-report.sh -v (the deepest
-   chain of -fstack-usage frames below each public vor_ function).
-2. Sites per RAM budget and target: the most sites n whose arena
+1. Stack per public call and target: the deepest chain of -fstack-usage
+   frames below each public vor_ function (tools/size-report.sh -v builds
+   the objects, tools/stack-depth.py reads them), for a firmware that
+   never attaches constraint memory (--without the constraints' files:
+   the upkeep's pointer is never set).
+2. The calls whose stack grows when constraint memory is attached (the
+   upkeep's and the constrained mesh's functions counted), and the
+   constraints' own calls.
+3. Sites per RAM budget and target: the most sites n whose arena
    VOR_ARENA_BYTES(n) (tools/ram_budget.c, per VOR_INDEX_BITS), the vor_t
-   (sizeof from the target compiler) and the library's worst stack fit in
+   (sizeof from the target compiler) and the worst stack of table 1 fit in
    8, 16, 32, 64 and 256 KB.
 """
 
@@ -28,20 +34,27 @@ def run(args, **kwargs):
     return subprocess.run(args, cwd=ROOT, check=True, capture_output=True, text=True, **kwargs).stdout
 
 
+CONSTRAINTS = "cdt.c,crossing.c"
+
+
 def stack_depths():
-    """{target: {public function: bytes}} from size-report's -v chains."""
-    depths, target = {}, None
-    for line in run(["tools/size-report.sh", "-v"] + TARGETS).splitlines():
-        if line.endswith(":") and line[:-1] in TARGETS:
-            target = line[:-1]
-            depths[target] = {}
-        elif target and re.match(r"vor_\w+\s+\d+\s", line):
-            name, size = line.split()[:2]
-            depths[target][name] = int(size)
-    missing = [t for t in TARGETS if not depths.get(t)]
-    if missing:
-        sys.exit(f"memory-tables: no stack depths for {' '.join(missing)}")
-    return depths
+    """({target: {public function: bytes}} without constraints, the same
+    with them) from the objects tools/size-report.sh builds."""
+    run(["tools/size-report.sh", "-v"] + TARGETS)
+    tables = []
+    for options in (["--without", CONSTRAINTS], []):
+        depths = {}
+        for target in TARGETS:
+            chains = subprocess.run(["python3", "tools/stack-depth.py"] + options +
+                                    [f"build/size/{target}"], cwd=ROOT, capture_output=True,
+                                    text=True).stdout
+            depths[target] = {line.split()[0]: int(line.split()[1]) for line in chains.splitlines()
+                              if re.match(r"vor_\w+\s+\d+\s", line)}
+        missing = [t for t in TARGETS if not depths[t]]
+        if missing:
+            sys.exit(f"memory-tables: no stack depths for {' '.join(missing)}")
+        tables.append(depths)
+    return tables
 
 
 def vor_t_bytes(target, tmp):
@@ -71,13 +84,20 @@ def most_sites(tmp, index_bits, overhead):
     return {int(b) // 1024: int(n) for b, n in (line.split() for line in lines)}
 
 
+def stack_rows(depths, calls):
+    return [f"| `{call}` | " + " | ".join(f"{depths[t].get(call, '-'):,}" for t in TARGETS) + " |"
+            for call in sorted(calls, key=lambda c: (-depths[TARGETS[0]][c], c))]
+
+
 def tables():
-    """The two tables, each a Markdown string."""
-    depths = stack_depths()
+    """The three tables, each a Markdown string."""
+    depths, attached = stack_depths()
     header = ["| {} | " + " | ".join(TARGETS) + " |", "|---|" + "---:|" * len(TARGETS)]
-    stack = [header[0].format("public call"), header[1]]
-    for call in sorted(depths[TARGETS[0]], key=lambda c: (-depths[TARGETS[0]][c], c)):
-        stack.append(f"| `{call}` | " + " | ".join(f"{depths[t].get(call, '-'):,}" for t in TARGETS) + " |")
+    stack = [header[0].format("public call"), header[1]] + stack_rows(depths, depths[TARGETS[0]])
+    grown = [c for c in attached[TARGETS[0]]
+             if any(attached[t][c] != depths[t].get(c) for t in TARGETS)]
+    with_constraints = [header[0].format("with constraint memory"), header[1]] + \
+        stack_rows(attached, grown)
     with tempfile.TemporaryDirectory() as tmp:
         fixed = {t: (vor_t_bytes(t, tmp), max(depths[t].values())) for t in TARGETS}
         sites = {(t, bits): most_sites(tmp, bits, sum(fixed[t]))
@@ -88,7 +108,7 @@ def tables():
     for kb in BUDGETS_KB:
         ram.append(f"| {kb} KB | " +
                    " | ".join(f"{sites[t, 16][kb]:,} / {sites[t, 32][kb]:,}" for t in TARGETS) + " |")
-    return ["\n".join(stack) + "\n", "\n".join(ram) + "\n"]
+    return ["\n".join(stack) + "\n", "\n".join(with_constraints) + "\n", "\n".join(ram) + "\n"]
 
 
 def main():

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: MIT
 """stack-depth.py - worst-case stack depth of vor's public functions.
 
-    tools/stack-depth.py [--worst] FILE.ci|DIR...
+    tools/stack-depth.py [--worst] [--without FILE.c,...] FILE.ci|DIR...
 
 Reads the call graphs GCC writes with -fcallgraph-info=su (one VCG file,
 NAME.ci, per object; a DIR stands for every *.ci in it), merges them, and
@@ -14,6 +14,11 @@ stacking are not included.
 Default output: one line per public function, deepest first, with its chain.
 --worst prints only the deepest public function: "BYTES NAME" (BYTES is
 ">=N" when the depth is not fully known).
+--without leaves out the functions of the named source files (base names)
+as a firmware that never calls into them has them: their public functions
+are not listed, and an indirect call through one of the library's tables
+(below) whose every function is left out is no call (the pointer is never
+set: the constraints' upkeep without vor_cdt_attach).
 
 The library promises a static stack, so these are flagged, on stderr, and
 make the depth of every function that reaches them unknown (reported as a
@@ -230,10 +235,15 @@ def reaches(title, edges, frames, bad):
 
 def main(argv):
     worst_only = False
+    without = set()
     args = []
-    for arg in argv:
+    argv = list(argv)
+    while argv:
+        arg = argv.pop(0)
         if arg == "--worst":
             worst_only = True
+        elif arg == "--without" and argv:
+            without = set(argv.pop(0).split(","))
         elif arg in ("-h", "--help"):
             print(__doc__.strip())
             return 0
@@ -270,6 +280,15 @@ def main(argv):
         edges[title] = (edges[title] - {INDIRECT}) | table | caller
         print(f"stack-depth: note: {short(title)} calls {what}: the deepest of "
               f"{len(table)} counted", file=sys.stderr)
+
+    # --without: the left-out files' functions, and every call to them, go
+    left_out = {t for t in frames
+                if os.path.basename(where[t].split(":", 1)[0]) in without}
+    for title in left_out:
+        for table in (frames, kinds, where, edges):
+            table.pop(title, None)
+    for title in edges:
+        edges[title] = edges[title] - left_out
 
     for title in frames:
         name = short(title).split(".", 1)[0]
