@@ -155,8 +155,6 @@ static void minor2(vor__limb *r, const vor__limb *a, const vor__limb *b, const v
 /* acc += s m n for minors m, n (s = +-1). */
 static void add_product(vor__limb *acc, const vor__limb *m, const vor__limb *n, int s)
 {
-    vor__limb x[DET_LIMBS];
-    vor__limb y[DET_LIMBS];
     vor__limb p[DET_LIMBS];
     vor__limb mm[MINOR_LIMBS];
     vor__limb mn[MINOR_LIMBS];
@@ -171,12 +169,8 @@ static void add_product(vor__limb *acc, const vor__limb *m, const vor__limb *n, 
     if (negative(n, MINOR_LIMBS)) {
         vor__mw_neg(mn, MINOR_LIMBS);
     }
-    /* the magnitudes (below 2^326) zero-extended, multiplied unsigned */
-    for (size_t i = 0; i < DET_LIMBS; i++) {
-        x[i] = (i < MINOR_LIMBS) ? mm[i] : 0u;
-        y[i] = (i < MINOR_LIMBS) ? mn[i] : 0u;
-    }
-    vor__mw_mul(p, DET_LIMBS, x, MINOR_LIMBS, y, MINOR_LIMBS);
+    /* the magnitudes (below 2^326) multiplied unsigned */
+    vor__mw_mul(p, DET_LIMBS, mm, MINOR_LIMBS, mn, MINOR_LIMBS);
     bool subtract = s < 0;
     if (neg != subtract) {
         vor__mw_sub(acc, p, DET_LIMBS);
