@@ -665,7 +665,6 @@ int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
     struct vor__cdt *c = d->cdt;
     vor_t *m = &c->mesh;
     int err = VOR_OK;
-    c->domain = c->domain && ((event == VOR__CDT_CHECK_INSERT) || (event == VOR__CDT_CHECK_REMOVE));
     if (event == VOR__CDT_CHECK_INSERT) {
         /* a split adds one edge */
         if ((c->edge_count >= c->max_edges) && on_constrained_edge(c, p)) {
@@ -684,6 +683,10 @@ int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
     } else {
         copy_delaunay(c, d);
     }
+    /* the marks stay unless the triangulation changed (a refused removal
+     * changes nothing) */
+    c->domain = c->domain && ((event == VOR__CDT_CHECK_INSERT) || (event == VOR__CDT_CHECK_REMOVE) ||
+                              (err != VOR_OK));
     m->low = d->low;
     m->high = d->high;
     return err;
@@ -1636,7 +1639,8 @@ int vor_cdt_domain(vor_t *d)
     struct vor__cdt *c = d->cdt;
     const vor_t *m = &c->mesh;
     uint8_t *lv = c->levels;
-    uint32_t end = vor__used_slots_end(m);
+    /* below two vertices the slots hold no triangle (stale contents) */
+    uint32_t end = (m->vertex_count >= 2u) ? vor__used_slots_end(m) : 0u;
     lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
     for (uint32_t s = 0; s < end; s++) {
         lv[s] = LEVEL_UNKNOWN;

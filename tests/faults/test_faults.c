@@ -14,9 +14,19 @@
  * one fan of triangles. Only the geometric checks (orientation, Delaunay)
  * may fail. The host runs this under AddressSanitizer too, so an
  * out-of-bounds access would also fail it.
+ *
+ * Constraints (vor_cdt.h) under the same lies, one case per rate: on a
+ * diagram with constraint memory attached (its mesh draws faults too),
+ * inserting sites (many on constraints and at crossings), constraining
+ * and unconstraining, marking the domain, walking every iterator,
+ * removing and moving sites, and a rebuild, with roomy limits and with
+ * tight ones (tables and cuts that overflow), must finish, return only
+ * the documented errors, and leave the diagram's topology whole and every
+ * vertex the iterators report one of the diagram's sites or crossings.
  */
 #include "test.h"
 #include "vor.h"
+#include "vor_cdt.h"
 
 #ifndef VOR_FAULT_INJECTION
 #error "build with -DVOR_FAULT_INJECTION"
@@ -43,6 +53,210 @@ static void check_topology(const vor_t *d, const char *what, uint32_t rate_perce
     test_printf("%s, p = %u%%: topology %s, geometry %s\n", what, rate_percent,
                 topology_ok ? "consistent" : "BROKEN",
                 err == VOR_OK ? "exact" : check_names[v.check]);
+}
+
+/* The constraints' run: sites, the constraints' calls in a random mix,
+ * a rebuild; checks every call's result and the iterators' output. */
+#define CDT_SITES 300u
+#define CDT_CROSSINGS 60u
+#define CDT_EDGES 500u
+#define CDT_CUT (2u * (CDT_SITES + CDT_CROSSINGS) + 2u)
+
+/* Sites on a grid, none twice: the lying diagram can miss a duplicate
+ * (it tells one only at the triangle its walk ends in), and the
+ * constrained mesh, whose predicates stay exact, is not given one. */
+#define HALF 40
+#define GRID (2u * HALF + 1u)
+static bool taken[GRID * GRID];
+static bool alive[CDT_SITES];
+static vor_point_t at[CDT_SITES];
+
+static uint32_t grid_index(vor_point_t p)
+{
+    return ((uint32_t)(p.x + HALF) * GRID) + (uint32_t)(p.y + HALF);
+}
+
+/* Mostly a site in the diagram, else an id that is none. */
+static uint32_t some_site(test_rng_t *rng)
+{
+    uint32_t id = test_rng_u32(rng) % CDT_SITES;
+    for (unsigned tries = 0; (tries < 8u) && !alive[id]; tries++) {
+        id = test_rng_u32(rng) % CDT_SITES;
+    }
+    return id;
+}
+
+static uint8_t cdt_memory[VOR_CDT_BYTES(CDT_SITES, CDT_EDGES, CDT_CROSSINGS, CDT_CUT)]
+    __attribute__((aligned(8)));
+static uint32_t made_a[CDT_EDGES];
+static uint32_t made_b[CDT_EDGES];
+
+/* A vertex a CDT iterator may name: a site in d, or a crossing vertex. */
+static bool cdt_vertex(const vor_t *d, uint32_t v)
+{
+    uint32_t s[4];
+    return (v < d->site_count) || (vor_cdt_crossing(d, v, s) == VOR_OK);
+}
+
+/* Every iterator walked, bounded by the triangle slots; returns whether
+ * each reported a vertex of d only and ended in time (the domain's
+ * iterator refuses when no domain is marked since the last change). */
+static bool cdt_iterators_sane(vor_t *d)
+{
+    uint32_t slots = 2u * (CDT_SITES + CDT_CROSSINGS);
+    bool sane = true;
+    for (unsigned inside = 0; inside < 2u; inside++) {
+        vor_cdt_triangle_iter_t it;
+        uint32_t ids[3];
+        uint32_t n = 0;
+        int begun = inside ? vor_cdt_inside_begin(&it, d) : vor_cdt_triangles_begin(&it, d);
+        sane = sane && ((begun == VOR_OK) || (inside && (begun == VOR_ERR_ARG)));
+        while ((n <= slots) && vor_cdt_triangles_next(&it, ids)) {
+            sane = sane && cdt_vertex(d, ids[0]) && cdt_vertex(d, ids[1]) && cdt_vertex(d, ids[2]);
+            n++;
+        }
+        sane = sane && (n <= slots);
+    }
+    vor_cdt_edge_iter_t e;
+    uint32_t a;
+    uint32_t b;
+    uint32_t n = 0;
+    int begun = vor_cdt_edges_begin(&e, d);
+    sane = sane && (begun == VOR_OK);
+    while ((n <= CDT_EDGES) && vor_cdt_edges_next(&e, &a, &b)) {
+        sane = sane && (a < b) && cdt_vertex(d, a) && cdt_vertex(d, b);
+        n++;
+    }
+    return sane && (n <= CDT_EDGES);
+}
+
+static void cdt_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k, bool tight,
+                             test_rng_t *rng)
+{
+    vor_t d;
+    vor_cdt_limits_t limits = {CDT_EDGES, CDT_CROSSINGS, CDT_CUT};
+    if (tight) { /* the tables and the cuts overflow often */
+        limits.edges = 120u;
+        limits.crossings = 20u;
+        limits.cut = 6u;
+    }
+    const char *what = tight ? "constraints, tight limits" : "constraints";
+    CHECK(vor_init(&d, arena, sizeof arena, CDT_SITES) == VOR_OK, "init");
+    /* attached before the faults are switched on, the constrained mesh
+     * keeps exact predicates (the attach copies the rate): only the
+     * diagram's lie */
+    CHECK(vor_cdt_attach(&d, cdt_memory, sizeof cdt_memory, &limits) == VOR_OK, "cdt attach");
+    d.fault_rate = rate;
+    d.fault_state = 0x6A09E667F3BCC909ull + k;
+    uint32_t live = 0;
+    uint32_t made = 0;
+    uint32_t refused = 0;
+    bool results_ok = true;
+    for (uint32_t i = 0; i < GRID * GRID; i++) {
+        taken[i] = false;
+    }
+    for (uint32_t i = 0; i < CDT_SITES; i++) {
+        alive[i] = false;
+    }
+    for (uint32_t step = 0; step < 250u; step++) {
+        uint32_t a = some_site(rng);
+        uint32_t b = some_site(rng);
+        uint32_t choice = test_rng_u32(rng) % 16u;
+        /* a free grid point, or the middle of a constraint made */
+        vor_point_t p = {test_rng_range(rng, -HALF, HALF), test_rng_range(rng, -HALF, HALF)};
+        if ((choice < 2u) && (made > 0u)) {
+            uint32_t c = test_rng_u32(rng) % made;
+            p.x = (at[made_a[c]].x + at[made_b[c]].x) / 2;
+            p.y = (at[made_a[c]].y + at[made_b[c]].y) / 2;
+        }
+        bool free = !taken[grid_index(p)];
+        int err;
+        if (((choice < 5u) || (live < 8u)) && free) {
+            uint32_t id = 0;
+            err = vor_insert(&d, p, &id);
+            if (err == VOR_OK) {
+                live++;
+                alive[id] = true;
+                at[id] = p;
+                taken[grid_index(p)] = true;
+            }
+            results_ok = results_ok && ((err == VOR_OK) || (err == VOR_ERR_FULL) ||
+                                        (err == VOR_ERR_NOMEM));
+        } else if ((choice >= 5u) && (choice < 10u)) {
+            err = vor_constrain(&d, a, b);
+            if ((err == VOR_OK) && (made < CDT_EDGES)) {
+                made_a[made] = a;
+                made_b[made] = b;
+                made++;
+            }
+            refused += (err == VOR_ERR_NOMEM) ? 1u : 0u;
+            results_ok = results_ok && ((err == VOR_OK) || (err == VOR_ERR_ARG) ||
+                                        (err == VOR_ERR_NOMEM));
+        } else if ((choice == 10u) || (choice == 11u)) {
+            if (made > 0u) { /* one made before, or part of it */
+                uint32_t c = test_rng_u32(rng) % made;
+                a = made_a[c];
+                b = (choice == 10u) ? made_b[c] : b;
+            }
+            err = vor_unconstrain(&d, a, b);
+            results_ok = results_ok && ((err == VOR_OK) || (err == VOR_ERR_ARG));
+        } else if (choice == 12u) {
+            err = vor_remove(&d, a);
+            if (err == VOR_OK) {
+                live--;
+                alive[a] = false;
+                taken[grid_index(at[a])] = false;
+            }
+            results_ok = results_ok && ((err == VOR_OK) || (err == VOR_ERR_ARG) ||
+                                        (err == VOR_ERR_CONSTRAINED));
+        } else if ((choice == 13u) && free) {
+            err = vor_move(&d, a, p, NULL);
+            if (err == VOR_OK) {
+                taken[grid_index(at[a])] = false;
+                at[a] = p;
+                taken[grid_index(p)] = true;
+            }
+            results_ok = results_ok && ((err == VOR_OK) || (err == VOR_ERR_ARG) ||
+                                        (err == VOR_ERR_CONSTRAINED) || (err == VOR_ERR_NOMEM));
+        } else if (choice == 14u) {
+            results_ok = results_ok && (vor_cdt_domain(&d) == VOR_OK);
+        } else if (choice == 15u) {
+            results_ok = results_ok && cdt_iterators_sane(&d);
+        } else {
+            /* the point was taken: no site goes there */
+        }
+    }
+    CHECK(results_ok, "%s, p = %u%%: a call returned an undocumented result", what, rate_percent);
+    test_printf("%s, p = %u%%: %u sites, %u constraints made, %u refused for room\n", what,
+                rate_percent, live, made, refused);
+    check_topology(&d, what, rate_percent, live);
+    CHECK(vor_cdt_domain(&d) == VOR_OK && cdt_iterators_sane(&d),
+          "%s, p = %u%%: an iterator named no vertex, or did not end", what, rate_percent);
+    /* a rebuild starts the constraints again from the diagram's
+     * triangulation, which must then be exact: the constrained mesh's
+     * walks take a copied triangulation as it is */
+    static vor_point_t rebuilt[CDT_SITES];
+    for (uint32_t i = 0; i < CDT_SITES; i++) { /* distinct: 37 is prime to GRID^2 */
+        uint32_t cell = (i * 37u) % (GRID * GRID);
+        rebuilt[i].x = (int32_t)(cell % GRID) - HALF;
+        rebuilt[i].y = (int32_t)(cell / GRID) - HALF;
+    }
+    d.fault_rate = 0;
+    CHECK(vor_build(&d, rebuilt, CDT_SITES, NULL, NULL) == VOR_OK, "build with constraints");
+    d.fault_rate = rate;
+    uint32_t made_again = 0;
+    for (uint32_t i = 0; i < 100u; i++) {
+        int err = vor_constrain(&d, test_rng_u32(rng) % CDT_SITES, test_rng_u32(rng) % CDT_SITES);
+        made_again += (err == VOR_OK) ? 1u : 0u;
+        CHECK((err == VOR_OK) || (err == VOR_ERR_ARG) || (err == VOR_ERR_NOMEM),
+              "constrain after the build: %d", err);
+    }
+    CHECK(vor_cdt_domain(&d) == VOR_OK && cdt_iterators_sane(&d),
+          "%s, p = %u%%: after the build, an iterator named no vertex, or did not end", what,
+          rate_percent);
+    test_printf("%s, p = %u%%: after a build, %u constraints made\n", what, rate_percent,
+                made_again);
+    check_topology(&d, "constraints after a build", rate_percent, CDT_SITES);
 }
 
 int main(void)
@@ -174,6 +388,16 @@ int main(void)
         CHECK(vor_insert(&d, (vor_point_t){0, 0}, &centre) == VOR_OK && vor_remove(&d, centre) == VOR_OK,
               "ring centre");
         check_topology(&d, "a ring's centre removed", percents[k], ring);
+        test_case_end();
+    }
+    for (unsigned k = 0; k < 3u; k++) {
+        if (!test_case_begin("faults/cdt/rate_%u", percents[k])) {
+            continue;
+        }
+        test_rng_seed(&rng, 3031u + k);
+        uint32_t rate = (uint32_t)(((uint64_t)percents[k] << 32) / 100u);
+        cdt_under_faults(rate, percents[k], k, false, &rng);
+        cdt_under_faults(rate, percents[k], k, true, &rng);
         test_case_end();
     }
     return test_finish();

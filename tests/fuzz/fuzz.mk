@@ -25,7 +25,7 @@ fuzz-deps:
 
 fuzz-harnesses: fuzz-deps $(FUZZ_HARNESSES)
 
-$(FUZZ_DIR)/fuzz_api%: tests/fuzz/fuzz_api.c $(FUZZ_DEPS) | fuzz-deps
+$(FUZZ_DIR)/fuzz_api%: tests/fuzz/fuzz_api.c tests/fuzz/fuzz_hpoint.h $(FUZZ_DEPS) | fuzz-deps
 	@mkdir -p $(FUZZ_DIR)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -DVOR_INDEX_BITS=$* $< $(LIB_SRCS) -o $@
 

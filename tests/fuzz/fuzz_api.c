@@ -14,10 +14,33 @@
  * against vor_cell and their box. Diagrams of odd capacity carry a motion
  * cache (vor_motion_attach), whose bytes a failing call must not change
  * either.
+ *
+ * Constraints (vor_cdt.h) join the program: attaching constraint memory
+ * (also with bad limits, short or misaligned memory), vor_constrain,
+ * vor_unconstrain, closed chains of constraints, sites inserted on
+ * constraints and at crossings, vor_cdt_domain and the iterators, between
+ * the dynamic calls. The model keeps the constraints as signed segments
+ * (+1 a vor_constrain, -1 a vor_unconstrain, by their points): a point's
+ * coverage is their sum over the segments through it. From it alone, with
+ * exact rational arithmetic (fuzz_hpoint.h), the harness derives what the
+ * library must hold: the crossing vertices (points off the sites where two
+ * lines of positive coverage cross), the constrained edges (the pieces of
+ * positive coverage between the vertices on each segment), the errors
+ * each call must give (a table that would overflow, a constraint's end
+ * removed or moved, a piece not constrained). After every call the
+ * constrained triangulation read through the public calls must match:
+ * its crossing vertices and constrained edges exactly, its triangles
+ * counterclockwise, each edge used once each way, the unpaired ones the
+ * hull's pieces, 2v - h - 2 of them, every unconstrained edge locally
+ * Delaunay, no vertex inside a triangle's circumcircle visible from the
+ * triangle's centroid (on small meshes), and the domain's triangles those
+ * at odd nesting levels by a shortest-path flood over the triangles.
  */
 #include <string.h>
 
 #include "fuzz_common.h"
+#include "fuzz_hpoint.h"
+#include "vor_cdt.h"
 
 #define MOST_SITES 24u
 #define BUILD_POINTS (MOST_SITES + 4u) /* builds may ask for more than fit */
@@ -26,6 +49,22 @@ static uint8_t arena[VOR_ARENA_BYTES(MOST_SITES)] __attribute__((aligned(VOR_ARE
 static uint8_t arena_before[sizeof arena];
 static uint8_t motion[VOR_MOTION_BYTES(MOST_SITES)] __attribute__((aligned(VOR_MOTION_ALIGN)));
 static uint8_t motion_before[sizeof motion];
+
+/* Constraint memory for every limit the harness draws. */
+#define MOST_CROSSINGS 12u
+#define MOST_VERTICES (MOST_SITES + MOST_CROSSINGS)
+#define MOST_CDT_EDGES (3u * MOST_VERTICES)
+#define MOST_CUT (2u * MOST_VERTICES + 2u)
+#define MOST_ENTRIES 64u /* one a call at most: the program's length */
+static uint8_t cdt_memory[VOR_CDT_BYTES(MOST_SITES, MOST_CDT_EDGES, MOST_CROSSINGS, MOST_CUT) + 8u]
+    __attribute__((aligned(VOR_CDT_ALIGN)));
+static uint8_t cdt_before[sizeof cdt_memory];
+
+/* A constraint made (+1) or taken off (-1) along the segment a-b. */
+typedef struct {
+    vor_point_t a, b;
+    int weight;
+} entry_t;
 
 typedef struct {
     vor_t d;
@@ -37,6 +76,11 @@ typedef struct {
     uint32_t freed[MOST_SITES];     /* freed ids, the most recent last */
     uint32_t freed_count;
     vor_tracker_t tracker;
+    int cdt_attached;
+    vor_cdt_limits_t limits;
+    entry_t entry[MOST_ENTRIES];
+    uint32_t entries;
+    int domain; /* vor_cdt_domain succeeded and nothing changed since */
 } model_t;
 
 static vor_t diagram_before;
@@ -46,13 +90,15 @@ static void snapshot(const model_t *m)
     memcpy(&diagram_before, &m->d, sizeof m->d);
     memcpy(arena_before, arena, sizeof arena);
     memcpy(motion_before, motion, sizeof motion);
+    memcpy(cdt_before, cdt_memory, sizeof cdt_memory);
 }
 
 static int unchanged(const model_t *m)
 {
     return memcmp(&diagram_before, &m->d, sizeof m->d) == 0 &&
            memcmp(arena_before, arena, sizeof arena) == 0 &&
-           memcmp(motion_before, motion, sizeof motion) == 0;
+           memcmp(motion_before, motion, sizeof motion) == 0 &&
+           memcmp(cdt_before, cdt_memory, sizeof cdt_memory) == 0;
 }
 
 static int is_site(const model_t *m, uint32_t id)
@@ -83,6 +129,179 @@ static uint32_t distinct_sites(const model_t *m)
     for (uint32_t i = 0; i < m->count; i++)
         n += is_site(m, i) ? 1u : 0u;
     return n;
+}
+
+/* ------------------------------------------------------------------ */
+/* Constraints: what the model says the constrained triangulation holds */
+
+/* Vertices by the model's numbering: sites by id, then the crossings the
+ * model derives, MOST_SITES + k. */
+#define MOST_EXPECTED_EDGES 256u
+
+typedef struct {
+    fuzz_hpoint_t point[MOST_SITES + MOST_CROSSINGS];
+    uint32_t crossings;
+    int too_many_crossings; /* more than MOST_CROSSINGS: no table holds them */
+    uint32_t edge_u[MOST_EXPECTED_EDGES], edge_v[MOST_EXPECTED_EDGES]; /* u < v */
+    uint32_t edge_cover[MOST_EXPECTED_EDGES];
+    uint32_t edges;
+    int too_many_edges;
+} expected_t;
+
+static expected_t expected; /* of the model after the last call */
+
+static int entry_collinear(const entry_t *e, const entry_t *k)
+{
+    return fuzz_orient(e->a, e->b, k->a) == 0 && fuzz_orient(e->a, e->b, k->b) == 0;
+}
+
+/* Is p on the closed segment of entry k (a point of its line)? */
+static int entry_holds(const entry_t *k, const fuzz_hpoint_t *p)
+{
+    fuzz_hpoint_t a = fuzz_hpoint_site(k->a), b = fuzz_hpoint_site(k->b);
+    return fuzz_hpoint_same(p, &a) || fuzz_hpoint_same(p, &b) || fuzz_hpoint_between(&a, p, &b);
+}
+
+/* The coverage of the piece p-q (both on entry e's line): the weights of
+ * the entries on that line whose segments hold it. */
+static int piece_cover(const model_t *m, const entry_t *e, const fuzz_hpoint_t *p,
+                       const fuzz_hpoint_t *q)
+{
+    int cover = 0;
+    for (uint32_t k = 0; k < m->entries; k++)
+        if (entry_collinear(e, &m->entry[k]) && entry_holds(&m->entry[k], p) &&
+            entry_holds(&m->entry[k], q))
+            cover += m->entry[k].weight;
+    return cover;
+}
+
+/* The coverage at a point strictly inside entry e, no site. */
+static int point_cover(const model_t *m, const entry_t *e, const fuzz_hpoint_t *p)
+{
+    return piece_cover(m, e, p, p);
+}
+
+static int is_site_point(const model_t *m, const expected_t *x, const fuzz_hpoint_t *p)
+{
+    for (uint32_t i = 0; i < m->count; i++)
+        if (is_site(m, i) && fuzz_hpoint_same(p, &x->point[i]))
+            return 1;
+    return 0;
+}
+
+/* Vertices strictly inside segment a-b, sorted from a to b, into on[]. */
+static uint32_t vertices_inside(const model_t *m, const expected_t *x, vor_point_t pa,
+                                vor_point_t pb, uint32_t *on)
+{
+    fuzz_hpoint_t a = fuzz_hpoint_site(pa), b = fuzz_hpoint_site(pb);
+    uint32_t n = 0;
+    for (uint32_t v = 0; v < MOST_SITES + x->crossings; v++) {
+        if (v < MOST_SITES && !is_site(m, v))
+            continue;
+        const fuzz_hpoint_t *p = &x->point[v];
+        if (fuzz_hpoint_orient(&a, &b, p) == 0 && fuzz_hpoint_between(&a, p, &b))
+            on[n++] = v;
+    }
+    int axis = fuzz_hpoint_compare(&a, &b, 0) != 0 ? 0 : 1;
+    int way = fuzz_hpoint_compare(&b, &a, axis);
+    for (uint32_t i = 1; i < n; i++)
+        for (uint32_t j = i; j > 0 && fuzz_hpoint_compare(&x->point[on[j - 1]],
+                                                          &x->point[on[j]], axis) == way; j--) {
+            uint32_t t = on[j];
+            on[j] = on[j - 1];
+            on[j - 1] = t;
+        }
+    return n;
+}
+
+/* The crossings and constrained edges of the model's constraints. */
+static void derive(const model_t *m, expected_t *x)
+{
+    for (uint32_t i = 0; i < m->count; i++)
+        x->point[i] = fuzz_hpoint_site(m->point[i]);
+    x->crossings = 0;
+    x->too_many_crossings = 0;
+    x->edges = 0;
+    x->too_many_edges = 0;
+    for (uint32_t i = 0; i < m->entries; i++) {
+        const entry_t *e = &m->entry[i];
+        for (uint32_t j = 0; j < i && e->weight > 0; j++) {
+            const entry_t *f = &m->entry[j];
+            /* interiors crossing at one point */
+            if (f->weight < 0 || fuzz_orient(e->a, e->b, f->a) * fuzz_orient(e->a, e->b, f->b) >= 0 ||
+                fuzz_orient(f->a, f->b, e->a) * fuzz_orient(f->a, f->b, e->b) >= 0)
+                continue;
+            fuzz_hpoint_t p;
+            FUZZ_REQUIRE(fuzz_hpoint_crossing(&p, e->a, e->b, f->a, f->b), "harness: parallel crossing");
+            if (is_site_point(m, x, &p) || point_cover(m, e, &p) <= 0 || point_cover(m, f, &p) <= 0)
+                continue;
+            int seen = 0;
+            for (uint32_t k = 0; k < x->crossings && !seen; k++)
+                seen = fuzz_hpoint_same(&p, &x->point[MOST_SITES + k]);
+            if (seen)
+                continue;
+            if (x->crossings == MOST_CROSSINGS) {
+                x->too_many_crossings = 1;
+                return;
+            }
+            x->point[MOST_SITES + x->crossings++] = p;
+        }
+    }
+    uint32_t on[MOST_SITES + MOST_CROSSINGS + 2];
+    for (uint32_t i = 0; i < m->entries; i++) {
+        const entry_t *e = &m->entry[i];
+        if (e->weight < 0)
+            continue;
+        uint32_t n = vertices_inside(m, x, e->a, e->b, on + 1);
+        on[0] = site_at(m, e->a);
+        on[n + 1] = site_at(m, e->b);
+        for (uint32_t k = 0; k <= n; k++) {
+            uint32_t u = on[k] < on[k + 1] ? on[k] : on[k + 1];
+            uint32_t v = on[k] < on[k + 1] ? on[k + 1] : on[k];
+            int seen = 0;
+            for (uint32_t j = 0; j < x->edges && !seen; j++)
+                seen = x->edge_u[j] == u && x->edge_v[j] == v;
+            int cover = seen ? 0 : piece_cover(m, e, &x->point[u], &x->point[v]);
+            FUZZ_REQUIRE(cover >= 0, "harness: a piece taken off more often than made");
+            if (cover == 0)
+                continue;
+            if (x->edges == MOST_EXPECTED_EDGES) {
+                x->too_many_edges = 1;
+                return;
+            }
+            x->edge_u[x->edges] = u;
+            x->edge_v[x->edges] = v;
+            x->edge_cover[x->edges] = (uint32_t)cover;
+            x->edges++;
+        }
+    }
+}
+
+/* Does a constrained edge end at site s? */
+static int ends_constraint(const expected_t *x, uint32_t s)
+{
+    for (uint32_t j = 0; j < x->edges; j++)
+        if (x->edge_u[j] == s || x->edge_v[j] == s)
+            return 1;
+    return 0;
+}
+
+/* Does point p lie strictly inside a constrained edge? */
+static int splits_edge(const expected_t *x, vor_point_t p)
+{
+    fuzz_hpoint_t h = fuzz_hpoint_site(p);
+    for (uint32_t j = 0; j < x->edges; j++) {
+        const fuzz_hpoint_t *u = &x->point[x->edge_u[j]], *v = &x->point[x->edge_v[j]];
+        if (fuzz_hpoint_orient(u, v, &h) == 0 && fuzz_hpoint_between(u, &h, v))
+            return 1;
+    }
+    return 0;
+}
+
+/* Must an insertion (or a move) of a site at p fail for the edge table? */
+static int split_overflows(const model_t *m, vor_point_t p)
+{
+    return m->cdt_attached && expected.edges >= m->limits.edges && splits_edge(&expected, p);
 }
 
 /* A hint as a caller might pass it: none, a site, a duplicate, garbage. */
@@ -119,6 +338,8 @@ static uint32_t brute_order(const model_t *m, int32_t qx, int32_t qy, uint32_t *
     return n;
 }
 
+static void check_cdt(const model_t *m);
+
 /* After every call: the invariants, the memory figures against the model,
  * and the counters (read-only: neither may change the diagram). */
 static void check_valid(const model_t *m)
@@ -139,6 +360,8 @@ static void check_valid(const model_t *m)
     FUZZ_REQUIRE(vor_memory(&m->d, NULL) == VOR_ERR_ARG && vor_stats(&m->d, NULL) == VOR_ERR_ARG,
                  "memory, stats: NULL accepted");
     FUZZ_REQUIRE(unchanged(m), "memory or stats changed the diagram");
+    if (m->cdt_attached)
+        check_cdt(m);
 }
 
 /* The model after a successful build of points[0 .. n). */
@@ -213,12 +436,13 @@ static void op_build(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int di
     }
     FUZZ_REQUIRE(result == VOR_OK, "build failed");
     model_build(m, points, n, duplicate_of);
+    m->entries = 0; /* the constrained triangulation starts again */
+    m->domain = 0;
 }
 
-static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int near)
+/* vor_insert (near: vor_insert_near from hint) of p, checked. */
+static void insert_checked(model_t *m, vor_point_t p, int near, uint32_t hint)
 {
-    vor_point_t p = fuzz_point(r, previous);
-    uint32_t hint = near ? draw_hint(r, m) : VOR_NO_HINT;
     uint32_t id = 0xdeadbeefu;
     snapshot(m);
     int result = near ? vor_insert_near(&m->d, p, hint, &id)
@@ -230,16 +454,26 @@ static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int n
         FUZZ_REQUIRE(result == VOR_ERR_DUPLICATE && id == first, "insert: duplicate missed");
     } else if (m->count == m->capacity && m->freed_count == 0) {
         FUZZ_REQUIRE(result == VOR_ERR_FULL, "insert: full diagram accepted a site");
+    } else if (split_overflows(m, p)) {
+        FUZZ_REQUIRE(result == VOR_ERR_NOMEM, "insert: a split beyond the edge table accepted");
     } else {
         /* the most recently freed id first */
-        uint32_t expected = m->freed_count ? m->freed[--m->freed_count] : m->count++;
-        FUZZ_REQUIRE(result == VOR_OK && id == expected, "insert failed or wrong id");
+        uint32_t expected_id = m->freed_count ? m->freed[--m->freed_count] : m->count++;
+        FUZZ_REQUIRE(result == VOR_OK && id == expected_id, "insert failed or wrong id");
         m->point[id] = p;
         m->first[id] = id;
         m->removed[id] = 0;
+        m->domain = 0;
         return;
     }
     FUZZ_REQUIRE(unchanged(m), "insert: failure changed the diagram");
+}
+
+static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int near)
+{
+    vor_point_t p = fuzz_point(r, previous);
+    uint32_t hint = near ? draw_hint(r, m) : VOR_NO_HINT;
+    insert_checked(m, p, near, hint);
 }
 
 static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
@@ -382,7 +616,13 @@ static void op_remove(fuzz_reader_t *r, model_t *m)
         FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "remove: a non-site accepted");
         return;
     }
+    if (m->cdt_attached && ends_constraint(&expected, id)) {
+        FUZZ_REQUIRE(result == VOR_ERR_CONSTRAINED && unchanged(m),
+                     "remove: a constraint's end removed, or the refusal changed memory");
+        return;
+    }
     FUZZ_REQUIRE(result == VOR_OK, "remove failed");
+    m->domain = 0;
     m->removed[id] = 1;
     m->freed[m->freed_count++] = id;
 }
@@ -406,8 +646,19 @@ static void op_move(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
                      "move onto another site: not its duplicate, or changed the diagram");
         return;
     }
+    if (other != id && m->cdt_attached && ends_constraint(&expected, id)) {
+        FUZZ_REQUIRE(result == VOR_ERR_CONSTRAINED && unchanged(m),
+                     "move: a constraint's end moved, or the refusal changed memory");
+        return;
+    }
+    if (other != id && split_overflows(m, p)) {
+        FUZZ_REQUIRE(result == VOR_ERR_NOMEM && unchanged(m),
+                     "move: a split beyond the edge table accepted, or the refusal changed memory");
+        return;
+    }
     FUZZ_REQUIRE(result == VOR_OK, "move failed");
     m->point[id] = p;
+    m->domain = m->domain && other == id; /* onto its own point: nothing changes */
 }
 
 /* vor_cell_centroid of a random id and box, with scratch exactly as large
@@ -589,6 +840,559 @@ static void op_bad_init(fuzz_reader_t *r, model_t *m)
                  "tracker_begin: another configuration accepted, or wrote");
 }
 
+/* ------------------------------------------------------------------ */
+/* Constraints: the calls, and the check of the constrained triangulation */
+
+#define NO_VERTEX 0xffffffffu
+#define MOST_TRIANGLES (2u * MOST_VERTICES)
+
+static uint32_t crossing_vertex[MOST_CROSSINGS]; /* library crossing k: the model's vertex */
+static uint32_t triangle[MOST_TRIANGLES][3];     /* by the model's vertices */
+static uint32_t triangle_ids[MOST_TRIANGLES][3]; /* as the library reports them */
+static uint32_t twin[MOST_TRIANGLES][3];         /* across the edge opposite corner i */
+
+/* The model's vertex of the library's vertex id, or NO_VERTEX. */
+static uint32_t model_vertex(const model_t *m, uint32_t id)
+{
+    if (id < m->capacity)
+        return is_site(m, id) ? id : NO_VERTEX;
+    return id - m->capacity < MOST_CROSSINGS ? crossing_vertex[id - m->capacity] : NO_VERTEX;
+}
+
+static int vertex_orient(uint32_t a, uint32_t b, uint32_t c, const model_t *m)
+{
+    if (a < MOST_SITES && b < MOST_SITES && c < MOST_SITES)
+        return fuzz_orient(m->point[a], m->point[b], m->point[c]);
+    return fuzz_hpoint_orient(&expected.point[a], &expected.point[b], &expected.point[c]);
+}
+
+static int vertex_incircle(uint32_t a, uint32_t b, uint32_t c, uint32_t d, const model_t *m)
+{
+    if (a < MOST_SITES && b < MOST_SITES && c < MOST_SITES && d < MOST_SITES)
+        return fuzz_incircle(m->point[a], m->point[b], m->point[c], m->point[d]);
+    return fuzz_hpoint_incircle(&expected.point[a], &expected.point[b], &expected.point[c],
+                                &expected.point[d]);
+}
+
+/* The entry of constrained edge u-v in `expected`, or expected.edges. */
+static uint32_t expected_edge(uint32_t u, uint32_t v)
+{
+    uint32_t j = 0;
+    while (j < expected.edges && !((expected.edge_u[j] == u && expected.edge_v[j] == v) ||
+                                   (expected.edge_u[j] == v && expected.edge_v[j] == u)))
+        j++;
+    return j;
+}
+
+/* Does segment g-w meet a constrained edge anywhere but at w? */
+static int hidden(const fuzz_hpoint_t *g, uint32_t w)
+{
+    const fuzz_hpoint_t *pw = &expected.point[w];
+    for (uint32_t j = 0; j < expected.edges; j++) {
+        const fuzz_hpoint_t *p = &expected.point[expected.edge_u[j]];
+        const fuzz_hpoint_t *q = &expected.point[expected.edge_v[j]];
+        int o1 = fuzz_hpoint_orient(p, q, g), o2 = fuzz_hpoint_orient(p, q, pw);
+        if (o1 * o2 > 0)
+            continue;
+        int o3 = fuzz_hpoint_orient(g, pw, p), o4 = fuzz_hpoint_orient(g, pw, q);
+        if (o3 * o4 > 0)
+            continue;
+        if (o1 == 0 && o2 == 0) { /* on one line: do the segments overlap short of w? */
+            if (fuzz_hpoint_between(g, p, pw) || fuzz_hpoint_between(g, q, pw) ||
+                fuzz_hpoint_between(p, g, q) || fuzz_hpoint_between(p, pw, q))
+                return 1;
+            continue;
+        }
+        if (o2 != 0) /* one point in common, and it is not w */
+            return 1;
+    }
+    return 0;
+}
+
+/* The least number of constraints crossed from outside the hull to each
+ * triangle (an edge under k constraints counts k; at most 126), by
+ * relaxing over the triangles' adjacency. */
+static void nesting_levels(uint32_t triangles, uint32_t *level)
+{
+    for (uint32_t k = 0; k < triangles; k++) {
+        level[k] = 126u;
+        for (unsigned i = 0; i < 3u; i++) {
+            uint32_t j = expected_edge(triangle[k][(i + 1u) % 3u], triangle[k][(i + 2u) % 3u]);
+            uint32_t cost = j < expected.edges ? expected.edge_cover[j] : 0u;
+            if (twin[k][i] == NO_VERTEX && cost < level[k])
+                level[k] = cost;
+        }
+    }
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (uint32_t k = 0; k < triangles; k++)
+            for (unsigned i = 0; i < 3u; i++) {
+                uint32_t o = twin[k][i];
+                if (o == NO_VERTEX)
+                    continue;
+                uint32_t j = expected_edge(triangle[k][(i + 1u) % 3u], triangle[k][(i + 2u) % 3u]);
+                uint32_t to = level[k] + (j < expected.edges ? expected.edge_cover[j] : 0u);
+                to = to > 126u ? 126u : to;
+                if (to < level[o]) {
+                    level[o] = to;
+                    changed = 1;
+                }
+            }
+    }
+}
+
+/* The crossing vertices: each a crossing the model makes, each once. */
+static void check_crossings(const model_t *m)
+{
+    uint8_t matched[MOST_CROSSINGS] = {0};
+    uint32_t found = 0;
+    for (uint32_t k = 0; k < MOST_CROSSINGS; k++)
+        crossing_vertex[k] = NO_VERTEX;
+    for (uint32_t k = 0; k <= m->limits.crossings; k++) {
+        uint32_t s[4];
+        memset(s, 0xa5, sizeof s);
+        int result = vor_cdt_crossing(&m->d, m->capacity + k, s);
+        if (result != VOR_OK) {
+            FUZZ_REQUIRE(result == VOR_ERR_ARG && s[0] == 0xa5a5a5a5u && s[3] == 0xa5a5a5a5u,
+                         "cdt_crossing: wrong error, or wrote");
+            continue;
+        }
+        FUZZ_REQUIRE(k < m->limits.crossings, "cdt_crossing: an id beyond the table");
+        FUZZ_REQUIRE(is_site(m, s[0]) && is_site(m, s[1]) && is_site(m, s[2]) && is_site(m, s[3]),
+                     "cdt_crossing: not four sites");
+        fuzz_hpoint_t p;
+        FUZZ_REQUIRE(fuzz_hpoint_crossing(&p, m->point[s[0]], m->point[s[1]], m->point[s[2]],
+                                          m->point[s[3]]),
+                     "cdt_crossing: parallel lines");
+        uint32_t match = 0;
+        while (match < expected.crossings &&
+               !fuzz_hpoint_same(&p, &expected.point[MOST_SITES + match]))
+            match++;
+        FUZZ_REQUIRE(match < expected.crossings && !matched[match],
+                     "cdt_crossing: a vertex where no two constraints cross, or two at one point");
+        matched[match] = 1;
+        crossing_vertex[k] = MOST_SITES + match;
+        found++;
+    }
+    FUZZ_REQUIRE(found == expected.crossings, "cdt_crossing: a crossing of the constraints missing");
+}
+
+/* The constrained edges: exactly the pieces of positive coverage. */
+static void check_edges(const model_t *m)
+{
+    uint8_t seen[MOST_EXPECTED_EDGES] = {0};
+    uint32_t edges = 0, a, b;
+    vor_cdt_edge_iter_t it;
+    FUZZ_REQUIRE(vor_cdt_edges_begin(&it, &m->d) == VOR_OK, "cdt_edges: begin");
+    while (vor_cdt_edges_next(&it, &a, &b)) {
+        FUZZ_REQUIRE(++edges <= MOST_CDT_EDGES && a < b, "cdt_edges: endless, or not a < b");
+        uint32_t j = expected_edge(model_vertex(m, a), model_vertex(m, b));
+        FUZZ_REQUIRE(j < expected.edges && !seen[j],
+                     "cdt_edges: an edge on no constraint, or reported twice");
+        seen[j] = 1;
+    }
+    FUZZ_REQUIRE(edges == expected.edges, "cdt_edges: a piece of a constraint missing");
+}
+
+/* The triangles; their number. */
+static uint32_t check_triangles(const model_t *m)
+{
+    uint32_t triangles = 0, ids[3];
+    vor_cdt_triangle_iter_t it;
+    FUZZ_REQUIRE(vor_cdt_triangles_begin(&it, &m->d) == VOR_OK, "cdt_triangles: begin");
+    while (vor_cdt_triangles_next(&it, ids)) {
+        FUZZ_REQUIRE(triangles < MOST_TRIANGLES, "cdt_triangles: endless");
+        for (unsigned i = 0; i < 3u; i++) {
+            triangle_ids[triangles][i] = ids[i];
+            triangle[triangles][i] = model_vertex(m, ids[i]);
+            FUZZ_REQUIRE(triangle[triangles][i] != NO_VERTEX, "cdt_triangles: not a vertex");
+        }
+        const uint32_t *t = triangle[triangles];
+        FUZZ_REQUIRE(vertex_orient(t[0], t[1], t[2], m) > 0,
+                     "cdt_triangles: not of positive area, counterclockwise");
+        triangles++;
+    }
+    /* every edge once each way at most; twin: the triangle across */
+    for (uint32_t k = 0; k < triangles; k++)
+        for (unsigned i = 0; i < 3u; i++) {
+            uint32_t u = triangle[k][(i + 1u) % 3u], v = triangle[k][(i + 2u) % 3u];
+            twin[k][i] = NO_VERTEX;
+            for (uint32_t o = 0; o < triangles; o++)
+                for (unsigned j = 0; j < 3u; j++) {
+                    uint32_t x = triangle[o][(j + 1u) % 3u], y = triangle[o][(j + 2u) % 3u];
+                    FUZZ_REQUIRE(o == k || x != u || y != v, "cdt_triangles: an edge twice one way");
+                    if (x == v && y == u)
+                        twin[k][i] = o;
+                }
+        }
+    return triangles;
+}
+
+/* The unpaired edges are the hull's pieces, counterclockwise (with the
+ * triangles' orientation and pairing, the triangles then cover the hull
+ * once), and Euler's count holds. */
+static void check_cover(const model_t *m, uint32_t triangles)
+{
+    int collinear;
+    uint32_t n = distinct_sites(m), h = brute_hull_sites(m, &collinear), unpaired = 0;
+    if (collinear || n < 3u) {
+        FUZZ_REQUIRE(triangles == 0, "cdt_triangles: triangles of collinear sites");
+        return;
+    }
+    FUZZ_REQUIRE(triangles == 2u * (n + expected.crossings) - h - 2u,
+                 "cdt_triangles: not 2v - h - 2");
+    for (uint32_t k = 0; k < triangles; k++)
+        for (unsigned i = 0; i < 3u; i++) {
+            if (twin[k][i] != NO_VERTEX)
+                continue;
+            uint32_t u = triangle[k][(i + 1u) % 3u], v = triangle[k][(i + 2u) % 3u];
+            FUZZ_REQUIRE(u < MOST_SITES && v < MOST_SITES, "cdt_triangles: a crossing on the hull");
+            for (uint32_t w = 0; w < m->count; w++) {
+                if (!is_site(m, w))
+                    continue;
+                int side = fuzz_orient(m->point[u], m->point[v], m->point[w]);
+                FUZZ_REQUIRE(side > 0 || (side == 0 && !fuzz_hpoint_between(&expected.point[u],
+                                                                             &expected.point[w],
+                                                                             &expected.point[v])),
+                             "cdt_triangles: an unpaired edge that is no hull piece");
+            }
+            unpaired++;
+        }
+    FUZZ_REQUIRE(unpaired == h, "cdt_triangles: the unpaired edges are not the hull");
+    for (uint32_t j = 0; j < expected.edges; j++) {
+        int found = 0;
+        for (uint32_t k = 0; k < triangles && !found; k++)
+            for (unsigned i = 0; i < 3u; i++)
+                found |= (triangle[k][i] == expected.edge_u[j] &&
+                          triangle[k][(i + 1u) % 3u] == expected.edge_v[j]) ||
+                         (triangle[k][i] == expected.edge_v[j] &&
+                          triangle[k][(i + 1u) % 3u] == expected.edge_u[j]);
+        FUZZ_REQUIRE(found, "cdt: a constrained edge no triangle has");
+    }
+}
+
+/* Constrained Delaunay: every unconstrained edge locally Delaunay; on
+ * small meshes also, straight from the definition, no vertex inside a
+ * triangle's circumcircle that its centroid sees (both hold exactly for
+ * the constrained Delaunay triangulation under any tie-breaking). */
+static void check_delaunay(const model_t *m, uint32_t triangles)
+{
+    for (uint32_t k = 0; k < triangles; k++)
+        for (unsigned i = 0; i < 3u; i++) {
+            uint32_t o = twin[k][i];
+            if (o == NO_VERTEX || o < k ||
+                expected_edge(triangle[k][(i + 1u) % 3u], triangle[k][(i + 2u) % 3u]) <
+                    expected.edges)
+                continue;
+            uint32_t far = 0;
+            for (unsigned j = 0; j < 3u; j++)
+                far = twin[o][j] == k ? triangle[o][j] : far;
+            const uint32_t *t = triangle[k];
+            FUZZ_REQUIRE(vertex_incircle(t[0], t[1], t[2], far, m) <= 0,
+                         "cdt: an unconstrained edge not locally Delaunay");
+        }
+    uint32_t vertices = distinct_sites(m) + expected.crossings;
+    if (triangles * vertices * (expected.edges + 1u) > 24000u)
+        return; /* the brute force's budget */
+    for (uint32_t k = 0; k < triangles; k++) {
+        const uint32_t *t = triangle[k];
+        fuzz_hpoint_t g = fuzz_hpoint_centroid(&expected.point[t[0]], &expected.point[t[1]],
+                                               &expected.point[t[2]]);
+        for (uint32_t w = 0; w < MOST_SITES + expected.crossings; w++) {
+            if ((w < MOST_SITES && !is_site(m, w)) || w == t[0] || w == t[1] || w == t[2])
+                continue;
+            if (vertex_incircle(t[0], t[1], t[2], w, m) > 0)
+                FUZZ_REQUIRE(hidden(&g, w),
+                             "cdt: a vertex in a triangle's circumcircle, visible from it");
+        }
+    }
+}
+
+/* The domain: vor_cdt_inside_begin refused unless marked since the last
+ * change; else the triangles at odd nesting levels, in the order of all. */
+static void check_domain(const model_t *m, uint32_t triangles)
+{
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3] = {7, 7, 7};
+    int result = vor_cdt_inside_begin(&it, &m->d);
+    if (!m->domain) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && !vor_cdt_triangles_next(&it, ids) && ids[0] == 7,
+                     "cdt_inside_begin: no domain marked, yet accepted");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "cdt_inside_begin: refused after vor_cdt_domain");
+    uint32_t level[MOST_TRIANGLES];
+    nesting_levels(triangles, level);
+    uint32_t k = 0;
+    while (vor_cdt_triangles_next(&it, ids)) {
+        while (k < triangles && (triangle_ids[k][0] != ids[0] || triangle_ids[k][1] != ids[1] ||
+                                 triangle_ids[k][2] != ids[2])) {
+            FUZZ_REQUIRE(level[k] % 2u == 0u, "cdt_domain: an inside triangle left out");
+            k++;
+        }
+        FUZZ_REQUIRE(k < triangles, "cdt_domain: a triangle not in the triangulation");
+        FUZZ_REQUIRE(level[k] % 2u == 1u, "cdt_domain: an outside triangle reported inside");
+        k++;
+    }
+    for (; k < triangles; k++)
+        FUZZ_REQUIRE(level[k] % 2u == 0u, "cdt_domain: an inside triangle left out");
+}
+
+/* After every call with constraint memory attached. */
+static void check_cdt(const model_t *m)
+{
+    derive(m, &expected);
+    FUZZ_REQUIRE(!expected.too_many_crossings && !expected.too_many_edges &&
+                     expected.crossings <= m->limits.crossings &&
+                     expected.edges <= m->limits.edges,
+                 "cdt: more crossings or constrained edges than the limits hold");
+    check_crossings(m);
+    check_edges(m);
+    uint32_t triangles = check_triangles(m);
+    check_cover(m, triangles);
+    check_delaunay(m, triangles);
+    check_domain(m, triangles);
+}
+
+/* A vertex id as a caller might pass it: mostly a site, else garbage. */
+static uint32_t draw_site(fuzz_reader_t *r, const model_t *m)
+{
+    uint8_t b = fuzz_u8(r);
+    if (b >= 248)
+        return b == 255 ? 0x7fffffffu : m->capacity + (b & 3u); /* a crossing's id */
+    return m->count ? (uint32_t)b % m->count : b;
+}
+
+static void op_cdt_attach(fuzz_reader_t *r, model_t *m)
+{
+    uint8_t how = fuzz_u8(r);
+    vor_cdt_limits_t limits;
+    limits.crossings = fuzz_u8(r) % (MOST_CROSSINGS + 1u);
+    uint32_t roomy_cut = 2u * (m->capacity + limits.crossings) + 2u;
+    limits.edges = fuzz_u8(r) % (MOST_CDT_EDGES + 1u);
+    limits.cut = (how & 1u) ? roomy_cut : fuzz_u8(r) % (roomy_cut + 2u);
+    int bad_limits = limits.edges == 0 || limits.edges > 3u * (m->capacity + limits.crossings) ||
+                     limits.cut > roomy_cut;
+    size_t bytes = VOR_CDT_BYTES(m->capacity, limits.edges, limits.crossings, limits.cut);
+    snapshot(m);
+    int result, expected_result = bad_limits ? VOR_ERR_ARG : VOR_OK;
+    switch ((how >> 1) % 8u) {
+    case 0:
+        result = vor_cdt_attach(&m->d, cdt_memory, sizeof cdt_memory, NULL);
+        expected_result = VOR_ERR_ARG;
+        break;
+    case 1:
+        result = vor_cdt_attach(&m->d, NULL, bytes, &limits);
+        expected_result = VOR_ERR_ARG;
+        break;
+    case 2:
+        result = vor_cdt_attach(&m->d, cdt_memory + 2, bytes, &limits);
+        expected_result = bad_limits ? VOR_ERR_ARG : VOR_ERR_ALIGN;
+        break;
+    case 3:
+        result = vor_cdt_attach(&m->d, cdt_memory, bytes - 1u, &limits);
+        expected_result = bad_limits ? VOR_ERR_ARG : VOR_ERR_NOMEM;
+        break;
+    default:
+        result = vor_cdt_attach(&m->d, cdt_memory, bytes, &limits);
+        break;
+    }
+    FUZZ_REQUIRE(result == expected_result, "cdt_attach: wrong result");
+    if (result != VOR_OK) {
+        FUZZ_REQUIRE(unchanged(m), "cdt_attach: failure changed memory");
+        return;
+    }
+    m->cdt_attached = 1;
+    m->limits = limits;
+    m->entries = 0;
+    m->domain = 0;
+}
+
+static void constrain_checked(model_t *m, uint32_t a, uint32_t b)
+{
+    snapshot(m);
+    int result = vor_constrain(&m->d, a, b);
+    if (!m->cdt_attached || !is_site(m, a) || !is_site(m, b) || a == b) {
+        FUZZ_REQUIRE(result == (m->cdt_attached && a == b && is_site(m, a) ? VOR_OK : VOR_ERR_ARG) &&
+                         unchanged(m),
+                     "constrain: no memory, no site, or one site: wrong result, or changed memory");
+        return;
+    }
+    static expected_t after;
+    m->entry[m->entries++] = (entry_t){m->point[a], m->point[b], 1};
+    derive(m, &after);
+    int overflows = after.too_many_crossings || after.too_many_edges ||
+                    after.crossings > m->limits.crossings || after.edges > m->limits.edges;
+    int roomy_cut = m->limits.cut == 2u * (m->capacity + m->limits.crossings) + 2u;
+    if (overflows)
+        FUZZ_REQUIRE(result == VOR_ERR_NOMEM, "constrain: a table overflow accepted");
+    else if (roomy_cut)
+        FUZZ_REQUIRE(result == VOR_OK, "constrain: refused with room enough");
+    else
+        FUZZ_REQUIRE(result == VOR_OK || result == VOR_ERR_NOMEM, "constrain: wrong error");
+    if (result != VOR_OK) {
+        m->entries--;
+        FUZZ_REQUIRE(unchanged(m), "constrain: failure changed memory");
+        return;
+    }
+    m->domain = 0;
+}
+
+static void unconstrain_checked(model_t *m, uint32_t a, uint32_t b)
+{
+    snapshot(m);
+    int result = vor_unconstrain(&m->d, a, b);
+    if (!m->cdt_attached || !is_site(m, a) || !is_site(m, b)) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "unconstrain: no memory or no site");
+        return;
+    }
+    uint32_t on[MOST_VERTICES + 2];
+    uint32_t n = a == b ? 0 : vertices_inside(m, &expected, m->point[a], m->point[b], on + 1);
+    on[0] = a;
+    on[n + 1] = b;
+    int constrained = 1;
+    for (uint32_t k = 0; k <= n && a != b; k++)
+        constrained &= expected_edge(on[k], on[k + 1]) < expected.edges;
+    if (!constrained) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m),
+                     "unconstrain: a piece not constrained, accepted or changed memory");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "unconstrain failed");
+    if (a != b)
+        m->entry[m->entries++] = (entry_t){m->point[a], m->point[b], -1};
+    m->domain = 0;
+}
+
+static void op_constrain(fuzz_reader_t *r, model_t *m)
+{
+    uint32_t a = draw_site(r, m), b = draw_site(r, m);
+    if (m->entries < MOST_ENTRIES)
+        constrain_checked(m, a, b);
+}
+
+/* Often a constraint made before, either way round, maybe in part. */
+static void op_unconstrain(fuzz_reader_t *r, model_t *m)
+{
+    uint8_t how = fuzz_u8(r);
+    uint32_t a = draw_site(r, m), b = draw_site(r, m);
+    if ((how & 1u) && m->entries) {
+        const entry_t *e = &m->entry[how % m->entries];
+        a = site_at(m, (how & 2u) ? e->a : e->b);
+        b = (how & 4u) ? b : site_at(m, (how & 2u) ? e->b : e->a);
+    }
+    if (m->entries < MOST_ENTRIES)
+        unconstrain_checked(m, a, b);
+}
+
+/* A closed chain of constraints (a polygon, often), each call checked. */
+static void op_cdt_polygon(fuzz_reader_t *r, model_t *m)
+{
+    uint32_t corners = 3u + fuzz_u8(r) % 4u, id[6];
+    for (uint32_t i = 0; i < corners; i++)
+        id[i] = draw_site(r, m);
+    for (uint32_t i = 0; i < corners && m->entries < MOST_ENTRIES; i++) {
+        constrain_checked(m, id[i], id[(i + 1u) % corners]);
+        check_valid(m);
+    }
+}
+
+static void op_cdt_domain(model_t *m)
+{
+    snapshot(m);
+    FUZZ_REQUIRE(vor_cdt_domain(NULL) == VOR_ERR_ARG, "cdt_domain: NULL accepted");
+    int result = vor_cdt_domain(&m->d);
+    if (!m->cdt_attached) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "cdt_domain: no memory, accepted");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "cdt_domain failed");
+    m->domain = 1;
+}
+
+/* The read-only calls as callers get them wrong: NULLs, ids that are no
+ * crossing, an iterator on a diagram without constraint memory. */
+static void op_cdt_reads(fuzz_reader_t *r, model_t *m)
+{
+    vor_cdt_triangle_iter_t it;
+    vor_cdt_edge_iter_t ei;
+    uint32_t ids[3] = {7, 7, 7}, a = 7, b = 7, s[4] = {7, 7, 7, 7};
+    uint32_t id = (fuzz_u8(r) & 1u) ? fuzz_u32(r) : m->capacity + fuzz_u8(r) % (MOST_CROSSINGS + 2u);
+    int attached = m->cdt_attached ? VOR_OK : VOR_ERR_ARG;
+    snapshot(m);
+    FUZZ_REQUIRE(vor_cdt_triangles_begin(NULL, &m->d) == VOR_ERR_ARG &&
+                     vor_cdt_edges_begin(NULL, &m->d) == VOR_ERR_ARG &&
+                     vor_cdt_inside_begin(NULL, &m->d) == VOR_ERR_ARG,
+                 "cdt iterators: a NULL iterator accepted");
+    FUZZ_REQUIRE(vor_cdt_triangles_begin(&it, NULL) == VOR_ERR_ARG &&
+                     !vor_cdt_triangles_next(&it, ids) && !vor_cdt_triangles_next(NULL, ids) &&
+                     vor_cdt_edges_begin(&ei, NULL) == VOR_ERR_ARG &&
+                     !vor_cdt_edges_next(&ei, &a, &b) && !vor_cdt_edges_next(NULL, &a, &b) &&
+                     ids[0] == 7 && a == 7 && b == 7,
+                 "cdt iterators: a NULL diagram accepted, or wrote");
+    FUZZ_REQUIRE(vor_cdt_triangles_begin(&it, &m->d) == attached &&
+                     !vor_cdt_triangles_next(&it, NULL) &&
+                     vor_cdt_edges_begin(&ei, &m->d) == attached &&
+                     !vor_cdt_edges_next(&ei, NULL, &b) && !vor_cdt_edges_next(&ei, &a, NULL) &&
+                     a == 7 && b == 7,
+                 "cdt iterators: begin without memory accepted, or NULL outputs written");
+    if (!m->cdt_attached)
+        FUZZ_REQUIRE(!vor_cdt_triangles_next(&it, ids) && !vor_cdt_edges_next(&ei, &a, &b) &&
+                         ids[0] == 7 && a == 7,
+                     "cdt iterators: items without memory");
+    FUZZ_REQUIRE(vor_cdt_crossing(NULL, id, s) == VOR_ERR_ARG &&
+                     vor_cdt_crossing(&m->d, id, NULL) == VOR_ERR_ARG && s[0] == 7,
+                 "cdt_crossing: NULL accepted, or wrote");
+    int crossing = m->cdt_attached && id >= m->capacity && id - m->capacity < MOST_CROSSINGS &&
+                   crossing_vertex[id - m->capacity] != NO_VERTEX;
+    int result = vor_cdt_crossing(&m->d, id, s);
+    FUZZ_REQUIRE(crossing ? result == VOR_OK : result == VOR_ERR_ARG && s[0] == 7,
+                 "cdt_crossing: wrong answer for an id");
+    FUZZ_REQUIRE(unchanged(m), "cdt reads changed memory");
+}
+
+static uint64_t gcd64(uint64_t a, uint64_t b)
+{
+    while (b) {
+        uint64_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/* A site inserted where constraints are: a lattice point inside a
+ * constraint (it splits the edge there), or a crossing vertex's point
+ * when it is one (the site takes its place). */
+static void op_cdt_on_constraint(fuzz_reader_t *r, model_t *m)
+{
+    uint8_t how = fuzz_u8(r), pick = fuzz_u8(r), step = fuzz_u8(r);
+    vor_point_t p;
+    if ((how & 1u) && m->cdt_attached && expected.crossings) {
+        const fuzz_hpoint_t *x = &expected.point[MOST_SITES + pick % expected.crossings];
+        /* |X| < 2^98 and W < 2^66: two limbs hold them */
+        __int128 X = (__int128)(((unsigned __int128)x->x.limb[1] << 64) | x->x.limb[0]);
+        __int128 Y = (__int128)(((unsigned __int128)x->y.limb[1] << 64) | x->y.limb[0]);
+        __int128 W = (__int128)(((unsigned __int128)x->w.limb[1] << 64) | x->w.limb[0]);
+        if (X % W != 0 || Y % W != 0)
+            return;
+        p.x = (int32_t)(X / W);
+        p.y = (int32_t)(Y / W);
+    } else if (m->entries) {
+        const entry_t *e = &m->entry[pick % m->entries];
+        int64_t dx = (int64_t)e->b.x - e->a.x, dy = (int64_t)e->b.y - e->a.y;
+        uint64_t g = gcd64((uint64_t)(dx < 0 ? -dx : dx), (uint64_t)(dy < 0 ? -dy : dy));
+        if (g < 2u)
+            return; /* no lattice point inside */
+        int64_t t = 1 + (int64_t)(step % (g - 1u));
+        p.x = (int32_t)(e->a.x + dx / (int64_t)g * t);
+        p.y = (int32_t)(e->a.y + dy / (int64_t)g * t);
+    } else {
+        return;
+    }
+    insert_checked(m, p, (how & 2u) != 0, VOR_NO_HINT);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_reader_t r = {data, size, 0};
@@ -603,7 +1407,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FUZZ_REQUIRE(vor_motion_attach(&m.d, motion, VOR_MOTION_BYTES(m.capacity)) == VOR_OK,
                      "motion_attach failed");
     for (uint32_t ops = 0; ops < 64u && !fuzz_done(&r); ops++) {
-        switch (fuzz_u8(&r) % 13u) {
+        uint8_t op = fuzz_u8(&r);
+        if (op >= 0xe0u) { /* the constraints' calls: the other ops keep their bytes */
+            switch (op & 7u) {
+            case 0: op_cdt_attach(&r, &m); break;
+            case 1:
+            case 2: op_constrain(&r, &m); break;
+            case 3: op_unconstrain(&r, &m); break;
+            case 4: op_cdt_domain(&m); break;
+            case 5: op_cdt_reads(&r, &m); break;
+            case 6: op_cdt_polygon(&r, &m); break;
+            default: op_cdt_on_constraint(&r, &m); break;
+            }
+            check_valid(&m);
+            continue;
+        }
+        switch (op % 13u) {
         case 0: op_build(&r, &m, &previous, 0); break;
         case 1: op_build(&r, &m, &previous, 1); break;
         case 2: op_insert(&r, &m, &previous, 0); break;
