@@ -1222,6 +1222,7 @@ static void check_links(void);
 static void check_hull_line_splits(void);
 static void check_dense(void);
 static void check_full_table_overlap(void);
+static void check_split_beside_crossing(void);
 
 void test_cdt(void)
 {
@@ -1241,6 +1242,7 @@ void test_cdt(void)
     TEST_CASE("hull_line_splits") check_hull_line_splits();
     TEST_CASE("dense") check_dense();
     TEST_CASE("full_table_overlap") check_full_table_overlap();
+    TEST_CASE("split_beside_crossing") check_split_beside_crossing();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1454,4 +1456,28 @@ static void check_full_table_overlap(void)
     bad += add_constraint(&d, 7, 6);
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt full table overlap: %lu wrong", bad);
+}
+
+/* Sites inserted exactly on the pieces between a site and a crossing
+ * vertex: two constraints crossing at a lattice point that is no site,
+ * with lattice points inside each of their four pieces. */
+static void check_split_beside_crossing(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{2, 4}, {-2, -4}, {4, -2}, {-4, 2},
+                                    {9, 9}, {-9, 9}, {-9, -9}, {9, -9}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 2, 3);
+    bad += check_cdt(&d);
+    static const vor_point_t on[] = {{1, 2}, {-1, -2}, {2, -1}, {-2, 1}};
+    for (unsigned i = 0; i < 4u; i++) {
+        insert_all(&d, &on[i], 1);
+        bad += check_cdt(&d) + mesh_link_faults(&d);
+    }
+    CHECK(bad == 0 && gather_crossings(&d) == 1u, "cdt split beside a crossing: %lu wrong", bad);
 }
