@@ -390,7 +390,7 @@ prove:
 MUTANTS_EVERY ?= 1
 mutants:
 	@tools/install-deps.sh host python
-	@$(MAKE) -s $(GEN)/predicate_vectors.c
+	@$(MAKE) -s $(GEN)/predicate_vectors.c $(GEN)/crossing_vectors.c
 	@nice -n 10 python3 tools/mutants.py --every $(MUTANTS_EVERY)
 
 misra:

@@ -1481,6 +1481,12 @@ static void check_arguments(void)
           "a constraint removed once, not twice");
 }
 
+static void check_links(void);
+static void check_hull_line_splits(void);
+static void check_dense(void);
+static void check_full_table_overlap(void);
+static void check_split_beside_crossing(void);
+
 void test_cdt(void)
 {
     TEST_CASE("arguments") check_arguments();
@@ -1501,4 +1507,246 @@ void test_cdt(void)
     TEST_CASE("random/grid") check_random(0, 11);
     TEST_CASE("random/box") check_random(1, 12);
     TEST_CASE("random/full_range") check_random(2, 13);
+    TEST_CASE("links") check_links();
+    TEST_CASE("hull_line_splits") check_hull_line_splits();
+    TEST_CASE("dense") check_dense();
+    TEST_CASE("full_table_overlap") check_full_table_overlap();
+    TEST_CASE("split_beside_crossing") check_split_beside_crossing();
+}
+
+/* ------------------------------------------------------------------ */
+/* Mutation testing's kills (tools/mutants.py): what the checks above do
+ * not see, each against an invariant of its own. */
+
+/* The constrained mesh's topology: every used slot holds three distinct
+ * vertices, each neighbour link leads to a used slot holding the shared
+ * edge the other way round and linking back, and every home slot in use
+ * holds its own vertex. Returns the number of violations. */
+static unsigned long mesh_link_faults(const vor_t *d)
+{
+    const vor_t *m = &d->cdt->mesh;
+    const vor__tri_t *tri = m->triangles;
+    unsigned long bad = 0;
+    uint32_t end = vor__used_slots_end(m);
+    for (uint32_t s = vor__next_used_slot(m, 0); s < end; s = vor__next_used_slot(m, s + 1u)) {
+        vor_index_t v[3];
+        vor__vertices(&tri[s], v);
+        bad += ((v[0] != v[1]) && (v[1] != v[2]) && (v[2] != v[0])) ? 0u : 1u;
+        bad += ((s >= m->max_sites) || (vor__vertex_index(&tri[s], (vor_index_t)s) != 3u)) ? 0u
+                                                                                            : 1u;
+        for (unsigned k = 0; k < 3u; k++) {
+            vor_index_t u = tri[s].n[k];
+            if ((u >= end) || vor__slot_empty(&tri[u])) {
+                bad++;
+                continue;
+            }
+            vor_index_t a = v[(k + 1u) % 3u];
+            vor_index_t b = v[(k + 2u) % 3u];
+            unsigned ia = vor__vertex_index(&tri[u], a);
+            unsigned ib = vor__vertex_index(&tri[u], b);
+            /* in u the edge runs b -> a, and u's link across it is s */
+            bool reversed = (ia != 3u) && (ib != 3u) && (((ib + 1u) % 3u) == ia);
+            bad += (reversed && (tri[u].n[(ia + 1u) % 3u] == s)) ? 0u : 1u;
+        }
+    }
+    return bad;
+}
+
+/* Random scenes as check_random's, the mesh's links checked after every
+ * change: constraints crossing, sites taking crossings' places, half the
+ * constraints removed (their crossing vertices too), sites removed. */
+static void check_links(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 2025);
+    unsigned long bad = 0;
+    unsigned long takeovers = 0;
+    for (unsigned round = 0; round < 6u; round++) {
+        vor_t d;
+        unsigned kind = round % 2u;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (uint32_t i = 0; i < 40u; i++) {
+            (void)insert_random(&d, &rng, kind);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += mesh_link_faults(&d);
+        constrain_random(&d, &rng, 10u, &bad);
+        bad += mesh_link_faults(&d);
+        for (unsigned k = 0; k < 3u; k++) {
+            plant_crossing(&d, &rng, &bad);
+            bad += mesh_link_faults(&d);
+        }
+        for (unsigned k = 0; k < 4u; k++) {
+            bool taken = insert_at_crossing(&d);
+            takeovers += taken ? 1u : 0u;
+            bad += mesh_link_faults(&d) + (taken ? check_cdt(&d) : 0u);
+        }
+        unconstrain_random(&d, &rng, &bad);
+        bad += mesh_link_faults(&d);
+        for (uint32_t k = 0; k < 20u; k++) {
+            uint32_t s = test_rng_u32(&rng) % d.site_count;
+            if ((k % 2u) == 0u) {
+                (void)insert_random(&d, &rng, kind);
+            } else if (model.live[s] && (vor_remove(&d, s) == VOR_OK)) {
+                model.live[s] = false;
+            } else {
+                /* a free id, or a constraint's end */
+            }
+            bad += mesh_link_faults(&d) + check_cdt(&d);
+        }
+    }
+    CHECK(bad == 0 && takeovers > 0u, "cdt links: %lu wrong, %lu crossings taken by sites", bad,
+          takeovers);
+}
+
+/* A constraint along the hull's line, split by sites inserted exactly on
+ * it: outside the hull the perturbed site may see a hull edge on that
+ * line other than the one holding it. Sites on a line (the bottom, top
+ * or left side of the hull) and a few beyond it, built by insertion or by
+ * divide and conquer, every other site of the line removed again (a
+ * removal's triangles at infinity have that vertex in any corner), the
+ * whole line constrained, then the points between its sites inserted in
+ * a shuffled order. */
+static void check_hull_line_splits(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 4242);
+    unsigned long bad = 0;
+    for (unsigned round = 0; round < 12u; round++) {
+        vor_t d;
+        unsigned side = round % 3u;
+        vor_point_t p[29];
+        uint32_t duplicate_of[29];
+        /* the line's sites; the rest of the hull on one side */
+        for (int32_t i = 0; i <= 20; i++) {
+            p[i] = (side == 2u) ? (vor_point_t){0, 2 * i} : (vor_point_t){2 * i, 0};
+        }
+        for (uint32_t i = 21; i < 29u; i++) {
+            int32_t along = test_rng_range(&rng, 0, 40);
+            int32_t away = test_rng_range(&rng, 3, 30);
+            p[i] = (side == 2u) ? (vor_point_t){away, along}
+                                : (vor_point_t){along, (side == 1u) ? -away : away};
+        }
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        int err = ((round % 2u) == 0u) ? vor_build(&d, p, 29, NULL, duplicate_of)
+                                       : vor_build_dc(&d, p, 29, NULL, duplicate_of);
+        bad += (err == VOR_OK) ? 0u : 1u;
+        for (uint32_t i = 0; i < 29u; i++) {
+            model.at[i] = p[i];
+            model.live[i] = duplicate_of[i] == i;
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t i = 1; i < 20u; i += 2u) {
+            bad += (vor_remove(&d, i) == VOR_OK) ? 0u : 1u;
+            model.live[i] = false;
+        }
+        bad += add_constraint(&d, 0, 20);
+        bad += check_cdt(&d);
+        int32_t odd[10];
+        for (int32_t i = 0; i < 10; i++) {
+            odd[i] = (4 * i) + 1 + (int32_t)(test_rng_u32(&rng) % 3u);
+        }
+        for (uint32_t i = 9; i > 0u; i--) { /* shuffled */
+            uint32_t j = test_rng_u32(&rng) % (i + 1u);
+            int32_t t = odd[i];
+            odd[i] = odd[j];
+            odd[j] = t;
+        }
+        for (unsigned i = 0; i < 10u; i++) {
+            vor_point_t q = (side == 2u) ? (vor_point_t){0, odd[i]} : (vor_point_t){odd[i], 0};
+            insert_all(&d, &q, 1);
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt hull line splits: %lu wrong", bad);
+}
+
+/* Many constraints among few sites, every one checked with the mesh's
+ * links: long cavities whose chains hold many home slots, so that the
+ * triangles' home slots are assigned in every way the rule allows. */
+static void check_dense(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 777);
+    unsigned long bad = 0;
+    for (unsigned round = 0; round < 24u; round++) {
+        vor_t d;
+        unsigned kind = round % 2u;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (uint32_t i = 0; i < 24u; i++) {
+            (void)insert_random(&d, &rng, kind);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t k = 0; (k < 200u) && (model.constraints < 24u); k++) {
+            uint32_t a = test_rng_u32(&rng) % d.site_count;
+            uint32_t b = test_rng_u32(&rng) % d.site_count;
+            if (!model.live[a] || !model.live[b] || (a == b)) {
+                continue;
+            }
+            bad += add_constraint(&d, a, b);
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt dense: %lu wrong", bad);
+}
+
+/* A full edge table takes a constraint along constrained edges only (it
+ * adds none), and refuses one more piece: five sites on a line, their
+ * four pieces filling a table of four edges. */
+static void check_full_table_overlap(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {20, 0}, {30, 0}, {40, 0},
+                                    {15, 25}, {25, -30}, {5, 40}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    static const vor_cdt_limits_t four = {4, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &four) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 4);
+    bad += add_constraint(&d, 4, 0); /* again, and parts of it */
+    bad += add_constraint(&d, 1, 3);
+    bad += add_constraint(&d, 2, 0);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    bad += (vor_constrain(&d, 5, 2) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    /* a table of one edge and no crossing takes a segment across
+     * triangles: one piece, no crossing */
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    static const vor_cdt_limits_t one = {1, 0, (2u * CDT_SITES) + 2u};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &one) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 7, 6);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt full table overlap: %lu wrong", bad);
+}
+
+/* Sites inserted exactly on the pieces between a site and a crossing
+ * vertex: two constraints crossing at a lattice point that is no site,
+ * with lattice points inside each of their four pieces. */
+static void check_split_beside_crossing(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{2, 4}, {-2, -4}, {4, -2}, {-4, 2},
+                                    {9, 9}, {-9, 9}, {-9, -9}, {9, -9}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 2, 3);
+    bad += check_cdt(&d);
+    static const vor_point_t on[] = {{1, 2}, {-1, -2}, {2, -1}, {-2, 1}};
+    for (unsigned i = 0; i < 4u; i++) {
+        insert_all(&d, &on[i], 1);
+        bad += check_cdt(&d) + mesh_link_faults(&d);
+    }
+    CHECK(bad == 0 && gather_crossings(&d) == 1u, "cdt split beside a crossing: %lu wrong", bad);
 }
