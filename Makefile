@@ -21,6 +21,8 @@
 #   make coverage-report    line and branch coverage of src/ by the host
 #                           suites: build/coverage-report/index.html
 #   make pictures           README's pictures: docs/diagram.png, docs/raster.png
+#   make bench-cdt          constraints: vor_constrain against CGAL, CDT and
+#                           delaunay32, and Cortex-M3 instructions per constraint
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #   make fuzz               the libFuzzer harnesses, FUZZ_SECONDS (600) each

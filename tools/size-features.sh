@@ -48,6 +48,7 @@ links() {
     build_nearest)  echo "bucket_grid incremental insertion_order mesh predicates queries" ;;
     move)           echo "bucket_grid dynamic incremental mesh predicates queries" ;;
     geometry)       echo "bucket_grid geometry incremental insertion_order mesh predicates queries" ;;
+    constrain)      echo "bucket_grid cdt crossing dynamic incremental insertion_order mesh predicates" ;;
     raster_euclid)  echo "raster raster_euclid" ;;
     raster_all)     echo "predicates raster raster_euclid raster_metrics" ;;
     everything)     echo "$ALL_FILES" ;;
@@ -70,7 +71,7 @@ print(" ".join(sorted(files)))
 PY
 }
 # In the order of the table: from the smallest firmware to everything.
-FEATURES="insert_nearest build_nearest move geometry raster_euclid raster_all everything"
+FEATURES="insert_nearest build_nearest move geometry constrain raster_euclid raster_all everything"
 LEVELS="-Os -O2"
 
 # Sums the libvor input sections of a GNU ld map: "flash ram". An input

@@ -13,6 +13,10 @@
 #   make bench-dynamic removing and moving sites against CGAL's remove and
 #                      move, and instructions per remove and move on
 #                      Cortex-M3 (bench/dynamic.c under QEMU);
+#   make bench-cdt     constrained Delaunay: vor_constrain against CGAL's
+#                      Constrained_Delaunay_triangulation_2, CDT (artem-ogre)
+#                      and delaunay32, and instructions per constraint on
+#                      Cortex-M3 (bench/cdt.c under QEMU);
 #   make bench-jcv     vor beside jc_voronoi on the emulated Cortex-M4F:
 #                      instructions, RAM and stack per build
 #                      (tools/peer-bench/jcv_firmware.c); make bench runs it too.
@@ -30,7 +34,7 @@ BENCH_CXXFLAGS ?= -std=c++17 -O2 -DNDEBUG -Wall -Wextra
 # CGAL 5 is header-only; Epick's exact fallback may pull in GMP and MPFR.
 BENCH_LDLIBS ?= -lgmp -lmpfr
 
-.PHONY: bench bench-query bench-dynamic bench-jcv
+.PHONY: bench bench-query bench-dynamic bench-cdt bench-jcv
 
 bench:
 	@tools/install-deps.sh bench host python toolchains
@@ -45,12 +49,18 @@ bench-dynamic:
 	@tools/install-deps.sh bench host python toolchains
 	+@tools/peer-bench/run.sh dynamic
 
-# The peers of `make bench` (docs/benchmarks.md): delaunay32 and jc_voronoi,
+bench-cdt:
+	@tools/install-deps.sh bench host python toolchains
+	+@tools/peer-bench/run.sh cdt
+
+# The peers of `make bench` and `make bench-cdt` (docs/benchmarks.md):
+# delaunay32, jc_voronoi and CDT (header-only),
 # compiled from their unmodified sources in $(PEERS) when it holds them (a
 # developer's or CI's machine); without them their columns say "skipped".
 PEERS ?= ../shared/peers
 PEER_D32 := $(wildcard $(PEERS)/delaunay32/src/*.cpp)
 PEER_JCV := $(wildcard $(PEERS)/jc_voronoi/jc_voronoi.h)
+PEER_CDT := $(wildcard $(PEERS)/CDT/CDT/include/CDT.h)
 PEER_OBJS := $(PEER_D32:$(PEERS)/delaunay32/src/%.cpp=build/bench/peers/delaunay32/%.o) \
              $(if $(PEER_JCV),build/bench/peers/jcv_peer.o)
 PEER_FLAGS := $(if $(PEER_D32),-DVOR_BENCH_DELAUNAY32 -I$(PEERS)/delaunay32/include) \
@@ -74,6 +84,8 @@ BENCH_PEERS_delaunay = $(PEER_FLAGS)
 # vor_build_dc_forked's std::thread hook
 BENCH_THREADS_delaunay = -pthread
 build/bench/delaunay-host: $(PEER_OBJS) tools/peer-bench/jcv_peer.h
+BENCH_PEERS_cdt = $(PEER_FLAGS) $(if $(PEER_CDT),-DVOR_BENCH_CDT -I$(PEERS)/CDT/CDT/include)
+build/bench/cdt-host: $(PEER_OBJS) $(PEER_CDT)
 
 # The peers' own build flags (their README's), warnings theirs to keep.
 build/bench/peers/delaunay32/%.o: $(PEERS)/delaunay32/src/%.cpp

@@ -26,8 +26,15 @@
 #       sites and checks that their answers agree;
 #       target: examples/robot_nearest under QEMU -icount on Cortex-M3
 #       gives instructions per coherent query among 500 sites.
+#   run.sh cdt [ARGS...]          `make bench-cdt`: constrained Delaunay.
+#       host: build/bench/cdt-host (tools/peer-bench/cdt.cpp) times
+#       vor_constrain against CGAL's Constrained_Delaunay_triangulation_2,
+#       CDT and delaunay32 on disjoint and crossing segments among 10^4,
+#       10^5 and 10^6 sites, medians of 5 runs;
+#       target: bench/cdt.c under QEMU -icount on Cortex-M3 gives
+#       instructions per constraint among 1,000 and 10,000 sites.
 #
-# Both host programs link build/host/libvor.a. Prints the tables and writes
+# The host programs link build/host/libvor.a. Prints the tables and writes
 # them to build/bench/NAME.md. ARGS go to the host program (e.g. --sizes
 # 10000,100000 --reps 1). Dependencies: tools/install-deps.sh groups bench
 # or bench-query, host, python, toolchains (make runs it first). Exit status
@@ -39,7 +46,7 @@ mkdir -p "$out"
 
 bench=delaunay
 case ${1:-} in
-delaunay | query | dynamic)
+delaunay | query | dynamic | cdt)
     bench=$1
     shift
     ;;
@@ -55,6 +62,11 @@ delaunay)
     ;;
 dynamic)
     target=bench-dynamic
+    ports="cortex-m3"
+    target_ok='^bench valid ok'
+    ;;
+cdt)
+    target=bench-cdt
     ports="cortex-m3"
     target_ok='^bench valid ok'
     ;;
@@ -202,6 +214,36 @@ for port in ports:
     print(row(port, ("small-move-cached", "fast-move", "robot-loop", "fast-fraction"), lambda c: [
         f"{c['small-move-cached']:.1f}", f"{c['fast-move']:.1f}", f"{c['robot-loop']:.1f}",
         f"{c['fast-fraction']:.1f} %", "met" if c["fast-move"] <= 400 else "**not met**"]))
+sys.exit(0 if ok else 1)
+PY
+}
+
+cdt_targets() {
+    echo "Targets, instructions per operation (bench/cdt.c, QEMU -icount):"
+    echo
+    # shellcheck disable=SC2086  # ports is a word list on purpose
+    python3 - "$out" $ports <<'PY' || status=1
+import sys
+out, ports = sys.argv[1], sys.argv[2:]
+ok = True
+print("| port | sites | vor_build / site | vor_cdt_attach / site | vor_constrain, disjoint | vor_constrain, crossing | crossings / segments | constraint memory (B) |")
+print("|---|---|---|---|---|---|---|---|")
+for port in ports:
+    rows = {}
+    for line in open(f"{out}/cdt-{port}.txt"):
+        f = line.split()
+        if len(f) >= 4 and f[0] == "bench" and f[1] != "valid":
+            rows.setdefault(f[1], []).append(f[2:])
+    need = ("build", "attach", "constrain-disjoint", "constrain-crossing", "crossings", "memory")
+    if not all(k in rows and len(rows[k]) == len(rows["build"]) for k in need):
+        print(f"| {port} | no figures |")
+        ok = False
+        continue
+    for i, (n, build, _) in enumerate(rows["build"]):
+        segs, crossings = rows["crossings"][i]
+        print(f"| {port} | {int(n):,} | {build} | {rows['attach'][i][1]} | "
+              f"{rows['constrain-disjoint'][i][1]} | {rows['constrain-crossing'][i][1]} | "
+              f"{int(crossings):,} / {int(segs):,} | {int(rows['memory'][i][1]):,} |")
 sys.exit(0 if ok else 1)
 PY
 }
