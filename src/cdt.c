@@ -609,15 +609,16 @@ static void take_over(struct vor__cdt *c, vor_index_t x, vor_index_t p)
 }
 
 /* Places vertex p (a site, d->sites[p] its point, or a crossing) in the
- * constrained mesh; a constrained edge holding p exactly is split, and a
- * crossing vertex at p's point gives p its place. */
-static void insert_vertex(struct vor__cdt *c, uint32_t p)
+ * constrained mesh, walking to it from vertex `near`; a constrained edge
+ * holding p exactly is split, and a crossing vertex at p's point gives p
+ * its place. */
+static void insert_vertex(struct vor__cdt *c, uint32_t p, vor_index_t near)
 {
     vor_t *m = &c->mesh;
     if (m->vertex_count == 1u) {
         vor__make_edge(m, m->last_site, p);
     } else if (m->vertex_count >= 2u) {
-        vor_index_t root = locate(c, (vor_index_t)m->last_site, p);
+        vor_index_t root = locate(c, near, p);
         vor_index_t x = is_crossing(c, (vor_index_t)p) ? VOR__NONE : crossing_at(c, root, (vor_index_t)p);
         if (x != VOR__NONE) {
             take_over(c, x, (vor_index_t)p);
@@ -671,7 +672,7 @@ int vor__cdt_update(vor_t *d, uint32_t p, unsigned event)
             err = VOR_ERR_NOMEM;
         }
     } else if (event == VOR__CDT_INSERTED) {
-        insert_vertex(c, p);
+        insert_vertex(c, p, (vor_index_t)m->last_site);
     } else if ((event == VOR__CDT_REMOVE) || (event == VOR__CDT_CHECK_REMOVE)) {
         if (ends_constraint(c, p)) {
             err = VOR_ERR_CONSTRAINED;
@@ -1210,7 +1211,7 @@ int vor_constrain(vor_t *d, uint32_t a, uint32_t b)
                 vor_index_t lb;
                 run_line(c, crossed[0], crossed[1], &la, &lb);
                 vor_index_t x = new_crossing(c, (vor_index_t)a, (vor_index_t)b, la, lb);
-                insert_vertex(c, x);
+                insert_vertex(c, x, from); /* x is on the edge the cut from `from` ends at */
                 continue;
             }
             fill_cavity(c, &cv);
