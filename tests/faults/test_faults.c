@@ -15,14 +15,17 @@
  * may fail. The host runs this under AddressSanitizer too, so an
  * out-of-bounds access would also fail it.
  *
- * Constraints (vor_cdt.h) under the same lies, one case per rate: on a
- * diagram with constraint memory attached (its mesh draws faults too),
- * inserting sites (many on constraints and at crossings), constraining
- * and unconstraining, marking the domain, walking every iterator,
- * removing and moving sites, and a rebuild, with roomy limits and with
- * tight ones (tables and cuts that overflow), must finish, return only
- * the documented errors, and leave the diagram's topology whole and every
- * vertex the iterators report one of the diagram's sites or crossings.
+ * Constraints (vor_cdt.h) on a diagram under the same lies, one case
+ * per rate: inserting sites (some in the middle of constraints),
+ * constraining and unconstraining, marking the domain, walking every
+ * iterator, removing and moving sites, with roomy limits and with tight
+ * ones (tables and cuts that overflow), then constraining again after a
+ * rebuild, must finish, return only the documented errors, and leave
+ * the diagram's topology whole and every vertex the iterators report one
+ * of the diagram's sites or crossings. The constrained mesh's own
+ * predicates stay exact (attached before the faults start), no two sites
+ * share a point and the rebuild is exact: the constrained code does not
+ * survive lies of its own or a lying triangulation copied into it.
  */
 #include "test.h"
 #include "vor.h"
