@@ -404,7 +404,10 @@ static inline int vor_init(vor_t *d, void *arena, size_t arena_bytes, uint32_t m
  *   VOR_ERR_DUPLICATE  p is a site already: its id goes to *site
  *                      (also when the diagram is full)
  *   VOR_ERR_FULL       max_sites ids are used
- * On failure the diagram is unchanged.
+ *   VOR_ERR_NOMEM      constraint memory is attached (vor_cdt.h), p lies
+ *                      inside a constrained edge and the edge table has
+ *                      no room for its split
+ * On failure the diagram (and the constraint memory) is unchanged.
  * Cost: the walk from the hint plus O(changed triangles), O(1) expected for
  * a nearby hint; no recursion, no memory beyond the arena.
  */
@@ -418,9 +421,11 @@ int vor_insert_near(vor_t *d, vor_point_t p, uint32_t hint, uint32_t *site);
  * their ids; `site` becomes free, and the next vor_insert reuses the most
  * recently freed id (ids beyond the free ones are handed out after them).
  * Ids vor_build gave to duplicates stay reserved: they are not sites.
- *   VOR_ERR_ARG  d NULL, or site not a site in the mesh (an unused or
- *                free id, a duplicate's id from vor_build)
- * On failure the diagram is unchanged. The bounding box (vor_t low, high)
+ *   VOR_ERR_ARG          d NULL, or site not a site in the mesh (an
+ *                        unused or free id, a duplicate's id from vor_build)
+ *   VOR_ERR_CONSTRAINED  constraint memory is attached (vor_cdt.h) and a
+ *                        constrained edge ends at site
+ * On failure the diagram (and the constraint memory) is unchanged. The bounding box (vor_t low, high)
  * may stay larger than the remaining sites' box.
  * Cost: O(degree^3) predicates in the worst case, 13 on average on
  * uniform sites (degree 6), plus the removed site's run of the bucket
@@ -438,7 +443,13 @@ int vor_remove(vor_t *d, uint32_t site);
  *                      vor_remove)
  *   VOR_ERR_DUPLICATE  p is another site: its id goes to *existing
  *                      (may be NULL)
- * On failure the diagram and the motion cache are unchanged.
+ *   VOR_ERR_CONSTRAINED  constraint memory is attached (vor_cdt.h) and a
+ *                      constrained edge ends at site
+ *   VOR_ERR_NOMEM      constraint memory is attached, p lies inside a
+ *                      constrained edge and the edge table has no room
+ *                      for its split
+ * On failure the diagram, the motion cache and the constraint memory are
+ * unchanged.
  * Cost: with a motion cache attached (vor_motion_attach), a move inside
  * the site's box only stores the coordinates and evaluates no predicate.
  * Otherwise the predicates of the site's star (about 18 on uniform sites)
