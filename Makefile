@@ -11,7 +11,8 @@
 #   make size               flash, static RAM and worst stack depth per target,
 #                           and per feature set a firmware links (bench/size/)
 #   make bench              Delaunay build: vor against CGAL and Boost.Polygon,
-#                           and target instructions per inserted site
+#                           and target instructions per inserted site; then
+#                           make bench-cdt
 #   make bench-predicates   predicate speed: host ns and target instructions
 #   make bench-query        nearest-site queries: vor against nanoflann and CGAL,
 #                           and target instructions per coherent query

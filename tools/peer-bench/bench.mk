@@ -5,7 +5,7 @@
 #                      Boost.Polygon, delaunay32 (1 and 2 threads) and
 #                      jc_voronoi, and instructions per inserted site on
 #                      Cortex-M0, Cortex-M3 and RISC-V 32 (bench/delaunay.c
-#                      under QEMU);
+#                      under QEMU), then make bench-cdt's constrained rows;
 #   make bench-query   nearest-site queries (coherent and random) against
 #                      nanoflann's kd-tree and CGAL's nearest_vertex, and
 #                      instructions per coherent query on Cortex-M3
@@ -40,6 +40,7 @@ bench:
 	@tools/install-deps.sh bench host python toolchains
 	+@tools/peer-bench/run.sh delaunay
 	+@$(MAKE) -s --no-print-directory PORT=cortex-m4f bench-jcv
+	+@tools/peer-bench/run.sh cdt
 
 bench-query:
 	@tools/install-deps.sh bench-query host python toolchains
