@@ -21,7 +21,8 @@
 #                           emulated Cortex-M3: build/coverage.svg
 #   make coverage-report    line and branch coverage of src/ by the host
 #                           suites: build/coverage-report/index.html
-#   make pictures           README's pictures: docs/diagram.png, docs/raster.png
+#   make pictures           README's pictures: docs/diagram.png, docs/raster.png,
+#                           docs/room.png
 #   make bench-cdt          constraints: vor_constrain against CGAL, CDT and
 #                           delaunay32, and Cortex-M3 instructions per constraint
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
@@ -344,15 +345,20 @@ coverage: $(B)/vor
 
 # README's pictures of the sites in docs/pictures.sites: docs/diagram.png
 # (vor draw, rendered by rsvg-convert) and docs/raster.png (vor raster,
-# L1 metric), both y up with the same colour for each site.
-pictures: $(B)/vor
+# L1 metric), both y up with the same colour for each site; and
+# docs/room.png, examples/room's floor plan drawn by vor draw --domain.
+pictures: $(B)/vor $(B)/example-room$(EXE)
 	@tools/install-deps.sh svg
 	@$(B)/vor draw --box 0 0 480 320 --size 480 320 --triangles --hull docs/pictures.sites \
 		-o $(B)/pictures-diagram.svg
 	@rsvg-convert $(B)/pictures-diagram.svg -o docs/diagram.png
 	@$(B)/vor raster --size 480 320 --origin 0 0 --step 1 1 --metric l1 --dots docs/pictures.sites \
 		--png docs/raster.png
-	@echo "pictures:  docs/diagram.png docs/raster.png"
+	@$(B)/example-room$(EXE) >/dev/null
+	@$(B)/vor draw --size 480 320 --constraints build/room.walls --domain build/room.sites \
+		-o $(B)/pictures-room.svg
+	@rsvg-convert $(B)/pictures-room.svg -o docs/room.png
+	@echo "pictures:  docs/diagram.png docs/raster.png docs/room.png"
 
 # The API reference: docs/Doxyfile reads include/*.h (through
 # tools/doxygen-filter.py) with README.md as the main page. Doxygen exits
