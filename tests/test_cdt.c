@@ -24,6 +24,7 @@
  */
 #include "cdt.h"
 #include "crossing.h"
+#include "predicates.h"
 #include "test.h"
 #include "vor_cdt.h"
 
@@ -1486,6 +1487,7 @@ static void check_hull_line_splits(void);
 static void check_dense(void);
 static void check_full_table_overlap(void);
 static void check_split_beside_crossing(void);
+static void check_crossing_sos_as_sites(void);
 
 void test_cdt(void)
 {
@@ -1512,6 +1514,7 @@ void test_cdt(void)
     TEST_CASE("dense") check_dense();
     TEST_CASE("full_table_overlap") check_full_table_overlap();
     TEST_CASE("split_beside_crossing") check_split_beside_crossing();
+    TEST_CASE("crossing_sos_as_sites") check_crossing_sos_as_sites();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1749,4 +1752,91 @@ static void check_split_beside_crossing(void)
         bad += check_cdt(&d) + mesh_link_faults(&d);
     }
     CHECK(bad == 0 && gather_crossings(&d) == 1u, "cdt split beside a crossing: %lu wrong", bad);
+}
+
+/* A sign test's vertex at lattice point p as a homogeneous point: the
+ * site p itself, or (crossing) the crossing at p of two random lines
+ * through it, whose W is 4 |u x w|: each of its rows is a positive
+ * multiple of the site's. */
+static void lattice_vertex(vor__hpoint_t *h, vor_point_t p, test_rng_t *rng, bool crossing)
+{
+    vor_point_t u;
+    vor_point_t w;
+    do {
+        u = (vor_point_t){test_rng_range(rng, -3, 3), test_rng_range(rng, -3, 3)};
+        w = (vor_point_t){test_rng_range(rng, -3, 3), test_rng_range(rng, -3, 3)};
+    } while ((int64_t)u.x * w.y == (int64_t)u.y * w.x);
+    vor_point_t a = {p.x + u.x, p.y + u.y};
+    vor_point_t b = {p.x - u.x, p.y - u.y};
+    vor_point_t c = {p.x + w.x, p.y + w.y};
+    vor_point_t e = {p.x - w.x, p.y - w.y};
+    if (!crossing || !vor__hpoint_crossing(h, a, b, c, e)) {
+        vor__hpoint_site(h, p);
+    }
+}
+
+/* The crossing predicates' perturbation (vor__orient_h_sos,
+ * vor__incircle_h_sos) against the sites' own (predicates.c) on lattice
+ * points: a crossing vertex at a site's point moves as a site of its
+ * index, so each sign must be the sites' one. Cocircular and collinear
+ * points on lattice circles and lines around random centres, each given
+ * as a site or as a crossing of two lines through it, under random ids. */
+static void check_crossing_sos_as_sites(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 1729);
+    static const int32_t circle[12][2] = {{5, 0},  {4, 3},  {3, 4},  {0, 5},  {-3, 4}, {-4, 3},
+                                          {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+    vor_point_t table[32];
+    unsigned long bad = 0;
+    unsigned long ties = 0;
+    for (uint32_t trial = 0; trial < 3000u; trial++) {
+        int32_t cx = test_rng_range(&rng, -12, 12);
+        int32_t cy = test_rng_range(&rng, -12, 12);
+        bool line = (trial % 3u) == 0u; /* collinear: an orientation test */
+        unsigned count = line ? 3u : 4u;
+        uint32_t ids[4];
+        vor__hpoint_t h[4];
+        const vor__hpoint_t *v[4];
+        int32_t dx = test_rng_range(&rng, -2, 2);
+        int32_t dy = (dx == 0) ? 1 : test_rng_range(&rng, -2, 2);
+        for (unsigned k = 0; k < count; k++) {
+            bool fresh;
+            vor_point_t p;
+            do { /* distinct ids, distinct points */
+                ids[k] = test_rng_u32(&rng) % 32u;
+                unsigned pick = test_rng_u32(&rng) % 12u;
+                int32_t t = test_rng_range(&rng, -4, 4);
+                p = line ? (vor_point_t){cx + (t * dx), cy + (t * dy)}
+                         : (vor_point_t){cx + circle[pick][0], cy + circle[pick][1]};
+                fresh = true;
+                for (unsigned j = 0; j < k; j++) {
+                    fresh = fresh && (ids[j] != ids[k]) &&
+                            ((table[ids[j]].x != p.x) || (table[ids[j]].y != p.y));
+                }
+            } while (!fresh);
+            table[ids[k]] = p;
+            lattice_vertex(&h[k], table[ids[k]], &rng, (test_rng_u32(&rng) & 1u) != 0u);
+            v[k] = &h[k];
+        }
+        const vor_point_t *s = table;
+        int want;
+        int got;
+        if (line) {
+            want = vor__orient2d_exact(&s[ids[0]], &s[ids[1]], &s[ids[2]], NULL);
+            want = (want != 0) ? want : vor__orient2d_perturbed(s, ids[0], ids[1], ids[2], NULL);
+            got = vor__orient_h_sos(v, ids);
+        } else {
+            want = vor__incircle_exact(&s[ids[0]], &s[ids[1]], &s[ids[2]], &s[ids[3]], NULL);
+            want = (want != 0) ? want
+                               : vor__incircle_perturbed(s, ids[0], ids[1], ids[2], ids[3], NULL);
+            got = vor__incircle_h_sos(v, ids);
+        }
+        ties += (line ? vor__orient_h(v[0], v[1], v[2]) : vor__incircle_h(v[0], v[1], v[2], v[3])) == 0
+                    ? 1u
+                    : 0u;
+        bad += (got == want) ? 0u : 1u;
+    }
+    CHECK(bad == 0 && ties > 2000u, "cdt crossing perturbation as sites: %lu wrong, %lu ties", bad,
+          ties);
 }
