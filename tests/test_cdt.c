@@ -1793,8 +1793,11 @@ static void check_crossing_sos_as_sites(void)
     for (uint32_t trial = 0; trial < 3000u; trial++) {
         int32_t cx = test_rng_range(&rng, -12, 12);
         int32_t cy = test_rng_range(&rng, -12, 12);
-        bool line = (trial % 3u) == 0u; /* collinear: an orientation test */
-        unsigned count = line ? 3u : 4u;
+        /* collinear: an orientation test, or an incircle test of four
+         * points on a line (whose deciding terms go deepest) */
+        bool line = (trial % 3u) != 2u;
+        bool flat = (trial % 3u) == 1u;
+        unsigned count = (line && !flat) ? 3u : 4u;
         uint32_t ids[4];
         vor__hpoint_t h[4];
         const vor__hpoint_t *v[4];
@@ -1809,10 +1812,16 @@ static void check_crossing_sos_as_sites(void)
                 int32_t t = test_rng_range(&rng, -4, 4);
                 p = line ? (vor_point_t){cx + (t * dx), cy + (t * dy)}
                          : (vor_point_t){cx + circle[pick][0], cy + circle[pick][1]};
+                /* in one trial of four, points of an incircle test on
+                 * earlier ones: the perturbation alone then decides, deep
+                 * in its terms (two coincident pairs: two-row terms) */
+                bool twin = (count == 4u) && (k > 0u) && ((trial % 4u) == 3u) &&
+                            ((test_rng_u32(&rng) % 3u) == 0u);
+                p = twin ? table[ids[test_rng_u32(&rng) % k]] : p;
                 fresh = true;
                 for (unsigned j = 0; j < k; j++) {
                     fresh = fresh && (ids[j] != ids[k]) &&
-                            ((table[ids[j]].x != p.x) || (table[ids[j]].y != p.y));
+                            (twin || (table[ids[j]].x != p.x) || (table[ids[j]].y != p.y));
                 }
             } while (!fresh);
             table[ids[k]] = p;
@@ -1822,7 +1831,7 @@ static void check_crossing_sos_as_sites(void)
         const vor_point_t *s = table;
         int want;
         int got;
-        if (line) {
+        if (count == 3u) {
             want = vor__orient2d_exact(&s[ids[0]], &s[ids[1]], &s[ids[2]], NULL);
             want = (want != 0) ? want : vor__orient2d_perturbed(s, ids[0], ids[1], ids[2], NULL);
             got = vor__orient_h_sos(v, ids);
@@ -1832,7 +1841,7 @@ static void check_crossing_sos_as_sites(void)
                                : vor__incircle_perturbed(s, ids[0], ids[1], ids[2], ids[3], NULL);
             got = vor__incircle_h_sos(v, ids);
         }
-        ties += (line ? vor__orient_h(v[0], v[1], v[2]) : vor__incircle_h(v[0], v[1], v[2], v[3])) == 0
+        ties += ((count == 3u) ? vor__orient_h(v[0], v[1], v[2]) : vor__incircle_h(v[0], v[1], v[2], v[3])) == 0
                     ? 1u
                     : 0u;
         bad += (got == want) ? 0u : 1u;
