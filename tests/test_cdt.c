@@ -1488,6 +1488,7 @@ static void check_dense(void);
 static void check_full_table_overlap(void);
 static void check_split_beside_crossing(void);
 static void check_crossing_sos_as_sites(void);
+static void check_fan_cut(void);
 
 void test_cdt(void)
 {
@@ -1515,6 +1516,7 @@ void test_cdt(void)
     TEST_CASE("full_table_overlap") check_full_table_overlap();
     TEST_CASE("split_beside_crossing") check_split_beside_crossing();
     TEST_CASE("crossing_sos_as_sites") check_crossing_sos_as_sites();
+    TEST_CASE("fan_cut") check_fan_cut();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1848,4 +1850,46 @@ static void check_crossing_sos_as_sites(void)
     }
     CHECK(bad == 0 && ties > 2000u, "cdt crossing perturbation as sites: %lu wrong, %lu ties", bad,
           ties);
+}
+
+/* The cut's limit at its edge: two long parallel constraints, a column
+ * of sites just left of the middle between them, and a constraint across
+ * both through the middle, whose piece between its two crossing vertices
+ * crosses the fan of triangles from the column to the far ends. With
+ * each cut from none up, each constraint is refused (nothing changed)
+ * until its stretches fit, and made from then on. */
+static void check_fan_cut(void)
+{
+    unsigned long bad = 0;
+    unsigned before = 0;
+    for (uint32_t cut = 0; cut <= 60u; cut++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t ends[] = {{-400, 0}, {400, 0}, {-400, 40}, {400, 40},
+                                           {0, -30}, {0, 70}};
+        insert_all(&d, ends, sizeof ends / sizeof ends[0]);
+        for (int32_t k = 1; k < 40; k++) {
+            vor_point_t column = {-1, k};
+            insert_all(&d, &column, 1);
+        }
+        vor_cdt_limits_t tight = {CDT_EDGES, CDT_CROSSINGS, cut};
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &tight) == VOR_OK) ? 0u : 1u;
+        static const uint32_t pairs[3][2] = {{0, 1}, {2, 3}, {4, 5}};
+        unsigned made = 0;
+        for (unsigned k = 0; k < 3u; k++) {
+            int err = vor_constrain(&d, pairs[k][0], pairs[k][1]);
+            if (err == VOR_OK) {
+                model.a[model.constraints] = pairs[k][0];
+                model.b[model.constraints] = pairs[k][1];
+                model.constraints++;
+                made |= 1u << k;
+            }
+            bad += ((err == VOR_OK) || (err == VOR_ERR_NOMEM)) ? 0u : 1u;
+        }
+        bad += check_cdt(&d) + mesh_link_faults(&d);
+        bad += ((made & before) == before) ? 0u : 1u; /* once made, made with more room */
+        before = made;
+    }
+    CHECK(bad == 0 && before == 7u, "cdt fan at the cut's limit: %lu wrong, %u made", bad, before);
 }
