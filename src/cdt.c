@@ -943,13 +943,13 @@ static vor_index_t triangulate(struct vor__cdt *c, const vor_index_t *chain,
             link_across(tri, o, chain[lo], chain[hi], up);
             continue;
         }
-        /* the apex: the chain vertex whose circle over the base is empty
-         * (a spike's base, met twice, is never an apex over itself) */
+        /* the apex: the chain vertex whose circle over the base is empty.
+         * No vertex meets itself: a spike's tip, which comes right after
+         * its base, lies inside the base's circle (docs/design/
+         * constraints.md), so the base is never the apex when its second
+         * place comes, nor an end of a range that holds its spike. */
         uint32_t apex = hi;
         for (uint32_t v = lo + 1u; v < hi; v++) {
-            if ((chain[v] == chain[lo]) || (chain[v] == chain[hi])) {
-                continue;
-            }
             if ((apex == hi) || (incircle(c, chain[lo], chain[hi], chain[apex], chain[v]) > 0)) {
                 apex = v;
             }
