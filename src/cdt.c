@@ -1273,7 +1273,7 @@ typedef struct {
     uint32_t count;
     uint32_t room;      /* pairs */
     bool lost;          /* some did not fit: a sweep of every edge follows */
-    uint32_t flips;
+    uint64_t flips;     /* in this run */
 } lawson_t;
 
 static void lawson_push(lawson_t *w, vor_index_t u, vor_index_t v)
@@ -1316,14 +1316,19 @@ static bool lawson_test(struct vor__cdt *c, lawson_t *w, vor_index_t u, vor_inde
     return true;
 }
 
-/* Runs the flips. Each flip removes an edge that the end result lacks, and
- * none comes back (Lawson), so at most 3 (vertices) flips happen; the
- * bound only stops lying predicates (fault injection). When the stack
- * overflowed, sweeps over every edge finish the work. */
+/* Runs the flips. A flip lowers the lifted surface, so an edge flipped
+ * away never comes back (Lawson): at most one flip per pair of vertices,
+ * v (v - 1) / 2. That many can be needed (a constraint taken off between
+ * two long chains of sites flips each pair in turn: docs/design/
+ * constraints.md); the bound only stops lying predicates (fault
+ * injection). When the stack overflowed, sweeps over every edge finish
+ * the work. */
 static void lawson_run(struct vor__cdt *c, lawson_t *w)
 {
     vor_t *m = &c->mesh;
-    uint32_t bound = (3u * m->vertex_count) + 8u;
+    uint32_t n = m->vertex_count;
+    uint64_t bound = vor__mul_u32(n, (n > 0u) ? (n - 1u) : 0u) >> 1;
+    w->flips = 0;
     while ((w->count > 0u) && (w->flips < bound)) {
         w->count--;
         (void)lawson_test(c, w, w->edges[2u * w->count], w->edges[(2u * w->count) + 1u]);

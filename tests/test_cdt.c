@@ -1489,6 +1489,7 @@ static void check_full_table_overlap(void);
 static void check_split_beside_crossing(void);
 static void check_crossing_sos_as_sites(void);
 static void check_fan_cut(void);
+static void check_unconstrain_chains(void);
 
 void test_cdt(void)
 {
@@ -1517,6 +1518,7 @@ void test_cdt(void)
     TEST_CASE("split_beside_crossing") check_split_beside_crossing();
     TEST_CASE("crossing_sos_as_sites") check_crossing_sos_as_sites();
     TEST_CASE("fan_cut") check_fan_cut();
+    TEST_CASE("unconstrain_chains") check_unconstrain_chains();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1892,4 +1894,38 @@ static void check_fan_cut(void)
         before = made;
     }
     CHECK(bad == 0 && before == 7u, "cdt fan at the cut's limit: %lu wrong, %u made", bad, before);
+}
+
+/* A constraint taken off between two long arcs of sites, one above and
+ * one below it, staggered: Lawson's flips from the two sides' fans to
+ * the zigzag between the arcs flip pairs of sites one after another,
+ * some 1,100 flips for 100 sites (far beyond 3 a vertex), all of which
+ * must happen for the result to be Delaunay again. */
+static void check_unconstrain_chains(void)
+{
+    unsigned long bad = 0;
+    for (unsigned shape = 0; shape < 2u; shape++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        const int32_t width = 100000;
+        const int32_t arcs = 50;
+        static const vor_point_t ends[] = {{0, 0}, {100000, 0}};
+        insert_all(&d, ends, 2);
+        for (int32_t i = 1; i < arcs; i++) {
+            int64_t x = ((int64_t)width * i) / arcs;
+            int64_t half = width / (2 * arcs);
+            int64_t up = 1 + ((x * (width - x)) / ((int64_t)width * 4));
+            int64_t down = (shape == 0u) ? up : 1 + ((x * (width - x)) / ((int64_t)width * 40));
+            vor_point_t p[2] = {{(int32_t)x, (int32_t)up}, {(int32_t)(x + half), (int32_t)-down}};
+            insert_all(&d, p, 2);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += add_constraint(&d, 0, 1);
+        bad += check_cdt(&d);
+        bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+        model.constraints = 0;
+        bad += check_cdt(&d) + mesh_link_faults(&d);
+    }
+    CHECK(bad == 0, "cdt constraint off between two arcs: %lu wrong", bad);
 }
