@@ -1490,6 +1490,7 @@ static void check_split_beside_crossing(void);
 static void check_crossing_sos_as_sites(void);
 static void check_fan_cut(void);
 static void check_unconstrain_chains(void);
+static void check_stale_scratch(void);
 
 void test_cdt(void)
 {
@@ -1519,6 +1520,7 @@ void test_cdt(void)
     TEST_CASE("crossing_sos_as_sites") check_crossing_sos_as_sites();
     TEST_CASE("fan_cut") check_fan_cut();
     TEST_CASE("unconstrain_chains") check_unconstrain_chains();
+    TEST_CASE("stale_scratch") check_stale_scratch();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1928,4 +1930,34 @@ static void check_unconstrain_chains(void)
         bad += check_cdt(&d) + mesh_link_faults(&d);
     }
     CHECK(bad == 0, "cdt constraint off between two arcs: %lu wrong", bad);
+}
+
+/* A cavity's scratch holds whatever earlier calls left there, and a call
+ * must read only what it wrote. Two triangles across a segment (chains
+ * a, u, b and a, l, b) with the scratch filled first as a longer piece
+ * with spikes could have left it: every chain entry u or l, every
+ * triangle outside an edge none (a spike's mark), every spike side a far
+ * site's home triangle. The links and the triangulation stay whole. */
+static void check_stale_scratch(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, 3}, {5, -3}, {500, 500}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    struct vor__cdt *c = d.cdt;
+    size_t n = (size_t)c->max_cut + 2u; /* cavity_init's layout */
+    for (size_t k = 0; k < n; k++) {
+        c->scratch[k] = 2;                   /* upper: u */
+        c->scratch[n + k] = VOR__NONE;       /* upper_out */
+        c->scratch[(2u * n) + k] = 3;        /* lower: l */
+        c->scratch[(3u * n) + k] = VOR__NONE; /* lower_out */
+        c->scratch[(5u * n) + k] = 4;        /* side: the far site's home */
+        c->scratch[(6u * n) + k] = (vor_index_t)(k % 3u);
+    }
+    bad += add_constraint(&d, 0, 1);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt stale scratch: %lu wrong", bad);
 }
