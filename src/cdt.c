@@ -1318,16 +1318,14 @@ static bool lawson_test(struct vor__cdt *c, lawson_t *w, vor_index_t u, vor_inde
 
 /* Runs the flips. A flip lowers the lifted surface, so an edge flipped
  * away never comes back (Lawson): at most one flip per pair of vertices,
- * v (v - 1) / 2. That many can be needed (a constraint taken off between
- * two long chains of sites flips each pair in turn: docs/design/
- * constraints.md); the bound only stops lying predicates (fault
- * injection). When the stack overflowed, sweeps over every edge finish
- * the work. */
+ * fewer than v^2. A good share of the pairs can be needed (a constraint
+ * taken off between two long arcs of sites: docs/design/constraints.md);
+ * the bound only stops lying predicates (fault injection). When the
+ * stack overflowed, sweeps over every edge finish the work. */
 static void lawson_run(struct vor__cdt *c, lawson_t *w)
 {
     vor_t *m = &c->mesh;
-    uint32_t n = m->vertex_count;
-    uint64_t bound = vor__mul_u32(n, (n > 0u) ? (n - 1u) : 0u) >> 1;
+    uint64_t bound = vor__mul_u32(m->vertex_count, m->vertex_count);
     w->flips = 0;
     while ((w->count > 0u) && (w->flips < bound)) {
         w->count--;
