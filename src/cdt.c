@@ -32,6 +32,7 @@
 #include "crossing.h"
 #include "dynamic.h"
 #include "mesh.h"
+#include "multiword.h"
 #include "perturbation.h"
 #include "predicates.h"
 
