@@ -1097,6 +1097,25 @@ static void check_small_scratch(void)
 /* Stacks that overflow at once: 70 sites in convex position (70 triangles
  * at infinity seed the domain's flood) and a constraint through 50
  * collinear sites (49 pieces freed at once), with a scratch of 39 pairs. */
+/* The bytes past the constraint memory a test gives (memory[from ..)):
+ * filled before the attach, and counted afterwards if any changed, as
+ * nothing may be written past the size given. */
+static void canary_fill(size_t from)
+{
+    for (size_t i = from; i < sizeof memory; i++) {
+        memory[i] = 0xA5u;
+    }
+}
+
+static unsigned long canary_faults(size_t from)
+{
+    unsigned long bad = 0;
+    for (size_t i = from; i < sizeof memory; i++) {
+        bad += (memory[i] == 0xA5u) ? 0u : 1u;
+    }
+    return bad;
+}
+
 static void check_overflow(void)
 {
     unsigned long bad = 0;
@@ -1112,9 +1131,9 @@ static void check_overflow(void)
         insert_all(&d, &p, 1);
     }
     static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 2};
-    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 2), &small) == VOR_OK)
-               ? 0u
-               : 1u;
+    const size_t bytes = VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 2);
+    canary_fill(bytes);
+    bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
     for (unsigned k = 0; k < 70u; k++) { /* the hull, closed */
         bad += add_constraint(&d, k, (k + 1u) % 70u);
     }
@@ -1125,7 +1144,7 @@ static void check_overflow(void)
     bad += check_cdt(&d);
     bad += (vor_unconstrain(&d, 119, 70) == VOR_OK) ? 0u : 1u;
     model.constraints--;
-    bad += check_cdt(&d);
+    bad += check_cdt(&d) + canary_faults(bytes);
     CHECK(bad == 0 && in > 0u, "cdt overflow: %lu wrong", bad);
 }
 
@@ -1244,9 +1263,9 @@ static void check_lawson_sweeps(void)
     static const vor_point_t line[] = {{0, 0}, {10000, 0}, {5000, 3000}}; /* 0-1 an edge */
     insert_all(&d, line, 3);
     static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 2};
-    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 2), &small) == VOR_OK)
-               ? 0u
-               : 1u;
+    const size_t bytes = VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 2);
+    canary_fill(bytes);
+    bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
     bad += add_constraint(&d, 0, 1);
     for (int32_t i = 0; i < 100; i++) { /* alternately 3 above and 5 below */
         vor_point_t q = {37 + (i * 97), ((i & 1) != 0) ? 3 : -5};
@@ -1255,7 +1274,7 @@ static void check_lawson_sweeps(void)
     bad += check_cdt(&d);
     bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
     model.constraints = 0;
-    bad += check_cdt(&d);
+    bad += check_cdt(&d) + canary_faults(bytes);
     CHECK(bad == 0, "cdt lawson sweeps: %lu wrong", bad);
 }
 
@@ -1280,10 +1299,9 @@ static void check_flood_sweeps(void)
         (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
         static const vor_point_t square[] = {{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}};
         insert_all(&d, square, 4);
-        bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, l->edges, l->crossings, l->cut),
-                               l) == VOR_OK)
-                   ? 0u
-                   : 1u;
+        const size_t bytes = VOR_CDT_BYTES(CDT_SITES, l->edges, l->crossings, l->cut);
+        canary_fill(bytes);
+        bad += (vor_cdt_attach(&d, memory, bytes, l) == VOR_OK) ? 0u : 1u;
         for (uint32_t k = 0; k < 4u; k++) {
             bad += add_constraint(&d, k, (k + 1u) % 4u);
         }
@@ -1293,7 +1311,7 @@ static void check_flood_sweeps(void)
         }
         bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
         uint32_t in;
-        bad += check_domain(&d, &in);
+        bad += check_domain(&d, &in) + canary_faults(bytes);
         n[round] = inside_keys_of(&d, (round == 0u) ? first : second);
     }
     bad += ((n[0] == n[1]) && (n[0] > 0u)) ? 0u : 1u;
