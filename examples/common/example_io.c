@@ -139,3 +139,28 @@ int32_t example_dump_cells(const char *path, const vor_t *diagram, const vor_poi
     }
     return more == 0 ? written : -1;
 }
+
+/* The examples' checks (firmware state, not the library's). */
+static uint32_t checks_passed;
+static uint32_t checks_failed;
+
+void example_check(bool ok, const char *what)
+{
+    if (ok) {
+        checks_passed++;
+    } else {
+        checks_failed++;
+        example_print("FAIL ");
+        example_print(what);
+        example_print("\n");
+    }
+}
+
+int example_print_tally(void)
+{
+    example_print_uint(checks_passed);
+    example_print(" passed, ");
+    example_print_uint(checks_failed);
+    example_print(" failed\n");
+    return (checks_failed == 0u) ? 0 : 1;
+}

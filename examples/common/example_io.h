@@ -1,12 +1,13 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * example_io.h - what the example firmwares share: output without a C
- * library, a deterministic random generator, and a brute-force nearest
- * site to check vor's answers against.
+ * library, a tally of their checks, a deterministic random generator, and
+ * a brute-force nearest site to check vor's answers against.
  */
 #ifndef VOR_EXAMPLE_IO_H
 #define VOR_EXAMPLE_IO_H
 
+#include <stdbool.h>
 #include <stdint.h>
 
 #include "vor.h"
@@ -14,6 +15,12 @@
 void example_print(const char *text);
 void example_print_uint(uint64_t value);
 void example_print_int(int64_t value);
+
+/* Counts a check, printing "FAIL what" when it fails. */
+void example_check(bool ok, const char *what);
+/* Prints "N passed, N failed" (an example's last line); returns the
+ * exit status: 0 when every check passed. */
+int example_print_tally(void);
 
 /* xorshift32: the same sequence on every target; *state must be nonzero. */
 uint32_t example_random(uint32_t *state);

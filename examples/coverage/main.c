@@ -36,20 +36,6 @@ static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(ROBOTS))
 static vor_point_t robot[ROBOTS];
 static vor_point_t goal[ROBOTS];
 
-static uint32_t passed, failed;
-
-static void check(int ok, const char *what)
-{
-    if (ok) {
-        passed++;
-    } else {
-        failed++;
-        example_print("FAIL ");
-        example_print(what);
-        example_print("\n");
-    }
-}
-
 /* Mean squared distance (mm^2) from the sample points (cell centres of a
  * COST_SPACING grid over the arena) to their nearest robot. Each query is
  * hinted with the previous answer: neighbouring samples are near. */
@@ -121,7 +107,7 @@ static void check_centroids(const vor_t *d)
                  (int64_t)c.area >= (count[i] - 400) * CHECK_SPACING * CHECK_SPACING &&
                  (int64_t)c.area <= (count[i] + 400) * CHECK_SPACING * CHECK_SPACING;
         }
-        check(ok, "a centroid or area disagrees with the brute-force samples");
+        example_check(ok, "a centroid or area disagrees with the brute-force samples");
     }
 }
 
@@ -143,7 +129,7 @@ int main(void)
             err = VOR_OK;
         }
     }
-    check(err == VOR_OK, "vor_init or vor_insert failed");
+    example_check(err == VOR_OK, "vor_init or vor_insert failed");
     if (err != VOR_OK) {
         return 1;
     }
@@ -156,7 +142,7 @@ int main(void)
         uint64_t start = vor_port_counter();
         err = lloyd_step(&d);
         uint64_t spent = vor_port_counter() - start;
-        check(err == 0, "a Lloyd step failed");
+        example_check(err == 0, "a Lloyd step failed");
         if (err != 0) {
             break;
         }
@@ -177,17 +163,13 @@ int main(void)
         example_print_uint(spent / ROBOTS);
         example_print(" per robot)\n");
     }
-    check(monotone, "the coverage cost rose");
-    check(cost * 10u < first, "the coverage cost did not fall tenfold");
+    example_check(monotone, "the coverage cost rose");
+    example_check(cost * 10u < first, "the coverage cost did not fall tenfold");
     vor_violation_t violation;
-    check(vor_validate(&d, &violation) == VOR_OK, "vor_validate failed");
+    example_check(vor_validate(&d, &violation) == VOR_OK, "vor_validate failed");
     check_centroids(&d);
     int32_t cells = example_dump_cells("build/coverage.cells", &d, robot, ROBOTS, &arena_box);
-    check(cells == (int32_t)ROBOTS, "the cells could not be written");
+    example_check(cells == (int32_t)ROBOTS, "the cells could not be written");
     example_print("\ncells:   build/coverage.cells (make coverage draws build/coverage.svg)\n");
-    example_print_uint(passed);
-    example_print(" passed, ");
-    example_print_uint(failed);
-    example_print(" failed\n");
-    return failed == 0u ? 0 : 1;
+    return example_print_tally();
 }

@@ -117,20 +117,6 @@ static uint32_t came_from[MAX_TRIANGLES]; /* the breadth-first search's tree */
 static uint32_t queue[MAX_TRIANGLES];
 static uint32_t way[MAX_TRIANGLES]; /* the triangles from start to goal */
 
-static uint32_t passed, failed;
-
-static void check(bool ok, const char *what)
-{
-    if (ok) {
-        passed++;
-    } else {
-        failed++;
-        example_print("FAIL ");
-        example_print(what);
-        example_print("\n");
-    }
-}
-
 /* ---- plain integer geometry, independent of the library */
 
 /* Twice the signed area of triangle a b c: positive counterclockwise.
@@ -449,9 +435,9 @@ static uint64_t walk_way(uint32_t steps)
         length += square_root((uint64_t)(dx * dx + dy * dy)) / 2u;
         p = q;
     }
-    check(clear, "the way meets a wall");
+    example_check(clear, "the way meets a wall");
     for (uint32_t door = 0; door < COUNT(doors); door++) {
-        check(passes_of[door] % 2u == 1u, "the way does not pass a door");
+        example_check(passes_of[door] % 2u == 1u, "the way does not pass a door");
     }
     return length;
 }
@@ -476,8 +462,8 @@ static void check_walls(void)
         }
         on_walls &= found;
     }
-    check(constrained_count == pieces, "the constrained edges are not the walls' pieces");
-    check(on_walls, "a constrained edge is on no wall");
+    example_check(constrained_count == pieces, "the constrained edges are not the walls' pieces");
+    example_check(on_walls, "a constrained edge is on no wall");
 }
 
 /* Euler: a triangulated floor with v vertices, b of them on its boundary
@@ -537,7 +523,7 @@ static uint32_t check_locations(uint32_t *points)
             (*points)++;
         }
     }
-    check(disagree == 0u, "a point's triangle disagrees with the even-odd test");
+    example_check(disagree == 0u, "a point's triangle disagrees with the even-odd test");
     return floor;
 }
 
@@ -641,17 +627,14 @@ int main(void)
     uint64_t walled = vor_port_counter();
     err = err != VOR_OK ? err : vor_cdt_domain(&d);
     uint64_t marked = vor_port_counter();
-    check(err == VOR_OK, "building the constrained triangulation failed");
-    check(err == VOR_OK && read_mesh(&d), "reading the mesh failed");
-    if (failed != 0u) {
+    example_check(err == VOR_OK, "building the constrained triangulation failed");
+    bool mesh_read = (err == VOR_OK) && read_mesh(&d);
+    example_check(mesh_read, "reading the mesh failed");
+    if ((err != VOR_OK) || !mesh_read) {
         example_print("error ");
         example_print_int(err);
         example_print("\n");
-        example_print_uint(passed);
-        example_print(" passed, ");
-        example_print_uint(failed);
-        example_print(" failed\n");
-        return 1;
+        return example_print_tally();
     }
     uint32_t all_triangles = 0, ids[3];
     vor_cdt_triangle_iter_t every;
@@ -662,19 +645,19 @@ int main(void)
 
     check_walls();
     uint32_t expected = expected_triangles();
-    check(mesh_count == expected, "the inside triangles are not as many as Euler's count");
+    example_check(mesh_count == expected, "the inside triangles are not as many as Euler's count");
     int64_t area = mesh_twice_area();
     int64_t plan_area = shoelace(outline, COUNT(outline)) - shoelace(pillar, COUNT(pillar));
-    check(area == plan_area, "the inside triangles' area is not the floor plan's");
-    check(edges_clear_of_walls(), "a triangle edge crosses a wall");
+    example_check(area == plan_area, "the inside triangles' area is not the floor plan's");
+    example_check(edges_clear_of_walls(), "a triangle edge crosses a wall");
     uint32_t open = link_mesh();
-    check(open == 0u, "a side of the floor's boundary is no wall");
+    example_check(open == 0u, "a side of the floor's boundary is no wall");
     uint32_t points;
     uint32_t floor_points = check_locations(&points);
 
     uint32_t from = locate(start), to = locate(goal);
     uint32_t steps = (from != NONE && to != NONE) ? find_way(from, to) : 0u;
-    check(steps != 0u, "no way from the bathroom to the bedroom");
+    example_check(steps != 0u, "no way from the bathroom to the bedroom");
     uint64_t length = steps != 0u ? walk_way(steps) : 0u;
     write_floor_plan();
 
@@ -728,9 +711,5 @@ int main(void)
     example_print_uint(sizeof cdt_memory);
     example_print(" for the constraints\n");
     example_print("files:      build/room.sites, build/room.walls (vor draw --constraints)\n");
-    example_print_uint(passed);
-    example_print(" passed, ");
-    example_print_uint(failed);
-    example_print(" failed\n");
-    return failed == 0u ? 0 : 1;
+    return example_print_tally();
 }
