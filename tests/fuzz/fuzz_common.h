@@ -125,27 +125,31 @@ static inline vor_point_t fuzz_point(fuzz_reader_t *r, vor_point_t *previous)
     return p;
 }
 
-/* Signed 256-bit integers, four 64-bit limbs in two's complement, least
- * significant first: wide enough for every determinant of int32 points. */
-typedef struct {
-    uint64_t limb[4];
-} fuzz_wide_t;
+/* Signed integers of 12 64-bit limbs in two's complement, least
+ * significant first, computed modulo 2^768 (exact when the result fits):
+ * wide enough for every determinant of int32 points and of fuzz_hpoint.h's
+ * crossing vertices. */
+#define FUZZ_BIG_LIMBS 12
 
-static inline fuzz_wide_t fuzz_wide_from(__int128 v)
+typedef struct {
+    uint64_t limb[FUZZ_BIG_LIMBS];
+} fuzz_big_t;
+
+static inline fuzz_big_t fuzz_big_from(__int128 v)
 {
-    fuzz_wide_t w;
+    fuzz_big_t b;
     uint64_t fill = v < 0 ? ~0ull : 0ull;
-    w.limb[0] = (uint64_t)v;
-    w.limb[1] = (uint64_t)((unsigned __int128)v >> 64);
-    w.limb[2] = fill;
-    w.limb[3] = fill;
-    return w;
+    b.limb[0] = (uint64_t)v;
+    b.limb[1] = (uint64_t)((unsigned __int128)v >> 64);
+    for (int i = 2; i < FUZZ_BIG_LIMBS; i++)
+        b.limb[i] = fill;
+    return b;
 }
 
-static inline fuzz_wide_t fuzz_wide_add(fuzz_wide_t a, fuzz_wide_t b)
+static inline fuzz_big_t fuzz_big_add(fuzz_big_t a, const fuzz_big_t b)
 {
     unsigned __int128 carry = 0;
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < FUZZ_BIG_LIMBS; i++) {
         carry += (unsigned __int128)a.limb[i] + b.limb[i];
         a.limb[i] = (uint64_t)carry;
         carry >>= 64;
@@ -153,39 +157,68 @@ static inline fuzz_wide_t fuzz_wide_add(fuzz_wide_t a, fuzz_wide_t b)
     return a;
 }
 
-static inline fuzz_wide_t fuzz_wide_negate(fuzz_wide_t a)
+static inline int fuzz_big_negative(const fuzz_big_t a)
 {
-    for (int i = 0; i < 4; i++)
-        a.limb[i] = ~a.limb[i];
-    return fuzz_wide_add(a, fuzz_wide_from(1));
+    return (int)(a.limb[FUZZ_BIG_LIMBS - 1] >> 63);
 }
 
-/* a * b for |a|, |b| < 2^127: the product fits 255 bits. */
-static inline fuzz_wide_t fuzz_wide_mul(__int128 a, __int128 b)
+static inline fuzz_big_t fuzz_big_negate(fuzz_big_t a)
 {
-    int negative = (a < 0) != (b < 0);
-    unsigned __int128 ua = a < 0 ? -(unsigned __int128)a : (unsigned __int128)a;
-    unsigned __int128 ub = b < 0 ? -(unsigned __int128)b : (unsigned __int128)b;
-    uint64_t x[2] = {(uint64_t)ua, (uint64_t)(ua >> 64)};
-    uint64_t y[2] = {(uint64_t)ub, (uint64_t)(ub >> 64)};
-    fuzz_wide_t w = {{0, 0, 0, 0}};
-    for (int i = 0; i < 2; i++) {
+    unsigned __int128 carry = 1;
+    for (int i = 0; i < FUZZ_BIG_LIMBS; i++) {
+        carry += (uint64_t)~a.limb[i];
+        a.limb[i] = (uint64_t)carry;
+        carry >>= 64;
+    }
+    return a;
+}
+
+static inline fuzz_big_t fuzz_big_sub(fuzz_big_t a, const fuzz_big_t b)
+{
+    return fuzz_big_add(a, fuzz_big_negate(b));
+}
+
+static inline int fuzz_big_sign(const fuzz_big_t a)
+{
+    if (fuzz_big_negative(a))
+        return -1;
+    for (int i = 0; i < FUZZ_BIG_LIMBS; i++)
+        if (a.limb[i])
+            return 1;
+    return 0;
+}
+
+/* a * b modulo 2^768: magnitudes multiplied over their nonzero limbs only
+ * (most values are far shorter than the type), the sign applied after. */
+static inline fuzz_big_t fuzz_big_mul(const fuzz_big_t a, const fuzz_big_t b)
+{
+    int negative = fuzz_big_negative(a) != fuzz_big_negative(b);
+    fuzz_big_t x = fuzz_big_negative(a) ? fuzz_big_negate(a) : a;
+    fuzz_big_t y = fuzz_big_negative(b) ? fuzz_big_negate(b) : b;
+    int nx = FUZZ_BIG_LIMBS, ny = FUZZ_BIG_LIMBS;
+    while (nx > 0 && x.limb[nx - 1] == 0)
+        nx--;
+    while (ny > 0 && y.limb[ny - 1] == 0)
+        ny--;
+    fuzz_big_t r = fuzz_big_from(0);
+    for (int i = 0; i < nx; i++) {
         unsigned __int128 carry = 0;
-        for (int j = 0; j < 2; j++) {
-            carry += (unsigned __int128)x[i] * y[j] + w.limb[i + j];
-            w.limb[i + j] = (uint64_t)carry;
+        for (int j = 0; j < ny && i + j < FUZZ_BIG_LIMBS; j++) {
+            carry += (unsigned __int128)x.limb[i] * y.limb[j] + r.limb[i + j];
+            r.limb[i + j] = (uint64_t)carry;
             carry >>= 64;
         }
-        w.limb[i + 2] = (uint64_t)carry;
+        if (i + ny < FUZZ_BIG_LIMBS)
+            r.limb[i + ny] = (uint64_t)carry;
     }
-    return negative ? fuzz_wide_negate(w) : w;
+    return negative ? fuzz_big_negate(r) : r;
 }
 
-static inline int fuzz_wide_sign(fuzz_wide_t a)
+/* a * b - c * d */
+static inline fuzz_big_t fuzz_big_cross(const fuzz_big_t a, const fuzz_big_t b,
+                                        const fuzz_big_t c, const fuzz_big_t d)
 {
-    if (a.limb[3] >> 63)
-        return -1;
-    return (a.limb[0] | a.limb[1] | a.limb[2] | a.limb[3]) ? 1 : 0;
+    return fuzz_big_sub(fuzz_big_mul(a, b), fuzz_big_mul(c, d));
 }
 
 /* Exact signs of the three predicates, by the textbook determinants. */
@@ -204,10 +237,13 @@ static inline int fuzz_incircle(vor_point_t a, vor_point_t b, vor_point_t c, vor
     __int128 alift = (__int128)adx * adx + (__int128)ady * ady;
     __int128 blift = (__int128)bdx * bdx + (__int128)bdy * bdy;
     __int128 clift = (__int128)cdx * cdx + (__int128)cdy * cdy;
-    fuzz_wide_t det = fuzz_wide_mul((__int128)bdx * cdy - (__int128)cdx * bdy, alift);
-    det = fuzz_wide_add(det, fuzz_wide_mul((__int128)cdx * ady - (__int128)adx * cdy, blift));
-    det = fuzz_wide_add(det, fuzz_wide_mul((__int128)adx * bdy - (__int128)bdx * ady, clift));
-    return fuzz_wide_sign(det);
+    fuzz_big_t det = fuzz_big_mul(fuzz_big_from((__int128)bdx * cdy - (__int128)cdx * bdy),
+                                  fuzz_big_from(alift));
+    det = fuzz_big_add(det, fuzz_big_mul(fuzz_big_from((__int128)cdx * ady - (__int128)adx * cdy),
+                                         fuzz_big_from(blift)));
+    det = fuzz_big_add(det, fuzz_big_mul(fuzz_big_from((__int128)adx * bdy - (__int128)bdx * ady),
+                                         fuzz_big_from(clift)));
+    return fuzz_big_sign(det);
 }
 
 /* |q - p|^2, exact (< 2^65). */

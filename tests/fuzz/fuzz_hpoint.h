@@ -4,110 +4,18 @@
  * (X / W, Y / W): the crossing vertices of vor_cdt.h and the centroids of
  * triangles on them, for the API harness's check of the constrained
  * triangulation. Written apart from the library's src/crossing.c, so the
- * harness is an independent reference: two's complement integers of 12
- * 64-bit limbs, computed modulo 2^768, which is exact when the result fits.
- * The largest value is the incircle determinant of four crossing vertices
+ * harness is an independent reference, on fuzz_common.h's integers. The
+ * largest value is the incircle determinant of four crossing vertices
  * (|X|, |Y| < 2^98, 0 < W < 2^66, rows (X W, Y W, X^2 + Y^2, W^2)):
- * 24 terms below 2^654, well inside 767 bits. Host-only, header-only.
+ * 24 terms below 2^654, well inside their 767 bits. Host-only,
+ * header-only.
  */
 #ifndef VOR_FUZZ_HPOINT_H
 #define VOR_FUZZ_HPOINT_H
 
 #include <stdint.h>
 
-#include "vor.h"
-
-#define FUZZ_BIG_LIMBS 12
-
-typedef struct {
-    uint64_t limb[FUZZ_BIG_LIMBS];
-} fuzz_big_t;
-
-static inline fuzz_big_t fuzz_big_from(__int128 v)
-{
-    fuzz_big_t b;
-    uint64_t fill = v < 0 ? ~0ull : 0ull;
-    b.limb[0] = (uint64_t)v;
-    b.limb[1] = (uint64_t)((unsigned __int128)v >> 64);
-    for (int i = 2; i < FUZZ_BIG_LIMBS; i++)
-        b.limb[i] = fill;
-    return b;
-}
-
-static inline fuzz_big_t fuzz_big_add(fuzz_big_t a, const fuzz_big_t b)
-{
-    unsigned __int128 carry = 0;
-    for (int i = 0; i < FUZZ_BIG_LIMBS; i++) {
-        carry += (unsigned __int128)a.limb[i] + b.limb[i];
-        a.limb[i] = (uint64_t)carry;
-        carry >>= 64;
-    }
-    return a;
-}
-
-static inline int fuzz_big_negative(const fuzz_big_t a)
-{
-    return (int)(a.limb[FUZZ_BIG_LIMBS - 1] >> 63);
-}
-
-static inline fuzz_big_t fuzz_big_negate(fuzz_big_t a)
-{
-    unsigned __int128 carry = 1;
-    for (int i = 0; i < FUZZ_BIG_LIMBS; i++) {
-        carry += (uint64_t)~a.limb[i];
-        a.limb[i] = (uint64_t)carry;
-        carry >>= 64;
-    }
-    return a;
-}
-
-static inline fuzz_big_t fuzz_big_sub(fuzz_big_t a, const fuzz_big_t b)
-{
-    return fuzz_big_add(a, fuzz_big_negate(b));
-}
-
-static inline int fuzz_big_sign(const fuzz_big_t a)
-{
-    if (fuzz_big_negative(a))
-        return -1;
-    for (int i = 0; i < FUZZ_BIG_LIMBS; i++)
-        if (a.limb[i])
-            return 1;
-    return 0;
-}
-
-/* a * b modulo 2^768: magnitudes multiplied over their nonzero limbs only
- * (most values are far shorter than the type), the sign applied after. */
-static inline fuzz_big_t fuzz_big_mul(const fuzz_big_t a, const fuzz_big_t b)
-{
-    int negative = fuzz_big_negative(a) != fuzz_big_negative(b);
-    fuzz_big_t x = fuzz_big_negative(a) ? fuzz_big_negate(a) : a;
-    fuzz_big_t y = fuzz_big_negative(b) ? fuzz_big_negate(b) : b;
-    int nx = FUZZ_BIG_LIMBS, ny = FUZZ_BIG_LIMBS;
-    while (nx > 0 && x.limb[nx - 1] == 0)
-        nx--;
-    while (ny > 0 && y.limb[ny - 1] == 0)
-        ny--;
-    fuzz_big_t r = fuzz_big_from(0);
-    for (int i = 0; i < nx; i++) {
-        unsigned __int128 carry = 0;
-        for (int j = 0; j < ny && i + j < FUZZ_BIG_LIMBS; j++) {
-            carry += (unsigned __int128)x.limb[i] * y.limb[j] + r.limb[i + j];
-            r.limb[i + j] = (uint64_t)carry;
-            carry >>= 64;
-        }
-        if (i + ny < FUZZ_BIG_LIMBS)
-            r.limb[i + ny] = (uint64_t)carry;
-    }
-    return negative ? fuzz_big_negate(r) : r;
-}
-
-/* a * b - c * d */
-static inline fuzz_big_t fuzz_big_cross(const fuzz_big_t a, const fuzz_big_t b,
-                                        const fuzz_big_t c, const fuzz_big_t d)
-{
-    return fuzz_big_sub(fuzz_big_mul(a, b), fuzz_big_mul(c, d));
-}
+#include "fuzz_common.h"
 
 /* A point (x / w, y / w) with w > 0. */
 typedef struct {
