@@ -201,6 +201,8 @@ typedef struct vor_stats {
     uint32_t orient2d_perturbed; /* perturbed calls decided by the perturbation */
     uint32_t incircle_perturbed;
     uint32_t closer_perturbed;
+    uint32_t power;           /* power tests and comparisons of unequal weights */
+    uint32_t power_perturbed; /* of those, the ties the perturbation decided */
 } vor_stats_t;
 
 /*
@@ -252,6 +254,36 @@ int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t 
  * nearest to a point that coincides with one.
  */
 int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b);
+
+/*
+ * Power test: the exact sign of det of the rows (x, y, x^2 + y^2 - w, 1)
+ * of the weighted points (a, wa), (b, wb), (c, wc), (d, wd): positive when
+ * d is in conflict with the counterclockwise a, b, c (its power distance
+ * to their orthogonal circle, |d - z|^2 - wd - r^2, is negative: the
+ * triangle is not a triangle of the power diagram's dual once d is in),
+ * negated for clockwise a, b, c, 0 when tied. With equal weights it is
+ * vor_incircle. Every int32 coordinate and every int64 weight, exact:
+ * equal weights take vor_incircle's tiers, others 192-bit sums. Adding
+ * one constant to all four weights keeps the sign. Never fails.
+ */
+int vor_power_test(vor_point_t a, int64_t wa, vor_point_t b, int64_t wb, vor_point_t c,
+                   int64_t wc, vor_point_t d, int64_t wd);
+
+/*
+ * vor_power_test of sites[i], .., sites[l] with weights[i], .., weights[l]
+ * under the symbolic perturbation (the sites move as for vor_incircle_sos;
+ * weights stay): -1 or 1. Distinct indices: 0 (a bad argument) when sites
+ * or weights is NULL or two indices are equal.
+ */
+int vor_power_test_sos(const vor_point_t *sites, const int64_t *weights, uint32_t i,
+                       uint32_t j, uint32_t k, uint32_t l);
+
+/*
+ * Exact sign of (|q-a|^2 - wa) - (|q-b|^2 - wb): -1 when q is strictly
+ * closer to (a, wa) in power distance, 1 when strictly closer to (b, wb),
+ * 0 when tied. Every int32 coordinate and int64 weight. Never fails.
+ */
+int vor_power_closer(vor_point_t q, vor_point_t a, int64_t wa, vor_point_t b, int64_t wb);
 
 
 /* ================================================================== */

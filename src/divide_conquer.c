@@ -1216,6 +1216,8 @@ static void stats_add(vor_stats_t *to, const vor_stats_t *from)
     to->orient2d_perturbed += from->orient2d_perturbed;
     to->incircle_perturbed += from->incircle_perturbed;
     to->closer_perturbed += from->closer_perturbed;
+    to->power += from->power;
+    to->power_perturbed += from->power_perturbed;
 }
 #define HALF_STATS(x) (&(x)->stats)
 #else

@@ -448,6 +448,8 @@ static inline void vor__stats_copy(vor_stats_t *to, const vor_stats_t *from)
     to->orient2d_perturbed = from->orient2d_perturbed;
     to->incircle_perturbed = from->incircle_perturbed;
     to->closer_perturbed = from->closer_perturbed;
+    to->power = from->power;
+    to->power_perturbed = from->power_perturbed;
 }
 
 static inline void vor__stats_clear(vor_stats_t *s)
@@ -460,6 +462,8 @@ static inline void vor__stats_clear(vor_stats_t *s)
     s->orient2d_perturbed = 0;
     s->incircle_perturbed = 0;
     s->closer_perturbed = 0;
+    s->power = 0;
+    s->power_perturbed = 0;
 }
 #endif
 

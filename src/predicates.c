@@ -182,6 +182,101 @@ VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned 
     vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
 }
 
+/* ------------------------------------------------------------------ */
+/* Power test and power distance                                       */
+/*
+ * The power test's rows are (x, y, x^2 + y^2 - w, 1); relative to the
+ * fourth point and its weight, row r is (x, y, lift - dw, 0) with
+ * dw = w_r - w_d, so the determinant is the incircle's three lift terms
+ * plus three weight terms -dw cross(the other two rows). A weight
+ * difference of two int64 is below 2^64 in magnitude, a cross product
+ * below 2^65: each weight term is below 2^129 and goes to the sum of its
+ * sign beside the lift terms (< 2^130): both sums stay below 2^133.
+ */
+
+/* *sums += -dw (cross as magnitude low + high 2^64 and sign), where
+ * dw = w - base: the sum of the product's sign takes it. The difference
+ * is taken modulo 2^64, exact as a magnitude below 2^64. */
+VOR__INLINE void add_weight_term(vor__mw_u192_t sums[2], int64_t w, int64_t base,
+                                 bool cross_negative, uint64_t low, uint64_t high)
+{
+    bool lighter = w < base; /* dw < 0 */
+    uint64_t dw = lighter ? ((uint64_t)base - (uint64_t)w) : ((uint64_t)w - (uint64_t)base);
+    /* -dw cross is negative when dw and cross have the same sign */
+    vor__mw_u192_add_product(&sums[(cross_negative == lighter) ? 1u : 0u], dw, 0u, low, high);
+}
+
+/* The power test of the differences d (a - d, b - d, c - d as x, y pairs,
+ * each below 2^32 in magnitude) and the weights w (a, b, c, d). */
+static VOR__NOINLINE int power_wide(const int64_t d[6], const int64_t w[4])
+{
+    vor__mw_u192_t sums[2]; /* positive, negative */
+    clear_sums(sums);
+    for (unsigned r = 0; r < 3u; r++) {
+        unsigned p = 2u * r;
+        unsigned u = 2u * next_of[r];
+        unsigned v = 2u * next_of[next_of[r]];
+        uint64_t lift_high;
+        uint64_t lift = wide_lift(d[p], d[p + 1u], &lift_high);
+        uint64_t low;
+        uint64_t high;
+        bool negative = wide_cross(d[u], d[u + 1u], d[v], d[v + 1u], &low, &high);
+        vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
+        add_weight_term(sums, w[r], w[3], negative, low, high);
+    }
+    return vor__mw_u192_compare(&sums[0], &sums[1]);
+}
+
+int vor__power_exact(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                     const vor_point_t *dp, const int64_t w[4], vor_stats_t *stats)
+{
+    if ((w[0] == w[3]) && (w[1] == w[3]) && (w[2] == w[3])) {
+        return vor__incircle_exact(a, b, c, dp, stats);
+    }
+    VOR__COUNT(stats, power);
+    int64_t d[6] = {(int64_t)a->x - dp->x, (int64_t)a->y - dp->y,
+                    (int64_t)b->x - dp->x, (int64_t)b->y - dp->y,
+                    (int64_t)c->x - dp->x, (int64_t)c->y - dp->y};
+    return power_wide(d, w);
+}
+
+int vor_power_test(vor_point_t a, int64_t wa, vor_point_t b, int64_t wb, vor_point_t c,
+                   int64_t wc, vor_point_t d, int64_t wd)
+{
+    const int64_t w[4] = {wa, wb, wc, wd};
+    return vor__power_exact(&a, &b, &c, &d, w, NULL);
+}
+
+/* (|q-a|^2 - wa) - (|q-b|^2 - wb) compared as |q-a|^2 + (wb + 2^63)
+ * against |q-b|^2 + (wa + 2^63): squared distances below 2^65 (a word and
+ * its 65th bit) plus a word, below 2^66 each: a word and a high part. */
+int vor__power_closer_sign(const vor_point_t *q, const vor_point_t *a, int64_t wa,
+                           const vor_point_t *b, int64_t wb, vor_stats_t *stats)
+{
+    if (wa == wb) {
+        return vor__closer_sign(q, a, b, stats);
+    }
+    VOR__COUNT(stats, power);
+    const uint64_t offset = (uint64_t)1 << 63;
+    uint64_t a_high;
+    uint64_t da = wide_lift((int64_t)a->x - q->x, (int64_t)a->y - q->y, &a_high);
+    uint64_t b_high;
+    uint64_t db = wide_lift((int64_t)b->x - q->x, (int64_t)b->y - q->y, &b_high);
+    uint64_t left = da + ((uint64_t)wb ^ offset);
+    a_high += (left < da) ? 1u : 0u;
+    uint64_t right = db + ((uint64_t)wa ^ offset);
+    b_high += (right < db) ? 1u : 0u;
+    if (a_high != b_high) {
+        return (a_high > b_high) ? 1 : -1;
+    }
+    return (left > right) - (left < right);
+}
+
+int vor_power_closer(vor_point_t q, vor_point_t a, int64_t wa, vor_point_t b, int64_t wb)
+{
+    return vor__power_closer_sign(&q, &a, wa, &b, wb, NULL);
+}
+
 /* The mid tier's filter (32-bit limbs, and not at -Os, where its 280
  * bytes on Cortex-M3 count for more than its speed). */
 #if VOR_LIMB_BITS == 32 && !defined(__OPTIMIZE_SIZE__)
@@ -432,9 +527,13 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
  * and a 65th bit. The third holds x^2 + y^2 < 2^65 (a word and a 65th
  * bit), 2x or 2y (< 2^33, taken as magnitude and sign) or 1. Each product
  * < 2^130 goes to the sum of its sign, three of them < 2^132 in 192 bits.
- * Out of line: one copy serves every term the closed forms do not
- * decide, for every size of difference. */
-static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsigned kinds)
+ * With weights (w: the rows' and the top site's, else NULL) a point row's
+ * third entry is x^2 + y^2 - dw, and its weight term (below 2^129) joins
+ * the sums as in the power test (power_wide). Out of line: one copy
+ * serves every term the closed forms do not decide, for every size of
+ * difference. */
+static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], const int64_t *w,
+                                     unsigned kinds)
 {
     int64_t e[3][2];
     uint64_t c[3];
@@ -463,6 +562,9 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsig
         uint64_t high;
         bool negative = wide_cross(e[u][0], e[u][1], e[v][0], e[v][1], &low, &high);
         vor__mw_u192_add_product(&sums[negative != c_negative[r]], c[r], c_high[r], low, high);
+        if ((w != NULL) && (kind[r] == ROW_POINT)) {
+            add_weight_term(sums, w[r], w[3], negative, low, high);
+        }
     }
     return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
@@ -601,12 +703,20 @@ VOR__INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32
  * for the first terms' closed forms): -1 or 1. Out of line, and the rows
  * found and their differences computed again: rarely reached, and its
  * frame is not stacked on the first terms' (first_two_terms). */
-static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
-                                     uint32_t k, uint32_t l, unsigned first)
+static VOR__NOINLINE int later_terms(const vor_point_t *sites, const int64_t *weights,
+                                     uint32_t i, uint32_t j, uint32_t k, uint32_t l,
+                                     unsigned first)
 {
     uint32_t ids[3];
     uint32_t top;
     bool swapped = move_top(i, j, k, l, ids, &top);
+    int64_t w[4] = {0, 0, 0, 0};
+    if (weights != NULL) {
+        w[0] = weights[ids[0]];
+        w[1] = weights[ids[1]];
+        w[2] = weights[ids[2]];
+        w[3] = weights[top];
+    }
     int64_t x[3];
     int64_t y[3];
     unsigned shifts = 0; /* 2 rank(r) for row r, in bits 4r .. 4r + 3 */
@@ -631,7 +741,7 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint3
             squares += (kind == (unsigned)ROW_SQUARE) ? 1u : 0u;
         }
         if (squares < 2u) { /* else two equal rows: the term is 0 */
-            sign = term_sign(x, y, kinds);
+            sign = term_sign(x, y, (weights != NULL) ? w : NULL, kinds);
         }
     }
     VOR_ASSERT(sign != 0);
@@ -697,7 +807,35 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     if ((sign == 1) || (sign == -1)) {
         return sign;
     }
-    return later_terms(sites, i, j, k, l, (sign == 0) ? 1u : 3u);
+    return later_terms(sites, NULL, i, j, k, l, (sign == 0) ? 1u : 3u);
+}
+
+/* The perturbed power test: the incircle's when the four weights are
+ * equal (its rows are then the incircle's, the weights cancelling), else
+ * every term from the first by term_sign: rare, and a closed form would
+ * have to carry the weights. */
+int vor__power_perturbed(const vor_point_t *sites, const int64_t *weights, uint32_t i,
+                         uint32_t j, uint32_t k, uint32_t l, vor_stats_t *stats)
+{
+    int64_t wl = weights[l];
+    if ((weights[i] == wl) && (weights[j] == wl) && (weights[k] == wl)) {
+        return vor__incircle_perturbed(sites, i, j, k, l, stats);
+    }
+    VOR__COUNT(stats, power_perturbed);
+    VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
+    return later_terms(sites, weights, i, j, k, l, 1u);
+}
+
+int vor_power_test_sos(const vor_point_t *sites, const int64_t *weights, uint32_t i,
+                       uint32_t j, uint32_t k, uint32_t l)
+{
+    if ((sites == NULL) || (weights == NULL) || (i == j) || (i == k) || (i == l) || (j == k) ||
+        (j == l) || (k == l)) {
+        return 0; /* the only 0 it returns: no perturbation orders these */
+    }
+    const int64_t w[4] = {weights[i], weights[j], weights[k], weights[l]};
+    int sign = vor__power_exact(&sites[i], &sites[j], &sites[k], &sites[l], w, NULL);
+    return (sign != 0) ? sign : vor__power_perturbed(sites, weights, i, j, k, l, NULL);
 }
 
 /*

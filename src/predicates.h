@@ -55,11 +55,22 @@ int vor__closer_sign(const vor_point_t *q, const vor_point_t *a, const vor_point
 int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
                     vor_stats_t *stats);
 
+/* The power test (vor_power_test) of points in place, w their weights in
+ * order (a, b, c, d), counted in stats; and the power distance comparison
+ * (vor_power_closer). Equal weights take the incircle's (closer's) tiers
+ * and counters. */
+int vor__power_exact(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                     const vor_point_t *dp, const int64_t w[4], vor_stats_t *stats);
+int vor__power_closer_sign(const vor_point_t *q, const vor_point_t *a, int64_t wa,
+                           const vor_point_t *b, int64_t wb, vor_stats_t *stats);
+
 /* The perturbed decisions, for exact signs already known to be 0. */
 int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, vor_stats_t *stats);
 int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
                             uint32_t k, uint32_t l, vor_stats_t *stats);
+int vor__power_perturbed(const vor_point_t *sites, const int64_t *weights, uint32_t i,
+                         uint32_t j, uint32_t k, uint32_t l, vor_stats_t *stats);
 
 VOR__INLINE int vor__orient2d_exact(const vor_point_t *a, const vor_point_t *b,
                                     const vor_point_t *c, vor_stats_t *stats)

@@ -132,7 +132,8 @@ static bool same_stats(const vor_t *da, const vor_t *db)
     const vor_stats_t *a = &sa, *b = &sb;
     bool same = a->orient2d_perturbed == b->orient2d_perturbed &&
                 a->incircle_perturbed == b->incircle_perturbed &&
-                a->closer_perturbed == b->closer_perturbed;
+                a->closer_perturbed == b->closer_perturbed && a->power == b->power &&
+                a->power_perturbed == b->power_perturbed;
     for (unsigned t = 0; t < VOR_TIERS; t++) {
         same &= a->orient2d[t] == b->orient2d[t] && a->incircle[t] == b->incircle[t] &&
                 a->closer[t] == b->closer[t];

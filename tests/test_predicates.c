@@ -310,6 +310,123 @@ static void check_grid_antisymmetry(void)
 }
 
 /* ------------------------------------------------------------------ */
+/* The power test and the power distance                               */
+
+static vor_point_t power_point(const struct power_vector *v, unsigned k)
+{
+    vor_point_t p = {v->xy[2 * k], v->xy[2 * k + 1]};
+    return p;
+}
+
+/* v's power test with its points in the order perm, weights shifted by
+ * `shift` (a common shift keeps the sign): the public call, checked
+ * against the counted one (9 when they differ); perturbed: under the
+ * perturbation, site rank k holding point k. */
+static int power_sign(const struct power_vector *v, const unsigned perm[4], int64_t shift,
+                      bool perturbed, vor_stats_t *stats)
+{
+    vor_point_t p[4];
+    int64_t w[4];
+    vor_point_t sites[4];
+    int64_t weights[4];
+    uint32_t id[4];
+    for (unsigned k = 0; k < 4; k++) {
+        p[k] = power_point(v, perm[k]);
+        w[k] = v->w[perm[k]] + shift;
+        unsigned rank = (v->ranks >> (2 * k)) & 3u;
+        sites[rank] = power_point(v, k);
+        weights[rank] = v->w[k] + shift;
+    }
+    for (unsigned k = 0; k < 4; k++) {
+        id[k] = (v->ranks >> (2 * perm[k])) & 3u;
+    }
+    if (perturbed) {
+        int sign = vor_power_test_sos(sites, weights, id[0], id[1], id[2], id[3]);
+        const int64_t wid[4] = {weights[id[0]], weights[id[1]], weights[id[2]], weights[id[3]]};
+        int counted = vor__power_exact(&sites[id[0]], &sites[id[1]], &sites[id[2]],
+                                       &sites[id[3]], wid, stats);
+        counted = (counted != 0) ? counted
+                                 : vor__power_perturbed(sites, weights, id[0], id[1], id[2],
+                                                        id[3], stats);
+        return (sign == counted) ? sign : 9;
+    }
+    int sign = vor_power_test(p[0], w[0], p[1], w[1], p[2], w[2], p[3], w[3]);
+    int counted = vor__power_exact(&p[0], &p[1], &p[2], &p[3], w, stats);
+    return (sign == counted) ? sign : 9;
+}
+
+/* The power vectors (tools/gen_predicate_vectors.py): exact and perturbed
+ * signs, a transposition negating them and a rotation keeping them, a
+ * common weight shift keeping them, equal weights agreeing with the
+ * incircle test, and the counters: equal weights count as incircle
+ * tests, the others as power tests. */
+static void check_power_vectors(void)
+{
+    static const unsigned identity[4] = {0, 1, 2, 3};
+    static const unsigned swap01[4] = {1, 0, 2, 3};
+    static const unsigned rotate[4] = {1, 2, 0, 3};
+    vor_stats_t stats = {0};
+    unsigned long bad = 0, tests = 0, ties = 0, closers = 0, equal = 0, perturbed_power = 0;
+    unsigned long families[PWF_FAMILIES] = {0};
+    for (size_t n = 0; n < power_vector_count; n++) {
+        const struct power_vector *v = &power_vectors[n];
+        families[v->family]++;
+        unsigned long before = bad;
+        if (v->op == PW_CLOSER) {
+            vor_point_t q = power_point(v, 0), a = power_point(v, 1), b = power_point(v, 2);
+            int sign = vor_power_closer(q, a, v->w[1], b, v->w[2]);
+            bad += (sign != v->exact) ? 1u : 0u;
+            bad += (vor_power_closer(q, b, v->w[2], a, v->w[1]) != -v->exact) ? 1u : 0u;
+            bad += (vor__power_closer_sign(&q, &a, v->w[1], &b, v->w[2], &stats) != v->exact) ? 1u : 0u;
+            closers++;
+        } else {
+            bool same = v->w[0] == v->w[3] && v->w[1] == v->w[3] && v->w[2] == v->w[3];
+            equal += same ? 1u : 0u;
+            ties += (v->exact == 0) ? 1u : 0u;
+            perturbed_power += (v->exact == 0 && !same) ? 1u : 0u;
+            bad += (power_sign(v, identity, 0, false, &stats) != v->exact) ? 1u : 0u;
+            bad += (power_sign(v, swap01, 0, false, NULL) != -v->exact) ? 1u : 0u;
+            bad += (power_sign(v, rotate, 0, false, NULL) != v->exact) ? 1u : 0u;
+            bad += (power_sign(v, identity, 0, true, &stats) != v->perturbed) ? 1u : 0u;
+            bad += (power_sign(v, swap01, 0, true, NULL) != -v->perturbed) ? 1u : 0u;
+            bad += (power_sign(v, rotate, 0, true, NULL) != v->perturbed) ? 1u : 0u;
+            /* a shift that keeps every weight in int64 */
+            int64_t low = v->w[0], high = v->w[0];
+            for (unsigned k = 1; k < 4; k++) {
+                low = (v->w[k] < low) ? v->w[k] : low;
+                high = (v->w[k] > high) ? v->w[k] : high;
+            }
+            int64_t shift = (high <= INT64_MAX - ((int64_t)1 << 40)) ? ((int64_t)1 << 40)
+                            : (low >= INT64_MIN + 12345) ? -12345 : 0;
+            bad += (power_sign(v, identity, shift, false, NULL) != v->exact) ? 1u : 0u;
+            bad += (power_sign(v, identity, shift, true, NULL) != v->perturbed) ? 1u : 0u;
+            if (same) {
+                vor_point_t p[4] = {power_point(v, 0), power_point(v, 1), power_point(v, 2),
+                                    power_point(v, 3)};
+                bad += (vor_incircle(p[0], p[1], p[2], p[3]) != v->exact) ? 1u : 0u;
+            }
+            tests++;
+        }
+        if (bad != before && before < 5u) {
+            test_printf("power vector %zu (op %u, family %u) wrong\n", n, v->op, v->family);
+        }
+    }
+    test_printf("power vectors: %lu tests (%lu exactly zero, %lu with equal weights), %lu "
+                "comparisons\n", tests, ties, equal, closers);
+    CHECK(bad == 0, "power vectors: %lu wrong", bad);
+    for (unsigned f = 0; f < PWF_FAMILIES; f++) {
+        CHECK(families[f] > 0, "no power vectors of family %u", f);
+    }
+#if VOR_STATS
+    /* every counted call is one count: the unequal weights' exact tests and
+     * comparisons in stats.power, their ties in stats.power_perturbed */
+    CHECK(stats.power_perturbed == perturbed_power && stats.power > tests - equal,
+          "power counters %u (ties %u), for %lu tests of unequal weights (ties %lu)",
+          stats.power, stats.power_perturbed, tests - equal, perturbed_power);
+#endif
+}
+
+/* ------------------------------------------------------------------ */
 /* The perturbation against its definition                            */
 /*
  * An independent evaluation of the perturbed signs: straight from the
@@ -1358,6 +1475,7 @@ void test_predicates(void)
     TEST_CASE("shift") check_shift();
     TEST_CASE("bounds") check_bounds();
     TEST_CASE("vectors") check_vectors();
+    TEST_CASE("power_vectors") check_power_vectors();
     TEST_CASE("grid_antisymmetry") check_grid_antisymmetry();
     TEST_CASE("perturbation_reference") check_perturbation_reference();
     TEST_CASE("first_term_filter") check_first_term_filter();

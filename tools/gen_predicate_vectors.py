@@ -17,9 +17,15 @@ Conventions (tests/vectors/predicate_vectors.h holds the emitted layout):
                          a, b, c, d (> 0 when d is inside the circle through
                          the counterclockwise a, b, c).
 * closer(q, a, b)      = sign (|q - a|^2 - |q - b|^2); never perturbed.
+* power(a, b, c, d)    = sign det of the rows (x, y, x^2 + y^2 - w, 1) of
+                         the weighted points (the power test; incircle when
+                         the weights are equal).
+* power_closer(q, a, b) = sign ((|q - a|^2 - wa) - (|q - b|^2 - wb)), with
+                         q's weight unused; never perturbed.
 * Symbolic perturbation: the site of rank r (0..3) moves to
       (x + eps^(4*16^r), y + eps^(16^r)),  eps -> 0+,
-  the lifted coordinate is recomputed from the moved x and y, and the
+  the lifted coordinate is recomputed from the moved x and y (the weights
+  stay), and the
   perturbed sign is the sign of the coefficient of the lowest power of eps
   in the expanded determinant.  Rank 0 has the largest perturbation.
 * ranks field: rank of the k-th point in call order is (ranks >> 2k) & 3.
@@ -124,7 +130,7 @@ def exact_sign(op, pts):
 # carries; the expansion asserts that (no two different factor sets share
 # an exponent), which is what makes "lowest exponent" well defined.
 
-def _perturbed_row(op, pt, rank):
+def _perturbed_row(op, pt, rank, weight=0):
     x, y = pt
     e_dy = 16 ** rank
     e_dx = 4 * 16 ** rank
@@ -134,18 +140,20 @@ def _perturbed_row(op, pt, rank):
     if op == OP_ORIENT2D:
         return [col_x, col_y, one]
     # (x + dx)^2 + (y + dy)^2 = x^2 + y^2 + 2x dx + dx^2 + 2y dy + dy^2
-    lift = [(0, x * x + y * y, None),
+    lift = [(0, x * x + y * y - weight, None),
             (e_dx, 2 * x, (rank, "dx")), (2 * e_dx, 1, (rank, "dx^2")),
             (e_dy, 2 * y, (rank, "dy")), (2 * e_dy, 1, (rank, "dy^2"))]
     return [col_x, col_y, lift, one]
 
 
-def perturbed_poly(op, pts, ranks):
-    """The perturbed determinant as {exponent of eps: integer coefficient}."""
+def perturbed_poly(op, pts, ranks, weights=None):
+    """The perturbed determinant as {exponent of eps: integer coefficient};
+    weights (the power test) go into the lifted coordinate."""
     assert op in (OP_ORIENT2D, OP_INCIRCLE)
     n = NPOINTS[op]
     assert len(pts) == n and sorted(ranks) == list(range(n))
-    rows = [_perturbed_row(op, p, r) for p, r in zip(pts, ranks)]
+    weights = weights or [0] * n
+    rows = [_perturbed_row(op, p, r, w) for p, r, w in zip(pts, ranks, weights)]
     poly = {}
     factors_of = {}
     for perm, psign in PERMS[n]:
@@ -166,8 +174,8 @@ def perturbed_poly(op, pts, ranks):
     return poly
 
 
-def perturbed_sign(op, pts, ranks):
-    poly = perturbed_poly(op, pts, ranks)
+def perturbed_sign(op, pts, ranks, weights=None):
+    poly = perturbed_poly(op, pts, ranks, weights)
     nonzero = [e for e, c in poly.items() if c != 0]
     assert nonzero, ("perturbed determinant vanishes identically", op, pts, ranks)
     return sgn(poly[min(nonzero)])
@@ -211,17 +219,18 @@ def _det_laplace(m, rows_order):
     return total
 
 
-def concrete_perturbed_sign(op, pts, ranks):
+def concrete_perturbed_sign(op, pts, ranks, weights=None):
     n = NPOINTS[op]
+    weights = weights or [0] * n
     bound = 1
-    for x, y in pts:  # permanent <= product of row sums of |coefficients|
+    for (x, y), w in zip(pts, weights):  # permanent <= product of row sums
         row = abs(x) + 1 + abs(y) + 1 + 1
         if op == OP_INCIRCLE:
-            row += x * x + y * y + 2 * abs(x) + 1 + 2 * abs(y) + 1
+            row += abs(x * x + y * y - w) + 2 * abs(x) + 1 + 2 * abs(y) + 1
         bound *= row
     k = bound.bit_length() + 1
     m = []
-    for (x, y), r in zip(pts, ranks):
+    for (x, y), r, w in zip(pts, ranks, weights):
         b = 7 ** r
         a = 3 * b
         top = 2 * a
@@ -235,7 +244,7 @@ def concrete_perturbed_sign(op, pts, ranks):
         if op == OP_ORIENT2D:
             m.append([px, py, scale])
         else:
-            lift = (x * x + y * y) * scale + 2 * x * ex + ex2 + 2 * y * ey + ey2
+            lift = (x * x + y * y - w) * scale + 2 * x * ex + ex2 + 2 * y * ey + ey2
             m.append([px, py, lift, scale])
     order = sorted(range(n), key=lambda i: -ranks[i])
     value = _det_laplace(m, order)
@@ -1323,13 +1332,247 @@ class Generator:
 
 
 # ---------------------------------------------------------------------------
+# The power test and the power distance (weighted points): a table of their
+# own (struct power_vector), from a generator of their own seed, so that the
+# cases above do not depend on it.
+
+INT64_MIN = -(1 << 63)
+INT64_MAX = (1 << 63) - 1
+WEIGHT_CORNERS = [INT64_MIN, INT64_MIN + 1, -(1 << 62), -1, 0, 1, 1 << 62,
+                  INT64_MAX - 1, INT64_MAX]
+POWER_OPS = ["PW_TEST", "PW_CLOSER"]
+PW_TEST, PW_CLOSER = range(len(POWER_OPS))
+POWER_FAMILY_NAMES = ["PWF_RANDOM_FULL", "PWF_RANDOM_SMALL", "PWF_RANDOM_MID",
+                      "PWF_EQUAL_WEIGHTS", "PWF_TIED", "PWF_OFF_BY_ONE", "PWF_CORNERS"]
+(PWF_RANDOM_FULL, PWF_RANDOM_SMALL, PWF_RANDOM_MID, PWF_EQUAL_WEIGHTS, PWF_TIED,
+ PWF_OFF_BY_ONE, PWF_CORNERS) = range(len(POWER_FAMILY_NAMES))
+POWER_PLAN = {
+    PW_TEST: {PWF_RANDOM_FULL: 400, PWF_RANDOM_SMALL: 500, PWF_RANDOM_MID: 300,
+              PWF_EQUAL_WEIGHTS: 400, PWF_TIED: 960, PWF_OFF_BY_ONE: 300, PWF_CORNERS: 300},
+    PW_CLOSER: {PWF_RANDOM_FULL: 300, PWF_RANDOM_SMALL: 300, PWF_RANDOM_MID: 200,
+                PWF_EQUAL_WEIGHTS: 100, PWF_TIED: 300, PWF_OFF_BY_ONE: 100, PWF_CORNERS: 300},
+}
+
+
+def power_rows(pts, weights):
+    return [[x, y, x * x + y * y - w, 1] for (x, y), w in zip(pts, weights)]
+
+
+def power_exact_sign(op, pts, weights):
+    if op == PW_TEST:
+        return sgn(det_leibniz(power_rows(pts, weights)))
+    (qx, qy), (ax, ay), (bx, by) = pts
+    return sgn((qx - ax) ** 2 + (qy - ay) ** 2 - weights[1]
+               - (qx - bx) ** 2 - (qy - by) ** 2 + weights[2])
+
+
+def in_int64(weights):
+    return all(INT64_MIN <= w <= INT64_MAX for w in weights)
+
+
+class PowerGenerator(Generator):
+    def __init__(self, seed):
+        Generator.__init__(self, seed * 31 + 5)
+
+    def add_power(self, op, pts, weights, family, ranks=None):
+        pts = [tuple(p) for p in pts]
+        n = 4 if op == PW_TEST else 3
+        assert len(pts) == n and len(weights) == n and in_range(pts) and in_int64(weights)
+        exact = power_exact_sign(op, pts, weights)
+        if op == PW_CLOSER:
+            ranks = [0, 0, 0]
+            perturbed = exact
+        else:
+            if ranks is None:
+                ranks = self.rng.sample(range(4), 4)
+            if exact == 0:
+                perturbed = perturbed_sign(OP_INCIRCLE, pts, ranks, weights)
+                self.expansions += 1
+            else:
+                perturbed = exact
+                if self.check_rng.random() < 0.05:
+                    assert perturbed_sign(OP_INCIRCLE, pts, ranks, weights) == exact
+                    self.expansion_checks += 1
+        packed = 0
+        for k, r in enumerate(ranks):
+            packed |= r << (2 * k)
+        xy = [c for p in pts for c in p] + [0] * (8 - 2 * n)
+        self.cases.append((xy, list(weights) + [0] * (4 - n), op, exact, perturbed, packed,
+                           family))
+
+    def weight(self, bits):
+        return self.rng.randint(-(1 << bits), (1 << bits) - 1)
+
+    def radius_weight(self):
+        """A squared int32 radius: the weights a user gives most."""
+        r = self.rng.randint(0, INT32_MAX)
+        return r * r
+
+    def unimodular(self):
+        """Two integer vectors u, v with u x v = +-1: the identity's rows
+        after random shears and a swap, small enough to stay near."""
+        u, v = [1, 0], [0, 1]
+        for _ in range(self.rng.randint(1, 4)):
+            k = self.rng.randint(-3, 3)
+            if self.rng.random() < 0.5:
+                u = [u[0] + k * v[0], u[1] + k * v[1]]
+            else:
+                v = [v[0] + k * u[0], v[1] + k * u[1]]
+        if self.rng.random() < 0.5:
+            u, v = v, u
+        assert abs(cross2(u, v)) == 1
+        return u, v
+
+    def tied_test(self):
+        """Four weighted points on the power test's zero set: three points
+        of a unimodular lattice triangle (orientation +-1, so the
+        determinant moves by exactly 1 a unit of the fourth point's weight)
+        and the fourth's weight solved for; or four collinear points with
+        any weights; or a weighted point twice."""
+        u = self.rng.random()
+        if u < 0.15:
+            pts = self.collinear_points(4, distinct=self.rng.random() < 0.5)
+            return pts, [self.weight(self.rng.choice([4, 40, 62])) for _ in range(4)]
+        if u < 0.3:
+            pts = [self.any_point() for _ in range(3)]
+            weights = [self.weight(self.rng.choice([4, 40, 62])) for _ in range(3)]
+            k = self.rng.randrange(3)
+            pts.append(pts[k])
+            weights.append(weights[k])
+        else:
+            while True:
+                spread = self.rng.choice([4, 1 << 10, 1 << 14])
+                a = self.window_points(1, 1 << 20)[0]
+                e, f = self.unimodular()
+                d = (a[0] + self.rng.randint(-spread, spread),
+                     a[1] + self.rng.randint(-spread, spread))
+                pts = [a, (a[0] + e[0], a[1] + e[1]), (a[0] + f[0], a[1] + f[1]), d]
+                if not in_range(pts):
+                    continue
+                bits = self.rng.choice([4, 20, 40])
+                weights = [self.weight(bits) for _ in range(3)] + [0]
+                d0 = det_leibniz(power_rows(pts, weights))
+                weights[3] = 1
+                slope = det_leibniz(power_rows(pts, weights)) - d0
+                assert abs(slope) == 1
+                weights[3] = -d0 * slope
+                if in_int64(weights):
+                    break
+        order = self.rng.sample(range(4), 4)
+        pts = [pts[i] for i in order]
+        weights = [weights[i] for i in order]
+        assert power_exact_sign(PW_TEST, pts, weights) == 0
+        return pts, weights
+
+    def tied_closer(self):
+        while True:
+            u = self.rng.random()
+            if u < 0.5:
+                pts = [self.point() for _ in range(3)]
+            else:
+                pts = self.window_points(3, 1 << self.rng.randint(2, 20))
+            (qx, qy), (ax, ay), (bx, by) = pts
+            wa = self.weight(self.rng.choice([8, 40, 60]))
+            wb = wa - ((qx - ax) ** 2 + (qy - ay) ** 2) + (qx - bx) ** 2 + (qy - by) ** 2
+            weights = [self.weight(8), wa, wb]
+            if in_int64(weights):
+                return pts, weights
+
+    def generate_power(self):
+        for op in (PW_TEST, PW_CLOSER):
+            n = 4 if op == PW_TEST else 3
+            plan = POWER_PLAN[op]
+            for _ in range(plan[PWF_RANDOM_FULL]):
+                pts = [self.point() for _ in range(n)]
+                if self.rng.random() < 0.5:
+                    weights = [self.weight(63) for _ in range(n)]
+                else:
+                    weights = [self.radius_weight() for _ in range(n)]
+                self.add_power(op, pts, weights, PWF_RANDOM_FULL)
+            for i in range(plan[PWF_RANDOM_SMALL]):
+                pts = self.window_points(n, 4 if i % 2 == 0 else 1 << self.rng.randint(3, 13))
+                self.add_power(op, pts, [self.weight(3 if i % 2 == 0 else 20) for _ in range(n)],
+                               PWF_RANDOM_SMALL)
+            for _ in range(plan[PWF_RANDOM_MID]):
+                pts = self.window_points(n, 1 << self.rng.randint(14, 30))
+                self.add_power(op, pts, [self.weight(self.rng.randint(20, 61)) for _ in range(n)],
+                               PWF_RANDOM_MID)
+            for i in range(plan[PWF_EQUAL_WEIGHTS]):
+                if op == PW_TEST:
+                    pts = self.degenerate_source(OP_INCIRCLE) if i % 2 else \
+                        [self.point() for _ in range(4)]
+                else:
+                    pts = self.equidistant() if i % 2 else [self.point() for _ in range(3)]
+                w = self.rng.choice(WEIGHT_CORNERS + [self.weight(63)])
+                self.add_power(op, pts, [w] * n, PWF_EQUAL_WEIGHTS)
+            made = 0
+            while made < plan[PWF_TIED]:
+                if op == PW_CLOSER:
+                    pts, weights = self.tied_closer()
+                    self.add_power(op, pts, weights, PWF_TIED)
+                    made += 1
+                    continue
+                pts, weights = self.tied_test()
+                all_ranks = [list(r) for r in itertools.permutations(range(4))]
+                rank_sets = self.rng.sample(all_ranks, 4)[:plan[PWF_TIED] - made]
+                for ranks in rank_sets:
+                    self.add_power(op, pts, weights, PWF_TIED, ranks)
+                made += len(rank_sets)
+            for _ in range(plan[PWF_OFF_BY_ONE]):
+                # a tie with one weight moved by one: the smallest nonzero
+                # determinant (1 in the lattice triangles) or difference
+                while True:
+                    pts, weights = self.tied_test() if op == PW_TEST else self.tied_closer()
+                    k = self.rng.randrange(1, n) if op == PW_CLOSER else self.rng.randrange(n)
+                    weights[k] += self.rng.choice([-1, 1])
+                    if in_int64(weights) and power_exact_sign(op, pts, weights) != 0:
+                        break
+                self.add_power(op, pts, weights, PWF_OFF_BY_ONE)
+            for i in range(plan[PWF_CORNERS]):
+                values = CORNER_VALUES if i % 2 else self.rng.sample(CORNER_VALUES, 3)
+                pts = [(self.rng.choice(values), self.rng.choice(values)) for _ in range(n)]
+                wvalues = WEIGHT_CORNERS if i % 3 else self.rng.sample(WEIGHT_CORNERS, 2)
+                self.add_power(op, pts, [self.rng.choice(wvalues) for _ in range(n)],
+                               PWF_CORNERS)
+        return self.cases
+
+
+def c_int64(v):
+    if v == INT64_MIN:
+        return "INT64_MIN"
+    return "INT64_C(%d)" % v
+
+
+def render_power(cases):
+    out = ["const struct power_vector power_vectors[] = {\n"]
+    for xy, weights, op, exact, perturbed, ranks, family in cases:
+        out.append("    {{%s}, {%s}, %s, %d, %d, 0x%02x, %s},\n" % (
+            ", ".join(c_int(v) for v in xy), ", ".join(c_int64(w) for w in weights),
+            POWER_OPS[op], exact, perturbed, ranks, POWER_FAMILY_NAMES[family]))
+    out.append("};\n\n")
+    out.append("const size_t power_vector_count =\n"
+               "    sizeof power_vectors / sizeof power_vectors[0];\n")
+    return "".join(out)
+
+
+def check_power_coverage(cases):
+    zeros = {PW_TEST: 0, PW_CLOSER: 0}
+    families = set()
+    for _, _, op, exact, _, _, family in cases:
+        zeros[op] += exact == 0
+        families.add((op, family))
+    assert zeros[PW_TEST] >= 900 and zeros[PW_CLOSER] >= 300, zeros
+    assert len(families) == 2 * len(POWER_FAMILY_NAMES)
+
+
+# ---------------------------------------------------------------------------
 # Output.
 
 def c_int(v):
     return "INT32_MIN" if v == INT32_MIN else str(v)
 
 
-def render(cases, command, seed):
+def render(cases, power_cases, command, seed):
     out = []
     out.append("/*\n")
     out.append(" * Generated by: %s\n" % command)
@@ -1347,7 +1590,8 @@ def render(cases, command, seed):
             ranks, FAMILY_NAMES[family]))
     out.append("};\n\n")
     out.append("const size_t predicate_vector_count =\n"
-               "    sizeof predicate_vectors / sizeof predicate_vectors[0];\n")
+               "    sizeof predicate_vectors / sizeof predicate_vectors[0];\n\n")
+    out.append(render_power(power_cases))
     return "".join(out)
 
 
@@ -1567,8 +1811,31 @@ def selftest():
             ranks = [(packed >> (2 * k)) & 3 for k in range(n)]
             assert concrete_perturbed_sign(op, pts, ranks) == perturbed, (op, pts, ranks)
             edge_checked += 1
-    print("selftest ok: %d degenerate cases (%d at the tier edges) agree with the "
-          "concrete-eps oracle" % (checked + edge_checked, edge_checked))
+    # The power test: hand-known signs, equal weights as incircle, and its
+    # tied cases' perturbed signs against the concrete-eps oracle.
+    P = PW_TEST
+    unit = [(0, 0), (2, 0), (0, 2), (1, 1)]
+    assert power_exact_sign(P, unit, [0, 0, 0, 0]) == 1          # inside
+    assert power_exact_sign(P, unit, [0, 0, 0, -2]) == 0         # orthogonal
+    assert power_exact_sign(P, unit, [0, 0, 0, -3]) == -1        # too light
+    assert power_exact_sign(P, unit, [5, 5, 5, 5]) == 1          # a common shift
+    assert power_exact_sign(PW_CLOSER, [(0, 0), (1, 0), (3, 0)], [0, 0, 8]) == 0
+    power_gen = PowerGenerator(4242)
+    power_checked = 0
+    for case in power_gen.generate_power():
+        xy, weights, op, exact, perturbed, packed, family = case
+        if op != P:
+            continue
+        pts = [(xy[2 * k], xy[2 * k + 1]) for k in range(4)]
+        if family == PWF_EQUAL_WEIGHTS:
+            assert exact == exact_sign(I, pts)
+        if exact == 0 and power_checked < 150:
+            ranks = [(packed >> (2 * k)) & 3 for k in range(4)]
+            assert concrete_perturbed_sign(I, pts, ranks, weights) == perturbed
+            power_checked += 1
+    print("selftest ok: %d degenerate cases (%d at the tier edges, %d power tests) agree "
+          "with the concrete-eps oracle" % (checked + edge_checked + power_checked,
+                                           edge_checked, power_checked))
 
 
 def main(argv=None):
@@ -1597,7 +1864,10 @@ def main(argv=None):
     if args.seed != DEFAULT_SEED or any(a.startswith("--seed") for a in
                                         (argv if argv is not None else sys.argv[1:])):
         command += " --seed %d" % args.seed
-    text = render(cases, command, args.seed)
+    power = PowerGenerator(args.seed)
+    power_cases = power.generate_power()
+    check_power_coverage(power_cases)
+    text = render(cases, power_cases, command, args.seed)
     d = os.path.dirname(args.out)
     if d:
         os.makedirs(d, exist_ok=True)

@@ -38,4 +38,32 @@ enum predicate_family {
 extern const struct predicate_vector predicate_vectors[];
 extern const size_t predicate_vector_count;
 
+/* The power test and the power distance, on weighted points. */
+enum power_op {
+    PW_TEST = 0,  /* a, b, c, d: sign of det rows (x, y, x^2 + y^2 - w, 1) */
+    PW_CLOSER = 1 /* q, a, b: sign of (|q-a|^2 - wa) - (|q-b|^2 - wb) */
+};
+
+enum power_family {
+    PWF_RANDOM_FULL, PWF_RANDOM_SMALL, PWF_RANDOM_MID,
+    PWF_EQUAL_WEIGHTS, /* the power test is the incircle test */
+    PWF_TIED,          /* exactly 0 by construction */
+    PWF_OFF_BY_ONE,    /* a tie with one weight moved by one */
+    PWF_CORNERS,       /* int32 and int64 extremes */
+    PWF_FAMILIES
+};
+
+struct power_vector {
+    int32_t xy[8];    /* points in call order, as predicate_vector's */
+    int64_t w[4];     /* their weights (PW_CLOSER: q's unused) */
+    uint8_t op;       /* enum power_op */
+    int8_t exact;     /* exact sign */
+    int8_t perturbed; /* PW_TEST: the perturbed sign; PW_CLOSER: exact */
+    uint8_t ranks;    /* site index of the k-th point: (ranks >> 2k) & 3 */
+    uint8_t family;   /* enum power_family */
+};
+
+extern const struct power_vector power_vectors[];
+extern const size_t power_vector_count;
+
 #endif
