@@ -10,7 +10,7 @@
  *   ("integer reduction"): e.g. metres in Q16.16 are already int32.
  *
  * EXACT PREDICATES
- *   Every geometric decision in vor is one of three signs, computed exactly
+ *   Every geometric decision in vor is one of these signs, computed exactly
  *   with multi-word integers. Points are passed by value (vor_point_t), as
  *   in every call of the library, so no answer can stand for an error:
  *
@@ -22,6 +22,15 @@
  *                               = 0  cocircular
  *     vor_closer(q, a, b)       sign of |q-a|^2 - |q-b|^2:
  *                               < 0  q is strictly closer to a than to b
+ *
+ *   and for weighted points (an int64 weight w each, the power diagram's:
+ *   the power distance of q to (p, w) is |q-p|^2 - w):
+ *
+ *     vor_power_test(a, wa, .., d, wd)  > 0  d conflicts with a, b, c
+ *                               (the incircle test with each x^2 + y^2
+ *                               less its weight; equal weights: incircle)
+ *     vor_power_closer(q, a, wa, b, wb) sign of (|q-a|^2 - wa)
+ *                               - (|q-b|^2 - wb)
  *
  *   Each call evaluates in the narrowest width that is provably exact for
  *   its operands (a "tier"): int64 when the coordinate differences are
@@ -45,6 +54,7 @@
  *   (it dominates), and y before x. Both predicates use the same moved
  *   points, so all their answers are consistent with one configuration in
  *   general position: collinear and cocircular inputs need no special case.
+ *   vor_power_test_sos moves the sites the same way and keeps the weights.
  *   Only the order of the indices matters, never their values.
  *   Identical points with different indices are separated too, but the
  *   diagram builders report them as duplicates instead of relying on it.

@@ -710,12 +710,14 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, const int64_t *we
     uint32_t ids[3];
     uint32_t top;
     bool swapped = move_top(i, j, k, l, ids, &top);
-    int64_t w[4] = {0, 0, 0, 0};
+    int64_t w[4]; /* the rows' weights and the top site's, when weighted */
+    const int64_t *row_weights = NULL;
     if (weights != NULL) {
         w[0] = weights[ids[0]];
         w[1] = weights[ids[1]];
         w[2] = weights[ids[2]];
         w[3] = weights[top];
+        row_weights = w;
     }
     int64_t x[3];
     int64_t y[3];
@@ -741,7 +743,7 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, const int64_t *we
             squares += (kind == (unsigned)ROW_SQUARE) ? 1u : 0u;
         }
         if (squares < 2u) { /* else two equal rows: the term is 0 */
-            sign = term_sign(x, y, (weights != NULL) ? w : NULL, kinds);
+            sign = term_sign(x, y, row_weights, kinds);
         }
     }
     VOR_ASSERT(sign != 0);

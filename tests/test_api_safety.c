@@ -317,6 +317,12 @@ static void check_reads(void)
     CHECK(vor_closer_sos(NULL, 0, 1, 2) == 0 && vor_closer_sos(points, 1, 1, 2) == 0 &&
               vor_closer_sos(points, 0, 2, 2) == 0,
           "closer_sos: NULL sites, repeated index");
+    static const int64_t weights[SAFE_SITES] = {0};
+    CHECK(vor_power_test_sos(NULL, weights, 0, 1, 2, 3) == 0 &&
+              vor_power_test_sos(points, NULL, 0, 1, 2, 3) == 0 &&
+              vor_power_test_sos(points, weights, 0, 1, 2, 0) == 0 &&
+              vor_power_test_sos(points, weights, 0, 3, 2, 3) == 0,
+          "power_test_sos: NULL sites or weights, repeated index");
 
     vor_vertex_t vertex;
     fill(&vertex, sizeof vertex, 0x44);
@@ -666,6 +672,7 @@ static void check_zeroed_diagram(void)
  * calls whose NULL is allowed. Every refusal leaves everything as it was. */
 static void check_each_argument(void)
 {
+    static const int64_t power_weights[SAFE_SITES] = {0, 1, 2, 3, 4, INT64_MIN, INT64_MAX, 7};
     CHECK(build_all(SAFE_SITES), "build");
     snapshot();
     unsigned bad = 0;
@@ -674,6 +681,7 @@ static void check_each_argument(void)
             uint32_t id[4] = {4, 5, 6, 7}; /* distinct, then positions i and j equal */
             id[j] = id[i];
             bad += vor_incircle_sos(points, id[0], id[1], id[2], id[3]) != 0;
+            bad += vor_power_test_sos(points, power_weights, id[0], id[1], id[2], id[3]) != 0;
             if (j < 3u) {
                 bad += vor_orient2d_sos(points, id[0], id[1], id[2]) != 0;
                 bad += vor_closer_sos(points, id[0], id[1], id[2]) != 0;
@@ -682,7 +690,8 @@ static void check_each_argument(void)
     }
     /* the same ids distinct: an answer, never 0 */
     bad += vor_incircle_sos(points, 4, 5, 6, 7) == 0 || vor_orient2d_sos(points, 4, 5, 6) == 0 ||
-           vor_closer_sos(points, 4, 5, 6) == 0;
+           vor_closer_sos(points, 4, 5, 6) == 0 ||
+           vor_power_test_sos(points, power_weights, 4, 5, 6, 7) == 0;
     CHECK(bad == 0 && unchanged(), "perturbed predicates, repeated indices: %u wrong", bad);
 
     /* cells: vertices NULL with capacity 0 asks for the count only */

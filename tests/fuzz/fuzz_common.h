@@ -125,6 +125,47 @@ static inline vor_point_t fuzz_point(fuzz_reader_t *r, vor_point_t *previous)
     return p;
 }
 
+/* A weight in one of the patterns that matter, some relative to
+ * *previous (updated): raw int64, int64 corners, small ones (ties on
+ * small grids), the previous one (equal weights: the incircle test) or
+ * next to it, a squared int32 radius. */
+static inline int64_t fuzz_weight(fuzz_reader_t *r, int64_t *previous)
+{
+    static const int64_t corners[] = {INT64_MIN, INT64_MIN + 1, -((int64_t)1 << 62), -1, 0, 1,
+                                      (int64_t)1 << 62, INT64_MAX - 1, INT64_MAX};
+    uint8_t kind = fuzz_u8(r);
+    uint64_t raw = 0;
+    int64_t w;
+    switch (kind % 6u) {
+    case 0:
+        for (int i = 0; i < 8; i++)
+            raw = (raw << 8) | fuzz_u8(r);
+        w = (int64_t)raw;
+        break;
+    case 1:
+        w = corners[fuzz_u8(r) % (sizeof corners / sizeof corners[0])];
+        break;
+    case 2:
+        w = (int8_t)fuzz_u8(r) % 8;
+        break;
+    case 3:
+        w = *previous;
+        break;
+    case 4:
+        w = (*previous > INT64_MIN + 2 && *previous < INT64_MAX - 2)
+                ? *previous + (int8_t)fuzz_u8(r) % 3
+                : *previous;
+        break;
+    default: {
+        int64_t radius = fuzz_i32(r);
+        w = radius * radius;
+        break;
+    }
+    }
+    *previous = w;
+    return w;
+}
+
 /* Signed integers of 12 64-bit limbs in two's complement, least
  * significant first, computed modulo 2^768 (exact when the result fits):
  * wide enough for every determinant of int32 points and of fuzz_hpoint.h's
@@ -243,6 +284,29 @@ static inline int fuzz_incircle(vor_point_t a, vor_point_t b, vor_point_t c, vor
                                          fuzz_big_from(blift)));
     det = fuzz_big_add(det, fuzz_big_mul(fuzz_big_from((__int128)adx * bdy - (__int128)bdx * ady),
                                          fuzz_big_from(clift)));
+    return fuzz_big_sign(det);
+}
+
+/* The power test: the incircle determinant with each lift less its
+ * weight, rows relative to d (lifts below 2^65, weight differences below
+ * 2^64, products below 2^131). */
+static inline int fuzz_power(vor_point_t a, int64_t wa, vor_point_t b, int64_t wb,
+                             vor_point_t c, int64_t wc, vor_point_t d, int64_t wd)
+{
+    const vor_point_t p[3] = {a, b, c};
+    const int64_t w[3] = {wa, wb, wc};
+    fuzz_big_t x[3], y[3], z[3];
+    for (int i = 0; i < 3; i++) {
+        x[i] = fuzz_big_from((int64_t)p[i].x - d.x);
+        y[i] = fuzz_big_from((int64_t)p[i].y - d.y);
+        z[i] = fuzz_big_sub(fuzz_big_add(fuzz_big_mul(x[i], x[i]), fuzz_big_mul(y[i], y[i])),
+                            fuzz_big_sub(fuzz_big_from(w[i]), fuzz_big_from(wd)));
+    }
+    fuzz_big_t det = fuzz_big_from(0);
+    for (int i = 0; i < 3; i++) {
+        int j = (i + 1) % 3, k = (i + 2) % 3;
+        det = fuzz_big_add(det, fuzz_big_mul(z[i], fuzz_big_cross(x[j], y[k], x[k], y[j])));
+    }
     return fuzz_big_sign(det);
 }
 

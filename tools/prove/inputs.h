@@ -24,6 +24,12 @@ static vor_point_t any_point(void)
     return p;
 }
 
+/* Any int64 weight (the power diagram's). */
+static int64_t any_weight(void)
+{
+    return (int64_t)Frama_C_long_long_interval(INT64_MIN, INT64_MAX);
+}
+
 /* Site ids in turn: i below n gives id i, i == n any other uint32
  * (VOR_NO_HINT included). Callers unroll the loop over i, so that a walk
  * or a fan starts from one concrete site in each state: from an id

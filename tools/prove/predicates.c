@@ -33,9 +33,17 @@ int main(void)
     r |= vor_orient2d_sos(sites, any_index(), any_index(), any_index());
     r |= vor_incircle_sos(sites, any_index(), any_index(), any_index(), any_index());
     r |= vor_closer_sos(sites, any_index(), any_index(), any_index());
+    r |= vor_power_test(a, any_weight(), b, any_weight(), c, any_weight(), d, any_weight());
+    r |= vor_power_closer(a, b, any_weight(), c, any_weight());
+    int64_t weights[SITES] = {any_weight(), any_weight(), any_weight(), any_weight(),
+                              any_weight()};
+    r |= vor_power_test_sos(sites, weights, any_index(), any_index(), any_index(),
+                            any_index());
     /* NULL is a documented bad argument: 0, no access */
     r |= vor_orient2d_sos(NULL, 0, 1, 2);
     r |= vor_incircle_sos(NULL, 0, 1, 2, 3);
     r |= vor_closer_sos(NULL, 0, 1, 2);
+    r |= vor_power_test_sos(NULL, weights, 0, 1, 2, 3);
+    r |= vor_power_test_sos(sites, NULL, 0, 1, 2, 3);
     return r;
 }
