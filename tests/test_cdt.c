@@ -2023,8 +2023,9 @@ static void check_attach_state(void)
 
 /* A full edge table refuses only a site that splits a constrained edge.
  * Here the pieces of (0, 0)-(10, 0) end at the crossing vertex (5, 0) of
- * (5, -5)-(5, 5), and (12, 0) lies on their line beyond both: it splits
- * nothing, so its insertion succeeds. */
+ * (5, -5)-(5, 5): (12, 0), on their line beyond both, splits nothing and
+ * goes in; (2, 0) splits a piece and is refused; (5, 0) takes the
+ * crossing vertex's place, which splits nothing. */
 static void check_full_table_beyond(void)
 {
     vor_t d;
@@ -2044,8 +2045,14 @@ static void check_full_table_beyond(void)
     bad += (vor_insert(&d, beyond, &id) == VOR_OK) ? 0u : 1u;
     model.at[id] = beyond;
     model.live[id] = true;
+    vor_point_t inside_piece = {2, 0};
+    bad += (vor_insert(&d, inside_piece, &id) == VOR_ERR_NOMEM) ? 0u : 1u;
+    vor_point_t at_crossing = {5, 0};
+    bad += (vor_insert(&d, at_crossing, &id) == VOR_OK) ? 0u : 1u;
+    model.at[id] = at_crossing;
+    model.live[id] = true;
     bad += check_cdt(&d);
-    CHECK(bad == 0, "cdt full table, a site beyond: %lu wrong", bad);
+    CHECK(bad == 0, "cdt full table, sites on a line: %lu wrong", bad);
 }
 
 /* The domain's marks stay through a refused change and go with a made
