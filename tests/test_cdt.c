@@ -1509,6 +1509,11 @@ static void check_crossing_sos_as_sites(void);
 static void check_fan_cut(void);
 static void check_unconstrain_chains(void);
 static void check_stale_scratch(void);
+static void check_attach_state(void);
+static void check_full_table_beyond(void);
+static void check_marks_kept(void);
+static void check_crossing_freed(void);
+static void check_collinear_beyond(void);
 
 void test_cdt(void)
 {
@@ -1539,6 +1544,11 @@ void test_cdt(void)
     TEST_CASE("fan_cut") check_fan_cut();
     TEST_CASE("unconstrain_chains") check_unconstrain_chains();
     TEST_CASE("stale_scratch") check_stale_scratch();
+    TEST_CASE("attach_state") check_attach_state();
+    TEST_CASE("full_table_beyond") check_full_table_beyond();
+    TEST_CASE("marks_kept") check_marks_kept();
+    TEST_CASE("crossing_freed") check_crossing_freed();
+    TEST_CASE("collinear_beyond") check_collinear_beyond();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1978,4 +1988,153 @@ static void check_stale_scratch(void)
     bad += add_constraint(&d, 0, 1);
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt stale scratch: %lu wrong", bad);
+}
+
+/* Attach's checks and fresh state. Crossings up to the documented limit
+ * (VOR_MAX_SITES vertices in all) pass the argument check and fail only
+ * on the memory's size. A fresh attach has no domain marked, and its edge
+ * table is at most half full (cdt.h: a probe for an absent edge meets an
+ * empty entry soon). A free site id's slot holds no triangle even when
+ * the memory held one there from an earlier attach. */
+static void check_attach_state(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_cdt_limits_t most = {8, VOR_MAX_SITES - CDT_SITES, 8};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &most) == VOR_ERR_NOMEM) ? 0u : 1u;
+    static const vor_point_t p[] = {{0, 0}, {40, 0}, {20, 30}, {20, -30}, {60, 20}};
+    insert_all(&d, p, 5);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    bad += ((2u * d.cdt->max_edges) <= d.cdt->edge_slots) ? 0u : 1u;
+    /* the same sites, site 0 removed before attaching to the same memory */
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    insert_all(&d, p, 5);
+    bad += (vor_remove(&d, 0) == VOR_OK) ? 0u : 1u;
+    model.live[0] = false;
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt attach state: %lu wrong", bad);
+}
+
+/* A full edge table refuses only a site that splits a constrained edge.
+ * Here the pieces of (0, 0)-(10, 0) end at the crossing vertex (5, 0) of
+ * (5, -5)-(5, 5): (12, 0), on their line beyond both, splits nothing and
+ * goes in; (2, 0) splits a piece and is refused; (5, 0) takes the
+ * crossing vertex's place, which splits nothing. */
+static void check_full_table_beyond(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, -5}, {5, 5}};
+    insert_all(&d, p, 4);
+    static const vor_cdt_limits_t four = {4, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 1, four.cut), &four) == VOR_OK)
+               ? 0u
+               : 1u;
+    bad += add_constraint(&d, 0, 1) + add_constraint(&d, 2, 3);
+    bad += (d.cdt->edge_count == 4u) ? 0u : 1u; /* the table is full */
+    vor_point_t beyond = {12, 0};
+    uint32_t id;
+    bad += (vor_insert(&d, beyond, &id) == VOR_OK) ? 0u : 1u;
+    model.at[id] = beyond;
+    model.live[id] = true;
+    vor_point_t inside_piece = {2, 0};
+    bad += (vor_insert(&d, inside_piece, &id) == VOR_ERR_NOMEM) ? 0u : 1u;
+    vor_point_t at_crossing = {5, 0};
+    bad += (vor_insert(&d, at_crossing, &id) == VOR_OK) ? 0u : 1u;
+    model.at[id] = at_crossing;
+    model.live[id] = true;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt full table, sites on a line: %lu wrong", bad);
+}
+
+/* The domain's marks stay through a refused change and go with a made
+ * one (vor_cdt.h): a square of four constraints fills a table of four,
+ * so moving the free site inside onto a side is refused (VOR_ERR_NOMEM)
+ * and the marks stay; removing that site clears them. */
+static void check_marks_kept(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {3, 7}};
+    insert_all(&d, p, 5);
+    static const vor_cdt_limits_t four = {4, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 1, four.cut), &four) == VOR_OK)
+               ? 0u
+               : 1u;
+    for (uint32_t k = 0; k < 4u; k++) {
+        bad += add_constraint(&d, k, (k + 1u) % 4u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_point_t on_side = {5, 0};
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_move(&d, 4, on_side, NULL) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_OK) ? 0u : 1u;
+    bad += (vor_remove(&d, 4) == VOR_OK) ? 0u : 1u;
+    model.live[4] = false;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt marks kept and cleared: %lu wrong", bad);
+}
+
+/* A crossing vertex a site takes over frees its entry: in a table of one
+ * crossing, (0, 0)-(10, 0) and (5, -5)-(5, 5) cross at (5, 0), a site
+ * inserted there takes its place, and (0, 3)-(10, 3) may then cross
+ * (5, 0)-(5, 5). A site ending the only constraint stays (removal
+ * refused); one ending none goes. */
+static void check_crossing_freed(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, -5}, {5, 5}, {0, 3}, {10, 3}, {30, 30}};
+    insert_all(&d, p, 7);
+    static const vor_cdt_limits_t one = {40, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 40, 1, one.cut), &one) == VOR_OK)
+               ? 0u
+               : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += (vor_remove(&d, 0) == VOR_ERR_CONSTRAINED) ? 0u : 1u;
+    bad += (vor_remove(&d, 6) == VOR_OK) ? 0u : 1u;
+    model.live[6] = false;
+    bad += add_constraint(&d, 2, 3);
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    vor_point_t at_crossing = {5, 0};
+    insert_all(&d, &at_crossing, 1);
+    bad += (gather_crossings(&d) == 0u) ? 0u : 1u;
+    bad += add_constraint(&d, 4, 5);
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt crossing freed: %lu wrong", bad);
+}
+
+/* Sites all on one line with a constraint, and sites inserted on that
+ * line beyond both ends: the search for a constrained edge holding the
+ * new site walks the hull edges on its line, which here go all the way
+ * round, and must stop (the site splits nothing). */
+static void check_collinear_beyond(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 5}, {20, 10}};
+    insert_all(&d, p, 3);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    static const vor_point_t beyond[] = {{30, 15}, {-10, -5}};
+    insert_all(&d, beyond, 2);
+    bad += (d.site_count == 5u) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt collinear, sites beyond: %lu wrong", bad);
 }
