@@ -1509,6 +1509,7 @@ static void check_crossing_sos_as_sites(void);
 static void check_fan_cut(void);
 static void check_unconstrain_chains(void);
 static void check_stale_scratch(void);
+static void check_zigzag_crossings(void);
 
 void test_cdt(void)
 {
@@ -1539,6 +1540,7 @@ void test_cdt(void)
     TEST_CASE("fan_cut") check_fan_cut();
     TEST_CASE("unconstrain_chains") check_unconstrain_chains();
     TEST_CASE("stale_scratch") check_stale_scratch();
+    TEST_CASE("zigzag_crossings") check_zigzag_crossings();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1978,4 +1980,48 @@ static void check_stale_scratch(void)
     bad += add_constraint(&d, 0, 1);
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt stale scratch: %lu wrong", bad);
+}
+
+/* A zigzag of seven joins between four sites above a-b and four below,
+ * each crossing a-b at its own point, and a-b made across all of them:
+ * with ten sites and exactly seven crossings of room, a-b's crossings are
+ * all the room there is. Making it takes two steps a crossing (its
+ * insertion, then the piece up to it), which the recording pass's bound
+ * must allow. The joins are cut once each (14 edges) and a-b seven times
+ * (8 edges): 22 edges fit a table of 22 and not one of 21, where a-b is
+ * refused with nothing changed. A domain marked before a-b is no longer
+ * one after it. */
+static void zigzag(vor_t *d, uint32_t edges)
+{
+    model_clear();
+    (void)vor_init(d, arena, sizeof arena, 10);
+    static const vor_point_t p[] = {{-50, 0},   {150, 0},  {0, 100},  {10, -100}, {20, 100},
+                                    {30, -100}, {40, 100}, {50, -100}, {60, 100}, {70, -100}};
+    insert_all(d, p, sizeof p / sizeof p[0]);
+    const vor_cdt_limits_t room = {edges, 7, (2u * 17u) + 2u};
+    CHECK(vor_cdt_attach(d, memory, sizeof memory, &room) == VOR_OK, "cdt zigzag: attach");
+}
+
+static void check_zigzag_crossings(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    zigzag(&d, 22);
+    for (uint32_t s = 2; s < 9u; s++) {
+        bad += add_constraint(&d, s, s + 1u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    zigzag(&d, 21);
+    for (uint32_t s = 2; s < 9u; s++) {
+        bad += add_constraint(&d, s, s + 1u);
+    }
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    bad += (vor_constrain(&d, 0, 1) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0 && gather_crossings(&d) == 0u, "cdt zigzag crossings: %lu wrong", bad);
 }
