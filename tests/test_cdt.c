@@ -1510,6 +1510,7 @@ static void check_fan_cut(void);
 static void check_unconstrain_chains(void);
 static void check_stale_scratch(void);
 static void check_zigzag_crossings(void);
+static void check_fan_stretches(void);
 
 void test_cdt(void)
 {
@@ -1541,6 +1542,7 @@ void test_cdt(void)
     TEST_CASE("unconstrain_chains") check_unconstrain_chains();
     TEST_CASE("stale_scratch") check_stale_scratch();
     TEST_CASE("zigzag_crossings") check_zigzag_crossings();
+    TEST_CASE("fan_stretches") check_fan_stretches();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2024,4 +2026,90 @@ static void check_zigzag_crossings(void)
     bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
     bad += check_cdt(&d);
     CHECK(bad == 0 && gather_crossings(&d) == 0u, "cdt zigzag crossings: %lu wrong", bad);
+}
+
+/* The cut's limit, stretch by stretch (docs/design/constraints.md: each
+ * stretch between two vertices or crossings is checked against cut - 2):
+ * check_fan_cut's scene, two constraints along y = 0 and y = 40 and a
+ * column of sites at x = -1 between them, with a second column below
+ * y = 0 (`below` sites), crossed by the segment x = 0 from (0, -30) to
+ * (0, 70). The triangles each stretch crosses are counted here from the
+ * triangulation before it (those with corners on both sides of x = 0,
+ * by the side of the two lines they lie on); with cuts around the larger
+ * of the first two stretches (the third kept short), the segment is made
+ * exactly when both fit within cut - 2. With a short column below the
+ * middle stretch decides, with a long one the first. */
+static uint32_t fan_stretches(unsigned shape, uint32_t cut, uint32_t stretch[3])
+{
+    static const int32_t above[2] = {40, 20};
+    static const int32_t below[2] = {3, 40};
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_point_t ends[] = {{-400, 0}, {400, 0}, {-400, 40}, {400, 40},
+                                {0, -30 - below[shape]},  {0, 70}};
+    insert_all(&d, ends, sizeof ends / sizeof ends[0]);
+    for (int32_t k = 1; k < above[shape]; k++) {
+        vor_point_t column = {-1, k};
+        insert_all(&d, &column, 1);
+    }
+    for (int32_t k = 1; k < below[shape]; k++) {
+        vor_point_t column = {-1, -k};
+        insert_all(&d, &column, 1);
+    }
+    vor_cdt_limits_t tight = {CDT_EDGES, CDT_CROSSINGS, cut};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &tight) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 2, 3);
+    stretch[0] = 0;
+    stretch[1] = 0;
+    stretch[2] = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    (void)vor_cdt_triangles_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        bool left = false;
+        bool right = false;
+        int32_t low = INT32_MAX;
+        int32_t high = INT32_MIN;
+        for (unsigned k = 0; k < 3u; k++) {
+            vor_point_t q = model.at[ids[k]];
+            left = left || (q.x < 0);
+            right = right || (q.x > 0);
+            low = (q.y < low) ? q.y : low;
+            high = (q.y > high) ? q.y : high;
+        }
+        if (left && right) {
+            stretch[(high <= 0) ? 0 : (low >= 40) ? 2 : 1]++;
+        }
+    }
+    int err = vor_constrain(&d, 4, 5);
+    bad += ((err == VOR_OK) || (err == VOR_ERR_NOMEM)) ? 0u : 1u;
+    if (err == VOR_OK) {
+        model.a[model.constraints] = 4;
+        model.b[model.constraints] = 5;
+        model.constraints++;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
+    return (err == VOR_OK) ? 1u : 0u;
+}
+
+static void check_fan_stretches(void)
+{
+    unsigned long bad = 0;
+    for (unsigned shape = 0; shape < 2u; shape++) {
+        uint32_t s[3];
+        (void)fan_stretches(shape, CDT_CUT, s);
+        uint32_t most = (s[0] > s[1]) ? s[0] : s[1];
+        /* the intended stretch decides; the last one stays short */
+        bad += ((s[shape] < most) && (s[2] + 4u < most)) ? 0u : 1u;
+        for (uint32_t cut = most - 2u; cut <= most + 3u; cut++) {
+            uint32_t fits = ((s[0] + 2u <= cut) && (s[1] + 2u <= cut) && (s[2] + 2u <= cut)) ? 1u
+                                                                                          : 0u;
+            bad += (fan_stretches(shape, cut, s) == fits) ? 0u : 1u;
+        }
+    }
+    CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
 }
