@@ -1511,6 +1511,7 @@ static void check_unconstrain_chains(void);
 static void check_stale_scratch(void);
 static void check_zigzag_crossings(void);
 static void check_fan_stretches(void);
+static void check_crossing_line_sites(void);
 
 void test_cdt(void)
 {
@@ -1543,6 +1544,7 @@ void test_cdt(void)
     TEST_CASE("stale_scratch") check_stale_scratch();
     TEST_CASE("zigzag_crossings") check_zigzag_crossings();
     TEST_CASE("fan_stretches") check_fan_stretches();
+    TEST_CASE("crossing_line_sites") check_crossing_line_sites();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2112,4 +2114,37 @@ static void check_fan_stretches(void)
         }
     }
     CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
+}
+
+/* A crossing vertex's lines are given by sites that hold it while it
+ * stands: a segment S-T crossing P-Q, beside which Q-R continues P-Q's
+ * line. Once Q-R is taken off and R removed, every site the crossing
+ * reports (vor_cdt_crossing) must still be a site of the diagram, and
+ * the triangulation whole. */
+static void check_crossing_line_sites(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {20, 0}, {5, 5}, {5, -5}, {-10, 10}, {30, -10}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 1, 2);
+    bad += add_constraint(&d, 3, 4);
+    bad += (vor_unconstrain(&d, 1, 2) == VOR_OK) ? 0u : 1u;
+    model.a[1] = 3; /* the model keeps P-Q and S-T */
+    model.b[1] = 4;
+    model.constraints = 2;
+    bad += (vor_remove(&d, 2) == VOR_OK) ? 0u : 1u;
+    model.live[2] = false;
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    uint32_t s[4];
+    bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
+    for (unsigned k = 0; k < 4u; k++) {
+        bad += ((s[k] < CDT_SITES) && model.live[s[k]]) ? 0u : 1u;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt crossing line sites: %lu wrong", bad);
 }
