@@ -1512,6 +1512,7 @@ static void check_stale_scratch(void);
 static void check_zigzag_crossings(void);
 static void check_fan_stretches(void);
 static void check_crossing_line_sites(void);
+static void check_tight_homes(void);
 
 void test_cdt(void)
 {
@@ -1545,6 +1546,7 @@ void test_cdt(void)
     TEST_CASE("zigzag_crossings") check_zigzag_crossings();
     TEST_CASE("fan_stretches") check_fan_stretches();
     TEST_CASE("crossing_line_sites") check_crossing_line_sites();
+    TEST_CASE("tight_homes") check_tight_homes();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2147,4 +2149,47 @@ static void check_crossing_line_sites(void)
     }
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt crossing line sites: %lu wrong", bad);
+}
+
+/* Home slots where the rule has no slack: random sites in a box of
+ * width 1000 and height 8, 60 or 1000 and random constraints across them,
+ * whose long cavities hold many home slots, checked after each
+ * constraint. Seeds 125 and 490 of this scene put a sub-polygon's room
+ * at exactly what its demanded corners need, so that one corner sent the
+ * wrong way leaves a home slot unserved (mutants of triangulate's room
+ * rule crash or break the links there). */
+static void check_tight_homes(void)
+{
+    static const uint32_t seeds[] = {125, 490};
+    unsigned long bad = 0;
+    for (unsigned s = 0; s < 2u; s++) {
+        test_rng_t rng;
+        test_rng_seed(&rng, seeds[s]);
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        uint32_t n = 8u + (test_rng_u32(&rng) % 40u);
+        unsigned kind = test_rng_u32(&rng) % 3u;
+        int32_t height = (kind == 0u) ? 8 : (kind == 1u) ? 60 : 1000;
+        for (uint32_t i = 0; i < n; i++) {
+            vor_point_t q = {test_rng_range(&rng, 0, 1000), test_rng_range(&rng, 0, height)};
+            uint32_t id;
+            if (vor_insert(&d, q, &id) == VOR_OK) {
+                model.at[id] = q;
+                model.live[id] = true;
+            }
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        uint32_t want = 1u + (test_rng_u32(&rng) % 12u);
+        for (uint32_t k = 0; (k < 100u) && (model.constraints < want); k++) {
+            uint32_t a = test_rng_u32(&rng) % d.site_count;
+            uint32_t b = test_rng_u32(&rng) % d.site_count;
+            if (!model.live[a] || !model.live[b] || (a == b)) {
+                continue;
+            }
+            bad += add_constraint(&d, a, b);
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt tight homes: %lu wrong", bad);
 }
