@@ -2036,13 +2036,14 @@ static void check_zigzag_crossings(void)
  * stretch between two vertices or crossings is checked against cut - 2):
  * check_fan_cut's scene, two constraints along y = 0 and y = 40 and a
  * column of sites at x = -1 between them, with a second column below
- * y = 0 (`below` sites), crossed by the segment x = 0 from (0, -30) to
- * (0, 70). The triangles each stretch crosses are counted here from the
+ * y = 0, crossed by the segment x = 0 from below that column to (0, 70).
+ * The triangles each stretch crosses are counted here from the
  * triangulation before it (those with corners on both sides of x = 0,
  * by the side of the two lines they lie on); with cuts around the larger
  * of the first two stretches (the third kept short), the segment is made
  * exactly when both fit within cut - 2. With a short column below the
- * middle stretch decides, with a long one the first. */
+ * middle stretch decides, with a long one (and a short one above) the
+ * first. Returns 1 when the segment was made. */
 static uint32_t fan_stretches(unsigned shape, uint32_t cut, uint32_t stretch[3])
 {
     static const int32_t above[2] = {40, 20};
@@ -2052,7 +2053,7 @@ static uint32_t fan_stretches(unsigned shape, uint32_t cut, uint32_t stretch[3])
     model_clear();
     (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
     const vor_point_t ends[] = {{-400, 0}, {400, 0}, {-400, 40}, {400, 40},
-                                {0, -30 - below[shape]},  {0, 70}};
+                                {0, -30 - below[shape]}, {0, 70}};
     insert_all(&d, ends, sizeof ends / sizeof ends[0]);
     for (int32_t k = 1; k < above[shape]; k++) {
         vor_point_t column = {-1, k};
@@ -2129,7 +2130,8 @@ static void check_crossing_line_sites(void)
     unsigned long bad = 0;
     model_clear();
     (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
-    static const vor_point_t p[] = {{0, 0}, {10, 0}, {20, 0}, {5, 5}, {5, -5}, {-10, 10}, {30, -10}};
+    static const vor_point_t p[] = {{0, 0},  {10, 0},   {20, 0}, {5, 5},
+                                    {5, -5}, {-10, 10}, {30, -10}};
     insert_all(&d, p, sizeof p / sizeof p[0]);
     bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
     bad += add_constraint(&d, 0, 1);
