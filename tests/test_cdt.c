@@ -2119,11 +2119,12 @@ static void check_fan_stretches(void)
     CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
 }
 
-/* A crossing vertex's lines are given by sites that hold it while it
- * stands: a segment S-T crossing P-Q, beside which Q-R continues P-Q's
- * line. Once Q-R is taken off and R removed, every site the crossing
- * reports (vor_cdt_crossing) must still be a site of the diagram, and
- * the triangulation whole. */
+/* A crossing vertex's lines are given by the first sites along each
+ * line's constrained edges, each way from it (docs/design/constraints.md,
+ * "crossing vertex"): a segment S-T crossing P-Q, beyond which Q-R
+ * continues P-Q's line, reports S, T, P and Q, not R. Once Q-R is taken
+ * off and R removed, the crossing (defined again) still reports sites of
+ * the diagram, and the triangulation is whole. */
 static void check_crossing_line_sites(void)
 {
     vor_t d;
@@ -2137,6 +2138,12 @@ static void check_crossing_line_sites(void)
     bad += add_constraint(&d, 0, 1);
     bad += add_constraint(&d, 1, 2);
     bad += add_constraint(&d, 3, 4);
+    uint32_t s[4];
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
+    /* S-T's line (sites 3, 4), then P-Q's (0, 1), each either way round */
+    bad += (((s[0] == 3u) && (s[1] == 4u)) || ((s[0] == 4u) && (s[1] == 3u))) ? 0u : 1u;
+    bad += (((s[2] == 0u) && (s[3] == 1u)) || ((s[2] == 1u) && (s[3] == 0u))) ? 0u : 1u;
     bad += (vor_unconstrain(&d, 1, 2) == VOR_OK) ? 0u : 1u;
     model.a[1] = 3; /* the model keeps P-Q and S-T */
     model.b[1] = 4;
@@ -2144,7 +2151,6 @@ static void check_crossing_line_sites(void)
     bad += (vor_remove(&d, 2) == VOR_OK) ? 0u : 1u;
     model.live[2] = false;
     bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
-    uint32_t s[4];
     bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
     for (unsigned k = 0; k < 4u; k++) {
         bad += ((s[k] < CDT_SITES) && model.live[s[k]]) ? 0u : 1u;
