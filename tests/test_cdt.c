@@ -1992,11 +1992,11 @@ static void check_stale_scratch(void)
  * each crossing a-b at its own point, and a-b made across all of them:
  * with ten sites and exactly seven crossings of room, a-b's crossings are
  * all the room there is. Making it takes two steps a crossing (its
- * insertion, then the piece up to it), which the recording pass's bound
- * must allow. The joins are cut once each (14 edges) and a-b seven times
+ * insertion, then the piece up to it), 15 in all, which the recording
+ * pass's bound must allow (17 vertices of room). The joins are cut once each (14 edges) and a-b seven times
  * (8 edges): 22 edges fit a table of 22 and not one of 21, where a-b is
  * refused with nothing changed. A domain marked before a-b is no longer
- * one after it. */
+ * one after it. zigzag() builds the sites, with a table of `edges`. */
 static void zigzag(vor_t *d, uint32_t edges)
 {
     model_clear();
