@@ -1514,6 +1514,10 @@ static void check_full_table_beyond(void);
 static void check_marks_kept(void);
 static void check_crossing_freed(void);
 static void check_collinear_beyond(void);
+static void check_zigzag_crossings(void);
+static void check_fan_stretches(void);
+static void check_crossing_line_sites(void);
+static void check_tight_homes(void);
 
 void test_cdt(void)
 {
@@ -1549,6 +1553,10 @@ void test_cdt(void)
     TEST_CASE("marks_kept") check_marks_kept();
     TEST_CASE("crossing_freed") check_crossing_freed();
     TEST_CASE("collinear_beyond") check_collinear_beyond();
+    TEST_CASE("zigzag_crossings") check_zigzag_crossings();
+    TEST_CASE("fan_stretches") check_fan_stretches();
+    TEST_CASE("crossing_line_sites") check_crossing_line_sites();
+    TEST_CASE("tight_homes") check_tight_homes();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2137,4 +2145,218 @@ static void check_collinear_beyond(void)
     bad += (d.site_count == 5u) ? 0u : 1u;
     bad += check_cdt(&d);
     CHECK(bad == 0, "cdt collinear, sites beyond: %lu wrong", bad);
+}
+
+/* A zigzag of seven joins between four sites above a-b and four below,
+ * each crossing a-b at its own point, and a-b made across all of them:
+ * with ten sites and exactly seven crossings of room, a-b's crossings are
+ * all the room there is. Making it takes two steps a crossing (its
+ * insertion, then the piece up to it), 15 in all, which the recording
+ * pass's bound must allow (17 vertices of room). The joins are cut once each (14 edges) and a-b seven times
+ * (8 edges): 22 edges fit a table of 22 and not one of 21, where a-b is
+ * refused with nothing changed. A domain marked before a-b is no longer
+ * one after it. zigzag() builds the sites, with a table of `edges`. */
+static void zigzag(vor_t *d, uint32_t edges)
+{
+    model_clear();
+    (void)vor_init(d, arena, sizeof arena, 10);
+    static const vor_point_t p[] = {{-50, 0},   {150, 0},  {0, 100},  {10, -100}, {20, 100},
+                                    {30, -100}, {40, 100}, {50, -100}, {60, 100}, {70, -100}};
+    insert_all(d, p, sizeof p / sizeof p[0]);
+    const vor_cdt_limits_t room = {edges, 7, (2u * 17u) + 2u};
+    CHECK(vor_cdt_attach(d, memory, sizeof memory, &room) == VOR_OK, "cdt zigzag: attach");
+}
+
+static void check_zigzag_crossings(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    zigzag(&d, 22);
+    for (uint32_t s = 2; s < 9u; s++) {
+        bad += add_constraint(&d, s, s + 1u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    zigzag(&d, 21);
+    for (uint32_t s = 2; s < 9u; s++) {
+        bad += add_constraint(&d, s, s + 1u);
+    }
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    bad += (vor_constrain(&d, 0, 1) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0 && gather_crossings(&d) == 0u, "cdt zigzag crossings: %lu wrong", bad);
+}
+
+/* The cut's limit, stretch by stretch (docs/design/constraints.md: each
+ * stretch between two vertices or crossings is checked against cut - 2):
+ * check_fan_cut's scene, two constraints along y = 0 and y = 40 and a
+ * column of sites at x = -1 between them, with a second column below
+ * y = 0, crossed by the segment x = 0 from below that column to (0, 70).
+ * The triangles each stretch crosses are counted here from the
+ * triangulation before it (those with corners on both sides of x = 0,
+ * by the side of the two lines they lie on); with cuts around the larger
+ * of the first two stretches (the third kept short), the segment is made
+ * exactly when both fit within cut - 2. With a short column below the
+ * middle stretch decides, with a long one (and a short one above) the
+ * first. Returns 1 when the segment was made. */
+static uint32_t fan_stretches(unsigned shape, uint32_t cut, uint32_t stretch[3])
+{
+    static const int32_t above[2] = {40, 20};
+    static const int32_t below[2] = {3, 40};
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_point_t ends[] = {{-400, 0}, {400, 0}, {-400, 40}, {400, 40},
+                                {0, -30 - below[shape]}, {0, 70}};
+    insert_all(&d, ends, sizeof ends / sizeof ends[0]);
+    for (int32_t k = 1; k < above[shape]; k++) {
+        vor_point_t column = {-1, k};
+        insert_all(&d, &column, 1);
+    }
+    for (int32_t k = 1; k < below[shape]; k++) {
+        vor_point_t column = {-1, -k};
+        insert_all(&d, &column, 1);
+    }
+    vor_cdt_limits_t tight = {CDT_EDGES, CDT_CROSSINGS, cut};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &tight) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 2, 3);
+    stretch[0] = 0;
+    stretch[1] = 0;
+    stretch[2] = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    (void)vor_cdt_triangles_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        bool left = false;
+        bool right = false;
+        int32_t low = INT32_MAX;
+        int32_t high = INT32_MIN;
+        for (unsigned k = 0; k < 3u; k++) {
+            vor_point_t q = model.at[ids[k]];
+            left = left || (q.x < 0);
+            right = right || (q.x > 0);
+            low = (q.y < low) ? q.y : low;
+            high = (q.y > high) ? q.y : high;
+        }
+        if (left && right) {
+            stretch[(high <= 0) ? 0 : (low >= 40) ? 2 : 1]++;
+        }
+    }
+    int err = vor_constrain(&d, 4, 5);
+    bad += ((err == VOR_OK) || (err == VOR_ERR_NOMEM)) ? 0u : 1u;
+    if (err == VOR_OK) {
+        model.a[model.constraints] = 4;
+        model.b[model.constraints] = 5;
+        model.constraints++;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
+    return (err == VOR_OK) ? 1u : 0u;
+}
+
+static void check_fan_stretches(void)
+{
+    unsigned long bad = 0;
+    for (unsigned shape = 0; shape < 2u; shape++) {
+        uint32_t s[3];
+        (void)fan_stretches(shape, CDT_CUT, s);
+        uint32_t most = (s[0] > s[1]) ? s[0] : s[1];
+        /* the intended stretch decides; the last one stays short */
+        bad += ((s[shape] < most) && (s[2] + 4u < most)) ? 0u : 1u;
+        for (uint32_t cut = most - 2u; cut <= most + 3u; cut++) {
+            uint32_t fits = ((s[0] + 2u <= cut) && (s[1] + 2u <= cut) && (s[2] + 2u <= cut)) ? 1u
+                                                                                          : 0u;
+            bad += (fan_stretches(shape, cut, s) == fits) ? 0u : 1u;
+        }
+    }
+    CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
+}
+
+/* A crossing vertex's lines are given by the first sites along each
+ * line's constrained edges, each way from it (docs/design/constraints.md,
+ * "crossing vertex"): a segment S-T crossing P-Q, beyond which Q-R
+ * continues P-Q's line, reports S, T, P and Q, not R. Once Q-R is taken
+ * off and R removed, the crossing (defined again) still reports sites of
+ * the diagram, and the triangulation is whole. */
+static void check_crossing_line_sites(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0},  {10, 0},   {20, 0}, {5, 5},
+                                    {5, -5}, {-10, 10}, {30, -10}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 1, 2);
+    bad += add_constraint(&d, 3, 4);
+    uint32_t s[4];
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
+    /* S-T's line (sites 3, 4), then P-Q's (0, 1), each either way round */
+    bad += (((s[0] == 3u) && (s[1] == 4u)) || ((s[0] == 4u) && (s[1] == 3u))) ? 0u : 1u;
+    bad += (((s[2] == 0u) && (s[3] == 1u)) || ((s[2] == 1u) && (s[3] == 0u))) ? 0u : 1u;
+    bad += (vor_unconstrain(&d, 1, 2) == VOR_OK) ? 0u : 1u;
+    model.a[1] = 3; /* the model keeps P-Q and S-T */
+    model.b[1] = 4;
+    model.constraints = 2;
+    bad += (vor_remove(&d, 2) == VOR_OK) ? 0u : 1u;
+    model.live[2] = false;
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
+    for (unsigned k = 0; k < 4u; k++) {
+        bad += ((s[k] < CDT_SITES) && model.live[s[k]]) ? 0u : 1u;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt crossing line sites: %lu wrong", bad);
+}
+
+/* Home slots where the rule has no slack: random sites in a box of
+ * width 1000 and height 8, 60 or 1000 and random constraints across them,
+ * whose long cavities hold many home slots, checked after each
+ * constraint. Seeds 125 and 490 of this scene put a sub-polygon's room
+ * at exactly what its demanded corners need, so that one corner sent the
+ * wrong way leaves a home slot unserved (mutants of triangulate's room
+ * rule crash or break the links there). */
+static void check_tight_homes(void)
+{
+    static const uint32_t seeds[] = {125, 490};
+    unsigned long bad = 0;
+    for (unsigned s = 0; s < 2u; s++) {
+        test_rng_t rng;
+        test_rng_seed(&rng, seeds[s]);
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        uint32_t n = 8u + (test_rng_u32(&rng) % 40u);
+        unsigned kind = test_rng_u32(&rng) % 3u;
+        int32_t height = (kind == 0u) ? 8 : (kind == 1u) ? 60 : 1000;
+        for (uint32_t i = 0; i < n; i++) {
+            vor_point_t q = {test_rng_range(&rng, 0, 1000), test_rng_range(&rng, 0, height)};
+            uint32_t id;
+            if (vor_insert(&d, q, &id) == VOR_OK) {
+                model.at[id] = q;
+                model.live[id] = true;
+            }
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        uint32_t want = 1u + (test_rng_u32(&rng) % 12u);
+        for (uint32_t k = 0; (k < 100u) && (model.constraints < want); k++) {
+            uint32_t a = test_rng_u32(&rng) % d.site_count;
+            uint32_t b = test_rng_u32(&rng) % d.site_count;
+            if (!model.live[a] || !model.live[b] || (a == b)) {
+                continue;
+            }
+            bad += add_constraint(&d, a, b);
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt tight homes: %lu wrong", bad);
 }
