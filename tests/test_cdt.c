@@ -1517,6 +1517,7 @@ static void check_domain_pending_slots(void);
 static void check_unconstrain_domain(void);
 static void check_stale_lawson_stack(void);
 static void check_domain_one_site(void);
+static void check_lawson_room(void);
 
 void test_cdt(void)
 {
@@ -1555,6 +1556,7 @@ void test_cdt(void)
     TEST_CASE("unconstrain_domain") check_unconstrain_domain();
     TEST_CASE("stale_lawson_stack") check_stale_lawson_stack();
     TEST_CASE("domain_one_site") check_domain_one_site();
+    TEST_CASE("lawson_room") check_lawson_room();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2321,4 +2323,33 @@ static void check_domain_one_site(void)
     bad += (vor_cdt_inside_begin(&it, &d) == VOR_OK) ? 0u : 1u;
     bad += (vor_cdt_triangles_next(&it, ids) == 0) ? 0u : 1u;
     CHECK(bad == 0, "cdt domain of one site: %lu wrong", bad);
+}
+
+/* Lawson's stack at its room: 14 sites (so few triangle slots that the
+ * domain's levels after the scratch take 26 bytes), a constraint with 11
+ * sites in a band of 10 on either side of it, inserted after it, taken
+ * off with a cut of 0 (26 pairs): the flips would stack 35 pairs, and
+ * nothing may be written past the memory given. */
+static void check_lawson_room(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, 14);
+    static const vor_point_t line[] = {{0, 0}, {10000, 0}, {5000, 3000}};
+    insert_all(&d, line, 3);
+    static const vor_cdt_limits_t small = {42, 0, 0};
+    const size_t bytes = VOR_CDT_BYTES(14, small.edges, 0, 0);
+    canary_fill(bytes);
+    bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    static const vor_point_t band[] = {{834, 10},  {7101, -6}, {9329, -2}, {3237, 8},
+                                       {8228, -1}, {5532, 8},  {6538, 6},  {1894, -4},
+                                       {8117, 1},  {893, -2},  {3026, -9}};
+    insert_all(&d, band, 11);
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+    model.constraints = 0;
+    bad += check_cdt(&d) + mesh_link_faults(&d) + canary_faults(bytes);
+    CHECK(bad == 0, "cdt lawson room: %lu wrong", bad);
 }
