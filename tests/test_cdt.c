@@ -1518,6 +1518,7 @@ static void check_unconstrain_domain(void);
 static void check_stale_lawson_stack(void);
 static void check_domain_one_site(void);
 static void check_lawson_room(void);
+static void check_crossing_redefined(void);
 
 void test_cdt(void)
 {
@@ -1557,6 +1558,7 @@ void test_cdt(void)
     TEST_CASE("stale_lawson_stack") check_stale_lawson_stack();
     TEST_CASE("domain_one_site") check_domain_one_site();
     TEST_CASE("lawson_room") check_lawson_room();
+    TEST_CASE("crossing_redefined") check_crossing_redefined();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2352,4 +2354,36 @@ static void check_lawson_room(void)
     model.constraints = 0;
     bad += check_cdt(&d) + mesh_link_faults(&d) + canary_faults(bytes);
     CHECK(bad == 0, "cdt lawson room: %lu wrong", bad);
+}
+
+/* A crossing vertex on three constraints, one of its two defining ones
+ * taken off: it is defined again by the other two, so that the sites of
+ * the one taken off can go and their ids be used again elsewhere. */
+static void check_crossing_redefined(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    /* y = 50, x = 50 and the diagonal, all through (50, 50) */
+    static const vor_point_t ends[] = {{0, 50}, {100, 50}, {50, 0}, {50, 100}, {0, 0}, {100, 100},
+                                       {20, 80}, {80, 20}};
+    insert_all(&d, ends, 8);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t k = 0; k < 3u; k++) {
+        bad += add_constraint(&d, 2u * k, (2u * k) + 1u);
+    }
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 0, 1) == VOR_OK) ? 0u : 1u;
+    model.a[0] = model.a[2];
+    model.b[0] = model.b[2];
+    model.constraints = 2;
+    bad += check_cdt(&d);
+    bad += ((vor_remove(&d, 0) == VOR_OK) && (vor_remove(&d, 1) == VOR_OK)) ? 0u : 1u;
+    model.live[0] = false;
+    model.live[1] = false;
+    static const vor_point_t elsewhere[] = {{10, 60}, {70, 95}};
+    insert_all(&d, elsewhere, 2);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt crossing redefined: %lu wrong", bad);
 }
