@@ -1519,6 +1519,7 @@ static void check_stale_lawson_stack(void);
 static void check_domain_one_site(void);
 static void check_lawson_room(void);
 static void check_crossing_redefined(void);
+static void check_domain_all_seeds(void);
 
 void test_cdt(void)
 {
@@ -1559,6 +1560,7 @@ void test_cdt(void)
     TEST_CASE("domain_one_site") check_domain_one_site();
     TEST_CASE("lawson_room") check_lawson_room();
     TEST_CASE("crossing_redefined") check_crossing_redefined();
+    TEST_CASE("domain_all_seeds") check_domain_all_seeds();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2386,4 +2388,24 @@ static void check_crossing_redefined(void)
     insert_all(&d, elsewhere, 2);
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt crossing redefined: %lu wrong", bad);
+}
+
+/* The flood starts from every triangle at infinity, wherever its slot:
+ * seven sites whose triangles at infinity all sit in the second, fourth,
+ * ... used slots (found by a search over slot layouts); without any
+ * constraint every triangle is at level 0, outside. */
+static void check_domain_all_seeds(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, 7);
+    static const vor_point_t p[] = {{933, 464}, {778, 23},  {822, 700}, {988, 594},
+                                    {384, 515}, {851, 803}, {856, 296}};
+    insert_all(&d, p, 7);
+    static const vor_cdt_limits_t few = {21, 0, 16};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(7, 21, 0, 16), &few) == VOR_OK) ? 0u : 1u;
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += domain_faults(&d);
+    CHECK(bad == 0, "cdt domain from all seeds: %lu wrong", bad);
 }
