@@ -1518,6 +1518,17 @@ static void check_zigzag_crossings(void);
 static void check_fan_stretches(void);
 static void check_crossing_line_sites(void);
 static void check_tight_homes(void);
+static void check_open_domains(void);
+static void check_domain_seeds(void);
+static void check_flood_gateways(void);
+static void check_nesting_past_cap(void);
+static void check_domain_pending_slots(void);
+static void check_unconstrain_domain(void);
+static void check_stale_lawson_stack(void);
+static void check_domain_one_site(void);
+static void check_lawson_room(void);
+static void check_crossing_redefined(void);
+static void check_domain_all_seeds(void);
 
 void test_cdt(void)
 {
@@ -1557,6 +1568,17 @@ void test_cdt(void)
     TEST_CASE("fan_stretches") check_fan_stretches();
     TEST_CASE("crossing_line_sites") check_crossing_line_sites();
     TEST_CASE("tight_homes") check_tight_homes();
+    TEST_CASE("open_domains") check_open_domains();
+    TEST_CASE("domain_seeds") check_domain_seeds();
+    TEST_CASE("flood_gateways") check_flood_gateways();
+    TEST_CASE("nesting_past_cap") check_nesting_past_cap();
+    TEST_CASE("domain_pending_slots") check_domain_pending_slots();
+    TEST_CASE("unconstrain_domain") check_unconstrain_domain();
+    TEST_CASE("stale_lawson_stack") check_stale_lawson_stack();
+    TEST_CASE("domain_one_site") check_domain_one_site();
+    TEST_CASE("lawson_room") check_lawson_room();
+    TEST_CASE("crossing_redefined") check_crossing_redefined();
+    TEST_CASE("domain_all_seeds") check_domain_all_seeds();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2359,4 +2381,416 @@ static void check_tight_homes(void)
         }
     }
     CHECK(bad == 0, "cdt tight homes: %lu wrong", bad);
+}
+
+/* A triangle by its sorted corners, as check_domain keys it. */
+static uint64_t triangle_key(const uint32_t ids[3])
+{
+    uint32_t lo = (ids[0] < ids[1]) ? ids[0] : ids[1];
+    lo = (lo < ids[2]) ? lo : ids[2];
+    uint32_t hi = (ids[0] > ids[1]) ? ids[0] : ids[1];
+    hi = (hi > ids[2]) ? hi : ids[2];
+    uint32_t mid = ids[0] + ids[1] + ids[2] - lo - hi;
+    return ((uint64_t)lo << 42) | ((uint64_t)mid << 21) | hi;
+}
+
+/* The domain against its definition by brute force, for any constraints
+ * (open ones too, where check_domain's local rule does not hold): every
+ * triangle's least level, relaxed across its edges until none lowers (an
+ * edge under k of the test's constraints costs k, an edge of one listed
+ * triangle borders the outside at level 0), capped at 126; a triangle is
+ * inside exactly when that level is odd. Returns the triangles wrong. */
+static unsigned long domain_faults(const vor_t *d)
+{
+    static uint64_t inside_keys[2u * CDT_VERTICES];
+    static uint32_t least[2u * CDT_VERTICES];
+    static bool reported[2u * CDT_VERTICES];
+    const uint32_t unreached = 1u << 30;
+    unsigned long bad = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    uint32_t ni = 0;
+    bad += (vor_cdt_inside_begin(&it, d) == VOR_OK) ? 0u : 1u;
+    while ((vor_cdt_triangles_next(&it, ids) == 1) && (ni < 2u * CDT_VERTICES)) {
+        inside_keys[ni++] = triangle_key(ids);
+    }
+    sort_keys(inside_keys, ni);
+    uint32_t nt = 0;
+    uint32_t nh = 0;
+    (void)vor_cdt_triangles_begin(&it, d);
+    while ((vor_cdt_triangles_next(&it, ids) == 1) && (nt < 2u * CDT_VERTICES)) {
+        reported[nt] = has_key(inside_keys, ni, triangle_key(ids));
+        least[nt] = unreached;
+        for (unsigned k = 0; k < 3u; k++) {
+            halves[nh].key = edge_key(ids[(k + 1u) % 3u], ids[(k + 2u) % 3u]);
+            halves[nh].apex = nt; /* here: the triangle's number */
+            nh++;
+        }
+        nt++;
+    }
+    sort_halves(halves, nh);
+    for (uint32_t i = 0; i < nh; i++) { /* here: the edge's cost */
+        halves[i].forward = constraints_through(d, (uint32_t)(halves[i].key >> 32),
+                                                (uint32_t)halves[i].key);
+    }
+    bool lowered = true;
+    while (lowered) {
+        lowered = false;
+        for (uint32_t i = 0; i < nh;) {
+            uint32_t j = i + 1u;
+            while ((j < nh) && (halves[j].key == halves[i].key)) {
+                j++;
+            }
+            uint32_t cost = halves[i].forward;
+            uint32_t a = halves[i].apex;
+            uint32_t b = halves[j - 1u].apex;
+            uint32_t from_a = (j - i == 1u) ? 0u : least[b]; /* a's other side */
+            uint32_t from_b = least[a];
+            if ((from_a < unreached) && (from_a + cost < least[a])) {
+                least[a] = from_a + cost;
+                lowered = true;
+            }
+            if ((j - i == 2u) && (from_b < unreached) && (from_b + cost < least[b])) {
+                least[b] = from_b + cost;
+                lowered = true;
+            }
+            bad += (j - i <= 2u) ? 0u : 1u;
+            i = j;
+        }
+    }
+    for (uint32_t t = 0; t < nt; t++) {
+        uint32_t level = (least[t] > 126u) ? 126u : least[t];
+        bad += (((level & 1u) != 0u) == reported[t]) ? 0u : 1u;
+    }
+    return bad;
+}
+
+/* Open constraints (random segments between random sites, some twice):
+ * a triangle beside one is reached around its ends at a lower level than
+ * across it, so a level first reached across a constraint must be
+ * lowered later; the domain against the brute force. */
+static void check_open_domains(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 41);
+    unsigned long bad = 0;
+    for (unsigned round = 0; round < 6u; round++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (uint32_t i = 0; i < 40u; i++) {
+            vor_point_t p = {test_rng_range(&rng, 0, 1000), test_rng_range(&rng, 0, 1000)};
+            insert_all(&d, &p, 1);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t k = 0; k < 8u; k++) {
+            uint32_t a = test_rng_u32(&rng) % d.site_count;
+            uint32_t b = test_rng_u32(&rng) % d.site_count;
+            if ((a != b) && model.live[a] && model.live[b]) {
+                bad += add_constraint(&d, a, b);
+                if ((k % 3u) == 0u) {
+                    bad += add_constraint(&d, b, a);
+                }
+            }
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        bad += domain_faults(&d);
+    }
+    CHECK(bad == 0, "cdt open domains: %lu wrong", bad);
+}
+
+/* One triangle, two of its sides constrained, each choice of the free
+ * one: the inside is reached at level 0 only across the free side's
+ * triangle at infinity, whichever of the flood's seeds that is. */
+static void check_domain_seeds(void)
+{
+    unsigned long bad = 0;
+    static const vor_point_t corners[] = {{0, 0}, {90, 10}, {30, 70}};
+    for (uint32_t free_side = 0; free_side < 3u; free_side++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        insert_all(&d, corners, 3);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t side = 0; side < 3u; side++) {
+            if (side != free_side) {
+                bad += add_constraint(&d, side, (side + 1u) % 3u);
+            }
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        bad += domain_faults(&d);
+    }
+    CHECK(bad == 0, "cdt domain seeds: %lu wrong", bad);
+}
+
+/* The flood's sweeps doing all the work: 70 sites in convex position
+ * with their hull constrained but for one side (each in turn), flooded
+ * with a stack of 26 pairs (a cut of 0). The 70 triangles at infinity
+ * overflow it at once, so when the free side's one is lost, the whole
+ * inside is reached at level 0 only by the sweeps, through it, over
+ * many passes. The sites are numbered from two starting points, so that
+ * the first slot (site 0's home) holds another triangle. */
+static void check_flood_gateways(void)
+{
+    unsigned long bad = 0;
+    for (int32_t first = 0; first < 2; first++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (int32_t j = 0; j < 70; j++) { /* on the parabola y = x^2 / 64 */
+            int32_t i = (j + first) % 70;
+            vor_point_t p = {(i - 35) * 64, (i - 35) * (i - 35) * 64};
+            insert_all(&d, &p, 1);
+        }
+        static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 0};
+        const size_t bytes = VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 0);
+        canary_fill(bytes);
+        bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
+        for (uint32_t k = 0; k < 70u; k++) {
+            bad += add_constraint(&d, k, (k + 1u) % 70u);
+        }
+        for (uint32_t g = 0; g < 70u; g++) {
+            bad += (vor_unconstrain(&d, g, (g + 1u) % 70u) == VOR_OK) ? 0u : 1u;
+            model.a[g] = model.a[69]; /* the model without side g */
+            model.b[g] = model.b[69];
+            model.constraints = 69;
+            bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+            bad += domain_faults(&d);
+            model.a[69] = model.a[g];
+            model.b[69] = model.b[g];
+            model.a[g] = g;
+            model.b[g] = (g + 1u) % 70u;
+            model.constraints = 70;
+            bad += (vor_constrain(&d, g, (g + 1u) % 70u) == VOR_OK) ? 0u : 1u;
+        }
+        bad += canary_faults(bytes);
+    }
+    CHECK(bad == 0, "cdt flood gateways: %lu wrong", bad);
+}
+
+/* Levels past 126 count as 126: a triangle constrained 126 times around
+ * a smaller one constrained once, whose inside only the flood of level
+ * 126 reaches (126 + 1 counts as 126): no triangle is inside. */
+static void check_nesting_past_cap(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t corners[] = {{0, 0},     {900, 0},   {450, 800},
+                                          {400, 200}, {500, 200}, {450, 300}};
+    insert_all(&d, corners, 6);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t j = 0; j < 126u; j++) {
+        for (uint32_t side = 0; side < 3u; side++) {
+            bad += (vor_constrain(&d, side, (side + 1u) % 3u) == VOR_OK) ? 0u : 1u;
+        }
+    }
+    for (uint32_t side = 0; side < 3u; side++) {
+        bad += (vor_constrain(&d, 3u + side, 3u + ((side + 1u) % 3u)) == VOR_OK) ? 0u : 1u;
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    uint32_t inside = 0;
+    (void)vor_cdt_inside_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        inside++;
+    }
+    CHECK(bad == 0 && inside == 0u, "cdt nesting past the cap: %lu wrong, %u inside", bad,
+          (unsigned)inside);
+}
+
+/* A level's first triangles are the pending ones, wherever they sit: a
+ * hexagon around site 0 (whose home slot, the first, holds one of its
+ * triangles), each triangle T = (0, i, i + 1) with its sides constrained
+ * once and a neighbour U's two other sides three times, so that U's
+ * least level (2, through T) is reached only from T. */
+static void check_domain_pending_slots(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    static const vor_point_t hexagon[] = {{0, 0},    {100, 0},  {50, 87}, {-50, 87},
+                                          {-100, 0}, {-50, -87}, {50, -87}};
+    for (uint32_t i = 1; i <= 6u; i++) {
+        for (uint32_t way = 0; way < 2u; way++) {
+            uint32_t j = (i % 6u) + 1u; /* T = (0, i, j) */
+            /* U = (0, j, beyond) across 0-j, or (0, beyond, i) across 0-i */
+            uint32_t shared = (way == 0u) ? j : i;
+            uint32_t beyond = (way == 0u) ? ((j % 6u) + 1u) : (((i + 4u) % 6u) + 1u);
+            model_clear();
+            (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+            insert_all(&d, hexagon, 7);
+            bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+            bad += add_constraint(&d, 0, i) + add_constraint(&d, 0, j) + add_constraint(&d, i, j);
+            for (uint32_t times = 0; times < 3u; times++) {
+                bad += add_constraint(&d, 0, beyond) + add_constraint(&d, shared, beyond);
+            }
+            bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+            bad += domain_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt domain pending slots: %lu wrong", bad);
+}
+
+/* A constraint taken off clears the domain (the header: any change), and
+ * the edge iterator refuses either output NULL while edges remain. */
+static void check_unconstrain_domain(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t square[] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}, {50, 50}};
+    insert_all(&d, square, 5);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t k = 0; k < 4u; k++) {
+        bad += add_constraint(&d, k, (k + 1u) % 4u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_cdt_edge_iter_t e;
+    uint32_t a;
+    uint32_t b;
+    bad += (vor_cdt_edges_begin(&e, &d) == VOR_OK) ? 0u : 1u;
+    bad += ((vor_cdt_edges_next(&e, NULL, &b) == 0) && (vor_cdt_edges_next(&e, &a, NULL) == 0))
+               ? 0u
+               : 1u;
+    bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    CHECK(bad == 0, "cdt unconstrain and the domain: %lu wrong", bad);
+}
+
+/* Lawson's stack holds only what the call pushed: the scratch filled with
+ * ids of no vertex, then a constraint along an edge (no cavity) made and
+ * taken off again. */
+static void check_stale_lawson_stack(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, 3}, {5, -3}};
+    insert_all(&d, p, 4);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    struct vor__cdt *c = d.cdt;
+    for (size_t k = 0; k < 13u * ((size_t)c->max_cut + 4u); k++) {
+        c->scratch[k] = VOR__NONE;
+    }
+    bad += add_constraint(&d, 2, 3);
+    bad += (vor_unconstrain(&d, 3, 2) == VOR_OK) ? 0u : 1u;
+    model.constraints = 0;
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt stale lawson stack: %lu wrong", bad);
+}
+
+/* Below two sites the slots hold stale contents, which the domain must
+ * not read: one site, every slot made to look like a triangle at
+ * infinity with neighbours far past the mesh. */
+static void check_domain_one_site(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    vor_point_t lone = {3, 4};
+    insert_all(&d, &lone, 1);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    vor__tri_t *tri = d.cdt->mesh.triangles;
+    for (uint32_t s = 0; s < vor__triangle_count(d.cdt->mesh.max_sites); s++) {
+        uint8_t *corners = (uint8_t *)tri[s].v; /* all ones: the vertex at infinity */
+        for (size_t k = 0; k < sizeof tri[s].v; k++) {
+            corners[k] = 0xFFu;
+        }
+        for (unsigned k = 0; k < 3u; k++) {
+            tri[s].n[k] = (vor_index_t)(VOR__NONE - 1u);
+        }
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_OK) ? 0u : 1u;
+    bad += (vor_cdt_triangles_next(&it, ids) == 0) ? 0u : 1u;
+    CHECK(bad == 0, "cdt domain of one site: %lu wrong", bad);
+}
+
+/* Lawson's stack at its room: 14 sites (so few triangle slots that the
+ * domain's levels after the scratch take 26 bytes), a constraint with 11
+ * sites in a band of 10 on either side of it, inserted after it, taken
+ * off with a cut of 0 (26 pairs): the flips would stack 35 pairs, and
+ * nothing may be written past the memory given. */
+static void check_lawson_room(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, 14);
+    static const vor_point_t line[] = {{0, 0}, {10000, 0}, {5000, 3000}};
+    insert_all(&d, line, 3);
+    static const vor_cdt_limits_t small = {42, 0, 0};
+    const size_t bytes = VOR_CDT_BYTES(14, small.edges, 0, 0);
+    canary_fill(bytes);
+    bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    static const vor_point_t band[] = {{834, 10},  {7101, -6}, {9329, -2}, {3237, 8},
+                                       {8228, -1}, {5532, 8},  {6538, 6},  {1894, -4},
+                                       {8117, 1},  {893, -2},  {3026, -9}};
+    insert_all(&d, band, 11);
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+    model.constraints = 0;
+    bad += check_cdt(&d) + mesh_link_faults(&d) + canary_faults(bytes);
+    CHECK(bad == 0, "cdt lawson room: %lu wrong", bad);
+}
+
+/* A crossing vertex on three constraints, one of its two defining ones
+ * taken off: it is defined again by the other two, so that the sites of
+ * the one taken off can go and their ids be used again elsewhere. */
+static void check_crossing_redefined(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    /* y = 50, x = 50 and the diagonal, all through (50, 50) */
+    static const vor_point_t ends[] = {{0, 50}, {100, 50}, {50, 0}, {50, 100}, {0, 0}, {100, 100},
+                                       {20, 80}, {80, 20}};
+    insert_all(&d, ends, 8);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t k = 0; k < 3u; k++) {
+        bad += add_constraint(&d, 2u * k, (2u * k) + 1u);
+    }
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 0, 1) == VOR_OK) ? 0u : 1u;
+    model.a[0] = model.a[2];
+    model.b[0] = model.b[2];
+    model.constraints = 2;
+    bad += check_cdt(&d);
+    bad += ((vor_remove(&d, 0) == VOR_OK) && (vor_remove(&d, 1) == VOR_OK)) ? 0u : 1u;
+    model.live[0] = false;
+    model.live[1] = false;
+    static const vor_point_t elsewhere[] = {{10, 60}, {70, 95}};
+    insert_all(&d, elsewhere, 2);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt crossing redefined: %lu wrong", bad);
+}
+
+/* The flood starts from every triangle at infinity, wherever its slot:
+ * seven sites whose triangles at infinity all sit in the second, fourth,
+ * ... used slots (found by a search over slot layouts); without any
+ * constraint every triangle is at level 0, outside. */
+static void check_domain_all_seeds(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, 7);
+    static const vor_point_t p[] = {{933, 464}, {778, 23},  {822, 700}, {988, 594},
+                                    {384, 515}, {851, 803}, {856, 296}};
+    insert_all(&d, p, 7);
+    static const vor_cdt_limits_t few = {21, 0, 16};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(7, 21, 0, 16), &few) == VOR_OK) ? 0u : 1u;
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += domain_faults(&d);
+    CHECK(bad == 0, "cdt domain from all seeds: %lu wrong", bad);
 }
