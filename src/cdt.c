@@ -780,10 +780,12 @@ static vor_index_t first_step(const struct vor__cdt *c, vor_index_t from, vor_in
  * a constrained edge it would cross: VOR__NONE, the edge in crossed[].
  * Checking, it walks on through constrained edges, counting them in
  * *crossings, and returns VOR__NONE when a stretch between two of them
- * (or the piece's ends) crosses more than max_cut - 2 triangles: a
- * crossing vertex inserted at each end of a stretch adds at most one
- * triangle there (the segment meets its star in one triangle), so the
- * recorded cavities then stay within max_cut. */
+ * (or the piece's ends) crosses more than max_cut - 2 triangles before
+ * its end (the triangle holding the piece's end vertex is entered after
+ * the last check: such a stretch may cross max_cut - 1): a crossing
+ * vertex inserted at each end of a stretch adds at most one triangle
+ * there (the segment meets its star in one triangle), so the recorded
+ * cavities then stay within max_cut. */
 static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index_t from,
                                vor_index_t b, vor_index_t slot, bool record,
                                uint32_t *crossings, vor_index_t crossed[2])
