@@ -1518,6 +1518,7 @@ static void check_zigzag_crossings(void);
 static void check_fan_stretches(void);
 static void check_crossing_line_sites(void);
 static void check_tight_homes(void);
+static void check_last_stretch(void);
 static void check_open_domains(void);
 static void check_domain_seeds(void);
 static void check_flood_gateways(void);
@@ -1568,6 +1569,7 @@ void test_cdt(void)
     TEST_CASE("fan_stretches") check_fan_stretches();
     TEST_CASE("crossing_line_sites") check_crossing_line_sites();
     TEST_CASE("tight_homes") check_tight_homes();
+    TEST_CASE("last_stretch") check_last_stretch();
     TEST_CASE("open_domains") check_open_domains();
     TEST_CASE("domain_seeds") check_domain_seeds();
     TEST_CASE("flood_gateways") check_flood_gateways();
@@ -2793,4 +2795,65 @@ static void check_domain_all_seeds(void)
     bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
     bad += domain_faults(&d);
     CHECK(bad == 0, "cdt domain from all seeds: %lu wrong", bad);
+}
+
+/* A stretch that ends at a vertex may cross cut - 1 triangles (vor_cdt.h,
+ * VOR_ERR_NOMEM): no crossing vertex is made at its end. Segment a-b
+ * along x = 0, with a column of sites at x = -1 beside it and one site
+ * far right, crosses every triangle with corners on both sides of x = 0
+ * (a and b are the hull's lowest and highest points on that line), T of
+ * them, counted here from the triangulation before it: cut T refuses it
+ * with nothing changed, cut T + 1 makes it. */
+static uint32_t last_stretch(uint32_t cut, uint32_t *crossed)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_point_t ends[] = {{0, -10}, {0, 100}, {400, 45}};
+    insert_all(&d, ends, sizeof ends / sizeof ends[0]);
+    for (int32_t k = 1; k < 30; k++) {
+        vor_point_t column = {-1, 3 * k};
+        insert_all(&d, &column, 1);
+    }
+    vor_cdt_limits_t tight = {CDT_EDGES, CDT_CROSSINGS, cut};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &tight) == VOR_OK) ? 0u : 1u;
+    *crossed = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    (void)vor_cdt_triangles_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        bool left = false;
+        bool right = false;
+        for (unsigned k = 0; k < 3u; k++) {
+            left = left || (model.at[ids[k]].x < 0);
+            right = right || (model.at[ids[k]].x > 0);
+        }
+        *crossed += (left && right) ? 1u : 0u;
+    }
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    int err = vor_constrain(&d, 0, 1);
+    bad += ((err == VOR_OK) || (err == VOR_ERR_NOMEM)) ? 0u : 1u;
+    if (err == VOR_OK) {
+        model.a[model.constraints] = 0;
+        model.b[model.constraints] = 1;
+        model.constraints++;
+    } else {
+        bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt last stretch: %lu wrong", bad);
+    return (err == VOR_OK) ? 1u : 0u;
+}
+
+static void check_last_stretch(void)
+{
+    uint32_t t;
+    (void)last_stretch(CDT_CUT, &t);
+    uint32_t again;
+    unsigned long bad = (t > 20u) ? 0u : 1u; /* the column makes a long fan */
+    bad += (last_stretch(t, &again) == 0u) ? 0u : 1u;
+    bad += (last_stretch(t + 1u, &again) == 1u) ? 0u : 1u;
+    bad += (again == t) ? 0u : 1u;
+    CHECK(bad == 0, "cdt last stretch: %u triangles, %lu wrong", t, bad);
 }
