@@ -1509,6 +1509,7 @@ static void check_crossing_sos_as_sites(void);
 static void check_fan_cut(void);
 static void check_unconstrain_chains(void);
 static void check_stale_scratch(void);
+static void check_ring_of_three(void);
 
 void test_cdt(void)
 {
@@ -1539,6 +1540,7 @@ void test_cdt(void)
     TEST_CASE("fan_cut") check_fan_cut();
     TEST_CASE("unconstrain_chains") check_unconstrain_chains();
     TEST_CASE("stale_scratch") check_stale_scratch();
+    TEST_CASE("ring_of_three") check_ring_of_three();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1979,3 +1981,33 @@ static void check_stale_scratch(void)
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt stale scratch: %lu wrong", bad);
 }
+
+/* A crossing vertex taken off where a vertex of its ring is left with
+ * three neighbours: constraints 2-4 and 5-0 (through site 3) cross at x,
+ * and site 0's only other neighbours are sites 1 and 2, so triangle
+ * (2, 1, 0) lies outside two of x's four ring edges, 1-0 and 0-2. Taking
+ * 2-4 off removes x; the new triangles' links must follow the edges, not
+ * the old slots (one of which a new triangle reuses): once they broke. */
+static void check_ring_of_three(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    for (unsigned order = 0; order < 2u; order++) {
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t p[] = {{-3, -4}, {6, -3}, {-5, -5}, {-2, -1}, {5, 4}, {-1, 2}};
+        insert_all(&d, p, sizeof p / sizeof p[0]);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += add_constraint(&d, 2, 4);
+        bad += add_constraint(&d, 5, 0);
+        bad += check_cdt(&d) + mesh_link_faults(&d) + ((gather_crossings(&d) == 1u) ? 0u : 1u);
+        int err = (order == 0u) ? vor_unconstrain(&d, 2, 4) : vor_unconstrain(&d, 4, 2);
+        bad += (err == VOR_OK) ? 0u : 1u;
+        model.a[0] = 5;
+        model.b[0] = 0;
+        model.constraints = 1;
+        bad += mesh_link_faults(&d) + check_cdt(&d) + ((gather_crossings(&d) == 0u) ? 0u : 1u);
+    }
+    CHECK(bad == 0, "cdt crossing off beside a vertex of degree 3: %lu wrong", bad);
+}
+
