@@ -1530,6 +1530,9 @@ static void check_domain_one_site(void);
 static void check_lawson_room(void);
 static void check_crossing_redefined(void);
 static void check_domain_all_seeds(void);
+static void check_tiny_scenes(void);
+static void check_first_packed_freed(void);
+static void check_ring_of_three(void);
 
 void test_cdt(void)
 {
@@ -1581,6 +1584,9 @@ void test_cdt(void)
     TEST_CASE("lawson_room") check_lawson_room();
     TEST_CASE("crossing_redefined") check_crossing_redefined();
     TEST_CASE("domain_all_seeds") check_domain_all_seeds();
+    TEST_CASE("ring_of_three") check_ring_of_three();
+    TEST_CASE("tiny_scenes") check_tiny_scenes();
+    TEST_CASE("first_packed_freed") check_first_packed_freed();
 }
 
 /* ------------------------------------------------------------------ */
@@ -2856,4 +2862,101 @@ static void check_last_stretch(void)
     bad += (last_stretch(t + 1u, &again) == 1u) ? 0u : 1u;
     bad += (again == t) ? 0u : 1u;
     CHECK(bad == 0, "cdt last stretch: %u triangles, %lu wrong", t, bad);
+}
+
+/* A crossing vertex taken off where a vertex of its ring is left with
+ * three neighbours: constraints 2-4 and 5-0 (through site 3) cross at x,
+ * and site 0's only other neighbours are sites 1 and 2, so triangle
+ * (2, 1, 0) lies outside two of x's four ring edges, 1-0 and 0-2. Taking
+ * 2-4 off removes x; the new triangles' links must follow the edges, not
+ * the old slots (one of which a new triangle reuses): once they broke. */
+static void check_ring_of_three(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    for (unsigned order = 0; order < 2u; order++) {
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t p[] = {{-3, -4}, {6, -3}, {-5, -5}, {-2, -1}, {5, 4}, {-1, 2}};
+        insert_all(&d, p, sizeof p / sizeof p[0]);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += add_constraint(&d, 2, 4);
+        bad += add_constraint(&d, 5, 0);
+        bad += check_cdt(&d) + mesh_link_faults(&d) + ((gather_crossings(&d) == 1u) ? 0u : 1u);
+        int err = (order == 0u) ? vor_unconstrain(&d, 2, 4) : vor_unconstrain(&d, 4, 2);
+        bad += (err == VOR_OK) ? 0u : 1u;
+        model.a[0] = 5;
+        model.b[0] = 0;
+        model.constraints = 1;
+        bad += mesh_link_faults(&d) + check_cdt(&d) + ((gather_crossings(&d) == 0u) ? 0u : 1u);
+    }
+    CHECK(bad == 0, "cdt crossing off beside a vertex of degree 3: %lu wrong", bad);
+}
+
+/* Few sites (4 to 7 on a small grid): a hull site is then often a
+ * neighbour of every other vertex, so that the turn around it to an
+ * edge's triangle (Lawson's test of an edge a removal freed) may meet
+ * all of them, infinity included, and ring vertices of degree 3 are
+ * common. Constraints among them, crossing each other, are taken off
+ * again one by one in either direction, the triangulation and the mesh's
+ * links checked after each. */
+static void check_tiny_scenes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 31337);
+    unsigned long bad = 0;
+    for (unsigned round = 0; round < 400u; round++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        uint32_t n = 4u + (test_rng_u32(&rng) % 4u);
+        for (uint32_t i = 0; i < n; i++) {
+            (void)insert_random(&d, &rng, 0u);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        constrain_random(&d, &rng, 1u + (test_rng_u32(&rng) % 4u), &bad);
+        bad += mesh_link_faults(&d);
+        while (model.constraints > 0u) {
+            uint32_t k = test_rng_u32(&rng) % model.constraints;
+            uint32_t a = model.a[k];
+            uint32_t b = model.b[k];
+            int err = ((test_rng_u32(&rng) & 1u) != 0u) ? vor_unconstrain(&d, a, b)
+                                                        : vor_unconstrain(&d, b, a);
+            bad += (err == VOR_OK) ? 0u : 1u;
+            model.constraints--;
+            model.a[k] = model.a[model.constraints];
+            model.b[k] = model.b[model.constraints];
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt tiny scenes: %lu wrong", bad);
+}
+
+/* A crossing vertex taken off whose freed slot is the first packed one
+ * (the constrained mesh's max_sites), while (u, s, v) takes s's home: five
+ * sites, constraints 4-0, 4-1 and 3-2 (which crosses 4-0), then 3-2 off.
+ * Site 1's three triangles are then all in home slots, so that treating
+ * the packed slot as a home to refill from a star finds nothing to move
+ * and leaves the last packed triangle out of the mesh. The links and the
+ * triangulation must stay whole. */
+static void check_first_packed_freed(void)
+{
+    unsigned long bad = 0;
+    for (unsigned order = 0; order < 2u; order++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t p[] = {{-4, 2}, {2, -1}, {-5, 5}, {2, -4}, {6, 0}};
+        insert_all(&d, p, sizeof p / sizeof p[0]);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += add_constraint(&d, 4, 0);
+        bad += add_constraint(&d, 4, 1);
+        bad += add_constraint(&d, 3, 2);
+        bad += check_cdt(&d) + ((gather_crossings(&d) == 1u) ? 0u : 1u);
+        int err = (order == 0u) ? vor_unconstrain(&d, 3, 2) : vor_unconstrain(&d, 2, 3);
+        bad += (err == VOR_OK) ? 0u : 1u;
+        model.constraints = 2;
+        bad += mesh_link_faults(&d) + check_cdt(&d) + ((gather_crossings(&d) == 0u) ? 0u : 1u);
+    }
+    CHECK(bad == 0, "cdt crossing off freeing the first packed slot: %lu wrong", bad);
 }
