@@ -106,8 +106,11 @@ int vor_cdt_crossing(const vor_t *d, uint32_t id, uint32_t sites[4]);
  *   VOR_ERR_ARG    d NULL, no constraint memory attached, a or b not a
  *                  site in the diagram
  *   VOR_ERR_NOMEM  the edge table or the crossing table would overflow,
- *                  or the segment crosses more than limits->cut triangles
- *                  between two vertices on it
+ *                  or the segment crosses more than limits->cut - 2
+ *                  triangles between two consecutive points where it
+ *                  meets a vertex or crosses a constraint (cut - 1 when
+ *                  the second is a vertex): each crossing vertex made at
+ *                  an end of such a stretch adds a triangle to it
  * On failure nothing changes.
  */
 int vor_constrain(vor_t *d, uint32_t a, uint32_t b);

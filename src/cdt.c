@@ -780,10 +780,12 @@ static vor_index_t first_step(const struct vor__cdt *c, vor_index_t from, vor_in
  * a constrained edge it would cross: VOR__NONE, the edge in crossed[].
  * Checking, it walks on through constrained edges, counting them in
  * *crossings, and returns VOR__NONE when a stretch between two of them
- * (or the piece's ends) crosses more than max_cut - 2 triangles: a
- * crossing vertex inserted at each end of a stretch adds at most one
- * triangle there (the segment meets its star in one triangle), so the
- * recorded cavities then stay within max_cut. */
+ * (or the piece's ends) crosses more than max_cut - 2 triangles before
+ * its end (the triangle holding the piece's end vertex is entered after
+ * the last check: such a stretch may cross max_cut - 1): a crossing
+ * vertex inserted at each end of a stretch adds at most one triangle
+ * there (the segment meets its star in one triangle), so the recorded
+ * cavities then stay within max_cut. */
 static vor_index_t walk_cavity(const struct vor__cdt *c, cavity_t *cv, vor_index_t from,
                                vor_index_t b, vor_index_t slot, bool record,
                                uint32_t *crossings, vor_index_t crossed[2])
@@ -1461,10 +1463,12 @@ static void remove_crossing(struct vor__cdt *c, vor_index_t x, lawson_t *w)
     for (unsigned k = 0; k < 4u; k++) {
         freed = ((sl[k] != x) && (sl[k] != a_slot) && (sl[k] != b_slot)) ? sl[k] : freed;
     }
-    vor__relink(tri, o[0], sl[0], a_slot);
-    vor__relink(tri, o[1], sl[1], a_slot);
-    vor__relink(tri, o[2], sl[2], b_slot);
-    vor__relink(tri, o[3], sl[3], b_slot);
+    /* by edges, not by old links: an outer triangle on two ring edges (a
+     * ring vertex of degree 3) may already link to a_slot or b_slot */
+    vor__relink_before(tri, o[0], r[0], a_slot);
+    vor__relink_before(tri, o[1], r[1], a_slot);
+    vor__relink_before(tri, o[2], r[2], b_slot);
+    vor__relink_before(tri, o[3], r[3], b_slot);
     vor__tri_set(&tri[a_slot], u, s, v, o[1], b_slot, o[0]);
     vor__tri_set(&tri[b_slot], v, t, u, o[3], a_slot, o[2]);
     vor__tri_fresh(&tri[x]);

@@ -1509,6 +1509,30 @@ static void check_crossing_sos_as_sites(void);
 static void check_fan_cut(void);
 static void check_unconstrain_chains(void);
 static void check_stale_scratch(void);
+static void check_attach_state(void);
+static void check_full_table_beyond(void);
+static void check_marks_kept(void);
+static void check_crossing_freed(void);
+static void check_collinear_beyond(void);
+static void check_zigzag_crossings(void);
+static void check_fan_stretches(void);
+static void check_crossing_line_sites(void);
+static void check_tight_homes(void);
+static void check_last_stretch(void);
+static void check_open_domains(void);
+static void check_domain_seeds(void);
+static void check_flood_gateways(void);
+static void check_nesting_past_cap(void);
+static void check_domain_pending_slots(void);
+static void check_unconstrain_domain(void);
+static void check_stale_lawson_stack(void);
+static void check_domain_one_site(void);
+static void check_lawson_room(void);
+static void check_crossing_redefined(void);
+static void check_domain_all_seeds(void);
+static void check_tiny_scenes(void);
+static void check_first_packed_freed(void);
+static void check_ring_of_three(void);
 
 void test_cdt(void)
 {
@@ -1539,6 +1563,30 @@ void test_cdt(void)
     TEST_CASE("fan_cut") check_fan_cut();
     TEST_CASE("unconstrain_chains") check_unconstrain_chains();
     TEST_CASE("stale_scratch") check_stale_scratch();
+    TEST_CASE("attach_state") check_attach_state();
+    TEST_CASE("full_table_beyond") check_full_table_beyond();
+    TEST_CASE("marks_kept") check_marks_kept();
+    TEST_CASE("crossing_freed") check_crossing_freed();
+    TEST_CASE("collinear_beyond") check_collinear_beyond();
+    TEST_CASE("zigzag_crossings") check_zigzag_crossings();
+    TEST_CASE("fan_stretches") check_fan_stretches();
+    TEST_CASE("crossing_line_sites") check_crossing_line_sites();
+    TEST_CASE("tight_homes") check_tight_homes();
+    TEST_CASE("last_stretch") check_last_stretch();
+    TEST_CASE("open_domains") check_open_domains();
+    TEST_CASE("domain_seeds") check_domain_seeds();
+    TEST_CASE("flood_gateways") check_flood_gateways();
+    TEST_CASE("nesting_past_cap") check_nesting_past_cap();
+    TEST_CASE("domain_pending_slots") check_domain_pending_slots();
+    TEST_CASE("unconstrain_domain") check_unconstrain_domain();
+    TEST_CASE("stale_lawson_stack") check_stale_lawson_stack();
+    TEST_CASE("domain_one_site") check_domain_one_site();
+    TEST_CASE("lawson_room") check_lawson_room();
+    TEST_CASE("crossing_redefined") check_crossing_redefined();
+    TEST_CASE("domain_all_seeds") check_domain_all_seeds();
+    TEST_CASE("ring_of_three") check_ring_of_three();
+    TEST_CASE("tiny_scenes") check_tiny_scenes();
+    TEST_CASE("first_packed_freed") check_first_packed_freed();
 }
 
 /* ------------------------------------------------------------------ */
@@ -1978,4 +2026,937 @@ static void check_stale_scratch(void)
     bad += add_constraint(&d, 0, 1);
     bad += check_cdt(&d) + mesh_link_faults(&d);
     CHECK(bad == 0, "cdt stale scratch: %lu wrong", bad);
+}
+
+/* Attach's checks and fresh state. Crossings up to the documented limit
+ * (VOR_MAX_SITES vertices in all) pass the argument check and fail only
+ * on the memory's size. A fresh attach has no domain marked, and its edge
+ * table is at most half full (cdt.h: a probe for an absent edge meets an
+ * empty entry soon). A free site id's slot holds no triangle even when
+ * the memory held one there from an earlier attach. */
+static void check_attach_state(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_cdt_limits_t most = {8, VOR_MAX_SITES - CDT_SITES, 8};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &most) == VOR_ERR_NOMEM) ? 0u : 1u;
+    static const vor_point_t p[] = {{0, 0}, {40, 0}, {20, 30}, {20, -30}, {60, 20}};
+    insert_all(&d, p, 5);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    bad += ((2u * d.cdt->max_edges) <= d.cdt->edge_slots) ? 0u : 1u;
+    /* the same sites, site 0 removed before attaching to the same memory */
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    insert_all(&d, p, 5);
+    bad += (vor_remove(&d, 0) == VOR_OK) ? 0u : 1u;
+    model.live[0] = false;
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt attach state: %lu wrong", bad);
+}
+
+/* A full edge table refuses only a site that splits a constrained edge.
+ * Here the pieces of (0, 0)-(10, 0) end at the crossing vertex (5, 0) of
+ * (5, -5)-(5, 5): (12, 0), on their line beyond both, splits nothing and
+ * goes in; (2, 0) splits a piece and is refused; (5, 0) takes the
+ * crossing vertex's place, which splits nothing. */
+static void check_full_table_beyond(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, -5}, {5, 5}};
+    insert_all(&d, p, 4);
+    static const vor_cdt_limits_t four = {4, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 1, four.cut), &four) == VOR_OK)
+               ? 0u
+               : 1u;
+    bad += add_constraint(&d, 0, 1) + add_constraint(&d, 2, 3);
+    bad += (d.cdt->edge_count == 4u) ? 0u : 1u; /* the table is full */
+    vor_point_t beyond = {12, 0};
+    uint32_t id;
+    bad += (vor_insert(&d, beyond, &id) == VOR_OK) ? 0u : 1u;
+    model.at[id] = beyond;
+    model.live[id] = true;
+    vor_point_t inside_piece = {2, 0};
+    bad += (vor_insert(&d, inside_piece, &id) == VOR_ERR_NOMEM) ? 0u : 1u;
+    vor_point_t at_crossing = {5, 0};
+    bad += (vor_insert(&d, at_crossing, &id) == VOR_OK) ? 0u : 1u;
+    model.at[id] = at_crossing;
+    model.live[id] = true;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt full table, sites on a line: %lu wrong", bad);
+}
+
+/* The domain's marks stay through a refused change and go with a made
+ * one (vor_cdt.h): a square of four constraints fills a table of four,
+ * so moving the free site inside onto a side is refused (VOR_ERR_NOMEM)
+ * and the marks stay; removing that site clears them. */
+static void check_marks_kept(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {3, 7}};
+    insert_all(&d, p, 5);
+    static const vor_cdt_limits_t four = {4, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 4, 1, four.cut), &four) == VOR_OK)
+               ? 0u
+               : 1u;
+    for (uint32_t k = 0; k < 4u; k++) {
+        bad += add_constraint(&d, k, (k + 1u) % 4u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_point_t on_side = {5, 0};
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_move(&d, 4, on_side, NULL) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_OK) ? 0u : 1u;
+    bad += (vor_remove(&d, 4) == VOR_OK) ? 0u : 1u;
+    model.live[4] = false;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt marks kept and cleared: %lu wrong", bad);
+}
+
+/* A crossing vertex a site takes over frees its entry: in a table of one
+ * crossing, (0, 0)-(10, 0) and (5, -5)-(5, 5) cross at (5, 0), a site
+ * inserted there takes its place, and (0, 3)-(10, 3) may then cross
+ * (5, 0)-(5, 5). A site ending the only constraint stays (removal
+ * refused); one ending none goes. */
+static void check_crossing_freed(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, -5}, {5, 5}, {0, 3}, {10, 3}, {30, 30}};
+    insert_all(&d, p, 7);
+    static const vor_cdt_limits_t one = {40, 1, (2u * (CDT_SITES + 1u)) + 2u};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(CDT_SITES, 40, 1, one.cut), &one) == VOR_OK)
+               ? 0u
+               : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += (vor_remove(&d, 0) == VOR_ERR_CONSTRAINED) ? 0u : 1u;
+    bad += (vor_remove(&d, 6) == VOR_OK) ? 0u : 1u;
+    model.live[6] = false;
+    bad += add_constraint(&d, 2, 3);
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    vor_point_t at_crossing = {5, 0};
+    insert_all(&d, &at_crossing, 1);
+    bad += (gather_crossings(&d) == 0u) ? 0u : 1u;
+    bad += add_constraint(&d, 4, 5);
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt crossing freed: %lu wrong", bad);
+}
+
+/* Sites all on one line with a constraint, and sites inserted on that
+ * line beyond both ends: the search for a constrained edge holding the
+ * new site walks the hull edges on its line, which here go all the way
+ * round, and must stop (the site splits nothing). */
+static void check_collinear_beyond(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 5}, {20, 10}};
+    insert_all(&d, p, 3);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    static const vor_point_t beyond[] = {{30, 15}, {-10, -5}};
+    insert_all(&d, beyond, 2);
+    bad += (d.site_count == 5u) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0, "cdt collinear, sites beyond: %lu wrong", bad);
+}
+
+/* A zigzag of seven joins between four sites above a-b and four below,
+ * each crossing a-b at its own point, and a-b made across all of them:
+ * with ten sites and exactly seven crossings of room, a-b's crossings are
+ * all the room there is. Making it takes two steps a crossing (its
+ * insertion, then the piece up to it), 15 in all, which the recording
+ * pass's bound must allow (17 vertices of room). The joins are cut once each (14 edges) and a-b seven times
+ * (8 edges): 22 edges fit a table of 22 and not one of 21, where a-b is
+ * refused with nothing changed. A domain marked before a-b is no longer
+ * one after it. zigzag() builds the sites, with a table of `edges`. */
+static void zigzag(vor_t *d, uint32_t edges)
+{
+    model_clear();
+    (void)vor_init(d, arena, sizeof arena, 10);
+    static const vor_point_t p[] = {{-50, 0},   {150, 0},  {0, 100},  {10, -100}, {20, 100},
+                                    {30, -100}, {40, 100}, {50, -100}, {60, 100}, {70, -100}};
+    insert_all(d, p, sizeof p / sizeof p[0]);
+    const vor_cdt_limits_t room = {edges, 7, (2u * 17u) + 2u};
+    CHECK(vor_cdt_attach(d, memory, sizeof memory, &room) == VOR_OK, "cdt zigzag: attach");
+}
+
+static void check_zigzag_crossings(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    zigzag(&d, 22);
+    for (uint32_t s = 2; s < 9u; s++) {
+        bad += add_constraint(&d, s, s + 1u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    zigzag(&d, 21);
+    for (uint32_t s = 2; s < 9u; s++) {
+        bad += add_constraint(&d, s, s + 1u);
+    }
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    bad += (vor_constrain(&d, 0, 1) == VOR_ERR_NOMEM) ? 0u : 1u;
+    bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    bad += check_cdt(&d);
+    CHECK(bad == 0 && gather_crossings(&d) == 0u, "cdt zigzag crossings: %lu wrong", bad);
+}
+
+/* The cut's limit, stretch by stretch (docs/design/constraints.md: each
+ * stretch between two vertices or crossings is checked against cut - 2):
+ * check_fan_cut's scene, two constraints along y = 0 and y = 40 and a
+ * column of sites at x = -1 between them, with a second column below
+ * y = 0, crossed by the segment x = 0 from below that column to (0, 70).
+ * The triangles each stretch crosses are counted here from the
+ * triangulation before it (those with corners on both sides of x = 0,
+ * by the side of the two lines they lie on); with cuts around the larger
+ * of the first two stretches (the third kept short), the segment is made
+ * exactly when both fit within cut - 2. With a short column below the
+ * middle stretch decides, with a long one (and a short one above) the
+ * first. Returns 1 when the segment was made. */
+static uint32_t fan_stretches(unsigned shape, uint32_t cut, uint32_t stretch[3])
+{
+    static const int32_t above[2] = {40, 20};
+    static const int32_t below[2] = {3, 40};
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_point_t ends[] = {{-400, 0}, {400, 0}, {-400, 40}, {400, 40},
+                                {0, -30 - below[shape]}, {0, 70}};
+    insert_all(&d, ends, sizeof ends / sizeof ends[0]);
+    for (int32_t k = 1; k < above[shape]; k++) {
+        vor_point_t column = {-1, k};
+        insert_all(&d, &column, 1);
+    }
+    for (int32_t k = 1; k < below[shape]; k++) {
+        vor_point_t column = {-1, -k};
+        insert_all(&d, &column, 1);
+    }
+    vor_cdt_limits_t tight = {CDT_EDGES, CDT_CROSSINGS, cut};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &tight) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 2, 3);
+    stretch[0] = 0;
+    stretch[1] = 0;
+    stretch[2] = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    (void)vor_cdt_triangles_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        bool left = false;
+        bool right = false;
+        int32_t low = INT32_MAX;
+        int32_t high = INT32_MIN;
+        for (unsigned k = 0; k < 3u; k++) {
+            vor_point_t q = model.at[ids[k]];
+            left = left || (q.x < 0);
+            right = right || (q.x > 0);
+            low = (q.y < low) ? q.y : low;
+            high = (q.y > high) ? q.y : high;
+        }
+        if (left && right) {
+            stretch[(high <= 0) ? 0 : (low >= 40) ? 2 : 1]++;
+        }
+    }
+    int err = vor_constrain(&d, 4, 5);
+    bad += ((err == VOR_OK) || (err == VOR_ERR_NOMEM)) ? 0u : 1u;
+    if (err == VOR_OK) {
+        model.a[model.constraints] = 4;
+        model.b[model.constraints] = 5;
+        model.constraints++;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
+    return (err == VOR_OK) ? 1u : 0u;
+}
+
+static void check_fan_stretches(void)
+{
+    unsigned long bad = 0;
+    for (unsigned shape = 0; shape < 2u; shape++) {
+        uint32_t s[3];
+        (void)fan_stretches(shape, CDT_CUT, s);
+        uint32_t most = (s[0] > s[1]) ? s[0] : s[1];
+        /* the intended stretch decides; the last one stays short */
+        bad += ((s[shape] < most) && (s[2] + 4u < most)) ? 0u : 1u;
+        for (uint32_t cut = most - 2u; cut <= most + 3u; cut++) {
+            uint32_t fits = ((s[0] + 2u <= cut) && (s[1] + 2u <= cut) && (s[2] + 2u <= cut)) ? 1u
+                                                                                          : 0u;
+            bad += (fan_stretches(shape, cut, s) == fits) ? 0u : 1u;
+        }
+    }
+    CHECK(bad == 0, "cdt fan stretches: %lu wrong", bad);
+}
+
+/* A crossing vertex's lines are given by the first sites along each
+ * line's constrained edges, each way from it (docs/design/constraints.md,
+ * "crossing vertex"): a segment S-T crossing P-Q, beyond which Q-R
+ * continues P-Q's line, reports S, T, P and Q, not R. Once Q-R is taken
+ * off and R removed, the crossing (defined again) still reports sites of
+ * the diagram, and the triangulation is whole. */
+static void check_crossing_line_sites(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0},  {10, 0},   {20, 0}, {5, 5},
+                                    {5, -5}, {-10, 10}, {30, -10}};
+    insert_all(&d, p, sizeof p / sizeof p[0]);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    bad += add_constraint(&d, 1, 2);
+    bad += add_constraint(&d, 3, 4);
+    uint32_t s[4];
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
+    /* S-T's line (sites 3, 4), then P-Q's (0, 1), each either way round */
+    bad += (((s[0] == 3u) && (s[1] == 4u)) || ((s[0] == 4u) && (s[1] == 3u))) ? 0u : 1u;
+    bad += (((s[2] == 0u) && (s[3] == 1u)) || ((s[2] == 1u) && (s[3] == 0u))) ? 0u : 1u;
+    bad += (vor_unconstrain(&d, 1, 2) == VOR_OK) ? 0u : 1u;
+    model.a[1] = 3; /* the model keeps P-Q and S-T */
+    model.b[1] = 4;
+    model.constraints = 2;
+    bad += (vor_remove(&d, 2) == VOR_OK) ? 0u : 1u;
+    model.live[2] = false;
+    bad += (gather_crossings(&d) == 1u) ? 0u : 1u;
+    bad += (vor_cdt_crossing(&d, crossing_ids[0], s) == VOR_OK) ? 0u : 1u;
+    for (unsigned k = 0; k < 4u; k++) {
+        bad += ((s[k] < CDT_SITES) && model.live[s[k]]) ? 0u : 1u;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt crossing line sites: %lu wrong", bad);
+}
+
+/* Home slots where the rule has no slack: random sites in a box of
+ * width 1000 and height 8, 60 or 1000 and random constraints across them,
+ * whose long cavities hold many home slots, checked after each
+ * constraint. Seeds 125 and 490 of this scene put a sub-polygon's room
+ * at exactly what its demanded corners need, so that one corner sent the
+ * wrong way leaves a home slot unserved (mutants of triangulate's room
+ * rule crash or break the links there). */
+static void check_tight_homes(void)
+{
+    static const uint32_t seeds[] = {125, 490};
+    unsigned long bad = 0;
+    for (unsigned s = 0; s < 2u; s++) {
+        test_rng_t rng;
+        test_rng_seed(&rng, seeds[s]);
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        uint32_t n = 8u + (test_rng_u32(&rng) % 40u);
+        unsigned kind = test_rng_u32(&rng) % 3u;
+        int32_t height = (kind == 0u) ? 8 : (kind == 1u) ? 60 : 1000;
+        for (uint32_t i = 0; i < n; i++) {
+            vor_point_t q = {test_rng_range(&rng, 0, 1000), test_rng_range(&rng, 0, height)};
+            uint32_t id;
+            if (vor_insert(&d, q, &id) == VOR_OK) {
+                model.at[id] = q;
+                model.live[id] = true;
+            }
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        uint32_t want = 1u + (test_rng_u32(&rng) % 12u);
+        for (uint32_t k = 0; (k < 100u) && (model.constraints < want); k++) {
+            uint32_t a = test_rng_u32(&rng) % d.site_count;
+            uint32_t b = test_rng_u32(&rng) % d.site_count;
+            if (!model.live[a] || !model.live[b] || (a == b)) {
+                continue;
+            }
+            bad += add_constraint(&d, a, b);
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt tight homes: %lu wrong", bad);
+}
+
+/* A triangle by its sorted corners, as check_domain keys it. */
+static uint64_t triangle_key(const uint32_t ids[3])
+{
+    uint32_t lo = (ids[0] < ids[1]) ? ids[0] : ids[1];
+    lo = (lo < ids[2]) ? lo : ids[2];
+    uint32_t hi = (ids[0] > ids[1]) ? ids[0] : ids[1];
+    hi = (hi > ids[2]) ? hi : ids[2];
+    uint32_t mid = ids[0] + ids[1] + ids[2] - lo - hi;
+    return ((uint64_t)lo << 42) | ((uint64_t)mid << 21) | hi;
+}
+
+/* The domain against its definition by brute force, for any constraints
+ * (open ones too, where check_domain's local rule does not hold): every
+ * triangle's least level, relaxed across its edges until none lowers (an
+ * edge under k of the test's constraints costs k, an edge of one listed
+ * triangle borders the outside at level 0), capped at 126; a triangle is
+ * inside exactly when that level is odd. Returns the triangles wrong. */
+static unsigned long domain_faults(const vor_t *d)
+{
+    static uint64_t inside_keys[2u * CDT_VERTICES];
+    static uint32_t least[2u * CDT_VERTICES];
+    static bool reported[2u * CDT_VERTICES];
+    const uint32_t unreached = 1u << 30;
+    unsigned long bad = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    uint32_t ni = 0;
+    bad += (vor_cdt_inside_begin(&it, d) == VOR_OK) ? 0u : 1u;
+    while ((vor_cdt_triangles_next(&it, ids) == 1) && (ni < 2u * CDT_VERTICES)) {
+        inside_keys[ni++] = triangle_key(ids);
+    }
+    sort_keys(inside_keys, ni);
+    uint32_t nt = 0;
+    uint32_t nh = 0;
+    (void)vor_cdt_triangles_begin(&it, d);
+    while ((vor_cdt_triangles_next(&it, ids) == 1) && (nt < 2u * CDT_VERTICES)) {
+        reported[nt] = has_key(inside_keys, ni, triangle_key(ids));
+        least[nt] = unreached;
+        for (unsigned k = 0; k < 3u; k++) {
+            halves[nh].key = edge_key(ids[(k + 1u) % 3u], ids[(k + 2u) % 3u]);
+            halves[nh].apex = nt; /* here: the triangle's number */
+            nh++;
+        }
+        nt++;
+    }
+    sort_halves(halves, nh);
+    for (uint32_t i = 0; i < nh; i++) { /* here: the edge's cost */
+        halves[i].forward = constraints_through(d, (uint32_t)(halves[i].key >> 32),
+                                                (uint32_t)halves[i].key);
+    }
+    bool lowered = true;
+    while (lowered) {
+        lowered = false;
+        for (uint32_t i = 0; i < nh;) {
+            uint32_t j = i + 1u;
+            while ((j < nh) && (halves[j].key == halves[i].key)) {
+                j++;
+            }
+            uint32_t cost = halves[i].forward;
+            uint32_t a = halves[i].apex;
+            uint32_t b = halves[j - 1u].apex;
+            uint32_t from_a = (j - i == 1u) ? 0u : least[b]; /* a's other side */
+            uint32_t from_b = least[a];
+            if ((from_a < unreached) && (from_a + cost < least[a])) {
+                least[a] = from_a + cost;
+                lowered = true;
+            }
+            if ((j - i == 2u) && (from_b < unreached) && (from_b + cost < least[b])) {
+                least[b] = from_b + cost;
+                lowered = true;
+            }
+            bad += (j - i <= 2u) ? 0u : 1u;
+            i = j;
+        }
+    }
+    for (uint32_t t = 0; t < nt; t++) {
+        uint32_t level = (least[t] > 126u) ? 126u : least[t];
+        bad += (((level & 1u) != 0u) == reported[t]) ? 0u : 1u;
+    }
+    return bad;
+}
+
+/* Open constraints (random segments between random sites, some twice):
+ * a triangle beside one is reached around its ends at a lower level than
+ * across it, so a level first reached across a constraint must be
+ * lowered later; the domain against the brute force. */
+static void check_open_domains(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 41);
+    unsigned long bad = 0;
+    for (unsigned round = 0; round < 6u; round++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (uint32_t i = 0; i < 40u; i++) {
+            vor_point_t p = {test_rng_range(&rng, 0, 1000), test_rng_range(&rng, 0, 1000)};
+            insert_all(&d, &p, 1);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t k = 0; k < 8u; k++) {
+            uint32_t a = test_rng_u32(&rng) % d.site_count;
+            uint32_t b = test_rng_u32(&rng) % d.site_count;
+            if ((a != b) && model.live[a] && model.live[b]) {
+                bad += add_constraint(&d, a, b);
+                if ((k % 3u) == 0u) {
+                    bad += add_constraint(&d, b, a);
+                }
+            }
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        bad += domain_faults(&d);
+    }
+    CHECK(bad == 0, "cdt open domains: %lu wrong", bad);
+}
+
+/* One triangle, two of its sides constrained, each choice of the free
+ * one: the inside is reached at level 0 only across the free side's
+ * triangle at infinity, whichever of the flood's seeds that is. */
+static void check_domain_seeds(void)
+{
+    unsigned long bad = 0;
+    static const vor_point_t corners[] = {{0, 0}, {90, 10}, {30, 70}};
+    for (uint32_t free_side = 0; free_side < 3u; free_side++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        insert_all(&d, corners, 3);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        for (uint32_t side = 0; side < 3u; side++) {
+            if (side != free_side) {
+                bad += add_constraint(&d, side, (side + 1u) % 3u);
+            }
+        }
+        bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+        bad += domain_faults(&d);
+    }
+    CHECK(bad == 0, "cdt domain seeds: %lu wrong", bad);
+}
+
+/* The flood's sweeps doing all the work: 70 sites in convex position
+ * with their hull constrained but for one side (each in turn), flooded
+ * with a stack of 26 pairs (a cut of 0). The 70 triangles at infinity
+ * overflow it at once, so when the free side's one is lost, the whole
+ * inside is reached at level 0 only by the sweeps, through it, over
+ * many passes. The sites are numbered from two starting points, so that
+ * the first slot (site 0's home) holds another triangle. */
+static void check_flood_gateways(void)
+{
+    unsigned long bad = 0;
+    for (int32_t first = 0; first < 2; first++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        for (int32_t j = 0; j < 70; j++) { /* on the parabola y = x^2 / 64 */
+            int32_t i = (j + first) % 70;
+            vor_point_t p = {(i - 35) * 64, (i - 35) * (i - 35) * 64};
+            insert_all(&d, &p, 1);
+        }
+        static const vor_cdt_limits_t small = {3u * (CDT_SITES + 8u), 8, 0};
+        const size_t bytes = VOR_CDT_BYTES(CDT_SITES, small.edges, 8, 0);
+        canary_fill(bytes);
+        bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
+        for (uint32_t k = 0; k < 70u; k++) {
+            bad += add_constraint(&d, k, (k + 1u) % 70u);
+        }
+        for (uint32_t g = 0; g < 70u; g++) {
+            bad += (vor_unconstrain(&d, g, (g + 1u) % 70u) == VOR_OK) ? 0u : 1u;
+            model.a[g] = model.a[69]; /* the model without side g */
+            model.b[g] = model.b[69];
+            model.constraints = 69;
+            bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+            bad += domain_faults(&d);
+            model.a[69] = model.a[g];
+            model.b[69] = model.b[g];
+            model.a[g] = g;
+            model.b[g] = (g + 1u) % 70u;
+            model.constraints = 70;
+            bad += (vor_constrain(&d, g, (g + 1u) % 70u) == VOR_OK) ? 0u : 1u;
+        }
+        bad += canary_faults(bytes);
+    }
+    CHECK(bad == 0, "cdt flood gateways: %lu wrong", bad);
+}
+
+/* Levels past 126 count as 126: a triangle constrained 126 times around
+ * a smaller one constrained once, whose inside only the flood of level
+ * 126 reaches (126 + 1 counts as 126): no triangle is inside. */
+static void check_nesting_past_cap(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t corners[] = {{0, 0},     {900, 0},   {450, 800},
+                                          {400, 200}, {500, 200}, {450, 300}};
+    insert_all(&d, corners, 6);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t j = 0; j < 126u; j++) {
+        for (uint32_t side = 0; side < 3u; side++) {
+            bad += (vor_constrain(&d, side, (side + 1u) % 3u) == VOR_OK) ? 0u : 1u;
+        }
+    }
+    for (uint32_t side = 0; side < 3u; side++) {
+        bad += (vor_constrain(&d, 3u + side, 3u + ((side + 1u) % 3u)) == VOR_OK) ? 0u : 1u;
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    uint32_t inside = 0;
+    (void)vor_cdt_inside_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        inside++;
+    }
+    CHECK(bad == 0 && inside == 0u, "cdt nesting past the cap: %lu wrong, %u inside", bad,
+          (unsigned)inside);
+}
+
+/* A level's first triangles are the pending ones, wherever they sit: a
+ * hexagon around site 0 (whose home slot, the first, holds one of its
+ * triangles), each triangle T = (0, i, i + 1) with its sides constrained
+ * once and a neighbour U's two other sides three times, so that U's
+ * least level (2, through T) is reached only from T. */
+static void check_domain_pending_slots(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    static const vor_point_t hexagon[] = {{0, 0},    {100, 0},  {50, 87}, {-50, 87},
+                                          {-100, 0}, {-50, -87}, {50, -87}};
+    for (uint32_t i = 1; i <= 6u; i++) {
+        for (uint32_t way = 0; way < 2u; way++) {
+            uint32_t j = (i % 6u) + 1u; /* T = (0, i, j) */
+            /* U = (0, j, beyond) across 0-j, or (0, beyond, i) across 0-i */
+            uint32_t shared = (way == 0u) ? j : i;
+            uint32_t beyond = (way == 0u) ? ((j % 6u) + 1u) : (((i + 4u) % 6u) + 1u);
+            model_clear();
+            (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+            insert_all(&d, hexagon, 7);
+            bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+            bad += add_constraint(&d, 0, i) + add_constraint(&d, 0, j) + add_constraint(&d, i, j);
+            for (uint32_t times = 0; times < 3u; times++) {
+                bad += add_constraint(&d, 0, beyond) + add_constraint(&d, shared, beyond);
+            }
+            bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+            bad += domain_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt domain pending slots: %lu wrong", bad);
+}
+
+/* A constraint taken off clears the domain (the header: any change), and
+ * the edge iterator refuses either output NULL while edges remain. */
+static void check_unconstrain_domain(void)
+{
+    unsigned long bad = 0;
+    vor_t d;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t square[] = {{0, 0}, {100, 0}, {100, 100}, {0, 100}, {50, 50}};
+    insert_all(&d, square, 5);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t k = 0; k < 4u; k++) {
+        bad += add_constraint(&d, k, (k + 1u) % 4u);
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_cdt_edge_iter_t e;
+    uint32_t a;
+    uint32_t b;
+    bad += (vor_cdt_edges_begin(&e, &d) == VOR_OK) ? 0u : 1u;
+    bad += ((vor_cdt_edges_next(&e, NULL, &b) == 0) && (vor_cdt_edges_next(&e, &a, NULL) == 0))
+               ? 0u
+               : 1u;
+    bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_ERR_ARG) ? 0u : 1u;
+    CHECK(bad == 0, "cdt unconstrain and the domain: %lu wrong", bad);
+}
+
+/* Lawson's stack holds only what the call pushed: the scratch filled with
+ * ids of no vertex, then a constraint along an edge (no cavity) made and
+ * taken off again. */
+static void check_stale_lawson_stack(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    static const vor_point_t p[] = {{0, 0}, {10, 0}, {5, 3}, {5, -3}};
+    insert_all(&d, p, 4);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    struct vor__cdt *c = d.cdt;
+    for (size_t k = 0; k < 13u * ((size_t)c->max_cut + 4u); k++) {
+        c->scratch[k] = VOR__NONE;
+    }
+    bad += add_constraint(&d, 2, 3);
+    bad += (vor_unconstrain(&d, 3, 2) == VOR_OK) ? 0u : 1u;
+    model.constraints = 0;
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt stale lawson stack: %lu wrong", bad);
+}
+
+/* Below two sites the slots hold stale contents, which the domain must
+ * not read: one site, every slot made to look like a triangle at
+ * infinity with neighbours far past the mesh. */
+static void check_domain_one_site(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    vor_point_t lone = {3, 4};
+    insert_all(&d, &lone, 1);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    vor__tri_t *tri = d.cdt->mesh.triangles;
+    for (uint32_t s = 0; s < vor__triangle_count(d.cdt->mesh.max_sites); s++) {
+        uint8_t *corners = (uint8_t *)tri[s].v; /* all ones: the vertex at infinity */
+        for (size_t k = 0; k < sizeof tri[s].v; k++) {
+            corners[k] = 0xFFu;
+        }
+        for (unsigned k = 0; k < 3u; k++) {
+            tri[s].n[k] = (vor_index_t)(VOR__NONE - 1u);
+        }
+    }
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    bad += (vor_cdt_inside_begin(&it, &d) == VOR_OK) ? 0u : 1u;
+    bad += (vor_cdt_triangles_next(&it, ids) == 0) ? 0u : 1u;
+    CHECK(bad == 0, "cdt domain of one site: %lu wrong", bad);
+}
+
+/* Lawson's stack at its room: 14 sites (so few triangle slots that the
+ * domain's levels after the scratch take 26 bytes), a constraint with 11
+ * sites in a band of 10 on either side of it, inserted after it, taken
+ * off with a cut of 0 (26 pairs): the flips would stack 35 pairs, and
+ * nothing may be written past the memory given. */
+static void check_lawson_room(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, 14);
+    static const vor_point_t line[] = {{0, 0}, {10000, 0}, {5000, 3000}};
+    insert_all(&d, line, 3);
+    static const vor_cdt_limits_t small = {42, 0, 0};
+    const size_t bytes = VOR_CDT_BYTES(14, small.edges, 0, 0);
+    canary_fill(bytes);
+    bad += (vor_cdt_attach(&d, memory, bytes, &small) == VOR_OK) ? 0u : 1u;
+    bad += add_constraint(&d, 0, 1);
+    static const vor_point_t band[] = {{834, 10},  {7101, -6}, {9329, -2}, {3237, 8},
+                                       {8228, -1}, {5532, 8},  {6538, 6},  {1894, -4},
+                                       {8117, 1},  {893, -2},  {3026, -9}};
+    insert_all(&d, band, 11);
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 1, 0) == VOR_OK) ? 0u : 1u;
+    model.constraints = 0;
+    bad += check_cdt(&d) + mesh_link_faults(&d) + canary_faults(bytes);
+    CHECK(bad == 0, "cdt lawson room: %lu wrong", bad);
+}
+
+/* A crossing vertex on three constraints, one of its two defining ones
+ * taken off: it is defined again by the other two, so that the sites of
+ * the one taken off can go and their ids be used again elsewhere. */
+static void check_crossing_redefined(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    /* y = 50, x = 50 and the diagonal, all through (50, 50) */
+    static const vor_point_t ends[] = {{0, 50}, {100, 50}, {50, 0}, {50, 100}, {0, 0}, {100, 100},
+                                       {20, 80}, {80, 20}};
+    insert_all(&d, ends, 8);
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+    for (uint32_t k = 0; k < 3u; k++) {
+        bad += add_constraint(&d, 2u * k, (2u * k) + 1u);
+    }
+    bad += check_cdt(&d);
+    bad += (vor_unconstrain(&d, 0, 1) == VOR_OK) ? 0u : 1u;
+    model.a[0] = model.a[2];
+    model.b[0] = model.b[2];
+    model.constraints = 2;
+    bad += check_cdt(&d);
+    bad += ((vor_remove(&d, 0) == VOR_OK) && (vor_remove(&d, 1) == VOR_OK)) ? 0u : 1u;
+    model.live[0] = false;
+    model.live[1] = false;
+    static const vor_point_t elsewhere[] = {{10, 60}, {70, 95}};
+    insert_all(&d, elsewhere, 2);
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt crossing redefined: %lu wrong", bad);
+}
+
+/* The flood starts from every triangle at infinity, wherever its slot:
+ * seven sites whose triangles at infinity all sit in the second, fourth,
+ * ... used slots (found by a search over slot layouts); without any
+ * constraint every triangle is at level 0, outside. */
+static void check_domain_all_seeds(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, 7);
+    static const vor_point_t p[] = {{933, 464}, {778, 23},  {822, 700}, {988, 594},
+                                    {384, 515}, {851, 803}, {856, 296}};
+    insert_all(&d, p, 7);
+    static const vor_cdt_limits_t few = {21, 0, 16};
+    bad += (vor_cdt_attach(&d, memory, VOR_CDT_BYTES(7, 21, 0, 16), &few) == VOR_OK) ? 0u : 1u;
+    bad += (vor_cdt_domain(&d) == VOR_OK) ? 0u : 1u;
+    bad += domain_faults(&d);
+    CHECK(bad == 0, "cdt domain from all seeds: %lu wrong", bad);
+}
+
+/* A stretch that ends at a vertex may cross cut - 1 triangles (vor_cdt.h,
+ * VOR_ERR_NOMEM): no crossing vertex is made at its end. Segment a-b
+ * along x = 0, with a column of sites at x = -1 beside it and one site
+ * far right, crosses every triangle with corners on both sides of x = 0
+ * (a and b are the hull's lowest and highest points on that line), T of
+ * them, counted here from the triangulation before it: cut T refuses it
+ * with nothing changed, cut T + 1 makes it. */
+static uint32_t last_stretch(uint32_t cut, uint32_t *crossed)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    model_clear();
+    (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+    const vor_point_t ends[] = {{0, -10}, {0, 100}, {400, 45}};
+    insert_all(&d, ends, sizeof ends / sizeof ends[0]);
+    for (int32_t k = 1; k < 30; k++) {
+        vor_point_t column = {-1, 3 * k};
+        insert_all(&d, &column, 1);
+    }
+    vor_cdt_limits_t tight = {CDT_EDGES, CDT_CROSSINGS, cut};
+    bad += (vor_cdt_attach(&d, memory, sizeof memory, &tight) == VOR_OK) ? 0u : 1u;
+    *crossed = 0;
+    vor_cdt_triangle_iter_t it;
+    uint32_t ids[3];
+    (void)vor_cdt_triangles_begin(&it, &d);
+    while (vor_cdt_triangles_next(&it, ids) == 1) {
+        bool left = false;
+        bool right = false;
+        for (unsigned k = 0; k < 3u; k++) {
+            left = left || (model.at[ids[k]].x < 0);
+            right = right || (model.at[ids[k]].x > 0);
+        }
+        *crossed += (left && right) ? 1u : 0u;
+    }
+    test_copy_bytes(saved_memory, memory, sizeof memory);
+    int err = vor_constrain(&d, 0, 1);
+    bad += ((err == VOR_OK) || (err == VOR_ERR_NOMEM)) ? 0u : 1u;
+    if (err == VOR_OK) {
+        model.a[model.constraints] = 0;
+        model.b[model.constraints] = 1;
+        model.constraints++;
+    } else {
+        bad += test_same_bytes(saved_memory, memory, sizeof memory) ? 0u : 1u;
+    }
+    bad += check_cdt(&d) + mesh_link_faults(&d);
+    CHECK(bad == 0, "cdt last stretch: %lu wrong", bad);
+    return (err == VOR_OK) ? 1u : 0u;
+}
+
+static void check_last_stretch(void)
+{
+    uint32_t t;
+    (void)last_stretch(CDT_CUT, &t);
+    uint32_t again;
+    unsigned long bad = (t > 20u) ? 0u : 1u; /* the column makes a long fan */
+    bad += (last_stretch(t, &again) == 0u) ? 0u : 1u;
+    bad += (last_stretch(t + 1u, &again) == 1u) ? 0u : 1u;
+    bad += (again == t) ? 0u : 1u;
+    CHECK(bad == 0, "cdt last stretch: %u triangles, %lu wrong", t, bad);
+}
+
+/* A crossing vertex taken off where a vertex of its ring is left with
+ * three neighbours: constraints 2-4 and 5-0 (through site 3) cross at x,
+ * and site 0's only other neighbours are sites 1 and 2, so triangle
+ * (2, 1, 0) lies outside two of x's four ring edges, 1-0 and 0-2. Taking
+ * 2-4 off removes x; the new triangles' links must follow the edges, not
+ * the old slots (one of which a new triangle reuses): once they broke. */
+static void check_ring_of_three(void)
+{
+    vor_t d;
+    unsigned long bad = 0;
+    for (unsigned order = 0; order < 2u; order++) {
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t p[] = {{-3, -4}, {6, -3}, {-5, -5}, {-2, -1}, {5, 4}, {-1, 2}};
+        insert_all(&d, p, sizeof p / sizeof p[0]);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += add_constraint(&d, 2, 4);
+        bad += add_constraint(&d, 5, 0);
+        bad += check_cdt(&d) + mesh_link_faults(&d) + ((gather_crossings(&d) == 1u) ? 0u : 1u);
+        int err = (order == 0u) ? vor_unconstrain(&d, 2, 4) : vor_unconstrain(&d, 4, 2);
+        bad += (err == VOR_OK) ? 0u : 1u;
+        model.a[0] = 5;
+        model.b[0] = 0;
+        model.constraints = 1;
+        bad += mesh_link_faults(&d) + check_cdt(&d) + ((gather_crossings(&d) == 0u) ? 0u : 1u);
+    }
+    CHECK(bad == 0, "cdt crossing off beside a vertex of degree 3: %lu wrong", bad);
+}
+
+/* Few sites (4 to 7 on a small grid): a hull site is then often a
+ * neighbour of every other vertex, so that the turn around it to an
+ * edge's triangle (Lawson's test of an edge a removal freed) may meet
+ * all of them, infinity included, and ring vertices of degree 3 are
+ * common. Constraints among them, crossing each other, are taken off
+ * again one by one in either direction, the triangulation and the mesh's
+ * links checked after each. */
+static void check_tiny_scenes(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 31337);
+    unsigned long bad = 0;
+    for (unsigned round = 0; round < 400u; round++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        uint32_t n = 4u + (test_rng_u32(&rng) % 4u);
+        for (uint32_t i = 0; i < n; i++) {
+            (void)insert_random(&d, &rng, 0u);
+        }
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        constrain_random(&d, &rng, 1u + (test_rng_u32(&rng) % 4u), &bad);
+        bad += mesh_link_faults(&d);
+        while (model.constraints > 0u) {
+            uint32_t k = test_rng_u32(&rng) % model.constraints;
+            uint32_t a = model.a[k];
+            uint32_t b = model.b[k];
+            int err = ((test_rng_u32(&rng) & 1u) != 0u) ? vor_unconstrain(&d, a, b)
+                                                        : vor_unconstrain(&d, b, a);
+            bad += (err == VOR_OK) ? 0u : 1u;
+            model.constraints--;
+            model.a[k] = model.a[model.constraints];
+            model.b[k] = model.b[model.constraints];
+            bad += check_cdt(&d) + mesh_link_faults(&d);
+        }
+    }
+    CHECK(bad == 0, "cdt tiny scenes: %lu wrong", bad);
+}
+
+/* A crossing vertex taken off whose freed slot is the first packed one
+ * (the constrained mesh's max_sites), while (u, s, v) takes s's home: five
+ * sites, constraints 4-0, 4-1 and 3-2 (which crosses 4-0), then 3-2 off.
+ * Site 1's three triangles are then all in home slots, so that treating
+ * the packed slot as a home to refill from a star finds nothing to move
+ * and leaves the last packed triangle out of the mesh. The links and the
+ * triangulation must stay whole. */
+static void check_first_packed_freed(void)
+{
+    unsigned long bad = 0;
+    for (unsigned order = 0; order < 2u; order++) {
+        vor_t d;
+        model_clear();
+        (void)vor_init(&d, arena, sizeof arena, CDT_SITES);
+        static const vor_point_t p[] = {{-4, 2}, {2, -1}, {-5, 5}, {2, -4}, {6, 0}};
+        insert_all(&d, p, sizeof p / sizeof p[0]);
+        bad += (vor_cdt_attach(&d, memory, sizeof memory, &limits) == VOR_OK) ? 0u : 1u;
+        bad += add_constraint(&d, 4, 0);
+        bad += add_constraint(&d, 4, 1);
+        bad += add_constraint(&d, 3, 2);
+        bad += check_cdt(&d) + ((gather_crossings(&d) == 1u) ? 0u : 1u);
+        int err = (order == 0u) ? vor_unconstrain(&d, 3, 2) : vor_unconstrain(&d, 2, 3);
+        bad += (err == VOR_OK) ? 0u : 1u;
+        model.constraints = 2;
+        bad += mesh_link_faults(&d) + check_cdt(&d) + ((gather_crossings(&d) == 0u) ? 0u : 1u);
+    }
+    CHECK(bad == 0, "cdt crossing off freeing the first packed slot: %lu wrong", bad);
 }
