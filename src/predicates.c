@@ -140,7 +140,7 @@ VOR__INLINE void mid_term(vor__mw_u128_t sums[2], const int64_t d[6], unsigned p
 
 /* x^2 + y^2 of differences below 2^32 in magnitude: below 2^65, a word
  * and its 65th bit (*high). */
-VOR__INLINE uint64_t wide_lift(int64_t x, int64_t y, uint64_t *high)
+VOR__ALWAYS_INLINE uint64_t wide_lift(int64_t x, int64_t y, uint64_t *high)
 {
     uint64_t sx = vor__mul_u32(vor__mw_magnitude(x), vor__mw_magnitude(x));
     uint64_t lift = sx + vor__mul_u32(vor__mw_magnitude(y), vor__mw_magnitude(y));
@@ -529,11 +529,13 @@ int vor__orient2d_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
  * < 2^130 goes to the sum of its sign, three of them < 2^132 in 192 bits.
  * With weights (w: the rows' and the top site's, else NULL) a point row's
  * third entry is x^2 + y^2 - dw, and its weight term (below 2^129) joins
- * the sums as in the power test (power_wide). Out of line: one copy
- * serves every term the closed forms do not decide, for every size of
- * difference. */
-static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], const int64_t *w,
-                                     unsigned kinds)
+ * the sums as in the power test (power_wide). Two copies out of line
+ * (term_sign, power_term_sign): the incircle's, in which w is NULL and
+ * the weights' code folds away, so that a firmware without power
+ * diagrams carries none of it; each serves every term the closed forms
+ * do not decide, for every size of difference. */
+VOR__ALWAYS_INLINE int term_sign_of(const int64_t x[3], const int64_t y[3], const int64_t *w,
+                                    unsigned kinds)
 {
     int64_t e[3][2];
     uint64_t c[3];
@@ -567,6 +569,17 @@ static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], const
         }
     }
     return vor__mw_u192_compare(&sums[0], &sums[1]);
+}
+
+static VOR__NOINLINE int term_sign(const int64_t x[3], const int64_t y[3], unsigned kinds)
+{
+    return term_sign_of(x, y, NULL, kinds);
+}
+
+static VOR__NOINLINE int power_term_sign(const int64_t x[3], const int64_t y[3],
+                                         const int64_t w[4], unsigned kinds)
+{
+    return term_sign_of(x, y, w, kinds);
 }
 
 int vor_incircle_sos(const vor_point_t *sites, uint32_t i, uint32_t j, uint32_t k,
@@ -684,7 +697,7 @@ VOR__INLINE int first_terms(const int64_t e[5], unsigned *next)
  * (returns true then). The other three, ids[], are then the rows of the
  * minor, whose sign is the determinant's (the cofactor of the (4, 4)
  * entry is +1). */
-VOR__INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32_t ids[3],
+VOR__ALWAYS_INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32_t ids[3],
                           uint32_t *top)
 {
     ids[0] = i;
@@ -698,26 +711,25 @@ VOR__INLINE bool move_top(uint32_t i, uint32_t j, uint32_t k, uint32_t l, uint32
     return swapped;
 }
 
-/* The perturbed incircle of sites i, j, k, l from its term t = first on,
- * the earlier ones known to be 0 (t = 1 when the differences are too wide
- * for the first terms' closed forms): -1 or 1. Out of line, and the rows
- * found and their differences computed again: rarely reached, and its
- * frame is not stacked on the first terms' (first_two_terms). */
-static VOR__NOINLINE int later_terms(const vor_point_t *sites, const int64_t *weights,
-                                     uint32_t i, uint32_t j, uint32_t k, uint32_t l,
-                                     unsigned first)
+/* The perturbed incircle (weights NULL) or power test of sites i, j, k,
+ * l from its term t = first on, the earlier ones known to be 0 (t = 1
+ * when the differences are too wide for the first terms' closed forms):
+ * -1 or 1. Out of line (later_terms, power_later_terms, as term_sign),
+ * and the rows found and their differences computed again: rarely
+ * reached, and its frame is not stacked on the first terms'
+ * (first_two_terms). */
+VOR__ALWAYS_INLINE int terms_from(const vor_point_t *sites, const int64_t *weights, uint32_t i,
+                                  uint32_t j, uint32_t k, uint32_t l, unsigned first)
 {
     uint32_t ids[3];
     uint32_t top;
     bool swapped = move_top(i, j, k, l, ids, &top);
     int64_t w[4]; /* the rows' weights and the top site's, when weighted */
-    const int64_t *row_weights = NULL;
     if (weights != NULL) {
         w[0] = weights[ids[0]];
         w[1] = weights[ids[1]];
         w[2] = weights[ids[2]];
         w[3] = weights[top];
-        row_weights = w;
     }
     int64_t x[3];
     int64_t y[3];
@@ -743,11 +755,23 @@ static VOR__NOINLINE int later_terms(const vor_point_t *sites, const int64_t *we
             squares += (kind == (unsigned)ROW_SQUARE) ? 1u : 0u;
         }
         if (squares < 2u) { /* else two equal rows: the term is 0 */
-            sign = term_sign(x, y, row_weights, kinds);
+            sign = (weights == NULL) ? term_sign(x, y, kinds) : power_term_sign(x, y, w, kinds);
         }
     }
     VOR_ASSERT(sign != 0);
     return swapped ? -sign : sign;
+}
+
+static VOR__NOINLINE int later_terms(const vor_point_t *sites, uint32_t i, uint32_t j,
+                                     uint32_t k, uint32_t l, unsigned first)
+{
+    return terms_from(sites, NULL, i, j, k, l, first);
+}
+
+static VOR__NOINLINE int power_later_terms(const vor_point_t *sites, const int64_t *weights,
+                                           uint32_t i, uint32_t j, uint32_t k, uint32_t l)
+{
+    return terms_from(sites, weights, i, j, k, l, 1u);
 }
 
 /* The perturbed incircle of sites i, j, k, l by its first two terms: -1
@@ -809,7 +833,7 @@ int vor__incircle_perturbed(const vor_point_t *sites, uint32_t i, uint32_t j,
     if ((sign == 1) || (sign == -1)) {
         return sign;
     }
-    return later_terms(sites, NULL, i, j, k, l, (sign == 0) ? 1u : 3u);
+    return later_terms(sites, i, j, k, l, (sign == 0) ? 1u : 3u);
 }
 
 /* The perturbed power test: the incircle's when the four weights are
@@ -825,7 +849,7 @@ int vor__power_perturbed(const vor_point_t *sites, const int64_t *weights, uint3
     }
     VOR__COUNT(stats, power_perturbed);
     VOR_ASSERT(i != j && i != k && i != l && j != k && j != l && k != l);
-    return later_terms(sites, weights, i, j, k, l, 1u);
+    return power_later_terms(sites, weights, i, j, k, l);
 }
 
 int vor_power_test_sos(const vor_point_t *sites, const int64_t *weights, uint32_t i,

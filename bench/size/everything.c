@@ -70,6 +70,12 @@ int main(void)
     acc += vor_orient2d_sos(raster_points, 0, 1, 2);
     acc += vor_incircle_sos(raster_points, 0, 1, 2, 3);
     acc += vor_closer_sos(raster_points, 0, 1, 2);
+    static const int64_t weights[4] = {0, 1, 2, 3};
+    acc += vor_power_test(raster_points[0], weights[0], raster_points[1], weights[1],
+                          raster_points[2], weights[2], raster_points[3], weights[3]);
+    acc += vor_power_test_sos(raster_points, weights, 0, 1, 2, 3);
+    acc += vor_power_closer(raster_points[0], raster_points[1], weights[1], raster_points[2],
+                            weights[2]);
     vor_cdt_limits_t limits = {64, 16, 64};
     acc |= vor_cdt_attach(&d, walls, sizeof walls, &limits);
     acc |= vor_constrain(&d, 0, site);
