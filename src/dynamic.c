@@ -315,6 +315,45 @@ void vor__rehome(vor_t *d, vor_index_t h, vor_index_t start, vor_index_t last)
     }
 }
 
+void vor__merge_three(vor_t *d, vor_index_t p, const vor_index_t nb[3], const vor_index_t sl[3])
+{
+    vor__tri_t *tri = d->triangles;
+    /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
+    vor_index_t a = nb[0];
+    vor_index_t b = nb[1];
+    vor_index_t c = nb[2];
+    vor_index_t s1 = sl[0];
+    vor_index_t s2 = sl[1];
+    vor_index_t s3 = sl[2];
+    vor_index_t o1 = tri[s1].n[corner(&tri[s1], p)];
+    vor_index_t o2 = tri[s2].n[corner(&tri[s2], p)];
+    vor_index_t o3 = tri[s3].n[corner(&tri[s3], p)];
+    /* the two slots besides p's home (p's home is one of the three) */
+    vor_index_t x1 = (s1 == p) ? s2 : s1;
+    vor_index_t x2 = (s3 == p) ? s2 : s3;
+    vor_index_t keep = x2;
+    vor_index_t freed = x1;
+    if (x2 >= d->max_sites) {
+        keep = x1;
+        freed = x2;
+    }
+    relink(tri, o1, s1, keep);
+    relink(tri, o2, s2, keep);
+    relink(tri, o3, s3, keep);
+    vor__tri_set(&tri[keep], a, b, c, o2, o3, o1);
+    /* keep the extras packed: the last one fills the freed slot */
+    vor_index_t last = (vor_index_t)(d->max_sites + d->vertex_count - 3u);
+    if (freed < d->max_sites) {
+        /* both home slots of neighbours: the one not kept needs another
+         * of its triangles, which frees a packed slot */
+        vor__rehome(d, freed, keep, last);
+    } else if (freed != last) {
+        vor__move_triangle(tri, last, freed);
+    } else {
+        /* no other case */
+    }
+}
+
 /* Puts id p on the free list: d->free_site holds the most recent free id
  * plus one (0: none, so that a zeroed vor_t has no free id), and each
  * free id's home slot the same for the next one. */
@@ -530,45 +569,13 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
     }
 
     VOR_ASSERT(st.deg == 3u); /* every vertex has at least three neighbours */
-    /* three triangles (p, a, b), (p, b, c), (p, c, a) merge into (a, b, c) */
+    vor__merge_three(d, p, st.nb, st.sl);
     vor_index_t a = st.nb[0];
     vor_index_t b = st.nb[1];
-    vor_index_t c = st.nb[2];
-    vor_index_t s2 = st.sl[1];
-    vor_index_t s3 = st.sl[2];
-    s1 = st.sl[0];
-    vor_index_t o1 = tri[s1].n[corner(&tri[s1], p)];
-    vor_index_t o2 = tri[s2].n[corner(&tri[s2], p)];
-    vor_index_t o3 = tri[s3].n[corner(&tri[s3], p)];
-    /* the two slots besides p's home (p's home is one of the three) */
-    vor_index_t x1 = (s1 == p) ? s2 : s1;
-    vor_index_t x2 = (s3 == p) ? s2 : s3;
-    vor_index_t keep = x2;
-    vor_index_t freed = x1;
-    if (x2 >= d->max_sites) {
-        keep = x1;
-        freed = x2;
-    }
-    relink(tri, o1, s1, keep);
-    relink(tri, o2, s2, keep);
-    relink(tri, o3, s3, keep);
-    vor__tri_set(&tri[keep], a, b, c, o2, o3, o1);
-    free_id(d, p);
-    /* keep the extras packed: the last one fills the freed slot */
-    vor_index_t last = (vor_index_t)(d->max_sites + d->vertex_count - 3u);
-    if (freed < d->max_sites) {
-        /* both home slots of neighbours: the one not kept needs another
-         * of its triangles, which frees a packed slot */
-        vor__rehome(d, freed, keep, last);
-    } else if (freed != last) {
-        vor__move_triangle(tri, last, freed);
-    } else {
-        /* no other case */
-    }
     return (a != VOR__INFINITE) ? a : b;
 }
 
-uint32_t vor__unlink_site(vor_t *d, uint32_t site)
+uint32_t vor__unlink_vertex(vor_t *d, uint32_t site)
 {
     vor__tri_t *tri = d->triangles;
     vor_index_t p = (vor_index_t)site;
@@ -590,7 +597,6 @@ uint32_t vor__unlink_site(vor_t *d, uint32_t site)
             a = vor__vertex(f, vor__next(i));
             b = vor__vertex(f, vor__prev(i));
         }
-        free_id(d, p);
         vor__make_edge(d, a, b);
         other = a;
     } else if (d->vertex_count == 2u) {
@@ -599,11 +605,17 @@ uint32_t vor__unlink_site(vor_t *d, uint32_t site)
          * site (vor__site_in_mesh: the last site), and the next site's
          * vor__make_edge rewrites it. */
         other = vor__vertex(&tri[p], 1);
-        free_id(d, p);
     } else {
-        free_id(d, p);
+        /* one site: no triangles */
     }
     d->vertex_count--;
+    return other;
+}
+
+uint32_t vor__unlink_site(vor_t *d, uint32_t site)
+{
+    uint32_t other = vor__unlink_vertex(d, site);
+    free_id(d, site);
     return other;
 }
 

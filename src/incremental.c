@@ -45,23 +45,6 @@ static inline bool is_home(const vor_t *d, vor_index_t slot, vor_index_t v)
 }
 
 /* ------------------------------------------------------------------ */
-/* Marks: the star's vertices, for guard (a)                           */
-
-static bool marked(const vor_t *d, vor_index_t v, bool infinity_marked)
-{
-    return (v == VOR__INFINITE) ? infinity_marked : vor__marked(&d->triangles[v]);
-}
-
-static void set_mark(vor_t *d, vor_index_t v, bool on, bool *infinity_marked)
-{
-    if (v == VOR__INFINITE) {
-        *infinity_marked = on;
-    } else {
-        vor__set_mark(&d->triangles[v], on);
-    }
-}
-
-/* ------------------------------------------------------------------ */
 /* Locate                                                              */
 
 vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
@@ -139,29 +122,16 @@ static void relink(vor__tri_t *tri, vor_index_t slot, vor_index_t from, vor_inde
     }
 }
 
-/* Flips the edge opposite p in star triangle `x_slot` = (p, x, y) with
- * its neighbour (y, x, c): the triangles become (p, x, c) and (p, c, y).
- * Returns the slot of (p, x, c). `apex` is c's index in the neighbour. */
-static vor_index_t flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t x,
-                        vor_index_t y, unsigned apex, vor_index_t c)
-{
-    vor__tri_t *tri = d->triangles;
-    vor__tri_t *t = &tri[x_slot];
-    vor_index_t y_slot = t->n[0];
-    vor__tri_t *u = &tri[y_slot];
-    /* the star has at least three vertices besides p when flips happen:
-     * four distinct outer triangles */
-    return vor__flip_core(d, x_slot, y_slot, p, x, y, c, t->n[1], t->n[2], u->n[vor__next(apex)],
-                          u->n[vor__prev(apex)]);
-}
 
 /* The insertion proper: split, then the star's pass. With constraint
  * memory (cdt not NULL: the constrained triangulation's own mesh) a
  * constrained edge is never flipped, which is Lawson's insertion into a
  * constrained Delaunay triangulation; the diagram's own insertions pass
  * NULL, and the test compiles away in them. */
-VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
-                                     struct vor__cdt *cdt)
+/* Splits the triangle in slot `root` into three around p (not yet
+ * counted in the vertex count). Returns the slot of (p, b, c), b and c
+ * the root's second and third vertices; p's home slot holds another. */
+VOR__ALWAYS_INLINE vor_index_t split(vor_t *d, vor_index_t root, uint32_t p)
 {
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
@@ -198,12 +168,29 @@ VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
     vor__tri_set(&tri[sa], sp, b, c, na, sb, sc);
     vor__tri_set(&tri[sb], sp, c, a, nb, sc, sa);
     vor__tri_set(&tri[sc], sp, a, b, nc, sa, sb);
+    return sa;
+}
+
+vor_index_t vor__split_triangle(vor_t *d, vor_index_t root, uint32_t p)
+{
+    return split(d, root, p);
+}
+
+VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
+                                     struct vor__cdt *cdt)
+{
+    vor__tri_t *tri = d->triangles;
+    vor_index_t sp = (vor_index_t)p;
+    vor_index_t a = vor__vertex(&tri[root], 0);
+    vor_index_t b = vor__vertex(&tri[root], 1);
+    vor_index_t c = vor__vertex(&tri[root], 2);
+    vor_index_t sa = split(d, root, p);
 
     /* guard (a) marks: the star's vertices */
     bool infinity_marked = false;
-    set_mark(d, a, true, &infinity_marked);
-    set_mark(d, b, true, &infinity_marked);
-    set_mark(d, c, true, &infinity_marked);
+    vor__mark_site(d, a, true, &infinity_marked);
+    vor__mark_site(d, b, true, &infinity_marked);
+    vor__mark_site(d, c, true, &infinity_marked);
 
     /* one counterclockwise pass around p. A refused edge stays refused
      * (its far triangle is not in conflict, or its far vertex is marked,
@@ -229,11 +216,11 @@ VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
         unsigned apex = vor__next(ix);
         vor_index_t far = uv[apex];
         bool flippable = (cdt == NULL) || !vor__cdt_constrained(cdt, tv[1], tv[2]);
-        if (flippable && !marked(d, far, infinity_marked) &&
+        if (flippable && !vor__site_marked(d, far, infinity_marked) &&
             ((cdt == NULL) ? vor__conflicts(d, uv[0], uv[1], uv[2], p)
                            : vor__cdt_conflicts(cdt, uv[0], uv[1], uv[2], p))) {
-            slot = flip(d, slot, sp, tv[1], tv[2], apex, far);
-            set_mark(d, far, true, &infinity_marked);
+            slot = vor__star_flip(d, slot, sp, tv[1], tv[2], apex, far);
+            vor__mark_site(d, far, true, &infinity_marked);
             star++;
         } else {
             refused++;
@@ -242,7 +229,7 @@ VOR__ALWAYS_INLINE void insert_at(vor_t *d, vor_index_t root, uint32_t p,
     }
     /* clear the marks: each star vertex is v[1] of one star triangle */
     for (uint32_t k = 0; k < star; k++) {
-        set_mark(d, vor__vertex(&tri[slot], 1), false, &infinity_marked);
+        vor__mark_site(d, vor__vertex(&tri[slot], 1), false, &infinity_marked);
         slot = tri[slot].n[1];
     }
 }

@@ -22,4 +22,10 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line);
  * present) into the triangle at slot root that contains it. */
 void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p);
 
+/* The insertion's first step: splits the triangle in slot `root` into
+ * three around site p, which the vertex count does not count yet.
+ * Returns the slot of the triangle (p, b, c), b and c the root's second
+ * and third vertices; p's home slot holds another of the three. */
+vor_index_t vor__split_triangle(vor_t *d, vor_index_t root, uint32_t p);
+
 #endif

@@ -213,6 +213,38 @@ static inline vor_index_t vor__flip_core(vor_t *d, vor_index_t t_slot, vor_index
     return s1;
 }
 
+/* A site's transient mark, infinity's kept by the caller: the insertions'
+ * marks on the vertices of the new site's star (incremental.c, power.c). */
+static inline bool vor__site_marked(const vor_t *d, vor_index_t v, bool infinity_marked)
+{
+    return (v == VOR__INFINITE) ? infinity_marked : vor__marked(&d->triangles[v]);
+}
+
+static inline void vor__mark_site(vor_t *d, vor_index_t v, bool on, bool *infinity_marked)
+{
+    if (v == VOR__INFINITE) {
+        *infinity_marked = on;
+    } else {
+        vor__set_mark(&d->triangles[v], on);
+    }
+}
+
+/* Flips the edge opposite p in star triangle `x_slot` = (p, x, y) with
+ * its neighbour (y, x, c): the triangles become (p, x, c) and (p, c, y).
+ * Returns the slot of (p, x, c). `apex` is c's index in the neighbour. */
+static inline vor_index_t vor__star_flip(vor_t *d, vor_index_t x_slot, vor_index_t p, vor_index_t x,
+                        vor_index_t y, unsigned apex, vor_index_t c)
+{
+    vor__tri_t *tri = d->triangles;
+    vor__tri_t *t = &tri[x_slot];
+    vor_index_t y_slot = t->n[0];
+    vor__tri_t *u = &tri[y_slot];
+    /* the star has at least three vertices besides p when flips happen:
+     * four distinct outer triangles */
+    return vor__flip_core(d, x_slot, y_slot, p, x, y, c, t->n[1], t->n[2], u->n[vor__next(apex)],
+                          u->n[vor__prev(apex)]);
+}
+
 /* Writes a whole triangle into slot t, keeping the slot's site mark. */
 static inline void vor__tri_set(vor__tri_t *t, vor_index_t v0, vor_index_t v1,
                                 vor_index_t v2, vor_index_t n0, vor_index_t n1,
@@ -351,6 +383,11 @@ static inline uint32_t vor__triangle_count(uint32_t vertices)
 /* The first two sites: two triangles at infinity sharing the edge ab
  * (mesh.c). */
 void vor__make_edge(vor_t *d, uint32_t a, uint32_t b);
+
+/* vor_validate's topological checks (queries.c), up to the bucket grid:
+ * VOR_OK or VOR_ERR_INVALID with the first violation in *out (may be
+ * NULL); vor_power_validate adds its own geometric ones. */
+int vor__validate_topology(const vor_t *d, vor_violation_t *out);
 
 /* What every builder does first (mesh.c): checks d, points and n, then
  * replaces d's contents by the n sites, copied, with their bounding box.

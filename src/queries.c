@@ -710,12 +710,9 @@ static int check_delaunay(const vor_t *d, vor_violation_t *out)
 
 /* The checks in order, each relying on the ones before it (the fans on
  * the neighbours, the geometry on the fans, ...); the first failure is
- * reported. */
-int vor_validate(const vor_t *d, vor_violation_t *out)
+ * reported. The topological ones are shared with vor_power_validate. */
+int vor__validate_topology(const vor_t *d, vor_violation_t *out)
 {
-    if (d == NULL) {
-        return VOR_ERR_ARG;
-    }
     int err = check_counts(d, out);
     if ((err != VOR_OK) || (d->vertex_count < 2u)) {
         return err;
@@ -723,7 +720,18 @@ int vor_validate(const vor_t *d, vor_violation_t *out)
     err = check_vertices(d, out);
     err = (err == VOR_OK) ? check_neighbours(d, out) : err;
     err = (err == VOR_OK) ? check_fans(d, out) : err;
-    err = (err == VOR_OK) ? check_buckets(d, out) : err;
-    err = (err == VOR_OK) ? check_delaunay(d, out) : err;
+    return (err == VOR_OK) ? check_buckets(d, out) : err;
+}
+
+int vor_validate(const vor_t *d, vor_violation_t *out)
+{
+    if (d == NULL) {
+        return VOR_ERR_ARG;
+    }
+    int err = vor__validate_topology(d, out);
+    if ((err != VOR_OK) || (d->vertex_count < 2u)) {
+        return err;
+    }
+    err = check_delaunay(d, out);
     return (err == VOR_OK) ? check_true_output(d, out) : err;
 }
