@@ -19,5 +19,6 @@ int main(void)
     test_group("motion", test_motion);
     test_group("fork_join", test_fork_join);
     test_group("cdt", test_cdt);
+    test_group("power", test_power);
     return test_finish();
 }

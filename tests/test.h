@@ -128,5 +128,6 @@ void test_dynamic(void);
 void test_motion(void);
 void test_fork_join(void);
 void test_cdt(void);
+void test_power(void);
 
 #endif

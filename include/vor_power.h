@@ -1,0 +1,159 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * vor_power.h - weighted sites: the power diagram and its dual, the
+ * regular triangulation, in an arena the caller provides.
+ *
+ * Site i is a point p_i with an int64 weight w_i; the power distance of a
+ * point q to it is |q - p_i|^2 - w_i (a weight r^2 makes the site a circle
+ * of radius r). The power cell of a site is where it is the nearest in
+ * power distance; a site whose cell is empty is hidden: it is kept, with
+ * its id, but it is not a vertex of the triangulation. Hidden is a normal
+ * state, not an error: a heavy site can hide its light neighbours, and
+ * an insertion can hide sites inserted before it.
+ *
+ *     // up to 500 weighted sites
+ *     static uint8_t arena[VOR_POWER_ARENA_BYTES(500)]
+ *         __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+ *     vor_power_t pd;
+ *     vor_power_init(&pd, arena, sizeof arena, 500);
+ *     uint32_t id;
+ *     vor_power_insert(&pd, (vor_point_t){10, 20}, 900, &id); // r = 30
+ *     vor_triangle_iter_t it;
+ *     uint32_t ids[3];
+ *     vor_power_triangles_begin(&it, &pd);
+ *     while (vor_triangles_next(&it, ids)) { ... }  // counterclockwise
+ *     vor_power_hidden_iter_t h;
+ *     vor_power_hidden_begin(&h, &pd);
+ *     while (vor_power_hidden_next(&h, &id)) { ... }
+ *
+ * Exactness: every decision is an exact predicate of vor.h
+ * (vor_power_test, vor_orient2d) over the whole int32 range of
+ * coordinates and the whole int64 range of weights; ties are broken by
+ * the symbolic perturbation of the sites (vor.h), which keeps the
+ * weights. Sites at the same point: the largest weight is the vertex (the
+ * smallest id among equal largest weights), every other weight there is
+ * hidden, since its power distance is larger everywhere by a constant.
+ * Where four or more lifted sites (x, y, x^2 + y^2 - w) lie on one
+ * plane, the triangulation is not unique and the perturbation picks one;
+ * a site whose lifted point lies on that plane without being a corner of
+ * its face has a cell of no area, and the perturbation decides whether
+ * it is hidden. The triangle iterator reports, as for the Delaunay
+ * triangulation, only triangles of nonzero area.
+ *
+ * Errors, iterators and configuration follow vor.h.
+ */
+#ifndef VOR_POWER_H
+#define VOR_POWER_H
+
+#include <stdbool.h>
+
+#include "vor.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Arena bytes for up to n weighted sites (a constant expression): the
+ * weights, then a diagram's arena (VOR_ARENA_BYTES). */
+#define VOR_POWER_ARENA_BYTES(n) (((size_t)(n) * sizeof(int64_t)) + VOR_ARENA_BYTES(n))
+/* The arena's alignment: the weights are int64_t. */
+#define VOR_POWER_ARENA_ALIGN 8u
+
+/* The power diagram object: owned by the caller, fields private. */
+typedef struct vor_power {
+    vor_t mesh;            /* the regular triangulation of the sites */
+    int64_t *weights;      /* [max_sites], in the arena */
+    uint32_t hidden_count; /* sites not in the triangulation (duplicates aside) */
+    uint32_t first_hidden; /* the hidden ids' list: first id plus one, 0: none */
+    bool area;             /* a triangle of nonzero area exists (not all collinear) */
+} vor_power_t;
+
+/*
+ * Prepares pd to hold up to max_sites weighted sites in arena.
+ *   VOR_ERR_CONFIG the library was compiled with other vor_config.h
+ *                  options than this file (checked first)
+ *   VOR_ERR_ARG    pd or arena NULL, max_sites 0 or > VOR_MAX_SITES
+ *   VOR_ERR_ALIGN  arena not aligned to VOR_POWER_ARENA_ALIGN
+ *   VOR_ERR_NOMEM  arena_bytes < VOR_POWER_ARENA_BYTES(max_sites)
+ * Writes only *pd, and nothing on failure. vor_power_init_checked is the
+ * library's symbol: the inline vor_power_init passes it the
+ * application's VOR_CONFIG_FINGERPRINT.
+ */
+int vor_power_init_checked(vor_power_t *pd, void *arena, size_t arena_bytes,
+                           uint32_t max_sites, uint32_t config);
+static inline int vor_power_init(vor_power_t *pd, void *arena, size_t arena_bytes,
+                                 uint32_t max_sites)
+{
+    return vor_power_init_checked(pd, arena, arena_bytes, max_sites, VOR_CONFIG_FINGERPRINT);
+}
+
+/*
+ * Adds the site p with weight w; its id goes to *site (may be NULL): the
+ * next unused id. The site may be hidden at once (vor_power_hidden), and
+ * it may hide sites that were vertices; the triangulation is afterwards
+ * the regular triangulation of all the sites.
+ *   VOR_ERR_ARG        pd NULL
+ *   VOR_ERR_DUPLICATE  a site (a vertex or hidden) has the same point
+ *                      and weight: its id goes to *site (the smallest
+ *                      such id; also when full)
+ *   VOR_ERR_FULL       max_sites ids are used
+ * On failure nothing changes.
+ * Cost: the walk from the last inserted site plus O(changed triangles);
+ * a point exactly on the line of an edge the walk ends at, or one that
+ * ends hidden, also costs a look at every id (to tell a duplicate).
+ */
+int vor_power_insert(vor_power_t *pd, vor_point_t p, int64_t w, uint32_t *site);
+
+/*
+ * Builds the regular triangulation of points[0..n) with weights[0..n),
+ * replacing what pd held; ids are input positions. duplicate_of (may be
+ * NULL) gets, for each i, the smallest id with the same point and weight
+ * (i itself for all but duplicates).
+ *   VOR_ERR_ARG   pd NULL, or points or weights NULL with n > 0
+ *   VOR_ERR_FULL  n > max_sites (nothing changes)
+ * Uses the arena's triangle space as scratch: no other memory. Cost:
+ * expected O(n log n) for sites spread over a region (the insertion order
+ * of vor_build, VOR_ORDER_QUADTREE).
+ */
+int vor_power_build(vor_power_t *pd, const vor_point_t *points, const int64_t *weights,
+                    uint32_t n, uint32_t *duplicate_of);
+
+/*
+ * 1 when `site` is hidden, 0 when it is a vertex of the triangulation.
+ *   VOR_ERR_ARG  pd NULL, or site not an id handed out, or a duplicate's
+ */
+int vor_power_hidden(const vor_power_t *pd, uint32_t site);
+
+/* The hidden sites, most recently hidden first. */
+typedef struct vor_power_hidden_iter {
+    const vor_power_t *pd;
+    uint32_t next; /* the next id plus one, 0: the end */
+} vor_power_hidden_iter_t;
+
+/*   VOR_ERR_ARG  it or pd NULL (the iterator then yields nothing) */
+int vor_power_hidden_begin(vor_power_hidden_iter_t *it, const vor_power_t *pd);
+/* 1 and the next hidden id in *site, or 0 at the end (and for a NULL
+ * argument or an iterator whose begin failed). */
+int vor_power_hidden_next(vor_power_hidden_iter_t *it, uint32_t *site);
+
+/* The triangles of the regular triangulation, read with
+ * vor_triangles_next (vor.h): counterclockwise, of nonzero area.
+ *   VOR_ERR_ARG  it or pd NULL (the iterator then yields nothing) */
+int vor_power_triangles_begin(vor_triangle_iter_t *it, const vor_power_t *pd);
+
+/*
+ * Checks the regular triangulation's invariants (vor_validate's, with
+ * the power test for local regularity), and that every hidden site lies
+ * under the hull with its lifted point on or above the triangulation.
+ *   VOR_ERR_ARG      pd NULL
+ *   VOR_ERR_INVALID  an invariant is broken: *violation (may be NULL)
+ *                    says which (vor.h)
+ * Cost: O(n) predicates, and a walk for each hidden site.
+ */
+int vor_power_validate(const vor_power_t *pd, vor_violation_t *violation);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

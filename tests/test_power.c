@@ -1,0 +1,659 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * test_power.c - weighted sites (vor_power.h): the regular triangulation
+ * against independent checks.
+ *
+ *   - brute force (up to POWER_BRUTE sites): a counterclockwise triple is
+ *     a triangle of the perturbed regular triangulation exactly when every
+ *     other site's lifted point lies above its lifted plane
+ *     (vor_power_test_sos < 0), and a site in no such triple is hidden; the
+ *     reported triangles must be those of nonzero area (vor_orient2d > 0),
+ *     and the hidden sites the same, by the public predicates only;
+ *   - larger sets: every reported triangle counterclockwise, every edge
+ *     shared by two reported triangles locally regular (exact power test
+ *     <= 0), every hidden site under a triangle with its lifted point on
+ *     or above it, and the same triangles and hidden sites whatever the
+ *     insertion order (the perturbed regular triangulation is unique);
+ *   - degenerate sets: grids with equal and unequal weights, sites at one
+ *     point with different weights, coordinates near 2^30 with weights
+ *     near 2^61, sites on a line.
+ */
+#include "test.h"
+#include "vor_power.h"
+
+#define POWER_SITES 320u
+#define POWER_BRUTE 14u
+
+static uint8_t arena[VOR_POWER_ARENA_BYTES(POWER_SITES)]
+    __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+static uint8_t arena2[VOR_POWER_ARENA_BYTES(POWER_SITES)]
+    __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+static uint8_t saved[sizeof arena];
+
+typedef struct {
+    vor_point_t p[POWER_SITES];
+    int64_t w[POWER_SITES];
+    uint32_t n;
+} scene_t;
+
+static scene_t scene;
+
+/* Triangles as sorted rotations, for comparing two lists. */
+typedef struct {
+    uint32_t v[3];
+} tri_t;
+
+static tri_t tris_a[2u * POWER_SITES];
+static tri_t tris_b[2u * POWER_SITES];
+
+static tri_t rotated(const uint32_t ids[3])
+{
+    tri_t t;
+    unsigned k = (ids[1] < ids[0]) ? ((ids[2] < ids[1]) ? 2u : 1u) : ((ids[2] < ids[0]) ? 2u : 0u);
+    for (unsigned i = 0; i < 3u; i++) {
+        t.v[i] = ids[(k + i) % 3u];
+    }
+    return t;
+}
+
+static bool tri_less(const tri_t *a, const tri_t *b)
+{
+    for (unsigned i = 0; i < 3u; i++) {
+        if (a->v[i] != b->v[i]) {
+            return a->v[i] < b->v[i];
+        }
+    }
+    return false;
+}
+
+static void sort_tris(tri_t *t, uint32_t n)
+{
+    for (uint32_t i = 1; i < n; i++) { /* insertion sort: small lists */
+        tri_t x = t[i];
+        uint32_t j = i;
+        while ((j > 0u) && tri_less(&x, &t[j - 1u])) {
+            t[j] = t[j - 1u];
+            j--;
+        }
+        t[j] = x;
+    }
+}
+
+static uint32_t read_tris(const vor_power_t *pd, tri_t *out)
+{
+    vor_triangle_iter_t it;
+    uint32_t ids[3];
+    uint32_t n = 0;
+    CHECK(vor_power_triangles_begin(&it, pd) == VOR_OK, "begin");
+    while ((n < 2u * POWER_SITES) && vor_triangles_next(&it, ids)) {
+        out[n++] = rotated(ids);
+    }
+    sort_tris(out, n);
+    return n;
+}
+
+static bool same_tris(const tri_t *a, uint32_t na, const tri_t *b, uint32_t nb)
+{
+    if (na != nb) {
+        return false;
+    }
+    for (uint32_t i = 0; i < na; i++) {
+        if (tri_less(&a[i], &b[i]) || tri_less(&b[i], &a[i])) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The first id with the same point and weight as i (i itself if none). */
+static uint32_t first_twin(const scene_t *s, uint32_t i)
+{
+    for (uint32_t j = 0; j < i; j++) {
+        if ((s->p[j].x == s->p[i].x) && (s->p[j].y == s->p[i].y) && (s->w[j] == s->w[i])) {
+            return j;
+        }
+    }
+    return i;
+}
+
+static int power_of(const scene_t *s, uint32_t a, uint32_t b, uint32_t c, uint32_t d)
+{
+    return vor_power_test(s->p[a], s->w[a], s->p[b], s->w[b], s->p[c], s->w[c], s->p[d], s->w[d]);
+}
+
+/* Builds the scene with vor_power_build into pd (arena). */
+static void build(vor_power_t *pd, uint8_t *mem, const scene_t *s, uint32_t *dup)
+{
+    CHECK(vor_power_init(pd, mem, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    CHECK(vor_power_build(pd, s->p, s->w, s->n, dup) == VOR_OK, "build");
+}
+
+/* ------------------------------------------------------------------ */
+/* Brute force                                                         */
+
+/* Sites a, b, s on one line, s strictly between: the sign of s's lifted
+ * point against the segment of a's and b's (positive below), by the
+ * public power test with a point off the line, whose weight cancels. */
+static int lifted_side(const scene_t *s, uint32_t a, uint32_t b, uint32_t m)
+{
+    vor_point_t c = s->p[a];
+    if (s->p[a].x == s->p[b].x) {
+        c.x = (c.x < INT32_MAX) ? c.x + 1 : c.x - 1;
+    } else {
+        c.y = (c.y < INT32_MAX) ? c.y + 1 : c.y - 1;
+    }
+    int side = vor_power_test(s->p[a], s->w[a], s->p[b], s->w[b], c, 12345, s->p[m], s->w[m]);
+    return (vor_orient2d(s->p[a], s->p[b], c) > 0) ? side : -side;
+}
+
+static bool strictly_between(const scene_t *s, uint32_t a, uint32_t m, uint32_t b)
+{
+    int64_t lo = (s->p[a].x != s->p[b].x) ? s->p[a].x : s->p[a].y;
+    int64_t hi = (s->p[a].x != s->p[b].x) ? s->p[b].x : s->p[b].y;
+    int64_t at = (s->p[a].x != s->p[b].x) ? s->p[m].x : s->p[m].y;
+    return ((lo < at) && (at < hi)) || ((hi < at) && (at < lo));
+}
+
+/* Sites on one line: is site i's lifted point strictly above the lower
+ * chain of the others (sign -1), on it (0), or a corner below it (1)? */
+static int line_status(const scene_t *s, uint32_t i)
+{
+    int status = 1;
+    for (uint32_t j = 0; j < s->n; j++) {
+        if ((j == i) || (first_twin(s, j) != j)) {
+            continue;
+        }
+        if ((s->p[j].x == s->p[i].x) && (s->p[j].y == s->p[i].y)) {
+            status = (s->w[j] > s->w[i]) ? -1 : status; /* nearer everywhere */
+            continue;
+        }
+        for (uint32_t k = 0; k < s->n; k++) {
+            if ((k != i) && (k != j) && (first_twin(s, k) == k) && strictly_between(s, j, i, k)) {
+                int side = lifted_side(s, j, k, i);
+                status = (side < 0) ? -1 : ((side == 0) && (status > 0)) ? 0 : status;
+            }
+        }
+    }
+    return status;
+}
+
+/*
+ * The brute-force check. V: the sites vor_power reports as vertices.
+ *   1. the reported triangles are those of nonzero area of the perturbed
+ *      regular triangulation of V, found by brute force;
+ *   2. no site (hidden ones included) lies strictly below the lifted plane
+ *      of a reported triangle: they are faces of the lower hull of all;
+ *   3. every hidden site lies in a reported triangle (or, with none, on
+ *      or above the chain of a line), so its lifted point is on or above
+ *      the hull; every vertex is a corner of a reported triangle (or,
+ *      with none, not above the chain).
+ */
+static void check_oracle(const vor_power_t *pd_in, const scene_t *s, const uint32_t *dup)
+{
+    const vor_power_t *pd = pd_in;
+    vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
+    CHECK(vor_power_validate(pd, &why) == VOR_OK, "validate: check %d at %u, site %u",
+          (int)why.check, why.triangle, why.site);
+    bool vertex[POWER_BRUTE] = {false};
+    bool cornered[POWER_BRUTE] = {false};
+    for (uint32_t i = 0; i < s->n; i++) {
+        CHECK((dup == NULL) || (dup[i] == first_twin(s, i)), "duplicate_of[%u]", i);
+        int hidden = vor_power_hidden(pd, i);
+        if (first_twin(s, i) != i) {
+            CHECK(hidden == VOR_ERR_ARG, "duplicate %u", i);
+        } else {
+            CHECK((hidden == 0) || (hidden == 1), "site %u: %d", i, hidden);
+            vertex[i] = hidden == 0;
+        }
+    }
+    /* 1 */
+    uint32_t expected = 0;
+    for (uint32_t i = 0; i < s->n; i++) {
+        for (uint32_t j = i + 1u; j < s->n; j++) {
+            for (uint32_t k = j + 1u; k < s->n; k++) {
+                if (!vertex[i] || !vertex[j] || !vertex[k]) {
+                    continue;
+                }
+                uint32_t ids[3] = {i, j, k};
+                if (vor_orient2d_sos(s->p, i, j, k) < 0) {
+                    ids[1] = k;
+                    ids[2] = j;
+                }
+                bool regular = true;
+                for (uint32_t l = 0; (l < s->n) && regular; l++) {
+                    if ((l != i) && (l != j) && (l != k) && vertex[l]) {
+                        regular = vor_power_test_sos(s->p, s->w, ids[0], ids[1], ids[2], l) < 0;
+                    }
+                }
+                if (regular && (vor_orient2d(s->p[ids[0]], s->p[ids[1]], s->p[ids[2]]) > 0)) {
+                    tris_b[expected++] = rotated(ids);
+                }
+            }
+        }
+    }
+    sort_tris(tris_b, expected);
+    uint32_t got = read_tris(pd, tris_a);
+    if (!CHECK(same_tris(tris_a, got, tris_b, expected), "triangles: %u, brute force %u", got,
+               expected)) {
+        for (uint32_t i = 0; i < s->n; i++) {
+            test_printf("  %d %d %lld\n", s->p[i].x, s->p[i].y, (long long)s->w[i]);
+        }
+    }
+    /* 2 */
+    uint32_t below = 0;
+    for (uint32_t t = 0; t < got; t++) {
+        const uint32_t *v = tris_a[t].v;
+        cornered[v[0]] = cornered[v[1]] = cornered[v[2]] = true;
+        for (uint32_t l = 0; l < s->n; l++) {
+            if ((l != v[0]) && (l != v[1]) && (l != v[2]) && (first_twin(s, l) == l)) {
+                below += (power_of(s, v[0], v[1], v[2], l) > 0) ? 1u : 0u;
+            }
+        }
+    }
+    CHECK(below == 0u, "%u sites below a triangle", below);
+    /* 3 */
+    for (uint32_t i = 0; i < s->n; i++) {
+        if (first_twin(s, i) != i) {
+            continue;
+        }
+        if (got == 0u) { /* on one line (or fewer than three sites) */
+            int status = line_status(s, i);
+            CHECK(vertex[i] ? (status >= 0) : (status <= 0), "site %u on the line: %d, status %d", i,
+                  (int)vertex[i], status);
+        } else if (vertex[i] && !cornered[i]) {
+            /* only a cell of no area: on the hull's boundary, its lifted
+             * point on the plane of the triangle there */
+            bool on = false;
+            for (uint32_t t = 0; (t < got) && !on; t++) {
+                const uint32_t *v = tris_a[t].v;
+                on = (vor_orient2d(s->p[v[0]], s->p[v[1]], s->p[i]) >= 0) &&
+                     (vor_orient2d(s->p[v[1]], s->p[v[2]], s->p[i]) >= 0) &&
+                     (vor_orient2d(s->p[v[2]], s->p[v[0]], s->p[i]) >= 0) &&
+                     (power_of(s, v[0], v[1], v[2], i) == 0);
+            }
+            CHECK(on, "vertex %u in no triangle, not on the surface", i);
+        } else if (!vertex[i]) {
+            bool inside = false;
+            for (uint32_t t = 0; (t < got) && !inside; t++) {
+                const uint32_t *v = tris_a[t].v;
+                inside = (vor_orient2d(s->p[v[0]], s->p[v[1]], s->p[i]) >= 0) &&
+                         (vor_orient2d(s->p[v[1]], s->p[v[2]], s->p[i]) >= 0) &&
+                         (vor_orient2d(s->p[v[2]], s->p[v[0]], s->p[i]) >= 0);
+            }
+            CHECK(inside, "hidden %u outside the triangles", i);
+        }
+    }
+}
+
+/* The oracle on the scene built, and inserted in a shuffled order (the
+ * ids then follow the order of insertion, duplicates refused). */
+static void check_brute(const scene_t *s)
+{
+    static vor_power_t pd;
+    static uint32_t dup[POWER_SITES];
+    static scene_t grown;
+    build(&pd, arena, s, dup);
+    unsigned long before = test_failures();
+    check_oracle(&pd, s, dup);
+    if (test_failures() != before) {
+        test_printf("built:\n");
+        for (uint32_t i = 0; i < s->n; i++) {
+            test_printf("%d %d %lld\n", s->p[i].x, s->p[i].y, (long long)s->w[i]);
+        }
+    }
+
+    test_rng_t rng;
+    test_rng_seed(&rng, (uint64_t)s->n * 7919u + (uint64_t)(uint32_t)s->p[0].x);
+    uint32_t order[POWER_BRUTE];
+    for (uint32_t i = 0; i < s->n; i++) {
+        order[i] = i;
+    }
+    for (uint32_t i = s->n; i > 1u; i--) {
+        uint32_t j = test_rng_u32(&rng) % i;
+        uint32_t x = order[i - 1u];
+        order[i - 1u] = order[j];
+        order[j] = x;
+    }
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    grown.n = 0;
+    for (uint32_t i = 0; i < s->n; i++) {
+        uint32_t k = order[i];
+        uint32_t id = 0;
+        int err = vor_power_insert(&pd, s->p[k], s->w[k], &id);
+        if (err == VOR_OK) {
+            CHECK(id == grown.n, "next id");
+            grown.p[grown.n] = s->p[k];
+            grown.w[grown.n] = s->w[k];
+            grown.n++;
+        } else {
+            CHECK((err == VOR_ERR_DUPLICATE) && (id < grown.n) && (grown.p[id].x == s->p[k].x) &&
+                      (grown.p[id].y == s->p[k].y) && (grown.w[id] == s->w[k]),
+                  "insert %u: %d", k, err);
+        }
+    }
+    unsigned long before2 = test_failures();
+    check_oracle(&pd, &grown, NULL);
+    if (test_failures() != before2) {
+        test_printf("grown:\n");
+        for (uint32_t i = 0; i < grown.n; i++) {
+            test_printf("%d %d %lld\n", grown.p[i].x, grown.p[i].y, (long long)grown.w[i]);
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Larger sets                                                         */
+
+/* Local regularity and hidden sites from the public output alone. */
+static void check_regular(const vor_power_t *pd, const scene_t *s, const tri_t *t, uint32_t nt)
+{
+    uint32_t bad = 0;
+    for (uint32_t a = 0; a < nt; a++) {
+        CHECK(vor_orient2d(s->p[t[a].v[0]], s->p[t[a].v[1]], s->p[t[a].v[2]]) > 0, "ccw");
+        for (unsigned e = 0; e < 3u; e++) {
+            uint32_t x = t[a].v[e];
+            uint32_t y = t[a].v[(e + 1u) % 3u];
+            for (uint32_t b = 0; b < nt; b++) {
+                for (unsigned f = 0; f < 3u; f++) {
+                    if ((t[b].v[f] == y) && (t[b].v[(f + 1u) % 3u] == x)) {
+                        uint32_t far = t[b].v[(f + 2u) % 3u];
+                        bad += (power_of(s, t[a].v[0], t[a].v[1], t[a].v[2], far) > 0) ? 1u : 0u;
+                    }
+                }
+            }
+        }
+    }
+    CHECK(bad == 0u, "%u edges not locally regular", bad);
+    vor_power_hidden_iter_t it;
+    uint32_t h;
+    uint32_t hidden = 0;
+    CHECK(vor_power_hidden_begin(&it, pd) == VOR_OK, "hidden begin");
+    while (vor_power_hidden_next(&it, &h)) {
+        hidden++;
+        bool under = false;
+        for (uint32_t a = 0; (a < nt) && !under; a++) {
+            const uint32_t *v = t[a].v;
+            if ((vor_orient2d(s->p[v[0]], s->p[v[1]], s->p[v[2]]) > 0) &&
+                (vor_orient2d(s->p[v[0]], s->p[v[1]], s->p[h]) >= 0) &&
+                (vor_orient2d(s->p[v[1]], s->p[v[2]], s->p[h]) >= 0) &&
+                (vor_orient2d(s->p[v[2]], s->p[v[0]], s->p[h]) >= 0)) {
+                under = true;
+                CHECK(power_of(s, v[0], v[1], v[2], h) <= 0, "hidden %u below", h);
+            }
+        }
+        CHECK(under, "hidden %u under no triangle", h);
+    }
+    CHECK(hidden == pd->hidden_count, "hidden count");
+}
+
+/* The scene built, then inserted in a shuffled order: the same result. */
+static void check_scene(const scene_t *s, uint64_t seed, bool generic)
+{
+    static vor_power_t built;
+    static vor_power_t grown;
+    build(&built, arena, s, NULL);
+    CHECK(vor_power_validate(&built, NULL) == VOR_OK, "validate built");
+    uint32_t nb = read_tris(&built, tris_a);
+    check_regular(&built, s, tris_a, nb);
+
+    /* shuffled insertion: ids differ, so map them back */
+    static uint32_t order[POWER_SITES];
+    static uint32_t id_of[POWER_SITES];
+    static scene_t shuffled;
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    for (uint32_t i = 0; i < s->n; i++) {
+        order[i] = i;
+    }
+    for (uint32_t i = s->n; i > 1u; i--) {
+        uint32_t j = test_rng_u32(&rng) % i;
+        uint32_t x = order[i - 1u];
+        order[i - 1u] = order[j];
+        order[j] = x;
+    }
+    CHECK(vor_power_init(&grown, arena2, sizeof arena2, POWER_SITES) == VOR_OK, "init");
+    uint32_t inserted = 0;
+    for (uint32_t i = 0; i < s->n; i++) {
+        uint32_t k = order[i];
+        uint32_t id = 0;
+        int err = vor_power_insert(&grown, s->p[k], s->w[k], &id);
+        if (err == VOR_OK) {
+            CHECK(id == inserted, "next id");
+            shuffled.p[inserted] = s->p[k];
+            shuffled.w[inserted] = s->w[k];
+            id_of[inserted++] = k;
+        } else {
+            CHECK((err == VOR_ERR_DUPLICATE) && (first_twin(s, k) != k), "insert %u: %d", k, err);
+        }
+    }
+    CHECK(vor_power_validate(&grown, NULL) == VOR_OK, "validate grown");
+    shuffled.n = inserted;
+    uint32_t ng = read_tris(&grown, tris_b);
+    check_regular(&grown, &shuffled, tris_b, ng);
+    for (uint32_t i = 0; i < ng; i++) { /* in the scene's ids */
+        uint32_t mapped[3] = {id_of[tris_b[i].v[0]], id_of[tris_b[i].v[1]], id_of[tris_b[i].v[2]]};
+        tris_b[i] = rotated(mapped);
+    }
+    sort_tris(tris_b, ng);
+    /* the perturbation follows ids, which differ: where it decides
+     * nothing (random sets) the two are the same; else both are regular */
+    if (generic) {
+        CHECK(same_tris(tris_a, nb, tris_b, ng), "triangles %u, grown %u", nb, ng);
+        CHECK(built.hidden_count == grown.hidden_count, "hidden %u, grown %u",
+              built.hidden_count, grown.hidden_count);
+    }
+}
+
+static void random_scene(scene_t *s, test_rng_t *rng, uint32_t n, int32_t span, int64_t wmax)
+{
+    s->n = n;
+    for (uint32_t i = 0; i < n; i++) {
+        s->p[i].x = test_rng_range(rng, -span, span);
+        s->p[i].y = test_rng_range(rng, -span, span);
+        s->w[i] = (wmax > 0) ? (int64_t)(((uint64_t)test_rng_u32(rng) << 32 | test_rng_u32(rng)) %
+                                         (uint64_t)wmax)
+                             : 0;
+    }
+}
+
+static void check_random_brute(uint64_t seed)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    for (unsigned round = 0; round < 60u; round++) {
+        uint32_t n = 3u + (test_rng_u32(&rng) % (POWER_BRUTE - 2u));
+        int32_t span = (round % 3u == 0u) ? 4 : (round % 3u == 1u) ? 1000 : 1073741823;
+        int64_t wmax = (round % 4u == 0u) ? 1 : (int64_t)span * span / 2 + 1;
+        random_scene(&scene, &rng, n, span, wmax);
+        check_brute(&scene);
+    }
+}
+
+static void check_grid_brute(bool equal)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, equal ? 7u : 8u);
+    for (unsigned round = 0; round < 12u; round++) {
+        uint32_t side = 3u;
+        scene.n = side * (side + (round % 2u));
+        for (uint32_t i = 0; i < scene.n; i++) {
+            scene.p[i].x = (int32_t)(i % side);
+            scene.p[i].y = (int32_t)(i / side);
+            scene.w[i] = equal ? 5 : (int64_t)(test_rng_u32(&rng) % 3u);
+        }
+        check_brute(&scene);
+    }
+}
+
+/* Sites at one point with different weights: the largest is the vertex. */
+static void check_coincident(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 21);
+    for (unsigned round = 0; round < 20u; round++) {
+        uint32_t n = 4u + (test_rng_u32(&rng) % (POWER_BRUTE - 3u));
+        for (uint32_t i = 0; i < n; i++) {
+            scene.p[i].x = test_rng_range(&rng, 0, 3);
+            scene.p[i].y = test_rng_range(&rng, 0, 3);
+            scene.w[i] = test_rng_range(&rng, 0, 4);
+        }
+        scene.n = n;
+        check_brute(&scene);
+    }
+}
+
+/* Coordinates near 2^30, weights near 2^61. */
+static void check_far(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 33);
+    for (unsigned round = 0; round < 20u; round++) {
+        uint32_t n = 4u + (test_rng_u32(&rng) % (POWER_BRUTE - 3u));
+        for (uint32_t i = 0; i < n; i++) {
+            scene.p[i].x = (int32_t)(1073741824 - test_rng_range(&rng, 0, 3) * 1000000);
+            scene.p[i].y = (int32_t)(-1073741824 + test_rng_range(&rng, 0, 3) * 1000000);
+            scene.w[i] = ((int64_t)1 << 61) + (int64_t)test_rng_range(&rng, 0, 1 << 30) * 4096;
+        }
+        scene.n = n;
+        check_brute(&scene);
+    }
+}
+
+static void check_collinear(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 44);
+    for (unsigned round = 0; round < 20u; round++) {
+        uint32_t n = 3u + (test_rng_u32(&rng) % 8u);
+        for (uint32_t i = 0; i < n; i++) {
+            int32_t t = test_rng_range(&rng, -6, 6);
+            scene.p[i].x = 2 * t;
+            scene.p[i].y = 3 * t;
+            scene.w[i] = test_rng_range(&rng, 0, 40);
+        }
+        scene.n = n;
+        check_brute(&scene);
+    }
+}
+
+static void check_large(unsigned family, uint64_t seed)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    for (unsigned round = 0; round < 3u; round++) {
+        if (family == 0u) {
+            random_scene(&scene, &rng, POWER_SITES, 1 << 20, (int64_t)1 << 36);
+        } else if (family == 1u) {
+            random_scene(&scene, &rng, POWER_SITES, 1073741823, (int64_t)1 << 62);
+        } else {
+            uint32_t side = 16u;
+            scene.n = side * side;
+            for (uint32_t i = 0; i < scene.n; i++) {
+                scene.p[i].x = (int32_t)(i % side) * 10;
+                scene.p[i].y = (int32_t)(i / side) * 10;
+                scene.w[i] = (int64_t)(test_rng_u32(&rng) % 60u);
+            }
+        }
+        check_scene(&scene, seed + round, family != 2u);
+    }
+}
+
+/* Failing calls change nothing; the arguments the header names. */
+static void check_arguments(void)
+{
+    static vor_power_t pd;
+    static uint8_t small[VOR_POWER_ARENA_BYTES(4)] __attribute__((aligned(8)));
+    CHECK(vor_power_init(NULL, small, sizeof small, 4) == VOR_ERR_ARG, "NULL pd");
+    CHECK(vor_power_init(&pd, NULL, sizeof small, 4) == VOR_ERR_ARG, "NULL arena");
+    CHECK(vor_power_init(&pd, small, sizeof small, 0) == VOR_ERR_ARG, "0 sites");
+    CHECK(vor_power_init(&pd, small + 4, sizeof small - 4, 3) == VOR_ERR_ALIGN, "align");
+    CHECK(vor_power_init(&pd, small, sizeof small - 1, 4) == VOR_ERR_NOMEM, "nomem");
+    CHECK(vor_power_init_checked(&pd, small, sizeof small, 4, 0u) == VOR_ERR_CONFIG, "config");
+    CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK, "init");
+    uint32_t id = 99;
+    vor_point_t a = {0, 0};
+    vor_point_t b = {10, 0};
+    vor_point_t c = {0, 10};
+    vor_point_t m = {3, 3};
+    CHECK(vor_power_insert(NULL, a, 0, &id) == VOR_ERR_ARG, "insert NULL");
+    CHECK(vor_power_insert(&pd, a, 0, &id) == VOR_OK && id == 0u, "first");
+    CHECK(vor_power_insert(&pd, a, 0, &id) == VOR_ERR_DUPLICATE && id == 0u, "duplicate");
+    CHECK(vor_power_insert(&pd, b, 0, &id) == VOR_OK && id == 1u, "second");
+    CHECK(vor_power_insert(&pd, c, 0, &id) == VOR_OK && id == 2u, "third");
+    CHECK(vor_power_hidden(&pd, 3) == VOR_ERR_ARG, "unused id");
+    /* a light site inside: hidden at once, no error */
+    CHECK(vor_power_insert(&pd, m, -1000, &id) == VOR_OK && id == 3u, "hidden insert");
+    CHECK(vor_power_hidden(&pd, 3) == 1, "hidden");
+    CHECK(vor_power_hidden(&pd, 0) == 0, "vertex");
+    test_copy_bytes(saved, small, sizeof small);
+    vor_power_t before = pd;
+    CHECK(vor_power_insert(&pd, (vor_point_t){7, 7}, 0, &id) == VOR_ERR_FULL, "full");
+    CHECK(vor_power_insert(&pd, b, 0, &id) == VOR_ERR_DUPLICATE && id == 1u, "duplicate when full");
+    bool same = true;
+    for (size_t i = 0; i < sizeof small; i++) {
+        same = same && (saved[i] == small[i]);
+    }
+    CHECK(same && (before.mesh.site_count == pd.mesh.site_count), "unchanged");
+    CHECK(vor_power_build(NULL, &a, &before.hidden_count == NULL ? NULL : pd.weights, 1, NULL) ==
+              VOR_ERR_ARG,
+          "build NULL");
+    CHECK(vor_power_build(&pd, NULL, pd.weights, 1, NULL) == VOR_ERR_ARG, "build NULL points");
+    CHECK(vor_power_build(&pd, &a, NULL, 1, NULL) == VOR_ERR_ARG, "build NULL weights");
+    static vor_point_t five[5];
+    static int64_t five_w[5];
+    CHECK(vor_power_build(&pd, five, five_w, 5, NULL) == VOR_ERR_FULL, "build full");
+    CHECK(vor_power_hidden(NULL, 0) == VOR_ERR_ARG, "hidden NULL");
+    vor_power_hidden_iter_t hit;
+    uint32_t h;
+    CHECK(vor_power_hidden_begin(NULL, &pd) == VOR_ERR_ARG, "hidden begin NULL");
+    CHECK(vor_power_hidden_begin(&hit, NULL) == VOR_ERR_ARG, "hidden begin NULL pd");
+    CHECK(vor_power_hidden_next(&hit, &h) == 0, "hidden next after failed begin");
+    CHECK(vor_power_hidden_next(NULL, &h) == 0, "hidden next NULL");
+    vor_triangle_iter_t tit;
+    CHECK(vor_power_triangles_begin(&tit, NULL) == VOR_ERR_ARG, "triangles NULL");
+    CHECK(vor_power_validate(NULL, NULL) == VOR_ERR_ARG, "validate NULL");
+}
+
+/* A site that hides vertices: one heavy site in the middle of a ring. */
+static void check_heavy_centre(void)
+{
+    static vor_power_t pd;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    uint32_t id;
+    for (int32_t i = 0; i < 5; i++) {
+        for (int32_t j = 0; j < 5; j++) {
+            CHECK(vor_power_insert(&pd, (vor_point_t){i * 10, j * 10}, 0, &id) == VOR_OK, "grid");
+        }
+    }
+    CHECK(pd.hidden_count == 0u, "none hidden");
+    CHECK(vor_power_insert(&pd, (vor_point_t){20, 20}, 1000, &id) == VOR_OK, "heavy");
+    CHECK(vor_power_hidden(&pd, 12) == 1, "the twin below is hidden");
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "validate");
+    scene.n = 26;
+    for (uint32_t i = 0; i < 25u; i++) {
+        scene.p[i] = (vor_point_t){(int32_t)(i / 5u) * 10, (int32_t)(i % 5u) * 10};
+        scene.w[i] = 0;
+    }
+    scene.p[25] = (vor_point_t){20, 20};
+    scene.w[25] = 1000;
+    uint32_t nt = read_tris(&pd, tris_a);
+    check_regular(&pd, &scene, tris_a, nt);
+    /* the ring around it: 8 grid sites hidden too (power distance
+     * 100 - 1000 < 0 from the heavy site to them) */
+    CHECK(pd.hidden_count == 9u, "hidden %u", pd.hidden_count);
+}
+
+void test_power(void)
+{
+    TEST_CASE("arguments") check_arguments();
+    TEST_CASE("heavy_centre") check_heavy_centre();
+    TEST_CASE("brute/random") check_random_brute(1);
+    TEST_CASE("brute/grid_equal") check_grid_brute(true);
+    TEST_CASE("brute/grid_weights") check_grid_brute(false);
+    TEST_CASE("brute/coincident") check_coincident();
+    TEST_CASE("brute/far") check_far();
+    TEST_CASE("collinear") check_collinear();
+    TEST_CASE("large/random") check_large(0, 100);
+    TEST_CASE("large/full_range") check_large(1, 200);
+    TEST_CASE("large/grid") check_large(2, 300);
+}
