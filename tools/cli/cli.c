@@ -385,7 +385,10 @@ static const char *quote_field(const char *problem, const char *p)
     return field_reason;
 }
 
-bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
+/* A decimal integer field of magnitude at most `most` (negative: most + 1),
+ * named `range` in the error; the int32 and int64 fields below. */
+static bool integer_field(const char **cursor, unsigned long long most, const char *range,
+                          bool *negative_out, unsigned long long *magnitude_out, const char **why)
 {
     const char *p = *cursor;
     while (*p != '\0' && is_blank(*p)) {
@@ -407,11 +410,12 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
     /* accumulate the magnitude, bounded so it cannot overflow */
     unsigned long long magnitude = 0;
     while (*p >= '0' && *p <= '9') {
-        magnitude = magnitude * 10u + (unsigned)(*p - '0');
-        if (magnitude > 2147483648ull) {
-            *why = quote_field("out of int32 range", field);
+        unsigned digit = (unsigned)(*p - '0');
+        if (magnitude > (most + 1u - digit) / 10u) {
+            *why = quote_field(range, field);
             return false;
         }
+        magnitude = magnitude * 10u + digit;
         p++;
     }
     if (*p != '\0' && !is_blank(*p)) {
@@ -421,12 +425,36 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
                            field);
         return false;
     }
-    if (magnitude > (negative ? 2147483648ull : 2147483647ull)) {
-        *why = quote_field("out of int32 range", field);
+    if (magnitude > (negative ? most + 1u : most)) {
+        *why = quote_field(range, field);
+        return false;
+    }
+    *negative_out = negative;
+    *magnitude_out = magnitude;
+    *cursor = p;
+    return true;
+}
+
+bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
+{
+    bool negative;
+    unsigned long long magnitude;
+    if (!integer_field(cursor, 2147483647ull, "out of int32 range", &negative, &magnitude, why)) {
         return false;
     }
     *value = negative ? (int32_t)(-(long long)magnitude) : (int32_t)magnitude;
-    *cursor = p;
+    return true;
+}
+
+bool cli_int64_field(const char **cursor, int64_t *value, const char **why)
+{
+    bool negative;
+    unsigned long long magnitude;
+    if (!integer_field(cursor, 9223372036854775807ull, "out of int64 range", &negative,
+                       &magnitude, why)) {
+        return false;
+    }
+    *value = negative ? (int64_t)(0u - magnitude) : (int64_t)magnitude;
     return true;
 }
 
@@ -688,19 +716,15 @@ static int compare_triangles(const void *a, const void *b)
     return 0;
 }
 
-size_t cli_append_triangles(const vor_t *d, cli_output_t *out)
+size_t cli_append_triangle_iter(vor_triangle_iter_t *it, size_t most, cli_output_t *out)
 {
-    vor_memory_t memory;
-    vor_memory(d, &memory);
-    uint32_t (*triangles)[3] = malloc(((size_t)memory.triangles + 1u) * sizeof *triangles);
+    uint32_t (*triangles)[3] = malloc((most + 1u) * sizeof *triangles);
     if (triangles == NULL) {
         cli_error("out of memory");
     }
     size_t count = 0;
-    vor_triangle_iter_t it;
     uint32_t ids[3];
-    vor_triangles_begin(&it, d);
-    while (vor_triangles_next(&it, ids)) {
+    while ((count < most) && vor_triangles_next(it, ids)) {
         unsigned first = (ids[1] < ids[0]) ? 1u : 0u;
         first = (ids[2] < ids[first]) ? 2u : first;
         for (unsigned k = 0; k < 3u; k++) {
@@ -714,6 +738,15 @@ size_t cli_append_triangles(const vor_t *d, cli_output_t *out)
     }
     free(triangles);
     return count;
+}
+
+size_t cli_append_triangles(const vor_t *d, cli_output_t *out)
+{
+    vor_memory_t memory;
+    vor_memory(d, &memory);
+    vor_triangle_iter_t it;
+    vor_triangles_begin(&it, d);
+    return cli_append_triangle_iter(&it, memory.triangles, out);
 }
 
 void *cli_diagram(vor_t *d, uint32_t max_sites)

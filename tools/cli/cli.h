@@ -46,6 +46,9 @@ const char *cli_next_line(cli_input_t *in);
  * *why then says which, quoting the field (valid until the next call). */
 bool cli_int32_field(const char **cursor, int32_t *value, const char **why);
 
+/* cli_int32_field for an int64 field (a weight). */
+bool cli_int64_field(const char **cursor, int64_t *value, const char **why);
+
 /* Like cli_int32_field for a coordinate (or a distance in the same units):
  * after cli_set_scale, a decimal number times the scale, rounded to the
  * nearest integer, ties away from zero, computed exactly. */
@@ -155,6 +158,9 @@ void *cli_diagram(vor_t *d, uint32_t max_sites);
  * (the triangle iterator), counterclockwise from its smallest id, lines
  * sorted; returns how many. */
 size_t cli_append_triangles(const vor_t *d, cli_output_t *out);
+/* The same for the triangles an iterator begun on up to `most` triangles
+ * yields (vor_power_triangles_begin). */
+size_t cli_append_triangle_iter(vor_triangle_iter_t *it, size_t most, cli_output_t *out);
 
 /* Writes everything to stdout and frees the buffer. */
 void cli_flush(cli_output_t *out);
@@ -178,7 +184,8 @@ double cli_seconds(void);
 /* The text of `vor COMMAND --help`: usage, input and output formats, an
  * example. */
 extern const char cli_predicates_help[], cli_delaunay_help[], cli_nearest_help[],
-    cli_raster_help[], cli_cells_help[], cli_draw_help[], cli_ops_help[], cli_cdt_help[];
+    cli_raster_help[], cli_cells_help[], cli_draw_help[], cli_ops_help[], cli_cdt_help[],
+    cli_power_help[];
 
 /* Subcommands: each takes its arguments after the subcommand name and
  * returns the process exit status. */
@@ -190,6 +197,7 @@ int cli_cells(int argc, char **argv);
 int cli_draw(int argc, char **argv);
 int cli_ops(int argc, char **argv);
 int cli_cdt(int argc, char **argv);
+int cli_power(int argc, char **argv);
 
 /* vor cdt's parts, for vor draw too (cdt.c): the constraints of a file as
  * pairs of site ids mapped through first[] (a point's first site; a site

@@ -30,6 +30,7 @@ static const struct {
     {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
     {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
     {"cdt", cli_cdt, "constrained Delaunay triangulation (SITES CONSTRAINTS; --domain)"},
+    {"power", cli_power, "regular triangulation and hidden sites of weighted sites (x y w)"},
 };
 
 /* The help of each command (cli.h); a command without one shows its
@@ -46,6 +47,7 @@ static const struct {
     {"draw", cli_draw_help},
     {"ops", cli_ops_help},
     {"cdt", cli_cdt_help},
+    {"power", cli_power_help},
 };
 
 static void print_usage(FILE *out)

@@ -1,0 +1,138 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * vor power [--scale S] SITES
+ *
+ * The regular triangulation (dual of the power diagram) of the weighted
+ * sites in SITES, "x y w" lines: "t I J K" per triangle, "h I" per hidden
+ * site, "d I J" per site that repeats an earlier one (point and weight).
+ */
+#include <stdlib.h>
+
+#include "cli.h"
+#include "vor_power.h"
+
+#define USAGE "usage: vor power [--scale S] SITES"
+
+const char cli_power_help[] =
+    USAGE "\n"
+    "\n"
+    "The regular triangulation of weighted sites: the dual of their power\n"
+    "diagram, where the power distance of q to site (p, w) is |q - p|^2 - w.\n"
+    "\n"
+    "input:  one site per line, \"x y w\" or \"x,y,w\" (CSV, optional header);\n"
+    "        x and y decimal int32 (or decimal numbers with --scale S, as for\n"
+    "        vor delaunay), w a decimal int64 (not scaled); blank and '#' lines\n"
+    "        skipped; site i is the i-th site line, from 0.\n"
+    "output: \"t i j k\" per triangle, counterclockwise, from its smallest id,\n"
+    "        sorted; then \"h i\" per hidden site (its power cell is empty),\n"
+    "        sorted; then \"d i j\" per site i with the point and weight of an\n"
+    "        earlier site j. Sites at one point: the largest weight is the\n"
+    "        vertex, the others are hidden.\n"
+    "  --scale S     read decimal coordinates, times S\n"
+    "\n"
+    "example:\n"
+    "  $ printf '0 0 0\\n10 0 0\\n0 10 0\\n10 10 0\\n4 4 -50\\n' | vor power -\n"
+    "  t 0 1 3\n"
+    "  t 0 3 2\n"
+    "  h 4\n";
+
+static void read_weighted(const char *path, vor_point_t **points, int64_t **weights, uint32_t *count)
+{
+    cli_input_t in;
+    cli_open(&in, path);
+    size_t n = 0, capacity = 0;
+    *points = NULL;
+    *weights = NULL;
+    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
+        vor_point_t p;
+        int64_t w;
+        const char *why = NULL;
+        const char *cursor = line;
+        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
+            !cli_int64_field(&cursor, &w, &why)) {
+            char reason[300];
+            snprintf(reason, sizeof reason, "%s (expected x y w or x,y,w)", why);
+            cli_line_error(&in, reason);
+        }
+        if (!cli_at_end(cursor)) {
+            cli_line_error(&in, "too many fields (expected x y w or x,y,w)");
+        }
+        if (n == VOR_MAX_SITES) {
+            cli_line_error(&in, "more sites than VOR_MAX_SITES");
+        }
+        if (n == capacity) {
+            capacity = (capacity != 0u) ? 2u * capacity : 1024u;
+            *points = realloc(*points, capacity * sizeof **points);
+            *weights = realloc(*weights, capacity * sizeof **weights);
+            if ((*points == NULL) || (*weights == NULL)) {
+                cli_error("out of memory");
+            }
+        }
+        (*points)[n] = p;
+        (*weights)[n] = w;
+        n++;
+    }
+    cli_close(&in);
+    *count = (uint32_t)n;
+}
+
+int cli_power(int argc, char **argv)
+{
+    const char *path = NULL;
+    enum { SCALE };
+    static const cli_option_t flags[] = {[SCALE] = {"--scale", 1}};
+    cli_arguments_t args;
+    cli_arguments_begin(&args, argc, argv, "power", USAGE, flags, sizeof flags / sizeof flags[0]);
+    for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
+        if (o == SCALE) {
+            cli_set_scale(args.values[0]);
+        } else if (path == NULL) {
+            path = args.values[0];
+        } else {
+            cli_usage_error("power", USAGE, "unexpected argument", args.values[0]);
+        }
+    }
+    if (path == NULL) {
+        cli_usage_error("power", USAGE, "missing SITES", NULL);
+    }
+    vor_point_t *points;
+    int64_t *weights;
+    uint32_t n;
+    read_weighted(path, &points, &weights, &n);
+    uint32_t capacity = (n < 1u) ? 1u : n;
+    uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
+    size_t bytes = VOR_POWER_ARENA_BYTES(capacity);
+    void *arena = malloc(bytes); /* malloc's alignment is VOR_POWER_ARENA_ALIGN's at least */
+    if ((duplicate_of == NULL) || (arena == NULL)) {
+        cli_error("out of memory");
+    }
+    vor_power_t pd;
+    int err = vor_power_init(&pd, arena, bytes, capacity);
+    if (err != VOR_OK) {
+        cli_library_error("vor_power_init", err);
+    }
+    err = vor_power_build(&pd, points, weights, n, duplicate_of);
+    if (err != VOR_OK) {
+        cli_library_error("vor_power_build", err);
+    }
+    cli_output_t out = {NULL, 0, 0};
+    vor_triangle_iter_t it;
+    (void)vor_power_triangles_begin(&it, &pd);
+    (void)cli_append_triangle_iter(&it, 2u * (size_t)capacity, &out);
+    for (uint32_t i = 0; i < n; i++) {
+        if (vor_power_hidden(&pd, i) == 1) {
+            cli_append(&out, "h %u\n", i);
+        }
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        if (duplicate_of[i] != i) {
+            cli_append(&out, "d %u %u\n", i, duplicate_of[i]);
+        }
+    }
+    cli_flush(&out);
+    free(arena);
+    free(duplicate_of);
+    free(weights);
+    free(points);
+    return 0;
+}
