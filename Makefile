@@ -284,6 +284,12 @@ $(B)/cgal-cdt: tests/reference/cgal_cdt.cpp
 	@tools/install-deps.sh bench
 	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
 
+# The reference of the power diagram's tests (host only): CGAL's regular
+# triangulation with exact constructions.
+$(B)/cgal-power: tests/reference/cgal_power.cpp
+	@tools/install-deps.sh bench
+	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
+
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)
 # It takes more than 32,767 sites and prints predicate counters (--stats):

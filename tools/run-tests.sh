@@ -43,7 +43,7 @@ skipped=()
 only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
-suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference fuzz coverage room harness"
+suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference fuzz coverage room harness"
 suites="$suites mutants freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
@@ -194,6 +194,13 @@ cdt_reference() {
         python3 tests/reference/compare_cdt.py build/host/vor build/host/cgal-cdt
 }
 check cdt-reference cdt_reference
+
+# vor power against CGAL's Regular_triangulation_2 (tests/reference/).
+power_reference() {
+    make -s -j"$jobs" PORT=host build/host/vor build/host/cgal-power &&
+        python3 tests/reference/compare_power.py build/host/vor build/host/cgal-power
+}
+check power-reference power_reference
 
 # The libFuzzer harnesses (tests/fuzz/): every committed corpus and
 # regression input replayed, then each harness fuzzed for FUZZ_BRIEF
