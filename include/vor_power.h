@@ -30,15 +30,19 @@
  * (vor_power_test, vor_orient2d) over the whole int32 range of
  * coordinates and the whole int64 range of weights; ties are broken by
  * the symbolic perturbation of the sites (vor.h), which keeps the
- * weights. Sites at the same point: the largest weight is the vertex (the
- * smallest id among equal largest weights), every other weight there is
- * hidden, since its power distance is larger everywhere by a constant.
- * Where four or more lifted sites (x, y, x^2 + y^2 - w) lie on one
- * plane, the triangulation is not unique and the perturbation picks one;
- * a site whose lifted point lies on that plane without being a corner of
- * its face has a cell of no area, and the perturbation decides whether
- * it is hidden. The triangle iterator reports, as for the Delaunay
- * triangulation, only triangles of nonzero area.
+ * weights. A site whose power cell is empty is always hidden and one
+ * whose cell has area is always a vertex: where the perturbation alone
+ * would keep an empty cell as a sliver at infinity (sites on the hull's
+ * boundary, sites on one line), the exact answer is taken. Sites at the
+ * same point: the largest weight is the vertex (the smallest id among
+ * equal largest weights), every other weight there is hidden, since its
+ * power distance is larger everywhere by a constant. Where four or more
+ * lifted sites (x, y, x^2 + y^2 - w) lie on one plane, the triangulation
+ * is not unique and the perturbation picks one; a site whose cell has no
+ * area (its lifted point on the surface, not a corner of it) may be
+ * either, and when it is a vertex it may be in no triangle. The triangle
+ * iterator reports, as for the Delaunay triangulation, only triangles of
+ * nonzero area.
  *
  * Errors, iterators and configuration follow vor.h.
  */

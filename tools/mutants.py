@@ -63,6 +63,7 @@ TARGETS = [
     ('src/motion.c', 'motion,dynamic', ('host', 'index16')),
     ('src/cdt.c', 'cdt', ('host', 'index16')),
     ('src/crossing.c', 'predicates,cdt', ('host', 'limb32')),
+    ('src/power.c', 'power', ('host', 'index16')),
 ]
 
 # Build configurations, tried in order: a mutant whose objects do not change

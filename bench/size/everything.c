@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* bench/size/everything.c - every public function of vor.h, vor_cdt.h
- * and vor_raster.h reachable: the whole library as one firmware keeps it. */
+/* bench/size/everything.c - every public function of vor.h, vor_cdt.h,
+ * vor_power.h and vor_raster.h reachable: the whole library as one
+ * firmware keeps it. */
 #include "raster_common.h"
 #include "vor_cdt.h"
+#include "vor_power.h"
 
 static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
 static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
@@ -11,6 +13,9 @@ static uint8_t motion[VOR_MOTION_BYTES(SIZE_SITES)] __attribute__((aligned(VOR_M
 static uint8_t walls[VOR_CDT_BYTES(SIZE_SITES, 64, 16, 64)] __attribute__((aligned(VOR_CDT_ALIGN)));
 
 SIZE_ARENA(size_arena);
+static uint8_t power_arena[VOR_POWER_ARENA_BYTES(SIZE_SITES)]
+    __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+static int64_t power_weights[SIZE_SITES];
 
 int main(void)
 {
@@ -93,5 +98,20 @@ int main(void)
     uint32_t crossing[4];
     acc |= vor_cdt_crossing(&d, SIZE_SITES, crossing);
     acc |= vor_unconstrain(&d, 0, site);
+    vor_power_t pd;
+    acc |= vor_power_init(&pd, power_arena, sizeof power_arena, SIZE_SITES);
+    acc |= vor_power_build(&pd, raster_points, power_weights, SIZE_SITES / 2u, ids);
+    acc |= vor_power_insert(&pd, (vor_point_t){size_x(9), size_y(9)}, size_x(10), &site);
+    acc |= vor_power_hidden(&pd, site);
+    vor_power_hidden_iter_t hidden;
+    vor_power_hidden_begin(&hidden, &pd);
+    while (vor_power_hidden_next(&hidden, &site) > 0) {
+        acc++;
+    }
+    (void)vor_power_triangles_begin(&triangles, &pd);
+    while (vor_triangles_next(&triangles, ids) > 0) {
+        acc++;
+    }
+    acc |= vor_power_validate(&pd, &violation);
     return acc + raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
 }
