@@ -642,16 +642,21 @@ int vor_power_insert(vor_power_t *pd, vor_point_t point, int64_t w, uint32_t *si
     d->site_count++;
     d->revision++;
     vor__topology_changed(d);
+    if (vertices >= 2u) {
+        /* the vertices this insertion hid leave the bucket grid: the
+         * newest on the list (p, when hidden, was never in the grid). Two
+         * vertices stay: a hidden one leaves a heavier one at its point
+         * or hides under two others. */
+        uint32_t h = pd->first_hidden;
+        for (uint32_t k = hidden; (k < pd->hidden_count) && (h != 0u); k++) {
+            if ((h - 1u) != p) {
+                vor__grid_forget(d, h - 1u, d->last_site);
+            }
+            h = d->triangles[h - 1u].n[1];
+        }
+    }
     if (placed == VOR_OK) {
         vor__box_add(d, &point, d->vertex_count == 1u);
-        if (vertices >= 2u) {
-            /* the vertices p hid leave the bucket grid: the newest hidden */
-            uint32_t h = pd->first_hidden;
-            for (uint32_t k = hidden; (k < pd->hidden_count) && (h != 0u); k++) {
-                vor__grid_forget(d, h - 1u, p);
-                h = d->triangles[h - 1u].n[1];
-            }
-        }
         if (d->vertex_count >= 2u) {
             vor__grid_add(d, p);
         }
