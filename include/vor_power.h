@@ -103,8 +103,10 @@ static inline int vor_power_init(vor_power_t *pd, void *arena, size_t arena_byte
  *   VOR_ERR_FULL       max_sites ids are used
  * On failure nothing changes.
  * Cost: the walk from the last inserted site plus O(changed triangles);
- * a point exactly on the line of an edge the walk ends at, or one that
- * ends hidden, also costs a look at every id (to tell a duplicate).
+ * telling a duplicate costs a look at the hidden sites when p is hidden,
+ * and at every id when p's power test ties or p lies on the hull's line;
+ * while every site so far is on one line, an insertion looks at every
+ * id (the diagram is one-dimensional then).
  */
 int vor_power_insert(vor_power_t *pd, vor_point_t p, int64_t w, uint32_t *site);
 
@@ -117,7 +119,8 @@ int vor_power_insert(vor_power_t *pd, vor_point_t p, int64_t w, uint32_t *site);
  *   VOR_ERR_FULL  n > max_sites (nothing changes)
  * Uses the arena's triangle space as scratch: no other memory. Cost:
  * expected O(n log n) for sites spread over a region (the insertion order
- * of vor_build, VOR_ORDER_QUADTREE).
+ * of vor_build, VOR_ORDER_QUADTREE); O(n^2) when every site is on one
+ * line.
  */
 int vor_power_build(vor_power_t *pd, const vor_point_t *points, const int64_t *weights,
                     uint32_t n, uint32_t *duplicate_of);

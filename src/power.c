@@ -426,6 +426,20 @@ static uint32_t find_twin(const vor_power_t *pd, uint32_t p, uint32_t ids)
     return VOR__NONE;
 }
 
+/* The hidden site with the same point and weight as site p, VOR__NONE
+ * if none: a look at the hidden list. */
+static uint32_t find_hidden_twin(const vor_power_t *pd, uint32_t p)
+{
+    uint32_t h = pd->first_hidden;
+    for (uint32_t left = pd->hidden_count; (left > 0u) && (h != 0u); left--) {
+        if (same_site(pd, h - 1u, p)) {
+            return h - 1u;
+        }
+        h = pd->mesh.triangles[h - 1u].n[1];
+    }
+    return VOR__NONE;
+}
+
 /* A vertex at the point of site p with another weight, VOR__NONE if
  * none: a look at every id. */
 static uint32_t find_at(const vor_power_t *pd, uint32_t p, uint32_t ids)
@@ -534,18 +548,23 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
     bool tie = false;
     bool hidden = (v[0] != VOR__INFINITE) && (v[1] != VOR__INFINITE) &&
                   (v[2] != VOR__INFINITE) && (power_test(pd, v[0], v[1], v[2], p, &tie) < 0);
-    if ((found == VOR__NONE) && (on_line || tie || hidden || (under != VOR__NONE))) {
-        /* a twin elsewhere: only where p lies on an edge's line (as at a
-         * vertex), or on or above the lifted surface (a twin vertex's
-         * lifted point is on it, a hidden one's on or above it) */
-        found = find_twin(pd, p, twins);
+    bool outside = (v[0] == VOR__INFINITE) || (v[1] == VOR__INFINITE) ||
+                   (v[2] == VOR__INFINITE);
+    if ((found == VOR__NONE) && (twins > 0u)) {
+        /* A twin vertex elsewhere: its lifted point is on the surface, so
+         * p's power test ties, or p is on the hull's boundary. A hidden
+         * twin is on or above the surface: p ties or is hidden. */
+        if (tie || (outside && on_line)) {
+            found = find_twin(pd, p, twins);
+        } else if (hidden || (under != VOR__NONE)) {
+            found = find_hidden_twin(pd, p);
+        } else {
+            /* no twin */
+        }
     }
     if (found != VOR__NONE) {
         *twin = found;
         return VOR_ERR_DUPLICATE;
-    }
-    if ((under == VOR__NONE) && on_line) {
-        under = find_at(pd, p, twins); /* a vertex at p is on lines through p */
     }
     if (!pd->area) {
         /* a line of vertices: through the last site and a neighbour */
@@ -555,6 +574,8 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
         uint32_t b = ((u[0] != a) && (u[0] != VOR__INFINITE)) ? u[0]
                      : ((u[1] != a) && (u[1] != VOR__INFINITE)) ? u[1] : u[2];
         if (vor__orient2d_sign(&s[a], &s[b], &s[p]) == 0) {
+            /* a vertex at p (the line's cost: every id is looked at) */
+            under = (under != VOR__NONE) ? under : find_at(pd, p, d->site_count);
             return place_on_line(pd, p, s[a].x == s[b].x, root, under);
         }
         pd->area = true; /* p off the line: its triangles have area */
