@@ -13,6 +13,7 @@
  */
 #include "test.h"
 #include "vor.h"
+#include "vor_power.h"
 
 #define CANARY 32u
 #define CONFIG_SITES 40u
@@ -35,6 +36,18 @@ static struct {
     vor_tracker_t t;
     uint8_t after[CANARY];
 } guarded_tracker __attribute__((aligned(8)));
+
+static struct {
+    uint8_t before[CANARY];
+    vor_power_t pd;
+    uint8_t after[CANARY];
+} guarded_power __attribute__((aligned(8)));
+
+static struct {
+    uint8_t before[CANARY];
+    uint8_t arena[VOR_POWER_ARENA_BYTES(CONFIG_SITES)];
+    uint8_t after[CANARY];
+} guarded_power_arena __attribute__((aligned(8)));
 
 static void fill(void *to, size_t n)
 {
@@ -59,7 +72,10 @@ static uint32_t canaries_changed(void)
 {
     return changed(guarded_diagram.before, CANARY) + changed(guarded_diagram.after, CANARY) +
            changed(guarded_arena.before, CANARY) + changed(guarded_arena.after, CANARY) +
-           changed(guarded_tracker.before, CANARY) + changed(guarded_tracker.after, CANARY);
+           changed(guarded_tracker.before, CANARY) + changed(guarded_tracker.after, CANARY) +
+           changed(guarded_power.before, CANARY) + changed(guarded_power.after, CANARY) +
+           changed(guarded_power_arena.before, CANARY) +
+           changed(guarded_power_arena.after, CANARY);
 }
 
 void CONFIG_CASE(const char *name)
@@ -67,19 +83,35 @@ void CONFIG_CASE(const char *name)
     fill(&guarded_diagram, sizeof guarded_diagram);
     fill(&guarded_arena, sizeof guarded_arena);
     fill(&guarded_tracker, sizeof guarded_tracker);
+    fill(&guarded_power, sizeof guarded_power);
+    fill(&guarded_power_arena, sizeof guarded_power_arena);
     int err = vor_init(&guarded_diagram.d, guarded_arena.arena, sizeof guarded_arena.arena,
                        CONFIG_SITES);
     CHECK(err == CONFIG_EXPECT, "%s: vor_init returned %d, expected %d", name, err,
           CONFIG_EXPECT);
+    int power_err = vor_power_init(&guarded_power.pd, guarded_power_arena.arena,
+                                   sizeof guarded_power_arena.arena, CONFIG_SITES);
+    CHECK(power_err == CONFIG_EXPECT, "%s: vor_power_init returned %d, expected %d", name,
+          power_err, CONFIG_EXPECT);
     if (CONFIG_EXPECT == VOR_ERR_CONFIG) {
         err = vor_tracker_begin(&guarded_tracker.t, &guarded_diagram.d);
         CHECK(err == VOR_ERR_CONFIG, "%s: vor_tracker_begin returned %d", name, err);
         uint32_t written = changed(&guarded_diagram, sizeof guarded_diagram) +
                            changed(&guarded_arena, sizeof guarded_arena) +
-                           changed(&guarded_tracker, sizeof guarded_tracker);
+                           changed(&guarded_tracker, sizeof guarded_tracker) +
+                           changed(&guarded_power, sizeof guarded_power) +
+                           changed(&guarded_power_arena, sizeof guarded_power_arena);
         CHECK(written == 0u, "%s: a refused call wrote %u bytes", name, written);
         return;
     }
+    /* weighted sites work too: a ring around a light centre, hidden */
+    for (uint32_t i = 0; i < 8u; i++) {
+        vor_point_t p = {(int32_t)(i % 3u) * 100 - 100, (int32_t)(i / 3u) * 100 - 100};
+        power_err |= vor_power_insert(&guarded_power.pd, p, (i == 4u) ? -50000 : 0, NULL);
+    }
+    CHECK((power_err == VOR_OK) && (vor_power_validate(&guarded_power.pd, NULL) == VOR_OK) &&
+              (vor_power_hidden(&guarded_power.pd, 4) == 1),
+          "%s: weighted sites (err %d)", name, power_err);
     /* the options agree: the diagram works, and tracking a point across
      * every cell writes nothing outside the tracker */
     test_rng_t rng;
