@@ -180,21 +180,28 @@ static void mark_star(vor_t *d, vor_index_t p, uint32_t star, bool on, bool *inf
  * neighbour (y, x, c) conflicts with p. */
 enum shape { CONVEX, REFLEX_AT_Y, REFLEX_AT_X };
 
-static enum shape quad_shape(vor_t *d, vor_index_t p, vor_index_t x, vor_index_t y, vor_index_t c)
+/* *flat becomes true when an exact orientation is 0: a flip would then
+ * make a triangle of no area. */
+static enum shape quad_shape(vor_t *d, vor_index_t p, vor_index_t x, vor_index_t y, vor_index_t c,
+                             bool *flat)
 {
     if ((x == VOR__INFINITE) || (y == VOR__INFINITE) || (c == VOR__INFINITE)) {
         return CONVEX; /* a hull edge: p is beyond it, and c-p crosses x-y */
     }
-    if (vor__orient(d, p, c, y) < 0) {
+    if (vor__orient_tie(d, VOR__STATS_OF(d), p, c, y, flat) < 0) {
         return REFLEX_AT_Y;
     }
-    return (vor__orient(d, p, x, c) < 0) ? REFLEX_AT_X : CONVEX;
+    return (vor__orient_tie(d, VOR__STATS_OF(d), p, x, c, flat) < 0) ? REFLEX_AT_X : CONVEX;
 }
 
 /* Inserts vertex p into the triangle in slot `root` (p below its lifted
- * plane, or beyond its hull edge) and flips its star regular. */
-static void insert_at(vor_power_t *pd, vor_index_t root, uint32_t p)
+ * plane, or beyond its hull edge) and flips its star regular. Returns
+ * whether a flip may have left a star triangle of no area (an exact
+ * orientation of 0 in a 2-2 flip, or a 3-1 flip); the split leaves one
+ * only where p is on a line of the root's edges. */
+static bool insert_at(vor_power_t *pd, vor_index_t root, uint32_t p)
 {
+    bool flat = false;
     vor_t *d = &pd->mesh;
     vor__tri_t *tri = d->triangles;
     vor_index_t sp = (vor_index_t)p;
@@ -226,10 +233,12 @@ static void insert_at(vor_power_t *pd, vor_index_t root, uint32_t p)
         vor_index_t x = tv[1];
         vor_index_t y = tv[2];
         vor_index_t c = uv[apex];
-        enum shape shape = quad_shape(d, sp, x, y, c);
+        bool tie_in_shape = false;
+        enum shape shape = quad_shape(d, sp, x, y, c, &tie_in_shape);
         vor_index_t next = t->n[1]; /* (p, y, z) */
         vor_index_t prev = t->n[2]; /* (p, z, x) */
         if ((shape == CONVEX) && !vor__site_marked(d, c, infinity_marked)) {
+            flat = flat || tie_in_shape;
             slot = vor__star_flip(d, slot, sp, x, y, apex, c);
             vor__mark_site(d, c, true, &infinity_marked);
             star++;
@@ -237,12 +246,14 @@ static void insert_at(vor_power_t *pd, vor_index_t root, uint32_t p)
             const vor_index_t nb[3] = {sp, x, c};
             const vor_index_t sl[3] = {slot, t->n[0], next};
             hide_vertex(pd, y, nb, sl, &infinity_marked);
+            flat = true;
             star--;
             slot = sp;
         } else if ((shape == REFLEX_AT_X) && (vor__vertex(&tri[prev], 1) == c)) {
             const vor_index_t nb[3] = {sp, c, y};
             const vor_index_t sl[3] = {prev, t->n[0], slot};
             hide_vertex(pd, x, nb, sl, &infinity_marked);
+            flat = true;
             star--;
             slot = sp;
         } else {
@@ -255,6 +266,7 @@ static void insert_at(vor_power_t *pd, vor_index_t root, uint32_t p)
         mark_star(d, sp, star, true, &infinity_marked);
     }
     mark_star(d, sp, star, false, &infinity_marked);
+    return flat;
 }
 
 /* ------------------------------------------------------------------ */
@@ -453,19 +465,20 @@ static uint32_t find_at(const vor_power_t *pd, uint32_t p, uint32_t ids)
     return VOR__NONE;
 }
 
-/* Inserts vertex p into the triangle in slot `root`, then hides `under`
- * (a lighter vertex at p's point, VOR__NONE if none) and the slivers p
- * leaves (settle_star). Returns PLACED_HIDDEN when p itself ends hidden,
- * else VOR_OK. */
-static int insert_vertex(vor_power_t *pd, vor_index_t root, uint32_t p, uint32_t under)
+/* Inserts vertex p into the triangle in slot `root` (`on_line`: p on a
+ * line of its edges), then hides `under` (a lighter vertex at p's point,
+ * VOR__NONE if none) and the slivers p leaves (settle_star). Returns
+ * PLACED_HIDDEN when p itself ends hidden, else VOR_OK. */
+static int insert_vertex(vor_power_t *pd, vor_index_t root, uint32_t p, uint32_t under,
+                         bool on_line)
 {
     vor_t *d = &pd->mesh;
-    insert_at(pd, root, p);
+    bool flat = insert_at(pd, root, p) || on_line;
     d->last_site = p;
     if ((under != VOR__NONE) && vor__site_in_mesh(d, under)) {
         unlink_hidden(pd, under); /* farther everywhere, by a constant */
     }
-    if (!pd->area || ((under == VOR__NONE) && !star_flat(d, (vor_index_t)p))) {
+    if (!pd->area || ((under == VOR__NONE) && !(flat && star_flat(d, (vor_index_t)p)))) {
         return VOR_OK;
     }
     return settle_star(pd, (vor_index_t)p) ? PLACED_HIDDEN : VOR_OK;
@@ -487,7 +500,7 @@ static int place_on_line(vor_power_t *pd, uint32_t p, bool vertical, vor_index_t
         hide(pd, p); /* above the chain between its neighbours */
         return PLACED_HIDDEN;
     }
-    (void)insert_vertex(pd, root, p, under);
+    (void)insert_vertex(pd, root, p, under, true);
     settle_line(pd, p, vertical);
     return VOR_OK;
 }
@@ -585,7 +598,7 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
         hide(pd, p);
         return PLACED_HIDDEN;
     }
-    return insert_vertex(pd, root, p, under);
+    return insert_vertex(pd, root, p, under, on_line);
 }
 
 /* ------------------------------------------------------------------ */
