@@ -25,6 +25,9 @@
 #                           docs/room.png
 #   make bench-cdt          constraints: vor_constrain against CGAL, CDT and
 #                           delaunay32, and Cortex-M3 instructions per constraint
+#   make bench-power        weighted sites: vor_power_build and vor_power_insert
+#                           against CGAL's regular triangulation, and Cortex-M3
+#                           instructions per site
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #   make fuzz               the libFuzzer harnesses, FUZZ_SECONDS (600) each

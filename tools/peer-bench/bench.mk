@@ -17,6 +17,10 @@
 #                      Constrained_Delaunay_triangulation_2, CDT (artem-ogre)
 #                      and delaunay32, and instructions per constraint on
 #                      Cortex-M3 (bench/cdt.c under QEMU);
+#   make bench-power   weighted sites: vor_power_build and vor_power_insert
+#                      against CGAL's Regular_triangulation_2, and
+#                      instructions per site on Cortex-M3 (bench/power.c
+#                      under QEMU);
 #   make bench-jcv     vor beside jc_voronoi on the emulated Cortex-M4F:
 #                      instructions, RAM and stack per build
 #                      (tools/peer-bench/jcv_firmware.c); make bench runs it too.
@@ -34,7 +38,7 @@ BENCH_CXXFLAGS ?= -std=c++17 -O2 -DNDEBUG -Wall -Wextra
 # CGAL 5 is header-only; Epick's exact fallback may pull in GMP and MPFR.
 BENCH_LDLIBS ?= -lgmp -lmpfr
 
-.PHONY: bench bench-query bench-dynamic bench-cdt bench-jcv
+.PHONY: bench bench-query bench-dynamic bench-cdt bench-power bench-jcv
 
 bench:
 	@tools/install-deps.sh bench host python toolchains
@@ -53,6 +57,10 @@ bench-dynamic:
 bench-cdt:
 	@tools/install-deps.sh bench host python toolchains
 	+@tools/peer-bench/run.sh cdt
+
+bench-power:
+	@tools/install-deps.sh bench host python toolchains
+	+@tools/peer-bench/run.sh power
 
 # The peers of `make bench` and `make bench-cdt` (docs/benchmarks.md):
 # delaunay32, jc_voronoi and CDT (header-only),

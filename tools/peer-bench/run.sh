@@ -33,6 +33,15 @@
 #       10^5 and 10^6 sites, medians of 5 runs;
 #       target: bench/cdt.c under QEMU -icount on Cortex-M3 gives
 #       instructions per constraint among 1,000 and 10,000 sites.
+#   run.sh power [ARGS...]        `make bench-power`: weighted sites.
+#       host: build/bench/power-host (tools/peer-bench/power.cpp) times
+#       vor_power_build and vor_power_insert against CGAL's
+#       Regular_triangulation_2 (Epick; range insert and one by one) at
+#       10^5 and 10^6 sites, light and heavy weights, medians of 5 runs,
+#       checks that both agree and measures their memory;
+#       target: bench/power.c under QEMU -icount on Cortex-M3 gives
+#       instructions per site of vor_power_build and vor_power_insert
+#       among 1,000 and 10,000 sites.
 #
 # The host programs link build/host/libvor.a. Prints the tables and writes
 # them to build/bench/NAME.md. ARGS go to the host program (e.g. --sizes
@@ -46,7 +55,7 @@ mkdir -p "$out"
 
 bench=delaunay
 case ${1:-} in
-delaunay | query | dynamic | cdt)
+delaunay | query | dynamic | cdt | power)
     bench=$1
     shift
     ;;
@@ -67,6 +76,11 @@ dynamic)
     ;;
 cdt)
     target=bench-cdt
+    ports="cortex-m3"
+    target_ok='^bench valid ok'
+    ;;
+power)
+    target=bench-power
     ports="cortex-m3"
     target_ok='^bench valid ok'
     ;;
@@ -244,6 +258,50 @@ for port in ports:
         print(f"| {port} | {int(n):,} | {build} | {rows['attach'][i][1]} | "
               f"{rows['constrain-disjoint'][i][1]} | {rows['constrain-crossing'][i][1]} | "
               f"{int(crossings):,} / {int(segs):,} | {int(rows['memory'][i][1]):,} |")
+sys.exit(0 if ok else 1)
+PY
+}
+
+power_targets() {
+    echo "Targets, instructions per site (bench/power.c, QEMU -icount):"
+    echo
+    # shellcheck disable=SC2086  # ports is a word list on purpose
+    python3 - "$out" $ports <<'PY' || status=1
+import sys
+out, ports = sys.argv[1], sys.argv[2:]
+ok = True
+print("| port | sites | weights | hidden | vor_power_build / site | vor_power_insert / site | insert / build | arena (B) |")
+print("|---|---|---|---|---|---|---|---|")
+for port in ports:
+    cost, hidden, memory, sizes = {}, {}, {}, []
+    for line in open(f"{out}/power-{port}.txt"):
+        f = line.split()
+        if len(f) < 4 or f[0] != "bench" or f[1] == "valid":
+            continue
+        n = int(f[2])
+        if f[1] == "memory":
+            memory[n] = int(f[3])
+            continue
+        what, _, kind = f[1].partition("-")
+        if n not in sizes:
+            sizes.append(n)
+        if what == "hidden":
+            hidden[n, kind] = int(f[3])
+        else:
+            cost[n, kind, what] = float(f[3])
+    rows = 0
+    for n in sizes:
+        for kind, label in (("light", "< s^2 / 100"), ("heavy", "< s^2")):
+            if not all((n, kind, w) in cost for w in ("build", "insert")) or (n, kind) not in hidden:
+                continue
+            b, i = cost[n, kind, "build"], cost[n, kind, "insert"]
+            h = hidden[n, kind]
+            print(f"| {port} | {n:,} | {label} | {h:,} ({100 * h / n:.1f} %) | {b:.1f} | {i:.1f} | "
+                  f"{i / b:.2f} | {memory.get(n, 0):,} |")
+            rows += 1
+    if rows == 0:
+        print(f"| {port} | no figures |")
+        ok = False
 sys.exit(0 if ok else 1)
 PY
 }
