@@ -40,7 +40,6 @@
 #include "incremental.h"
 #include "insertion_order.h"
 #include "mesh.h"
-#include "motion.h"
 #include "perturbation.h"
 #include "predicates.h"
 #include "vor_power.h"
@@ -674,8 +673,6 @@ int vor_power_insert(vor_power_t *pd, vor_point_t point, int64_t w, uint32_t *si
         return VOR_ERR_DUPLICATE;
     }
     d->site_count++;
-    d->revision++;
-    vor__topology_changed(d);
     if (vertices >= 2u) {
         /* the vertices this insertion hid leave the bucket grid: the
          * newest on the list (p, when hidden, was never in the grid). Two
