@@ -35,6 +35,12 @@
  * Delaunay, no vertex inside a triangle's circumcircle visible from the
  * triangle's centroid (on small meshes), and the domain's triangles those
  * at odd nesting levels by a shortest-path flood over the triangles.
+ *
+ * Weighted sites (vor_power.h): an input whose first byte is POWER_MODE
+ * or more is a program of its own on one vor_power_t (power_program):
+ * inits, inserts, builds, bad arguments, each followed by power_check,
+ * which decides the regular triangulation's invariants by brute force
+ * over the lifted sites with fuzz_power's 768-bit determinants.
  */
 #include <string.h>
 
