@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * test_api_safety.c - every public call of vor.h and vor_raster.h with
- * each bad argument: a NULL pointer, a wrong configuration fingerprint, a
- * zeroed or closed iterator, an id that is not a site (out of range, or a
- * duplicate's), an inverted or empty box, a full diagram. Each call must
+ * test_api_safety.c - every public call of vor.h, vor_power.h and
+ * vor_raster.h with each bad argument: a NULL pointer, a wrong
+ * configuration fingerprint, a zeroed or closed iterator, an id that is
+ * not a site (out of range, or a duplicate's), an inverted or empty box,
+ * a too small or misaligned arena, a full diagram. Each call must
  * return its documented code, and the diagram, its arena and the output
  * buffers must be byte for byte as before (compared with copies taken
  * just before the call). Expected ids come from how the input was made
@@ -11,6 +12,7 @@
  */
 #include "test.h"
 #include "vor.h"
+#include "vor_power.h"
 #include "vor_raster.h"
 
 #define SAFE_SITES 32u
@@ -772,6 +774,252 @@ static void check_each_argument(void)
           "raster: the frame ending at INT32_MAX");
 }
 
+/* ------------------------------------------------------------------ */
+/* Weighted sites (vor_power.h)                                        */
+
+#define POWER_N (SAFE_SITES - 3u) /* the scene's sites, a duplicate and a hidden twin among them */
+
+static uint8_t power_arena[VOR_POWER_ARENA_BYTES(SAFE_SITES) + 8u]
+    __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+static uint8_t saved_power_arena[sizeof power_arena];
+static vor_power_t power, saved_power;
+static vor_point_t power_points[POWER_N];
+static int64_t power_weights[POWER_N];
+
+static void power_snapshot(void)
+{
+    test_copy_bytes(&saved_power, &power, sizeof power);
+    test_copy_bytes(saved_power_arena, power_arena, sizeof power_arena);
+}
+
+static bool power_unchanged(void)
+{
+    return test_same_bytes(&saved_power, &power, sizeof power) &&
+           test_same_bytes(saved_power_arena, power_arena, sizeof power_arena);
+}
+
+/* The jittered grid, weight 0, but: site 10 heavy enough to hide every
+ * site off the hull (a radius of 10^4 over a grid of 8000 by 4000),
+ * site POWER_N - 2 at site 5's point 1000 lighter (hidden: farther
+ * everywhere), site POWER_N - 1 a copy of site 3 (a duplicate). */
+static void make_power_scene(void)
+{
+    for (uint32_t i = 0; i < POWER_N; i++) {
+        power_points[i] = points[i];
+        power_weights[i] = 0;
+    }
+    power_weights[10] = 100000000;
+    power_points[POWER_N - 2u] = points[5];
+    power_weights[POWER_N - 2u] = -1000;
+    power_points[POWER_N - 1u] = points[3];
+}
+
+/* vor_power_init: each documented error alone, nothing written; the good
+ * call writes only *pd, never the arena. */
+static void check_power_init(void)
+{
+    fill(&power, sizeof power, 0xA5);
+    fill(power_arena, sizeof power_arena, 0x5A);
+    power_snapshot();
+    size_t need = VOR_POWER_ARENA_BYTES(SAFE_SITES);
+    unsigned bad = 0;
+    bad += vor_power_init(NULL, power_arena, need, 4) != VOR_ERR_ARG;
+    bad += vor_power_init(&power, NULL, need, 4) != VOR_ERR_ARG;
+    bad += vor_power_init(&power, power_arena, need, 0) != VOR_ERR_ARG;
+    bad += vor_power_init(&power, power_arena, sizeof power_arena, VOR_MAX_SITES + 1u) != VOR_ERR_ARG;
+    bad += vor_power_init(&power, power_arena, sizeof power_arena, 0xFFFFFFFFu) != VOR_ERR_ARG;
+    for (unsigned off = 1; off < VOR_POWER_ARENA_ALIGN; off++) { /* 4 too: the weights are int64 */
+        bad += vor_power_init(&power, power_arena + off, need, SAFE_SITES) != VOR_ERR_ALIGN;
+    }
+    bad += vor_power_init(&power, power_arena, need - 1u, SAFE_SITES) != VOR_ERR_NOMEM;
+    bad += vor_power_init(&power, power_arena, VOR_ARENA_BYTES(SAFE_SITES), SAFE_SITES) != VOR_ERR_NOMEM;
+    bad += vor_power_init(&power, power_arena, VOR_POWER_ARENA_BYTES(1) - 1u, 1) != VOR_ERR_NOMEM;
+    bad += vor_power_init(&power, power_arena, 0, 1) != VOR_ERR_NOMEM;
+    for (unsigned bit = 0; bit < 32u; bit++) {
+        bad += vor_power_init_checked(&power, power_arena, need, SAFE_SITES,
+                                      VOR_CONFIG_FINGERPRINT ^ (1u << bit)) != VOR_ERR_CONFIG;
+    }
+    /* the fingerprint first: a bad one with every other argument bad too */
+    bad += vor_power_init_checked(NULL, NULL, 0, 0, VOR_CONFIG_FINGERPRINT ^ 1u) != VOR_ERR_CONFIG;
+    CHECK(bad == 0 && power_unchanged(), "power_init: %u bad arguments accepted or wrote", bad);
+    CHECK(vor_power_init(&power, power_arena, need, SAFE_SITES) == VOR_OK &&
+              test_same_bytes(saved_power_arena, power_arena, sizeof power_arena),
+          "power_init: the exact size, the arena untouched");
+    CHECK(vor_power_init(&power, power_arena, VOR_POWER_ARENA_BYTES(1), 1) == VOR_OK &&
+              vor_power_insert(&power, (vor_point_t){1, 2}, 3, NULL) == VOR_OK &&
+              vor_power_validate(&power, NULL) == VOR_OK,
+          "power_init: one site in the smallest arena");
+}
+
+/* Insert and build: NULLs, duplicates (with and without an id wanted),
+ * a full object; every failure leaves the object and the arena as they
+ * were and writes no id and no duplicate_of. */
+static void check_power_insert_and_build(void)
+{
+    make_power_scene();
+    uint32_t dup[POWER_N];
+    uint32_t out = 77;
+    CHECK(vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
+              vor_power_build(&power, power_points, power_weights, POWER_N, dup) == VOR_OK &&
+              dup[POWER_N - 1u] == 3u && dup[POWER_N - 2u] == POWER_N - 2u && dup[0] == 0u,
+          "power: the scene");
+    power_snapshot();
+    unsigned bad = 0;
+    bad += vor_power_insert(NULL, (vor_point_t){1, 2}, 0, &out) != VOR_ERR_ARG;
+    bad += out != 77;
+    for (uint32_t i = 0; i < POWER_N; i++) {
+        uint32_t want = (i == POWER_N - 1u) ? 3u : i;
+        out = 77;
+        bad += vor_power_insert(&power, power_points[i], power_weights[i], &out) != VOR_ERR_DUPLICATE;
+        bad += out != want;
+        bad += vor_power_insert(&power, power_points[i], power_weights[i], NULL) != VOR_ERR_DUPLICATE;
+    }
+    CHECK(bad == 0 && power_unchanged(), "power_insert: %u wrong answers to NULL or duplicates", bad);
+
+    uint32_t dup_out[SAFE_SITES + 1u], dup_before[SAFE_SITES + 1u];
+    fill(dup_out, sizeof dup_out, 0xEE);
+    test_copy_bytes(dup_before, dup_out, sizeof dup_out);
+    static vor_point_t many[SAFE_SITES + 1u];
+    static int64_t many_w[SAFE_SITES + 1u];
+    bad = 0;
+    bad += vor_power_build(NULL, power_points, power_weights, 3, dup_out) != VOR_ERR_ARG;
+    bad += vor_power_build(&power, NULL, power_weights, 3, dup_out) != VOR_ERR_ARG;
+    bad += vor_power_build(&power, power_points, NULL, 3, dup_out) != VOR_ERR_ARG;
+    bad += vor_power_build(&power, NULL, NULL, SAFE_SITES + 1u, dup_out) != VOR_ERR_ARG;
+    bad += vor_power_build(&power, many, many_w, SAFE_SITES + 1u, dup_out) != VOR_ERR_FULL;
+    bad += vor_power_build(&power, many, many_w, 0xFFFFFFFFu, dup_out) != VOR_ERR_FULL;
+    bad += !test_same_bytes(dup_out, dup_before, sizeof dup_out);
+    CHECK(bad == 0 && power_unchanged(), "power_build: %u bad arguments accepted or wrote", bad);
+
+    /* full: a new site FULL, id not written; a duplicate still told */
+    for (uint32_t max_sites = 1; max_sites <= POWER_N; max_sites += (max_sites < 4u) ? 1u : 8u) {
+        uint32_t n = max_sites;
+        CHECK(vor_power_init(&power, power_arena, sizeof power_arena, max_sites) == VOR_OK &&
+                  vor_power_build(&power, power_points, power_weights, n, NULL) == VOR_OK,
+              "power: build %u", n);
+        power_snapshot();
+        bad = 0;
+        out = 77;
+        bad += vor_power_insert(&power, (vor_point_t){-1, -1}, 5, &out) != VOR_ERR_FULL;
+        bad += vor_power_insert(&power, power_points[0], power_weights[0] + 1, &out) != VOR_ERR_FULL;
+        bad += out != 77;
+        bad += vor_power_insert(&power, power_points[n - 1u], power_weights[n - 1u], &out) != VOR_ERR_DUPLICATE;
+        bad += out != n - 1u;
+        CHECK(bad == 0 && power_unchanged(), "power: full at %u: %u wrong answers", n, bad);
+    }
+    /* a build of no points (NULL) empties it */
+    CHECK(vor_power_build(&power, NULL, NULL, 0, NULL) == VOR_OK &&
+              vor_power_hidden(&power, 0) == VOR_ERR_ARG && vor_power_validate(&power, NULL) == VOR_OK,
+          "power_build of no points (NULL)");
+}
+
+/* The reads: vor_power_hidden of every id, the iterators with NULLs,
+ * zeroed and after their end, vor_power_validate; none writes. */
+static void check_power_reads(void)
+{
+    make_power_scene();
+    CHECK(vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
+              vor_power_build(&power, power_points, power_weights, POWER_N, NULL) == VOR_OK,
+          "power: the scene");
+    power_snapshot();
+    unsigned bad = 0;
+    uint32_t hidden = 0;
+    bad += vor_power_hidden(NULL, 0) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&power, POWER_N - 1u) != VOR_ERR_ARG; /* a duplicate's */
+    bad += vor_power_hidden(&power, POWER_N) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&power, SAFE_SITES) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&power, VOR_NO_HINT) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&power, 0xFFFFFFFFu) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&power, POWER_N - 2u) != 1;           /* the lighter twin */
+    bad += vor_power_hidden(&power, 10) != 0;                     /* the heavy site */
+    for (uint32_t i = 0; i + 1u < POWER_N; i++) {
+        int h = vor_power_hidden(&power, i);
+        bad += (h != 0) && (h != 1);
+        hidden |= (h == 1 && i != POWER_N - 2u) ? 1u : 0u;
+    }
+    CHECK(bad == 0 && hidden != 0u && power_unchanged(), "power_hidden: %u wrong answers", bad);
+
+    bad = 0;
+    uint32_t site = 77, listed = 0;
+    static vor_power_hidden_iter_t zero_hidden;
+    vor_power_hidden_iter_t it;
+    bad += vor_power_hidden_begin(NULL, &power) != VOR_ERR_ARG;
+    bad += vor_power_hidden_next(&zero_hidden, &site) + vor_power_hidden_next(NULL, &site) != 0;
+    bad += vor_power_hidden_begin(&it, NULL) != VOR_ERR_ARG;
+    bad += vor_power_hidden_next(&it, &site) != 0;
+    bad += vor_power_hidden_begin(&it, &power) != VOR_OK;
+    bad += vor_power_hidden_next(&it, NULL) != 0;
+    bad += site != 77;
+    bad += vor_power_hidden_begin(&it, &power) != VOR_OK;
+    while (vor_power_hidden_next(&it, &site) && listed <= POWER_N) {
+        listed++;
+        bad += vor_power_hidden(&power, site) != 1;
+    }
+    bad += vor_power_hidden_next(&it, &site) != 0;
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < POWER_N; i++) {
+        count += vor_power_hidden(&power, i) == 1 ? 1u : 0u;
+    }
+    bad += listed != count;
+    CHECK(bad == 0 && power_unchanged(), "power hidden iterator: %u wrong, %u listed of %u", bad, listed,
+          count);
+
+    bad = 0;
+    uint32_t ids[3] = {77, 77, 77}, triangles = 0;
+    vor_triangle_iter_t ti;
+    bad += vor_power_triangles_begin(NULL, &power) != VOR_ERR_ARG;
+    bad += vor_power_triangles_begin(&ti, NULL) != VOR_ERR_ARG;
+    bad += vor_triangles_next(&ti, ids) != 0;
+    bad += vor_power_triangles_begin(&ti, &power) != VOR_OK;
+    bad += vor_triangles_next(&ti, NULL) != 0;
+    bad += (ids[0] != 77 || ids[2] != 77);
+    bad += vor_power_triangles_begin(&ti, &power) != VOR_OK;
+    while (vor_triangles_next(&ti, ids) && triangles <= 2u * POWER_N) {
+        triangles++;
+        for (unsigned k = 0; k < 3u; k++) {
+            bad += vor_power_hidden(&power, ids[k]) != 0;
+        }
+    }
+    bad += triangles == 0u;
+    bad += vor_triangles_next(&ti, ids) != 0;
+    CHECK(bad == 0 && power_unchanged(), "power triangle iterator: %u wrong", bad);
+
+    vor_violation_t violation;
+    fill(&violation, sizeof violation, 0x33);
+    vor_violation_t violation_before = violation;
+    CHECK(vor_power_validate(NULL, &violation) == VOR_ERR_ARG &&
+              test_same_bytes(&violation, &violation_before, sizeof violation) &&
+              vor_power_validate(&power, NULL) == VOR_OK &&
+              vor_power_validate(&power, &violation) == VOR_OK && power_unchanged(),
+          "power_validate: NULL, or a good object refused");
+}
+
+/* A vor_power_t vor_power_init never saw, zeroed as static storage is:
+ * empty and full, every call refused or empty, nothing written. */
+static void check_power_zeroed(void)
+{
+    static vor_power_t zeroed;
+    static const vor_power_t zero;
+    uint32_t out = 77, ids[3] = {77, 77, 77};
+    uint32_t dup[2] = {77, 77};
+    unsigned bad = 0;
+    bad += vor_power_insert(&zeroed, (vor_point_t){1, 1}, 0, &out) != VOR_ERR_FULL;
+    bad += vor_power_insert(&zeroed, (vor_point_t){1, 1}, 0, NULL) != VOR_ERR_FULL;
+    bad += vor_power_build(&zeroed, points, power_weights, 1, dup) != VOR_ERR_FULL;
+    bad += vor_power_hidden(&zeroed, 0) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&zeroed, 1) != VOR_ERR_ARG;
+    bad += vor_power_validate(&zeroed, NULL) != VOR_OK;
+    vor_power_hidden_iter_t it;
+    bad += vor_power_hidden_begin(&it, &zeroed) != VOR_OK;
+    bad += vor_power_hidden_next(&it, &out) != 0;
+    vor_triangle_iter_t ti;
+    bad += vor_power_triangles_begin(&ti, &zeroed) != VOR_OK;
+    bad += vor_triangles_next(&ti, ids) != 0;
+    bad += (out != 77 || ids[0] != 77 || dup[0] != 77);
+    CHECK(bad == 0 && test_same_bytes(&zeroed, &zero, sizeof zero),
+          "a never-initialised power object: %u wrong answers, or written", bad);
+}
+
 void test_api_safety(void)
 {
     test_rng_t rng;
@@ -786,4 +1034,8 @@ void test_api_safety(void)
     TEST_CASE("raster") check_raster();
     TEST_CASE("zeroed_diagram") check_zeroed_diagram();
     TEST_CASE("each_argument") check_each_argument();
+    TEST_CASE("power/init") check_power_init();
+    TEST_CASE("power/insert_and_build") check_power_insert_and_build();
+    TEST_CASE("power/reads") check_power_reads();
+    TEST_CASE("power/zeroed") check_power_zeroed();
 }

@@ -966,7 +966,7 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
-COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt")
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt", "power")
 
 
 def help_cases(tmp):
@@ -1558,6 +1558,255 @@ def cdt_cases(rng, tmp):
     check(r.returncode == 0 and r.stdout.splitlines()[-1] == "c 0 1" and "c 0 3" not in r.stdout,
           f"vor cdt repeated site: {r.stdout!r}")
 
+def power_test(a, b, c, d):
+    """The sign of weighted site d's lifted point (x, y, x^2 + y^2 - w)
+    against the plane of counterclockwise a, b, c: positive below it."""
+    rows = [(p[0] - d[0], p[1] - d[1], (p[0] - d[0]) ** 2 + (p[1] - d[1]) ** 2 - (p[2] - d[2])) for p in (a, b, c)]
+    (ax, ay, la), (bx, by, lb), (cx, cy, lc) = rows
+    return sign(la * (bx * cy - by * cx) + lb * (cx * ay - cy * ax) + lc * (ax * by - ay * bx))
+
+
+def hull_area2(pts):
+    """Twice the area of the convex hull of pts (exact)."""
+    pts = sorted(set(pts))
+    if len(pts) < 3:
+        return 0
+
+    def chain(seq):
+        out = []
+        for p in seq:
+            while len(out) >= 2 and orient(out[-2], out[-1], p) <= 0:
+                out.pop()
+            out.append(p)
+        return out[:-1]
+    ring = chain(pts) + chain(reversed(pts))
+    return sum(ring[i][0] * ring[(i + 1) % len(ring)][1] - ring[(i + 1) % len(ring)][0] * ring[i][1]
+               for i in range(len(ring)))
+
+
+def line_status(sites, ids, s):
+    """All sites on one line: 1 when site s's lifted point is strictly above
+    the lower chain of the others (a heavier site at its point, or a chord
+    of sites on either side below it), -1 when it is a strict corner of the
+    chain, 0 when it lies on the chain without being a corner."""
+    vertical = len({sites[i][0] for i in ids}) == 1
+    key = (lambda p: p[1]) if vertical else (lambda p: p[0])
+
+    def lift(p):
+        return p[0] ** 2 + p[1] ** 2 - p[2]
+    ps, status = sites[s], -1
+    for a in ids:
+        if a == s:
+            continue
+        if sites[a][:2] == ps[:2]:
+            if sites[a][2] > ps[2]:
+                return 1
+            continue
+        for b in ids:
+            ta, ts, tb = key(sites[a]), key(ps), key(sites[b])
+            if ta < ts < tb:
+                above = (tb - ta) * lift(ps) - (tb - ts) * lift(sites[a]) - (ts - ta) * lift(sites[b])
+                if above > 0:
+                    return 1
+                if above == 0:
+                    status = 0
+    return status
+
+
+def power_reference(sites):
+    """The regular triangulation by brute force over the lifted sites: the
+    ccw triples with no other site's lifted point strictly below their
+    plane. Returns (first occurrences, those triples, unique): unique is
+    False when a lifted site lies on such a triple's plane without being
+    one of its corners (four or more coplanar: not unique)."""
+    first = {}
+    dup = [first.setdefault(s, i) for i, s in enumerate(sites)]
+    ids = [i for i in range(len(sites)) if dup[i] == i]
+    faces, unique = set(), True
+    for x in range(len(ids)):
+        for y in range(x + 1, len(ids)):
+            for z in range(y + 1, len(ids)):
+                i, j, k = ids[x], ids[y], ids[z]
+                o = orient(sites[i], sites[j], sites[k])
+                if o == 0:
+                    continue
+                a, b, c = (i, j, k) if o > 0 else (i, k, j)
+                signs = [power_test(sites[a], sites[b], sites[c], sites[l]) for l in ids if l not in (i, j, k)]
+                if all(v <= 0 for v in signs):
+                    faces.add((a, b, c))
+                    unique = unique and 0 not in signs
+    return dup, ids, faces, unique
+
+
+def check_power_output(sites, out, what):
+    """vor power's output for sites against the brute force: exactly its
+    triangles and hidden sites where the triangulation is unique; its
+    invariants where it is not; the duplicates and the line order always."""
+    dup, ids, faces, unique = power_reference(sites)
+    lines = out.splitlines()
+    tris = [tuple(int(v) for v in l.split()[1:]) for l in lines if l.startswith("t ")]
+    hidden = [int(l.split()[1]) for l in lines if l.startswith("h ")]
+    dups = [tuple(int(v) for v in l.split()[1:]) for l in lines if l.startswith("d ")]
+    kinds = [l.split()[0] for l in lines]
+    ok = (kinds == sorted(kinds, key="thd".index) and all(len(t) == 3 for t in tris) and all(len(d) == 2 for d in dups)
+          and len(tris) + len(hidden) + len(dups) == len(lines))
+    check(ok, f"vor power {what}: malformed output {out!r}")
+    if not ok:
+        return
+    check(tris == sorted(tris) and all(t[0] == min(t) for t in tris) and hidden == sorted(set(hidden)),
+          f"vor power {what}: lines not sorted, or not from the smallest id")
+    check(dups == [(i, dup[i]) for i in range(len(sites)) if dup[i] != i], f"vor power {what}: duplicates {dups}")
+    area = hull_area2([s[:2] for s in sites])
+    if unique and area > 0:
+        want_hidden = sorted(set(ids) - {v for t in faces for v in t})
+        want = sorted(tuple(t[k:] + t[:k]) for t in faces for k in range(3) if t[k] == min(t))
+        check(tris == want and hidden == want_hidden,
+              f"vor power {what}: {tris} hidden {hidden}, brute force {want} hidden {want_hidden}; sites {sites}")
+        return
+    # not unique (or on a line): the invariants of any regular triangulation
+    hid, corner, bad = set(hidden), {v for t in tris for v in t}, []
+    if hid - set(ids) or hid & corner:
+        bad.append("a hidden site that is a duplicate or a corner")
+    if corner - set(ids):
+        bad.append("a corner that is a duplicate")
+    # the edges cut at the sites inside them: a vertex whose cell has no
+    # area may sit inside an edge (its flat triangle is not printed)
+    points = {sites[l][:2] for l in ids}
+
+    def pieces(a, b):
+        inner = sorted((p for p in points if p not in (a, b) and orient(a, b, p) == 0 and
+                        (p[0] - a[0]) * (b[0] - a[0]) + (p[1] - a[1]) * (b[1] - a[1]) > 0 and
+                        (p[0] - b[0]) * (a[0] - b[0]) + (p[1] - b[1]) * (a[1] - b[1]) > 0),
+                       key=lambda p: (p[0] - a[0]) ** 2 + (p[1] - a[1]) ** 2)
+        chain = [a] + inner + [b]
+        return list(zip(chain, chain[1:]))
+    edges = [e for t in tris for k in range(3) for e in pieces(sites[t[k]][:2], sites[t[(k + 1) % 3]][:2])]
+    for t in tris:
+        a, b, c = (sites[v] for v in t)
+        if orient(a, b, c) <= 0:
+            bad.append(f"{t} not ccw of nonzero area")
+        if any(power_test(a, b, c, sites[l]) > 0 for l in ids):
+            bad.append(f"a site below the plane of {t}")
+    if len(set(edges)) != len(edges):
+        bad.append("an edge used twice the same way")
+    for u, v in edges:
+        if (v, u) not in edges and any(orient(u, v, sites[l]) < 0 for l in ids):
+            bad.append(f"the unpaired edge {u} {v} inside the hull")
+    if sum(orient2 for orient2 in ((sites[b][0] - sites[a][0]) * (sites[c][1] - sites[a][1]) -
+                                   (sites[b][1] - sites[a][1]) * (sites[c][0] - sites[a][0]) for a, b, c in tris)) != area:
+        bad.append("the triangles do not cover the hull")
+
+    def under(s):  # the triangles whose closed projection holds site s
+        return [t for t in tris if all(orient(sites[t[k]], sites[t[(k + 1) % 3]], sites[s]) >= 0 for k in range(3))]
+    for s in ids:
+        if area == 0:
+            status = line_status(sites, ids, s)
+            if (status == 1 and s not in hid) or (status == -1 and s in hid):
+                bad.append(f"site {s} on the line: status {status}, hidden {s in hid}")
+        elif s in hid and not any(power_test(*(sites[v] for v in t), sites[s]) <= 0 for t in under(s)):
+            bad.append(f"hidden site {s} outside the triangles or below them")
+        elif s not in hid and s not in corner and not any(power_test(*(sites[v] for v in t), sites[s]) == 0 for t in under(s)):
+            bad.append(f"site {s} in no triangle, not hidden, its lifted point off the surface (a cell with area)")
+    check(not bad, f"vor power {what}: {bad[:3]}; sites {sites}; output {out!r}")
+
+
+def power_cases(tmp):
+    """vor power on random small sets (ties from small coordinates and
+    weights, sites at one point, lines) and full-range ones, against the
+    brute force above; CSV, --scale, malformed input and usage errors.
+    Its own generator: the sets, and so the count of degenerate ones
+    checked below, do not move with the other sections."""
+    import os
+    rng = random.Random(1128)
+    degenerate = 0
+    for case in range(160):
+        kind = case % 4
+        n = rng.randint(0, 12) if kind >= 2 else rng.randint(5, 12)
+        sites = []
+        for _ in range(n):
+            if kind == 3:  # generic: full int32 coordinates, full int64 weights
+                s = (rng.randint(MIN, MAX), rng.randint(MIN, MAX), rng.randint(-2**63, 2**63 - 1))
+            elif kind == 2:  # on a line, weights small
+                t = rng.randint(-4, 4)
+                s = (3 * t, -2 * t + 1, rng.randint(-20, 20))
+            elif kind == 1:  # a small grid, small weights: ties, sites at one point
+                s = (rng.randint(-3, 3), rng.randint(-3, 3), rng.randint(-4, 4))
+            else:  # a smaller grid, mostly equal weights: cocircular sites
+                s = (rng.randint(-2, 2), rng.randint(-2, 2), rng.choice((0, 0, 0, 0, 1)))
+            if sites and rng.random() < 0.2:  # an earlier point, same or other weight
+                p = rng.choice(sites)
+                s = p if rng.random() < 0.5 else (p[0], p[1], s[2])
+            sites.append(s)
+        r = run(["power", "-"], "".join(f"{x} {y} {w}\n" for x, y, w in sites))
+        check(r.returncode == 0 and r.stderr == "", f"vor power case {case}: {r.returncode} {r.stderr!r}")
+        if r.returncode == 0:
+            check_power_output(sites, r.stdout, f"case {case}")
+            degenerate += not power_reference(sites)[3]
+    check(degenerate >= 10, f"vor power: only {degenerate} sets where the triangulation is not unique")
+    # the extremes of the ranges, and sites at one point
+    sites = [(MIN, MIN, -2**63), (MAX, MIN, 2**63 - 1), (MIN, MAX, 0), (MAX, MAX, -1), (0, 0, 2**63 - 1),
+             (0, 0, -2**63), (1, -1, 2**62)]
+    r = run(["power", "-"], "".join(f"{x} {y} {w}\n" for x, y, w in sites))
+    check(r.returncode == 0, f"vor power extremes: {r.returncode} {r.stderr!r}")
+    check_power_output(sites, r.stdout, "extremes")
+    r = run(["power", "-"], "5 5 1\n5 5 3\n5 5 3\n5 5 -2\n")
+    check(r.returncode == 0 and r.stdout == "h 0\nh 3\nd 2 1\n", f"vor power one point: {r.stdout!r}")
+    # the same sites as CSV (with a header), and scaled (weights are not)
+    sites = [(rng.randint(-50, 50), rng.randint(-50, 50), rng.randint(-400, 400)) for _ in range(12)]
+    ref = run(["power", "-"], "".join(f"{x} {y} {w}\n" for x, y, w in sites))
+    check(ref.returncode == 0 and ref.stdout.startswith("t "), f"vor power reference: {ref.stderr!r}")
+    for args, text in ((["power", "-"], "x,y,w\n" + "".join(f"{x},{y},{w}\n" for x, y, w in sites)),
+                       (["power", "-"], "# c\n\n" + "".join(f" {x} ,\t{y}, {w}\r\n" for x, y, w in sites)),
+                       (["power", "--scale", "10", "-"], "".join(f"{x / 10} {y / 10} {w}\n" for x, y, w in sites)),
+                       (["power", "--scale=0.5", "-"], "".join(f"{2 * x},{2 * y},{w}\n" for x, y, w in sites))):
+        r = run(args, text)
+        check(r.returncode == 0 and r.stdout == ref.stdout, f"vor {' '.join(args)} {text[:20]!r}: {r.returncode} {r.stderr!r}")
+    sp = os.path.join(tmp, "power.sites")
+    with open(sp, "w") as f:
+        f.write("".join(f"{x} {y} {w}\n" for x, y, w in sites))
+    r = run(["power", sp], "")
+    check(r.returncode == 0 and r.stdout == ref.stdout, f"vor power FILE: {r.returncode} {r.stderr!r}")
+    # malformed input: status 2, its line, nothing on stdout
+    for text, line, reason in (("0 0 0\n1 1 x\n", 2, "not a decimal integer"), ("0 0\n", 1, "missing weight"),
+                               ("0 0 1.5\n", 1, "not a decimal integer"),
+                               ("0 0 9223372036854775808\n", 1, "out of int64 range"),
+                               ("0 0 -9223372036854775809\n", 1, "out of int64 range"),
+                               ("0 0 99999999999999999999\n", 1, "out of int64 range"),
+                               ("1 2 3\n0 0 0 0\n", 2, "too many fields"), ("0,0,0,0\n", 1, "too many fields"),
+                               ("0,0,\n", 1, "CSV field 3 is empty"), ("2147483648 0 0\n", 1, "out of int32 range"),
+                               ("0 0 0\n# c\n1 2 3 # x\n", 3, "too many fields")):
+        r = run(["power", "-"], text)
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: <stdin>:{line}: ") and reason in r.stderr,
+              f"vor power {text!r}: {r.returncode} {r.stderr!r}")
+    for text in ("0 0 9223372036854775807\n", "0 0 -9223372036854775808\n", "0 0 +5\n", "0 0 -0\n"):
+        r = run(["power", "-"], text)
+        check(r.returncode == 0 and r.stdout == "", f"vor power {text!r}: {r.returncode} {r.stderr!r}")
+    # a decimal weight: an error that does not send the user to --scale,
+    # which scales only the coordinates
+    for args in (["power", "-"], ["power", "--scale", "10", "-"]):
+        r = run(args, "0.5 0.5 1.5\n" if len(args) > 2 else "0 0 1.5\n")
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:1: ") and "'1.5'" in r.stderr
+              and "--scale" not in r.stderr and "weight" in r.stderr,
+              f"vor {' '.join(args)}: a decimal weight: {r.returncode} {r.stderr!r}")
+    r = run(["power", "-"], "0 0 0\n0.5 1 0\n")
+    check(r.returncode == 2 and "--scale" in r.stderr, f"vor power: a decimal coordinate suggests --scale: {r.stderr!r}")
+    # usage errors
+    for args, reason in ((["power"], "missing SITES"), (["power", "-", sp], "unexpected argument"),
+                         (["power", "--scale"], "missing value after '--scale'"),
+                         (["power", "--frobnicate", "-"], "unknown option '--frobnicate'")):
+        r = run(args, "0 0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and reason in r.stderr and "usage: vor power" in r.stderr,
+              f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    r = run(["power", "--scale", "0", "-"], "0 0 0\n")
+    check(r.returncode == 2 and r.stdout == "" and "--scale" in r.stderr and "'0'" in r.stderr,
+          f"vor power --scale 0: {r.returncode} {r.stderr!r}")
+    for args in (["power", os.path.join(tmp, "no-such-file")], ["power", tmp]):
+        r = run(args, "")
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {args[1]}: "),
+              f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    r = run(["power", "-"], "# nothing\n\n")
+    check(r.returncode == 0 and r.stdout == "" and r.stderr == "", f"vor power of no sites: {r.returncode} {r.stderr!r}")
+
 
 def main():
     rng = random.Random(5)
@@ -1605,6 +1854,7 @@ def main():
         header_cases(tmp)
         option_cases(rng, tmp)
         cdt_cases(rng, tmp)
+        power_cases(tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

@@ -35,12 +35,19 @@
  * Delaunay, no vertex inside a triangle's circumcircle visible from the
  * triangle's centroid (on small meshes), and the domain's triangles those
  * at odd nesting levels by a shortest-path flood over the triangles.
+ *
+ * Weighted sites (vor_power.h): an input whose first byte is POWER_MODE
+ * or more is a program of its own on one vor_power_t (power_program):
+ * inits, inserts, builds, bad arguments, each followed by power_check,
+ * which decides the regular triangulation's invariants by brute force
+ * over the lifted sites with fuzz_power's 768-bit determinants.
  */
 #include <string.h>
 
 #include "fuzz_common.h"
 #include "fuzz_hpoint.h"
 #include "vor_cdt.h"
+#include "vor_power.h"
 
 #define MOST_SITES 24u
 #define BUILD_POINTS (MOST_SITES + 4u) /* builds may ask for more than fit */
@@ -1393,9 +1400,536 @@ static void op_cdt_on_constraint(fuzz_reader_t *r, model_t *m)
     insert_checked(m, p, (how & 2u) != 0, VOR_NO_HINT);
 }
 
+/* ------------------------------------------------------------------ */
+/* Weighted sites (vor_power.h): a program of its own                  */
+
+/* An input whose first byte is at least POWER_MODE drives a vor_power_t
+ * instead of the vor_t (every committed input of the diagram's program
+ * opens with a capacity byte below 0x18, so they keep their meaning). */
+#define POWER_MODE 0xe0u
+#define POWER_SLACK 16u /* arena bytes past the minimum an init may give */
+
+static uint8_t power_arena[VOR_POWER_ARENA_BYTES(MOST_SITES) + POWER_SLACK]
+    __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+static uint8_t power_arena_before[sizeof power_arena];
+
+typedef struct {
+    vor_power_t pd;
+    uint32_t capacity;
+    uint32_t count;                /* ids handed out */
+    vor_point_t point[MOST_SITES]; /* by id */
+    int64_t weight[MOST_SITES];
+    uint32_t first[MOST_SITES]; /* the smallest id of the same point and weight */
+} power_model_t;
+
+static vor_power_t power_before;
+
+static void power_snapshot(const power_model_t *m)
+{
+    memcpy(&power_before, &m->pd, sizeof m->pd);
+    memcpy(power_arena_before, power_arena, sizeof power_arena);
+}
+
+static int power_unchanged(const power_model_t *m)
+{
+    return memcmp(&power_before, &m->pd, sizeof m->pd) == 0 &&
+           memcmp(power_arena_before, power_arena, sizeof power_arena) == 0;
+}
+
+static int power_is_site(const power_model_t *m, uint32_t id)
+{
+    return id < m->count && m->first[id] == id;
+}
+
+/* The first of ids [0, before) with point p and weight w, or before. */
+static uint32_t power_twin(const vor_point_t *point, const int64_t *weight, uint32_t before,
+                           vor_point_t p, int64_t w)
+{
+    for (uint32_t i = 0; i < before; i++)
+        if (point[i].x == p.x && point[i].y == p.y && weight[i] == w)
+            return i;
+    return before;
+}
+
+/* Twice the signed area of a, b, c: exact (below 2^66). */
+static __int128 power_cross(vor_point_t a, vor_point_t b, vor_point_t c)
+{
+    return (__int128)((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) -
+           (__int128)((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
+}
+
+/* x^2 + y^2 - w, the lifted height (below 2^65 in magnitude). */
+static __int128 power_lift(vor_point_t p, int64_t w)
+{
+    return (__int128)p.x * p.x + (__int128)p.y * p.y - w;
+}
+
+/* Twice the area of the convex hull of the sites (monotone chain). */
+static __int128 power_hull_area2(const power_model_t *m)
+{
+    vor_point_t p[MOST_SITES], hull[2u * MOST_SITES + 1u];
+    uint32_t n = 0, k = 0;
+    for (uint32_t i = 0; i < m->count; i++) {
+        if (!power_is_site(m, i))
+            continue;
+        uint32_t at = n++;
+        vor_point_t q = m->point[i];
+        while (at > 0 && (p[at - 1].x > q.x || (p[at - 1].x == q.x && p[at - 1].y > q.y))) {
+            p[at] = p[at - 1];
+            at--;
+        }
+        p[at] = q;
+    }
+    if (n < 3u)
+        return 0;
+    for (uint32_t i = 0; i < n; i++) {
+        while (k >= 2u && power_cross(hull[k - 2], hull[k - 1], p[i]) <= 0)
+            k--;
+        hull[k++] = p[i];
+    }
+    for (uint32_t i = n - 1u, t = k + 1u; i-- > 0;) {
+        while (k >= t && power_cross(hull[k - 2], hull[k - 1], p[i]) <= 0)
+            k--;
+        hull[k++] = p[i];
+    }
+    __int128 area2 = 0;
+    for (uint32_t i = 0; i + 1u < k; i++)
+        area2 += (__int128)hull[i].x * hull[i + 1].y - (__int128)hull[i + 1].x * hull[i].y;
+    return area2;
+}
+
+/* Sites all on one line: is site s strictly above the lower chain of the
+ * lifted sites (1), a corner strictly below it (-1), or on it (0)? A
+ * heavier site at its point, or a chord of two sites on either side
+ * strictly below it, puts it above. */
+static int power_line_status(const power_model_t *m, uint32_t s)
+{
+    int vertical = 1;
+    for (uint32_t i = 0; i < m->count; i++)
+        vertical &= m->point[i].x == m->point[s].x;
+    int status = -1;
+    vor_point_t ps = m->point[s];
+    int64_t ts = vertical ? ps.y : ps.x;
+    __int128 ls = power_lift(ps, m->weight[s]);
+    for (uint32_t a = 0; a < m->count; a++) {
+        if (!power_is_site(m, a) || a == s)
+            continue;
+        int64_t ta = vertical ? m->point[a].y : m->point[a].x;
+        if (ta == ts) {
+            if (m->weight[a] > m->weight[s])
+                return 1;
+            continue;
+        }
+        for (uint32_t b = 0; b < m->count; b++) {
+            int64_t tb = vertical ? m->point[b].y : m->point[b].x;
+            if (!power_is_site(m, b) || !(ta < ts && ts < tb))
+                continue;
+            __int128 above = (__int128)(tb - ta) * ls -
+                             ((__int128)(tb - ts) * power_lift(m->point[a], m->weight[a]) +
+                              (__int128)(ts - ta) * power_lift(m->point[b], m->weight[b]));
+            if (above > 0)
+                return 1;
+            if (above == 0)
+                status = 0;
+        }
+    }
+    return status;
+}
+
+static uint32_t power_triangle[2u * MOST_SITES][3];
+
+/* Edge pieces: each triangle edge cut at the sites strictly inside it. */
+#define MOST_PIECES (6u * MOST_SITES * MOST_SITES)
+static vor_point_t power_piece[MOST_PIECES][2];
+
+static int power_same_point(vor_point_t a, vor_point_t b)
+{
+    return a.x == b.x && a.y == b.y;
+}
+
+/* Appends the pieces of segment a-b (from a to b) after the first np. */
+static uint32_t power_pieces(const power_model_t *m, vor_point_t a, vor_point_t b, uint32_t np)
+{
+    vor_point_t from = a;
+    for (;;) { /* the nearest site strictly inside from-b, then on from it */
+        vor_point_t next = b;
+        for (uint32_t s = 0; s < m->count; s++) {
+            vor_point_t p = m->point[s];
+            if (fuzz_orient(from, b, p) != 0 || power_same_point(p, from) || power_same_point(p, next))
+                continue;
+            /* strictly between from and next, on the line: closer to from */
+            __int128 along = ((__int128)p.x - from.x) * ((__int128)next.x - from.x) +
+                             ((__int128)p.y - from.y) * ((__int128)next.y - from.y);
+            __int128 beyond = ((__int128)p.x - next.x) * ((__int128)from.x - next.x) +
+                              ((__int128)p.y - next.y) * ((__int128)from.y - next.y);
+            if (along > 0 && beyond > 0)
+                next = p;
+        }
+        FUZZ_REQUIRE(np < MOST_PIECES, "harness: too many edge pieces");
+        power_piece[np][0] = from;
+        power_piece[np][1] = next;
+        np++;
+        if (power_same_point(next, b))
+            return np;
+        from = next;
+    }
+}
+
+/* After every call: vor_power_validate; vor_power_hidden of every id and
+ * the hidden iterator against each other and the model; the triangles
+ * against brute force over the sites with exact wide integers: each
+ * counterclockwise of nonzero area with vertices for corners, no site's
+ * lifted point strictly below its plane (so each lies in a face of the
+ * lower hull), each directed edge (cut at the sites inside it) once, the
+ * unpaired ones on the hull's boundary and the areas adding up to the
+ * hull's (so they cover it once);
+ * a vertex in no triangle only with its lifted point on the surface (a
+ * cell of no area: one strictly above is hidden); on one line, the sites
+ * strictly above the lower chain hidden and its strict corners not. None
+ * of it may change a byte. */
+static void power_check(const power_model_t *m)
+{
+    vor_violation_t violation;
+    power_snapshot(m);
+    FUZZ_REQUIRE(vor_power_validate(&m->pd, &violation) == VOR_OK, "power_validate failed");
+    int hidden[MOST_SITES] = {0};
+    uint32_t hidden_count = 0;
+    for (uint32_t i = 0; i < m->count + 2u; i++) {
+        int h = vor_power_hidden(&m->pd, i);
+        if (!power_is_site(m, i)) {
+            FUZZ_REQUIRE(h == VOR_ERR_ARG, "power_hidden: a duplicate's or unused id accepted");
+            continue;
+        }
+        FUZZ_REQUIRE(h == 0 || h == 1, "power_hidden: a site refused");
+        hidden[i] = h;
+        hidden_count += (uint32_t)h;
+    }
+    FUZZ_REQUIRE(vor_power_hidden(&m->pd, 0xffffffffu) == VOR_ERR_ARG &&
+                     vor_power_hidden(&m->pd, VOR_MAX_SITES) == VOR_ERR_ARG,
+                 "power_hidden: a huge id accepted");
+    uint8_t listed[MOST_SITES] = {0};
+    uint32_t id = 0, listed_count = 0;
+    vor_power_hidden_iter_t hi;
+    FUZZ_REQUIRE(vor_power_hidden_begin(&hi, &m->pd) == VOR_OK, "power_hidden_begin");
+    while (vor_power_hidden_next(&hi, &id)) {
+        FUZZ_REQUIRE(++listed_count <= MOST_SITES, "power hidden iterator: endless");
+        FUZZ_REQUIRE(power_is_site(m, id) && hidden[id] == 1 && !listed[id],
+                     "power hidden iterator: not a hidden site, or twice");
+        listed[id] = 1;
+    }
+    FUZZ_REQUIRE(listed_count == hidden_count, "power hidden iterator: disagrees with power_hidden");
+    FUZZ_REQUIRE(vor_power_hidden_next(&hi, &id) == 0, "power hidden iterator: past its end");
+
+    uint32_t nt = 0, ids[3];
+    uint8_t corner[MOST_SITES] = {0};
+    __int128 area2 = 0;
+    vor_triangle_iter_t ti;
+    FUZZ_REQUIRE(vor_power_triangles_begin(&ti, &m->pd) == VOR_OK, "power_triangles_begin");
+    while (vor_triangles_next(&ti, ids)) {
+        FUZZ_REQUIRE(nt < 2u * MOST_SITES, "power triangles: endless");
+        for (int k = 0; k < 3; k++) {
+            FUZZ_REQUIRE(power_is_site(m, ids[k]) && hidden[ids[k]] == 0,
+                         "power triangles: a corner that is no vertex");
+            corner[ids[k]] = 1;
+            power_triangle[nt][k] = ids[k];
+        }
+        vor_point_t a = m->point[ids[0]], b = m->point[ids[1]], c = m->point[ids[2]];
+        int64_t wa = m->weight[ids[0]], wb = m->weight[ids[1]], wc = m->weight[ids[2]];
+        __int128 twice = power_cross(a, b, c);
+        FUZZ_REQUIRE(twice > 0, "power triangles: not counterclockwise of nonzero area");
+        area2 += twice;
+        for (uint32_t s = 0; s < m->count; s++)
+            FUZZ_REQUIRE(!power_is_site(m, s) ||
+                             fuzz_power(a, wa, b, wb, c, wc, m->point[s], m->weight[s]) <= 0,
+                         "power triangles: a site's lifted point below a triangle's plane");
+        nt++;
+    }
+    /* the triangles' edges cut at the sites inside them: a vertex whose
+     * cell has no area may sit inside an edge, between two reported
+     * triangles on one side and one on the other (its flat triangle is
+     * not reported) */
+    uint32_t np = 0;
+    for (uint32_t t = 0; t < nt; t++)
+        for (int e = 0; e < 3; e++)
+            np = power_pieces(m, m->point[power_triangle[t][e]],
+                              m->point[power_triangle[t][(e + 1) % 3]], np);
+    for (uint32_t i = 0; i < np; i++) {
+        uint32_t same = 0, reverse = 0;
+        for (uint32_t j = 0; j < np; j++) {
+            same += power_same_point(power_piece[j][0], power_piece[i][0]) &&
+                    power_same_point(power_piece[j][1], power_piece[i][1]);
+            reverse += power_same_point(power_piece[j][0], power_piece[i][1]) &&
+                       power_same_point(power_piece[j][1], power_piece[i][0]);
+        }
+        FUZZ_REQUIRE(same == 1u, "power triangles: an edge used twice the same way");
+        for (uint32_t s = 0; s < m->count && !reverse; s++)
+            FUZZ_REQUIRE(!power_is_site(m, s) ||
+                             fuzz_orient(power_piece[i][0], power_piece[i][1], m->point[s]) >= 0,
+                         "power triangles: an unpaired edge inside the hull");
+    }
+    __int128 hull2 = power_hull_area2(m);
+    FUZZ_REQUIRE(area2 == hull2, "power triangles: do not cover the hull once");
+    for (uint32_t s = 0; s < m->count; s++) {
+        if (!power_is_site(m, s))
+            continue;
+        if (hull2 == 0) {
+            int status = power_line_status(m, s);
+            FUZZ_REQUIRE(status != 1 || hidden[s] == 1, "power, on a line: a site above the chain kept");
+            FUZZ_REQUIRE(status != -1 || hidden[s] == 0, "power, on a line: a corner of the chain hidden");
+        } else if (!hidden[s] && !corner[s]) {
+            int on = 0;
+            for (uint32_t t = 0; t < nt && !on; t++) {
+                const uint32_t *v = power_triangle[t];
+                vor_point_t a = m->point[v[0]], b = m->point[v[1]], c = m->point[v[2]];
+                vor_point_t p = m->point[s];
+                on = fuzz_orient(a, b, p) >= 0 && fuzz_orient(b, c, p) >= 0 &&
+                     fuzz_orient(c, a, p) >= 0 &&
+                     fuzz_power(a, m->weight[v[0]], b, m->weight[v[1]], c, m->weight[v[2]], p,
+                                m->weight[s]) == 0;
+            }
+            FUZZ_REQUIRE(on, "power: a vertex in no triangle, not on the lifted surface");
+        }
+    }
+    FUZZ_REQUIRE(power_unchanged(m), "power reads changed the object or the arena");
+}
+
+/* A weighted site as inputs make them: a pattern point and weight, or the
+ * point of a site made before (`made`) with another weight (one of them
+ * hides the other) or the same (a duplicate). */
+static void draw_weighted(fuzz_reader_t *r, const vor_point_t *made, const int64_t *made_w,
+                          uint32_t made_count, vor_point_t *previous, int64_t *previous_w,
+                          vor_point_t *p, int64_t *w)
+{
+    uint8_t how = fuzz_u8(r);
+    if (made_count > 0 && how >= 0xc0u) {
+        uint32_t k = fuzz_u8(r) % made_count;
+        *p = *previous = made[k];
+        *previous_w = made_w[k];
+        *w = how >= 0xf0u ? made_w[k] : fuzz_weight(r, previous_w);
+        return;
+    }
+    *p = fuzz_point(r, previous);
+    *w = fuzz_weight(r, previous_w);
+}
+
+/* vor_power_insert of p, w (id wanted or not), checked against the model. */
+static void power_insert_checked(power_model_t *m, vor_point_t p, int64_t w, int want_id)
+{
+    uint32_t id = 0xdeadbeefu;
+    power_snapshot(m);
+    int result = vor_power_insert(&m->pd, p, w, want_id ? &id : NULL);
+    uint32_t first = power_twin(m->point, m->weight, m->count, p, w);
+    if (first < m->count) {
+        FUZZ_REQUIRE(result == VOR_ERR_DUPLICATE && (!want_id || id == first),
+                     "power_insert: a duplicate missed, or the wrong twin");
+        FUZZ_REQUIRE(power_unchanged(m), "power_insert: a duplicate changed the object");
+    } else if (m->count == m->capacity) {
+        FUZZ_REQUIRE(result == VOR_ERR_FULL && id == 0xdeadbeefu,
+                     "power_insert: a full object accepted a site, or wrote its id");
+        FUZZ_REQUIRE(power_unchanged(m), "power_insert: full, and changed the object");
+    } else {
+        FUZZ_REQUIRE(result == VOR_OK && (!want_id || id == m->count),
+                     "power_insert failed, or not the next id");
+        m->point[m->count] = p;
+        m->weight[m->count] = w;
+        m->first[m->count] = m->count;
+        m->count++;
+    }
+}
+
+static void op_power_insert(fuzz_reader_t *r, power_model_t *m, vor_point_t *previous,
+                            int64_t *previous_w)
+{
+    uint8_t flags = fuzz_u8(r);
+    vor_point_t p;
+    int64_t w;
+    draw_weighted(r, m->point, m->weight, m->count, previous, previous_w, &p, &w);
+    power_insert_checked(m, p, w, (flags & 1u) == 0);
+}
+
+/* A site on the line through two sites, a few steps along it: collinear
+ * runs across the whole range, and 1-dimensional objects growing. */
+static void op_power_on_line(fuzz_reader_t *r, power_model_t *m, int64_t *previous_w)
+{
+    uint8_t pick = fuzz_u8(r), other = fuzz_u8(r), step = fuzz_u8(r);
+    if (m->count == 0)
+        return;
+    vor_point_t a = m->point[pick % m->count], b = m->point[other % m->count];
+    int64_t k = (int8_t)step % 4;
+    int64_t x = a.x + k * ((int64_t)b.x - a.x), y = a.y + k * ((int64_t)b.y - a.y);
+    if (x < INT32_MIN || x > INT32_MAX || y < INT32_MIN || y > INT32_MAX)
+        return;
+    vor_point_t p = {(int32_t)x, (int32_t)y};
+    power_insert_checked(m, p, fuzz_weight(r, previous_w), 1);
+}
+
+static void op_power_build(fuzz_reader_t *r, power_model_t *m, vor_point_t *previous,
+                           int64_t *previous_w)
+{
+    vor_point_t points[BUILD_POINTS];
+    int64_t weights[BUILD_POINTS];
+    uint32_t duplicate_of[BUILD_POINTS], before[BUILD_POINTS];
+    uint32_t n = fuzz_u8(r) % (BUILD_POINTS + 1u);
+    uint8_t how = fuzz_u8(r);
+    for (uint32_t i = 0; i < n; i++)
+        draw_weighted(r, points, weights, i, previous, previous_w, &points[i], &weights[i]);
+    memset(duplicate_of, 0xee, sizeof duplicate_of);
+    memcpy(before, duplicate_of, sizeof before);
+    const vor_point_t *pp = how % 8u == 0u ? NULL : points;
+    const int64_t *pw = how % 8u == 1u ? NULL : weights;
+    uint32_t *dup = (how & 8u) ? NULL : duplicate_of;
+    power_snapshot(m);
+    int result = vor_power_build(&m->pd, pp, pw, n, dup);
+    if ((pp == NULL || pw == NULL) && n > 0u) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG, "power_build: NULL points or weights accepted");
+    } else if (n > m->capacity) {
+        FUZZ_REQUIRE(result == VOR_ERR_FULL, "power_build: more points than room accepted");
+    } else {
+        FUZZ_REQUIRE(result == VOR_OK, "power_build failed");
+        m->count = n;
+        for (uint32_t i = 0; i < n; i++) {
+            m->point[i] = points[i];
+            m->weight[i] = weights[i];
+            m->first[i] = power_twin(points, weights, i, points[i], weights[i]);
+            FUZZ_REQUIRE(dup == NULL || duplicate_of[i] == m->first[i],
+                         "power_build: wrong duplicate_of");
+        }
+        return;
+    }
+    FUZZ_REQUIRE(power_unchanged(m) && memcmp(before, duplicate_of, sizeof before) == 0,
+                 "power_build: a failure changed the object or wrote duplicate_of");
+}
+
+/* Inits: one that fails for each documented reason (nothing may change),
+ * or a new one (capacity and arena size from the input). */
+static void op_power_init(fuzz_reader_t *r, power_model_t *m)
+{
+    uint8_t how = fuzz_u8(r), size = fuzz_u8(r);
+    uint32_t capacity = 1u + size % MOST_SITES;
+    size_t bytes = VOR_POWER_ARENA_BYTES(capacity);
+    int result, documented;
+    power_snapshot(m);
+    switch (how % 8u) {
+    case 0:
+        result = vor_power_init(&m->pd, power_arena, bytes - 1u - how / 8u % 8u, capacity);
+        documented = VOR_ERR_NOMEM;
+        break;
+    case 1:
+        result = vor_power_init(&m->pd, power_arena + 1u + how / 8u % 7u, bytes, capacity);
+        documented = VOR_ERR_ALIGN;
+        break;
+    case 2:
+        result = vor_power_init(&m->pd, power_arena, sizeof power_arena, 0);
+        documented = VOR_ERR_ARG;
+        break;
+    case 3:
+        result = vor_power_init(&m->pd, power_arena, sizeof power_arena, VOR_MAX_SITES + 1u + how);
+        documented = VOR_ERR_ARG;
+        break;
+    case 4:
+        result = vor_power_init(&m->pd, NULL, bytes, capacity);
+        documented = VOR_ERR_ARG;
+        break;
+    case 5:
+        result = vor_power_init_checked(&m->pd, power_arena, bytes, capacity,
+                                        VOR_CONFIG_FINGERPRINT ^ (1u << (how / 8u)));
+        documented = VOR_ERR_CONFIG;
+        break;
+    default:
+        bytes += size / MOST_SITES % POWER_SLACK;
+        FUZZ_REQUIRE(vor_power_init(&m->pd, power_arena, bytes, capacity) == VOR_OK,
+                     "power_init failed");
+        m->capacity = capacity;
+        m->count = 0;
+        return;
+    }
+    FUZZ_REQUIRE(result == documented, "power_init: not the documented error");
+    FUZZ_REQUIRE(power_unchanged(m), "power_init: a failure changed the object or the arena");
+}
+
+/* Every call with the arguments callers get wrong: NULLs, an iterator
+ * whose begin failed, an object vor_power_init never saw (zeroed). */
+static void op_power_bad_arguments(fuzz_reader_t *r, power_model_t *m, vor_point_t *previous,
+                                   int64_t *previous_w)
+{
+    static vor_power_t zeroed;
+    static const vor_power_t zero;
+    vor_point_t p = fuzz_point(r, previous);
+    int64_t w = fuzz_weight(r, previous_w);
+    uint32_t id = 77, ids[3] = {77, 77, 77};
+    vor_violation_t violation = {VOR_CHECK_COUNTS, 77, 77};
+    vor_power_hidden_iter_t hi;
+    vor_triangle_iter_t ti;
+    power_snapshot(m);
+    FUZZ_REQUIRE(vor_power_insert(NULL, p, w, &id) == VOR_ERR_ARG &&
+                     vor_power_build(NULL, &p, &w, 1, &id) == VOR_ERR_ARG &&
+                     vor_power_hidden(NULL, 0) == VOR_ERR_ARG &&
+                     vor_power_validate(NULL, &violation) == VOR_ERR_ARG && id == 77 &&
+                     violation.triangle == 77,
+                 "power: a NULL object accepted, or written through");
+    FUZZ_REQUIRE(vor_power_hidden_begin(NULL, &m->pd) == VOR_ERR_ARG &&
+                     vor_power_hidden_begin(&hi, NULL) == VOR_ERR_ARG &&
+                     vor_power_hidden_next(&hi, &id) == 0 && vor_power_hidden_next(NULL, &id) == 0 &&
+                     vor_power_hidden_begin(&hi, &m->pd) == VOR_OK &&
+                     vor_power_hidden_next(&hi, NULL) == 0 && id == 77,
+                 "power hidden iterator: NULLs accepted, or wrote");
+    FUZZ_REQUIRE(vor_power_triangles_begin(NULL, &m->pd) == VOR_ERR_ARG &&
+                     vor_power_triangles_begin(&ti, NULL) == VOR_ERR_ARG &&
+                     vor_triangles_next(&ti, ids) == 0 &&
+                     vor_power_triangles_begin(&ti, &m->pd) == VOR_OK &&
+                     vor_triangles_next(&ti, NULL) == 0 && ids[0] == 77,
+                 "power triangles: NULLs accepted, or wrote");
+    FUZZ_REQUIRE(power_unchanged(m), "power: bad arguments changed the object");
+    memset(&zeroed, 0, sizeof zeroed);
+    FUZZ_REQUIRE(vor_power_insert(&zeroed, p, w, &id) == VOR_ERR_FULL &&
+                     vor_power_build(&zeroed, &p, &w, 1, &id) == VOR_ERR_FULL &&
+                     vor_power_hidden(&zeroed, 0) == VOR_ERR_ARG &&
+                     vor_power_validate(&zeroed, NULL) == VOR_OK && id == 77,
+                 "power: a zeroed object not empty and full");
+    FUZZ_REQUIRE(vor_power_hidden_begin(&hi, &zeroed) == VOR_OK &&
+                     vor_power_hidden_next(&hi, &id) == 0 &&
+                     vor_power_triangles_begin(&ti, &zeroed) == VOR_OK &&
+                     vor_triangles_next(&ti, ids) == 0 && id == 77 && ids[0] == 77,
+                 "power: a zeroed object's iterators not empty");
+    FUZZ_REQUIRE(memcmp(&zeroed, &zero, sizeof zero) == 0, "power: a zeroed object written");
+}
+
+/* The power program: a capacity and an arena size, then up to 64 calls,
+ * each followed by power_check. */
+static int power_program(fuzz_reader_t *r)
+{
+    static power_model_t m;
+    vor_point_t previous = {0, 0};
+    int64_t previous_w = 0;
+    memset(&m, 0, sizeof m);
+    (void)fuzz_u8(r); /* the mode */
+    uint8_t size = fuzz_u8(r);
+    m.capacity = 1u + size % MOST_SITES;
+    FUZZ_REQUIRE(vor_power_init(&m.pd, power_arena,
+                                VOR_POWER_ARENA_BYTES(m.capacity) + size / MOST_SITES % POWER_SLACK,
+                                m.capacity) == VOR_OK,
+                 "power_init failed");
+    for (uint32_t ops = 0; ops < 64u && !fuzz_done(r); ops++) {
+        switch (fuzz_u8(r) % 8u) {
+        case 0:
+        case 1:
+        case 2: op_power_insert(r, &m, &previous, &previous_w); break;
+        case 3: op_power_build(r, &m, &previous, &previous_w); break;
+        case 4: op_power_on_line(r, &m, &previous_w); break;
+        case 5: op_power_init(r, &m); break;
+        case 6: op_power_bad_arguments(r, &m, &previous, &previous_w); break;
+        default: break; /* power_check alone: the reads */
+        }
+        power_check(&m);
+    }
+    return 0;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_reader_t r = {data, size, 0};
+    if (size > 0 && data[0] >= POWER_MODE)
+        return power_program(&r);
     static model_t m;
     vor_point_t previous = {0, 0};
     memset(&m, 0, sizeof m);

@@ -386,16 +386,18 @@ static const char *quote_field(const char *problem, const char *p)
 }
 
 /* A decimal integer field of magnitude at most `most` (negative: most + 1),
- * named `range` in the error; the int32 and int64 fields below. */
+ * named `range` in the error; the int32 and int64 fields below. `missing`
+ * is the error for no field, `decimal` the one for a decimal number. */
 static bool integer_field(const char **cursor, unsigned long long most, const char *range,
-                          bool *negative_out, unsigned long long *magnitude_out, const char **why)
+                          const char *missing, const char *decimal, bool *negative_out,
+                          unsigned long long *magnitude_out, const char **why)
 {
     const char *p = *cursor;
     while (*p != '\0' && is_blank(*p)) {
         p++;
     }
     if (*p == '\0') {
-        *why = "missing coordinate";
+        *why = missing;
         return false;
     }
     const char *field = p;
@@ -419,9 +421,7 @@ static bool integer_field(const char **cursor, unsigned long long most, const ch
         p++;
     }
     if (*p != '\0' && !is_blank(*p)) {
-        *why = quote_field(*p == '.' || *p == 'e' || *p == 'E'
-                               ? "not a decimal integer (use --scale S for decimal coordinates)"
-                               : "not a decimal integer",
+        *why = quote_field(*p == '.' || *p == 'e' || *p == 'E' ? decimal : "not a decimal integer",
                            field);
         return false;
     }
@@ -439,7 +439,9 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
 {
     bool negative;
     unsigned long long magnitude;
-    if (!integer_field(cursor, 2147483647ull, "out of int32 range", &negative, &magnitude, why)) {
+    if (!integer_field(cursor, 2147483647ull, "out of int32 range", "missing coordinate",
+                       "not a decimal integer (use --scale S for decimal coordinates)", &negative,
+                       &magnitude, why)) {
         return false;
     }
     *value = negative ? (int32_t)(-(long long)magnitude) : (int32_t)magnitude;
@@ -450,7 +452,9 @@ bool cli_int64_field(const char **cursor, int64_t *value, const char **why)
 {
     bool negative;
     unsigned long long magnitude;
-    if (!integer_field(cursor, 9223372036854775807ull, "out of int64 range", &negative,
+    /* a weight: --scale scales only the coordinates, so it is no remedy */
+    if (!integer_field(cursor, 9223372036854775807ull, "out of int64 range", "missing weight",
+                       "not a decimal integer (a weight is an integer, never scaled)", &negative,
                        &magnitude, why)) {
         return false;
     }

@@ -46,7 +46,9 @@ const char *cli_next_line(cli_input_t *in);
  * *why then says which, quoting the field (valid until the next call). */
 bool cli_int32_field(const char **cursor, int32_t *value, const char **why);
 
-/* cli_int32_field for an int64 field (a weight). */
+/* cli_int32_field for an int64 field (a weight): its errors name a
+ * missing weight, and a decimal one is not sent to --scale (which scales
+ * only the coordinates). */
 bool cli_int64_field(const char **cursor, int64_t *value, const char **why);
 
 /* Like cli_int32_field for a coordinate (or a distance in the same units):
