@@ -70,6 +70,7 @@ typedef struct vor_power {
     uint32_t hidden_count; /* sites not in the triangulation (duplicates aside) */
     uint32_t first_hidden; /* the hidden ids' list: first id plus one, 0: none */
     bool area;             /* a triangle of nonzero area exists (not all collinear) */
+    bool flats;            /* a triangle of zero area may exist (degenerate input) */
 } vor_power_t;
 
 /*

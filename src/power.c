@@ -184,8 +184,15 @@ enum shape { CONVEX, REFLEX_AT_Y, REFLEX_AT_X };
 static enum shape quad_shape(vor_t *d, vor_index_t p, vor_index_t x, vor_index_t y, vor_index_t c,
                              bool *flat)
 {
+    const vor_point_t *s = d->sites;
     if ((x == VOR__INFINITE) || (y == VOR__INFINITE) || (c == VOR__INFINITE)) {
-        return CONVEX; /* a hull edge: p is beyond it, and c-p crosses x-y */
+        /* a hull edge: p is beyond it, and c-p crosses x-y; the flip's
+         * finite triangle, if any, is (p, x, c) or (p, c, y) */
+        vor_index_t u = (x == VOR__INFINITE) ? c : x;
+        vor_index_t v = (x == VOR__INFINITE) ? y : c;
+        *flat = *flat || ((c != VOR__INFINITE) && (u != VOR__INFINITE) && (v != VOR__INFINITE) &&
+                          (vor__orient2d_sign(&s[p], &s[u], &s[v]) == 0));
+        return CONVEX;
     }
     if (vor__orient_tie(d, VOR__STATS_OF(d), p, c, y, flat) < 0) {
         return REFLEX_AT_Y;
@@ -277,6 +284,7 @@ static void unlink_hidden(vor_power_t *pd, uint32_t y)
 {
     vor_t *d = &pd->mesh;
     uint32_t other = vor__unlink_vertex(d, y);
+    pd->flats = true; /* the ears may be flat */
     hide(pd, y);
     d->last_site = (d->last_site == y) ? other : d->last_site;
 }
@@ -334,23 +342,82 @@ static bool star_flat(const vor_t *d, vor_index_t p)
     return false;
 }
 
-/* After vertex p went in, in a mesh with area. A vertex whose triangles
- * all are flat has a power cell of no area or an empty one (a cell with
- * area has a triangle of the true triangulation at each corner): the
- * perturbation keeps it only as a sliver, and it is hidden. A vertex can
- * lose its last triangle of area only to p's star, only where a triangle
- * of it is flat; hiding such a vertex changes only flat triangles. Hides
- * p or the vertices of its star left so; returns whether p was. */
+/* Is s strictly between a and b on their line (s on it)? Along x, or
+ * along y for a vertical line. */
+static bool between(const vor_point_t *site, vor_index_t a, vor_index_t s, vor_index_t b)
+{
+    int32_t lo = site[a].x;
+    int32_t hi = site[b].x;
+    int32_t at = site[s].x;
+    if (lo == hi) {
+        lo = site[a].y;
+        hi = site[b].y;
+        at = site[s].y;
+    }
+    return ((lo < at) && (at < hi)) || ((hi < at) && (at < lo));
+}
+
+/* Is the triangle in `slot` finite with nonzero area (a true one)? */
+static bool true_triangle(const vor_t *d, vor_index_t slot)
+{
+    vor_index_t v[3];
+    vor__vertices(&d->triangles[slot], v);
+    return (v[0] != VOR__INFINITE) && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
+           (vor__orient2d_sign(&d->sites[v[0]], &d->sites[v[1]], &d->sites[v[2]]) > 0);
+}
+
+/* A T-junction at triangle `slot` (finite): a vertex inside an edge of a
+ * true triangle, held there by a flat one across it; VOR__NONE if none.
+ * Either t is flat with a vertex inside the edge of its other two and a
+ * true triangle across that edge, or t is true with such a flat one
+ * across an edge. */
+static vor_index_t junction(const vor_t *d, vor_index_t slot)
+{
+    const vor__tri_t *t = &d->triangles[slot];
+    bool flat = !true_triangle(d, slot);
+    vor_index_t v[3];
+    vor__vertices(t, v);
+    for (unsigned i = 0; i < 3u; i++) {
+        vor_index_t a = v[vor__next(i)];
+        vor_index_t b = v[vor__prev(i)];
+        vor_index_t across = t->n[i];
+        if (flat) {
+            if (between(d->sites, a, v[i], b) && true_triangle(d, across)) {
+                return v[i];
+            }
+        } else {
+            const vor__tri_t *u = &d->triangles[across];
+            vor_index_t apex = vor__vertex(u, vor__next(vor__vertex_index(u, a)));
+            if ((apex != VOR__INFINITE) && !true_triangle(d, across) &&
+                between(d->sites, a, apex, b)) {
+                return apex;
+            }
+        }
+    }
+    return VOR__NONE;
+}
+
+/* After vertex p went in, in a mesh with area where flat triangles may
+ * be (insert_vertex). Two kinds of vertex have a power cell of no area
+ * or an empty one, and are hidden:
+ *   - one whose triangles are all flat (a cell with area has a triangle
+ *     of the true triangulation at each corner): the perturbation keeps
+ *     it only as a sliver at infinity;
+ *   - one inside an edge of a true triangle, with a flat triangle across
+ *     that edge (a T-junction): its lifted point lies on the lifted edge
+ *     (the edge is locally regular), and kept it would leave the true
+ *     triangles meeting it on one side only.
+ * A vertex becomes one only at p's star: its last true triangle goes to a
+ * flat one of the star, or a true triangle of the star comes across the
+ * flat one that holds it. Hiding one changes only flat triangles there.
+ * Hides p or the vertices so at its star; returns whether p was. */
 static bool settle_star(vor_power_t *pd, vor_index_t p)
 {
     vor_t *d = &pd->mesh;
-    if (!has_area(d, p)) {
-        unlink_hidden(pd, p);
-        return true;
-    }
     /* p's star, again after each vertex hidden (that changes the star) */
     for (uint32_t round = d->vertex_count; round > 0u; round--) {
         vor_index_t found = VOR__NONE;
+        bool flat = false;
         vor_index_t slot = p;
         for (uint32_t left = d->vertex_count + 1u; (left > 0u) && (found == VOR__NONE); left--) {
             const vor__tri_t *t = &d->triangles[slot];
@@ -359,16 +426,34 @@ static bool settle_star(vor_power_t *pd, vor_index_t p)
                 return false; /* only on a corrupted mesh */
             }
             vor_index_t b = vor__vertex(t, vor__next(i));
-            found = ((b != VOR__INFINITE) && !has_area(d, b)) ? b : VOR__NONE;
+            vor_index_t c = vor__vertex(t, vor__prev(i));
+            if ((b != VOR__INFINITE) && (c != VOR__INFINITE)) {
+                /* a vertex loses its last true triangle to a flat one */
+                bool true_one = true_triangle(d, slot);
+                flat = flat || !true_one;
+                if (!true_one && !has_area(d, b)) {
+                    found = b;
+                } else if (!true_one && !has_area(d, c)) {
+                    found = c;
+                } else {
+                    found = junction(d, slot);
+                }
+            }
             slot = t->n[vor__next(i)];
             if (slot == p) {
                 break;
             }
         }
+        if ((found == VOR__NONE) && flat && !has_area(d, p)) {
+            found = p;
+        }
         if (found == VOR__NONE) {
             break;
         }
         unlink_hidden(pd, found);
+        if (found == p) {
+            return true;
+        }
     }
     return false;
 }
@@ -477,7 +562,8 @@ static int insert_vertex(vor_power_t *pd, vor_index_t root, uint32_t p, uint32_t
     if ((under != VOR__NONE) && vor__site_in_mesh(d, under)) {
         unlink_hidden(pd, under); /* farther everywhere, by a constant */
     }
-    if (!pd->area || ((under == VOR__NONE) && !(flat && star_flat(d, (vor_index_t)p)))) {
+    pd->flats = pd->flats || (flat && star_flat(d, (vor_index_t)p));
+    if (!pd->area || !pd->flats) {
         return VOR_OK;
     }
     return settle_star(pd, (vor_index_t)p) ? PLACED_HIDDEN : VOR_OK;
@@ -627,6 +713,7 @@ int vor_power_init_checked(vor_power_t *pd, void *arena, size_t arena_bytes,
         pd->hidden_count = 0;
         pd->first_hidden = 0;
         pd->area = false;
+        pd->flats = false;
         /* the removal's ears (dynamic.c) with the power test */
         pd->mesh.cdt_predicate = removal_predicate;
     }
@@ -714,6 +801,7 @@ int vor_power_build(vor_power_t *pd, const vor_point_t *points, const int64_t *w
     pd->hidden_count = 0;
     pd->first_hidden = 0;
     pd->area = false;
+    pd->flats = false;
     int status = vor__build_start(d, points, n, duplicate_of);
     if (status != VOR__BUILD_MESH) {
         return status;

@@ -251,6 +251,29 @@ static void check_oracle(const vor_power_t *pd_in, const scene_t *s, const uint3
         }
     }
     CHECK(below == 0u, "%u sites below a triangle", below);
+    /* 2b: the triangles conform: an edge without its reverse is on the
+     * hull (no vertex strictly right of it), so no vertex sits inside an
+     * edge with a triangle on each side */
+    uint32_t open = 0;
+    for (uint32_t t = 0; t < got; t++) {
+        for (unsigned e = 0; e < 3u; e++) {
+            uint32_t x = tris_a[t].v[e];
+            uint32_t y = tris_a[t].v[(e + 1u) % 3u];
+            bool paired = false;
+            for (uint32_t u = 0; (u < got) && !paired; u++) {
+                for (unsigned f = 0; f < 3u; f++) {
+                    paired = paired || ((tris_a[u].v[f] == y) && (tris_a[u].v[(f + 1u) % 3u] == x));
+                }
+            }
+            for (uint32_t l = 0; (l < s->n) && !paired; l++) {
+                if (vertex[l] && (vor_orient2d(s->p[x], s->p[y], s->p[l]) < 0)) {
+                    open++;
+                    break;
+                }
+            }
+        }
+    }
+    CHECK(open == 0u, "%u edges neither shared nor on the hull", open);
     /* 3 */
     for (uint32_t i = 0; i < s->n; i++) {
         if (first_twin(s, i) != i) {
