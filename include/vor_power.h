@@ -40,9 +40,11 @@
  * lifted sites (x, y, x^2 + y^2 - w) lie on one plane, the triangulation
  * is not unique and the perturbation picks one; a site whose cell has no
  * area (its lifted point on the surface, not a corner of it) may be
- * either, and when it is a vertex it may be in no triangle. The triangle
- * iterator reports, as for the Delaunay triangulation, only triangles of
- * nonzero area.
+ * either, and when it is a vertex it may be in no triangle (it then lies
+ * on the hull's boundary). The triangle iterator reports, as for the
+ * Delaunay triangulation, only triangles of nonzero area, and they form
+ * a triangulation: every edge is on two of them or on the hull, never
+ * with a vertex inside it.
  *
  * Errors, iterators and configuration follow vor.h.
  */
