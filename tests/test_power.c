@@ -666,10 +666,80 @@ static void check_heavy_centre(void)
     CHECK(pd.hidden_count == 9u, "hidden %u", pd.hidden_count);
 }
 
+/* vor_power_validate finds what it checks: a weight changed under a
+ * built triangulation (an edge no longer regular), a hidden site moved
+ * below the surface, the hidden list cut short. */
+static void check_validate_detects(void)
+{
+    static vor_power_t pd;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    uint32_t id;
+    for (int32_t i = 0; i < 5; i++) {
+        for (int32_t j = 0; j < 5; j++) {
+            CHECK(vor_power_insert(&pd, (vor_point_t){i * 10 + (j % 2), j * 10}, 0, &id) == VOR_OK,
+                  "grid");
+        }
+    }
+    CHECK(vor_power_insert(&pd, (vor_point_t){21, 21}, -500, &id) == VOR_OK, "hidden");
+    CHECK(vor_power_hidden(&pd, id) == 1, "hidden light site");
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid");
+    vor_violation_t why;
+    /* an inner vertex made heavy: its edges are no longer regular */
+    pd.weights[12] = 1000000;
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY),
+          "a heavier vertex");
+    pd.weights[12] = 0;
+    /* the hidden site made heavy: below the surface */
+    pd.weights[id] = 1000000;
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
+              (why.site == id),
+          "a hidden site below the surface");
+    pd.weights[id] = -500;
+    /* the count says more hidden sites than the list holds */
+    pd.hidden_count++;
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_COUNTS),
+          "the hidden list");
+    pd.hidden_count--;
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid again");
+}
+
+/* Sites on one line, as many as the plan orders in its quadtree: the
+ * one-dimensional diagram against line_status for each site. */
+static void check_line_build(void)
+{
+    test_rng_t rng;
+    test_rng_seed(&rng, 55);
+    for (unsigned round = 0; round < 6u; round++) {
+        scene.n = 24;
+        for (uint32_t i = 0; i < scene.n; i++) {
+            int32_t t = test_rng_range(&rng, -40, 40);
+            scene.p[i].x = (round % 2u == 0u) ? t : 7;
+            scene.p[i].y = (round % 2u == 0u) ? (3 * t + 1) : t;
+            scene.w[i] = test_rng_range(&rng, 0, 400);
+        }
+        static vor_power_t pd;
+        static uint32_t dup[POWER_SITES];
+        build(&pd, arena, &scene, dup);
+        CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "validate");
+        for (uint32_t i = 0; i < scene.n; i++) {
+            if (first_twin(&scene, i) != i) {
+                CHECK(dup[i] == first_twin(&scene, i), "duplicate %u", i);
+                continue;
+            }
+            int status = line_status(&scene, i);
+            int hidden = vor_power_hidden(&pd, i);
+            CHECK((hidden == 0) ? (status >= 0) : ((hidden == 1) && (status <= 0)),
+                  "site %u: hidden %d, status %d", i, hidden, status);
+        }
+    }
+}
+
 void test_power(void)
 {
     TEST_CASE("arguments") check_arguments();
     TEST_CASE("heavy_centre") check_heavy_centre();
+    TEST_CASE("validate_detects") check_validate_detects();
+    TEST_CASE("line_build") check_line_build();
     TEST_CASE("brute/random") check_random_brute(1);
     TEST_CASE("brute/grid_equal") check_grid_brute(true);
     TEST_CASE("brute/grid_weights") check_grid_brute(false);
