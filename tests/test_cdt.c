@@ -1630,6 +1630,25 @@ static unsigned long mesh_faults(const vor_t *d)
     return check_cdt(d) + mesh_link_faults(d);
 }
 
+/* Constraints between random live sites (add_constraint), each checked
+ * (mesh_faults), until the model holds want of them or tries picks of
+ * two sites are made: the faults. */
+static unsigned long add_random_constraints(vor_t *d, test_rng_t *rng, uint32_t tries,
+                                            uint32_t want)
+{
+    unsigned long bad = 0;
+    for (uint32_t k = 0; (k < tries) && (model.constraints < want); k++) {
+        uint32_t a = test_rng_u32(rng) % d->site_count;
+        uint32_t b = test_rng_u32(rng) % d->site_count;
+        if (!model.live[a] || !model.live[b] || (a == b)) {
+            continue;
+        }
+        bad += add_constraint(d, a, b);
+        bad += mesh_faults(d);
+    }
+    return bad;
+}
+
 /* Random scenes as check_random's, the mesh's links checked after every
  * change: constraints crossing, sites taking crossings' places, half the
  * constraints removed (their crossing vertices too), sites removed. */
@@ -1747,15 +1766,7 @@ static void check_dense(void)
         vor_t d;
         unsigned kind = round % 2u;
         bad += random_scene(&d, &rng, 24u, kind, &limits);
-        for (uint32_t k = 0; (k < 200u) && (model.constraints < 24u); k++) {
-            uint32_t a = test_rng_u32(&rng) % d.site_count;
-            uint32_t b = test_rng_u32(&rng) % d.site_count;
-            if (!model.live[a] || !model.live[b] || (a == b)) {
-                continue;
-            }
-            bad += add_constraint(&d, a, b);
-            bad += mesh_faults(&d);
-        }
+        bad += add_random_constraints(&d, &rng, 200u, 24u);
     }
     CHECK(bad == 0, "cdt dense: %lu wrong", bad);
 }
@@ -2327,15 +2338,7 @@ static void check_tight_homes(void)
         }
         bad += attach(&d, &limits);
         uint32_t want = 1u + (test_rng_u32(&rng) % 12u);
-        for (uint32_t k = 0; (k < 100u) && (model.constraints < want); k++) {
-            uint32_t a = test_rng_u32(&rng) % d.site_count;
-            uint32_t b = test_rng_u32(&rng) % d.site_count;
-            if (!model.live[a] || !model.live[b] || (a == b)) {
-                continue;
-            }
-            bad += add_constraint(&d, a, b);
-            bad += mesh_faults(&d);
-        }
+        bad += add_random_constraints(&d, &rng, 100u, want);
     }
     CHECK(bad == 0, "cdt tight homes: %lu wrong", bad);
 }
