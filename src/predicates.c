@@ -169,17 +169,39 @@ VOR__INLINE bool wide_cross(int64_t ux, int64_t uy, int64_t vx, int64_t vy, uint
     return second ? n2 : n1;
 }
 
+/* A cross product as wide_cross gives it: its sign and its magnitude, a
+ * word and its 65th bit. */
+typedef struct {
+    uint64_t low;
+    uint64_t high;
+    bool negative;
+} wide_cross_t;
+
 /* Wide tier term, D < 2^32: the lift and |cross| < 2^65, the product
- * < 2^130; each of the two sums stays below 2^132. */
-VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned p,
-                           unsigned u, unsigned v)
+ * < 2^130; each of the two sums stays below 2^132. The cross product
+ * goes back in *cross, for the power test's weight term (power_wide);
+ * the incircle's (wide_sums) drops it, and inlined, its stores fold
+ * away. */
+VOR__INLINE void wide_term(vor__mw_u192_t sums[2], const int64_t d[6], unsigned p, unsigned u,
+                           unsigned v, wide_cross_t *cross)
 {
     uint64_t lift_high;
     uint64_t lift = wide_lift(d[p], d[p + 1u], &lift_high);
-    uint64_t low;
-    uint64_t high;
-    bool negative = wide_cross(d[u], d[u + 1u], d[v], d[v + 1u], &low, &high);
-    vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
+    cross->negative = wide_cross(d[u], d[u + 1u], d[v], d[v + 1u], &cross->low, &cross->high);
+    vor__mw_u192_add_product(&sums[cross->negative], lift, lift_high, cross->low, cross->high);
+}
+
+/* The incircle's wide tier: its positive and negative sums of the three
+ * terms, each row's lift times the cross product of the next two.
+ * Inlined in both callers: out of line it costs a frame and a call more
+ * at -Os. */
+VOR__ALWAYS_INLINE void wide_sums(vor__mw_u192_t sums[2], const int64_t d[6])
+{
+    wide_cross_t cross; /* only the power test reads it */
+    clear_sums(sums);
+    wide_term(sums, d, 0, 2, 4, &cross);
+    wide_term(sums, d, 2, 4, 0, &cross);
+    wide_term(sums, d, 4, 0, 2, &cross);
 }
 
 /* ------------------------------------------------------------------ */
@@ -216,13 +238,9 @@ static VOR__NOINLINE int power_wide(const int64_t d[6], const int64_t w[4])
         unsigned p = 2u * r;
         unsigned u = 2u * next_of[r];
         unsigned v = 2u * next_of[next_of[r]];
-        uint64_t lift_high;
-        uint64_t lift = wide_lift(d[p], d[p + 1u], &lift_high);
-        uint64_t low;
-        uint64_t high;
-        bool negative = wide_cross(d[u], d[u + 1u], d[v], d[v + 1u], &low, &high);
-        vor__mw_u192_add_product(&sums[negative], lift, lift_high, low, high);
-        add_weight_term(sums, w[r], w[3], negative, low, high);
+        wide_cross_t cross;
+        wide_term(sums, d, p, u, v, &cross);
+        add_weight_term(sums, w[r], w[3], cross.negative, cross.low, cross.high);
     }
     return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
@@ -410,10 +428,7 @@ int vor__incircle_mid(const int64_t d[6], uint64_t bound)
 int vor__incircle_wide(const int64_t d[6])
 {
     vor__mw_u192_t sums[2]; /* positive, negative */
-    clear_sums(sums);
-    wide_term(sums, d, 0, 2, 4);
-    wide_term(sums, d, 2, 4, 0);
-    wide_term(sums, d, 4, 0, 2);
+    wide_sums(sums, d);
     return vor__mw_u192_compare(&sums[0], &sums[1]);
 }
 
@@ -1014,9 +1029,6 @@ unsigned vor__incircle_bits(const vor_point_t *a, const vor_point_t *b, const vo
         return difference_bits(wide);
     }
     vor__mw_u192_t sums[2];
-    clear_sums(sums);
-    wide_term(sums, d, 0, 2, 4);
-    wide_term(sums, d, 2, 4, 0);
-    wide_term(sums, d, 4, 0, 2);
+    wide_sums(sums, d);
     return difference_bits(sums);
 }
