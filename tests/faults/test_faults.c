@@ -26,10 +26,21 @@
  * predicates stay exact (attached before the faults start), no two sites
  * share a point and the rebuild is exact: the constrained code does not
  * survive lies of its own or a lying triangulation copied into it.
+ *
+ * Weighted sites (vor_power.h) under the same lies, one case per rate:
+ * random sites with random weights, a grid with small random weights,
+ * sites at a few points with different (and equal) weights, sites on one
+ * line and collinear runs, each built (vor_power_build) and inserted one
+ * by one (vor_power_insert). Every call must return a documented result,
+ * the mesh pass vor_power_validate's topological checks, and every id be
+ * exactly one of a vertex, a hidden site (listed once by the hidden
+ * iterator, no other) or a build's duplicate; with the rate back to 0 a
+ * fresh build of each scene must validate whole.
  */
 #include "test.h"
 #include "vor.h"
 #include "vor_cdt.h"
+#include "vor_power.h"
 
 #ifndef VOR_FAULT_INJECTION
 #error "build with -DVOR_FAULT_INJECTION"
@@ -40,8 +51,9 @@
 static vor_point_t points[SITES];
 static uint8_t arena[VOR_ARENA_BYTES(SITES)] __attribute__((aligned(8)));
 
-static const char *const check_names[] = {"counts", "vertices", "neighbours", "sites",
-                                          "orientation", "delaunay"};
+static const char *const check_names[] = {"counts",      "vertices", "neighbours",
+                                          "sites",       "buckets",  "orientation",
+                                          "delaunay",    "true output"};
 
 static void check_topology(const vor_t *d, const char *what, uint32_t rate_percent,
                            uint32_t expected_sites)
@@ -262,6 +274,167 @@ static void cdt_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k, b
     check_topology(&d, "constraints after a build", rate_percent, CDT_SITES);
 }
 
+/* Weighted sites under lies: the scenes, built and inserted. */
+#define POWER_N 1500u
+static vor_point_t power_points[POWER_N];
+static int64_t power_weights[POWER_N];
+static uint32_t power_dup[POWER_N];
+static bool power_listed[POWER_N];
+static const char *const power_scenes[] = {"random", "grid", "one place", "one line",
+                                           "collinear runs"};
+
+/* Scene k: its sites and weights; returns their number. */
+static uint32_t power_scene(unsigned k, test_rng_t *rng)
+{
+    uint32_t n = 0;
+    if (k == 0u) { /* random, weights up to 2^32 (about the squared spacing) */
+        for (n = 0; n < POWER_N; n++) {
+            power_points[n].x = test_rng_range(rng, -1000000, 1000000);
+            power_points[n].y = test_rng_range(rng, -1000000, 1000000);
+            power_weights[n] = (int64_t)((((uint64_t)test_rng_u32(rng) << 32) | test_rng_u32(rng)) %
+                                         ((uint64_t)1 << 32));
+        }
+    } else if (k == 1u) { /* a 30 x 30 grid, small weights (cocircular, coplanar lifts) */
+        for (n = 0; n < 900u; n++) {
+            power_points[n].x = (int32_t)(n % 30u) * 3;
+            power_points[n].y = (int32_t)(n / 30u) * 3;
+            power_weights[n] = test_rng_range(rng, 0, 30);
+        }
+    } else if (k == 2u) { /* 5 points, many weights each (equal ones: duplicates) */
+        for (n = 0; n < 300u; n++) {
+            int32_t at_point = test_rng_range(rng, 0, 4);
+            power_points[n].x = (at_point % 3) * 7;
+            power_points[n].y = (at_point / 3) * 5;
+            power_weights[n] = test_rng_range(rng, -20, 40);
+        }
+    } else if (k == 3u) { /* one line (the one-dimensional case), a site off it last */
+        for (n = 0; n < 400u; n++) {
+            int32_t t = test_rng_range(rng, -500, 500);
+            power_points[n].x = 2 * t;
+            power_points[n].y = 3 * t;
+            power_weights[n] = test_rng_range(rng, 0, 200);
+        }
+        power_points[n - 1u].x = 7;
+        power_points[n - 1u].y = -4;
+    } else { /* runs of 10 on random lines, small steps */
+        for (n = 0; n < 600u; n++) {
+            if (n % 10u == 0u) {
+                power_points[n].x = test_rng_range(rng, -300, 300);
+                power_points[n].y = test_rng_range(rng, -300, 300);
+            } else {
+                int32_t dx = (int32_t)((n / 10u) % 5u) - 2;
+                int32_t dy = (int32_t)((n / 50u) % 3u) - 1;
+                dx = ((dx == 0) && (dy == 0)) ? 1 : dx;
+                power_points[n].x = power_points[n - 1u].x + dx * test_rng_range(rng, 1, 3);
+                power_points[n].y = power_points[n - 1u].y + dy * test_rng_range(rng, 1, 3);
+            }
+            power_weights[n] = test_rng_range(rng, 0, 30);
+        }
+    }
+    return n;
+}
+
+/* vor_power_validate's topological checks pass (exact ones too unless
+ * lying), and the hidden sites agree three ways: vor_power_hidden of
+ * every id, the hidden iterator (each once) and the counts; the
+ * triangle iterator ends and names vertices only. dup: the build's
+ * duplicate_of, or NULL after inserts (a duplicate gets no id). */
+static void check_power(const vor_power_t *pd, const uint32_t *dup, const char *what,
+                        const char *scene, uint32_t rate_percent, bool exact)
+{
+    vor_violation_t v = {VOR_CHECK_COUNTS, 0, 0};
+    int err = vor_power_validate(pd, &v);
+    bool topology_ok =
+        (err == VOR_OK) || ((err == VOR_ERR_INVALID) && (v.check >= VOR_CHECK_ORIENTATION));
+    CHECK(exact ? (err == VOR_OK) : topology_ok,
+          "%s, %s, p = %u%%: %s check failed at triangle %u, site %u", what, scene, rate_percent,
+          check_names[v.check], v.triangle, v.site);
+    uint32_t n = pd->mesh.site_count;
+    for (uint32_t i = 0; i < n; i++) {
+        power_listed[i] = false;
+    }
+    vor_power_hidden_iter_t it;
+    CHECK(vor_power_hidden_begin(&it, pd) == VOR_OK, "hidden begin");
+    uint32_t listed = 0;
+    uint32_t id = 0;
+    bool list_ok = true;
+    while ((listed <= n) && vor_power_hidden_next(&it, &id)) {
+        list_ok = list_ok && (id < n) && !power_listed[id] && (vor_power_hidden(pd, id) == 1);
+        if (id < n) {
+            power_listed[id] = true;
+        }
+        listed++;
+    }
+    uint32_t vertices = 0;
+    uint32_t hidden = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        int h = vor_power_hidden(pd, i);
+        vertices += (h == 0) ? 1u : 0u;
+        hidden += (h == 1) ? 1u : 0u;
+        list_ok = list_ok && ((h == 1) == power_listed[i]) &&
+                  ((h == 0) || (h == 1) ||
+                   ((h == VOR_ERR_ARG) && (dup != NULL) && (dup[i] != i)));
+    }
+    list_ok = list_ok && (listed == hidden) && (hidden == pd->hidden_count) &&
+              (vertices == pd->mesh.vertex_count);
+    CHECK(list_ok,
+          "%s, %s, p = %u%%: hidden sites inconsistent: %u listed, %u hidden, count %u, "
+          "%u vertices of %u",
+          what, scene, rate_percent, listed, hidden, pd->hidden_count, vertices,
+          pd->mesh.vertex_count);
+    vor_triangle_iter_t t;
+    uint32_t ids[3];
+    uint32_t triangles = 0;
+    bool triangles_ok = vor_power_triangles_begin(&t, pd) == VOR_OK;
+    while ((triangles <= 2u * n) && vor_triangles_next(&t, ids)) {
+        for (unsigned i = 0; i < 3u; i++) {
+            triangles_ok = triangles_ok && (ids[i] < n) && (vor_power_hidden(pd, ids[i]) == 0);
+        }
+        triangles++;
+    }
+    CHECK(triangles_ok && (triangles <= 2u * n), "%s, %s, p = %u%%: the triangle iterator", what,
+          scene, rate_percent);
+    test_printf("%s, %s, p = %u%%: %u vertices, %u hidden, topology %s, geometry %s\n", what,
+                scene, rate_percent, vertices, hidden, topology_ok ? "consistent" : "BROKEN",
+                (err == VOR_OK) ? "exact" : check_names[v.check]);
+}
+
+static void power_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k, test_rng_t *rng)
+{
+    static vor_power_t pd;
+    for (unsigned scene = 0; scene < 5u; scene++) {
+        uint32_t n = power_scene(scene, rng);
+        /* the batch build */
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_N) == VOR_OK, "power init");
+        pd.mesh.fault_rate = rate;
+        pd.mesh.fault_state = 0xBB67AE8584CAA73Bull + (k * 5u) + scene;
+        CHECK(vor_power_build(&pd, power_points, power_weights, n, power_dup) == VOR_OK,
+              "power build");
+        check_power(&pd, power_dup, "power build", power_scenes[scene], rate_percent, false);
+        /* one by one */
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_N) == VOR_OK, "power init");
+        pd.mesh.fault_rate = rate;
+        pd.mesh.fault_state = 0x3C6EF372FE94F82Bull + (k * 5u) + scene;
+        bool results_ok = true;
+        for (uint32_t i = 0; i < n; i++) {
+            uint32_t id = 0;
+            int err = vor_power_insert(&pd, power_points[i], power_weights[i], &id);
+            results_ok = results_ok &&
+                         (((err == VOR_OK) && (id == pd.mesh.site_count - 1u)) ||
+                          ((err == VOR_ERR_DUPLICATE) && (id < pd.mesh.site_count)));
+        }
+        CHECK(results_ok, "power inserts, %s, p = %u%%: an insert returned an undocumented result",
+              power_scenes[scene], rate_percent);
+        check_power(&pd, NULL, "power inserts", power_scenes[scene], rate_percent, false);
+        /* no lies: a fresh build is the exact regular triangulation */
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_N) == VOR_OK, "power init");
+        CHECK(vor_power_build(&pd, power_points, power_weights, n, power_dup) == VOR_OK,
+              "power build");
+        check_power(&pd, power_dup, "power build, no lies", power_scenes[scene], rate_percent,
+                    true);
+    }
+}
+
 int main(void)
 {
     vor_port_init();
@@ -401,6 +574,15 @@ int main(void)
         uint32_t rate = (uint32_t)(((uint64_t)percents[k] << 32) / 100u);
         cdt_under_faults(rate, percents[k], k, false, &rng);
         cdt_under_faults(rate, percents[k], k, true, &rng);
+        test_case_end();
+    }
+    for (unsigned k = 0; k < 3u; k++) {
+        if (!test_case_begin("faults/power/rate_%u", percents[k])) {
+            continue;
+        }
+        test_rng_seed(&rng, 4041u + k);
+        uint32_t rate = (uint32_t)(((uint64_t)percents[k] << 32) / 100u);
+        power_under_faults(rate, percents[k], k, &rng);
         test_case_end();
     }
     return test_finish();

@@ -21,7 +21,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k geometry cells centroid raster large cdt}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k geometry cells centroid raster large cdt power}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
@@ -40,10 +40,12 @@ common="-machdep x86_32 -kernel-warn-key typing:implicit-conv-void-ptr=inactive
 options_of() {
     case $1 in
     predicates | predicates_os | multiword | multiword_armv6m) echo "" ;;
-    # large, cells, centroid, cdt: every input concrete but a few that end
-    # a call early, so every state can be kept apart (a slevel no loop
-    # reaches) and EVA follows each build, cell trace and constraint exactly
-    large | cells | cdt) echo "-eva-split-return full -eva-slevel 1000000" ;;
+    # large, cells, centroid, cdt, power: every input concrete but a few
+    # that end a call early (and power's inserts of any weight, each of
+    # whose outcomes is then followed on its own), so every state can be
+    # kept apart (a slevel no loop reaches) and EVA follows each build,
+    # cell trace, constraint and flip exactly
+    large | cells | cdt | power) echo "-eva-split-return full -eva-slevel 1000000" ;;
     # centroid: the same, and the scratch at a fixed address (centroid.c)
     centroid) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
     # queries, nearest_k: loops over a site's fan (the walk, the k nearest's
