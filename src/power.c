@@ -965,6 +965,34 @@ static int check_regular(const vor_power_t *pd, vor_violation_t *out)
     return VOR_OK;
 }
 
+/* The same while every vertex is on one line (no triangle of area): h on
+ * the line, at a vertex no lighter than it or between two vertices with
+ * its lifted point on or above their chain (a look at every vertex). */
+static bool hidden_on_line(const vor_power_t *pd, uint32_t h)
+{
+    const vor_t *d = &pd->mesh;
+    const vor_point_t *s = d->sites;
+    uint32_t a = d->last_site;
+    uint32_t at = find_at(pd, h, d->site_count);
+    if (at != VOR__NONE) {
+        return pd->weights[at] >= pd->weights[h];
+    }
+    if (d->vertex_count < 2u) {
+        return false; /* one vertex: only a site at its point is hidden */
+    }
+    vor_index_t u[3];
+    vor__vertices(&d->triangles[a], u);
+    uint32_t b = ((u[0] != a) && (u[0] != VOR__INFINITE)) ? u[0]
+                 : ((u[1] != a) && (u[1] != VOR__INFINITE)) ? u[1] : u[2];
+    if (vor__orient2d_sign(&s[a], &s[b], &s[h]) != 0) {
+        return false;
+    }
+    bool vertical = s[a].x == s[b].x;
+    uint32_t lo = line_neighbour(pd, h, vertical, true);
+    uint32_t hi = line_neighbour(pd, h, vertical, false);
+    return (lo != VOR__NONE) && (hi != VOR__NONE) && (lifted_side(pd, lo, hi, h) <= 0);
+}
+
 /* Is hidden site h on or above the lifted surface? The triangle under it
  * by a walk with the perturbed orientation (read-only), then the exact
  * power test; outside the hull only on its boundary's line. */
@@ -1017,7 +1045,8 @@ int vor_power_validate(const vor_power_t *pd, vor_violation_t *out)
     for (uint32_t h = pd->first_hidden; (err == VOR_OK) && (h != 0u); seen++) {
         uint32_t site = h - 1u;
         if ((seen >= pd->hidden_count) || (site >= d->site_count) ||
-            (vor_power_hidden(pd, site) != 1) || ((d->vertex_count >= 3u) && !hidden_above(pd, site))) {
+            (vor_power_hidden(pd, site) != 1) ||
+            !(pd->area ? hidden_above(pd, site) : hidden_on_line(pd, site))) {
             err = violation(out, VOR_CHECK_DELAUNAY, 0, site);
         } else {
             h = d->triangles[site].n[1];

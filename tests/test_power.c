@@ -701,6 +701,20 @@ static void check_validate_detects(void)
           "the hidden list");
     pd.hidden_count--;
     CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid again");
+    /* on a line: the middle site hidden above the chain, then made heavy */
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    CHECK((vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK) &&
+              (vor_power_insert(&pd, (vor_point_t){10, 20}, 0, &id) == VOR_OK) &&
+              (vor_power_insert(&pd, (vor_point_t){5, 10}, -1000, &id) == VOR_OK),
+          "a line");
+    CHECK((vor_power_hidden(&pd, 2) == 1) && (vor_power_validate(&pd, NULL) == VOR_OK),
+          "hidden on the line");
+    pd.weights[2] = 1000;
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.site == 2),
+          "a hidden site below the chain");
+    pd.mesh.sites[2].x = 6;
+    pd.weights[2] = -1000;
+    CHECK(vor_power_validate(&pd, &why) == VOR_ERR_INVALID, "a hidden site off the line");
 }
 
 /* Sites on one line, as many as the plan orders in its quadtree: the
