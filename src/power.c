@@ -463,6 +463,20 @@ static bool settle_star(vor_power_t *pd, vor_index_t p)
  * are hidden. The diagram is one-dimensional then, and is kept exactly:
  * the vertices are the lower chain of the lifted sites along the line. */
 
+/* With every vertex on one line (two at least): a vertex other than the
+ * last site, which with it gives the line (a corner of its home slot's
+ * triangle: every triangle has two finite corners). */
+static uint32_t line_mate(const vor_t *d)
+{
+    vor_index_t u[3];
+    vor__vertices(&d->triangles[d->last_site], u);
+    uint32_t mate = u[2];
+    for (unsigned i = 0; i < 2u; i++) {
+        mate = ((u[i] != d->last_site) && (u[i] != VOR__INFINITE)) ? u[i] : mate;
+    }
+    return mate;
+}
+
 /* The vertex nearest to site p along the line (key: x, or y for a
  * vertical line), below it (`below`) or above, other than `skip`;
  * VOR__NONE if none: a look at every id. */
@@ -665,12 +679,8 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
         return VOR_ERR_DUPLICATE;
     }
     if (!pd->area) {
-        /* a line of vertices: through the last site and a neighbour */
-        vor_index_t u[3];
-        vor__vertices(&d->triangles[d->last_site], u);
         uint32_t a = d->last_site;
-        uint32_t b = ((u[0] != a) && (u[0] != VOR__INFINITE)) ? u[0]
-                     : ((u[1] != a) && (u[1] != VOR__INFINITE)) ? u[1] : u[2];
+        uint32_t b = line_mate(d);
         if (vor__orient2d_sign(&s[a], &s[b], &s[p]) == 0) {
             /* a vertex at p (the line's cost: every id is looked at) */
             under = (under != VOR__NONE) ? under : find_at(pd, p, d->site_count);
@@ -980,10 +990,7 @@ static bool hidden_on_line(const vor_power_t *pd, uint32_t h)
     if (d->vertex_count < 2u) {
         return false; /* one vertex: only a site at its point is hidden */
     }
-    vor_index_t u[3];
-    vor__vertices(&d->triangles[a], u);
-    uint32_t b = ((u[0] != a) && (u[0] != VOR__INFINITE)) ? u[0]
-                 : ((u[1] != a) && (u[1] != VOR__INFINITE)) ? u[1] : u[2];
+    uint32_t b = line_mate(d);
     if (vor__orient2d_sign(&s[a], &s[b], &s[h]) != 0) {
         return false;
     }
