@@ -701,6 +701,19 @@ static void check_validate_detects(void)
           "the hidden list");
     pd.hidden_count--;
     CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid again");
+    /* a hull made reflex: a corner moved beyond the line of an edge, its
+     * triangle still counterclockwise (the box widened to keep it in) */
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    CHECK((vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK) &&
+              (vor_power_insert(&pd, (vor_point_t){10, 0}, 0, &id) == VOR_OK) &&
+              (vor_power_insert(&pd, (vor_point_t){10, 10}, 0, &id) == VOR_OK) &&
+              (vor_power_insert(&pd, (vor_point_t){-1, 11}, 0, &id) == VOR_OK) &&
+              (vor_power_validate(&pd, NULL) == VOR_OK),
+          "a quadrilateral");
+    pd.mesh.sites[3] = (vor_point_t){-2, -1};
+    pd.mesh.low = (vor_point_t){-2, -1};
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY),
+          "a reflex hull: check %d", (int)why.check);
     /* on a line: the middle site hidden above the chain, then made heavy */
     CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
     CHECK((vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK) &&
