@@ -651,10 +651,11 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
     vor__vertices(&d->triangles[root], v);
     uint32_t found = VOR__NONE;
     uint32_t under = VOR__NONE;
-    for (unsigned i = 0; i < 3u; i++) {
-        if ((v[i] != VOR__INFINITE) && same_point(&s[v[i]], &s[p])) {
-            found = (w[v[i]] == w[p]) ? v[i] : found;
-            under = (w[v[i]] != w[p]) ? v[i] : under;
+    for (unsigned corner = 0; corner < 3u; corner++) {
+        vor_index_t c = v[corner];
+        if ((c != VOR__INFINITE) && same_point(&s[c], &s[p])) {
+            found = (w[c] == w[p]) ? c : found;
+            under = (w[c] != w[p]) ? c : under;
         }
     }
     bool tie = false;
