@@ -626,6 +626,14 @@ static void check_arguments(void)
     static int64_t five_w[5];
     CHECK(vor_power_build(&pd, five, five_w, 5, NULL) == VOR_ERR_FULL, "build full");
     CHECK(vor_power_hidden(NULL, 0) == VOR_ERR_ARG, "hidden NULL");
+    /* one vertex: a lighter site at its point is hidden, and its repeat a
+     * duplicate of the hidden one */
+    CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK, "init");
+    CHECK((vor_power_insert(&pd, a, 5, &id) == VOR_OK) && (vor_power_insert(&pd, a, 1, &id) == VOR_OK) &&
+              (vor_power_hidden(&pd, 1) == 1),
+          "hidden under the only vertex");
+    CHECK((vor_power_insert(&pd, a, 1, &id) == VOR_ERR_DUPLICATE) && (id == 1u),
+          "a repeat of the hidden site");
     vor_power_hidden_iter_t hit;
     uint32_t h;
     CHECK(vor_power_hidden_begin(NULL, &pd) == VOR_ERR_ARG, "hidden begin NULL");
