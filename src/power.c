@@ -827,8 +827,8 @@ int vor_power_build(vor_power_t *pd, const vor_point_t *points, const int64_t *w
     uint32_t distinct = vor__plan(d, n, VOR_ORDER_QUADTREE, base, plan, NULL);
     vor_index_t few[16];
     if (n < 8u) { /* so few slots that the plan may share words with home slots */
-        for (uint32_t i = 0; i < (2u * n); i++) {
-            few[i] = plan[i];
+        for (uint32_t i = 0; i < 16u; i++) {
+            few[i] = (i < (2u * n)) ? plan[i] : (vor_index_t)0;
         }
         plan = few;
     }
