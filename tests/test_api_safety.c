@@ -578,7 +578,7 @@ static void check_raster(void)
     test_copy_bytes(areas_before, areas, sizeof areas);
     unsigned flushes = 0;
     vor_raster_frame_t frame = {0, 0, 100, 100, 8, 4};
-    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0, NULL};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
                                NULL, NULL, areas};
     vor_raster_frame_t empty = frame, inverted = frame;
@@ -591,6 +591,8 @@ static void check_raster(void)
     no_points.points = NULL;
     vor_raster_sites_t l1 = set;
     l1.metric = VOR_METRIC_L1;
+    vor_raster_sites_t weightless = set; /* power diagram without its weights */
+    weightless.metric = VOR_METRIC_POWER;
     /* both entry points; vor_raster_euclid also refuses another metric */
     int (*const entries[2])(const vor_raster_frame_t *, const vor_raster_sites_t *,
                             const vor_raster_output_t *, const vor_raster_options_t *, void *,
@@ -608,6 +610,7 @@ static void check_raster(void)
         bad += entries[e](&empty, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         bad += entries[e](&inverted, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         bad += entries[e](&frame, &set, &out, &bad_method, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &weightless, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         if (e == 1u) {
             bad += vor_raster_euclid(&frame, &l1, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         }
@@ -749,7 +752,7 @@ static void check_each_argument(void)
     frames[6].step_x = 1;
     frames[6].width = 0x08000000u;
     frames[7].origin_x = INT32_MAX - 700; /* the widest frame that fits: valid */
-    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0, NULL};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
                                NULL, NULL, NULL};
     bad = 0;
