@@ -423,8 +423,10 @@ def polygon_square(q, poly):
 def metric_nearest(metric, param, sites, q):
     """Index of the first-ranked site at q (ties: the smaller index)."""
     def key(site):
-        if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp"):
+        if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp", "power"):
             dx, dy = abs(site[0] - q[0]), abs(site[1] - q[1])
+        if metric == "power":  # the power distance, an exact Python integer
+            return dx * dx + dy * dy - site[2]
         if metric == "l1":
             return dx + dy
         if metric == "linf":
@@ -476,8 +478,11 @@ def raster_metric_cases(rng, tmp):
                ("ellip", (3, -1, 2), "ellip:3,-1,2"), ("mult", None, "mult"), ("add", None, "add"),
                ("comp", None, "comp"), ("farthest", None, "farthest"), ("hausdorff", None, "hausdorff"),
                ("segment", None, "segment"), ("polygon", None, "polygon"),
-               ("polyline", None, "polyline")]
+               ("polyline", None, "polyline"), ("power", None, "power")]
+    main_rng = rng
     for metric, param, arg in metrics:
+        # power draws from its own generator: the later cases keep their inputs
+        rng = random.Random(26) if metric == "power" else main_rng
         for n in range(3):
             w, h = rng.randint(1, 21), rng.randint(1, 19)
             ox, oy, sx, sy = rng.randint(-20, 20), rng.randint(-20, 20), rng.randint(1, 3), rng.randint(1, 3)
@@ -494,6 +499,8 @@ def raster_metric_cases(rng, tmp):
                     sites.append(p + (rng.randint(-4, 4) if n != 1 else 5 * (k % 2),))
                 elif metric == "comp":
                     sites.append(p + (rng.randint(1, 3), rng.randint(-4, 4)))
+                elif metric == "power":  # n = 2: heavy weights that hide sites
+                    sites.append(p + (rng.randint(-40, 40) if n != 2 else rng.randint(-300, 300) * (1 + 9 * (k == 0)),))
                 elif metric == "segment":
                     sites.append((p, pt(n == 1) if k % 3 else p))
                 elif metric == "polyline":
@@ -527,7 +534,9 @@ def raster_metric_cases(rng, tmp):
     bad = [("mult", "1 2 3\n4 5 0\n", 2), ("mult", "1 2\n", 1), ("comp", "# c\n1 2 3\n", 2),
            ("comp", "1 2 -1 5\n", 1), ("add", "1 2 3 4\n", 1), ("segment", "1 2 3\n", 1),
            ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1),
-           ("polyline", "2 1 2 3 4\n0 5 6\n", 2), ("polyline", "1 1 2 3\n", 1)]
+           ("polyline", "2 1 2 3 4\n0 5 6\n", 2), ("polyline", "1 1 2 3\n", 1),
+           ("power", "1 2 3\n1 2\n", 2), ("power", "1 2 3.5\n", 1), ("power", "1 2 3 4\n", 1),
+           ("power", "0 0 9223372036854775808\n", 1)]
     for metric, text, line in bad:
         bp = os.path.join(tmp, "bad.sites")
         with open(bp, "w") as f:
@@ -535,6 +544,38 @@ def raster_metric_cases(rng, tmp):
         r = run(["raster", "--size", "4", "4", "--metric", metric, bp, "--labels", os.path.join(tmp, "bad.raw")], "")
         check(r.returncode == 2 and r.stderr.startswith(f"error: {bp}:{line}: "),
               f"raster --metric {metric} bad line {text!r}: {r.returncode} {r.stderr!r}")
+    # power: int64 weights at both ends, and --scale S multiplies them by S^2
+    for text, scale, want in (("0 0 -9223372036854775808\n3 0 9223372036854775807\n", None, [1, 1, 1, 1]),
+                              ("0 0 9223372036854775807\n3 0 9223372036854775807\n", None, [0, 0, 1, 1]),
+                              ("0 0 0\n0.3 0 0.03\n", "10", [0, 0, 1, 1]),  # w 3: x = 1 ties, to 0
+                              ("0 0 0\n0.3 0 0.035\n", "10", [0, 1, 1, 1])):  # 3.5 rounds away to 4
+        pp = os.path.join(tmp, "power-scale.sites")
+        with open(pp, "w") as f:
+            f.write(text)
+        args = ["raster", "--size", "4", "1", "--metric", "power", pp, "--labels", os.path.join(tmp, "power.raw")]
+        r = run(args + (["--scale", scale] if scale else []), "")
+        got = list(struct.unpack("<4I", open(os.path.join(tmp, "power.raw"), "rb").read())) if r.returncode == 0 else None
+        check(got == want, f"raster --metric power {text!r} --scale {scale}: {got}, want {want} ({r.stderr!r})")
+    rng = random.Random(27)
+    # power --png: every pixel the colour of its brute-force site, black on
+    # the boundaries (a label unlike the right or lower neighbour's)
+    w, h = 24, 16
+    sites = [(rng.randint(-4, 28), rng.randint(-4, 20), rng.randint(-60, 60)) for _ in range(9)] + [(12, 8, 900)]
+    pp, png = os.path.join(tmp, "power-png.sites"), os.path.join(tmp, "power.png")
+    with open(pp, "w") as f:
+        f.write("".join(f"{x} {y} {wt}\n" for x, y, wt in sites))
+    r = run(["raster", "--size", str(w), str(h), "--metric", "power", pp, "--png", png, "--y-down"], "")
+    check(r.returncode == 0, f"raster --metric power --png: {r.returncode} {r.stderr!r}")
+    if r.returncode == 0:
+        picture = read_png(png)
+        labels = [[metric_nearest("power", None, sites, (i, j)) for i in range(w)] for j in range(h)]
+        wrong = 0
+        for j in range(h):
+            for i in range(w):
+                edge = (i + 1 < w and labels[j][i + 1] != labels[j][i]) or (j + 1 < h and labels[j + 1][i] != labels[j][i])
+                wrong += tuple(picture[j][i]) != ((0, 0, 0) if edge else draw_colour(labels[j][i]))
+        check(wrong == 0, f"raster --metric power --png: {wrong} of {w * h} pixels unlike the brute force")
+    rng = main_rng
     for arg in ("lp:0", "lp:9", "lp:x", "ellip:1,2,3", "ellip:0,0,1", "ellip:1,2", "manhattan"):
         r = run(["raster", "--size", "4", "4", "--metric", arg, os.path.join(tmp, "l1-0.sites"), "--labels",
                  os.path.join(tmp, "bad.raw")], "")

@@ -56,6 +56,12 @@ bool cli_int64_field(const char **cursor, int64_t *value, const char **why);
  * nearest integer, ties away from zero, computed exactly. */
 bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why);
 
+/* cli_int64_field for a squared length (a power weight, the square of a
+ * radius): after cli_set_scale, a decimal number times the scale squared,
+ * rounded to the nearest integer, ties away from zero, computed exactly,
+ * so that the weights scale with the coordinates. */
+bool cli_squared_field(const char **cursor, int64_t *value, const char **why);
+
 /* Sets the scale of cli_coordinate_field from the text of --scale S (a
  * positive decimal); exits with status 2 when it is not one. */
 void cli_set_scale(const char *text);
