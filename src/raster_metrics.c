@@ -694,30 +694,21 @@ static uint32_t rational_distance(const rank_key_t *k)
     return saturate_u32(isqrt128(&quotient));
 }
 
-/* The power distance D - w (D < 2^65, any int64 w) as an int32 bit
- * pattern, clamped to [INT32_MIN, INT32_MAX]: no rounding, it is an
- * integer. Compared piece by piece, without a wide subtraction: D >= 2^64
- * puts it above 2^64 - 2^63 > INT32_MAX. */
-static uint32_t power_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
+/* The power distance D - w of a POWER key (num = D - w + (2^63 - 1),
+ * below 2^66) as an int32 bit pattern, clamped to [INT32_MIN, INT32_MAX]:
+ * no rounding, it is an integer. num >= 2^64 puts it above
+ * 2^64 - 2^63 + 1 > INT32_MAX; below, one subtraction either way. */
+static uint32_t power_distance(const rank_key_t *k)
 {
-    const vor_point_t *p = &m->sites->points[site];
-    vor__mw_u128_t big_d;
-    square_sum(&big_d, vor__mw_magnitude((int64_t)qx - p->x), vor__mw_magnitude((int64_t)qy - p->y));
-    int64_t w = m->sites->power_weights[site];
-    uint64_t d = big_d.lo;
-    if (big_d.hi != 0u) {
-        return (uint32_t)INT32_MAX; /* D >= 2^64 and w < 2^63 */
+    const uint64_t bias = (uint64_t)INT64_MAX;
+    if (k->num.hi != 0u) {
+        return (uint32_t)INT32_MAX;
     }
-    if (w <= 0) { /* D - w = D + |w| >= 0, |w| <= 2^63 */
-        uint64_t magnitude = (uint64_t)0 - (uint64_t)w;
-        bool above = (d > (uint64_t)INT32_MAX) || (magnitude > ((uint64_t)INT32_MAX - d));
-        return above ? (uint32_t)INT32_MAX : (uint32_t)(d + magnitude);
+    if (k->num.lo >= bias) { /* 0 <= D - w <= 2^63 */
+        uint64_t value = k->num.lo - bias;
+        return (value > (uint64_t)INT32_MAX) ? (uint32_t)INT32_MAX : (uint32_t)value;
     }
-    if (d >= (uint64_t)w) { /* 0 <= D - w */
-        uint64_t difference = d - (uint64_t)w;
-        return (difference > (uint64_t)INT32_MAX) ? (uint32_t)INT32_MAX : (uint32_t)difference;
-    }
-    uint64_t below = (uint64_t)w - d; /* D - w = -below < 0 */
+    uint64_t below = bias - k->num.lo; /* D - w = -below < 0 */
     return (below >= ((uint64_t)1 << 31)) ? (uint32_t)INT32_MIN : (uint32_t)((uint64_t)0 - below);
 }
 
@@ -743,7 +734,7 @@ static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, in
     } else if (IN(m->metric_bit, RATIONAL_METRICS)) {
         return rational_distance(&k);
     } else if (IN(m->metric_bit, METRIC(POWER))) {
-        return power_distance(m, site, qx, qy);
+        return power_distance(&k);
     } else { /* FARTHEST, HAUSDORFF: the squared distance */
         return saturate_u32(isqrt128(&k.num));
     }
