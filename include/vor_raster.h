@@ -74,7 +74,7 @@
  *   Saturation: unsigned values from 2^32 on read UINT32_MAX (only L1, Lp,
  *   elliptic forms and far Euclidean-type distances reach it); ADD and
  *   COMPOUND values above INT32_MAX read INT32_MAX (they are always above
- *   -2^31, since w2 < 2^31). The value costs a few integer roots per
+ *   -2^31, since w2 < 2^31); POWER values clamp at both ends. The value costs a few integer roots per
  *   pixel (docs/design/raster-metrics.md, "Distance output").
  *
  * SPEED
@@ -96,8 +96,8 @@
  *   filled polygons, (weighted) polylines and power diagrams (int64
  *   weights; vor_raster_sites_t says which fields each uses).
  *   Each is compared exactly, over all int32 coordinates and weights
- *   (power weights: all of int64): no valid input is out of budget. VOR_RASTER_FAST culls sites per tile of
- *   16 x 16 pixels with exact bounds of each site's distance over the
+ *   (power weights: all of int64): no valid input is out of budget.
+ *   VOR_RASTER_FAST culls sites per tile of 16 x 16 pixels with exact bounds of each site's distance over the
  *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
  *   VOR_RASTER_DISTANCE works with every metric (DISTANCE VALUES).
  *
@@ -136,8 +136,8 @@ typedef struct vor_raster_frame {
 
 /* The distance a pixel is assigned by (Teramoto, section 2.3 and chapter
  * 5). Every metric is decided exactly over the whole int32 range of
- * coordinates and weights (POWER: int64 weights); the comparison widths are in docs/design/raster.md
- * and docs/design/raster-metrics.md. */
+ * coordinates and weights (POWER: int64 weights); the comparison widths
+ * are in docs/design/raster.md and docs/design/raster-metrics.md. */
 enum vor_metric {
     VOR_METRIC_EUCLID = 0,    /* point sites, Euclidean distance */
     VOR_METRIC_L1 = 1,        /* point sites, |dx| + |dy| */
@@ -250,7 +250,9 @@ typedef struct vor_raster_options {
  *   VOR_ERR_ARG    a NULL pointer (options apart), a zero size or step, a pixel centre
  *                  outside int32, an unknown metric, kind or method, a
  *                  missing palette, LABEL8 with > 256 or LABEL16 with
- *                  > 65,536 sites
+ *                  > 65,536 sites, a metric's field out of its range or
+ *                  a weight array it uses NULL (POWER: power_weights;
+ *                  docs/api.md lists them)
  *   VOR_ERR_EMPTY  sites->count == 0
  *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes, or
  *                  work_bytes < VOR_RASTER_WORK_BYTES(count, width)

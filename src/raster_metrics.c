@@ -4,8 +4,8 @@
  * Euclidean point sites (raster_euclid.c): L1, L-infinity, Lp, elliptic,
  * weighted (multiplicative, additive, compound), farthest-point, Hausdorff
  * point sets, segments, filled polygons, multiplicatively weighted
- * polylines and power diagrams (Teramoto: section 2.3 defines the generalised diagrams,
- * chapter 5 the distances). Each pixel takes the site of smallest
+ * polylines and power diagrams (Teramoto: section 2.3 defines the
+ * generalised diagrams, chapter 5 the distances). Each pixel takes the site of smallest
  * distance (largest for the farthest-point diagram), ties to the smaller
  * index: Definition 2.2 with another distance.
  *
@@ -713,8 +713,8 @@ static uint32_t power_distance(const rank_key_t *k)
 }
 
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
- * (qx, qy): the floor of its distance under m's metric, saturated (ADD
- * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
+ * (qx, qy): the floor of its distance under m's metric, saturated (ADD,
+ * COMPOUND and POWER: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
 static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
