@@ -25,6 +25,14 @@
  *     vor_power_hidden_iter_t h;
  *     vor_power_hidden_begin(&h, &pd);
  *     while (vor_power_hidden_next(&h, &id)) { ... }
+ *     // the power cell of id in a box, and its centroid (Lloyd)
+ *     vor_box_t box = {0, 0, 1000, 1000};
+ *     vor_point_t poly[VOR_CELL_MAX_VERTICES(500)];
+ *     uint32_t m;
+ *     vor_power_cell(&pd, id, &box, poly, VOR_CELL_MAX_VERTICES(500), &m);
+ *     static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(500))];
+ *     vor_centroid_t c;
+ *     vor_power_cell_centroid(&pd, id, &box, scratch, sizeof scratch, &c);
  *
  * Exactness: every decision is an exact predicate of vor.h
  * (vor_power_test, vor_orient2d) over the whole int32 range of
