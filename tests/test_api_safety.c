@@ -995,6 +995,41 @@ static void check_power_reads(void)
               vor_power_validate(&power, NULL) == VOR_OK &&
               vor_power_validate(&power, &violation) == VOR_OK && power_unchanged(),
           "power_validate: NULL, or a good object refused");
+
+    /* the cells: every id and bad arguments; an error writes nothing, a
+     * hidden site's cell is empty, a cell fits VOR_CELL_MAX_VERTICES */
+    static vor_point_t poly[VOR_CELL_MAX_VERTICES(POWER_N)];
+    static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(POWER_N))];
+    const vor_box_t box = {-2000000000, -2000000000, 2000000000, 2000000000};
+    const vor_box_t inverted = {0, 1, 0, 0};
+    const uint32_t cap = VOR_CELL_MAX_VERTICES(POWER_N);
+    bad = 0;
+    uint32_t m = 77;
+    vor_centroid_t c = {{77, 77}, 77, 77};
+    bad += vor_power_cell(NULL, 0, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, NULL, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, &inverted, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, &box, NULL, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, &box, poly, cap, NULL) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, POWER_N - 1u, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, POWER_N, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0xFFFFFFFFu, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(NULL, 0, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, NULL, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, &inverted, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, &box, NULL, 1, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, &box, centroid_scratch, sizeof centroid_scratch, NULL) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, POWER_N - 1u, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0xFFFFFFFFu, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += (m != 77 || c.area != 77 || c.vertices != 77 || c.point.x != 77);
+    for (uint32_t i = 0; i + 1u < POWER_N; i++) {
+        int h = vor_power_hidden(&power, i);
+        bad += vor_power_cell(&power, i, &box, poly, cap, &m) != VOR_OK;
+        bad += (h == 1) ? (m != 0u) : (m < 3u);
+        bad += vor_power_cell_centroid(&power, i, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_OK;
+        bad += c.vertices != m;
+    }
+    CHECK(bad == 0 && power_unchanged(), "power cells: %u wrong answers", bad);
 }
 
 /* A vor_power_t vor_power_init never saw, zeroed as static storage is:
@@ -1019,6 +1054,11 @@ static void check_power_zeroed(void)
     bad += vor_power_triangles_begin(&ti, &zeroed) != VOR_OK;
     bad += vor_triangles_next(&ti, ids) != 0;
     bad += (out != 77 || ids[0] != 77 || dup[0] != 77);
+    vor_point_t poly[4];
+    uint32_t m = 77;
+    const vor_box_t box = {0, 0, 10, 10};
+    bad += vor_power_cell(&zeroed, 0, &box, poly, 4, &m) != VOR_ERR_ARG;
+    bad += m != 77;
     CHECK(bad == 0 && test_same_bytes(&zeroed, &zero, sizeof zero),
           "a never-initialised power object: %u wrong answers, or written", bad);
 }
