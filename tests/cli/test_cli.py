@@ -1821,14 +1821,14 @@ def power_cases(tmp):
     check_power_output(sites, r.stdout, "extremes")
     r = run(["power", "-"], "5 5 1\n5 5 3\n5 5 3\n5 5 -2\n")
     check(r.returncode == 0 and r.stdout == "h 0\nh 3\nd 2 1\n", f"vor power one point: {r.stdout!r}")
-    # the same sites as CSV (with a header), and scaled (weights are not)
+    # the same sites as CSV (with a header), and scaled (the weights by S^2)
     sites = [(rng.randint(-50, 50), rng.randint(-50, 50), rng.randint(-400, 400)) for _ in range(12)]
     ref = run(["power", "-"], "".join(f"{x} {y} {w}\n" for x, y, w in sites))
     check(ref.returncode == 0 and ref.stdout.startswith("t "), f"vor power reference: {ref.stderr!r}")
     for args, text in ((["power", "-"], "x,y,w\n" + "".join(f"{x},{y},{w}\n" for x, y, w in sites)),
                        (["power", "-"], "# c\n\n" + "".join(f" {x} ,\t{y}, {w}\r\n" for x, y, w in sites)),
-                       (["power", "--scale", "10", "-"], "".join(f"{x / 10} {y / 10} {w}\n" for x, y, w in sites)),
-                       (["power", "--scale=0.5", "-"], "".join(f"{2 * x},{2 * y},{w}\n" for x, y, w in sites))):
+                       (["power", "--scale", "10", "-"], "".join(f"{x / 10} {y / 10} {w / 100}\n" for x, y, w in sites)),
+                       (["power", "--scale=0.5", "-"], "".join(f"{2 * x},{2 * y},{4 * w}\n" for x, y, w in sites))):
         r = run(args, text)
         check(r.returncode == 0 and r.stdout == ref.stdout, f"vor {' '.join(args)} {text[:20]!r}: {r.returncode} {r.stderr!r}")
     sp = os.path.join(tmp, "power.sites")
@@ -1851,13 +1851,14 @@ def power_cases(tmp):
     for text in ("0 0 9223372036854775807\n", "0 0 -9223372036854775808\n", "0 0 +5\n", "0 0 -0\n"):
         r = run(["power", "-"], text)
         check(r.returncode == 0 and r.stdout == "", f"vor power {text!r}: {r.returncode} {r.stderr!r}")
-    # a decimal weight: an error that does not send the user to --scale,
-    # which scales only the coordinates
-    for args in (["power", "-"], ["power", "--scale", "10", "-"]):
-        r = run(args, "0.5 0.5 1.5\n" if len(args) > 2 else "0 0 1.5\n")
-        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:1: ") and "'1.5'" in r.stderr
-              and "--scale" not in r.stderr and "weight" in r.stderr,
-              f"vor {' '.join(args)}: a decimal weight: {r.returncode} {r.stderr!r}")
+    # a decimal weight: an error that sends the user to --scale, which
+    # scales weights by S^2; with it, rounded to the nearest, ties away
+    r = run(["power", "-"], "0 0 1.5\n")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:1: ") and "'1.5'" in r.stderr
+          and "--scale" in r.stderr, f"vor power: a decimal weight: {r.returncode} {r.stderr!r}")
+    r = run(["power", "--scale", "10", "-"], "0 0 0.015\n0 0 0.025\n0 0 -0.025\n0 0 0.02\n")
+    check(r.returncode == 0 and r.stdout == "h 0\nh 2\nd 3 0\n",
+          f"vor power --scale 10: weights 1.5, 2.5, -2.5, 2 round to 2, 3, -3, 2: {r.returncode} {r.stdout!r}")
     r = run(["power", "-"], "0 0 0\n0.5 1 0\n")
     check(r.returncode == 2 and "--scale" in r.stderr, f"vor power: a decimal coordinate suggests --scale: {r.stderr!r}")
     # usage errors

@@ -448,20 +448,6 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
     return true;
 }
 
-bool cli_int64_field(const char **cursor, int64_t *value, const char **why)
-{
-    bool negative;
-    unsigned long long magnitude;
-    /* a weight: --scale scales only the coordinates, so it is no remedy */
-    if (!integer_field(cursor, 9223372036854775807ull, "out of int64 range", "missing weight",
-                       "not a decimal integer (a weight is an integer, never scaled)", &negative,
-                       &magnitude, why)) {
-        return false;
-    }
-    *value = negative ? (int64_t)(0u - magnitude) : (int64_t)magnitude;
-    return true;
-}
-
 /* An exact decimal: (-1)^negative * digits * 10^exponent, digits[0] the
  * most significant, no leading or trailing zeros (count 0: the value 0). */
 #define DECIMAL_DIGITS 100

@@ -47,17 +47,12 @@ const char *cli_next_line(cli_input_t *in);
  * *why then says which, quoting the field (valid until the next call). */
 bool cli_int32_field(const char **cursor, int32_t *value, const char **why);
 
-/* cli_int32_field for an int64 field (a weight): its errors name a
- * missing weight, and a decimal one is not sent to --scale (which scales
- * only the coordinates). */
-bool cli_int64_field(const char **cursor, int64_t *value, const char **why);
-
 /* Like cli_int32_field for a coordinate (or a distance in the same units):
  * after cli_set_scale, a decimal number times the scale, rounded to the
  * nearest integer, ties away from zero, computed exactly. */
 bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why);
 
-/* cli_int64_field for a squared length (a power weight, the square of a
+/* A decimal int64 for a squared length (a power weight, the square of a
  * radius): after cli_set_scale, a decimal number times the scale squared,
  * rounded to the nearest integer, ties away from zero, computed exactly,
  * so that the weights scale with the coordinates. */
@@ -223,7 +218,7 @@ void cli_crossing_point(const vor_point_t *sites, const uint32_t s[4], double *x
 
 /* vor power's parts, for vor draw --power too (power.c): the weighted
  * sites of a file ("x y w" lines, coordinates by cli_coordinate_field, w
- * a decimal int64) and their power diagram, built in a malloc'd arena
+ * by cli_squared_field) and their power diagram, built in a malloc'd arena
  * that it returns for the caller to free, with duplicate_of (malloc'd,
  * at least one entry) as vor_power_build gives it; exits with status 2 on
  * a bad line or a failure. */

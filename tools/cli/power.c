@@ -5,6 +5,8 @@
  * The regular triangulation (dual of the power diagram) of the weighted
  * sites in SITES, "x y w" lines: "t I J K" per triangle, "h I" per hidden
  * site, "d I J" per site that repeats an earlier one (point and weight).
+ * --scale S scales the coordinates by S and the weights, squared radii,
+ * by S^2 (cli_squared_field), so that the diagram scales with them.
  */
 #include <stdlib.h>
 
@@ -21,8 +23,10 @@ const char cli_power_help[] =
     "\n"
     "input:  one site per line, \"x y w\" or \"x,y,w\" (CSV, optional header);\n"
     "        x and y decimal int32 (or decimal numbers with --scale S, as for\n"
-    "        vor delaunay), w a decimal int64 (not scaled); blank and '#' lines\n"
-    "        skipped; site i is the i-th site line, from 0.\n"
+    "        vor delaunay), w a decimal int64 (a squared radius: with --scale\n"
+    "        S, a decimal number times S^2, as vor raster --metric power reads\n"
+    "        it); blank and '#' lines skipped; site i is the i-th site line,\n"
+    "        from 0.\n"
     "output: \"t i j k\" per triangle, counterclockwise, from its smallest id,\n"
     "        sorted; then \"h i\" per hidden site (its power cell is empty),\n"
     "        sorted; then \"d i j\" per site i with the point and weight of an\n"
@@ -49,7 +53,7 @@ static void read_weighted(const char *path, cli_weighted_t *sites)
         const char *why = NULL;
         const char *cursor = line;
         if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
-            !cli_int64_field(&cursor, &w, &why)) {
+            !cli_squared_field(&cursor, &w, &why)) {
             char reason[300];
             snprintf(reason, sizeof reason, "%s (expected x y w or x,y,w)", why);
             cli_line_error(&in, reason);
