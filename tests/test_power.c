@@ -1055,6 +1055,58 @@ static void check_nearest_hidden_tie(void)
           "then a: %u", id);
 }
 
+/* Removals where the ears can leave a T-junction: b on the segment a-c
+ * with its lifted point on theirs (a cell of no area), x above the line,
+ * v and y below; and where a removal leaves every site on one line
+ * (the diagram becomes one-dimensional). Every site removed in turn,
+ * after insertions in shuffled orders (the ids, and so the perturbation,
+ * change with the order). */
+static void check_remove_degenerate(void)
+{
+    static const vor_point_t junction_p[6] = {{0, 0}, {2, 0}, {4, 0}, {2, 3}, {2, -1}, {2, -5}};
+    static const int64_t junction_w[6] = {0, -4, 0, 0, 0, 0};
+    static const vor_point_t line_p[6] = {{0, 0}, {2, 0}, {4, 0}, {6, 0}, {3, 5}, {1, 0}};
+    static const int64_t line_w[6] = {0, -4, 0, 2, 0, -1};
+    static vor_power_t pd;
+    static scene_t model;
+    test_rng_t rng;
+    test_rng_seed(&rng, 66);
+    for (unsigned set = 0; set < 2u; set++) {
+        const vor_point_t *pts = (set == 0u) ? junction_p : line_p;
+        const int64_t *ws = (set == 0u) ? junction_w : line_w;
+        for (unsigned round = 0; round < 40u; round++) {
+            uint32_t order[6] = {0, 1, 2, 3, 4, 5};
+            for (uint32_t i = 6; i > 1u; i--) {
+                uint32_t j = test_rng_u32(&rng) % i;
+                uint32_t x = order[i - 1u];
+                order[i - 1u] = order[j];
+                order[j] = x;
+            }
+            for (uint32_t victim = 0; victim < 6u; victim++) {
+                unsigned long before = test_failures();
+                CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+                model.n = 6;
+                for (uint32_t i = 0; i < 6u; i++) {
+                    uint32_t id;
+                    model.p[i] = pts[order[i]];
+                    model.w[i] = ws[order[i]];
+                    model.dead[i] = false;
+                    CHECK(vor_power_insert(&pd, model.p[i], model.w[i], &id) == VOR_OK, "insert");
+                }
+                CHECK(vor_power_remove(&pd, victim) == VOR_OK, "remove");
+                model.dead[victim] = true;
+                check_oracle(&pd, &model, NULL);
+                check_nearest(&pd, &model, &rng);
+                if (test_failures() != before) {
+                    test_printf("set %u, order %u %u %u %u %u %u, removed %u\n", set, order[0],
+                                order[1], order[2], order[3], order[4], order[5], victim);
+                    return;
+                }
+            }
+        }
+    }
+}
+
 /* Failing removals and moves: the arguments the header names. */
 static void check_dynamic_arguments(void)
 {
@@ -1114,6 +1166,7 @@ void test_power(void)
     TEST_CASE("large/grid") check_large(2, 300);
     TEST_CASE("dynamic/arguments") check_dynamic_arguments();
     TEST_CASE("dynamic/nearest_hidden_tie") check_nearest_hidden_tie();
+    TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
     for (unsigned family = 0; family < 7u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
