@@ -909,8 +909,14 @@ static void remove_vertex(vor_power_t *pd, uint32_t v)
         pending = d->triangles[c].n[1];
         uint32_t vertices = d->vertex_count;
         uint32_t hidden = pd->hidden_count;
-        /* no twins: the sites are distinct, so place only hides or adds */
+        /* no twins: the sites are distinct, so place only hides or adds.
+         * Only lying predicates (fault injection) can have let a twin in
+         * and find it now: c stays a site, hidden. */
         int placed = place(pd, c, d->last_site, 0, &twin);
+        if (placed == VOR_ERR_DUPLICATE) {
+            hide(pd, c);
+            placed = PLACED_HIDDEN;
+        }
         grid_upkeep(pd, c, placed, vertices, hidden);
     }
 }
