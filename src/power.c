@@ -1231,7 +1231,9 @@ int vor_power_nearest(const vor_power_t *pd, vor_point_t q, uint32_t hint, uint3
     }
     uint32_t h = pd->first_hidden;
     for (uint32_t left = pd->hidden_count; (left > 0u) && (h != 0u); left--) {
-        best = nearer(pd, &q, h - 1u, best) ? (h - 1u) : best;
+        if (nearer(pd, &q, h - 1u, best)) {
+            best = h - 1u;
+        }
         h = d->triangles[h - 1u].n[1];
     }
     *site = best;
