@@ -33,6 +33,9 @@
  *     static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(500))];
  *     vor_centroid_t c;
  *     vor_power_cell_centroid(&pd, id, &box, scratch, sizeof scratch, &c);
+ *     vor_power_move(&pd, id, (vor_point_t){12, 20}, 400, NULL); // same id
+ *     vor_power_nearest(&pd, q, VOR_NO_HINT, &id); // least |q-p|^2 - w
+ *     vor_power_remove(&pd, id);                   // id freed for reuse
  *
  * Exactness: every decision is an exact predicate of vor.h
  * (vor_power_test, vor_orient2d) over the whole int32 range of
@@ -104,7 +107,8 @@ static inline int vor_power_init(vor_power_t *pd, void *arena, size_t arena_byte
 
 /*
  * Adds the site p with weight w; its id goes to *site (may be NULL): the
- * next unused id. The site may be hidden at once (vor_power_hidden), and
+ * most recently freed id (vor_power_remove) if there is one, else the
+ * next unused. The site may be hidden at once (vor_power_hidden), and
  * it may hide sites that were vertices; the triangulation is afterwards
  * the regular triangulation of all the sites.
  *   VOR_ERR_ARG        pd NULL
@@ -137,8 +141,62 @@ int vor_power_build(vor_power_t *pd, const vor_point_t *points, const int64_t *w
                     uint32_t n, uint32_t *duplicate_of);
 
 /*
+ * Removes site `site`, a vertex or hidden; the triangulation is afterwards
+ * the regular triangulation of the other sites, exactly as a fresh
+ * insertion of them gives: the hidden sites whose power cells the removal
+ * opens become vertices (a removed vertex's neighbourhood is the only
+ * place where that can happen). The other sites keep their ids; `site`
+ * becomes free, and the next vor_power_insert reuses the most recently
+ * freed id (as vor_remove and vor_insert). Ids vor_power_build gave to
+ * duplicates stay reserved: they are not sites.
+ *   VOR_ERR_ARG  pd NULL, or site not a site (an unused or free id, a
+ *                duplicate's id from vor_power_build)
+ * On failure nothing changes.
+ * Cost: a hidden site: a look along the hidden list. A vertex: the
+ * removal's ears (vor_remove's, with the power test), a look along the
+ * hidden list for those in the box of the vertex and its neighbours, and
+ * an insertion of each of them; while every vertex is on one line (and
+ * when a hull vertex leaves, its neighbours have no triangle of area) a
+ * look at every id.
+ */
+int vor_power_remove(vor_power_t *pd, uint32_t site);
+
+/*
+ * Moves site `site` (a vertex or hidden) to the point p with weight w,
+ * keeping its id: a removal and an insertion, whose result is the regular
+ * triangulation of the sites as they are afterwards. Moving a site to its
+ * own point and weight is VOR_OK and changes nothing.
+ *   VOR_ERR_ARG        pd NULL, or site not a site (as vor_power_remove)
+ *   VOR_ERR_DUPLICATE  another site has the point p and the weight w: its
+ *                      id goes to *existing (may be NULL; the smallest)
+ * On failure nothing changes.
+ * Cost: a look at every id for a duplicate, then vor_power_remove's and
+ * vor_power_insert's.
+ */
+int vor_power_move(vor_power_t *pd, uint32_t site, vor_point_t p, int64_t w,
+                   uint32_t *existing);
+
+/*
+ * The site of least power distance |q - p|^2 - w to q, any int32 point,
+ * exactly (vor_power_closer); of several as near, the smallest id. A
+ * hidden site is never strictly nearer than every vertex but may tie, and
+ * is then answered when its id is smaller. hint: a site to start from (the
+ * previous answer; a hidden one starts from the bucket grid), or
+ * VOR_NO_HINT (the bucket grid's site for q).
+ *   VOR_ERR_ARG    pd or site NULL, hint neither VOR_NO_HINT nor a site
+ *                  (an unused or free id, a duplicate's id)
+ *   VOR_ERR_EMPTY  the diagram has no sites
+ * On failure nothing is written.
+ * Cost: a walk from vertex to strictly nearer neighbour, O(1) steps for a
+ * hint near the answer; a look along the hidden list; a look at every id
+ * when two vertices tie for the least, or every vertex is on one line.
+ */
+int vor_power_nearest(const vor_power_t *pd, vor_point_t q, uint32_t hint, uint32_t *site);
+
+/*
  * 1 when `site` is hidden, 0 when it is a vertex of the triangulation.
- *   VOR_ERR_ARG  pd NULL, or site not an id handed out, or a duplicate's
+ *   VOR_ERR_ARG  pd NULL, or site not an id handed out, a free id (removed),
+ *                or a duplicate's
  */
 int vor_power_hidden(const vor_power_t *pd, uint32_t site);
 

@@ -357,7 +357,7 @@ void vor__merge_three(vor_t *d, vor_index_t p, const vor_index_t nb[3], const vo
 /* Puts id p on the free list: d->free_site holds the most recent free id
  * plus one (0: none, so that a zeroed vor_t has no free id), and each
  * free id's home slot the same for the next one. */
-static void free_id(vor_t *d, uint32_t p)
+void vor__free_id(vor_t *d, uint32_t p)
 {
     if (d->max_sites >= 2u) { /* one site: no slots, and no other free id */
         vor__tri_t *t = &d->triangles[p];
@@ -615,8 +615,20 @@ uint32_t vor__unlink_vertex(vor_t *d, uint32_t site)
 uint32_t vor__unlink_site(vor_t *d, uint32_t site)
 {
     uint32_t other = vor__unlink_vertex(d, site);
-    free_id(d, site);
+    vor__free_id(d, site);
     return other;
+}
+
+void vor__unlinked(vor_t *d, uint32_t site, uint32_t other)
+{
+    if (d->vertex_count < 2u) {
+        d->bucket_rebuild_at = 2; /* the grid is redrawn with the second site */
+    } else {
+        vor__grid_forget(d, site, other);
+    }
+    d->last_site = (d->last_site == site) ? other : d->last_site;
+    d->revision++;
+    vor__topology_changed(d);
 }
 
 int vor_remove(vor_t *d, uint32_t site)
@@ -630,15 +642,7 @@ int vor_remove(vor_t *d, uint32_t site)
             return err;
         }
     }
-    uint32_t other = vor__unlink_site(d, site);
-    if (d->vertex_count < 2u) {
-        d->bucket_rebuild_at = 2; /* the grid is redrawn with the second site */
-    } else {
-        vor__grid_forget(d, site, other);
-    }
-    d->last_site = (d->last_site == site) ? other : d->last_site;
-    d->revision++;
-    vor__topology_changed(d);
+    vor__unlinked(d, site, vor__unlink_site(d, site));
     return VOR_OK;
 }
 

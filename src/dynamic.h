@@ -37,4 +37,14 @@ uint32_t vor__unlink_vertex(vor_t *d, uint32_t site);
  * revision are the caller's (vor_remove; the constrained mesh, cdt.c). */
 uint32_t vor__unlink_site(vor_t *d, uint32_t site);
 
+/* Puts id p on the free list (vor_insert takes the most recent first);
+ * its home slot (p no vertex) links the list. */
+void vor__free_id(vor_t *d, uint32_t p);
+
+/* The upkeep once vertex `site` left the mesh (vor__unlink_vertex gave
+ * `other`): the bucket grid forgets it, the last site moves off it, the
+ * revision and the motion cache's epoch change (vor_remove,
+ * vor_power_remove). */
+void vor__unlinked(vor_t *d, uint32_t site, uint32_t other);
+
 #endif

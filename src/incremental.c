@@ -258,7 +258,7 @@ static bool same_point(const vor_point_t *a, const vor_point_t *b)
  * and the id's empty home slot holds the same for the next (one site has
  * no slots, and then no other free id). Here, not in dynamic.c, so that a
  * firmware that never removes links no removal code. */
-static void take_free_id(vor_t *d)
+void vor__take_free_id(vor_t *d)
 {
     if (d->free_site != 0u) {
         uint32_t p = d->free_site - 1u;
@@ -295,7 +295,7 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
     if (d->vertex_count == 0u) {
         /* no triangle yet: with max_sites 1 the arena has no triangle
          * slots at all, so none is touched */
-        take_free_id(d);
+        vor__take_free_id(d);
         d->sites[p] = point;
     } else if (d->vertex_count == 1u) {
         if (same_point(&d->sites[d->last_site], &point)) {
@@ -304,7 +304,7 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
             }
             return VOR_ERR_DUPLICATE;
         }
-        take_free_id(d);
+        vor__take_free_id(d);
         d->sites[p] = point;
         vor__make_edge(d, d->last_site, p);
     } else {
@@ -346,7 +346,7 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
             vor__tally_restore(d, &tally);
             return VOR_ERR_NOMEM;
         }
-        take_free_id(d); /* p's home slot holds the list's link */
+        vor__take_free_id(d); /* p's home slot holds the list's link */
         vor__insert_at(d, root, p);
     }
     vor__box_add(d, &point, d->vertex_count == 0u);

@@ -28,4 +28,9 @@ void vor__insert_at(vor_t *d, vor_index_t root, uint32_t p);
  * and third vertices; p's home slot holds another of the three. */
 vor_index_t vor__split_triangle(vor_t *d, vor_index_t root, uint32_t p);
 
+/* Takes the most recently freed id off the free list (vor__free_id,
+ * dynamic.c): the id vor_insert and vor_power_insert hand out next is
+ * d->free_site - 1 when free_site is not 0. */
+void vor__take_free_id(vor_t *d);
+
 #endif

@@ -697,6 +697,239 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
     return insert_vertex(pd, root, p, under, on_line);
 }
 
+/* After site p was placed (`placed`: VOR_OK, a vertex, or
+ * PLACED_HIDDEN), `vertices` and `hidden` the counts before: the vertices
+ * hidden since leave the bucket grid (the newest entries of the hidden
+ * list; p, when hidden, was never in it), and a new vertex enters it and
+ * the box. Two vertices stay when there were two: a hidden one leaves a
+ * heavier one at its point or hides under two others. */
+static void grid_upkeep(vor_power_t *pd, uint32_t p, int placed, uint32_t vertices,
+                        uint32_t hidden)
+{
+    vor_t *d = &pd->mesh;
+    if (vertices >= 2u) {
+        uint32_t h = pd->first_hidden;
+        for (uint32_t k = hidden; (k < pd->hidden_count) && (h != 0u); k++) {
+            if ((h - 1u) != p) {
+                vor__grid_forget(d, h - 1u, d->last_site);
+            }
+            h = d->triangles[h - 1u].n[1];
+        }
+    }
+    if (placed == VOR_OK) {
+        vor__box_add(d, &d->sites[p], d->vertex_count == 1u);
+        if (d->vertex_count >= 2u) {
+            vor__grid_add(d, p);
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* Removal                                                             */
+
+/* Takes hidden site h off the hidden list: a look along it. */
+static void unhide(vor_power_t *pd, uint32_t h)
+{
+    vor__tri_t *tri = pd->mesh.triangles;
+    vor_index_t next = tri[h].n[1];
+    if (pd->first_hidden == (h + 1u)) {
+        pd->first_hidden = next;
+    } else {
+        uint32_t k = pd->first_hidden;
+        for (uint32_t left = pd->hidden_count; (left > 0u) && (k != 0u); left--) {
+            if (tri[k - 1u].n[1] == (h + 1u)) {
+                tri[k - 1u].n[1] = next;
+                break;
+            }
+            k = tri[k - 1u].n[1];
+        }
+    }
+    pd->hidden_count--;
+}
+
+static bool in_box(const vor_point_t *p, const vor_point_t *lo, const vor_point_t *hi)
+{
+    return (lo->x <= p->x) && (p->x <= hi->x) && (lo->y <= p->y) && (p->y <= hi->y);
+}
+
+static void widen(vor_point_t *lo, vor_point_t *hi, const vor_point_t *p)
+{
+    lo->x = (p->x < lo->x) ? p->x : lo->x;
+    lo->y = (p->y < lo->y) ? p->y : lo->y;
+    hi->x = (p->x > hi->x) ? p->x : hi->x;
+    hi->y = (p->y > hi->y) ? p->y : hi->y;
+}
+
+/* Moves the hidden sites in the closed box lo..hi off the hidden list to
+ * a list of their own (tag PENDING, the same links); returns its first
+ * id plus one (0: none). A look along the hidden list. */
+static uint32_t take_hidden_in(vor_power_t *pd, const vor_point_t *lo, const vor_point_t *hi)
+{
+    vor__tri_t *tri = pd->mesh.triangles;
+    const vor_point_t *s = pd->mesh.sites;
+    uint32_t pending = 0;
+    uint32_t kept = 0; /* the last entry left on the list, plus one (0: none) */
+    uint32_t h = pd->first_hidden;
+    for (uint32_t left = pd->hidden_count; (left > 0u) && (h != 0u); left--) {
+        uint32_t id = h - 1u;
+        uint32_t next = tri[id].n[1];
+        if (in_box(&s[id], lo, hi)) {
+            if (kept == 0u) {
+                pd->first_hidden = next;
+            } else {
+                tri[kept - 1u].n[1] = (vor_index_t)next;
+            }
+            empty_slot(pd, id, (vor_index_t)pending, PENDING);
+            pending = h;
+            pd->hidden_count--;
+        } else {
+            kept = h;
+        }
+        h = next;
+    }
+    return pending;
+}
+
+/* A removal collects up to this many of the vertex's neighbours on the
+ * stack, for the checks after it; a larger star (rare) checks every
+ * vertex instead. */
+#define RING_MAX 16u
+
+/* After a vertex left a mesh with area: is a triangle of area left? The
+ * hull's corners all stay when the vertex was not on the hull (a corner
+ * off the line of the others would be one); else a neighbour with a
+ * triangle of area tells, and failing that a look at every id for a
+ * vertex off the line of two. */
+static bool keeps_area(const vor_power_t *pd, const vor_index_t *ring, uint32_t count, bool hull)
+{
+    const vor_t *d = &pd->mesh;
+    if (d->vertex_count < 3u) {
+        return false;
+    }
+    if (!hull) {
+        return true;
+    }
+    for (uint32_t i = 0; (i < count) && (i < RING_MAX); i++) {
+        if (vor__site_in_mesh(d, ring[i]) && has_area(d, ring[i])) {
+            return true;
+        }
+    }
+    const vor_point_t *s = d->sites;
+    uint32_t a = d->last_site;
+    uint32_t b = line_mate(d);
+    for (uint32_t v = 0; v < d->site_count; v++) {
+        if (vor__site_in_mesh(d, v) && (vor__orient2d_sign(&s[a], &s[b], &s[v]) != 0)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* After a vertex left a mesh that keeps area: its ears may be flat, and
+ * a flat ear may leave a T-junction (a vertex with all its triangles
+ * flat has a cell of no area, which may stay). Every new triangle has
+ * its corners among the former neighbours in ring[0..count): their stars
+ * are settled as an insertion's is (every vertex's when the ring did not
+ * fit). */
+static void settle_ring(vor_power_t *pd, const vor_index_t *ring, uint32_t count)
+{
+    vor_t *d = &pd->mesh;
+    bool all = count > RING_MAX;
+    for (uint32_t i = 0; (i < count) && !all && !pd->flats; i++) {
+        pd->flats = vor__site_in_mesh(d, ring[i]) && star_flat(d, ring[i]);
+    }
+    pd->flats = pd->flats || all;
+    if (!pd->flats) {
+        return;
+    }
+    uint32_t end = all ? d->site_count : count;
+    for (uint32_t i = 0; i < end; i++) {
+        uint32_t v = all ? i : ring[i];
+        if (vor__site_in_mesh(d, v)) {
+            uint32_t hidden = pd->hidden_count;
+            (void)settle_star(pd, (vor_index_t)v);
+            grid_upkeep(pd, VOR__NONE, PLACED_HIDDEN, d->vertex_count, hidden);
+        }
+    }
+}
+
+/* Removes vertex v. The lifted surface changes only over v's star, where
+ * it rises to the lower hull of the neighbours: the hidden sites there
+ * are the only ones that may come out, and those in the box of v and
+ * its neighbours (a superset; on a line, of v and its neighbours along
+ * it) are taken off the hidden list, v is unlinked (the removal's ears
+ * with the power test), and each is placed again by the insertion,
+ * which hides it or makes it a vertex exactly. */
+static void remove_vertex(vor_power_t *pd, uint32_t v)
+{
+    vor_t *d = &pd->mesh;
+    const vor_point_t *s = d->sites;
+    vor_point_t lo = s[v];
+    vor_point_t hi = s[v];
+    vor_index_t ring[RING_MAX];
+    uint32_t count = 0;
+    bool hull = false;
+    if ((d->vertex_count >= 2u) && pd->area) {
+        vor_neighbour_iter_t it;
+        uint32_t n = v;
+        uint32_t third = v;
+        vor__fan_begin(&it, d, v);
+        while (vor__fan_next(&it, &n, &third)) {
+            widen(&lo, &hi, &s[n]);
+            hull = hull || (third == VOR__INFINITE);
+            if (count < RING_MAX) {
+                ring[count] = (vor_index_t)n;
+            }
+            count++;
+        }
+    } else if (d->vertex_count >= 2u) {
+        uint32_t a = (d->last_site != v) ? d->last_site : line_mate(d);
+        uint32_t b = (d->last_site != v) ? line_mate(d) : d->last_site;
+        bool vertical = s[a].x == s[b].x;
+        for (unsigned k = 0; k < 2u; k++) {
+            uint32_t u = line_neighbour(pd, v, vertical, k == 0u);
+            if (u != VOR__NONE) {
+                widen(&lo, &hi, &s[u]);
+            }
+        }
+    } else {
+        /* one vertex: the hidden sites are at its point */
+    }
+    uint32_t pending = take_hidden_in(pd, &lo, &hi);
+    vor__unlinked(d, v, vor__unlink_site(d, v));
+    if (pd->area) {
+        pd->area = keeps_area(pd, ring, count, hull);
+        if (pd->area) {
+            settle_ring(pd, ring, count);
+        }
+    }
+    uint32_t twin = VOR__NONE;
+    for (uint32_t left = d->site_count; (left > 0u) && (pending != 0u); left--) {
+        uint32_t c = pending - 1u;
+        pending = d->triangles[c].n[1];
+        uint32_t vertices = d->vertex_count;
+        uint32_t hidden = pd->hidden_count;
+        /* no twins: the sites are distinct, so place only hides or adds.
+         * Only lying predicates (fault injection) can have let a twin in
+         * and find it now: c stays a site, hidden. */
+        int placed = place(pd, c, d->last_site, 0, &twin);
+        if (placed == VOR_ERR_DUPLICATE) {
+            hide(pd, c);
+            placed = PLACED_HIDDEN;
+        }
+        grid_upkeep(pd, c, placed, vertices, hidden);
+    }
+}
+
+/* The power distance of q to site a against site b's: negative when a is
+ * strictly nearer; of equal ones, the smaller id first. */
+static bool nearer(const vor_power_t *pd, const vor_point_t *q, uint32_t a, uint32_t b)
+{
+    const vor_point_t *s = pd->mesh.sites;
+    int c = vor__power_closer_sign(q, &s[a], pd->weights[a], &s[b], pd->weights[b], NULL);
+    return (c < 0) || ((c == 0) && (a < b));
+}
+
 /* ------------------------------------------------------------------ */
 /* Public calls                                                        */
 
@@ -737,10 +970,11 @@ int vor_power_insert(vor_power_t *pd, vor_point_t point, int64_t w, uint32_t *si
         return VOR_ERR_ARG;
     }
     vor_t *d = &pd->mesh;
-    uint32_t p = d->site_count;
+    bool reused = d->free_site != 0u; /* a removed site's id, as vor_insert */
+    uint32_t p = reused ? (d->free_site - 1u) : d->site_count;
     if (p >= d->max_sites) {
         /* no free slot to place it in: only tell a duplicate */
-        for (uint32_t v = 0; v < p; v++) {
+        for (uint32_t v = 0; v < d->site_count; v++) {
             if ((vor_power_hidden(pd, v) >= 0) && (d->sites[v].x == point.x) &&
                 (d->sites[v].y == point.y) && (pd->weights[v] == w)) {
                 if (site != NULL) {
@@ -753,6 +987,7 @@ int vor_power_insert(vor_power_t *pd, vor_point_t point, int64_t w, uint32_t *si
     }
     vor_point_t saved_point = d->sites[p];
     int64_t saved_weight = pd->weights[p];
+    uint32_t saved_free = d->free_site;
     vor__tally_t tally;
     vor__tally_save(&tally, d);
     d->sites[p] = point;
@@ -760,36 +995,20 @@ int vor_power_insert(vor_power_t *pd, vor_point_t point, int64_t w, uint32_t *si
     uint32_t vertices = d->vertex_count;
     uint32_t hidden = pd->hidden_count;
     uint32_t twin = VOR__NONE;
-    int placed = place(pd, p, d->last_site, p, &twin);
+    vor__take_free_id(d); /* p's home slot holds the list's link */
+    int placed = place(pd, p, d->last_site, d->site_count, &twin);
     if (placed == VOR_ERR_DUPLICATE) {
         d->sites[p] = saved_point;
         pd->weights[p] = saved_weight;
+        d->free_site = saved_free;
         vor__tally_restore(d, &tally);
         if (site != NULL) {
             *site = twin;
         }
         return VOR_ERR_DUPLICATE;
     }
-    d->site_count++;
-    if (vertices >= 2u) {
-        /* the vertices this insertion hid leave the bucket grid: the
-         * newest on the list (p, when hidden, was never in the grid). Two
-         * vertices stay: a hidden one leaves a heavier one at its point
-         * or hides under two others. */
-        uint32_t h = pd->first_hidden;
-        for (uint32_t k = hidden; (k < pd->hidden_count) && (h != 0u); k++) {
-            if ((h - 1u) != p) {
-                vor__grid_forget(d, h - 1u, d->last_site);
-            }
-            h = d->triangles[h - 1u].n[1];
-        }
-    }
-    if (placed == VOR_OK) {
-        vor__box_add(d, &point, d->vertex_count == 1u);
-        if (d->vertex_count >= 2u) {
-            vor__grid_add(d, p);
-        }
-    }
+    d->site_count += reused ? 0u : 1u;
+    grid_upkeep(pd, p, placed, vertices, hidden);
     if (site != NULL) {
         *site = p;
     }
@@ -894,8 +1113,131 @@ int vor_power_hidden(const vor_power_t *pd, uint32_t site)
     if (vor__site_in_mesh(d, site)) {
         return 0;
     }
-    const vor__tri_t *t = &d->triangles[site]; /* two sites at least: slots exist */
+    if (d->max_sites < 2u) {
+        return VOR_ERR_ARG; /* no slots: the one id is free */
+    }
+    const vor__tri_t *t = &d->triangles[site];
     return (vor__slot_empty(t) && (t->n[2] == HIDDEN)) ? 1 : VOR_ERR_ARG;
+}
+
+int vor_power_remove(vor_power_t *pd, uint32_t site)
+{
+    int hidden = vor_power_hidden(pd, site);
+    if (hidden < 0) {
+        return VOR_ERR_ARG;
+    }
+    vor_t *d = &pd->mesh;
+    if (hidden == 1) {
+        /* the surface does not change: only the id goes */
+        unhide(pd, site);
+        vor__free_id(d, site);
+    } else {
+        remove_vertex(pd, site);
+    }
+    return VOR_OK;
+}
+
+int vor_power_move(vor_power_t *pd, uint32_t site, vor_point_t p, int64_t w, uint32_t *existing)
+{
+    if (vor_power_hidden(pd, site) < 0) {
+        return VOR_ERR_ARG;
+    }
+    const vor_t *d = &pd->mesh;
+    const vor_point_t *s = d->sites;
+    if (same_point(&s[site], &p) && (pd->weights[site] == w)) {
+        return VOR_OK;
+    }
+    /* a twin at the new place, before anything changes: a look at every
+     * id (the smallest one) */
+    for (uint32_t v = 0; v < d->site_count; v++) {
+        if ((v != site) && same_point(&s[v], &p) && (pd->weights[v] == w) &&
+            (vor_power_hidden(pd, v) >= 0)) {
+            if (existing != NULL) {
+                *existing = v;
+            }
+            return VOR_ERR_DUPLICATE;
+        }
+    }
+    /* removed, its id at the head of the free list, which the insertion
+     * takes: the same id, and no duplicate or full diagram to refuse it */
+    (void)vor_power_remove(pd, site);
+    uint32_t id = site;
+    int err = vor_power_insert(pd, p, w, &id);
+    VOR_ASSERT((err == VOR_OK) && (id == site));
+    return err;
+}
+
+/*
+ * The power distance of q to site i is |q|^2 + (h_i - 2 q.p_i), h_i =
+ * |p_i|^2 - w_i the lifted height: a linear function of the lifted point,
+ * increasing upwards. Over the convex hull of the sites, the lower surface
+ * F is convex and piecewise linear on the triangulation, so g(x) = F(x) -
+ * 2 q.x is convex, and at each vertex it is that vertex's power distance
+ * less |q|^2. A vertex v that is not least: the segment from v to a least
+ * one stays in the hull, and g falls along it from v; it leaves v along an
+ * edge or into a triangle of area of v's star, on which g is linear, so
+ * another corner of that edge or triangle, a neighbour of v, is strictly
+ * nearer. The walk from neighbour to strictly nearer neighbour ends, each
+ * vertex seen at most once, at a least vertex. The least vertices are a
+ * face of the lower hull, which the triangulation covers: when there are
+ * several, the one found has a neighbour as near, and then every vertex is
+ * looked at for the smallest id (O(n), on ties only). A hidden site is
+ * never strictly nearer than every vertex (its lifted point is on or above
+ * the surface) but can tie: the hidden list is looked at (O(hidden)).
+ * While every vertex is on one line (no triangle of area) the mesh's flat
+ * triangles do not carry that argument: every vertex is looked at.
+ */
+int vor_power_nearest(const vor_power_t *pd, vor_point_t q, uint32_t hint, uint32_t *site)
+{
+    if ((pd == NULL) || (site == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    const vor_t *d = &pd->mesh;
+    if (d->vertex_count == 0u) {
+        return VOR_ERR_EMPTY;
+    }
+    if ((hint != VOR_NO_HINT) && (vor_power_hidden(pd, hint) < 0)) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t best = d->last_site;
+    if ((hint != VOR_NO_HINT) && vor__site_in_mesh(d, hint)) {
+        best = hint;
+    } else if (d->vertex_count >= 2u) {
+        best = vor__grid_start(d, q.x, q.y); /* also for a hidden hint */
+    } else {
+        /* the only vertex */
+    }
+    bool tie = !pd->area;
+    for (uint32_t steps = 0; (steps < d->vertex_count) && pd->area; steps++) {
+        vor_neighbour_iter_t it;
+        uint32_t n = best;
+        uint32_t third = best;
+        uint32_t next = best;
+        tie = false;
+        vor__fan_begin(&it, d, best);
+        while (vor__fan_next(&it, &n, &third)) {
+            int c = vor__power_closer_sign(&q, &d->sites[n], pd->weights[n], &d->sites[best],
+                                           pd->weights[best], NULL);
+            tie = tie || (c == 0);
+            next = ((c < 0) && nearer(pd, &q, n, next)) ? n : next;
+        }
+        if (next == best) {
+            break;
+        }
+        best = next;
+    }
+    for (uint32_t v = 0; tie && (v < d->site_count); v++) {
+        best = (vor__site_in_mesh(d, v) && nearer(pd, &q, v, best)) ? v : best;
+    }
+    uint32_t h = pd->first_hidden;
+    for (uint32_t left = pd->hidden_count; (left > 0u) && (h != 0u); left--) {
+        if (nearer(pd, &q, h - 1u, best)) {
+            best = h - 1u;
+        }
+        h = d->triangles[h - 1u].n[1];
+    }
+    *site = best;
+    return VOR_OK;
 }
 
 int vor_power_hidden_begin(vor_power_hidden_iter_t *it, const vor_power_t *pd)

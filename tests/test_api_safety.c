@@ -1032,6 +1032,66 @@ static void check_power_reads(void)
     CHECK(bad == 0 && power_unchanged(), "power cells: %u wrong answers", bad);
 }
 
+/* Remove, move and nearest: NULLs, ids that are no site (unused, a
+ * duplicate's, removed, huge), a move onto another site (with and
+ * without *existing), bad hints; every failure leaves the object and the
+ * arena as they were and writes no id. Then the good calls. */
+static void check_power_dynamic(void)
+{
+    make_power_scene();
+    CHECK(vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
+              vor_power_build(&power, power_points, power_weights, POWER_N, NULL) == VOR_OK,
+          "power: the scene");
+    power_snapshot();
+    unsigned bad = 0;
+    uint32_t out = 77;
+    const uint32_t no_site[5] = {POWER_N - 1u, POWER_N, SAFE_SITES, VOR_NO_HINT - 1u, VOR_NO_HINT};
+    vor_point_t q = {1, 2};
+    bad += vor_power_remove(NULL, 0) != VOR_ERR_ARG;
+    bad += vor_power_move(NULL, 0, q, 0, &out) != VOR_ERR_ARG;
+    bad += vor_power_nearest(NULL, q, VOR_NO_HINT, &out) != VOR_ERR_ARG;
+    bad += vor_power_nearest(&power, q, VOR_NO_HINT, NULL) != VOR_ERR_ARG;
+    for (unsigned k = 0; k < 5u; k++) {
+        bad += vor_power_remove(&power, no_site[k]) != VOR_ERR_ARG;
+        bad += vor_power_move(&power, no_site[k], q, 0, &out) != VOR_ERR_ARG;
+        bad += (no_site[k] != VOR_NO_HINT) &&
+               (vor_power_nearest(&power, q, no_site[k], &out) != VOR_ERR_ARG);
+    }
+    /* onto another site (point and weight): refused with its id */
+    bad += vor_power_move(&power, 0, power_points[1], power_weights[1], NULL) != VOR_ERR_DUPLICATE;
+    bad += out != 77;
+    bad += vor_power_move(&power, 0, power_points[3], power_weights[3], &out) != VOR_ERR_DUPLICATE;
+    bad += out != 3u;
+    bad += vor_power_move(&power, POWER_N - 2u, power_points[10], power_weights[10], &out) !=
+           VOR_ERR_DUPLICATE; /* the hidden site onto the heavy one */
+    bad += out != 10u;
+    /* onto itself: nothing changes */
+    bad += vor_power_move(&power, 4, power_points[4], power_weights[4], &out) != VOR_OK;
+    CHECK(bad == 0 && out == 10u && power_unchanged(),
+          "power remove, move, nearest: %u wrong answers, or a failure wrote", bad);
+
+    /* the good calls: every site removed, the ids freed, then moved ones */
+    bad = 0;
+    bad += vor_power_nearest(&power, power_points[10], POWER_N - 2u, &out) != VOR_OK;
+    bad += out != 10u; /* the heavy site, from a hidden hint */
+    bad += vor_power_remove(&power, POWER_N - 2u) != VOR_OK;
+    bad += vor_power_remove(&power, POWER_N - 2u) != VOR_ERR_ARG;
+    bad += vor_power_hidden(&power, POWER_N - 2u) != VOR_ERR_ARG;
+    bad += vor_power_nearest(&power, q, POWER_N - 2u, &out) != VOR_ERR_ARG;
+    bad += vor_power_move(&power, 10, (vor_point_t){-5, -5}, 7, &out) != VOR_OK;
+    bad += vor_power_hidden(&power, 10) != 0;
+    bad += vor_power_validate(&power, NULL) != VOR_OK;
+    for (uint32_t i = 0; i + 2u < POWER_N; i++) {
+        bad += vor_power_remove(&power, i) != VOR_OK;
+        bad += vor_power_validate(&power, NULL) != VOR_OK;
+    }
+    bad += vor_power_nearest(&power, q, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
+    out = 77;
+    bad += vor_power_insert(&power, q, 0, &out) != VOR_OK;
+    bad += out != POWER_N - 3u; /* the most recently freed id */
+    CHECK(bad == 0, "power remove, move, nearest: %u wrong answers to good calls", bad);
+}
+
 /* A vor_power_t vor_power_init never saw, zeroed as static storage is:
  * empty and full, every call refused or empty, nothing written. */
 static void check_power_zeroed(void)
@@ -1047,6 +1107,10 @@ static void check_power_zeroed(void)
     bad += vor_power_hidden(&zeroed, 0) != VOR_ERR_ARG;
     bad += vor_power_hidden(&zeroed, 1) != VOR_ERR_ARG;
     bad += vor_power_validate(&zeroed, NULL) != VOR_OK;
+    bad += vor_power_remove(&zeroed, 0) != VOR_ERR_ARG;
+    bad += vor_power_move(&zeroed, 0, (vor_point_t){1, 1}, 0, &out) != VOR_ERR_ARG;
+    bad += vor_power_nearest(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
+    bad += vor_power_nearest(&zeroed, (vor_point_t){1, 1}, 0, &out) != VOR_ERR_EMPTY;
     vor_power_hidden_iter_t it;
     bad += vor_power_hidden_begin(&it, &zeroed) != VOR_OK;
     bad += vor_power_hidden_next(&it, &out) != 0;
@@ -1080,5 +1144,6 @@ void test_api_safety(void)
     TEST_CASE("power/init") check_power_init();
     TEST_CASE("power/insert_and_build") check_power_insert_and_build();
     TEST_CASE("power/reads") check_power_reads();
+    TEST_CASE("power/dynamic") check_power_dynamic();
     TEST_CASE("power/zeroed") check_power_zeroed();
 }

@@ -33,6 +33,7 @@ static uint8_t saved[sizeof arena];
 typedef struct {
     vor_point_t p[POWER_SITES];
     int64_t w[POWER_SITES];
+    bool dead[POWER_SITES]; /* removed ids (the dynamic tests) */
     uint32_t n;
 } scene_t;
 
@@ -105,11 +106,16 @@ static bool same_tris(const tri_t *a, uint32_t na, const tri_t *b, uint32_t nb)
     return true;
 }
 
-/* The first id with the same point and weight as i (i itself if none). */
+/* The first id with the same point and weight as i (i itself if none);
+ * for a removed id, none (UINT32_MAX: it is no site, as a duplicate). */
 static uint32_t first_twin(const scene_t *s, uint32_t i)
 {
+    if (s->dead[i]) {
+        return UINT32_MAX;
+    }
     for (uint32_t j = 0; j < i; j++) {
-        if ((s->p[j].x == s->p[i].x) && (s->p[j].y == s->p[i].y) && (s->w[j] == s->w[i])) {
+        if (!s->dead[j] && (s->p[j].x == s->p[i].x) && (s->p[j].y == s->p[i].y) &&
+            (s->w[j] == s->w[i])) {
             return j;
         }
     }
@@ -769,6 +775,380 @@ static void check_line_build(void)
     }
 }
 
+/* ------------------------------------------------------------------ */
+/* Removal, moves and the nearest site                                 */
+
+/* A point and weight of scene family `family`:
+ *   0 random (small and wide spans), 1 grid with equal weights,
+ *   2 grid with small weights, 3 coincident (two points, many weights),
+ *   4 far (coordinates near 2^30, weights near 2^61), 5 on one line,
+ *   6 on one line with a point off it now and then.
+ * Grids use even coordinates, so that integer queries hit midpoints. */
+static void family_site(unsigned family, test_rng_t *rng, vor_point_t *p, int64_t *w)
+{
+    int32_t t = test_rng_range(rng, -6, 6);
+    switch (family) {
+    case 0: {
+        int32_t span = (test_rng_u32(rng) % 2u == 0u) ? 4 : 1000;
+        p->x = test_rng_range(rng, -span, span);
+        p->y = test_rng_range(rng, -span, span);
+        *w = (int64_t)(test_rng_u32(rng) % (uint32_t)(span * span / 2 + 1));
+        break;
+    }
+    case 1:
+    case 2:
+        p->x = 2 * test_rng_range(rng, 0, 3);
+        p->y = 2 * test_rng_range(rng, 0, 3);
+        *w = (family == 1u) ? 5 : test_rng_range(rng, 0, 4);
+        break;
+    case 3:
+        p->x = test_rng_range(rng, 0, 1);
+        p->y = test_rng_range(rng, 0, 1);
+        *w = test_rng_range(rng, 0, 6);
+        break;
+    case 4:
+        p->x = (int32_t)(1073741824 - test_rng_range(rng, 0, 3) * 1000000);
+        p->y = (int32_t)(-1073741824 + test_rng_range(rng, 0, 3) * 1000000);
+        *w = ((int64_t)1 << 61) + (int64_t)test_rng_range(rng, 0, 1 << 30) * 4096;
+        break;
+    default:
+        p->x = 2 * t;
+        p->y = 3 * t;
+        *w = test_rng_range(rng, 0, 40);
+        if ((family == 6u) && (test_rng_u32(rng) % 5u == 0u)) {
+            p->y += test_rng_range(rng, -2, 2);
+        }
+        break;
+    }
+}
+
+/* The site of least power distance to q by a scan (ties: smaller id). */
+static uint32_t brute_nearest(const scene_t *s, vor_point_t q)
+{
+    uint32_t best = UINT32_MAX;
+    for (uint32_t i = 0; i < s->n; i++) {
+        if (s->dead[i]) {
+            continue;
+        }
+        int c = (best == UINT32_MAX) ? -1 : vor_power_closer(q, s->p[i], s->w[i], s->p[best], s->w[best]);
+        best = (c < 0) ? i : best; /* ids rise: a tie keeps the smaller */
+    }
+    return best;
+}
+
+/* vor_power_nearest against the scan: at every site's point, at integer
+ * points over the scene's box and a margin (grid midpoints among them),
+ * and at random points; with no hint and with a hint. */
+static void check_nearest(const vor_power_t *pd, const scene_t *s, test_rng_t *rng)
+{
+    uint32_t live = 0;
+    int64_t lo_x = INT32_MAX;
+    int64_t lo_y = INT32_MAX;
+    int64_t hi_x = INT32_MIN;
+    int64_t hi_y = INT32_MIN;
+    for (uint32_t i = 0; i < s->n; i++) {
+        if (!s->dead[i]) {
+            live++;
+            lo_x = (s->p[i].x < lo_x) ? s->p[i].x : lo_x;
+            lo_y = (s->p[i].y < lo_y) ? s->p[i].y : lo_y;
+            hi_x = (s->p[i].x > hi_x) ? s->p[i].x : hi_x;
+            hi_y = (s->p[i].y > hi_y) ? s->p[i].y : hi_y;
+        }
+    }
+    uint32_t got = 12345;
+    if (live == 0u) {
+        CHECK(vor_power_nearest(pd, (vor_point_t){0, 0}, VOR_NO_HINT, &got) == VOR_ERR_EMPTY &&
+                  (got == 12345u),
+              "nearest: empty");
+        return;
+    }
+    uint32_t bad = 0;
+    for (uint32_t k = 0; k < s->n + 80u; k++) {
+        vor_point_t q;
+        if (k < s->n) {
+            if (s->dead[k]) {
+                continue;
+            }
+            q = s->p[k];
+        } else if ((hi_x - lo_x <= 16) && (hi_y - lo_y <= 16) && (k < s->n + 64u)) {
+            uint32_t j = k - s->n; /* an 8 x 8 raster over the box and a margin */
+            q.x = (int32_t)(lo_x - 1 + (int64_t)(j % 8u) * (hi_x - lo_x + 2) / 7);
+            q.y = (int32_t)(lo_y - 1 + (int64_t)(j / 8u) * (hi_y - lo_y + 2) / 7);
+        } else {
+            q.x = (int32_t)(lo_x + (int64_t)(test_rng_u32(rng) % (uint32_t)(hi_x - lo_x + 1)));
+            q.y = (int32_t)(lo_y + (int64_t)(test_rng_u32(rng) % (uint32_t)(hi_y - lo_y + 1)));
+        }
+        uint32_t want = brute_nearest(s, q);
+        uint32_t hint = (uint32_t)(test_rng_u32(rng) % s->n);
+        hint = s->dead[hint] ? VOR_NO_HINT : hint;
+        uint32_t a = UINT32_MAX;
+        uint32_t b = UINT32_MAX;
+        int ea = vor_power_nearest(pd, q, VOR_NO_HINT, &a);
+        int eb = vor_power_nearest(pd, q, hint, &b);
+        if ((ea != VOR_OK) || (eb != VOR_OK) || (a != want) || (b != want)) {
+            if (bad++ == 0u) {
+                CHECK(false, "nearest (%d, %d): %u / %u from %u, want %u", q.x, q.y, a, b, hint,
+                      want);
+            }
+        }
+    }
+    CHECK(bad == 0u, "%u nearest queries wrong", bad);
+    /* a removed or unused id as the hint */
+    for (uint32_t i = 0; i <= s->n; i++) {
+        if ((i == s->n) || s->dead[i]) {
+            got = 777;
+            CHECK((vor_power_nearest(pd, s->p[0], i, &got) == VOR_ERR_ARG) && (got == 777u),
+                  "nearest: hint %u", i);
+            break;
+        }
+    }
+}
+
+static bool same_object(const vor_power_t *a, const vor_power_t *b)
+{
+    return (a->mesh.site_count == b->mesh.site_count) &&
+           (a->mesh.vertex_count == b->mesh.vertex_count) &&
+           (a->mesh.free_site == b->mesh.free_site) && (a->mesh.last_site == b->mesh.last_site) &&
+           (a->hidden_count == b->hidden_count) && (a->first_hidden == b->first_hidden) &&
+           (a->area == b->area) && (a->flats == b->flats);
+}
+
+static bool same_arena(const uint8_t *mem, size_t bytes)
+{
+    bool same = true;
+    for (size_t i = 0; i < bytes; i++) {
+        same = same && (saved[i] == mem[i]);
+    }
+    return same;
+}
+
+/* Random insertions, removals and moves on one scene family, up to
+ * POWER_BRUTE ids: after each, the brute-force oracle over the live
+ * sites (ids as handed out, removed ones no sites), the nearest site
+ * against a scan, and the ids against a model of the free list (most
+ * recently freed first). Failing calls leave the arena as it was. */
+static void check_dynamic(unsigned family, uint64_t seed)
+{
+    static vor_power_t pd;
+    static scene_t model;
+    static uint8_t mem[VOR_POWER_ARENA_BYTES(POWER_BRUTE)] __attribute__((aligned(8)));
+    uint32_t free_ids[POWER_BRUTE];
+    uint32_t free_count = 0;
+    test_rng_t rng;
+    test_rng_seed(&rng, seed);
+    CHECK(vor_power_init(&pd, mem, sizeof mem, POWER_BRUTE) == VOR_OK, "init");
+    model.n = 0;
+    for (uint32_t step = 0; step < 160u; step++) {
+        unsigned long before = test_failures();
+        uint32_t live = model.n - free_count;
+        unsigned op = (live == 0u) ? 0u : (test_rng_u32(&rng) % 8u);
+        vor_point_t p;
+        int64_t w;
+        family_site(family, &rng, &p, &w);
+        uint32_t twin = UINT32_MAX;
+        for (uint32_t i = model.n; i > 0u; i--) {
+            if (!model.dead[i - 1u] && (model.p[i - 1u].x == p.x) && (model.p[i - 1u].y == p.y) &&
+                (model.w[i - 1u] == w)) {
+                twin = i - 1u;
+            }
+        }
+        uint32_t id = UINT32_MAX;
+        if (op < 3u) { /* insert */
+            int err = vor_power_insert(&pd, p, w, &id);
+            if (twin != UINT32_MAX) {
+                CHECK((err == VOR_ERR_DUPLICATE) && (id == twin), "step %u: duplicate %d %u", step,
+                      err, id);
+            } else if ((free_count == 0u) && (model.n == POWER_BRUTE)) {
+                CHECK(err == VOR_ERR_FULL, "step %u: full %d", step, err);
+            } else {
+                uint32_t want = (free_count > 0u) ? free_ids[--free_count] : model.n++;
+                CHECK((err == VOR_OK) && (id == want), "step %u: insert %d, id %u want %u", step,
+                      err, id, want);
+                model.p[want] = p;
+                model.w[want] = w;
+                model.dead[want] = false;
+            }
+        } else if (op < 6u) { /* remove: now and then an id that is no site */
+            uint32_t site = (uint32_t)(test_rng_u32(&rng) % (model.n + 1u));
+            if ((site == model.n) || model.dead[site]) {
+                test_copy_bytes(saved, mem, sizeof mem);
+                vor_power_t copy = pd;
+                CHECK(vor_power_remove(&pd, site) == VOR_ERR_ARG, "step %u: remove %u", step, site);
+                CHECK(same_arena(mem, sizeof mem) && same_object(&pd, &copy),
+                      "step %u: a failed removal changed the diagram", step);
+            } else {
+                CHECK(vor_power_remove(&pd, site) == VOR_OK, "step %u: remove %u", step, site);
+                model.dead[site] = true;
+                free_ids[free_count++] = site;
+            }
+        } else { /* move a live site */
+            uint32_t site = (uint32_t)(test_rng_u32(&rng) % model.n);
+            while (model.dead[site]) {
+                site = (site + 1u) % model.n;
+            }
+            bool own = (twin == site);
+            test_copy_bytes(saved, mem, sizeof mem);
+            vor_power_t copy = pd;
+            int err = vor_power_move(&pd, site, p, w, &id);
+            if (own || (twin == UINT32_MAX)) {
+                CHECK(err == VOR_OK, "step %u: move %u: %d", step, site, err);
+                CHECK(!own || (same_arena(mem, sizeof mem) && same_object(&pd, &copy)),
+                      "step %u: a move onto itself changed the diagram", step);
+                model.p[site] = p;
+                model.w[site] = w;
+            } else {
+                CHECK((err == VOR_ERR_DUPLICATE) && (id == twin), "step %u: move onto %u: %d %u",
+                      step, twin, err, id);
+                CHECK(same_arena(mem, sizeof mem) && same_object(&pd, &copy),
+                      "step %u: a failed move changed the diagram", step);
+            }
+        }
+        check_oracle(&pd, &model, NULL);
+        check_nearest(&pd, &model, &rng);
+        if (test_failures() != before) {
+            test_printf("family %u, seed %llu, step %u (op %u); the sites:\n", family,
+                        (unsigned long long)seed, step, op);
+            for (uint32_t i = 0; i < model.n; i++) {
+                test_printf("  %u: %d %d %lld%s\n", i, model.p[i].x, model.p[i].y,
+                            (long long)model.w[i], model.dead[i] ? " (removed)" : "");
+            }
+            return;
+        }
+    }
+    /* everything removed, down to no site */
+    for (uint32_t i = 0; i < model.n; i++) {
+        if (!model.dead[i]) {
+            CHECK(vor_power_remove(&pd, i) == VOR_OK, "drain %u", i);
+            model.dead[i] = true;
+            check_oracle(&pd, &model, NULL);
+            check_nearest(&pd, &model, &rng);
+        }
+    }
+    CHECK((pd.mesh.vertex_count == 0u) && (pd.hidden_count == 0u), "empty at the end");
+}
+
+/* A hidden site that ties for the least power distance, with the
+ * smallest id: m on the hull edge a-b, its lifted point on the lifted
+ * plane of a, b, c (heights x^2 + y^2 - w on 4x - 4y: at (2, 0), w = -4),
+ * a cell of no area that the exact rule hides (its perturbed place is
+ * outside the hull). From above the edge, a, m and b are equally near;
+ * the walk never meets m. */
+static void check_nearest_hidden_tie(void)
+{
+    static vor_power_t pd;
+    uint32_t id;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    CHECK(vor_power_insert(&pd, (vor_point_t){2, 0}, -4, &id) == VOR_OK && id == 0u, "m");
+    CHECK(vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK && id == 1u, "a");
+    CHECK(vor_power_insert(&pd, (vor_point_t){4, 0}, 0, &id) == VOR_OK && id == 2u, "b");
+    CHECK(vor_power_insert(&pd, (vor_point_t){0, -4}, 0, &id) == VOR_OK && id == 3u, "c");
+    CHECK(vor_power_hidden(&pd, 0) == 1, "m hidden");
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid");
+    for (uint32_t hint = 0; hint < 4u; hint++) {
+        id = 99;
+        CHECK((vor_power_nearest(&pd, (vor_point_t){2, 10}, hint, &id) == VOR_OK) && (id == 0u),
+              "the hidden site ties, smallest id: %u (hint %u)", id, hint);
+    }
+    /* removed, the tie goes to a */
+    CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove m");
+    CHECK((vor_power_nearest(&pd, (vor_point_t){2, 10}, VOR_NO_HINT, &id) == VOR_OK) && (id == 1u),
+          "then a: %u", id);
+}
+
+/* Removals where the ears can leave a T-junction: b on the segment a-c
+ * with its lifted point on theirs (a cell of no area), x above the line,
+ * v and y below; and where a removal leaves every site on one line
+ * (the diagram becomes one-dimensional). Every site removed in turn,
+ * after insertions in shuffled orders (the ids, and so the perturbation,
+ * change with the order). */
+static void check_remove_degenerate(void)
+{
+    static const vor_point_t junction_p[6] = {{0, 0}, {2, 0}, {4, 0}, {2, 3}, {2, -1}, {2, -5}};
+    static const int64_t junction_w[6] = {0, -4, 0, 0, 0, 0};
+    static const vor_point_t line_p[6] = {{0, 0}, {2, 0}, {4, 0}, {6, 0}, {3, 5}, {1, 0}};
+    static const int64_t line_w[6] = {0, -4, 0, 2, 0, -1};
+    static vor_power_t pd;
+    static scene_t model;
+    test_rng_t rng;
+    test_rng_seed(&rng, 66);
+    for (unsigned set = 0; set < 2u; set++) {
+        const vor_point_t *pts = (set == 0u) ? junction_p : line_p;
+        const int64_t *ws = (set == 0u) ? junction_w : line_w;
+        for (unsigned round = 0; round < 40u; round++) {
+            uint32_t order[6] = {0, 1, 2, 3, 4, 5};
+            for (uint32_t i = 6; i > 1u; i--) {
+                uint32_t j = test_rng_u32(&rng) % i;
+                uint32_t x = order[i - 1u];
+                order[i - 1u] = order[j];
+                order[j] = x;
+            }
+            for (uint32_t victim = 0; victim < 6u; victim++) {
+                unsigned long before = test_failures();
+                CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+                model.n = 6;
+                for (uint32_t i = 0; i < 6u; i++) {
+                    uint32_t id;
+                    model.p[i] = pts[order[i]];
+                    model.w[i] = ws[order[i]];
+                    model.dead[i] = false;
+                    CHECK(vor_power_insert(&pd, model.p[i], model.w[i], &id) == VOR_OK, "insert");
+                }
+                CHECK(vor_power_remove(&pd, victim) == VOR_OK, "remove");
+                model.dead[victim] = true;
+                check_oracle(&pd, &model, NULL);
+                check_nearest(&pd, &model, &rng);
+                if (test_failures() != before) {
+                    test_printf("set %u, order %u %u %u %u %u %u, removed %u\n", set, order[0],
+                                order[1], order[2], order[3], order[4], order[5], victim);
+                    return;
+                }
+            }
+        }
+    }
+}
+
+/* Failing removals and moves: the arguments the header names. */
+static void check_dynamic_arguments(void)
+{
+    static vor_power_t pd;
+    static uint8_t one[VOR_POWER_ARENA_BYTES(1)] __attribute__((aligned(8)));
+    uint32_t id = 5;
+    CHECK(vor_power_remove(NULL, 0) == VOR_ERR_ARG, "remove NULL");
+    CHECK(vor_power_move(NULL, 0, (vor_point_t){0, 0}, 0, &id) == VOR_ERR_ARG, "move NULL");
+    CHECK(vor_power_nearest(NULL, (vor_point_t){0, 0}, VOR_NO_HINT, &id) == VOR_ERR_ARG,
+          "nearest NULL");
+    /* one site at most: no triangle slots */
+    CHECK(vor_power_init(&pd, one, sizeof one, 1) == VOR_OK, "init one");
+    CHECK(vor_power_remove(&pd, 0) == VOR_ERR_ARG, "remove unused");
+    CHECK(vor_power_insert(&pd, (vor_point_t){3, 4}, 7, &id) == VOR_OK && id == 0u, "insert");
+    CHECK(vor_power_nearest(&pd, (vor_point_t){0, 0}, VOR_NO_HINT, NULL) == VOR_ERR_ARG,
+          "nearest NULL site");
+    CHECK(vor_power_nearest(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK && id == 0u, "nearest");
+    CHECK(vor_power_move(&pd, 0, (vor_point_t){5, 5}, 1, NULL) == VOR_OK, "move the only site");
+    CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove");
+    CHECK(vor_power_hidden(&pd, 0) == VOR_ERR_ARG, "free id");
+    CHECK(vor_power_remove(&pd, 0) == VOR_ERR_ARG, "remove twice");
+    CHECK(vor_power_move(&pd, 0, (vor_point_t){5, 5}, 1, NULL) == VOR_ERR_ARG, "move removed");
+    CHECK(vor_power_nearest(&pd, (vor_point_t){0, 0}, VOR_NO_HINT, &id) == VOR_ERR_EMPTY, "empty");
+    CHECK(vor_power_insert(&pd, (vor_point_t){1, 1}, 0, &id) == VOR_OK && id == 0u, "id reused");
+    /* a duplicate of vor_power_build is no site */
+    static vor_point_t pts[3] = {{0, 0}, {0, 0}, {5, 0}};
+    static int64_t ws[3] = {1, 1, 0};
+    uint32_t dup[3];
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    CHECK(vor_power_build(&pd, pts, ws, 3, dup) == VOR_OK && dup[1] == 0u, "build");
+    test_copy_bytes(saved, arena, sizeof arena);
+    vor_power_t copy = pd;
+    CHECK(vor_power_remove(&pd, 1) == VOR_ERR_ARG, "remove a duplicate");
+    CHECK(vor_power_move(&pd, 1, (vor_point_t){9, 9}, 0, NULL) == VOR_ERR_ARG, "move a duplicate");
+    CHECK(vor_power_remove(&pd, 3) == VOR_ERR_ARG, "remove unused");
+    CHECK(vor_power_nearest(&pd, (vor_point_t){0, 0}, 1, &id) == VOR_ERR_ARG, "hint a duplicate");
+    id = 99;
+    CHECK(vor_power_move(&pd, 2, (vor_point_t){0, 0}, 1, &id) == VOR_ERR_DUPLICATE && id == 0u,
+          "move onto a site");
+    CHECK(same_arena(arena, sizeof arena) && same_object(&pd, &copy), "failed calls: unchanged");
+}
+
 void test_power(void)
 {
     TEST_CASE("arguments") check_arguments();
@@ -784,4 +1164,12 @@ void test_power(void)
     TEST_CASE("large/random") check_large(0, 100);
     TEST_CASE("large/full_range") check_large(1, 200);
     TEST_CASE("large/grid") check_large(2, 300);
+    TEST_CASE("dynamic/arguments") check_dynamic_arguments();
+    TEST_CASE("dynamic/nearest_hidden_tie") check_nearest_hidden_tie();
+    TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
+    for (unsigned family = 0; family < 7u; family++) {
+        for (unsigned seed = 0; seed < 4u; seed++) {
+            TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
+        }
+    }
 }

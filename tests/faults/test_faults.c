@@ -31,7 +31,9 @@
  * random sites with random weights, a grid with small random weights,
  * sites at a few points with different (and equal) weights, sites on one
  * line and collinear runs, each built (vor_power_build) and inserted one
- * by one (vor_power_insert). Every call must return a documented result,
+ * by one (vor_power_insert), then removed, moved and queried
+ * (vor_power_remove, vor_power_move, vor_power_nearest) at random. Every
+ * call must return a documented result,
  * the mesh pass vor_power_validate's topological checks, and every id be
  * exactly one of a vertex, a hidden site (listed once by the hidden
  * iterator, no other) or a build's duplicate; with the rate back to 0 a
@@ -280,6 +282,7 @@ static vor_point_t power_points[POWER_N];
 static int64_t power_weights[POWER_N];
 static uint32_t power_dup[POWER_N];
 static bool power_listed[POWER_N];
+static bool power_removed[POWER_N]; /* ids vor_power_remove freed */
 static const char *const power_scenes[] = {"random", "grid", "one place", "one line",
                                            "collinear runs"};
 
@@ -373,7 +376,7 @@ static void check_power(const vor_power_t *pd, const uint32_t *dup, const char *
         hidden += (h == 1) ? 1u : 0u;
         list_ok = list_ok && ((h == 1) == power_listed[i]) &&
                   ((h == 0) || (h == 1) ||
-                   ((h == VOR_ERR_ARG) && (dup != NULL) && (dup[i] != i)));
+                   ((h == VOR_ERR_ARG) && (((dup != NULL) && (dup[i] != i)) || power_removed[i])));
     }
     list_ok = list_ok && (listed == hidden) && (hidden == pd->hidden_count) &&
               (vertices == pd->mesh.vertex_count);
@@ -426,6 +429,41 @@ static void power_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k,
         CHECK(results_ok, "power inserts, %s, p = %u%%: an insert returned an undocumented result",
               power_scenes[scene], rate_percent);
         check_power(&pd, NULL, "power inserts", power_scenes[scene], rate_percent, false);
+        /* removals (sites and ids that are none), moves to the scene's
+         * points and weights, nearest sites: documented results only */
+        for (uint32_t i = 0; i < POWER_N; i++) {
+            power_removed[i] = false;
+        }
+        for (uint32_t op = 0; op < 3u * n; op++) {
+            uint32_t count = pd.mesh.site_count;
+            uint32_t id = test_rng_u32(rng) % (count + 1u);
+            bool site = vor_power_hidden(&pd, id) >= 0;
+            uint32_t pick = test_rng_u32(rng) % n;
+            uint32_t out = 0;
+            int err;
+            if (op % 3u == 0u) {
+                err = vor_power_remove(&pd, id);
+                results_ok = results_ok && (err == (site ? VOR_OK : VOR_ERR_ARG));
+                power_removed[id] = power_removed[id] || site;
+            } else if (op % 3u == 1u) {
+                err = vor_power_move(&pd, id, power_points[pick], power_weights[pick], &out);
+                results_ok = results_ok && (site ? ((err == VOR_OK) || ((err == VOR_ERR_DUPLICATE) &&
+                                                                        (out != id) &&
+                                                                        (vor_power_hidden(&pd, out) >= 0)))
+                                                 : (err == VOR_ERR_ARG));
+            } else {
+                err = vor_power_nearest(&pd, power_points[pick], site ? id : VOR_NO_HINT, &out);
+                results_ok = results_ok && (((err == VOR_OK) && (vor_power_hidden(&pd, out) >= 0)) ||
+                                            ((err == VOR_ERR_EMPTY) && (pd.mesh.vertex_count == 0u)));
+            }
+        }
+        CHECK(results_ok,
+              "power remove, move, nearest, %s, p = %u%%: an undocumented result",
+              power_scenes[scene], rate_percent);
+        check_power(&pd, NULL, "power removals and moves", power_scenes[scene], rate_percent, false);
+        for (uint32_t i = 0; i < POWER_N; i++) {
+            power_removed[i] = false;
+        }
         /* no lies: a fresh build is the exact regular triangulation */
         CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_N) == VOR_OK, "power init");
         CHECK(vor_power_build(&pd, power_points, power_weights, n, power_dup) == VOR_OK,

@@ -38,7 +38,8 @@
  *
  * Weighted sites (vor_power.h): an input whose first byte is POWER_MODE
  * or more is a program of its own on one vor_power_t (power_program):
- * inits, inserts, builds, bad arguments, each followed by power_check,
+ * inits, inserts, builds, removals, moves, nearest sites, bad arguments,
+ * each followed by power_check,
  * which decides the regular triangulation's invariants by brute force
  * over the lifted sites with fuzz_power's 768-bit determinants.
  */
@@ -1419,8 +1420,13 @@ typedef struct {
     uint32_t count;                /* ids handed out */
     vor_point_t point[MOST_SITES]; /* by id */
     int64_t weight[MOST_SITES];
-    uint32_t first[MOST_SITES]; /* the smallest id of the same point and weight */
+    uint32_t first[MOST_SITES]; /* the smallest id of the same point and weight;
+                                   POWER_FREE for a removed id */
+    uint32_t free_ids[MOST_SITES]; /* removed ids, most recent last */
+    uint32_t free_count;
 } power_model_t;
+
+#define POWER_FREE 0xffffffffu
 
 static vor_power_t power_before;
 
@@ -1506,7 +1512,7 @@ static int power_line_status(const power_model_t *m, uint32_t s)
 {
     int vertical = 1;
     for (uint32_t i = 0; i < m->count; i++)
-        vertical &= m->point[i].x == m->point[s].x;
+        vertical &= !power_is_site(m, i) || m->point[i].x == m->point[s].x;
     int status = -1;
     vor_point_t ps = m->point[s];
     int64_t ts = vertical ? ps.y : ps.x;
@@ -1555,7 +1561,7 @@ static uint32_t power_pieces(const power_model_t *m, vor_point_t a, vor_point_t 
         vor_point_t next = b;
         for (uint32_t s = 0; s < m->count; s++) {
             vor_point_t p = m->point[s];
-            if (fuzz_orient(from, b, p) != 0 || power_same_point(p, from) || power_same_point(p, next))
+            if (m->first[s] == POWER_FREE || fuzz_orient(from, b, p) != 0 || power_same_point(p, from) || power_same_point(p, next))
                 continue;
             /* strictly between from and next, on the line: closer to from */
             __int128 along = ((__int128)p.x - from.x) * ((__int128)next.x - from.x) +
@@ -1712,29 +1718,124 @@ static void draw_weighted(fuzz_reader_t *r, const vor_point_t *made, const int64
     *w = fuzz_weight(r, previous_w);
 }
 
-/* vor_power_insert of p, w (id wanted or not), checked against the model. */
+/* The smallest site (not a duplicate's or removed id) with point p and
+ * weight w, or m->count. */
+static uint32_t power_site_twin(const power_model_t *m, vor_point_t p, int64_t w)
+{
+    for (uint32_t i = 0; i < m->count; i++)
+        if (power_is_site(m, i) && m->point[i].x == p.x && m->point[i].y == p.y &&
+            m->weight[i] == w)
+            return i;
+    return m->count;
+}
+
+/* vor_power_insert of p, w (id wanted or not), checked against the model:
+ * the most recently removed id, else the next one. */
 static void power_insert_checked(power_model_t *m, vor_point_t p, int64_t w, int want_id)
 {
     uint32_t id = 0xdeadbeefu;
     power_snapshot(m);
     int result = vor_power_insert(&m->pd, p, w, want_id ? &id : NULL);
-    uint32_t first = power_twin(m->point, m->weight, m->count, p, w);
+    uint32_t first = power_site_twin(m, p, w);
     if (first < m->count) {
         FUZZ_REQUIRE(result == VOR_ERR_DUPLICATE && (!want_id || id == first),
                      "power_insert: a duplicate missed, or the wrong twin");
         FUZZ_REQUIRE(power_unchanged(m), "power_insert: a duplicate changed the object");
-    } else if (m->count == m->capacity) {
+    } else if (m->free_count == 0u && m->count == m->capacity) {
         FUZZ_REQUIRE(result == VOR_ERR_FULL && id == 0xdeadbeefu,
                      "power_insert: a full object accepted a site, or wrote its id");
         FUZZ_REQUIRE(power_unchanged(m), "power_insert: full, and changed the object");
     } else {
-        FUZZ_REQUIRE(result == VOR_OK && (!want_id || id == m->count),
-                     "power_insert failed, or not the next id");
-        m->point[m->count] = p;
-        m->weight[m->count] = w;
-        m->first[m->count] = m->count;
-        m->count++;
+        uint32_t next = m->free_count > 0u ? m->free_ids[--m->free_count] : m->count++;
+        FUZZ_REQUIRE(result == VOR_OK && (!want_id || id == next),
+                     "power_insert failed, or not the most recently freed or next id");
+        m->point[next] = p;
+        m->weight[next] = w;
+        m->first[next] = next;
     }
+}
+
+/* vor_power_remove of an id from the input (sites, removed, duplicates',
+ * unused ones). */
+static void op_power_remove(fuzz_reader_t *r, power_model_t *m)
+{
+    uint32_t id = fuzz_u8(r) % (m->count + 2u);
+    power_snapshot(m);
+    int result = vor_power_remove(&m->pd, id);
+    if (power_is_site(m, id)) {
+        FUZZ_REQUIRE(result == VOR_OK, "power_remove: a site refused");
+        m->first[id] = POWER_FREE;
+        m->free_ids[m->free_count++] = id;
+    } else {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG, "power_remove: no site accepted");
+        FUZZ_REQUIRE(power_unchanged(m), "power_remove: a failure changed the object");
+    }
+}
+
+/* vor_power_move of an id from the input to a weighted site as inputs
+ * make them (often a site's point: a duplicate, or the site itself). */
+static void op_power_move(fuzz_reader_t *r, power_model_t *m, vor_point_t *previous,
+                          int64_t *previous_w)
+{
+    uint32_t id = fuzz_u8(r) % (m->count + 2u), existing = 0xdeadbeefu;
+    vor_point_t p;
+    int64_t w;
+    draw_weighted(r, m->point, m->weight, m->count, previous, previous_w, &p, &w);
+    uint8_t want = fuzz_u8(r) & 1u;
+    power_snapshot(m);
+    int result = vor_power_move(&m->pd, id, p, w, want ? &existing : NULL);
+    uint32_t same = power_site_twin(m, p, w);
+    if (!power_is_site(m, id)) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && existing == 0xdeadbeefu,
+                     "power_move: no site accepted");
+        FUZZ_REQUIRE(power_unchanged(m), "power_move: a failure changed the object");
+    } else if (same < m->count && same != id) {
+        FUZZ_REQUIRE(result == VOR_ERR_DUPLICATE && (!want || existing == same),
+                     "power_move: a duplicate missed, or the wrong twin");
+        FUZZ_REQUIRE(power_unchanged(m), "power_move: a duplicate changed the object");
+    } else {
+        FUZZ_REQUIRE(result == VOR_OK && existing == 0xdeadbeefu, "power_move failed");
+        FUZZ_REQUIRE(same != id || power_unchanged(m), "power_move: in place, and changed");
+        m->point[id] = p;
+        m->weight[id] = w;
+    }
+}
+
+/* |q - p|^2 - w, exact (below 2^66 in magnitude). */
+static __int128 power_distance(vor_point_t q, vor_point_t p, int64_t w)
+{
+    __int128 dx = (__int128)q.x - p.x, dy = (__int128)q.y - p.y;
+    return dx * dx + dy * dy - w;
+}
+
+/* vor_power_nearest against a scan (ties: the smallest id), at a point
+ * as inputs make them or a site's point, from a hint from the input. */
+static void op_power_nearest(fuzz_reader_t *r, power_model_t *m, vor_point_t *previous)
+{
+    uint8_t how = fuzz_u8(r);
+    vor_point_t q = fuzz_point(r, previous);
+    if (m->count > 0u && how >= 0x80u)
+        q = m->point[fuzz_u8(r) % m->count];
+    uint32_t hint = (how & 1u) ? VOR_NO_HINT : fuzz_u8(r) % (m->count + 2u);
+    uint32_t best = m->count;
+    for (uint32_t i = 0; i < m->count; i++)
+        if (power_is_site(m, i) &&
+            (best == m->count || power_distance(q, m->point[i], m->weight[i]) <
+                                     power_distance(q, m->point[best], m->weight[best])))
+            best = i;
+    uint32_t got = 0xdeadbeefu;
+    power_snapshot(m);
+    int result = vor_power_nearest(&m->pd, q, hint, &got);
+    if (best == m->count) {
+        FUZZ_REQUIRE(result == VOR_ERR_EMPTY && got == 0xdeadbeefu, "power_nearest: not empty");
+    } else if (hint != VOR_NO_HINT && !power_is_site(m, hint)) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && got == 0xdeadbeefu,
+                     "power_nearest: a hint that is no site accepted");
+    } else {
+        FUZZ_REQUIRE(result == VOR_OK && got == best,
+                     "power_nearest: not the nearest site of smallest id");
+    }
+    FUZZ_REQUIRE(power_unchanged(m), "power_nearest changed the object");
 }
 
 static void op_power_insert(fuzz_reader_t *r, power_model_t *m, vor_point_t *previous,
@@ -1787,6 +1888,7 @@ static void op_power_build(fuzz_reader_t *r, power_model_t *m, vor_point_t *prev
     } else {
         FUZZ_REQUIRE(result == VOR_OK, "power_build failed");
         m->count = n;
+        m->free_count = 0;
         for (uint32_t i = 0; i < n; i++) {
             m->point[i] = points[i];
             m->weight[i] = weights[i];
@@ -1841,6 +1943,7 @@ static void op_power_init(fuzz_reader_t *r, power_model_t *m)
                      "power_init failed");
         m->capacity = capacity;
         m->count = 0;
+        m->free_count = 0;
         return;
     }
     FUZZ_REQUIRE(result == documented, "power_init: not the documented error");
@@ -1864,7 +1967,12 @@ static void op_power_bad_arguments(fuzz_reader_t *r, power_model_t *m, vor_point
     FUZZ_REQUIRE(vor_power_insert(NULL, p, w, &id) == VOR_ERR_ARG &&
                      vor_power_build(NULL, &p, &w, 1, &id) == VOR_ERR_ARG &&
                      vor_power_hidden(NULL, 0) == VOR_ERR_ARG &&
-                     vor_power_validate(NULL, &violation) == VOR_ERR_ARG && id == 77 &&
+                     vor_power_validate(NULL, &violation) == VOR_ERR_ARG &&
+                     vor_power_remove(NULL, 0) == VOR_ERR_ARG &&
+                     vor_power_move(NULL, 0, p, w, &id) == VOR_ERR_ARG &&
+                     vor_power_nearest(NULL, p, VOR_NO_HINT, &id) == VOR_ERR_ARG &&
+                     vor_power_nearest(&m->pd, p, VOR_NO_HINT, NULL) == VOR_ERR_ARG &&
+                     id == 77 &&
                      violation.triangle == 77,
                  "power: a NULL object accepted, or written through");
     FUZZ_REQUIRE(vor_power_hidden_begin(NULL, &m->pd) == VOR_ERR_ARG &&
@@ -1884,7 +1992,10 @@ static void op_power_bad_arguments(fuzz_reader_t *r, power_model_t *m, vor_point
     FUZZ_REQUIRE(vor_power_insert(&zeroed, p, w, &id) == VOR_ERR_FULL &&
                      vor_power_build(&zeroed, &p, &w, 1, &id) == VOR_ERR_FULL &&
                      vor_power_hidden(&zeroed, 0) == VOR_ERR_ARG &&
-                     vor_power_validate(&zeroed, NULL) == VOR_OK && id == 77,
+                     vor_power_validate(&zeroed, NULL) == VOR_OK &&
+                     vor_power_remove(&zeroed, 0) == VOR_ERR_ARG &&
+                     vor_power_move(&zeroed, 0, p, w, &id) == VOR_ERR_ARG &&
+                     vor_power_nearest(&zeroed, p, VOR_NO_HINT, &id) == VOR_ERR_EMPTY && id == 77,
                  "power: a zeroed object not empty and full");
     FUZZ_REQUIRE(vor_power_hidden_begin(&hi, &zeroed) == VOR_OK &&
                      vor_power_hidden_next(&hi, &id) == 0 &&
@@ -1918,7 +2029,14 @@ static int power_program(fuzz_reader_t *r)
         case 4: op_power_on_line(r, &m, &previous_w); break;
         case 5: op_power_init(r, &m); break;
         case 6: op_power_bad_arguments(r, &m, &previous, &previous_w); break;
-        default: break; /* power_check alone: the reads */
+        default: /* removals, moves, the nearest site, or power_check alone */
+            switch (fuzz_u8(r) % 4u) {
+            case 0: op_power_remove(r, &m); break;
+            case 1: op_power_move(r, &m, &previous, &previous_w); break;
+            case 2: op_power_nearest(r, &m, &previous); break;
+            default: break;
+            }
+            break;
         }
         power_check(&m);
     }
