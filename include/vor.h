@@ -315,7 +315,9 @@ enum vor_error {
     VOR_ERR_CONFIG = -9,    /* library and application were compiled with different
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
     VOR_ERR_STOPPED = -10,  /* vor_raster: the caller's flush asked to stop */
-    VOR_ERR_CONSTRAINED = -11 /* vor_remove, vor_move: the site ends a constrained edge */
+    VOR_ERR_CONSTRAINED = -11, /* vor_remove, vor_move: the site ends a constrained edge */
+    VOR_ERR_OUTSIDE = -12     /* vor_sibson, vor_interpolate: the point is outside the
+                                 convex hull of the sites */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -945,6 +947,93 @@ typedef struct vor_centroid {
  */
 int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
                       void *scratch, size_t scratch_bytes, vor_centroid_t *out);
+
+/* ================================================================== */
+/* Natural-neighbour interpolation (src/interpolate.c)                */
+/* ================================================================== */
+
+/* Bytes of scratch vor_sibson and vor_interpolate need for a point with
+ * up to k natural neighbours (a constant expression): k + 4 numbers of
+ * 132 k + 64 bits and k + 1 output numbers of the same width, the 2k - 2
+ * exact Voronoi vertices involved (3 x 192 bits each), 7k + 1 indices,
+ * and 8 bytes for alignment. A point has at most n - 1 natural
+ * neighbours in a diagram of n sites, typically about 6 (k = 6: 2.9 KB,
+ * k = 16: 13 KB). docs/design/interpolation.md derives the widths. */
+#define VOR_SIBSON_SCRATCH_BYTES(k)                                            \
+    (((((size_t)(k) * 2u) + 5u) * 8u * ((((size_t)(k) * 132u) + 127u) / 64u)) + \
+     ((size_t)(k) * 172u) + 12u)
+
+/* Exact Sibson (natural-neighbour) coordinates of a point q: the sites
+ * q's Voronoi cell would take area from if q were inserted, and for each
+ * the area it would take, weight_i / denominator. Every number is a
+ * non-negative integer of `limbs` 32-bit limbs, least significant first,
+ * in the caller's scratch (valid until the scratch is reused). The
+ * weights are positive and add up to the denominator exactly; with the
+ * sites p_i, sum weight_i p_i = denominator q exactly (linear precision).
+ * They are over one common denominator, not reduced. */
+typedef struct vor_sibson {
+    uint32_t count;              /* natural neighbours (VOR_ERR_NOMEM: needed k) */
+    uint32_t limbs;              /* 32-bit limbs of each number below */
+    const uint32_t *sites;       /* [count] their ids, counterclockwise around q */
+    const uint32_t *weights;     /* [count * limbs]: weight i at weights + i * limbs */
+    const uint32_t *denominator; /* [limbs], > 0 */
+} vor_sibson_t;
+
+/*
+ * The Sibson coordinates of q (any int32 point) with respect to the true
+ * Voronoi diagram of the distinct sites of d, exact. Cocircular sites
+ * (where the triangulation is not unique) give the one true answer: the
+ * areas are those of the true diagram, whatever the perturbation chose.
+ *   q strictly inside the convex hull: its natural neighbours, each with
+ *     the area its cell loses to q's (k >= 3 of them);
+ *   q a site: that site alone, weight 1 of 1;
+ *   q on the hull's boundary between two sites a and b (all sites
+ *     collinear: on the segment between two neighbouring sites): the
+ *     limit of the coordinates there, linear along the edge: a and b
+ *     with weights (b - q).(b - a) and (q - a).(b - a) over |b - a|^2.
+ * hint as for vor_nearest. Scratch: any alignment, contents undefined
+ * after the call, VOR_SIBSON_SCRATCH_BYTES(k) bytes for k neighbours.
+ * Cost: O(k) exact predicates to find the neighbours and O(k^3) limb
+ * products for the exact areas.
+ *   VOR_ERR_ARG      d or out NULL, scratch NULL with scratch_bytes > 0, a
+ *                    bad hint (as vor_nearest)
+ *   VOR_ERR_EMPTY    the diagram has no sites
+ *   VOR_ERR_OUTSIDE  q is outside the convex hull of the sites (with all
+ *                    sites collinear: not on their segment)
+ *   VOR_ERR_NOMEM    scratch_bytes < VOR_SIBSON_SCRATCH_BYTES(k): only
+ *                    out->count is written, with k
+ * On any other failure *out is unchanged.
+ */
+int vor_sibson(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
+               size_t scratch_bytes, vor_sibson_t *out);
+
+/* The Sibson interpolant of integer site values at a point: the exact
+ * value numerator / denominator (sign and magnitude, 32-bit limbs least
+ * significant first, in the caller's scratch) and the value rounded once,
+ * halves away from zero. It lies between the smallest and the largest
+ * value of the natural neighbours, so it always fits int32. */
+typedef struct vor_interpolation {
+    int32_t value;               /* the exact value rounded, halves away from zero */
+    int32_t sign;                /* of the exact value: -1, 0 or 1 */
+    uint32_t neighbours;         /* natural neighbours (VOR_ERR_NOMEM: needed k) */
+    uint32_t limbs;              /* 32-bit limbs of numerator and denominator */
+    const uint32_t *numerator;   /* [limbs], |numerator| */
+    const uint32_t *denominator; /* [limbs], > 0 */
+} vor_interpolation_t;
+
+/*
+ * sum_i values[site_i] lambda_i over q's Sibson coordinates (vor_sibson):
+ * at a site its value, on a hull edge the linear interpolation of the
+ * edge's ends, and a C1 surface elsewhere inside the hull. values is
+ * indexed by site id (a duplicate's entry is not read: its first
+ * occurrence is the site). Scratch and cost as vor_sibson.
+ *   VOR_ERR_ARG, VOR_ERR_EMPTY, VOR_ERR_OUTSIDE as vor_sibson; also
+ *                    values NULL
+ *   VOR_ERR_NOMEM    as vor_sibson: only out->neighbours is written
+ * On any other failure *out is unchanged.
+ */
+int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                    void *scratch, size_t scratch_bytes, vor_interpolation_t *out);
 
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */
