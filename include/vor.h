@@ -963,21 +963,23 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
     (((((size_t)(k) * 2u) + 5u) * 8u * ((((size_t)(k) * 132u) + 127u) / 64u)) + \
      ((size_t)(k) * 172u) + 12u)
 
-/* Exact Sibson (natural-neighbour) coordinates of a point q: the sites
- * q's Voronoi cell would take area from if q were inserted, and for each
- * the area it would take, weight_i / denominator. Every number is a
+/* Exact natural-neighbour coordinates of a point q: the sites q's
+ * Voronoi cell would border if q were inserted, and for each its
+ * coordinate weight_i / denominator (Sibson: the area q's cell takes
+ * from the site's; Laplace: the length of the cell's edge facing the
+ * site over the site's distance, normalised). Every number is a
  * non-negative integer of `limbs` 32-bit limbs, least significant first,
  * in the caller's scratch (valid until the scratch is reused). The
  * weights are positive and add up to the denominator exactly; with the
  * sites p_i, sum weight_i p_i = denominator q exactly (linear precision).
  * They are over one common denominator, not reduced. */
-typedef struct vor_sibson {
+typedef struct vor_coordinates {
     uint32_t count;              /* natural neighbours (VOR_ERR_NOMEM: needed k) */
     uint32_t limbs;              /* 32-bit limbs of each number below */
     const uint32_t *sites;       /* [count] their ids, counterclockwise around q */
     const uint32_t *weights;     /* [count * limbs]: weight i at weights + i * limbs */
     const uint32_t *denominator; /* [limbs], > 0 */
-} vor_sibson_t;
+} vor_coordinates_t;
 
 /*
  * The Sibson coordinates of q (any int32 point) with respect to the true
@@ -1005,7 +1007,21 @@ typedef struct vor_sibson {
  * On any other failure *out is unchanged.
  */
 int vor_sibson(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
-               size_t scratch_bytes, vor_sibson_t *out);
+               size_t scratch_bytes, vor_coordinates_t *out);
+
+/*
+ * Laplace's (non-Sibsonian) coordinates of q, exact: for each natural
+ * neighbour p_i, the length of the edge of q's cell facing it over
+ * |q - p_i| (a rational number: the edge is perpendicular to q - p_i),
+ * normalised. The same neighbours, special cases (site, hull edge,
+ * outside), invariants (positive, adding up to the denominator, linear
+ * precision), scratch and errors as vor_sibson, for O(k^2) limb products
+ * instead of O(k^3), and numbers half as wide: the cheaper sibling for a
+ * small microcontroller. The interpolant is continuous, but not smooth
+ * (C0) at the sites' circles, unlike Sibson's.
+ */
+int vor_laplace(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
+                size_t scratch_bytes, vor_coordinates_t *out);
 
 /* The Sibson interpolant of integer site values at a point: the exact
  * value numerator / denominator (sign and magnitude, 32-bit limbs least
@@ -1034,6 +1050,11 @@ typedef struct vor_interpolation {
  */
 int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
                     void *scratch, size_t scratch_bytes, vor_interpolation_t *out);
+
+/* vor_interpolate over Laplace's coordinates (vor_laplace): the same
+ * value at sites and along hull edges, errors and rounding. */
+int vor_interpolate_laplace(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                            void *scratch, size_t scratch_bytes, vor_interpolation_t *out);
 
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */

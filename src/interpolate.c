@@ -87,6 +87,7 @@ typedef struct ip_space {
     uint32_t k;
     uint32_t points_used;
     uint32_t seq_used;
+    bool laplace;       /* Laplace's coordinates: no triangles recorded */
 } ip_space_t;
 
 #define NO_TAG 0xFFFFFFFFu
@@ -125,6 +126,7 @@ static bool cut_scratch(ip_space_t *sp, void *scratch, size_t bytes, uint32_t k)
     sp->start = sp->seq + (3u * (size_t)k);
     sp->points_used = 0;
     sp->seq_used = 0;
+    sp->laplace = false;
     return true;
 }
 
@@ -359,7 +361,7 @@ static enum ip_walk walk_boundary(const vor_t *d, const vor_point_t *q, vor_inde
             if (iv == 3u) {
                 return WALK_BROKEN;
             }
-            if (sp != NULL) {
+            if ((sp != NULL) && !sp->laplace) {
                 record_triangle(d, sp, t, q);
             }
             x = vor__vertex(tri, vor__next(iv));
@@ -520,6 +522,73 @@ static void sibson_areas(const vor_t *d, ip_space_t *sp, const vor_point_t *q)
     }
 }
 
+/* number `target` += n D / (X_a X_b) (a == b: D / X_a), n signed of
+ * POINT_LIMBS limbs, X_j the points' third parts. */
+static void add_scaled(const ip_space_t *sp, uint32_t target, const vor__limb *n, uint32_t a,
+                       uint32_t b)
+{
+    vor__limb magnitude[POINT_LIMBS];
+    vor__mw_copy(magnitude, n, POINT_LIMBS);
+    bool negative = vor__mw_sign(magnitude, POINT_LIMBS) < 0;
+    if (negative) {
+        vor__mw_neg(magnitude, POINT_LIMBS);
+    }
+    size_t used;
+    const vor__limb *other = product_except(sp, a, b, &used);
+    vor__limb *term = number(sp, sp->k + 3u);
+    vor__mw_mul(term, sp->width, magnitude, POINT_LIMBS, other, used);
+    if (negative) {
+        vor__mw_sub(number(sp, target), term, sp->width);
+    } else {
+        vor__mw_add(number(sp, target), term, sp->width);
+    }
+}
+
+/*
+ * Laplace's (non-Sibsonian) weights of the k neighbours: the length of
+ * q's cell edge facing p_i over |p_i - q|. With a_i = p_i - q and
+ * X_i = a_i x a_{i+1} > 0, the cell's vertex c_i (circumcentre of q, p_i,
+ * p_{i+1}) has a_i x c_i = |a_i|^2 (|a_{i+1}|^2 - a_i.a_{i+1}) / 2 X_i,
+ * and the edge c_{i-1} c_i is perpendicular to a_i, turned
+ * counterclockwise, so its length over |a_i| is a_i x (c_i - c_{i-1}) /
+ * |a_i|^2:
+ *   2 t_i = a_{i+1}.(a_{i+1} - a_i) / X_i + a_{i-1}.(a_{i-1} - a_i) / X_{i-1},
+ * over the common denominator prod X_j (each X_j < 2^67, each numerator
+ * below 2^68, so the sums fit the numbers far within Sibson's widths).
+ * The denominator is the weights' sum: Laplace's coordinates are the
+ * t_i normalised.
+ */
+static void laplace_weights(const vor_t *d, ip_space_t *sp, const vor_point_t *q)
+{
+    uint32_t k = sp->k;
+    const vor_point_t *s = d->sites;
+    for (uint32_t i = 0; i < k; i++) { /* X_i, as the "denominators" */
+        const vor_point_t *a = &s[sp->ids[i]];
+        const vor_point_t *b = &s[sp->ids[((i + 1u) == k) ? 0u : (i + 1u)]];
+        dot(point_part(sp, i, 2), (int64_t)a->x - q->x, -((int64_t)a->y - q->y),
+            (int64_t)b->y - q->y, (int64_t)b->x - q->x);
+    }
+    sp->points_used = k;
+    for (uint32_t i = 0; i <= k; i++) {
+        vor__mw_from_u64(number(sp, i), sp->width, 0u);
+    }
+    vor__limb n[POINT_LIMBS];
+    for (uint32_t i = 0; i < k; i++) {
+        uint32_t next = ((i + 1u) == k) ? 0u : (i + 1u);
+        uint32_t before = (i == 0u) ? (k - 1u) : (i - 1u);
+        const vor_point_t *a = &s[sp->ids[i]];
+        const vor_point_t *b = &s[sp->ids[next]];
+        const vor_point_t *c = &s[sp->ids[before]];
+        dot(n, (int64_t)b->x - q->x, (int64_t)b->y - q->y, (int64_t)b->x - a->x, (int64_t)b->y - a->y);
+        add_scaled(sp, i, n, i, i);
+        dot(n, (int64_t)c->x - q->x, (int64_t)c->y - q->y, (int64_t)c->x - a->x, (int64_t)c->y - a->y);
+        add_scaled(sp, i, n, before, before);
+    }
+    for (uint32_t i = 0; i < k; i++) {
+        vor__mw_add(number(sp, k), number(sp, i), sp->width);
+    }
+}
+
 /* Number i = v, a non-negative value of POINT_LIMBS limbs. */
 static void set_number(const ip_space_t *sp, uint32_t i, const vor__limb *v)
 {
@@ -580,8 +649,8 @@ static const uint32_t *put_number(const ip_space_t *sp, uint32_t slot, const vor
 /* The coordinates of q in the scratch: ids and numbers 0 .. k (the
  * weights, then the denominator). *needed = k when the scratch is too
  * small (VOR_ERR_NOMEM). Arguments checked by the caller. */
-static int sibson_core(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
-                       size_t scratch_bytes, ip_space_t *sp, uint32_t *needed)
+static int coordinates(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
+                       size_t scratch_bytes, bool laplace, ip_space_t *sp, uint32_t *needed)
 {
     uint32_t c;
     int err = vor_nearest(d, q, hint, &c);
@@ -620,10 +689,15 @@ static int sibson_core(const vor_t *d, vor_point_t q, uint32_t hint, void *scrat
                 return (k < 3u) ? VOR_ERR_INVALID : VOR_ERR_NOMEM;
             }
             sp->points_used = k;
+            sp->laplace = laplace;
             if (walk_boundary(d, &q, t0, u0, (vor_index_t)c, sp, &k, edge) != WALK_INSIDE) {
                 return VOR_ERR_INVALID;
             }
-            sibson_areas(d, sp, &q);
+            if (laplace) {
+                laplace_weights(d, sp, &q);
+            } else {
+                sibson_areas(d, sp, &q);
+            }
             return VOR_OK;
         }
     } else {
@@ -655,15 +729,16 @@ static int sibson_core(const vor_t *d, vor_point_t q, uint32_t hint, void *scrat
     return VOR_OK;
 }
 
-int vor_sibson(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch, size_t scratch_bytes,
-               vor_sibson_t *out)
+/* vor_sibson and vor_laplace: the coordinates, as 32-bit words. */
+static int natural(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
+                   size_t scratch_bytes, bool laplace, vor_coordinates_t *out)
 {
     if ((d == NULL) || (out == NULL) || ((scratch == NULL) && (scratch_bytes > 0u))) {
         return VOR_ERR_ARG;
     }
     ip_space_t sp;
     uint32_t needed = 0;
-    int err = sibson_core(d, q, hint, scratch, scratch_bytes, &sp, &needed);
+    int err = coordinates(d, q, hint, scratch, scratch_bytes, laplace, &sp, &needed);
     if (err != VOR_OK) {
         if (err == VOR_ERR_NOMEM) {
             out->count = needed;
@@ -682,6 +757,18 @@ int vor_sibson(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch, size
     out->limbs = words;
     out->count = sp.k;
     return VOR_OK;
+}
+
+int vor_sibson(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch, size_t scratch_bytes,
+               vor_coordinates_t *out)
+{
+    return natural(d, q, hint, scratch, scratch_bytes, false, out);
+}
+
+int vor_laplace(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch, size_t scratch_bytes,
+                vor_coordinates_t *out)
+{
+    return natural(d, q, hint, scratch, scratch_bytes, true, out);
 }
 
 /* |rest| / step rounded to the nearest integer, halves away from zero,
@@ -705,8 +792,9 @@ static uint64_t rounded_quotient(vor__limb *rest, vor__limb *step, size_t width)
     return quotient + ((vor__mw_compare(rest, step, width) >= 0) ? 1u : 0u);
 }
 
-int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
-                    void *scratch, size_t scratch_bytes, vor_interpolation_t *out)
+/* vor_interpolate and vor_interpolate_laplace. */
+static int interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                       void *scratch, size_t scratch_bytes, bool laplace, vor_interpolation_t *out)
 {
     if ((d == NULL) || (values == NULL) || (out == NULL) ||
         ((scratch == NULL) && (scratch_bytes > 0u))) {
@@ -714,7 +802,7 @@ int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32
     }
     ip_space_t sp;
     uint32_t needed = 0;
-    int err = sibson_core(d, q, hint, scratch, scratch_bytes, &sp, &needed);
+    int err = coordinates(d, q, hint, scratch, scratch_bytes, laplace, &sp, &needed);
     if (err != VOR_OK) {
         if (err == VOR_ERR_NOMEM) {
             out->neighbours = needed;
@@ -755,4 +843,16 @@ int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32
     out->neighbours = sp.k;
     out->value = (int32_t)((sign < 0) ? -(int64_t)magnitude : (int64_t)magnitude);
     return VOR_OK;
+}
+
+int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                    void *scratch, size_t scratch_bytes, vor_interpolation_t *out)
+{
+    return interpolate(d, values, q, hint, scratch, scratch_bytes, false, out);
+}
+
+int vor_interpolate_laplace(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                            void *scratch, size_t scratch_bytes, vor_interpolation_t *out)
+{
+    return interpolate(d, values, q, hint, scratch, scratch_bytes, true, out);
 }

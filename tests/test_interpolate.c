@@ -147,7 +147,7 @@ static bool ip_build(vor_t *d, uint8_t *arena, const vor_point_t *points, uint32
 
 /* The invariants of one answer: positive weights adding up to the
  * denominator, linear precision, at most one listing of each site. */
-static bool ip_invariants(const vor_t *d, const vor_sibson_t *s, vor_point_t q)
+static bool ip_invariants(const vor_t *d, const vor_coordinates_t *s, vor_point_t q)
 {
     bool ok = (s->count >= 1u) && (s->limbs >= 1u);
     big_words(&big_a, s->denominator, s->limbs);
@@ -175,7 +175,32 @@ static bool ip_invariants(const vor_t *d, const vor_sibson_t *s, vor_point_t q)
     return ok && big_equal(&big_a, &big_b) && big_zero(&big_c) && big_zero(&big_d);
 }
 
-static void check_vectors(void)
+/* The brute force's coordinates of one query (Sibson's or Laplace's). */
+static uint32_t ip_vector_weights(const vor_coordinates_t *s, const ipv_weight_t *weights, uint32_t count)
+{
+    uint32_t bad = 0;
+    big_words(&big_a, s->denominator, s->limbs);
+    for (uint32_t j = 0; j < count; j++) {
+        const ipv_weight_t *w = &weights[j];
+        uint32_t k = 0;
+        while ((k < s->count) && (s->sites[k] != w->site)) {
+            k++;
+        }
+        if (k == s->count) {
+            return bad + 1u;
+        }
+        /* w_k / D == num / den */
+        big_words(&big_b, s->weights + ((size_t)k * s->limbs), s->limbs);
+        big_words(&big_c, w->den, w->den_words);
+        big_mul(&big_d, &big_b, &big_c);
+        big_words(&big_b, w->num, w->num_words);
+        big_mul(&big_e, &big_b, &big_a);
+        bad += big_equal(&big_d, &big_e) ? 0u : 1u;
+    }
+    return bad;
+}
+
+static void check_vectors(bool laplace)
 {
     vor_t d;
     uint32_t bad = 0;
@@ -187,8 +212,9 @@ static void check_vectors(void)
             config = v->config;
             bad += ip_build(&d, ip_arena, c->sites, c->n) ? 0u : 1u;
         }
-        vor_sibson_t s;
-        int err = vor_sibson(&d, v->q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &s);
+        vor_coordinates_t s;
+        int err = (laplace ? vor_laplace : vor_sibson)(&d, v->q, VOR_NO_HINT, ip_scratch,
+                                                      sizeof ip_scratch, &s);
         if (v->outside) {
             bad += (err == VOR_ERR_OUTSIDE) ? 0u : 1u;
             continue;
@@ -197,25 +223,7 @@ static void check_vectors(void)
             bad++;
             continue;
         }
-        big_words(&big_a, s.denominator, s.limbs);
-        for (uint32_t j = 0; j < v->count; j++) {
-            const ipv_weight_t *w = &v->weights[j];
-            uint32_t k = 0;
-            while ((k < s.count) && (s.sites[k] != w->site)) {
-                k++;
-            }
-            if (k == s.count) {
-                bad++;
-                break;
-            }
-            /* w_k / D == num / den */
-            big_words(&big_b, s.weights + ((size_t)k * s.limbs), s.limbs);
-            big_words(&big_c, w->den, w->den_words);
-            big_mul(&big_d, &big_b, &big_c);
-            big_words(&big_b, w->num, w->num_words);
-            big_mul(&big_e, &big_b, &big_a);
-            bad += big_equal(&big_d, &big_e) ? 0u : 1u;
-        }
+        bad += ip_vector_weights(&s, laplace ? v->laplace : v->weights, v->count);
     }
     CHECK(bad == 0u, "%u vectors differ from the brute force", bad);
 }
@@ -241,7 +249,7 @@ static uint32_t ip_random_sites(test_rng_t *rng, int32_t range, bool grid)
 
 /* Same fractions after a quarter turn (x, y) -> (-y, x), where the
  * triangles and denominators differ. */
-static bool ip_turn_agrees(const vor_sibson_t *s, const vor_sibson_t *t)
+static bool ip_turn_agrees(const vor_coordinates_t *s, const vor_coordinates_t *t)
 {
     if (s->count != t->count) {
         return false;
@@ -270,7 +278,7 @@ static bool ip_turn_agrees(const vor_sibson_t *s, const vor_sibson_t *t)
 /* vor_interpolate's answer against sum v_i w_i / D from vor_sibson, and
  * its rounding, halves away from zero, as exact inequalities:
  * |2 N - 2 value D| <= D, and = D only away from zero. */
-static bool ip_value_agrees(const vor_t *d, const vor_sibson_t *s, const vor_interpolation_t *v)
+static bool ip_value_agrees(const vor_t *d, const vor_coordinates_t *s, const vor_interpolation_t *v)
 {
     big_int(&big_a, 0);
     for (uint32_t i = 0; i < s->count; i++) {
@@ -348,8 +356,8 @@ static void check_random(test_rng_t *rng, int32_t range, bool grid, uint32_t rou
                 q.x = (int32_t)(((int64_t)a.x + b.x) / 2);
                 q.y = (int32_t)(((int64_t)a.y + b.y) / 2);
             }
-            vor_sibson_t s;
-            vor_sibson_t t;
+            vor_coordinates_t s;
+            vor_coordinates_t t;
             int err = vor_sibson(&d, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &s);
             int err2 = vor_sibson(&e, ip_turn(q), VOR_NO_HINT, ip_scratch2, sizeof ip_scratch2, &t);
             if ((err != err2) || ((err != VOR_OK) && (err != VOR_ERR_OUTSIDE))) {
@@ -364,6 +372,13 @@ static void check_random(test_rng_t *rng, int32_t range, bool grid, uint32_t rou
             vor_interpolation_t v;
             err = vor_interpolate(&d, ip_values, q, VOR_NO_HINT, ip_scratch2, sizeof ip_scratch2, &v);
             bad += ((err == VOR_OK) && (v.neighbours == s.count) && ip_value_agrees(&d, &s, &v)) ? 0u : 1u;
+            /* Laplace's: the same neighbours, the same invariants */
+            err = vor_laplace(&d, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &s);
+            err2 = vor_laplace(&e, ip_turn(q), VOR_NO_HINT, ip_scratch2, sizeof ip_scratch2, &t);
+            bad += ((err == VOR_OK) && (err2 == VOR_OK) && ip_invariants(&d, &s, q) &&
+                    ip_turn_agrees(&s, &t)) ? 0u : 1u;
+            err = vor_interpolate_laplace(&d, ip_values, q, VOR_NO_HINT, ip_scratch2, sizeof ip_scratch2, &v);
+            bad += ((err == VOR_OK) && (v.neighbours == s.count) && ip_value_agrees(&d, &s, &v)) ? 0u : 1u;
         }
     }
     CHECK(bad == 0u, "%u random answers broke an invariant", bad);
@@ -377,7 +392,7 @@ static void check_special(void)
     static const vor_point_t square[] = {{0, 0}, {10, 0}, {20, 0}, {20, 20}, {0, 20}, {7, 9}};
     static const int32_t values[] = {0, 100, -300, 7, 1000, 55};
     vor_t d;
-    vor_sibson_t s;
+    vor_coordinates_t s;
     vor_interpolation_t v;
     CHECK(ip_build(&d, ip_arena, square, 6u), "built");
     for (uint32_t i = 0; i < 6u; i++) {
@@ -390,6 +405,12 @@ static void check_special(void)
     CHECK(vor_interpolate(&d, values, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_OK &&
               (v.value == -100) && (v.neighbours == 2u) && (v.sign < 0),
           "hull edge: -100, got %d", (int)v.value);
+    CHECK(vor_interpolate_laplace(&d, values, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_OK &&
+              (v.value == -100) && (v.neighbours == 2u),
+          "hull edge, Laplace: -100, got %d", (int)v.value);
+    CHECK(vor_interpolate_laplace(&d, values, square[5], VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_OK &&
+              (v.value == 55),
+          "site, Laplace: its value");
     q.x = 3; /* 3/10 of the way from 0 to 100 */
     CHECK(vor_interpolate(&d, values, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_OK &&
               (v.value == 30) && (v.numerator[0] * 1u == 30u * v.denominator[0]) && (v.limbs == 1u),
@@ -434,8 +455,8 @@ static void check_errors(void)
     static const int32_t values[] = {1, 2, 3, 4, 5, 6, 7};
     vor_t d;
     vor_t empty;
-    vor_sibson_t s;
-    vor_sibson_t keep;
+    vor_coordinates_t s;
+    vor_coordinates_t keep;
     vor_interpolation_t v;
     vor_interpolation_t keep_v;
     vor_point_t q = {4, 4};
@@ -455,6 +476,9 @@ static void check_errors(void)
     CHECK(vor_sibson(&d, q, 99u, ip_scratch, sizeof ip_scratch, &s) == VOR_ERR_ARG, "bad hint");
     CHECK(vor_sibson(&empty, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &s) == VOR_ERR_EMPTY, "empty");
     CHECK(vor_interpolate(&d, NULL, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_ERR_ARG, "NULL values");
+    CHECK(vor_laplace(NULL, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &s) == VOR_ERR_ARG, "Laplace: NULL d");
+    CHECK(vor_interpolate_laplace(&d, NULL, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_ERR_ARG,
+          "Laplace: NULL values");
     CHECK(vor_interpolate(&d, values, q, 99u, ip_scratch, sizeof ip_scratch, &v) == VOR_ERR_ARG, "bad hint");
     q.x = 9;
     CHECK(vor_interpolate(&d, values, q, VOR_NO_HINT, ip_scratch, sizeof ip_scratch, &v) == VOR_ERR_OUTSIDE, "outside");
@@ -478,7 +502,8 @@ static void check_errors(void)
 void test_interpolate(void)
 {
     test_rng_t rng;
-    TEST_CASE("vectors") check_vectors();
+    TEST_CASE("vectors") check_vectors(false);
+    TEST_CASE("laplace_vectors") check_vectors(true);
     TEST_CASE("special") check_special();
     TEST_CASE("errors") check_errors();
     TEST_CASE("small") check_random(test_rng_seed(&rng, 26u), 6, false, 40u);

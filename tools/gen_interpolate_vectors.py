@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
 """Generates tests/vectors/interpolate_vectors.h: natural-neighbour
-(Sibson) coordinates by brute force, independently of src/interpolate.c.
+coordinates (Sibson's and Laplace's) by brute force, independently of
+src/interpolate.c.
 
 Each query point's coordinates come from exact rational clipping with
 fractions.Fraction: q's cell in the diagram with q added (a huge box cut
@@ -95,6 +96,33 @@ def natural(sites, q):
     return out
 
 
+def laplace(sites, q):
+    """Laplace's coordinates of q strictly inside the hull: for each edge
+    of q's cell (counterclockwise, v -> w), on the bisector of q and site
+    p, |edge| / |p - q| = (p - q) x (w - v) / |p - q|^2, normalised."""
+    cell = [(-BIG, -BIG), (BIG, -BIG), (BIG, BIG), (-BIG, BIG)]
+    for s in sites:
+        cell = clip(cell, *nearer(q, s))
+    t = {}
+    for j, v in enumerate(cell):
+        w = cell[(j + 1) % len(cell)]
+        for i, p in enumerate(sites):
+            on = lambda z: (z[0] - p[0]) ** 2 + (z[1] - p[1]) ** 2 == (z[0] - q[0]) ** 2 + (z[1] - q[1]) ** 2
+            if v != w and on(v) and on(w):
+                a = (p[0] - q[0], p[1] - q[1])
+                t[i] = t.get(i, 0) + F(a[0] * (w[1] - v[1]) - a[1] * (w[0] - v[0]), a[0] ** 2 + a[1] ** 2)
+    total = sum(t.values())
+    return {i: x / total for i, x in t.items() if x != 0}
+
+
+def natural_laplace(sites, q):
+    """natural() with Laplace's coordinates where q is strictly inside."""
+    ref = natural(sites, q)
+    if ref is None or q in sites or hull_edge_around(sites, q) is not None:
+        return ref
+    return laplace(sites, q)
+
+
 def words(v):
     out = []
     while True:
@@ -128,7 +156,7 @@ def main():
     print(" * Sibson coordinates by exact rational clipping (fractions.Fraction). */")
     print("#ifndef INTERPOLATE_VECTORS_H\n#define INTERPOLATE_VECTORS_H\n#include <stdint.h>\n#include \"vor.h\"\n")
     print("typedef struct { uint32_t site; uint32_t num_words; uint32_t den_words; const uint32_t *num; const uint32_t *den; } ipv_weight_t;")
-    print("typedef struct { uint32_t config; vor_point_t q; int outside; uint32_t count; const ipv_weight_t *weights; } ipv_query_t;")
+    print("typedef struct { uint32_t config; vor_point_t q; int outside; uint32_t count; const ipv_weight_t *weights; const ipv_weight_t *laplace; } ipv_query_t;")
     print("typedef struct { uint32_t n; const vor_point_t *sites; } ipv_config_t;\n")
     queries = []
     for ci, sites in enumerate(configs):
@@ -142,26 +170,28 @@ def main():
         for _ in range(7):
             qs.append((rng.randint(min(xs) - 1, max(xs) + 1), rng.randint(min(ys) - 1, max(ys) + 1)))
         for q in qs:
-            queries.append((ci, q, natural(sites, q)))
+            queries.append((ci, q, natural(sites, q), natural_laplace(sites, q)))
     print(f"static const ipv_config_t ipv_configs[] = {{" +
           ", ".join(f"{{{len(s)}u, ipv_sites_{i}}}" for i, s in enumerate(configs)) + "};")
-    for qi, (ci, q, ref) in enumerate(queries):
+    for qi, (ci, q, ref, lap) in enumerate(queries):
         if not ref:
             continue
-        for site, lam in sorted(ref.items()):
-            print(f"static const uint32_t ipv_n_{qi}_{site}[] = {{" +
-                  ", ".join(f"0x{w:08x}u" for w in words(lam.numerator)) + "};")
-            print(f"static const uint32_t ipv_d_{qi}_{site}[] = {{" +
-                  ", ".join(f"0x{w:08x}u" for w in words(lam.denominator)) + "};")
-        print(f"static const ipv_weight_t ipv_w_{qi}[] = {{" + ", ".join(
-            f"{{{site}u, {len(words(lam.numerator))}u, {len(words(lam.denominator))}u, ipv_n_{qi}_{site}, ipv_d_{qi}_{site}}}"
-            for site, lam in sorted(ref.items())) + "};")
+        for name, table in (("w", ref), ("l", lap)):
+            for site, lam in sorted(table.items()):
+                print(f"static const uint32_t ipv_{name}n_{qi}_{site}[] = {{" +
+                      ", ".join(f"0x{w:08x}u" for w in words(lam.numerator)) + "};")
+                print(f"static const uint32_t ipv_{name}d_{qi}_{site}[] = {{" +
+                      ", ".join(f"0x{w:08x}u" for w in words(lam.denominator)) + "};")
+            print(f"static const ipv_weight_t ipv_{name}_{qi}[] = {{" + ", ".join(
+                f"{{{site}u, {len(words(lam.numerator))}u, {len(words(lam.denominator))}u, "
+                f"ipv_{name}n_{qi}_{site}, ipv_{name}d_{qi}_{site}}}"
+                for site, lam in sorted(table.items())) + "};")
     print("static const ipv_query_t ipv_queries[] = {")
-    for qi, (ci, q, ref) in enumerate(queries):
+    for qi, (ci, q, ref, lap) in enumerate(queries):
         if ref:
-            print(f"    {{{ci}u, {{{q[0]}, {q[1]}}}, 0, {len(ref)}u, ipv_w_{qi}}},")
+            print(f"    {{{ci}u, {{{q[0]}, {q[1]}}}, 0, {len(ref)}u, ipv_w_{qi}, ipv_l_{qi}}},")
         else:
-            print(f"    {{{ci}u, {{{q[0]}, {q[1]}}}, 1, 0u, 0}},")
+            print(f"    {{{ci}u, {{{q[0]}, {q[1]}}}, 1, 0u, 0, 0}},")
     print("};\n#endif")
 
 

@@ -7,7 +7,7 @@
 #include "vor.h"
 
 typedef struct { uint32_t site; uint32_t num_words; uint32_t den_words; const uint32_t *num; const uint32_t *den; } ipv_weight_t;
-typedef struct { uint32_t config; vor_point_t q; int outside; uint32_t count; const ipv_weight_t *weights; } ipv_query_t;
+typedef struct { uint32_t config; vor_point_t q; int outside; uint32_t count; const ipv_weight_t *weights; const ipv_weight_t *laplace; } ipv_query_t;
 typedef struct { uint32_t n; const vor_point_t *sites; } ipv_config_t;
 
 static const vor_point_t ipv_sites_0[] = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
@@ -25,557 +25,982 @@ static const vor_point_t ipv_sites_11[] = {{-7, 8}, {9, -7}, {1, -6}, {4, 5}, {4
 static const vor_point_t ipv_sites_12[] = {{91176596, 442588088}, {-634416441, 753609386}, {1259660260, 1980712544}, {-960063849, -273787613}};
 static const vor_point_t ipv_sites_13[] = {{476434774, 836336602}, {1323128901, -1938336381}, {2029446305, -1443626999}, {2003575888, 807268799}};
 static const ipv_config_t ipv_configs[] = {{4u, ipv_sites_0}, {5u, ipv_sites_1}, {9u, ipv_sites_2}, {8u, ipv_sites_3}, {9u, ipv_sites_4}, {7u, ipv_sites_5}, {8u, ipv_sites_6}, {4u, ipv_sites_7}, {3u, ipv_sites_8}, {8u, ipv_sites_9}, {3u, ipv_sites_10}, {6u, ipv_sites_11}, {4u, ipv_sites_12}, {4u, ipv_sites_13}};
-static const uint32_t ipv_n_0_0[] = {0x00000001u};
-static const uint32_t ipv_d_0_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_0[] = {{0u, 1u, 1u, ipv_n_0_0, ipv_d_0_0}};
-static const uint32_t ipv_n_1_0[] = {0x00000001u};
-static const uint32_t ipv_d_1_0[] = {0x00000002u};
-static const uint32_t ipv_n_1_3[] = {0x00000001u};
-static const uint32_t ipv_d_1_3[] = {0x00000002u};
-static const ipv_weight_t ipv_w_1[] = {{0u, 1u, 1u, ipv_n_1_0, ipv_d_1_0}, {3u, 1u, 1u, ipv_n_1_3, ipv_d_1_3}};
-static const uint32_t ipv_n_2_0[] = {0x00000003u};
-static const uint32_t ipv_d_2_0[] = {0x00000004u};
-static const uint32_t ipv_n_2_1[] = {0x00000001u};
-static const uint32_t ipv_d_2_1[] = {0x00000004u};
-static const ipv_weight_t ipv_w_2[] = {{0u, 1u, 1u, ipv_n_2_0, ipv_d_2_0}, {1u, 1u, 1u, ipv_n_2_1, ipv_d_2_1}};
-static const uint32_t ipv_n_7_0[] = {0x00000001u};
-static const uint32_t ipv_d_7_0[] = {0x00000008u};
-static const uint32_t ipv_n_7_1[] = {0x00000001u};
-static const uint32_t ipv_d_7_1[] = {0x00000008u};
-static const uint32_t ipv_n_7_2[] = {0x00000003u};
-static const uint32_t ipv_d_7_2[] = {0x00000008u};
-static const uint32_t ipv_n_7_3[] = {0x00000003u};
-static const uint32_t ipv_d_7_3[] = {0x00000008u};
-static const ipv_weight_t ipv_w_7[] = {{0u, 1u, 1u, ipv_n_7_0, ipv_d_7_0}, {1u, 1u, 1u, ipv_n_7_1, ipv_d_7_1}, {2u, 1u, 1u, ipv_n_7_2, ipv_d_7_2}, {3u, 1u, 1u, ipv_n_7_3, ipv_d_7_3}};
-static const uint32_t ipv_n_9_0[] = {0x00000001u};
-static const uint32_t ipv_d_9_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_9[] = {{0u, 1u, 1u, ipv_n_9_0, ipv_d_9_0}};
-static const uint32_t ipv_n_10_0[] = {0x00000001u};
-static const uint32_t ipv_d_10_0[] = {0x00000002u};
-static const uint32_t ipv_n_10_1[] = {0x00000001u};
-static const uint32_t ipv_d_10_1[] = {0x00000014u};
-static const uint32_t ipv_n_10_3[] = {0x00000001u};
-static const uint32_t ipv_d_10_3[] = {0x00000014u};
-static const uint32_t ipv_n_10_4[] = {0x00000002u};
-static const uint32_t ipv_d_10_4[] = {0x00000005u};
-static const ipv_weight_t ipv_w_10[] = {{0u, 1u, 1u, ipv_n_10_0, ipv_d_10_0}, {1u, 1u, 1u, ipv_n_10_1, ipv_d_10_1}, {3u, 1u, 1u, ipv_n_10_3, ipv_d_10_3}, {4u, 1u, 1u, ipv_n_10_4, ipv_d_10_4}};
-static const uint32_t ipv_n_11_0[] = {0x00000001u};
-static const uint32_t ipv_d_11_0[] = {0x00000004u};
-static const uint32_t ipv_n_11_3[] = {0x00000001u};
-static const uint32_t ipv_d_11_3[] = {0x00000004u};
-static const uint32_t ipv_n_11_4[] = {0x00000001u};
-static const uint32_t ipv_d_11_4[] = {0x00000002u};
-static const ipv_weight_t ipv_w_11[] = {{0u, 1u, 1u, ipv_n_11_0, ipv_d_11_0}, {3u, 1u, 1u, ipv_n_11_3, ipv_d_11_3}, {4u, 1u, 1u, ipv_n_11_4, ipv_d_11_4}};
-static const uint32_t ipv_n_13_2[] = {0x00000001u};
-static const uint32_t ipv_d_13_2[] = {0x00000001u};
-static const ipv_weight_t ipv_w_13[] = {{2u, 1u, 1u, ipv_n_13_2, ipv_d_13_2}};
-static const uint32_t ipv_n_14_2[] = {0x00000003u};
-static const uint32_t ipv_d_14_2[] = {0x00000004u};
-static const uint32_t ipv_n_14_3[] = {0x00000001u};
-static const uint32_t ipv_d_14_3[] = {0x00000004u};
-static const ipv_weight_t ipv_w_14[] = {{2u, 1u, 1u, ipv_n_14_2, ipv_d_14_2}, {3u, 1u, 1u, ipv_n_14_3, ipv_d_14_3}};
-static const uint32_t ipv_n_17_0[] = {0x00000001u};
-static const uint32_t ipv_d_17_0[] = {0x00000002u};
-static const uint32_t ipv_n_17_3[] = {0x00000001u};
-static const uint32_t ipv_d_17_3[] = {0x00000002u};
-static const ipv_weight_t ipv_w_17[] = {{0u, 1u, 1u, ipv_n_17_0, ipv_d_17_0}, {3u, 1u, 1u, ipv_n_17_3, ipv_d_17_3}};
-static const uint32_t ipv_n_18_0[] = {0x00000001u};
-static const uint32_t ipv_d_18_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_18[] = {{0u, 1u, 1u, ipv_n_18_0, ipv_d_18_0}};
-static const uint32_t ipv_n_19_4[] = {0x00000001u};
-static const uint32_t ipv_d_19_4[] = {0x00000001u};
-static const ipv_weight_t ipv_w_19[] = {{4u, 1u, 1u, ipv_n_19_4, ipv_d_19_4}};
-static const uint32_t ipv_n_20_0[] = {0x00000001u};
-static const uint32_t ipv_d_20_0[] = {0x00000008u};
-static const uint32_t ipv_n_20_1[] = {0x00000001u};
-static const uint32_t ipv_d_20_1[] = {0x00000008u};
-static const uint32_t ipv_n_20_3[] = {0x00000003u};
-static const uint32_t ipv_d_20_3[] = {0x00000008u};
-static const uint32_t ipv_n_20_4[] = {0x00000003u};
-static const uint32_t ipv_d_20_4[] = {0x00000008u};
-static const ipv_weight_t ipv_w_20[] = {{0u, 1u, 1u, ipv_n_20_0, ipv_d_20_0}, {1u, 1u, 1u, ipv_n_20_1, ipv_d_20_1}, {3u, 1u, 1u, ipv_n_20_3, ipv_d_20_3}, {4u, 1u, 1u, ipv_n_20_4, ipv_d_20_4}};
-static const uint32_t ipv_n_21_0[] = {0x00000003u};
-static const uint32_t ipv_d_21_0[] = {0x00000008u};
-static const uint32_t ipv_n_21_1[] = {0x00000003u};
-static const uint32_t ipv_d_21_1[] = {0x00000008u};
-static const uint32_t ipv_n_21_3[] = {0x00000001u};
-static const uint32_t ipv_d_21_3[] = {0x00000008u};
-static const uint32_t ipv_n_21_4[] = {0x00000001u};
-static const uint32_t ipv_d_21_4[] = {0x00000008u};
-static const ipv_weight_t ipv_w_21[] = {{0u, 1u, 1u, ipv_n_21_0, ipv_d_21_0}, {1u, 1u, 1u, ipv_n_21_1, ipv_d_21_1}, {3u, 1u, 1u, ipv_n_21_3, ipv_d_21_3}, {4u, 1u, 1u, ipv_n_21_4, ipv_d_21_4}};
-static const uint32_t ipv_n_22_5[] = {0x00000001u};
-static const uint32_t ipv_d_22_5[] = {0x00000004u};
-static const uint32_t ipv_n_22_8[] = {0x00000003u};
-static const uint32_t ipv_d_22_8[] = {0x00000004u};
-static const ipv_weight_t ipv_w_22[] = {{5u, 1u, 1u, ipv_n_22_5, ipv_d_22_5}, {8u, 1u, 1u, ipv_n_22_8, ipv_d_22_8}};
-static const uint32_t ipv_n_23_4[] = {0x00000009u};
-static const uint32_t ipv_d_23_4[] = {0x00000010u};
-static const uint32_t ipv_n_23_5[] = {0x00000003u};
-static const uint32_t ipv_d_23_5[] = {0x00000010u};
-static const uint32_t ipv_n_23_7[] = {0x00000003u};
-static const uint32_t ipv_d_23_7[] = {0x00000010u};
-static const uint32_t ipv_n_23_8[] = {0x00000001u};
-static const uint32_t ipv_d_23_8[] = {0x00000010u};
-static const ipv_weight_t ipv_w_23[] = {{4u, 1u, 1u, ipv_n_23_4, ipv_d_23_4}, {5u, 1u, 1u, ipv_n_23_5, ipv_d_23_5}, {7u, 1u, 1u, ipv_n_23_7, ipv_d_23_7}, {8u, 1u, 1u, ipv_n_23_8, ipv_d_23_8}};
-static const uint32_t ipv_n_24_5[] = {0x00000001u};
-static const uint32_t ipv_d_24_5[] = {0x00000001u};
-static const ipv_weight_t ipv_w_24[] = {{5u, 1u, 1u, ipv_n_24_5, ipv_d_24_5}};
-static const uint32_t ipv_n_25_3[] = {0x00000001u};
-static const uint32_t ipv_d_25_3[] = {0x00000004u};
-static const uint32_t ipv_n_25_6[] = {0x00000003u};
-static const uint32_t ipv_d_25_6[] = {0x00000004u};
-static const ipv_weight_t ipv_w_25[] = {{3u, 1u, 1u, ipv_n_25_3, ipv_d_25_3}, {6u, 1u, 1u, ipv_n_25_6, ipv_d_25_6}};
-static const uint32_t ipv_n_27_0[] = {0x00000001u};
-static const uint32_t ipv_d_27_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_27[] = {{0u, 1u, 1u, ipv_n_27_0, ipv_d_27_0}};
-static const uint32_t ipv_n_28_0[] = {0x0001c2a2u};
-static const uint32_t ipv_d_28_0[] = {0x0005bda1u};
-static const uint32_t ipv_n_28_1[] = {0x00001a82u};
-static const uint32_t ipv_d_28_1[] = {0x0005bda1u};
-static const uint32_t ipv_n_28_2[] = {0x000005e4u};
-static const uint32_t ipv_d_28_2[] = {0x0005bda1u};
-static const uint32_t ipv_n_28_3[] = {0x00000374u};
-static const uint32_t ipv_d_28_3[] = {0x0005bda1u};
-static const uint32_t ipv_n_28_4[] = {0x000007c5u};
-static const uint32_t ipv_d_28_4[] = {0x000b7b42u};
-static const uint32_t ipv_n_28_5[] = {0x00001155u};
-static const uint32_t ipv_d_28_5[] = {0x000b7b42u};
-static const uint32_t ipv_n_28_6[] = {0x00004554u};
-static const uint32_t ipv_d_28_6[] = {0x0005bda1u};
-static const uint32_t ipv_n_28_7[] = {0x00038544u};
-static const uint32_t ipv_d_28_7[] = {0x0005bda1u};
-static const ipv_weight_t ipv_w_28[] = {{0u, 1u, 1u, ipv_n_28_0, ipv_d_28_0}, {1u, 1u, 1u, ipv_n_28_1, ipv_d_28_1}, {2u, 1u, 1u, ipv_n_28_2, ipv_d_28_2}, {3u, 1u, 1u, ipv_n_28_3, ipv_d_28_3}, {4u, 1u, 1u, ipv_n_28_4, ipv_d_28_4}, {5u, 1u, 1u, ipv_n_28_5, ipv_d_28_5}, {6u, 1u, 1u, ipv_n_28_6, ipv_d_28_6}, {7u, 1u, 1u, ipv_n_28_7, ipv_d_28_7}};
-static const uint32_t ipv_n_32_0[] = {0x000002a0u};
-static const uint32_t ipv_d_32_0[] = {0x00002d05u};
-static const uint32_t ipv_n_32_1[] = {0x00000150u};
-static const uint32_t ipv_d_32_1[] = {0x00002d05u};
-static const uint32_t ipv_n_32_2[] = {0x00000111u};
-static const uint32_t ipv_d_32_2[] = {0x00002d05u};
-static const uint32_t ipv_n_32_3[] = {0x0000016cu};
-static const uint32_t ipv_d_32_3[] = {0x00002d05u};
-static const uint32_t ipv_n_32_4[] = {0x00000340u};
-static const uint32_t ipv_d_32_4[] = {0x00002d05u};
-static const uint32_t ipv_n_32_5[] = {0x000009c0u};
-static const uint32_t ipv_d_32_5[] = {0x00002d05u};
-static const uint32_t ipv_n_32_6[] = {0x00001110u};
-static const uint32_t ipv_d_32_6[] = {0x00002d05u};
-static const uint32_t ipv_n_32_7[] = {0x00000888u};
-static const uint32_t ipv_d_32_7[] = {0x00002d05u};
-static const ipv_weight_t ipv_w_32[] = {{0u, 1u, 1u, ipv_n_32_0, ipv_d_32_0}, {1u, 1u, 1u, ipv_n_32_1, ipv_d_32_1}, {2u, 1u, 1u, ipv_n_32_2, ipv_d_32_2}, {3u, 1u, 1u, ipv_n_32_3, ipv_d_32_3}, {4u, 1u, 1u, ipv_n_32_4, ipv_d_32_4}, {5u, 1u, 1u, ipv_n_32_5, ipv_d_32_5}, {6u, 1u, 1u, ipv_n_32_6, ipv_d_32_6}, {7u, 1u, 1u, ipv_n_32_7, ipv_d_32_7}};
-static const uint32_t ipv_n_34_0[] = {0x00000001u};
-static const uint32_t ipv_d_34_0[] = {0x0000004bu};
-static const uint32_t ipv_n_34_1[] = {0x0000000bu};
-static const uint32_t ipv_d_34_1[] = {0x00000384u};
-static const uint32_t ipv_n_34_2[] = {0x00000001u};
-static const uint32_t ipv_d_34_2[] = {0x00000032u};
-static const uint32_t ipv_n_34_3[] = {0x00000003u};
-static const uint32_t ipv_d_34_3[] = {0x00000032u};
-static const uint32_t ipv_n_34_4[] = {0x00000021u};
-static const uint32_t ipv_d_34_4[] = {0x00000064u};
-static const uint32_t ipv_n_34_5[] = {0x0000000bu};
-static const uint32_t ipv_d_34_5[] = {0x00000019u};
-static const uint32_t ipv_n_34_6[] = {0x00000016u};
-static const uint32_t ipv_d_34_6[] = {0x000000e1u};
-static const uint32_t ipv_n_34_7[] = {0x00000002u};
-static const uint32_t ipv_d_34_7[] = {0x0000004bu};
-static const ipv_weight_t ipv_w_34[] = {{0u, 1u, 1u, ipv_n_34_0, ipv_d_34_0}, {1u, 1u, 1u, ipv_n_34_1, ipv_d_34_1}, {2u, 1u, 1u, ipv_n_34_2, ipv_d_34_2}, {3u, 1u, 1u, ipv_n_34_3, ipv_d_34_3}, {4u, 1u, 1u, ipv_n_34_4, ipv_d_34_4}, {5u, 1u, 1u, ipv_n_34_5, ipv_d_34_5}, {6u, 1u, 1u, ipv_n_34_6, ipv_d_34_6}, {7u, 1u, 1u, ipv_n_34_7, ipv_d_34_7}};
-static const uint32_t ipv_n_35_0[] = {0x00000268u};
-static const uint32_t ipv_d_35_0[] = {0x00001d97u};
-static const uint32_t ipv_n_35_1[] = {0x000000e7u};
-static const uint32_t ipv_d_35_1[] = {0x000009ddu};
-static const uint32_t ipv_n_35_2[] = {0x00000134u};
-static const uint32_t ipv_d_35_2[] = {0x000009ddu};
-static const uint32_t ipv_n_35_3[] = {0x000004d0u};
-static const uint32_t ipv_d_35_3[] = {0x00001d97u};
-static const uint32_t ipv_n_35_4[] = {0x000001ceu};
-static const uint32_t ipv_d_35_4[] = {0x000009ddu};
-static const uint32_t ipv_n_35_5[] = {0x0000018cu};
-static const uint32_t ipv_d_35_5[] = {0x000009ddu};
-static const uint32_t ipv_n_35_6[] = {0x00000120u};
-static const uint32_t ipv_d_35_6[] = {0x000009ddu};
-static const uint32_t ipv_n_35_7[] = {0x000000e0u};
-static const uint32_t ipv_d_35_7[] = {0x000009ddu};
-static const ipv_weight_t ipv_w_35[] = {{0u, 1u, 1u, ipv_n_35_0, ipv_d_35_0}, {1u, 1u, 1u, ipv_n_35_1, ipv_d_35_1}, {2u, 1u, 1u, ipv_n_35_2, ipv_d_35_2}, {3u, 1u, 1u, ipv_n_35_3, ipv_d_35_3}, {4u, 1u, 1u, ipv_n_35_4, ipv_d_35_4}, {5u, 1u, 1u, ipv_n_35_5, ipv_d_35_5}, {6u, 1u, 1u, ipv_n_35_6, ipv_d_35_6}, {7u, 1u, 1u, ipv_n_35_7, ipv_d_35_7}};
-static const uint32_t ipv_n_36_0[] = {0x00000001u};
-static const uint32_t ipv_d_36_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_36[] = {{0u, 1u, 1u, ipv_n_36_0, ipv_d_36_0}};
-static const uint32_t ipv_n_37_0[] = {0x00000018u};
-static const uint32_t ipv_d_37_0[] = {0x00000061u};
-static const uint32_t ipv_n_37_1[] = {0x00000009u};
-static const uint32_t ipv_d_37_1[] = {0x00000061u};
-static const uint32_t ipv_n_37_6[] = {0x00000003u};
-static const uint32_t ipv_d_37_6[] = {0x00000794u};
-static const uint32_t ipv_n_37_7[] = {0x0000002fu};
-static const uint32_t ipv_d_37_7[] = {0x00000184u};
-static const uint32_t ipv_n_37_8[] = {0x00000209u};
-static const uint32_t ipv_d_37_8[] = {0x000003cau};
-static const ipv_weight_t ipv_w_37[] = {{0u, 1u, 1u, ipv_n_37_0, ipv_d_37_0}, {1u, 1u, 1u, ipv_n_37_1, ipv_d_37_1}, {6u, 1u, 1u, ipv_n_37_6, ipv_d_37_6}, {7u, 1u, 1u, ipv_n_37_7, ipv_d_37_7}, {8u, 1u, 1u, ipv_n_37_8, ipv_d_37_8}};
-static const uint32_t ipv_n_38_5[] = {0x00000002u};
-static const uint32_t ipv_d_38_5[] = {0x00000055u};
-static const uint32_t ipv_n_38_6[] = {0x0000008fu};
-static const uint32_t ipv_d_38_6[] = {0x00000154u};
-static const uint32_t ipv_n_38_7[] = {0x0000005bu};
-static const uint32_t ipv_d_38_7[] = {0x00000154u};
-static const uint32_t ipv_n_38_8[] = {0x00000031u};
-static const uint32_t ipv_d_38_8[] = {0x000000aau};
-static const ipv_weight_t ipv_w_38[] = {{5u, 1u, 1u, ipv_n_38_5, ipv_d_38_5}, {6u, 1u, 1u, ipv_n_38_6, ipv_d_38_6}, {7u, 1u, 1u, ipv_n_38_7, ipv_d_38_7}, {8u, 1u, 1u, ipv_n_38_8, ipv_d_38_8}};
-static const uint32_t ipv_n_39_0[] = {0x00000736u};
-static const uint32_t ipv_d_39_0[] = {0x00000b31u};
-static const uint32_t ipv_n_39_1[] = {0x000000f2u};
-static const uint32_t ipv_d_39_1[] = {0x000003bbu};
-static const uint32_t ipv_n_39_7[] = {0x0000000du};
-static const uint32_t ipv_d_39_7[] = {0x00000b31u};
-static const uint32_t ipv_n_39_8[] = {0x00000038u};
-static const uint32_t ipv_d_39_8[] = {0x0000023du};
-static const ipv_weight_t ipv_w_39[] = {{0u, 1u, 1u, ipv_n_39_0, ipv_d_39_0}, {1u, 1u, 1u, ipv_n_39_1, ipv_d_39_1}, {7u, 1u, 1u, ipv_n_39_7, ipv_d_39_7}, {8u, 1u, 1u, ipv_n_39_8, ipv_d_39_8}};
-static const uint32_t ipv_n_45_0[] = {0x00000001u};
-static const uint32_t ipv_d_45_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_45[] = {{0u, 1u, 1u, ipv_n_45_0, ipv_d_45_0}};
-static const uint32_t ipv_n_46_0[] = {0x00000356u};
-static const uint32_t ipv_d_46_0[] = {0x0000a5b7u};
-static const uint32_t ipv_n_46_1[] = {0x00000c40u};
-static const uint32_t ipv_d_46_1[] = {0x0000373du};
-static const uint32_t ipv_n_46_2[] = {0x000051a0u};
-static const uint32_t ipv_d_46_2[] = {0x0001f125u};
-static const uint32_t ipv_n_46_4[] = {0x00005d61u};
-static const uint32_t ipv_d_46_4[] = {0x0000a5b7u};
-static const uint32_t ipv_n_46_5[] = {0x00000118u};
-static const uint32_t ipv_d_46_5[] = {0x0000373du};
-static const uint32_t ipv_n_46_6[] = {0x00000548u};
-static const uint32_t ipv_d_46_6[] = {0x0001f125u};
-static const ipv_weight_t ipv_w_46[] = {{0u, 1u, 1u, ipv_n_46_0, ipv_d_46_0}, {1u, 1u, 1u, ipv_n_46_1, ipv_d_46_1}, {2u, 1u, 1u, ipv_n_46_2, ipv_d_46_2}, {4u, 1u, 1u, ipv_n_46_4, ipv_d_46_4}, {5u, 1u, 1u, ipv_n_46_5, ipv_d_46_5}, {6u, 1u, 1u, ipv_n_46_6, ipv_d_46_6}};
-static const uint32_t ipv_n_47_0[] = {0x00000005u};
-static const uint32_t ipv_d_47_0[] = {0x00000006u};
-static const uint32_t ipv_n_47_5[] = {0x00000001u};
-static const uint32_t ipv_d_47_5[] = {0x00000006u};
-static const ipv_weight_t ipv_w_47[] = {{0u, 1u, 1u, ipv_n_47_0, ipv_d_47_0}, {5u, 1u, 1u, ipv_n_47_5, ipv_d_47_5}};
-static const uint32_t ipv_n_48_2[] = {0x0000327eu};
-static const uint32_t ipv_d_48_2[] = {0x00005f73u};
-static const uint32_t ipv_n_48_3[] = {0x00001ed1u};
-static const uint32_t ipv_d_48_3[] = {0x00006a0eu};
-static const uint32_t ipv_n_48_4[] = {0x00000d24u};
-static const uint32_t ipv_d_48_4[] = {0x00009f15u};
-static const uint32_t ipv_n_48_6[] = {0x000012adu};
-static const uint32_t ipv_d_48_6[] = {0x0000bee6u};
-static const ipv_weight_t ipv_w_48[] = {{2u, 1u, 1u, ipv_n_48_2, ipv_d_48_2}, {3u, 1u, 1u, ipv_n_48_3, ipv_d_48_3}, {4u, 1u, 1u, ipv_n_48_4, ipv_d_48_4}, {6u, 1u, 1u, ipv_n_48_6, ipv_d_48_6}};
-static const uint32_t ipv_n_50_0[] = {0x00031f43u};
-static const uint32_t ipv_d_50_0[] = {0x00056ce8u};
-static const uint32_t ipv_n_50_1[] = {0x00002ae6u};
-static const uint32_t ipv_d_50_1[] = {0x0000ad9du};
-static const uint32_t ipv_n_50_4[] = {0x00000ef9u};
-static const uint32_t ipv_d_50_4[] = {0x0000e77cu};
-static const uint32_t ipv_n_50_5[] = {0x00000a71u};
-static const uint32_t ipv_d_50_5[] = {0x00005c98u};
-static const ipv_weight_t ipv_w_50[] = {{0u, 1u, 1u, ipv_n_50_0, ipv_d_50_0}, {1u, 1u, 1u, ipv_n_50_1, ipv_d_50_1}, {4u, 1u, 1u, ipv_n_50_4, ipv_d_50_4}, {5u, 1u, 1u, ipv_n_50_5, ipv_d_50_5}};
-static const uint32_t ipv_n_54_0[] = {0x00000001u};
-static const uint32_t ipv_d_54_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_54[] = {{0u, 1u, 1u, ipv_n_54_0, ipv_d_54_0}};
-static const uint32_t ipv_n_55_0[] = {0x00009dd1u};
-static const uint32_t ipv_d_55_0[] = {0x000480e3u};
-static const uint32_t ipv_n_55_3[] = {0x0001cef8u};
-static const uint32_t ipv_d_55_3[] = {0x00026cc9u};
-static const uint32_t ipv_n_55_6[] = {0x00002e4cu};
-static const uint32_t ipv_d_55_6[] = {0x00026cc9u};
-static const uint32_t ipv_n_55_7[] = {0x000004bau};
-static const uint32_t ipv_d_55_7[] = {0x00006e8du};
-static const ipv_weight_t ipv_w_55[] = {{0u, 1u, 1u, ipv_n_55_0, ipv_d_55_0}, {3u, 1u, 1u, ipv_n_55_3, ipv_d_55_3}, {6u, 1u, 1u, ipv_n_55_6, ipv_d_55_6}, {7u, 1u, 1u, ipv_n_55_7, ipv_d_55_7}};
-static const uint32_t ipv_n_57_0[] = {0x74e87400u};
-static const uint32_t ipv_d_57_0[] = {0xd64e4809u};
-static const uint32_t ipv_n_57_3[] = {0x0ef8f368u};
-static const uint32_t ipv_d_57_3[] = {0x73653a7bu};
-static const uint32_t ipv_n_57_6[] = {0x483b53c5u};
-static const uint32_t ipv_d_57_6[] = {0xe6ca74f6u};
-static const uint32_t ipv_n_57_7[] = {0x007bb185u};
-static const uint32_t ipv_d_57_7[] = {0x2919888eu};
-static const ipv_weight_t ipv_w_57[] = {{0u, 1u, 1u, ipv_n_57_0, ipv_d_57_0}, {3u, 1u, 1u, ipv_n_57_3, ipv_d_57_3}, {6u, 1u, 1u, ipv_n_57_6, ipv_d_57_6}, {7u, 1u, 1u, ipv_n_57_7, ipv_d_57_7}};
-static const uint32_t ipv_n_58_0[] = {0x093d94fdu};
-static const uint32_t ipv_d_58_0[] = {0x181fc811u};
-static const uint32_t ipv_n_58_3[] = {0x01d46f60u};
-static const uint32_t ipv_d_58_3[] = {0x03724127u};
-static const uint32_t ipv_n_58_4[] = {0x00022448u};
-static const uint32_t ipv_d_58_4[] = {0x00549989u};
-static const uint32_t ipv_n_58_6[] = {0x00160c2cu};
-static const uint32_t ipv_d_58_6[] = {0x016b4801u};
-static const ipv_weight_t ipv_w_58[] = {{0u, 1u, 1u, ipv_n_58_0, ipv_d_58_0}, {3u, 1u, 1u, ipv_n_58_3, ipv_d_58_3}, {4u, 1u, 1u, ipv_n_58_4, ipv_d_58_4}, {6u, 1u, 1u, ipv_n_58_6, ipv_d_58_6}};
-static const uint32_t ipv_n_63_0[] = {0x00000001u};
-static const uint32_t ipv_d_63_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_63[] = {{0u, 1u, 1u, ipv_n_63_0, ipv_d_63_0}};
-static const uint32_t ipv_n_64_0[] = {0x00063345u};
-static const uint32_t ipv_d_64_0[] = {0x00177a0cu};
-static const uint32_t ipv_n_64_1[] = {0x00000498u};
-static const uint32_t ipv_d_64_1[] = {0x0000d6a5u};
-static const uint32_t ipv_n_64_2[] = {0x0000fffdu};
-static const uint32_t ipv_d_64_2[] = {0x0006b528u};
-static const uint32_t ipv_n_64_3[] = {0x001a8c63u};
-static const uint32_t ipv_d_64_3[] = {0x002ef418u};
-static const ipv_weight_t ipv_w_64[] = {{0u, 1u, 1u, ipv_n_64_0, ipv_d_64_0}, {1u, 1u, 1u, ipv_n_64_1, ipv_d_64_1}, {2u, 1u, 1u, ipv_n_64_2, ipv_d_64_2}, {3u, 1u, 1u, ipv_n_64_3, ipv_d_64_3}};
-static const uint32_t ipv_n_72_0[] = {0x00000001u};
-static const uint32_t ipv_d_72_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_72[] = {{0u, 1u, 1u, ipv_n_72_0, ipv_d_72_0}};
-static const uint32_t ipv_n_73_0[] = {0x0000000bu};
-static const uint32_t ipv_d_73_0[] = {0x0000000fu};
-static const uint32_t ipv_n_73_1[] = {0x00000001u};
-static const uint32_t ipv_d_73_1[] = {0x0000001eu};
-static const uint32_t ipv_n_73_2[] = {0x00000007u};
-static const uint32_t ipv_d_73_2[] = {0x0000001eu};
-static const ipv_weight_t ipv_w_73[] = {{0u, 1u, 1u, ipv_n_73_0, ipv_d_73_0}, {1u, 1u, 1u, ipv_n_73_1, ipv_d_73_1}, {2u, 1u, 1u, ipv_n_73_2, ipv_d_73_2}};
-static const uint32_t ipv_n_81_0[] = {0x00000001u};
-static const uint32_t ipv_d_81_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_81[] = {{0u, 1u, 1u, ipv_n_81_0, ipv_d_81_0}};
-static const uint32_t ipv_n_82_0[] = {0x00000200u};
-static const uint32_t ipv_d_82_0[] = {0x00000a0fu};
-static const uint32_t ipv_n_82_1[] = {0x0000060fu};
-static const uint32_t ipv_d_82_1[] = {0x0000141eu};
-static const uint32_t ipv_n_82_2[] = {0x0000040au};
-static const uint32_t ipv_d_82_2[] = {0x00000a0fu};
-static const uint32_t ipv_n_82_7[] = {0x000001fbu};
-static const uint32_t ipv_d_82_7[] = {0x0000141eu};
-static const ipv_weight_t ipv_w_82[] = {{0u, 1u, 1u, ipv_n_82_0, ipv_d_82_0}, {1u, 1u, 1u, ipv_n_82_1, ipv_d_82_1}, {2u, 1u, 1u, ipv_n_82_2, ipv_d_82_2}, {7u, 1u, 1u, ipv_n_82_7, ipv_d_82_7}};
-static const uint32_t ipv_n_85_2[] = {0x00000152u};
-static const uint32_t ipv_d_85_2[] = {0x00001a89u};
-static const uint32_t ipv_n_85_3[] = {0x00006ee4u};
-static const uint32_t ipv_d_85_3[] = {0x0001f82bu};
-static const uint32_t ipv_n_85_5[] = {0x0000f4c2u};
-static const uint32_t ipv_d_85_5[] = {0x0001f82bu};
-static const uint32_t ipv_n_85_7[] = {0x00007b6fu};
-static const uint32_t ipv_d_85_7[] = {0x0001f82bu};
-static const ipv_weight_t ipv_w_85[] = {{2u, 1u, 1u, ipv_n_85_2, ipv_d_85_2}, {3u, 1u, 1u, ipv_n_85_3, ipv_d_85_3}, {5u, 1u, 1u, ipv_n_85_5, ipv_d_85_5}, {7u, 1u, 1u, ipv_n_85_7, ipv_d_85_7}};
-static const uint32_t ipv_n_90_0[] = {0x00000001u};
-static const uint32_t ipv_d_90_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_90[] = {{0u, 1u, 1u, ipv_n_90_0, ipv_d_90_0}};
-static const uint32_t ipv_n_91_0[] = {0x00000001u};
-static const uint32_t ipv_d_91_0[] = {0x00000002u};
-static const uint32_t ipv_n_91_2[] = {0x00000001u};
-static const uint32_t ipv_d_91_2[] = {0x00000002u};
-static const ipv_weight_t ipv_w_91[] = {{0u, 1u, 1u, ipv_n_91_0, ipv_d_91_0}, {2u, 1u, 1u, ipv_n_91_2, ipv_d_91_2}};
-static const uint32_t ipv_n_97_0[] = {0x00000007u};
-static const uint32_t ipv_d_97_0[] = {0x00000010u};
-static const uint32_t ipv_n_97_2[] = {0x00000009u};
-static const uint32_t ipv_d_97_2[] = {0x00000010u};
-static const ipv_weight_t ipv_w_97[] = {{0u, 1u, 1u, ipv_n_97_0, ipv_d_97_0}, {2u, 1u, 1u, ipv_n_97_2, ipv_d_97_2}};
-static const uint32_t ipv_n_99_0[] = {0x00000001u};
-static const uint32_t ipv_d_99_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_99[] = {{0u, 1u, 1u, ipv_n_99_0, ipv_d_99_0}};
-static const uint32_t ipv_n_100_0[] = {0x00000181u};
-static const uint32_t ipv_d_100_0[] = {0x000002beu};
-static const uint32_t ipv_n_100_2[] = {0x00000001u};
-static const uint32_t ipv_d_100_2[] = {0x0000001au};
-static const uint32_t ipv_n_100_3[] = {0x00000002u};
-static const uint32_t ipv_d_100_3[] = {0x0000015fu};
-static const uint32_t ipv_n_100_5[] = {0x0000000bu};
-static const uint32_t ipv_d_100_5[] = {0x0000001bu};
-static const ipv_weight_t ipv_w_100[] = {{0u, 1u, 1u, ipv_n_100_0, ipv_d_100_0}, {2u, 1u, 1u, ipv_n_100_2, ipv_d_100_2}, {3u, 1u, 1u, ipv_n_100_3, ipv_d_100_3}, {5u, 1u, 1u, ipv_n_100_5, ipv_d_100_5}};
-static const uint32_t ipv_n_102_1[] = {0x0001270au};
-static const uint32_t ipv_d_102_1[] = {0x000278d7u};
-static const uint32_t ipv_n_102_2[] = {0x00101693u};
-static const uint32_t ipv_d_102_2[] = {0x00a8191cu};
-static const uint32_t ipv_n_102_3[] = {0x0011112cu};
-static const uint32_t ipv_d_102_3[] = {0x002a0647u};
-static const uint32_t ipv_n_102_4[] = {0x00001040u};
-static const uint32_t ipv_d_102_4[] = {0x000278d7u};
-static const uint32_t ipv_n_102_5[] = {0x00010e31u};
-static const uint32_t ipv_d_102_5[] = {0x00a8191cu};
-static const ipv_weight_t ipv_w_102[] = {{1u, 1u, 1u, ipv_n_102_1, ipv_d_102_1}, {2u, 1u, 1u, ipv_n_102_2, ipv_d_102_2}, {3u, 1u, 1u, ipv_n_102_3, ipv_d_102_3}, {4u, 1u, 1u, ipv_n_102_4, ipv_d_102_4}, {5u, 1u, 1u, ipv_n_102_5, ipv_d_102_5}};
-static const uint32_t ipv_n_107_0[] = {0x0000001fu};
-static const uint32_t ipv_d_107_0[] = {0x00000036u};
-static const uint32_t ipv_n_107_3[] = {0x00000005u};
-static const uint32_t ipv_d_107_3[] = {0x0000001bu};
-static const uint32_t ipv_n_107_5[] = {0x0000000du};
-static const uint32_t ipv_d_107_5[] = {0x00000036u};
-static const ipv_weight_t ipv_w_107[] = {{0u, 1u, 1u, ipv_n_107_0, ipv_d_107_0}, {3u, 1u, 1u, ipv_n_107_3, ipv_d_107_3}, {5u, 1u, 1u, ipv_n_107_5, ipv_d_107_5}};
-static const uint32_t ipv_n_108_0[] = {0x00000001u};
-static const uint32_t ipv_d_108_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_108[] = {{0u, 1u, 1u, ipv_n_108_0, ipv_d_108_0}};
-static const uint32_t ipv_n_115_0[] = {0xe3511698u, 0x097d805bu};
-static const uint32_t ipv_d_115_0[] = {0x0f6e2f7bu, 0x0bc0478au};
-static const uint32_t ipv_n_115_1[] = {0x7967d3d4u, 0x015e077eu};
-static const uint32_t ipv_d_115_1[] = {0x0f6e2f7bu, 0x0bc0478au};
-static const uint32_t ipv_n_115_3[] = {0xb2b5450fu, 0x00e4bfafu};
-static const uint32_t ipv_d_115_3[] = {0x0f6e2f7bu, 0x0bc0478au};
-static const ipv_weight_t ipv_w_115[] = {{0u, 2u, 2u, ipv_n_115_0, ipv_d_115_0}, {1u, 2u, 2u, ipv_n_115_1, ipv_d_115_1}, {3u, 2u, 2u, ipv_n_115_3, ipv_d_115_3}};
-static const uint32_t ipv_n_117_0[] = {0x00000001u};
-static const uint32_t ipv_d_117_0[] = {0x00000001u};
-static const ipv_weight_t ipv_w_117[] = {{0u, 1u, 1u, ipv_n_117_0, ipv_d_117_0}};
-static const uint32_t ipv_n_118_0[] = {0xacd9ab74u, 0x69e4b3c1u, 0x627ed320u, 0x271652a4u, 0x3274df3au, 0xf9e8be5bu, 0x27dafa89u, 0x1614808fu, 0x28737ec2u, 0x0cbd3993u, 0xe91555d9u, 0x09c72012u, 0x008db503u};
-static const uint32_t ipv_d_118_0[] = {0xa7608717u, 0x5bdecde2u, 0xe94399e6u, 0x08e5b3e4u, 0x89b26d01u, 0x469cf827u, 0x76484bcdu, 0x959d3f3au, 0x6a5d6548u, 0x7036194du, 0xd154b95au, 0x13872eabu, 0x011b6a06u};
-static const uint32_t ipv_n_118_1[] = {0x94d5f775u, 0xa022d05fu, 0x4be14074u, 0x20706978u, 0x078e2032u, 0x1427dda3u, 0x940aa915u, 0x2300abf5u, 0x77281eedu, 0x00181cd3u};
-static const uint32_t ipv_d_118_1[] = {0xc94a7d8eu, 0x07e2f2b9u, 0xe56d91d6u, 0xf8a227deu, 0xfb03375eu, 0xc926283eu, 0xb97c8a29u, 0x430fbb28u, 0xe3b1e9cdu, 0x0a7a8812u, 0x0be28206u};
-static const uint32_t ipv_n_118_2[] = {0xf9889c21u, 0x72b2855bu, 0xcd2a6478u, 0xe5b1cd19u, 0xab471e9fu, 0xc2e05c08u, 0xb6b30a51u, 0x900b592au, 0x91f7ca67u, 0x8d04e730u, 0x881c3521u, 0x021765feu};
-static const uint32_t ipv_d_118_2[] = {0x4ec10e2eu, 0xb7bd9bc5u, 0xd28733ccu, 0x11cb67c9u, 0x1364da02u, 0x8d39f04fu, 0xec90979au, 0x2b3a7e74u, 0xd4baca91u, 0xe06c329au, 0xa2a972b4u, 0x270e5d57u, 0x0236d40cu};
-static const uint32_t ipv_n_118_3[] = {0x6b4403a0u, 0xdecfeec6u, 0x51f285d7u, 0x8d296843u, 0xfc88c4a8u, 0x1db120abu, 0x49b9a6d7u, 0x41b8d823u, 0x5bdb99a1u, 0x57c0a668u, 0x0895e5e8u};
-static const uint32_t ipv_d_118_3[] = {0x05476699u, 0x194607cbu, 0xa810df2du, 0xa106acc5u, 0x281c90a4u, 0xc57796c7u, 0xc5887a30u, 0x11f90bacu, 0x1efd6a80u, 0xd0a4b720u, 0x112bcbd0u};
-static const ipv_weight_t ipv_w_118[] = {{0u, 13u, 13u, ipv_n_118_0, ipv_d_118_0}, {1u, 10u, 11u, ipv_n_118_1, ipv_d_118_1}, {2u, 12u, 13u, ipv_n_118_2, ipv_d_118_2}, {3u, 11u, 11u, ipv_n_118_3, ipv_d_118_3}};
-static const uint32_t ipv_n_119_0[] = {0xa59bc7e0u, 0x8a352d44u, 0x61ddf7c1u, 0x6e46d6eau, 0x505965a9u, 0xdf93a4f6u, 0x4700b720u, 0x15c65779u, 0x853bf13du, 0x56983393u, 0xa64a9ca3u, 0x39b38521u, 0x2e1a9294u};
-static const uint32_t ipv_d_119_0[] = {0x5c2c1acbu, 0x3fc58c85u, 0xd525244bu, 0x3fa73931u, 0x117787dcu, 0xbb2601dau, 0x1457eca3u, 0xf79ecc43u, 0x22d0f003u, 0x2b7a875du, 0xf60bf61bu, 0x1c66ec8cu, 0x35240361u};
-static const uint32_t ipv_n_119_1[] = {0x118dc244u, 0xb8cd5feau, 0xd2f937d0u, 0xf7c551e8u, 0xa2880c18u, 0xd2cf3ae2u, 0x7b741e25u, 0xa3808752u, 0xa7bf38d1u, 0x7a7b6385u, 0x101a2b25u};
-static const uint32_t ipv_d_119_1[] = {0x792a30bbu, 0x19e481cfu, 0xda9ba82cu, 0xf2d87580u, 0x3e47ddb5u, 0x62f209bdu, 0xfbb299a7u, 0xda1701f5u, 0xed89b56du, 0x69b1a5f8u, 0x1d3ce85au, 0x00000001u};
-static const uint32_t ipv_n_119_2[] = {0x60e68342u, 0x147e7f3au, 0x30e53c22u, 0x1cc5acb1u, 0xe9b01e87u, 0x6d9f0acfu, 0xd2e10bbfu, 0x38c839b3u, 0x62295e3au, 0x8f30194bu, 0xee7e40a7u, 0xef3564f6u, 0x0103a178u};
-static const uint32_t ipv_d_119_2[] = {0x5c2c1acbu, 0x3fc58c85u, 0xd525244bu, 0x3fa73931u, 0x117787dcu, 0xbb2601dau, 0x1457eca3u, 0xf79ecc43u, 0x22d0f003u, 0x2b7a875du, 0xf60bf61bu, 0x1c66ec8cu, 0x35240361u};
-static const uint32_t ipv_n_119_3[] = {0x9b55da6bu, 0xe11790ecu, 0x9295a27cu, 0x8fb957f5u, 0x06f04ea3u, 0xd41f7c86u, 0x38ee8655u, 0x4e6dbaedu, 0x6c400428u, 0x8c3aec2bu, 0x2ee25641u};
-static const uint32_t ipv_d_119_3[] = {0xb40bf925u, 0x29129da1u, 0x3ffdc537u, 0x43e8fa0cu, 0xdac94c57u, 0x1c3cf07au, 0x7e154778u, 0x3e57f193u, 0x12cd8db4u, 0x8f245d5eu, 0x38384a38u, 0x00000003u};
-static const ipv_weight_t ipv_w_119[] = {{0u, 13u, 13u, ipv_n_119_0, ipv_d_119_0}, {1u, 11u, 12u, ipv_n_119_1, ipv_d_119_1}, {2u, 13u, 13u, ipv_n_119_2, ipv_d_119_2}, {3u, 11u, 12u, ipv_n_119_3, ipv_d_119_3}};
-static const uint32_t ipv_n_120_0[] = {0xc8ce4246u, 0x5baf5046u, 0x4c4a5b60u, 0x75794dceu, 0x4301fd59u, 0x557910a3u, 0x9ea4a014u, 0x7e7f6dcdu, 0x48bb03ccu, 0xad91df42u, 0xdd40e4a6u, 0xa5a35099u, 0x41b6afceu, 0x00000009u};
-static const uint32_t ipv_d_120_0[] = {0xf9a423a9u, 0xe8607b00u, 0xa456ae4fu, 0x18f715efu, 0xc6cf95b4u, 0x5ec410eau, 0x8be8b555u, 0x0710325cu, 0xb5528f3bu, 0x1c09282au, 0x1e0feeb7u, 0x28f1fd94u, 0x49cba1e8u, 0x0000000eu};
-static const uint32_t ipv_n_120_1[] = {0x4f42f5ceu, 0x3d655cfeu, 0xb01c1858u, 0xc86f4059u, 0xff6d5aefu, 0xe82b506fu, 0xc4694163u, 0xa84c7d69u, 0x65d0c05cu, 0x0d69c31fu, 0x74de634du, 0x00000004u};
-static const uint32_t ipv_d_120_1[] = {0x65a667f9u, 0x58013f57u, 0x20606f6du, 0xe25e0806u, 0x7a4d7e3cu, 0xf702615du, 0x9a7d0f69u, 0xbf9c2c43u, 0x02481cfdu, 0xa3e9b155u, 0xb195a2afu, 0x0000004cu};
-static const uint32_t ipv_n_120_2[] = {0x56fc783eu, 0x1ec99849u, 0x98fbbda1u, 0xf5d419d6u, 0x9be05230u, 0x00261cf1u, 0x509d5394u, 0xc1a9b799u, 0x4f2066d1u, 0x86f68f6fu, 0xfd3445c3u, 0xf8999fc5u, 0x00a9a451u, 0x00000001u};
-static const uint32_t ipv_d_120_2[] = {0xf9a423a9u, 0xe8607b00u, 0xa456ae4fu, 0x18f715efu, 0xc6cf95b4u, 0x5ec410eau, 0x8be8b555u, 0x0710325cu, 0xb5528f3bu, 0x1c09282au, 0x1e0feeb7u, 0x28f1fd94u, 0x49cba1e8u, 0x0000000eu};
-static const uint32_t ipv_n_120_3[] = {0x257fa8f9u, 0x9d86aa11u, 0x65aa16e9u, 0xb8d6f106u, 0x04d0d47cu, 0xef7e3c19u, 0xb57183c0u, 0x614cd0bfu, 0x80d04a9cu, 0x532862b5u, 0x9cd38f7du, 0x00000031u};
-static const uint32_t ipv_d_120_3[] = {0x9baa6aa7u, 0x7ec197d6u, 0xac820b6du, 0xdbeed465u, 0x8d5112bau, 0x149c1bb8u, 0x2751c4f8u, 0x98cbf5bau, 0x1c31e8cau, 0x0d837fbau, 0x9cf508bau, 0x000000ddu};
-static const ipv_weight_t ipv_w_120[] = {{0u, 14u, 14u, ipv_n_120_0, ipv_d_120_0}, {1u, 12u, 12u, ipv_n_120_1, ipv_d_120_1}, {2u, 14u, 14u, ipv_n_120_2, ipv_d_120_2}, {3u, 12u, 12u, ipv_n_120_3, ipv_d_120_3}};
-static const uint32_t ipv_n_121_0[] = {0xfade78d9u, 0x059907f8u, 0x52c33051u, 0xd579a465u, 0x6c5760cdu, 0x399c4b8fu, 0xd0c8329bu, 0x7496f3bdu, 0x726634b7u, 0x344b3779u, 0x6ea36e97u, 0x24d9297au, 0x01aff616u};
-static const uint32_t ipv_d_121_0[] = {0x8ce18fe3u, 0x2f24c818u, 0xc8eb8826u, 0x21514994u, 0xc2c4e468u, 0x3a2d3ca2u, 0xd6dd4341u, 0x968804e7u, 0x6913d605u, 0xd25fb7f4u, 0x342396d9u, 0xf768861cu, 0x28e36b3du};
-static const uint32_t ipv_n_121_1[] = {0xf482b87bu, 0x0fe069c3u, 0x3f6d6654u, 0x93cd6047u, 0xa08779e7u, 0x703466eeu, 0x69dcb444u, 0xba9a878au, 0xec17d57bu, 0xadcac917u, 0x26f58816u};
-static const uint32_t ipv_d_121_1[] = {0x2c5322a6u, 0x7f2e68ffu, 0xf4aa72b6u, 0xdf2014f9u, 0x5038b572u, 0x495aa7bcu, 0xf4de2467u, 0x2e4ab779u, 0xb0e57e85u, 0x10af00fbu, 0xb6f1d868u, 0x00000001u};
-static const uint32_t ipv_n_121_2[] = {0x4c2200d9u, 0xddb7e9e0u, 0xe039e31au, 0x9350ae00u, 0xf00cf9d8u, 0x44fee3c5u, 0xe918ff58u, 0x508832d7u, 0x2c04edbfu, 0x8e5bd545u, 0x90dbf955u, 0xaafb112bu, 0x3c8af863u};
-static const uint32_t ipv_d_121_2[] = {0x19c31fc6u, 0x5e499031u, 0x91d7104cu, 0x42a29329u, 0x8589c8d0u, 0x745a7945u, 0xadba8682u, 0x2d1009cfu, 0xd227ac0bu, 0xa4bf6fe8u, 0x68472db3u, 0xeed10c38u, 0x51c6d67bu};
-static const uint32_t ipv_n_121_3[] = {0x07a30428u, 0x7f94f458u, 0x00e1eb56u, 0xa98dcf7au, 0xdb14b068u, 0x6ec6f005u, 0xe19f7593u, 0x2483197cu, 0xa56d6f80u, 0x5808f0f6u, 0x523614f7u};
-static const uint32_t ipv_d_121_3[] = {0x1f67df8du, 0x6bcdd868u, 0xa0ac8139u, 0x71fe4a28u, 0x0811ec8fu, 0xb91db3ceu, 0x8a0e7d65u, 0xeec8ed7au, 0xd05ae460u, 0x28eeaa68u, 0x7a2f3db2u, 0x00000002u};
-static const ipv_weight_t ipv_w_121[] = {{0u, 13u, 13u, ipv_n_121_0, ipv_d_121_0}, {1u, 11u, 12u, ipv_n_121_1, ipv_d_121_1}, {2u, 13u, 13u, ipv_n_121_2, ipv_d_121_2}, {3u, 11u, 12u, ipv_n_121_3, ipv_d_121_3}};
-static const uint32_t ipv_n_124_0[] = {0x5c8292e3u, 0x8d240a6du, 0xff60a4bau, 0x2d23e39du, 0x4ef87eb7u, 0x43e41a0eu, 0xfc69770fu, 0x265c5b48u, 0x789864ebu, 0x9f51328bu, 0x4d28f074u, 0xadeea943u, 0x8be83aceu, 0x0000000du};
-static const uint32_t ipv_d_124_0[] = {0xf1c0add1u, 0x1f1e0e31u, 0x833e396eu, 0xa597e01fu, 0xce8ef493u, 0x80e51991u, 0xeb0aba5au, 0xea85fa67u, 0x7b344e69u, 0x12b82fb6u, 0xfddace5bu, 0x98022b57u, 0x75b2c9e0u, 0x00000015u};
-static const uint32_t ipv_n_124_1[] = {0x4d983cbbu, 0x196d93c7u, 0x09a70125u, 0xe209c8a3u, 0xc757c687u, 0xaf8ec3b1u, 0xcd802aacu, 0xa1e20329u, 0xfa9add4fu, 0xc7559b31u, 0x7463fdacu, 0x00000025u};
-static const uint32_t ipv_d_124_1[] = {0xd85cffc6u, 0x53515418u, 0x60b3394du, 0x7e88886eu, 0x25726b4du, 0x7c86ffd6u, 0x64977cc5u, 0x23364d7au, 0x4ebc6978u, 0xfd8a4f11u, 0x1fde4ff1u, 0x000002b3u};
-static const uint32_t ipv_n_124_2[] = {0x9a69cbc9u, 0xfd93f585u, 0x4592d54du, 0xca2c9021u, 0xfd900f52u, 0xed00c58fu, 0x84d7be07u, 0xf8cda4b5u, 0xad5c730cu, 0x7ba4f887u, 0xa343bdbfu, 0x8e5b625bu, 0x6cd72a26u, 0x00000009u};
-static const uint32_t ipv_d_124_2[] = {0xaa8412e6u, 0xbab4552bu, 0x13755894u, 0xe18f40bdu, 0xd759bb75u, 0x055e996au, 0x82405e1fu, 0x7f23de6fu, 0xe339d67bu, 0x70511e46u, 0xf320d622u, 0x900d040fu, 0xc230bb43u, 0x00000080u};
-static const uint32_t ipv_n_124_3[] = {0x41c56080u, 0x28bf1ee9u, 0x5fa9ee31u, 0xea55338du, 0x0f8efb2eu, 0x36984b53u, 0x063ffefau, 0xa7ad0f11u, 0xcf11b023u, 0xdf590e87u, 0xfff996b8u, 0x000000f0u};
-static const uint32_t ipv_d_124_3[] = {0x5bb67afdu, 0x1ecd40bbu, 0x306b91e7u, 0x7f681d41u, 0x58eaf40au, 0x44527750u, 0x64e6b804u, 0x3fd3f87bu, 0x0ea04577u, 0xf3befd12u, 0x88439177u, 0x000003e6u};
-static const ipv_weight_t ipv_w_124[] = {{0u, 14u, 14u, ipv_n_124_0, ipv_d_124_0}, {1u, 12u, 12u, ipv_n_124_1, ipv_d_124_1}, {2u, 14u, 14u, ipv_n_124_2, ipv_d_124_2}, {3u, 12u, 12u, ipv_n_124_3, ipv_d_124_3}};
-static const uint32_t ipv_n_125_0[] = {0xfc21cd1fu, 0x4fa74f36u, 0x2585ccdeu, 0xe749243au, 0x31e4c1b7u, 0xc3100fa6u, 0xbf0d2f88u, 0xc3f5040du, 0x09b7a78bu, 0xe602b118u, 0xa44619b8u, 0xdac6e24eu, 0x00036825u};
-static const uint32_t ipv_d_125_0[] = {0x782dcfa5u, 0xffc7e0b1u, 0xf8c33ba4u, 0x7c934b83u, 0x6157b7efu, 0x7e7c740fu, 0x0cfdbb41u, 0x8949ded7u, 0x80892b7bu, 0xf6374879u, 0x8b3cb4a1u, 0x69e0d999u, 0x001eddc8u};
-static const uint32_t ipv_n_125_1[] = {0xcabbb96eu, 0x749bfd29u, 0xfab8c4e8u, 0x77084bbeu, 0xc82bfddau, 0x6707a9d1u, 0xebb7f20fu, 0x88511538u, 0xfb07cac7u, 0xfd3939c2u, 0x01151decu};
-static const uint32_t ipv_d_125_1[] = {0x9c398e1fu, 0xa4e135b6u, 0xcdd6a7a9u, 0x2140378fu, 0xc49390a4u, 0x86256977u, 0x2386be6du, 0x060b0524u, 0x7c0ac191u, 0x19a81ceeu, 0x01f108d7u};
-static const uint32_t ipv_n_125_2[] = {0xfb09d3e8u, 0x2d5d9797u, 0x92b6ca63u, 0xc2a2f517u, 0xf2a56a37u, 0x0daca253u, 0xa390e3a9u, 0xd6c9922bu, 0x04e995d5u, 0xb1398f8fu, 0x8fdda588u, 0x4dfc0e27u, 0x001d24b6u};
-static const uint32_t ipv_d_125_2[] = {0x68896eefu, 0xff57a214u, 0xea49b2eeu, 0x75b9e28bu, 0x240727ceu, 0x7b755c2eu, 0x26f931c4u, 0x9bdd9c85u, 0x819b8272u, 0xe2a5d96cu, 0xa1b61de5u, 0x3da28cccu, 0x005c9959u};
-static const uint32_t ipv_n_125_3[] = {0xd1264b24u, 0x53f39c32u, 0x8df475e8u, 0xad2f8970u, 0xd256fe79u, 0x710a7fcdu, 0x86b91858u, 0x933e88e8u, 0xfa0ea35cu, 0x0e5eaf5eu, 0x0018ee6eu};
-static const uint32_t ipv_d_125_3[] = {0x5c50d641u, 0xbfe77eefu, 0x228477a4u, 0x1022cc85u, 0x8c716c45u, 0xa42e397au, 0xda584f14u, 0xd26ad705u, 0x03d72035u, 0x41097ba6u, 0x059c3985u};
-static const ipv_weight_t ipv_w_125[] = {{0u, 13u, 13u, ipv_n_125_0, ipv_d_125_0}, {1u, 11u, 11u, ipv_n_125_1, ipv_d_125_1}, {2u, 13u, 13u, ipv_n_125_2, ipv_d_125_2}, {3u, 11u, 11u, ipv_n_125_3, ipv_d_125_3}};
+static const uint32_t ipv_wn_0_0[] = {0x00000001u};
+static const uint32_t ipv_wd_0_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_0[] = {{0u, 1u, 1u, ipv_wn_0_0, ipv_wd_0_0}};
+static const uint32_t ipv_ln_0_0[] = {0x00000001u};
+static const uint32_t ipv_ld_0_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_0[] = {{0u, 1u, 1u, ipv_ln_0_0, ipv_ld_0_0}};
+static const uint32_t ipv_wn_1_0[] = {0x00000001u};
+static const uint32_t ipv_wd_1_0[] = {0x00000002u};
+static const uint32_t ipv_wn_1_3[] = {0x00000001u};
+static const uint32_t ipv_wd_1_3[] = {0x00000002u};
+static const ipv_weight_t ipv_w_1[] = {{0u, 1u, 1u, ipv_wn_1_0, ipv_wd_1_0}, {3u, 1u, 1u, ipv_wn_1_3, ipv_wd_1_3}};
+static const uint32_t ipv_ln_1_0[] = {0x00000001u};
+static const uint32_t ipv_ld_1_0[] = {0x00000002u};
+static const uint32_t ipv_ln_1_3[] = {0x00000001u};
+static const uint32_t ipv_ld_1_3[] = {0x00000002u};
+static const ipv_weight_t ipv_l_1[] = {{0u, 1u, 1u, ipv_ln_1_0, ipv_ld_1_0}, {3u, 1u, 1u, ipv_ln_1_3, ipv_ld_1_3}};
+static const uint32_t ipv_wn_2_0[] = {0x00000003u};
+static const uint32_t ipv_wd_2_0[] = {0x00000004u};
+static const uint32_t ipv_wn_2_1[] = {0x00000001u};
+static const uint32_t ipv_wd_2_1[] = {0x00000004u};
+static const ipv_weight_t ipv_w_2[] = {{0u, 1u, 1u, ipv_wn_2_0, ipv_wd_2_0}, {1u, 1u, 1u, ipv_wn_2_1, ipv_wd_2_1}};
+static const uint32_t ipv_ln_2_0[] = {0x00000003u};
+static const uint32_t ipv_ld_2_0[] = {0x00000004u};
+static const uint32_t ipv_ln_2_1[] = {0x00000001u};
+static const uint32_t ipv_ld_2_1[] = {0x00000004u};
+static const ipv_weight_t ipv_l_2[] = {{0u, 1u, 1u, ipv_ln_2_0, ipv_ld_2_0}, {1u, 1u, 1u, ipv_ln_2_1, ipv_ld_2_1}};
+static const uint32_t ipv_wn_7_0[] = {0x00000001u};
+static const uint32_t ipv_wd_7_0[] = {0x00000008u};
+static const uint32_t ipv_wn_7_1[] = {0x00000001u};
+static const uint32_t ipv_wd_7_1[] = {0x00000008u};
+static const uint32_t ipv_wn_7_2[] = {0x00000003u};
+static const uint32_t ipv_wd_7_2[] = {0x00000008u};
+static const uint32_t ipv_wn_7_3[] = {0x00000003u};
+static const uint32_t ipv_wd_7_3[] = {0x00000008u};
+static const ipv_weight_t ipv_w_7[] = {{0u, 1u, 1u, ipv_wn_7_0, ipv_wd_7_0}, {1u, 1u, 1u, ipv_wn_7_1, ipv_wd_7_1}, {2u, 1u, 1u, ipv_wn_7_2, ipv_wd_7_2}, {3u, 1u, 1u, ipv_wn_7_3, ipv_wd_7_3}};
+static const uint32_t ipv_ln_7_0[] = {0x00000001u};
+static const uint32_t ipv_ld_7_0[] = {0x00000008u};
+static const uint32_t ipv_ln_7_1[] = {0x00000001u};
+static const uint32_t ipv_ld_7_1[] = {0x00000008u};
+static const uint32_t ipv_ln_7_2[] = {0x00000003u};
+static const uint32_t ipv_ld_7_2[] = {0x00000008u};
+static const uint32_t ipv_ln_7_3[] = {0x00000003u};
+static const uint32_t ipv_ld_7_3[] = {0x00000008u};
+static const ipv_weight_t ipv_l_7[] = {{0u, 1u, 1u, ipv_ln_7_0, ipv_ld_7_0}, {1u, 1u, 1u, ipv_ln_7_1, ipv_ld_7_1}, {2u, 1u, 1u, ipv_ln_7_2, ipv_ld_7_2}, {3u, 1u, 1u, ipv_ln_7_3, ipv_ld_7_3}};
+static const uint32_t ipv_wn_9_0[] = {0x00000001u};
+static const uint32_t ipv_wd_9_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_9[] = {{0u, 1u, 1u, ipv_wn_9_0, ipv_wd_9_0}};
+static const uint32_t ipv_ln_9_0[] = {0x00000001u};
+static const uint32_t ipv_ld_9_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_9[] = {{0u, 1u, 1u, ipv_ln_9_0, ipv_ld_9_0}};
+static const uint32_t ipv_wn_10_0[] = {0x00000001u};
+static const uint32_t ipv_wd_10_0[] = {0x00000002u};
+static const uint32_t ipv_wn_10_1[] = {0x00000001u};
+static const uint32_t ipv_wd_10_1[] = {0x00000014u};
+static const uint32_t ipv_wn_10_3[] = {0x00000001u};
+static const uint32_t ipv_wd_10_3[] = {0x00000014u};
+static const uint32_t ipv_wn_10_4[] = {0x00000002u};
+static const uint32_t ipv_wd_10_4[] = {0x00000005u};
+static const ipv_weight_t ipv_w_10[] = {{0u, 1u, 1u, ipv_wn_10_0, ipv_wd_10_0}, {1u, 1u, 1u, ipv_wn_10_1, ipv_wd_10_1}, {3u, 1u, 1u, ipv_wn_10_3, ipv_wd_10_3}, {4u, 1u, 1u, ipv_wn_10_4, ipv_wd_10_4}};
+static const uint32_t ipv_ln_10_0[] = {0x00000001u};
+static const uint32_t ipv_ld_10_0[] = {0x00000002u};
+static const uint32_t ipv_ln_10_1[] = {0x00000001u};
+static const uint32_t ipv_ld_10_1[] = {0x0000000cu};
+static const uint32_t ipv_ln_10_3[] = {0x00000001u};
+static const uint32_t ipv_ld_10_3[] = {0x0000000cu};
+static const uint32_t ipv_ln_10_4[] = {0x00000001u};
+static const uint32_t ipv_ld_10_4[] = {0x00000003u};
+static const ipv_weight_t ipv_l_10[] = {{0u, 1u, 1u, ipv_ln_10_0, ipv_ld_10_0}, {1u, 1u, 1u, ipv_ln_10_1, ipv_ld_10_1}, {3u, 1u, 1u, ipv_ln_10_3, ipv_ld_10_3}, {4u, 1u, 1u, ipv_ln_10_4, ipv_ld_10_4}};
+static const uint32_t ipv_wn_11_0[] = {0x00000001u};
+static const uint32_t ipv_wd_11_0[] = {0x00000004u};
+static const uint32_t ipv_wn_11_3[] = {0x00000001u};
+static const uint32_t ipv_wd_11_3[] = {0x00000004u};
+static const uint32_t ipv_wn_11_4[] = {0x00000001u};
+static const uint32_t ipv_wd_11_4[] = {0x00000002u};
+static const ipv_weight_t ipv_w_11[] = {{0u, 1u, 1u, ipv_wn_11_0, ipv_wd_11_0}, {3u, 1u, 1u, ipv_wn_11_3, ipv_wd_11_3}, {4u, 1u, 1u, ipv_wn_11_4, ipv_wd_11_4}};
+static const uint32_t ipv_ln_11_0[] = {0x00000001u};
+static const uint32_t ipv_ld_11_0[] = {0x00000004u};
+static const uint32_t ipv_ln_11_3[] = {0x00000001u};
+static const uint32_t ipv_ld_11_3[] = {0x00000004u};
+static const uint32_t ipv_ln_11_4[] = {0x00000001u};
+static const uint32_t ipv_ld_11_4[] = {0x00000002u};
+static const ipv_weight_t ipv_l_11[] = {{0u, 1u, 1u, ipv_ln_11_0, ipv_ld_11_0}, {3u, 1u, 1u, ipv_ln_11_3, ipv_ld_11_3}, {4u, 1u, 1u, ipv_ln_11_4, ipv_ld_11_4}};
+static const uint32_t ipv_wn_13_2[] = {0x00000001u};
+static const uint32_t ipv_wd_13_2[] = {0x00000001u};
+static const ipv_weight_t ipv_w_13[] = {{2u, 1u, 1u, ipv_wn_13_2, ipv_wd_13_2}};
+static const uint32_t ipv_ln_13_2[] = {0x00000001u};
+static const uint32_t ipv_ld_13_2[] = {0x00000001u};
+static const ipv_weight_t ipv_l_13[] = {{2u, 1u, 1u, ipv_ln_13_2, ipv_ld_13_2}};
+static const uint32_t ipv_wn_14_2[] = {0x00000003u};
+static const uint32_t ipv_wd_14_2[] = {0x00000004u};
+static const uint32_t ipv_wn_14_3[] = {0x00000001u};
+static const uint32_t ipv_wd_14_3[] = {0x00000004u};
+static const ipv_weight_t ipv_w_14[] = {{2u, 1u, 1u, ipv_wn_14_2, ipv_wd_14_2}, {3u, 1u, 1u, ipv_wn_14_3, ipv_wd_14_3}};
+static const uint32_t ipv_ln_14_2[] = {0x00000003u};
+static const uint32_t ipv_ld_14_2[] = {0x00000004u};
+static const uint32_t ipv_ln_14_3[] = {0x00000001u};
+static const uint32_t ipv_ld_14_3[] = {0x00000004u};
+static const ipv_weight_t ipv_l_14[] = {{2u, 1u, 1u, ipv_ln_14_2, ipv_ld_14_2}, {3u, 1u, 1u, ipv_ln_14_3, ipv_ld_14_3}};
+static const uint32_t ipv_wn_17_0[] = {0x00000001u};
+static const uint32_t ipv_wd_17_0[] = {0x00000002u};
+static const uint32_t ipv_wn_17_3[] = {0x00000001u};
+static const uint32_t ipv_wd_17_3[] = {0x00000002u};
+static const ipv_weight_t ipv_w_17[] = {{0u, 1u, 1u, ipv_wn_17_0, ipv_wd_17_0}, {3u, 1u, 1u, ipv_wn_17_3, ipv_wd_17_3}};
+static const uint32_t ipv_ln_17_0[] = {0x00000001u};
+static const uint32_t ipv_ld_17_0[] = {0x00000002u};
+static const uint32_t ipv_ln_17_3[] = {0x00000001u};
+static const uint32_t ipv_ld_17_3[] = {0x00000002u};
+static const ipv_weight_t ipv_l_17[] = {{0u, 1u, 1u, ipv_ln_17_0, ipv_ld_17_0}, {3u, 1u, 1u, ipv_ln_17_3, ipv_ld_17_3}};
+static const uint32_t ipv_wn_18_0[] = {0x00000001u};
+static const uint32_t ipv_wd_18_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_18[] = {{0u, 1u, 1u, ipv_wn_18_0, ipv_wd_18_0}};
+static const uint32_t ipv_ln_18_0[] = {0x00000001u};
+static const uint32_t ipv_ld_18_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_18[] = {{0u, 1u, 1u, ipv_ln_18_0, ipv_ld_18_0}};
+static const uint32_t ipv_wn_19_4[] = {0x00000001u};
+static const uint32_t ipv_wd_19_4[] = {0x00000001u};
+static const ipv_weight_t ipv_w_19[] = {{4u, 1u, 1u, ipv_wn_19_4, ipv_wd_19_4}};
+static const uint32_t ipv_ln_19_4[] = {0x00000001u};
+static const uint32_t ipv_ld_19_4[] = {0x00000001u};
+static const ipv_weight_t ipv_l_19[] = {{4u, 1u, 1u, ipv_ln_19_4, ipv_ld_19_4}};
+static const uint32_t ipv_wn_20_0[] = {0x00000001u};
+static const uint32_t ipv_wd_20_0[] = {0x00000008u};
+static const uint32_t ipv_wn_20_1[] = {0x00000001u};
+static const uint32_t ipv_wd_20_1[] = {0x00000008u};
+static const uint32_t ipv_wn_20_3[] = {0x00000003u};
+static const uint32_t ipv_wd_20_3[] = {0x00000008u};
+static const uint32_t ipv_wn_20_4[] = {0x00000003u};
+static const uint32_t ipv_wd_20_4[] = {0x00000008u};
+static const ipv_weight_t ipv_w_20[] = {{0u, 1u, 1u, ipv_wn_20_0, ipv_wd_20_0}, {1u, 1u, 1u, ipv_wn_20_1, ipv_wd_20_1}, {3u, 1u, 1u, ipv_wn_20_3, ipv_wd_20_3}, {4u, 1u, 1u, ipv_wn_20_4, ipv_wd_20_4}};
+static const uint32_t ipv_ln_20_0[] = {0x00000001u};
+static const uint32_t ipv_ld_20_0[] = {0x00000008u};
+static const uint32_t ipv_ln_20_1[] = {0x00000001u};
+static const uint32_t ipv_ld_20_1[] = {0x00000008u};
+static const uint32_t ipv_ln_20_3[] = {0x00000003u};
+static const uint32_t ipv_ld_20_3[] = {0x00000008u};
+static const uint32_t ipv_ln_20_4[] = {0x00000003u};
+static const uint32_t ipv_ld_20_4[] = {0x00000008u};
+static const ipv_weight_t ipv_l_20[] = {{0u, 1u, 1u, ipv_ln_20_0, ipv_ld_20_0}, {1u, 1u, 1u, ipv_ln_20_1, ipv_ld_20_1}, {3u, 1u, 1u, ipv_ln_20_3, ipv_ld_20_3}, {4u, 1u, 1u, ipv_ln_20_4, ipv_ld_20_4}};
+static const uint32_t ipv_wn_21_0[] = {0x00000003u};
+static const uint32_t ipv_wd_21_0[] = {0x00000008u};
+static const uint32_t ipv_wn_21_1[] = {0x00000003u};
+static const uint32_t ipv_wd_21_1[] = {0x00000008u};
+static const uint32_t ipv_wn_21_3[] = {0x00000001u};
+static const uint32_t ipv_wd_21_3[] = {0x00000008u};
+static const uint32_t ipv_wn_21_4[] = {0x00000001u};
+static const uint32_t ipv_wd_21_4[] = {0x00000008u};
+static const ipv_weight_t ipv_w_21[] = {{0u, 1u, 1u, ipv_wn_21_0, ipv_wd_21_0}, {1u, 1u, 1u, ipv_wn_21_1, ipv_wd_21_1}, {3u, 1u, 1u, ipv_wn_21_3, ipv_wd_21_3}, {4u, 1u, 1u, ipv_wn_21_4, ipv_wd_21_4}};
+static const uint32_t ipv_ln_21_0[] = {0x00000003u};
+static const uint32_t ipv_ld_21_0[] = {0x00000008u};
+static const uint32_t ipv_ln_21_1[] = {0x00000003u};
+static const uint32_t ipv_ld_21_1[] = {0x00000008u};
+static const uint32_t ipv_ln_21_3[] = {0x00000001u};
+static const uint32_t ipv_ld_21_3[] = {0x00000008u};
+static const uint32_t ipv_ln_21_4[] = {0x00000001u};
+static const uint32_t ipv_ld_21_4[] = {0x00000008u};
+static const ipv_weight_t ipv_l_21[] = {{0u, 1u, 1u, ipv_ln_21_0, ipv_ld_21_0}, {1u, 1u, 1u, ipv_ln_21_1, ipv_ld_21_1}, {3u, 1u, 1u, ipv_ln_21_3, ipv_ld_21_3}, {4u, 1u, 1u, ipv_ln_21_4, ipv_ld_21_4}};
+static const uint32_t ipv_wn_22_5[] = {0x00000001u};
+static const uint32_t ipv_wd_22_5[] = {0x00000004u};
+static const uint32_t ipv_wn_22_8[] = {0x00000003u};
+static const uint32_t ipv_wd_22_8[] = {0x00000004u};
+static const ipv_weight_t ipv_w_22[] = {{5u, 1u, 1u, ipv_wn_22_5, ipv_wd_22_5}, {8u, 1u, 1u, ipv_wn_22_8, ipv_wd_22_8}};
+static const uint32_t ipv_ln_22_5[] = {0x00000001u};
+static const uint32_t ipv_ld_22_5[] = {0x00000004u};
+static const uint32_t ipv_ln_22_8[] = {0x00000003u};
+static const uint32_t ipv_ld_22_8[] = {0x00000004u};
+static const ipv_weight_t ipv_l_22[] = {{5u, 1u, 1u, ipv_ln_22_5, ipv_ld_22_5}, {8u, 1u, 1u, ipv_ln_22_8, ipv_ld_22_8}};
+static const uint32_t ipv_wn_23_4[] = {0x00000009u};
+static const uint32_t ipv_wd_23_4[] = {0x00000010u};
+static const uint32_t ipv_wn_23_5[] = {0x00000003u};
+static const uint32_t ipv_wd_23_5[] = {0x00000010u};
+static const uint32_t ipv_wn_23_7[] = {0x00000003u};
+static const uint32_t ipv_wd_23_7[] = {0x00000010u};
+static const uint32_t ipv_wn_23_8[] = {0x00000001u};
+static const uint32_t ipv_wd_23_8[] = {0x00000010u};
+static const ipv_weight_t ipv_w_23[] = {{4u, 1u, 1u, ipv_wn_23_4, ipv_wd_23_4}, {5u, 1u, 1u, ipv_wn_23_5, ipv_wd_23_5}, {7u, 1u, 1u, ipv_wn_23_7, ipv_wd_23_7}, {8u, 1u, 1u, ipv_wn_23_8, ipv_wd_23_8}};
+static const uint32_t ipv_ln_23_4[] = {0x00000009u};
+static const uint32_t ipv_ld_23_4[] = {0x00000010u};
+static const uint32_t ipv_ln_23_5[] = {0x00000003u};
+static const uint32_t ipv_ld_23_5[] = {0x00000010u};
+static const uint32_t ipv_ln_23_7[] = {0x00000003u};
+static const uint32_t ipv_ld_23_7[] = {0x00000010u};
+static const uint32_t ipv_ln_23_8[] = {0x00000001u};
+static const uint32_t ipv_ld_23_8[] = {0x00000010u};
+static const ipv_weight_t ipv_l_23[] = {{4u, 1u, 1u, ipv_ln_23_4, ipv_ld_23_4}, {5u, 1u, 1u, ipv_ln_23_5, ipv_ld_23_5}, {7u, 1u, 1u, ipv_ln_23_7, ipv_ld_23_7}, {8u, 1u, 1u, ipv_ln_23_8, ipv_ld_23_8}};
+static const uint32_t ipv_wn_24_5[] = {0x00000001u};
+static const uint32_t ipv_wd_24_5[] = {0x00000001u};
+static const ipv_weight_t ipv_w_24[] = {{5u, 1u, 1u, ipv_wn_24_5, ipv_wd_24_5}};
+static const uint32_t ipv_ln_24_5[] = {0x00000001u};
+static const uint32_t ipv_ld_24_5[] = {0x00000001u};
+static const ipv_weight_t ipv_l_24[] = {{5u, 1u, 1u, ipv_ln_24_5, ipv_ld_24_5}};
+static const uint32_t ipv_wn_25_3[] = {0x00000001u};
+static const uint32_t ipv_wd_25_3[] = {0x00000004u};
+static const uint32_t ipv_wn_25_6[] = {0x00000003u};
+static const uint32_t ipv_wd_25_6[] = {0x00000004u};
+static const ipv_weight_t ipv_w_25[] = {{3u, 1u, 1u, ipv_wn_25_3, ipv_wd_25_3}, {6u, 1u, 1u, ipv_wn_25_6, ipv_wd_25_6}};
+static const uint32_t ipv_ln_25_3[] = {0x00000001u};
+static const uint32_t ipv_ld_25_3[] = {0x00000004u};
+static const uint32_t ipv_ln_25_6[] = {0x00000003u};
+static const uint32_t ipv_ld_25_6[] = {0x00000004u};
+static const ipv_weight_t ipv_l_25[] = {{3u, 1u, 1u, ipv_ln_25_3, ipv_ld_25_3}, {6u, 1u, 1u, ipv_ln_25_6, ipv_ld_25_6}};
+static const uint32_t ipv_wn_27_0[] = {0x00000001u};
+static const uint32_t ipv_wd_27_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_27[] = {{0u, 1u, 1u, ipv_wn_27_0, ipv_wd_27_0}};
+static const uint32_t ipv_ln_27_0[] = {0x00000001u};
+static const uint32_t ipv_ld_27_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_27[] = {{0u, 1u, 1u, ipv_ln_27_0, ipv_ld_27_0}};
+static const uint32_t ipv_wn_28_0[] = {0x0001c2a2u};
+static const uint32_t ipv_wd_28_0[] = {0x0005bda1u};
+static const uint32_t ipv_wn_28_1[] = {0x00001a82u};
+static const uint32_t ipv_wd_28_1[] = {0x0005bda1u};
+static const uint32_t ipv_wn_28_2[] = {0x000005e4u};
+static const uint32_t ipv_wd_28_2[] = {0x0005bda1u};
+static const uint32_t ipv_wn_28_3[] = {0x00000374u};
+static const uint32_t ipv_wd_28_3[] = {0x0005bda1u};
+static const uint32_t ipv_wn_28_4[] = {0x000007c5u};
+static const uint32_t ipv_wd_28_4[] = {0x000b7b42u};
+static const uint32_t ipv_wn_28_5[] = {0x00001155u};
+static const uint32_t ipv_wd_28_5[] = {0x000b7b42u};
+static const uint32_t ipv_wn_28_6[] = {0x00004554u};
+static const uint32_t ipv_wd_28_6[] = {0x0005bda1u};
+static const uint32_t ipv_wn_28_7[] = {0x00038544u};
+static const uint32_t ipv_wd_28_7[] = {0x0005bda1u};
+static const ipv_weight_t ipv_w_28[] = {{0u, 1u, 1u, ipv_wn_28_0, ipv_wd_28_0}, {1u, 1u, 1u, ipv_wn_28_1, ipv_wd_28_1}, {2u, 1u, 1u, ipv_wn_28_2, ipv_wd_28_2}, {3u, 1u, 1u, ipv_wn_28_3, ipv_wd_28_3}, {4u, 1u, 1u, ipv_wn_28_4, ipv_wd_28_4}, {5u, 1u, 1u, ipv_wn_28_5, ipv_wd_28_5}, {6u, 1u, 1u, ipv_wn_28_6, ipv_wd_28_6}, {7u, 1u, 1u, ipv_wn_28_7, ipv_wd_28_7}};
+static const uint32_t ipv_ln_28_0[] = {0x0001c2a2u};
+static const uint32_t ipv_ld_28_0[] = {0x0005bda1u};
+static const uint32_t ipv_ln_28_1[] = {0x00001a82u};
+static const uint32_t ipv_ld_28_1[] = {0x0005bda1u};
+static const uint32_t ipv_ln_28_2[] = {0x000005e4u};
+static const uint32_t ipv_ld_28_2[] = {0x0005bda1u};
+static const uint32_t ipv_ln_28_3[] = {0x00000374u};
+static const uint32_t ipv_ld_28_3[] = {0x0005bda1u};
+static const uint32_t ipv_ln_28_4[] = {0x000007c5u};
+static const uint32_t ipv_ld_28_4[] = {0x000b7b42u};
+static const uint32_t ipv_ln_28_5[] = {0x00001155u};
+static const uint32_t ipv_ld_28_5[] = {0x000b7b42u};
+static const uint32_t ipv_ln_28_6[] = {0x00004554u};
+static const uint32_t ipv_ld_28_6[] = {0x0005bda1u};
+static const uint32_t ipv_ln_28_7[] = {0x00038544u};
+static const uint32_t ipv_ld_28_7[] = {0x0005bda1u};
+static const ipv_weight_t ipv_l_28[] = {{0u, 1u, 1u, ipv_ln_28_0, ipv_ld_28_0}, {1u, 1u, 1u, ipv_ln_28_1, ipv_ld_28_1}, {2u, 1u, 1u, ipv_ln_28_2, ipv_ld_28_2}, {3u, 1u, 1u, ipv_ln_28_3, ipv_ld_28_3}, {4u, 1u, 1u, ipv_ln_28_4, ipv_ld_28_4}, {5u, 1u, 1u, ipv_ln_28_5, ipv_ld_28_5}, {6u, 1u, 1u, ipv_ln_28_6, ipv_ld_28_6}, {7u, 1u, 1u, ipv_ln_28_7, ipv_ld_28_7}};
+static const uint32_t ipv_wn_32_0[] = {0x000002a0u};
+static const uint32_t ipv_wd_32_0[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_1[] = {0x00000150u};
+static const uint32_t ipv_wd_32_1[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_2[] = {0x00000111u};
+static const uint32_t ipv_wd_32_2[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_3[] = {0x0000016cu};
+static const uint32_t ipv_wd_32_3[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_4[] = {0x00000340u};
+static const uint32_t ipv_wd_32_4[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_5[] = {0x000009c0u};
+static const uint32_t ipv_wd_32_5[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_6[] = {0x00001110u};
+static const uint32_t ipv_wd_32_6[] = {0x00002d05u};
+static const uint32_t ipv_wn_32_7[] = {0x00000888u};
+static const uint32_t ipv_wd_32_7[] = {0x00002d05u};
+static const ipv_weight_t ipv_w_32[] = {{0u, 1u, 1u, ipv_wn_32_0, ipv_wd_32_0}, {1u, 1u, 1u, ipv_wn_32_1, ipv_wd_32_1}, {2u, 1u, 1u, ipv_wn_32_2, ipv_wd_32_2}, {3u, 1u, 1u, ipv_wn_32_3, ipv_wd_32_3}, {4u, 1u, 1u, ipv_wn_32_4, ipv_wd_32_4}, {5u, 1u, 1u, ipv_wn_32_5, ipv_wd_32_5}, {6u, 1u, 1u, ipv_wn_32_6, ipv_wd_32_6}, {7u, 1u, 1u, ipv_wn_32_7, ipv_wd_32_7}};
+static const uint32_t ipv_ln_32_0[] = {0x000002a0u};
+static const uint32_t ipv_ld_32_0[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_1[] = {0x00000150u};
+static const uint32_t ipv_ld_32_1[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_2[] = {0x00000111u};
+static const uint32_t ipv_ld_32_2[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_3[] = {0x0000016cu};
+static const uint32_t ipv_ld_32_3[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_4[] = {0x00000340u};
+static const uint32_t ipv_ld_32_4[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_5[] = {0x000009c0u};
+static const uint32_t ipv_ld_32_5[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_6[] = {0x00001110u};
+static const uint32_t ipv_ld_32_6[] = {0x00002d05u};
+static const uint32_t ipv_ln_32_7[] = {0x00000888u};
+static const uint32_t ipv_ld_32_7[] = {0x00002d05u};
+static const ipv_weight_t ipv_l_32[] = {{0u, 1u, 1u, ipv_ln_32_0, ipv_ld_32_0}, {1u, 1u, 1u, ipv_ln_32_1, ipv_ld_32_1}, {2u, 1u, 1u, ipv_ln_32_2, ipv_ld_32_2}, {3u, 1u, 1u, ipv_ln_32_3, ipv_ld_32_3}, {4u, 1u, 1u, ipv_ln_32_4, ipv_ld_32_4}, {5u, 1u, 1u, ipv_ln_32_5, ipv_ld_32_5}, {6u, 1u, 1u, ipv_ln_32_6, ipv_ld_32_6}, {7u, 1u, 1u, ipv_ln_32_7, ipv_ld_32_7}};
+static const uint32_t ipv_wn_34_0[] = {0x00000001u};
+static const uint32_t ipv_wd_34_0[] = {0x0000004bu};
+static const uint32_t ipv_wn_34_1[] = {0x0000000bu};
+static const uint32_t ipv_wd_34_1[] = {0x00000384u};
+static const uint32_t ipv_wn_34_2[] = {0x00000001u};
+static const uint32_t ipv_wd_34_2[] = {0x00000032u};
+static const uint32_t ipv_wn_34_3[] = {0x00000003u};
+static const uint32_t ipv_wd_34_3[] = {0x00000032u};
+static const uint32_t ipv_wn_34_4[] = {0x00000021u};
+static const uint32_t ipv_wd_34_4[] = {0x00000064u};
+static const uint32_t ipv_wn_34_5[] = {0x0000000bu};
+static const uint32_t ipv_wd_34_5[] = {0x00000019u};
+static const uint32_t ipv_wn_34_6[] = {0x00000016u};
+static const uint32_t ipv_wd_34_6[] = {0x000000e1u};
+static const uint32_t ipv_wn_34_7[] = {0x00000002u};
+static const uint32_t ipv_wd_34_7[] = {0x0000004bu};
+static const ipv_weight_t ipv_w_34[] = {{0u, 1u, 1u, ipv_wn_34_0, ipv_wd_34_0}, {1u, 1u, 1u, ipv_wn_34_1, ipv_wd_34_1}, {2u, 1u, 1u, ipv_wn_34_2, ipv_wd_34_2}, {3u, 1u, 1u, ipv_wn_34_3, ipv_wd_34_3}, {4u, 1u, 1u, ipv_wn_34_4, ipv_wd_34_4}, {5u, 1u, 1u, ipv_wn_34_5, ipv_wd_34_5}, {6u, 1u, 1u, ipv_wn_34_6, ipv_wd_34_6}, {7u, 1u, 1u, ipv_wn_34_7, ipv_wd_34_7}};
+static const uint32_t ipv_ln_34_0[] = {0x00000001u};
+static const uint32_t ipv_ld_34_0[] = {0x0000004bu};
+static const uint32_t ipv_ln_34_1[] = {0x0000000bu};
+static const uint32_t ipv_ld_34_1[] = {0x00000384u};
+static const uint32_t ipv_ln_34_2[] = {0x00000001u};
+static const uint32_t ipv_ld_34_2[] = {0x00000032u};
+static const uint32_t ipv_ln_34_3[] = {0x00000003u};
+static const uint32_t ipv_ld_34_3[] = {0x00000032u};
+static const uint32_t ipv_ln_34_4[] = {0x00000021u};
+static const uint32_t ipv_ld_34_4[] = {0x00000064u};
+static const uint32_t ipv_ln_34_5[] = {0x0000000bu};
+static const uint32_t ipv_ld_34_5[] = {0x00000019u};
+static const uint32_t ipv_ln_34_6[] = {0x00000016u};
+static const uint32_t ipv_ld_34_6[] = {0x000000e1u};
+static const uint32_t ipv_ln_34_7[] = {0x00000002u};
+static const uint32_t ipv_ld_34_7[] = {0x0000004bu};
+static const ipv_weight_t ipv_l_34[] = {{0u, 1u, 1u, ipv_ln_34_0, ipv_ld_34_0}, {1u, 1u, 1u, ipv_ln_34_1, ipv_ld_34_1}, {2u, 1u, 1u, ipv_ln_34_2, ipv_ld_34_2}, {3u, 1u, 1u, ipv_ln_34_3, ipv_ld_34_3}, {4u, 1u, 1u, ipv_ln_34_4, ipv_ld_34_4}, {5u, 1u, 1u, ipv_ln_34_5, ipv_ld_34_5}, {6u, 1u, 1u, ipv_ln_34_6, ipv_ld_34_6}, {7u, 1u, 1u, ipv_ln_34_7, ipv_ld_34_7}};
+static const uint32_t ipv_wn_35_0[] = {0x00000268u};
+static const uint32_t ipv_wd_35_0[] = {0x00001d97u};
+static const uint32_t ipv_wn_35_1[] = {0x000000e7u};
+static const uint32_t ipv_wd_35_1[] = {0x000009ddu};
+static const uint32_t ipv_wn_35_2[] = {0x00000134u};
+static const uint32_t ipv_wd_35_2[] = {0x000009ddu};
+static const uint32_t ipv_wn_35_3[] = {0x000004d0u};
+static const uint32_t ipv_wd_35_3[] = {0x00001d97u};
+static const uint32_t ipv_wn_35_4[] = {0x000001ceu};
+static const uint32_t ipv_wd_35_4[] = {0x000009ddu};
+static const uint32_t ipv_wn_35_5[] = {0x0000018cu};
+static const uint32_t ipv_wd_35_5[] = {0x000009ddu};
+static const uint32_t ipv_wn_35_6[] = {0x00000120u};
+static const uint32_t ipv_wd_35_6[] = {0x000009ddu};
+static const uint32_t ipv_wn_35_7[] = {0x000000e0u};
+static const uint32_t ipv_wd_35_7[] = {0x000009ddu};
+static const ipv_weight_t ipv_w_35[] = {{0u, 1u, 1u, ipv_wn_35_0, ipv_wd_35_0}, {1u, 1u, 1u, ipv_wn_35_1, ipv_wd_35_1}, {2u, 1u, 1u, ipv_wn_35_2, ipv_wd_35_2}, {3u, 1u, 1u, ipv_wn_35_3, ipv_wd_35_3}, {4u, 1u, 1u, ipv_wn_35_4, ipv_wd_35_4}, {5u, 1u, 1u, ipv_wn_35_5, ipv_wd_35_5}, {6u, 1u, 1u, ipv_wn_35_6, ipv_wd_35_6}, {7u, 1u, 1u, ipv_wn_35_7, ipv_wd_35_7}};
+static const uint32_t ipv_ln_35_0[] = {0x00000268u};
+static const uint32_t ipv_ld_35_0[] = {0x00001d97u};
+static const uint32_t ipv_ln_35_1[] = {0x000000e7u};
+static const uint32_t ipv_ld_35_1[] = {0x000009ddu};
+static const uint32_t ipv_ln_35_2[] = {0x00000134u};
+static const uint32_t ipv_ld_35_2[] = {0x000009ddu};
+static const uint32_t ipv_ln_35_3[] = {0x000004d0u};
+static const uint32_t ipv_ld_35_3[] = {0x00001d97u};
+static const uint32_t ipv_ln_35_4[] = {0x000001ceu};
+static const uint32_t ipv_ld_35_4[] = {0x000009ddu};
+static const uint32_t ipv_ln_35_5[] = {0x0000018cu};
+static const uint32_t ipv_ld_35_5[] = {0x000009ddu};
+static const uint32_t ipv_ln_35_6[] = {0x00000120u};
+static const uint32_t ipv_ld_35_6[] = {0x000009ddu};
+static const uint32_t ipv_ln_35_7[] = {0x000000e0u};
+static const uint32_t ipv_ld_35_7[] = {0x000009ddu};
+static const ipv_weight_t ipv_l_35[] = {{0u, 1u, 1u, ipv_ln_35_0, ipv_ld_35_0}, {1u, 1u, 1u, ipv_ln_35_1, ipv_ld_35_1}, {2u, 1u, 1u, ipv_ln_35_2, ipv_ld_35_2}, {3u, 1u, 1u, ipv_ln_35_3, ipv_ld_35_3}, {4u, 1u, 1u, ipv_ln_35_4, ipv_ld_35_4}, {5u, 1u, 1u, ipv_ln_35_5, ipv_ld_35_5}, {6u, 1u, 1u, ipv_ln_35_6, ipv_ld_35_6}, {7u, 1u, 1u, ipv_ln_35_7, ipv_ld_35_7}};
+static const uint32_t ipv_wn_36_0[] = {0x00000001u};
+static const uint32_t ipv_wd_36_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_36[] = {{0u, 1u, 1u, ipv_wn_36_0, ipv_wd_36_0}};
+static const uint32_t ipv_ln_36_0[] = {0x00000001u};
+static const uint32_t ipv_ld_36_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_36[] = {{0u, 1u, 1u, ipv_ln_36_0, ipv_ld_36_0}};
+static const uint32_t ipv_wn_37_0[] = {0x00000018u};
+static const uint32_t ipv_wd_37_0[] = {0x00000061u};
+static const uint32_t ipv_wn_37_1[] = {0x00000009u};
+static const uint32_t ipv_wd_37_1[] = {0x00000061u};
+static const uint32_t ipv_wn_37_6[] = {0x00000003u};
+static const uint32_t ipv_wd_37_6[] = {0x00000794u};
+static const uint32_t ipv_wn_37_7[] = {0x0000002fu};
+static const uint32_t ipv_wd_37_7[] = {0x00000184u};
+static const uint32_t ipv_wn_37_8[] = {0x00000209u};
+static const uint32_t ipv_wd_37_8[] = {0x000003cau};
+static const ipv_weight_t ipv_w_37[] = {{0u, 1u, 1u, ipv_wn_37_0, ipv_wd_37_0}, {1u, 1u, 1u, ipv_wn_37_1, ipv_wd_37_1}, {6u, 1u, 1u, ipv_wn_37_6, ipv_wd_37_6}, {7u, 1u, 1u, ipv_wn_37_7, ipv_wd_37_7}, {8u, 1u, 1u, ipv_wn_37_8, ipv_wd_37_8}};
+static const uint32_t ipv_ln_37_0[] = {0x0000001cu};
+static const uint32_t ipv_ld_37_0[] = {0x0000008bu};
+static const uint32_t ipv_ln_37_1[] = {0x00000012u};
+static const uint32_t ipv_ld_37_1[] = {0x0000008bu};
+static const uint32_t ipv_ln_37_6[] = {0x00000009u};
+static const uint32_t ipv_ld_37_6[] = {0x000002b7u};
+static const uint32_t ipv_ln_37_7[] = {0x00000015u};
+static const uint32_t ipv_ld_37_7[] = {0x0000008bu};
+static const uint32_t ipv_ln_37_8[] = {0x0000015fu};
+static const uint32_t ipv_ld_37_8[] = {0x000002b7u};
+static const ipv_weight_t ipv_l_37[] = {{0u, 1u, 1u, ipv_ln_37_0, ipv_ld_37_0}, {1u, 1u, 1u, ipv_ln_37_1, ipv_ld_37_1}, {6u, 1u, 1u, ipv_ln_37_6, ipv_ld_37_6}, {7u, 1u, 1u, ipv_ln_37_7, ipv_ld_37_7}, {8u, 1u, 1u, ipv_ln_37_8, ipv_ld_37_8}};
+static const uint32_t ipv_wn_38_5[] = {0x00000002u};
+static const uint32_t ipv_wd_38_5[] = {0x00000055u};
+static const uint32_t ipv_wn_38_6[] = {0x0000008fu};
+static const uint32_t ipv_wd_38_6[] = {0x00000154u};
+static const uint32_t ipv_wn_38_7[] = {0x0000005bu};
+static const uint32_t ipv_wd_38_7[] = {0x00000154u};
+static const uint32_t ipv_wn_38_8[] = {0x00000031u};
+static const uint32_t ipv_wd_38_8[] = {0x000000aau};
+static const ipv_weight_t ipv_w_38[] = {{5u, 1u, 1u, ipv_wn_38_5, ipv_wd_38_5}, {6u, 1u, 1u, ipv_wn_38_6, ipv_wd_38_6}, {7u, 1u, 1u, ipv_wn_38_7, ipv_wd_38_7}, {8u, 1u, 1u, ipv_wn_38_8, ipv_wd_38_8}};
+static const uint32_t ipv_ln_38_5[] = {0x00000009u};
+static const uint32_t ipv_ld_38_5[] = {0x0000009bu};
+static const uint32_t ipv_ln_38_6[] = {0x00000075u};
+static const uint32_t ipv_ld_38_6[] = {0x00000136u};
+static const uint32_t ipv_ln_38_7[] = {0x0000005bu};
+static const uint32_t ipv_ld_38_7[] = {0x00000136u};
+static const uint32_t ipv_ln_38_8[] = {0x0000002au};
+static const uint32_t ipv_ld_38_8[] = {0x0000009bu};
+static const ipv_weight_t ipv_l_38[] = {{5u, 1u, 1u, ipv_ln_38_5, ipv_ld_38_5}, {6u, 1u, 1u, ipv_ln_38_6, ipv_ld_38_6}, {7u, 1u, 1u, ipv_ln_38_7, ipv_ld_38_7}, {8u, 1u, 1u, ipv_ln_38_8, ipv_ld_38_8}};
+static const uint32_t ipv_wn_39_0[] = {0x00000736u};
+static const uint32_t ipv_wd_39_0[] = {0x00000b31u};
+static const uint32_t ipv_wn_39_1[] = {0x000000f2u};
+static const uint32_t ipv_wd_39_1[] = {0x000003bbu};
+static const uint32_t ipv_wn_39_7[] = {0x0000000du};
+static const uint32_t ipv_wd_39_7[] = {0x00000b31u};
+static const uint32_t ipv_wn_39_8[] = {0x00000038u};
+static const uint32_t ipv_wd_39_8[] = {0x0000023du};
+static const ipv_weight_t ipv_w_39[] = {{0u, 1u, 1u, ipv_wn_39_0, ipv_wd_39_0}, {1u, 1u, 1u, ipv_wn_39_1, ipv_wd_39_1}, {7u, 1u, 1u, ipv_wn_39_7, ipv_wd_39_7}, {8u, 1u, 1u, ipv_wn_39_8, ipv_wd_39_8}};
+static const uint32_t ipv_ln_39_0[] = {0x000001a0u};
+static const uint32_t ipv_ld_39_0[] = {0x00000299u};
+static const uint32_t ipv_ln_39_1[] = {0x000000b0u};
+static const uint32_t ipv_ld_39_1[] = {0x00000299u};
+static const uint32_t ipv_ln_39_7[] = {0x0000000du};
+static const uint32_t ipv_ld_39_7[] = {0x00000299u};
+static const uint32_t ipv_ln_39_8[] = {0x0000000cu};
+static const uint32_t ipv_ld_39_8[] = {0x00000085u};
+static const ipv_weight_t ipv_l_39[] = {{0u, 1u, 1u, ipv_ln_39_0, ipv_ld_39_0}, {1u, 1u, 1u, ipv_ln_39_1, ipv_ld_39_1}, {7u, 1u, 1u, ipv_ln_39_7, ipv_ld_39_7}, {8u, 1u, 1u, ipv_ln_39_8, ipv_ld_39_8}};
+static const uint32_t ipv_wn_45_0[] = {0x00000001u};
+static const uint32_t ipv_wd_45_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_45[] = {{0u, 1u, 1u, ipv_wn_45_0, ipv_wd_45_0}};
+static const uint32_t ipv_ln_45_0[] = {0x00000001u};
+static const uint32_t ipv_ld_45_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_45[] = {{0u, 1u, 1u, ipv_ln_45_0, ipv_ld_45_0}};
+static const uint32_t ipv_wn_46_0[] = {0x00000356u};
+static const uint32_t ipv_wd_46_0[] = {0x0000a5b7u};
+static const uint32_t ipv_wn_46_1[] = {0x00000c40u};
+static const uint32_t ipv_wd_46_1[] = {0x0000373du};
+static const uint32_t ipv_wn_46_2[] = {0x000051a0u};
+static const uint32_t ipv_wd_46_2[] = {0x0001f125u};
+static const uint32_t ipv_wn_46_4[] = {0x00005d61u};
+static const uint32_t ipv_wd_46_4[] = {0x0000a5b7u};
+static const uint32_t ipv_wn_46_5[] = {0x00000118u};
+static const uint32_t ipv_wd_46_5[] = {0x0000373du};
+static const uint32_t ipv_wn_46_6[] = {0x00000548u};
+static const uint32_t ipv_wd_46_6[] = {0x0001f125u};
+static const ipv_weight_t ipv_w_46[] = {{0u, 1u, 1u, ipv_wn_46_0, ipv_wd_46_0}, {1u, 1u, 1u, ipv_wn_46_1, ipv_wd_46_1}, {2u, 1u, 1u, ipv_wn_46_2, ipv_wd_46_2}, {4u, 1u, 1u, ipv_wn_46_4, ipv_wd_46_4}, {5u, 1u, 1u, ipv_wn_46_5, ipv_wd_46_5}, {6u, 1u, 1u, ipv_wn_46_6, ipv_wd_46_6}};
+static const uint32_t ipv_ln_46_0[] = {0x0000015eu};
+static const uint32_t ipv_ld_46_0[] = {0x00002205u};
+static const uint32_t ipv_ln_46_1[] = {0x00000230u};
+static const uint32_t ipv_ld_46_1[] = {0x00000b57u};
+static const uint32_t ipv_ln_46_2[] = {0x00000640u};
+static const uint32_t ipv_ld_46_2[] = {0x00002205u};
+static const uint32_t ipv_ln_46_4[] = {0x000005a9u};
+static const uint32_t ipv_ld_46_4[] = {0x00000b57u};
+static const uint32_t ipv_ln_46_5[] = {0x0000008cu};
+static const uint32_t ipv_ld_46_5[] = {0x00000b57u};
+static const uint32_t ipv_ln_46_6[] = {0x00000068u};
+static const uint32_t ipv_ld_46_6[] = {0x00000b57u};
+static const ipv_weight_t ipv_l_46[] = {{0u, 1u, 1u, ipv_ln_46_0, ipv_ld_46_0}, {1u, 1u, 1u, ipv_ln_46_1, ipv_ld_46_1}, {2u, 1u, 1u, ipv_ln_46_2, ipv_ld_46_2}, {4u, 1u, 1u, ipv_ln_46_4, ipv_ld_46_4}, {5u, 1u, 1u, ipv_ln_46_5, ipv_ld_46_5}, {6u, 1u, 1u, ipv_ln_46_6, ipv_ld_46_6}};
+static const uint32_t ipv_wn_47_0[] = {0x00000005u};
+static const uint32_t ipv_wd_47_0[] = {0x00000006u};
+static const uint32_t ipv_wn_47_5[] = {0x00000001u};
+static const uint32_t ipv_wd_47_5[] = {0x00000006u};
+static const ipv_weight_t ipv_w_47[] = {{0u, 1u, 1u, ipv_wn_47_0, ipv_wd_47_0}, {5u, 1u, 1u, ipv_wn_47_5, ipv_wd_47_5}};
+static const uint32_t ipv_ln_47_0[] = {0x00000005u};
+static const uint32_t ipv_ld_47_0[] = {0x00000006u};
+static const uint32_t ipv_ln_47_5[] = {0x00000001u};
+static const uint32_t ipv_ld_47_5[] = {0x00000006u};
+static const ipv_weight_t ipv_l_47[] = {{0u, 1u, 1u, ipv_ln_47_0, ipv_ld_47_0}, {5u, 1u, 1u, ipv_ln_47_5, ipv_ld_47_5}};
+static const uint32_t ipv_wn_48_2[] = {0x0000327eu};
+static const uint32_t ipv_wd_48_2[] = {0x00005f73u};
+static const uint32_t ipv_wn_48_3[] = {0x00001ed1u};
+static const uint32_t ipv_wd_48_3[] = {0x00006a0eu};
+static const uint32_t ipv_wn_48_4[] = {0x00000d24u};
+static const uint32_t ipv_wd_48_4[] = {0x00009f15u};
+static const uint32_t ipv_wn_48_6[] = {0x000012adu};
+static const uint32_t ipv_wd_48_6[] = {0x0000bee6u};
+static const ipv_weight_t ipv_w_48[] = {{2u, 1u, 1u, ipv_wn_48_2, ipv_wd_48_2}, {3u, 1u, 1u, ipv_wn_48_3, ipv_wd_48_3}, {4u, 1u, 1u, ipv_wn_48_4, ipv_wd_48_4}, {6u, 1u, 1u, ipv_wn_48_6, ipv_wd_48_6}};
+static const uint32_t ipv_ln_48_2[] = {0x000000b8u};
+static const uint32_t ipv_ld_48_2[] = {0x0000016bu};
+static const uint32_t ipv_ln_48_3[] = {0x00000467u};
+static const uint32_t ipv_ld_48_3[] = {0x00000e2eu};
+static const uint32_t ipv_ln_48_4[] = {0x0000003au};
+static const uint32_t ipv_ld_48_4[] = {0x0000025du};
+static const uint32_t ipv_ln_48_6[] = {0x00000015u};
+static const uint32_t ipv_ld_48_6[] = {0x000000f2u};
+static const ipv_weight_t ipv_l_48[] = {{2u, 1u, 1u, ipv_ln_48_2, ipv_ld_48_2}, {3u, 1u, 1u, ipv_ln_48_3, ipv_ld_48_3}, {4u, 1u, 1u, ipv_ln_48_4, ipv_ld_48_4}, {6u, 1u, 1u, ipv_ln_48_6, ipv_ld_48_6}};
+static const uint32_t ipv_wn_50_0[] = {0x00031f43u};
+static const uint32_t ipv_wd_50_0[] = {0x00056ce8u};
+static const uint32_t ipv_wn_50_1[] = {0x00002ae6u};
+static const uint32_t ipv_wd_50_1[] = {0x0000ad9du};
+static const uint32_t ipv_wn_50_4[] = {0x00000ef9u};
+static const uint32_t ipv_wd_50_4[] = {0x0000e77cu};
+static const uint32_t ipv_wn_50_5[] = {0x00000a71u};
+static const uint32_t ipv_wd_50_5[] = {0x00005c98u};
+static const ipv_weight_t ipv_w_50[] = {{0u, 1u, 1u, ipv_wn_50_0, ipv_wd_50_0}, {1u, 1u, 1u, ipv_wn_50_1, ipv_wd_50_1}, {4u, 1u, 1u, ipv_wn_50_4, ipv_wd_50_4}, {5u, 1u, 1u, ipv_wn_50_5, ipv_wd_50_5}};
+static const uint32_t ipv_ln_50_0[] = {0x000000d1u};
+static const uint32_t ipv_ld_50_0[] = {0x0000016eu};
+static const uint32_t ipv_ln_50_1[] = {0x00000143u};
+static const uint32_t ipv_ld_50_1[] = {0x00000501u};
+static const uint32_t ipv_ln_50_4[] = {0x0000001au};
+static const uint32_t ipv_ld_50_4[] = {0x000001abu};
+static const uint32_t ipv_ln_50_5[] = {0x00000063u};
+static const uint32_t ipv_ld_50_5[] = {0x00000356u};
+static const ipv_weight_t ipv_l_50[] = {{0u, 1u, 1u, ipv_ln_50_0, ipv_ld_50_0}, {1u, 1u, 1u, ipv_ln_50_1, ipv_ld_50_1}, {4u, 1u, 1u, ipv_ln_50_4, ipv_ld_50_4}, {5u, 1u, 1u, ipv_ln_50_5, ipv_ld_50_5}};
+static const uint32_t ipv_wn_54_0[] = {0x00000001u};
+static const uint32_t ipv_wd_54_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_54[] = {{0u, 1u, 1u, ipv_wn_54_0, ipv_wd_54_0}};
+static const uint32_t ipv_ln_54_0[] = {0x00000001u};
+static const uint32_t ipv_ld_54_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_54[] = {{0u, 1u, 1u, ipv_ln_54_0, ipv_ld_54_0}};
+static const uint32_t ipv_wn_55_0[] = {0x00009dd1u};
+static const uint32_t ipv_wd_55_0[] = {0x000480e3u};
+static const uint32_t ipv_wn_55_3[] = {0x0001cef8u};
+static const uint32_t ipv_wd_55_3[] = {0x00026cc9u};
+static const uint32_t ipv_wn_55_6[] = {0x00002e4cu};
+static const uint32_t ipv_wd_55_6[] = {0x00026cc9u};
+static const uint32_t ipv_wn_55_7[] = {0x000004bau};
+static const uint32_t ipv_wd_55_7[] = {0x00006e8du};
+static const ipv_weight_t ipv_w_55[] = {{0u, 1u, 1u, ipv_wn_55_0, ipv_wd_55_0}, {3u, 1u, 1u, ipv_wn_55_3, ipv_wd_55_3}, {6u, 1u, 1u, ipv_wn_55_6, ipv_wd_55_6}, {7u, 1u, 1u, ipv_wn_55_7, ipv_wd_55_7}};
+static const uint32_t ipv_ln_55_0[] = {0x000001d5u};
+static const uint32_t ipv_ld_55_0[] = {0x00000a83u};
+static const uint32_t ipv_ln_55_3[] = {0x0000008cu};
+static const uint32_t ipv_ld_55_3[] = {0x000000cfu};
+static const uint32_t ipv_ln_55_6[] = {0x0000000eu};
+static const uint32_t ipv_ld_55_6[] = {0x000000cfu};
+static const uint32_t ipv_ln_55_7[] = {0x000000dcu};
+static const uint32_t ipv_ld_55_7[] = {0x00000a83u};
+static const ipv_weight_t ipv_l_55[] = {{0u, 1u, 1u, ipv_ln_55_0, ipv_ld_55_0}, {3u, 1u, 1u, ipv_ln_55_3, ipv_ld_55_3}, {6u, 1u, 1u, ipv_ln_55_6, ipv_ld_55_6}, {7u, 1u, 1u, ipv_ln_55_7, ipv_ld_55_7}};
+static const uint32_t ipv_wn_57_0[] = {0x74e87400u};
+static const uint32_t ipv_wd_57_0[] = {0xd64e4809u};
+static const uint32_t ipv_wn_57_3[] = {0x0ef8f368u};
+static const uint32_t ipv_wd_57_3[] = {0x73653a7bu};
+static const uint32_t ipv_wn_57_6[] = {0x483b53c5u};
+static const uint32_t ipv_wd_57_6[] = {0xe6ca74f6u};
+static const uint32_t ipv_wn_57_7[] = {0x007bb185u};
+static const uint32_t ipv_wd_57_7[] = {0x2919888eu};
+static const ipv_weight_t ipv_w_57[] = {{0u, 1u, 1u, ipv_wn_57_0, ipv_wd_57_0}, {3u, 1u, 1u, ipv_wn_57_3, ipv_wd_57_3}, {6u, 1u, 1u, ipv_wn_57_6, ipv_wd_57_6}, {7u, 1u, 1u, ipv_wn_57_7, ipv_wd_57_7}};
+static const uint32_t ipv_ln_57_0[] = {0x00074740u};
+static const uint32_t ipv_ld_57_0[] = {0x000d00ddu};
+static const uint32_t ipv_ln_57_3[] = {0x00001a78u};
+static const uint32_t ipv_ld_57_3[] = {0x00010011u};
+static const uint32_t ipv_ln_57_6[] = {0x00009eefu};
+static const uint32_t ipv_ld_57_6[] = {0x00020022u};
+static const uint32_t ipv_ln_57_7[] = {0x0000b0e7u};
+static const uint32_t ipv_ld_57_7[] = {0x001a01bau};
+static const ipv_weight_t ipv_l_57[] = {{0u, 1u, 1u, ipv_ln_57_0, ipv_ld_57_0}, {3u, 1u, 1u, ipv_ln_57_3, ipv_ld_57_3}, {6u, 1u, 1u, ipv_ln_57_6, ipv_ld_57_6}, {7u, 1u, 1u, ipv_ln_57_7, ipv_ld_57_7}};
+static const uint32_t ipv_wn_58_0[] = {0x093d94fdu};
+static const uint32_t ipv_wd_58_0[] = {0x181fc811u};
+static const uint32_t ipv_wn_58_3[] = {0x01d46f60u};
+static const uint32_t ipv_wd_58_3[] = {0x03724127u};
+static const uint32_t ipv_wn_58_4[] = {0x00022448u};
+static const uint32_t ipv_wd_58_4[] = {0x00549989u};
+static const uint32_t ipv_wn_58_6[] = {0x00160c2cu};
+static const uint32_t ipv_wd_58_6[] = {0x016b4801u};
+static const ipv_weight_t ipv_w_58[] = {{0u, 1u, 1u, ipv_wn_58_0, ipv_wd_58_0}, {3u, 1u, 1u, ipv_wn_58_3, ipv_wd_58_3}, {4u, 1u, 1u, ipv_wn_58_4, ipv_wd_58_4}, {6u, 1u, 1u, ipv_wn_58_6, ipv_wd_58_6}};
+static const uint32_t ipv_ln_58_0[] = {0x0000f1a1u};
+static const uint32_t ipv_ld_58_0[] = {0x0002a6b5u};
+static const uint32_t ipv_ln_58_3[] = {0x00015270u};
+static const uint32_t ipv_ld_58_3[] = {0x0002a6b5u};
+static const uint32_t ipv_ln_58_4[] = {0x000031d8u};
+static const uint32_t ipv_ld_58_4[] = {0x0002a6b5u};
+static const uint32_t ipv_ln_58_6[] = {0x000030ccu};
+static const uint32_t ipv_ld_58_6[] = {0x0002a6b5u};
+static const ipv_weight_t ipv_l_58[] = {{0u, 1u, 1u, ipv_ln_58_0, ipv_ld_58_0}, {3u, 1u, 1u, ipv_ln_58_3, ipv_ld_58_3}, {4u, 1u, 1u, ipv_ln_58_4, ipv_ld_58_4}, {6u, 1u, 1u, ipv_ln_58_6, ipv_ld_58_6}};
+static const uint32_t ipv_wn_63_0[] = {0x00000001u};
+static const uint32_t ipv_wd_63_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_63[] = {{0u, 1u, 1u, ipv_wn_63_0, ipv_wd_63_0}};
+static const uint32_t ipv_ln_63_0[] = {0x00000001u};
+static const uint32_t ipv_ld_63_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_63[] = {{0u, 1u, 1u, ipv_ln_63_0, ipv_ld_63_0}};
+static const uint32_t ipv_wn_64_0[] = {0x00063345u};
+static const uint32_t ipv_wd_64_0[] = {0x00177a0cu};
+static const uint32_t ipv_wn_64_1[] = {0x00000498u};
+static const uint32_t ipv_wd_64_1[] = {0x0000d6a5u};
+static const uint32_t ipv_wn_64_2[] = {0x0000fffdu};
+static const uint32_t ipv_wd_64_2[] = {0x0006b528u};
+static const uint32_t ipv_wn_64_3[] = {0x001a8c63u};
+static const uint32_t ipv_wd_64_3[] = {0x002ef418u};
+static const ipv_weight_t ipv_w_64[] = {{0u, 1u, 1u, ipv_wn_64_0, ipv_wd_64_0}, {1u, 1u, 1u, ipv_wn_64_1, ipv_wd_64_1}, {2u, 1u, 1u, ipv_wn_64_2, ipv_wd_64_2}, {3u, 1u, 1u, ipv_wn_64_3, ipv_wd_64_3}};
+static const uint32_t ipv_ln_64_0[] = {0x00000d41u};
+static const uint32_t ipv_ld_64_0[] = {0x000045f2u};
+static const uint32_t ipv_ln_64_1[] = {0x0000003fu};
+static const uint32_t ipv_ld_64_1[] = {0x000004ffu};
+static const uint32_t ipv_ln_64_2[] = {0x0000039bu};
+static const uint32_t ipv_ld_64_2[] = {0x000013fcu};
+static const uint32_t ipv_ln_64_3[] = {0x00005141u};
+static const uint32_t ipv_ld_64_3[] = {0x00008be4u};
+static const ipv_weight_t ipv_l_64[] = {{0u, 1u, 1u, ipv_ln_64_0, ipv_ld_64_0}, {1u, 1u, 1u, ipv_ln_64_1, ipv_ld_64_1}, {2u, 1u, 1u, ipv_ln_64_2, ipv_ld_64_2}, {3u, 1u, 1u, ipv_ln_64_3, ipv_ld_64_3}};
+static const uint32_t ipv_wn_72_0[] = {0x00000001u};
+static const uint32_t ipv_wd_72_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_72[] = {{0u, 1u, 1u, ipv_wn_72_0, ipv_wd_72_0}};
+static const uint32_t ipv_ln_72_0[] = {0x00000001u};
+static const uint32_t ipv_ld_72_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_72[] = {{0u, 1u, 1u, ipv_ln_72_0, ipv_ld_72_0}};
+static const uint32_t ipv_wn_73_0[] = {0x0000000bu};
+static const uint32_t ipv_wd_73_0[] = {0x0000000fu};
+static const uint32_t ipv_wn_73_1[] = {0x00000001u};
+static const uint32_t ipv_wd_73_1[] = {0x0000001eu};
+static const uint32_t ipv_wn_73_2[] = {0x00000007u};
+static const uint32_t ipv_wd_73_2[] = {0x0000001eu};
+static const ipv_weight_t ipv_w_73[] = {{0u, 1u, 1u, ipv_wn_73_0, ipv_wd_73_0}, {1u, 1u, 1u, ipv_wn_73_1, ipv_wd_73_1}, {2u, 1u, 1u, ipv_wn_73_2, ipv_wd_73_2}};
+static const uint32_t ipv_ln_73_0[] = {0x0000000bu};
+static const uint32_t ipv_ld_73_0[] = {0x0000000fu};
+static const uint32_t ipv_ln_73_1[] = {0x00000001u};
+static const uint32_t ipv_ld_73_1[] = {0x0000001eu};
+static const uint32_t ipv_ln_73_2[] = {0x00000007u};
+static const uint32_t ipv_ld_73_2[] = {0x0000001eu};
+static const ipv_weight_t ipv_l_73[] = {{0u, 1u, 1u, ipv_ln_73_0, ipv_ld_73_0}, {1u, 1u, 1u, ipv_ln_73_1, ipv_ld_73_1}, {2u, 1u, 1u, ipv_ln_73_2, ipv_ld_73_2}};
+static const uint32_t ipv_wn_81_0[] = {0x00000001u};
+static const uint32_t ipv_wd_81_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_81[] = {{0u, 1u, 1u, ipv_wn_81_0, ipv_wd_81_0}};
+static const uint32_t ipv_ln_81_0[] = {0x00000001u};
+static const uint32_t ipv_ld_81_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_81[] = {{0u, 1u, 1u, ipv_ln_81_0, ipv_ld_81_0}};
+static const uint32_t ipv_wn_82_0[] = {0x00000200u};
+static const uint32_t ipv_wd_82_0[] = {0x00000a0fu};
+static const uint32_t ipv_wn_82_1[] = {0x0000060fu};
+static const uint32_t ipv_wd_82_1[] = {0x0000141eu};
+static const uint32_t ipv_wn_82_2[] = {0x0000040au};
+static const uint32_t ipv_wd_82_2[] = {0x00000a0fu};
+static const uint32_t ipv_wn_82_7[] = {0x000001fbu};
+static const uint32_t ipv_wd_82_7[] = {0x0000141eu};
+static const ipv_weight_t ipv_w_82[] = {{0u, 1u, 1u, ipv_wn_82_0, ipv_wd_82_0}, {1u, 1u, 1u, ipv_wn_82_1, ipv_wd_82_1}, {2u, 1u, 1u, ipv_wn_82_2, ipv_wd_82_2}, {7u, 1u, 1u, ipv_wn_82_7, ipv_wd_82_7}};
+static const uint32_t ipv_ln_82_0[] = {0x00000020u};
+static const uint32_t ipv_ld_82_0[] = {0x0000008bu};
+static const uint32_t ipv_ln_82_1[] = {0x0000004bu};
+static const uint32_t ipv_ld_82_1[] = {0x00000116u};
+static const uint32_t ipv_ln_82_2[] = {0x00000032u};
+static const uint32_t ipv_ld_82_2[] = {0x0000008bu};
+static const uint32_t ipv_ln_82_7[] = {0x00000027u};
+static const uint32_t ipv_ld_82_7[] = {0x00000116u};
+static const ipv_weight_t ipv_l_82[] = {{0u, 1u, 1u, ipv_ln_82_0, ipv_ld_82_0}, {1u, 1u, 1u, ipv_ln_82_1, ipv_ld_82_1}, {2u, 1u, 1u, ipv_ln_82_2, ipv_ld_82_2}, {7u, 1u, 1u, ipv_ln_82_7, ipv_ld_82_7}};
+static const uint32_t ipv_wn_85_2[] = {0x00000152u};
+static const uint32_t ipv_wd_85_2[] = {0x00001a89u};
+static const uint32_t ipv_wn_85_3[] = {0x00006ee4u};
+static const uint32_t ipv_wd_85_3[] = {0x0001f82bu};
+static const uint32_t ipv_wn_85_5[] = {0x0000f4c2u};
+static const uint32_t ipv_wd_85_5[] = {0x0001f82bu};
+static const uint32_t ipv_wn_85_7[] = {0x00007b6fu};
+static const uint32_t ipv_wd_85_7[] = {0x0001f82bu};
+static const ipv_weight_t ipv_w_85[] = {{2u, 1u, 1u, ipv_wn_85_2, ipv_wd_85_2}, {3u, 1u, 1u, ipv_wn_85_3, ipv_wd_85_3}, {5u, 1u, 1u, ipv_wn_85_5, ipv_wd_85_5}, {7u, 1u, 1u, ipv_wn_85_7, ipv_wd_85_7}};
+static const uint32_t ipv_ln_85_2[] = {0x00000082u};
+static const uint32_t ipv_ld_85_2[] = {0x00000881u};
+static const uint32_t ipv_ln_85_3[] = {0x000001ccu};
+static const uint32_t ipv_ld_85_3[] = {0x00000881u};
+static const uint32_t ipv_ln_85_5[] = {0x00000426u};
+static const uint32_t ipv_ld_85_5[] = {0x00000881u};
+static const uint32_t ipv_ln_85_7[] = {0x0000004bu};
+static const uint32_t ipv_ld_85_7[] = {0x00000137u};
+static const ipv_weight_t ipv_l_85[] = {{2u, 1u, 1u, ipv_ln_85_2, ipv_ld_85_2}, {3u, 1u, 1u, ipv_ln_85_3, ipv_ld_85_3}, {5u, 1u, 1u, ipv_ln_85_5, ipv_ld_85_5}, {7u, 1u, 1u, ipv_ln_85_7, ipv_ld_85_7}};
+static const uint32_t ipv_wn_90_0[] = {0x00000001u};
+static const uint32_t ipv_wd_90_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_90[] = {{0u, 1u, 1u, ipv_wn_90_0, ipv_wd_90_0}};
+static const uint32_t ipv_ln_90_0[] = {0x00000001u};
+static const uint32_t ipv_ld_90_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_90[] = {{0u, 1u, 1u, ipv_ln_90_0, ipv_ld_90_0}};
+static const uint32_t ipv_wn_91_0[] = {0x00000001u};
+static const uint32_t ipv_wd_91_0[] = {0x00000002u};
+static const uint32_t ipv_wn_91_2[] = {0x00000001u};
+static const uint32_t ipv_wd_91_2[] = {0x00000002u};
+static const ipv_weight_t ipv_w_91[] = {{0u, 1u, 1u, ipv_wn_91_0, ipv_wd_91_0}, {2u, 1u, 1u, ipv_wn_91_2, ipv_wd_91_2}};
+static const uint32_t ipv_ln_91_0[] = {0x00000001u};
+static const uint32_t ipv_ld_91_0[] = {0x00000002u};
+static const uint32_t ipv_ln_91_2[] = {0x00000001u};
+static const uint32_t ipv_ld_91_2[] = {0x00000002u};
+static const ipv_weight_t ipv_l_91[] = {{0u, 1u, 1u, ipv_ln_91_0, ipv_ld_91_0}, {2u, 1u, 1u, ipv_ln_91_2, ipv_ld_91_2}};
+static const uint32_t ipv_wn_97_0[] = {0x00000007u};
+static const uint32_t ipv_wd_97_0[] = {0x00000010u};
+static const uint32_t ipv_wn_97_2[] = {0x00000009u};
+static const uint32_t ipv_wd_97_2[] = {0x00000010u};
+static const ipv_weight_t ipv_w_97[] = {{0u, 1u, 1u, ipv_wn_97_0, ipv_wd_97_0}, {2u, 1u, 1u, ipv_wn_97_2, ipv_wd_97_2}};
+static const uint32_t ipv_ln_97_0[] = {0x00000007u};
+static const uint32_t ipv_ld_97_0[] = {0x00000010u};
+static const uint32_t ipv_ln_97_2[] = {0x00000009u};
+static const uint32_t ipv_ld_97_2[] = {0x00000010u};
+static const ipv_weight_t ipv_l_97[] = {{0u, 1u, 1u, ipv_ln_97_0, ipv_ld_97_0}, {2u, 1u, 1u, ipv_ln_97_2, ipv_ld_97_2}};
+static const uint32_t ipv_wn_99_0[] = {0x00000001u};
+static const uint32_t ipv_wd_99_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_99[] = {{0u, 1u, 1u, ipv_wn_99_0, ipv_wd_99_0}};
+static const uint32_t ipv_ln_99_0[] = {0x00000001u};
+static const uint32_t ipv_ld_99_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_99[] = {{0u, 1u, 1u, ipv_ln_99_0, ipv_ld_99_0}};
+static const uint32_t ipv_wn_100_0[] = {0x00000181u};
+static const uint32_t ipv_wd_100_0[] = {0x000002beu};
+static const uint32_t ipv_wn_100_2[] = {0x00000001u};
+static const uint32_t ipv_wd_100_2[] = {0x0000001au};
+static const uint32_t ipv_wn_100_3[] = {0x00000002u};
+static const uint32_t ipv_wd_100_3[] = {0x0000015fu};
+static const uint32_t ipv_wn_100_5[] = {0x0000000bu};
+static const uint32_t ipv_wd_100_5[] = {0x0000001bu};
+static const ipv_weight_t ipv_w_100[] = {{0u, 1u, 1u, ipv_wn_100_0, ipv_wd_100_0}, {2u, 1u, 1u, ipv_wn_100_2, ipv_wd_100_2}, {3u, 1u, 1u, ipv_wn_100_3, ipv_wd_100_3}, {5u, 1u, 1u, ipv_wn_100_5, ipv_wd_100_5}};
+static const uint32_t ipv_ln_100_0[] = {0x000000e1u};
+static const uint32_t ipv_ld_100_0[] = {0x0000017eu};
+static const uint32_t ipv_ln_100_2[] = {0x0000001bu};
+static const uint32_t ipv_ld_100_2[] = {0x0000017eu};
+static const uint32_t ipv_ln_100_3[] = {0x00000002u};
+static const uint32_t ipv_ld_100_3[] = {0x000000bfu};
+static const uint32_t ipv_ln_100_5[] = {0x0000003fu};
+static const uint32_t ipv_ld_100_5[] = {0x000000bfu};
+static const ipv_weight_t ipv_l_100[] = {{0u, 1u, 1u, ipv_ln_100_0, ipv_ld_100_0}, {2u, 1u, 1u, ipv_ln_100_2, ipv_ld_100_2}, {3u, 1u, 1u, ipv_ln_100_3, ipv_ld_100_3}, {5u, 1u, 1u, ipv_ln_100_5, ipv_ld_100_5}};
+static const uint32_t ipv_wn_102_1[] = {0x0001270au};
+static const uint32_t ipv_wd_102_1[] = {0x000278d7u};
+static const uint32_t ipv_wn_102_2[] = {0x00101693u};
+static const uint32_t ipv_wd_102_2[] = {0x00a8191cu};
+static const uint32_t ipv_wn_102_3[] = {0x0011112cu};
+static const uint32_t ipv_wd_102_3[] = {0x002a0647u};
+static const uint32_t ipv_wn_102_4[] = {0x00001040u};
+static const uint32_t ipv_wd_102_4[] = {0x000278d7u};
+static const uint32_t ipv_wn_102_5[] = {0x00010e31u};
+static const uint32_t ipv_wd_102_5[] = {0x00a8191cu};
+static const ipv_weight_t ipv_w_102[] = {{1u, 1u, 1u, ipv_wn_102_1, ipv_wd_102_1}, {2u, 1u, 1u, ipv_wn_102_2, ipv_wd_102_2}, {3u, 1u, 1u, ipv_wn_102_3, ipv_wd_102_3}, {4u, 1u, 1u, ipv_wn_102_4, ipv_wd_102_4}, {5u, 1u, 1u, ipv_wn_102_5, ipv_wd_102_5}};
+static const uint32_t ipv_ln_102_1[] = {0x000006dbu};
+static const uint32_t ipv_ld_102_1[] = {0x00000e90u};
+static const uint32_t ipv_ln_102_2[] = {0x00000479u};
+static const uint32_t ipv_ld_102_2[] = {0x00003a40u};
+static const uint32_t ipv_ln_102_3[] = {0x000005d3u};
+static const uint32_t ipv_ld_102_3[] = {0x00000e90u};
+static const uint32_t ipv_ln_102_4[] = {0x00000041u};
+static const uint32_t ipv_ld_102_4[] = {0x00000748u};
+static const uint32_t ipv_ln_102_5[] = {0x00000107u};
+static const uint32_t ipv_ld_102_5[] = {0x00003a40u};
+static const ipv_weight_t ipv_l_102[] = {{1u, 1u, 1u, ipv_ln_102_1, ipv_ld_102_1}, {2u, 1u, 1u, ipv_ln_102_2, ipv_ld_102_2}, {3u, 1u, 1u, ipv_ln_102_3, ipv_ld_102_3}, {4u, 1u, 1u, ipv_ln_102_4, ipv_ld_102_4}, {5u, 1u, 1u, ipv_ln_102_5, ipv_ld_102_5}};
+static const uint32_t ipv_wn_107_0[] = {0x0000001fu};
+static const uint32_t ipv_wd_107_0[] = {0x00000036u};
+static const uint32_t ipv_wn_107_3[] = {0x00000005u};
+static const uint32_t ipv_wd_107_3[] = {0x0000001bu};
+static const uint32_t ipv_wn_107_5[] = {0x0000000du};
+static const uint32_t ipv_wd_107_5[] = {0x00000036u};
+static const ipv_weight_t ipv_w_107[] = {{0u, 1u, 1u, ipv_wn_107_0, ipv_wd_107_0}, {3u, 1u, 1u, ipv_wn_107_3, ipv_wd_107_3}, {5u, 1u, 1u, ipv_wn_107_5, ipv_wd_107_5}};
+static const uint32_t ipv_ln_107_0[] = {0x0000001fu};
+static const uint32_t ipv_ld_107_0[] = {0x00000036u};
+static const uint32_t ipv_ln_107_3[] = {0x00000005u};
+static const uint32_t ipv_ld_107_3[] = {0x0000001bu};
+static const uint32_t ipv_ln_107_5[] = {0x0000000du};
+static const uint32_t ipv_ld_107_5[] = {0x00000036u};
+static const ipv_weight_t ipv_l_107[] = {{0u, 1u, 1u, ipv_ln_107_0, ipv_ld_107_0}, {3u, 1u, 1u, ipv_ln_107_3, ipv_ld_107_3}, {5u, 1u, 1u, ipv_ln_107_5, ipv_ld_107_5}};
+static const uint32_t ipv_wn_108_0[] = {0x00000001u};
+static const uint32_t ipv_wd_108_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_108[] = {{0u, 1u, 1u, ipv_wn_108_0, ipv_wd_108_0}};
+static const uint32_t ipv_ln_108_0[] = {0x00000001u};
+static const uint32_t ipv_ld_108_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_108[] = {{0u, 1u, 1u, ipv_ln_108_0, ipv_ld_108_0}};
+static const uint32_t ipv_wn_115_0[] = {0xe3511698u, 0x097d805bu};
+static const uint32_t ipv_wd_115_0[] = {0x0f6e2f7bu, 0x0bc0478au};
+static const uint32_t ipv_wn_115_1[] = {0x7967d3d4u, 0x015e077eu};
+static const uint32_t ipv_wd_115_1[] = {0x0f6e2f7bu, 0x0bc0478au};
+static const uint32_t ipv_wn_115_3[] = {0xb2b5450fu, 0x00e4bfafu};
+static const uint32_t ipv_wd_115_3[] = {0x0f6e2f7bu, 0x0bc0478au};
+static const ipv_weight_t ipv_w_115[] = {{0u, 2u, 2u, ipv_wn_115_0, ipv_wd_115_0}, {1u, 2u, 2u, ipv_wn_115_1, ipv_wd_115_1}, {3u, 2u, 2u, ipv_wn_115_3, ipv_wd_115_3}};
+static const uint32_t ipv_ln_115_0[] = {0xe3511698u, 0x097d805bu};
+static const uint32_t ipv_ld_115_0[] = {0x0f6e2f7bu, 0x0bc0478au};
+static const uint32_t ipv_ln_115_1[] = {0x7967d3d4u, 0x015e077eu};
+static const uint32_t ipv_ld_115_1[] = {0x0f6e2f7bu, 0x0bc0478au};
+static const uint32_t ipv_ln_115_3[] = {0xb2b5450fu, 0x00e4bfafu};
+static const uint32_t ipv_ld_115_3[] = {0x0f6e2f7bu, 0x0bc0478au};
+static const ipv_weight_t ipv_l_115[] = {{0u, 2u, 2u, ipv_ln_115_0, ipv_ld_115_0}, {1u, 2u, 2u, ipv_ln_115_1, ipv_ld_115_1}, {3u, 2u, 2u, ipv_ln_115_3, ipv_ld_115_3}};
+static const uint32_t ipv_wn_117_0[] = {0x00000001u};
+static const uint32_t ipv_wd_117_0[] = {0x00000001u};
+static const ipv_weight_t ipv_w_117[] = {{0u, 1u, 1u, ipv_wn_117_0, ipv_wd_117_0}};
+static const uint32_t ipv_ln_117_0[] = {0x00000001u};
+static const uint32_t ipv_ld_117_0[] = {0x00000001u};
+static const ipv_weight_t ipv_l_117[] = {{0u, 1u, 1u, ipv_ln_117_0, ipv_ld_117_0}};
+static const uint32_t ipv_wn_118_0[] = {0xacd9ab74u, 0x69e4b3c1u, 0x627ed320u, 0x271652a4u, 0x3274df3au, 0xf9e8be5bu, 0x27dafa89u, 0x1614808fu, 0x28737ec2u, 0x0cbd3993u, 0xe91555d9u, 0x09c72012u, 0x008db503u};
+static const uint32_t ipv_wd_118_0[] = {0xa7608717u, 0x5bdecde2u, 0xe94399e6u, 0x08e5b3e4u, 0x89b26d01u, 0x469cf827u, 0x76484bcdu, 0x959d3f3au, 0x6a5d6548u, 0x7036194du, 0xd154b95au, 0x13872eabu, 0x011b6a06u};
+static const uint32_t ipv_wn_118_1[] = {0x94d5f775u, 0xa022d05fu, 0x4be14074u, 0x20706978u, 0x078e2032u, 0x1427dda3u, 0x940aa915u, 0x2300abf5u, 0x77281eedu, 0x00181cd3u};
+static const uint32_t ipv_wd_118_1[] = {0xc94a7d8eu, 0x07e2f2b9u, 0xe56d91d6u, 0xf8a227deu, 0xfb03375eu, 0xc926283eu, 0xb97c8a29u, 0x430fbb28u, 0xe3b1e9cdu, 0x0a7a8812u, 0x0be28206u};
+static const uint32_t ipv_wn_118_2[] = {0xf9889c21u, 0x72b2855bu, 0xcd2a6478u, 0xe5b1cd19u, 0xab471e9fu, 0xc2e05c08u, 0xb6b30a51u, 0x900b592au, 0x91f7ca67u, 0x8d04e730u, 0x881c3521u, 0x021765feu};
+static const uint32_t ipv_wd_118_2[] = {0x4ec10e2eu, 0xb7bd9bc5u, 0xd28733ccu, 0x11cb67c9u, 0x1364da02u, 0x8d39f04fu, 0xec90979au, 0x2b3a7e74u, 0xd4baca91u, 0xe06c329au, 0xa2a972b4u, 0x270e5d57u, 0x0236d40cu};
+static const uint32_t ipv_wn_118_3[] = {0x6b4403a0u, 0xdecfeec6u, 0x51f285d7u, 0x8d296843u, 0xfc88c4a8u, 0x1db120abu, 0x49b9a6d7u, 0x41b8d823u, 0x5bdb99a1u, 0x57c0a668u, 0x0895e5e8u};
+static const uint32_t ipv_wd_118_3[] = {0x05476699u, 0x194607cbu, 0xa810df2du, 0xa106acc5u, 0x281c90a4u, 0xc57796c7u, 0xc5887a30u, 0x11f90bacu, 0x1efd6a80u, 0xd0a4b720u, 0x112bcbd0u};
+static const ipv_weight_t ipv_w_118[] = {{0u, 13u, 13u, ipv_wn_118_0, ipv_wd_118_0}, {1u, 10u, 11u, ipv_wn_118_1, ipv_wd_118_1}, {2u, 12u, 13u, ipv_wn_118_2, ipv_wd_118_2}, {3u, 11u, 11u, ipv_wn_118_3, ipv_wd_118_3}};
+static const uint32_t ipv_ln_118_0[] = {0x94e28ce4u, 0xf9d21e96u, 0xc875929cu, 0x2ff8c026u, 0xd62f2bafu, 0x0d0b5917u, 0x20c7caa7u, 0x0000029au};
+static const uint32_t ipv_ld_118_0[] = {0x7ff80aedu, 0x1b8782abu, 0xac680c39u, 0xe1c4e774u, 0x2ad24a7cu, 0x77c76f9du, 0x418f956eu, 0x00000534u};
+static const uint32_t ipv_ln_118_1[] = {0x5409ea8fu, 0xee1f7349u, 0x5d70a6e5u, 0x7f980f6bu, 0x9c327fd9u, 0xc576329eu, 0x000000a1u};
+static const uint32_t ipv_ld_118_1[] = {0xfff015dau, 0x370f0556u, 0x58d01872u, 0xc389cee9u, 0x55a494f9u, 0xef8edf3au, 0x831f2adcu, 0x00000a68u};
+static const uint32_t ipv_ln_118_2[] = {0x61ca4a13u, 0xd19f80f2u, 0x8917b946u, 0xaee1e4fau, 0x73033cfcu, 0x5a7c2201u, 0x00000928u};
+static const uint32_t ipv_ld_118_2[] = {0xfff015dau, 0x370f0556u, 0x58d01872u, 0xc389cee9u, 0x55a494f9u, 0xef8edf3au, 0x831f2adcu, 0x00000a68u};
+static const uint32_t ipv_ln_118_3[] = {0x102b63b8u, 0xc1d5e9f7u, 0xf0ae4985u, 0x9a8f2d1au, 0x4d084062u, 0x5ac2ec35u, 0x20c7c5e2u, 0x0000029au};
+static const uint32_t ipv_ld_118_3[] = {0x7ff80aedu, 0x1b8782abu, 0xac680c39u, 0xe1c4e774u, 0x2ad24a7cu, 0x77c76f9du, 0x418f956eu, 0x00000534u};
+static const ipv_weight_t ipv_l_118[] = {{0u, 8u, 8u, ipv_ln_118_0, ipv_ld_118_0}, {1u, 7u, 8u, ipv_ln_118_1, ipv_ld_118_1}, {2u, 7u, 8u, ipv_ln_118_2, ipv_ld_118_2}, {3u, 8u, 8u, ipv_ln_118_3, ipv_ld_118_3}};
+static const uint32_t ipv_wn_119_0[] = {0xa59bc7e0u, 0x8a352d44u, 0x61ddf7c1u, 0x6e46d6eau, 0x505965a9u, 0xdf93a4f6u, 0x4700b720u, 0x15c65779u, 0x853bf13du, 0x56983393u, 0xa64a9ca3u, 0x39b38521u, 0x2e1a9294u};
+static const uint32_t ipv_wd_119_0[] = {0x5c2c1acbu, 0x3fc58c85u, 0xd525244bu, 0x3fa73931u, 0x117787dcu, 0xbb2601dau, 0x1457eca3u, 0xf79ecc43u, 0x22d0f003u, 0x2b7a875du, 0xf60bf61bu, 0x1c66ec8cu, 0x35240361u};
+static const uint32_t ipv_wn_119_1[] = {0x118dc244u, 0xb8cd5feau, 0xd2f937d0u, 0xf7c551e8u, 0xa2880c18u, 0xd2cf3ae2u, 0x7b741e25u, 0xa3808752u, 0xa7bf38d1u, 0x7a7b6385u, 0x101a2b25u};
+static const uint32_t ipv_wd_119_1[] = {0x792a30bbu, 0x19e481cfu, 0xda9ba82cu, 0xf2d87580u, 0x3e47ddb5u, 0x62f209bdu, 0xfbb299a7u, 0xda1701f5u, 0xed89b56du, 0x69b1a5f8u, 0x1d3ce85au, 0x00000001u};
+static const uint32_t ipv_wn_119_2[] = {0x60e68342u, 0x147e7f3au, 0x30e53c22u, 0x1cc5acb1u, 0xe9b01e87u, 0x6d9f0acfu, 0xd2e10bbfu, 0x38c839b3u, 0x62295e3au, 0x8f30194bu, 0xee7e40a7u, 0xef3564f6u, 0x0103a178u};
+static const uint32_t ipv_wd_119_2[] = {0x5c2c1acbu, 0x3fc58c85u, 0xd525244bu, 0x3fa73931u, 0x117787dcu, 0xbb2601dau, 0x1457eca3u, 0xf79ecc43u, 0x22d0f003u, 0x2b7a875du, 0xf60bf61bu, 0x1c66ec8cu, 0x35240361u};
+static const uint32_t ipv_wn_119_3[] = {0x9b55da6bu, 0xe11790ecu, 0x9295a27cu, 0x8fb957f5u, 0x06f04ea3u, 0xd41f7c86u, 0x38ee8655u, 0x4e6dbaedu, 0x6c400428u, 0x8c3aec2bu, 0x2ee25641u};
+static const uint32_t ipv_wd_119_3[] = {0xb40bf925u, 0x29129da1u, 0x3ffdc537u, 0x43e8fa0cu, 0xdac94c57u, 0x1c3cf07au, 0x7e154778u, 0x3e57f193u, 0x12cd8db4u, 0x8f245d5eu, 0x38384a38u, 0x00000003u};
+static const ipv_weight_t ipv_w_119[] = {{0u, 13u, 13u, ipv_wn_119_0, ipv_wd_119_0}, {1u, 11u, 12u, ipv_wn_119_1, ipv_wd_119_1}, {2u, 13u, 13u, ipv_wn_119_2, ipv_wd_119_2}, {3u, 11u, 12u, ipv_wn_119_3, ipv_wd_119_3}};
+static const uint32_t ipv_ln_119_0[] = {0x8af94448u, 0x3ce5ea48u, 0x97ed7283u, 0xd70f7d58u, 0x0b3d2039u, 0x1d52a0a5u, 0x0ec46e9au, 0x00000fa1u};
+static const uint32_t ipv_ld_119_0[] = {0xf2c5b077u, 0x0c817e8bu, 0x84bd0c44u, 0x2c8ab468u, 0xe2a27288u, 0x2cf6905fu, 0x83eb4fc1u, 0x00001211u};
+static const uint32_t ipv_ln_119_1[] = {0xecad8968u, 0xf9a1babeu, 0x56c2b53bu, 0x9e079bb8u, 0x58d88ebcu, 0x3490cce8u, 0xbd65ac25u, 0x0000011eu};
+static const uint32_t ipv_ld_119_1[] = {0xf2c5b077u, 0x0c817e8bu, 0x84bd0c44u, 0x2c8ab468u, 0xe2a27288u, 0x2cf6905fu, 0x83eb4fc1u, 0x00001211u};
+static const uint32_t ipv_ln_119_2[] = {0x99ba1fb6u, 0x05ea3beeu, 0x048d18aeu, 0x609e9598u, 0x41ab329eu, 0x8629c191u, 0xdf0d6a1eu, 0x00000038u};
+static const uint32_t ipv_ld_119_2[] = {0xf2c5b077u, 0x0c817e8bu, 0x84bd0c44u, 0x2c8ab468u, 0xe2a27288u, 0x2cf6905fu, 0x83eb4fc1u, 0x00001211u};
+static const uint32_t ipv_ln_119_3[] = {0xe164c311u, 0xd00f9d95u, 0x917fcbd6u, 0x56d505bfu, 0x3ce190f3u, 0x54e96141u, 0xd8b3cae3u, 0x00000118u};
+static const uint32_t ipv_ld_119_3[] = {0xf2c5b077u, 0x0c817e8bu, 0x84bd0c44u, 0x2c8ab468u, 0xe2a27288u, 0x2cf6905fu, 0x83eb4fc1u, 0x00001211u};
+static const ipv_weight_t ipv_l_119[] = {{0u, 8u, 8u, ipv_ln_119_0, ipv_ld_119_0}, {1u, 8u, 8u, ipv_ln_119_1, ipv_ld_119_1}, {2u, 8u, 8u, ipv_ln_119_2, ipv_ld_119_2}, {3u, 8u, 8u, ipv_ln_119_3, ipv_ld_119_3}};
+static const uint32_t ipv_wn_120_0[] = {0xc8ce4246u, 0x5baf5046u, 0x4c4a5b60u, 0x75794dceu, 0x4301fd59u, 0x557910a3u, 0x9ea4a014u, 0x7e7f6dcdu, 0x48bb03ccu, 0xad91df42u, 0xdd40e4a6u, 0xa5a35099u, 0x41b6afceu, 0x00000009u};
+static const uint32_t ipv_wd_120_0[] = {0xf9a423a9u, 0xe8607b00u, 0xa456ae4fu, 0x18f715efu, 0xc6cf95b4u, 0x5ec410eau, 0x8be8b555u, 0x0710325cu, 0xb5528f3bu, 0x1c09282au, 0x1e0feeb7u, 0x28f1fd94u, 0x49cba1e8u, 0x0000000eu};
+static const uint32_t ipv_wn_120_1[] = {0x4f42f5ceu, 0x3d655cfeu, 0xb01c1858u, 0xc86f4059u, 0xff6d5aefu, 0xe82b506fu, 0xc4694163u, 0xa84c7d69u, 0x65d0c05cu, 0x0d69c31fu, 0x74de634du, 0x00000004u};
+static const uint32_t ipv_wd_120_1[] = {0x65a667f9u, 0x58013f57u, 0x20606f6du, 0xe25e0806u, 0x7a4d7e3cu, 0xf702615du, 0x9a7d0f69u, 0xbf9c2c43u, 0x02481cfdu, 0xa3e9b155u, 0xb195a2afu, 0x0000004cu};
+static const uint32_t ipv_wn_120_2[] = {0x56fc783eu, 0x1ec99849u, 0x98fbbda1u, 0xf5d419d6u, 0x9be05230u, 0x00261cf1u, 0x509d5394u, 0xc1a9b799u, 0x4f2066d1u, 0x86f68f6fu, 0xfd3445c3u, 0xf8999fc5u, 0x00a9a451u, 0x00000001u};
+static const uint32_t ipv_wd_120_2[] = {0xf9a423a9u, 0xe8607b00u, 0xa456ae4fu, 0x18f715efu, 0xc6cf95b4u, 0x5ec410eau, 0x8be8b555u, 0x0710325cu, 0xb5528f3bu, 0x1c09282au, 0x1e0feeb7u, 0x28f1fd94u, 0x49cba1e8u, 0x0000000eu};
+static const uint32_t ipv_wn_120_3[] = {0x257fa8f9u, 0x9d86aa11u, 0x65aa16e9u, 0xb8d6f106u, 0x04d0d47cu, 0xef7e3c19u, 0xb57183c0u, 0x614cd0bfu, 0x80d04a9cu, 0x532862b5u, 0x9cd38f7du, 0x00000031u};
+static const uint32_t ipv_wd_120_3[] = {0x9baa6aa7u, 0x7ec197d6u, 0xac820b6du, 0xdbeed465u, 0x8d5112bau, 0x149c1bb8u, 0x2751c4f8u, 0x98cbf5bau, 0x1c31e8cau, 0x0d837fbau, 0x9cf508bau, 0x000000ddu};
+static const ipv_weight_t ipv_w_120[] = {{0u, 14u, 14u, ipv_wn_120_0, ipv_wd_120_0}, {1u, 12u, 12u, ipv_wn_120_1, ipv_wd_120_1}, {2u, 14u, 14u, ipv_wn_120_2, ipv_wd_120_2}, {3u, 12u, 12u, ipv_wn_120_3, ipv_wd_120_3}};
+static const uint32_t ipv_ln_120_0[] = {0x82c269aeu, 0x4a58c39au, 0x3b1b3cb0u, 0xa59606a6u, 0x79d04bcfu, 0x963700fau, 0x4fd90793u, 0x00005bc1u};
+static const uint32_t ipv_ld_120_0[] = {0xa0af5737u, 0x39ea3917u, 0x8637a6a2u, 0xc2002a78u, 0xa1bd10e4u, 0xc27822b1u, 0x59e6151du, 0x00008f1bu};
+static const uint32_t ipv_ln_120_1[] = {0xfba8581cu, 0x9c8472c7u, 0x7516ff37u, 0x496ab043u, 0xe39c771cu, 0x27d79030u, 0x3353ab42u, 0x00000a5eu};
+static const uint32_t ipv_ld_120_1[] = {0xa0af5737u, 0x39ea3917u, 0x8637a6a2u, 0xc2002a78u, 0xa1bd10e4u, 0xc27822b1u, 0x59e6151du, 0x00008f1bu};
+static const uint32_t ipv_ln_120_2[] = {0xf057fc18u, 0xcda1fc84u, 0xbd96b29eu, 0x2a1bc232u, 0x1ac80731u, 0xba7665e0u, 0x9feaedb6u, 0x00000786u};
+static const uint32_t ipv_ld_120_2[] = {0xa0af5737u, 0x39ea3917u, 0x8637a6a2u, 0xc2002a78u, 0xa1bd10e4u, 0xc27822b1u, 0x59e6151du, 0x00008f1bu};
+static const uint32_t ipv_ln_120_3[] = {0x31ec9955u, 0x856b0630u, 0x186eb81bu, 0xa8e3b15cu, 0x298846c7u, 0x49f32ba6u, 0x36ce7491u, 0x00002175u};
+static const uint32_t ipv_ld_120_3[] = {0xa0af5737u, 0x39ea3917u, 0x8637a6a2u, 0xc2002a78u, 0xa1bd10e4u, 0xc27822b1u, 0x59e6151du, 0x00008f1bu};
+static const ipv_weight_t ipv_l_120[] = {{0u, 8u, 8u, ipv_ln_120_0, ipv_ld_120_0}, {1u, 8u, 8u, ipv_ln_120_1, ipv_ld_120_1}, {2u, 8u, 8u, ipv_ln_120_2, ipv_ld_120_2}, {3u, 8u, 8u, ipv_ln_120_3, ipv_ld_120_3}};
+static const uint32_t ipv_wn_121_0[] = {0xfade78d9u, 0x059907f8u, 0x52c33051u, 0xd579a465u, 0x6c5760cdu, 0x399c4b8fu, 0xd0c8329bu, 0x7496f3bdu, 0x726634b7u, 0x344b3779u, 0x6ea36e97u, 0x24d9297au, 0x01aff616u};
+static const uint32_t ipv_wd_121_0[] = {0x8ce18fe3u, 0x2f24c818u, 0xc8eb8826u, 0x21514994u, 0xc2c4e468u, 0x3a2d3ca2u, 0xd6dd4341u, 0x968804e7u, 0x6913d605u, 0xd25fb7f4u, 0x342396d9u, 0xf768861cu, 0x28e36b3du};
+static const uint32_t ipv_wn_121_1[] = {0xf482b87bu, 0x0fe069c3u, 0x3f6d6654u, 0x93cd6047u, 0xa08779e7u, 0x703466eeu, 0x69dcb444u, 0xba9a878au, 0xec17d57bu, 0xadcac917u, 0x26f58816u};
+static const uint32_t ipv_wd_121_1[] = {0x2c5322a6u, 0x7f2e68ffu, 0xf4aa72b6u, 0xdf2014f9u, 0x5038b572u, 0x495aa7bcu, 0xf4de2467u, 0x2e4ab779u, 0xb0e57e85u, 0x10af00fbu, 0xb6f1d868u, 0x00000001u};
+static const uint32_t ipv_wn_121_2[] = {0x4c2200d9u, 0xddb7e9e0u, 0xe039e31au, 0x9350ae00u, 0xf00cf9d8u, 0x44fee3c5u, 0xe918ff58u, 0x508832d7u, 0x2c04edbfu, 0x8e5bd545u, 0x90dbf955u, 0xaafb112bu, 0x3c8af863u};
+static const uint32_t ipv_wd_121_2[] = {0x19c31fc6u, 0x5e499031u, 0x91d7104cu, 0x42a29329u, 0x8589c8d0u, 0x745a7945u, 0xadba8682u, 0x2d1009cfu, 0xd227ac0bu, 0xa4bf6fe8u, 0x68472db3u, 0xeed10c38u, 0x51c6d67bu};
+static const uint32_t ipv_wn_121_3[] = {0x07a30428u, 0x7f94f458u, 0x00e1eb56u, 0xa98dcf7au, 0xdb14b068u, 0x6ec6f005u, 0xe19f7593u, 0x2483197cu, 0xa56d6f80u, 0x5808f0f6u, 0x523614f7u};
+static const uint32_t ipv_wd_121_3[] = {0x1f67df8du, 0x6bcdd868u, 0xa0ac8139u, 0x71fe4a28u, 0x0811ec8fu, 0xb91db3ceu, 0x8a0e7d65u, 0xeec8ed7au, 0xd05ae460u, 0x28eeaa68u, 0x7a2f3db2u, 0x00000002u};
+static const ipv_weight_t ipv_w_121[] = {{0u, 13u, 13u, ipv_wn_121_0, ipv_wd_121_0}, {1u, 11u, 12u, ipv_wn_121_1, ipv_wd_121_1}, {2u, 13u, 13u, ipv_wn_121_2, ipv_wd_121_2}, {3u, 11u, 12u, ipv_wn_121_3, ipv_wd_121_3}};
+static const uint32_t ipv_ln_121_0[] = {0xbf6b559fu, 0x8d01b0b2u, 0x1096a0f8u, 0x4424adc9u, 0xbd8118d7u, 0x2718723bu, 0x0c8dea55u, 0x0000002du};
+static const uint32_t ipv_ld_121_0[] = {0xf86e804cu, 0x57f0b509u, 0x25512532u, 0x7afeb4d0u, 0x7f9225a0u, 0x6d52a451u, 0xf5d9a812u, 0x0000053cu};
+static const uint32_t ipv_ln_121_1[] = {0xe15353afu, 0x0b83e775u, 0x982067f1u, 0x9f6a74acu, 0xa32b0615u, 0xeb0708f4u, 0x29bb1ea6u, 0x0000011au};
+static const uint32_t ipv_ld_121_1[] = {0xf0dd0098u, 0xafe16a13u, 0x4aa24a64u, 0xf5fd69a0u, 0xff244b40u, 0xdaa548a2u, 0xebb35024u, 0x00000a79u};
+static const uint32_t ipv_ln_121_2[] = {0x2c34be31u, 0x71aa4a58u, 0x971d5ef2u, 0x562b8360u, 0x820b456eu, 0xc0ec80d5u, 0x73f69a76u, 0x0000078bu};
+static const uint32_t ipv_ld_121_2[] = {0xf0dd0098u, 0xafe16a13u, 0x4aa24a64u, 0xf5fd69a0u, 0xff244b40u, 0xdaa548a2u, 0xebb35024u, 0x00000a79u};
+static const uint32_t ipv_ln_121_3[] = {0x323f21bdu, 0x0c57eb70u, 0x7d1ba0c8u, 0x3c0f0b00u, 0xaf75e707u, 0x70406d30u, 0x1a72e12eu, 0x000000bdu};
+static const uint32_t ipv_ld_121_3[] = {0xf86e804cu, 0x57f0b509u, 0x25512532u, 0x7afeb4d0u, 0x7f9225a0u, 0x6d52a451u, 0xf5d9a812u, 0x0000053cu};
+static const ipv_weight_t ipv_l_121[] = {{0u, 8u, 8u, ipv_ln_121_0, ipv_ld_121_0}, {1u, 8u, 8u, ipv_ln_121_1, ipv_ld_121_1}, {2u, 8u, 8u, ipv_ln_121_2, ipv_ld_121_2}, {3u, 8u, 8u, ipv_ln_121_3, ipv_ld_121_3}};
+static const uint32_t ipv_wn_124_0[] = {0x5c8292e3u, 0x8d240a6du, 0xff60a4bau, 0x2d23e39du, 0x4ef87eb7u, 0x43e41a0eu, 0xfc69770fu, 0x265c5b48u, 0x789864ebu, 0x9f51328bu, 0x4d28f074u, 0xadeea943u, 0x8be83aceu, 0x0000000du};
+static const uint32_t ipv_wd_124_0[] = {0xf1c0add1u, 0x1f1e0e31u, 0x833e396eu, 0xa597e01fu, 0xce8ef493u, 0x80e51991u, 0xeb0aba5au, 0xea85fa67u, 0x7b344e69u, 0x12b82fb6u, 0xfddace5bu, 0x98022b57u, 0x75b2c9e0u, 0x00000015u};
+static const uint32_t ipv_wn_124_1[] = {0x4d983cbbu, 0x196d93c7u, 0x09a70125u, 0xe209c8a3u, 0xc757c687u, 0xaf8ec3b1u, 0xcd802aacu, 0xa1e20329u, 0xfa9add4fu, 0xc7559b31u, 0x7463fdacu, 0x00000025u};
+static const uint32_t ipv_wd_124_1[] = {0xd85cffc6u, 0x53515418u, 0x60b3394du, 0x7e88886eu, 0x25726b4du, 0x7c86ffd6u, 0x64977cc5u, 0x23364d7au, 0x4ebc6978u, 0xfd8a4f11u, 0x1fde4ff1u, 0x000002b3u};
+static const uint32_t ipv_wn_124_2[] = {0x9a69cbc9u, 0xfd93f585u, 0x4592d54du, 0xca2c9021u, 0xfd900f52u, 0xed00c58fu, 0x84d7be07u, 0xf8cda4b5u, 0xad5c730cu, 0x7ba4f887u, 0xa343bdbfu, 0x8e5b625bu, 0x6cd72a26u, 0x00000009u};
+static const uint32_t ipv_wd_124_2[] = {0xaa8412e6u, 0xbab4552bu, 0x13755894u, 0xe18f40bdu, 0xd759bb75u, 0x055e996au, 0x82405e1fu, 0x7f23de6fu, 0xe339d67bu, 0x70511e46u, 0xf320d622u, 0x900d040fu, 0xc230bb43u, 0x00000080u};
+static const uint32_t ipv_wn_124_3[] = {0x41c56080u, 0x28bf1ee9u, 0x5fa9ee31u, 0xea55338du, 0x0f8efb2eu, 0x36984b53u, 0x063ffefau, 0xa7ad0f11u, 0xcf11b023u, 0xdf590e87u, 0xfff996b8u, 0x000000f0u};
+static const uint32_t ipv_wd_124_3[] = {0x5bb67afdu, 0x1ecd40bbu, 0x306b91e7u, 0x7f681d41u, 0x58eaf40au, 0x44527750u, 0x64e6b804u, 0x3fd3f87bu, 0x0ea04577u, 0xf3befd12u, 0x88439177u, 0x000003e6u};
+static const ipv_weight_t ipv_w_124[] = {{0u, 14u, 14u, ipv_wn_124_0, ipv_wd_124_0}, {1u, 12u, 12u, ipv_wn_124_1, ipv_wd_124_1}, {2u, 14u, 14u, ipv_wn_124_2, ipv_wd_124_2}, {3u, 12u, 12u, ipv_wn_124_3, ipv_wd_124_3}};
+static const uint32_t ipv_ln_124_0[] = {0xfa52e549u, 0xce46f310u, 0x17f0560cu, 0xa16d4268u, 0x260a7dbeu, 0x078aa9e5u, 0xef3b03e3u, 0x0000c893u};
+static const uint32_t ipv_ld_124_0[] = {0xa6cdf3afu, 0x6f9d6ab2u, 0x1a219ee2u, 0x412ad56eu, 0x8a4bff3bu, 0x2609aa33u, 0x49ee12bbu, 0x00014135u};
+static const uint32_t ipv_ln_124_1[] = {0x6b52d6b3u, 0xa5ed14fau, 0x88ae4a09u, 0xa823aeceu, 0x2a4e3fc1u, 0x1e7e32cdu, 0xfffa5c3eu, 0x00002c2fu};
+static const uint32_t ipv_ld_124_1[] = {0x4d9be75eu, 0xdf3ad565u, 0x34433dc4u, 0x8255aadcu, 0x1497fe76u, 0x4c135467u, 0x93dc2576u, 0x0002826au};
+static const uint32_t ipv_ln_124_2[] = {0x5f01b3b1u, 0x3fe363c8u, 0xad83373cu, 0x0b56c8c0u, 0x281ad283u, 0x1c8e54deu, 0x403286d0u, 0x00002389u};
+static const uint32_t ipv_ld_124_2[] = {0x4d9be75eu, 0xdf3ad565u, 0x34433dc4u, 0x8255aadcu, 0x1497fe76u, 0x4c135467u, 0x93dc2576u, 0x0002826au};
+static const uint32_t ipv_ln_124_3[] = {0x4750c934u, 0xae6e3b40u, 0x67188832u, 0x4600573eu, 0xbb0cf85au, 0x00f8bc78u, 0xba9c9d51u, 0x000050c4u};
+static const uint32_t ipv_ld_124_3[] = {0xa6cdf3afu, 0x6f9d6ab2u, 0x1a219ee2u, 0x412ad56eu, 0x8a4bff3bu, 0x2609aa33u, 0x49ee12bbu, 0x00014135u};
+static const ipv_weight_t ipv_l_124[] = {{0u, 8u, 8u, ipv_ln_124_0, ipv_ld_124_0}, {1u, 8u, 8u, ipv_ln_124_1, ipv_ld_124_1}, {2u, 8u, 8u, ipv_ln_124_2, ipv_ld_124_2}, {3u, 8u, 8u, ipv_ln_124_3, ipv_ld_124_3}};
+static const uint32_t ipv_wn_125_0[] = {0xfc21cd1fu, 0x4fa74f36u, 0x2585ccdeu, 0xe749243au, 0x31e4c1b7u, 0xc3100fa6u, 0xbf0d2f88u, 0xc3f5040du, 0x09b7a78bu, 0xe602b118u, 0xa44619b8u, 0xdac6e24eu, 0x00036825u};
+static const uint32_t ipv_wd_125_0[] = {0x782dcfa5u, 0xffc7e0b1u, 0xf8c33ba4u, 0x7c934b83u, 0x6157b7efu, 0x7e7c740fu, 0x0cfdbb41u, 0x8949ded7u, 0x80892b7bu, 0xf6374879u, 0x8b3cb4a1u, 0x69e0d999u, 0x001eddc8u};
+static const uint32_t ipv_wn_125_1[] = {0xcabbb96eu, 0x749bfd29u, 0xfab8c4e8u, 0x77084bbeu, 0xc82bfddau, 0x6707a9d1u, 0xebb7f20fu, 0x88511538u, 0xfb07cac7u, 0xfd3939c2u, 0x01151decu};
+static const uint32_t ipv_wd_125_1[] = {0x9c398e1fu, 0xa4e135b6u, 0xcdd6a7a9u, 0x2140378fu, 0xc49390a4u, 0x86256977u, 0x2386be6du, 0x060b0524u, 0x7c0ac191u, 0x19a81ceeu, 0x01f108d7u};
+static const uint32_t ipv_wn_125_2[] = {0xfb09d3e8u, 0x2d5d9797u, 0x92b6ca63u, 0xc2a2f517u, 0xf2a56a37u, 0x0daca253u, 0xa390e3a9u, 0xd6c9922bu, 0x04e995d5u, 0xb1398f8fu, 0x8fdda588u, 0x4dfc0e27u, 0x001d24b6u};
+static const uint32_t ipv_wd_125_2[] = {0x68896eefu, 0xff57a214u, 0xea49b2eeu, 0x75b9e28bu, 0x240727ceu, 0x7b755c2eu, 0x26f931c4u, 0x9bdd9c85u, 0x819b8272u, 0xe2a5d96cu, 0xa1b61de5u, 0x3da28cccu, 0x005c9959u};
+static const uint32_t ipv_wn_125_3[] = {0xd1264b24u, 0x53f39c32u, 0x8df475e8u, 0xad2f8970u, 0xd256fe79u, 0x710a7fcdu, 0x86b91858u, 0x933e88e8u, 0xfa0ea35cu, 0x0e5eaf5eu, 0x0018ee6eu};
+static const uint32_t ipv_wd_125_3[] = {0x5c50d641u, 0xbfe77eefu, 0x228477a4u, 0x1022cc85u, 0x8c716c45u, 0xa42e397au, 0xda584f14u, 0xd26ad705u, 0x03d72035u, 0x41097ba6u, 0x059c3985u};
+static const ipv_weight_t ipv_w_125[] = {{0u, 13u, 13u, ipv_wn_125_0, ipv_wd_125_0}, {1u, 11u, 11u, ipv_wn_125_1, ipv_wd_125_1}, {2u, 13u, 13u, ipv_wn_125_2, ipv_wd_125_2}, {3u, 11u, 11u, ipv_wn_125_3, ipv_wd_125_3}};
+static const uint32_t ipv_ln_125_0[] = {0xe63aa457u, 0x071eaa0du, 0x7d1045a1u, 0xddea0d8au, 0x4db7f165u, 0xea6a2a54u, 0x374f79f3u};
+static const uint32_t ipv_ld_125_0[] = {0xd34cb050u, 0x227f3815u, 0xa793375bu, 0x0b694fd6u, 0x7dde6873u, 0x34552714u, 0x1976e1dbu, 0x00000002u};
+static const uint32_t ipv_ln_125_1[] = {0x2862758fu, 0xe5a10aeeu, 0xe032d337u, 0xcf592ae4u, 0x4f41a746u, 0x44765e59u, 0x688532c9u, 0x00000002u};
+static const uint32_t ipv_ld_125_1[] = {0xa69960a0u, 0x44fe702bu, 0x4f266eb6u, 0x16d29fadu, 0xfbbcd0e6u, 0x68aa4e28u, 0x32edc3b6u, 0x00000004u};
+static const uint32_t ipv_ln_125_2[] = {0xc8960d41u, 0x4fa2a190u, 0x8528e4cbu, 0xc737bcddu, 0x790340aeu, 0xa6ceeccfu, 0x3d386975u, 0x00000001u};
+static const uint32_t ipv_ld_125_2[] = {0xa69960a0u, 0x44fe702bu, 0x4f266eb6u, 0x16d29fadu, 0xfbbcd0e6u, 0x68aa4e28u, 0x32edc3b6u, 0x00000004u};
+static const uint32_t ipv_ln_125_3[] = {0x7495ca91u, 0x80beb7c8u, 0xf7d515b8u, 0x6236ce6au, 0xcc040312u, 0xd448572bu, 0x0f4899c7u};
+static const uint32_t ipv_ld_125_3[] = {0xd34cb050u, 0x227f3815u, 0xa793375bu, 0x0b694fd6u, 0x7dde6873u, 0x34552714u, 0x1976e1dbu, 0x00000002u};
+static const ipv_weight_t ipv_l_125[] = {{0u, 7u, 8u, ipv_ln_125_0, ipv_ld_125_0}, {1u, 8u, 8u, ipv_ln_125_1, ipv_ld_125_1}, {2u, 8u, 8u, ipv_ln_125_2, ipv_ld_125_2}, {3u, 7u, 8u, ipv_ln_125_3, ipv_ld_125_3}};
 static const ipv_query_t ipv_queries[] = {
-    {0u, {0, 0}, 0, 1u, ipv_w_0},
-    {0u, {0, 2}, 0, 2u, ipv_w_1},
-    {0u, {1, 0}, 0, 2u, ipv_w_2},
-    {0u, {-1, -1}, 1, 0u, 0},
-    {0u, {3, 5}, 1, 0u, 0},
-    {0u, {-1, -1}, 1, 0u, 0},
-    {0u, {5, 4}, 1, 0u, 0},
-    {0u, {2, 3}, 0, 4u, ipv_w_7},
-    {0u, {-1, 5}, 1, 0u, 0},
-    {1u, {0, 0}, 0, 1u, ipv_w_9},
-    {1u, {1, 1}, 0, 4u, ipv_w_10},
-    {1u, {1, 2}, 0, 3u, ipv_w_11},
-    {1u, {5, 1}, 1, 0u, 0},
-    {1u, {4, 4}, 0, 1u, ipv_w_13},
-    {1u, {3, 4}, 0, 2u, ipv_w_14},
-    {1u, {2, -1}, 1, 0u, 0},
-    {1u, {-1, -1}, 1, 0u, 0},
-    {1u, {0, 2}, 0, 2u, ipv_w_17},
-    {2u, {0, 0}, 0, 1u, ipv_w_18},
-    {2u, {4, 4}, 0, 1u, ipv_w_19},
-    {2u, {2, 3}, 0, 4u, ipv_w_20},
-    {2u, {2, 1}, 0, 4u, ipv_w_21},
-    {2u, {8, 7}, 0, 2u, ipv_w_22},
-    {2u, {5, 5}, 0, 4u, ipv_w_23},
-    {2u, {8, 4}, 0, 1u, ipv_w_24},
-    {2u, {0, 7}, 0, 2u, ipv_w_25},
-    {2u, {9, 0}, 1, 0u, 0},
-    {3u, {5, 0}, 0, 1u, ipv_w_27},
-    {3u, {4, -2}, 0, 8u, ipv_w_28},
-    {3u, {5, -4}, 1, 0u, 0},
-    {3u, {5, -6}, 1, 0u, 0},
-    {3u, {-6, -4}, 1, 0u, 0},
-    {3u, {0, -3}, 0, 8u, ipv_w_32},
-    {3u, {-1, -5}, 1, 0u, 0},
-    {3u, {-3, -2}, 0, 8u, ipv_w_34},
-    {3u, {-1, 0}, 0, 8u, ipv_w_35},
-    {4u, {5, 0}, 0, 1u, ipv_w_36},
-    {4u, {2, 0}, 0, 5u, ipv_w_37},
-    {4u, {1, -3}, 0, 4u, ipv_w_38},
-    {4u, {4, 1}, 0, 4u, ipv_w_39},
-    {4u, {-3, -6}, 1, 0u, 0},
-    {4u, {2, 5}, 1, 0u, 0},
-    {4u, {-5, -5}, 1, 0u, 0},
-    {4u, {-6, -3}, 1, 0u, 0},
-    {4u, {-3, 6}, 1, 0u, 0},
-    {5u, {0, 0}, 0, 1u, ipv_w_45},
-    {5u, {4, 3}, 0, 6u, ipv_w_46},
-    {5u, {0, 1}, 0, 2u, ipv_w_47},
-    {5u, {7, 1}, 0, 4u, ipv_w_48},
-    {5u, {-1, 7}, 1, 0u, 0},
-    {5u, {1, 1}, 0, 4u, ipv_w_50},
-    {5u, {7, -1}, 1, 0u, 0},
-    {5u, {-1, 5}, 1, 0u, 0},
-    {5u, {6, 7}, 1, 0u, 0},
-    {6u, {-9, -2}, 0, 1u, ipv_w_54},
-    {6u, {-3, -2}, 0, 4u, ipv_w_55},
-    {6u, {-7, 4}, 1, 0u, 0},
-    {6u, {-4, 1}, 0, 4u, ipv_w_57},
-    {6u, {-5, -2}, 0, 4u, ipv_w_58},
-    {6u, {-9, 8}, 1, 0u, 0},
-    {6u, {-10, 0}, 1, 0u, 0},
-    {6u, {-2, 4}, 1, 0u, 0},
-    {6u, {-4, 7}, 1, 0u, 0},
-    {7u, {2, -2}, 0, 1u, ipv_w_63},
-    {7u, {5, -6}, 0, 4u, ipv_w_64},
-    {7u, {8, 3}, 1, 0u, 0},
-    {7u, {9, -5}, 1, 0u, 0},
-    {7u, {2, 2}, 1, 0u, 0},
-    {7u, {2, 4}, 1, 0u, 0},
-    {7u, {3, 3}, 1, 0u, 0},
-    {7u, {9, 2}, 1, 0u, 0},
-    {7u, {-5, 3}, 1, 0u, 0},
-    {8u, {7, -8}, 0, 1u, ipv_w_72},
-    {8u, {7, -7}, 0, 3u, ipv_w_73},
-    {8u, {3, 3}, 1, 0u, 0},
-    {8u, {-1, -8}, 1, 0u, 0},
-    {8u, {8, 0}, 1, 0u, 0},
-    {8u, {1, 0}, 1, 0u, 0},
-    {8u, {2, -2}, 1, 0u, 0},
-    {8u, {8, -1}, 1, 0u, 0},
-    {8u, {7, 4}, 1, 0u, 0},
-    {9u, {4, -3}, 0, 1u, ipv_w_81},
-    {9u, {4, 2}, 0, 4u, ipv_w_82},
-    {9u, {9, -9}, 1, 0u, 0},
-    {9u, {9, 1}, 1, 0u, 0},
-    {9u, {-4, 5}, 0, 4u, ipv_w_85},
-    {9u, {-1, -6}, 1, 0u, 0},
-    {9u, {-10, 7}, 1, 0u, 0},
-    {9u, {-7, -9}, 1, 0u, 0},
-    {9u, {-9, -7}, 1, 0u, 0},
-    {10u, {8, 8}, 0, 1u, ipv_w_90},
-    {10u, {0, 0}, 0, 2u, ipv_w_91},
-    {10u, {-5, 3}, 1, 0u, 0},
-    {10u, {-7, 2}, 1, 0u, 0},
-    {10u, {-6, 6}, 1, 0u, 0},
-    {10u, {3, 6}, 1, 0u, 0},
-    {10u, {-3, 4}, 1, 0u, 0},
-    {10u, {-1, -1}, 0, 2u, ipv_w_97},
-    {10u, {-6, 6}, 1, 0u, 0},
-    {11u, {-7, 8}, 0, 1u, ipv_w_99},
-    {11u, {-5, 5}, 0, 4u, ipv_w_100},
-    {11u, {-6, 2}, 1, 0u, 0},
-    {11u, {6, -2}, 0, 5u, ipv_w_102},
-    {11u, {0, -5}, 1, 0u, 0},
-    {11u, {-5, 0}, 1, 0u, 0},
-    {11u, {9, -2}, 1, 0u, 0},
-    {11u, {10, 2}, 1, 0u, 0},
-    {11u, {-4, 6}, 0, 3u, ipv_w_107},
-    {12u, {91176596, 442588088}, 0, 1u, ipv_w_108},
-    {12u, {-434443627, 84400237}, 1, 0u, 0},
-    {12u, {-751319949, 1733043802}, 1, 0u, 0},
-    {12u, {-498652272, 1645965179}, 1, 0u, 0},
-    {12u, {1112022172, 1006681271}, 1, 0u, 0},
-    {12u, {-2074142, 1637305180}, 1, 0u, 0},
-    {12u, {938476103, 1795128202}, 1, 0u, 0},
-    {12u, {-73186049, 424304047}, 0, 3u, ipv_w_115},
-    {12u, {-621118524, 913466830}, 1, 0u, 0},
-    {13u, {476434774, 836336602}, 0, 1u, ipv_w_117},
-    {13u, {1240005331, 821802700}, 0, 4u, ipv_w_118},
-    {13u, {640739698, 634534795}, 0, 4u, ipv_w_119},
-    {13u, {976488856, 508616405}, 0, 4u, ipv_w_120},
-    {13u, {1899314058, -1101657391}, 0, 4u, ipv_w_121},
-    {13u, {545649873, -1482638062}, 1, 0u, 0},
-    {13u, {1055569656, 834088075}, 1, 0u, 0},
-    {13u, {1004582994, 512057041}, 0, 4u, ipv_w_124},
-    {13u, {1463785236, -1428726632}, 0, 4u, ipv_w_125},
+    {0u, {0, 0}, 0, 1u, ipv_w_0, ipv_l_0},
+    {0u, {0, 2}, 0, 2u, ipv_w_1, ipv_l_1},
+    {0u, {1, 0}, 0, 2u, ipv_w_2, ipv_l_2},
+    {0u, {-1, -1}, 1, 0u, 0, 0},
+    {0u, {3, 5}, 1, 0u, 0, 0},
+    {0u, {-1, -1}, 1, 0u, 0, 0},
+    {0u, {5, 4}, 1, 0u, 0, 0},
+    {0u, {2, 3}, 0, 4u, ipv_w_7, ipv_l_7},
+    {0u, {-1, 5}, 1, 0u, 0, 0},
+    {1u, {0, 0}, 0, 1u, ipv_w_9, ipv_l_9},
+    {1u, {1, 1}, 0, 4u, ipv_w_10, ipv_l_10},
+    {1u, {1, 2}, 0, 3u, ipv_w_11, ipv_l_11},
+    {1u, {5, 1}, 1, 0u, 0, 0},
+    {1u, {4, 4}, 0, 1u, ipv_w_13, ipv_l_13},
+    {1u, {3, 4}, 0, 2u, ipv_w_14, ipv_l_14},
+    {1u, {2, -1}, 1, 0u, 0, 0},
+    {1u, {-1, -1}, 1, 0u, 0, 0},
+    {1u, {0, 2}, 0, 2u, ipv_w_17, ipv_l_17},
+    {2u, {0, 0}, 0, 1u, ipv_w_18, ipv_l_18},
+    {2u, {4, 4}, 0, 1u, ipv_w_19, ipv_l_19},
+    {2u, {2, 3}, 0, 4u, ipv_w_20, ipv_l_20},
+    {2u, {2, 1}, 0, 4u, ipv_w_21, ipv_l_21},
+    {2u, {8, 7}, 0, 2u, ipv_w_22, ipv_l_22},
+    {2u, {5, 5}, 0, 4u, ipv_w_23, ipv_l_23},
+    {2u, {8, 4}, 0, 1u, ipv_w_24, ipv_l_24},
+    {2u, {0, 7}, 0, 2u, ipv_w_25, ipv_l_25},
+    {2u, {9, 0}, 1, 0u, 0, 0},
+    {3u, {5, 0}, 0, 1u, ipv_w_27, ipv_l_27},
+    {3u, {4, -2}, 0, 8u, ipv_w_28, ipv_l_28},
+    {3u, {5, -4}, 1, 0u, 0, 0},
+    {3u, {5, -6}, 1, 0u, 0, 0},
+    {3u, {-6, -4}, 1, 0u, 0, 0},
+    {3u, {0, -3}, 0, 8u, ipv_w_32, ipv_l_32},
+    {3u, {-1, -5}, 1, 0u, 0, 0},
+    {3u, {-3, -2}, 0, 8u, ipv_w_34, ipv_l_34},
+    {3u, {-1, 0}, 0, 8u, ipv_w_35, ipv_l_35},
+    {4u, {5, 0}, 0, 1u, ipv_w_36, ipv_l_36},
+    {4u, {2, 0}, 0, 5u, ipv_w_37, ipv_l_37},
+    {4u, {1, -3}, 0, 4u, ipv_w_38, ipv_l_38},
+    {4u, {4, 1}, 0, 4u, ipv_w_39, ipv_l_39},
+    {4u, {-3, -6}, 1, 0u, 0, 0},
+    {4u, {2, 5}, 1, 0u, 0, 0},
+    {4u, {-5, -5}, 1, 0u, 0, 0},
+    {4u, {-6, -3}, 1, 0u, 0, 0},
+    {4u, {-3, 6}, 1, 0u, 0, 0},
+    {5u, {0, 0}, 0, 1u, ipv_w_45, ipv_l_45},
+    {5u, {4, 3}, 0, 6u, ipv_w_46, ipv_l_46},
+    {5u, {0, 1}, 0, 2u, ipv_w_47, ipv_l_47},
+    {5u, {7, 1}, 0, 4u, ipv_w_48, ipv_l_48},
+    {5u, {-1, 7}, 1, 0u, 0, 0},
+    {5u, {1, 1}, 0, 4u, ipv_w_50, ipv_l_50},
+    {5u, {7, -1}, 1, 0u, 0, 0},
+    {5u, {-1, 5}, 1, 0u, 0, 0},
+    {5u, {6, 7}, 1, 0u, 0, 0},
+    {6u, {-9, -2}, 0, 1u, ipv_w_54, ipv_l_54},
+    {6u, {-3, -2}, 0, 4u, ipv_w_55, ipv_l_55},
+    {6u, {-7, 4}, 1, 0u, 0, 0},
+    {6u, {-4, 1}, 0, 4u, ipv_w_57, ipv_l_57},
+    {6u, {-5, -2}, 0, 4u, ipv_w_58, ipv_l_58},
+    {6u, {-9, 8}, 1, 0u, 0, 0},
+    {6u, {-10, 0}, 1, 0u, 0, 0},
+    {6u, {-2, 4}, 1, 0u, 0, 0},
+    {6u, {-4, 7}, 1, 0u, 0, 0},
+    {7u, {2, -2}, 0, 1u, ipv_w_63, ipv_l_63},
+    {7u, {5, -6}, 0, 4u, ipv_w_64, ipv_l_64},
+    {7u, {8, 3}, 1, 0u, 0, 0},
+    {7u, {9, -5}, 1, 0u, 0, 0},
+    {7u, {2, 2}, 1, 0u, 0, 0},
+    {7u, {2, 4}, 1, 0u, 0, 0},
+    {7u, {3, 3}, 1, 0u, 0, 0},
+    {7u, {9, 2}, 1, 0u, 0, 0},
+    {7u, {-5, 3}, 1, 0u, 0, 0},
+    {8u, {7, -8}, 0, 1u, ipv_w_72, ipv_l_72},
+    {8u, {7, -7}, 0, 3u, ipv_w_73, ipv_l_73},
+    {8u, {3, 3}, 1, 0u, 0, 0},
+    {8u, {-1, -8}, 1, 0u, 0, 0},
+    {8u, {8, 0}, 1, 0u, 0, 0},
+    {8u, {1, 0}, 1, 0u, 0, 0},
+    {8u, {2, -2}, 1, 0u, 0, 0},
+    {8u, {8, -1}, 1, 0u, 0, 0},
+    {8u, {7, 4}, 1, 0u, 0, 0},
+    {9u, {4, -3}, 0, 1u, ipv_w_81, ipv_l_81},
+    {9u, {4, 2}, 0, 4u, ipv_w_82, ipv_l_82},
+    {9u, {9, -9}, 1, 0u, 0, 0},
+    {9u, {9, 1}, 1, 0u, 0, 0},
+    {9u, {-4, 5}, 0, 4u, ipv_w_85, ipv_l_85},
+    {9u, {-1, -6}, 1, 0u, 0, 0},
+    {9u, {-10, 7}, 1, 0u, 0, 0},
+    {9u, {-7, -9}, 1, 0u, 0, 0},
+    {9u, {-9, -7}, 1, 0u, 0, 0},
+    {10u, {8, 8}, 0, 1u, ipv_w_90, ipv_l_90},
+    {10u, {0, 0}, 0, 2u, ipv_w_91, ipv_l_91},
+    {10u, {-5, 3}, 1, 0u, 0, 0},
+    {10u, {-7, 2}, 1, 0u, 0, 0},
+    {10u, {-6, 6}, 1, 0u, 0, 0},
+    {10u, {3, 6}, 1, 0u, 0, 0},
+    {10u, {-3, 4}, 1, 0u, 0, 0},
+    {10u, {-1, -1}, 0, 2u, ipv_w_97, ipv_l_97},
+    {10u, {-6, 6}, 1, 0u, 0, 0},
+    {11u, {-7, 8}, 0, 1u, ipv_w_99, ipv_l_99},
+    {11u, {-5, 5}, 0, 4u, ipv_w_100, ipv_l_100},
+    {11u, {-6, 2}, 1, 0u, 0, 0},
+    {11u, {6, -2}, 0, 5u, ipv_w_102, ipv_l_102},
+    {11u, {0, -5}, 1, 0u, 0, 0},
+    {11u, {-5, 0}, 1, 0u, 0, 0},
+    {11u, {9, -2}, 1, 0u, 0, 0},
+    {11u, {10, 2}, 1, 0u, 0, 0},
+    {11u, {-4, 6}, 0, 3u, ipv_w_107, ipv_l_107},
+    {12u, {91176596, 442588088}, 0, 1u, ipv_w_108, ipv_l_108},
+    {12u, {-434443627, 84400237}, 1, 0u, 0, 0},
+    {12u, {-751319949, 1733043802}, 1, 0u, 0, 0},
+    {12u, {-498652272, 1645965179}, 1, 0u, 0, 0},
+    {12u, {1112022172, 1006681271}, 1, 0u, 0, 0},
+    {12u, {-2074142, 1637305180}, 1, 0u, 0, 0},
+    {12u, {938476103, 1795128202}, 1, 0u, 0, 0},
+    {12u, {-73186049, 424304047}, 0, 3u, ipv_w_115, ipv_l_115},
+    {12u, {-621118524, 913466830}, 1, 0u, 0, 0},
+    {13u, {476434774, 836336602}, 0, 1u, ipv_w_117, ipv_l_117},
+    {13u, {1240005331, 821802700}, 0, 4u, ipv_w_118, ipv_l_118},
+    {13u, {640739698, 634534795}, 0, 4u, ipv_w_119, ipv_l_119},
+    {13u, {976488856, 508616405}, 0, 4u, ipv_w_120, ipv_l_120},
+    {13u, {1899314058, -1101657391}, 0, 4u, ipv_w_121, ipv_l_121},
+    {13u, {545649873, -1482638062}, 1, 0u, 0, 0},
+    {13u, {1055569656, 834088075}, 1, 0u, 0, 0},
+    {13u, {1004582994, 512057041}, 0, 4u, ipv_w_124, ipv_l_124},
+    {13u, {1463785236, -1428726632}, 0, 4u, ipv_w_125, ipv_l_125},
 };
 #endif
