@@ -139,6 +139,20 @@
  *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
  *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
+ * NATURAL-NEIGHBOUR INTERPOLATION
+ *   Sibson's coordinates of a point q (the areas its cell would take from
+ *   its natural neighbours' cells) and Laplace's (edge length over
+ *   distance), exact rationals over one denominator, and the interpolant
+ *   of int32 site values, exact and rounded once (halves away from zero):
+ *
+ *       static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(16)];
+ *       vor_interpolate(&d, values, q, VOR_NO_HINT, scratch, sizeof scratch, &v);
+ *       vor_sibson(&d, q, hint, scratch, sizeof scratch, &coordinates);
+ *
+ *   At a site its value, on a hull edge the linear interpolation of its
+ *   ends, outside the hull VOR_ERR_OUTSIDE; cocircular sites give the one
+ *   true answer.
+ *
  * COST
  *   No predicate allocates, recurses or loops over data. A degenerate input
  *   to an _sos predicate evaluates at most 5 (orient2d) or 27 (incircle)
