@@ -112,15 +112,15 @@ static bool cut_scratch(ip_space_t *sp, void *scratch, size_t bytes, uint32_t k)
     }
     size_t words = (size_t)number_words(k);
     unsigned char *base = (unsigned char *)scratch + skip;
+    size_t points_at = ((size_t)k + 4u) * words * 8u;
+    size_t out_at = points_at + ((size_t)k * 2u * 3u * 24u);
+    size_t ids_at = out_at + (((size_t)k + 1u) * words * 8u);
     sp->width = (words * 8u) / sizeof(vor__limb);
     sp->k = k;
     sp->numbers = (vor__limb *)(void *)base;
-    base += ((size_t)k + 4u) * words * 8u;
-    sp->points = (vor__limb *)(void *)base;
-    base += (size_t)k * 2u * 3u * 24u;
-    sp->out = (uint32_t *)(void *)base;
-    base += ((size_t)k + 1u) * words * 8u;
-    sp->ids = (uint32_t *)(void *)base;
+    sp->points = (vor__limb *)(void *)(base + points_at);
+    sp->out = (uint32_t *)(void *)(base + out_at);
+    sp->ids = (uint32_t *)(void *)(base + ids_at);
     sp->tags = sp->ids + k;
     sp->seq = sp->tags + (2u * (size_t)k);
     sp->start = sp->seq + (3u * (size_t)k);
@@ -275,9 +275,10 @@ static bool between(const vor_point_t *p, const vor_point_t *a, const vor_point_
  * narrows the edge through flat triangles to the two sites around q on
  * the hull line (q is no site). Each step drops a site: bounded by the
  * vertex count. */
-static void narrow_edge(const vor_t *d, vor_index_t slot, const vor_point_t *q, uint32_t edge[2])
+static void narrow_edge(const vor_t *d, vor_index_t behind, const vor_point_t *q, uint32_t edge[2])
 {
     const vor_point_t *s = d->sites;
+    vor_index_t slot = behind;
     for (uint32_t left = d->vertex_count; left > 0u; left--) {
         const vor__tri_t *t = &d->triangles[slot];
         vor_index_t a = (vor_index_t)edge[0];
@@ -575,7 +576,7 @@ static void laplace_weights(const vor_t *d, ip_space_t *sp, const vor_point_t *q
     vor__limb n[POINT_LIMBS];
     for (uint32_t i = 0; i < k; i++) {
         uint32_t next = ((i + 1u) == k) ? 0u : (i + 1u);
-        uint32_t before = (i == 0u) ? (k - 1u) : (i - 1u);
+        uint32_t before = ((i == 0u) ? k : i) - 1u;
         const vor_point_t *a = &s[sp->ids[i]];
         const vor_point_t *b = &s[sp->ids[next]];
         const vor_point_t *c = &s[sp->ids[before]];
