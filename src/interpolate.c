@@ -61,17 +61,19 @@
 #define CROSS_LIMBS VOR__LIMBS(224u)
 #define U64_LIMBS VOR__LIMBS(64u)
 
-/* 64-bit words of one number for k neighbours (the macro's unit). */
-static uint64_t number_words(uint64_t k)
+/* 64-bit words of one number for k neighbours (the macro's unit), for
+ * k <= VOR_MAX_SITES < 2^22: below 2^24. */
+static uint32_t number_words(uint32_t k)
 {
     return ((k * 132u) + 127u) / 64u;
 }
 
-/* VOR_SIBSON_SCRATCH_BYTES(k) without the 8 bytes of alignment, in
- * uint64_t so that no k overflows it (k < 2^21). */
-static uint64_t scratch_needed(uint64_t k)
+/* VOR_SIBSON_SCRATCH_BYTES(k) without the 8 bytes of alignment, in 64
+ * bits so that no k overflows it, with 32 x 32-bit products (a 64-bit
+ * multiply is a runtime call on Cortex-M0). */
+static uint64_t scratch_needed(uint32_t k)
 {
-    return (((k * 2u) + 5u) * 8u * number_words(k)) + (k * 172u) + 4u;
+    return vor__mul_u32((k * 2u) + 5u, 8u * number_words(k)) + vor__mul_u32(k, 172u) + 4u;
 }
 
 /* The caller's scratch, cut up for k neighbours. */
@@ -110,7 +112,7 @@ static bool cut_scratch(ip_space_t *sp, void *scratch, size_t bytes, uint32_t k)
     if ((scratch == NULL) || (scratch_needed(k) > usable)) {
         return false;
     }
-    size_t words = (size_t)number_words(k);
+    size_t words = number_words(k);
     unsigned char *base = (unsigned char *)scratch + skip;
     size_t points_at = ((size_t)k + 4u) * words * 8u;
     size_t out_at = points_at + ((size_t)k * 2u * 3u * 24u);
