@@ -163,7 +163,8 @@
  * FLASH
  *   A firmware linked with --gc-sections keeps only what it calls. The
  *   divide-and-conquer builder is its own entry point, vor_build_dc, so
- *   vor_build does not pull it in; the geometry (edges, cells, hull) is
+ *   vor_build does not pull it in; the geometry (edges, cells, hull) and
+ *   the interpolation (vor_sibson, vor_laplace, vor_interpolate) are
  *   linked only when called. vor_build_dc_forked runs it on two cores
  *   through a caller's fork/join hook (pthreads, or a dual-core
  *   microcontroller's second core): the library itself stays
