@@ -65,7 +65,7 @@
  * k <= VOR_MAX_SITES < 2^22: below 2^24. */
 static uint32_t number_words(uint32_t k)
 {
-    return ((k * 132u) + 127u) / 64u;
+    return ((k * 132u) + 127u) >> 6;
 }
 
 /* VOR_SIBSON_SCRATCH_BYTES(k) without the 8 bytes of alignment, in 64
@@ -117,7 +117,7 @@ static bool cut_scratch(ip_space_t *sp, void *scratch, size_t bytes, uint32_t k)
     size_t points_at = ((size_t)k + 4u) * words * 8u;
     size_t out_at = points_at + ((size_t)k * 2u * 3u * 24u);
     size_t ids_at = out_at + (((size_t)k + 1u) * words * 8u);
-    sp->width = (words * 8u) / sizeof(vor__limb);
+    sp->width = words * (8u / sizeof(vor__limb));
     sp->k = k;
     sp->numbers = (vor__limb *)(void *)base;
     sp->points = (vor__limb *)(void *)(base + points_at);
@@ -620,18 +620,21 @@ static void edge_weights(const vor_t *d, const ip_space_t *sp, const vor_point_t
     set_number(sp, 2, t);
 }
 
-/* 32-bit word w of a non-negative number. */
+/* 32-bit word w of a non-negative number (shifts, not divisions: a
+ * division is a runtime call on Cortex-M0 without optimisation). */
 static uint32_t word_of(const vor__limb *n, size_t w)
 {
-    size_t per = VOR__LIMB_WIDTH / 32u;
-    unsigned shift = (unsigned)((w % per) * 32u);
-    return (uint32_t)(n[w / per] >> shift);
+#if VOR_LIMB_BITS == 64
+    return (uint32_t)(n[w >> 1] >> ((w & 1u) * 32u));
+#else
+    return (uint32_t)n[w];
+#endif
 }
 
 /* The 32-bit words a non-negative number of `width` limbs fills (>= 1). */
 static uint32_t words_of(const vor__limb *n, size_t width)
 {
-    size_t w = (width * VOR__LIMB_WIDTH) / 32u;
+    size_t w = width * (VOR__LIMB_WIDTH / 32u);
     while ((w > 1u) && (word_of(n, w - 1u) == 0u)) {
         w--;
     }
