@@ -492,6 +492,10 @@ static void check_errors(void)
           "too small by one");
     CHECK(vor_interpolate(&d, values, q, VOR_NO_HINT, NULL, 0u, &v) == VOR_ERR_NOMEM && (v.neighbours == k),
           "interpolate: NOMEM with k");
+    vor_point_t edge = {4, 0}; /* on the hull edge from (0, 0) to (8, 0) */
+    CHECK(vor_sibson(&d, edge, VOR_NO_HINT, ip_scratch, VOR_SIBSON_SCRATCH_BYTES(2) - 9u, &s) == VOR_ERR_NOMEM &&
+              (s.count == 2u),
+          "hull edge: NOMEM with 2");
     for (unsigned offset = 0; offset < 8u; offset++) {
         CHECK(vor_sibson(&d, q, VOR_NO_HINT, ip_scratch + offset, VOR_SIBSON_SCRATCH_BYTES(k), &s) == VOR_OK &&
                   (s.count == k) && ip_invariants(&d, &s, q),
