@@ -139,6 +139,20 @@
  *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
  *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
+ * NATURAL-NEIGHBOUR INTERPOLATION
+ *   Sibson's coordinates of a point q (the areas its cell would take from
+ *   its natural neighbours' cells) and Laplace's (edge length over
+ *   distance), exact rationals over one denominator, and the interpolant
+ *   of int32 site values, exact and rounded once (halves away from zero):
+ *
+ *       static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(16)];
+ *       vor_interpolate(&d, values, q, VOR_NO_HINT, scratch, sizeof scratch, &v);
+ *       vor_sibson(&d, q, hint, scratch, sizeof scratch, &coordinates);
+ *
+ *   At a site its value, on a hull edge the linear interpolation of its
+ *   ends, outside the hull VOR_ERR_OUTSIDE; cocircular sites give the one
+ *   true answer.
+ *
  * COST
  *   No predicate allocates, recurses or loops over data. A degenerate input
  *   to an _sos predicate evaluates at most 5 (orient2d) or 27 (incircle)
@@ -149,7 +163,8 @@
  * FLASH
  *   A firmware linked with --gc-sections keeps only what it calls. The
  *   divide-and-conquer builder is its own entry point, vor_build_dc, so
- *   vor_build does not pull it in; the geometry (edges, cells, hull) is
+ *   vor_build does not pull it in; the geometry (edges, cells, hull) and
+ *   the interpolation (vor_sibson, vor_laplace, vor_interpolate) are
  *   linked only when called. vor_build_dc_forked runs it on two cores
  *   through a caller's fork/join hook (pthreads, or a dual-core
  *   microcontroller's second core): the library itself stays
@@ -315,7 +330,9 @@ enum vor_error {
     VOR_ERR_CONFIG = -9,    /* library and application were compiled with different
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
     VOR_ERR_STOPPED = -10,  /* vor_raster: the caller's flush asked to stop */
-    VOR_ERR_CONSTRAINED = -11 /* vor_remove, vor_move: the site ends a constrained edge */
+    VOR_ERR_CONSTRAINED = -11, /* vor_remove, vor_move: the site ends a constrained edge */
+    VOR_ERR_OUTSIDE = -12     /* vor_sibson, vor_interpolate: the point is outside the
+                                 convex hull of the sites */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -945,6 +962,114 @@ typedef struct vor_centroid {
  */
 int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
                       void *scratch, size_t scratch_bytes, vor_centroid_t *out);
+
+/* ================================================================== */
+/* Natural-neighbour interpolation (src/interpolate.c)                */
+/* ================================================================== */
+
+/* Bytes of scratch vor_sibson and vor_interpolate need for a point with
+ * up to k natural neighbours (a constant expression): k + 4 numbers of
+ * 132 k + 64 bits and k + 1 output numbers of the same width, the 2k - 2
+ * exact Voronoi vertices involved (3 x 192 bits each), 7k + 1 indices,
+ * and 8 bytes for alignment. A point has at most n - 1 natural
+ * neighbours in a diagram of n sites, typically about 6 (k = 6: 2.9 KB,
+ * k = 16: 13 KB). docs/design/interpolation.md derives the widths. */
+#define VOR_SIBSON_SCRATCH_BYTES(k)                                            \
+    (((((size_t)(k) * 2u) + 5u) * 8u * ((((size_t)(k) * 132u) + 127u) / 64u)) + \
+     ((size_t)(k) * 172u) + 12u)
+
+/* Exact natural-neighbour coordinates of a point q: the sites q's
+ * Voronoi cell would border if q were inserted, and for each its
+ * coordinate weight_i / denominator (Sibson: the area q's cell takes
+ * from the site's; Laplace: the length of the cell's edge facing the
+ * site over the site's distance, normalised). Every number is a
+ * non-negative integer of `limbs` 32-bit limbs, least significant first,
+ * in the caller's scratch (valid until the scratch is reused). The
+ * weights are positive and add up to the denominator exactly; with the
+ * sites p_i, sum weight_i p_i = denominator q exactly (linear precision).
+ * They are over one common denominator, not reduced. */
+typedef struct vor_coordinates {
+    uint32_t count;              /* natural neighbours (VOR_ERR_NOMEM: needed k) */
+    uint32_t limbs;              /* 32-bit limbs of each number below */
+    const uint32_t *sites;       /* [count] their ids, counterclockwise around q */
+    const uint32_t *weights;     /* [count * limbs]: weight i at weights + i * limbs */
+    const uint32_t *denominator; /* [limbs], > 0 */
+} vor_coordinates_t;
+
+/*
+ * The Sibson coordinates of q (any int32 point) with respect to the true
+ * Voronoi diagram of the distinct sites of d, exact. Cocircular sites
+ * (where the triangulation is not unique) give the one true answer: the
+ * areas are those of the true diagram, whatever the perturbation chose.
+ *   q strictly inside the convex hull: its natural neighbours, each with
+ *     the area its cell loses to q's (k >= 3 of them);
+ *   q a site: that site alone, weight 1 of 1;
+ *   q on the hull's boundary between two sites a and b (all sites
+ *     collinear: on the segment between two neighbouring sites): the
+ *     limit of the coordinates there, linear along the edge: a and b
+ *     with weights (b - q).(b - a) and (q - a).(b - a) over |b - a|^2.
+ * hint as for vor_nearest. Scratch: any alignment, contents undefined
+ * after the call, VOR_SIBSON_SCRATCH_BYTES(k) bytes for k neighbours.
+ * Cost: O(k) exact predicates to find the neighbours and O(k^3) limb
+ * products for the exact areas.
+ *   VOR_ERR_ARG      d or out NULL, scratch NULL with scratch_bytes > 0, a
+ *                    bad hint (as vor_nearest)
+ *   VOR_ERR_EMPTY    the diagram has no sites
+ *   VOR_ERR_OUTSIDE  q is outside the convex hull of the sites (with all
+ *                    sites collinear: not on their segment)
+ *   VOR_ERR_NOMEM    scratch_bytes < VOR_SIBSON_SCRATCH_BYTES(k): only
+ *                    out->count is written, with k
+ * On any other failure *out is unchanged.
+ */
+int vor_sibson(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
+               size_t scratch_bytes, vor_coordinates_t *out);
+
+/*
+ * Laplace's (non-Sibsonian) coordinates of q, exact: for each natural
+ * neighbour p_i, the length of the edge of q's cell facing it over
+ * |q - p_i| (a rational number: the edge is perpendicular to q - p_i),
+ * normalised. The same neighbours, special cases (site, hull edge,
+ * outside), invariants (positive, adding up to the denominator, linear
+ * precision), scratch and errors as vor_sibson, for O(k^2) limb products
+ * instead of O(k^3), and numbers half as wide: the cheaper sibling for a
+ * small microcontroller. The interpolant is continuous, but not smooth
+ * (C0) at the sites' circles, unlike Sibson's.
+ */
+int vor_laplace(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
+                size_t scratch_bytes, vor_coordinates_t *out);
+
+/* The Sibson interpolant of integer site values at a point: the exact
+ * value numerator / denominator (sign and magnitude, 32-bit limbs least
+ * significant first, in the caller's scratch) and the value rounded once,
+ * halves away from zero. It lies between the smallest and the largest
+ * value of the natural neighbours, so it always fits int32. */
+typedef struct vor_interpolation {
+    int32_t value;               /* the exact value rounded, halves away from zero */
+    int32_t sign;                /* of the exact value: -1, 0 or 1 */
+    uint32_t neighbours;         /* natural neighbours (VOR_ERR_NOMEM: needed k) */
+    uint32_t limbs;              /* 32-bit limbs of numerator and denominator */
+    const uint32_t *numerator;   /* [limbs], |numerator| */
+    const uint32_t *denominator; /* [limbs], > 0 */
+} vor_interpolation_t;
+
+/*
+ * sum_i values[site_i] lambda_i over q's Sibson coordinates (vor_sibson):
+ * at a site its value, on a hull edge the linear interpolation of the
+ * edge's ends, and a C1 surface elsewhere inside the hull. values is
+ * indexed by site id (a duplicate's entry is not read: its first
+ * occurrence is the site). Scratch and cost as vor_sibson.
+ *   VOR_ERR_ARG, VOR_ERR_EMPTY, VOR_ERR_OUTSIDE as vor_sibson; also
+ *                    values NULL
+ *   VOR_ERR_NOMEM    as vor_sibson: only out->neighbours is written
+ * On any other failure *out is unchanged.
+ */
+int vor_interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                    void *scratch, size_t scratch_bytes, vor_interpolation_t *out);
+
+/* vor_interpolate over Laplace's coordinates (vor_laplace): the same
+ * value at sites and along hull edges, errors and rounding. */
+int vor_interpolate_laplace(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
+                            void *scratch, size_t scratch_bytes, vor_interpolation_t *out);
 
 /* ================================================================== */
 /* Queries (read-only: safe from several threads on one diagram)      */

@@ -15,6 +15,7 @@ int main(void)
     test_group("true_output", test_true_output);
     test_group("api_safety", test_api_safety);
     test_group("centroid", test_centroid);
+    test_group("interpolate", test_interpolate);
     test_group("dynamic", test_dynamic);
     test_group("motion", test_motion);
     test_group("fork_join", test_fork_join);

@@ -129,5 +129,6 @@ void test_motion(void);
 void test_fork_join(void);
 void test_cdt(void);
 void test_power(void);
+void test_interpolate(void);
 
 #endif

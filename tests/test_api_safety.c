@@ -555,6 +555,49 @@ static void check_iterators(void)
             centroid.point.y != centroid_before.point.y);
     bad += !test_same_bytes(scratch, scratch_before, sizeof scratch);
     CHECK(bad == 0 && unchanged(), "cell centroid: %u bad arguments accepted or wrote", bad);
+
+    /* natural-neighbour coordinates: bad arguments, a point outside, too
+     * small a scratch write neither the output (but the count) nor the
+     * scratch */
+    static uint8_t natural_scratch[VOR_SIBSON_SCRATCH_BYTES(SAFE_SITES)];
+    static uint8_t natural_before[sizeof natural_scratch];
+    static int32_t values[SAFE_SITES];
+    fill(natural_scratch, sizeof natural_scratch, 0x99);
+    test_copy_bytes(natural_before, natural_scratch, sizeof natural_scratch);
+    vor_coordinates_t coordinates, coordinates_before;
+    vor_interpolation_t value, value_before;
+    fill(&coordinates, sizeof coordinates, 0x77);
+    fill(&value, sizeof value, 0x77);
+    test_copy_bytes(&coordinates_before, &coordinates, sizeof coordinates);
+    test_copy_bytes(&value_before, &value, sizeof value);
+    size_t nb = sizeof natural_scratch;
+    vor_point_t far = {INT32_MAX, INT32_MIN};
+    vor_point_t q = diagram.sites[0];
+    bad = 0;
+    for (int laplace = 0; laplace < 2; laplace++) {
+        int (*coords)(const vor_t *, vor_point_t, uint32_t, void *, size_t, vor_coordinates_t *) =
+            laplace ? vor_laplace : vor_sibson;
+        int (*interp)(const vor_t *, const int32_t *, vor_point_t, uint32_t, void *, size_t,
+                      vor_interpolation_t *) = laplace ? vor_interpolate_laplace : vor_interpolate;
+        bad += coords(NULL, q, VOR_NO_HINT, natural_scratch, nb, &coordinates) != VOR_ERR_ARG;
+        bad += coords(&diagram, q, VOR_NO_HINT, natural_scratch, nb, NULL) != VOR_ERR_ARG;
+        bad += coords(&diagram, q, VOR_NO_HINT, NULL, nb, &coordinates) != VOR_ERR_ARG;
+        bad += coords(&diagram, q, SAFE_SITES, natural_scratch, nb, &coordinates) != VOR_ERR_ARG;
+        bad += coords(&diagram, far, VOR_NO_HINT, natural_scratch, nb, &coordinates) != VOR_ERR_OUTSIDE;
+        bad += interp(NULL, values, q, VOR_NO_HINT, natural_scratch, nb, &value) != VOR_ERR_ARG;
+        bad += interp(&diagram, NULL, q, VOR_NO_HINT, natural_scratch, nb, &value) != VOR_ERR_ARG;
+        bad += interp(&diagram, values, q, VOR_NO_HINT, natural_scratch, nb, NULL) != VOR_ERR_ARG;
+        bad += interp(&diagram, values, q, VOR_NO_HINT, NULL, nb, &value) != VOR_ERR_ARG;
+        bad += interp(&diagram, values, q, VOR_NO_HINT - 1u, natural_scratch, nb, &value) != VOR_ERR_ARG;
+        bad += interp(&diagram, values, far, VOR_NO_HINT, natural_scratch, nb, &value) != VOR_ERR_OUTSIDE;
+    }
+    bad += !test_same_bytes(&coordinates, &coordinates_before, sizeof coordinates);
+    bad += !test_same_bytes(&value, &value_before, sizeof value);
+    bad += vor_sibson(&diagram, q, VOR_NO_HINT, natural_scratch, 8, &coordinates) != VOR_ERR_NOMEM;
+    bad += (coordinates.count != 1u || coordinates.limbs != coordinates_before.limbs ||
+            coordinates.sites != coordinates_before.sites);
+    bad += !test_same_bytes(natural_scratch, natural_before, sizeof natural_scratch);
+    CHECK(bad == 0 && unchanged(), "natural neighbours: %u bad arguments accepted or wrote", bad);
 }
 
 static int never_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)

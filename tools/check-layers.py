@@ -51,7 +51,7 @@ LAYERS = [
         "bucket_grid.h", "bucket_grid.c", "walk.h", "cdt.h"]),
     ("parts", [
         "incremental.c", "divide_conquer.c", "dynamic.c", "motion.c",
-        "queries.c", "geometry.c", "cdt.c", "power.c"]),
+        "queries.c", "geometry.c", "interpolate.c", "cdt.c", "power.c"]),
 ]
 # A file's own header, where it is not the file's name with .h.
 OWN_HEADER = {"raster_euclid.c": "raster.h", "raster_metrics.c": "raster.h"}

@@ -8,6 +8,8 @@
 
 static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
 static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
+static uint8_t natural_scratch[VOR_SIBSON_SCRATCH_BYTES(8)];
+static int32_t site_values[SIZE_SITES];
 static uint32_t ids[SIZE_SITES];
 static uint8_t motion[VOR_MOTION_BYTES(SIZE_SITES)] __attribute__((aligned(VOR_MOTION_ALIGN)));
 static uint8_t walls[VOR_CDT_BYTES(SIZE_SITES, 64, 16, 64)] __attribute__((aligned(VOR_CDT_ALIGN)));
@@ -66,6 +68,15 @@ int main(void)
     acc |= vor_cell(&d, site, &box, cell, VOR_CELL_MAX_VERTICES(SIZE_SITES), &count);
     vor_centroid_t centroid;
     acc |= vor_cell_centroid(&d, site, &box, centroid_scratch, sizeof centroid_scratch, &centroid);
+    vor_coordinates_t natural;
+    vor_interpolation_t value;
+    vor_point_t q = {size_x(5), size_y(5)};
+    acc |= vor_sibson(&d, q, VOR_NO_HINT, natural_scratch, sizeof natural_scratch, &natural);
+    acc |= vor_laplace(&d, q, VOR_NO_HINT, natural_scratch, sizeof natural_scratch, &natural);
+    acc |= vor_interpolate(&d, site_values, q, VOR_NO_HINT, natural_scratch, sizeof natural_scratch, &value);
+    acc |= vor_interpolate_laplace(&d, site_values, q, VOR_NO_HINT, natural_scratch,
+                                   sizeof natural_scratch, &value);
+    acc += value.value;
     vor_vertex_t centre;
     acc |= vor_circumcentre(raster_points[0], raster_points[1], raster_points[2], &centre);
     acc |= vor_voronoi_vertex(&d, 0, 1, 2, &centre);

@@ -302,6 +302,102 @@ def brute_cell(sites, i, box):
     return merged[start:] + merged[:start]
 
 
+def brute_sibson(sites, q):
+    """Sibson coordinates {site index: Fraction} of q among distinct
+    sites by exact clipping: q's cell with q added (a huge box cut by the
+    bisectors of q with every site), the part of it nearer each site than
+    every other site, over the whole; at a site that site; on the hull's
+    boundary the limit there, linear between the sites around q on the
+    hull line; None outside the hull."""
+    from fractions import Fraction as F
+    if q in sites:
+        return {sites.index(q): F(1)}
+    for A in sites:
+        for B in sites:
+            if A == B or any(orient(A, B, c) < 0 for c in sites):
+                continue
+            side = orient(A, B, q)
+            if side < 0:
+                return None
+            if side == 0:
+                d = (B[0] - A[0], B[1] - A[1])
+                t = lambda p: (p[0] - A[0]) * d[0] + (p[1] - A[1]) * d[1]
+                line = [p for p in sites if orient(A, B, p) == 0]
+                lo = [p for p in line if t(p) < t(q)]
+                hi = [p for p in line if t(p) > t(q)]
+                if not lo or not hi:
+                    return None
+                a, b = max(lo, key=t), min(hi, key=t)
+                e = (b[0] - a[0], b[1] - a[1])
+                la = F((b[0] - q[0]) * e[0] + (b[1] - q[1]) * e[1], e[0] ** 2 + e[1] ** 2)
+                return {sites.index(a): la, sites.index(b): 1 - la}
+    if len(sites) < 3:
+        return None  # collinear: answered by the hull-line test above
+    big = F(2) ** 130
+    cell = [(-big, -big), (big, -big), (big, big), (-big, big)]
+    for s in sites:
+        cell = clip_half_plane(cell, 2 * (s[0] - q[0]), 2 * (s[1] - q[1]),
+                               s[0] ** 2 + s[1] ** 2 - q[0] ** 2 - q[1] ** 2)
+    total = polygon_area2(cell)
+    out = {}
+    for i, p in enumerate(sites):
+        piece = cell
+        for o in sites:
+            if piece and o != p:
+                piece = clip_half_plane(piece, 2 * (o[0] - p[0]), 2 * (o[1] - p[1]),
+                                        o[0] ** 2 + o[1] ** 2 - p[0] ** 2 - p[1] ** 2)
+        if piece and polygon_area2(piece) != 0:
+            out[i] = polygon_area2(piece) / total
+    return out
+
+
+def interpolate_cases(rng, tmp):
+    """vor interpolate against brute_sibson: the exact value in lowest
+    terms and its rounding, halves away from zero; outside lines."""
+    import os
+    configs = [
+        [(0, 0, 0), (4, 0, 40), (4, 4, 80), (0, 4, 40)],
+        [(x, y, rng.randint(-100, 100)) for y in range(0, 9, 4) for x in range(0, 9, 4)],
+        [(5, 0, 1), (3, 4, 2), (0, 5, 3), (-4, 3, 4), (-5, 0, 5), (-3, -4, 6), (0, -5, 7), (4, -3, 8),
+         (0, 0, -9)],
+        [(0, 0, 0), (3, 0, 7), (6, 0, -7), (9, 0, 100), (4, 5, 5), (0, 6, 6), (9, 6, 9)],
+        [(0, 0, 1), (2, 1, 2), (4, 2, 3)],  # collinear
+        [(0, 0, 5), (10, 0, 6), (0, 10, 7), (0, 0, 99)],  # a duplicate keeps its first value
+    ]
+    for _ in range(8):
+        r = rng.choice([8, 1000, 2**31 - 1])
+        configs.append([(rng.randint(-r, r), rng.randint(-r, r), rng.randint(-2**31, 2**31 - 1))
+                        for _ in range(rng.randint(3, 10))])
+    for k, config in enumerate(configs):
+        first = {}
+        for x, y, v in config:
+            first.setdefault((x, y), v)
+        sites = list(first)
+        xs = [p[0] for p in sites]
+        ys = [p[1] for p in sites]
+        queries = [sites[0], ((sites[0][0] + sites[-1][0]) // 2, (sites[0][1] + sites[-1][1]) // 2)]
+        for _ in range(12):
+            queries.append((rng.randint(min(xs) - 1, max(xs) + 1), rng.randint(min(ys) - 1, max(ys) + 1)))
+        site_path = os.path.join(tmp, f"interp{k}.txt")
+        with open(site_path, "w") as f:
+            f.write("".join(f"{x} {y} {v}\n" for x, y, v in config))
+        r = run(["interpolate", site_path, "-"], "".join(f"{x} {y}\n" for x, y in queries))
+        lines = r.stdout.splitlines()
+        check(r.returncode == 0 and len(lines) == len(queries), f"interpolate {k}: {r.returncode} {r.stderr!r}")
+        for q, line in zip(queries, lines):
+            ref = brute_sibson(sites, q)
+            if ref is None:
+                check(line == f"q {q[0]} {q[1]} outside", f"interpolate {k} {q}: {line!r}, expected outside")
+                continue
+            value = sum(lam * first[sites[i]] for i, lam in ref.items())
+            want = f"q {q[0]} {q[1]} {round_half_away(value)} {value.numerator} {value.denominator}"
+            check(line == want, f"interpolate {k} {q}: {line!r}, expected {want!r}")
+    r = run(["interpolate", "-"], "0 0 1\n")
+    check(r.returncode == 2 and "missing QUERIES" in r.stderr, f"interpolate usage: {r.stderr!r}")
+    r = run(["interpolate", "-", os.path.join(tmp, "interp0.txt")], "0 0\n")
+    check(r.returncode == 2 and r.stderr.startswith("error: <stdin>:1: "), f"interpolate bad site: {r.stderr!r}")
+
+
 def round_half_up(v):
     import math
     from fractions import Fraction as F
@@ -1990,6 +2086,7 @@ def main():
         cdt_cases(rng, tmp)
         power_cases(tmp)
         power_draw_cases(tmp)
+        interpolate_cases(rng, tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

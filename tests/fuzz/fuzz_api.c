@@ -485,6 +485,150 @@ static void op_insert(fuzz_reader_t *r, model_t *m, vor_point_t *previous, int n
     insert_checked(m, p, near, hint);
 }
 
+/* ------------------------------------------------------------------ */
+/* Natural-neighbour coordinates (vor_sibson, vor_laplace, vor_interpolate) */
+
+static __int128 orient128(vor_point_t a, vor_point_t b, vor_point_t c)
+{
+    return (__int128)((int64_t)b.x - a.x) * ((int64_t)c.y - a.y) -
+           (__int128)((int64_t)b.y - a.y) * ((int64_t)c.x - a.x);
+}
+
+/* q in the closed convex hull of the distinct sites, by brute force. */
+static int brute_in_hull(const model_t *m, vor_point_t q)
+{
+    uint32_t s[MOST_SITES], n = 0;
+    for (uint32_t i = 0; i < m->count; i++)
+        if (is_site(m, i))
+            s[n++] = i;
+    if (n == 0)
+        return 0;
+    uint32_t far = 0; /* a site off the line of s[0] and s[1], if any */
+    while (far < n && (n < 2 || orient128(m->point[s[0]], m->point[s[1]], m->point[s[far]]) == 0))
+        far++;
+    if (far == n) { /* collinear (or one site): on the segment */
+        vor_point_t lo = m->point[s[0]], hi = lo;
+        for (uint32_t i = 0; i < n; i++) {
+            vor_point_t p = m->point[s[i]];
+            if (p.x < lo.x || (p.x == lo.x && p.y < lo.y)) lo = p;
+            if (p.x > hi.x || (p.x == hi.x && p.y > hi.y)) hi = p;
+        }
+        return orient128(lo, hi, q) == 0 &&
+               (q.x > lo.x || (q.x == lo.x && q.y >= lo.y)) &&
+               (q.x < hi.x || (q.x == hi.x && q.y <= hi.y));
+    }
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = 0; j < n; j++) {
+            vor_point_t a = m->point[s[i]], b = m->point[s[j]];
+            if (i == j || orient128(a, b, q) >= 0)
+                continue;
+            uint32_t k = 0;
+            while (k < n && orient128(a, b, m->point[s[k]]) >= 0)
+                k++;
+            if (k == n)
+                return 0; /* a supporting line with q strictly outside */
+        }
+    return 1;
+}
+
+/* acc += w * v over `words` 32-bit words (two's complement), v signed
+ * below 2^62 in magnitude, w non-negative of wn words. */
+static void add_times(uint32_t *acc, size_t words, const uint32_t *w, size_t wn, int64_t v)
+{
+    uint64_t mag = v < 0 ? (uint64_t)0 - (uint64_t)v : (uint64_t)v;
+    uint32_t t[4 * MOST_SITES + 16];
+    size_t tn = wn + 3;
+    memset(t, 0, sizeof t);
+    for (size_t h = 0; h < 2; h++) {
+        uint32_t part = (uint32_t)(mag >> (32 * h));
+        uint64_t carry = 0;
+        for (size_t i = 0; i + h < tn; i++) {
+            uint64_t x = (uint64_t)(i < wn ? w[i] : 0u) * part + t[i + h] + carry;
+            t[i + h] = (uint32_t)x;
+            carry = x >> 32;
+        }
+    }
+    if (v < 0) { /* negate t over `words` */
+        uint64_t carry = 1;
+        for (size_t i = 0; i < words; i++) {
+            uint64_t x = (uint64_t)(uint32_t)~(i < tn ? t[i] : 0u) + carry;
+            t[i] = (uint32_t)x;
+            carry = x >> 32;
+        }
+        tn = words;
+    }
+    uint64_t carry = 0;
+    for (size_t i = 0; i < words; i++) {
+        uint64_t x = (uint64_t)acc[i] + (i < tn ? t[i] : 0u) + carry;
+        acc[i] = (uint32_t)x;
+        carry = x >> 32;
+    }
+}
+
+static int all_zero(const uint32_t *a, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (a[i] != 0u)
+            return 0;
+    return 1;
+}
+
+/* The coordinates of q (Sibson's or Laplace's) after a nearest query:
+ * the diagram unchanged; the documented error for a bad hint, no sites,
+ * a point outside the brute-force hull; inside, positive weights adding
+ * up to the denominator and linear precision, exactly; a scratch one
+ * byte short of the documented size refused with the count alone. */
+static void check_natural(model_t *m, vor_point_t q, uint32_t hint, uint32_t sites, int laplace)
+{
+    static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(MOST_SITES)];
+    vor_coordinates_t out, before;
+    memset(&out, 0xa5, sizeof out);
+    before = out;
+    snapshot(m);
+    int result = (laplace ? vor_laplace : vor_sibson)(&m->d, q, hint, scratch, sizeof scratch, &out);
+    FUZZ_REQUIRE(unchanged(m), "sibson changed the diagram");
+    if (!hint_valid(m, hint) || sites == 0) {
+        /* as vor_nearest: a bad hint on an empty diagram may be either */
+        FUZZ_REQUIRE((hint_valid(m, hint) ? result == VOR_ERR_EMPTY
+                      : sites ? result == VOR_ERR_ARG
+                              : (result == VOR_ERR_ARG || result == VOR_ERR_EMPTY)) &&
+                         memcmp(&out, &before, sizeof out) == 0,
+                     "sibson: bad hint or empty accepted, or wrote");
+        return;
+    }
+    if (!brute_in_hull(m, q)) {
+        FUZZ_REQUIRE(result == VOR_ERR_OUTSIDE && memcmp(&out, &before, sizeof out) == 0,
+                     "sibson: a point outside the hull accepted, or wrote");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK && out.count >= 1 && out.count < MOST_SITES && out.limbs >= 1 &&
+                     out.limbs < 4 * MOST_SITES + 8,
+                 "sibson: a point in the hull refused");
+    size_t words = out.limbs + 4;
+    uint32_t sum[4 * MOST_SITES + 16], x[4 * MOST_SITES + 16], y[4 * MOST_SITES + 16];
+    memset(sum, 0, sizeof sum);
+    memset(x, 0, sizeof x);
+    memset(y, 0, sizeof y);
+    for (uint32_t i = 0; i < out.count; i++) {
+        const uint32_t *w = out.weights + (size_t)i * out.limbs;
+        FUZZ_REQUIRE(is_site(m, out.sites[i]) && !all_zero(w, out.limbs), "sibson: a bad neighbour");
+        vor_point_t p = m->point[out.sites[i]];
+        add_times(sum, words, w, out.limbs, 1);
+        add_times(x, words, w, out.limbs, (int64_t)p.x - q.x);
+        add_times(y, words, w, out.limbs, (int64_t)p.y - q.y);
+    }
+    add_times(sum, words, out.denominator, out.limbs, -1);
+    FUZZ_REQUIRE(all_zero(sum, words), "sibson: the weights do not add up to the denominator");
+    FUZZ_REQUIRE(all_zero(x, words) && all_zero(y, words), "sibson: no linear precision");
+    uint32_t k = out.count;
+    memset(&out, 0xa5, sizeof out);
+    result = (laplace ? vor_laplace : vor_sibson)(&m->d, q, hint, scratch,
+                                                  VOR_SIBSON_SCRATCH_BYTES(k) - 9u, &out);
+    before.count = k;
+    FUZZ_REQUIRE(result == VOR_ERR_NOMEM && memcmp(&out, &before, sizeof out) == 0,
+                 "sibson: a short scratch accepted, or more than the count written");
+}
+
 static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
 {
     vor_point_t q = fuzz_point(r, previous);
@@ -492,6 +636,7 @@ static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t order[MOST_SITES];
     uint32_t n = brute_order(m, q.x, q.y, order);
     uint32_t id = 0xdeadbeefu;
+    check_natural(m, q, hint, n, (q.x & 1) != 0);
     snapshot(m);
     int result = vor_nearest(&m->d, q, hint, &id);
     FUZZ_REQUIRE(unchanged(m), "nearest changed the diagram");

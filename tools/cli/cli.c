@@ -62,6 +62,7 @@ const char *cli_error_text(int err)
     case VOR_ERR_CONFIG: return "VOR_ERR_CONFIG: library and tool were compiled with different vor_config.h";
     case VOR_ERR_STOPPED: return "VOR_ERR_STOPPED: the raster's flush asked to stop";
     case VOR_ERR_CONSTRAINED: return "VOR_ERR_CONSTRAINED: a constrained edge ends at the site";
+    case VOR_ERR_OUTSIDE: return "VOR_ERR_OUTSIDE: the point is outside the convex hull of the sites";
     default: return "unknown error code";
     }
 }
