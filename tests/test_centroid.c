@@ -772,6 +772,9 @@ static void test_power_errors(void)
     CHECK(vor_power_cell(&pd, 0, &box, poly, 2, &count) == VOR_ERR_BUFFER && count == 4 &&
               poly[0].x == 77,
           "power cell: a small buffer (count %u)", count);
+    count = 99;
+    CHECK(vor_power_cell(&pd, 0, &box, NULL, 0, &count) == VOR_ERR_BUFFER && count == 4,
+          "power cell: no buffer, the count only (count %u)", count);
     CHECK(vor_power_cell(&pd, 3, &box, poly, 8, &count) == VOR_OK && count == 0,
           "power cell: hidden site (count %u)", count);
     CHECK(vor_power_cell_centroid(NULL, 0, &box, scratch, sizeof scratch, &out) == VOR_ERR_ARG &&
@@ -787,6 +790,10 @@ static void test_power_errors(void)
     CHECK(vor_power_cell_centroid(&pd, 0, &box, scratch, 8, &out) == VOR_ERR_BUFFER &&
               out.vertices == 4 && out.area == 7,
           "power centroid: a small scratch (%u vertices)", out.vertices);
+    out.vertices = 8;
+    CHECK(vor_power_cell_centroid(&pd, 0, &box, NULL, 0, &out) == VOR_ERR_BUFFER &&
+              out.vertices == 4 && out.area == 7,
+          "power centroid: no scratch (%u vertices)", out.vertices);
     CHECK(vor_power_cell_centroid(&pd, 3, &box, scratch, sizeof scratch, &out) == VOR_OK &&
               out.area == 0 && out.vertices == 0 && out.point.x == 1 && out.point.y == 1,
           "power centroid: hidden site");

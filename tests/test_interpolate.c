@@ -488,6 +488,9 @@ static void check_errors(void)
     CHECK(vor_sibson(&d, q, VOR_NO_HINT, ip_scratch, 0u, &s) == VOR_ERR_NOMEM && (s.count >= 3u),
           "no scratch: NOMEM with k");
     uint32_t k = s.count;
+    s.count = 0;
+    CHECK(vor_laplace(&d, q, VOR_NO_HINT, NULL, 0u, &s) == VOR_ERR_NOMEM && (s.count == k),
+          "no scratch at all (NULL): NOMEM with k");
     CHECK(vor_sibson(&d, q, VOR_NO_HINT, ip_scratch, VOR_SIBSON_SCRATCH_BYTES(k) - 9u, &s) == VOR_ERR_NOMEM,
           "too small by one");
     CHECK(vor_interpolate(&d, values, q, VOR_NO_HINT, NULL, 0u, &v) == VOR_ERR_NOMEM && (v.neighbours == k),
