@@ -141,13 +141,15 @@ static void bad_calls(vor_power_t *pd)
     (void)vor_power_nearest(pd, any_point(), any_u32(), &site); /* empty */
 }
 
-/* The nearest site to any point with no hint and from any id, and to
- * each site's point from each id in turn (concrete below ids). */
+/* The nearest site to each site's point and to one point off them,
+ * from each id in turn (concrete below ids), no hint and any id. (Any
+ * point: the walk's decisions multiply EVA's states past its time.) */
 static void nearest_all(const vor_power_t *pd, uint32_t ids)
 {
     uint32_t site;
-    (void)vor_power_nearest(pd, any_point(), VOR_NO_HINT, &site);
-    (void)vor_power_nearest(pd, any_point(), any_u32(), &site);
+    vor_point_t off = {7, 2};
+    (void)vor_power_nearest(pd, off, VOR_NO_HINT, &site);
+    (void)vor_power_nearest(pd, off, any_u32(), &site);
     /*@ loop unroll MAX; */
     for (uint32_t i = 0; i < ids; i++) {
         (void)vor_power_nearest(pd, points[i % N], i, &site);
