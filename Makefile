@@ -52,10 +52,14 @@
 PORT ?= host
 TARGETS := cortex-m0 cortex-m3 cortex-m4f riscv32
 
-# SANITIZE=1 builds the host tests with AddressSanitizer and UBSan.
+# SANITIZE=1 builds the host tests with AddressSanitizer and UBSan, and
+# fills every local with a pattern before its first write, so that a read of
+# an unwritten local gives garbage rather than what an earlier call left in
+# that stack slot (which can be the right value by luck).
 ifeq ($(SANITIZE),1)
 B := build/$(PORT)-sanitize
-SAN_FLAGS := -fsanitize=address,undefined,bounds-strict -fno-sanitize-recover=all -fno-omit-frame-pointer
+SAN_FLAGS := -fsanitize=address,undefined,bounds-strict -fno-sanitize-recover=all -fno-omit-frame-pointer \
+             -ftrivial-auto-var-init=pattern
 else
 B := build/$(PORT)
 SAN_FLAGS :=

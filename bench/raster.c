@@ -26,7 +26,8 @@
  * Sites of the other metrics: weights mult 1..4, add 0..s/4, compound
  * w1 1..4 and w2 0..s/8 (s: the mean site spacing); the form (2, 1, 3);
  * p = 3; Hausdorff sets of 3 points, segments and polygons (3 to 5
- * vertices, convex or not) within s/2 of their random centre.
+ * vertices, convex or not) within s/2 of their random centre; power
+ * weights 0..s^2/4 (radii up to s/2, some sites hidden).
  */
 #include "test.h"
 #include "vor_raster.h"
@@ -45,6 +46,7 @@
 
 static vor_point_t points[MAX_POINTS];
 static int32_t mult_weights[MAX_SITES], add_weights[MAX_SITES];
+static int64_t power_weights[MAX_SITES];
 static uint32_t offsets[MAX_SITES + 1u];
 static uint16_t palette[MAX_SITES];
 static uint16_t band[BAND_ROWS * MAX_WIDTH];
@@ -118,7 +120,8 @@ static void print_cost(const char *label, uint64_t spent, uint64_t pixels, int h
 
 static const char *const metric_names[] = {"euclid", "l1",       "linf",      "lp3",
                                            "ellip",  "mult",     "add",       "comp",
-                                           "farthest", "hausdorff", "segment", "polygon"};
+                                           "farthest", "hausdorff", "segment", "polygon",
+                                           "polyline", "power"};
 
 /* The sites of one case: n sites of the metric over a w x h frame (in
  * millimetres: over the demo's 100 m floor). */
@@ -145,6 +148,9 @@ static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_
         if (metric == VOR_METRIC_COMPOUND) {
             add_weights[k] = test_rng_range(&rng, 0, spacing / 8);
         }
+        if (metric == VOR_METRIC_POWER) {
+            power_weights[k] = test_rng_range(&rng, 0, spacing * spacing / 4);
+        }
         offsets[k] = at;
         uint32_t size = metric == VOR_METRIC_HAUSDORFF   ? 3u
                         : metric == VOR_METRIC_SEGMENT ? 2u
@@ -163,6 +169,7 @@ static vor_raster_sites_t make_sites(enum vor_metric metric, uint32_t w, uint32_
     sites.count = n;
     sites.mult_weights = mult_weights;
     sites.add_weights = add_weights;
+    sites.power_weights = power_weights;
     sites.offsets = offsets;
     sites.lp_exponent = 3;
     sites.form_a = 2;
@@ -217,7 +224,11 @@ int main(void)
     vor_port_init();
     static const uint32_t sizes[] = {16u, 256u, MAX_SITES};
     bool ok = true;
-    for (int metric = VOR_METRIC_EUCLID; metric <= VOR_METRIC_POLYGON; metric++) {
+    /* every metric but the polylines (examples/contours has their use) */
+    for (int metric = VOR_METRIC_EUCLID; metric <= VOR_METRIC_POWER; metric++) {
+        if (metric == VOR_METRIC_POLYLINE) {
+            continue;
+        }
         for (unsigned i = 0; i < 3u; i++) {
 #ifndef BENCH_HOST_FRAMES
             if (metric != VOR_METRIC_EUCLID && sizes[i] > 256u) {

@@ -25,6 +25,14 @@
  *     vor_power_hidden_iter_t h;
  *     vor_power_hidden_begin(&h, &pd);
  *     while (vor_power_hidden_next(&h, &id)) { ... }
+ *     // the power cell of id in a box, and its centroid (Lloyd)
+ *     vor_box_t box = {0, 0, 1000, 1000};
+ *     vor_point_t poly[VOR_CELL_MAX_VERTICES(500)];
+ *     uint32_t m;
+ *     vor_power_cell(&pd, id, &box, poly, VOR_CELL_MAX_VERTICES(500), &m);
+ *     static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(500))];
+ *     vor_centroid_t c;
+ *     vor_power_cell_centroid(&pd, id, &box, scratch, sizeof scratch, &c);
  *     vor_power_move(&pd, id, (vor_point_t){12, 20}, 400, NULL); // same id
  *     vor_power_nearest(&pd, q, VOR_NO_HINT, &id); // least |q-p|^2 - w
  *     vor_power_remove(&pd, id);                   // id freed for reuse
@@ -208,6 +216,45 @@ int vor_power_hidden_next(vor_power_hidden_iter_t *it, uint32_t *site);
  * vor_triangles_next (vor.h): counterclockwise, of nonzero area.
  *   VOR_ERR_ARG  it or pd NULL (the iterator then yields nothing) */
 int vor_power_triangles_begin(vor_triangle_iter_t *it, const vor_power_t *pd);
+
+/*
+ * The power cell of `site` clipped to `box`, as vor_cell (vor.h) gives a
+ * Voronoi cell: its vertices counterclockwise from the lowest (smallest
+ * y, then smallest x) in vertices[0 .. *count), each computed exactly and
+ * rounded once to the nearest integer point (halves toward +infinity),
+ * exact coincidences written once; *count = 0 when the cell meets the box
+ * in less than an area, for a box of zero width or height, and for a
+ * hidden site (its cell is empty). A site's power cell need not contain
+ * the site. VOR_CELL_MAX_VERTICES(n) vertices always suffice. Every
+ * int32 coordinate and int64 weight: the vertices are exact rationals
+ * of up to 99-bit numerators over 65-bit denominators.
+ * Cost: O(neighbours of the site).
+ *   VOR_ERR_ARG     pd, box or count NULL; vertices NULL with capacity >
+ *                   0; box->x0 > box->x1 or box->y0 > box->y1; site not
+ *                   an id handed out, or a duplicate's
+ *   VOR_ERR_BUFFER  more than `capacity` vertices: *count = the number
+ *                   needed, nothing written to vertices
+ */
+int vor_power_cell(const vor_power_t *pd, uint32_t site, const vor_box_t *box,
+                   vor_point_t *vertices, uint32_t capacity, uint32_t *count);
+
+/*
+ * The area and centroid of the power cell of `site` clipped to `box`, as
+ * vor_cell_centroid (vor.h) gives them for a Voronoi cell: exact, in the
+ * caller's scratch (VOR_CENTROID_SCRATCH_BYTES(k) for k vertices, any
+ * alignment), each rounded once: for capacity-constrained Lloyd
+ * relaxation, move the site to out->point. A cell with no area in the
+ * box, and a hidden site's, give area 0, vertices 0 and point = the point
+ * of the box nearest the site.
+ * Cost: O(neighbours + k^2) limb products for a cell of k vertices.
+ *   VOR_ERR_ARG     pd, box or out NULL; scratch NULL with scratch_bytes
+ *                   > 0; box->x0 > box->x1 or box->y0 > box->y1; site not
+ *                   an id handed out, or a duplicate's
+ *   VOR_ERR_BUFFER  the scratch cannot hold the sums of the cell's k
+ *                   vertices: only out->vertices is written, with k
+ */
+int vor_power_cell_centroid(const vor_power_t *pd, uint32_t site, const vor_box_t *box,
+                            void *scratch, size_t scratch_bytes, vor_centroid_t *out);
 
 /*
  * Checks the regular triangulation's invariants (vor_validate's, with

@@ -49,7 +49,8 @@
  *                                the label), rounded down (floor),
  *                                saturated at UINT32_MAX; ADD and
  *                                COMPOUND: int32_t (two's complement),
- *                                saturated at INT32_MAX (see DISTANCE
+ *                                saturated at INT32_MAX; POWER: int32_t,
+ *                                saturated at both ends (see DISTANCE
  *                                VALUES)
  *   Any kind can also count each site's pixels (areas[count], optional).
  *
@@ -68,10 +69,12 @@
  *   SEGMENT, POLYGON    the floor of the distance to the segment, or the
  *                       polygon's boundary (0 inside or on it)
  *   POLYLINE            floor(distance to the polyline / w)
+ *   POWER               D - w itself (an integer, no rounding), int32,
+ *                       clamped to [INT32_MIN, INT32_MAX]
  *   Saturation: unsigned values from 2^32 on read UINT32_MAX (only L1, Lp,
  *   elliptic forms and far Euclidean-type distances reach it); ADD and
  *   COMPOUND values above INT32_MAX read INT32_MAX (they are always above
- *   -2^31, since w2 < 2^31). The value costs a few integer roots per
+ *   -2^31, since w2 < 2^31); POWER values clamp at both ends. The value costs a few integer roots per
  *   pixel (docs/design/raster-metrics.md, "Distance output").
  *
  * SPEED
@@ -90,11 +93,11 @@
  *   sites->metric also takes L1, L-infinity, Lp (p = 1..8), elliptic
  *   (a dx^2 + 2b dx dy + c dy^2), multiplicative, additive and compound
  *   weights, the farthest-point diagram, Hausdorff point sets, segments,
- *   filled polygons and (weighted) polylines (vor_raster_sites_t says
- *   which fields each uses).
- *   Each is compared exactly, over all int32 coordinates and weights: no
- *   valid input is out of budget. VOR_RASTER_FAST culls sites per tile of
- *   16 x 16 pixels with exact bounds of each site's distance over the
+ *   filled polygons, (weighted) polylines and power diagrams (int64
+ *   weights; vor_raster_sites_t says which fields each uses).
+ *   Each is compared exactly, over all int32 coordinates and weights
+ *   (power weights: all of int64): no valid input is out of budget.
+ *   VOR_RASTER_FAST culls sites per tile of 16 x 16 pixels with exact bounds of each site's distance over the
  *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
  *   VOR_RASTER_DISTANCE works with every metric (DISTANCE VALUES).
  *
@@ -133,8 +136,8 @@ typedef struct vor_raster_frame {
 
 /* The distance a pixel is assigned by (Teramoto, section 2.3 and chapter
  * 5). Every metric is decided exactly over the whole int32 range of
- * coordinates and weights; the comparison widths are in docs/design/raster.md
- * and docs/design/raster-metrics.md. */
+ * coordinates and weights (POWER: int64 weights); the comparison widths
+ * are in docs/design/raster.md and docs/design/raster-metrics.md. */
 enum vor_metric {
     VOR_METRIC_EUCLID = 0,    /* point sites, Euclidean distance */
     VOR_METRIC_L1 = 1,        /* point sites, |dx| + |dy| */
@@ -148,14 +151,15 @@ enum vor_metric {
     VOR_METRIC_HAUSDORFF = 9, /* point sets, distance to the set's farthest point */
     VOR_METRIC_SEGMENT = 10,  /* line segments, Euclidean distance to the segment */
     VOR_METRIC_POLYGON = 11,  /* filled polygons, 0 inside, else to the boundary */
-    VOR_METRIC_POLYLINE = 12  /* open polylines, distance to the nearest point / w */
+    VOR_METRIC_POLYLINE = 12, /* open polylines, distance to the nearest point / w */
+    VOR_METRIC_POWER = 13     /* point sites, |q - s|^2 - w, w = power_weights[k] */
 };
 
 /* The sites of a frame. Fields a metric does not use are ignored, so a
  * zeroed struct with metric, points and count set is a Euclidean frame.
  *
  *   point sites (EUCLID, L1, LINF, LP, ELLIPTIC, MULT, ADD, COMPOUND,
- *   FARTHEST): site k is points[k].
+ *   FARTHEST, POWER): site k is points[k].
  *   SEGMENT: site k is the segment points[2k] - points[2k + 1] (equal
  *   ends: a point).
  *   HAUSDORFF, POLYGON, POLYLINE: site k is points[offsets[k]] ..
@@ -181,6 +185,7 @@ typedef struct vor_raster_sites {
     int32_t form_a;
     int32_t form_b;
     int32_t form_c;
+    const int64_t *power_weights;   /* POWER: [count], any int64 */
 } vor_raster_sites_t;
 
 enum vor_raster_kind {
@@ -245,7 +250,9 @@ typedef struct vor_raster_options {
  *   VOR_ERR_ARG    a NULL pointer (options apart), a zero size or step, a pixel centre
  *                  outside int32, an unknown metric, kind or method, a
  *                  missing palette, LABEL8 with > 256 or LABEL16 with
- *                  > 65,536 sites
+ *                  > 65,536 sites, a metric's field out of its range or
+ *                  a weight array it uses NULL (POWER: power_weights;
+ *                  docs/api.md lists them)
  *   VOR_ERR_EMPTY  sites->count == 0
  *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes, or
  *                  work_bytes < VOR_RASTER_WORK_BYTES(count, width)

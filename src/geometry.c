@@ -2,7 +2,9 @@
 /*
  * geometry.c - the Voronoi diagram's geometry, read from the Delaunay mesh:
  * vertices (circumcentres), edges, the convex hull and cells clipped to a
- * box. Read-only, like queries.c.
+ * box; and the power diagram's cells, read from the regular triangulation
+ * (vor_power.h) by the same code with weighted bisectors. Read-only, like
+ * queries.c.
  *
  * The geometry is that of the true Voronoi diagram of the distinct sites,
  * while the mesh is the Delaunay triangulation under the symbolic
@@ -21,15 +23,19 @@
  * coefficients: a line is a x + b y = c, its half-plane a x + b y <= c.
  *   bisector of s and n (e = n - s):  a = e.x, b = e.y, c = |e|^2
  *       |a|, |b| <= 2^32 - 1 (differences of int32), 0 <= c < 2^65
+ *   power bisector, weights ws, wn:   c = |e|^2 + ws - wn, |c| < 2^66
+ *       (|q - s|^2 - ws <= |q - n|^2 - wn, doubled: e.q' <= c)
  *   box side, e.g. x >= x0:           a = -1, b = 0, c = -2 (x0 - s.x)
  *       |c| < 2^33
  * Two lines meet at (x / w, y / w) with w = a1 b2 - a2 b1 (|w| < 2^65),
- * x = c1 b2 - c2 b1 and y = a1 c2 - a2 c1 (|x|, |y| < 2 2^65 2^32 = 2^98).
+ * x = c1 b2 - c2 b1 and y = a1 c2 - a2 c1 (|x|, |y| < 2 2^66 2^32 = 2^99).
  * A point is inside a third line's half-plane when a x + b y - c w <= 0
- * (w > 0): |a x|, |b y|, |c w| < 2^130, the sum < 2^132. Every value
- * therefore fits in 160-bit two's complement (GEO_LIMBS), and each
+ * (w > 0): |a x|, |b y| < 2^131, |c w| < 2^131, the sum < 2^133. Every
+ * value therefore fits in 160-bit two's complement (GEO_LIMBS), and each
  * decision is the exact sign of a 3x3 determinant of line coefficients.
  */
+#include "vor_power.h"
+
 #include "bucket_grid.h"
 #include "mesh.h"
 #include "multiword.h"
@@ -41,13 +47,16 @@
 #define U64_LIMBS VOR__LIMBS(64u)
 
 /* A line a x + b y = c in a site's doubled frame, with an integer point
- * (px, py) on it for the test of a parallel line. */
+ * (px, py) on it for the test of a parallel line; a power bisector may
+ * have none (foot: the test takes the foot of the perpendicular from the
+ * origin instead). */
 typedef struct geo_line {
     int64_t a;
     int64_t b;
     vor__limb c[GEO_LIMBS];
     int64_t px;
     int64_t py;
+    bool foot;
 } geo_line_t;
 
 /* A point (x / w, y / w), w > 0, in the same frame. */
@@ -91,9 +100,28 @@ static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
     l->b = ey;
     l->px = ex; /* the midpoint of s and n, doubled: e */
     l->py = ey;
+    l->foot = false;
     vor__mw_from_u64(l->c, GEO_LIMBS, vor__mul_u32(mx, mx));
     vor__mw_from_u64(t, GEO_LIMBS, vor__mul_u32(my, my));
     vor__mw_add(l->c, t, GEO_LIMBS); /* < 2^65 */
+}
+
+/* The power bisector of s and n, weights ws and wn: the half-plane of
+ * points whose power distance to s is at most that to n. Equal weights
+ * give the bisector; others move it along e by (ws - wn) / 2|e|, so it
+ * may hold no integer point. */
+static void power_bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n, int64_t ws,
+                           int64_t wn)
+{
+    bisector(l, s, n);
+    if (ws != wn) {
+        vor__limb t[GEO_LIMBS];
+        vor__mw_from_i64(t, GEO_LIMBS, ws);
+        vor__mw_add(l->c, t, GEO_LIMBS);
+        vor__mw_from_i64(t, GEO_LIMBS, wn);
+        vor__mw_sub(l->c, t, GEO_LIMBS); /* |c| < 2^65 + 2^64 */
+        l->foot = true;
+    }
 }
 
 /* u c for u in {-1, 0, 1}, by selection: a 64-bit multiply is a runtime
@@ -136,6 +164,7 @@ static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, 
     vor__mw_from_i64(l->c, GEO_LIMBS, c); /* |c| < 2^33 */
     l->px = unit_times(l->a, c); /* unit normal: (a c, b c) is on the line */
     l->py = unit_times(l->b, c);
+    l->foot = false;
 }
 
 /* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
@@ -185,11 +214,22 @@ static int side_of(const geo_line_t *l, const geo_point_t *p)
     return vor__mw_sign(sum, GEO_LIMBS);
 }
 
-/* side_of for the integer point of line `on` (|px|, |py| < 2^34). */
+/* side_of for a point of line `on`: its integer point (|px|, |py| <
+ * 2^34), or for a power bisector the foot of the perpendicular from the
+ * origin, (a c, b c) / (a^2 + b^2) (|a c|, |b c| < 2^98; w < 2^65). */
 static int side_of_line(const geo_line_t *l, const geo_line_t *on)
 {
     vor__limb sum[GEO_LIMBS];
     vor__limb t[GEO_LIMBS];
+    if (on->foot) {
+        geo_point_t p;
+        mul_i64(p.x, on->c, on->a);
+        mul_i64(p.y, on->c, on->b);
+        mul_i64_i64(p.w, on->a, on->a);
+        mul_i64_i64(t, on->b, on->b);
+        vor__mw_add(p.w, t, GEO_LIMBS);
+        return side_of(l, &p);
+    }
     mul_i64_i64(sum, on->px, l->a);
     mul_i64_i64(t, on->py, l->b);
     vor__mw_add(sum, t, GEO_LIMBS);
@@ -263,7 +303,7 @@ static bool add_saturated(int32_t origin, int64_t q, int32_t *out)
 }
 
 /* origin + floor(v / (2 w) + 1/2): the rounded coordinate of v / w in a
- * site's doubled frame, |v| < 2^98, 0 < w < 2^65. Returns false, with the
+ * site's doubled frame, |v| < 2^99, 0 < w < 2^65. Returns false, with the
  * result saturated, when it is outside int32: if it fits in int32 after
  * adding origin, the quotient's magnitude is below 2^33, so 33 steps
  * decide it and a larger one is out of range. */
@@ -272,13 +312,13 @@ static bool round_coordinate(const vor__limb *v, const vor__limb *w, int32_t ori
 {
     vor__limb rest[GEO_LIMBS];
     vor__limb step[GEO_LIMBS];
-    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^99 */
+    /* floor(v / 2w + 1/2) = floor((v + w) / 2w); |v + w| < 2^100 */
     for (size_t i = 0; i < GEO_LIMBS; i++) {
         rest[i] = v[i];
         step[i] = w[i];
     }
     vor__mw_add(rest, w, GEO_LIMBS);
-    vor__mw_shl1(step, GEO_LIMBS); /* 2w 2^33 < 2^99 */
+    vor__mw_shl1(step, GEO_LIMBS); /* 2w 2^33 < 2^100 */
     return add_saturated(origin, floor_quotient(rest, step, GEO_LIMBS, 33u), out);
 }
 
@@ -351,8 +391,8 @@ int vor_voronoi_vertex(const vor_t *d, uint32_t a, uint32_t b, uint32_t c, vor_v
  *   - both ends finite: they coincide exactly when p, q, r, l are
  *     cocircular (a zero-length edge of the perturbed mesh).
  */
-static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, uint32_t l,
-                      bool *has_start, bool *has_end)
+static bool true_edge(const vor_point_t *s, const int64_t *weights, uint32_t p, uint32_t q,
+                      uint32_t r, uint32_t l, bool *has_start, bool *has_end)
 {
     *has_start = false;
     *has_end = false;
@@ -378,8 +418,17 @@ static bool true_edge(const vor_point_t *s, uint32_t p, uint32_t q, uint32_t r, 
             /* no other case */
         }
     }
-    if (*has_start && *has_end && vor__incircle_sign(&s[p], &s[q], &s[l], &s[r]) == 0) {
-        return false;
+    if (*has_start && *has_end) {
+        int tie;
+        if (weights == NULL) {
+            tie = vor__incircle_sign(&s[p], &s[q], &s[l], &s[r]);
+        } else {
+            const int64_t w[4] = {weights[p], weights[q], weights[l], weights[r]};
+            tie = vor__power_exact(&s[p], &s[q], &s[l], &s[r], w, NULL);
+        }
+        if (tie == 0) {
+            return false;
+        }
     }
     return true;
 }
@@ -493,7 +542,7 @@ int vor_edges_next(vor_edge_iter_t *it, vor_edge_t *edge)
             }
             bool has_start;
             bool has_end;
-            if (!true_edge(d->sites, p, q, r, l, &has_start, &has_end)) {
+            if (!true_edge(d->sites, NULL, p, q, r, l, &has_start, &has_end)) {
                 continue;
             }
             fill_edge(d, edge, p, q, r, l, has_start, has_end);
@@ -661,6 +710,7 @@ int vor_hull_next(vor_hull_iter_t *it, uint32_t *site)
 
 typedef struct cell {
     const vor_t *d;
+    const int64_t *weights; /* a power diagram's, else NULL */
     uint32_t site;
     const vor_point_t *s; /* the site's point: the frame's origin */
     const vor_box_t *box;
@@ -672,12 +722,22 @@ typedef struct cell {
     bool side_empty[4];
 } cell_t;
 
+/* The half-plane of the cell's site against neighbour n. */
+static void cell_bisector(const cell_t *c, uint32_t n, geo_line_t *l)
+{
+    if (c->weights == NULL) {
+        bisector(l, c->s, &c->d->sites[n]);
+    } else {
+        power_bisector(l, c->s, &c->d->sites[n], c->weights[c->site], c->weights[n]);
+    }
+}
+
 static void make_line(const cell_t *c, uint32_t name, geo_line_t *l)
 {
     if (name >= BOX_LINE) {
         box_side(l, c->box, c->s, name - BOX_LINE);
     } else {
-        bisector(l, c->s, &c->d->sites[name]);
+        cell_bisector(c, name, l);
     }
 }
 
@@ -801,7 +861,7 @@ VOR__NOINLINE static void clip_side(cell_t *c, unsigned k)
         for (uint32_t step = 0; step <= d->vertex_count; step++) {
             fan_triangle(c, slot, &x, &y, &next);
             if (y != VOR__INFINITE) {
-                bisector(&line, c->s, &d->sites[y]);
+                cell_bisector(c, y, &line);
                 int g = direction(&side, &line);
                 if (g == 0) {
                     if (side_of_line(&line, &side) > 0) {
@@ -945,7 +1005,7 @@ VOR__NOINLINE static void emit_edge(emitter_t *e, uint32_t n, uint32_t r, uint32
     uint32_t lo_name = NO_LINE;
     uint32_t hi_name = NO_LINE;
     uint32_t bounds[6] = {r, l, BOX_LINE, BOX_LINE + 1u, BOX_LINE + 2u, BOX_LINE + 3u};
-    bisector(&edge, c->s, &c->d->sites[n]);
+    cell_bisector(c, n, &edge);
     for (unsigned k = 0; k < 6u; k++) {
         if (bounds[k] == NO_LINE) {
             continue;
@@ -1016,7 +1076,7 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
                 }
                 bool has_start;
                 bool has_end;
-                if (true_edge(d->sites, c->site, y, x, z, &has_start, &has_end)) {
+                if (true_edge(d->sites, c->weights, c->site, y, x, z, &has_start, &has_end)) {
                     emit_edge(&e, y, has_start ? x : NO_LINE, has_end ? z : NO_LINE);
                     add_held_vertex(sum);
                 }
@@ -1038,9 +1098,11 @@ static uint32_t trace(const cell_t *c, vor_point_t *out, centroid_sum_t *sum)
     return (e.count >= 3u) ? e.count : 0u;
 }
 
-static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t *box)
+static void begin_cell(cell_t *c, const vor_t *d, const int64_t *weights, uint32_t site,
+                       const vor_box_t *box)
 {
     c->d = d;
+    c->weights = weights;
     c->site = site;
     c->s = &d->sites[site];
     c->box = box;
@@ -1054,19 +1116,24 @@ static void begin_cell(cell_t *c, const vor_t *d, uint32_t site, const vor_box_t
     }
 }
 
-int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
-             uint32_t capacity, uint32_t *count)
+/* The arguments every cell call checks the same way. */
+static bool bad_box(const vor_box_t *box)
 {
-    if ((d == NULL) || (box == NULL) || (count == NULL) || ((vertices == NULL) && (capacity > 0u)) ||
-        (box->x0 > box->x1) || (box->y0 > box->y1) || !vor__site_in_mesh(d, site)) {
-        return VOR_ERR_ARG;
-    }
+    return (box == NULL) || (box->x0 > box->x1) || (box->y0 > box->y1);
+}
+
+/* vor_cell of a site of the mesh (weights: a power diagram's, or NULL),
+ * the arguments checked. */
+static int cell_vertices(const vor_t *d, const int64_t *weights, uint32_t site,
+                         const vor_box_t *box, vor_point_t *vertices, uint32_t capacity,
+                         uint32_t *count)
+{
     if ((box->x0 == box->x1) || (box->y0 == box->y1)) {
         *count = 0;
         return VOR_OK;
     }
     cell_t c;
-    begin_cell(&c, d, site, box);
+    begin_cell(&c, d, weights, site, box);
     /* at most one vertex per neighbour and per box side: write at once
      * when that fits, else count first */
     if (capacity < (c.degree + 4u)) {
@@ -1080,6 +1147,33 @@ int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *v
     return VOR_OK;
 }
 
+int vor_cell(const vor_t *d, uint32_t site, const vor_box_t *box, vor_point_t *vertices,
+             uint32_t capacity, uint32_t *count)
+{
+    if ((d == NULL) || bad_box(box) || (count == NULL) || ((vertices == NULL) && (capacity > 0u)) ||
+        !vor__site_in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    return cell_vertices(d, NULL, site, box, vertices, capacity, count);
+}
+
+int vor_power_cell(const vor_power_t *pd, uint32_t site, const vor_box_t *box,
+                   vor_point_t *vertices, uint32_t capacity, uint32_t *count)
+{
+    if ((pd == NULL) || bad_box(box) || (count == NULL) || ((vertices == NULL) && (capacity > 0u))) {
+        return VOR_ERR_ARG;
+    }
+    int hidden = vor_power_hidden(pd, site);
+    if (hidden < 0) {
+        return hidden;
+    }
+    if (hidden != 0) { /* an empty cell */
+        *count = 0;
+        return VOR_OK;
+    }
+    return cell_vertices(&pd->mesh, pd->weights, site, box, vertices, capacity, count);
+}
+
 int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
 {
     if (it == NULL) {
@@ -1091,7 +1185,7 @@ int vor_cells_begin(vor_cell_iter_t *it, const vor_t *d, const vor_box_t *box)
     it->box.y0 = 0;
     it->box.x1 = 0;
     it->box.y1 = 0;
-    if ((d == NULL) || (box == NULL) || (box->x0 > box->x1) || (box->y0 > box->y1)) {
+    if ((d == NULL) || bad_box(box)) {
         it->d = NULL; /* closed */
         it->error = VOR_ERR_ARG;
         return VOR_ERR_ARG;
@@ -1143,13 +1237,13 @@ int vor_cells_error(const vor_cell_iter_t *it)
 
 /*
  * The cell's exact vertices v_i = (x_i, y_i) / w_i in the site's doubled
- * frame (0 < w_i < 2^65, |x_i|, |y_i| < 2^98), with v_k = v_0, give by the
- * shoelace formula
+ * frame (0 < w_i < 2^65, |x_i|, |y_i| < 2^99, power cells included), with
+ * v_k = v_0, give by the shoelace formula
  *   twice the area  A = sum c_i / (w_i w_{i+1}),
  *   the moments     M = sum (v_i + v_{i+1}) c_i / (w_i w_{i+1}),
  * c_i = x_i y_{i+1} - x_{i+1} y_i, and the centroid M / 3A. Each term is
- * a fraction T_i / (w_i w_{i+1})^2: for A, T = c w_i w_{i+1} (|c| < 2^197,
- * so |T| < 2^327); for M.x, T = c (x_i w_{i+1} + x_{i+1} w_i) (< 2^361);
+ * a fraction T_i / (w_i w_{i+1})^2: for A, T = c w_i w_{i+1} (|c| < 2^199,
+ * so |T| < 2^329); for M.x, T = c (x_i w_{i+1} + x_{i+1} w_i) (< 2^364);
  * M.y alike. TERM_LIMBS (384 bits) holds them.
  *
  * The sums are kept over the common denominator Q_k = prod_{m=0..k} w_m^2
@@ -1232,7 +1326,7 @@ static void widen_sums(centroid_sum_t *sum, size_t width)
  * limbs), at most FACTOR_LIMBS each, through their magnitudes: the
  * toolkit's product is exact for operands narrower than the result only
  * when they are non-negative. */
-#define FACTOR_LIMBS VOR__LIMBS(224u) /* |c| < 2^197, the widest factor */
+#define FACTOR_LIMBS VOR__LIMBS(224u) /* |c| < 2^199, the widest factor */
 static void term_product(vor__limb *r, const vor__limb *a, size_t na, const vor__limb *b,
                          size_t nb)
 {
@@ -1326,7 +1420,7 @@ VOR__NOINLINE static void add_edge(centroid_sum_t *sum, const geo_point_t *p,
     width = ((widest + 1u) < width) ? (widest + 1u) : width;
     widen_sums(sum, width);
 
-    /* t and u below 2^165, the cross product below 2^197 */
+    /* t and u below 2^165, the cross product below 2^199 */
     term_product(u, p->w, GEO_LIMBS, q->w, GEO_LIMBS);
     term_product(term, cross, FACTOR_LIMBS, u, FACTOR_LIMBS);
     accumulate(sum, sum->area, term, square, square_limbs, before_limbs);
@@ -1457,13 +1551,13 @@ static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
     return result;
 }
 
-int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void *scratch,
-                      size_t scratch_bytes, vor_centroid_t *out)
+/* vor_cell_centroid of a site of the mesh (weights: a power diagram's,
+ * or NULL), the arguments checked; hidden: a power diagram's hidden site,
+ * whose cell is empty. */
+static int cell_centroid(const vor_t *d, const int64_t *weights, uint32_t site, bool hidden,
+                         const vor_box_t *box, void *scratch, size_t scratch_bytes,
+                         vor_centroid_t *out)
 {
-    if ((d == NULL) || (box == NULL) || (out == NULL) || ((scratch == NULL) && (scratch_bytes > 0u)) ||
-        (box->x0 > box->x1) || (box->y0 > box->y1) || !vor__site_in_mesh(d, site)) {
-        return VOR_ERR_ARG;
-    }
     const vor_point_t *s = &d->sites[site];
     vor_centroid_t result;
     /* no area: the point of the box nearest the site */
@@ -1471,12 +1565,12 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     result.point.y = clamp(s->y, box->y0, box->y1);
     result.area = 0;
     result.vertices = 0;
-    if ((box->x0 == box->x1) || (box->y0 == box->y1)) {
+    if (hidden || (box->x0 == box->x1) || (box->y0 == box->y1)) {
         write_centroid(out, &result);
         return VOR_OK;
     }
     cell_t c;
-    begin_cell(&c, d, site, box);
+    begin_cell(&c, d, weights, site, box);
     /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
     size_t usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u;
@@ -1538,4 +1632,29 @@ int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void 
     result.area = fits ? area : UINT64_MAX;
     write_centroid(out, &result);
     return VOR_OK;
+}
+
+int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box, void *scratch,
+                      size_t scratch_bytes, vor_centroid_t *out)
+{
+    if ((d == NULL) || bad_box(box) || (out == NULL) || ((scratch == NULL) && (scratch_bytes > 0u)) ||
+        !vor__site_in_mesh(d, site)) {
+        return VOR_ERR_ARG;
+    }
+    return cell_centroid(d, NULL, site, false, box, scratch, scratch_bytes, out);
+}
+
+int vor_power_cell_centroid(const vor_power_t *pd, uint32_t site, const vor_box_t *box,
+                            void *scratch, size_t scratch_bytes, vor_centroid_t *out)
+{
+    if ((pd == NULL) || bad_box(box) || (out == NULL) ||
+        ((scratch == NULL) && (scratch_bytes > 0u))) {
+        return VOR_ERR_ARG;
+    }
+    int hidden = vor_power_hidden(pd, site);
+    if (hidden < 0) {
+        return hidden;
+    }
+    return cell_centroid(&pd->mesh, pd->weights, site, hidden != 0, box, scratch, scratch_bytes,
+                         out);
 }

@@ -3,9 +3,9 @@
  * raster_metrics.c - the raster's family of other metrics, all but
  * Euclidean point sites (raster_euclid.c): L1, L-infinity, Lp, elliptic,
  * weighted (multiplicative, additive, compound), farthest-point, Hausdorff
- * point sets, segments, filled polygons and multiplicatively weighted
- * polylines (Teramoto: section 2.3 defines the generalised diagrams,
- * chapter 5 the distances). Each pixel takes the site of smallest
+ * point sets, segments, filled polygons, multiplicatively weighted
+ * polylines and power diagrams (Teramoto: section 2.3 defines the
+ * generalised diagrams, chapter 5 the distances). Each pixel takes the site of smallest
  * distance (largest for the farthest-point diagram), ties to the smaller
  * index: Definition 2.2 with another distance.
  *
@@ -105,6 +105,8 @@ VOR__ALWAYS_INLINE void square_sum(vor__mw_u128_t *r, uint32_t ax, uint32_t ay)
  *   LP                               num = |dx|^p + |dy|^p (lp_narrow), else wide
  *   MULT, ADD, COMPOUND              num = squared Euclidean distance,
  *                                    w1, w2 = the site's weights
+ *   POWER                            num = D - w + (2^63 - 1) (power_bias):
+ *                                    the power distance, made unsigned
  *   ELLIPTIC, SEGMENT, POLYGON,      the rational (squared ? num^2 : num) / den
  *   POLYLINE                         (POLYLINE: den includes the weight^2)
  */
@@ -147,8 +149,21 @@ static void power_limbs(vor__limb *r, size_t n, uint32_t x, uint32_t p)
     }
 }
 
+/* The power distance D - w for an int64 weight w, biased by 2^63 - 1 so
+ * that it is unsigned: D - w + (2^63 - 1) = D + bias, where
+ * bias = (2^63 - 1) - w lies in [0, 2^64) for every int64 w, computed
+ * modulo 2^64 (exact, since the true value is in range). The key
+ * D + bias < 2^65 + 2^64 keeps the order of the power distances, so the
+ * keys compare as plain 128-bit integers (docs/design/raster-metrics.md,
+ * "Power diagrams"). */
+VOR__ALWAYS_INLINE uint64_t power_bias(int64_t w)
+{
+    return (uint64_t)INT64_MAX - (uint64_t)w;
+}
+
 /* The key of a point site at offsets of magnitude (ax, ay): every metric
- * whose distance grows with |dx| and with |dy|. */
+ * whose distance grows with |dx| and with |dy| (POWER: for a fixed
+ * weight). */
 VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site, uint32_t ax,
                                   uint32_t ay, rank_key_t *k)
 {
@@ -170,8 +185,13 @@ VOR__ALWAYS_INLINE void point_key(const metric_t *m, uint32_t bit, uint32_t site
             power_limbs(other, m->limbs, ay, s->lp_exponent);
             vor__mw_add(k->wide, other, m->limbs);
         }
-    } else { /* MULT, ADD, COMPOUND, FARTHEST, HAUSDORFF */
+    } else { /* MULT, ADD, COMPOUND, FARTHEST, HAUSDORFF, POWER */
         square_sum(&k->num, ax, ay);
+        if (IN(bit, METRIC(POWER))) {
+            vor__mw_u128_t bias;
+            vor__mw_u128_set(&bias, power_bias(s->power_weights[site]));
+            vor__mw_u128_add(&k->num, &k->num, &bias);
+        }
         if (IN(bit, METRIC(MULT) | METRIC(COMPOUND))) {
             k->w1 = s->mult_weights[site];
         }
@@ -395,7 +415,7 @@ VOR__ALWAYS_INLINE int key_compare(const metric_t *m, uint32_t bit, const rank_k
         vor__mw_u128_mul64(&big_a, &a->num, wb2);
         vor__mw_u128_mul64(&big_b, &b->num, wa2);
         return additive_sign(m->limbs, &big_a, &big_b, &delta);
-    } else { /* L1, LINF, HAUSDORFF */
+    } else { /* L1, LINF, HAUSDORFF, POWER (biased) */
         return vor__mw_u128_compare(&a->num, &b->num);
     }
 }
@@ -674,9 +694,27 @@ static uint32_t rational_distance(const rank_key_t *k)
     return saturate_u32(isqrt128(&quotient));
 }
 
+/* The power distance D - w of a POWER key (num = D - w + (2^63 - 1),
+ * below 2^66) as an int32 bit pattern, clamped to [INT32_MIN, INT32_MAX]:
+ * no rounding, it is an integer. num >= 2^64 puts it above
+ * 2^64 - 2^63 + 1 > INT32_MAX; below, one subtraction either way. */
+static uint32_t power_distance(const rank_key_t *k)
+{
+    const uint64_t bias = (uint64_t)INT64_MAX;
+    if (k->num.hi != 0u) {
+        return (uint32_t)INT32_MAX;
+    }
+    if (k->num.lo >= bias) { /* 0 <= D - w <= 2^63 */
+        uint64_t value = k->num.lo - bias;
+        return (value > (uint64_t)INT32_MAX) ? (uint32_t)INT32_MAX : (uint32_t)value;
+    }
+    uint64_t below = bias - k->num.lo; /* D - w = -below < 0 */
+    return (below >= ((uint64_t)1 << 31)) ? (uint32_t)INT32_MIN : (uint32_t)((uint64_t)0 - below);
+}
+
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
- * (qx, qy): the floor of its distance under m's metric, saturated (ADD
- * and COMPOUND: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
+ * (qx, qy): the floor of its distance under m's metric, saturated (ADD,
+ * COMPOUND and POWER: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
 static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
@@ -695,6 +733,8 @@ static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, in
         return signed_distance(divide_u64(isqrt128(&k.num), (uint32_t)k.w1), k.w2);
     } else if (IN(m->metric_bit, RATIONAL_METRICS)) {
         return rational_distance(&k);
+    } else if (IN(m->metric_bit, METRIC(POWER))) {
+        return power_distance(&k);
     } else { /* FARTHEST, HAUSDORFF: the squared distance */
         return saturate_u32(isqrt128(&k.num));
     }
@@ -881,6 +921,7 @@ METRIC_OPS(HAUSDORFF)
 METRIC_OPS(SEGMENT)
 METRIC_OPS(POLYGON)
 METRIC_OPS(POLYLINE)
+METRIC_OPS(POWER)
 
 typedef struct metric_ops {
     void (*key)(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k);
@@ -895,6 +936,7 @@ static const metric_ops_t metric_ops[] = {
     METRIC_ENTRY(ELLIPTIC), METRIC_ENTRY(MULT),     METRIC_ENTRY(ADD),
     METRIC_ENTRY(COMPOUND), METRIC_ENTRY(FARTHEST), METRIC_ENTRY(HAUSDORFF),
     METRIC_ENTRY(SEGMENT),  METRIC_ENTRY(POLYGON),  METRIC_ENTRY(POLYLINE),
+    METRIC_ENTRY(POWER),
 #undef METRIC_ENTRY
 };
 
@@ -1041,12 +1083,14 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
  * offsets); else VOR_ERR_ARG. Reads every site once. */
 static int metric_check(const vor_raster_sites_t *s)
 {
-    if ((unsigned)s->metric > (unsigned)VOR_METRIC_POLYLINE) {
+    if ((unsigned)s->metric > (unsigned)VOR_METRIC_POWER) {
         return VOR_ERR_ARG;
     }
     const uint32_t bit = (uint32_t)1 << (uint32_t)s->metric;
     if (IN(bit, METRIC(L1) | METRIC(LINF) | METRIC(FARTHEST) | METRIC(SEGMENT))) {
         return VOR_OK;
+    } else if (IN(bit, METRIC(POWER))) {
+        return (s->power_weights != NULL) ? VOR_OK : VOR_ERR_ARG; /* any int64 */
     } else if (IN(bit, METRIC(LP))) {
         return ((s->lp_exponent >= 1u) && (s->lp_exponent <= 8u)) ? VOR_OK : VOR_ERR_ARG;
     } else if (IN(bit, METRIC(ELLIPTIC))) {

@@ -593,10 +593,59 @@ static void plain_value(ref_big_t *r, const vor_raster_sites_t *s, uint32_t k, i
     }
 }
 
+/* The positive and negative parts of an int64, as magnitudes (2^63 for
+ * INT64_MIN fits). */
+static uint64_t positive_part(int64_t v)
+{
+    return v > 0 ? (uint64_t)v : 0u;
+}
+
+static uint64_t negative_part(int64_t v)
+{
+    return v < 0 ? 0u - (uint64_t)v : 0u;
+}
+
+/* *r = D + extra1 + extra2 for the squared distance from q to s: one side
+ * of a power comparison with every negative term moved across, so both
+ * sides are sums of non-negative parts (no bias, no signed arithmetic). */
+static void power_side(ref_big_t *r, int32_t qx, int32_t qy, const vor_point_t *s,
+                       uint64_t extra1, uint64_t extra2)
+{
+    ref_big_t t;
+    if (s != NULL) {
+        ref_euclid_square(r, qx, qy, s);
+    } else {
+        ref_big_set(r, 0);
+    }
+    ref_big_set(&t, extra1);
+    ref_big_add(r, &t);
+    ref_big_set(&t, extra2);
+    ref_big_add(r, &t);
+}
+
+/* Sign of (D_a - w_a) - (D_b - w_b): D_a + w_b+ + w_a- against
+ * D_b + w_a+ + w_b-. */
+static int power_compare(const vor_raster_sites_t *s, uint32_t a, uint32_t b, int32_t qx,
+                         int32_t qy)
+{
+    ref_big_t left, right;
+    int64_t wa = s->power_weights[a], wb = s->power_weights[b];
+    power_side(&left, qx, qy, &s->points[a], positive_part(wb), negative_part(wa));
+    power_side(&right, qx, qy, &s->points[b], positive_part(wa), negative_part(wb));
+    return ref_big_compare(&left, &right);
+}
+
 uint32_t ref_nearest_metric(const vor_raster_sites_t *s, int32_t qx, int32_t qy, int *undecided)
 {
     uint32_t best = 0;
     switch (s->metric) {
+    case VOR_METRIC_POWER:
+        for (uint32_t k = 1; k < s->count; k++) {
+            if (power_compare(s, k, best, qx, qy) < 0) {
+                best = k;
+            }
+        }
+        return best;
     case VOR_METRIC_MULT:
     case VOR_METRIC_ADD:
     case VOR_METRIC_COMPOUND: {
@@ -697,8 +746,31 @@ static int reaches(const ref_floor_t *d, int64_t r)
     return ref_big_compare(&v, &d->num) <= 0;
 }
 
+/* POWER: D - w clamped to int32, by bisection on D - w >= r, i.e.
+ * D + w- + r- >= w+ + r+ (every part non-negative). */
+static uint32_t power_value(const vor_raster_sites_t *s, uint32_t k, int32_t qx, int32_t qy)
+{
+    int64_t w = s->power_weights[k];
+    int64_t lo = INT32_MIN, hi = INT32_MAX; /* P >= INT32_MIN or clamped there */
+    while (lo < hi) {
+        int64_t mid = lo + (hi - lo + 1) / 2;
+        ref_big_t left, right;
+        power_side(&left, qx, qy, &s->points[k], negative_part(w), negative_part(mid));
+        power_side(&right, qx, qy, NULL, positive_part(w), positive_part(mid));
+        if (ref_big_compare(&left, &right) >= 0) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    return (uint32_t)lo;
+}
+
 uint32_t ref_distance_metric(const vor_raster_sites_t *s, uint32_t k, int32_t qx, int32_t qy)
 {
+    if (s->metric == VOR_METRIC_POWER) {
+        return power_value(s, k, qx, qy);
+    }
     ref_floor_t d;
     d.shifted = 0;
     d.p = 2;

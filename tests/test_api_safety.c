@@ -578,7 +578,7 @@ static void check_raster(void)
     test_copy_bytes(areas_before, areas, sizeof areas);
     unsigned flushes = 0;
     vor_raster_frame_t frame = {0, 0, 100, 100, 8, 4};
-    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0, NULL};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
                                NULL, NULL, areas};
     vor_raster_frame_t empty = frame, inverted = frame;
@@ -591,6 +591,8 @@ static void check_raster(void)
     no_points.points = NULL;
     vor_raster_sites_t l1 = set;
     l1.metric = VOR_METRIC_L1;
+    vor_raster_sites_t weightless = set; /* power diagram without its weights */
+    weightless.metric = VOR_METRIC_POWER;
     /* both entry points; vor_raster_euclid also refuses another metric */
     int (*const entries[2])(const vor_raster_frame_t *, const vor_raster_sites_t *,
                             const vor_raster_output_t *, const vor_raster_options_t *, void *,
@@ -608,6 +610,7 @@ static void check_raster(void)
         bad += entries[e](&empty, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         bad += entries[e](&inverted, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         bad += entries[e](&frame, &set, &out, &bad_method, work, sizeof work) != VOR_ERR_ARG;
+        bad += entries[e](&frame, &weightless, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         if (e == 1u) {
             bad += vor_raster_euclid(&frame, &l1, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         }
@@ -749,7 +752,7 @@ static void check_each_argument(void)
     frames[6].step_x = 1;
     frames[6].width = 0x08000000u;
     frames[7].origin_x = INT32_MAX - 700; /* the widest frame that fits: valid */
-    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0};
+    vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0, NULL};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
                                NULL, NULL, NULL};
     bad = 0;
@@ -992,6 +995,41 @@ static void check_power_reads(void)
               vor_power_validate(&power, NULL) == VOR_OK &&
               vor_power_validate(&power, &violation) == VOR_OK && power_unchanged(),
           "power_validate: NULL, or a good object refused");
+
+    /* the cells: every id and bad arguments; an error writes nothing, a
+     * hidden site's cell is empty, a cell fits VOR_CELL_MAX_VERTICES */
+    static vor_point_t poly[VOR_CELL_MAX_VERTICES(POWER_N)];
+    static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(POWER_N))];
+    const vor_box_t box = {-2000000000, -2000000000, 2000000000, 2000000000};
+    const vor_box_t inverted = {0, 1, 0, 0};
+    const uint32_t cap = VOR_CELL_MAX_VERTICES(POWER_N);
+    bad = 0;
+    uint32_t m = 77;
+    vor_centroid_t c = {{77, 77}, 77, 77};
+    bad += vor_power_cell(NULL, 0, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, NULL, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, &inverted, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, &box, NULL, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0, &box, poly, cap, NULL) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, POWER_N - 1u, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, POWER_N, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell(&power, 0xFFFFFFFFu, &box, poly, cap, &m) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(NULL, 0, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, NULL, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, &inverted, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, &box, NULL, 1, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0, &box, centroid_scratch, sizeof centroid_scratch, NULL) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, POWER_N - 1u, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += vor_power_cell_centroid(&power, 0xFFFFFFFFu, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_ERR_ARG;
+    bad += (m != 77 || c.area != 77 || c.vertices != 77 || c.point.x != 77);
+    for (uint32_t i = 0; i + 1u < POWER_N; i++) {
+        int h = vor_power_hidden(&power, i);
+        bad += vor_power_cell(&power, i, &box, poly, cap, &m) != VOR_OK;
+        bad += (h == 1) ? (m != 0u) : (m < 3u);
+        bad += vor_power_cell_centroid(&power, i, &box, centroid_scratch, sizeof centroid_scratch, &c) != VOR_OK;
+        bad += c.vertices != m;
+    }
+    CHECK(bad == 0 && power_unchanged(), "power cells: %u wrong answers", bad);
 }
 
 /* Remove, move and nearest: NULLs, ids that are no site (unused, a
@@ -1080,6 +1118,11 @@ static void check_power_zeroed(void)
     bad += vor_power_triangles_begin(&ti, &zeroed) != VOR_OK;
     bad += vor_triangles_next(&ti, ids) != 0;
     bad += (out != 77 || ids[0] != 77 || dup[0] != 77);
+    vor_point_t poly[4];
+    uint32_t m = 77;
+    const vor_box_t box = {0, 0, 10, 10};
+    bad += vor_power_cell(&zeroed, 0, &box, poly, 4, &m) != VOR_ERR_ARG;
+    bad += m != 77;
     CHECK(bad == 0 && test_same_bytes(&zeroed, &zero, sizeof zero),
           "a never-initialised power object: %u wrong answers, or written", bad);
 }

@@ -15,9 +15,18 @@
  *   - the rounded areas of all cells add up to the box's area within
  *     half a unit per cell;
  *   - bad arguments, a scratch too small, any alignment.
+ * The power cells (vor_power_cell, vor_power_cell_centroid; "power_*"
+ * cases) against the same brute force with weighted bisectors: random
+ * weights (hidden sites among them), equal weights, one point with
+ * several weights, collinear sites, and grids whose weights are a linear
+ * function of the position (every four cocircular sites then stay tied)
+ * or random;
+ * each cell's rounded vertices against the brute force's exact corners,
+ * its area and centroid, and the tiling of the box.
  */
 #include "test.h"
 #include "vor.h"
+#include "vor_power.h"
 
 #define CEN_SITES 16u
 #define CEN_MAX_VERTICES VOR_CELL_MAX_VERTICES(CEN_SITES)
@@ -26,6 +35,10 @@ static vor_point_t sites[CEN_SITES];
 static uint32_t first_of[CEN_SITES];
 static uint8_t arena[VOR_ARENA_BYTES(CEN_SITES)] __attribute__((aligned(8)));
 static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(CEN_MAX_VERTICES) + 8u];
+/* The power cases' weights, and their arena; NULL weights: Voronoi cells. */
+static int64_t weights[CEN_SITES];
+static const int64_t *cell_weights;
+static uint8_t power_arena[VOR_POWER_ARENA_BYTES(CEN_SITES)] __attribute__((aligned(8)));
 
 /* ------------------------------------------------------------------ */
 /* 2048-bit two's complement integers                                  */
@@ -130,13 +143,15 @@ static uint32_t half_planes(uint32_t site, uint32_t n, vor_box_t box, half_plane
     const vor_point_t s = sites[site];
     for (uint32_t t = 0; t < n; t++) {
         const vor_point_t o = sites[t];
-        if (o.x == s.x && o.y == s.y) {
-            continue;
+        /* |p - s|^2 - ws <= |p - o|^2 - wo (weights 0 without them) */
+        int64_t shift = (cell_weights != NULL) ? cell_weights[site] - cell_weights[t] : 0;
+        if (o.x == s.x && o.y == s.y && shift >= 0) {
+            continue; /* itself, a duplicate, or a lighter site at its point */
         }
-        /* |p - s|^2 <= |p - o|^2 */
+        /* a heavier site at its point: 0 <= shift < 0, nowhere */
         h[m++] = (half_plane_t){2 * ((int64_t)o.x - s.x), 2 * ((int64_t)o.y - s.y),
                                 (int64_t)o.x * o.x + (int64_t)o.y * o.y -
-                                    (int64_t)s.x * s.x - (int64_t)s.y * s.y};
+                                    (int64_t)s.x * s.x - (int64_t)s.y * s.y + shift};
     }
     return m;
 }
@@ -257,14 +272,41 @@ static int32_t clamp32(int32_t v, int32_t lo, int32_t hi)
     return v < lo ? lo : v > hi ? hi : v;
 }
 
-/* One cell against the brute force; returns its rounded area. */
-static uint64_t check_cell(const vor_t *d, uint32_t site, uint32_t n, vor_box_t box,
-                           const char *name)
+/* A power cell's rounded vertices against the brute force's corners. */
+static void check_power_vertices(const vor_power_t *pd, uint32_t site, vor_box_t box,
+                                 const rational_point_t *corner, uint32_t k, const char *name)
+{
+    vor_point_t got[CEN_MAX_VERTICES];
+    uint32_t count = 0;
+    int err = vor_power_cell(pd, site, &box, got, CEN_MAX_VERTICES, &count);
+    uint32_t expected = (k >= 3u) ? k : 0u;
+    bool same = (err == VOR_OK) && (count == expected);
+    for (uint32_t i = 0; same && i < count; i++) {
+        wide_t x, y, w;
+        wide_set(&x, corner[i].x);
+        wide_set(&y, corner[i].y);
+        wide_set(&w, corner[i].w);
+        same = rounds_to(&x, &w, got[i].x) && rounds_to(&y, &w, got[i].y);
+    }
+    CHECK(same, "%s: power cell %u: error %d, %u vertices (brute force %u)", name, site, err,
+          count, expected);
+}
+
+/* One cell against the brute force (a power cell when pd is not NULL);
+ * returns its rounded area. */
+static uint64_t check_cell(const vor_t *d, const vor_power_t *pd, uint32_t site, uint32_t n,
+                           vor_box_t box, const char *name)
 {
     rational_point_t corner[MAX_CORNERS];
     uint32_t k = brute_cell(site, n, box, corner);
     vor_centroid_t got;
-    int err = vor_cell_centroid(d, site, &box, scratch, sizeof scratch, &got);
+    int err;
+    if (pd != NULL) {
+        check_power_vertices(pd, site, box, corner, k, name);
+        err = vor_power_cell_centroid(pd, site, &box, scratch, sizeof scratch, &got);
+    } else {
+        err = vor_cell_centroid(d, site, &box, scratch, sizeof scratch, &got);
+    }
     if (!CHECK(err == VOR_OK, "%s: site %u: error %d", name, site, err)) {
         return 0;
     }
@@ -294,16 +336,26 @@ static bool build(vor_t *d, uint32_t n)
                  "build %u sites", n);
 }
 
-static void check_all(uint32_t n, vor_box_t box, const char *name)
+static bool build_power(vor_power_t *pd, uint32_t n)
+{
+    return CHECK(vor_power_init(pd, power_arena, sizeof power_arena, CEN_SITES) == VOR_OK &&
+                     vor_power_build(pd, sites, weights, n, first_of) == VOR_OK,
+                 "power build %u sites", n);
+}
+
+/* Every cell of sites[0 .. n) (power cells with weights[], when power). */
+static void check_all_cells(uint32_t n, vor_box_t box, bool power, const char *name)
 {
     vor_t d;
-    if (!build(&d, n)) {
+    vor_power_t pd;
+    cell_weights = power ? weights : NULL;
+    if (power ? !build_power(&pd, n) : !build(&d, n)) {
         return;
     }
     uint64_t total = 0, cells = 0;
     for (uint32_t i = 0; i < n; i++) {
         if (first_of[i] == i) {
-            total += check_cell(&d, i, n, box, name);
+            total += check_cell(&d, power ? &pd : NULL, i, n, box, name);
             cells++;
         }
     }
@@ -312,6 +364,11 @@ static void check_all(uint32_t n, vor_box_t box, const char *name)
     uint64_t gap = (total > box_area) ? total - box_area : box_area - total;
     CHECK(2u * gap <= cells, "%s: areas add up to %u, box %u", name, (unsigned)total,
           (unsigned)box_area);
+}
+
+static void check_all(uint32_t n, vor_box_t box, const char *name)
+{
+    check_all_cells(n, box, false, name);
 }
 
 static void test_brute_force(test_rng_t *rng)
@@ -629,6 +686,112 @@ static void test_flat_boxes(void)
     }
 }
 
+/* ------------------------------------------------------------------ */
+/* Power cells                                                         */
+
+/* A box around the sites, inside them, or away from them. */
+static vor_box_t random_box(test_rng_t *rng)
+{
+    uint32_t kind = test_rng_u32(rng) % 12u;
+    int32_t x0 = test_rng_range(rng, -1000, 900), y0 = test_rng_range(rng, -1000, 900);
+    int32_t size = (kind % 3u == 0u) ? 1000 : (kind % 3u == 1u) ? 9 : 300;
+    vor_box_t box = {x0, y0, x0 + test_rng_range(rng, 1, size), y0 + test_rng_range(rng, 1, size)};
+    if (kind % 4u == 0u) {
+        box = (vor_box_t){-1000, -1000, 1000, 1000};
+    }
+    return box;
+}
+
+static void test_power_brute_force(test_rng_t *rng)
+{
+    static const char *const names[5] = {"power_random", "power_equal", "power_one_point",
+                                         "power_collinear", "power_grid"};
+    for (unsigned round = 0; round < 300u; round++) {
+        uint32_t n = 1u + test_rng_u32(rng) % CEN_SITES;
+        unsigned kind = round % 5u;
+        /* a linear weight function keeps a grid's cocircular fours tied */
+        int64_t gx = test_rng_range(rng, -300, 300), gy = test_rng_range(rng, -300, 300);
+        int64_t g0 = test_rng_range(rng, -90000, 90000);
+        for (uint32_t i = 0; i < n; i++) {
+            sites[i].x = test_rng_range(rng, -1000, 1000);
+            sites[i].y = test_rng_range(rng, -1000, 1000);
+            weights[i] = test_rng_range(rng, -(1 << 20), 1 << 20);
+            switch (kind) {
+            case 0: /* random weights: some sites hidden */
+                break;
+            case 1: /* equal weights: the Voronoi cells */
+                weights[i] = 12345;
+                break;
+            case 2: /* a few points, each with several weights (and repeats) */
+                sites[i] = sites[test_rng_u32(rng) % (i + 1u)];
+                weights[i] = test_rng_range(rng, 0, 4) * 250000;
+                break;
+            case 3: /* on one line */
+                sites[i].x = test_rng_range(rng, -20, 20) * 40;
+                sites[i].y = sites[i].x / 2 + 7;
+                break;
+            default: /* a grid: weights linear in the position (ties), or not */
+                sites[i].x = (int32_t)(i % 4u) * 300 - 450;
+                sites[i].y = (int32_t)(i / 4u) * 300 - 450;
+                weights[i] = (round % 2u == 0u) ? gx * sites[i].x + gy * sites[i].y + g0
+                                                : test_rng_range(rng, -30000, 30000);
+                break;
+            }
+        }
+        check_all_cells(n, random_box(rng), true, names[kind]);
+    }
+}
+
+/* The power calls' arguments: errors change nothing; a hidden site's cell
+ * is empty. */
+static void test_power_errors(void)
+{
+    vor_power_t pd;
+    vor_box_t box = {-100, -100, 100, 100}, bad = {1, 0, 0, 1};
+    vor_point_t poly[8] = {{77, 77}};
+    uint32_t count = 99;
+    vor_centroid_t out = {{5, 6}, 7, 8};
+    sites[0] = (vor_point_t){0, 0};
+    sites[1] = (vor_point_t){10, 0};
+    sites[2] = (vor_point_t){0, 10};
+    sites[3] = (vor_point_t){1, 1};
+    weights[0] = weights[1] = weights[2] = 0;
+    weights[3] = -1000; /* hidden */
+    if (!build_power(&pd, 4)) {
+        return;
+    }
+    CHECK(vor_power_hidden(&pd, 3) == 1, "site 3 hidden");
+    CHECK(vor_power_cell(NULL, 0, &box, poly, 8, &count) == VOR_ERR_ARG &&
+              vor_power_cell(&pd, 0, NULL, poly, 8, &count) == VOR_ERR_ARG &&
+              vor_power_cell(&pd, 0, &bad, poly, 8, &count) == VOR_ERR_ARG &&
+              vor_power_cell(&pd, 0, &box, NULL, 8, &count) == VOR_ERR_ARG &&
+              vor_power_cell(&pd, 0, &box, poly, 8, NULL) == VOR_ERR_ARG &&
+              vor_power_cell(&pd, 4, &box, poly, 8, &count) == VOR_ERR_ARG &&
+              count == 99 && poly[0].x == 77,
+          "power cell: bad arguments");
+    CHECK(vor_power_cell(&pd, 0, &box, poly, 2, &count) == VOR_ERR_BUFFER && count == 4 &&
+              poly[0].x == 77,
+          "power cell: a small buffer (count %u)", count);
+    CHECK(vor_power_cell(&pd, 3, &box, poly, 8, &count) == VOR_OK && count == 0,
+          "power cell: hidden site (count %u)", count);
+    CHECK(vor_power_cell_centroid(NULL, 0, &box, scratch, sizeof scratch, &out) == VOR_ERR_ARG &&
+              vor_power_cell_centroid(&pd, 0, NULL, scratch, sizeof scratch, &out) == VOR_ERR_ARG &&
+              vor_power_cell_centroid(&pd, 0, &bad, scratch, sizeof scratch, &out) == VOR_ERR_ARG &&
+              vor_power_cell_centroid(&pd, 0, &box, NULL, 8, &out) == VOR_ERR_ARG &&
+              vor_power_cell_centroid(&pd, 0, &box, scratch, sizeof scratch, NULL) ==
+                  VOR_ERR_ARG &&
+              vor_power_cell_centroid(&pd, 4, &box, scratch, sizeof scratch, &out) ==
+                  VOR_ERR_ARG &&
+              out.area == 7 && out.vertices == 8,
+          "power centroid: bad arguments");
+    CHECK(vor_power_cell_centroid(&pd, 0, &box, scratch, 8, &out) == VOR_ERR_BUFFER &&
+              out.vertices == 4 && out.area == 7,
+          "power centroid: a small scratch (%u vertices)", out.vertices);
+    CHECK(vor_power_cell_centroid(&pd, 3, &box, scratch, sizeof scratch, &out) == VOR_OK &&
+              out.area == 0 && out.vertices == 0 && out.point.x == 1 && out.point.y == 1,
+          "power centroid: hidden site");
+}
+
 void test_centroid(void)
 {
     test_rng_t rng;
@@ -637,4 +800,6 @@ void test_centroid(void)
     TEST_CASE("wide") test_wide(test_rng_seed(&rng, 0xCE27701Du));
     TEST_CASE("brute_force") test_brute_force(test_rng_seed(&rng, 0xCE27701Du));
     TEST_CASE("flat_boxes") test_flat_boxes();
+    TEST_CASE("power_errors") test_power_errors();
+    TEST_CASE("power_brute_force") test_power_brute_force(test_rng_seed(&rng, 0x90E7CE11u));
 }

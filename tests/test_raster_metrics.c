@@ -6,7 +6,8 @@
  * and area by area, with both methods (culled and brute force) and
  * several band heights; random and adversarial inputs per metric (sites on
  * pixel centres, exact ties, equal weights, duplicates, zero-length
- * segments, degenerate and overlapping polygons, the full int32 range);
+ * segments, degenerate and overlapping polygons, the full int32 range,
+ * power weights over all of int64, hidden power sites);
  * a culling pool too small for the tiles; and the metric errors.
  */
 #include "raster_reference.h"
@@ -21,6 +22,7 @@
 
 static vor_point_t points[MAX_POINTS];
 static int32_t mult[MAX_SITES], add[MAX_SITES];
+static int64_t power[MAX_SITES];
 static uint32_t offsets[MAX_SITES + 1u];
 static uint32_t expect_label[MAX_PIXELS];
 static uint32_t expect_distance[MAX_PIXELS];
@@ -32,7 +34,7 @@ static uint32_t areas[MAX_SITES];
 static const char *const metric_names[] = {"euclid", "l1",       "linf",      "lp",
                                            "ellip",  "mult",     "add",       "comp",
                                            "farthest", "hausdorff", "segment", "polygon",
-                                           "polyline"};
+                                           "polyline", "power"};
 
 typedef struct capture {
     uint32_t next_row;
@@ -171,6 +173,7 @@ static vor_raster_sites_t point_set(enum vor_metric metric, uint32_t n)
     set.count = n;
     set.mult_weights = mult;
     set.add_weights = add;
+    set.power_weights = power;
     set.offsets = offsets;
     set.lp_exponent = 3;
     set.form_a = 2;
@@ -529,7 +532,8 @@ static void huge_cases(test_rng_t *rng)
     static const enum vor_metric metrics[] = {
         VOR_METRIC_L1,       VOR_METRIC_LINF,     VOR_METRIC_LP,       VOR_METRIC_ELLIPTIC,
         VOR_METRIC_MULT,     VOR_METRIC_ADD,      VOR_METRIC_COMPOUND, VOR_METRIC_FARTHEST,
-        VOR_METRIC_HAUSDORFF, VOR_METRIC_SEGMENT, VOR_METRIC_POLYGON, VOR_METRIC_POLYLINE};
+        VOR_METRIC_HAUSDORFF, VOR_METRIC_SEGMENT, VOR_METRIC_POLYGON, VOR_METRIC_POLYLINE,
+        VOR_METRIC_POWER};
     for (unsigned m = 0; m < sizeof metrics / sizeof metrics[0]; m++) {
         uint32_t n = 12;
         for (uint32_t k = 0; k < 3u * n; k++) {
@@ -545,6 +549,14 @@ static void huge_cases(test_rng_t *rng)
             add[k] = (int32_t)test_rng_u32(rng);
             offsets[k] = 3u * k;
         }
+        for (uint32_t k = 0; k < n; k++) {
+            /* int64 weights, some within a few squared distances of each other */
+            power[k] = (int64_t)(((uint64_t)test_rng_u32(rng) << 32) | test_rng_u32(rng));
+        }
+        power[5] = INT64_MIN;
+        power[6] = INT64_MAX;
+        power[7] = (int64_t)1 << 62;
+        power[8] = INT64_MAX - (int64_t)test_rng_u32(rng);
         mult[2] = INT32_MAX;
         add[3] = INT32_MIN;
         add[4] = INT32_MAX;
@@ -688,6 +700,37 @@ static void distance_value_cases(void)
     CHECK(distance_at(&set, 3, 4) == 0u, "distance value: inside a polygon");
     CHECK(distance_at(&set, 9, 4) == 0u, "distance value: on a polygon's edge");
     CHECK(distance_at(&set, 12, 13) == 5u, "distance value: outside a polygon (3-4-5)");
+    /* power: D - w, exact, clamped to int32 */
+    static const struct {
+        int32_t sx, sy, qx, qy;
+        int64_t w;
+        uint32_t want;
+    } powers[] = {
+        {0, 0, 3, 4, 0, 25u},
+        {0, 0, 3, 4, 30, 0xFFFFFFFBu},               /* -5 */
+        {0, 0, 3, 4, -100, 125u},
+        {7, 7, 7, 7, INT64_MIN, 0x7FFFFFFFu},
+        {7, 7, 7, 7, INT64_MAX, 0x80000000u},
+        {7, 7, 7, 7, (int64_t)1 << 31, 0x80000000u}, /* exactly -2^31 */
+        {7, 7, 7, 7, ((int64_t)1 << 31) - 1, 0x80000001u},
+        {0, 0, 46341, 0, 0, 0x7FFFFFFFu},           /* 2147488281 clamped */
+        {0, 0, 46340, 0, -88048, 0x7FFFFFFFu},      /* 2147395600 + 88048 = 2^31 */
+        {0, 0, 46340, 0, -88047, 0x7FFFFFFFu},      /* 2^31 - 1 exactly */
+        {0, 0, 46340, 0, -88046, 0x7FFFFFFEu},
+        {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX, INT64_MAX, 0x7FFFFFFFu}, /* 2^65 - ... */
+        {INT32_MIN, 0, INT32_MAX, 0, INT64_MAX, 0x7FFFFFFFu}, /* (2^32 - 1)^2 - (2^63 - 1) */
+        {INT32_MIN, 0, 0, 0, INT64_MAX, 0x80000000u},         /* 2^62 - 2^63 + 1 */
+    };
+    for (uint32_t c = 0; c < sizeof powers / sizeof powers[0]; c++) {
+        points[0].x = powers[c].sx;
+        points[0].y = powers[c].sy;
+        power[0] = powers[c].w;
+        vor_raster_sites_t pset = point_set(VOR_METRIC_POWER, 1);
+        uint32_t got = distance_at(&pset, powers[c].qx, powers[c].qy);
+        uint32_t ref = ref_distance_metric(&pset, 0, powers[c].qx, powers[c].qy);
+        CHECK(got == powers[c].want && ref == powers[c].want,
+              "power distance value %u: %u, reference %u, by hand %u", c, got, ref, powers[c].want);
+    }
     /* a slanted segment: the perpendicular distance 7 sqrt(2) / 2 = 4.95 */
     points[0].x = 0;
     points[0].y = 0;
@@ -742,7 +785,7 @@ static void error_cases(void)
     out.flush = quiet_flush;
     out.user = &flushes;
     size_t bytes = VOR_RASTER_WORK_BYTES(8, 10);
-    for (int m = VOR_METRIC_L1; m <= VOR_METRIC_POLYLINE; m++) {
+    for (int m = VOR_METRIC_L1; m <= VOR_METRIC_POWER; m++) {
         vor_raster_sites_t set = point_set((enum vor_metric)m, 4);
         CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_OK, "errors %s: valid base",
               metric_names[m]);
@@ -819,9 +862,205 @@ static void error_cases(void)
     mult[3] = 1;
     set.offsets = NULL;
     CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: no offsets");
-    set.metric = (enum vor_metric)13;
-    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: metric 13");
+    set = point_set(VOR_METRIC_POWER, 4);
+    set.power_weights = NULL;
+    for (uint32_t k = 0; k < 4u; k++) {
+        areas[k] = 0xA5A5u + k;
+    }
+    for (size_t b = 0; b < 100u; b++) {
+        band_memory[b] = (uint8_t)(b ^ 0x5Au);
+    }
+    vor_raster_output_t counted = out;
+    counted.areas = areas;
+    CHECK(vor_raster(&f, &set, &counted, NULL, work, bytes) == VOR_ERR_ARG,
+          "errors: power without weights");
+    uint32_t touched = 0;
+    for (uint32_t k = 0; k < 4u; k++) {
+        touched += areas[k] != 0xA5A5u + k;
+    }
+    for (size_t b = 0; b < 100u; b++) {
+        touched += band_memory[b] != (uint8_t)(b ^ 0x5Au);
+    }
+    CHECK(touched == 0, "errors: power without weights wrote %u words", touched);
+    set.power_weights = power;
+    set.mult_weights = NULL; /* power uses no other weights */
+    set.add_weights = NULL;
+    power[0] = INT64_MIN;
+    power[1] = INT64_MAX;
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_OK, "errors: power, any int64");
+    flushes = 0;
+    set.metric = (enum vor_metric)14;
+    CHECK(vor_raster(&f, &set, &out, NULL, work, bytes) == VOR_ERR_ARG, "errors: metric 14");
     CHECK(flushes == 0, "errors: a failed call flushed %u bands", flushes);
+}
+
+/* ------------------------------------------------------------- power */
+
+/* The pixels the reference gives site k (after check_frame). */
+static uint32_t reference_area(const vor_raster_frame_t *f, uint32_t k)
+{
+    uint32_t count = 0;
+    for (uint32_t p = 0; p < f->width * f->height; p++) {
+        count += expect_label[p] == k;
+    }
+    return count;
+}
+
+/* Power diagrams (VOR_METRIC_POWER): random weights, equal weights (the
+ * Euclidean labels of ref_nearest, a reference of its own), hidden sites,
+ * coincident sites, exact ties, int64 extremes, every band height. */
+static void power_cases(test_rng_t *rng)
+{
+    vor_raster_frame_t f;
+    for (uint32_t round = 0; round < 6u; round++) {
+        random_frame(rng, &f);
+        uint32_t n = 1u + test_rng_u32(rng) % 30u;
+        random_points(rng, &f, n, 20);
+        int32_t spread = (round < 3u) ? 100 : 3000; /* 3000: many hidden sites */
+        for (uint32_t k = 0; k < n; k++) {
+            power[k] = test_rng_range(rng, -spread, spread);
+        }
+        vor_raster_sites_t set = point_set(VOR_METRIC_POWER, n);
+        check_frame("random", &f, &set);
+        /* on pixel centres, coincident with other weights */
+        centre_points(rng, &f, n);
+        for (uint32_t k = 0; k + 1u < n; k += 2u) {
+            points[k + 1u] = points[k];
+            power[k + 1u] = power[k] + test_rng_range(rng, -2, 2);
+        }
+        check_frame("coincident", &f, &set);
+    }
+
+    /* equal weights: exactly the Euclidean labels, whatever the weight */
+    static const int64_t equal[] = {0, -7, 123456789, (int64_t)1 << 62, INT64_MAX, INT64_MIN};
+    f = ref_frame(-13, -9, 1, 1, 37, 31);
+    for (unsigned e = 0; e < sizeof equal / sizeof equal[0]; e++) {
+        uint32_t n = 25;
+        centre_points(rng, &f, n / 2u); /* duplicates and ties */
+        for (uint32_t k = n / 2u; k < n; k++) {
+            points[k].x = test_rng_range(rng, -20, 30);
+            points[k].y = test_rng_range(rng, -15, 25);
+        }
+        for (uint32_t k = 0; k < n; k++) {
+            power[k] = equal[e];
+        }
+        vor_raster_sites_t set = point_set(VOR_METRIC_POWER, n);
+        for (uint32_t j = 0; j < f.height; j++) {
+            for (uint32_t i = 0; i < f.width; i++) {
+                expect_label[j * f.width + i] = ref_nearest(&set, ref_centre_x(&f, i), ref_centre_y(&f, j));
+            }
+        }
+        render_and_compare("equal-weights", &f, &set, VOR_RASTER_FAST, 1u + e * 7u, VOR_RASTER_LABEL32);
+        render_and_compare("equal-weights", &f, &set, VOR_RASTER_BRUTE, 16, VOR_RASTER_LABEL32);
+    }
+
+    /* a heavy site hides light ones: site 3 at the centre, squared radius
+     * 40000, owns the pixels of the light sites around it (empty cells) */
+    f = ref_frame(0, 0, 2, 2, 30, 30);
+    static const int32_t ring[][2] = {{28, 30}, {32, 30}, {30, 26}, {30, 30}, {30, 35}, {25, 25}, {36, 34}, {100, 100}};
+    for (uint32_t k = 0; k < 8u; k++) {
+        points[k].x = ring[k][0];
+        points[k].y = ring[k][1];
+        power[k] = (k == 3u) ? 40000 : (int64_t)k;
+    }
+    power[7] = 45000; /* far away and heavier: owns the far corner */
+    {
+        vor_raster_sites_t set = point_set(VOR_METRIC_POWER, 8);
+        check_frame("hidden", &f, &set);
+        uint32_t hidden = 0;
+        for (uint32_t k = 0; k < 7u; k++) {
+            hidden += (k != 3u) && reference_area(&f, k) == 0u;
+        }
+        CHECK(hidden == 6u && reference_area(&f, 7) > 0u && reference_area(&f, 3) > 0u,
+              "power hidden: %u of 6 light sites hidden", hidden);
+    }
+
+    /* exact ties: sites (0, 0) w 0 and (10, 0) w 100 - 20 x0 have the
+     * bisector x = x0, a column of pixel centres; the smaller index takes
+     * it, in both orders */
+    f = ref_frame(-5, -6, 1, 1, 22, 13);
+    for (int32_t x0 = -3; x0 <= 14; x0 += 4) {
+        for (uint32_t order = 0; order < 2u; order++) {
+            uint32_t a = order, b = 1u - order;
+            points[a].x = 0;
+            points[a].y = 0;
+            power[a] = 0;
+            points[b].x = 10;
+            points[b].y = 0;
+            power[b] = 100 - 20 * (int64_t)x0;
+            points[2].x = 5;
+            points[2].y = 40; /* a third site, far and light */
+            power[2] = -1000;
+            vor_raster_sites_t set = point_set(VOR_METRIC_POWER, 3);
+            check_frame("tie column", &f, &set);
+            uint32_t column = (uint32_t)(x0 + 5), wrong = 0;
+            for (uint32_t j = 0; j < f.height; j++) {
+                wrong += expect_label[j * f.width + column] != 0u;
+            }
+            CHECK(wrong == 0, "power tie column x = %d: %u pixels not to index 0", x0, wrong);
+        }
+    }
+    /* a small lattice with small weights: ties everywhere */
+    f = ref_frame(0, 0, 1, 1, 24, 20);
+    for (uint32_t k = 0; k < 30u; k++) {
+        points[k].x = 4 * (int32_t)(k % 6u);
+        points[k].y = 4 * (int32_t)(k / 6u);
+        power[k] = 4 * (int64_t)(k % 3u);
+    }
+    {
+        vor_raster_sites_t set = point_set(VOR_METRIC_POWER, 30);
+        check_frame("lattice", &f, &set);
+    }
+
+    /* weights near 2^62 and the int64 ends, differing by squared pixel
+     * distances, so the differences decide the labels */
+    static const int64_t bases[] = {(int64_t)1 << 62, INT64_MAX - 5000, INT64_MIN + 5000,
+                                    -((int64_t)1 << 62)};
+    f = ref_frame(-10, -10, 1, 1, 21, 21);
+    for (unsigned b = 0; b < sizeof bases / sizeof bases[0]; b++) {
+        random_points(rng, &f, 12, 5);
+        for (uint32_t k = 0; k < 12u; k++) {
+            power[k] = bases[b] + test_rng_range(rng, -400, 400);
+        }
+        vor_raster_sites_t set = point_set(VOR_METRIC_POWER, 12);
+        check_frame("int64 ends", &f, &set);
+    }
+    /* the ends against each other: INT64_MAX owns everything, INT64_MIN
+     * nothing; far corners with weights 0 against 2^62 */
+    f = ref_frame(INT32_MIN, INT32_MIN, 429496729, 429496729, 11, 11);
+    points[0].x = INT32_MAX;
+    points[0].y = INT32_MAX;
+    power[0] = INT64_MIN;
+    points[1].x = INT32_MIN;
+    points[1].y = INT32_MIN;
+    power[1] = 0;
+    points[2].x = 0;
+    points[2].y = 0;
+    power[2] = (int64_t)1 << 62;
+    points[3].x = INT32_MAX;
+    points[3].y = INT32_MIN;
+    power[3] = INT64_MAX;
+    {
+        vor_raster_sites_t set = point_set(VOR_METRIC_POWER, 3);
+        check_frame("int32 corners", &f, &set);
+        set.count = 4;
+        check_frame("int32 corners", &f, &set);
+        /* D + 2^63 >= 2^63 > 2^62 >= D - 2^62 of site 2 (D <= 2^63) */
+        CHECK(reference_area(&f, 0) == 0u, "power: the INT64_MIN site owns no pixel");
+    }
+
+    /* every band height on one frame */
+    f = ref_frame(-7, 3, 1, 2, 23, 19);
+    random_points(rng, &f, 20, 4);
+    for (uint32_t k = 0; k < 20u; k++) {
+        power[k] = test_rng_range(rng, -300, 300);
+    }
+    vor_raster_sites_t set = point_set(VOR_METRIC_POWER, 20);
+    check_frame("bands", &f, &set);
+    for (uint32_t rows = 1; rows <= f.height; rows++) {
+        render_and_compare("bands", &f, &set, VOR_RASTER_FAST, rows,
+                           (rows % 3u == 0u) ? VOR_RASTER_BOUNDARY : VOR_RASTER_LABEL32);
+    }
 }
 
 /* One site and a frame 480 pixels wide: the documented work memory's
@@ -860,6 +1099,11 @@ void test_raster_metrics(void)
     TEST_CASE("huge") {
         always_distance = 1; /* saturation and the widest values */
         huge_cases(test_rng_seed(&rng, 5005));
+        always_distance = 0;
+    }
+    TEST_CASE("power") {
+        always_distance = 1; /* negative values and both clamps */
+        power_cases(test_rng_seed(&rng, 5005));
         always_distance = 0;
     }
     TEST_CASE("pool_overflow") pool_overflow_case();

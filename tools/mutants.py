@@ -88,9 +88,11 @@ GENERATED = ['gen/predicate_vectors.c', 'gen/crossing_vectors.c']
 # A survivor of both then meets its file's quick groups built with
 # AddressSanitizer, as make test's host-sanitize suite: a read past an
 # array that changes no value (a cache hint's address read from beyond
-# the arena) is a fault only it sees.
+# the arena) is a fault only it sees. As there, every local is filled with
+# a pattern before its first write: a read of a local the mutant no longer
+# writes then gives garbage, not what an earlier call left in its slot.
 ASAN_DEFS = ['-DVOR_INDEX_BITS=32']
-ASAN_FLAGS = ['-fsanitize=address', '-fno-omit-frame-pointer']
+ASAN_FLAGS = ['-fsanitize=address', '-fno-omit-frame-pointer', '-ftrivial-auto-var-init=pattern']
 COMMON = ['-std=c99', '-O1', '-Iinclude', '-Isrc', '-Iport', '-Itests', '-Itests/vectors',
           '-DVOR_STATS=1']
 # The library traps on a failed assertion, as in the test build, on a

@@ -275,14 +275,21 @@ def brute_cell(sites, i, box):
     """Cell of sites[i] in the box, exactly: the box clipped by the closed
     half-plane |p - s|^2 <= |p - n|^2 of every other distinct site n, with
     coinciding vertices merged; [] when no area is left. Rotated to start
-    at the lowest vertex (smallest y, then x)."""
+    at the lowest vertex (smallest y, then x). Sites (x, y, w) are weighted:
+    power distances |p - s|^2 - w, and a heavier site at s's point empties
+    s's cell."""
     from fractions import Fraction as F
     x0, y0, x1, y1 = (F(v) for v in box)
     poly = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-    sx, sy = sites[i]
-    for j, (nx, ny) in enumerate(sites):
-        if (nx, ny) != (sx, sy) and poly:
-            poly = clip_half_plane(poly, 2 * (nx - sx), 2 * (ny - sy), nx * nx + ny * ny - sx * sx - sy * sy)
+    sx, sy, sw = (tuple(sites[i]) + (0,))[:3]
+    for j, n in enumerate(sites):
+        nx, ny, nw = (tuple(n) + (0,))[:3]
+        if (nx, ny) == (sx, sy):
+            if nw > sw:
+                return []
+        elif poly:
+            poly = clip_half_plane(poly, 2 * (nx - sx), 2 * (ny - sy),
+                                   nx * nx + ny * ny - sx * sx - sy * sy + sw - nw)
     merged = []
     for p in poly:
         if not merged or merged[-1] != p:
@@ -423,8 +430,10 @@ def polygon_square(q, poly):
 def metric_nearest(metric, param, sites, q):
     """Index of the first-ranked site at q (ties: the smaller index)."""
     def key(site):
-        if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp"):
+        if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp", "power"):
             dx, dy = abs(site[0] - q[0]), abs(site[1] - q[1])
+        if metric == "power":  # the power distance, an exact Python integer
+            return dx * dx + dy * dy - site[2]
         if metric == "l1":
             return dx + dy
         if metric == "linf":
@@ -476,8 +485,11 @@ def raster_metric_cases(rng, tmp):
                ("ellip", (3, -1, 2), "ellip:3,-1,2"), ("mult", None, "mult"), ("add", None, "add"),
                ("comp", None, "comp"), ("farthest", None, "farthest"), ("hausdorff", None, "hausdorff"),
                ("segment", None, "segment"), ("polygon", None, "polygon"),
-               ("polyline", None, "polyline")]
+               ("polyline", None, "polyline"), ("power", None, "power")]
+    main_rng = rng
     for metric, param, arg in metrics:
+        # power draws from its own generator: the later cases keep their inputs
+        rng = random.Random(26) if metric == "power" else main_rng
         for n in range(3):
             w, h = rng.randint(1, 21), rng.randint(1, 19)
             ox, oy, sx, sy = rng.randint(-20, 20), rng.randint(-20, 20), rng.randint(1, 3), rng.randint(1, 3)
@@ -494,6 +506,8 @@ def raster_metric_cases(rng, tmp):
                     sites.append(p + (rng.randint(-4, 4) if n != 1 else 5 * (k % 2),))
                 elif metric == "comp":
                     sites.append(p + (rng.randint(1, 3), rng.randint(-4, 4)))
+                elif metric == "power":  # n = 2: heavy weights that hide sites
+                    sites.append(p + (rng.randint(-40, 40) if n != 2 else rng.randint(-300, 300) * (1 + 9 * (k == 0)),))
                 elif metric == "segment":
                     sites.append((p, pt(n == 1) if k % 3 else p))
                 elif metric == "polyline":
@@ -527,7 +541,9 @@ def raster_metric_cases(rng, tmp):
     bad = [("mult", "1 2 3\n4 5 0\n", 2), ("mult", "1 2\n", 1), ("comp", "# c\n1 2 3\n", 2),
            ("comp", "1 2 -1 5\n", 1), ("add", "1 2 3 4\n", 1), ("segment", "1 2 3\n", 1),
            ("polygon", "1 2 3 4\n5 6 7\n", 2), ("hausdorff", "\n\n1 2 x\n", 3), ("l1", "1 2 3\n", 1),
-           ("polyline", "2 1 2 3 4\n0 5 6\n", 2), ("polyline", "1 1 2 3\n", 1)]
+           ("polyline", "2 1 2 3 4\n0 5 6\n", 2), ("polyline", "1 1 2 3\n", 1),
+           ("power", "1 2 3\n1 2\n", 2), ("power", "1 2 3.5\n", 1), ("power", "1 2 3 4\n", 1),
+           ("power", "0 0 9223372036854775808\n", 1)]
     for metric, text, line in bad:
         bp = os.path.join(tmp, "bad.sites")
         with open(bp, "w") as f:
@@ -535,6 +551,38 @@ def raster_metric_cases(rng, tmp):
         r = run(["raster", "--size", "4", "4", "--metric", metric, bp, "--labels", os.path.join(tmp, "bad.raw")], "")
         check(r.returncode == 2 and r.stderr.startswith(f"error: {bp}:{line}: "),
               f"raster --metric {metric} bad line {text!r}: {r.returncode} {r.stderr!r}")
+    # power: int64 weights at both ends, and --scale S multiplies them by S^2
+    for text, scale, want in (("0 0 -9223372036854775808\n3 0 9223372036854775807\n", None, [1, 1, 1, 1]),
+                              ("0 0 9223372036854775807\n3 0 9223372036854775807\n", None, [0, 0, 1, 1]),
+                              ("0 0 0\n0.3 0 0.03\n", "10", [0, 0, 1, 1]),  # w 3: x = 1 ties, to 0
+                              ("0 0 0\n0.3 0 0.035\n", "10", [0, 1, 1, 1])):  # 3.5 rounds away to 4
+        pp = os.path.join(tmp, "power-scale.sites")
+        with open(pp, "w") as f:
+            f.write(text)
+        args = ["raster", "--size", "4", "1", "--metric", "power", pp, "--labels", os.path.join(tmp, "power.raw")]
+        r = run(args + (["--scale", scale] if scale else []), "")
+        got = list(struct.unpack("<4I", open(os.path.join(tmp, "power.raw"), "rb").read())) if r.returncode == 0 else None
+        check(got == want, f"raster --metric power {text!r} --scale {scale}: {got}, want {want} ({r.stderr!r})")
+    rng = random.Random(27)
+    # power --png: every pixel the colour of its brute-force site, black on
+    # the boundaries (a label unlike the right or lower neighbour's)
+    w, h = 24, 16
+    sites = [(rng.randint(-4, 28), rng.randint(-4, 20), rng.randint(-60, 60)) for _ in range(9)] + [(12, 8, 900)]
+    pp, png = os.path.join(tmp, "power-png.sites"), os.path.join(tmp, "power.png")
+    with open(pp, "w") as f:
+        f.write("".join(f"{x} {y} {wt}\n" for x, y, wt in sites))
+    r = run(["raster", "--size", str(w), str(h), "--metric", "power", pp, "--png", png, "--y-down"], "")
+    check(r.returncode == 0, f"raster --metric power --png: {r.returncode} {r.stderr!r}")
+    if r.returncode == 0:
+        picture = read_png(png)
+        labels = [[metric_nearest("power", None, sites, (i, j)) for i in range(w)] for j in range(h)]
+        wrong = 0
+        for j in range(h):
+            for i in range(w):
+                edge = (i + 1 < w and labels[j][i + 1] != labels[j][i]) or (j + 1 < h and labels[j + 1][i] != labels[j][i])
+                wrong += tuple(picture[j][i]) != ((0, 0, 0) if edge else draw_colour(labels[j][i]))
+        check(wrong == 0, f"raster --metric power --png: {wrong} of {w * h} pixels unlike the brute force")
+    rng = main_rng
     for arg in ("lp:0", "lp:9", "lp:x", "ellip:1,2,3", "ellip:0,0,1", "ellip:1,2", "manhattan"):
         r = run(["raster", "--size", "4", "4", "--metric", arg, os.path.join(tmp, "l1-0.sites"), "--labels",
                  os.path.join(tmp, "bad.raw")], "")
@@ -1507,6 +1555,28 @@ def cdt_cases(rng, tmp):
         check(r.returncode == 0 and r.stderr == "", f"vor cdt case {case}: {r.returncode} {r.stderr!r}")
         if r.returncode == 0:
             check_cdt_output(sites, pairs, r.stdout, False, f"case {case}")
+    # full-range sites whose crossing's s line once named no constraint:
+    # the tool's own check that the point lies on a constraint overflowed
+    # 128 bits (its products reach 2^131)
+    sites = [
+        (-1409958251, -966569112), (-94912888, 1626741058), (1713753823, 953058984), (2114128344, 33806560),
+        (481998206, 896494184), (47345682, -477804654), (2054298827, -18553515), (-1247455157, 1597016486),
+        (888270844, -1940102144), (-71489056, 1895462587), (-328963085, -765662083), (1047602485, 63429302),
+        (-2067841113, -1998818340), (-289063547, -1439693884), (1301079743, 1087529875),
+        (-707845983, 128565954), (-1553020534, 295678144), (-616975479, -936999918),
+        (-994666154, 1478541201), (-1156398636, 1228411541), (1329983873, 2026714104),
+        (318230221, 1874246647), (-1211059701, 1658994022), (-1528619729, 2125834683),
+        (-1067560038, -1939102901), (-1853286192, -1430852883), (451603214, -640894243),
+        (-1822560003, -1961319774), (-1159934071, -1146474538), (-1258540961, 1604302606),
+        (985367830, -752618110), (1352743448, 557939545), (2144584273, 570689844), (-1183618859, 814129115),
+        (1941585915, 1706082330)
+    ]
+    pairs = [(23, 30), (23, 3), (27, 33), (26, 33), (9, 16), (12, 22), (8, 9), (23, 17), (5, 13), (32, 34)]
+    open(sp, "w").write("".join(f"{x} {y}\n" for x, y in sites))
+    open(cp, "w").write("".join(f"{a} {b}\n" for a, b in pairs))
+    r = run(["cdt", sp, cp], "")
+    check(r.returncode == 0, f"vor cdt full range: {r.returncode} {r.stderr!r}")
+    check_cdt_output(sites, pairs, r.stdout, False, "full range")
     # a square with a square hole and a triangle inside the hole: --domain
     sites = [(0, 0), (100, 0), (100, 100), (0, 100), (30, 30), (70, 30), (70, 70), (30, 70),
              (40, 40), (60, 40), (50, 60), (10, 50), (50, 10), (85, 85), (50, 50), (120, 50)]
@@ -1751,14 +1821,14 @@ def power_cases(tmp):
     check_power_output(sites, r.stdout, "extremes")
     r = run(["power", "-"], "5 5 1\n5 5 3\n5 5 3\n5 5 -2\n")
     check(r.returncode == 0 and r.stdout == "h 0\nh 3\nd 2 1\n", f"vor power one point: {r.stdout!r}")
-    # the same sites as CSV (with a header), and scaled (weights are not)
+    # the same sites as CSV (with a header), and scaled (the weights by S^2)
     sites = [(rng.randint(-50, 50), rng.randint(-50, 50), rng.randint(-400, 400)) for _ in range(12)]
     ref = run(["power", "-"], "".join(f"{x} {y} {w}\n" for x, y, w in sites))
     check(ref.returncode == 0 and ref.stdout.startswith("t "), f"vor power reference: {ref.stderr!r}")
     for args, text in ((["power", "-"], "x,y,w\n" + "".join(f"{x},{y},{w}\n" for x, y, w in sites)),
                        (["power", "-"], "# c\n\n" + "".join(f" {x} ,\t{y}, {w}\r\n" for x, y, w in sites)),
-                       (["power", "--scale", "10", "-"], "".join(f"{x / 10} {y / 10} {w}\n" for x, y, w in sites)),
-                       (["power", "--scale=0.5", "-"], "".join(f"{2 * x},{2 * y},{w}\n" for x, y, w in sites))):
+                       (["power", "--scale", "10", "-"], "".join(f"{x / 10} {y / 10} {w / 100}\n" for x, y, w in sites)),
+                       (["power", "--scale=0.5", "-"], "".join(f"{2 * x},{2 * y},{4 * w}\n" for x, y, w in sites))):
         r = run(args, text)
         check(r.returncode == 0 and r.stdout == ref.stdout, f"vor {' '.join(args)} {text[:20]!r}: {r.returncode} {r.stderr!r}")
     sp = os.path.join(tmp, "power.sites")
@@ -1781,13 +1851,14 @@ def power_cases(tmp):
     for text in ("0 0 9223372036854775807\n", "0 0 -9223372036854775808\n", "0 0 +5\n", "0 0 -0\n"):
         r = run(["power", "-"], text)
         check(r.returncode == 0 and r.stdout == "", f"vor power {text!r}: {r.returncode} {r.stderr!r}")
-    # a decimal weight: an error that does not send the user to --scale,
-    # which scales only the coordinates
-    for args in (["power", "-"], ["power", "--scale", "10", "-"]):
-        r = run(args, "0.5 0.5 1.5\n" if len(args) > 2 else "0 0 1.5\n")
-        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:1: ") and "'1.5'" in r.stderr
-              and "--scale" not in r.stderr and "weight" in r.stderr,
-              f"vor {' '.join(args)}: a decimal weight: {r.returncode} {r.stderr!r}")
+    # a decimal weight: an error that sends the user to --scale, which
+    # scales weights by S^2; with it, rounded to the nearest, ties away
+    r = run(["power", "-"], "0 0 1.5\n")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: <stdin>:1: ") and "'1.5'" in r.stderr
+          and "--scale" in r.stderr, f"vor power: a decimal weight: {r.returncode} {r.stderr!r}")
+    r = run(["power", "--scale", "10", "-"], "0 0 0.015\n0 0 0.025\n0 0 -0.025\n0 0 0.02\n")
+    check(r.returncode == 0 and r.stdout == "h 0\nh 2\nd 3 0\n",
+          f"vor power --scale 10: weights 1.5, 2.5, -2.5, 2 round to 2, 3, -3, 2: {r.returncode} {r.stdout!r}")
     r = run(["power", "-"], "0 0 0\n0.5 1 0\n")
     check(r.returncode == 2 and "--scale" in r.stderr, f"vor power: a decimal coordinate suggests --scale: {r.stderr!r}")
     # usage errors
@@ -1806,6 +1877,69 @@ def power_cases(tmp):
               f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
     r = run(["power", "-"], "# nothing\n\n")
     check(r.returncode == 0 and r.stdout == "" and r.stderr == "", f"vor power of no sites: {r.returncode} {r.stderr!r}")
+
+
+def power_draw_cases(tmp):
+    """vor draw --power: the SVG parses, its cells are the brute-force power
+    cells (exact clipping with Fractions) rounded once, a circle of radius
+    sqrt(w) for each site of positive weight, a ring for each hidden site
+    (as vor power lists them), and --triangles draws vor power's triangles.
+    Its own generator, so the other sections' inputs do not move."""
+    import os
+    import shutil
+    import xml.etree.ElementTree as ET
+    if not shutil.which("xmllint"):
+        check(False, "draw --power: xmllint is needed (tools/install-deps.sh svg)")
+        return
+    ns = "{http://www.w3.org/2000/svg}"
+    rng = random.Random(2611)
+    for case in range(12):
+        n = rng.randint(1, 30)
+        sites = [(rng.randint(0, 1000), rng.randint(0, 800), rng.randint(-5000, 20000)) for _ in range(n)]
+        if case % 3 == 0:  # a grid with weights linear in the position: ties everywhere
+            sites = [(100 * (k % 5), 100 * (k // 5), 7 * (k % 5) - 3 * (k // 5)) for k in range(n)]
+        if n > 3:  # the same point with another weight, and a duplicate
+            sites += [(sites[1][0], sites[1][1], sites[1][2] + rng.choice((-900, 900))), sites[2]]
+        box = (rng.randint(-100, 300), rng.randint(-100, 300), rng.randint(400, 1100), rng.randint(400, 900))
+        path, svg = os.path.join(tmp, "power-draw.sites"), os.path.join(tmp, "power-draw.svg")
+        with open(path, "w") as f:
+            f.write("".join(f"{x} {y} {w}\n" for x, y, w in sites))
+        r = run(["draw", "--power", "--triangles", "--box", *map(str, box), path, "-o", svg], "")
+        check(r.returncode == 0 and r.stdout == "", f"draw --power case {case}: {r.returncode} {r.stderr!r}")
+        if r.returncode != 0:
+            continue
+        lint = subprocess.run(["xmllint", "--noout", svg], capture_output=True, text=True)
+        check(lint.returncode == 0 and lint.stderr == "", f"draw --power case {case}: xmllint {lint.stderr!r}")
+        first = {}
+        for k, site in enumerate(sites):
+            first.setdefault(site, k)
+        expected = []
+        for k, site in enumerate(sites):
+            cell = brute_cell(sites, k, box) if first[site] == k else []
+            if cell:
+                expected.append(("#%02x%02x%02x" % draw_colour(k),
+                                 [(round_half_up(x), round_half_up(y)) for x, y in cell]))
+        check(draw_cells(svg) == expected, f"draw --power case {case}: the cells differ from the brute force; "
+                                           f"sites {sites} box {box}")
+        ref = run(["power", path], "").stdout.splitlines()
+        hidden = {int(l.split()[1]) for l in ref if l.startswith("h ")}
+        root = ET.parse(svg).getroot()
+        rings = {(int(c.get("cx")), int(c.get("cy"))) for g in root.iter(ns + "g") if g.get("fill") == "#fff"
+                 for c in g.iter(ns + "circle")}
+        circles = sorted((int(c.get("cx")), int(c.get("cy")), round(float(c.get("r")) ** 2))
+                         for g in root.iter(ns + "g") if g.get("fill") == "none" for c in g.iter(ns + "circle"))
+        check(rings == {sites[k][:2] for k in hidden},
+              f"draw --power case {case}: rings at {sorted(rings)}, hidden {sorted(hidden)}")
+        check(circles == sorted(s for k, s in enumerate(sites) if first[s] == k and s[2] > 0),
+              f"draw --power case {case}: circles {circles}")
+        triangles = [d for p in root.iter(ns + "path") if p.get("stroke") == "#1f4fbf" for d in p.get("d").split("Z") if d]
+        check(len(triangles) == sum(l.startswith("t ") for l in ref),
+              f"draw --power case {case}: {len(triangles)} triangles drawn, vor power gives "
+              f"{sum(l.startswith('t ') for l in ref)}")
+    for args, reason in ((["draw", "--power", "--hull", "-", "-o", "-"], "no hull"),
+                         (["draw", "--power", "--cells", "-", "-o", "-"], "power")):
+        r = run(args, "0 0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and reason in r.stderr, f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
 
 
 def main():
@@ -1855,6 +1989,7 @@ def main():
         option_cases(rng, tmp)
         cdt_cases(rng, tmp)
         power_cases(tmp)
+        power_draw_cases(tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

@@ -19,35 +19,28 @@
 #define CONFIG_SITES 40u
 #define PATTERN 0xC3u
 
-static struct {
-    uint8_t before[CANARY];
-    vor_t d;
-    uint8_t after[CANARY];
-} guarded_diagram __attribute__((aligned(8)));
+/* An object the library may write, between canary bytes. */
+#define GUARDED(name, member)                                                                  \
+    static struct {                                                                            \
+        uint8_t before[CANARY];                                                                \
+        member;                                                                                \
+        uint8_t after[CANARY];                                                                 \
+    } name __attribute__((aligned(8)))
 
-static struct {
-    uint8_t before[CANARY];
-    uint8_t arena[VOR_ARENA_BYTES(CONFIG_SITES)];
-    uint8_t after[CANARY];
-} guarded_arena __attribute__((aligned(8)));
+GUARDED(guarded_diagram, vor_t d);
+GUARDED(guarded_arena, uint8_t arena[VOR_ARENA_BYTES(CONFIG_SITES)]);
+GUARDED(guarded_tracker, vor_tracker_t t);
+GUARDED(guarded_power, vor_power_t pd);
+GUARDED(guarded_power_arena, uint8_t arena[VOR_POWER_ARENA_BYTES(CONFIG_SITES)]);
 
-static struct {
-    uint8_t before[CANARY];
-    vor_tracker_t t;
-    uint8_t after[CANARY];
-} guarded_tracker __attribute__((aligned(8)));
-
-static struct {
-    uint8_t before[CANARY];
-    vor_power_t pd;
-    uint8_t after[CANARY];
-} guarded_power __attribute__((aligned(8)));
-
-static struct {
-    uint8_t before[CANARY];
-    uint8_t arena[VOR_POWER_ARENA_BYTES(CONFIG_SITES)];
-    uint8_t after[CANARY];
-} guarded_power_arena __attribute__((aligned(8)));
+/* Each guarded object: its canaries and its whole size. */
+#define GUARD(name) {name.before, name.after, sizeof name}
+static const struct {
+    uint8_t *start, *after;
+    size_t bytes;
+} guarded[] = {GUARD(guarded_diagram), GUARD(guarded_arena), GUARD(guarded_tracker),
+               GUARD(guarded_power), GUARD(guarded_power_arena)};
+#define GUARDED_COUNT (sizeof guarded / sizeof guarded[0])
 
 static void fill(void *to, size_t n)
 {
@@ -68,23 +61,26 @@ static uint32_t changed(const void *from, size_t n)
     return count;
 }
 
-static uint32_t canaries_changed(void)
+/* Bytes changed in the canaries, or (all) anywhere in the guarded objects. */
+static uint32_t guarded_changed(bool all)
 {
-    return changed(guarded_diagram.before, CANARY) + changed(guarded_diagram.after, CANARY) +
-           changed(guarded_arena.before, CANARY) + changed(guarded_arena.after, CANARY) +
-           changed(guarded_tracker.before, CANARY) + changed(guarded_tracker.after, CANARY) +
-           changed(guarded_power.before, CANARY) + changed(guarded_power.after, CANARY) +
-           changed(guarded_power_arena.before, CANARY) +
-           changed(guarded_power_arena.after, CANARY);
+    uint32_t count = 0;
+    for (size_t k = 0; k < GUARDED_COUNT; k++) {
+        if (all) {
+            count += changed(guarded[k].start, guarded[k].bytes);
+        } else {
+            count += changed(guarded[k].start, CANARY) +
+                     changed(guarded[k].after, CANARY);
+        }
+    }
+    return count;
 }
 
 void CONFIG_CASE(const char *name)
 {
-    fill(&guarded_diagram, sizeof guarded_diagram);
-    fill(&guarded_arena, sizeof guarded_arena);
-    fill(&guarded_tracker, sizeof guarded_tracker);
-    fill(&guarded_power, sizeof guarded_power);
-    fill(&guarded_power_arena, sizeof guarded_power_arena);
+    for (size_t k = 0; k < GUARDED_COUNT; k++) {
+        fill(guarded[k].start, guarded[k].bytes);
+    }
     int err = vor_init(&guarded_diagram.d, guarded_arena.arena, sizeof guarded_arena.arena,
                        CONFIG_SITES);
     CHECK(err == CONFIG_EXPECT, "%s: vor_init returned %d, expected %d", name, err,
@@ -96,11 +92,7 @@ void CONFIG_CASE(const char *name)
     if (CONFIG_EXPECT == VOR_ERR_CONFIG) {
         err = vor_tracker_begin(&guarded_tracker.t, &guarded_diagram.d);
         CHECK(err == VOR_ERR_CONFIG, "%s: vor_tracker_begin returned %d", name, err);
-        uint32_t written = changed(&guarded_diagram, sizeof guarded_diagram) +
-                           changed(&guarded_arena, sizeof guarded_arena) +
-                           changed(&guarded_tracker, sizeof guarded_tracker) +
-                           changed(&guarded_power, sizeof guarded_power) +
-                           changed(&guarded_power_arena, sizeof guarded_power_arena);
+        uint32_t written = guarded_changed(true);
         CHECK(written == 0u, "%s: a refused call wrote %u bytes", name, written);
         return;
     }
@@ -140,5 +132,6 @@ void CONFIG_CASE(const char *name)
     CHECK(vor_stats(&guarded_diagram.d, &counters) == VOR_ERR_ARG &&
               changed(&counters, sizeof counters) == 0u,
           "%s: vor_stats without VOR_STATS", name);
-    CHECK(canaries_changed() == 0u, "%s: %u canary bytes overwritten", name, canaries_changed());
+    CHECK(guarded_changed(false) == 0u, "%s: %u canary bytes overwritten", name,
+          guarded_changed(false));
 }

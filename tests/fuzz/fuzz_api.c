@@ -41,7 +41,8 @@
  * inits, inserts, builds, removals, moves, nearest sites, bad arguments,
  * each followed by power_check,
  * which decides the regular triangulation's invariants by brute force
- * over the lifted sites with fuzz_power's 768-bit determinants.
+ * over the lifted sites with fuzz_power's 768-bit determinants, and checks
+ * that the power cells tile the whole plane (power_check_cells).
  */
 #include <string.h>
 
@@ -1593,6 +1594,36 @@ static uint32_t power_pieces(const power_model_t *m, vor_point_t a, vor_point_t 
  * cell of no area: one strictly above is hidden); on one line, the sites
  * strictly above the lower chain hidden and its strict corners not. None
  * of it may change a byte. */
+/* The power cells in the whole int32 plane: every site's (a hidden one's
+ * empty), ids that are no site refused; the centroid's vertex count is
+ * the cell's, and the cells' areas, each rounded once, add up to the
+ * plane's within half a unit per cell (the exact areas tile it). */
+static void power_check_cells(const power_model_t *m, const int *hidden)
+{
+    static vor_point_t poly[VOR_CELL_MAX_VERTICES(MOST_SITES)];
+    static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(MOST_SITES))];
+    const vor_box_t plane = {INT32_MIN, INT32_MIN, INT32_MAX, INT32_MAX};
+    __int128 total = 0, cells = 0;
+    for (uint32_t i = 0; i < m->count + 2u; i++) {
+        uint32_t count = 77;
+        vor_centroid_t c;
+        int r = vor_power_cell(&m->pd, i, &plane, poly, VOR_CELL_MAX_VERTICES(MOST_SITES), &count);
+        if (!power_is_site(m, i)) {
+            FUZZ_REQUIRE(r == VOR_ERR_ARG && count == 77, "power_cell: a duplicate's or unused id accepted");
+            continue;
+        }
+        FUZZ_REQUIRE(r == VOR_OK && (hidden[i] == 0 || count == 0u), "power_cell failed, or a hidden site's cell");
+        r = vor_power_cell_centroid(&m->pd, i, &plane, scratch, sizeof scratch, &c);
+        FUZZ_REQUIRE(r == VOR_OK && c.vertices == count && (count > 0u || c.area == 0u),
+                     "power_cell_centroid failed, or another cell than power_cell's");
+        total += c.area;
+        cells += (count > 0u) ? 1 : 0;
+    }
+    __int128 side = (__int128)UINT32_MAX, gap = total - side * side;
+    FUZZ_REQUIRE(cells == 0 || 2 * (gap < 0 ? -gap : gap) <= cells,
+                 "power cells: their areas do not tile the plane");
+}
+
 static void power_check(const power_model_t *m)
 {
     vor_violation_t violation;
@@ -1696,6 +1727,7 @@ static void power_check(const power_model_t *m)
             FUZZ_REQUIRE(on, "power: a vertex in no triangle, not on the lifted surface");
         }
     }
+    power_check_cells(m, hidden);
     FUZZ_REQUIRE(power_unchanged(m), "power reads changed the object or the arena");
 }
 

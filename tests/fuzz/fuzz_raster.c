@@ -99,6 +99,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fuzz_reader_t r = {data, size, 0};
     vor_point_t previous = {0, 0}, points[MOST_POINTS];
     int32_t mult[MOST_SITES], add[MOST_SITES];
+    int64_t power[MOST_SITES];
     uint32_t offsets[MOST_SITES + 1u], areas[MOST_SITES];
     uint16_t palette565[MOST_SITES];
     uint32_t palette888[MOST_SITES];
@@ -113,7 +114,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     vor_raster_sites_t sites = {0};
     uint8_t metric = fuzz_u8(&r);
-    sites.metric = (enum vor_metric)(metric % 14u); /* 13: unknown */
+    sites.metric = (enum vor_metric)(metric % 15u); /* 14: unknown */
     sites.count = fuzz_u8(&r) % (MOST_SITES + 1u);
     uint32_t npoints = sites.metric == VOR_METRIC_SEGMENT ? 2u * sites.count : sites.count;
     int grouped = sites.metric == VOR_METRIC_HAUSDORFF || sites.metric == VOR_METRIC_POLYGON ||
@@ -123,6 +124,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         offsets[k + 1u] = offsets[k] + (grouped ? 1u + fuzz_u8(&r) % 3u : 1u);
         mult[k] = 1 + (int32_t)(fuzz_u8(&r) % 5u);
         add[k] = (int8_t)fuzz_u8(&r) * (metric & 0x40u ? 1 << 20 : 1);
+        /* power weights: small, or anywhere in int64 (the ends included) */
+        uint8_t pick = fuzz_u8(&r);
+        power[k] = pick < 128u  ? (int8_t)fuzz_u8(&r) * (int64_t)(pick % 64u + 1u)
+                   : pick < 192u ? (int64_t)((uint64_t)fuzz_u32(&r) << 32 | fuzz_u32(&r))
+                   : pick < 224u ? INT64_MIN + fuzz_u8(&r)
+                                 : INT64_MAX - fuzz_u8(&r);
         palette565[k] = (uint16_t)(0x1111u * (k + 1u));
         palette888[k] = 0x010203u * (k + 1u);
     }
@@ -133,6 +140,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     sites.points = points;
     sites.mult_weights = mult;
     sites.add_weights = add;
+    sites.power_weights = power;
     sites.offsets = offsets;
     sites.lp_exponent = fuzz_u8(&r) % 10u; /* 0 and 9: out of range */
     sites.form_a = (int8_t)fuzz_u8(&r);
@@ -140,6 +148,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     sites.form_c = (int8_t)fuzz_u8(&r);
     if (sites.metric == VOR_METRIC_POLYLINE && (metric & 0x80u))
         sites.mult_weights = NULL;
+    if (sites.metric == VOR_METRIC_POWER && (metric & 0x80u))
+        sites.power_weights = NULL; /* power needs its weights */
     if (metric & 0x20u && sites.count)
         mult[0] = (int32_t)(fuzz_u8(&r) % 2u); /* 0: a weight below 1 */
 
@@ -164,7 +174,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int euclid_entry = (memory & 4u) != 0;
 
     /* What the header promises an error for, checked here independently. */
-    int params = sites.metric <= VOR_METRIC_POLYLINE;
+    int params = sites.metric <= VOR_METRIC_POWER;
+    if (sites.metric == VOR_METRIC_POWER)
+        params = sites.power_weights != NULL;
     if (sites.metric == VOR_METRIC_LP)
         params = sites.lp_exponent >= 1u && sites.lp_exponent <= 8u;
     if (sites.metric == VOR_METRIC_ELLIPTIC)

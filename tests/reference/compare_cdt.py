@@ -14,28 +14,11 @@ the perturbation and CGAL break differently) the constrained edges, the
 vertices and the number of triangles must. Prints failures and ends with
 "N passed, N failed"; exit status 1 if anything failed.
 
-Usage: compare_cdt.py VOR CGAL_CDT [CASES]
+Usage: compare_cdt.py VOR CGAL_CDT [CASES] (tests/reference/reference_run.py)
 """
-import os
-import random
-import subprocess
-import sys
-import tempfile
+from reference_run import run
 
-VOR, CGAL = sys.argv[1], sys.argv[2]
-CASES = int(sys.argv[3]) if len(sys.argv) > 3 else 1000
 MIN, MAX = -2**31, 2**31 - 1
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        if failed <= 10:
-            print(f"FAIL {what}")
 
 
 def normalise(text):
@@ -93,35 +76,26 @@ def case_input(rng, kind):
     return sites, pairs
 
 
-def main():
-    rng = random.Random(25)
-    with tempfile.TemporaryDirectory() as tmp:
-        sp, cp = os.path.join(tmp, "s"), os.path.join(tmp, "c")
-        for case in range(CASES):
-            kind = case % 4
-            sites, pairs = case_input(rng, kind)
-            open(sp, "w").write("".join(f"{x} {y}\n" for x, y in sites))
-            open(cp, "w").write("".join(f"{a} {b}\n" for a, b in pairs))
-            v = subprocess.run([VOR, "cdt", sp, cp], capture_output=True, text=True)
-            g = subprocess.run([CGAL, sp, cp], capture_output=True, text=True)
-            check(v.returncode == 0 and g.returncode == 0,
-                  f"case {case}: vor {v.returncode} {v.stderr!r}, cgal {g.returncode} {g.stderr!r}")
-            if v.returncode or g.returncode:
-                continue
-            ours, theirs = normalise(v.stdout), set(g.stdout.splitlines())
-            if kind in (1, 3):  # ties (a grid, a symmetric star): constraints, vertices, count
-                oc = {l for l in ours if l.startswith("c ")}
-                tc = {l for l in theirs if l.startswith("c ")}
-                ov = {w for l in ours if l.startswith("t ") for w in l.split()[1:]}
-                tv = {w for l in theirs if l.startswith("t ") for w in l.split()[1:]}
-                same = oc == tc and ov == tv and len(ours) == len(theirs)
-            else:
-                same = ours == theirs
-            check(same, f"case {case} (kind {kind}): {len(ours ^ theirs)} lines differ, "
-                        f"e.g. {sorted(ours ^ theirs)[:4]}")
-    print(f"{passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+def case(ctx, number):
+    kind = number % 4
+    sites, pairs = case_input(ctx.rng, kind)
+    sp, cp = ctx.write("s", sites), ctx.write("c", pairs)
+    v, g = ctx.vor("cdt", sp, cp), ctx.cgal(sp, cp)
+    ctx.check(v.returncode == 0 and g.returncode == 0,
+              f"case {number}: vor {v.returncode} {v.stderr!r}, cgal {g.returncode} {g.stderr!r}")
+    if v.returncode or g.returncode:
+        return
+    ours, theirs = normalise(v.stdout), set(g.stdout.splitlines())
+    if kind in (1, 3):  # ties (a grid, a symmetric star): constraints, vertices, count
+        oc = {l for l in ours if l.startswith("c ")}
+        tc = {l for l in theirs if l.startswith("c ")}
+        ov = {w for l in ours if l.startswith("t ") for w in l.split()[1:]}
+        tv = {w for l in theirs if l.startswith("t ") for w in l.split()[1:]}
+        same = oc == tc and ov == tv and len(ours) == len(theirs)
+    else:
+        same = ours == theirs
+    ctx.check(same, f"case {number} (kind {kind}): {len(ours ^ theirs)} lines differ, "
+                    f"e.g. {sorted(ours ^ theirs)[:4]}")
 
 
-if __name__ == "__main__":
-    sys.exit(main())
+run(1000, 25, case)

@@ -11,28 +11,11 @@ triangulation is unique: the triangles and the hidden sites must match
 exactly. Prints failures and ends with "N passed, N failed"; exit status 1
 if anything failed.
 
-Usage: compare_power.py VOR CGAL_POWER [CASES]
+Usage: compare_power.py VOR CGAL_POWER [CASES] (tests/reference/reference_run.py)
 """
-import os
-import random
-import subprocess
-import sys
-import tempfile
+from reference_run import run
 
-VOR, CGAL = sys.argv[1], sys.argv[2]
-CASES = int(sys.argv[3]) if len(sys.argv) > 3 else 400
 MIN, MAX = -2**31, 2**31 - 1
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        if failed <= 10:
-            print(f"FAIL {what}")
 
 
 def case_input(rng, kind):
@@ -55,41 +38,34 @@ def case_input(rng, kind):
     return sites
 
 
-def main():
-    rng = random.Random(26)
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "sites")
-        for case in range(CASES):
-            kind = case % 4
-            sites = case_input(rng, kind)
-            with open(path, "w") as f:
-                f.writelines(f"{x} {y} {w}\n" for x, y, w in sites)
-            ours = subprocess.run([VOR, "power", path], capture_output=True, text=True)
-            theirs = subprocess.run([CGAL, path], capture_output=True, text=True)
-            check(ours.returncode == 0 and ours.stderr == "", f"case {case}: vor power {ours.returncode} {ours.stderr!r}")
-            check(theirs.returncode == 0, f"case {case}: cgal-power {theirs.returncode} {theirs.stderr!r}")
-            ours_lines = [l for l in ours.stdout.splitlines() if not l.startswith("d ")]
-            dups = {}
-            for line in ours.stdout.splitlines():
-                if line.startswith("d "):
-                    _, i, j = line.split()
-                    dups[int(i)] = int(j)
-            first = {}
-            expected_dups = {}
-            for i, s in enumerate(sites):
-                if s in first:
-                    expected_dups[i] = first[s]
-                else:
-                    first[s] = i
-            check(dups == expected_dups, f"case {case} (kind {kind}): duplicates differ")
-            same = ours_lines == theirs.stdout.splitlines()
-            check(same, f"case {case} (kind {kind}): output differs from CGAL "
-                        f"({len(ours_lines)} lines, CGAL {len(theirs.stdout.splitlines())})")
-            hidden = sum(1 for l in ours_lines if l.startswith("h "))
-            check(kind == 2 or hidden > 0 or len(sites) < 10 or kind == 3,
-                  f"case {case} (kind {kind}): no hidden site")
-    print(f"{passed} passed, {failed} failed")
-    return 1 if failed else 0
+def case(ctx, number):
+    kind = number % 4
+    sites = case_input(ctx.rng, kind)
+    path = ctx.write("sites", sites)
+    ours, theirs = ctx.vor("power", path), ctx.cgal(path)
+    ctx.check(ours.returncode == 0 and ours.stderr == "",
+              f"case {number}: vor power {ours.returncode} {ours.stderr!r}")
+    ctx.check(theirs.returncode == 0, f"case {number}: cgal-power {theirs.returncode} {theirs.stderr!r}")
+    ours_lines = [l for l in ours.stdout.splitlines() if not l.startswith("d ")]
+    dups = {}
+    for line in ours.stdout.splitlines():
+        if line.startswith("d "):
+            _, i, j = line.split()
+            dups[int(i)] = int(j)
+    first = {}
+    expected_dups = {}
+    for i, s in enumerate(sites):
+        if s in first:
+            expected_dups[i] = first[s]
+        else:
+            first[s] = i
+    ctx.check(dups == expected_dups, f"case {number} (kind {kind}): duplicates differ")
+    same = ours_lines == theirs.stdout.splitlines()
+    ctx.check(same, f"case {number} (kind {kind}): output differs from CGAL "
+                    f"({len(ours_lines)} lines, CGAL {len(theirs.stdout.splitlines())})")
+    hidden = sum(1 for l in ours_lines if l.startswith("h "))
+    ctx.check(kind == 2 or hidden > 0 or len(sites) < 10 or kind == 3,
+              f"case {number} (kind {kind}): no hidden site")
 
 
-sys.exit(main())
+run(400, 26, case)

@@ -99,16 +99,76 @@ static void crossing_point(vor_point_t a, vor_point_t b, vor_point_t c, vor_poin
     *w /= g;
 }
 
-/* Does the point X / W lie on the closed segment a-b? */
+/* 256-bit two's complement integers: on_segment's products reach 2^131
+ * (a difference of coordinates below 2^33 times w (P - a) below 2^98). */
+typedef struct big {
+    uint64_t limb[4];
+} big_t;
+
+static big_t big_negate(big_t a)
+{
+    big_t r;
+    unsigned carry = 1;
+    for (unsigned k = 0; k < 4u; k++) {
+        r.limb[k] = ~a.limb[k] + carry;
+        carry = (carry != 0u) && (r.limb[k] == 0u);
+    }
+    return r;
+}
+
+static big_t big_add(big_t a, big_t b)
+{
+    big_t r;
+    uint64_t carry = 0;
+    for (unsigned k = 0; k < 4u; k++) {
+        uwide_t t = (uwide_t)a.limb[k] + b.limb[k] + carry;
+        r.limb[k] = (uint64_t)t;
+        carry = (uint64_t)(t >> 64);
+    }
+    return r;
+}
+
+/* a b exactly (|a|, |b| < 2^127). */
+static big_t big_product(wide_t a, wide_t b)
+{
+    uwide_t ma = (a < 0) ? -(uwide_t)a : (uwide_t)a, mb = (b < 0) ? -(uwide_t)b : (uwide_t)b;
+    uint64_t x[2] = {(uint64_t)ma, (uint64_t)(ma >> 64)}, y[2] = {(uint64_t)mb, (uint64_t)(mb >> 64)};
+    big_t r = {{0, 0, 0, 0}};
+    for (unsigned i = 0; i < 2u; i++) {
+        for (unsigned j = 0; j < 2u; j++) {
+            uwide_t t = (uwide_t)x[i] * y[j];
+            big_t part = {{0, 0, 0, 0}};
+            part.limb[i + j] = (uint64_t)t;
+            part.limb[i + j + 1u] = (uint64_t)(t >> 64);
+            r = big_add(r, part);
+        }
+    }
+    return ((a < 0) != (b < 0)) ? big_negate(r) : r;
+}
+
+/* The sign of a - b. */
+static int big_compare(big_t a, big_t b)
+{
+    big_t d = big_add(a, big_negate(b));
+    if ((d.limb[3] >> 63) != 0u) {
+        return -1;
+    }
+    return ((d.limb[0] | d.limb[1] | d.limb[2] | d.limb[3]) != 0u) ? 1 : 0;
+}
+
+/* Does the point X / W lie on the closed segment a-b? Exactly: w (P - a)
+ * is collinear with b - a, and its projection on b - a lies between 0 and
+ * w |b - a|^2. */
 static bool on_segment(vor_point_t a, vor_point_t b, wide_t x, wide_t y, wide_t w)
 {
     wide_t ux = (wide_t)b.x - a.x, uy = (wide_t)b.y - a.y;
-    wide_t px = x - (wide_t)a.x * w, py = y - (wide_t)a.y * w; /* w (P - a) */
-    if (ux * py - uy * px != 0) { /* |.| < 2^33 2^98: within 127 bits */
+    wide_t px = x - (wide_t)a.x * w, py = y - (wide_t)a.y * w; /* w (P - a), below 2^98 */
+    if (big_compare(big_product(ux, py), big_product(uy, px)) != 0) {
         return false;
     }
-    wide_t along = ux * px + uy * py; /* w (P - a).(b - a) */
-    return along >= 0 && along <= (ux * ux + uy * uy) * w;
+    big_t along = big_add(big_product(ux, px), big_product(uy, py)); /* w (P - a).(b - a) */
+    big_t zero = {{0, 0, 0, 0}};
+    return big_compare(along, zero) >= 0 && big_compare(along, big_product(ux * ux + uy * uy, w)) <= 0;
 }
 
 static int compare_pairs(const void *p, const void *q)

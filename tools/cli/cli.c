@@ -448,20 +448,6 @@ bool cli_int32_field(const char **cursor, int32_t *value, const char **why)
     return true;
 }
 
-bool cli_int64_field(const char **cursor, int64_t *value, const char **why)
-{
-    bool negative;
-    unsigned long long magnitude;
-    /* a weight: --scale scales only the coordinates, so it is no remedy */
-    if (!integer_field(cursor, 9223372036854775807ull, "out of int64 range", "missing weight",
-                       "not a decimal integer (a weight is an integer, never scaled)", &negative,
-                       &magnitude, why)) {
-        return false;
-    }
-    *value = negative ? (int64_t)(0u - magnitude) : (int64_t)magnitude;
-    return true;
-}
-
 /* An exact decimal: (-1)^negative * digits * 10^exponent, digits[0] the
  * most significant, no leading or trailing zeros (count 0: the value 0). */
 #define DECIMAL_DIGITS 100
@@ -552,17 +538,20 @@ void cli_set_scale(const char *text)
     scaled = true;
 }
 
-bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why)
+/* A decimal field times scale^factors (1: a coordinate, 2: a squared
+ * length), rounded to the nearest integer, ties away from zero, computed
+ * exactly on digit strings; its magnitude at most `most` (negative:
+ * most + 1), else *why names `range`. */
+static bool scaled_field(const char **cursor, unsigned factors, unsigned long long most,
+                         const char *range, const char *missing, bool *negative_out,
+                         unsigned long long *magnitude_out, const char **why)
 {
-    if (!scaled) {
-        return cli_int32_field(cursor, value, why);
-    }
     const char *p = *cursor;
     while (*p != '\0' && is_blank(*p)) {
         p++;
     }
     if (*p == '\0') {
-        *why = "missing coordinate";
+        *why = missing;
         return false;
     }
     const char *field = p;
@@ -572,55 +561,102 @@ bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why)
         return false;
     }
     /* the exact product of the digit strings, least significant first */
-    uint8_t product[2 * DECIMAL_DIGITS + 1];
-    unsigned length = v.count + scale.count;
+    uint8_t product[3 * DECIMAL_DIGITS + 1], next[3 * DECIMAL_DIGITS + 1];
+    unsigned length = v.count;
+    long exponent = v.exponent;
     memset(product, 0, sizeof product);
     for (unsigned i = 0; i < v.count; i++) {
-        unsigned carry = 0;
-        unsigned a = v.digits[v.count - 1u - i];
-        for (unsigned j = 0; j < scale.count; j++) {
-            unsigned t = product[i + j] + a * scale.digits[scale.count - 1u - j] + carry;
-            product[i + j] = (uint8_t)(t % 10u);
-            carry = t / 10u;
+        product[i] = v.digits[v.count - 1u - i];
+    }
+    for (unsigned f = 0; f < factors; f++) {
+        memset(next, 0, sizeof next);
+        for (unsigned i = 0; i < length; i++) {
+            unsigned carry = 0;
+            unsigned a = product[i];
+            for (unsigned j = 0; j < scale.count; j++) {
+                unsigned t = next[i + j] + a * scale.digits[scale.count - 1u - j] + carry;
+                next[i + j] = (uint8_t)(t % 10u);
+                carry = t / 10u;
+            }
+            for (unsigned k = i + scale.count; carry != 0; k++) {
+                unsigned t = next[k] + carry;
+                next[k] = (uint8_t)(t % 10u);
+                carry = t / 10u;
+            }
         }
-        for (unsigned k = i + scale.count; carry != 0; k++) {
-            unsigned t = product[k] + carry;
-            product[k] = (uint8_t)(t % 10u);
-            carry = t / 10u;
-        }
+        memcpy(product, next, sizeof product);
+        length += scale.count;
+        exponent += scale.exponent;
     }
     /* value = product * 10^exponent; ties away from zero need only the first
-     * digit after the point: 5 or more rounds the magnitude up */
-    long exponent = v.exponent + scale.exponent;
-    const unsigned long long limit = v.negative ? 2147483648ull : 2147483647ull;
+     * digit after the point: 5 or more rounds the magnitude up. The checks
+     * come before each step, so the magnitude never overflows. */
+    const unsigned long long limit = v.negative ? most + 1u : most;
     unsigned long long magnitude = 0;
     for (long i = (long)length - 1; i >= 0; i--) {
         if (i + exponent < 0) {
             break;
         }
-        magnitude = magnitude * 10u + product[i];
-        if (magnitude > limit) {
-            *why = quote_field("out of int32 range after --scale", field);
+        if (magnitude > (limit - product[i]) / 10u) {
+            *why = quote_field(range, field);
             return false;
         }
+        magnitude = magnitude * 10u + product[i];
     }
     for (long k = 0; k < exponent && magnitude != 0; k++) {
-        magnitude *= 10u;
-        if (magnitude > limit) {
-            *why = quote_field("out of int32 range after --scale", field);
+        if (magnitude > limit / 10u) {
+            *why = quote_field(range, field);
             return false;
         }
+        magnitude *= 10u;
     }
     long first_fraction = -1 - exponent;
     if (first_fraction >= 0 && first_fraction < (long)length && product[first_fraction] >= 5u) {
-        magnitude++;
-        if (magnitude > limit) {
-            *why = quote_field("out of int32 range after --scale", field);
+        if (magnitude == limit) {
+            *why = quote_field(range, field);
             return false;
         }
+        magnitude++;
     }
-    *value = v.negative ? (int32_t)(-(long long)magnitude) : (int32_t)magnitude;
+    *negative_out = v.negative;
+    *magnitude_out = magnitude;
     *cursor = end;
+    return true;
+}
+
+bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why)
+{
+    if (!scaled) {
+        return cli_int32_field(cursor, value, why);
+    }
+    bool negative;
+    unsigned long long magnitude;
+    if (!scaled_field(cursor, 1, 2147483647ull, "out of int32 range after --scale",
+                      "missing coordinate", &negative, &magnitude, why)) {
+        return false;
+    }
+    *value = negative ? (int32_t)(-(long long)magnitude) : (int32_t)magnitude;
+    return true;
+}
+
+bool cli_squared_field(const char **cursor, int64_t *value, const char **why)
+{
+    bool negative;
+    unsigned long long magnitude;
+    if (!scaled) {
+        if (!integer_field(cursor, 9223372036854775807ull, "out of int64 range", "missing weight",
+                           "not a decimal integer (use --scale S for decimal weights)", &negative,
+                           &magnitude, why)) {
+            return false;
+        }
+        *value = negative ? (int64_t)(0u - magnitude) : (int64_t)magnitude;
+        return true;
+    }
+    if (!scaled_field(cursor, 2, 9223372036854775807ull, "out of int64 range after --scale",
+                      "missing weight", &negative, &magnitude, why)) {
+        return false;
+    }
+    *value = negative ? (int64_t)(0u - magnitude) : (int64_t)magnitude;
     return true;
 }
 

@@ -13,6 +13,7 @@
 #include <stdio.h>
 
 #include "vor.h"
+#include "vor_power.h"
 
 /* Input read line by line; a UTF-8 byte-order mark opening the input is
  * dropped, blank lines and lines starting with '#' are skipped, and line
@@ -46,15 +47,16 @@ const char *cli_next_line(cli_input_t *in);
  * *why then says which, quoting the field (valid until the next call). */
 bool cli_int32_field(const char **cursor, int32_t *value, const char **why);
 
-/* cli_int32_field for an int64 field (a weight): its errors name a
- * missing weight, and a decimal one is not sent to --scale (which scales
- * only the coordinates). */
-bool cli_int64_field(const char **cursor, int64_t *value, const char **why);
-
 /* Like cli_int32_field for a coordinate (or a distance in the same units):
  * after cli_set_scale, a decimal number times the scale, rounded to the
  * nearest integer, ties away from zero, computed exactly. */
 bool cli_coordinate_field(const char **cursor, int32_t *value, const char **why);
+
+/* A decimal int64 for a squared length (a power weight, the square of a
+ * radius): after cli_set_scale, a decimal number times the scale squared,
+ * rounded to the nearest integer, ties away from zero, computed exactly,
+ * so that the weights scale with the coordinates. */
+bool cli_squared_field(const char **cursor, int64_t *value, const char **why);
 
 /* Sets the scale of cli_coordinate_field from the text of --scale S (a
  * positive decimal); exits with status 2 when it is not one. */
@@ -213,5 +215,19 @@ uint32_t (*cli_read_constraints(const char *path, const uint32_t *first, uint32_
 void *cli_constrain_all(vor_t *d, uint32_t capacity, uint32_t (*pairs)[2], size_t count,
                         uint32_t *crossings);
 void cli_crossing_point(const vor_point_t *sites, const uint32_t s[4], double *x, double *y);
+
+/* vor power's parts, for vor draw --power too (power.c): the weighted
+ * sites of a file ("x y w" lines, coordinates by cli_coordinate_field, w
+ * by cli_squared_field) and their power diagram, built in a malloc'd arena
+ * that it returns for the caller to free, with duplicate_of (malloc'd,
+ * at least one entry) as vor_power_build gives it; exits with status 2 on
+ * a bad line or a failure. */
+typedef struct cli_weighted {
+    vor_point_t *points;
+    int64_t *weights;
+    uint32_t n;
+    uint32_t *duplicate_of;
+} cli_weighted_t;
+void *cli_power_diagram(const char *path, vor_power_t *pd, cli_weighted_t *sites);
 
 #endif

@@ -2,6 +2,8 @@
 /*
  * vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull]
  *          [--y-down] SITES -o OUT.svg
+ * vor draw --power [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids]
+ *          [--y-down] SITES -o OUT.svg
  * vor draw --cells DUMP -o OUT.svg
  *
  * An SVG picture of the Voronoi diagram of SITES (counted like
@@ -34,6 +36,12 @@
  * vertices as squares (at their exact point rounded to a thousandth);
  * --domain draws only the triangles inside the constraints, shaded.
  *
+ * --power reads weighted sites ("x y w", as `vor power`) and draws their
+ * power diagram: every power cell clipped to the box (vor_power_cell), a
+ * circle of radius sqrt(w) around each site of positive weight, the
+ * vertices as dots and the hidden sites as rings; --triangles adds the
+ * regular triangulation.
+ *
  * --cells DUMP draws what a firmware computed (examples/voronoi streams it
  * to build/demo.cells): lines "box X0 Y0 X1 Y1" (first), "s X Y" (site i
  * is the i-th s line) and "c I M X1 Y1 ... XM YM" (as `vor cells`).
@@ -48,6 +56,8 @@
 #define USAGE                                                                                      \
     "usage: vor draw [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--hull] [--y-down]\n" \
     "                [--constraints FILE [--domain]] SITES -o OUT.svg\n"                            \
+    "       vor draw --power [--box X0 Y0 X1 Y1] [--size W H] [--triangles] [--ids] [--y-down]\n"     \
+    "                SITES -o OUT.svg\n"                                                            \
     "       vor draw [--y-down] --cells DUMP -o OUT.svg"
 
 const char cli_draw_help[] =
@@ -58,7 +68,10 @@ const char cli_draw_help[] =
     "and the sites; --triangles adds the Delaunay triangles, --ids the site\n"
     "ids, --hull the convex hull; --constraints FILE the constrained\n"
     "triangulation (as vor cdt: constraints thick, crossing vertices as\n"
-    "squares), --domain only its triangles inside them, shaded.\n"
+    "squares), --domain only its triangles inside them, shaded. --power: the\n"
+    "power diagram of weighted sites (\"x y w\", as vor power): power cells,\n"
+    "circles of radius sqrt(w), hidden sites as rings; --triangles the\n"
+    "regular triangulation.\n"
     "y points up, as in the library and in\n"
     "`vor raster --png`; --y-down draws in screen order (y = Y0 at the top).\n"
     "\n"
@@ -224,6 +237,35 @@ static void add_sites(drawing_t *g, const vor_point_t *sites, uint32_t n, const 
     cli_append(&g->svg, "</g>\n");
 }
 
+/* The site ids as labels, each flipped back upright about its own site
+ * (y up). */
+static void add_ids(drawing_t *g, const vor_point_t *sites, uint32_t n, const uint32_t *duplicate_of)
+{
+    cli_append(&g->svg, "<g font-family=\"sans-serif\" font-size=\"%.4g\" fill=\"#000\">\n", 10 * g->unit);
+    for (uint32_t i = 0; i < n; i++) {
+        if (duplicate_of[i] == i) {
+            cli_append(&g->svg, "<text transform=\"translate(%d %d)%s\" dx=\"%.4g\">%u</text>\n", sites[i].x,
+                       sites[i].y, g->y_down ? "" : " scale(1 -1)", 2 * g->unit, i);
+        }
+    }
+    cli_append(&g->svg, "</g>\n");
+}
+
+/* The triangles an iterator yields, thin (the Delaunay or the regular
+ * triangulation). */
+static void add_triangles(drawing_t *g, vor_triangle_iter_t *t, const vor_point_t *sites)
+{
+    stroke_t stroke;
+    stroke_begin(&stroke, &g->svg, "#1f4fbf", 0.5 * g->unit);
+    uint32_t abc[3];
+    while (vor_triangles_next(t, abc)) {
+        stroke_piece(&stroke);
+        cli_append(&g->svg, "M%d %dL%d %dL%d %dZ", sites[abc[0]].x, sites[abc[0]].y, sites[abc[1]].x,
+                   sites[abc[1]].y, sites[abc[2]].x, sites[abc[2]].y);
+    }
+    stroke_end(&stroke);
+}
+
 /* Writes the finished picture to path ("-": stdout), only now that
  * everything succeeded, so a failure leaves no partial file. */
 static void write_svg(drawing_t *g, const char *path)
@@ -367,17 +409,9 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
         draw_constrained(g, &d, sites, domain);
     }
     if (triangles && (constraints == NULL)) {
-        stroke_t stroke;
-        stroke_begin(&stroke, &g->svg, "#1f4fbf", 0.5 * g->unit);
         vor_triangle_iter_t t;
         vor_triangles_begin(&t, &d);
-        uint32_t abc[3];
-        while (vor_triangles_next(&t, abc)) {
-            stroke_piece(&stroke);
-            cli_append(&g->svg, "M%d %dL%d %dL%d %dZ", sites[abc[0]].x, sites[abc[0]].y, sites[abc[1]].x,
-                       sites[abc[1]].y, sites[abc[2]].x, sites[abc[2]].y);
-        }
-        stroke_end(&stroke);
+        add_triangles(g, &t, sites);
     }
     if (hull) {
         /* one side a piece, from each hull site to the next, closing at the first */
@@ -400,21 +434,82 @@ static void draw_diagram(drawing_t *g, uint32_t width, uint32_t height, const vo
     }
     add_sites(g, sites, n, duplicate_of);
     if (ids) {
-        /* each label flipped back upright about its own site (y up) */
-        cli_append(&g->svg, "<g font-family=\"sans-serif\" font-size=\"%.4g\" fill=\"#000\">\n", 10 * g->unit);
-        for (uint32_t i = 0; i < n; i++) {
-            if (duplicate_of[i] == i) {
-                cli_append(&g->svg, "<text transform=\"translate(%d %d)%s\" dx=\"%.4g\">%u</text>\n",
-                           sites[i].x, sites[i].y, g->y_down ? "" : " scale(1 -1)", 2 * g->unit, i);
-            }
-        }
-        cli_append(&g->svg, "</g>\n");
+        add_ids(g, sites, n, duplicate_of);
     }
     free(pairs);
     free(memory);
     free(vertices);
     free(duplicate_of);
     free(arena);
+}
+
+/* sqrt(v) for v >= 1 by Newton's iteration from above (no libm): it
+ * decreases until it stops changing, at most about 40 steps for v < 2^63. */
+static double square_root(double v)
+{
+    double x = v, next = 0.5 * (v + 1.0);
+    while (next < x) {
+        x = next;
+        next = 0.5 * (x + v / x);
+    }
+    return x;
+}
+
+/* The power diagram of weighted sites (--power). */
+static void draw_power(drawing_t *g, uint32_t width, uint32_t height, const vor_power_t *pd,
+                       const cli_weighted_t *ws, bool triangles, bool ids)
+{
+    const vor_point_t *sites = ws->points;
+    uint32_t n = ws->n;
+    vor_point_t *vertices = malloc((size_t)VOR_CELL_MAX_VERTICES(n) * sizeof *vertices);
+    if (vertices == NULL) {
+        cli_error("out of memory");
+    }
+    begin_svg(g, width, height);
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t count;
+        if (ws->duplicate_of[i] != i) {
+            continue;
+        }
+        int err = vor_power_cell(pd, i, &g->box, vertices, VOR_CELL_MAX_VERTICES(n), &count);
+        if (err != VOR_OK) {
+            cli_library_error("vor_power_cell", err);
+        }
+        add_cell(g, i, vertices, count);
+    }
+    end_cells(g);
+    if (triangles) {
+        vor_triangle_iter_t t;
+        vor_power_triangles_begin(&t, pd);
+        add_triangles(g, &t, sites);
+    }
+    /* the circles |q - p|^2 = w, and the hidden sites as rings */
+    cli_append(&g->svg, "<g fill=\"none\" stroke=\"#404040\" stroke-width=\"%.4g\">\n", 0.5 * g->unit);
+    for (uint32_t i = 0; i < n; i++) {
+        if (ws->duplicate_of[i] == i && ws->weights[i] > 0) {
+            cli_append(&g->svg, "<circle cx=\"%d\" cy=\"%d\" r=\"%.17g\"/>\n", sites[i].x, sites[i].y,
+                       square_root((double)ws->weights[i]));
+        }
+    }
+    cli_append(&g->svg, "</g>\n<g fill=\"#fff\" stroke=\"#000\" stroke-width=\"%.4g\">\n", 0.75 * g->unit);
+    for (uint32_t i = 0; i < n; i++) {
+        if (ws->duplicate_of[i] == i && vor_power_hidden(pd, i) == 1) {
+            cli_append(&g->svg, "<circle cx=\"%d\" cy=\"%d\" r=\"%.4g\"/>\n", sites[i].x, sites[i].y,
+                       2 * g->unit);
+        }
+    }
+    cli_append(&g->svg, "</g>\n<g fill=\"#000\">\n");
+    for (uint32_t i = 0; i < n; i++) {
+        if (ws->duplicate_of[i] == i && vor_power_hidden(pd, i) == 0) {
+            cli_append(&g->svg, "<circle cx=\"%d\" cy=\"%d\" r=\"%.4g\"/>\n", sites[i].x, sites[i].y,
+                       1.5 * g->unit);
+        }
+    }
+    cli_append(&g->svg, "</g>\n");
+    if (ids) {
+        add_ids(g, sites, n, ws->duplicate_of);
+    }
+    free(vertices);
 }
 
 /* Reads the next int32 of a dump line or fails with the line number. */
@@ -500,14 +595,15 @@ int cli_draw(int argc, char **argv)
     drawing_t g;
     memset(&g, 0, sizeof g);
     bool have_box = false, have_size = false, triangles = false, ids = false, hull = false, domain = false;
+    bool power = false;
     const char *constraints = NULL;
     int32_t width = DEFAULT_WIDTH, height = 0;
     const char *sites_path = NULL, *dump_path = NULL, *out_path = NULL;
-    enum { BOX, SIZE, TRIANGLES, IDS, HULL, Y_DOWN, CELLS, OUT, CONSTRAINTS, DOMAIN };
+    enum { BOX, SIZE, TRIANGLES, IDS, HULL, Y_DOWN, CELLS, OUT, CONSTRAINTS, DOMAIN, POWER };
     static const cli_option_t options[] = {
         [BOX] = {"--box", 4}, [SIZE] = {"--size", 2},     [TRIANGLES] = {"--triangles", 0}, [IDS] = {"--ids", 0},
         [HULL] = {"--hull", 0}, [Y_DOWN] = {"--y-down", 0}, [CELLS] = {"--cells", 1},       [OUT] = {"-o", 1},
-        [CONSTRAINTS] = {"--constraints", 1}, [DOMAIN] = {"--domain", 0}};
+        [CONSTRAINTS] = {"--constraints", 1}, [DOMAIN] = {"--domain", 0}, [POWER] = {"--power", 0}};
     cli_arguments_t args;
     cli_arguments_begin(&args, argc, argv, "draw", USAGE, options, sizeof options / sizeof options[0]);
     for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
@@ -539,6 +635,8 @@ int cli_draw(int argc, char **argv)
             constraints = v[0];
         } else if (o == DOMAIN) {
             domain = true;
+        } else if (o == POWER) {
+            power = true;
         } else if (o == OUT) {
             out_path = v[0];
         } else if (sites_path == NULL) {
@@ -554,8 +652,8 @@ int cli_draw(int argc, char **argv)
         cli_usage_error("draw", USAGE, "give either SITES or --cells DUMP", NULL);
     }
     if (dump_path != NULL) {
-        if (have_box || triangles || ids || hull || (constraints != NULL) || domain) {
-            cli_error("--cells takes its box from the dump and has no triangles, ids, hull or constraints");
+        if (have_box || triangles || ids || hull || (constraints != NULL) || domain || power) {
+            cli_error("--cells takes its box from the dump and has no triangles, ids, hull, constraints or power");
         }
         draw_dump(&g, (uint32_t)width, have_size, (uint32_t)height, dump_path);
         write_svg(&g, out_path);
@@ -567,8 +665,21 @@ int cli_draw(int argc, char **argv)
     if (have_box && (g.box.x0 >= g.box.x1 || g.box.y0 >= g.box.y1)) {
         cli_error("--box: need X0 < X1 and Y0 < Y1");
     }
+    if (power && (hull || (constraints != NULL))) {
+        cli_error("--power draws no hull and no constraints");
+    }
     uint32_t n;
-    vor_point_t *sites = cli_read_sites(sites_path, &n);
+    vor_power_t pd;
+    cli_weighted_t weighted = {NULL, NULL, 0, NULL};
+    void *power_arena = NULL;
+    vor_point_t *sites;
+    if (power) {
+        power_arena = cli_power_diagram(sites_path, &pd, &weighted);
+        sites = weighted.points;
+        n = weighted.n;
+    } else {
+        sites = cli_read_sites(sites_path, &n);
+    }
     if (n == 0) {
         fprintf(stderr, "error: %s: no sites\n", sites_path);
         exit(2);
@@ -581,7 +692,14 @@ int cli_draw(int argc, char **argv)
         double h = (double)width * aspect + 0.5;
         height = h < 1 ? 1 : h > MAX_PIXELS ? MAX_PIXELS : (int32_t)h;
     }
-    draw_diagram(&g, (uint32_t)width, (uint32_t)height, sites, n, triangles, ids, hull, constraints, domain);
+    if (power) {
+        draw_power(&g, (uint32_t)width, (uint32_t)height, &pd, &weighted, triangles, ids);
+        free(power_arena);
+        free(weighted.weights);
+        free(weighted.duplicate_of);
+    } else {
+        draw_diagram(&g, (uint32_t)width, (uint32_t)height, sites, n, triangles, ids, hull, constraints, domain);
+    }
     free(sites);
     write_svg(&g, out_path);
     return 0;

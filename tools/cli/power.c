@@ -5,6 +5,8 @@
  * The regular triangulation (dual of the power diagram) of the weighted
  * sites in SITES, "x y w" lines: "t I J K" per triangle, "h I" per hidden
  * site, "d I J" per site that repeats an earlier one (point and weight).
+ * --scale S scales the coordinates by S and the weights, squared radii,
+ * by S^2 (cli_squared_field), so that the diagram scales with them.
  */
 #include <stdlib.h>
 
@@ -21,8 +23,10 @@ const char cli_power_help[] =
     "\n"
     "input:  one site per line, \"x y w\" or \"x,y,w\" (CSV, optional header);\n"
     "        x and y decimal int32 (or decimal numbers with --scale S, as for\n"
-    "        vor delaunay), w a decimal int64 (not scaled); blank and '#' lines\n"
-    "        skipped; site i is the i-th site line, from 0.\n"
+    "        vor delaunay), w a decimal int64 (a squared radius: with --scale\n"
+    "        S, a decimal number times S^2, as vor raster --metric power reads\n"
+    "        it); blank and '#' lines skipped; site i is the i-th site line,\n"
+    "        from 0.\n"
     "output: \"t i j k\" per triangle, counterclockwise, from its smallest id,\n"
     "        sorted; then \"h i\" per hidden site (its power cell is empty),\n"
     "        sorted; then \"d i j\" per site i with the point and weight of an\n"
@@ -36,20 +40,20 @@ const char cli_power_help[] =
     "  t 0 3 2\n"
     "  h 4\n";
 
-static void read_weighted(const char *path, vor_point_t **points, int64_t **weights, uint32_t *count)
+static void read_weighted(const char *path, cli_weighted_t *sites)
 {
     cli_input_t in;
     cli_open(&in, path);
     size_t n = 0, capacity = 0;
-    *points = NULL;
-    *weights = NULL;
+    sites->points = NULL;
+    sites->weights = NULL;
     for (const char *line; (line = cli_next_line(&in)) != NULL;) {
         vor_point_t p;
         int64_t w;
         const char *why = NULL;
         const char *cursor = line;
         if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
-            !cli_int64_field(&cursor, &w, &why)) {
+            !cli_squared_field(&cursor, &w, &why)) {
             char reason[300];
             snprintf(reason, sizeof reason, "%s (expected x y w or x,y,w)", why);
             cli_line_error(&in, reason);
@@ -62,18 +66,39 @@ static void read_weighted(const char *path, vor_point_t **points, int64_t **weig
         }
         if (n == capacity) {
             capacity = (capacity != 0u) ? 2u * capacity : 1024u;
-            *points = realloc(*points, capacity * sizeof **points);
-            *weights = realloc(*weights, capacity * sizeof **weights);
-            if ((*points == NULL) || (*weights == NULL)) {
+            sites->points = realloc(sites->points, capacity * sizeof *sites->points);
+            sites->weights = realloc(sites->weights, capacity * sizeof *sites->weights);
+            if ((sites->points == NULL) || (sites->weights == NULL)) {
                 cli_error("out of memory");
             }
         }
-        (*points)[n] = p;
-        (*weights)[n] = w;
+        sites->points[n] = p;
+        sites->weights[n] = w;
         n++;
     }
     cli_close(&in);
-    *count = (uint32_t)n;
+    sites->n = (uint32_t)n;
+}
+
+void *cli_power_diagram(const char *path, vor_power_t *pd, cli_weighted_t *sites)
+{
+    read_weighted(path, sites);
+    uint32_t capacity = (sites->n < 1u) ? 1u : sites->n;
+    sites->duplicate_of = malloc((size_t)capacity * sizeof *sites->duplicate_of);
+    size_t bytes = VOR_POWER_ARENA_BYTES(capacity);
+    void *arena = malloc(bytes); /* malloc's alignment is VOR_POWER_ARENA_ALIGN's at least */
+    if ((sites->duplicate_of == NULL) || (arena == NULL)) {
+        cli_error("out of memory");
+    }
+    int err = vor_power_init(pd, arena, bytes, capacity);
+    if (err != VOR_OK) {
+        cli_library_error("vor_power_init", err);
+    }
+    err = vor_power_build(pd, sites->points, sites->weights, sites->n, sites->duplicate_of);
+    if (err != VOR_OK) {
+        cli_library_error("vor_power_build", err);
+    }
+    return arena;
 }
 
 int cli_power(int argc, char **argv)
@@ -95,26 +120,10 @@ int cli_power(int argc, char **argv)
     if (path == NULL) {
         cli_usage_error("power", USAGE, "missing SITES", NULL);
     }
-    vor_point_t *points;
-    int64_t *weights;
-    uint32_t n;
-    read_weighted(path, &points, &weights, &n);
-    uint32_t capacity = (n < 1u) ? 1u : n;
-    uint32_t *duplicate_of = malloc((size_t)capacity * sizeof *duplicate_of);
-    size_t bytes = VOR_POWER_ARENA_BYTES(capacity);
-    void *arena = malloc(bytes); /* malloc's alignment is VOR_POWER_ARENA_ALIGN's at least */
-    if ((duplicate_of == NULL) || (arena == NULL)) {
-        cli_error("out of memory");
-    }
     vor_power_t pd;
-    int err = vor_power_init(&pd, arena, bytes, capacity);
-    if (err != VOR_OK) {
-        cli_library_error("vor_power_init", err);
-    }
-    err = vor_power_build(&pd, points, weights, n, duplicate_of);
-    if (err != VOR_OK) {
-        cli_library_error("vor_power_build", err);
-    }
+    cli_weighted_t sites;
+    void *arena = cli_power_diagram(path, &pd, &sites);
+    uint32_t n = sites.n, capacity = (n < 1u) ? 1u : n;
     cli_output_t out = {NULL, 0, 0};
     vor_triangle_iter_t it;
     (void)vor_power_triangles_begin(&it, &pd);
@@ -125,14 +134,14 @@ int cli_power(int argc, char **argv)
         }
     }
     for (uint32_t i = 0; i < n; i++) {
-        if (duplicate_of[i] != i) {
-            cli_append(&out, "d %u %u\n", i, duplicate_of[i]);
+        if (sites.duplicate_of[i] != i) {
+            cli_append(&out, "d %u %u\n", i, sites.duplicate_of[i]);
         }
     }
     cli_flush(&out);
     free(arena);
-    free(duplicate_of);
-    free(weights);
-    free(points);
+    free(sites.duplicate_of);
+    free(sites.weights);
+    free(sites.points);
     return 0;
 }

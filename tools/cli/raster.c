@@ -2,7 +2,7 @@
 /*
  * vor raster --size W H --origin OX OY --step SX SY
  *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
- *                      hausdorff|segment|polygon|polyline]
+ *                      hausdorff|segment|polygon|polyline|power]
  *            [--band R] [--scale S] SITES (--labels OUT.raw |
  *            --png OUT.png [--y-down] [--dots])
  *
@@ -17,6 +17,9 @@
  *                                           a polygon's vertices in order)
  *   polyline                                w x1 y1 [x2 y2 ...] (w >= 1, the
  *                                           vertices in order, open)
+ *   power                                   x y w       (w int64, the squared
+ *                                           radius: --scale S multiplies it
+ *                                           by S^2)
  * --labels writes W*H little-endian uint32 labels, row-major, row 0
  * (j = 0) first, each the index of the pixel's nearest site (farthest for
  * farthest; ties: the smaller index). --png writes an RGB picture, y up
@@ -25,7 +28,8 @@
  * --dots each site's points as black dots (stb_image_write:
  * tools/png_write.h).
  * Fields are separated by blanks or commas; --scale S scales coordinates
- * and additive weights (not multiplicative ones). Bad input: "error:
+ * and additive weights (not multiplicative ones), and power weights by
+ * S^2. Bad input: "error:
  * FILE:N: reason" or "error: reason", exit 2, and OUT untouched: it is
  * written to a temporary file renamed over OUT at the end.
  */
@@ -57,9 +61,12 @@ const char cli_raster_help[] =
     "          segment                      x1 y1 x2 y2\n"
     "          hausdorff, polygon           x1 y1 [x2 y2 ...]\n"
     "          polyline                     w x1 y1 [x2 y2 ...]  (w >= 1)\n"
-    "        decimal int32; with --scale S, coordinates and additive weights\n"
-    "        may be decimal numbers (times S, rounded to nearest, ties away from\n"
-    "        zero); multiplicative weights stay integers. At least one site.\n"
+    "          power                        x y w        (w int64: a squared radius)\n"
+    "        decimal int32 (power weights: int64); with --scale S, coordinates and\n"
+    "        additive weights may be decimal numbers (times S, rounded to nearest,\n"
+    "        ties away from zero), power weights too (times S^2, as they are\n"
+    "        squared lengths); multiplicative weights stay integers. At least\n"
+    "        one site.\n"
     "output: --labels: W*H little-endian uint32, row-major, row j = 0 first,\n"
     "        each the index of the pixel's nearest site (farthest for\n"
     "        farthest; ties: the smaller index).\n"
@@ -67,7 +74,8 @@ const char cli_raster_help[] =
     "        the colour `vor draw` gives it, black boundaries.\n"
     "  --metric M    euclid (default), l1, linf, lp:P (1 <= P <= 8), ellip:A,B,C\n"
     "                (A > 0, A*C > B^2), mult, add, comp, farthest, hausdorff,\n"
-    "                segment, polygon, polyline\n"
+    "                segment, polygon, polyline, power (the power diagram:\n"
+    "                |q - s|^2 - w, ties to the smaller index)\n"
     "  --band R      rows rendered per band (default 16)\n"
     "  --y-down      --png: row j = 0 at the top (screen order)\n"
     "  --dots        --png: each site's points as black dots\n"
@@ -145,6 +153,7 @@ typedef struct site_file {
     vor_point_t *points;
     size_t point_count, point_capacity;
     int32_t *mult, *add;
+    int64_t *power;
     uint32_t *offsets;
     size_t count, capacity;
 } site_file_t;
@@ -177,8 +186,9 @@ static void read_metric_sites(const char *path, enum vor_metric metric, site_fil
             f->capacity = f->capacity ? 2 * f->capacity : 1024;
             f->mult = realloc(f->mult, f->capacity * sizeof *f->mult);
             f->add = realloc(f->add, f->capacity * sizeof *f->add);
+            f->power = realloc(f->power, f->capacity * sizeof *f->power);
             f->offsets = realloc(f->offsets, (f->capacity + 1) * sizeof *f->offsets);
-            if (f->mult == NULL || f->add == NULL || f->offsets == NULL) {
+            if (f->mult == NULL || f->add == NULL || f->power == NULL || f->offsets == NULL) {
                 cli_error("out of memory");
             }
         }
@@ -188,9 +198,13 @@ static void read_metric_sites(const char *path, enum vor_metric metric, site_fil
         f->offsets[f->count] = (uint32_t)f->point_count;
         f->mult[f->count] = 1;
         f->add[f->count] = 0;
+        f->power[f->count] = 0;
         int fields = 2;
         const char *shape = "x y";
         if (metric == VOR_METRIC_MULT || metric == VOR_METRIC_ADD) {
+            fields = 3;
+            shape = "x y w";
+        } else if (metric == VOR_METRIC_POWER) {
             fields = 3;
             shape = "x y w";
         } else if (metric == VOR_METRIC_COMPOUND) {
@@ -224,9 +238,14 @@ static void read_metric_sites(const char *path, enum vor_metric metric, site_fil
             } while (!cli_at_end(cursor));
         } else {
             for (int i = 0; i < fields; i++) {
-                /* multiplicative weights are ratios: --scale leaves them be */
+                /* multiplicative weights are ratios: --scale leaves them be;
+                 * a power weight is an int64 squared length: times S^2 */
                 bool ratio = i == 2 && (metric == VOR_METRIC_MULT || metric == VOR_METRIC_COMPOUND);
-                if (!(ratio ? cli_int32_field(&cursor, &v[i], &why) : cli_coordinate_field(&cursor, &v[i], &why))) {
+                bool squared = i == 2 && metric == VOR_METRIC_POWER;
+                bool read = squared ? cli_squared_field(&cursor, &f->power[f->count], &why)
+                            : ratio ? cli_int32_field(&cursor, &v[i], &why)
+                                    : cli_coordinate_field(&cursor, &v[i], &why);
+                if (!read) {
                     char message[300];
                     snprintf(message, sizeof message, "%s (expected %s)", why, shape);
                     cli_line_error(&in, message);
@@ -297,7 +316,7 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
                  {"add", VOR_METRIC_ADD},             {"comp", VOR_METRIC_COMPOUND},
                  {"farthest", VOR_METRIC_FARTHEST},   {"hausdorff", VOR_METRIC_HAUSDORFF},
                  {"segment", VOR_METRIC_SEGMENT},     {"polygon", VOR_METRIC_POLYGON},
-                 {"polyline", VOR_METRIC_POLYLINE}};
+                 {"polyline", VOR_METRIC_POLYLINE},   {"power", VOR_METRIC_POWER}};
     for (size_t i = 0; i < sizeof names / sizeof names[0]; i++) {
         if (strcmp(text, names[i].name) == 0) {
             sites->metric = names[i].metric;
@@ -320,7 +339,7 @@ static void parse_metric(const char *text, vor_raster_sites_t *sites)
         return;
     }
     fprintf(stderr, "error: --metric: expected euclid, l1, linf, lp:P, ellip:A,B,C, mult, add, comp, "
-                    "farthest, hausdorff, segment, polygon or polyline, got '%s'\n", text);
+                    "farthest, hausdorff, segment, polygon, polyline or power, got '%s'\n", text);
     exit(2);
 }
 
@@ -450,6 +469,7 @@ int cli_raster(int argc, char **argv)
     sites.count = n;
     sites.mult_weights = file.mult;
     sites.add_weights = file.add;
+    sites.power_weights = file.power;
     sites.offsets = file.offsets;
     size_t pixels = (size_t)frame.width * frame.height;
     if (labels_path != NULL) {
@@ -504,6 +524,7 @@ int cli_raster(int argc, char **argv)
     free(file.points);
     free(file.mult);
     free(file.add);
+    free(file.power);
     free(file.offsets);
     return 0;
 }

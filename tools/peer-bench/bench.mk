@@ -82,8 +82,8 @@ PEER_FLAGS := $(if $(PEER_D32),-DVOR_BENCH_DELAUNAY32 -I$(PEERS)/delaunay32/incl
 # (VOR_STATS), which it reports per site.
 ifeq ($(B),build/host)
 bench_peer_lib = $(if $(filter delaunay,$(1)),$(B)/libvor-stats.a,$(B)/libvor.a)
-build/bench/%-host: tools/peer-bench/%.cpp tools/peer-bench/bench_common.hpp $(LIB_HDRS_BENCH) \
-                    $(B)/libvor.a $(B)/libvor-stats.a
+build/bench/%-host: tools/peer-bench/%.cpp tools/peer-bench/bench_common.hpp \
+                    tools/peer-bench/bench_memory.hpp $(LIB_HDRS_BENCH) $(B)/libvor.a $(B)/libvor-stats.a
 	@mkdir -p $(@D)
 	$(BENCH_CXX) $(BENCH_CXXFLAGS) $(BENCH_PEERS_$*) -Iinclude -DVOR_INDEX_BITS=32 \
 	    $(if $(filter delaunay,$*),-DVOR_STATS=1) tools/peer-bench/$*.cpp $(call bench_peer_lib,$*) \

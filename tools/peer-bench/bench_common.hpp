@@ -5,12 +5,15 @@
 #ifndef VOR_BENCH_COMMON_HPP
 #define VOR_BENCH_COMMON_HPP
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <vector>
+
+#include <time.h>
 
 // The program's name in its error messages; each main sets it first.
 static const char *bench_program = "bench";
@@ -27,6 +30,28 @@ static inline double now_s()
 {
     using namespace std::chrono;
     return duration<double>(steady_clock::now().time_since_epoch()).count();
+}
+
+// The calling thread's CPU time in seconds (user and system, page faults
+// included): on a shared machine the time the thread waits for a core is
+// not the library's. The libraries timed with it run on the calling thread.
+static inline double cpu_s()
+{
+    timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
+}
+
+// The median of repeated timings; -1 when there are none or the first is
+// -1 (a run that did not happen).
+static inline double median(std::vector<double> v)
+{
+    if (v.empty() || v[0] < 0) {
+        return -1;
+    }
+    std::sort(v.begin(), v.end());
+    size_t m = v.size() / 2;
+    return (v.size() % 2 != 0) ? v[m] : (v[m - 1] + v[m]) / 2;
 }
 
 // A bad command line: the program's options and exit status 2.

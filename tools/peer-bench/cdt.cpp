@@ -77,16 +77,6 @@
 #include <utility>
 #include <vector>
 
-// The calling thread's CPU time in seconds (user and system, page faults
-// included): on a shared machine the time the thread waits for a core is
-// not the library's. Every library here runs on the calling thread.
-static double cpu_s()
-{
-    timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
-
 static const int32_t SPAN = 1 << 30;
 static const uint32_t SITES_PER_CELL = 10;
 
@@ -380,16 +370,6 @@ static timing run_delaunay32(const std::vector<vor_point_t> &sites,
 #endif
 
 // ------------------------------------------------------------------- main
-
-static double median(std::vector<double> v)
-{
-    if (v.empty() || v[0] < 0) {
-        return -1;
-    }
-    std::sort(v.begin(), v.end());
-    size_t m = v.size() / 2;
-    return (v.size() % 2 != 0) ? v[m] : (v[m - 1] + v[m]) / 2;
-}
 
 // One library's column of a row: its runs, its checks' counts, its note.
 struct column {

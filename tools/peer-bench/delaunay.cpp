@@ -42,6 +42,7 @@
 #include "vor.h"
 
 #include "bench_common.hpp"
+#include "bench_memory.hpp"
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -55,7 +56,6 @@
 #include <sys/wait.h>
 #endif
 
-#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -64,68 +64,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <new>
 #include <string>
 #include <thread>
 #include <vector>
-
-// ------------------------------------------------------------ heap counter
-
-// gcc warns that the replaced operator delete frees what operator new
-// returned: both are ours and use malloc/free, so that is right.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-// Counting is switched on only in --mem children, so timed runs pay
-// nothing but one predictable branch per allocation.
-static bool heap_counting;
-static long long heap_live, heap_peak; // signed: frees of older blocks may come first
-
-static void heap_add(void *p)
-{
-    if (heap_counting && p != nullptr) {
-        heap_live += (long long)malloc_usable_size(p);
-        heap_peak = std::max(heap_peak, heap_live);
-    }
-}
-
-static void heap_sub(void *p)
-{
-    if (heap_counting && p != nullptr) {
-        heap_live -= (long long)malloc_usable_size(p);
-    }
-}
-
-void *operator new(size_t n)
-{
-    void *p = std::malloc(n != 0 ? n : 1);
-    if (p == nullptr) {
-        throw std::bad_alloc();
-    }
-    heap_add(p);
-    return p;
-}
-void *operator new[](size_t n) { return operator new(n); }
-void operator delete(void *p) noexcept
-{
-    heap_sub(p);
-    std::free(p);
-}
-void operator delete[](void *p) noexcept { operator delete(p); }
-void operator delete(void *p, size_t) noexcept { operator delete(p); }
-void operator delete[](void *p, size_t) noexcept { operator delete(p); }
-
-static void *counted_malloc(size_t n)
-{
-    void *p = std::malloc(n);
-    heap_add(p);
-    return p;
-}
-
-static void counted_free(void *p)
-{
-    heap_sub(p);
-    std::free(p);
-}
 
 // ------------------------------------------------------------------ inputs
 
@@ -414,37 +355,6 @@ static peer_result run_jcv(const std::vector<vor_point_t> &p)
 
 // -------------------------------------------------------- memory (--mem)
 
-static long status_kb(const char *field)
-{
-    FILE *f = std::fopen("/proc/self/status", "r");
-    if (f == nullptr) {
-        return -1;
-    }
-    char line[256];
-    long kb = -1;
-    size_t len = std::strlen(field);
-    while (std::fgets(line, sizeof line, f) != nullptr) {
-        if (std::strncmp(line, field, len) == 0 && line[len] == ':') {
-            kb = std::strtol(line + len + 1, nullptr, 10);
-            break;
-        }
-    }
-    std::fclose(f);
-    return kb;
-}
-
-// Resets VmHWM to the current RSS (Linux >= 4.0); false if unsupported.
-static bool reset_peak_rss()
-{
-    FILE *f = std::fopen("/proc/self/clear_refs", "w");
-    if (f == nullptr) {
-        return false;
-    }
-    bool ok = std::fputs("5", f) >= 0;
-    ok &= std::fclose(f) == 0;
-    return ok;
-}
-
 static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
 {
     int k = 0;
@@ -470,10 +380,7 @@ static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
         die("delaunay32 not built in");
     }
 #endif
-    bool exact = reset_peak_rss();
-    long before = exact ? status_kb("VmRSS") : status_kb("VmHWM");
-    heap_live = heap_peak = 0; // what the build allocates from here on
-    heap_counting = true;
+    mem_child child = mem_child_start();
     if (is_cgal) {
         Cgal_dt *dt = new Cgal_dt;
         dt->insert(in.cgal.begin(), in.cgal.end());
@@ -493,44 +400,15 @@ static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
         build_vor(v, in.vor, VOR_ORDER_QUADTREE);
         std::printf("check %u\n", v.d.vertex_count);
     }
-    long after = status_kb("VmHWM");
-    if (before < 0 || after < 0) {
-        die("no /proc/self/status");
-    }
-    std::printf("rss %ld\nheap %lld\nexact %d\n", (after - before) * 1024, heap_peak,
-                exact ? 1 : 0);
-    std::fflush(stdout);
-    std::_Exit(0); // skip destructors: nothing left to measure
+    mem_child_finish(child);
 }
-
-struct mem_result {
-    double rss = -1, heap = -1; // bytes
-};
 
 static std::string self_exe;
 
 static mem_result measure_memory(const char *lib, kind k, uint32_t n)
 {
-    mem_result m;
-    std::string cmd = "'" + self_exe + "' --mem " + lib + " " + kind_name[k] + " " +
-                      std::to_string(n);
-    FILE *f = popen(cmd.c_str(), "r");
-    if (f == nullptr) {
-        return m;
-    }
-    char line[128];
-    while (std::fgets(line, sizeof line, f) != nullptr) {
-        double v;
-        if (std::sscanf(line, "rss %lf", &v) == 1) {
-            m.rss = v;
-        } else if (std::sscanf(line, "heap %lf", &v) == 1) {
-            m.heap = v;
-        }
-    }
-    if (pclose(f) != 0) {
-        m.rss = m.heap = -1;
-    }
-    return m;
+    return measure_memory(self_exe, std::string(lib) + " " + kind_name[k] + " " +
+                                        std::to_string(n));
 }
 
 // ------------------------------------------------------------- the table
@@ -549,11 +427,6 @@ struct row {
     uint32_t flat = 0;            // vor's zero-area triangles
     vor_stats_t stats{}; // of vor's first build
 };
-
-static std::string per_site(double bytes, uint32_t n)
-{
-    return bytes < 0 ? "-" : fmt("%.1f", bytes / n);
-}
 
 static std::string table(const std::vector<row> &rows)
 {

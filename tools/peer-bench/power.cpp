@@ -61,11 +61,11 @@
 #include "vor_power.h"
 
 #include "bench_common.hpp"
+#include "bench_memory.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Regular_triangulation_2.h>
 
-#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -73,79 +73,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
-#include <new>
 #include <string>
 #include <unordered_set>
 #include <vector>
-
-// ------------------------------------------------------------ heap counter
-
-// gcc warns that the replaced operator delete frees what operator new
-// returned: both are ours and use malloc/free, so that is right.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-// Counting is switched on only in --mem children, so timed runs pay
-// nothing but one predictable branch per allocation.
-static bool heap_counting;
-static long long heap_live, heap_peak; // signed: frees of older blocks may come first
-
-static void heap_add(void *p)
-{
-    if (heap_counting && p != nullptr) {
-        heap_live += (long long)malloc_usable_size(p);
-        heap_peak = std::max(heap_peak, heap_live);
-    }
-}
-
-static void heap_sub(void *p)
-{
-    if (heap_counting && p != nullptr) {
-        heap_live -= (long long)malloc_usable_size(p);
-    }
-}
-
-void *operator new(size_t n)
-{
-    void *p = std::malloc(n != 0 ? n : 1);
-    if (p == nullptr) {
-        throw std::bad_alloc();
-    }
-    heap_add(p);
-    return p;
-}
-void *operator new[](size_t n) { return operator new(n); }
-void operator delete(void *p) noexcept
-{
-    heap_sub(p);
-    std::free(p);
-}
-void operator delete[](void *p) noexcept { operator delete(p); }
-void operator delete(void *p, size_t) noexcept { operator delete(p); }
-void operator delete[](void *p, size_t) noexcept { operator delete(p); }
-
-static void *counted_malloc(size_t n)
-{
-    void *p = std::malloc(n);
-    heap_add(p);
-    return p;
-}
-
-static void counted_free(void *p)
-{
-    heap_sub(p);
-    std::free(p);
-}
-
-// The calling thread's CPU time in seconds (user and system, page faults
-// included): on a shared machine the time the thread waits for a core is
-// not the library's. Both libraries run on the calling thread.
-static double cpu_s()
-{
-    timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-    return (double)t.tv_sec + (double)t.tv_nsec * 1e-9;
-}
 
 // ------------------------------------------------------------------ inputs
 
@@ -292,37 +222,6 @@ static timing run_cgal(const input &in, bool insert, bool check)
 
 // -------------------------------------------------------- memory (--mem)
 
-static long status_kb(const char *field)
-{
-    FILE *f = std::fopen("/proc/self/status", "r");
-    if (f == nullptr) {
-        return -1;
-    }
-    char line[256];
-    long kb = -1;
-    size_t len = std::strlen(field);
-    while (std::fgets(line, sizeof line, f) != nullptr) {
-        if (std::strncmp(line, field, len) == 0 && line[len] == ':') {
-            kb = std::strtol(line + len + 1, nullptr, 10);
-            break;
-        }
-    }
-    std::fclose(f);
-    return kb;
-}
-
-// Resets VmHWM to the current RSS (Linux >= 4.0); false if unsupported.
-static bool reset_peak_rss()
-{
-    FILE *f = std::fopen("/proc/self/clear_refs", "w");
-    if (f == nullptr) {
-        return false;
-    }
-    bool ok = std::fputs("5", f) >= 0;
-    ok &= std::fclose(f) == 0;
-    return ok;
-}
-
 static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
 {
     int k = 0;
@@ -337,10 +236,7 @@ static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
         die("unknown library (vor or cgal)");
     }
     input in = make_input((kind)k, n);
-    bool exact = reset_peak_rss();
-    long before = exact ? status_kb("VmRSS") : status_kb("VmHWM");
-    heap_live = heap_peak = 0; // what the build allocates from here on
-    heap_counting = true;
+    mem_child child = mem_child_start();
     if (is_cgal) {
         Rt *rt = new Rt; // kept: its memory must stay in use until the end
         rt->insert(in.cgal.begin(), in.cgal.end());
@@ -355,57 +251,18 @@ static int mem_main(const char *lib, const char *kind_arg, uint32_t n)
         }
         std::printf("check %u\n", pd.hidden_count);
     }
-    long after = status_kb("VmHWM");
-    if (before < 0 || after < 0) {
-        die("no /proc/self/status");
-    }
-    std::printf("rss %ld\nheap %lld\nexact %d\n", (after - before) * 1024, heap_peak,
-                exact ? 1 : 0);
-    std::fflush(stdout);
-    std::_Exit(0); // skip destructors: nothing left to measure
+    mem_child_finish(child);
 }
-
-struct mem_result {
-    double rss = -1, heap = -1; // bytes
-};
 
 static std::string self_exe;
 
 static mem_result measure_memory(const char *lib, kind k, uint32_t n)
 {
-    mem_result m;
-    std::string cmd = "'" + self_exe + "' --mem " + lib + " " + kind_name[k] + " " +
-                      std::to_string(n);
-    FILE *f = popen(cmd.c_str(), "r");
-    if (f == nullptr) {
-        return m;
-    }
-    char line[128];
-    while (std::fgets(line, sizeof line, f) != nullptr) {
-        double v;
-        if (std::sscanf(line, "rss %lf", &v) == 1) {
-            m.rss = v;
-        } else if (std::sscanf(line, "heap %lf", &v) == 1) {
-            m.heap = v;
-        }
-    }
-    if (pclose(f) != 0) {
-        m.rss = m.heap = -1;
-    }
-    return m;
+    return measure_memory(self_exe, std::string(lib) + " " + kind_name[k] + " " +
+                                        std::to_string(n));
 }
 
 // ------------------------------------------------------------------- main
-
-static double median(std::vector<double> v)
-{
-    if (v.empty() || v[0] < 0) {
-        return -1;
-    }
-    std::sort(v.begin(), v.end());
-    size_t m = v.size() / 2;
-    return (v.size() % 2 != 0) ? v[m] : (v[m - 1] + v[m]) / 2;
-}
 
 // One library's runs of one mode: their times, the first run's counts.
 struct column {
@@ -427,11 +284,6 @@ struct column {
         s.push_back(t.s);
     }
 };
-
-static std::string per_site(double bytes, uint32_t n)
-{
-    return bytes < 0 ? "-" : fmt("%.1f", bytes / n);
-}
 
 static std::string ratio(double peer, double ours)
 {

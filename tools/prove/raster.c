@@ -22,6 +22,7 @@ static const vor_point_t points[POINTS] = {{0, 0}, {3, 1}, {1, 2}, {-2, 5}, {6, 
 static const uint32_t offsets[SITES + 1u] = {0, 1, 3, 6};
 static const int32_t mult[SITES] = {1, 2, 3};
 static const int32_t add[SITES] = {0, -1, 5};
+static const int64_t power[SITES] = {INT64_MIN, 4, INT64_MAX}; /* the ends of int64 */
 static const uint16_t palette565[SITES] = {0x001F, 0x07E0, 0xF800};
 static const uint32_t palette888[SITES] = {0x0000FF, 0x00FF00, 0xFF0000};
 
@@ -107,7 +108,7 @@ static int bad_arguments(const vor_raster_frame_t *good, const vor_raster_sites_
     out.kind = VOR_RASTER_LABEL8;
     options.method = (enum vor_raster_method)Frama_C_interval(2, INT32_MAX);
     r |= vor_raster(&frame, &sites, &out, &options, work, sizeof work);
-    sites.metric = (enum vor_metric)Frama_C_interval(13, INT32_MAX);
+    sites.metric = (enum vor_metric)Frama_C_interval(14, INT32_MAX);
     r |= vor_raster(&frame, &sites, &out, NULL, work, sizeof work);
     sites.metric = VOR_METRIC_L1;
     r |= vor_raster_euclid(&frame, &sites, &out, NULL, work, sizeof work);
@@ -145,6 +146,9 @@ static int bad_arguments(const vor_raster_frame_t *good, const vor_raster_sites_
     sites.metric = (enum vor_metric)Frama_C_nondet(VOR_METRIC_HAUSDORFF, VOR_METRIC_POLYLINE);
     sites.offsets = Frama_C_nondet_ptr((void *)bad_offsets, NULL);
     r |= vor_raster(&frame, &sites, &out, NULL, work, sizeof work);
+    sites.metric = VOR_METRIC_POWER;
+    sites.power_weights = NULL;
+    r |= vor_raster(&frame, &sites, &out, NULL, work, sizeof work);
     return r;
 }
 
@@ -161,6 +165,7 @@ int main(void)
     sites.count = SITES;
     sites.mult_weights = mult;
     sites.add_weights = add;
+    sites.power_weights = power;
     sites.offsets = offsets;
     sites.lp_exponent = 3u;
     sites.form_a = 2;
@@ -213,8 +218,8 @@ int main(void)
     sites.points = points;
 
     /* every metric with every method, labels and distances */
-    /*@ loop unroll 13; */
-    for (int metric = 0; metric < 13; metric++) {
+    /*@ loop unroll 14; */
+    for (int metric = 0; metric < 14; metric++) {
         sites.metric = (enum vor_metric)metric;
         /*@ loop unroll 2; */
         for (int m = 0; m < 2; m++) {
