@@ -891,9 +891,13 @@ static void check_power_init(void)
     CHECK(vor_power_init(&power, power_arena, need, SAFE_SITES) == VOR_OK &&
               test_same_bytes(saved_power_arena, power_arena, sizeof power_arena),
           "power_init: the exact size, the arena untouched");
+    vor_power_hidden_iter_t one_site_hidden;
+    uint32_t hidden_id = 77;
     CHECK(vor_power_init(&power, power_arena, VOR_POWER_ARENA_BYTES(1), 1) == VOR_OK &&
               vor_power_insert(&power, (vor_point_t){1, 2}, 3, NULL) == VOR_OK &&
-              vor_power_validate(&power, NULL) == VOR_OK,
+              vor_power_validate(&power, NULL) == VOR_OK &&
+              vor_power_hidden_begin(&one_site_hidden, &power) == VOR_OK &&
+              vor_power_hidden_next(&one_site_hidden, &hidden_id) == 0 && hidden_id == 77,
           "power_init: one site in the smallest arena");
 }
 
@@ -951,6 +955,7 @@ static void check_power_insert_and_build(void)
         bad += out != 77;
         bad += vor_power_insert(&power, power_points[n - 1u], power_weights[n - 1u], &out) != VOR_ERR_DUPLICATE;
         bad += out != n - 1u;
+        bad += vor_power_insert(&power, power_points[n - 1u], power_weights[n - 1u], NULL) != VOR_ERR_DUPLICATE;
         CHECK(bad == 0 && power_unchanged(), "power: full at %u: %u wrong answers", n, bad);
     }
     /* a build of no points (NULL) empties it */

@@ -702,6 +702,7 @@ static void check_validate_detects(void)
     pd.weights[12] = 1000000;
     CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY),
           "a heavier vertex");
+    CHECK(vor_power_validate(&pd, NULL) == VOR_ERR_INVALID, "a heavier vertex, no report asked");
     pd.weights[12] = 0;
     /* the hidden site made heavy: below the surface */
     pd.weights[id] = 1000000;
@@ -742,6 +743,32 @@ static void check_validate_detects(void)
     pd.mesh.sites[2].x = 6;
     pd.weights[2] = -1000;
     CHECK(vor_power_validate(&pd, &why) == VOR_ERR_INVALID, "a hidden site off the line");
+}
+
+/* Sites on a vertical and a horizontal line at the int32 limit: the
+ * exact one-dimensional test takes its point off the line on the side
+ * that stays in int32. The middle site is hidden exactly when the lifted
+ * chain passes below it: weights 0, w, 0 at -d, 0, d, whose lifts over
+ * the middle's point are d^2 (the chain) and -w, so hidden for -w > d^2. */
+static void check_line_at_limit(void)
+{
+    static vor_power_t pd;
+    for (unsigned k = 0; k < 4u; k++) {
+        bool vertical = (k % 2u) == 0u;
+        int64_t w = (k < 2u) ? -1000001 : -999999; /* lifted above the chain (hidden), below */
+        vor_point_t p[3];
+        for (int32_t i = 0; i < 3; i++) {
+            int32_t along = 1000 * (i - 1);
+            p[i] = vertical ? (vor_point_t){INT32_MAX, along} : (vor_point_t){along, INT32_MAX};
+        }
+        const int64_t weights[3] = {0, 0, 0};
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
+                  vor_power_insert(&pd, p[0], weights[0], NULL) == VOR_OK &&
+                  vor_power_insert(&pd, p[2], weights[2], NULL) == VOR_OK &&
+                  vor_power_insert(&pd, p[1], w, NULL) == VOR_OK &&
+                  vor_power_hidden(&pd, 2) == ((k < 2u) ? 1 : 0) && vor_power_validate(&pd, NULL) == VOR_OK,
+              "a line at the int32 limit (%s, weight %d)", vertical ? "vertical" : "horizontal", (int)w);
+    }
 }
 
 /* Sites on one line, as many as the plan orders in its quadtree: the
@@ -1154,6 +1181,7 @@ void test_power(void)
     TEST_CASE("arguments") check_arguments();
     TEST_CASE("heavy_centre") check_heavy_centre();
     TEST_CASE("validate_detects") check_validate_detects();
+    TEST_CASE("line_at_limit") check_line_at_limit();
     TEST_CASE("line_build") check_line_build();
     TEST_CASE("brute/random") check_random_brute(1);
     TEST_CASE("brute/grid_equal") check_grid_brute(true);
