@@ -771,6 +771,31 @@ static void check_line_at_limit(void)
     }
 }
 
+/* Two vertices on a line with a site hidden between them (its lift above
+ * the chain): removing either vertex leaves two sites, and a site whose
+ * only rival is at another point has a cell of area, so the hidden one
+ * comes back as a vertex. On a horizontal and a vertical line, removing
+ * the first vertex and the last. */
+static void check_remove_on_line(void)
+{
+    static vor_power_t pd;
+    for (unsigned k = 0; k < 4u; k++) {
+        bool vertical = (k % 2u) == 1u;
+        uint32_t gone = (k < 2u) ? 0u : 1u;
+        vor_point_t a = {0, 0}, b = vertical ? (vor_point_t){0, 10} : (vor_point_t){10, 0};
+        vor_point_t h = vertical ? (vor_point_t){0, 5} : (vor_point_t){5, 0};
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
+                  vor_power_insert(&pd, a, 0, NULL) == VOR_OK &&
+                  vor_power_insert(&pd, b, 0, NULL) == VOR_OK &&
+                  vor_power_insert(&pd, h, -1000, NULL) == VOR_OK && vor_power_hidden(&pd, 2) == 1,
+              "a site hidden between two on a line");
+        CHECK(vor_power_remove(&pd, gone) == VOR_OK && vor_power_hidden(&pd, 2) == 0 &&
+                  vor_power_hidden(&pd, 1u - gone) == 0 && vor_power_validate(&pd, NULL) == VOR_OK,
+              "removing vertex %u of a line uncovers the site between (%s)", gone,
+              vertical ? "vertical" : "horizontal");
+    }
+}
+
 /* Sites on one line, as many as the plan orders in its quadtree: the
  * one-dimensional diagram against line_status for each site. */
 static void check_line_build(void)
@@ -1182,6 +1207,7 @@ void test_power(void)
     TEST_CASE("heavy_centre") check_heavy_centre();
     TEST_CASE("validate_detects") check_validate_detects();
     TEST_CASE("line_at_limit") check_line_at_limit();
+    TEST_CASE("remove_on_line") check_remove_on_line();
     TEST_CASE("line_build") check_line_build();
     TEST_CASE("brute/random") check_random_brute(1);
     TEST_CASE("brute/grid_equal") check_grid_brute(true);
