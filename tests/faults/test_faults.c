@@ -444,7 +444,9 @@ static void power_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k,
             if (op % 3u == 0u) {
                 err = vor_power_remove(&pd, id);
                 results_ok = results_ok && (err == (site ? VOR_OK : VOR_ERR_ARG));
-                power_removed[id] = power_removed[id] || site;
+                if (site) { /* id may be one past the ids handed out (and past the array) */
+                    power_removed[id] = true;
+                }
             } else if (op % 3u == 1u) {
                 err = vor_power_move(&pd, id, power_points[pick], power_weights[pick], &out);
                 results_ok = results_ok && (site ? ((err == VOR_OK) || ((err == VOR_ERR_DUPLICATE) &&
