@@ -46,17 +46,11 @@
 #define GEO_LIMBS VOR__LIMBS(160u)
 #define U64_LIMBS VOR__LIMBS(64u)
 
-/* A line a x + b y = c in a site's doubled frame, with an integer point
- * (px, py) on it for the test of a parallel line; a power bisector may
- * have none (foot: the test takes the foot of the perpendicular from the
- * origin instead). */
+/* A line a x + b y = c in a site's doubled frame. */
 typedef struct geo_line {
     int64_t a;
     int64_t b;
     vor__limb c[GEO_LIMBS];
-    int64_t px;
-    int64_t py;
-    bool foot;
 } geo_line_t;
 
 /* A point (x / w, y / w), w > 0, in the same frame. */
@@ -98,9 +92,6 @@ static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
     vor__limb t[GEO_LIMBS];
     l->a = ex;
     l->b = ey;
-    l->px = ex; /* the midpoint of s and n, doubled: e */
-    l->py = ey;
-    l->foot = false;
     vor__mw_from_u64(l->c, GEO_LIMBS, vor__mul_u32(mx, mx));
     vor__mw_from_u64(t, GEO_LIMBS, vor__mul_u32(my, my));
     vor__mw_add(l->c, t, GEO_LIMBS); /* < 2^65 */
@@ -120,15 +111,7 @@ static void power_bisector(geo_line_t *l, const vor_point_t *s, const vor_point_
         vor__mw_add(l->c, t, GEO_LIMBS);
         vor__mw_from_i64(t, GEO_LIMBS, wn);
         vor__mw_sub(l->c, t, GEO_LIMBS); /* |c| < 2^65 + 2^64 */
-        l->foot = true;
     }
-}
-
-/* u c for u in {-1, 0, 1}, by selection: a 64-bit multiply is a runtime
- * call on Cortex-M0. */
-static int64_t unit_times(int64_t u, int64_t c)
-{
-    return (u == 0) ? 0 : (u > 0) ? c : -c;
 }
 
 /* Box sides in counterclockwise order, each with its outward normal:
@@ -162,9 +145,6 @@ static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, 
      * call on Cortex-M0 */
     int64_t c = distance + distance;
     vor__mw_from_i64(l->c, GEO_LIMBS, c); /* |c| < 2^33 */
-    l->px = unit_times(l->a, c); /* unit normal: (a c, b c) is on the line */
-    l->py = unit_times(l->b, c);
-    l->foot = false;
 }
 
 /* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
@@ -214,27 +194,20 @@ static int side_of(const geo_line_t *l, const geo_point_t *p)
     return vor__mw_sign(sum, GEO_LIMBS);
 }
 
-/* side_of for a point of line `on`: its integer point (|px|, |py| <
- * 2^34), or for a power bisector the foot of the perpendicular from the
- * origin, (a c, b c) / (a^2 + b^2) (|a c|, |b c| < 2^98; w < 2^65). */
+/* side_of for a point of line `on`, taken from its coefficients alone:
+ * the foot of the perpendicular from the origin, (a c, b c) / (a^2 + b^2)
+ * (|a c|, |b c| < 2^98; 0 < w < 2^65). Only parallel lines need it, so
+ * its cost is rare; a power bisector may hold no integer point at all. */
 static int side_of_line(const geo_line_t *l, const geo_line_t *on)
 {
-    vor__limb sum[GEO_LIMBS];
+    geo_point_t p;
     vor__limb t[GEO_LIMBS];
-    if (on->foot) {
-        geo_point_t p;
-        mul_i64(p.x, on->c, on->a);
-        mul_i64(p.y, on->c, on->b);
-        mul_i64_i64(p.w, on->a, on->a);
-        mul_i64_i64(t, on->b, on->b);
-        vor__mw_add(p.w, t, GEO_LIMBS);
-        return side_of(l, &p);
-    }
-    mul_i64_i64(sum, on->px, l->a);
-    mul_i64_i64(t, on->py, l->b);
-    vor__mw_add(sum, t, GEO_LIMBS);
-    vor__mw_sub(sum, l->c, GEO_LIMBS);
-    return vor__mw_sign(sum, GEO_LIMBS);
+    mul_i64(p.x, on->c, on->a);
+    mul_i64(p.y, on->c, on->b);
+    mul_i64_i64(p.w, on->a, on->a);
+    mul_i64_i64(t, on->b, on->b);
+    vor__mw_add(p.w, t, GEO_LIMBS);
+    return side_of(l, &p);
 }
 
 /* |rest| / step by shift and subtract (no divide instruction anywhere),
