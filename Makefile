@@ -297,6 +297,16 @@ $(B)/cgal-power: tests/reference/cgal_power.cpp
 	@tools/install-deps.sh bench
 	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
 
+# The reference of the interpolation's tests (host only): CGAL's natural
+# neighbour coordinates with exact constructions, and vor's side of the
+# comparison (every coordinate, unreduced).
+$(B)/cgal-interpolate: tests/reference/cgal_interpolate.cpp
+	@tools/install-deps.sh bench
+	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
+
+$(B)/vor-interpolate: tests/reference/vor_interpolate.c $(B)/libvor.a
+	$(CC) $(TEST_CFLAGS) $< $(B)/libvor.a -o $@
+
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)
 # It takes more than 32,767 sites and prints predicate counters (--stats):
