@@ -28,6 +28,9 @@
 #   make bench-power        weighted sites: vor_power_build and vor_power_insert
 #                           against CGAL's regular triangulation, and Cortex-M3
 #                           instructions per site
+#   make bench-interpolate  natural-neighbour interpolation: vor_interpolate and
+#                           vor_interpolate_laplace against CGAL, and Cortex-M3
+#                           instructions per query
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #   make fuzz               the libFuzzer harnesses, FUZZ_SECONDS (600) each
