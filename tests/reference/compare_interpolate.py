@@ -26,8 +26,8 @@ the linear interpolation along the segment, computed here with Fractions.
 
 Prints failures and ends with "N passed, N failed" (one check per query
 and call: the coordinates of vor_sibson and vor_laplace, the values of
-vor_interpolate and vor_interpolate_laplace) and the number of
-coordinates and queries compared; exit status 1 if anything failed.
+vor_interpolate and vor_interpolate_laplace) and the queries by kind of
+answer and the coordinates compared; exit status 1 if anything failed.
 
 Usage: compare_interpolate.py VOR_INTERPOLATE CGAL_INTERPOLATE [CASES]
        (tests/reference/reference_run.py)
@@ -39,10 +39,12 @@ from math import gcd
 from reference_run import run
 
 MIN, MAX = -2**31, 2**31 - 1
-stats = {"queries": 0, "coordinates": 0, "outside": 0, "collinear": 0}
-atexit.register(lambda: print("{queries} queries, {coordinates} coordinates compared exactly, "
-                              "{outside} outside, {collinear} against the segment formula"
-                              .format(**stats)))
+stats = {"queries": 0, "coordinates": 0, "outside": 0, "collinear": 0, "site": 0, "edge": 0,
+         "inside": 0}
+atexit.register(lambda: print("{queries} queries ({site} at a site, {edge} on a hull edge or "
+                              "segment, {inside} inside, {outside} outside; {collinear} of them "
+                              "against the segment formula), {coordinates} coordinates compared "
+                              "exactly".format(**stats)))
 
 
 def hull(points):
@@ -283,12 +285,12 @@ def case(ctx, number):
             ref = cgal_coordinates(b[(tag, qx, qy)])
             if ref == "none":
                 ref = segment(pts, (qx, qy))
-                stats["collinear"] += 1
             expected[tag] = ref
             got = vor_coordinates(a[(tag, qx, qy)])
-            if ref == "outside":
-                stats["outside"] += 1
-            else:
+            if tag == "s":
+                stats["outside" if ref == "outside" else ("site", "edge", "inside")[min(len(ref), 3) - 1]] += 1
+                stats["collinear"] += 1 if b[(tag, qx, qy)][0] == "none" else 0
+            if ref != "outside":
                 stats["coordinates"] += len(ref)
             ctx.check(got == ref, f"{where}: {'vor_sibson' if tag == 's' else 'vor_laplace'} "
                                   f"{difference(got, ref)}")
