@@ -28,6 +28,9 @@
 #   make bench-power        weighted sites: vor_power_build and vor_power_insert
 #                           against CGAL's regular triangulation, and Cortex-M3
 #                           instructions per site
+#   make bench-interpolate  natural-neighbour interpolation: vor_interpolate and
+#                           vor_interpolate_laplace against CGAL, and Cortex-M3
+#                           instructions per query
 #   make bench-raster       vor_raster: host Mpx/s and target instructions per
 #                           pixel, against the brute-force path
 #   make fuzz               the libFuzzer harnesses, FUZZ_SECONDS (600) each
@@ -296,6 +299,16 @@ $(B)/cgal-cdt: tests/reference/cgal_cdt.cpp
 $(B)/cgal-power: tests/reference/cgal_power.cpp
 	@tools/install-deps.sh bench
 	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
+
+# The reference of the interpolation's tests (host only): CGAL's natural
+# neighbour coordinates with exact constructions, and vor's side of the
+# comparison (every coordinate, unreduced).
+$(B)/cgal-interpolate: tests/reference/cgal_interpolate.cpp
+	@tools/install-deps.sh bench
+	g++ -O1 -std=c++17 $< -o $@ -lmpfr -lgmpxx -lgmp
+
+$(B)/vor-interpolate: tests/reference/vor_interpolate.c $(B)/libvor.a
+	$(CC) $(TEST_CFLAGS) $< $(B)/libvor.a -o $@
 
 # Host command-line tool.
 CLI_SRCS := $(wildcard tools/cli/*.c)

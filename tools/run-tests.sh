@@ -43,7 +43,7 @@ skipped=()
 only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
-suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference fuzz coverage room harness"
+suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference interpolate-reference fuzz coverage room harness"
 suites="$suites mutants freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
@@ -201,6 +201,15 @@ power_reference() {
         python3 tests/reference/compare_power.py build/host/vor build/host/cgal-power
 }
 check power-reference power_reference
+
+# vor_sibson, vor_laplace, vor_interpolate and vor_interpolate_laplace
+# against CGAL's natural-neighbour coordinates with exact constructions,
+# every coordinate and value compared as exact rationals (tests/reference/).
+interpolate_reference() {
+    make -s -j"$jobs" PORT=host build/host/vor-interpolate build/host/cgal-interpolate &&
+        python3 tests/reference/compare_interpolate.py build/host/vor-interpolate build/host/cgal-interpolate
+}
+check interpolate-reference interpolate_reference
 
 # The libFuzzer harnesses (tests/fuzz/): every committed corpus and
 # regression input replayed, then each harness fuzzed for FUZZ_BRIEF

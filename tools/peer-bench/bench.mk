@@ -21,6 +21,11 @@
 #                      against CGAL's Regular_triangulation_2, and
 #                      instructions per site on Cortex-M3 (bench/power.c
 #                      under QEMU);
+#   make bench-interpolate natural-neighbour interpolation: vor_interpolate
+#                      and vor_interpolate_laplace against CGAL's
+#                      natural_neighbor_coordinates_2 (Epick and Epeck), and
+#                      instructions per query on Cortex-M3
+#                      (bench/interpolate.c under QEMU);
 #   make bench-jcv     vor beside jc_voronoi on the emulated Cortex-M4F:
 #                      instructions, RAM and stack per build
 #                      (tools/peer-bench/jcv_firmware.c); make bench runs it too.
@@ -38,7 +43,7 @@ BENCH_CXXFLAGS ?= -std=c++17 -O2 -DNDEBUG -Wall -Wextra
 # CGAL 5 is header-only; Epick's exact fallback may pull in GMP and MPFR.
 BENCH_LDLIBS ?= -lgmp -lmpfr
 
-.PHONY: bench bench-query bench-dynamic bench-cdt bench-power bench-jcv
+.PHONY: bench bench-query bench-dynamic bench-cdt bench-power bench-interpolate bench-jcv
 
 bench:
 	@tools/install-deps.sh bench host python toolchains
@@ -61,6 +66,10 @@ bench-cdt:
 bench-power:
 	@tools/install-deps.sh bench host python toolchains
 	+@tools/peer-bench/run.sh power
+
+bench-interpolate:
+	@tools/install-deps.sh bench host python toolchains
+	+@tools/peer-bench/run.sh interpolate
 
 # The peers of `make bench` and `make bench-cdt` (docs/benchmarks.md):
 # delaunay32, jc_voronoi and CDT (header-only),

@@ -42,6 +42,16 @@
 #       target: bench/power.c under QEMU -icount on Cortex-M3 gives
 #       instructions per site of vor_power_build and vor_power_insert
 #       among 1,000 and 10,000 sites.
+#   run.sh interpolate [ARGS...]  `make bench-interpolate`: natural-neighbour
+#       interpolation.
+#       host: build/bench/interpolate-host (tools/peer-bench/interpolate.cpp)
+#       times vor_interpolate and vor_interpolate_laplace against CGAL's
+#       natural_neighbor_coordinates_2 and linear_interpolation (Epick and
+#       Epeck) on 10^5 random queries among 10^4 and 10^5 sites, medians
+#       of 3 runs, and checks that the values agree;
+#       target: bench/interpolate.c under QEMU -icount on Cortex-M3 gives
+#       instructions per query of vor_sibson, vor_laplace, vor_interpolate
+#       and vor_interpolate_laplace among 1,000 and 10,000 sites.
 #
 # The host programs link build/host/libvor.a. Prints the tables and writes
 # them to build/bench/NAME.md. ARGS go to the host program (e.g. --sizes
@@ -55,7 +65,7 @@ mkdir -p "$out"
 
 bench=delaunay
 case ${1:-} in
-delaunay | query | dynamic | cdt | power)
+delaunay | query | dynamic | cdt | power | interpolate)
     bench=$1
     shift
     ;;
@@ -81,6 +91,11 @@ cdt)
     ;;
 power)
     target=bench-power
+    ports="cortex-m3"
+    target_ok='^bench valid ok'
+    ;;
+interpolate)
+    target=bench-interpolate
     ports="cortex-m3"
     target_ok='^bench valid ok'
     ;;
@@ -298,6 +313,47 @@ for port in ports:
             h = hidden[n, kind]
             print(f"| {port} | {n:,} | {label} | {h:,} ({100 * h / n:.1f} %) | {b:.1f} | {i:.1f} | "
                   f"{i / b:.2f} | {memory.get(n, 0):,} |")
+            rows += 1
+    if rows == 0:
+        print(f"| {port} | no figures |")
+        ok = False
+sys.exit(0 if ok else 1)
+PY
+}
+
+interpolate_targets() {
+    echo "Targets, instructions per query (bench/interpolate.c, QEMU -icount):"
+    echo
+    # shellcheck disable=SC2086  # ports is a word list on purpose
+    python3 - "$out" $ports <<'PY' || status=1
+import sys
+out, ports = sys.argv[1], sys.argv[2:]
+ok = True
+calls = ("sibson", "laplace", "interpolate", "interpolate-laplace")
+print("| port | sites | queries | neighbours | vor_sibson | vor_laplace | vor_interpolate | vor_interpolate_laplace | Sibson / Laplace |")
+print("|---|---|---|---|---|---|---|---|---|")
+for port in ports:
+    cost, k, sizes = {}, {}, []
+    for line in open(f"{out}/interpolate-{port}.txt"):
+        f = line.split()
+        if len(f) < 4 or f[0] != "bench" or f[1] == "valid":
+            continue
+        n = int(f[2])
+        if n not in sizes:
+            sizes.append(n)
+        if f[1] == "neighbours":
+            k[n] = (f[3], int(f[4]), int(f[5]))
+        else:
+            cost[n, f[1]] = float(f[3])
+    rows = 0
+    for n in sizes:
+        for suffix in ("", "-k6"):
+            if n not in k or not all((n, c + suffix) in cost for c in calls):
+                continue
+            c = [cost[n, name + suffix] for name in calls]
+            queries, what = (f"{k[n][2]:,}", f"{k[n][0]} (mean)") if suffix == "" else (f"{k[n][1]:,} of them", "6")
+            print(f"| {port} | {n:,} | {queries} | {what} | " + " | ".join(f"{v:,.0f}" for v in c)
+                  + f" | {c[2] / c[3]:.2f} |")
             rows += 1
     if rows == 0:
         print(f"| {port} | no figures |")

@@ -1,0 +1,29 @@
+/* SPDX-License-Identifier: MIT */
+/* bench/size/laplace.c - build_nearest's calls plus Laplace's
+ * interpolation alone (vor_interpolate_laplace), the cheaper of the two
+ * for a small microcontroller: what it links without vor_interpolate. */
+#include "common.h"
+
+static vor_point_t points[SIZE_SITES];
+static int32_t values[SIZE_SITES];
+static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(16)];
+
+SIZE_ARENA(size_arena);
+
+int main(void)
+{
+    vor_t d;
+    uint32_t site = 0;
+    for (uint32_t i = 0; i < SIZE_SITES; i++) {
+        points[i].x = size_x(i);
+        points[i].y = size_y(i);
+        values[i] = size_x(i) - size_y(i);
+    }
+    int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
+    acc |= vor_build(&d, points, SIZE_SITES, NULL, NULL);
+    acc |= vor_nearest(&d, (vor_point_t){size_x(0), size_y(1)}, VOR_NO_HINT, &site);
+    vor_interpolation_t laplace;
+    acc |= vor_interpolate_laplace(&d, values, (vor_point_t){size_x(2), size_y(2)}, site, scratch,
+                                   sizeof scratch, &laplace);
+    return acc + laplace.value;
+}
