@@ -803,3 +803,20 @@ void *cli_diagram(vor_t *d, uint32_t max_sites)
     }
     return arena;
 }
+
+void *cli_query_diagram(vor_t *d, const vor_point_t *sites, uint32_t n, const char *sites_path,
+                        const char *queries_path, const char *no_sites, vor_point_t **queries,
+                        uint32_t *query_count)
+{
+    *queries = cli_read_sites(queries_path, query_count);
+    if (n == 0u && *query_count > 0u) {
+        fprintf(stderr, "error: %s: %s\n", sites_path, no_sites);
+        exit(2);
+    }
+    void *arena = cli_diagram(d, n);
+    int err = vor_build(d, sites, n, NULL, NULL);
+    if (err != VOR_OK) {
+        cli_library_error("vor_build", err);
+    }
+    return arena;
+}

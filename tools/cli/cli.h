@@ -158,6 +158,16 @@ void cli_append(cli_output_t *out, const char *format, ...)
  * it returns for the caller to free; exits with status 2 on failure. */
 void *cli_diagram(vor_t *d, uint32_t max_sites);
 
+/* The common part of the SITES QUERIES commands (vor nearest, vor
+ * interpolate), after reading the n sites of sites_path: reads the query
+ * points of queries_path (cli_read_sites) into *queries and *query_count,
+ * exits with status 2, "error: SITES_PATH: NO_SITES", when there are
+ * queries but no sites, and builds the sites into d (cli_diagram,
+ * vor_build; an error exits). Returns the arena, for the caller to free. */
+void *cli_query_diagram(vor_t *d, const vor_point_t *sites, uint32_t n, const char *sites_path,
+                        const char *queries_path, const char *no_sites, vor_point_t **queries,
+                        uint32_t *query_count);
+
 /* Appends "t i j k" for every triangle of d's true Delaunay triangulation
  * (the triangle iterator), counterclockwise from its smallest id, lines
  * sorted; returns how many. */

@@ -244,18 +244,9 @@ int cli_interpolate(int argc, char **argv)
     vor_point_t *sites;
     int32_t *values;
     read_valued(paths[0], &sites, &values, &n);
-    vor_point_t *points = cli_read_sites(paths[1], &queries);
-    if (n == 0u && queries > 0u) {
-        fprintf(stderr, "error: %s: no sites to interpolate\n", paths[0]);
-        exit(2);
-    }
-    uint32_t capacity = (n < 1u) ? 1u : n;
+    vor_point_t *points;
     vor_t d;
-    void *arena = cli_diagram(&d, capacity);
-    int err = vor_build(&d, sites, n, NULL, NULL);
-    if (err != VOR_OK) {
-        cli_library_error("vor_build", err);
-    }
+    void *arena = cli_query_diagram(&d, sites, n, paths[0], paths[1], "no sites to interpolate", &points, &queries);
     size_t scratch_bytes = VOR_SIBSON_SCRATCH_BYTES(16);
     void *scratch = malloc(scratch_bytes);
     if (scratch == NULL) {
@@ -269,7 +260,7 @@ int cli_interpolate(int argc, char **argv)
     for (uint32_t i = 0; i < queries; i++) {
         vor_interpolation_t v;
         vor_point_t q = points[i];
-        err = call(&d, values, q, hint, scratch, scratch_bytes, &v);
+        int err = call(&d, values, q, hint, scratch, scratch_bytes, &v);
         if (err == VOR_ERR_NOMEM) { /* more neighbours than ever before */
             free(scratch);
             scratch_bytes = VOR_SIBSON_SCRATCH_BYTES(v.neighbours);
