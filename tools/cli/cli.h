@@ -186,6 +186,17 @@ void cli_flush(cli_output_t *out);
  * receives the number of sites. */
 vor_point_t *cli_read_sites(const char *path, uint32_t *count);
 
+/* The one reader of point files: cli_read_sites's "x y" lines, or with a
+ * parser "x y F" (or "x,y,F") lines, F named `third` in messages ("expected
+ * x y value or x,y,value") and read by parse into *value (at most 8 bytes,
+ * `size` of them kept), the parser returning false with *why as the
+ * fields' parsers do (cli_int32_field). *points and, with a parser,
+ * *fields (fields[i] of `size` bytes; NULL for none) are malloc'd; returns
+ * the number of lines read. */
+typedef bool cli_field_parser_t(const char **cursor, void *value, const char **why);
+uint32_t cli_read_points(const char *path, const char *third, cli_field_parser_t *parse, size_t size,
+                         vor_point_t **points, void **fields);
+
 /* Site i's colour in every picture of the tool (vor draw, vor raster
  * --png), as 0xRRGGBB: c = (i * 2654435761) mod 2^21 (a bijection on 21
  * bits, so ids below 2^21 get distinct colours), RR = 128 + (c & 127),

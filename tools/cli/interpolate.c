@@ -42,44 +42,10 @@ const char cli_interpolate_help[] =
     "  q 1 1 20 20 1\n"
     "  q 9 9 outside\n";
 
-static void read_valued(const char *path, vor_point_t **points, int32_t **values, uint32_t *count)
+/* A site's value for cli_read_points: a decimal int32. */
+static bool value_field(const char **cursor, void *value, const char **why)
 {
-    cli_input_t in;
-    cli_open(&in, path);
-    size_t n = 0, capacity = 0;
-    *points = NULL;
-    *values = NULL;
-    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
-        vor_point_t p;
-        int32_t v;
-        const char *why = NULL;
-        const char *cursor = line;
-        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
-            !cli_int32_field(&cursor, &v, &why)) {
-            char reason[300];
-            snprintf(reason, sizeof reason, "%s (expected x y value or x,y,value)", why);
-            cli_line_error(&in, reason);
-        }
-        if (!cli_at_end(cursor)) {
-            cli_line_error(&in, "too many fields (expected x y value or x,y,value)");
-        }
-        if (n == VOR_MAX_SITES) {
-            cli_line_error(&in, "more sites than VOR_MAX_SITES");
-        }
-        if (n == capacity) {
-            capacity = (capacity != 0u) ? 2u * capacity : 1024u;
-            *points = realloc(*points, capacity * sizeof **points);
-            *values = realloc(*values, capacity * sizeof **values);
-            if ((*points == NULL) || (*values == NULL)) {
-                cli_error("out of memory");
-            }
-        }
-        (*points)[n] = p;
-        (*values)[n] = v;
-        n++;
-    }
-    cli_close(&in);
-    *count = (uint32_t)n;
+    return cli_int32_field(cursor, (int32_t *)value, why);
 }
 
 /* Non-negative integers of n 32-bit words, least significant first: just
@@ -242,8 +208,9 @@ int cli_interpolate(int argc, char **argv)
     }
     uint32_t n, queries;
     vor_point_t *sites;
-    int32_t *values;
-    read_valued(paths[0], &sites, &values, &n);
+    void *fields;
+    n = cli_read_points(paths[0], "value", value_field, sizeof(int32_t), &sites, &fields);
+    int32_t *values = fields;
     vor_point_t *points;
     vor_t d;
     void *arena = cli_query_diagram(&d, sites, n, paths[0], paths[1], "no sites to interpolate", &points, &queries);
