@@ -7,9 +7,14 @@ Expected answers come from Python's big integers, independently of the C
 code. Prints failures and ends with "N passed, N failed"; exit status 1 if
 anything failed. Usage: tests/cli/test_cli.py path/to/vor
 """
+import os
 import random
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from exact_plane import (boundary_coordinates, clip_half_plane, laplace_inside,  # noqa: E402
+                         polygon_area2, sibson_inside)
 
 VOR = sys.argv[1] if len(sys.argv) > 1 else "build/host/vor"
 MIN, MAX = -2**31, 2**31 - 1
@@ -251,26 +256,6 @@ def raster_cases(rng, tmp):
     r = run(["raster", "--size", "30", "20", "--origin", "0", "0", "--step", "1", "1",
              os.path.join(tmp, "lattice-ties.sites"), "--png", png], "")
     check(r.returncode == 0 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"raster --png: {r.returncode} {r.stderr!r}")
-def clip_half_plane(poly, a, b, c):
-    """Sutherland-Hodgman: the part of the convex polygon with a x + b y <= c."""
-    out = []
-    for k in range(len(poly)):
-        p, q = poly[k], poly[(k + 1) % len(poly)]
-        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
-        if fp <= 0:
-            out.append(p)
-        if (fp < 0 < fq) or (fq < 0 < fp):
-            t = fp / (fp - fq)
-            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    return out
-
-
-def polygon_area2(poly):
-    """Twice the signed area (shoelace)."""
-    return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
-               for k in range(len(poly)))
-
-
 def brute_cell(sites, i, box):
     """Cell of sites[i] in the box, exactly: the box clipped by the closed
     half-plane |p - s|^2 <= |p - n|^2 of every other distinct site n, with
@@ -302,70 +287,14 @@ def brute_cell(sites, i, box):
     return merged[start:] + merged[:start]
 
 
-def boundary_coordinates(sites, q):
-    """(True, coordinates) when q is a site, on the boundary of the
-    distinct sites' hull or outside it: that site; the limit on the
-    boundary, linear between the sites around q on the hull line; None
-    outside. (False, None) strictly inside."""
-    from fractions import Fraction as F
-    if q in sites:
-        return True, {sites.index(q): F(1)}
-    for A in sites:
-        for B in sites:
-            if A == B or any(orient(A, B, c) < 0 for c in sites):
-                continue
-            side = orient(A, B, q)
-            if side < 0:
-                return True, None
-            if side == 0:
-                d = (B[0] - A[0], B[1] - A[1])
-                t = lambda p: (p[0] - A[0]) * d[0] + (p[1] - A[1]) * d[1]
-                line = [p for p in sites if orient(A, B, p) == 0]
-                lo = [p for p in line if t(p) < t(q)]
-                hi = [p for p in line if t(p) > t(q)]
-                if not lo or not hi:
-                    return True, None
-                a, b = max(lo, key=t), min(hi, key=t)
-                e = (b[0] - a[0], b[1] - a[1])
-                la = F((b[0] - q[0]) * e[0] + (b[1] - q[1]) * e[1], e[0] ** 2 + e[1] ** 2)
-                return True, {sites.index(a): la, sites.index(b): 1 - la}
-    if len(sites) < 3:
-        return True, None  # collinear: answered by the hull-line test above
-    return False, None
-
-
-def cell_of_new_site(sites, q):
-    """q's cell with q added to the sites, exactly: a huge box cut by the
-    bisectors of q with every site (bounded for q inside the hull)."""
-    from fractions import Fraction as F
-    big = F(2) ** 130
-    cell = [(-big, -big), (big, -big), (big, big), (-big, big)]
-    for s in sites:
-        cell = clip_half_plane(cell, 2 * (s[0] - q[0]), 2 * (s[1] - q[1]),
-                               s[0] ** 2 + s[1] ** 2 - q[0] ** 2 - q[1] ** 2)
-    return cell
-
-
 def brute_sibson(sites, q):
     """Sibson coordinates {site index: Fraction} of q among distinct
-    sites by exact clipping: q's cell with q added, the part of it nearer
-    each site than every other site, over the whole; at a site, on the
-    hull's boundary and outside it as boundary_coordinates says."""
+    sites by exact clipping (tools/exact_plane.py): q's cell with q added,
+    the part of it nearer each site than every other site, over the
+    whole; at a site, on the hull's boundary and outside it as
+    boundary_coordinates says."""
     done, coordinates = boundary_coordinates(sites, q)
-    if done:
-        return coordinates
-    cell = cell_of_new_site(sites, q)
-    total = polygon_area2(cell)
-    out = {}
-    for i, p in enumerate(sites):
-        piece = cell
-        for o in sites:
-            if piece and o != p:
-                piece = clip_half_plane(piece, 2 * (o[0] - p[0]), 2 * (o[1] - p[1]),
-                                        o[0] ** 2 + o[1] ** 2 - p[0] ** 2 - p[1] ** 2)
-        if piece and polygon_area2(piece) != 0:
-            out[i] = polygon_area2(piece) / total
-    return out
+    return coordinates if done else sibson_inside(sites, q)
 
 
 def check_interpolate(rng, tmp, name, flags, config, brute):
@@ -435,28 +364,12 @@ def interpolate_cases(rng, tmp):
 
 def brute_laplace(sites, q):
     """Laplace coordinates {site index: Fraction} of q among distinct
-    sites: the length of the edge of q's cell (q added, exactly) that
-    faces each site over the site's distance from q, normalised; at a
-    site, on the hull's boundary and outside it as boundary_coordinates
-    says. An edge on the bisector of q and s, perpendicular to s - q, has
-    length |e x (s - q)| / |s - q|: over |s - q| that is rational."""
+    sites (tools/exact_plane.py): the length of the edge of q's cell (q
+    added, exactly) that faces each site over the site's distance from q,
+    normalised; at a site, on the hull's boundary and outside it as
+    boundary_coordinates says."""
     done, coordinates = boundary_coordinates(sites, q)
-    if done:
-        return coordinates
-    cell = cell_of_new_site(sites, q)
-    weights = {}
-    for k in range(len(cell)):
-        u, v = cell[k], cell[(k + 1) % len(cell)]
-        if u == v:
-            continue
-        for i, s in enumerate(sites):
-            a, b = 2 * (s[0] - q[0]), 2 * (s[1] - q[1])
-            c = s[0] ** 2 + s[1] ** 2 - q[0] ** 2 - q[1] ** 2
-            if a * u[0] + b * u[1] == c and a * v[0] + b * v[1] == c:
-                cross = (v[0] - u[0]) * (s[1] - q[1]) - (v[1] - u[1]) * (s[0] - q[0])
-                weights[i] = weights.get(i, 0) + abs(cross) / ((s[0] - q[0]) ** 2 + (s[1] - q[1]) ** 2)
-    total = sum(weights.values())
-    return {i: w / total for i, w in weights.items()}
+    return coordinates if done else laplace_inside(sites, q)
 
 
 def laplace_cases(tmp):
