@@ -652,12 +652,17 @@ static const uint32_t *put_number(const ip_space_t *sp, uint32_t slot, const vor
     return r;
 }
 
-/* The coordinates of q in the scratch: ids and numbers 0 .. k (the
- * weights, then the denominator). *needed = k when the scratch is too
- * small (VOR_ERR_NOMEM). Arguments checked by the caller. */
+/* The entry points' common part: their argument checks, then the
+ * coordinates of q in the scratch, ids and numbers 0 .. k (the weights,
+ * then the denominator). count is where VOR_ERR_NOMEM writes the k needed
+ * (the caller's out->count or out->neighbours, nothing else of *out),
+ * NULL when an output or the values are missing (VOR_ERR_ARG). */
 static int coordinates(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
-                       size_t scratch_bytes, bool laplace, ip_space_t *sp, uint32_t *needed)
+                       size_t scratch_bytes, bool laplace, ip_space_t *sp, uint32_t *count)
 {
+    if ((d == NULL) || (count == NULL) || ((scratch == NULL) && (scratch_bytes > 0u))) {
+        return VOR_ERR_ARG;
+    }
     uint32_t c;
     int err = vor_nearest(d, q, hint, &c);
     if (err != VOR_OK) {
@@ -665,8 +670,8 @@ static int coordinates(const vor_t *d, vor_point_t q, uint32_t hint, void *scrat
     }
     const vor_point_t *s = d->sites;
     if ((s[c].x == q.x) && (s[c].y == q.y)) { /* at a site: its value */
-        *needed = 1;
         if (!cut_scratch(sp, scratch, scratch_bytes, 1u)) {
+            *count = 1;
             return VOR_ERR_NOMEM;
         }
         sp->ids[0] = c;
@@ -690,9 +695,12 @@ static int coordinates(const vor_t *d, vor_point_t q, uint32_t hint, void *scrat
             return VOR_ERR_INVALID;
         }
         if (walk == WALK_INSIDE) {
-            *needed = k;
-            if ((k < 3u) || !cut_scratch(sp, scratch, scratch_bytes, k)) {
-                return (k < 3u) ? VOR_ERR_INVALID : VOR_ERR_NOMEM;
+            if (k < 3u) {
+                return VOR_ERR_INVALID;
+            }
+            if (!cut_scratch(sp, scratch, scratch_bytes, k)) {
+                *count = k;
+                return VOR_ERR_NOMEM;
             }
             sp->points_used = k;
             sp->laplace = laplace;
@@ -727,8 +735,8 @@ static int coordinates(const vor_t *d, vor_point_t q, uint32_t hint, void *scrat
         edge[0] = c;
         edge[1] = best;
     }
-    *needed = 2;
     if (!cut_scratch(sp, scratch, scratch_bytes, 2u)) {
+        *count = 2;
         return VOR_ERR_NOMEM;
     }
     edge_weights(d, sp, &q, edge);
@@ -739,16 +747,10 @@ static int coordinates(const vor_t *d, vor_point_t q, uint32_t hint, void *scrat
 static int natural(const vor_t *d, vor_point_t q, uint32_t hint, void *scratch,
                    size_t scratch_bytes, bool laplace, vor_coordinates_t *out)
 {
-    if ((d == NULL) || (out == NULL) || ((scratch == NULL) && (scratch_bytes > 0u))) {
-        return VOR_ERR_ARG;
-    }
     ip_space_t sp;
-    uint32_t needed = 0;
-    int err = coordinates(d, q, hint, scratch, scratch_bytes, laplace, &sp, &needed);
+    int err = coordinates(d, q, hint, scratch, scratch_bytes, laplace, &sp,
+                          (out != NULL) ? &out->count : NULL);
     if (err != VOR_OK) {
-        if (err == VOR_ERR_NOMEM) {
-            out->count = needed;
-        }
         return err;
     }
     /* every weight is at most the denominator: its words bound them all */
@@ -802,17 +804,10 @@ static uint64_t rounded_quotient(vor__limb *rest, vor__limb *step, size_t width)
 static int interpolate(const vor_t *d, const int32_t *values, vor_point_t q, uint32_t hint,
                        void *scratch, size_t scratch_bytes, bool laplace, vor_interpolation_t *out)
 {
-    if ((d == NULL) || (values == NULL) || (out == NULL) ||
-        ((scratch == NULL) && (scratch_bytes > 0u))) {
-        return VOR_ERR_ARG;
-    }
     ip_space_t sp;
-    uint32_t needed = 0;
-    int err = coordinates(d, q, hint, scratch, scratch_bytes, laplace, &sp, &needed);
+    int err = coordinates(d, q, hint, scratch, scratch_bytes, laplace, &sp,
+                          ((values != NULL) && (out != NULL)) ? &out->neighbours : NULL);
     if (err != VOR_OK) {
-        if (err == VOR_ERR_NOMEM) {
-            out->neighbours = needed;
-        }
         return err;
     }
     size_t width = sp.width;

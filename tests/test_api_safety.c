@@ -844,11 +844,14 @@ static bool power_unchanged(void)
            test_same_bytes(saved_power_arena, power_arena, sizeof power_arena);
 }
 
-/* The jittered grid, weight 0, but: site 10 heavy enough to hide every
- * site off the hull (a radius of 10^4 over a grid of 8000 by 4000),
- * site POWER_N - 2 at site 5's point 1000 lighter (hidden: farther
- * everywhere), site POWER_N - 1 a copy of site 3 (a duplicate). */
-static void make_power_scene(void)
+/* The power calls' set-up: the scene built in power (duplicate_of into
+ * dup, or NULL), then the snapshot power_unchanged compares with; returns
+ * whether it built. The scene: the jittered grid, weight 0, but site 10
+ * heavy enough to hide every site off the hull (a radius of 10^4 over a
+ * grid of 8000 by 4000), site POWER_N - 2 at site 5's point 1000 lighter
+ * (hidden: farther everywhere), site POWER_N - 1 a copy of site 3 (a
+ * duplicate). */
+static bool power_scene(uint32_t *dup)
 {
     for (uint32_t i = 0; i < POWER_N; i++) {
         power_points[i] = points[i];
@@ -858,6 +861,10 @@ static void make_power_scene(void)
     power_points[POWER_N - 2u] = points[5];
     power_weights[POWER_N - 2u] = -1000;
     power_points[POWER_N - 1u] = points[3];
+    bool built = vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
+                 vor_power_build(&power, power_points, power_weights, POWER_N, dup) == VOR_OK;
+    power_snapshot();
+    return built;
 }
 
 /* vor_power_init: each documented error alone, nothing written; the good
@@ -906,14 +913,10 @@ static void check_power_init(void)
  * were and writes no id and no duplicate_of. */
 static void check_power_insert_and_build(void)
 {
-    make_power_scene();
     uint32_t dup[POWER_N];
     uint32_t out = 77;
-    CHECK(vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
-              vor_power_build(&power, power_points, power_weights, POWER_N, dup) == VOR_OK &&
-              dup[POWER_N - 1u] == 3u && dup[POWER_N - 2u] == POWER_N - 2u && dup[0] == 0u,
+    CHECK(power_scene(dup) && dup[POWER_N - 1u] == 3u && dup[POWER_N - 2u] == POWER_N - 2u && dup[0] == 0u,
           "power: the scene");
-    power_snapshot();
     unsigned bad = 0;
     bad += vor_power_insert(NULL, (vor_point_t){1, 2}, 0, &out) != VOR_ERR_ARG;
     bad += out != 77;
@@ -968,11 +971,7 @@ static void check_power_insert_and_build(void)
  * zeroed and after their end, vor_power_validate; none writes. */
 static void check_power_reads(void)
 {
-    make_power_scene();
-    CHECK(vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
-              vor_power_build(&power, power_points, power_weights, POWER_N, NULL) == VOR_OK,
-          "power: the scene");
-    power_snapshot();
+    CHECK(power_scene(NULL), "power: the scene");
     unsigned bad = 0;
     uint32_t hidden = 0;
     bad += vor_power_hidden(NULL, 0) != VOR_ERR_ARG;
@@ -1086,11 +1085,7 @@ static void check_power_reads(void)
  * arena as they were and writes no id. Then the good calls. */
 static void check_power_dynamic(void)
 {
-    make_power_scene();
-    CHECK(vor_power_init(&power, power_arena, sizeof power_arena, SAFE_SITES) == VOR_OK &&
-              vor_power_build(&power, power_points, power_weights, POWER_N, NULL) == VOR_OK,
-          "power: the scene");
-    power_snapshot();
+    CHECK(power_scene(NULL), "power: the scene");
     unsigned bad = 0;
     uint32_t out = 77;
     const uint32_t no_site[5] = {POWER_N - 1u, POWER_N, SAFE_SITES, VOR_NO_HINT - 1u, VOR_NO_HINT};

@@ -28,6 +28,9 @@
 #include "vor.h"
 #include "vor_power.h"
 
+#define WIDE_LIMBS 64u
+#include "wide.h"
+
 #define CEN_SITES 16u
 #define CEN_MAX_VERTICES VOR_CELL_MAX_VERTICES(CEN_SITES)
 
@@ -41,70 +44,7 @@ static const int64_t *cell_weights;
 static uint8_t power_arena[VOR_POWER_ARENA_BYTES(CEN_SITES)] __attribute__((aligned(8)));
 
 /* ------------------------------------------------------------------ */
-/* 2048-bit two's complement integers                                  */
-
-#define WIDE_LIMBS 64u
-typedef struct {
-    uint32_t v[WIDE_LIMBS];
-} wide_t;
-
-static void wide_set(wide_t *r, int64_t x)
-{
-    uint64_t u = (uint64_t)x;
-    r->v[0] = (uint32_t)u;
-    r->v[1] = (uint32_t)(u >> 32);
-    for (unsigned i = 2; i < WIDE_LIMBS; i++) {
-        r->v[i] = (x < 0) ? 0xFFFFFFFFu : 0u;
-    }
-}
-
-static void wide_add(wide_t *r, const wide_t *a)
-{
-    uint64_t carry = 0;
-    for (unsigned i = 0; i < WIDE_LIMBS; i++) {
-        uint64_t s = (uint64_t)r->v[i] + a->v[i] + carry;
-        r->v[i] = (uint32_t)s;
-        carry = s >> 32;
-    }
-}
-
-/* r = a b, the low 2048 bits: exact in two's complement when it fits. */
-static void wide_mul(wide_t *r, const wide_t *a, const wide_t *b)
-{
-    wide_t t;
-    wide_set(&t, 0);
-    for (unsigned i = 0; i < WIDE_LIMBS; i++) {
-        uint64_t carry = 0;
-        for (unsigned j = 0; i + j < WIDE_LIMBS; j++) {
-            uint64_t p = (uint64_t)a->v[i] * b->v[j] + t.v[i + j] + carry;
-            t.v[i + j] = (uint32_t)p;
-            carry = p >> 32;
-        }
-    }
-    *r = t;
-}
-
-static void wide_mul_i64(wide_t *r, const wide_t *a, int64_t k)
-{
-    wide_t b;
-    wide_set(&b, k);
-    wide_mul(r, a, &b);
-}
-
-/* Signed comparison: -1, 0 or 1. */
-static int wide_compare(const wide_t *a, const wide_t *b)
-{
-    bool an = (a->v[WIDE_LIMBS - 1] >> 31) != 0, bn = (b->v[WIDE_LIMBS - 1] >> 31) != 0;
-    if (an != bn) {
-        return an ? -1 : 1;
-    }
-    for (unsigned i = WIDE_LIMBS; i-- > 0;) {
-        if (a->v[i] != b->v[i]) {
-            return (a->v[i] < b->v[i]) ? -1 : 1;
-        }
-    }
-    return 0;
-}
+/* 2048-bit two's complement integers (tests/wide.h)                   */
 
 /* Is r = floor(num / den + 1/2), i.e. (2r - 1) den <= 2 num < (2r + 1) den,
  * for den > 0? */

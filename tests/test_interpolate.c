@@ -22,6 +22,9 @@
 #include "vor.h"
 #include "interpolate_vectors.h"
 
+#define WIDE_LIMBS 128u
+#include "wide.h"
+
 #define IP_SITES 24u
 #define IP_K 24u
 
@@ -35,107 +38,13 @@ static uint8_t ip_scratch2[VOR_SIBSON_SCRATCH_BYTES(IP_K) + 8u];
 static int32_t ip_values[IP_SITES];
 
 /* ------------------------------------------------------------------ */
-/* 4096-bit two's complement integers                                  */
+/* 4096-bit two's complement integers (tests/wide.h)                   */
 
-#define BIG_WORDS 128u
-typedef struct {
-    uint32_t v[BIG_WORDS];
-} big_t;
-
-static big_t big_a;
-static big_t big_b;
-static big_t big_c;
-static big_t big_d;
-static big_t big_e;
-
-static void big_int(big_t *r, int64_t x)
-{
-    uint64_t u = (uint64_t)x;
-    r->v[0] = (uint32_t)u;
-    r->v[1] = (uint32_t)(u >> 32);
-    for (unsigned i = 2; i < BIG_WORDS; i++) {
-        r->v[i] = (x < 0) ? 0xFFFFFFFFu : 0u;
-    }
-}
-
-static void big_words(big_t *r, const uint32_t *w, uint32_t n)
-{
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        r->v[i] = (i < n) ? w[i] : 0u;
-    }
-}
-
-static void big_add(big_t *r, const big_t *a)
-{
-    uint64_t carry = 0;
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        uint64_t s = (uint64_t)r->v[i] + a->v[i] + carry;
-        r->v[i] = (uint32_t)s;
-        carry = s >> 32;
-    }
-}
-
-static void big_neg(big_t *r)
-{
-    uint64_t carry = 1;
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        uint64_t s = (uint64_t)(uint32_t)~r->v[i] + carry;
-        r->v[i] = (uint32_t)s;
-        carry = s >> 32;
-    }
-}
-
-static void big_sub(big_t *r, const big_t *a)
-{
-    static big_t t;
-    t = *a;
-    big_neg(&t);
-    big_add(r, &t);
-}
-
-/* r = a b, the low 4096 bits (r distinct from a and b). */
-static void big_mul(big_t *r, const big_t *a, const big_t *b)
-{
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        r->v[i] = 0;
-    }
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        uint64_t carry = 0;
-        if (a->v[i] == 0u) {
-            continue;
-        }
-        for (unsigned j = 0; (i + j) < BIG_WORDS; j++) {
-            uint64_t t = ((uint64_t)a->v[i] * b->v[j]) + r->v[i + j] + carry;
-            r->v[i + j] = (uint32_t)t;
-            carry = t >> 32;
-        }
-    }
-}
-
-static bool big_equal(const big_t *a, const big_t *b)
-{
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        if (a->v[i] != b->v[i]) {
-            return false;
-        }
-    }
-    return true;
-}
-
-static bool big_zero(const big_t *a)
-{
-    for (unsigned i = 0; i < BIG_WORDS; i++) {
-        if (a->v[i] != 0u) {
-            return false;
-        }
-    }
-    return true;
-}
-
-static bool big_negative(const big_t *a)
-{
-    return (a->v[BIG_WORDS - 1u] >> 31) != 0u;
-}
+static wide_t big_a;
+static wide_t big_b;
+static wide_t big_c;
+static wide_t big_d;
+static wide_t big_e;
 
 /* ------------------------------------------------------------------ */
 
@@ -150,36 +59,36 @@ static bool ip_build(vor_t *d, uint8_t *arena, const vor_point_t *points, uint32
 static bool ip_invariants(const vor_t *d, const vor_coordinates_t *s, vor_point_t q)
 {
     bool ok = (s->count >= 1u) && (s->limbs >= 1u);
-    big_words(&big_a, s->denominator, s->limbs);
-    ok = ok && !big_zero(&big_a);
-    big_int(&big_b, 0); /* sum w */
-    big_int(&big_c, 0); /* sum w (p - q).x */
-    big_int(&big_d, 0); /* sum w (p - q).y */
+    wide_words(&big_a, s->denominator, s->limbs);
+    ok = ok && !wide_zero(&big_a);
+    wide_set(&big_b, 0); /* sum w */
+    wide_set(&big_c, 0); /* sum w (p - q).x */
+    wide_set(&big_d, 0); /* sum w (p - q).y */
     for (uint32_t i = 0; i < s->count; i++) {
-        big_words(&big_e, s->weights + ((size_t)i * s->limbs), s->limbs);
-        ok = ok && !big_zero(&big_e);
-        big_add(&big_b, &big_e);
-        static big_t t;
-        static big_t f;
+        wide_words(&big_e, s->weights + ((size_t)i * s->limbs), s->limbs);
+        ok = ok && !wide_zero(&big_e);
+        wide_add(&big_b, &big_e);
+        static wide_t t;
+        static wide_t f;
         vor_point_t p = d->sites[s->sites[i]];
-        big_int(&f, (int64_t)p.x - q.x);
-        big_mul(&t, &big_e, &f);
-        big_add(&big_c, &t);
-        big_int(&f, (int64_t)p.y - q.y);
-        big_mul(&t, &big_e, &f);
-        big_add(&big_d, &t);
+        wide_set(&f, (int64_t)p.x - q.x);
+        wide_mul(&t, &big_e, &f);
+        wide_add(&big_c, &t);
+        wide_set(&f, (int64_t)p.y - q.y);
+        wide_mul(&t, &big_e, &f);
+        wide_add(&big_d, &t);
         for (uint32_t j = 0; j < i; j++) {
             ok = ok && (s->sites[j] != s->sites[i]);
         }
     }
-    return ok && big_equal(&big_a, &big_b) && big_zero(&big_c) && big_zero(&big_d);
+    return ok && wide_equal(&big_a, &big_b) && wide_zero(&big_c) && wide_zero(&big_d);
 }
 
 /* The brute force's coordinates of one query (Sibson's or Laplace's). */
 static uint32_t ip_vector_weights(const vor_coordinates_t *s, const ipv_weight_t *weights, uint32_t count)
 {
     uint32_t bad = 0;
-    big_words(&big_a, s->denominator, s->limbs);
+    wide_words(&big_a, s->denominator, s->limbs);
     for (uint32_t j = 0; j < count; j++) {
         const ipv_weight_t *w = &weights[j];
         uint32_t k = 0;
@@ -190,12 +99,12 @@ static uint32_t ip_vector_weights(const vor_coordinates_t *s, const ipv_weight_t
             return bad + 1u;
         }
         /* w_k / D == num / den */
-        big_words(&big_b, s->weights + ((size_t)k * s->limbs), s->limbs);
-        big_words(&big_c, w->den, w->den_words);
-        big_mul(&big_d, &big_b, &big_c);
-        big_words(&big_b, w->num, w->num_words);
-        big_mul(&big_e, &big_b, &big_a);
-        bad += big_equal(&big_d, &big_e) ? 0u : 1u;
+        wide_words(&big_b, s->weights + ((size_t)k * s->limbs), s->limbs);
+        wide_words(&big_c, w->den, w->den_words);
+        wide_mul(&big_d, &big_b, &big_c);
+        wide_words(&big_b, w->num, w->num_words);
+        wide_mul(&big_e, &big_b, &big_a);
+        bad += wide_equal(&big_d, &big_e) ? 0u : 1u;
     }
     return bad;
 }
@@ -254,8 +163,8 @@ static bool ip_turn_agrees(const vor_coordinates_t *s, const vor_coordinates_t *
     if (s->count != t->count) {
         return false;
     }
-    big_words(&big_a, s->denominator, s->limbs);
-    big_words(&big_b, t->denominator, t->limbs);
+    wide_words(&big_a, s->denominator, s->limbs);
+    wide_words(&big_b, t->denominator, t->limbs);
     for (uint32_t i = 0; i < s->count; i++) {
         uint32_t j = 0;
         while ((j < t->count) && (t->sites[j] != s->sites[i])) {
@@ -264,11 +173,11 @@ static bool ip_turn_agrees(const vor_coordinates_t *s, const vor_coordinates_t *
         if (j == t->count) {
             return false;
         }
-        big_words(&big_c, s->weights + ((size_t)i * s->limbs), s->limbs);
-        big_mul(&big_d, &big_c, &big_b);
-        big_words(&big_c, t->weights + ((size_t)j * t->limbs), t->limbs);
-        big_mul(&big_e, &big_c, &big_a);
-        if (!big_equal(&big_d, &big_e)) {
+        wide_words(&big_c, s->weights + ((size_t)i * s->limbs), s->limbs);
+        wide_mul(&big_d, &big_c, &big_b);
+        wide_words(&big_c, t->weights + ((size_t)j * t->limbs), t->limbs);
+        wide_mul(&big_e, &big_c, &big_a);
+        if (!wide_equal(&big_d, &big_e)) {
             return false;
         }
     }
@@ -280,46 +189,46 @@ static bool ip_turn_agrees(const vor_coordinates_t *s, const vor_coordinates_t *
  * |2 N - 2 value D| <= D, and = D only away from zero. */
 static bool ip_value_agrees(const vor_t *d, const vor_coordinates_t *s, const vor_interpolation_t *v)
 {
-    big_int(&big_a, 0);
+    wide_set(&big_a, 0);
     for (uint32_t i = 0; i < s->count; i++) {
-        static big_t t;
-        big_words(&big_b, s->weights + ((size_t)i * s->limbs), s->limbs);
-        big_int(&big_c, ip_values[s->sites[i]]);
-        big_mul(&t, &big_b, &big_c);
-        big_add(&big_a, &t);
+        static wide_t t;
+        wide_words(&big_b, s->weights + ((size_t)i * s->limbs), s->limbs);
+        wide_set(&big_c, ip_values[s->sites[i]]);
+        wide_mul(&t, &big_b, &big_c);
+        wide_add(&big_a, &t);
     }
     (void)d;
-    big_words(&big_b, s->denominator, s->limbs);
+    wide_words(&big_b, s->denominator, s->limbs);
     /* the exact value as given: sign |N| / D' with N / D' = sum / D */
-    big_words(&big_c, v->numerator, v->limbs);
+    wide_words(&big_c, v->numerator, v->limbs);
     if (v->sign < 0) {
-        big_neg(&big_c);
+        wide_neg(&big_c);
     }
-    big_words(&big_d, v->denominator, v->limbs);
-    big_mul(&big_e, &big_c, &big_b);
-    static big_t t;
-    big_mul(&t, &big_a, &big_d);
-    if (!big_equal(&big_e, &t) || (big_zero(&big_c) != (v->sign == 0))) {
+    wide_words(&big_d, v->denominator, v->limbs);
+    wide_mul(&big_e, &big_c, &big_b);
+    static wide_t t;
+    wide_mul(&t, &big_a, &big_d);
+    if (!wide_equal(&big_e, &t) || (wide_zero(&big_c) != (v->sign == 0))) {
         return false;
     }
     /* e = 2 N - 2 value D' */
     big_e = big_c;
-    big_add(&big_e, &big_c);
-    big_int(&t, 2 * (int64_t)v->value);
-    static big_t u;
-    big_mul(&u, &t, &big_d);
-    big_sub(&big_e, &u);
+    wide_add(&big_e, &big_c);
+    wide_set(&t, 2 * (int64_t)v->value);
+    static wide_t u;
+    wide_mul(&u, &t, &big_d);
+    wide_sub(&big_e, &u);
     /* |e| <= D'; at a half (|e| = D') away from zero: e = -D' for
      * N > 0, e = D' for N < 0 */
-    bool negative = big_negative(&big_e);
+    bool negative = wide_negative(&big_e);
     if (negative) {
-        big_neg(&big_e);
+        wide_neg(&big_e);
     }
-    big_sub(&big_e, &big_d); /* |e| - D' <= 0 */
-    if (!big_negative(&big_e) && !big_zero(&big_e)) {
+    wide_sub(&big_e, &big_d); /* |e| - D' <= 0 */
+    if (!wide_negative(&big_e) && !wide_zero(&big_e)) {
         return false;
     }
-    if (big_zero(&big_e)) { /* a half: rounded away from zero */
+    if (wide_zero(&big_e)) { /* a half: rounded away from zero */
         return negative ? (v->sign > 0) : (v->sign < 0);
     }
     return true;

@@ -514,55 +514,61 @@ static void check_grid_brute(bool equal)
     }
 }
 
-/* Sites at one point with different weights: the largest is the vertex. */
-static void check_coincident(void)
+/* 20 rounds of brute-force checks on scenes of min_n + (a draw mod
+ * spread) sites, site i drawn by site(rng, i) into scene. */
+typedef void site_maker_t(test_rng_t *rng, uint32_t i);
+
+static void check_rounds(uint64_t seed, uint32_t min_n, uint32_t spread, site_maker_t *site)
 {
     test_rng_t rng;
-    test_rng_seed(&rng, 21);
+    test_rng_seed(&rng, seed);
     for (unsigned round = 0; round < 20u; round++) {
-        uint32_t n = 4u + (test_rng_u32(&rng) % (POWER_BRUTE - 3u));
+        uint32_t n = min_n + (test_rng_u32(&rng) % spread);
         for (uint32_t i = 0; i < n; i++) {
-            scene.p[i].x = test_rng_range(&rng, 0, 3);
-            scene.p[i].y = test_rng_range(&rng, 0, 3);
-            scene.w[i] = test_rng_range(&rng, 0, 4);
+            site(&rng, i);
         }
         scene.n = n;
         check_brute(&scene);
     }
 }
 
+/* Sites at one point with different weights: the largest is the vertex. */
+static void coincident_site(test_rng_t *rng, uint32_t i)
+{
+    scene.p[i].x = test_rng_range(rng, 0, 3);
+    scene.p[i].y = test_rng_range(rng, 0, 3);
+    scene.w[i] = test_rng_range(rng, 0, 4);
+}
+
+static void check_coincident(void)
+{
+    check_rounds(21, 4u, POWER_BRUTE - 3u, coincident_site);
+}
+
 /* Coordinates near 2^30, weights near 2^61. */
+static void far_site(test_rng_t *rng, uint32_t i)
+{
+    scene.p[i].x = (int32_t)(1073741824 - test_rng_range(rng, 0, 3) * 1000000);
+    scene.p[i].y = (int32_t)(-1073741824 + test_rng_range(rng, 0, 3) * 1000000);
+    scene.w[i] = ((int64_t)1 << 61) + (int64_t)test_rng_range(rng, 0, 1 << 30) * 4096;
+}
+
 static void check_far(void)
 {
-    test_rng_t rng;
-    test_rng_seed(&rng, 33);
-    for (unsigned round = 0; round < 20u; round++) {
-        uint32_t n = 4u + (test_rng_u32(&rng) % (POWER_BRUTE - 3u));
-        for (uint32_t i = 0; i < n; i++) {
-            scene.p[i].x = (int32_t)(1073741824 - test_rng_range(&rng, 0, 3) * 1000000);
-            scene.p[i].y = (int32_t)(-1073741824 + test_rng_range(&rng, 0, 3) * 1000000);
-            scene.w[i] = ((int64_t)1 << 61) + (int64_t)test_rng_range(&rng, 0, 1 << 30) * 4096;
-        }
-        scene.n = n;
-        check_brute(&scene);
-    }
+    check_rounds(33, 4u, POWER_BRUTE - 3u, far_site);
+}
+
+static void collinear_site(test_rng_t *rng, uint32_t i)
+{
+    int32_t t = test_rng_range(rng, -6, 6);
+    scene.p[i].x = 2 * t;
+    scene.p[i].y = 3 * t;
+    scene.w[i] = test_rng_range(rng, 0, 40);
 }
 
 static void check_collinear(void)
 {
-    test_rng_t rng;
-    test_rng_seed(&rng, 44);
-    for (unsigned round = 0; round < 20u; round++) {
-        uint32_t n = 3u + (test_rng_u32(&rng) % 8u);
-        for (uint32_t i = 0; i < n; i++) {
-            int32_t t = test_rng_range(&rng, -6, 6);
-            scene.p[i].x = 2 * t;
-            scene.p[i].y = 3 * t;
-            scene.w[i] = test_rng_range(&rng, 0, 40);
-        }
-        scene.n = n;
-        check_brute(&scene);
-    }
+    check_rounds(44, 3u, 8u, collinear_site);
 }
 
 static void check_large(unsigned family, uint64_t seed)

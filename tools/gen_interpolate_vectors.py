@@ -8,119 +8,27 @@ Each query point's coordinates come from exact rational clipping with
 fractions.Fraction: q's cell in the diagram with q added (a huge box cut
 by the bisectors of q with every site), then the area it takes from site
 i (that cell cut by the bisectors of site i with every other site), over
-the whole cell's area. On the hull's boundary the coordinates are the
+the whole cell's area (tools/exact_plane.py). On the hull's boundary the coordinates are the
 limit there, linear along the edge; at a site, that site alone; outside
 the hull, none.
 
 Usage: python3 tools/gen_interpolate_vectors.py > tests/vectors/interpolate_vectors.h
 """
 import random
-from fractions import Fraction as F
 
-BIG = F(2) ** 130  # far beyond any vertex of a bounded cell of int32 sites
-
-
-def orient(a, b, c):
-    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-
-
-def clip(poly, a, b, c):
-    """poly cut to a x + b y <= c."""
-    out = []
-    for i, p in enumerate(poly):
-        r = poly[(i + 1) % len(poly)]
-        fp = a * p[0] + b * p[1] - c
-        fr = a * r[0] + b * r[1] - c
-        if fp <= 0:
-            out.append(p)
-        if (fp < 0 < fr) or (fr < 0 < fp):
-            t = fp / (fp - fr)
-            out.append((p[0] + t * (r[0] - p[0]), p[1] + t * (r[1] - p[1])))
-    return out
-
-
-def area2(poly):
-    return sum(poly[i][0] * poly[(i + 1) % len(poly)][1] - poly[(i + 1) % len(poly)][0] * poly[i][1]
-               for i in range(len(poly)))
-
-
-def nearer(p, o):
-    """The half-plane of points at least as near p as o."""
-    return (2 * (o[0] - p[0]), 2 * (o[1] - p[1]), o[0] ** 2 + o[1] ** 2 - p[0] ** 2 - p[1] ** 2)
-
-
-def hull_edge_around(sites, q):
-    """The two sites around q on the hull's boundary, or None."""
-    for A in sites:
-        for B in sites:
-            if A == B or orient(A, B, q) != 0 or any(orient(A, B, c) < 0 for c in sites):
-                continue
-            d = (B[0] - A[0], B[1] - A[1])
-            t = lambda p: (p[0] - A[0]) * d[0] + (p[1] - A[1]) * d[1]
-            line = [p for p in sites if orient(A, B, p) == 0]
-            lo = [p for p in line if t(p) < t(q)]
-            hi = [p for p in line if t(p) > t(q)]
-            if lo and hi:
-                return max(lo, key=t), min(hi, key=t)
-    return None
+from exact_plane import boundary_coordinates, laplace_inside, sibson_inside
 
 
 def natural(sites, q):
     """{site index: Fraction} for distinct sites, or None outside the hull."""
-    if q in sites:
-        return {sites.index(q): F(1)}
-    edge = hull_edge_around(sites, q)
-    if edge is not None:
-        A, B = edge
-        d = (B[0] - A[0], B[1] - A[1])
-        la = F((B[0] - q[0]) * d[0] + (B[1] - q[1]) * d[1], d[0] ** 2 + d[1] ** 2)
-        return {sites.index(A): la, sites.index(B): 1 - la}
-    if len(sites) < 3 or all(orient(sites[0], sites[1], c) == 0 for c in sites):
-        return None
-    for A in sites:
-        for B in sites:
-            if A != B and orient(A, B, q) < 0 and all(orient(A, B, c) >= 0 for c in sites):
-                return None
-    cell = [(-BIG, -BIG), (BIG, -BIG), (BIG, BIG), (-BIG, BIG)]
-    for s in sites:
-        cell = clip(cell, *nearer(q, s))
-    total = area2(cell)
-    out = {}
-    for i, p in enumerate(sites):
-        piece = cell
-        for j, o in enumerate(sites):
-            if piece and j != i:
-                piece = clip(piece, *nearer(p, o))
-        if piece and area2(piece) != 0:
-            out[i] = area2(piece) / total
-    return out
-
-
-def laplace(sites, q):
-    """Laplace's coordinates of q strictly inside the hull: for each edge
-    of q's cell (counterclockwise, v -> w), on the bisector of q and site
-    p, |edge| / |p - q| = (p - q) x (w - v) / |p - q|^2, normalised."""
-    cell = [(-BIG, -BIG), (BIG, -BIG), (BIG, BIG), (-BIG, BIG)]
-    for s in sites:
-        cell = clip(cell, *nearer(q, s))
-    t = {}
-    for j, v in enumerate(cell):
-        w = cell[(j + 1) % len(cell)]
-        for i, p in enumerate(sites):
-            on = lambda z: (z[0] - p[0]) ** 2 + (z[1] - p[1]) ** 2 == (z[0] - q[0]) ** 2 + (z[1] - q[1]) ** 2
-            if v != w and on(v) and on(w):
-                a = (p[0] - q[0], p[1] - q[1])
-                t[i] = t.get(i, 0) + F(a[0] * (w[1] - v[1]) - a[1] * (w[0] - v[0]), a[0] ** 2 + a[1] ** 2)
-    total = sum(t.values())
-    return {i: x / total for i, x in t.items() if x != 0}
+    done, ref = boundary_coordinates(sites, q)
+    return ref if done else sibson_inside(sites, q)
 
 
 def natural_laplace(sites, q):
     """natural() with Laplace's coordinates where q is strictly inside."""
-    ref = natural(sites, q)
-    if ref is None or q in sites or hull_edge_around(sites, q) is not None:
-        return ref
-    return laplace(sites, q)
+    done, ref = boundary_coordinates(sites, q)
+    return ref if done else laplace_inside(sites, q)
 
 
 def words(v):

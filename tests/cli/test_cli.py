@@ -7,9 +7,14 @@ Expected answers come from Python's big integers, independently of the C
 code. Prints failures and ends with "N passed, N failed"; exit status 1 if
 anything failed. Usage: tests/cli/test_cli.py path/to/vor
 """
+import os
 import random
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from exact_plane import (boundary_coordinates, clip_half_plane, laplace_inside,  # noqa: E402
+                         polygon_area2, sibson_inside)
 
 VOR = sys.argv[1] if len(sys.argv) > 1 else "build/host/vor"
 MIN, MAX = -2**31, 2**31 - 1
@@ -251,26 +256,6 @@ def raster_cases(rng, tmp):
     r = run(["raster", "--size", "30", "20", "--origin", "0", "0", "--step", "1", "1",
              os.path.join(tmp, "lattice-ties.sites"), "--png", png], "")
     check(r.returncode == 0 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"raster --png: {r.returncode} {r.stderr!r}")
-def clip_half_plane(poly, a, b, c):
-    """Sutherland-Hodgman: the part of the convex polygon with a x + b y <= c."""
-    out = []
-    for k in range(len(poly)):
-        p, q = poly[k], poly[(k + 1) % len(poly)]
-        fp, fq = a * p[0] + b * p[1] - c, a * q[0] + b * q[1] - c
-        if fp <= 0:
-            out.append(p)
-        if (fp < 0 < fq) or (fq < 0 < fp):
-            t = fp / (fp - fq)
-            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    return out
-
-
-def polygon_area2(poly):
-    """Twice the signed area (shoelace)."""
-    return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
-               for k in range(len(poly)))
-
-
 def brute_cell(sites, i, box):
     """Cell of sites[i] in the box, exactly: the box clipped by the closed
     half-plane |p - s|^2 <= |p - n|^2 of every other distinct site n, with
@@ -304,62 +289,55 @@ def brute_cell(sites, i, box):
 
 def brute_sibson(sites, q):
     """Sibson coordinates {site index: Fraction} of q among distinct
-    sites by exact clipping: q's cell with q added (a huge box cut by the
-    bisectors of q with every site), the part of it nearer each site than
-    every other site, over the whole; at a site that site; on the hull's
-    boundary the limit there, linear between the sites around q on the
-    hull line; None outside the hull."""
-    from fractions import Fraction as F
-    if q in sites:
-        return {sites.index(q): F(1)}
-    for A in sites:
-        for B in sites:
-            if A == B or any(orient(A, B, c) < 0 for c in sites):
-                continue
-            side = orient(A, B, q)
-            if side < 0:
-                return None
-            if side == 0:
-                d = (B[0] - A[0], B[1] - A[1])
-                t = lambda p: (p[0] - A[0]) * d[0] + (p[1] - A[1]) * d[1]
-                line = [p for p in sites if orient(A, B, p) == 0]
-                lo = [p for p in line if t(p) < t(q)]
-                hi = [p for p in line if t(p) > t(q)]
-                if not lo or not hi:
-                    return None
-                a, b = max(lo, key=t), min(hi, key=t)
-                e = (b[0] - a[0], b[1] - a[1])
-                la = F((b[0] - q[0]) * e[0] + (b[1] - q[1]) * e[1], e[0] ** 2 + e[1] ** 2)
-                return {sites.index(a): la, sites.index(b): 1 - la}
-    if len(sites) < 3:
-        return None  # collinear: answered by the hull-line test above
-    big = F(2) ** 130
-    cell = [(-big, -big), (big, -big), (big, big), (-big, big)]
-    for s in sites:
-        cell = clip_half_plane(cell, 2 * (s[0] - q[0]), 2 * (s[1] - q[1]),
-                               s[0] ** 2 + s[1] ** 2 - q[0] ** 2 - q[1] ** 2)
-    total = polygon_area2(cell)
-    out = {}
-    for i, p in enumerate(sites):
-        piece = cell
-        for o in sites:
-            if piece and o != p:
-                piece = clip_half_plane(piece, 2 * (o[0] - p[0]), 2 * (o[1] - p[1]),
-                                        o[0] ** 2 + o[1] ** 2 - p[0] ** 2 - p[1] ** 2)
-        if piece and polygon_area2(piece) != 0:
-            out[i] = polygon_area2(piece) / total
-    return out
+    sites by exact clipping (tools/exact_plane.py): q's cell with q added,
+    the part of it nearer each site than every other site, over the
+    whole; at a site, on the hull's boundary and outside it as
+    boundary_coordinates says."""
+    done, coordinates = boundary_coordinates(sites, q)
+    return coordinates if done else sibson_inside(sites, q)
 
 
-def interpolate_cases(rng, tmp):
-    """vor interpolate against brute_sibson: the exact value in lowest
-    terms and its rounding, halves away from zero; outside lines."""
+def check_interpolate(rng, tmp, name, flags, config, brute):
+    """vor interpolate FLAGS on the valued sites of config, at one site,
+    a midpoint and 12 random points around them, against brute's
+    coordinates. Returns the output lines."""
     import os
+    first = {}
+    for x, y, v in config:
+        first.setdefault((x, y), v)
+    sites = list(first)
+    xs = [p[0] for p in sites]
+    ys = [p[1] for p in sites]
+    queries = [sites[0], ((sites[0][0] + sites[-1][0]) // 2, (sites[0][1] + sites[-1][1]) // 2)]
+    for _ in range(12):
+        queries.append((rng.randint(min(xs) - 1, max(xs) + 1), rng.randint(min(ys) - 1, max(ys) + 1)))
+    site_path = os.path.join(tmp, f"{name}.txt")
+    with open(site_path, "w") as f:
+        f.write("".join(f"{x} {y} {v}\n" for x, y, v in config))
+    r = run(["interpolate"] + flags + [site_path, "-"], "".join(f"{x} {y}\n" for x, y in queries))
+    lines = r.stdout.splitlines()
+    check(r.returncode == 0 and len(lines) == len(queries), f"interpolate {name}: {r.returncode} {r.stderr!r}")
+    for q, line in zip(queries, lines):
+        ref = brute(sites, q)
+        if ref is None:
+            check(line == f"q {q[0]} {q[1]} outside", f"interpolate {name} {q}: {line!r}, expected outside")
+            continue
+        value = sum(lam * first[sites[i]] for i, lam in ref.items())
+        want = f"q {q[0]} {q[1]} {round_half_away(value)} {value.numerator} {value.denominator}"
+        check(line == want, f"interpolate {name} {q}: {line!r}, expected {want!r}")
+    return lines
+
+
+def valued_configs(rng):
+    """The valued site sets (x, y, value) of the interpolate sections: a
+    square, a grid with random values, cocircular sites around a centre
+    site, collinear hull sites, all collinear, a duplicate, and 8 random
+    sets, small to full-range."""
     configs = [
         [(0, 0, 0), (4, 0, 40), (4, 4, 80), (0, 4, 40)],
         [(x, y, rng.randint(-100, 100)) for y in range(0, 9, 4) for x in range(0, 9, 4)],
         [(5, 0, 1), (3, 4, 2), (0, 5, 3), (-4, 3, 4), (-5, 0, 5), (-3, -4, 6), (0, -5, 7), (4, -3, 8),
-         (0, 0, -9)],
+         (0, 0, -9)],  # cocircular around a centre site
         [(0, 0, 0), (3, 0, 7), (6, 0, -7), (9, 0, 100), (4, 5, 5), (0, 6, 6), (9, 6, 9)],
         [(0, 0, 1), (2, 1, 2), (4, 2, 3)],  # collinear
         [(0, 0, 5), (10, 0, 6), (0, 10, 7), (0, 0, 99)],  # a duplicate keeps its first value
@@ -368,34 +346,51 @@ def interpolate_cases(rng, tmp):
         r = rng.choice([8, 1000, 2**31 - 1])
         configs.append([(rng.randint(-r, r), rng.randint(-r, r), rng.randint(-2**31, 2**31 - 1))
                         for _ in range(rng.randint(3, 10))])
+    return configs
+
+
+def interpolate_cases(rng, tmp):
+    """vor interpolate against brute_sibson: the exact value in lowest
+    terms and its rounding, halves away from zero; outside lines."""
+    import os
+    configs = valued_configs(rng)
     for k, config in enumerate(configs):
-        first = {}
-        for x, y, v in config:
-            first.setdefault((x, y), v)
-        sites = list(first)
-        xs = [p[0] for p in sites]
-        ys = [p[1] for p in sites]
-        queries = [sites[0], ((sites[0][0] + sites[-1][0]) // 2, (sites[0][1] + sites[-1][1]) // 2)]
-        for _ in range(12):
-            queries.append((rng.randint(min(xs) - 1, max(xs) + 1), rng.randint(min(ys) - 1, max(ys) + 1)))
-        site_path = os.path.join(tmp, f"interp{k}.txt")
-        with open(site_path, "w") as f:
-            f.write("".join(f"{x} {y} {v}\n" for x, y, v in config))
-        r = run(["interpolate", site_path, "-"], "".join(f"{x} {y}\n" for x, y in queries))
-        lines = r.stdout.splitlines()
-        check(r.returncode == 0 and len(lines) == len(queries), f"interpolate {k}: {r.returncode} {r.stderr!r}")
-        for q, line in zip(queries, lines):
-            ref = brute_sibson(sites, q)
-            if ref is None:
-                check(line == f"q {q[0]} {q[1]} outside", f"interpolate {k} {q}: {line!r}, expected outside")
-                continue
-            value = sum(lam * first[sites[i]] for i, lam in ref.items())
-            want = f"q {q[0]} {q[1]} {round_half_away(value)} {value.numerator} {value.denominator}"
-            check(line == want, f"interpolate {k} {q}: {line!r}, expected {want!r}")
+        check_interpolate(rng, tmp, f"interp{k}", [], config, brute_sibson)
     r = run(["interpolate", "-"], "0 0 1\n")
     check(r.returncode == 2 and "missing QUERIES" in r.stderr, f"interpolate usage: {r.stderr!r}")
     r = run(["interpolate", "-", os.path.join(tmp, "interp0.txt")], "0 0\n")
     check(r.returncode == 2 and r.stderr.startswith("error: <stdin>:1: "), f"interpolate bad site: {r.stderr!r}")
+
+
+def brute_laplace(sites, q):
+    """Laplace coordinates {site index: Fraction} of q among distinct
+    sites (tools/exact_plane.py): the length of the edge of q's cell (q
+    added, exactly) that faces each site over the site's distance from q,
+    normalised; at a site, on the hull's boundary and outside it as
+    boundary_coordinates says."""
+    done, coordinates = boundary_coordinates(sites, q)
+    return coordinates if done else laplace_inside(sites, q)
+
+
+def laplace_cases(tmp):
+    """vor interpolate --laplace against brute_laplace (its own random
+    generator: the other sections' cases stay as they were). Laplace's
+    interpolant differs from Sibson's somewhere, so the flag is seen."""
+    rng = random.Random(2612)
+    configs = valued_configs(rng)
+    differ = 0
+    for k, config in enumerate(configs):
+        state = rng.getstate()
+        lines = check_interpolate(rng, tmp, f"laplace{k}", ["--laplace"], config, brute_laplace)
+        rng.setstate(state)  # the same queries over Sibson's coordinates
+        differ += sum(a != b for a, b in zip(lines, check_interpolate(rng, tmp, f"sibson{k}", [], config,
+                                                                    brute_sibson)))
+    check(differ > 10, f"interpolate --laplace: only {differ} answers differ from Sibson's")
+    r = run(["interpolate", "--laplace", "-"], "0 0 1\n")
+    check(r.returncode == 2 and "missing QUERIES" in r.stderr and "--laplace" in r.stderr,
+          f"interpolate --laplace usage: {r.stderr!r}")
+    r = run(["interpolate", "--laplace=1", "-", "-"], "")
+    check(r.returncode == 2 and r.stdout == "", f"interpolate --laplace=1: {r.returncode} {r.stderr!r}")
 
 
 def round_half_up(v):
@@ -1110,7 +1105,7 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
-COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt", "power")
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt", "power", "interpolate")
 
 
 def help_cases(tmp):
@@ -2087,6 +2082,7 @@ def main():
         power_cases(tmp)
         power_draw_cases(tmp)
         interpolate_cases(rng, tmp)
+        laplace_cases(tmp)
     version_cases()
     error_name_cases()
     ops_cases(rng)

@@ -38,6 +38,18 @@
  * exactly one of a vertex, a hidden site (listed once by the hidden
  * iterator, no other) or a build's duplicate; with the rate back to 0 a
  * fresh build of each scene must validate whole.
+ *
+ * Natural-neighbour interpolation (vor_sibson, vor_laplace,
+ * vor_interpolate, vor_interpolate_laplace) on diagrams built under the
+ * same lies, one case per rate: random sites, a lattice (cocircular
+ * sites) and a line, queried at random points, sites and hull edges with
+ * good and bad hints. Every call returns a documented result and leaves
+ * the arena, the diagram and the values byte-identical; each failing
+ * path changes nothing else either: every scratch size below the need,
+ * at every alignment, is VOR_ERR_NOMEM with only the count written and
+ * the scratch untouched, a bad hint VOR_ERR_ARG and a point far outside
+ * VOR_ERR_OUTSIDE with the output untouched; and the call with exactly
+ * the scratch needed, after those failures, gives the first answer.
  */
 #include "test.h"
 #include "vor.h"
@@ -475,6 +487,210 @@ static void power_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k,
     }
 }
 
+/* The interpolation's run: a diagram of IP_N sites built under lies,
+ * then the four calls at IP_QUERIES points per scene. */
+#define IP_N 200u
+#define IP_QUERIES 16u
+#define IP_MOST_K 24u /* the scratch's neighbours; a query needing more is counted, not probed */
+#define IP_GUARD 64u
+static vor_point_t ip_points[IP_N];
+static int32_t ip_values[IP_N];
+static int32_t ip_values_before[IP_N];
+static uint8_t ip_arena[VOR_ARENA_BYTES(IP_N)] __attribute__((aligned(8)));
+static uint8_t ip_arena_before[sizeof ip_arena];
+static uint8_t ip_scratch[VOR_SIBSON_SCRATCH_BYTES(IP_MOST_K) + IP_GUARD] __attribute__((aligned(8)));
+static uint8_t ip_scratch_before[sizeof ip_scratch];
+static uint32_t ip_answer[2][4096]; /* a call's answer, flattened: the first one and a later one */
+
+/* The answer of call f (0, 1: vor_sibson, vor_laplace; 2, 3:
+ * vor_interpolate, vor_interpolate_laplace) flattened into ip_answer[slot],
+ * with its size; calls it with n bytes of scratch at ip_scratch + offset. */
+static int ip_call(unsigned f, const vor_t *d, vor_point_t q, uint32_t hint, size_t offset,
+                   size_t n, vor_coordinates_t *c, vor_interpolation_t *v)
+{
+    void *scratch = (n > 0u) ? (void *)(ip_scratch + offset) : NULL;
+    switch (f) {
+    case 0u:
+        return vor_sibson(d, q, hint, scratch, n, c);
+    case 1u:
+        return vor_laplace(d, q, hint, scratch, n, c);
+    case 2u:
+        return vor_interpolate(d, ip_values, q, hint, scratch, n, v);
+    default:
+        return vor_interpolate_laplace(d, ip_values, q, hint, scratch, n, v);
+    }
+}
+
+static size_t ip_flatten(unsigned f, unsigned slot, const vor_coordinates_t *c,
+                         const vor_interpolation_t *v)
+{
+    uint32_t *a = ip_answer[slot];
+    size_t n = 0;
+    if (f < 2u) {
+        a[n++] = c->count;
+        a[n++] = c->limbs;
+        for (uint32_t i = 0; (i < c->count) && (n < 4000u); i++) {
+            a[n++] = c->sites[i];
+            for (uint32_t w = 0; w < c->limbs; w++) {
+                a[n++] = c->weights[(i * c->limbs) + w];
+            }
+        }
+        for (uint32_t w = 0; (w < c->limbs) && (n < 4096u); w++) {
+            a[n++] = c->denominator[w];
+        }
+    } else {
+        a[n++] = (uint32_t)v->value;
+        a[n++] = (uint32_t)v->sign;
+        a[n++] = v->neighbours;
+        a[n++] = v->limbs;
+        for (uint32_t w = 0; (w < v->limbs) && (n < 4094u); w++) {
+            a[n++] = v->numerator[w];
+            a[n++] = v->denominator[w];
+        }
+    }
+    return n;
+}
+
+/* A failing call of f: err expected, and nothing but the count (NOMEM)
+ * written. Returns whether it held. */
+static bool ip_fails(unsigned f, const vor_t *d, vor_point_t q, uint32_t hint, size_t offset,
+                     size_t n, int expected, uint32_t k)
+{
+    vor_coordinates_t c, c_before;
+    vor_interpolation_t v, v_before;
+    for (size_t i = 0; i < sizeof c; i++) {
+        ((uint8_t *)&c)[i] = (uint8_t)(0x5Au + i);
+    }
+    for (size_t i = 0; i < sizeof v; i++) {
+        ((uint8_t *)&v)[i] = (uint8_t)(0xA5u + i);
+    }
+    test_copy_bytes(&c_before, &c, sizeof c);
+    test_copy_bytes(&v_before, &v, sizeof v);
+    int err = ip_call(f, d, q, hint, offset, n, &c, &v);
+    if (expected == VOR_ERR_NOMEM) {
+        c_before.count = k;
+        v_before.neighbours = k;
+    }
+    bool same = (f < 2u) ? test_same_bytes(&c, &c_before, sizeof c) : test_same_bytes(&v, &v_before, sizeof v);
+    return (err == expected) && same && test_same_bytes(ip_scratch, ip_scratch_before, sizeof ip_scratch);
+}
+
+static uint32_t ip_scene(unsigned scene, test_rng_t *rng)
+{
+    for (uint32_t i = 0; i < IP_N; i++) {
+        if (scene == 0u) { /* random, some repeated */
+            ip_points[i].x = test_rng_range(rng, -1000, 1000);
+            ip_points[i].y = test_rng_range(rng, -1000, 1000);
+        } else if (scene == 1u) { /* a lattice: cocircular sites everywhere */
+            ip_points[i].x = (int32_t)(i % 14u) * 5;
+            ip_points[i].y = (int32_t)(i / 14u) * 5;
+        } else { /* one line */
+            ip_points[i].x = (int32_t)i * 6 - 600;
+            ip_points[i].y = (int32_t)i * 4 + 7;
+        }
+        ip_values[i] = (int32_t)test_rng_u32(rng);
+    }
+    return IP_N;
+}
+
+static void interpolate_under_faults(uint32_t rate, uint32_t rate_percent, unsigned k, test_rng_t *rng)
+{
+    static const char *const scenes[] = {"random", "lattice", "line"};
+    static const char *const calls[] = {"vor_sibson", "vor_laplace", "vor_interpolate",
+                                        "vor_interpolate_laplace"};
+    for (unsigned scene = 0; scene < 3u; scene++) {
+        uint32_t n = ip_scene(scene, rng);
+        vor_t d;
+        CHECK(vor_init(&d, ip_arena, sizeof ip_arena, IP_N) == VOR_OK, "interpolate init");
+        d.fault_rate = rate;
+        d.fault_state = 0x9E3779B97F4A7C15ull ^ (k * 5u + scene);
+        CHECK(vor_build(&d, ip_points, n, NULL, NULL) == VOR_OK, "interpolate build");
+        vor_t d_before = d;
+        test_copy_bytes(ip_arena_before, ip_arena, sizeof ip_arena);
+        test_copy_bytes(ip_values_before, ip_values, sizeof ip_values);
+        uint32_t answered = 0, outside = 0, too_many = 0, bad = 0;
+        for (uint32_t i = 0; i < IP_QUERIES; i++) {
+            vor_point_t a = ip_points[test_rng_u32(rng) % n];
+            vor_point_t b = ip_points[test_rng_u32(rng) % n];
+            vor_point_t q = {test_rng_range(rng, -1100, 1100), test_rng_range(rng, -1100, 1100)};
+            if (i % 4u == 1u) {
+                q = a; /* at a site */
+            } else if (i % 4u == 2u) {
+                q.x = (a.x + b.x) / 2; /* between two sites: on hull edges of the line */
+                q.y = (a.y + b.y) / 2;
+            } else if ((i % 4u == 3u) && (scene == 1u)) {
+                q.x = test_rng_range(rng, 0, 65); /* inside the lattice */
+                q.y = test_rng_range(rng, 0, 70);
+            } else if (i % 4u == 3u) {
+                q.x = a.x + 3; /* on the line between two sites (or past its end) */
+                q.y = a.y + 2;
+            }
+            uint32_t hint = ((i % 3u) == 0u) ? VOR_NO_HINT : (test_rng_u32(rng) % n);
+            for (unsigned f = 0; f < 4u; f++) {
+                vor_coordinates_t c;
+                vor_interpolation_t v;
+                for (size_t j = 0; j < sizeof ip_scratch; j++) {
+                    ip_scratch[j] = (uint8_t)(j * 7u + i);
+                }
+                test_copy_bytes(ip_scratch_before, ip_scratch, sizeof ip_scratch);
+                /* no scratch: the need, or the answer needing none */
+                int err = ip_call(f, &d, q, hint, 0, 0, &c, &v);
+                bool ok = (err == VOR_OK) || (err == VOR_ERR_OUTSIDE) || (err == VOR_ERR_NOMEM);
+                if (err == VOR_ERR_OUTSIDE) {
+                    outside++;
+                    ok = ok && ip_fails(f, &d, q, hint, 0, sizeof ip_scratch - IP_GUARD, VOR_ERR_OUTSIDE, 0);
+                }
+                uint32_t need_k = (f < 2u) ? c.count : v.neighbours;
+                if ((err == VOR_ERR_NOMEM) && (need_k > IP_MOST_K)) {
+                    too_many++;
+                } else if (err == VOR_ERR_NOMEM) {
+                    /* the first answer, with all the scratch */
+                    ok = ok && (ip_call(f, &d, q, hint, 0, sizeof ip_scratch - IP_GUARD, &c, &v) == VOR_OK);
+                    size_t words = ok ? ip_flatten(f, 0, &c, &v) : 0u;
+                    for (size_t j = 0; j < sizeof ip_scratch; j++) {
+                        ip_scratch[j] = (uint8_t)(j * 11u + i);
+                    }
+                    test_copy_bytes(ip_scratch_before, ip_scratch, sizeof ip_scratch);
+                    /* the need at this alignment: the macro less the 8
+                     * bytes it keeps for alignment, plus the skip */
+                    size_t offset = test_rng_u32(rng) % 8u;
+                    size_t need = VOR_SIBSON_SCRATCH_BYTES(need_k) - 8u + ((8u - offset) % 8u);
+                    size_t sizes[14] = {0, 1, 8, need / 2u, need - 1u - (test_rng_u32(rng) % need), 0};
+                    sizes[5] = (need_k > 1u) ? VOR_SIBSON_SCRATCH_BYTES(need_k - 1u) - 8u : 0u;
+                    for (unsigned s = 6; s < 14u; s++) { /* the last 8 sizes below the need */
+                        sizes[s] = need - (s - 5u);
+                    }
+                    for (unsigned s = 0; s < 14u; s++) {
+                        ok = ok && ip_fails(f, &d, q, hint, offset, sizes[s], VOR_ERR_NOMEM, need_k);
+                    }
+                    /* a bad hint: nothing written (a point outside: above) */
+                    ok = ok && ip_fails(f, &d, q, n + 1u, offset, need, VOR_ERR_ARG, 0);
+                    /* exactly the need, after the failures: the same answer */
+                    ok = ok && (ip_call(f, &d, q, hint, offset, need, &c, &v) == VOR_OK) &&
+                         (ip_flatten(f, 1, &c, &v) == words) &&
+                         test_same_bytes(ip_answer[0], ip_answer[1], words * sizeof(uint32_t)) &&
+                         test_same_bytes(ip_scratch + offset + need, ip_scratch_before + offset + need,
+                                         sizeof ip_scratch - offset - need);
+                    answered++;
+                } else if (err == VOR_OK) {
+                    ok = false; /* every answer needs scratch: at a site, one neighbour */
+                }
+                ok = ok && test_same_bytes(ip_arena, ip_arena_before, sizeof ip_arena) &&
+                     test_same_bytes(&d, &d_before, sizeof d) &&
+                     test_same_bytes(ip_values, ip_values_before, sizeof ip_values);
+                bad += ok ? 0u : 1u;
+                CHECK(ok, "%s, %s scene, p = %u%%: query %u (%d, %d) hint %u: %d", calls[f], scenes[scene],
+                      rate_percent, i, q.x, q.y, hint, err);
+            }
+        }
+        test_printf("interpolation on the %s scene built at p = %u%%: %u answers, %u outside, %u needing "
+                    "more than %u neighbours, %u bad\n",
+                    scenes[scene], rate_percent, answered, outside, too_many, IP_MOST_K, bad);
+        CHECK(answered >= 4u * (IP_QUERIES / 4u), "%s scene, p = %u%%: only %u answers", scenes[scene], rate_percent,
+              answered);
+    }
+}
+
 int main(void)
 {
     vor_port_init();
@@ -623,6 +839,15 @@ int main(void)
         test_rng_seed(&rng, 4041u + k);
         uint32_t rate = (uint32_t)(((uint64_t)percents[k] << 32) / 100u);
         power_under_faults(rate, percents[k], k, &rng);
+        test_case_end();
+    }
+    for (unsigned k = 0; k < 3u; k++) {
+        if (!test_case_begin("faults/interpolate/rate_%u", percents[k])) {
+            continue;
+        }
+        test_rng_seed(&rng, 5051u + k);
+        uint32_t rate = (uint32_t)(((uint64_t)percents[k] << 32) / 100u);
+        interpolate_under_faults(rate, percents[k], k, &rng);
         test_case_end();
     }
     return test_finish();

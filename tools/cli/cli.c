@@ -697,39 +697,68 @@ void cli_flush(cli_output_t *out)
     out->length = out->capacity = 0;
 }
 
-vor_point_t *cli_read_sites(const char *path, uint32_t *count)
+uint32_t cli_read_points(const char *path, const char *third, cli_field_parser_t *parse, size_t size,
+                         vor_point_t **points, void **fields)
 {
+    char expected[100];
+    if (parse != NULL) {
+        snprintf(expected, sizeof expected, "x y %s or x,y,%s", third, third);
+    } else {
+        snprintf(expected, sizeof expected, "x y or x,y");
+    }
     cli_input_t in;
     cli_open(&in, path);
-    vor_point_t *sites = NULL;
     size_t n = 0, capacity = 0;
-    const char *line;
-    while ((line = cli_next_line(&in)) != NULL) {
+    unsigned char *values = NULL;
+    *points = NULL;
+    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
         vor_point_t p;
-        const char *why;
+        union {
+            int32_t i32;
+            int64_t i64;
+        } field; /* room for any field, aligned for it */
+        const char *why = NULL;
         const char *cursor = line;
-        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why)) {
-            char reason[300];
-            snprintf(reason, sizeof reason, "%s (expected x y or x,y)", why);
+        char reason[300];
+        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
+            ((parse != NULL) && !parse(&cursor, &field, &why))) {
+            snprintf(reason, sizeof reason, "%s (expected %s)", why, expected);
             cli_line_error(&in, reason);
         }
         if (!cli_at_end(cursor)) {
-            cli_line_error(&in, "too many fields (expected x y or x,y)");
+            snprintf(reason, sizeof reason, "too many fields (expected %s)", expected);
+            cli_line_error(&in, reason);
         }
         if (n == VOR_MAX_SITES) {
             cli_line_error(&in, "more sites than VOR_MAX_SITES");
         }
         if (n == capacity) {
-            capacity = capacity ? 2 * capacity : 1024;
-            sites = realloc(sites, capacity * sizeof *sites);
-            if (sites == NULL) {
+            capacity = (capacity != 0u) ? 2u * capacity : 1024u;
+            *points = realloc(*points, capacity * sizeof **points);
+            if (parse != NULL) {
+                values = realloc(values, capacity * size);
+            }
+            if ((*points == NULL) || ((parse != NULL) && (values == NULL))) {
                 cli_error("out of memory");
             }
         }
-        sites[n++] = p;
+        (*points)[n] = p;
+        if (parse != NULL) {
+            memcpy(values + n * size, &field, size);
+        }
+        n++;
     }
     cli_close(&in);
-    *count = (uint32_t)n;
+    if (fields != NULL) {
+        *fields = values;
+    }
+    return (uint32_t)n;
+}
+
+vor_point_t *cli_read_sites(const char *path, uint32_t *count)
+{
+    vor_point_t *sites;
+    *count = cli_read_points(path, NULL, NULL, 0, &sites, NULL);
     return sites;
 }
 
@@ -800,6 +829,23 @@ void *cli_diagram(vor_t *d, uint32_t max_sites)
     int err = vor_init(d, arena, VOR_ARENA_BYTES(capacity), capacity);
     if (err != VOR_OK) {
         cli_library_error("vor_init", err);
+    }
+    return arena;
+}
+
+void *cli_query_diagram(vor_t *d, const vor_point_t *sites, uint32_t n, const char *sites_path,
+                        const char *queries_path, const char *no_sites, vor_point_t **queries,
+                        uint32_t *query_count)
+{
+    *queries = cli_read_sites(queries_path, query_count);
+    if (n == 0u && *query_count > 0u) {
+        fprintf(stderr, "error: %s: %s\n", sites_path, no_sites);
+        exit(2);
+    }
+    void *arena = cli_diagram(d, n);
+    int err = vor_build(d, sites, n, NULL, NULL);
+    if (err != VOR_OK) {
+        cli_library_error("vor_build", err);
     }
     return arena;
 }

@@ -158,6 +158,16 @@ void cli_append(cli_output_t *out, const char *format, ...)
  * it returns for the caller to free; exits with status 2 on failure. */
 void *cli_diagram(vor_t *d, uint32_t max_sites);
 
+/* The common part of the SITES QUERIES commands (vor nearest, vor
+ * interpolate), after reading the n sites of sites_path: reads the query
+ * points of queries_path (cli_read_sites) into *queries and *query_count,
+ * exits with status 2, "error: SITES_PATH: NO_SITES", when there are
+ * queries but no sites, and builds the sites into d (cli_diagram,
+ * vor_build; an error exits). Returns the arena, for the caller to free. */
+void *cli_query_diagram(vor_t *d, const vor_point_t *sites, uint32_t n, const char *sites_path,
+                        const char *queries_path, const char *no_sites, vor_point_t **queries,
+                        uint32_t *query_count);
+
 /* Appends "t i j k" for every triangle of d's true Delaunay triangulation
  * (the triangle iterator), counterclockwise from its smallest id, lines
  * sorted; returns how many. */
@@ -175,6 +185,17 @@ void cli_flush(cli_output_t *out);
  * a bad line. An empty file gives 0 sites. The array is malloc'd; *count
  * receives the number of sites. */
 vor_point_t *cli_read_sites(const char *path, uint32_t *count);
+
+/* The one reader of point files: cli_read_sites's "x y" lines, or with a
+ * parser "x y F" (or "x,y,F") lines, F named `third` in messages ("expected
+ * x y value or x,y,value") and read by parse into *value (at most 8 bytes,
+ * `size` of them kept), the parser returning false with *why as the
+ * fields' parsers do (cli_int32_field). *points and, with a parser,
+ * *fields (fields[i] of `size` bytes; NULL for none) are malloc'd; returns
+ * the number of lines read. */
+typedef bool cli_field_parser_t(const char **cursor, void *value, const char **why);
+uint32_t cli_read_points(const char *path, const char *third, cli_field_parser_t *parse, size_t size,
+                         vor_point_t **points, void **fields);
 
 /* Site i's colour in every picture of the tool (vor draw, vor raster
  * --png), as 0xRRGGBB: c = (i * 2654435761) mod 2^21 (a bijection on 21

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * vor interpolate [--scale S] SITES QUERIES
+ * vor interpolate [--laplace] [--scale S] SITES QUERIES
  *
- * Natural-neighbour (Sibson) interpolation of integer site values, exact:
+ * Natural-neighbour interpolation of integer site values, exact, over
+ * Sibson's coordinates (or Laplace's, with --laplace):
  * SITES holds "x y value" lines (value an int32; a repeated point keeps
  * its first value), QUERIES "x y" lines. For each query one line,
  * "q X Y VALUE NUM DEN": VALUE the interpolant rounded once, halves away
@@ -16,13 +17,13 @@
 
 #include "cli.h"
 
-#define USAGE "usage: vor interpolate [--scale S] SITES QUERIES"
+#define USAGE "usage: vor interpolate [--laplace] [--scale S] SITES QUERIES"
 
 const char cli_interpolate_help[] =
     USAGE "\n"
     "\n"
-    "Sibson's natural-neighbour interpolation of the values of SITES at each\n"
-    "point of QUERIES (either '-': stdin), exact.\n"
+    "Natural-neighbour interpolation of the values of SITES at each point of\n"
+    "QUERIES (either '-': stdin), exact, over Sibson's coordinates.\n"
     "\n"
     "input:  SITES: \"x y value\" or \"x,y,value\" lines, value a decimal int32\n"
     "        (a repeated point keeps its first line's value); QUERIES: \"x y\"\n"
@@ -33,6 +34,7 @@ const char cli_interpolate_help[] =
     "        halves away from zero; \"q X Y outside\" outside the convex hull of\n"
     "        the sites. At a site: its value; on a hull edge: the linear\n"
     "        interpolation of the edge's ends.\n"
+    "  --laplace     over Laplace's (non-Sibsonian) coordinates instead\n"
     "  --scale S     read decimal coordinates, times S\n"
     "\n"
     "example:\n"
@@ -40,44 +42,10 @@ const char cli_interpolate_help[] =
     "  q 1 1 20 20 1\n"
     "  q 9 9 outside\n";
 
-static void read_valued(const char *path, vor_point_t **points, int32_t **values, uint32_t *count)
+/* A site's value for cli_read_points: a decimal int32. */
+static bool value_field(const char **cursor, void *value, const char **why)
 {
-    cli_input_t in;
-    cli_open(&in, path);
-    size_t n = 0, capacity = 0;
-    *points = NULL;
-    *values = NULL;
-    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
-        vor_point_t p;
-        int32_t v;
-        const char *why = NULL;
-        const char *cursor = line;
-        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
-            !cli_int32_field(&cursor, &v, &why)) {
-            char reason[300];
-            snprintf(reason, sizeof reason, "%s (expected x y value or x,y,value)", why);
-            cli_line_error(&in, reason);
-        }
-        if (!cli_at_end(cursor)) {
-            cli_line_error(&in, "too many fields (expected x y value or x,y,value)");
-        }
-        if (n == VOR_MAX_SITES) {
-            cli_line_error(&in, "more sites than VOR_MAX_SITES");
-        }
-        if (n == capacity) {
-            capacity = (capacity != 0u) ? 2u * capacity : 1024u;
-            *points = realloc(*points, capacity * sizeof **points);
-            *values = realloc(*values, capacity * sizeof **values);
-            if ((*points == NULL) || (*values == NULL)) {
-                cli_error("out of memory");
-            }
-        }
-        (*points)[n] = p;
-        (*values)[n] = v;
-        n++;
-    }
-    cli_close(&in);
-    *count = (uint32_t)n;
+    return cli_int32_field(cursor, (int32_t *)value, why);
 }
 
 /* Non-negative integers of n 32-bit words, least significant first: just
@@ -217,14 +185,19 @@ int cli_interpolate(int argc, char **argv)
 {
     const char *paths[2] = {NULL, NULL};
     int path_count = 0;
+    bool laplace = false;
+    static const cli_option_t options[] = {{"--laplace", 0}};
     cli_arguments_t args;
-    cli_arguments_begin(&args, argc, argv, "interpolate", USAGE, NULL, 0);
+    cli_arguments_begin(&args, argc, argv, "interpolate", USAGE, options, sizeof options / sizeof options[0]);
     for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
         const char *value = args.values[0];
-        if (path_count == 2) {
+        if (o == 0) {
+            laplace = true;
+        } else if (path_count == 2) {
             cli_usage_error("interpolate", USAGE, "unexpected argument", value);
+        } else {
+            paths[path_count++] = value;
         }
-        paths[path_count++] = value;
     }
     if (path_count < 2) {
         cli_usage_error("interpolate", USAGE,
@@ -235,31 +208,26 @@ int cli_interpolate(int argc, char **argv)
     }
     uint32_t n, queries;
     vor_point_t *sites;
-    int32_t *values;
-    read_valued(paths[0], &sites, &values, &n);
-    vor_point_t *points = cli_read_sites(paths[1], &queries);
-    if (n == 0u && queries > 0u) {
-        fprintf(stderr, "error: %s: no sites to interpolate\n", paths[0]);
-        exit(2);
-    }
-    uint32_t capacity = (n < 1u) ? 1u : n;
+    void *fields;
+    n = cli_read_points(paths[0], "value", value_field, sizeof(int32_t), &sites, &fields);
+    int32_t *values = fields;
+    vor_point_t *points;
     vor_t d;
-    void *arena = cli_diagram(&d, capacity);
-    int err = vor_build(&d, sites, n, NULL, NULL);
-    if (err != VOR_OK) {
-        cli_library_error("vor_build", err);
-    }
+    void *arena = cli_query_diagram(&d, sites, n, paths[0], paths[1], "no sites to interpolate", &points, &queries);
     size_t scratch_bytes = VOR_SIBSON_SCRATCH_BYTES(16);
     void *scratch = malloc(scratch_bytes);
     if (scratch == NULL) {
         cli_error("out of memory");
     }
     cli_output_t out = {NULL, 0, 0};
+    int (*const call)(const vor_t *, const int32_t *, vor_point_t, uint32_t, void *, size_t,
+                      vor_interpolation_t *) = laplace ? vor_interpolate_laplace : vor_interpolate;
+    const char *call_name = laplace ? "vor_interpolate_laplace" : "vor_interpolate";
     uint32_t hint = VOR_NO_HINT;
     for (uint32_t i = 0; i < queries; i++) {
         vor_interpolation_t v;
         vor_point_t q = points[i];
-        err = vor_interpolate(&d, values, q, hint, scratch, scratch_bytes, &v);
+        int err = call(&d, values, q, hint, scratch, scratch_bytes, &v);
         if (err == VOR_ERR_NOMEM) { /* more neighbours than ever before */
             free(scratch);
             scratch_bytes = VOR_SIBSON_SCRATCH_BYTES(v.neighbours);
@@ -267,14 +235,14 @@ int cli_interpolate(int argc, char **argv)
             if (scratch == NULL) {
                 cli_error("out of memory");
             }
-            err = vor_interpolate(&d, values, q, hint, scratch, scratch_bytes, &v);
+            err = call(&d, values, q, hint, scratch, scratch_bytes, &v);
         }
         if (err == VOR_ERR_OUTSIDE) {
             cli_append(&out, "q %d %d outside\n", q.x, q.y);
             continue;
         }
         if (err != VOR_OK) {
-            cli_library_error("vor_interpolate", err);
+            cli_library_error(call_name, err);
         }
         size_t words = v.limbs;
         uint32_t *num = malloc(words * 4u), *den = malloc(words * 4u), *g = malloc(words * 4u);

@@ -9,6 +9,7 @@
  *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
  *   vor ops [--capacity N] FILE   a dynamic diagram driven by a script
  *   vor interpolate SITES QUERIES  exact natural-neighbour interpolation
+ *                             (Sibson's; --laplace: Laplace's)
  *   vor --version             the library version the tool was built with
  *   vor --help, vor help [COMMAND], vor COMMAND --help   help on stdout
  */
@@ -32,7 +33,7 @@ static const struct {
     {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
     {"cdt", cli_cdt, "constrained Delaunay triangulation (SITES CONSTRAINTS; --domain)"},
     {"power", cli_power, "regular triangulation and hidden sites of weighted sites (x y w)"},
-    {"interpolate", cli_interpolate, "exact natural-neighbour interpolation (SITES: x y value; QUERIES)"},
+    {"interpolate", cli_interpolate, "exact natural-neighbour interpolation (SITES: x y value; QUERIES; --laplace)"},
 };
 
 /* The help of each command (cli.h); a command without one shows its

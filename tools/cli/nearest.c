@@ -71,18 +71,10 @@ int cli_nearest(int argc, char **argv)
     }
     uint32_t n, queries;
     vor_point_t *sites = cli_read_sites(paths[0], &n);
-    vor_point_t *points = cli_read_sites(paths[1], &queries);
-    if (n == 0u && queries > 0u) {
-        fprintf(stderr, "error: %s: no sites to answer the queries with\n", paths[0]);
-        exit(2);
-    }
-    uint32_t capacity = (n < 1u) ? 1u : n;
+    vor_point_t *points;
     vor_t d;
-    void *arena = cli_diagram(&d, capacity);
-    int err = vor_build(&d, sites, n, NULL, NULL);
-    if (err != VOR_OK) {
-        cli_library_error("vor_build", err);
-    }
+    void *arena = cli_query_diagram(&d, sites, n, paths[0], paths[1], "no sites to answer the queries with",
+                                    &points, &queries);
     uint32_t *nearest = malloc(k * sizeof *nearest);
     if (nearest == NULL) {
         cli_error("out of memory");
@@ -91,7 +83,7 @@ int cli_nearest(int argc, char **argv)
     uint32_t hint = VOR_NO_HINT;
     for (uint32_t q = 0; q < queries; q++) {
         uint32_t found;
-        err = vor_nearest_k(&d, points[q], hint, k, nearest, &found);
+        int err = vor_nearest_k(&d, points[q], hint, k, nearest, &found);
         if (err != VOR_OK) {
             cli_library_error("vor_nearest_k", err);
         }

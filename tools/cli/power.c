@@ -40,49 +40,17 @@ const char cli_power_help[] =
     "  t 0 3 2\n"
     "  h 4\n";
 
-static void read_weighted(const char *path, cli_weighted_t *sites)
+/* A site's weight for cli_read_points: a squared length (cli_squared_field). */
+static bool weight_field(const char **cursor, void *value, const char **why)
 {
-    cli_input_t in;
-    cli_open(&in, path);
-    size_t n = 0, capacity = 0;
-    sites->points = NULL;
-    sites->weights = NULL;
-    for (const char *line; (line = cli_next_line(&in)) != NULL;) {
-        vor_point_t p;
-        int64_t w;
-        const char *why = NULL;
-        const char *cursor = line;
-        if (!cli_coordinate_field(&cursor, &p.x, &why) || !cli_coordinate_field(&cursor, &p.y, &why) ||
-            !cli_squared_field(&cursor, &w, &why)) {
-            char reason[300];
-            snprintf(reason, sizeof reason, "%s (expected x y w or x,y,w)", why);
-            cli_line_error(&in, reason);
-        }
-        if (!cli_at_end(cursor)) {
-            cli_line_error(&in, "too many fields (expected x y w or x,y,w)");
-        }
-        if (n == VOR_MAX_SITES) {
-            cli_line_error(&in, "more sites than VOR_MAX_SITES");
-        }
-        if (n == capacity) {
-            capacity = (capacity != 0u) ? 2u * capacity : 1024u;
-            sites->points = realloc(sites->points, capacity * sizeof *sites->points);
-            sites->weights = realloc(sites->weights, capacity * sizeof *sites->weights);
-            if ((sites->points == NULL) || (sites->weights == NULL)) {
-                cli_error("out of memory");
-            }
-        }
-        sites->points[n] = p;
-        sites->weights[n] = w;
-        n++;
-    }
-    cli_close(&in);
-    sites->n = (uint32_t)n;
+    return cli_squared_field(cursor, (int64_t *)value, why);
 }
 
 void *cli_power_diagram(const char *path, vor_power_t *pd, cli_weighted_t *sites)
 {
-    read_weighted(path, sites);
+    void *fields;
+    sites->n = cli_read_points(path, "w", weight_field, sizeof(int64_t), &sites->points, &fields);
+    sites->weights = fields;
     uint32_t capacity = (sites->n < 1u) ? 1u : sites->n;
     sites->duplicate_of = malloc((size_t)capacity * sizeof *sites->duplicate_of);
     size_t bytes = VOR_POWER_ARENA_BYTES(capacity);

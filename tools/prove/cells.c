@@ -62,18 +62,5 @@ static int iterate(const vor_t *d)
 
 int main(void)
 {
-    vor_t d;
-    int r = 0;
-    d.revision = Frama_C_unsigned_int_interval(0u, UINT32_MAX);
-    if (vor_init(&d, arena, sizeof arena, N) != VOR_OK) {
-        return 1;
-    }
-    r |= iterate(&d);
-    r |= vor_build(&d, points, 1u, NULL, NULL);
-    r |= iterate(&d);
-    r |= vor_build(&d, collinear, 3u, NULL, NULL);
-    r |= iterate(&d);
-    r |= vor_build(&d, points, N, NULL, NULL);
-    r |= iterate(&d);
-    return r;
+    return far_sites_each(Frama_C_unsigned_int_interval(0u, UINT32_MAX), true, N, iterate);
 }

@@ -23,10 +23,9 @@
 
 #include "far_sites.h"
 
-/* The scratch at a fixed address (prove.sh declares the range valid), as
- * in centroid.c: the call aligns it from its address as an integer. */
+/* The scratch at a fixed address (far_sites.h). */
 #define SCRATCH_BYTES VOR_SIBSON_SCRATCH_BYTES(N)
-#define scratch ((uint64_t *)0x10000u)
+#define scratch FIXED_SCRATCH
 
 #define QUERIES 6u
 static const vor_point_t queries[QUERIES] = {{5, 5}, {3, 6}, {5, 0}, {10, 10}, {-1, 20}, {15, 0}};
@@ -62,18 +61,5 @@ static int natural(const vor_t *d)
 
 int main(void)
 {
-    vor_t d;
-    int r = 0;
-    d.revision = 0u;
-    if (vor_init(&d, arena, sizeof arena, N) != VOR_OK) {
-        return 1;
-    }
-    r |= natural(&d); /* no sites */
-    r |= vor_build(&d, points, 1u, NULL, NULL);
-    r |= natural(&d);
-    r |= vor_build(&d, collinear, 3u, NULL, NULL);
-    r |= natural(&d);
-    r |= vor_build(&d, points, N - 1u, NULL, NULL); /* the far site left out: small sums */
-    r |= natural(&d);
-    return r;
+    return far_sites_each(0u, true, N - 1u, natural); /* the far site left out: small sums */
 }

@@ -21,7 +21,7 @@
 
 #define CAP VOR_CELL_MAX_VERTICES(N)
 #define SCRATCH_BYTES VOR_CENTROID_SCRATCH_BYTES(CAP)
-#define scratch ((uint64_t *)0x10000u)
+#define scratch FIXED_SCRATCH /* far_sites.h */
 
 #define WEIGHTINGS 2u
 static const int64_t weights[WEIGHTINGS][N] = {
