@@ -275,6 +275,74 @@ int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t 
                       const vor_raster_output_t *out, const vor_raster_options_t *options,
                       void *work, size_t work_bytes);
 
+/* ================================================================== */
+/* Fields: natural-neighbour interpolation rendered in bands          */
+/* ================================================================== */
+
+/* What each pixel of a field frame holds (row-major, stride = width). */
+enum vor_field_kind {
+    VOR_FIELD_VALUE = 0, /* int32_t: the interpolated value, rounded once
+                            (halves away from zero); outside the hull: outside */
+    VOR_FIELD_RGB565 = 1 /* uint16_t: ramp565[index] of the rounded value v,
+                            index = floor(256 (v - low) / (high - low + 1))
+                            clamped to 0 .. 255; outside the hull: outside565 */
+};
+
+/* Which interpolant (vor.h): Sibson's (C1, vor_interpolate) or Laplace's
+ * (C0, vor_interpolate_laplace, cheaper on a small microcontroller). */
+enum vor_field_method {
+    VOR_FIELD_SIBSON = 0,
+    VOR_FIELD_LAPLACE = 1
+};
+
+/* Where a field frame goes. Zero-initialise, then set what is used. */
+typedef struct vor_field_output {
+    enum vor_field_kind kind;
+    void *band;                 /* band_rows * width pixels of the kind */
+    size_t band_bytes;
+    uint32_t band_rows;         /* >= 1 */
+    vor_raster_flush_t flush;   /* as for vor_raster */
+    void *user;                 /* handed to flush */
+    int32_t outside;            /* VALUE: a pixel outside the convex hull */
+    const uint16_t *ramp565;    /* RGB565: 256 colours, ramp565[0] for low */
+    int32_t low;                /* RGB565: the ramp's range, low < high */
+    int32_t high;
+    uint16_t outside565;        /* RGB565: a pixel outside the convex hull */
+    uint32_t *max_neighbours;   /* optional: the most natural neighbours of
+                                   any pixel rendered (to size the scratch) */
+} vor_field_output_t;
+
+/* How to render a field: NULL or a zero-initialised struct for the
+ * defaults (Sibson). */
+typedef struct vor_field_options {
+    enum vor_field_method method;
+} vor_field_options_t;
+
+/*
+ * Renders the natural-neighbour interpolant of integer site values over
+ * frame, band by band, into out: each pixel is exactly what
+ * vor_interpolate (or vor_interpolate_laplace) gives at its centre. values
+ * is indexed by site id, as for vor_interpolate. The diagram is only read.
+ * Scratch: VOR_SIBSON_SCRATCH_BYTES(k) for pixels with up to k natural
+ * neighbours (any alignment).
+ *   VOR_ERR_ARG    d, values, frame, out or its band or flush NULL
+ *                  (options may be), a zero size or step, a pixel centre
+ *                  outside int32, an unknown kind or method, RGB565 with
+ *                  ramp565 NULL or low >= high, scratch NULL with
+ *                  scratch_bytes > 0
+ *   VOR_ERR_EMPTY  the diagram has no sites
+ *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes; or, while
+ *                  rendering, a pixel with more natural neighbours than
+ *                  the scratch holds (*max_neighbours then says how many)
+ *   VOR_ERR_STOPPED  a flush returned nonzero
+ * The argument errors are found before the first pixel, and then nothing
+ * is written. A pixel's VOR_ERR_NOMEM and VOR_ERR_STOPPED stop the render
+ * after the bands already delivered, like a display's partial refresh.
+ */
+int vor_field_raster(const vor_t *d, const int32_t *values, const vor_raster_frame_t *frame,
+                     const vor_field_output_t *out, const vor_field_options_t *options,
+                     void *scratch, size_t scratch_bytes);
+
 #ifdef __cplusplus
 }
 #endif
