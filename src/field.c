@@ -158,13 +158,16 @@ int vor_field_raster(const vor_t *d, const int32_t *values, const vor_raster_fra
     /* the band writer's output: the band and its flush; the rows come as
      * pixels written here, so the kind is one whose pixels the producer
      * writes (raster.h, vor__bands_begin) */
-    vor_raster_output_t band_out = {0};
+    vor_raster_output_t band_out; /* every field set: no memset call */
     band_out.kind = VOR_RASTER_DISTANCE;
     band_out.band = out->band;
     band_out.band_bytes = out->band_bytes;
     band_out.band_rows = out->band_rows;
     band_out.flush = out->flush;
     band_out.user = out->user;
+    band_out.palette565 = NULL;
+    band_out.palette888 = NULL;
+    band_out.areas = NULL;
     vor__run_t *no_runs[2];
     no_runs[0] = NULL;
     no_runs[1] = NULL;

@@ -46,9 +46,9 @@ options_of() {
     # kept apart (a slevel no loop reaches) and EVA follows each build,
     # cell trace, constraint and flip exactly
     large | cells | cdt | power) echo "-eva-split-return full -eva-slevel 1000000" ;;
-    # centroid, power_cells: the same, and the scratch at a fixed address
-    # (centroid.c)
-    centroid | power_cells) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
+    # centroid, power_cells, field: the same, and the scratch at a fixed
+    # address (centroid.c)
+    centroid | power_cells | field) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
     # interpolate: as centroid (interpolate.c), the scratch at a fixed
     # address; not yet in the default list (tools/prove/interpolate.c)
     interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
