@@ -320,7 +320,8 @@ enum vor_field_method {
 /* Where a field frame goes. Zero-initialise, then set what is used. */
 typedef struct vor_field_output {
     enum vor_field_kind kind;
-    void *band;                 /* band_rows * width pixels of the kind */
+    void *band;                 /* band_rows * width pixels of the kind
+                                   (an int32_t or uint16_t array) */
     size_t band_bytes;
     uint32_t band_rows;         /* >= 1 */
     vor_raster_flush_t flush;   /* as for vor_raster */

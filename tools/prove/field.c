@@ -7,7 +7,7 @@
  * finish: interpolate.c), a W x H frame in bands of BAND rows (a seam and
  * a partial last band) of each kind and method, a flush that goes on or
  * stops, a scratch of any size up to enough (a pixel's VOR_ERR_NOMEM),
- * the RGB565 ramp over any range; then every bad argument the header
+ * the RGB565 ramp over three ranges; then every bad argument the header
  * lists, each with any value that makes it one.
  */
 #include <__fc_builtin.h>
@@ -47,14 +47,21 @@ static int frames(const vor_t *d, const vor_field_output_t *good)
     vor_field_output_t out = *good;
     vor_field_options_t options = {VOR_FIELD_SIBSON};
     int r = 0;
+    /* the ramp over concrete ranges (any range would split each pixel's
+     * index 256 ways): a narrow one the values leave at both ends, one
+     * inside them, the whole of int32 */
+    static const int32_t lows[3] = {-1, -25, INT32_MIN};
+    static const int32_t highs[3] = {1, 40, INT32_MAX};
     /*@ loop unroll 2; */
-    for (unsigned kind = 0; kind < 2u; kind++) {
-        /*@ loop unroll 2; */
-        for (unsigned method = 0; method < 2u; method++) {
-            out.kind = (enum vor_field_kind)kind;
-            options.method = (enum vor_field_method)method;
-            out.low = Frama_C_interval(INT32_MIN, INT32_MAX - 1);
-            out.high = Frama_C_interval(out.low + 1, INT32_MAX);
+    for (unsigned method = 0; method < 2u; method++) {
+        options.method = (enum vor_field_method)method;
+        out.kind = VOR_FIELD_VALUE;
+        r |= vor_field_raster(d, values, &frame, &out, &options, scratch, SCRATCH_BYTES);
+        out.kind = VOR_FIELD_RGB565;
+        /*@ loop unroll 3; */
+        for (unsigned k = 0; k < 3u; k++) {
+            out.low = lows[k];
+            out.high = highs[k];
             r |= vor_field_raster(d, values, &frame, &out, &options, scratch, SCRATCH_BYTES);
         }
     }

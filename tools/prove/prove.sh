@@ -21,7 +21,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k geometry cells centroid raster large cdt power power_cells}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k geometry cells centroid raster field large cdt power power_cells}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
