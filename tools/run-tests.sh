@@ -460,9 +460,9 @@ check misra tools/misra.sh
 # Frama-C's EVA (tools/prove/prove.sh) over the harnesses that finish in
 # about a minute each: the predicates (as built at
 # -O2 and -Os), the multi-word arithmetic (generic and Cortex-M0), every
-# diagram update, the Voronoi vertices and edges, and the raster. make
-# prove runs every harness (each takes minutes more).
-check prove tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram geometry raster
+# diagram update, the Voronoi vertices and edges, the raster and the
+# field frames. make prove runs every harness (each takes minutes more).
+check prove tools/prove/prove.sh predicates predicates_os multiword multiword_armv6m diagram geometry raster field
 
 # A firmware links only what it calls: the bench/size/ programs, linked
 # at -Os with --gc-sections, keep only the library files of their feature

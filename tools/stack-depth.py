@@ -74,6 +74,7 @@ TABLE_CALLS = {"raster.c": (r"write_(label8|label16|label32|rgb565|rgb888)",
                "divide_conquer.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)")}
 CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback",
                     "vor_raster_euclid": "the caller's flush callback",
+                    "vor_field_raster": "the caller's flush callback",
                     "build_forked": "the caller's fork and join hooks"}
 
 
