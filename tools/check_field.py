@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""check_field.py [--every N] [PREFIX] - checks the VALUE frame examples/field
+wrote (PREFIX.values, default build/field.values) against an exact brute
+force: the Sibson coordinates of tools/gen_interpolate_vectors.py (exact
+rational clipping with fractions.Fraction, independent of the library)
+from the sensors of PREFIX.sensors.
+
+PREFIX.sensors holds "frame OX OY SX SY W H", "outside V" and one
+"s X Y VALUE" line per sensor; PREFIX.values is the frame's int32 values,
+little-endian, row-major. The pixels checked are those of every Nth row
+and every Nth column (N = 8 by default, about 1,200 of the 320 x 240
+frame), plus every sensor's pixel: inside the sensors' convex hull each
+must be sum(lambda_i value_i) rounded once, halves away from zero;
+outside, the outside value. Prints what it checked; exits 1 on any
+mismatch (each printed), 2 on a malformed input.
+"""
+import os
+import struct
+import sys
+from fractions import Fraction
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gen_interpolate_vectors import natural  # noqa: E402 (the one brute force)
+
+
+def round_half_away(f):
+    """f rounded to an integer, halves away from zero."""
+    magnitude = (abs(f.numerator) * 2 + f.denominator) // (2 * f.denominator)
+    return -magnitude if f < 0 else magnitude
+
+
+def read_sensors(path):
+    frame, outside, sites, values = None, None, [], []
+    with open(path) as f:
+        for line in f:
+            words = line.split()
+            if not words or words[0].startswith("#"):
+                continue
+            if words[0] == "frame" and len(words) == 7:
+                frame = tuple(int(w) for w in words[1:])
+            elif words[0] == "outside" and len(words) == 2:
+                outside = int(words[1])
+            elif words[0] == "s" and len(words) == 4:
+                sites.append((int(words[1]), int(words[2])))
+                values.append(int(words[3]))
+            else:
+                sys.exit(f"error: {path}: cannot read {line.strip()!r}")
+    if frame is None or outside is None or not sites:
+        sys.exit(f"error: {path}: no frame, outside value or sensor")
+    if len(set(sites)) != len(sites):
+        sys.exit(f"error: {path}: two sensors at one point")
+    return frame, outside, sites, values
+
+
+def main():
+    args = sys.argv[1:]
+    every = 8
+    if len(args) >= 2 and args[0] == "--every":
+        every = int(args[1])
+        args = args[2:]
+    if len(args) > 1 or every < 1:
+        sys.exit(__doc__)
+    prefix = args[0] if args else "build/field"
+    frame, outside, sites, values = read_sensors(prefix + ".sensors")
+    ox, oy, sx, sy, w, h = frame
+    data = open(prefix + ".values", "rb").read()
+    if len(data) != 4 * w * h:
+        sys.exit(f"error: {prefix}.values has {len(data)} bytes, expected {4 * w * h}")
+    frame_values = struct.unpack(f"<{w * h}i", data)
+
+    pixels = {(i, j) for j in range(0, h, every) for i in range(0, w, every)}
+    for x, y in sites:  # every sensor on a pixel centre of the frame
+        if (x - ox) % sx == 0 and (y - oy) % sy == 0 and 0 <= (x - ox) // sx < w and 0 <= (y - oy) // sy < h:
+            pixels.add(((x - ox) // sx, (y - oy) // sy))
+    inside = wrong = 0
+    for i, j in sorted(pixels, key=lambda p: (p[1], p[0])):
+        q = (ox + i * sx, oy + j * sy)
+        coordinates = natural(sites, q)
+        if coordinates is None:
+            want = outside
+        else:
+            inside += 1
+            want = round_half_away(sum((lam * values[k] for k, lam in coordinates.items()), Fraction(0)))
+        got = frame_values[j * w + i]
+        if got != want:
+            wrong += 1
+            print(f"FAIL pixel ({i}, {j}) at {q}: {prefix}.values has {got}, the brute force {want}")
+    print(f"check_field: {len(pixels)} pixels of the {w}x{h} frame (one row and column in {every}, "
+          f"and the {len(sites)} sensors' pixels; {inside} inside the hull, {len(pixels) - inside} outside) "
+          f"against the exact Sibson brute force of tools/gen_interpolate_vectors.py: "
+          + ("all equal" if wrong == 0 else f"{wrong} DIFFER"))
+    sys.exit(1 if wrong else 0)
+
+
+if __name__ == "__main__":
+    main()
