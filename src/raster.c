@@ -156,10 +156,8 @@ static void write_row(const vor_raster_output_t *out, uint32_t width, const vor_
 
 /* ---------------------------------------------------------------- bands */
 
-/* Starts the rows of frame; zeroes out->areas[0 .. sites). */
-static void bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
-                        const vor_raster_output_t *out, vor__run_t *const rows[2],
-                        size_t row_bytes)
+void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
+                      const vor_raster_output_t *out, vor__run_t *const rows[2], size_t row_bytes)
 {
     if (out->areas != NULL) {
         for (uint32_t k = 0; k < sites; k++) {
@@ -227,7 +225,7 @@ uint32_t vor__bands_put(vor__bands_t *b, uint32_t count)
 
 /* -------------------------------------------------------------- checks */
 
-static int frame_ok(const vor_raster_frame_t *f)
+int vor__raster_frame_ok(const vor_raster_frame_t *f)
 {
     if ((f->width == 0u) || (f->height == 0u) || (f->step_x <= 0) || (f->step_y <= 0) ||
         (f->width > 0x7FFFFFFFu) || (f->height > 0x7FFFFFFFu)) {
@@ -237,6 +235,20 @@ static int frame_ok(const vor_raster_frame_t *f)
     int64_t last_x = f->origin_x + vor__offset(f->width - 1u, f->step_x);
     int64_t last_y = f->origin_y + vor__offset(f->height - 1u, f->step_y);
     return (last_x <= INT32_MAX) && (last_y <= INT32_MAX);
+}
+
+int vor__raster_band_check(uint32_t width, size_t pixel_bytes, size_t band_bytes,
+                           uint32_t band_rows, size_t *row_bytes)
+{
+    if (width > 0x07FFFFFFu) {
+        return VOR_ERR_ARG; /* the sizes below (and the work's) must not overflow */
+    }
+    size_t bytes = (size_t)width * pixel_bytes; /* below 2^29 */
+    if ((uint64_t)band_bytes < vor__mul_u32((uint32_t)bytes, band_rows)) {
+        return VOR_ERR_NOMEM;
+    }
+    *row_bytes = bytes;
+    return VOR_OK;
 }
 
 /* Rounds an offset up to a multiple of 8 (the work memory's alignment). */
@@ -250,7 +262,8 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       const vor_raster_options_t *options, void *work, size_t work_bytes)
 {
     enum vor_raster_method method = (options != NULL) ? options->method : VOR_RASTER_FAST;
-    if ((frame == NULL) || (sites == NULL) || (out == NULL) || (work == NULL) || !frame_ok(frame)) {
+    if ((frame == NULL) || (sites == NULL) || (out == NULL) || (work == NULL) ||
+        !vor__raster_frame_ok(frame)) {
         return VOR_ERR_ARG;
     }
     if (sites->count == 0u) {
@@ -273,12 +286,14 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
         ((out->kind == VOR_RASTER_RGB888) && (out->palette888 == NULL))) {
         return VOR_ERR_ARG;
     }
-    if ((n > 0x07FFFFFFu) || (frame->width > 0x07FFFFFFu)) {
+    if (n > 0x07FFFFFFu) {
         return VOR_ERR_ARG; /* the work size below must not overflow */
     }
-    size_t row_bytes = (size_t)frame->width * pixel_bytes;
-    if ((uint64_t)out->band_bytes < vor__mul_u32((uint32_t)row_bytes, out->band_rows)) {
-        return VOR_ERR_NOMEM;
+    size_t row_bytes = 0;
+    int err = vor__raster_band_check(frame->width, pixel_bytes, out->band_bytes, out->band_rows,
+                                     &row_bytes);
+    if (err != VOR_OK) {
+        return err;
     }
     if (work_bytes < VOR_RASTER_WORK_BYTES(n, frame->width)) {
         return VOR_ERR_NOMEM;
@@ -304,5 +319,5 @@ int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
 
 void vor__raster_start(vor__raster_t *r)
 {
-    bands_begin(&r->bands, r->frame, r->sites->count, r->out, r->rows, r->row_bytes);
+    vor__bands_begin(&r->bands, r->frame, r->sites->count, r->out, r->rows, r->row_bytes);
 }

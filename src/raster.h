@@ -58,6 +58,15 @@ typedef struct vor__bands {
     int hold;             /* BOUNDARY: a row waits for the one below */
 } vor__bands_t;
 
+/* Starts the rows of frame into out's band (rows: the two rows of runs;
+ * zeroes out->areas[0 .. sites)). A producer that writes each row's
+ * pixels itself at vor__bands_pixels (DISTANCE; the field frames of
+ * field.c) puts rows of no runs; field.c's out has the kind
+ * VOR_RASTER_DISTANCE, no areas and no rows of runs, so the writer only
+ * counts its rows into bands and hands them to the flush. */
+void vor__bands_begin(vor__bands_t *b, const vor_raster_frame_t *frame, uint32_t sites,
+                      const vor_raster_output_t *out, vor__run_t *const rows[2], size_t row_bytes);
+
 static inline vor__run_t *vor__bands_runs(const vor__bands_t *b)
 {
     return b->rows[b->cur];
@@ -101,6 +110,17 @@ typedef struct vor__raster {
     size_t rest_bytes;   /* ... and its size */
     vor__bands_t bands;
 } vor__raster_t;
+
+/* Is every pixel centre of f an int32 point, with positive sizes and
+ * steps? (nonzero: yes) */
+int vor__raster_frame_ok(const vor_raster_frame_t *f);
+
+/* The band of a frame width pixels wide, pixel_bytes (1 to 4) a pixel:
+ * VOR_OK with the bytes of a row in *row_bytes when band_bytes hold
+ * band_rows rows; VOR_ERR_ARG for width >= 2^27 (the sizes must not
+ * overflow), VOR_ERR_NOMEM for a band too small (*row_bytes unchanged). */
+int vor__raster_band_check(uint32_t width, size_t pixel_bytes, size_t band_bytes,
+                           uint32_t band_rows, size_t *row_bytes);
 
 /* The checks every entry point makes, all but the metric's own fields:
  * VOR_OK with r filled in and the work memory divided (nothing written

@@ -16,6 +16,7 @@ int main(void)
     test_group("api_safety", test_api_safety);
     test_group("centroid", test_centroid);
     test_group("interpolate", test_interpolate);
+    test_group("field", test_field);
     test_group("dynamic", test_dynamic);
     test_group("motion", test_motion);
     test_group("fork_join", test_fork_join);

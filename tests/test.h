@@ -130,5 +130,6 @@ void test_fork_join(void);
 void test_cdt(void);
 void test_power(void);
 void test_interpolate(void);
+void test_field(void);
 
 #endif

@@ -44,7 +44,7 @@ LAYERS = [
     # which uses only the arithmetic (nothing of the mesh)
     ("mesh, predicates, raster", [
         "mesh.h", "mesh.c", "predicates.h", "predicates.c", "crossing.h", "crossing.c",
-        "raster.h", "raster.c", "raster_euclid.c", "raster_metrics.c"]),
+        "raster.h", "raster.c", "raster_euclid.c", "raster_metrics.c", "field.c"]),
     ("perturbation", ["perturbation.h"]),
     ("services", [
         "insertion_order.h", "insertion_order.c", "incremental.h", "dynamic.h",
@@ -54,7 +54,8 @@ LAYERS = [
         "queries.c", "geometry.c", "interpolate.c", "cdt.c", "power.c"]),
 ]
 # A file's own header, where it is not the file's name with .h.
-OWN_HEADER = {"raster_euclid.c": "raster.h", "raster_metrics.c": "raster.h"}
+OWN_HEADER = {"raster_euclid.c": "raster.h", "raster_metrics.c": "raster.h",
+              "field.c": "raster.h"}
 
 LAYER_OF = {name: level for level, (_, names) in enumerate(LAYERS) for name in names}
 
