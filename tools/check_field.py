@@ -18,16 +18,9 @@ mismatch (each printed), 2 on a malformed input.
 import os
 import struct
 import sys
-from fractions import Fraction
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from gen_interpolate_vectors import natural  # noqa: E402 (the one brute force)
-
-
-def round_half_away(f):
-    """f rounded to an integer, halves away from zero."""
-    magnitude = (abs(f.numerator) * 2 + f.denominator) // (2 * f.denominator)
-    return -magnitude if f < 0 else magnitude
+from gen_interpolate_vectors import field_value, natural  # noqa: E402 (the one brute force)
 
 
 def read_sensors(path):
@@ -76,12 +69,11 @@ def main():
     inside = wrong = 0
     for i, j in sorted(pixels, key=lambda p: (p[1], p[0])):
         q = (ox + i * sx, oy + j * sy)
-        coordinates = natural(sites, q)
-        if coordinates is None:
+        want, neighbours = field_value(sites, values, q, natural)
+        if neighbours == 0:
             want = outside
         else:
             inside += 1
-            want = round_half_away(sum((lam * values[k] for k, lam in coordinates.items()), Fraction(0)))
         got = frame_values[j * w + i]
         if got != want:
             wrong += 1
