@@ -101,8 +101,30 @@
  *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
  *   VOR_RASTER_DISTANCE works with every metric (DISTANCE VALUES).
  *
+ * FIELDS
+ *   vor_field_raster renders a diagram's natural-neighbour interpolant
+ *   (vor.h: vor_interpolate, Sibson's; or Laplace's) of int32 site values
+ *   through the same bands: each pixel the exact value at its centre,
+ *   rounded once, or a colour of a 256-entry RGB565 ramp over [low, high];
+ *   pixels outside the sites' convex hull get a colour of their own.
+ *
+ *     static int32_t band[8 * 160];                 // 8 rows of values
+ *     static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(12)];
+ *     uint32_t most = 0;
+ *     vor_field_output_t out = {0};                 // VOR_FIELD_VALUE
+ *     out.band = band; out.band_bytes = sizeof band; out.band_rows = 8;
+ *     out.flush = send_rows; out.user = &ctx; out.outside = INT32_MIN;
+ *     out.max_neighbours = &most;                   // optional
+ *     int err = vor_field_raster(&d, values, &frame, &out, NULL,
+ *                                scratch, sizeof scratch);
+ *
+ *   A pixel with more natural neighbours than the scratch holds stops the
+ *   render with VOR_ERR_NOMEM, most saying how many it needed. No work
+ *   memory: the diagram is the index (docs/design/interpolation.md,
+ *   "Field frames", has the cost).
+ *
  * MEMORY
- *   work: VOR_RASTER_WORK_BYTES(count, width) bytes, aligned to
+ *   vor_raster's work: VOR_RASTER_WORK_BYTES(count, width) bytes, aligned to
  *   VOR_RASTER_WORK_ALIGN, a compile-time constant. Nothing else is used
  *   besides the band buffer and a small stack frame.
  *
@@ -308,8 +330,9 @@ typedef struct vor_field_output {
     int32_t low;                /* RGB565: the ramp's range, low < high */
     int32_t high;
     uint16_t outside565;        /* RGB565: a pixel outside the convex hull */
-    uint32_t *max_neighbours;   /* optional: the most natural neighbours of
-                                   any pixel rendered (to size the scratch) */
+    uint32_t *max_neighbours;   /* optional (NULL): the most natural
+                                   neighbours of any pixel rendered, to
+                                   size the scratch (vor_field_raster) */
 } vor_field_output_t;
 
 /* How to render a field: NULL or a zero-initialised struct for the
@@ -321,23 +344,32 @@ typedef struct vor_field_options {
 /*
  * Renders the natural-neighbour interpolant of integer site values over
  * frame, band by band, into out: each pixel is exactly what
- * vor_interpolate (or vor_interpolate_laplace) gives at its centre. values
- * is indexed by site id, as for vor_interpolate. The diagram is only read.
- * Scratch: VOR_SIBSON_SCRATCH_BYTES(k) for pixels with up to k natural
- * neighbours (any alignment).
+ * vor_interpolate (or vor_interpolate_laplace) gives at its centre, and
+ * the bands go to flush as for vor_raster (top down, the last one maybe
+ * shorter). values is indexed by site id, as for vor_interpolate. The
+ * diagram is only read. Scratch: VOR_SIBSON_SCRATCH_BYTES(k) for pixels
+ * with up to k natural neighbours (any alignment); a pixel at a site has
+ * 1, on a hull edge 2, outside the hull none. Cost: one vor_nearest from
+ * the previous pixel's nearest site (a step or two) and one
+ * vor_interpolate per pixel.
  *   VOR_ERR_ARG    d, values, frame, out or its band or flush NULL
  *                  (options may be), a zero size or step, a pixel centre
- *                  outside int32, an unknown kind or method, RGB565 with
+ *                  outside int32, a frame 2^27 or more pixels wide, an
+ *                  unknown kind or method, band_rows 0, RGB565 with
  *                  ramp565 NULL or low >= high, scratch NULL with
  *                  scratch_bytes > 0
  *   VOR_ERR_EMPTY  the diagram has no sites
- *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes; or, while
- *                  rendering, a pixel with more natural neighbours than
- *                  the scratch holds (*max_neighbours then says how many)
+ *   VOR_ERR_NOMEM  band_bytes < band_rows * width * pixel bytes (4 VALUE,
+ *                  2 RGB565); or, while rendering, a pixel with more
+ *                  natural neighbours than the scratch holds
  *   VOR_ERR_STOPPED  a flush returned nonzero
- * The argument errors are found before the first pixel, and then nothing
- * is written. A pixel's VOR_ERR_NOMEM and VOR_ERR_STOPPED stop the render
- * after the bands already delivered, like a display's partial refresh.
+ * The argument errors (ARG, EMPTY, the band's NOMEM) are found before the
+ * first pixel, and then nothing is written, *max_neighbours included. A
+ * pixel's VOR_ERR_NOMEM and VOR_ERR_STOPPED stop the render after the
+ * bands already delivered, like a display's partial refresh. Once
+ * rendering began, *max_neighbours (when given) is written on return:
+ * the most natural neighbours of any pixel rendered, and on a pixel's
+ * VOR_ERR_NOMEM at least that pixel's count (the scratch to retry with).
  */
 int vor_field_raster(const vor_t *d, const int32_t *values, const vor_raster_frame_t *frame,
                      const vor_field_output_t *out, const vor_field_options_t *options,

@@ -41,7 +41,8 @@ static uint32_t ramp_index(int32_t v, int32_t low, int32_t high)
         return 255u;
     }
     uint32_t span = (uint32_t)high - (uint32_t)low; /* high - low, mod 2^32 exact */
-    uint64_t target = (uint64_t)((uint32_t)v - (uint32_t)low) << 8;
+    uint32_t offset = (uint32_t)v - (uint32_t)low; /* v - low, exact */
+    uint64_t target = (uint64_t)offset << 8;
     uint32_t index = 0;
     for (uint32_t bit = 128u; bit != 0u; bit >>= 1) {
         uint32_t c = index | bit;
@@ -164,7 +165,9 @@ int vor_field_raster(const vor_t *d, const int32_t *values, const vor_raster_fra
     band_out.band_rows = out->band_rows;
     band_out.flush = out->flush;
     band_out.user = out->user;
-    vor__run_t *const no_runs[2] = {NULL, NULL};
+    vor__run_t *no_runs[2];
+    no_runs[0] = NULL;
+    no_runs[1] = NULL;
     vor__bands_t bands;
     vor__bands_begin(&bands, frame, 0u, &band_out, no_runs, row_bytes);
     for (uint32_t j = 0; (j <= frame->height) && (err == VOR_OK); j++) { /* j = height: the end */

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * test_api_safety.c - every public call of vor.h, vor_power.h and
- * vor_raster.h with each bad argument: a NULL pointer, a wrong
+ * vor_raster.h with each bad argument (vor_field_raster's among them): a NULL pointer, a wrong
  * configuration fingerprint, a zeroed or closed iterator, an id that is
  * not a site (out of range, or a duplicate's), an inverted or empty box,
  * a too small or misaligned arena, a full diagram. Each call must
@@ -667,6 +667,72 @@ static void check_raster(void)
           "raster_euclid: the good call");
 }
 
+/* vor_field_raster: each bad argument refused before the first pixel,
+ * with the diagram, the band, max_neighbours and the scratch as they
+ * were and no flush; a never-initialised diagram is empty. */
+static void check_field(void)
+{
+    CHECK(build_all(SAFE_SITES), "build");
+    snapshot();
+    static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(SAFE_SITES)];
+    static uint8_t scratch_before[sizeof scratch];
+    static int32_t values[SAFE_SITES];
+    static vor_t zeroed;
+    int32_t band[8 * 2], band_before[8 * 2];
+    uint16_t ramp[256];
+    fill(band, sizeof band, 0x99);
+    fill(scratch, sizeof scratch, 0x98);
+    fill(ramp, sizeof ramp, 0x11);
+    test_copy_bytes(band_before, band, sizeof band);
+    test_copy_bytes(scratch_before, scratch, sizeof scratch);
+    unsigned flushes = 0;
+    uint32_t most = 0x77u;
+    vor_raster_frame_t frame = {0, 0, 1000, 1000, 8, 4};
+    vor_field_output_t out = {VOR_FIELD_VALUE, band, sizeof band, 2, never_flush, &flushes, -1,
+                              ramp, 0, 100, 0, &most};
+    vor_raster_frame_t empty = frame, inverted = frame, past = frame;
+    empty.height = 0;
+    inverted.step_y = -1;
+    past.origin_x = INT32_MAX - 6000; /* the last centre is INT32_MAX + 1000 */
+    vor_field_output_t no_band = out, no_flush = out, no_rows = out, kind = out, no_ramp = out,
+                       flat = out, small = out;
+    no_band.band = NULL;
+    no_flush.flush = NULL;
+    no_rows.band_rows = 0;
+    kind.kind = (enum vor_field_kind)9;
+    no_ramp.kind = VOR_FIELD_RGB565;
+    no_ramp.ramp565 = NULL;
+    flat.kind = VOR_FIELD_RGB565;
+    flat.high = flat.low - 1;
+    small.band_bytes--;
+    vor_field_options_t method = {(enum vor_field_method)9};
+    size_t nb = sizeof scratch;
+    unsigned bad = 0;
+    bad += vor_field_raster(NULL, values, &frame, &out, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, NULL, &frame, &out, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, NULL, &out, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, NULL, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &out, NULL, NULL, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &out, &method, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &empty, &out, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &inverted, &out, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &past, &out, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &no_band, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &no_flush, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &no_rows, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &kind, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &no_ramp, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &flat, NULL, scratch, nb) != VOR_ERR_ARG;
+    bad += vor_field_raster(&diagram, values, &frame, &small, NULL, scratch, nb) != VOR_ERR_NOMEM;
+    bad += vor_field_raster(&zeroed, values, &frame, &out, NULL, scratch, nb) != VOR_ERR_EMPTY;
+    bad += (flushes != 0u || most != 0x77u || !test_same_bytes(band, band_before, sizeof band) ||
+            !test_same_bytes(scratch, scratch_before, sizeof scratch));
+    CHECK(bad == 0 && unchanged(), "field: %u bad arguments accepted or wrote", bad);
+    CHECK(vor_field_raster(&diagram, values, &frame, &out, NULL, scratch, nb) == VOR_OK &&
+              flushes == 2u && most >= 1u && unchanged(),
+          "field: the good call (the diagram only read)");
+}
+
 /* A vor_t that vor_init never saw, zeroed as static storage is: no room,
  * no sites. Every call treats it as an empty, full diagram. */
 static void check_zeroed_diagram(void)
@@ -1187,6 +1253,7 @@ void test_api_safety(void)
     TEST_CASE("reads") check_reads();
     TEST_CASE("iterators") check_iterators();
     TEST_CASE("raster") check_raster();
+    TEST_CASE("field") check_field();
     TEST_CASE("zeroed_diagram") check_zeroed_diagram();
     TEST_CASE("each_argument") check_each_argument();
     TEST_CASE("power/init") check_power_init();

@@ -132,8 +132,7 @@ static void check_frame(const fv_frame_t *f, bool laplace, uint32_t band_rows)
     CHECK(ft_build(&d, f), "built");
     vor_field_output_t out = ft_output(VOR_FIELD_VALUE, band_rows, f, &s, &most);
     vor_field_options_t options = {laplace ? VOR_FIELD_LAPLACE : VOR_FIELD_SIBSON};
-    int err = vor_field_raster(&d, f->values, &f->frame, &out, laplace ? &options : NULL, ft_scratch,
-                               sizeof ft_scratch);
+    int err = vor_field_raster(&d, f->values, &f->frame, &out, &options, ft_scratch, sizeof ft_scratch);
     const int32_t *want = laplace ? f->laplace : f->sibson;
     uint32_t bad = 0;
     uint32_t inside = 0;

@@ -10,6 +10,8 @@ static vor_point_t cell[VOR_CELL_MAX_VERTICES(SIZE_SITES)];
 static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
 static uint8_t natural_scratch[VOR_SIBSON_SCRATCH_BYTES(8)];
 static int32_t site_values[SIZE_SITES];
+static int32_t field_band[SIZE_WIDTH * 2u];
+static uint16_t field_ramp[256];
 static uint32_t ids[SIZE_SITES];
 static uint8_t motion[VOR_MOTION_BYTES(SIZE_SITES)] __attribute__((aligned(VOR_MOTION_ALIGN)));
 static uint8_t walls[VOR_CDT_BYTES(SIZE_SITES, 64, 16, 64)] __attribute__((aligned(VOR_CDT_ALIGN)));
@@ -77,6 +79,18 @@ int main(void)
     acc |= vor_interpolate_laplace(&d, site_values, q, VOR_NO_HINT, natural_scratch,
                                    sizeof natural_scratch, &value);
     acc += value.value;
+    vor_raster_frame_t field_frame = {size_x(9), size_y(9), 1, 1, SIZE_WIDTH, 4};
+    vor_field_output_t field_out = {0};
+    field_out.kind = (enum vor_field_kind)size_x(8);
+    field_out.band = field_band;
+    field_out.band_bytes = sizeof field_band;
+    field_out.band_rows = 2;
+    field_out.flush = raster_flush;
+    field_out.ramp565 = field_ramp;
+    field_out.high = 255;
+    vor_field_options_t field_options = {(enum vor_field_method)size_x(8)};
+    acc |= vor_field_raster(&d, site_values, &field_frame, &field_out, &field_options,
+                            natural_scratch, sizeof natural_scratch);
     vor_vertex_t centre;
     acc |= vor_circumcentre(raster_points[0], raster_points[1], raster_points[2], &centre);
     acc |= vor_voronoi_vertex(&d, 0, 1, 2, &centre);

@@ -3,7 +3,8 @@
  * fuzz_api.c - libFuzzer harness: the fuzz bytes are a program of calls on
  * one small diagram (arenas that run out, both index widths: built with
  * -DVOR_INDEX_BITS=16 and 32): builds, inserts, removes, moves, queries,
- * iterators, the two-core builder through a one-thread hook, Voronoi
+ * iterators, the two-core builder through a one-thread hook, field frames
+ * (vor_field_raster, each pixel against vor_interpolate), Voronoi
  * vertices, the memory figures and the counters. After every call
  * vor_validate must pass; every failing call must leave the vor_t and the
  * arena byte-for-byte unchanged; answers are
@@ -50,6 +51,7 @@
 #include "fuzz_hpoint.h"
 #include "vor_cdt.h"
 #include "vor_power.h"
+#include "vor_raster.h"
 
 #define MOST_SITES 24u
 #define BUILD_POINTS (MOST_SITES + 4u) /* builds may ask for more than fit */
@@ -629,6 +631,83 @@ static void check_natural(model_t *m, vor_point_t q, uint32_t hint, uint32_t sit
                  "sibson: a short scratch accepted, or more than the count written");
 }
 
+/* Field frames' flush: the rows arrive in order into one frame. */
+typedef struct {
+    int32_t px[5 * 3];
+    uint32_t next_row;
+    uint32_t calls;
+} field_sink_t;
+
+static int field_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    field_sink_t *s = user;
+    FUZZ_REQUIRE(first_row == s->next_row && rows >= 1 && rows <= 2 && first_row + rows <= 3,
+                 "field: a band out of order");
+    memcpy(s->px + first_row * 5u, pixels, (size_t)rows * 5u * sizeof(int32_t));
+    s->next_row = first_row + rows;
+    s->calls++;
+    return 0;
+}
+
+/* A 5 x 3 field frame around q (steps and method from q's bits, no byte
+ * read: the corpora keep their meaning), in bands of 2 rows: each pixel
+ * what vor_interpolate (or its Laplace sibling) gives at its centre,
+ * max_neighbours the most of them, the diagram unchanged; a frame past
+ * int32 refused with nothing written; no sites: VOR_ERR_EMPTY. */
+static void check_field(model_t *m, vor_point_t q, uint32_t sites)
+{
+    static uint8_t scratch[VOR_SIBSON_SCRATCH_BYTES(MOST_SITES)];
+    static int32_t values[MOST_SITES];
+    for (uint32_t i = 0; i < MOST_SITES; i++)
+        values[i] = (int32_t)(0x9E3779B9u * (i + 1u) + (uint32_t)q.x);
+    int laplace = (q.y & 2) != 0;
+    vor_raster_frame_t frame = {q.x, q.y, 1 + (q.x & 3), 1 + ((q.y >> 2) & 3), 5, 3};
+    int64_t last_x = (int64_t)frame.origin_x + 4 * (int64_t)frame.step_x;
+    int64_t last_y = (int64_t)frame.origin_y + 2 * (int64_t)frame.step_y;
+    int32_t band[5 * 2];
+    field_sink_t sink;
+    memset(&sink, 0, sizeof sink);
+    memset(band, 0xa5, sizeof band);
+    uint32_t most = 0xdeadbeefu;
+    vor_field_output_t out;
+    memset(&out, 0, sizeof out);
+    out.kind = VOR_FIELD_VALUE;
+    out.band = band;
+    out.band_bytes = sizeof band;
+    out.band_rows = 2;
+    out.flush = field_flush;
+    out.user = &sink;
+    out.outside = INT32_MIN;
+    out.max_neighbours = &most;
+    vor_field_options_t options = {laplace ? VOR_FIELD_LAPLACE : VOR_FIELD_SIBSON};
+    snapshot(m);
+    int result = vor_field_raster(&m->d, values, &frame, &out, &options, scratch, sizeof scratch);
+    FUZZ_REQUIRE(unchanged(m), "field changed the diagram");
+    if (last_x > INT32_MAX || last_y > INT32_MAX || sites == 0) {
+        FUZZ_REQUIRE(result == (sites == 0 && last_x <= INT32_MAX && last_y <= INT32_MAX
+                                    ? VOR_ERR_EMPTY : VOR_ERR_ARG) &&
+                         sink.calls == 0 && most == 0xdeadbeefu,
+                     "field: a bad frame or no sites accepted, or wrote");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK && sink.calls == 2 && sink.next_row == 3, "field: refused");
+    uint32_t most_seen = 0;
+    for (uint32_t j = 0; j < 3; j++)
+        for (uint32_t i = 0; i < 5; i++) {
+            vor_point_t p = {(int32_t)(frame.origin_x + (int32_t)i * frame.step_x),
+                             (int32_t)(frame.origin_y + (int32_t)j * frame.step_y)};
+            vor_interpolation_t v;
+            int e = (laplace ? vor_interpolate_laplace : vor_interpolate)(
+                &m->d, values, p, VOR_NO_HINT, scratch, sizeof scratch, &v);
+            FUZZ_REQUIRE(e == VOR_OK || e == VOR_ERR_OUTSIDE, "field: interpolate failed");
+            FUZZ_REQUIRE(sink.px[j * 5 + i] == (e == VOR_OK ? v.value : INT32_MIN),
+                         "field: a pixel differs from vor_interpolate");
+            if (e == VOR_OK && v.neighbours > most_seen)
+                most_seen = v.neighbours;
+        }
+    FUZZ_REQUIRE(most == most_seen, "field: max_neighbours wrong");
+}
+
 static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
 {
     vor_point_t q = fuzz_point(r, previous);
@@ -637,6 +716,7 @@ static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t n = brute_order(m, q.x, q.y, order);
     uint32_t id = 0xdeadbeefu;
     check_natural(m, q, hint, n, (q.x & 1) != 0);
+    check_field(m, q, n);
     snapshot(m);
     int result = vor_nearest(&m->d, q, hint, &id);
     FUZZ_REQUIRE(unchanged(m), "nearest changed the diagram");
