@@ -64,8 +64,9 @@ def main():
 
     pixels = {(i, j) for j in range(0, h, every) for i in range(0, w, every)}
     for x, y in sites:  # every sensor on a pixel centre of the frame
-        if (x - ox) % sx == 0 and (y - oy) % sy == 0 and 0 <= (x - ox) // sx < w and 0 <= (y - oy) // sy < h:
-            pixels.add(((x - ox) // sx, (y - oy) // sy))
+        i, j = (x - ox) // sx, (y - oy) // sy
+        if (x - ox) % sx == 0 and (y - oy) % sy == 0 and 0 <= i < w and 0 <= j < h:
+            pixels.add((i, j))
     inside = wrong = 0
     for i, j in sorted(pixels, key=lambda p: (p[1], p[0])):
         q = (ox + i * sx, oy + j * sy)
@@ -77,10 +78,12 @@ def main():
         got = frame_values[j * w + i]
         if got != want:
             wrong += 1
-            print(f"FAIL pixel ({i}, {j}) at {q}: {prefix}.values has {got}, the brute force {want}")
-    print(f"check_field: {len(pixels)} pixels of the {w}x{h} frame (one row and column in {every}, "
-          f"and the {len(sites)} sensors' pixels; {inside} inside the hull, {len(pixels) - inside} outside) "
-          f"against the exact Sibson brute force of tools/gen_interpolate_vectors.py: "
+            print(f"FAIL pixel ({i}, {j}) at {q}: {prefix}.values has {got}, "
+                  f"the brute force {want}")
+    print(f"check_field: {len(pixels)} pixels of the {w}x{h} frame (one row and column in "
+          f"{every}, and the {len(sites)} sensors' pixels; {inside} inside the hull, "
+          f"{len(pixels) - inside} outside) against the exact Sibson brute force of "
+          f"tools/gen_interpolate_vectors.py: "
           + ("all equal" if wrong == 0 else f"{wrong} DIFFER"))
     sys.exit(1 if wrong else 0)
 

@@ -57,7 +57,7 @@
 #define FRAME_W ((uint32_t)(WORLD_W / FIELD_STEP))
 #define FRAME_H ((uint32_t)(WORLD_H / FIELD_STEP))
 #define BAND_ROWS 16u
-/* Natural neighbours the scratch holds: a pixel here has at most 10 (the
+/* Natural neighbours the scratch holds: a pixel here has at most 9 (the
  * run prints the most); a pixel with more would stop the render with
  * VOR_ERR_NOMEM, which the checks report. */
 #define NEIGHBOURS 16u
@@ -182,7 +182,8 @@ static bool inside_hull(int32_t x, int32_t y)
 /* Blue, cyan, green, yellow, red: four stretches of 64 entries. */
 static void make_ramp(void)
 {
-    static const uint8_t stop[5][3] = {{0, 0, 255}, {0, 255, 255}, {0, 255, 0}, {255, 255, 0}, {255, 0, 0}};
+    static const uint8_t stop[5][3] = {{0, 0, 255}, {0, 255, 255}, {0, 255, 0},
+                                       {255, 255, 0}, {255, 0, 0}};
     for (uint32_t t = 0; t < 256u; t++) {
         uint32_t s = t / 64u, f = t % 64u, rgb[3];
         for (uint32_t c = 0; c < 3u; c++) {
