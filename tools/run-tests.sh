@@ -43,7 +43,7 @@ skipped=()
 only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
-suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference interpolate-reference fuzz coverage room harness"
+suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference interpolate-reference fuzz coverage room field harness"
 suites="$suites mutants freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
@@ -260,6 +260,54 @@ room() {
     echo "$passed passed, $failed failed"
 }
 check room room
+
+# examples/field at every 4th pixel (example-field-quick, 80x60) on the
+# host and on every emulated target: 50 sensors' Sibson interpolant
+# rendered by vor_field_raster, every pixel checked on the target (linear
+# reproduction, the brute-force hull, the readings, their range, the
+# colours). Each target's frames must equal the host's byte for byte, and
+# the host's values are checked against the exact brute force of
+# tools/check_field.py (one row and column in 4, and the sensors).
+field() {
+    local passed=0 failed=0 port exe out status counts
+    for port in host $targets; do
+        exe=$([ "$port" = host ] || echo .elf)
+        out=$logs/field-$port.out
+        rm -f build/field-quick.values build/field-quick.rgb565
+        make -s -j"$jobs" PORT="$port" "build/$port/example-field-quick$exe" >"$out" 2>&1 &&
+            make -s PORT="$port" run-example-field-quick >>"$out" 2>&1
+        status=$?
+        sed -n "s/^FAIL /FAIL $port: /p" "$out"
+        counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
+        if [ -n "$counts" ]; then
+            passed=$((passed + ${counts%% passed*}))
+            counts=${counts#*, }
+            failed=$((failed + ${counts%% failed}))
+        fi
+        if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
+            echo "FAIL $port: examples/field exited with status $status ($out)"
+            failed=$((failed + 1))
+        fi
+        if [ "$port" = host ]; then
+            cp build/field-quick.values "$logs/field-host.values" 2>/dev/null
+            cp build/field-quick.rgb565 "$logs/field-host.rgb565" 2>/dev/null
+            if python3 tools/check_field.py --every 4 build/field-quick; then
+                passed=$((passed + 1))
+            else
+                echo "FAIL host: tools/check_field.py found values unlike the brute force"
+                failed=$((failed + 1))
+            fi
+        elif cmp -s build/field-quick.values "$logs/field-host.values" &&
+            cmp -s build/field-quick.rgb565 "$logs/field-host.rgb565"; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL $port: the field's frames differ from the host's"
+            failed=$((failed + 1))
+        fi
+    done
+    echo "$passed passed, $failed failed"
+}
+check field field
 
 # The harness itself: on every port a failing check, a failing or empty
 # named case, a filter that selects no case and a trap must end the run
