@@ -568,8 +568,9 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         from = star_cut(d, p, &st, i);
     }
 
-    VOR_ASSERT(st.deg == 3u); /* every vertex has at least three neighbours */
-    vor__merge_three(d, p, st.nb, st.sl);
+    if (st.deg == 3u) { /* fewer: a broken mesh only (every vertex has three neighbours) */
+        vor__merge_three(d, p, st.nb, st.sl);
+    }
     vor_index_t a = st.nb[0];
     vor_index_t b = st.nb[1];
     return (a != VOR__INFINITE) ? a : b;
