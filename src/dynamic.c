@@ -568,7 +568,8 @@ static uint32_t remove_from_mesh(vor_t *d, vor_index_t p)
         from = star_cut(d, p, &st, i);
     }
 
-    if (st.deg == 3u) { /* fewer: a broken mesh only (every vertex has three neighbours) */
+    VOR_ASSERT(st.deg == 3u); /* every vertex has at least three neighbours */
+    if (st.deg == 3u) { /* fewer: a broken mesh only, left alone rather than read past */
         vor__merge_three(d, p, st.nb, st.sl);
     }
     vor_index_t a = st.nb[0];

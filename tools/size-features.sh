@@ -53,6 +53,7 @@ links() {
     power_cells)    echo "bucket_grid dynamic geometry incremental insertion_order mesh power predicates queries" ;;
     interpolate)    echo "bucket_grid incremental insertion_order interpolate mesh predicates queries" ;;
     laplace)        echo "bucket_grid incremental insertion_order interpolate mesh predicates queries" ;;
+    field)          echo "bucket_grid field incremental insertion_order interpolate mesh predicates queries raster" ;;
     raster_euclid)  echo "raster raster_euclid" ;;
     raster_all)     echo "predicates raster raster_euclid raster_metrics" ;;
     everything)     echo "$ALL_FILES" ;;
@@ -75,7 +76,7 @@ print(" ".join(sorted(files)))
 PY
 }
 # In the order of the table: from the smallest firmware to everything.
-FEATURES="insert_nearest build_nearest move geometry constrain power power_cells interpolate laplace raster_euclid raster_all everything"
+FEATURES="insert_nearest build_nearest move geometry constrain power power_cells interpolate laplace field raster_euclid raster_all everything"
 LEVELS="-Os -O2"
 
 # Sums the libvor input sections of a GNU ld map: "flash ram". An input
