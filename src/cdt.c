@@ -1279,6 +1279,15 @@ typedef struct {
     uint64_t flips;     /* in this run */
 } lawson_t;
 
+/* An empty stack over the whole scratch: 13 (max_cut + 4) indices, as
+ * vor_cdt_attach laid it out. One stack for the flips and the domain's
+ * flood, so both read its room from here. */
+static lawson_t lawson_begin(struct vor__cdt *c)
+{
+    lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
+    return w;
+}
+
 static void lawson_push(lawson_t *w, vor_index_t u, vor_index_t v)
 {
     if (w->count < w->room) {
@@ -1544,7 +1553,7 @@ int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b)
     }
     c->domain = false;
     /* one constraint less on each piece; the freed edges are tested */
-    lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
+    lawson_t w = lawson_begin(c);
     from = (vor_index_t)a;
     for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
         vor_index_t slot;
@@ -1650,7 +1659,7 @@ int vor_cdt_domain(vor_t *d)
     uint8_t *lv = c->levels;
     /* below two vertices the slots hold no triangle (stale contents) */
     uint32_t end = (m->vertex_count >= 2u) ? vor__used_slots_end(m) : 0u;
-    lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
+    lawson_t w = lawson_begin(c);
     for (uint32_t s = 0; s < end; s++) {
         lv[s] = LEVEL_UNKNOWN;
     }

@@ -318,33 +318,6 @@ VOR__INLINE int32_t top_bits(int64_t v, unsigned t)
     return (w >= 0) ? ((w >> 17)) : ~((~w) >> 17);
 }
 
-/* max(|x|, |y|) + 1 of a shifted difference pair (x, y), |x|, |y| <= 2^14. */
-VOR__INLINE uint32_t pair_size(const int32_t xy[2])
-{
-    uint32_t x = (uint32_t)vor__mw_magnitude(xy[0]);
-    uint32_t y = (uint32_t)vor__mw_magnitude(xy[1]);
-    return ((x > y) ? x : y) + 1u;
-}
-
-/* The filter's second, finer error bound, for the determinants the first
- * leaves (about one in ten on uniform sites): with a, b, c the pair_size
- * of the three points, a monomial of lift(a) cross(b, c) is at most a^2 b
- * c in magnitude and its error at most the sum of the partial derivatives
- * at (a, b, c), 2abc + a^2 (b + c) (they only grow toward that corner),
- * times 2^4s; four monomials a term, so
- *   |P(d) - 2^4s P(d')| <= 2^4s 4 (6abc + a^2 (b + c) + b^2 (c + a) + c^2 (a + b)),
- * below 2^4s 48 (2^14 + 1)^3 < 2^4s 2^48, and |P(d')| above that bound
- * decides. */
-static uint64_t point_bound(const int32_t shifted[6])
-{
-    uint32_t a = pair_size(&shifted[0]);
-    uint32_t b = pair_size(&shifted[2]);
-    uint32_t c = pair_size(&shifted[4]);
-    uint64_t sum = vor__mul_u32(a * b, 6u * c) + vor__mul_u32(a * a, b + c) +
-                   vor__mul_u32(b * b, c + a) + vor__mul_u32(c * c, a + b);
-    return sum << 2;
-}
-
 /* With 32-bit limbs the mid tier's exact sums cost 2.6 times the narrow
  * tier (Cortex-M3), so the determinant P (12 monomials, each +-1 times a
  * product of four differences: lift x cross, 4 monomials a term) is first
@@ -355,11 +328,12 @@ static uint64_t point_bound(const int32_t shifted[6])
  * that of the d' by at most 2^4s ((A + 1)^4 - A^4), so |P(d) - 2^4s P(d')|
  * <= 2^4s 12 (4 A^3 + 6 A^2 + 4 A + 1) < 2^4s (3 2^46 + 2^35), and when
  * |P(d')| is at least that bound its sign is P(d)'s; else a finer bound
- * from each point's size may decide (point_bound). Returns 0 when neither
- * does (an exact zero among them: the exact sums then decide). Straight-line
- * code on 32-bit values: loops cost a Cortex-M3 more than they save. Out
- * of line: inlined, the registers it needs are saved and restored on
- * every mid-tier call, which costs RISC-V more than the call. */
+ * from each point's size may decide (vor__incircle_point_bound). Returns
+ * 0 when neither does (an exact zero among them: the exact sums then
+ * decide). Straight-line code on 32-bit values: loops cost a Cortex-M3
+ * more than they save. Out of line: inlined, the registers it needs are
+ * saved and restored on every mid-tier call, which costs RISC-V more than
+ * the call. */
 static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
 {
     /* m in [2^14, 2^31) (the mid tier's): s = bits - 14 in [1, 17], and
@@ -373,7 +347,7 @@ static VOR__NOINLINE int incircle_filter(const int64_t d[6], uint32_t m)
         return vor__mw_sign64(det);
     }
     uint64_t size = (uint64_t)((det < 0) ? -det : det);
-    return (size > point_bound(shifted)) ? vor__mw_sign64(det) : 0;
+    return (size > vor__incircle_point_bound(shifted)) ? vor__mw_sign64(det) : 0;
 }
 #endif
 

@@ -111,6 +111,37 @@ VOR__INLINE int64_t vor__incircle_narrow(const int32_t d[6])
            vor__mul_i32(lc, (ax * by) - (ay * bx));
 }
 
+/* max(|x|, |y|) + 1 of a difference pair (x, y), |x|, |y| <= 2^14. */
+VOR__INLINE uint32_t vor__point_size(const int32_t xy[2])
+{
+    uint32_t x = (uint32_t)vor__mw_magnitude(xy[0]);
+    uint32_t y = (uint32_t)vor__mw_magnitude(xy[1]);
+    return ((x > y) ? x : y) + 1u;
+}
+
+/* The mid incircle filter's second, finer error bound (32-bit limbs,
+ * predicates.c incircle_filter), for the determinants its first bound
+ * leaves (about one in ten on uniform sites). The filter takes each
+ * difference d = 2^s d' + r, 0 <= r < 2^s, |d'| <= 2^14. With a, b, c the
+ * vor__point_size of the three points d', a monomial of lift(a) cross(b,
+ * c) is at most a^2 b c in magnitude and its error at most the sum of the
+ * partial derivatives at (a, b, c), 2abc + a^2 (b + c) (they only grow
+ * toward that corner; the + 1 of a size holds the mean value's point),
+ * times 2^4s; four monomials a term, so
+ *   |P(d) - 2^4s P(d')| <= 2^4s 4 (6abc + a^2 (b + c) + b^2 (c + a) + c^2 (a + b)),
+ * below 2^4s 48 (2^14 + 1)^3 < 2^4s 2^48, and |P(d')| above that bound
+ * decides. Here, not in predicates.c, so that the tests hold it to that
+ * contract (test_predicates.c, check_point_bound). */
+VOR__INLINE uint64_t vor__incircle_point_bound(const int32_t shifted[6])
+{
+    uint32_t a = vor__point_size(&shifted[0]);
+    uint32_t b = vor__point_size(&shifted[2]);
+    uint32_t c = vor__point_size(&shifted[4]);
+    uint64_t sum = vor__mul_u32(a * b, 6u * c) + vor__mul_u32(a * a, b + c) +
+                   vor__mul_u32(b * b, c + a) + vor__mul_u32(c * c, a + b);
+    return sum << 2;
+}
+
 /* The bounds of the six differences d (vor__mw_bound). The caller ORs
  * them in its own scope to pick the tier: an analyser then narrows each
  * bound by the test of that OR (not through a returned value). */

@@ -1024,10 +1024,82 @@ static big_t big_mul(big_t a, big_t b)
     return r;
 }
 
+/* The incircle determinant of the differences d (a - d, b - d, c - d as
+ * x, y pairs): the sum of lift(k) cross(k + 1, k + 2). */
+static big_t big_incircle(const int64_t d[6])
+{
+    big_t sum = big_of(0);
+    for (unsigned k = 0; k < 3u; k++) {
+        unsigned u = (k + 1u) % 3u, v = (k + 2u) % 3u;
+        big_t x = big_of(d[2u * k]), y = big_of(d[(2u * k) + 1u]);
+        big_t lift = big_add(big_mul(x, x), big_mul(y, y), false);
+        big_t cross = big_add(big_mul(big_of(d[2u * u]), big_of(d[(2u * v) + 1u])),
+                              big_mul(big_of(d[(2u * u) + 1u]), big_of(d[2u * v])), true);
+        sum = big_add(sum, big_mul(lift, cross), false);
+    }
+    return sum;
+}
+
+static bool big_negative(big_t a)
+{
+    return (a.d[15] & 0x8000u) != 0u;
+}
+
+/* The mid incircle filter's second error bound against the error it
+ * bounds (vor__incircle_point_bound, src/predicates.h), exactly: for
+ * differences d = 2^17 u + r, |u| <= 2^14 (the filter's widest shift),
+ * |P(d) - 2^68 P(u)| must not exceed 2^68 times the bound of u, for r at
+ * each of the 64 corners of [0, 2^17 - 1]^6, where the first-order error
+ * is largest. The u: random at five scales (each point at its own), and
+ * four where a hill climb on the error over the bound ended; there the
+ * error exceeds a bound without its 6abc term, one with a / b or 6 / c
+ * for a b or 6 c, and one of sizes without their + 1 (three times it at
+ * the first, one point on each diagonal beside the fourth), though it
+ * stays below the code's bound (0.12 to 0.71 of it). */
+static void check_point_bound(void)
+{
+    static const int32_t climbed[4][6] = {{-1, 1, 1, -1, 0, 0},
+                                          {-2172, -2204, -9523, 9479, 8586, -8592},
+                                          {2000, 2002, -13113, 13022, 9495, -9461},
+                                          {10891, -10895, 2082, 2089, -9586, 9544}};
+    static const int32_t scales[5] = {1, 30, 1000, 1 << 12, 1 << 14};
+    test_rng_t rng;
+    test_rng_seed(&rng, 4417);
+    const big_t shift = big_of((int64_t)1 << 34); /* 2^68 = shift^2 */
+    const int64_t r_max = ((int64_t)1 << 17) - 1;
+    unsigned long checked = 0, bad = 0;
+    for (unsigned n = 0; n < 64u; n++) {
+        int32_t u[6];
+        for (unsigned k = 0; k < 6u; k++) {
+            int32_t s = scales[test_rng_u32(&rng) % 5u];
+            u[k] = (n < 4u) ? climbed[n][k] : test_rng_range(&rng, -s, s - 1);
+        }
+        big_t scaled = big_mul(big_mul(big_of(vor__incircle_narrow(u)), shift), shift);
+        big_t bound = big_mul(big_mul(big_of((int64_t)vor__incircle_point_bound(u)), shift), shift);
+        for (unsigned corner = 0; corner < 64u; corner++) {
+            int64_t d[6];
+            for (unsigned k = 0; k < 6u; k++) {
+                d[k] = ((int64_t)u[k] << 17) + (((corner >> k) & 1u) ? r_max : 0);
+            }
+            big_t error = big_add(big_incircle(d), scaled, true);
+            if (big_negative(error)) {
+                error = big_add(big_of(0), error, true);
+            }
+            bool over = big_negative(big_add(bound, error, true));
+            bad += over ? 1u : 0u;
+            CHECK(!over || bad > 3u, "point bound: u %d %d %d %d %d %d, corner %u: error above it",
+                  u[0], u[1], u[2], u[3], u[4], u[5], corner);
+            checked++;
+        }
+    }
+    test_printf("point bound: %lu rounding errors within it\n", checked);
+    CHECK(bad == 0u, "point bound: %lu of %lu errors above it", bad, checked);
+}
+
 /* Bit length of |a|: the least k with |a| < 2^k. */
 static unsigned big_bits(big_t a)
 {
-    if (a.d[15] & 0x8000u) {
+    if (big_negative(a)) {
         a = big_add(big_of(0), a, true);
     }
     for (unsigned i = 16; i-- > 0;) {
@@ -1097,21 +1169,15 @@ static void check_magnitudes(void)
                 p[k] = edge[n][k];
             }
         }
-        big_t dx[3], dy[3];
+        int64_t d[6];
         for (unsigned k = 0; k < 3u; k++) {
-            dx[k] = big_of((int64_t)p[k].x - p[3].x);
-            dy[k] = big_of((int64_t)p[k].y - p[3].y);
+            d[2u * k] = (int64_t)p[k].x - p[3].x;
+            d[(2u * k) + 1u] = (int64_t)p[k].y - p[3].y;
         }
         /* orient2d of p0, p1, p3: (p0 - p3) x (p1 - p3) */
-        big_t orient = big_add(big_mul(dx[0], dy[1]), big_mul(dy[0], dx[1]), true);
-        /* incircle of p0, p1, p2, p3: sum of lift(k) cross(k + 1, k + 2) */
-        big_t incircle = big_of(0);
-        for (unsigned k = 0; k < 3u; k++) {
-            unsigned u = (k + 1u) % 3u, v = (k + 2u) % 3u;
-            big_t lift = big_add(big_mul(dx[k], dx[k]), big_mul(dy[k], dy[k]), false);
-            big_t cross = big_add(big_mul(dx[u], dy[v]), big_mul(dy[u], dx[v]), true);
-            incircle = big_add(incircle, big_mul(lift, cross), false);
-        }
+        big_t orient = big_add(big_mul(big_of(d[0]), big_of(d[3])),
+                               big_mul(big_of(d[1]), big_of(d[2])), true);
+        big_t incircle = big_incircle(d);
         unsigned got_orient = vor__orient2d_bits(&p[0], &p[1], &p[3]);
         unsigned got_incircle = vor__incircle_bits(&p[0], &p[1], &p[2], &p[3]);
         if (got_orient != big_bits(orient) || got_incircle != big_bits(incircle)) {
@@ -1484,6 +1550,7 @@ void test_predicates(void)
     TEST_CASE("near_circles") check_near_circles();
     TEST_CASE("tier_edges") check_tier_edges();
     TEST_CASE("magnitudes") check_magnitudes();
+    TEST_CASE("point_bound") check_point_bound();
     TEST_CASE("closer_sos_reference") check_closer_sos_reference();
     TEST_CASE("wide_magnitudes") check_wide_magnitudes();
     TEST_CASE("closer_coincident") check_closer_coincident();
