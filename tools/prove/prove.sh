@@ -10,10 +10,13 @@
 # library's functions; and runs tools/prove/filter_error.c, which proves
 # the rounding filters' error bounds.
 #   tools/prove/prove.sh [HARNESS...]   (default: every harness)
+# Harnesses run PROVE_JOBS at a time (default: one a core); each is one
+# Frama-C process of one thread.
 # With harnesses named (make test's suite prove runs those that finish in
 # about a minute), the share of functions is printed but not required.
 # Ends with "N passed, M failed": one check per harness, and the share.
 set -eu
+self=$(cd "$(dirname "$0")" && pwd)/$(basename "$0")
 cd "$(dirname "$0")/../.."
 out=build/prove
 mkdir -p "$out"
@@ -73,23 +76,13 @@ sources_of() {
     esac
 }
 
-# The library's functions: every function defined in src/ or include/
-# (static and inline ones included), by name, from the symbols of each
-# source compiled with every function kept, in the configuration Frama-C
-# parses (32-bit limbs, M profile, no __OPTIMIZE__; VOR__COVERAGE turns the
-# forced inlining off, which would keep a function out of the symbols).
+# One harness: its report, its functions and its result (passed or
+# failed) in build/prove/NAME.*, the line that says so on the output.
+# One harness: its report, functions and result (passed or failed) in
+# build/prove/NAME.*, and the line that says so.
 functions=$out/functions.txt
-objects=$(mktemp -d)
-trap 'rm -rf "$objects"' EXIT
-grep '^src/' sources.txt | while read -r source; do
-    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -D__ARM_ARCH_PROFILE=77 -DVOR__COVERAGE -Iinclude -Isrc \
-        -fkeep-static-functions -fkeep-inline-functions -c "$source" \
-        -o "$objects/$(basename "$source" .c).o"
-done
-nm "$objects"/*.o | awk '$2 == "T" || $2 == "t" { print $3 }' | sort -u >"$functions"
-: >"$out/analysed.txt"
-
-for name in $harnesses; do
+prove_one() {
+    name=$1
     report=$out/$name.txt
     start=$(date +%s)
     # shellcheck disable=SC2046,SC2086
@@ -98,9 +91,8 @@ for name in $harnesses; do
         "tools/prove/$name.c" $(sources_of "$name") >"$report" 2>&1; then
         cat "$report"
         echo "prove: $name: frama-c failed ($report)" >&2
-        status=1
-        failed=$((failed + 1))
-        continue
+        echo failed >"$out/$name.result"
+        return
     fi
     seconds=$(($(date +%s) - start))
     # the functions EVA analysed (it prints each one's final values);
@@ -113,7 +105,6 @@ for name in $harnesses; do
             echo "${f%_[0-9]*}"
         fi
     done | sort -u >"$out/$name.functions"
-    sort -u "$out/analysed.txt" "$out/$name.functions" -o "$out/analysed.txt"
     alarms=$(grep -c '^\[eva:alarm\]' "$report" || true)
     # the summary says "No errors or warnings" only when there are none;
     # every property reached must be proven (a harness that reaches no
@@ -127,11 +118,45 @@ for name in $harnesses; do
         # warnings other than alarms, with the line that says what
         awk '/Warning/ && !/eva:alarm/ { print; getline; print }' "$report" >&2
         echo "prove: $name: not proven: $alarms alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)" >&2
+        echo failed >"$out/$name.result"
+    else
+        echo passed >"$out/$name.result"
+        echo "prove: $name: 0 alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)"
+    fi
+}
+
+if [ "${1:-}" = "--one" ]; then
+    prove_one "$2"
+    exit 0
+fi
+
+# The library's functions: every function defined in src/ or include/
+# (static and inline ones included), by name, from the symbols of each
+# source compiled with every function kept, in the configuration Frama-C
+# parses (32-bit limbs, M profile, no __OPTIMIZE__; VOR__COVERAGE turns the
+# forced inlining off, which would keep a function out of the symbols).
+objects=$(mktemp -d)
+trap 'rm -rf "$objects"' EXIT
+grep '^src/' sources.txt | while read -r source; do
+    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -D__ARM_ARCH_PROFILE=77 -DVOR__COVERAGE -Iinclude -Isrc \
+        -fkeep-static-functions -fkeep-inline-functions -c "$source" \
+        -o "$objects/$(basename "$source" .c).o"
+done
+nm "$objects"/*.o | awk '$2 == "T" || $2 == "t" { print $3 }' | sort -u >"$functions"
+
+# shellcheck disable=SC2086
+rm -f $(for name in $harnesses; do echo "$out/$name.result"; done)
+printf '%s\n' $harnesses | xargs -P "${PROVE_JOBS:-$(nproc)}" -I '{}' sh "$self" --one '{}'
+: >"$out/analysed.txt"
+for name in $harnesses; do
+    if [ "$(cat "$out/$name.result" 2>/dev/null)" = passed ]; then
+        passed=$((passed + 1))
+    else
         status=1
         failed=$((failed + 1))
-    else
-        passed=$((passed + 1))
-        echo "prove: $name: 0 alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)"
+    fi
+    if [ -f "$out/$name.functions" ]; then
+        sort -u "$out/analysed.txt" "$out/$name.functions" -o "$out/analysed.txt"
     fi
 done
 
