@@ -233,17 +233,19 @@ coverage() {
 }
 check coverage coverage
 
-# examples/room on the host and on every emulated target: a navigation
-# mesh from walls as constraints, checked against the floor plan (the
-# shoelace area, Euler's triangle count, even-odd point location, a way
-# through the doors). Its checks add up over the ports.
-room() {
-    local passed=0 failed=0 port exe out status counts
+# Builds and runs examples/NAME (make target example-NAME) on the host
+# and on every emulated target, adding up the checks each run prints. A
+# hook, if named, runs before each port ("HOOK before PORT") and after it
+# ("HOOK after PORT"), where its status counts as one more check (it
+# prints its own FAIL line).
+example_on_ports() {
+    local name=$1 hook=${2:-} passed=0 failed=0 port exe out status counts
     for port in host $targets; do
         exe=$([ "$port" = host ] || echo .elf)
-        out=$logs/room-$port.out
-        make -s -j"$jobs" PORT="$port" "build/$port/example-room$exe" >"$out" 2>&1 &&
-            make -s PORT="$port" run-example-room >>"$out" 2>&1
+        out=$logs/$name-$port.out
+        if [ -n "$hook" ]; then "$hook" before "$port"; fi
+        make -s -j"$jobs" PORT="$port" "build/$port/example-$name$exe" >"$out" 2>&1 &&
+            make -s PORT="$port" "run-example-$name" >>"$out" 2>&1
         status=$?
         sed -n "s/^FAIL /FAIL $port: /p" "$out"
         counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
@@ -253,11 +255,26 @@ room() {
             failed=$((failed + ${counts%% failed}))
         fi
         if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
-            echo "FAIL $port: examples/room exited with status $status ($out)"
+            echo "FAIL $port: examples/$name exited with status $status ($out)"
             failed=$((failed + 1))
+        fi
+        if [ -n "$hook" ]; then
+            if "$hook" after "$port"; then
+                passed=$((passed + 1))
+            else
+                failed=$((failed + 1))
+            fi
         fi
     done
     echo "$passed passed, $failed failed"
+}
+
+# examples/room on the host and on every emulated target: a navigation
+# mesh from walls as constraints, checked against the floor plan (the
+# shoelace area, Euler's triangle count, even-odd point location, a way
+# through the doors). Its checks add up over the ports.
+room() {
+    example_on_ports room
 }
 check room room
 
@@ -268,44 +285,22 @@ check room room
 # colours). Each target's frames must equal the host's byte for byte, and
 # the host's values are checked against the exact brute force of
 # tools/check_field.py (one row and column in 4, and the sensors).
-field() {
-    local passed=0 failed=0 port exe out status counts
-    for port in host $targets; do
-        exe=$([ "$port" = host ] || echo .elf)
-        out=$logs/field-$port.out
+field_frames() {
+    if [ "$1" = before ]; then
         rm -f build/field-quick.values build/field-quick.rgb565
-        make -s -j"$jobs" PORT="$port" "build/$port/example-field-quick$exe" >"$out" 2>&1 &&
-            make -s PORT="$port" run-example-field-quick >>"$out" 2>&1
-        status=$?
-        sed -n "s/^FAIL /FAIL $port: /p" "$out"
-        counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
-        if [ -n "$counts" ]; then
-            passed=$((passed + ${counts%% passed*}))
-            counts=${counts#*, }
-            failed=$((failed + ${counts%% failed}))
-        fi
-        if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
-            echo "FAIL $port: examples/field exited with status $status ($out)"
-            failed=$((failed + 1))
-        fi
-        if [ "$port" = host ]; then
-            cp build/field-quick.values "$logs/field-host.values" 2>/dev/null
-            cp build/field-quick.rgb565 "$logs/field-host.rgb565" 2>/dev/null
-            if python3 tools/check_field.py --every 4 build/field-quick; then
-                passed=$((passed + 1))
-            else
-                echo "FAIL host: tools/check_field.py found values unlike the brute force"
-                failed=$((failed + 1))
-            fi
-        elif cmp -s build/field-quick.values "$logs/field-host.values" &&
-            cmp -s build/field-quick.rgb565 "$logs/field-host.rgb565"; then
-            passed=$((passed + 1))
-        else
-            echo "FAIL $port: the field's frames differ from the host's"
-            failed=$((failed + 1))
-        fi
-    done
-    echo "$passed passed, $failed failed"
+    elif [ "$2" = host ]; then
+        cp build/field-quick.values "$logs/field-host.values" 2>/dev/null
+        cp build/field-quick.rgb565 "$logs/field-host.rgb565" 2>/dev/null
+        python3 tools/check_field.py --every 4 build/field-quick ||
+            { echo "FAIL host: tools/check_field.py found values unlike the brute force" && false; }
+    else
+        { cmp -s build/field-quick.values "$logs/field-host.values" &&
+            cmp -s build/field-quick.rgb565 "$logs/field-host.rgb565"; } ||
+            { echo "FAIL $2: the field's frames differ from the host's" && false; }
+    fi
+}
+field() {
+    example_on_ports field-quick field_frames
 }
 check field field
 

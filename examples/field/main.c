@@ -412,51 +412,23 @@ static void render_linear(void)
 
 /* ---- the sensors as text for the host: build/field.sensors */
 
-static char text[4096];
-static uint32_t text_used;
-
-static void put_text(const char *s)
-{
-    for (; *s != '\0' && text_used < sizeof text; s++) {
-        text[text_used++] = *s;
-    }
-}
-
-static void put_int(int32_t value)
-{
-    char digits[13];
-    uint32_t n = sizeof digits, magnitude = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
-    digits[--n] = '\0';
-    do {
-        digits[--n] = (char)('0' + (int)(magnitude % 10u));
-        magnitude /= 10u;
-    } while (magnitude != 0u);
-    if (value < 0) {
-        digits[--n] = '-';
-    }
-    put_text(" ");
-    put_text(digits + n);
-}
-
 static void write_sensors(void)
 {
-    text_used = 0;
-    put_text("# examples/field: frame OX OY SX SY W H, the outside value, s X Y VALUE\nframe");
-    put_int(0), put_int(0), put_int(FIELD_STEP), put_int(FIELD_STEP);
-    put_int((int32_t)FRAME_W), put_int((int32_t)FRAME_H);
-    put_text("\noutside");
-    put_int(OUTSIDE);
+    static example_file_t out;
+    example_file_open(&out, FIELD_OUT ".sensors");
+    example_file_text(&out, "# examples/field: frame OX OY SX SY W H, the outside value, s X Y VALUE\nframe");
+    example_file_int(&out, 0), example_file_int(&out, 0);
+    example_file_int(&out, FIELD_STEP), example_file_int(&out, FIELD_STEP);
+    example_file_int(&out, (int32_t)FRAME_W), example_file_int(&out, (int32_t)FRAME_H);
+    example_file_text(&out, "\noutside");
+    example_file_int(&out, OUTSIDE);
     for (uint32_t k = 0; k < SENSORS; k++) {
-        put_text("\ns");
-        put_int(sensor[k].x), put_int(sensor[k].y), put_int(reading[k]);
+        example_file_text(&out, "\ns");
+        example_file_int(&out, sensor[k].x), example_file_int(&out, sensor[k].y);
+        example_file_int(&out, reading[k]);
     }
-    put_text("\n");
-    example_check(text_used < sizeof text, "the sensor list fits its buffer");
-    int file = vor_port_file_open(FIELD_OUT ".sensors");
-    if (file >= 0) {
-        (void)vor_port_file_write(file, text, text_used);
-        (void)vor_port_file_close(file);
-    }
+    example_file_text(&out, "\n");
+    example_file_close(&out);
 }
 
 int main(void)
