@@ -256,6 +256,20 @@ static int check_values(void *user, uint32_t first_row, uint32_t rows, const voi
     return 0;
 }
 
+/* A VALUE frame's output: 16-row bands of value_band to flush(user). */
+static vor_field_output_t value_output(vor_raster_flush_t flush, void *user)
+{
+    vor_field_output_t out = {0};
+    out.kind = VOR_FIELD_VALUE;
+    out.band = value_band;
+    out.band_bytes = sizeof value_band;
+    out.band_rows = BAND_ROWS;
+    out.flush = flush;
+    out.user = user;
+    out.outside = OUTSIDE;
+    return out;
+}
+
 /* Each RGB565 band: the VALUE frame of its rows, rendered for the checks
  * (check_values), then the band to the host file. */
 static int send_colours(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
@@ -266,14 +280,7 @@ static int send_colours(void *user, uint32_t first_row, uint32_t rows, const voi
     s->first_row = first_row;
     vor_raster_frame_t these = {0, (int32_t)first_row * FIELD_STEP, FIELD_STEP, FIELD_STEP,
                                 FRAME_W, rows};
-    vor_field_output_t out = {0};
-    out.kind = VOR_FIELD_VALUE;
-    out.band = value_band;
-    out.band_bytes = sizeof value_band;
-    out.band_rows = BAND_ROWS;
-    out.flush = check_values;
-    out.user = s;
-    out.outside = OUTSIDE;
+    vor_field_output_t out = value_output(check_values, s);
     uint64_t checks = s->check_spent, value_start = vor_port_counter();
     int err = vor_field_raster(&diagram, reading, &these, &out, NULL, value_scratch,
                                sizeof value_scratch);
@@ -388,14 +395,7 @@ static void render_linear(void)
 {
     linear_run_t run = {0, 0};
     vor_raster_frame_t frame = {0, 0, FIELD_STEP, FIELD_STEP, FRAME_W, FRAME_H};
-    vor_field_output_t out = {0};
-    out.kind = VOR_FIELD_VALUE;
-    out.band = value_band;
-    out.band_bytes = sizeof value_band;
-    out.band_rows = BAND_ROWS;
-    out.flush = check_linear;
-    out.user = &run;
-    out.outside = OUTSIDE;
+    vor_field_output_t out = value_output(check_linear, &run);
     int err = vor_field_raster(&diagram, linear, &frame, &out, NULL, scratch, sizeof scratch);
     example_check(err == VOR_OK && run.rows == FRAME_H,
                   "(a) the linear field's frame renders");
