@@ -82,12 +82,14 @@ patterns_for() {
     echo "$out"
 }
 
-# record NAME LOG STATUS: add the suite's closing counts to the totals.
+# record NAME LOG STATUS BEGAN: add the suite's closing counts to the
+# totals; its line says how long it took since BEGAN ($SECONDS).
 record() {
-    local name=$1 log=$2 status=$3 counts passed failed cases
+    local name=$1 log=$2 status=$3 counts passed failed cases took
+    took="[$((SECONDS - $4)) s]"
     counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
     if [ -z "$counts" ]; then
-        echo "$name: did not run to the end (exit $status); last lines of $log:"
+        echo "$name: did not run to the end (exit $status) $took; last lines of $log:"
         tail -n 15 "$log" | sed 's/^/    /'
         total_failed=$((total_failed + 1))
         broken+=("$name")
@@ -106,9 +108,9 @@ record() {
         set -- ${cases//,/}
         cases_passed=$((cases_passed + $2))
         cases_failed=$((cases_failed + $4))
-        echo "$name: $passed passed, $failed failed ($cases)"
+        echo "$name: $passed passed, $failed failed ($cases) $took"
     else
-        echo "$name: $passed passed, $failed failed"
+        echo "$name: $passed passed, $failed failed $took"
     fi
     total_passed=$((total_passed + passed))
     total_failed=$((total_failed + failed))
@@ -119,11 +121,11 @@ record() {
 # (a program, or a function of this file) writes to the suite's log, whose
 # last "N passed, N failed" line is added to the totals.
 check() {
-    local name=$1 log="$logs/$1.log"
+    local name=$1 log="$logs/$1.log" began=$SECONDS
     shift
     if wanted "$name"; then
         "$@" >"$log" 2>&1
-        record "$name" "$log" $?
+        record "$name" "$log" $? "$began"
     else
         skip "$name"
     fi
@@ -144,7 +146,7 @@ one() {
 # config-tests: the configuration contract), all its cases or those ONLY
 # selects.
 suite() {
-    local name=$1 program=$2 log="$logs/$1.log" status filter= pattern
+    local name=$1 program=$2 log="$logs/$1.log" status filter= pattern began=$SECONDS
     shift 2
     if ! wanted "$name"; then
         filter=$(patterns_for "$program")
@@ -165,7 +167,7 @@ suite() {
         grep -qx "note: ONLY pattern '$pattern' matches no case here" "$log" ||
             used_patterns="$used_patterns $pattern "
     done
-    record "$name" "$log" "$status"
+    record "$name" "$log" "$status" "$began"
 }
 
 suite host tests PORT=host
@@ -595,5 +597,6 @@ if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"
 fi
 echo "cases: $cases_passed passed, $cases_failed failed"
+echo "took: $((SECONDS / 60)) min $((SECONDS % 60)) s"
 echo "total: $total_passed passed, $total_failed failed"
 [ "$total_failed" = 0 ]
