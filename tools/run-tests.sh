@@ -144,21 +144,34 @@ one() {
 # suite NAME PROGRAM MAKE-ARGS...: build and run a test program of one port
 # (PROGRAM tests: the test suite; fault-tests: the fault injection test;
 # config-tests: the configuration contract), all its cases or those ONLY
-# selects.
+# selects. With LANE=1 the program is built here and queued for the lane
+# (below), which runs it beside the suites that follow.
+queued=()
 suite() {
-    local name=$1 program=$2 log="$logs/$1.log" status filter= pattern began=$SECONDS
+    local name=$1 program=$2 log="$logs/$1.log" status filter= began=$SECONDS
     shift 2
     if ! wanted "$name"; then
         filter=$(patterns_for "$program")
         [ -n "$filter" ] || { skip "$name"; return; }
     fi
+    rm -f "$log.status"
     if make -s -j"$jobs" "$@" ONLY="$filter" "$program" >"$log" 2>&1; then
+        if [ "${LANE:-0}" = 1 ]; then
+            queued+=("$name|$filter|$program|$*")
+            return
+        fi
         make -s "$@" ONLY="$filter" "run-$program" >>"$log" 2>&1
         status=$?
     else
         status=$?
         echo "(build failed)" >>"$log"
     fi
+    suite_record "$name" "$filter" "$status" "$began"
+}
+
+# suite_record NAME FILTER STATUS BEGAN: a test program's run recorded.
+suite_record() {
+    local name=$1 filter=$2 log="$logs/$1.log" pattern
     if [ -n "$filter" ] && grep -q '^no case matches' "$log"; then
         skip "$name"
         return
@@ -167,8 +180,41 @@ suite() {
         grep -qx "note: ONLY pattern '$pattern' matches no case here" "$log" ||
             used_patterns="$used_patterns $pattern "
     done
-    record "$name" "$log" "$status" "$began"
+    record "$name" "$log" "$3" "$4"
 }
+
+# The lane: the queued programs run one after another in the background
+# (each under QEMU, one core), each writing its exit status and run time
+# beside its log; lane_record waits for it and records them in order.
+lane_run() {
+    local entry name filter program args began
+    for entry in "${queued[@]}"; do
+        IFS='|' read -r name filter program args <<<"$entry"
+        began=$SECONDS
+        # shellcheck disable=SC2086
+        make -s $args ONLY="$filter" "run-$program" >>"$logs/$name.log" 2>&1
+        echo "$? $((SECONDS - began))" >"$logs/$name.log.status"
+    done
+}
+lane_record() {
+    local entry name filter program args status took
+    wait "$lane"
+    for entry in "${queued[@]}"; do
+        IFS='|' read -r name filter program args <<<"$entry"
+        read -r status took <"$logs/$name.log.status" 2>/dev/null || { status=1 took=0; }
+        suite_record "$name" "$filter" "$status" "$((SECONDS - took))"
+    done
+}
+
+# The emulated targets' test programs first: built here and run in the
+# lane while the host's suites and the rest use the other core.
+for target in $targets; do
+    LANE=1 suite "$target" tests PORT="$target"
+    LANE=1 suite "$target-faults" fault-tests PORT="$target"
+    LANE=1 suite "$target-config" config-tests PORT="$target"
+done
+lane_run &
+lane=$!
 
 suite host tests PORT=host
 suite host-sanitize tests PORT=host SANITIZE=1
@@ -221,11 +267,6 @@ fuzz() {
 }
 check fuzz fuzz
 
-for target in $targets; do
-    suite "$target" tests PORT="$target"
-    suite "$target-faults" fault-tests PORT="$target"
-    suite "$target-config" config-tests PORT="$target"
-done
 
 # examples/coverage on the emulated Cortex-M3: Lloyd coverage control with
 # vor_cell_centroid and vor_move, checked against brute-force samples.
@@ -584,6 +625,7 @@ docs() {
 }
 check docs docs
 
+lane_record
 for pattern in ${cases_only//,/ }; do
     if [[ "$used_patterns" != *" $pattern "* ]]; then
         echo "ONLY: '$pattern' names no suite and selects no case"
