@@ -7,8 +7,9 @@
  * cocircular square's centre (strictly inside the hull, where the
  * triangulation is not unique), a point off it inside the square (both
  * walk the conflict region's boundary), one on a hull edge, one at a site,
- * one outside the square that the far site brings inside the hull (a
- * natural neighbour with huge circumcentres), and one outside every hull;
+ * one outside the square that the far site brings inside the hull (the
+ * far site a natural neighbour: weights of 7 32-bit words), and one
+ * outside both of those hulls (on the three collinear sites' segment);
  * each with the scratch VOR_SIBSON_SCRATCH_BYTES gives (aligned, and 1
  * and 3 bytes past a limb's alignment) and with 64 bytes, too small; the
  * values reach INT32_MIN and INT32_MAX. Then the square's centre from
