@@ -158,8 +158,9 @@ for name in $harnesses; do
 done
 
 # The two filters of src/predicates.c that round their entries to 15 bits
-# (32-bit limbs): their rounding errors proven below the code's bounds by
-# exact interval arithmetic (tools/prove/filter_error.c), a second or so.
+# (32-bit limbs): their rounding errors proven below the code's three
+# bounds by exact interval arithmetic (tools/prove/filter_error.c), a
+# second or so.
 if "${CC:-cc}" -std=gnu99 -O2 -Wall -Wextra -Werror tools/prove/filter_error.c -lm \
     -o "$out/filter_error" && "$out/filter_error" >"$out/filter_error.txt"; then
     passed=$((passed + 1))
