@@ -14,12 +14,17 @@
  * back), onto itself, of a hidden site (it comes out) and of a weight
  * alone. The nearest site to any point of the int32 plane from each
  * site's id as hint (hidden ones included), from any other id and with
- * no hint, on the diagram and on the one left by the removal of the
- * vertex with five neighbours.
+ * no hint: on the diagram, on the one left by the removal of the vertex
+ * with five neighbours, on two vertices (no triangle of area: every
+ * vertex looked at) and on one.
  * No -eva-slevel (prove.sh, as queries.c and nearest_k.c): the updates
- * are concrete, so EVA follows them exactly, and the walk of the nearest
- * query with any point is merged at its loops rather than split into
- * a state per path (which did not end in 20 minutes).
+ * are concrete, so EVA follows them exactly, and the nearest walk with
+ * any point merges its states at its loops instead of keeping one per
+ * path (with a slevel that reaches no loop, as power.c's, a run on a
+ * concrete diagram had not ended after 20 minutes). The walk splits its
+ * states by the vertex it walks from (`split best`, src/power.c), so
+ * that the fans of two vertices are never merged into one (whose slots
+ * EVA then widens past the triangles).
  */
 #include <__fc_builtin.h>
 
