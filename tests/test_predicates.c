@@ -1079,7 +1079,7 @@ static void check_point_bound(void)
         for (unsigned corner = 0; corner < 64u; corner++) {
             int64_t d[6];
             for (unsigned k = 0; k < 6u; k++) {
-                d[k] = ((int64_t)u[k] << 17) + (((corner >> k) & 1u) ? r_max : 0);
+                d[k] = ((int64_t)u[k] * (r_max + 1)) + (((corner >> k) & 1u) ? r_max : 0);
             }
             big_t error = big_add(big_incircle(d), scaled, true);
             if (big_negative(error)) {
