@@ -145,6 +145,26 @@ static inline void vor__tally_restore(vor_t *d, const vor__tally_t *from)
     (void)from;
 }
 
+/* The orientation of sites a, b (distinct points) and a query point q
+ * under the perturbation, q taking an index before every site's: q moves
+ * to (q.x + e^4, q.y + e) for an infinitesimal e, far more than any site
+ * moves, so a tie is decided by q's move alone,
+ *     orient(a, b, q~) = orient(a, b, q) + (b.x - a.x) e - (b.y - a.y) e^4,
+ * the sign of b.x - a.x, then of a.y - b.y. Never 0 for distinct a and b:
+ * q~ lies on no line through two sites (vor_locate). Uncounted. */
+static inline int vor__orient_query(const vor_point_t *a, const vor_point_t *b,
+                                    const vor_point_t *q)
+{
+    int sign = vor__orient2d_exact(a, b, q, NULL);
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)b->x - a->x);
+    }
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)a->y - b->y);
+    }
+    return sign;
+}
+
 /* ------------------------------------------------------------------ */
 /* The true output                                                     */
 
