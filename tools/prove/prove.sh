@@ -21,7 +21,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k geometry cells centroid raster field large cdt power power_cells}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid raster field large cdt power power_cells}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
@@ -56,7 +56,7 @@ options_of() {
     # rounds) run up to 7 turns on these diagrams; EVA widens the slot
     # they read next after 3 merged turns (to an interval past the
     # triangles), after 12 it has met every slot of the fan
-    queries | nearest_k) echo "-eva-split-return full -eva-widening-delay 12" ;;
+    queries | nearest_k | locate) echo "-eva-split-return full -eva-widening-delay 12" ;;
     # -eva-split-return full: a call's states stay apart by its return
     # value, so a caller's `if (call() != VOR_OK)` leaves only the states
     # where the call succeeded (vor_init's failures leave *d unwritten).
