@@ -77,6 +77,10 @@
  *       vor_remove(&d, id);                           // id freed for reuse
  *       vor_nearest(&d, q, VOR_NO_HINT, &id);         // exact, ties to smaller id
  *       vor_nearest_k(&d, q, hint, k, ids, &found);   // k nearest, in order
+ *       vor_locate(&d, q, hint, tri);                 // the triangle holding q
+ *                                                     // (or VOR_ERR_OUTSIDE)
+ *       vor_within(&d, q, r2, hint, ids, cap, &m);    // sites within r2, by id
+ *       vor_triangles_export(&d, t, twins, cap, &m);  // delaunator's flat arrays
  *
  *       vor_tracker_t robot;                          // a moving query point:
  *       vor_tracker_begin(&robot, &d);                // caches its current cell
