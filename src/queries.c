@@ -513,9 +513,9 @@ static uint32_t disc_walk(const vor_t *d, const vor_point_t *q, uint64_t r2, uin
 static void sift_down(uint32_t *a, uint32_t root_in, uint32_t n)
 {
     uint32_t root = root_in;
-    while ((2u * root) + 1u < n) {
+    while (((2u * root) + 1u) < n) {
         uint32_t child = (2u * root) + 1u;
-        child += ((child + 1u < n) && (a[child + 1u] > a[child])) ? 1u : 0u;
+        child += (((child + 1u) < n) && (a[child + 1u] > a[child])) ? 1u : 0u;
         if (a[root] >= a[child]) {
             break;
         }
@@ -575,19 +575,27 @@ int vor_within(const vor_t *d, vor_point_t q, uint64_t r2, uint32_t hint, uint32
 /* ------------------------------------------------------------------ */
 /* Flat export (vor_triangles_export)                                  */
 
+/* The triangles vor_triangles_next lists: the reported ones among the
+ * used slots, in increasing slot order. */
+static uint32_t reported_count(const vor_t *d)
+{
+    uint32_t n = 0;
+    if (d->vertex_count < 2u) {
+        return 0; /* no triangle slots: a one-site arena may have none */
+    }
+    uint32_t end = vor__used_slots_end(d);
+    for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
+        n += vor__reported(d->sites, &d->triangles[s]) ? 1u : 0u;
+    }
+    return n;
+}
+
 int vor_triangles_count(const vor_t *d, uint32_t *count)
 {
     if ((d == NULL) || (count == NULL)) {
         return VOR_ERR_ARG;
     }
-    vor_triangle_iter_t it;
-    uint32_t ids[3];
-    uint32_t n = 0;
-    (void)vor_triangles_begin(&it, d);
-    while (vor_triangles_next(&it, ids) != 0) {
-        n++;
-    }
-    *count = n;
+    *count = reported_count(d);
     return VOR_OK;
 }
 
@@ -604,8 +612,11 @@ static uint32_t triangle_of_slot(const uint32_t *keys, uint32_t n, uint32_t slot
         if (key == slot) {
             return middle;
         }
-        low = (key < slot) ? (middle + 1u) : low;
-        high = (key < slot) ? high : middle;
+        if (key < slot) {
+            low = middle + 1u;
+        } else {
+            high = middle;
+        }
     }
     return VOR__NONE;
 }
@@ -626,8 +637,7 @@ int vor_triangles_export(const vor_t *d, uint32_t *triangles, uint32_t *halfedge
     if ((d == NULL) || (count == NULL) || ((triangles == NULL) && (capacity > 0u))) {
         return VOR_ERR_ARG;
     }
-    uint32_t n = 0;
-    (void)vor_triangles_count(d, &n);
+    uint32_t n = reported_count(d);
     if (n > capacity) {
         *count = n;
         return VOR_ERR_BUFFER;
@@ -635,7 +645,7 @@ int vor_triangles_export(const vor_t *d, uint32_t *triangles, uint32_t *halfedge
     const vor__tri_t *tri = d->triangles;
     uint32_t end = vor__used_slots_end(d);
     uint32_t t = 0;
-    for (uint32_t s = vor__next_used_slot(d, 0); (s < end) && (t < n);
+    for (uint32_t s = (n > 0u) ? vor__next_used_slot(d, 0) : end; (s < end) && (t < n);
          s = vor__next_used_slot(d, s + 1u)) {
         if (vor__reported(d->sites, &tri[s])) {
             triangles[3u * t] = s;

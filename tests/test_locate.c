@@ -492,6 +492,20 @@ static void errors(void)
           "within r2 = 0 at a site");
     CHECK(vor_triangles_export(&d, NULL, NULL, 0, &count) == VOR_ERR_BUFFER && count == 1u,
           "export: the size with no arrays");
+    /* a one-site arena has no triangle slots at all: nothing read there */
+    static uint8_t tiny[VOR_ARENA_BYTES(1)] __attribute__((aligned(8)));
+    vor_t one;
+    vor_point_t p = {3, -4};
+    CHECK(vor_init(&one, tiny, sizeof tiny, 1) == VOR_OK && vor_insert(&one, p, NULL) == VOR_OK,
+          "one-site arena");
+    count = 77u;
+    out[0] = 5u;
+    CHECK(vor_triangles_count(&one, &count) == VOR_OK && count == 0u &&
+              vor_triangles_export(&one, out, out, 1, &count) == VOR_OK && count == 0u && out[0] == 5u &&
+              vor_locate(&one, p, 0, ids) == VOR_ERR_OUTSIDE &&
+              vor_within(&one, q, 25, VOR_NO_HINT, out, 1, &count) == VOR_OK && count == 1u && out[0] == 0u &&
+              vor_within(&one, q, 24, 0, out, 1, &count) == VOR_OK && count == 0u,
+          "one-site arena: no triangle, within 5 of the origin");
 }
 
 void test_locate(void)
