@@ -324,15 +324,18 @@ static vor_index_t locate_from(const vor_t *d, const vor_point_t *q, vor_index_t
     bool turning = true;
     for (uint32_t left = d->vertex_count + 1u; turning && (left > 0u); left--) {
         const vor__tri_t *t = &tri[star.slot];
-        /* the corner (c, x, y) holds q~: left of c -> x, right of c -> y */
-        if (vor__reported(s, t) && (vor__orient_query(&s[c], &s[star.x], q) > 0) &&
+        /* the corner (c, x, y) holds q~: left of c -> x, right of c -> y.
+         * (x and y finite is part of reported; said for the analysers) */
+        if ((star.x != VOR__INFINITE) && (star.y != VOR__INFINITE) && vor__reported(s, t) &&
+            (vor__orient_query(&s[c], &s[star.x], q) > 0) &&
             (vor__orient_query(&s[star.y], &s[c], q) > 0)) {
             if (vor__orient_query(&s[star.x], &s[star.y], q) > 0) {
                 return star.slot;
             }
             r = star.x;
             l = star.y;
-            slot = t->n[vor__vertex_index(t, c)];
+            /* across x - y: opposite c, found as vor__star_look finds it */
+            slot = t->n[(star.v[1] == c) ? 1u : (star.v[2] == c) ? 2u : 0u];
             break;
         }
         turning = vor__star_advance(d, c, &star);
@@ -346,8 +349,11 @@ static vor_index_t locate_from(const vor_t *d, const vor_point_t *q, vor_index_t
         const vor__tri_t *t = &tri[slot];
         vor_index_t v[3];
         vor__vertices(t, v);
-        unsigned k = (v[0] != r && v[0] != l) ? 0u : (v[1] != r && v[1] != l) ? 1u : 2u;
+        unsigned k = ((v[0] != r) && (v[0] != l)) ? 0u : ((v[1] != r) && (v[1] != l)) ? 1u : 2u;
         vor_index_t w = v[k];
+        if (w == VOR__INFINITE) {
+            break; /* never: t is reported (said for the analysers) */
+        }
         if ((vor__orient_query(&s[r], &s[w], q) > 0) && (vor__orient_query(&s[w], &s[l], q) > 0)) {
             return slot;
         }
@@ -513,16 +519,20 @@ static uint32_t disc_walk(const vor_t *d, const vor_point_t *q, uint64_t r2, uin
 static void sift_down(uint32_t *a, uint32_t root_in, uint32_t n)
 {
     uint32_t root = root_in;
-    while (((2u * root) + 1u) < n) {
-        uint32_t child = (2u * root) + 1u;
-        child += (((child + 1u) < n) && (a[child + 1u] > a[child])) ? 1u : 0u;
-        if (a[root] >= a[child]) {
+    uint32_t child = (2u * root) + 1u;
+    while (child < n) {
+        uint32_t pick = child;
+        if (((child + 1u) < n) && (a[child + 1u] > a[child])) {
+            pick = child + 1u;
+        }
+        if (a[root] >= a[pick]) {
             break;
         }
         uint32_t top = a[root];
-        a[root] = a[child];
-        a[child] = top;
-        root = child;
+        a[root] = a[pick];
+        a[pick] = top;
+        root = pick;
+        child = (2u * root) + 1u;
     }
 }
 
