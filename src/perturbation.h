@@ -173,13 +173,22 @@ static inline int vor__orient_query(const vor_point_t *a, const vor_point_t *b,
  * iterators report"): a finite triangle is reported exactly when its
  * three sites are not collinear (unperturbed). A flat triangle's perturbed
  * circumcircle is a half-plane in the limit, empty only on a side of a
- * hull line, so dropping those leaves a triangulation of the hull. */
+ * hull line, so dropping those leaves a triangulation of the hull.
+ * Of a triangle's decoded vertices v. */
+static inline bool vor__reported_vertices(const vor_point_t *s, const vor_index_t v[3])
+{
+    return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
+           vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
+}
+
+/* The same of the triangle t (its vertices decoded here). A caller that
+ * goes on to use the vertices decodes them and asks
+ * vor__reported_vertices, so that an analyser sees them finite. */
 static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
-    return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
-           vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
+    return vor__reported_vertices(s, v);
 }
 
 /* For collinear a, m, b: does m lie strictly inside the segment ab? Then

@@ -343,17 +343,16 @@ static vor_index_t locate_from(const vor_t *d, const vor_point_t *q, vor_index_t
     if (slot == VOR__NONE) {
         return VOR__NONE; /* no corner holds it: outside the hull */
     }
-    for (uint32_t left = vor__triangle_count(d->vertex_count);
-         (left > 0u) && vor__reported(s, &tri[slot]); left--) {
+    for (uint32_t left = vor__triangle_count(d->vertex_count); left > 0u; left--) {
         /* (l, r, w) counterclockwise, entered across l -> r */
         const vor__tri_t *t = &tri[slot];
         vor_index_t v[3];
         vor__vertices(t, v);
+        if (!vor__reported_vertices(s, v)) {
+            break; /* across a hull edge: q~ is outside */
+        }
         unsigned k = ((v[0] != r) && (v[0] != l)) ? 0u : ((v[1] != r) && (v[1] != l)) ? 1u : 2u;
         vor_index_t w = v[k];
-        if (w == VOR__INFINITE) {
-            break; /* never: t is reported (said for the analysers) */
-        }
         if ((vor__orient_query(&s[r], &s[w], q) > 0) && (vor__orient_query(&s[w], &s[l], q) > 0)) {
             return slot;
         }
@@ -365,7 +364,7 @@ static vor_index_t locate_from(const vor_t *d, const vor_point_t *q, vor_index_t
         r = w_left ? r : w;
         slot = t->n[(out == 3u) ? 0u : out];
     }
-    return VOR__NONE; /* across a hull edge: outside (or a broken mesh) */
+    return VOR__NONE; /* outside (or, on a broken mesh only, out of steps) */
 }
 
 int vor_locate(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t ids[3])
@@ -668,8 +667,8 @@ int vor_triangles_export(const vor_t *d, uint32_t *triangles, uint32_t *halfedge
             vor_index_t across = at->n[vor__prev(k)];
             uint32_t j = triangle_of_slot(triangles, n, across);
             unsigned back = vor__vertex_index(&tri[across], vor__vertex(at, vor__next(k)));
-            halfedges[(3u * i) + k] =
-                ((j == VOR__NONE) || (back == 3u)) ? VOR_HALFEDGE_NONE : ((3u * j) + back);
+            /* back < 3: the triangle across has the edge (a valid mesh) */
+            halfedges[(3u * i) + k] = (j == VOR__NONE) ? VOR_HALFEDGE_NONE : ((3u * j) + back);
         }
     }
     for (uint32_t i = 0; i < n; i++) {
