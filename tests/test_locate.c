@@ -243,6 +243,13 @@ static void check_diagram(const char *name, const vor_t *d, uint32_t n, test_rng
             (int32_t)(((int64_t)sites[v[0]].y + sites[v[1]].y + sites[v[2]].y) / 3)};
         check_locate(&r, d, triangles, c, VOR_NO_HINT);
     }
+    if (n > 0u) { /* the origin: the circle set's centre, where every site ties */
+        vor_point_t o = {0, 0};
+        uint64_t r2 = distance2(o, sites[0]);
+        check_locate(&r, d, triangles, o, VOR_NO_HINT);
+        check_within(&r, d, o, r2, VOR_NO_HINT);
+        check_within(&r, d, o, r2 - (r2 > 0u ? 1u : 0u), VOR_NO_HINT);
+    }
     int64_t wx = hx - lx + 2, wy = hy - ly + 2;
     for (unsigned k = 0; k < 120u; k++) {
         vor_point_t q;
