@@ -348,11 +348,12 @@ static vor_index_t locate_from(const vor_t *d, const vor_point_t *q, vor_index_t
         const vor__tri_t *t = &tri[slot];
         vor_index_t v[3];
         vor__vertices(t, v);
-        if (!vor__reported_vertices(s, v)) {
-            break; /* across a hull edge: q~ is outside */
-        }
         unsigned k = ((v[0] != r) && (v[0] != l)) ? 0u : ((v[1] != r) && (v[1] != l)) ? 1u : 2u;
         vor_index_t w = v[k];
+        /* (w finite is part of reported: said for the analysers) */
+        if (!vor__reported_vertices(s, v) || (w == VOR__INFINITE)) {
+            break; /* across a hull edge: q~ is outside */
+        }
         if ((vor__orient_query(&s[r], &s[w], q) > 0) && (vor__orient_query(&s[w], &s[l], q) > 0)) {
             return slot;
         }

@@ -32,8 +32,10 @@ static int queries(const vor_t *d)
     }
 
     r |= vor_locate(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_u32(), NULL);
+    /* (a capacity above 0: with NULL ids, refused before any walk, which
+     * from a hint anywhere could not tell a duplicate's id from a site's) */
     r |= vor_within(Frama_C_nondet_ptr((void *)d, NULL), any_point(), any_u64(), any_u32(), NULL,
-                    any_u32(), &count);
+                    Frama_C_unsigned_int_interval(1u, UINT32_MAX), &count);
     r |= vor_within(d, any_point(), any_u64(), any_u32(), list, 1u, NULL);
     /* from each hint */
     /*@ loop unroll N + 1; */
@@ -41,10 +43,11 @@ static int queries(const vor_t *d)
         r |= vor_locate(d, any_point(), id_or_any(h, N), ids);
     }
     /* from each hint, any capacity the list holds (below the sites:
-     * the counting walk first), and one holding every site */
+     * the counting walk first; NULL ids with capacity 0: the count
+     * alone), and one holding every site */
     /*@ loop unroll N + 1; */
     for (uint32_t h = 0; h <= N; h++) {
-        r |= vor_within(d, any_point(), any_u64(), id_or_any(h, N), list,
+        r |= vor_within(d, any_point(), any_u64(), id_or_any(h, N), Frama_C_nondet_ptr(list, NULL),
                         Frama_C_unsigned_int_interval(0u, N + 1u), &count);
         r |= vor_within(d, any_point(), any_u64(), id_or_any(h, N), list, N + 1u, &count);
     }
