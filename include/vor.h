@@ -1136,7 +1136,7 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
  *   VOR_ERR_ARG      d or ids NULL, a bad hint (as vor_nearest)
  *   VOR_ERR_EMPTY    the diagram has no sites
  *   VOR_ERR_OUTSIDE  q is outside the hull in the sense above; always
- *                    with fewer than 3 sites or all sites collinear
+ *                    with fewer than 3 distinct sites or all collinear
  *                    (there is no triangle)
  * On failure nothing is written.
  */
