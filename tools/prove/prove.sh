@@ -52,8 +52,8 @@ options_of() {
     # interpolate: as centroid (interpolate.c), the scratch at a fixed
     # address; not yet in the default list (tools/prove/interpolate.c)
     interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
-    # queries, nearest_k: loops over a site's fan (the walk, the k nearest's
-    # rounds) run up to 7 turns on these diagrams; EVA widens the slot
+    # queries, nearest_k, locate: loops over a site's fan (the walk, the k
+    # nearest's rounds, the disc's tree) run up to 7 turns on these diagrams; EVA widens the slot
     # they read next after 3 merged turns (to an interval past the
     # triangles), after 12 it has met every slot of the fan
     queries | nearest_k | locate) echo "-eva-split-return full -eva-widening-delay 12" ;;
