@@ -516,7 +516,7 @@ static uint32_t disc_walk(const vor_t *d, const vor_point_t *q, uint64_t r2, uin
 
 /* Moves a[root] down the max-heap a[0 .. n) to its place: each step at
  * least doubles root, so fewer than 32 steps. */
-static void sift_down(uint32_t *a, uint32_t root_in, uint32_t n)
+static void heap_sift(uint32_t *a, uint32_t root_in, uint32_t n)
 {
     uint32_t root = root_in;
     uint32_t child = (2u * root) + 1u;
@@ -538,16 +538,16 @@ static void sift_down(uint32_t *a, uint32_t root_in, uint32_t n)
 
 /* Heapsort of a[0 .. n), increasing: in place, O(n log n), no recursion
  * (the library has no libc). */
-static void sort_ids(uint32_t *a, uint32_t n)
+static void sort_increasing(uint32_t *a, uint32_t n)
 {
     for (uint32_t i = n / 2u; i > 0u; i--) {
-        sift_down(a, i - 1u, n);
+        heap_sift(a, i - 1u, n);
     }
     for (uint32_t end = n; end > 1u; end--) {
         uint32_t top = a[0];
         a[0] = a[end - 1u];
         a[end - 1u] = top;
-        sift_down(a, 0, end - 1u);
+        heap_sift(a, 0, end - 1u);
     }
 }
 
@@ -577,7 +577,7 @@ int vor_within(const vor_t *d, vor_point_t q, uint64_t r2, uint32_t hint, uint32
     if (room == 0u) {
         (void)disc_walk(d, &q, r2, best, tie, ids, capacity);
     }
-    sort_ids(ids, needed);
+    sort_increasing(ids, needed);
     *count = needed;
     return VOR_OK;
 }
