@@ -1281,11 +1281,15 @@ typedef struct {
 
 /* An empty stack over the whole scratch: 13 (max_cut + 4) indices, as
  * vor_cdt_attach laid it out. One stack for the flips and the domain's
- * flood, so both read its room from here. */
-static lawson_t lawson_begin(struct vor__cdt *c)
+ * flood, so both read its room from here (set field by field: a struct
+ * returned or assigned whole is a memcpy call at -O0). */
+static void lawson_begin(struct vor__cdt *c, lawson_t *w)
 {
-    lawson_t w = {c->scratch, 0, (13u * (c->max_cut + 4u)) / 2u, false, 0};
-    return w;
+    w->edges = c->scratch;
+    w->count = 0;
+    w->room = (13u * (c->max_cut + 4u)) / 2u;
+    w->lost = false;
+    w->flips = 0;
 }
 
 static void lawson_push(lawson_t *w, vor_index_t u, vor_index_t v)
@@ -1553,7 +1557,8 @@ int vor_unconstrain(vor_t *d, uint32_t a, uint32_t b)
     }
     c->domain = false;
     /* one constraint less on each piece; the freed edges are tested */
-    lawson_t w = lawson_begin(c);
+    lawson_t w;
+    lawson_begin(c, &w);
     from = (vor_index_t)a;
     for (uint32_t pieces = 0; (from != b) && (pieces < m->vertex_count); pieces++) {
         vor_index_t slot;
@@ -1659,7 +1664,8 @@ int vor_cdt_domain(vor_t *d)
     uint8_t *lv = c->levels;
     /* below two vertices the slots hold no triangle (stale contents) */
     uint32_t end = (m->vertex_count >= 2u) ? vor__used_slots_end(m) : 0u;
-    lawson_t w = lawson_begin(c);
+    lawson_t w;
+    lawson_begin(c, &w);
     for (uint32_t s = 0; s < end; s++) {
         lv[s] = LEVEL_UNKNOWN;
     }

@@ -1214,6 +1214,9 @@ int vor_power_nearest(const vor_power_t *pd, vor_point_t q, uint32_t hint, uint3
         uint32_t third = best;
         uint32_t next = best;
         tie = false;
+        /* (For Frama-C's EVA: one state per vertex walked from, so that
+         * its fan's slots are not merged with another's.) */
+        /*@ split best; */
         vor__fan_begin(&it, d, best);
         while (vor__fan_next(&it, &n, &third)) {
             int c = vor__power_closer_sign(&q, &d->sites[n], pd->weights[n], &d->sites[best],

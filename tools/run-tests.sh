@@ -82,12 +82,14 @@ patterns_for() {
     echo "$out"
 }
 
-# record NAME LOG STATUS: add the suite's closing counts to the totals.
+# record NAME LOG STATUS BEGAN: add the suite's closing counts to the
+# totals; its line says how long it took since BEGAN ($SECONDS).
 record() {
-    local name=$1 log=$2 status=$3 counts passed failed cases
+    local name=$1 log=$2 status=$3 counts passed failed cases took
+    took="[$((SECONDS - $4)) s]"
     counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
     if [ -z "$counts" ]; then
-        echo "$name: did not run to the end (exit $status); last lines of $log:"
+        echo "$name: did not run to the end (exit $status) $took; last lines of $log:"
         tail -n 15 "$log" | sed 's/^/    /'
         total_failed=$((total_failed + 1))
         broken+=("$name")
@@ -106,9 +108,9 @@ record() {
         set -- ${cases//,/}
         cases_passed=$((cases_passed + $2))
         cases_failed=$((cases_failed + $4))
-        echo "$name: $passed passed, $failed failed ($cases)"
+        echo "$name: $passed passed, $failed failed ($cases) $took"
     else
-        echo "$name: $passed passed, $failed failed"
+        echo "$name: $passed passed, $failed failed $took"
     fi
     total_passed=$((total_passed + passed))
     total_failed=$((total_failed + failed))
@@ -119,11 +121,11 @@ record() {
 # (a program, or a function of this file) writes to the suite's log, whose
 # last "N passed, N failed" line is added to the totals.
 check() {
-    local name=$1 log="$logs/$1.log"
+    local name=$1 log="$logs/$1.log" began=$SECONDS
     shift
     if wanted "$name"; then
         "$@" >"$log" 2>&1
-        record "$name" "$log" $?
+        record "$name" "$log" $? "$began"
     else
         skip "$name"
     fi
@@ -142,21 +144,34 @@ one() {
 # suite NAME PROGRAM MAKE-ARGS...: build and run a test program of one port
 # (PROGRAM tests: the test suite; fault-tests: the fault injection test;
 # config-tests: the configuration contract), all its cases or those ONLY
-# selects.
+# selects. With LANE=1 the program is built here and queued for the lane
+# (below), which runs it beside the suites that follow.
+queued=()
 suite() {
-    local name=$1 program=$2 log="$logs/$1.log" status filter= pattern
+    local name=$1 program=$2 log="$logs/$1.log" status filter= began=$SECONDS
     shift 2
     if ! wanted "$name"; then
         filter=$(patterns_for "$program")
         [ -n "$filter" ] || { skip "$name"; return; }
     fi
+    rm -f "$log.status"
     if make -s -j"$jobs" "$@" ONLY="$filter" "$program" >"$log" 2>&1; then
+        if [ "${LANE:-0}" = 1 ]; then
+            queued+=("$name|$filter|$program|$*")
+            return
+        fi
         make -s "$@" ONLY="$filter" "run-$program" >>"$log" 2>&1
         status=$?
     else
         status=$?
         echo "(build failed)" >>"$log"
     fi
+    suite_record "$name" "$filter" "$status" "$began"
+}
+
+# suite_record NAME FILTER STATUS BEGAN: a test program's run recorded.
+suite_record() {
+    local name=$1 filter=$2 log="$logs/$1.log" pattern
     if [ -n "$filter" ] && grep -q '^no case matches' "$log"; then
         skip "$name"
         return
@@ -165,8 +180,41 @@ suite() {
         grep -qx "note: ONLY pattern '$pattern' matches no case here" "$log" ||
             used_patterns="$used_patterns $pattern "
     done
-    record "$name" "$log" "$status"
+    record "$name" "$log" "$3" "$4"
 }
+
+# The lane: the queued programs run one after another in the background
+# (each under QEMU, one core), each writing its exit status and run time
+# beside its log; lane_record waits for it and records them in order.
+lane_run() {
+    local entry name filter program args began
+    for entry in "${queued[@]}"; do
+        IFS='|' read -r name filter program args <<<"$entry"
+        began=$SECONDS
+        # shellcheck disable=SC2086
+        make -s $args ONLY="$filter" "run-$program" >>"$logs/$name.log" 2>&1
+        echo "$? $((SECONDS - began))" >"$logs/$name.log.status"
+    done
+}
+lane_record() {
+    local entry name filter program args status took
+    wait "$lane"
+    for entry in "${queued[@]}"; do
+        IFS='|' read -r name filter program args <<<"$entry"
+        read -r status took <"$logs/$name.log.status" 2>/dev/null || { status=1 took=0; }
+        suite_record "$name" "$filter" "$status" "$((SECONDS - took))"
+    done
+}
+
+# The emulated targets' test programs first: built here and run in the
+# lane while the host's suites and the rest use the other core.
+for target in $targets; do
+    LANE=1 suite "$target" tests PORT="$target"
+    LANE=1 suite "$target-faults" fault-tests PORT="$target"
+    LANE=1 suite "$target-config" config-tests PORT="$target"
+done
+lane_run &
+lane=$!
 
 suite host tests PORT=host
 suite host-sanitize tests PORT=host SANITIZE=1
@@ -219,11 +267,6 @@ fuzz() {
 }
 check fuzz fuzz
 
-for target in $targets; do
-    suite "$target" tests PORT="$target"
-    suite "$target-faults" fault-tests PORT="$target"
-    suite "$target-config" config-tests PORT="$target"
-done
 
 # examples/coverage on the emulated Cortex-M3: Lloyd coverage control with
 # vor_cell_centroid and vor_move, checked against brute-force samples.
@@ -233,17 +276,19 @@ coverage() {
 }
 check coverage coverage
 
-# examples/room on the host and on every emulated target: a navigation
-# mesh from walls as constraints, checked against the floor plan (the
-# shoelace area, Euler's triangle count, even-odd point location, a way
-# through the doors). Its checks add up over the ports.
-room() {
-    local passed=0 failed=0 port exe out status counts
+# Builds and runs examples/NAME (make target example-NAME) on the host
+# and on every emulated target, adding up the checks each run prints. A
+# hook, if named, runs before each port ("HOOK before PORT") and after it
+# ("HOOK after PORT"), where its status counts as one more check (it
+# prints its own FAIL line).
+example_on_ports() {
+    local name=$1 hook=${2:-} passed=0 failed=0 port exe out status counts
     for port in host $targets; do
         exe=$([ "$port" = host ] || echo .elf)
-        out=$logs/room-$port.out
-        make -s -j"$jobs" PORT="$port" "build/$port/example-room$exe" >"$out" 2>&1 &&
-            make -s PORT="$port" run-example-room >>"$out" 2>&1
+        out=$logs/$name-$port.out
+        if [ -n "$hook" ]; then "$hook" before "$port"; fi
+        make -s -j"$jobs" PORT="$port" "build/$port/example-$name$exe" >"$out" 2>&1 &&
+            make -s PORT="$port" "run-example-$name" >>"$out" 2>&1
         status=$?
         sed -n "s/^FAIL /FAIL $port: /p" "$out"
         counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
@@ -253,11 +298,26 @@ room() {
             failed=$((failed + ${counts%% failed}))
         fi
         if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
-            echo "FAIL $port: examples/room exited with status $status ($out)"
+            echo "FAIL $port: examples/$name exited with status $status ($out)"
             failed=$((failed + 1))
+        fi
+        if [ -n "$hook" ]; then
+            if "$hook" after "$port"; then
+                passed=$((passed + 1))
+            else
+                failed=$((failed + 1))
+            fi
         fi
     done
     echo "$passed passed, $failed failed"
+}
+
+# examples/room on the host and on every emulated target: a navigation
+# mesh from walls as constraints, checked against the floor plan (the
+# shoelace area, Euler's triangle count, even-odd point location, a way
+# through the doors). Its checks add up over the ports.
+room() {
+    example_on_ports room
 }
 check room room
 
@@ -268,44 +328,22 @@ check room room
 # colours). Each target's frames must equal the host's byte for byte, and
 # the host's values are checked against the exact brute force of
 # tools/check_field.py (one row and column in 4, and the sensors).
-field() {
-    local passed=0 failed=0 port exe out status counts
-    for port in host $targets; do
-        exe=$([ "$port" = host ] || echo .elf)
-        out=$logs/field-$port.out
+field_frames() {
+    if [ "$1" = before ]; then
         rm -f build/field-quick.values build/field-quick.rgb565
-        make -s -j"$jobs" PORT="$port" "build/$port/example-field-quick$exe" >"$out" 2>&1 &&
-            make -s PORT="$port" run-example-field-quick >>"$out" 2>&1
-        status=$?
-        sed -n "s/^FAIL /FAIL $port: /p" "$out"
-        counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
-        if [ -n "$counts" ]; then
-            passed=$((passed + ${counts%% passed*}))
-            counts=${counts#*, }
-            failed=$((failed + ${counts%% failed}))
-        fi
-        if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
-            echo "FAIL $port: examples/field exited with status $status ($out)"
-            failed=$((failed + 1))
-        fi
-        if [ "$port" = host ]; then
-            cp build/field-quick.values "$logs/field-host.values" 2>/dev/null
-            cp build/field-quick.rgb565 "$logs/field-host.rgb565" 2>/dev/null
-            if python3 tools/check_field.py --every 4 build/field-quick; then
-                passed=$((passed + 1))
-            else
-                echo "FAIL host: tools/check_field.py found values unlike the brute force"
-                failed=$((failed + 1))
-            fi
-        elif cmp -s build/field-quick.values "$logs/field-host.values" &&
-            cmp -s build/field-quick.rgb565 "$logs/field-host.rgb565"; then
-            passed=$((passed + 1))
-        else
-            echo "FAIL $port: the field's frames differ from the host's"
-            failed=$((failed + 1))
-        fi
-    done
-    echo "$passed passed, $failed failed"
+    elif [ "$2" = host ]; then
+        cp build/field-quick.values "$logs/field-host.values" 2>/dev/null
+        cp build/field-quick.rgb565 "$logs/field-host.rgb565" 2>/dev/null
+        python3 tools/check_field.py --every 4 build/field-quick ||
+            { echo "FAIL host: tools/check_field.py found values unlike the brute force" && false; }
+    else
+        { cmp -s build/field-quick.values "$logs/field-host.values" &&
+            cmp -s build/field-quick.rgb565 "$logs/field-host.rgb565"; } ||
+            { echo "FAIL $2: the field's frames differ from the host's" && false; }
+    fi
+}
+field() {
+    example_on_ports field-quick field_frames
 }
 check field field
 
@@ -587,6 +625,7 @@ docs() {
 }
 check docs docs
 
+lane_record
 for pattern in ${cases_only//,/ }; do
     if [[ "$used_patterns" != *" $pattern "* ]]; then
         echo "ONLY: '$pattern' names no suite and selects no case"
@@ -600,5 +639,6 @@ if [ ${#broken[@]} -gt 0 ]; then
     echo "failing: ${broken[*]} (logs in $logs/)"
 fi
 echo "cases: $cases_passed passed, $cases_failed failed"
+echo "took: $((SECONDS / 60)) min $((SECONDS % 60)) s"
 echo "total: $total_passed passed, $total_failed failed"
 [ "$total_failed" = 0 ]

@@ -22,4 +22,13 @@ static volatile int32_t size_input[2 * SIZE_SITES];
 static inline int32_t size_x(uint32_t i) { return size_input[2u * i]; }
 static inline int32_t size_y(uint32_t i) { return size_input[2u * i + 1u]; }
 
+/* The SIZE_SITES sites of the input. */
+static inline void size_points(vor_point_t *points)
+{
+    for (uint32_t i = 0; i < SIZE_SITES; i++) {
+        points[i].x = size_x(i);
+        points[i].y = size_y(i);
+    }
+}
+
 #endif

@@ -19,10 +19,7 @@ int main(void)
 {
     vor_t d;
     vor_cdt_limits_t limits = {SIZE_EDGES, SIZE_CROSSINGS, SIZE_CUT};
-    for (uint32_t i = 0; i < SIZE_SITES; i++) {
-        points[i].x = size_x(i);
-        points[i].y = size_y(i);
-    }
+    size_points(points);
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
     acc |= vor_build(&d, points, SIZE_SITES, NULL, NULL);
     acc |= vor_cdt_attach(&d, size_walls, sizeof size_walls, &limits);

@@ -28,9 +28,8 @@ int main(void)
 {
     vor_t d;
     uint32_t shown = 0;
+    size_points(points);
     for (uint32_t i = 0; i < SIZE_SITES; i++) {
-        points[i].x = size_x(i);
-        points[i].y = size_y(i);
         values[i] = size_x(i) - size_y(i);
     }
     for (uint32_t i = 0; i < 256u; i++) {

@@ -13,10 +13,7 @@ int main(void)
 {
     vor_t d;
     uint32_t site = 0, count = 0;
-    for (uint32_t i = 0; i < SIZE_SITES; i++) {
-        points[i].x = size_x(i);
-        points[i].y = size_y(i);
-    }
+    size_points(points);
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
     acc |= vor_build(&d, points, SIZE_SITES, NULL, NULL);
     acc |= vor_nearest(&d, (vor_point_t){size_x(0), size_y(1)}, VOR_NO_HINT, &site);

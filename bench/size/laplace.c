@@ -14,9 +14,8 @@ int main(void)
 {
     vor_t d;
     uint32_t site = 0;
+    size_points(points);
     for (uint32_t i = 0; i < SIZE_SITES; i++) {
-        points[i].x = size_x(i);
-        points[i].y = size_y(i);
         values[i] = size_x(i) - size_y(i);
     }
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);

@@ -19,9 +19,8 @@ int main(void)
 {
     vor_power_t pd;
     uint32_t site = 0, count = 0;
+    size_points(points);
     for (uint32_t i = 0; i < SIZE_SITES; i++) {
-        points[i].x = size_x(i);
-        points[i].y = size_y(i);
         weights[i] = (int64_t)size_x(i) * size_y(i);
     }
     int acc = vor_power_init(&pd, size_power_arena, sizeof size_power_arena, SIZE_SITES);

@@ -60,19 +60,13 @@ uint32_t example_brute_nearest(const vor_point_t *sites, uint32_t n, const uint3
     return best;
 }
 
-/* ---- text files for the host (build/NAME.cells) */
+/* ---- text files for the host (build/NAME.cells, build/field.sensors) */
 
 #define DUMP_VERTICES 64u /* far above any cell of random sites (about 6) */
 
-typedef struct text_file {
-    int handle;
-    uint32_t used;
-    char buffer[512]; /* semihosting calls are slow: one per buffer */
-} text_file_t;
-
 static vor_point_t cell_vertices[DUMP_VERTICES];
 
-static void dump_flush(text_file_t *f)
+static void file_flush(example_file_t *f)
 {
     if (f->handle >= 0 && f->used > 0) {
         (void)vor_port_file_write(f->handle, f->buffer, f->used);
@@ -80,17 +74,23 @@ static void dump_flush(text_file_t *f)
     f->used = 0;
 }
 
-static void dump_text(text_file_t *f, const char *text)
+void example_file_open(example_file_t *f, const char *path)
+{
+    f->handle = vor_port_file_open(path);
+    f->used = 0;
+}
+
+void example_file_text(example_file_t *f, const char *text)
 {
     for (; *text != '\0'; text++) {
         if (f->used == sizeof f->buffer) {
-            dump_flush(f);
+            file_flush(f);
         }
         f->buffer[f->used++] = *text;
     }
 }
 
-static void dump_int(text_file_t *f, int32_t value)
+void example_file_int(example_file_t *f, int32_t value)
 {
     char digits[13];
     uint32_t n = sizeof digits, magnitude = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
@@ -102,22 +102,30 @@ static void dump_int(text_file_t *f, int32_t value)
     if (value < 0) {
         digits[--n] = '-';
     }
-    dump_text(f, " ");
-    dump_text(f, digits + n);
+    example_file_text(f, " ");
+    example_file_text(f, digits + n);
+}
+
+void example_file_close(example_file_t *f)
+{
+    file_flush(f);
+    if (f->handle >= 0) {
+        (void)vor_port_file_close(f->handle);
+    }
+    f->handle = -1;
 }
 
 int32_t example_dump_cells(const char *path, const vor_t *diagram, const vor_point_t *sites,
                            uint32_t n, const vor_box_t *box)
 {
-    static text_file_t dump;
-    dump.handle = vor_port_file_open(path);
-    dump.used = 0;
-    dump_text(&dump, "box");
-    dump_int(&dump, box->x0), dump_int(&dump, box->y0);
-    dump_int(&dump, box->x1), dump_int(&dump, box->y1);
+    static example_file_t dump;
+    example_file_open(&dump, path);
+    example_file_text(&dump, "box");
+    example_file_int(&dump, box->x0), example_file_int(&dump, box->y0);
+    example_file_int(&dump, box->x1), example_file_int(&dump, box->y1);
     for (uint32_t i = 0; i < n; i++) {
-        dump_text(&dump, "\ns");
-        dump_int(&dump, sites[i].x), dump_int(&dump, sites[i].y);
+        example_file_text(&dump, "\ns");
+        example_file_int(&dump, sites[i].x), example_file_int(&dump, sites[i].y);
     }
     vor_cell_iter_t cells;
     vor_cells_begin(&cells, diagram, box);
@@ -125,18 +133,15 @@ int32_t example_dump_cells(const char *path, const vor_t *diagram, const vor_poi
     int32_t written = 0;
     int more;
     while ((more = vor_cells_next(&cells, &site, cell_vertices, DUMP_VERTICES, &count)) == 1) {
-        dump_text(&dump, "\nc");
-        dump_int(&dump, (int32_t)site), dump_int(&dump, (int32_t)count);
+        example_file_text(&dump, "\nc");
+        example_file_int(&dump, (int32_t)site), example_file_int(&dump, (int32_t)count);
         for (uint32_t k = 0; k < count; k++) {
-            dump_int(&dump, cell_vertices[k].x), dump_int(&dump, cell_vertices[k].y);
+            example_file_int(&dump, cell_vertices[k].x), example_file_int(&dump, cell_vertices[k].y);
         }
         written++;
     }
-    dump_text(&dump, "\n");
-    dump_flush(&dump);
-    if (dump.handle >= 0) {
-        (void)vor_port_file_close(dump.handle);
-    }
+    example_file_text(&dump, "\n");
+    example_file_close(&dump);
     return more == 0 ? written : -1;
 }
 

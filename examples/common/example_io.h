@@ -31,6 +31,21 @@ uint32_t example_random(uint32_t *state);
 uint32_t example_brute_nearest(const vor_point_t *sites, uint32_t n, const uint32_t *first_of,
                                int32_t x, int32_t y);
 
+/* A text file on the host (through semihosting; without one, writes are
+ * dropped), buffered: semihosting calls are slow. */
+typedef struct example_file {
+    int handle; /* negative: no host file */
+    uint32_t used;
+    char buffer[512];
+} example_file_t;
+
+void example_file_open(example_file_t *f, const char *path);
+void example_file_text(example_file_t *f, const char *text);
+/* Writes " VALUE" in decimal. */
+void example_file_int(example_file_t *f, int32_t value);
+/* Writes what is buffered and closes the file. */
+void example_file_close(example_file_t *f);
+
 /* Writes path (a host file, through semihosting) as `vor draw --cells`
  * reads it: "box X0 Y0 X1 Y1", one "s X Y" line per site of sites[0 .. n)
  * (site i is the i-th), and one "c I M X1 Y1 ..." line per cell of the

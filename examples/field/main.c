@@ -256,6 +256,20 @@ static int check_values(void *user, uint32_t first_row, uint32_t rows, const voi
     return 0;
 }
 
+/* A VALUE frame's output: 16-row bands of value_band to flush(user). */
+static vor_field_output_t value_output(vor_raster_flush_t flush, void *user)
+{
+    vor_field_output_t out = {0};
+    out.kind = VOR_FIELD_VALUE;
+    out.band = value_band;
+    out.band_bytes = sizeof value_band;
+    out.band_rows = BAND_ROWS;
+    out.flush = flush;
+    out.user = user;
+    out.outside = OUTSIDE;
+    return out;
+}
+
 /* Each RGB565 band: the VALUE frame of its rows, rendered for the checks
  * (check_values), then the band to the host file. */
 static int send_colours(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
@@ -266,14 +280,7 @@ static int send_colours(void *user, uint32_t first_row, uint32_t rows, const voi
     s->first_row = first_row;
     vor_raster_frame_t these = {0, (int32_t)first_row * FIELD_STEP, FIELD_STEP, FIELD_STEP,
                                 FRAME_W, rows};
-    vor_field_output_t out = {0};
-    out.kind = VOR_FIELD_VALUE;
-    out.band = value_band;
-    out.band_bytes = sizeof value_band;
-    out.band_rows = BAND_ROWS;
-    out.flush = check_values;
-    out.user = s;
-    out.outside = OUTSIDE;
+    vor_field_output_t out = value_output(check_values, s);
     uint64_t checks = s->check_spent, value_start = vor_port_counter();
     int err = vor_field_raster(&diagram, reading, &these, &out, NULL, value_scratch,
                                sizeof value_scratch);
@@ -388,14 +395,7 @@ static void render_linear(void)
 {
     linear_run_t run = {0, 0};
     vor_raster_frame_t frame = {0, 0, FIELD_STEP, FIELD_STEP, FRAME_W, FRAME_H};
-    vor_field_output_t out = {0};
-    out.kind = VOR_FIELD_VALUE;
-    out.band = value_band;
-    out.band_bytes = sizeof value_band;
-    out.band_rows = BAND_ROWS;
-    out.flush = check_linear;
-    out.user = &run;
-    out.outside = OUTSIDE;
+    vor_field_output_t out = value_output(check_linear, &run);
     int err = vor_field_raster(&diagram, linear, &frame, &out, NULL, scratch, sizeof scratch);
     example_check(err == VOR_OK && run.rows == FRAME_H,
                   "(a) the linear field's frame renders");
@@ -412,51 +412,23 @@ static void render_linear(void)
 
 /* ---- the sensors as text for the host: build/field.sensors */
 
-static char text[4096];
-static uint32_t text_used;
-
-static void put_text(const char *s)
-{
-    for (; *s != '\0' && text_used < sizeof text; s++) {
-        text[text_used++] = *s;
-    }
-}
-
-static void put_int(int32_t value)
-{
-    char digits[13];
-    uint32_t n = sizeof digits, magnitude = value < 0 ? 0u - (uint32_t)value : (uint32_t)value;
-    digits[--n] = '\0';
-    do {
-        digits[--n] = (char)('0' + (int)(magnitude % 10u));
-        magnitude /= 10u;
-    } while (magnitude != 0u);
-    if (value < 0) {
-        digits[--n] = '-';
-    }
-    put_text(" ");
-    put_text(digits + n);
-}
-
 static void write_sensors(void)
 {
-    text_used = 0;
-    put_text("# examples/field: frame OX OY SX SY W H, the outside value, s X Y VALUE\nframe");
-    put_int(0), put_int(0), put_int(FIELD_STEP), put_int(FIELD_STEP);
-    put_int((int32_t)FRAME_W), put_int((int32_t)FRAME_H);
-    put_text("\noutside");
-    put_int(OUTSIDE);
+    static example_file_t out;
+    example_file_open(&out, FIELD_OUT ".sensors");
+    example_file_text(&out, "# examples/field: frame OX OY SX SY W H, the outside value, s X Y VALUE\nframe");
+    example_file_int(&out, 0), example_file_int(&out, 0);
+    example_file_int(&out, FIELD_STEP), example_file_int(&out, FIELD_STEP);
+    example_file_int(&out, (int32_t)FRAME_W), example_file_int(&out, (int32_t)FRAME_H);
+    example_file_text(&out, "\noutside");
+    example_file_int(&out, OUTSIDE);
     for (uint32_t k = 0; k < SENSORS; k++) {
-        put_text("\ns");
-        put_int(sensor[k].x), put_int(sensor[k].y), put_int(reading[k]);
+        example_file_text(&out, "\ns");
+        example_file_int(&out, sensor[k].x), example_file_int(&out, sensor[k].y);
+        example_file_int(&out, reading[k]);
     }
-    put_text("\n");
-    example_check(text_used < sizeof text, "the sensor list fits its buffer");
-    int file = vor_port_file_open(FIELD_OUT ".sensors");
-    if (file >= 0) {
-        (void)vor_port_file_write(file, text, text_used);
-        (void)vor_port_file_close(file);
-    }
+    example_file_text(&out, "\n");
+    example_file_close(&out);
 }
 
 int main(void)

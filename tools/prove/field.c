@@ -3,8 +3,8 @@
  * field.c - the harness of `make prove` for vor_field_raster: on the
  * cheap diagrams of far_sites.h (no sites, one site, three collinear
  * sites: every pixel at a site, on the segment or outside, so that no
- * boundary walk of src/interpolate.c is entered, which EVA does not yet
- * finish: interpolate.c), a W x H frame in bands of BAND rows (a seam and
+ * boundary walk of src/interpolate.c is entered: interpolate.c proves
+ * the walk on its own), a W x H frame in bands of BAND rows (a seam and
  * a partial last band) of each kind and method, a flush that goes on or
  * stops, a scratch of any size up to enough (a pixel's VOR_ERR_NOMEM),
  * the RGB565 ramp over three ranges; then every bad argument the header

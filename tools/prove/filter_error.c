@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * filter_error.c - a bound, proven by exact interval arithmetic, on the
- * rounding error of the two filters of src/predicates.c that evaluate a
+ * filter_error.c - bounds, proven by exact interval arithmetic, on the
+ * rounding errors of the two filters of src/predicates.c that evaluate a
  * polynomial of differences cut to 15 bits (32-bit limbs): the mid
- * incircle tier's determinant P (degree 4) and the perturbed incircle's
- * first term T (degree 3). Run by make prove (tools/prove/prove.sh).
+ * incircle tier's determinant P (degree 4), against its bound and its
+ * finer bound from the points' sizes, and the perturbed incircle's first
+ * term T (degree 3). Run by make prove (tools/prove/prove.sh).
  *
  * A filter takes each entry d = 2^s u + r, 0 <= r < 2^s, |u| <= A = 2^14,
  * and evaluates the polynomial F of the u exactly; F(d) = 2^(ks) F(u + rho)
@@ -23,7 +24,26 @@
  * of 2^-SCALE_BITS) gives at most H. Prints each filter's proven error
  * bound beside the code's; fails if a bound cannot be proven below the
  * code's.
- *   filter_error            (exit 0 and "2 passed, 0 failed" when proven)
+ *
+ * Third, the incircle filter's finer bound (vor__incircle_point_bound,
+ * src/predicates.h), 4 (6abc + a^2 (b + c) + b^2 (c + a) + c^2 (a + b))
+ * with a, b, c the sizes max(|x|, |y|) + 1 of the three points u: with
+ * p' = p + rho (a point's entries and their remainders), the error is
+ * the sum over the three terms L(p) X(q, r) (L = x^2 + y^2, X the cross
+ * product) of (L(p') - L(p)) X(q', r') + L(p) (X(q', r') - X(q, r)).
+ * There |L(p') - L(p)| = |2 p'.rho - |rho|^2| <= 2 h(p') + 2, with h(p')
+ * = max(p'x+ + p'y+, p'x- + p'y-) the largest |p'.t| over t in [0, 1]^2,
+ * and |X(q', r')| <= 2bc; |X(q', r') - X(q, r)| <= 2 (b - 1) + 2 (c - 1)
+ * + 1 and L(p) <= 2 (a - 1)^2. With p' = a p^ (p^ in [-1, 1]^2) the first
+ * parts sum to at most 2abc G + 4 (ab + bc + ca), G = the sum over the
+ * terms of h(p^) |X(q^, r^)|, and the second parts to 4 sum a^2 (b + c) -
+ * 16 (ab + bc + ca) + 8 (a + b + c) - 6 sum (a - 1)^2; as ab + bc + ca >=
+ * a + b + c for sizes >= 1, the error is below 2abc G + 4 sum a^2 (b + c).
+ * This program proves G <= 9 on [-1, 1]^6 by the same branch and bound
+ * (a search finds 8, at corners), so the error is below 4 (4.5abc + sum
+ * a^2 (b + c)): the code's 6abc has room, and a bound with 5abc would
+ * hold too.
+ *   filter_error            (exit 0 and "3 passed, 0 failed" when proven)
  */
 #include <stdint.h>
 #include <stdio.h>
@@ -78,12 +98,27 @@ static iv_t square(iv_t a)
     return iv(0, (l > h) ? l : h);
 }
 
-/* Enclosures of the gradient's components over a box (scaled by S^(k-1)). */
-typedef int (*gradient_t)(const iv_t *v, iv_t *g);
+/* An upper bound, over a box, of the quantity a branch and bound holds
+ * below its limit (scaled by S^(k-1)). */
+typedef wide_t (*enclosure_t)(const iv_t *v);
+
+/* The first order of a filter's error: with every rho >= 0 it lies
+ * between -(the sum of the gradient's negative components) and the sum of
+ * its positive ones, of the n enclosures g. */
+static wide_t first_order(const iv_t *g, int n)
+{
+    wide_t up = 0, down = 0;
+    for (int k = 0; k < n; k++) {
+        up += (g[k].hi > 0) ? g[k].hi : 0;
+        down += (g[k].lo < 0) ? -g[k].lo : 0;
+    }
+    return (up > down) ? up : down;
+}
 
 /* P = za Ka + zb Kb + zc Kc, z = x^2 + y^2, Ka = b x c (vor__incircle_narrow). */
-static int incircle_gradient(const iv_t *v, iv_t *g)
+static wide_t incircle_first_order(const iv_t *v)
 {
+    iv_t g[6];
     iv_t ax = v[0], ay = v[1], bx = v[2], by = v[3], cx = v[4], cy = v[5];
     iv_t za = add(square(ax), square(ay)), zb = add(square(bx), square(by));
     iv_t zc = add(square(cx), square(cy));
@@ -95,12 +130,13 @@ static int incircle_gradient(const iv_t *v, iv_t *g)
     g[3] = sub(add(times(2, mul(by, kb)), mul(zc, ax)), mul(za, cx));
     g[4] = add(sub(times(2, mul(cx, kc)), mul(za, by)), mul(zb, ay));
     g[5] = sub(add(times(2, mul(cy, kc)), mul(za, bx)), mul(zb, ax));
-    return 6;
+    return first_order(g, 6);
 }
 
 /* T = 2 yl (xp yq - yp xq) - xp zq + xq zp (first_term_narrow). */
-static int first_term_gradient(const iv_t *v, iv_t *g)
+static wide_t first_term_first_order(const iv_t *v)
 {
+    iv_t g[5];
     iv_t yl = v[0], xp = v[1], yp = v[2], xq = v[3], yq = v[4];
     iv_t zp = add(square(xp), square(yp)), zq = add(square(xq), square(yq));
     g[0] = times(2, sub(mul(xp, yq), mul(yp, xq)));
@@ -108,31 +144,35 @@ static int first_term_gradient(const iv_t *v, iv_t *g)
     g[2] = times(2, sub(mul(xq, yp), mul(yl, xq)));
     g[3] = sub(zp, times(2, add(mul(yl, yp), mul(xp, xq))));
     g[4] = times(2, sub(mul(yl, xp), mul(xp, yq)));
-    return 5;
+    return first_order(g, 5);
 }
 
-/* Does h stay at or below `limit` (scaled by S^(k-1)) on the box? */
-static int box_ok(gradient_t gradient, const int64_t *lo, const int64_t *hi, int dims,
-                  wide_t limit, wide_t *bound)
+/* h over a box of one point: max(x+ + y+, x- + y-) at its far corners. */
+static wide_t h_max(iv_t x, iv_t y)
 {
-    iv_t v[DIMS_MAX], g[DIMS_MAX];
-    for (int k = 0; k < dims; k++) {
-        v[k] = iv(lo[k], hi[k]);
-    }
-    int n = gradient(v, g);
-    wide_t up = 0, down = 0;
-    for (int k = 0; k < n; k++) {
-        up += (g[k].hi > 0) ? g[k].hi : 0;
-        down += (g[k].lo < 0) ? -g[k].lo : 0;
-    }
-    *bound = (up > down) ? up : down;
-    return *bound <= limit;
+    wide_t up = ((x.hi > 0) ? x.hi : 0) + ((y.hi > 0) ? y.hi : 0);
+    wide_t down = ((x.lo < 0) ? -x.lo : 0) + ((y.lo < 0) ? -y.lo : 0);
+    return (up > down) ? up : down;
+}
+static wide_t magnitude_max(iv_t a)
+{
+    return (-a.lo > a.hi) ? -a.lo : a.hi;
+}
+
+/* G = h(a) |X(b, c)| + h(b) |X(c, a)| + h(c) |X(a, b)| (scaled by S^3). */
+static wide_t point_products(const iv_t *v)
+{
+    iv_t ax = v[0], ay = v[1], bx = v[2], by = v[3], cx = v[4], cy = v[5];
+    iv_t ka = sub(mul(bx, cy), mul(by, cx)), kb = sub(mul(cx, ay), mul(cy, ax));
+    iv_t kc = sub(mul(ax, by), mul(ay, bx));
+    return h_max(ax, ay) * magnitude_max(ka) + h_max(bx, by) * magnitude_max(kb) +
+           h_max(cx, cy) * magnitude_max(kc);
 }
 
 /* Branch and bound over [-1, 1]^dims: 1 when h <= limit / S^(k-1)
  * everywhere; *worst the largest accepted box's enclosure, *boxes the
  * boxes looked at. */
-static int prove_h(gradient_t gradient, int dims, int degree, wide_t limit, wide_t *worst,
+static int prove_h(enclosure_t enclosure, int dims, int degree, wide_t limit, wide_t *worst,
                    long *boxes)
 {
     static int64_t stack_lo[STACK_MAX][DIMS_MAX], stack_hi[STACK_MAX][DIMS_MAX];
@@ -156,8 +196,12 @@ static int prove_h(gradient_t gradient, int dims, int degree, wide_t limit, wide
             hi[k] = stack_hi[top][k];
         }
         (*boxes)++;
-        wide_t bound;
-        if (box_ok(gradient, lo, hi, dims, limit * scale, &bound)) {
+        iv_t v[DIMS_MAX];
+        for (int k = 0; k < dims; k++) {
+            v[k] = iv(lo[k], hi[k]);
+        }
+        wide_t bound = enclosure(v);
+        if (bound <= limit * scale) {
             *worst = (bound > *worst) ? bound : *worst;
             continue;
         }
@@ -192,12 +236,12 @@ static double as_double(wide_t v)
 
 /* One filter: h <= limit proven, then its error bound in units of the
  * filter's 2^(ks) against the code's. */
-static int filter(const char *name, gradient_t gradient, int dims, int degree, int limit,
+static int filter(const char *name, enclosure_t enclosure, int dims, int degree, int limit,
                   int64_t coefficients, double code_bound)
 {
     wide_t worst;
     long boxes;
-    if (!prove_h(gradient, dims, degree, limit, &worst, &boxes)) {
+    if (!prove_h(enclosure, dims, degree, limit, &worst, &boxes)) {
         printf("filter_error: %s: h <= %d not proven (%ld boxes)\n", name, limit, boxes);
         return 0;
     }
@@ -223,15 +267,35 @@ static int filter(const char *name, gradient_t gradient, int dims, int degree, i
     return ok;
 }
 
+/* The point bound: G <= limit proven, so that the error stays below
+ * 4 (limit / 2 abc + sum a^2 (b + c)) (the file's comment), against the
+ * code's 6abc. */
+static int point_bound(int limit)
+{
+    wide_t worst;
+    long boxes;
+    if (!prove_h(point_products, 6, 4, limit, &worst, &boxes)) {
+        printf("filter_error: point bound: G <= %d not proven (%ld boxes)\n", limit, boxes);
+        return 0;
+    }
+    double scale = (double)S * (double)S * (double)S;
+    printf("filter_error: point bound: G <= %.4f (%ld boxes), error < 4 (%.4f abc + sum a^2 (b + "
+           "c)); the code's bound 4 (6 abc + sum a^2 (b + c))\n",
+           as_double(worst) / scale, boxes, as_double(worst) / scale / 2.0);
+    return limit < 2 * 6;
+}
+
 int main(void)
 {
     int passed = 0;
     /* incircle_filter: 12 monomials, the code's bound 3 2^46 + 2^35 */
-    passed += filter("mid incircle determinant", incircle_gradient, 6, 4, 17, 12,
+    passed += filter("mid incircle determinant", incircle_first_order, 6, 4, 17, 12,
                      3.0 * 70368744177664.0 + 34359738368.0);
     /* first_terms: 6 monomials of coefficients 2, 2, 1, 1, 1, 1, bound 2^33 */
-    passed += filter("perturbed incircle's first term", first_term_gradient, 5, 3, 15, 8,
+    passed += filter("perturbed incircle's first term", first_term_first_order, 5, 3, 15, 8,
                      8589934592.0);
-    printf("%d passed, %d failed\n", passed, 2 - passed);
-    return (passed == 2) ? 0 : 1;
+    /* vor__incircle_point_bound: G <= 9, so 4.5abc for the code's 6abc */
+    passed += point_bound(9);
+    printf("%d passed, %d failed\n", passed, 3 - passed);
+    return (passed == 3) ? 0 : 1;
 }

@@ -1,23 +1,23 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * interpolate.c - the harness of `make prove` for vor_sibson, vor_laplace,
- * vor_interpolate and vor_interpolate_laplace: on each small concrete
- * diagram of far_sites.h (five sites, four of them cocircular; three
- * collinear; one), points strictly inside the hull (the cocircular
- * square's centre, where the triangulation is not unique, and off it), on
- * a hull edge, at a site and outside, with the scratch
- * VOR_SIBSON_SCRATCH_BYTES gives (aligned and not) and one too small;
- * then any hint, any scratch size below the smallest answer's, and each
- * pointer the header allows to be NULL, NULL in turn. Every argument is
- * concrete but those, so that EVA follows each walk and sum exactly.
- *
- * WORK IN PROGRESS: not in prove.sh's default list. Run alone
- * (tools/prove/prove.sh interpolate), EVA had not finished after 25
- * minutes: the states of the boundary walk (src/interpolate.c,
- * walk_boundary) keep growing, and the any-hint call makes vor_nearest's
- * walk imprecise (out-of-bounds read alarms in src/queries.c's walk that
- * queries.c's harness avoids with -eva-widening-delay 12). To do: the
- * queries harness's options, the any-hint call in a harness of its own.
+ * vor_interpolate and vor_interpolate_laplace: on each concrete diagram
+ * of far_sites.h (none, one site, three collinear, then all six points:
+ * the cocircular four, the duplicate and the far site), six points: the
+ * cocircular square's centre (strictly inside the hull, where the
+ * triangulation is not unique), a point off it inside the square (both
+ * walk the conflict region's boundary), one on a hull edge, one at a site,
+ * one outside the square that the far site brings inside the hull (the
+ * far site a natural neighbour: weights of 7 32-bit words), and one
+ * outside both of those hulls (on the three collinear sites' segment);
+ * each with the scratch VOR_SIBSON_SCRATCH_BYTES gives (aligned, and 1
+ * and 3 bytes past a limb's alignment) and with 64 bytes, too small; the
+ * values reach INT32_MIN and INT32_MAX. Then the square's centre from
+ * each hint (each site's id, then any other value: inputs.h), with any
+ * scratch size up to 64 bytes (below the smallest answer's) and with
+ * each pointer the header allows to be NULL, NULL in turn. Every argument
+ * is concrete but those, so that EVA keeps every state apart (prove.sh's
+ * slevel) and follows each walk and sum exactly.
  */
 #include <__fc_builtin.h>
 
@@ -46,8 +46,13 @@ static int natural(const vor_t *d)
                                      SCRATCH_BYTES - 3u, &v);
         r |= vor_sibson(d, q, VOR_NO_HINT, scratch, 64u, &c);
     }
-    /* any hint, any small scratch, and each NULL the header lists */
-    r |= vor_sibson(d, queries[0], any_u32(), scratch, SCRATCH_BYTES, &c);
+    /* from each hint (unrolled: from an id anywhere the nearest-site
+     * walk would start from every site at once), any small scratch, and
+     * each NULL the header lists */
+    /*@ loop unroll N + 1; */
+    for (uint32_t h = 0; h <= N; h++) {
+        r |= vor_sibson(d, queries[0], id_or_any(h, N), scratch, SCRATCH_BYTES, &c);
+    }
     r |= vor_interpolate(d, values, queries[0], VOR_NO_HINT, scratch,
                          Frama_C_unsigned_int_interval(0u, 64u), &v);
     r |= vor_sibson(NULL, queries[0], VOR_NO_HINT, scratch, SCRATCH_BYTES, &c);
@@ -61,5 +66,5 @@ static int natural(const vor_t *d)
 
 int main(void)
 {
-    return far_sites_each(0u, true, N - 1u, natural); /* the far site left out: small sums */
+    return far_sites_each(0u, true, N, natural);
 }

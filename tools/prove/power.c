@@ -4,9 +4,10 @@
  * vor_power_init(_checked), vor_power_insert, vor_power_build,
  * vor_power_hidden, the hidden and triangle iterators and
  * vor_power_validate; vor_power_remove, vor_power_move and
- * vor_power_nearest with their bad arguments only (on a concrete
- * diagram the nearest walk split EVA's states into tens of thousands,
- * and a run had not ended after 20 minutes).
+ * vor_power_nearest with their bad arguments (power_dynamic.c runs them
+ * on a concrete diagram, with options of its own: here the slevel that
+ * keeps every insert's states apart split the nearest walk's into tens
+ * of thousands, and a run had not ended after 20 minutes).
  * Every bad argument the header lists is passed with any value that
  * makes it one (sizes, counts, ids anywhere in their type,
  * pointers NULL); the diagrams are small and concrete, as in diagram.c,

@@ -10,10 +10,13 @@
 # library's functions; and runs tools/prove/filter_error.c, which proves
 # the rounding filters' error bounds.
 #   tools/prove/prove.sh [HARNESS...]   (default: every harness)
+# Harnesses run PROVE_JOBS at a time (default: one a core); each is one
+# Frama-C process of one thread.
 # With harnesses named (make test's suite prove runs those that finish in
 # about a minute), the share of functions is printed but not required.
 # Ends with "N passed, M failed": one check per harness, and the share.
 set -eu
+self=$(cd "$(dirname "$0")" && pwd)/$(basename "$0")
 cd "$(dirname "$0")/../.."
 out=build/prove
 mkdir -p "$out"
@@ -21,7 +24,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid raster field large cdt power power_cells}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid raster field interpolate large cdt power power_cells power_dynamic}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
@@ -46,17 +49,16 @@ options_of() {
     # kept apart (a slevel no loop reaches) and EVA follows each build,
     # cell trace, constraint and flip exactly
     large | cells | cdt | power) echo "-eva-split-return full -eva-slevel 1000000" ;;
-    # centroid, power_cells, field: the same, and the scratch at a fixed
-    # address (centroid.c)
-    centroid | power_cells | field) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
-    # interpolate: as centroid (interpolate.c), the scratch at a fixed
-    # address; not yet in the default list (tools/prove/interpolate.c)
-    interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
-    # queries, nearest_k, locate: loops over a site's fan (the walk, the k
-    # nearest's rounds, the disc's tree) run up to 7 turns on these diagrams; EVA widens the slot
-    # they read next after 3 merged turns (to an interval past the
-    # triangles), after 12 it has met every slot of the fan
-    queries | nearest_k | locate) echo "-eva-split-return full -eva-widening-delay 12" ;;
+    # centroid, power_cells, field, interpolate: the same, and the scratch
+    # at a fixed address (far_sites.h)
+    centroid | power_cells | field | interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
+    # queries, nearest_k, locate, power_dynamic: loops over a site's fan
+    # (the walk, the k nearest's rounds, the disc's tree) run up to 7 turns
+    # on these diagrams;
+    # EVA widens the slot they read next after 3 merged turns (to an
+    # interval past the triangles), after 12 it has met every slot of the
+    # fan
+    queries | nearest_k | locate | power_dynamic) echo "-eva-split-return full -eva-widening-delay 12" ;;
     # -eva-split-return full: a call's states stay apart by its return
     # value, so a caller's `if (call() != VOR_OK)` leaves only the states
     # where the call succeeded (vor_init's failures leave *d unwritten).
@@ -73,23 +75,13 @@ sources_of() {
     esac
 }
 
-# The library's functions: every function defined in src/ or include/
-# (static and inline ones included), by name, from the symbols of each
-# source compiled with every function kept, in the configuration Frama-C
-# parses (32-bit limbs, M profile, no __OPTIMIZE__; VOR__COVERAGE turns the
-# forced inlining off, which would keep a function out of the symbols).
+# One harness: its report, its functions and its result (passed or
+# failed) in build/prove/NAME.*, the line that says so on the output.
+# One harness: its report, functions and result (passed or failed) in
+# build/prove/NAME.*, and the line that says so.
 functions=$out/functions.txt
-objects=$(mktemp -d)
-trap 'rm -rf "$objects"' EXIT
-grep '^src/' sources.txt | while read -r source; do
-    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -D__ARM_ARCH_PROFILE=77 -DVOR__COVERAGE -Iinclude -Isrc \
-        -fkeep-static-functions -fkeep-inline-functions -c "$source" \
-        -o "$objects/$(basename "$source" .c).o"
-done
-nm "$objects"/*.o | awk '$2 == "T" || $2 == "t" { print $3 }' | sort -u >"$functions"
-: >"$out/analysed.txt"
-
-for name in $harnesses; do
+prove_one() {
+    name=$1
     report=$out/$name.txt
     start=$(date +%s)
     # shellcheck disable=SC2046,SC2086
@@ -98,9 +90,8 @@ for name in $harnesses; do
         "tools/prove/$name.c" $(sources_of "$name") >"$report" 2>&1; then
         cat "$report"
         echo "prove: $name: frama-c failed ($report)" >&2
-        status=1
-        failed=$((failed + 1))
-        continue
+        echo failed >"$out/$name.result"
+        return
     fi
     seconds=$(($(date +%s) - start))
     # the functions EVA analysed (it prints each one's final values);
@@ -113,7 +104,6 @@ for name in $harnesses; do
             echo "${f%_[0-9]*}"
         fi
     done | sort -u >"$out/$name.functions"
-    sort -u "$out/analysed.txt" "$out/$name.functions" -o "$out/analysed.txt"
     alarms=$(grep -c '^\[eva:alarm\]' "$report" || true)
     # the summary says "No errors or warnings" only when there are none;
     # every property reached must be proven (a harness that reaches no
@@ -127,17 +117,52 @@ for name in $harnesses; do
         # warnings other than alarms, with the line that says what
         awk '/Warning/ && !/eva:alarm/ { print; getline; print }' "$report" >&2
         echo "prove: $name: not proven: $alarms alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)" >&2
+        echo failed >"$out/$name.result"
+    else
+        echo passed >"$out/$name.result"
+        echo "prove: $name: 0 alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)"
+    fi
+}
+
+if [ "${1:-}" = "--one" ]; then
+    prove_one "$2"
+    exit 0
+fi
+
+# The library's functions: every function defined in src/ or include/
+# (static and inline ones included), by name, from the symbols of each
+# source compiled with every function kept, in the configuration Frama-C
+# parses (32-bit limbs, M profile, no __OPTIMIZE__; VOR__COVERAGE turns the
+# forced inlining off, which would keep a function out of the symbols).
+objects=$(mktemp -d)
+trap 'rm -rf "$objects"' EXIT
+grep '^src/' sources.txt | while read -r source; do
+    "${CC:-cc}" -std=c99 -ffreestanding -O0 -DVOR_LIMB_BITS=32 -D__ARM_ARCH_PROFILE=77 -DVOR__COVERAGE -Iinclude -Isrc \
+        -fkeep-static-functions -fkeep-inline-functions -c "$source" \
+        -o "$objects/$(basename "$source" .c).o"
+done
+nm "$objects"/*.o | awk '$2 == "T" || $2 == "t" { print $3 }' | sort -u >"$functions"
+
+# shellcheck disable=SC2086
+rm -f $(for name in $harnesses; do echo "$out/$name.result"; done)
+printf '%s\n' $harnesses | xargs -P "${PROVE_JOBS:-$(nproc)}" -I '{}' sh "$self" --one '{}'
+: >"$out/analysed.txt"
+for name in $harnesses; do
+    if [ "$(cat "$out/$name.result" 2>/dev/null)" = passed ]; then
+        passed=$((passed + 1))
+    else
         status=1
         failed=$((failed + 1))
-    else
-        passed=$((passed + 1))
-        echo "prove: $name: 0 alarms ($seconds s, $(wc -l <"$out/$name.functions") functions, $report)"
+    fi
+    if [ -f "$out/$name.functions" ]; then
+        sort -u "$out/analysed.txt" "$out/$name.functions" -o "$out/analysed.txt"
     fi
 done
 
 # The two filters of src/predicates.c that round their entries to 15 bits
-# (32-bit limbs): their rounding errors proven below the code's bounds by
-# exact interval arithmetic (tools/prove/filter_error.c), a second or so.
+# (32-bit limbs): their rounding errors proven below the code's three
+# bounds by exact interval arithmetic (tools/prove/filter_error.c), a
+# second or so.
 if "${CC:-cc}" -std=gnu99 -O2 -Wall -Wextra -Werror tools/prove/filter_error.c -lm \
     -o "$out/filter_error" && "$out/filter_error" >"$out/filter_error.txt"; then
     passed=$((passed + 1))
