@@ -77,6 +77,10 @@
  *       vor_remove(&d, id);                           // id freed for reuse
  *       vor_nearest(&d, q, VOR_NO_HINT, &id);         // exact, ties to smaller id
  *       vor_nearest_k(&d, q, hint, k, ids, &found);   // k nearest, in order
+ *       vor_locate(&d, q, hint, tri);                 // the triangle holding q
+ *                                                     // (or VOR_ERR_OUTSIDE)
+ *       vor_within(&d, q, r2, hint, ids, cap, &m);    // sites within r2, by id
+ *       vor_triangles_export(&d, t, twins, cap, &m);  // delaunator's flat arrays
  *
  *       vor_tracker_t robot;                          // a moving query point:
  *       vor_tracker_begin(&robot, &d);                // caches its current cell
@@ -1104,6 +1108,105 @@ int vor_nearest(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t *site);
  */
 int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
                   uint32_t *nearest, uint32_t *found);
+
+/*
+ * The triangle holding q, any int32 point: the triangle of the true
+ * Delaunay triangulation (one vor_triangles_next lists, its vertices in
+ * the same order, counterclockwise) that contains q, exactly, into
+ * ids[0 .. 3). A point on an edge or at a vertex is in several closed
+ * triangles: the answer is the one that holds q moved by the library's
+ * symbolic perturbation with an index before every site, to
+ * (q.x + e^4, q.y + e) for an infinitesimal e > 0 (straight up, then a
+ * far smaller step right), which lies on no line through two sites. So
+ * the triangles and the outside of the hull split the plane into
+ * half-open pieces, and every point has one answer:
+ *   on an edge (not vertical)  the triangle above it;
+ *   on a vertical edge         the triangle to its right;
+ *   at a site                  the triangle whose corner there holds the
+ *                              direction straight up (the one right of it
+ *                              when an edge goes straight up);
+ *   on the hull's boundary     that triangle when the hull lies above the
+ *                              point (right of it on a vertical hull
+ *                              edge), else VOR_ERR_OUTSIDE: a top or left
+ *                              hull edge is outside, a bottom or right one
+ *                              inside.
+ * hint as for vor_nearest. Cost: vor_nearest's walk to the site c nearest
+ * to q, then the triangles the segment from c to q crosses (a handful:
+ * those whose circle holds q); no memory beyond ids[].
+ *   VOR_ERR_ARG      d or ids NULL, a bad hint (as vor_nearest)
+ *   VOR_ERR_EMPTY    the diagram has no sites
+ *   VOR_ERR_OUTSIDE  q is outside the hull in the sense above; always
+ *                    with fewer than 3 distinct sites or all collinear
+ *                    (there is no triangle)
+ * On failure nothing is written.
+ */
+int vor_locate(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t ids[3]);
+
+/*
+ * Every site within squared distance r2 of q (|q - site|^2 <= r2, exact
+ * for every int32 point and every uint64_t r2), their ids in increasing
+ * order into ids[0 .. *count). Found by walking the mesh from the site
+ * nearest to q (vor_nearest's walk), never by a scan of all sites: the
+ * sites in a disc around q form a connected set in the Delaunay graph
+ * together with the nearest site (each one has a Delaunay neighbour
+ * strictly closer to q, as vor_nearest_k uses), so a walk over the
+ * neighbours of the sites found, staying in the disc, finds them all.
+ * Duplicates are not sites: their first occurrences are. hint as for
+ * vor_nearest. Cost: O(m d^2) exact distance comparisons for m sites
+ * found of degree d, twice when capacity is below the diagram's site
+ * count (the sites are counted first); no memory beyond ids[] (the
+ * walk keeps no list: each site's place in its search tree is
+ * recomputed from its neighbours).
+ *   VOR_ERR_ARG     d or count NULL, ids NULL with capacity > 0, a bad
+ *                   hint (as vor_nearest)
+ *   VOR_ERR_EMPTY   the diagram has no sites
+ *   VOR_ERR_BUFFER  more than `capacity` sites are within r2: *count
+ *                   receives how many, nothing is written to ids
+ *                   (a capacity of the diagram's max_sites always
+ *                   holds them)
+ * On any other failure nothing is written.
+ */
+int vor_within(const vor_t *d, vor_point_t q, uint64_t r2, uint32_t hint, uint32_t *ids,
+               uint32_t capacity, uint32_t *count);
+
+/*
+ * FLAT EXPORT of the triangulation for host and GPU code, in the
+ * convention of delaunator: for T triangles,
+ *   triangles[3 t .. 3 t + 2]  triangle t's site ids, counterclockwise:
+ *                              the triangles vor_triangles_next lists, in
+ *                              its order, each as it lists it;
+ *   halfedges[e]               for the half-edge e = 3 t + k, which runs
+ *                              from triangles[e] to triangles[3 t + (k + 1)
+ *                              mod 3], the index of its twin (the same
+ *                              edge run the other way in the triangle
+ *                              across), or VOR_HALFEDGE_NONE on the hull.
+ * Both arrays are 3 T uint32_t; T is at most VOR_TRIANGLES_MAX(n) for a
+ * diagram of up to n sites (2 n - 5 for n >= 3, a constant expression),
+ * and vor_triangles_count gives the current T.
+ */
+#define VOR_HALFEDGE_NONE 0xFFFFFFFFu
+#define VOR_TRIANGLES_MAX(n) (((uint32_t)(n) >= 3u) ? ((2u * (uint32_t)(n)) - 5u) : 0u)
+
+/*
+ * The number of triangles vor_triangles_next lists for d, into *count.
+ * Cost: one exact orientation test a triangle.
+ *   VOR_ERR_ARG  d or count NULL (nothing written)
+ */
+int vor_triangles_count(const vor_t *d, uint32_t *count);
+
+/*
+ * The T triangles of d and their adjacency into triangles[0 .. 3 T) and
+ * halfedges[0 .. 3 T) (the convention above); halfedges may be NULL (the
+ * triangles alone). capacity: the triangles each array has room for (3
+ * capacity entries). *count receives T. Cost: O(T log T), no memory
+ * beyond the two arrays.
+ *   VOR_ERR_ARG     d or count NULL, triangles NULL with capacity > 0
+ *   VOR_ERR_BUFFER  T > capacity: *count receives T, nothing is written
+ *                   to the arrays
+ * On any other failure nothing is written.
+ */
+int vor_triangles_export(const vor_t *d, uint32_t *triangles, uint32_t *halfedges,
+                         uint32_t capacity, uint32_t *count);
 
 /*
  * A tracker follows a moving query point, such as a robot: it keeps the

@@ -145,6 +145,26 @@ static inline void vor__tally_restore(vor_t *d, const vor__tally_t *from)
     (void)from;
 }
 
+/* The orientation of sites a, b (distinct points) and a query point q
+ * under the perturbation, q taking an index before every site's: q moves
+ * to (q.x + e^4, q.y + e) for an infinitesimal e, far more than any site
+ * moves, so a tie is decided by q's move alone,
+ *     orient(a, b, q~) = orient(a, b, q) + (b.x - a.x) e - (b.y - a.y) e^4,
+ * the sign of b.x - a.x, then of a.y - b.y. Never 0 for distinct a and b:
+ * q~ lies on no line through two sites (vor_locate). Uncounted. */
+static inline int vor__orient_query(const vor_point_t *a, const vor_point_t *b,
+                                    const vor_point_t *q)
+{
+    int sign = vor__orient2d_exact(a, b, q, NULL);
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)b->x - a->x);
+    }
+    if (sign == 0) {
+        sign = vor__mw_sign64((int64_t)a->y - b->y);
+    }
+    return sign;
+}
+
 /* ------------------------------------------------------------------ */
 /* The true output                                                     */
 
@@ -153,13 +173,22 @@ static inline void vor__tally_restore(vor_t *d, const vor__tally_t *from)
  * iterators report"): a finite triangle is reported exactly when its
  * three sites are not collinear (unperturbed). A flat triangle's perturbed
  * circumcircle is a half-plane in the limit, empty only on a side of a
- * hull line, so dropping those leaves a triangulation of the hull. */
+ * hull line, so dropping those leaves a triangulation of the hull.
+ * Of a triangle's decoded vertices v. */
+static inline bool vor__reported_vertices(const vor_point_t *s, const vor_index_t v[3])
+{
+    return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
+           vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
+}
+
+/* The same of the triangle t (its vertices decoded here). A caller that
+ * goes on to use the vertices decodes them and asks
+ * vor__reported_vertices, so that an analyser sees them finite. */
 static inline bool vor__reported(const vor_point_t *s, const vor__tri_t *t)
 {
     vor_index_t v[3];
     vor__vertices(t, v);
-    return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
-           vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
+    return vor__reported_vertices(s, v);
 }
 
 /* For collinear a, m, b: does m lie strictly inside the segment ab? Then

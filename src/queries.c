@@ -290,6 +290,399 @@ int vor_nearest_k(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t k,
     return VOR_OK;
 }
 
+/* ------------------------------------------------------------------ */
+/* Point location (vor_locate)                                         */
+
+/*
+ * The reported triangle (vor__reported) holding q~, q moved by the
+ * perturbation with an index before every site (vor__orient_query), or
+ * VOR__NONE when q~ is outside the hull. q~ lies on no line through two
+ * sites, so it is strictly inside one triangle of the true
+ * triangulation, or strictly outside the hull. From site c (the nearest
+ * to q, where the walk ends) the straight walk along the segment c -> q~:
+ * the corner of a reported triangle at c that the segment leaves by,
+ * then across the edges it crosses, until the triangle holds q~. The
+ * segment runs through the hull while q~ is inside (convexity), so
+ * meeting a triangle that is not reported (at infinity, or flat on a
+ * hull line) means it left the hull: q~ is outside. No reported corner
+ * at c holding the segment means the same: the reported corners at c
+ * cover the hull's cone at c. Why from the nearest site: the segment
+ * then stays in c's Voronoi cell, and crosses only Delaunay edges whose
+ * triangles have q in their circle (a handful). Termination: each step
+ * moves on along the segment, into a triangle not visited before, so at
+ * most the triangle count of steps (a bound kept on a broken mesh).
+ */
+static vor_index_t locate_from(const vor_t *d, const vor_point_t *q, vor_index_t c)
+{
+    const vor_point_t *s = d->sites;
+    const vor__tri_t *tri = d->triangles;
+    vor__star_step_t star;
+    vor__star_begin(d, c, &star);
+    vor_index_t r = VOR__INFINITE; /* the crossed edge: r right of c -> q~, l left */
+    vor_index_t l = VOR__INFINITE;
+    vor_index_t slot = VOR__NONE;
+    bool turning = true;
+    for (uint32_t left = d->vertex_count + 1u; turning && (left > 0u); left--) {
+        const vor__tri_t *t = &tri[star.slot];
+        /* the corner (c, x, y) holds q~: left of c -> x, right of c -> y.
+         * (x and y finite is part of reported; said for the analysers) */
+        if ((star.x != VOR__INFINITE) && (star.y != VOR__INFINITE) && vor__reported(s, t) &&
+            (vor__orient_query(&s[c], &s[star.x], q) > 0) &&
+            (vor__orient_query(&s[star.y], &s[c], q) > 0)) {
+            if (vor__orient_query(&s[star.x], &s[star.y], q) > 0) {
+                return star.slot;
+            }
+            r = star.x;
+            l = star.y;
+            /* across x - y: opposite c, found as vor__star_look finds it */
+            slot = t->n[(star.v[1] == c) ? 1u : (star.v[2] == c) ? 2u : 0u];
+            break;
+        }
+        turning = vor__star_advance(d, c, &star);
+    }
+    if (slot == VOR__NONE) {
+        return VOR__NONE; /* no corner holds it: outside the hull */
+    }
+    for (uint32_t left = vor__triangle_count(d->vertex_count); left > 0u; left--) {
+        /* (l, r, w) counterclockwise, entered across l -> r */
+        const vor__tri_t *t = &tri[slot];
+        vor_index_t v[3];
+        vor__vertices(t, v);
+        unsigned k = ((v[0] != r) && (v[0] != l)) ? 0u : ((v[1] != r) && (v[1] != l)) ? 1u : 2u;
+        vor_index_t w = v[k];
+        /* (w finite is part of reported: said for the analysers) */
+        if (!vor__reported_vertices(s, v) || (w == VOR__INFINITE)) {
+            break; /* across a hull edge: q~ is outside */
+        }
+        if ((vor__orient_query(&s[r], &s[w], q) > 0) && (vor__orient_query(&s[w], &s[l], q) > 0)) {
+            return slot;
+        }
+        /* w left of the segment (c, q~, w counterclockwise): out across
+         * r - w, opposite l; else across w - l, opposite r */
+        bool w_left = vor__orient_query(&s[w], &s[c], q) > 0;
+        unsigned out = vor__vertex_index(t, w_left ? l : r);
+        l = w_left ? w : l;
+        r = w_left ? r : w;
+        slot = t->n[(out == 3u) ? 0u : out];
+    }
+    return VOR__NONE; /* outside (or, on a broken mesh only, out of steps) */
+}
+
+int vor_locate(const vor_t *d, vor_point_t q, uint32_t hint, uint32_t ids[3])
+{
+    if ((d == NULL) || (ids == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t start;
+    int err = query_start(d, q.x, q.y, hint, &start);
+    if (err != VOR_OK) {
+        return err;
+    }
+    if (d->vertex_count < 3u) {
+        return VOR_ERR_OUTSIDE; /* no triangle */
+    }
+    bool tie = false;
+    uint32_t c = walk_to_nearest(d, &q, start, &tie);
+    vor_index_t slot = locate_from(d, &q, (vor_index_t)c);
+    if (slot == VOR__NONE) {
+        return VOR_ERR_OUTSIDE;
+    }
+    vor_index_t v[3];
+    vor__vertices(&d->triangles[slot], v);
+    ids[0] = v[0];
+    ids[1] = v[1];
+    ids[2] = v[2];
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Sites within a distance (vor_within)                                */
+
+/* Is |q - p|^2 <= r2, exactly? Each square is below 2^64 (differences
+ * below 2^32), their sum below 2^65: a carry out means farther. */
+static bool in_disc(const vor_point_t *q, const vor_point_t *p, uint64_t r2)
+{
+    uint32_t dx = vor__mw_magnitude((int64_t)q->x - p->x);
+    uint32_t dy = vor__mw_magnitude((int64_t)q->y - p->y);
+    uint64_t a = vor__mul_u32(dx, dx);
+    uint64_t sum = a + vor__mul_u32(dy, dy);
+    return (sum >= a) && (sum <= r2);
+}
+
+/* The search tree of vor_within: a site p farther from q than the
+ * nearest sites has a mesh neighbour strictly closer to q (the shrinking
+ * disc of vor_nearest_k), and its parent is its first neighbour in the
+ * order of the k nearest (ranks_before); the nearest sites are the roots.
+ * Is p a child of v: in the disc, not a root, and no neighbour of p
+ * before v? */
+static bool is_child(const vor_t *d, const vor_point_t *q, uint64_t r2, uint32_t best,
+                     uint32_t v, uint32_t p)
+{
+    const vor_point_t *s = d->sites;
+    if (!in_disc(q, &s[p], r2) || (vor__closer_sign(q, &s[p], &s[best], NULL) == 0) ||
+        ranks_before(d, q, p, v)) {
+        return false;
+    }
+    vor_neighbour_iter_t it;
+    uint32_t n = 0; /* set when the fan answers: said for the prover */
+    uint32_t third;
+    vor__fan_begin(&it, d, p);
+    while (vor__fan_next(&it, &n, &third)) {
+        if (ranks_before(d, q, n, v)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+/* The parent of p (not a root): its first neighbour in rank order. */
+static uint32_t parent_of(const vor_t *d, const vor_point_t *q, uint32_t p)
+{
+    vor_neighbour_iter_t it;
+    uint32_t n = 0;
+    uint32_t third;
+    uint32_t parent = p;
+    vor__fan_begin(&it, d, p);
+    while (vor__fan_next(&it, &n, &third)) {
+        parent = ((parent == p) || ranks_before(d, q, n, parent)) ? n : parent;
+    }
+    return parent;
+}
+
+/* v's first child in its fan's order after neighbour `after` (VOR__NONE:
+ * from the fan's start); VOR__NONE when there is none. */
+static uint32_t next_child(const vor_t *d, const vor_point_t *q, uint64_t r2, uint32_t best,
+                           uint32_t v, uint32_t after)
+{
+    vor_neighbour_iter_t it;
+    uint32_t n = 0;
+    uint32_t third;
+    bool past = after == VOR__NONE;
+    vor__fan_begin(&it, d, v);
+    while (vor__fan_next(&it, &n, &third)) {
+        if (past && is_child(d, q, r2, best, v, n)) {
+            return n;
+        }
+        past = past || (n == after);
+    }
+    return VOR__NONE;
+}
+
+/*
+ * The sites in the disc, by a depth-first walk of the search tree with
+ * no stack: down to a node's first child; at a node without more
+ * children, up to its parent and on to the parent's next child; at a
+ * root, on to the next root around the nearest circle (vor_nearest's
+ * walk). The disc's sites form a subtree of every root in the disc: a
+ * site's parent is strictly closer to q, so in the disc too. Each site
+ * is entered once and left once: at most 2 v + 1 steps, the bound kept
+ * on a broken mesh. Writes the first `room` sites found to ids[] (none
+ * when room is 0); returns how many there are.
+ */
+static uint32_t disc_walk(const vor_t *d, const vor_point_t *q, uint64_t r2, uint32_t best,
+                          bool tie, uint32_t *ids, uint32_t room)
+{
+    if (!in_disc(q, &d->sites[best], r2)) {
+        return 0;
+    }
+    uint32_t count = 1;
+    if (room > 0u) {
+        ids[0] = best;
+    }
+    uint32_t v = best;
+    uint32_t from = VOR__NONE; /* the child of v just finished */
+    for (uint32_t left = (2u * d->vertex_count) + 1u; left > 0u; left--) {
+        uint32_t next = next_child(d, q, r2, best, v, from);
+        if ((next == VOR__NONE) && (vor__closer_sign(q, &d->sites[v], &d->sites[best], NULL) == 0)) {
+            next = tie ? next_on_circle(d, q, best, v) : best; /* the next root */
+            if (next == best) {
+                break;
+            }
+        }
+        if (next == VOR__NONE) {
+            from = v;
+            v = parent_of(d, q, v);
+            continue;
+        }
+        if (count < room) {
+            ids[count] = next;
+        }
+        count++;
+        v = next;
+        from = VOR__NONE;
+    }
+    return count;
+}
+
+/* Moves a[root] down the max-heap a[0 .. n) to its place: each step at
+ * least doubles root, so fewer than 32 steps. */
+static void heap_sift(uint32_t *a, uint32_t root_in, uint32_t n)
+{
+    uint32_t root = root_in;
+    uint32_t child = (2u * root) + 1u;
+    while (child < n) {
+        uint32_t pick = child;
+        if (((child + 1u) < n) && (a[child + 1u] > a[child])) {
+            pick = child + 1u;
+        }
+        if (a[root] >= a[pick]) {
+            break;
+        }
+        uint32_t top = a[root];
+        a[root] = a[pick];
+        a[pick] = top;
+        root = pick;
+        child = (2u * root) + 1u;
+    }
+}
+
+/* Heapsort of a[0 .. n), increasing: in place, O(n log n), no recursion
+ * (the library has no libc). */
+static void sort_increasing(uint32_t *a, uint32_t n)
+{
+    for (uint32_t i = n / 2u; i > 0u; i--) {
+        heap_sift(a, i - 1u, n);
+    }
+    for (uint32_t end = n; end > 1u; end--) {
+        uint32_t top = a[0];
+        a[0] = a[end - 1u];
+        a[end - 1u] = top;
+        heap_sift(a, 0, end - 1u);
+    }
+}
+
+int vor_within(const vor_t *d, vor_point_t q, uint64_t r2, uint32_t hint, uint32_t *ids,
+               uint32_t capacity, uint32_t *count)
+{
+    if ((d == NULL) || (count == NULL) || ((ids == NULL) && (capacity > 0u))) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t best;
+    int err = query_start(d, q.x, q.y, hint, &best);
+    if (err != VOR_OK) {
+        return err;
+    }
+    bool tie = false;
+    if (d->vertex_count >= 2u) {
+        best = walk_to_nearest(d, &q, best, &tie);
+    }
+    /* a capacity that holds every site takes one walk; a smaller one is
+     * counted first, so that nothing is written when it is too small */
+    uint32_t room = (capacity >= d->vertex_count) ? capacity : 0u;
+    uint32_t needed = disc_walk(d, &q, r2, best, tie, ids, room);
+    if (needed > capacity) {
+        *count = needed;
+        return VOR_ERR_BUFFER;
+    }
+    if (room == 0u) {
+        (void)disc_walk(d, &q, r2, best, tie, ids, capacity);
+    }
+    sort_increasing(ids, needed);
+    *count = needed;
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Flat export (vor_triangles_export)                                  */
+
+/* The triangles vor_triangles_next lists: the reported ones among the
+ * used slots, in increasing slot order. */
+static uint32_t reported_count(const vor_t *d)
+{
+    uint32_t n = 0;
+    if (d->vertex_count < 2u) {
+        return 0; /* no triangle slots: a one-site arena may have none */
+    }
+    uint32_t end = vor__used_slots_end(d);
+    for (uint32_t s = vor__next_used_slot(d, 0); s < end; s = vor__next_used_slot(d, s + 1u)) {
+        n += vor__reported(d->sites, &d->triangles[s]) ? 1u : 0u;
+    }
+    return n;
+}
+
+int vor_triangles_count(const vor_t *d, uint32_t *count)
+{
+    if ((d == NULL) || (count == NULL)) {
+        return VOR_ERR_ARG;
+    }
+    *count = reported_count(d);
+    return VOR_OK;
+}
+
+/* The index of the triangle whose slot is `slot` among the n triangles
+ * whose increasing slots are keys[0], keys[3], ..; VOR__NONE when none
+ * (a triangle that is not reported). Binary search: O(log n). */
+static uint32_t triangle_of_slot(const uint32_t *keys, uint32_t n, uint32_t slot)
+{
+    uint32_t low = 0;
+    uint32_t high = n;
+    while (low < high) { /* the range halves each step */
+        uint32_t middle = low + ((high - low) / 2u);
+        uint32_t key = keys[3u * middle];
+        if (key == slot) {
+            return middle;
+        }
+        if (key < slot) {
+            low = middle + 1u;
+        } else {
+            high = middle;
+        }
+    }
+    return VOR__NONE;
+}
+
+/*
+ * The triangles in the iterator's order, then the twins. Without other
+ * memory: triangles[3 t] first holds triangle t's slot (the slots
+ * increase with t), which the twins' binary search reads; then each is
+ * replaced by the triangle's vertices, which the mesh still holds.
+ * Half-edge 3 t + k runs from vertex k to vertex k + 1 (mod 3) of
+ * triangle t, the edge opposite vertex k + 2 in the mesh; its twin runs
+ * back in the triangle across, at the index of that triangle's vertex
+ * k + 1 (mod 3) of t.
+ */
+int vor_triangles_export(const vor_t *d, uint32_t *triangles, uint32_t *halfedges,
+                         uint32_t capacity, uint32_t *count)
+{
+    if ((d == NULL) || (count == NULL) || ((triangles == NULL) && (capacity > 0u))) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t n = reported_count(d);
+    if (n > capacity) {
+        *count = n;
+        return VOR_ERR_BUFFER;
+    }
+    const vor__tri_t *tri = d->triangles;
+    uint32_t end = vor__used_slots_end(d);
+    uint32_t t = 0;
+    for (uint32_t s = (n > 0u) ? vor__next_used_slot(d, 0) : end; (s < end) && (t < n);
+         s = vor__next_used_slot(d, s + 1u)) {
+        if (vor__reported(d->sites, &tri[s])) {
+            triangles[3u * t] = s;
+            t++;
+        }
+    }
+    for (uint32_t i = 0; (halfedges != NULL) && (i < n); i++) {
+        const vor__tri_t *at = &tri[triangles[3u * i]];
+        for (unsigned k = 0; k < 3u; k++) {
+            vor_index_t across = at->n[vor__prev(k)];
+            uint32_t j = triangle_of_slot(triangles, n, across);
+            unsigned back = vor__vertex_index(&tri[across], vor__vertex(at, vor__next(k)));
+            /* back < 3: the triangle across has the edge (a valid mesh) */
+            halfedges[(3u * i) + k] = (j == VOR__NONE) ? VOR_HALFEDGE_NONE : ((3u * j) + back);
+        }
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        vor_index_t v[3];
+        vor__vertices(&tri[triangles[3u * i]], v);
+        triangles[3u * i] = v[0];
+        triangles[(3u * i) + 1u] = v[1];
+        triangles[(3u * i) + 2u] = v[2];
+    }
+    *count = n;
+    return VOR_OK;
+}
+
 int vor_tracker_begin_checked(vor_tracker_t *tracker, const vor_t *d, uint32_t config)
 {
     if (config != VOR_CONFIG_FINGERPRINT) {

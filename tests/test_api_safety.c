@@ -146,6 +146,8 @@ static void check_small_hints(void)
         bad += vor_insert_near(&diagram, (vor_point_t){9, 9}, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
         bad += vor_nearest(&diagram, (vor_point_t){9, 9}, hint, &out) == VOR_ERR_ARG ? 0u : 1u;
         bad += vor_nearest_k(&diagram, (vor_point_t){9, 9}, hint, 2, list, &found) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_locate(&diagram, (vor_point_t){9, 9}, hint, list) == VOR_ERR_ARG ? 0u : 1u;
+        bad += vor_within(&diagram, (vor_point_t){9, 9}, 5, hint, list, 4, &found) == VOR_ERR_ARG ? 0u : 1u;
         bad += (out == 77 && found == 77 && list[0] == 77 && unchanged()) ? 0u : 1u;
     }
     CHECK(bad == 0, "one-vertex diagram: %u non-site hints accepted or wrote", bad);
@@ -153,6 +155,11 @@ static void check_small_hints(void)
               vor_nearest_k(&diagram, (vor_point_t){9, 9}, 0, 2, list, &found) == VOR_OK && found == 1u &&
               list[0] == 0u,
           "one-vertex diagram: its site as the hint");
+    list[0] = 77;
+    CHECK(vor_locate(&diagram, (vor_point_t){-40, 1234}, 0, list) == VOR_ERR_OUTSIDE && list[0] == 77 &&
+              vor_within(&diagram, (vor_point_t){-40, 1234}, 0, 0, list, 4, &found) == VOR_OK && found == 1u &&
+              list[0] == 0u && list[1] == 77 && unchanged(),
+          "one-vertex diagram: no triangle; its site within 0");
     CHECK(vor_insert_near(&diagram, (vor_point_t){-40, 1234}, VOR_NO_HINT, &out) == VOR_ERR_DUPLICATE &&
               out == 0u && unchanged(),
           "one-vertex diagram: a copy again");
@@ -347,6 +354,38 @@ static void check_reads(void)
               vor_nearest_k(&diagram, (vor_point_t){0, 0}, SAFE_SITES + 7u, 3, list, &found) == VOR_ERR_ARG &&
               out == 77 && found == 77 && list[0] == 77 && list[2] == 77 && unchanged(),
           "nearest: NULL, bad hints");
+    const uint32_t bad_hints[3] = {SAFE_SITES, SAFE_SITES + 7u, VOR_NO_HINT - 1u};
+    unsigned refused = 0;
+    for (unsigned k = 0; k < 3u; k++) {
+        refused += vor_locate(&diagram, (vor_point_t){500, 500}, bad_hints[k], list) == VOR_ERR_ARG;
+        refused += vor_within(&diagram, (vor_point_t){500, 500}, 1000000, bad_hints[k], list, 3, &found) ==
+                   VOR_ERR_ARG;
+    }
+    CHECK(refused == 6u && vor_locate(NULL, (vor_point_t){0, 0}, VOR_NO_HINT, list) == VOR_ERR_ARG &&
+              vor_locate(&diagram, (vor_point_t){0, 0}, VOR_NO_HINT, NULL) == VOR_ERR_ARG &&
+              vor_locate(&diagram, (vor_point_t){-9, -9}, VOR_NO_HINT, list) == VOR_ERR_OUTSIDE &&
+              vor_within(NULL, (vor_point_t){0, 0}, 9, VOR_NO_HINT, list, 3, &found) == VOR_ERR_ARG &&
+              vor_within(&diagram, (vor_point_t){0, 0}, 9, VOR_NO_HINT, NULL, 3, &found) == VOR_ERR_ARG &&
+              vor_within(&diagram, (vor_point_t){0, 0}, 9, VOR_NO_HINT, list, 3, NULL) == VOR_ERR_ARG &&
+              found == 77 && list[0] == 77 && list[2] == 77 && unchanged(),
+          "locate, within: NULL, bad hints, outside");
+    /* too small a buffer: the count needed, nothing else written */
+    CHECK(vor_within(&diagram, (vor_point_t){4000, 2000}, UINT64_MAX, VOR_NO_HINT, list, 3, &found) ==
+                  VOR_ERR_BUFFER &&
+              found == SAFE_SITES && list[0] == 77 && list[2] == 77 && unchanged(),
+          "within: buffer too small");
+    uint32_t triangles = 77;
+    found = 77;
+    CHECK(vor_triangles_count(NULL, &triangles) == VOR_ERR_ARG && vor_triangles_count(&diagram, NULL) == VOR_ERR_ARG &&
+              vor_triangles_export(NULL, list, list, 1, &found) == VOR_ERR_ARG &&
+              vor_triangles_export(&diagram, NULL, list, 1, &found) == VOR_ERR_ARG &&
+              vor_triangles_export(&diagram, list, list, 1, NULL) == VOR_ERR_ARG && triangles == 77 &&
+              found == 77 && list[0] == 77 && unchanged(),
+          "count, export: NULL");
+    CHECK(vor_triangles_count(&diagram, &triangles) == VOR_OK && triangles > 1u &&
+              vor_triangles_export(&diagram, list, list + 1, 1, &found) == VOR_ERR_BUFFER &&
+              found == triangles && list[0] == 77 && list[2] == 77 && unchanged(),
+          "export: buffer too small");
 
     static vor_tracker_t zeroed;
     vor_tracker_t tracker;
@@ -751,6 +790,10 @@ static void check_zeroed_diagram(void)
     bad += vor_build_dc_forked(&zeroed, points, 1, TEST_SPLIT(VOR_DC_XSPLIT), NULL, NULL) != VOR_ERR_FULL;
     bad += vor_nearest(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, &out) != VOR_ERR_EMPTY;
     bad += vor_nearest_k(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, 2, list, &found) != VOR_ERR_EMPTY;
+    bad += vor_locate(&zeroed, (vor_point_t){1, 1}, VOR_NO_HINT, ids) != VOR_ERR_EMPTY;
+    bad += vor_within(&zeroed, (vor_point_t){1, 1}, 4, VOR_NO_HINT, list, 2, &found) != VOR_ERR_EMPTY;
+    bad += vor_triangles_export(&zeroed, NULL, NULL, 0, &count) != VOR_OK || count != 0u;
+    count = 77;
     bad += vor_cell(&zeroed, 0, &box, poly, 4, &count) != VOR_ERR_ARG;
     vor_centroid_t centroid;
     bad += vor_cell_centroid(&zeroed, 0, &box, NULL, 0, &centroid) != VOR_ERR_ARG;

@@ -46,6 +46,7 @@ links() {
     case $1 in
     insert_nearest) echo "bucket_grid incremental mesh predicates queries" ;;
     build_nearest)  echo "bucket_grid incremental insertion_order mesh predicates queries" ;;
+    locate)         echo "bucket_grid incremental insertion_order mesh predicates queries" ;;
     move)           echo "bucket_grid dynamic incremental mesh predicates queries" ;;
     geometry)       echo "bucket_grid geometry incremental insertion_order mesh predicates queries" ;;
     constrain)      echo "bucket_grid cdt crossing dynamic incremental insertion_order mesh predicates" ;;
@@ -76,7 +77,7 @@ print(" ".join(sorted(files)))
 PY
 }
 # In the order of the table: from the smallest firmware to everything.
-FEATURES="insert_nearest build_nearest move geometry constrain power power_cells interpolate laplace field raster_euclid raster_all everything"
+FEATURES="insert_nearest build_nearest locate move geometry constrain power power_cells interpolate laplace field raster_euclid raster_all everything"
 LEVELS="-Os -O2"
 
 # Sums the libvor input sections of a GNU ld map: "flash ram". An input

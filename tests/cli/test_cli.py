@@ -204,6 +204,79 @@ def nearest_cases(rng, tmp):
           f"nearest bad query line: {r.returncode} {r.stderr!r}")
 
 
+def locate_within_cases(rng, tmp):
+    """vor locate against the triangles of vor delaunay, each tested with
+    exact orientations and the documented tie rule (the query moved up by
+    e, right by e^4); vor within against exact squared distances."""
+    import os
+
+    def orient(a, b, q):
+        d = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+        if d == 0:
+            d = b[0] - a[0]
+        if d == 0:
+            d = a[1] - b[1]
+        return d
+
+    sets = {
+        "random": [(rng.randint(-400, 400) * 2, rng.randint(-400, 400) * 2) for _ in range(150)],
+        "grid": [(x * 10, y * 10) for x in range(10) for y in range(10)],
+        "duplicates": [(rng.randint(0, 5) * 8, rng.randint(0, 5) * 8) for _ in range(60)],
+        "collinear": [(3 * t, 5 * t) for t in (rng.randint(-50, 50) for _ in range(30))],
+        "wide": [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(60)],
+        "two": [(0, 0), (5, 5)],
+    }
+    for name, sites in sets.items():
+        lo_x, hi_x = min(x for x, _ in sites), max(x for x, _ in sites)
+        lo_y, hi_y = min(y for _, y in sites), max(y for _, y in sites)
+        queries = [(rng.randint(lo_x - 3, hi_x + 3), rng.randint(lo_y - 3, hi_y + 3)) for _ in range(150)]
+        queries += sites[:30] + [((a[0] + b[0]) // 2, (a[1] + b[1]) // 2) for a, b in zip(sites, sites[1:40])]
+        queries += [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(20)]
+        sp, qp = os.path.join(tmp, name + ".lsites"), os.path.join(tmp, name + ".lqueries")
+        with open(sp, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in sites))
+        with open(qp, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in queries))
+        triangles = [tuple(int(v) for v in line.split()[1:]) for line in run(["delaunay", sp], "").stdout.splitlines()]
+        r = run(["locate", sp, qp], "")
+        lines = r.stdout.splitlines()
+        check(r.returncode == 0 and len(lines) == len(queries), f"locate {name}: {r.returncode} {r.stderr}")
+        wrong = 0
+        for q, line in zip(queries, lines):
+            holding = [t for t in triangles
+                       if all(orient(sites[t[k]], sites[t[(k + 1) % 3]], q) > 0 for k in range(3))]
+            want = "outside" if not holding else "t %d %d %d" % holding[0]
+            wrong += len(holding) > 1 or line != want
+        check(wrong == 0, f"locate {name}: {wrong} of {len(queries)} answers differ from brute force")
+        first = {}
+        for i, p in enumerate(sites):
+            first.setdefault(p, i)
+        for r2 in (0, 100, 12345, 2**62):
+            r = run(["within", "--r2", str(r2), sp, qp], "")
+            lines = r.stdout.split("\n")[:-1]
+            check(r.returncode == 0 and len(lines) == len(queries), f"within {name}: {r.returncode} {r.stderr}")
+            wrong = 0
+            for (qx, qy), line in zip(queries, lines):
+                want = sorted(i for i in first.values() if (sites[i][0] - qx) ** 2 + (sites[i][1] - qy) ** 2 <= r2)
+                wrong += [int(v) for v in line.split()] != want or (not want and line != "")
+            check(wrong == 0, f"within --r2 {r2} {name}: {wrong} of {len(queries)} lines differ from brute force")
+    sp = os.path.join(tmp, "grid.lsites")
+    for args, reason in ((["within", sp, sp], "--r2"), (["within", "--r2", "-1", sp, sp], "'-1'"),
+                         (["within", "--r2", "x", sp, sp], "'x'"), (["locate", sp], "missing QUERIES"),
+                         (["locate", "--r2", "1", sp, sp], "unknown option '--r2'"),
+                         (["within", "--r2", "9223372036854775808", sp, sp], "9223372036854775808")):
+        r = run(args, "")
+        check(r.returncode == 2 and r.stdout == "" and reason in r.stderr, f"vor {' '.join(args)}: {r.returncode} {r.stderr!r}")
+    # --scale: coordinates times S, R2 times S^2
+    r = run(["within", "--r2", "0.25", "--scale", "10", "-", sp], "0 0\n0.5 0\n")
+    check(r.returncode == 0 and r.stdout == "0 1\n" + "\n" * 99, f"within --scale: {r.returncode} {r.stdout[:20]!r} {r.stderr!r}")
+    with open(os.path.join(tmp, "lbad"), "w") as f:
+        f.write("1 2\n3\n")
+    r = run(["locate", sp, os.path.join(tmp, "lbad")], "")
+    check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith(f"error: {os.path.join(tmp, 'lbad')}:2: "),
+          f"locate bad query line: {r.returncode} {r.stderr!r}")
+
+
 def raster_cases(rng, tmp):
     """vor raster --labels against a Python brute force: exact squared
     distances in big integers, ties to the smaller index."""
@@ -1105,7 +1178,8 @@ def version_cases():
               f"--version: {r.returncode} {r.stdout!r}, expected {expected!r}")
 
 
-COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt", "power", "interpolate")
+COMMANDS = ("predicates", "delaunay", "nearest", "raster", "cells", "draw", "ops", "cdt", "power", "interpolate",
+            "locate", "within")
 
 
 def help_cases(tmp):
@@ -2067,6 +2141,7 @@ def main():
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         nearest_cases(rng, tmp)
+        locate_within_cases(rng, tmp)
         raster_cases(rng, tmp)
         cells_cases(rng, tmp)
         raster_metric_cases(rng, tmp)

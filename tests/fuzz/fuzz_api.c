@@ -708,6 +708,85 @@ static void check_field(model_t *m, vor_point_t q, uint32_t sites)
     FUZZ_REQUIRE(most == most_seen, "field: max_neighbours wrong");
 }
 
+/* vor_locate at q against every triangle the iterator lists, each
+ * tested with exact orientations and the documented tie rule (q moved up
+ * by e, then right by e^4); vor_within at q for r2 against the model's
+ * exact distances. Neither reads fuzz bytes (the corpora keep their
+ * meaning): r2 is the squared distance of the model's site `at` in q's
+ * order, less one when `less`, or 0 and every uint64. */
+static int tie_orient(vor_point_t a, vor_point_t b, vor_point_t q)
+{
+    int o = fuzz_orient(a, b, q);
+    o = o ? o : (b.x > a.x) - (b.x < a.x);
+    return o ? o : (a.y > b.y) - (a.y < b.y);
+}
+
+static void check_locate(model_t *m, vor_point_t q, uint32_t hint, uint32_t n)
+{
+    uint32_t ids[3] = {7u, 7u, 7u}, v[3], holding = 0, want[3] = {0, 0, 0};
+    vor_triangle_iter_t it;
+    FUZZ_REQUIRE(vor_triangles_begin(&it, &m->d) == VOR_OK, "locate: triangles_begin");
+    while (vor_triangles_next(&it, v))
+        if (tie_orient(m->point[v[0]], m->point[v[1]], q) > 0 &&
+            tie_orient(m->point[v[1]], m->point[v[2]], q) > 0 &&
+            tie_orient(m->point[v[2]], m->point[v[0]], q) > 0) {
+            holding++;
+            memcpy(want, v, sizeof want);
+        }
+    FUZZ_REQUIRE(holding <= 1u, "locate: two triangles hold the moved point");
+    snapshot(m);
+    int result = vor_locate(&m->d, q, hint, ids);
+    FUZZ_REQUIRE(unchanged(m), "locate changed the diagram");
+    if (!hint_valid(m, hint) || n == 0) {
+        FUZZ_REQUIRE(result == (n == 0 && hint_valid(m, hint) ? VOR_ERR_EMPTY : VOR_ERR_ARG) ||
+                         (n == 0 && result < 0),
+                     "locate: bad hint or empty accepted");
+        FUZZ_REQUIRE(ids[0] == 7u && ids[1] == 7u && ids[2] == 7u, "locate: wrote on an error");
+        return;
+    }
+    if (holding == 0u) {
+        FUZZ_REQUIRE(result == VOR_ERR_OUTSIDE && ids[0] == 7u, "locate: not outside, or wrote");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK && memcmp(ids, want, sizeof want) == 0, "locate: wrong triangle");
+}
+
+static void check_within(model_t *m, vor_point_t q, uint32_t hint, const uint32_t *order, uint32_t n,
+                         uint32_t at, int less)
+{
+    uint64_t r2 = 0;
+    if (at < n) {
+        unsigned __int128 d2 = fuzz_distance2(q.x, q.y, m->point[order[at]]);
+        r2 = d2 > UINT64_MAX ? UINT64_MAX : (uint64_t)d2;
+        r2 -= (less && r2 > 0u && d2 <= UINT64_MAX) ? 1u : 0u;
+    } else if (at == n) {
+        r2 = UINT64_MAX;
+    }
+    uint32_t want[MOST_SITES], count = 0;
+    for (uint32_t i = 0; i < m->count; i++)
+        if (is_site(m, i) && fuzz_distance2(q.x, q.y, m->point[i]) <= r2)
+            want[count++] = i;
+    uint32_t got[MOST_SITES + 1u], found = 0xdeadbeefu;
+    memset(got, 0xa5, sizeof got);
+    snapshot(m);
+    int result = vor_within(&m->d, q, r2, hint, got, MOST_SITES, &found);
+    FUZZ_REQUIRE(unchanged(m), "within changed the diagram");
+    if (!hint_valid(m, hint) || n == 0) {
+        FUZZ_REQUIRE(result < 0 && found == 0xdeadbeefu && got[0] == 0xa5a5a5a5u,
+                     "within: bad hint or empty accepted, or wrote");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK && found == count && got[count] == 0xa5a5a5a5u, "within: wrong count");
+    FUZZ_REQUIRE(memcmp(got, want, count * sizeof got[0]) == 0, "within: wrong sites or order");
+    if (count > 0u) {
+        memset(got, 0xa5, sizeof got);
+        found = 0;
+        result = vor_within(&m->d, q, r2, hint, got, count - 1u, &found);
+        FUZZ_REQUIRE(result == VOR_ERR_BUFFER && found == count && got[0] == 0xa5a5a5a5u && unchanged(m),
+                     "within: a short buffer accepted, or written");
+    }
+}
+
 static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
 {
     vor_point_t q = fuzz_point(r, previous);
@@ -717,6 +796,8 @@ static void op_nearest(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     uint32_t id = 0xdeadbeefu;
     check_natural(m, q, hint, n, (q.x & 1) != 0);
     check_field(m, q, n);
+    check_locate(m, q, hint, n);
+    check_within(m, q, hint, order, n, (uint32_t)q.y % (n + 2u), (q.x & 2) != 0);
     snapshot(m);
     int result = vor_nearest(&m->d, q, hint, &id);
     FUZZ_REQUIRE(unchanged(m), "nearest changed the diagram");
@@ -1017,6 +1098,38 @@ static void op_triangles(model_t *m)
                      "voronoi_vertex: a non-site accepted, or wrote");
     }
     FUZZ_REQUIRE(triangles == (collinear ? 0u : 2u * n - h - 2u), "triangles: not 2n - h - 2");
+
+    /* the flat export: the iterator's triangles in its order, each
+     * half-edge's twin the reversed pair (by a search of them all) */
+    {
+        uint32_t flat[3u * VOR_TRIANGLES_MAX(MOST_SITES) + 1u], twins[3u * VOR_TRIANGLES_MAX(MOST_SITES) + 1u];
+        uint32_t count = 0xdeadbeefu, listed = 0;
+        memset(flat, 0xa5, sizeof flat);
+        memset(twins, 0xa5, sizeof twins);
+        snapshot(m);
+        if (triangles > 0u) {
+            FUZZ_REQUIRE(vor_triangles_export(&m->d, flat, twins, triangles - 1u, &count) == VOR_ERR_BUFFER &&
+                             count == triangles && flat[0] == 0xa5a5a5a5u && twins[0] == 0xa5a5a5a5u,
+                         "export: a short buffer accepted, or written");
+        }
+        FUZZ_REQUIRE(vor_triangles_count(&m->d, &count) == VOR_OK && count == triangles &&
+                         vor_triangles_export(&m->d, flat, twins, VOR_TRIANGLES_MAX(MOST_SITES), &count) == VOR_OK &&
+                         count == triangles && unchanged(m) && flat[3u * triangles] == 0xa5a5a5a5u &&
+                         twins[3u * triangles] == 0xa5a5a5a5u,
+                     "export: refused, wrong count or wrote past");
+        FUZZ_REQUIRE(vor_triangles_begin(&it, &m->d) == VOR_OK, "export: triangles_begin");
+        while (vor_triangles_next(&it, ids)) {
+            FUZZ_REQUIRE(memcmp(ids, &flat[3u * listed], sizeof ids) == 0, "export: not the iterator's triangle");
+            listed++;
+        }
+        for (uint32_t e = 0; e < 3u * triangles; e++) {
+            uint32_t from = flat[e], to = flat[e % 3u == 2u ? e - 2u : e + 1u], twin = VOR_HALFEDGE_NONE;
+            for (uint32_t f = 0; f < 3u * triangles; f++)
+                if (flat[f] == to && flat[f % 3u == 2u ? f - 2u : f + 1u] == from)
+                    twin = f;
+            FUZZ_REQUIRE(twins[e] == twin, "export: a wrong twin");
+        }
+    }
 
     uint32_t site, hull = 0;
     vor_hull_iter_t hi;

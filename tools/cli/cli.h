@@ -210,7 +210,7 @@ double cli_seconds(void);
  * example. */
 extern const char cli_predicates_help[], cli_delaunay_help[], cli_nearest_help[],
     cli_raster_help[], cli_cells_help[], cli_draw_help[], cli_ops_help[], cli_cdt_help[],
-    cli_power_help[], cli_interpolate_help[];
+    cli_power_help[], cli_interpolate_help[], cli_locate_help[], cli_within_help[];
 
 /* Subcommands: each takes its arguments after the subcommand name and
  * returns the process exit status. */
@@ -224,6 +224,8 @@ int cli_ops(int argc, char **argv);
 int cli_cdt(int argc, char **argv);
 int cli_power(int argc, char **argv);
 int cli_interpolate(int argc, char **argv);
+int cli_locate(int argc, char **argv);
+int cli_within(int argc, char **argv);
 
 /* vor cdt's parts, for vor draw too (cdt.c): the constraints of a file as
  * pairs of site ids mapped through first[] (a point's first site; a site

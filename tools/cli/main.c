@@ -10,6 +10,8 @@
  *   vor ops [--capacity N] FILE   a dynamic diagram driven by a script
  *   vor interpolate SITES QUERIES  exact natural-neighbour interpolation
  *                             (Sibson's; --laplace: Laplace's)
+ *   vor locate SITES QUERIES  the Delaunay triangle holding each query
+ *   vor within --r2 R2 SITES QUERIES  the sites within a squared distance
  *   vor --version             the library version the tool was built with
  *   vor --help, vor help [COMMAND], vor COMMAND --help   help on stdout
  */
@@ -34,6 +36,8 @@ static const struct {
     {"cdt", cli_cdt, "constrained Delaunay triangulation (SITES CONSTRAINTS; --domain)"},
     {"power", cli_power, "regular triangulation and hidden sites of weighted sites (x y w)"},
     {"interpolate", cli_interpolate, "exact natural-neighbour interpolation (SITES: x y value; QUERIES; --laplace)"},
+    {"locate", cli_locate, "the Delaunay triangle holding each query point, or outside"},
+    {"within", cli_within, "the sites within squared distance R2 of each query (--r2 R2)"},
 };
 
 /* The help of each command (cli.h); a command without one shows its
@@ -52,6 +56,8 @@ static const struct {
     {"cdt", cli_cdt_help},
     {"power", cli_power_help},
     {"interpolate", cli_interpolate_help},
+    {"locate", cli_locate_help},
+    {"within", cli_within_help},
 };
 
 static void print_usage(FILE *out)

@@ -24,7 +24,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k geometry cells centroid raster field interpolate large cdt power power_cells power_dynamic}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid raster field interpolate large cdt power power_cells power_dynamic}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
@@ -52,12 +52,13 @@ options_of() {
     # centroid, power_cells, field, interpolate: the same, and the scratch
     # at a fixed address (far_sites.h)
     centroid | power_cells | field | interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
-    # queries, nearest_k, power_dynamic: loops over a site's fan (the
-    # walk, the k nearest's rounds) run up to 7 turns on these diagrams;
+    # queries, nearest_k, locate, power_dynamic: loops over a site's fan
+    # (the walk, the k nearest's rounds, the disc's tree) run up to 7 turns
+    # on these diagrams;
     # EVA widens the slot they read next after 3 merged turns (to an
     # interval past the triangles), after 12 it has met every slot of the
     # fan
-    queries | nearest_k | power_dynamic) echo "-eva-split-return full -eva-widening-delay 12" ;;
+    queries | nearest_k | locate | power_dynamic) echo "-eva-split-return full -eva-widening-delay 12" ;;
     # -eva-split-return full: a call's states stay apart by its return
     # value, so a caller's `if (call() != VOR_OK)` leaves only the states
     # where the call succeeded (vor_init's failures leave *d unwritten).
