@@ -22,5 +22,6 @@ int main(void)
     test_group("fork_join", test_fork_join);
     test_group("cdt", test_cdt);
     test_group("power", test_power);
+    test_group("clip", test_clip);
     return test_finish();
 }

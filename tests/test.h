@@ -131,5 +131,6 @@ void test_cdt(void);
 void test_power(void);
 void test_interpolate(void);
 void test_field(void);
+void test_clip(void);
 
 #endif
