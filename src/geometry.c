@@ -1737,6 +1737,16 @@ static void clip_vertex(const clip_frame_t *f, uint32_t a, uint32_t b, geo_point
     (void)met;
 }
 
+/* Do the intervals between a and b and between c and e meet? */
+static bool spans_meet(int32_t a, int32_t b, int32_t c, int32_t e)
+{
+    int32_t lo1 = (a < b) ? a : b;
+    int32_t hi1 = (a < b) ? b : a;
+    int32_t lo2 = (c < e) ? c : e;
+    int32_t hi2 = (c < e) ? e : c;
+    return (lo1 <= hi2) && (lo2 <= hi1);
+}
+
 /* Is the room simple? Exact orientations of its int32 vertices: no
  * zero-length edge, consecutive edges not folding back, other edges
  * disjoint. Then the lowest vertex (smallest y, then x) is a strict
@@ -1754,14 +1764,8 @@ static bool segments_meet(const vor_point_t *a, const vor_point_t *b, const vor_
     if ((o1 != 0) || (o2 != 0)) {
         return true; /* a proper crossing, or an end on the other segment */
     }
-    /* all four collinear: do their spans overlap (x, or y when vertical)? */
-    int32_t lo1 = (a->x != b->x) ? ((a->x < b->x) ? a->x : b->x) : ((a->y < b->y) ? a->y : b->y);
-    int32_t hi1 = (a->x != b->x) ? ((a->x < b->x) ? b->x : a->x) : ((a->y < b->y) ? b->y : a->y);
-    int32_t u = (a->x != b->x) ? c->x : c->y;
-    int32_t v = (a->x != b->x) ? e->x : e->y;
-    int32_t lo2 = (u < v) ? u : v;
-    int32_t hi2 = (u < v) ? v : u;
-    return (lo1 <= hi2) && (lo2 <= hi1);
+    /* all four collinear: they meet when both their x and y spans do */
+    return spans_meet(a->x, b->x, c->x, e->x) && spans_meet(a->y, b->y, c->y, e->y);
 }
 
 static bool same_vertex(const vor_point_t *a, const vor_point_t *b)
@@ -2291,10 +2295,10 @@ static void lowest_terms(vor__limb *x, vor__limb *y, vor__limb *w)
         for (size_t i = 0; i < GEO_LIMBS; i++) {
             step[i] = g[i];
         }
-        /* shift the divisor up to the number, then subtract down */
+        /* shift the divisor up past the number (below 2^101: at most
+         * 101 shifts, within the 160 bits), then subtract down */
         unsigned shifts = 0;
-        while ((vor__mw_compare(step, numbers[k], GEO_LIMBS) <= 0) &&
-               ((step[GEO_LIMBS - 1u] >> (VOR__LIMB_WIDTH - 2u)) == 0u)) {
+        while (vor__mw_compare(step, numbers[k], GEO_LIMBS) <= 0) {
             vor__mw_shl1(step, GEO_LIMBS);
             shifts++;
         }

@@ -53,15 +53,16 @@ typedef struct {
     wide_t x, y, w;
 } exact_t;
 
-/* Every directed edge of every piece, for the tiling. */
-static exact_t edge_from[CLIP_EDGES];
-static exact_t edge_to[CLIP_EDGES];
+/* Every directed edge of every piece, for the tiling, as the library
+ * gives them (canonical: equal points have equal numbers). */
+static vor_exact_point_t edge_from[CLIP_EDGES];
+static vor_exact_point_t edge_to[CLIP_EDGES];
 static bool edge_used[CLIP_EDGES];
 static uint32_t edges;
 
 /* A piece's vertices, kept for the point tests: per site, per piece. */
 #define KEPT_PIECES 64u
-static exact_t kept[CLIP_EDGES];
+static vor_exact_point_t kept[CLIP_EDGES];
 static uint32_t kept_site[KEPT_PIECES];
 static uint32_t kept_start[KEPT_PIECES];
 static uint32_t kept_count[KEPT_PIECES];
@@ -86,6 +87,24 @@ static void to_exact(exact_t *e, const vor_exact_point_t *v)
 static bool same_exact(const exact_t *a, const exact_t *b)
 {
     return wide_equal(&a->x, &b->x) && wide_equal(&a->y, &b->y) && wide_equal(&a->w, &b->w);
+}
+
+/* Equal exact points, as the library gives them (in lowest terms). */
+static bool same_vertex(const vor_exact_point_t *a, const vor_exact_point_t *b)
+{
+    return test_same_bytes(a->x, b->x, sizeof a->x) && test_same_bytes(a->y, b->y, sizeof a->y) &&
+           test_same_bytes(a->w, b->w, sizeof a->w);
+}
+
+/* An integer point in the library's exact form: (x, y, 1). */
+static void vertex_of(vor_exact_point_t *e, vor_point_t p)
+{
+    e->point = p;
+    for (unsigned i = 0; i < VOR_EXACT_LIMBS; i++) {
+        e->x[i] = (i == 0u) ? (uint32_t)p.x : ((p.x < 0) ? 0xFFFFFFFFu : 0u);
+        e->y[i] = (i == 0u) ? (uint32_t)p.y : ((p.y < 0) ? 0xFFFFFFFFu : 0u);
+        e->w[i] = (i == 0u) ? 1u : 0u;
+    }
 }
 
 /* Is r = floor(num / den + 1/2), for den > 0? */
@@ -208,6 +227,8 @@ static const room_t rooms[] = {
                   {0, 25}, {20, 20}}},
     {"clockwise_L", 6, {{0, 0}, {0, 60}, {30, 60}, {30, 30}, {60, 30}, {60, 0}}},
     {"triangle", 3, {{-5, -3}, {67, 11}, {21, 58}}},
+    {"C", 8, {{0, 60}, {0, 0}, {60, 0}, {60, 20}, {40, 20}, {40, 40}, {60, 40}, {60, 60}}},
+    {"square_last_lowest", 4, {{60, 0}, {60, 60}, {0, 60}, {0, 0}}},
     {"zigzag", 12, {{0, 0}, {10, 5}, {20, 0}, {30, 5}, {40, 0}, {50, 5}, {60, 0}, {60, 60},
                     {40, 50}, {30, 60}, {20, 50}, {0, 60}}},
 };
@@ -244,22 +265,23 @@ static int in_room(const room_t *r, vor_point_t q)
 /* q against a kept piece: 1 strictly inside, 0 on its boundary, -1 out. */
 static int in_piece(uint32_t k, vor_point_t q)
 {
-    exact_t e;
+    static exact_t e, pa, pb;
+    static wide_t s, t, lo, hi;
     from_point(&e, q);
     int winding = 0;
-    const exact_t *v = kept + kept_start[k];
+    const vor_exact_point_t *v = kept + kept_start[k];
     uint32_t r = kept_count[k];
     for (uint32_t i = 0; i < r; i++) {
-        const exact_t *a = &v[i], *b = &v[(i + 1u) % r];
+        to_exact(&pa, &v[i]);
+        to_exact(&pb, &v[(i + 1u) % r]);
+        const exact_t *a = &pa, *b = &pb;
         int o = turn(a, b, &e);
-        wide_t s, t;
         if (o == 0) {
             /* on the segment: between the ends in x and y */
             bool between = true;
             const wide_t *ca[2] = {&a->x, &a->y}, *cb[2] = {&b->x, &b->y};
             int32_t cq[2] = {q.x, q.y};
             for (unsigned c = 0; c < 2u; c++) {
-                wide_t lo, hi;
                 wide_mul_i64(&lo, &a->w, cq[c]);
                 wide_mul_i64(&hi, &b->w, cq[c]);
                 int sa = wide_compare(ca[c], &lo); /* sign of a - q */
@@ -313,7 +335,7 @@ static bool edge_on_a_line(const room_t *r, uint32_t s, uint32_t n, const exact_
         }
     }
     for (uint32_t i = 0; i < r->m; i++) {
-        exact_t u, v;
+        static exact_t u, v;
         from_point(&u, r->v[i]);
         from_point(&v, r->v[(i + 1u) % r->m]);
         if (turn(&u, &v, a) == 0 && turn(&u, &v, b) == 0) {
@@ -343,7 +365,7 @@ static bool in_closed_room(const room_t *r, const exact_t *p)
 {
     int winding = 0;
     for (uint32_t i = 0; i < r->m; i++) {
-        exact_t a, b;
+        static exact_t a, b;
         vor_point_t pa = room_ccw(r, i), pb = room_ccw(r, (i + 1u) % r->m);
         from_point(&a, pa);
         from_point(&b, pb);
@@ -534,9 +556,9 @@ static void check_pieces(const vor_t *d, const room_t *r, uint32_t n, const char
                     kept_count[kept_pieces] = count;
                     kept_pieces++;
                     for (uint32_t i = 0; i < count; i++) {
-                        kept[edges] = v[i];
-                        edge_from[edges] = v[i];
-                        edge_to[edges] = v[(i + 1u) % count];
+                        kept[edges] = piece[i];
+                        edge_from[edges] = piece[i];
+                        edge_to[edges] = piece[(i + 1u) % count];
                         edge_used[edges] = false;
                         edges++;
                     }
@@ -563,14 +585,23 @@ static void check_pieces(const vor_t *d, const room_t *r, uint32_t n, const char
 }
 
 /* Is c on the segment a b, strictly between its ends? */
-static bool strictly_between(const exact_t *a, const exact_t *b, const exact_t *c)
+static bool strictly_between(const vor_exact_point_t *va, const vor_exact_point_t *vb,
+                             const vor_exact_point_t *vc)
 {
-    if (same_exact(a, c) || same_exact(b, c) || turn(a, b, c) != 0) {
+    static exact_t ea, eb, ec;
+    static wide_t u, v;
+    if (same_vertex(va, vc) || same_vertex(vb, vc)) {
+        return false;
+    }
+    to_exact(&ea, va);
+    to_exact(&eb, vb);
+    to_exact(&ec, vc);
+    const exact_t *a = &ea, *b = &eb, *c = &ec;
+    if (turn(a, b, c) != 0) {
         return false;
     }
     const wide_t *ca[2] = {&a->x, &a->y}, *cb[2] = {&b->x, &b->y}, *cc[2] = {&c->x, &c->y};
     for (unsigned k = 0; k < 2u; k++) {
-        wide_t u, v;
         wide_mul(&u, cc[k], &a->w);
         wide_mul(&v, ca[k], &c->w);
         int sa = wide_compare(&u, &v); /* sign of c - a */
@@ -589,8 +620,8 @@ static void cancel_edges(void)
 {
     for (uint32_t i = 0; i < edges; i++) {
         for (uint32_t j = i + 1u; j < edges && !edge_used[i]; j++) {
-            if (!edge_used[j] && same_exact(&edge_from[i], &edge_to[j]) &&
-                same_exact(&edge_to[i], &edge_from[j])) {
+            if (!edge_used[j] && same_vertex(&edge_from[i], &edge_to[j]) &&
+                same_vertex(&edge_to[i], &edge_from[j])) {
                 edge_used[i] = true;
                 edge_used[j] = true;
             }
@@ -605,13 +636,15 @@ static void cancel_edges(void)
  * then cancel again. */
 static void check_tiling(const room_t *r, const char *name)
 {
+    static vor_exact_point_t corner[CLIP_ROOM];
+    static exact_t a, b, c;
     cancel_edges();
     for (uint32_t i = 0; i < edges; i++) {
         for (uint32_t j = 0; j < edges && !edge_used[i]; j++) {
             if (edge_used[j] || j == i) {
                 continue;
             }
-            const exact_t *ends[2] = {&edge_from[j], &edge_to[j]};
+            const vor_exact_point_t *ends[2] = {&edge_from[j], &edge_to[j]};
             for (unsigned k = 0; k < 2u; k++) {
                 if (strictly_between(&edge_from[i], &edge_to[i], ends[k]) &&
                     CHECK(edges < CLIP_EDGES, "%s: too many edges to split", name)) {
@@ -626,28 +659,28 @@ static void check_tiling(const room_t *r, const char *name)
     }
     cancel_edges();
     /* the room's corners (straight angles dropped), counterclockwise */
-    exact_t corner[CLIP_ROOM];
     uint32_t corners = 0;
     for (uint32_t i = 0; i < r->m; i++) {
-        exact_t a, b, c;
         from_point(&a, room_ccw(r, (i + r->m - 1u) % r->m));
         from_point(&b, room_ccw(r, i));
         from_point(&c, room_ccw(r, (i + 1u) % r->m));
         if (turn(&a, &b, &c) != 0) {
-            corner[corners++] = b;
+            vertex_of(&corner[corners++], room_ccw(r, i));
         }
     }
     bool ok = true;
     for (uint32_t k = 0; k < corners && ok; k++) {
-        const exact_t *a = &corner[k], *b = &corner[(k + 1u) % corners];
-        exact_t at = *a;
+        const vor_exact_point_t *end = &corner[(k + 1u) % corners];
+        to_exact(&a, &corner[k]);
+        to_exact(&b, end);
+        vor_exact_point_t at = corner[k];
         uint32_t steps = 0;
-        while (ok && !same_exact(&at, b)) {
+        while (ok && !same_vertex(&at, end)) {
             uint32_t found = edges;
             for (uint32_t i = 0; i < edges && found == edges; i++) {
-                if (!edge_used[i] && same_exact(&edge_from[i], &at) &&
-                    turn(a, b, &edge_to[i]) == 0) {
-                    found = i;
+                if (!edge_used[i] && same_vertex(&edge_from[i], &at)) {
+                    to_exact(&c, &edge_to[i]);
+                    found = (turn(&a, &b, &c) == 0) ? i : edges;
                 }
             }
             ok = CHECK(found < edges && steps < edges,
@@ -913,12 +946,13 @@ static void test_wide(test_rng_t *rng)
                             "wide: site %u", s);
             while (ok && vor_clip_next(&clip, piece, CLIP_VERTICES, &count)) {
                 for (uint32_t i = 0; i < count && edges < CLIP_EDGES; i++) {
-                    to_exact(&edge_from[edges], &piece[i]);
-                    to_exact(&edge_to[edges], &piece[(i + 1u) % count]);
+                    static exact_t e;
+                    edge_from[edges] = piece[i];
+                    edge_to[edges] = piece[(i + 1u) % count];
                     edge_used[edges] = false;
-                    CHECK(in_cell(s, 8, &edge_from[edges]) &&
-                              rounds_to(&edge_from[edges].x, &edge_from[edges].w, piece[i].point.x) &&
-                              rounds_to(&edge_from[edges].y, &edge_from[edges].w, piece[i].point.y),
+                    to_exact(&e, &piece[i]);
+                    CHECK(in_cell(s, 8, &e) && rounds_to(&e.x, &e.w, piece[i].point.x) &&
+                              rounds_to(&e.y, &e.w, piece[i].point.y),
                           "wide: site %u vertex %u", s, i);
                     edges++;
                 }
@@ -942,7 +976,8 @@ static const room_t bad_rooms[] = {
     {"collinear3", 3, {{0, 0}, {20, 0}, {10, 0}}},
     {"collinear4", 4, {{0, 0}, {10, 0}, {20, 0}, {30, 0}}},
     {"figure8", 6, {{0, 0}, {20, 0}, {10, 10}, {20, 20}, {0, 20}, {10, 10}}},
-    {"vertical_overlap", 6, {{0, 0}, {10, 0}, {10, 30}, {20, 30}, {20, 40}, {10, 10}}},
+    {"vertical_overlap", 7, {{0, 0}, {10, 0}, {10, 20}, {20, 20}, {20, 30}, {10, 30}, {10, 10}}},
+    {"repeated3", 3, {{0, 0}, {20, 0}, {20, 0}}},
 };
 
 static void test_bad_rooms(void)
