@@ -139,6 +139,12 @@
  *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
  *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
+ *   Rooms that are not boxes: a cell clipped to any simple polygon, its
+ *   pieces (a non-convex room can cut a cell in several) with exact
+ *   rational vertices, and their area and centroid (vor_clip_begin,
+ *   vor_clip_next, vor_clip_centroid; VOR_ERR_POLYGON for a room that
+ *   crosses itself).
+ *
  * NATURAL-NEIGHBOUR INTERPOLATION
  *   Sibson's coordinates of a point q (the areas its cell would take from
  *   its natural neighbours' cells) and Laplace's (edge length over
