@@ -1020,9 +1020,10 @@ typedef struct vor_exact_point {
 
 /* Bytes of scratch vor_clip_begin needs for a room of m vertices and a
  * diagram of n sites (a constant expression; any alignment): 7 words a
- * vertex of VOR_CLIP_MAX_VERTICES(m, n) and 36 bytes. It holds the
+ * vertex of VOR_CLIP_MAX_VERTICES(m, n), 4m + n + 3, and 36 bytes. It holds the
  * pieces while the iterator reads them. */
-#define VOR_CLIP_SCRATCH_BYTES(m, n) (((size_t)28u * VOR_CLIP_MAX_VERTICES(m, n)) + 36u)
+#define VOR_CLIP_SCRATCH_BYTES(m, n)                                           \
+    (((size_t)28u * ((4u * (size_t)(m)) + (size_t)(n) + 3u)) + 36u)
 
 /* Bytes of scratch vor_clip_centroid needs for any piece, or the whole
  * clipped cell, of a room of m vertices in a diagram of n sites (a

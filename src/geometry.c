@@ -150,7 +150,7 @@ static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, 
 /* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
  * (-b1, a1) (counterclockwise around the cell) increases line 2's
  * a x + b y, i.e. line 2 bounds line 1 from above. */
-static int direction(const geo_line_t *l1, const geo_line_t *l2)
+VOR__ALWAYS_INLINE int direction(const geo_line_t *l1, const geo_line_t *l2)
 {
     return vor__compare_products(l1->a, l2->b, l2->a, l1->b);
 }
@@ -1432,7 +1432,7 @@ static void hold_vertex(centroid_sum_t *sum, const geo_point_t *p)
 }
 
 /* The emitter's confirmed vertices, in order. */
-static void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
+VOR__ALWAYS_INLINE void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
 {
     if (sum->vertices == 0u) {
         copy_point(&sum->first, p);
@@ -1525,7 +1525,7 @@ static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
 
 /* The scratch, aligned for limbs: its first limb, and *usable its bytes
  * from there. */
-static vor__limb *align_scratch(void *scratch, size_t scratch_bytes, size_t *usable)
+VOR__ALWAYS_INLINE vor__limb *align_scratch(void *scratch, size_t scratch_bytes, size_t *usable)
 {
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
     *usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u;
@@ -1533,7 +1533,7 @@ static vor__limb *align_scratch(void *scratch, size_t scratch_bytes, size_t *usa
 }
 
 /* Empty sums over six numbers of `stride` limbs from `limbs`. */
-static void begin_sums(centroid_sum_t *sum, vor__limb *limbs, size_t stride)
+VOR__ALWAYS_INLINE void begin_sums(centroid_sum_t *sum, vor__limb *limbs, size_t stride)
 {
     sum->area = limbs;
     sum->x = limbs + stride;
@@ -1549,8 +1549,8 @@ static void begin_sums(centroid_sum_t *sum, vor__limb *limbs, size_t stride)
 /* The closed boundary's sums after `steps` of them, rounded once into
  * result (the site s is the frame's origin): false, with result
  * untouched, when the area is not positive. */
-static bool round_sums(centroid_sum_t *sum, uint32_t steps, const vor_point_t *s,
-                       vor_centroid_t *result)
+VOR__ALWAYS_INLINE bool round_sums(centroid_sum_t *sum, uint32_t steps, const vor_point_t *s,
+                                   vor_centroid_t *result)
 {
     widen_sums(sum, sum_limbs(steps)); /* the bound's room for the divisions */
     if (vor__mw_sign(sum->area, sum->width) <= 0) {
@@ -1623,9 +1623,11 @@ static int cell_centroid(const vor_t *d, const int64_t *weights, uint32_t site, 
         return VOR_OK;
     }
     add_edge(&sum, &sum.previous, &sum.first);
-    if (round_sums(&sum, count, s, &result)) {
-        result.vertices = count;
+    if (!round_sums(&sum, count, s, &result)) {
+        write_centroid(out, &result);
+        return VOR_OK;
     }
+    result.vertices = count;
     write_centroid(out, &result);
     return VOR_OK;
 }
@@ -1890,8 +1892,11 @@ static void clip_piece(clip_work_t *w, const uint32_t *lines, uint32_t r, uint32
     uint32_t inside = 0;
     for (uint32_t i = 0; i < r; i++) {
         clip_vertex(f, lines[(i == 0u) ? (r - 1u) : (i - 1u)], lines[i], &p);
-        w->sides[i] = (side_of(&line, &p) < 0) ? 1u : 0u; /* 1: strictly inside */
-        inside += w->sides[i];
+        w->sides[i] = 0u;
+        if (side_of(&line, &p) < 0) {
+            w->sides[i] = 1u; /* strictly inside */
+            inside++;
+        }
     }
     if (inside == 0u) {
         return; /* on or outside the line: nothing left (no area) */
@@ -2120,10 +2125,12 @@ int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_po
     clip_frame_t f;
     begin_frame(&f, d, site, room, m, clockwise);
     uint32_t degree = site_degree(&f.cell);
-    uint32_t capacity = VOR_CLIP_MAX_VERTICES(m, degree + 1u);
+
     /* the macro is the contract; its 36 bytes cover the alignment */
     size_t skip = (size_t)(0u - (uintptr_t)scratch) & 3u;
-    if (scratch_bytes < VOR_CLIP_SCRATCH_BYTES(m, degree + 1u)) {
+    uint32_t sites = degree + 1u; /* the site and its neighbours */
+    uint32_t capacity = VOR_CLIP_MAX_VERTICES(m, sites);
+    if (scratch_bytes < VOR_CLIP_SCRATCH_BYTES(m, sites)) {
         close_clip(clip, VOR_ERR_BUFFER);
         return VOR_ERR_BUFFER;
     }
@@ -2208,7 +2215,10 @@ int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_po
     clip->d = d;
     clip->room = room;
     clip->room_count = m;
-    clip->reversed = clockwise ? 1u : 0u;
+    clip->reversed = 0u;
+    if (clockwise) {
+        clip->reversed = 1u;
+    }
     clip->site = site;
     clip->lines = w.in;
     clip->start = starts;

@@ -59,15 +59,19 @@ static int clips(const vor_t *d)
     vor_centroid_t c;
     uint32_t count;
     int r = 0;
-    /*@ loop unroll ROOMS; */
-    for (unsigned k = 0; k < ROOMS; k++) {
-        /*@ loop unroll N; */
-        for (uint32_t s = 0; s < N; s++) {
-            if (vor_clip_begin(&clip, d, s, rooms[k], room_sizes[k], clip_scratch, CLIP_BYTES) ==
-                VOR_OK) {
-                r |= pieces_of(&clip);
-            }
-        }
+    /* EVA follows each vertex's exact gcd, bit by bit: a few cells per
+     * shape (the first site in the L, the U's arms cutting a cell, the
+     * far site in the int32 plane) keep the run within minutes */
+    if (vor_clip_begin(&clip, d, 0u, rooms[0], room_sizes[0], clip_scratch, CLIP_BYTES) == VOR_OK) {
+        r |= pieces_of(&clip);
+    }
+    if (vor_clip_begin(&clip, d, (d->site_count > 1u) ? 1u : 0u, rooms[1], room_sizes[1], clip_scratch,
+                       CLIP_BYTES) == VOR_OK) {
+        r |= pieces_of(&clip);
+    }
+    if (vor_clip_begin(&clip, d, d->site_count - 1u, rooms[2], room_sizes[2], clip_scratch,
+                       CLIP_BYTES) == VOR_OK) {
+        r |= pieces_of(&clip);
     }
     r |= vor_clip_begin(&clip, d, 0u, bowtie, 4u, clip_scratch, CLIP_BYTES);
     r |= vor_clip_next(&clip, piece, 4u, &count);
