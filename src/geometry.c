@@ -1833,8 +1833,8 @@ typedef struct clip_work {
     uint32_t *next;   /* the chain its exit joins (| CLIP_SAME) */
 } clip_work_t;
 
-/* The layout below takes 4 v + 2 (v / 3 + 1) + 3 (v / 2 + 1) words for
- * lists of v lines, below the 7 v + 8 of VOR_CLIP_SCRATCH_BYTES (the
+/* The layout below takes 4 v + 5 (v / 2 + 1) words for lists of v
+ * lines, below the 7 v + 8 of VOR_CLIP_SCRATCH_BYTES (the
  * bound v on the lines is proved in docs/design/geometry.md). */
 
 static void emit_line(clip_work_t *w, uint32_t name)
@@ -1846,7 +1846,7 @@ static void emit_line(clip_work_t *w, uint32_t name)
 
 static void end_piece(clip_work_t *w)
 {
-    VOR_ASSERT(w->out_pieces < ((w->capacity / 3u) + 1u));
+    VOR_ASSERT(w->out_pieces < ((w->capacity / 2u) + 1u));
     w->out_ends[w->out_pieces] = w->out_count;
     w->out_pieces++;
 }
@@ -2135,8 +2135,10 @@ int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_po
         return VOR_ERR_BUFFER;
     }
     uint32_t *words = (uint32_t *)(void *)((unsigned char *)scratch + skip);
-    uint32_t pieces = (capacity / 3u) + 1u;
-    uint32_t chains = (capacity / 2u) + 1u;
+    /* pieces of 3 lines at least, chains of 2: half the lines bound both
+     * (a shift: no division helper on ARMv6-M) */
+    uint32_t pieces = (capacity / 2u) + 1u;
+    uint32_t chains = pieces;
     clip_work_t w;
     w.f = &f;
     w.capacity = capacity;
