@@ -367,15 +367,18 @@ demo: $(B)/vor
 	@$(B)/vor draw --cells build/demo.cells -o build/demo.svg
 	@echo "diagram:   build/demo.svg"
 
-# examples/coverage (Lloyd coverage control of 64 robots) on the emulated
-# Cortex-M3; its final cells go to build/coverage.cells, drawn into
-# build/coverage.svg.
+# examples/coverage (Lloyd coverage control of 64 robots, then of 32 in an
+# L-shaped hall) on the emulated Cortex-M3; their final cells go to
+# build/coverage.cells and build/coverage-room.cells, drawn into
+# build/coverage.svg and build/coverage-room.svg.
 coverage: $(B)/vor
 	@tools/install-deps.sh toolchains
 	@mkdir -p build
 	+@$(MAKE) -s PORT=$(DEMO_PORT) run-example-coverage
 	@$(B)/vor draw --cells build/coverage.cells -o build/coverage.svg
 	@echo "picture: build/coverage.svg"
+	@$(B)/vor draw --cells build/coverage-room.cells -o build/coverage-room.svg
+	@echo "picture: build/coverage-room.svg (the L-shaped hall)"
 
 # examples/field (50 sensors, their Sibson interpolant rendered into a
 # 320x240 RGB565 frame in 16-row bands, every pixel checked on the target)

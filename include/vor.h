@@ -143,6 +143,12 @@
  *       static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(32)];
  *       vor_cell_centroid(&d, id, &box, scratch, sizeof scratch, &c);
  *
+ *   Rooms that are not boxes: a cell clipped to any simple polygon, its
+ *   pieces (a non-convex room can cut a cell in several) with exact
+ *   rational vertices, and their area and centroid (vor_clip_begin,
+ *   vor_clip_next, vor_clip_centroid; VOR_ERR_POLYGON for a room that
+ *   crosses itself).
+ *
  * NATURAL-NEIGHBOUR INTERPOLATION
  *   Sibson's coordinates of a point q (the areas its cell would take from
  *   its natural neighbours' cells) and Laplace's (edge length over
@@ -335,8 +341,9 @@ enum vor_error {
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
     VOR_ERR_STOPPED = -10,  /* vor_raster: the caller's flush asked to stop */
     VOR_ERR_CONSTRAINED = -11, /* vor_remove, vor_move: the site ends a constrained edge */
-    VOR_ERR_OUTSIDE = -12     /* vor_sibson, vor_interpolate: the point is outside the
+    VOR_ERR_OUTSIDE = -12,    /* vor_sibson, vor_interpolate: the point is outside the
                                  convex hull of the sites */
+    VOR_ERR_POLYGON = -13     /* vor_clip_begin: the room is not a simple polygon */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -966,6 +973,146 @@ typedef struct vor_centroid {
  */
 int vor_cell_centroid(const vor_t *d, uint32_t site, const vor_box_t *box,
                       void *scratch, size_t scratch_bytes, vor_centroid_t *out);
+
+/* ------------------------------------------------------------------ */
+/* Cells clipped to a simple polygon (a room that need not be a box)  */
+/*
+ *     static vor_point_t room[6] = {{0,0}, {60,0}, {60,30}, {30,30},
+ *                                   {30,60}, {0,60}};          // an L
+ *     static uint32_t scratch[VOR_CLIP_SCRATCH_BYTES(6, N) / 4];
+ *     vor_clip_t clip;
+ *     vor_clip_begin(&clip, &d, id, room, 6, scratch, sizeof scratch);
+ *     while (vor_clip_next(&clip, piece, cap, &m)) { ... }  // CCW pieces
+ *     vor_clip_centroid(&clip, VOR_CLIP_WHOLE, sums, sizeof sums, &c);
+ *
+ * A room is a simple polygon: m >= 3 int32 vertices in order, either
+ * orientation, no zero-length edge, no two edges meeting except
+ * consecutive ones at their common vertex (collinear consecutive edges
+ * are fine: the vertex between them is no corner and is not reported).
+ * A non-convex room can cut one cell into several pieces; each is
+ * reported on its own, counterclockwise, from its lowest vertex
+ * (smallest y, then smallest x), the pieces in the order of their lowest
+ * vertices. Pieces have positive area, distinct corners and no straight
+ * angles, whatever touches what (room corners on cell edges, room edges
+ * along cell edges, cell vertices on room edges). Two pieces may share a
+ * corner (a room corner on a cell edge can pinch the cell in two).
+ * The clipping is done with the exact lines of the cell (bisectors) and
+ * of the room; an order-K cell, also an intersection of bisectors'
+ * half-planes, is clipped by the same code.
+ */
+
+/* A vertex of a clipped cell, exact: (x / w, y / w) with w > 0, each
+ * number VOR_EXACT_LIMBS 32-bit limbs, least significant first, two's
+ * complement (|x|, |y| < 2^101, 0 < w < 2^67), in lowest terms; and
+ * `point`, the same vertex rounded once as vor_cell's vertices are (v
+ * becomes floor(v + 1/2)). */
+#define VOR_EXACT_LIMBS 4u
+typedef struct vor_exact_point {
+    vor_point_t point;
+    uint32_t x[VOR_EXACT_LIMBS];
+    uint32_t y[VOR_EXACT_LIMBS];
+    uint32_t w[VOR_EXACT_LIMBS];
+} vor_exact_point_t;
+
+/* Most room vertices vor_clip_begin takes (2^24). */
+#define VOR_CLIP_MAX_ROOM 16777216u
+
+/* Most vertices the pieces of one cell of a diagram of n sites clipped to
+ * a room of m vertices have together (so also the most one piece has): a
+ * constant expression. Every piece has 3 at least. */
+#define VOR_CLIP_MAX_VERTICES(m, n) ((4u * (uint32_t)(m)) + (uint32_t)(n) + 3u)
+
+/* Bytes of scratch vor_clip_begin needs for a room of m vertices and a
+ * diagram of n sites (a constant expression; any alignment): 7 words a
+ * vertex of VOR_CLIP_MAX_VERTICES(m, n), 4m + n + 3, and 36 bytes. It holds the
+ * pieces while the iterator reads them. */
+#define VOR_CLIP_SCRATCH_BYTES(m, n)                                           \
+    (((size_t)28u * ((4u * (size_t)(m)) + (size_t)(n) + 3u)) + 36u)
+
+/* Bytes of scratch vor_clip_centroid needs for any piece, or the whole
+ * clipped cell, of a room of m vertices in a diagram of n sites (a
+ * constant expression). */
+#define VOR_CLIP_CENTROID_SCRATCH_BYTES(m, n)                                  \
+    VOR_CENTROID_SCRATCH_BYTES(2u * VOR_CLIP_MAX_VERTICES(m, n))
+
+/* The pieces of a clipped cell, kept in the caller's scratch: fields are
+ * private except `pieces`, how many there are (0: the cell does not meet
+ * the room in an area). Valid while the diagram, the room and the scratch
+ * are unchanged. */
+typedef struct vor_clip {
+    const vor_t *d;          /* NULL: closed (a failed begin) */
+    const vor_point_t *room;
+    uint32_t room_count;
+    uint32_t reversed;       /* 1: the room is clockwise */
+    uint32_t site;
+    const uint32_t *lines;   /* the pieces' edges, as line names */
+    const uint32_t *start;   /* [pieces] first line of each piece */
+    const uint32_t *count;   /* [pieces] lines of each piece */
+    uint32_t pieces;         /* the pieces, once begun */
+    uint32_t next_piece;
+    int error;               /* why next returned 0 (vor_clip_error) */
+} vor_clip_t;
+
+/*
+ * The Voronoi cell of `site` clipped to the room room[0 .. m), computed
+ * exactly into the caller's scratch (its contents are the iterator's
+ * until the pieces have been read). The room array must stay unchanged
+ * while the pieces are read. Cost: O(m^2) orientation tests to check the
+ * room, then O((m + k) k) exact line tests for a site of k neighbours
+ * (fewer when the cell is small), O(p^2 + v) to order p pieces of v
+ * vertices.
+ *   VOR_ERR_ARG      clip, d or room NULL; m < 3 or m > VOR_CLIP_MAX_ROOM;
+ *                    scratch NULL with scratch_bytes > 0; site not a site
+ *                    in the mesh (unknown, or a duplicate's id)
+ *   VOR_ERR_POLYGON  the room is not simple: a zero-length edge, two
+ *                    edges that cross, touch or overlap (consecutive
+ *                    edges folding back on each other), all vertices on
+ *                    one line
+ *   VOR_ERR_BUFFER   scratch_bytes < VOR_CLIP_SCRATCH_BYTES(m, k + 1)
+ *                    for the site's k Delaunay neighbours (never with
+ *                    VOR_CLIP_SCRATCH_BYTES(m, n) for n sites)
+ * On failure the iterator is closed (next returns 0, error the reason)
+ * and nothing else is written.
+ */
+int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_point_t *room,
+                   uint32_t m, void *scratch, size_t scratch_bytes);
+/* Returns 1 with the next piece's vertices in vertices[0 .. *count),
+ * counterclockwise from the lowest; 0 at the end, and 0 when it cannot
+ * give the next piece, with the reason kept for vor_clip_error: more
+ * than `capacity` vertices (*count = the number needed, nothing written
+ * to vertices, the iterator stays on that piece), count NULL or vertices
+ * NULL with capacity > 0 (nothing written), a closed iterator. */
+int vor_clip_next(vor_clip_t *clip, vor_exact_point_t *vertices, uint32_t capacity,
+                  uint32_t *count);
+/* Why the last vor_clip_next returned 0: VOR_OK at the end (and before
+ * the first next), VOR_ERR_BUFFER at a piece that did not fit,
+ * VOR_ERR_ARG for bad outputs, and a failed begin's error (VOR_ERR_ARG
+ * for a NULL clip). */
+int vor_clip_error(const vor_clip_t *clip);
+
+/* vor_clip_centroid's piece for the whole clipped cell. */
+#define VOR_CLIP_WHOLE 0xFFFFFFFFu
+
+/*
+ * The area and centroid of piece `piece` (0 .. clip->pieces - 1, in the
+ * iterator's order) or of all of them together (VOR_CLIP_WHOLE), exact
+ * and rounded once as vor_cell_centroid's: for Lloyd relaxation in a
+ * room. out->vertices is the vertices counted (all pieces' for the
+ * whole). The centroid of a non-convex region may lie outside it. When
+ * there are no pieces, VOR_CLIP_WHOLE gives area 0, vertices 0 and the
+ * site as the point. Scratch: any alignment, contents undefined after
+ * the call, VOR_CENTROID_SCRATCH_BYTES(k) bytes with k = the piece's
+ * vertices (the whole: the vertices of all pieces, plus one for each
+ * piece after the first).
+ * The iterator is not moved. Cost: O(k^2) limb products.
+ *   VOR_ERR_ARG     clip or out NULL, a closed iterator, piece neither
+ *                   VOR_CLIP_WHOLE nor below clip->pieces, scratch NULL
+ *                   with scratch_bytes > 0
+ *   VOR_ERR_BUFFER  the scratch is too small: only out->vertices is
+ *                   written, with that k
+ */
+int vor_clip_centroid(const vor_clip_t *clip, uint32_t piece, void *scratch,
+                      size_t scratch_bytes, vor_centroid_t *out);
 
 /* ================================================================== */
 /* Natural-neighbour interpolation (src/interpolate.c)                */

@@ -150,7 +150,7 @@ static void box_side(geo_line_t *l, const vor_box_t *box, const vor_point_t *s, 
 /* Sign of a1 b2 - a2 b1: > 0 when moving along line 1 in its direction
  * (-b1, a1) (counterclockwise around the cell) increases line 2's
  * a x + b y, i.e. line 2 bounds line 1 from above. */
-static int direction(const geo_line_t *l1, const geo_line_t *l2)
+VOR__ALWAYS_INLINE int direction(const geo_line_t *l1, const geo_line_t *l2)
 {
     return vor__compare_products(l1->a, l2->b, l2->a, l1->b);
 }
@@ -1432,7 +1432,7 @@ static void hold_vertex(centroid_sum_t *sum, const geo_point_t *p)
 }
 
 /* The emitter's confirmed vertices, in order. */
-static void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
+VOR__ALWAYS_INLINE void add_vertex(centroid_sum_t *sum, const geo_point_t *p)
 {
     if (sum->vertices == 0u) {
         copy_point(&sum->first, p);
@@ -1523,6 +1523,61 @@ static int32_t round_centroid(centroid_sum_t *sum, vor__limb *n, int32_t origin)
     return result;
 }
 
+/* The scratch, aligned for limbs: its first limb, and *usable its bytes
+ * from there. */
+VOR__ALWAYS_INLINE vor__limb *align_scratch(void *scratch, size_t scratch_bytes, size_t *usable)
+{
+    size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
+    *usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u;
+    return (vor__limb *)(void *)((unsigned char *)scratch + skip);
+}
+
+/* Empty sums over six numbers of `stride` limbs from `limbs`. */
+VOR__ALWAYS_INLINE void begin_sums(centroid_sum_t *sum, vor__limb *limbs, size_t stride)
+{
+    sum->area = limbs;
+    sum->x = limbs + stride;
+    sum->y = limbs + (2u * stride);
+    sum->before = limbs + (3u * stride);
+    sum->denominator = limbs + (4u * stride);
+    sum->spare = limbs + (5u * stride);
+    sum->width = 0;
+    sum->vertices = 0;
+    sum->held = false;
+}
+
+/* The closed boundary's sums after `steps` of them, rounded once into
+ * result (the site s is the frame's origin): false, with result
+ * untouched, when the area is not positive. */
+VOR__ALWAYS_INLINE bool round_sums(centroid_sum_t *sum, uint32_t steps, const vor_point_t *s,
+                                   vor_centroid_t *result)
+{
+    widen_sums(sum, sum_limbs(steps)); /* the bound's room for the divisions */
+    if (vor__mw_sign(sum->area, sum->width) <= 0) {
+        return false; /* distinct vertices, but all on one line */
+    }
+    result->point.x = round_centroid(sum, sum->x, s->x);
+    result->point.y = round_centroid(sum, sum->y, s->y);
+    /* the area is N_A / 8 Q in the doubled frame (a factor 4 for the
+     * scale, 2 for "twice"): floor((N_A + 4 Q) / 8 Q), below 2^64 */
+    size_t width = sum->width;
+    for (size_t i = 0; i < width; i++) {
+        sum->spare[i] = sum->denominator[i];
+    }
+    vor__mw_shl1(sum->spare, width);
+    vor__mw_shl1(sum->spare, width);
+    vor__mw_add(sum->area, sum->spare, width);
+    vor__mw_shl1(sum->spare, width);
+    uint64_t area;
+    bool negative;
+    bool exact;
+    bool fits = divide(sum->area, sum->spare, division_width(sum->area, sum->spare, width, 64u),
+                       64u, &area, &negative, &exact);
+    VOR_ASSERT(fits && !negative);
+    result->area = fits ? area : UINT64_MAX;
+    return true;
+}
+
 /* vor_cell_centroid of a site of the mesh (weights: a power diagram's,
  * or NULL), the arguments checked; hidden: a power diagram's hidden site,
  * whose cell is empty. */
@@ -1544,8 +1599,8 @@ static int cell_centroid(const vor_t *d, const int64_t *weights, uint32_t site, 
     cell_t c;
     begin_cell(&c, d, weights, site, box);
     /* the scratch, aligned for limbs; VOR_CENTROID_SCRATCH_BYTES has room */
-    size_t skip = (size_t)(0u - (uintptr_t)scratch) & (sizeof(vor__limb) - 1u);
-    size_t usable = (scratch_bytes > skip) ? (scratch_bytes - skip) : 0u;
+    size_t usable;
+    vor__limb *limbs = align_scratch(scratch, scratch_bytes, &usable);
     size_t stride;
     /* at most one vertex per neighbour and per box side: count first only
      * when the scratch might be too small */
@@ -1560,48 +1615,19 @@ static int cell_centroid(const vor_t *d, const int64_t *weights, uint32_t site, 
             return VOR_ERR_BUFFER;
         }
     }
-    vor__limb *limbs = (vor__limb *)(void *)((unsigned char *)scratch + skip);
     centroid_sum_t sum;
-    sum.area = limbs;
-    sum.x = limbs + stride;
-    sum.y = limbs + (2u * stride);
-    sum.before = limbs + (3u * stride);
-    sum.denominator = limbs + (4u * stride);
-    sum.spare = limbs + (5u * stride);
-    sum.width = 0;
-    sum.vertices = 0;
-    sum.held = false;
+    begin_sums(&sum, limbs, stride);
     uint32_t count = trace(&c, NULL, &sum);
     if (count == 0u) {
         write_centroid(out, &result);
         return VOR_OK;
     }
     add_edge(&sum, &sum.previous, &sum.first);
-    widen_sums(&sum, sum_limbs(count)); /* the bound's room for the divisions */
-    if (vor__mw_sign(sum.area, sum.width) <= 0) {
-        write_centroid(out, &result); /* distinct vertices, but all on one line */
+    if (!round_sums(&sum, count, s, &result)) {
+        write_centroid(out, &result);
         return VOR_OK;
     }
     result.vertices = count;
-    result.point.x = round_centroid(&sum, sum.x, s->x);
-    result.point.y = round_centroid(&sum, sum.y, s->y);
-    /* the area is N_A / 8 Q in the doubled frame (a factor 4 for the
-     * scale, 2 for "twice"): floor((N_A + 4 Q) / 8 Q), below 2^64 */
-    size_t width = sum.width;
-    for (size_t i = 0; i < width; i++) {
-        sum.spare[i] = sum.denominator[i];
-    }
-    vor__mw_shl1(sum.spare, width);
-    vor__mw_shl1(sum.spare, width);
-    vor__mw_add(sum.area, sum.spare, width);
-    vor__mw_shl1(sum.spare, width);
-    uint64_t area;
-    bool negative;
-    bool exact;
-    bool fits = divide(sum.area, sum.spare, division_width(sum.area, sum.spare, width, 64u),
-                       64u, &area, &negative, &exact);
-    VOR_ASSERT(fits && !negative);
-    result.area = fits ? area : UINT64_MAX;
     write_centroid(out, &result);
     return VOR_OK;
 }
@@ -1629,4 +1655,834 @@ int vor_power_cell_centroid(const vor_power_t *pd, uint32_t site, const vor_box_
     }
     return cell_centroid(&pd->mesh, pd->weights, site, hidden != 0, box, scratch, scratch_bytes,
                          out);
+}
+
+/* ------------------------------------------------------------------ */
+/* Cells clipped to a simple polygon                                   */
+
+/*
+ * The room is a simple polygon and the cell the intersection of the
+ * half-planes of the site's bisectors. The pieces are found by clipping
+ * the room by one half-plane at a time, every piece a simple polygon
+ * kept as the cyclic list of its edges' lines ("names": a neighbour's
+ * id for its bisector, ROOM_LINE + i for room edge i, counterclockwise);
+ * vertex i is where lines i - 1 and i meet, so consecutive lines are
+ * never parallel and no vertex is a straight angle. Cutting a piece by a
+ * line L keeps the runs of its boundary strictly inside L's half-plane
+ * (chains: they enter where an edge goes from on-or-outside to strictly
+ * inside, exit where one goes back), and joins each exit to an entry
+ * along L: sorted along L in its direction (the half-plane on the left),
+ * the crossings pair as (exit, entry), (exit, entry), ... Two crossings
+ * at one point are a vertex on L whose two edges go strictly inside: a
+ * convex vertex touches L from inside (exit first: a zero-length join,
+ * the piece goes on through the vertex), a reflex one pinches the piece
+ * in two there (entry first). Everything is one of the 3x3 determinants
+ * of the cells above (side_of, direction), with the room's lines
+ * a = dy, b = -dx, c < 2^66 in the same doubled frame, so the same
+ * 160-bit bounds hold. docs/design/geometry.md has the argument.
+ */
+#define ROOM_LINE 0x80000000u
+#define CLIP_EXIT 0u
+#define CLIP_ENTRY 1u
+#define CLIP_SAME 0x80000000u /* a chain's join to the next has length 0 */
+
+typedef struct clip_frame {
+    cell_t cell; /* d, site, s: the bisectors and their frame */
+    const vor_point_t *room;
+    uint32_t room_count;
+    bool reversed;
+} clip_frame_t;
+
+/* The room's vertex i in counterclockwise order. */
+static const vor_point_t *room_point(const clip_frame_t *f, uint32_t i)
+{
+    return &f->room[f->reversed ? (f->room_count - 1u - i) : i];
+}
+
+/* The line of room edge i (counterclockwise, the room on its left): its
+ * outward normal (dy, -dx), through the edge's start. */
+static void room_line(const clip_frame_t *f, uint32_t i, geo_line_t *l)
+{
+    const vor_point_t *p = room_point(f, i);
+    const vor_point_t *q = room_point(f, (i + 1u == f->room_count) ? 0u : (i + 1u));
+    const vor_point_t *s = f->cell.s;
+    int64_t dx = (int64_t)q->x - p->x;
+    int64_t dy = (int64_t)q->y - p->y;
+    int64_t px = (int64_t)p->x - s->x;
+    int64_t py = (int64_t)p->y - s->y;
+    vor__limb t[GEO_LIMBS];
+    l->a = dy;
+    l->b = -dx;
+    mul_i64_i64(l->c, dy, px + px); /* |c| < 2 2^32 2^33 = 2^66 */
+    mul_i64_i64(t, -dx, py + py);
+    vor__mw_add(l->c, t, GEO_LIMBS);
+}
+
+static void clip_line(const clip_frame_t *f, uint32_t name, geo_line_t *l)
+{
+    if (name >= ROOM_LINE) {
+        room_line(f, name - ROOM_LINE, l);
+    } else {
+        cell_bisector(&f->cell, name, l);
+    }
+}
+
+/* The vertex where lines a and b meet (never parallel in a piece). */
+static void clip_vertex(const clip_frame_t *f, uint32_t a, uint32_t b, geo_point_t *p)
+{
+    geo_line_t la;
+    geo_line_t lb;
+    clip_line(f, a, &la);
+    clip_line(f, b, &lb);
+    bool met = intersect(p, &la, &lb);
+    VOR_ASSERT(met);
+    (void)met;
+}
+
+/* Do the intervals between a and b and between c and e meet? */
+static bool spans_meet(int32_t a, int32_t b, int32_t c, int32_t e)
+{
+    int32_t lo1 = (a < b) ? a : b;
+    int32_t hi1 = (a < b) ? b : a;
+    int32_t lo2 = (c < e) ? c : e;
+    int32_t hi2 = (c < e) ? e : c;
+    return (lo1 <= hi2) && (lo2 <= hi1);
+}
+
+/* Is the room simple? Exact orientations of its int32 vertices: no
+ * zero-length edge, consecutive edges not folding back, other edges
+ * disjoint. Then the lowest vertex (smallest y, then x) is a strict
+ * corner whose turn gives the orientation: *clockwise. */
+static bool segments_meet(const vor_point_t *a, const vor_point_t *b, const vor_point_t *c,
+                          const vor_point_t *e)
+{
+    int o1 = vor__orient2d_sign(a, b, c);
+    int o2 = vor__orient2d_sign(a, b, e);
+    int o3 = vor__orient2d_sign(c, e, a);
+    int o4 = vor__orient2d_sign(c, e, b);
+    if ((o1 * o2 > 0) || (o3 * o4 > 0)) {
+        return false;
+    }
+    if ((o1 != 0) || (o2 != 0)) {
+        return true; /* a proper crossing, or an end on the other segment */
+    }
+    /* all four collinear: they meet when both their x and y spans do */
+    return spans_meet(a->x, b->x, c->x, e->x) && spans_meet(a->y, b->y, c->y, e->y);
+}
+
+static bool same_vertex(const vor_point_t *a, const vor_point_t *b)
+{
+    return (a->x == b->x) && (a->y == b->y);
+}
+
+static int check_room(const vor_point_t *room, uint32_t m, bool *clockwise)
+{
+    uint32_t lowest = 0;
+    for (uint32_t i = 0; i < m; i++) {
+        const vor_point_t *p = &room[i];
+        const vor_point_t *q = &room[(i + 1u == m) ? 0u : (i + 1u)];
+        const vor_point_t *r = &room[(i + 2u >= m) ? (i + 2u - m) : (i + 2u)];
+        if (same_vertex(p, q)) {
+            return VOR_ERR_POLYGON;
+        }
+        /* q between p and r folds back when p, q, r are collinear and
+         * the edges point opposite ways */
+        if ((vor__orient2d_sign(p, q, r) == 0) &&
+            (vor__compare_products((int64_t)q->x - p->x, (int64_t)r->x - q->x,
+                                   (int64_t)p->y - q->y, (int64_t)r->y - q->y) < 0)) {
+            return VOR_ERR_POLYGON;
+        }
+        /* edges i and j >= i + 2, except the last with the first */
+        for (uint32_t j = i + 2u; j < m; j++) {
+            if ((i == 0u) && (j + 1u == m)) {
+                continue;
+            }
+            if (segments_meet(p, q, &room[j], &room[(j + 1u == m) ? 0u : (j + 1u)])) {
+                return VOR_ERR_POLYGON;
+            }
+        }
+        if ((p->y < room[lowest].y) || ((p->y == room[lowest].y) && (p->x < room[lowest].x))) {
+            lowest = i;
+        }
+    }
+    const vor_point_t *before = &room[(lowest == 0u) ? (m - 1u) : (lowest - 1u)];
+    const vor_point_t *after = &room[(lowest + 1u == m) ? 0u : (lowest + 1u)];
+    int turn = vor__orient2d_sign(before, &room[lowest], after);
+    VOR_ASSERT(turn != 0);
+    *clockwise = turn < 0;
+    return VOR_OK;
+}
+
+/* The working memory of a clipping, all in the caller's scratch: pieces
+ * as line lists with their ends, read from one list and written to the
+ * other; per piece being cut, its vertices' sides and its chains. */
+typedef struct clip_work {
+    const clip_frame_t *f;
+    uint32_t capacity; /* lines of every list: VOR_CLIP_MAX_VERTICES */
+    uint32_t *in;
+    uint32_t *in_ends;
+    uint32_t in_pieces;
+    uint32_t *out;
+    uint32_t *out_ends;
+    uint32_t out_count;
+    uint32_t out_pieces;
+    uint32_t *sides;  /* [capacity], then the final pieces' starts */
+    uint32_t *events; /* [capacity], then the final pieces' counts */
+    uint32_t *first;  /* [capacity / 2 + 1] each: a chain's entry edge, */
+    uint32_t *last;   /* its exit edge, */
+    uint32_t *next;   /* the chain its exit joins (| CLIP_SAME) */
+} clip_work_t;
+
+/* The layout below takes 4 v + 5 (v / 2 + 1) words for lists of v
+ * lines, below the 7 v + 8 of VOR_CLIP_SCRATCH_BYTES (the
+ * bound v on the lines is proved in docs/design/geometry.md). */
+
+static void emit_line(clip_work_t *w, uint32_t name)
+{
+    VOR_ASSERT(w->out_count < w->capacity);
+    w->out[w->out_count] = name;
+    w->out_count++;
+}
+
+static void end_piece(clip_work_t *w)
+{
+    VOR_ASSERT(w->out_pieces < ((w->capacity / 2u) + 1u));
+    w->out_ends[w->out_pieces] = w->out_count;
+    w->out_pieces++;
+}
+
+/* Is the crossing of event b (on line L) after that of a along L's
+ * direction? Ties (one vertex, two crossings) put an exit first at a
+ * convex vertex and an entry first at a reflex one. */
+static bool event_after(const clip_work_t *w, const uint32_t *lines, const geo_line_t *line,
+                        uint32_t a, uint32_t b)
+{
+    const clip_frame_t *f = w->f;
+    uint32_t ca = a >> 1u;
+    uint32_t cb = b >> 1u;
+    uint32_t ea = ((a & 1u) == CLIP_ENTRY) ? w->first[ca] : w->last[ca];
+    uint32_t eb = ((b & 1u) == CLIP_ENTRY) ? w->first[cb] : w->last[cb];
+    geo_line_t la;
+    geo_line_t lb;
+    geo_point_t p;
+    clip_line(f, lines[ea], &la);
+    clip_line(f, lines[eb], &lb);
+    (void)intersect(&p, line, &lb);
+    /* along L, la's a x + b y grows when direction(L, la) > 0, and is 0
+     * at a's crossing */
+    int s = side_of(&la, &p) * direction(line, &la);
+    if (s != 0) {
+        return s > 0;
+    }
+    /* one vertex: the exit's edge ends where the entry's begins */
+    const geo_line_t *in_edge = ((a & 1u) == CLIP_EXIT) ? &la : &lb;
+    const geo_line_t *out_edge = ((a & 1u) == CLIP_EXIT) ? &lb : &la;
+    bool convex = direction(in_edge, out_edge) > 0;
+    return ((a & 1u) == CLIP_EXIT) == convex;
+}
+
+/* The piece lines[0 .. r) cut by the half-plane of line `name`, its
+ * pieces appended to the output. */
+static void clip_piece(clip_work_t *w, const uint32_t *lines, uint32_t r, uint32_t name)
+{
+    const clip_frame_t *f = w->f;
+    geo_line_t line;
+    geo_point_t p;
+    clip_line(f, name, &line);
+    uint32_t inside = 0;
+    for (uint32_t i = 0; i < r; i++) {
+        clip_vertex(f, lines[(i == 0u) ? (r - 1u) : (i - 1u)], lines[i], &p);
+        w->sides[i] = 0u;
+        if (side_of(&line, &p) < 0) {
+            w->sides[i] = 1u; /* strictly inside */
+            inside++;
+        }
+    }
+    if (inside == 0u) {
+        return; /* on or outside the line: nothing left (no area) */
+    }
+    if (inside == r) {
+        for (uint32_t i = 0; i < r; i++) {
+            emit_line(w, lines[i]);
+        }
+        end_piece(w);
+        return;
+    }
+    /* the chains, from the first entry edge round: edge i goes from
+     * vertex i to vertex i + 1 */
+    uint32_t start = 0;
+    while ((w->sides[start] != 0u) || (w->sides[(start + 1u == r) ? 0u : (start + 1u)] == 0u)) {
+        start++; /* some vertex is inside and some not: an entry exists */
+    }
+    uint32_t chains = 0;
+    for (uint32_t k = 0; k < r; k++) {
+        uint32_t i = (start + k >= r) ? (start + k - r) : (start + k);
+        uint32_t from = w->sides[i];
+        uint32_t to = w->sides[(i + 1u == r) ? 0u : (i + 1u)];
+        if ((from == 0u) && (to != 0u)) {
+            w->first[chains] = i;
+        } else if ((from != 0u) && (to == 0u)) {
+            w->last[chains] = i;
+            w->events[2u * chains] = (2u * chains) + CLIP_EXIT;
+            w->events[(2u * chains) + 1u] = (2u * chains) + CLIP_ENTRY;
+            chains++;
+        } else {
+            /* inside a chain, or outside */
+        }
+    }
+    /* sort the crossings along the line (insertion: few of them) */
+    uint32_t n = 2u * chains;
+    for (uint32_t i = 1; i < n; i++) {
+        uint32_t e = w->events[i];
+        uint32_t j = i;
+        while ((j > 0u) && event_after(w, lines, &line, e, w->events[j - 1u])) {
+            w->events[j] = w->events[j - 1u];
+            j--;
+        }
+        w->events[j] = e;
+    }
+    /* pair them: exit 2t joins entry 2t + 1; a join of length 0 is one
+     * vertex, which takes no line */
+    for (uint32_t t = 0; t < n; t += 2u) {
+        uint32_t exit = w->events[t];
+        uint32_t entry = w->events[t + 1u];
+        VOR_ASSERT(((exit & 1u) == CLIP_EXIT) && ((entry & 1u) == CLIP_ENTRY));
+        geo_line_t le;
+        geo_line_t lx;
+        clip_line(f, lines[w->last[exit >> 1u]], &lx);
+        clip_line(f, lines[w->first[entry >> 1u]], &le);
+        (void)intersect(&p, &line, &le);
+        w->next[exit >> 1u] = (entry >> 1u) | ((side_of(&lx, &p) == 0) ? CLIP_SAME : 0u);
+    }
+    /* each cycle of chains is a piece: their lines, and the line between */
+    for (uint32_t c = 0; c < chains; c++) {
+        if (w->first[c] == NO_LINE) {
+            continue;
+        }
+        uint32_t k = c;
+        do {
+            uint32_t i = w->first[k];
+            uint32_t end = w->last[k];
+            emit_line(w, lines[i]);
+            while (i != end) {
+                i = (i + 1u == r) ? 0u : (i + 1u);
+                emit_line(w, lines[i]);
+            }
+            w->first[k] = NO_LINE;
+            if ((w->next[k] & CLIP_SAME) == 0u) {
+                emit_line(w, name);
+            }
+            k = w->next[k] & ~CLIP_SAME;
+        } while (k != c);
+        end_piece(w);
+    }
+}
+
+static void swap_lists(clip_work_t *w);
+
+/* Cut every piece of the input list by line `name`; the output becomes
+ * the input. */
+static void clip_all(clip_work_t *w, uint32_t name)
+{
+    w->out_count = 0;
+    w->out_pieces = 0;
+    uint32_t from = 0;
+    for (uint32_t k = 0; k < w->in_pieces; k++) {
+        clip_piece(w, w->in + from, w->in_ends[k] - from, name);
+        from = w->in_ends[k];
+    }
+    swap_lists(w);
+}
+
+/* The output becomes the input. */
+static void swap_lists(clip_work_t *w)
+{
+    uint32_t *t = w->in;
+    w->in = w->out;
+    w->out = t;
+    t = w->in_ends;
+    w->in_ends = w->out_ends;
+    w->out_ends = t;
+    w->in_pieces = w->out_pieces;
+}
+
+/* Signs of p.y - q.y, then p.x - q.x, exactly: the products y_p w_q go
+ * to 384 bits. */
+static int compare_vertices(const geo_point_t *p, const geo_point_t *q)
+{
+    vor__limb a[TERM_LIMBS];
+    vor__limb b[TERM_LIMBS];
+    term_product(a, p->y, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(b, q->y, GEO_LIMBS, p->w, GEO_LIMBS);
+    vor__mw_sub(a, b, TERM_LIMBS);
+    int s = vor__mw_sign(a, TERM_LIMBS);
+    if (s != 0) {
+        return s;
+    }
+    term_product(a, p->x, GEO_LIMBS, q->w, GEO_LIMBS);
+    term_product(b, q->x, GEO_LIMBS, p->w, GEO_LIMBS);
+    vor__mw_sub(a, b, TERM_LIMBS);
+    return vor__mw_sign(a, TERM_LIMBS);
+}
+
+static void reverse_lines(uint32_t *lines, uint32_t from, uint32_t to)
+{
+    while ((from + 1u) < to) {
+        to--;
+        uint32_t t = lines[from];
+        lines[from] = lines[to];
+        lines[to] = t;
+        from++;
+    }
+}
+
+/* A piece's lines rotated so that its lowest vertex comes first. */
+static void lowest_first(const clip_frame_t *f, uint32_t *lines, uint32_t r)
+{
+    uint32_t best = 0;
+    geo_point_t p;
+    geo_point_t low;
+    clip_vertex(f, lines[r - 1u], lines[0], &low);
+    for (uint32_t i = 1; i < r; i++) {
+        clip_vertex(f, lines[i - 1u], lines[i], &p);
+        if (compare_vertices(&p, &low) < 0) {
+            copy_point(&low, &p);
+            best = i;
+        }
+    }
+    reverse_lines(lines, 0, best);
+    reverse_lines(lines, best, r);
+    reverse_lines(lines, 0, r);
+}
+
+/* The neighbours' bisectors, once each, around the site's fan (it closes
+ * within vertex_count steps on a valid mesh). */
+static uint32_t site_degree(const cell_t *c)
+{
+    uint32_t degree = 0;
+    if (c->d->vertex_count >= 2u) {
+        uint32_t slot = c->site;
+        uint32_t x;
+        uint32_t y;
+        uint32_t next;
+        for (uint32_t step = 0; step <= c->d->vertex_count; step++) {
+            fan_triangle(c, slot, &x, &y, &next);
+            degree += (y != VOR__INFINITE) ? 1u : 0u;
+            slot = next;
+            if (slot == c->site) {
+                break;
+            }
+        }
+    }
+    return degree;
+}
+
+static void close_clip(vor_clip_t *clip, int error)
+{
+    clip->d = NULL;
+    clip->room = NULL;
+    clip->room_count = 0;
+    clip->reversed = 0;
+    clip->site = 0;
+    clip->lines = NULL;
+    clip->start = NULL;
+    clip->count = NULL;
+    clip->pieces = 0;
+    clip->next_piece = 0;
+    clip->error = error;
+}
+
+static void begin_frame(clip_frame_t *f, const vor_t *d, uint32_t site, const vor_point_t *room,
+                        uint32_t m, bool reversed)
+{
+    f->cell.d = d;
+    f->cell.weights = NULL;
+    f->cell.site = site;
+    f->cell.s = &d->sites[site];
+    f->cell.box = NULL;
+    f->room = room;
+    f->room_count = m;
+    f->reversed = reversed;
+}
+
+int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_point_t *room,
+                   uint32_t m, void *scratch, size_t scratch_bytes)
+{
+    if (clip == NULL) {
+        return VOR_ERR_ARG;
+    }
+    if ((d == NULL) || (room == NULL) || (m < 3u) || (m > VOR_CLIP_MAX_ROOM) ||
+        ((scratch == NULL) && (scratch_bytes > 0u)) || !vor__site_in_mesh(d, site)) {
+        close_clip(clip, VOR_ERR_ARG);
+        return VOR_ERR_ARG;
+    }
+    bool clockwise = false;
+    int error = check_room(room, m, &clockwise);
+    if (error != VOR_OK) {
+        close_clip(clip, error);
+        return error;
+    }
+    clip_frame_t f;
+    begin_frame(&f, d, site, room, m, clockwise);
+    uint32_t degree = site_degree(&f.cell);
+
+    /* the macro is the contract; its 36 bytes cover the alignment */
+    size_t skip = (size_t)(0u - (uintptr_t)scratch) & 3u;
+    uint32_t sites = degree + 1u; /* the site and its neighbours */
+    uint32_t capacity = VOR_CLIP_MAX_VERTICES(m, sites);
+    if (scratch_bytes < VOR_CLIP_SCRATCH_BYTES(m, sites)) {
+        close_clip(clip, VOR_ERR_BUFFER);
+        return VOR_ERR_BUFFER;
+    }
+    uint32_t *words = (uint32_t *)(void *)((unsigned char *)scratch + skip);
+    /* pieces of 3 lines at least, chains of 2: half the lines bound both
+     * (a shift: no division helper on ARMv6-M) */
+    uint32_t pieces = (capacity / 2u) + 1u;
+    uint32_t chains = pieces;
+    clip_work_t w;
+    w.f = &f;
+    w.capacity = capacity;
+    w.in = words;
+    w.out = words + capacity;
+    w.in_ends = words + (2u * capacity);
+    w.out_ends = w.in_ends + pieces;
+    w.sides = w.out_ends + pieces;
+    w.events = w.sides + capacity;
+    w.first = w.events + capacity;
+    w.last = w.first + chains;
+    w.next = w.last + chains;
+    /* the room, its straight angles dropped: edge i's line is dropped
+     * when edge i + 1 goes on along it */
+    w.out_count = 0;
+    w.out_pieces = 0;
+    for (uint32_t i = 0; i < m; i++) {
+        const vor_point_t *p = room_point(&f, i);
+        const vor_point_t *q = room_point(&f, (i + 1u == m) ? 0u : (i + 1u));
+        const vor_point_t *r = room_point(&f, (i + 2u >= m) ? (i + 2u - m) : (i + 2u));
+        if (vor__orient2d_sign(p, q, r) != 0) {
+            emit_line(&w, ROOM_LINE + i);
+        }
+    }
+    end_piece(&w);
+    swap_lists(&w);
+    /* cut by every neighbour's half-plane, around the fan */
+    if (d->vertex_count >= 2u) {
+        uint32_t slot = site;
+        uint32_t x;
+        uint32_t y;
+        uint32_t next;
+        for (uint32_t step = 0; (step <= d->vertex_count) && (w.in_pieces > 0u); step++) {
+            fan_triangle(&f.cell, slot, &x, &y, &next);
+            if (y != VOR__INFINITE) {
+                clip_all(&w, y);
+            }
+            slot = next;
+            if (slot == site) {
+                break;
+            }
+        }
+    }
+    /* each piece from its lowest vertex, the pieces by them (selection
+     * over the pieces' starts and counts, kept in sides and events) */
+    uint32_t *starts = w.sides;
+    uint32_t *counts = w.events;
+    uint32_t from = 0;
+    for (uint32_t k = 0; k < w.in_pieces; k++) {
+        starts[k] = from;
+        counts[k] = w.in_ends[k] - from;
+        from = w.in_ends[k];
+    }
+    for (uint32_t k = 0; k < w.in_pieces; k++) {
+        lowest_first(&f, w.in + starts[k], counts[k]);
+    }
+    for (uint32_t k = 0; (k + 1u) < w.in_pieces; k++) {
+        geo_point_t best;
+        geo_point_t p;
+        uint32_t at = k;
+        clip_vertex(&f, w.in[starts[k] + counts[k] - 1u], w.in[starts[k]], &best);
+        for (uint32_t j = k + 1u; j < w.in_pieces; j++) {
+            clip_vertex(&f, w.in[starts[j] + counts[j] - 1u], w.in[starts[j]], &p);
+            if (compare_vertices(&p, &best) < 0) {
+                copy_point(&best, &p);
+                at = j;
+            }
+        }
+        uint32_t t = starts[k];
+        starts[k] = starts[at];
+        starts[at] = t;
+        t = counts[k];
+        counts[k] = counts[at];
+        counts[at] = t;
+    }
+    clip->d = d;
+    clip->room = room;
+    clip->room_count = m;
+    clip->reversed = 0u;
+    if (clockwise) {
+        clip->reversed = 1u;
+    }
+    clip->site = site;
+    clip->lines = w.in;
+    clip->start = starts;
+    clip->count = counts;
+    clip->pieces = w.in_pieces;
+    clip->next_piece = 0;
+    clip->error = VOR_OK;
+    return VOR_OK;
+}
+
+/* |a| over n limbs, two's complement, into magnitude; a's sign. */
+static int magnitude_of(vor__limb *r, const vor__limb *a, size_t n)
+{
+    int sign = vor__mw_sign(a, n);
+    for (size_t i = 0; i < n; i++) {
+        r[i] = a[i];
+    }
+    if (sign < 0) {
+        vor__mw_neg(r, n);
+    }
+    return sign;
+}
+
+static bool is_even(const vor__limb *a)
+{
+    return (a[0] & 1u) == 0u;
+}
+
+/* x / w, y / w in lowest terms: divided by their greatest common divisor,
+ * found by Stein's binary algorithm (shifts and subtractions only; at
+ * most 2 x 160 steps), w > 0. */
+static void lowest_terms(vor__limb *x, vor__limb *y, vor__limb *w)
+{
+    vor__limb g[GEO_LIMBS];
+    vor__limb u[GEO_LIMBS];
+    vor__limb mx[GEO_LIMBS];
+    vor__limb my[GEO_LIMBS];
+    int sx = magnitude_of(mx, x, GEO_LIMBS);
+    int sy = magnitude_of(my, y, GEO_LIMBS);
+    /* gcd(w, |x|, |y|): g = gcd(w, |x|), then gcd(g, |y|); gcd(a, 0) = a */
+    vor__limb *others[2] = {mx, my};
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        g[i] = w[i];
+    }
+    for (unsigned k = 0; k < 2u; k++) {
+        for (size_t i = 0; i < GEO_LIMBS; i++) {
+            u[i] = others[k][i];
+        }
+        if (vor__mw_sign(u, GEO_LIMBS) == 0) {
+            continue;
+        }
+        unsigned shift = 0;
+        while (is_even(g) && is_even(u)) {
+            vor__mw_shr1(g, GEO_LIMBS);
+            vor__mw_shr1(u, GEO_LIMBS);
+            shift++;
+        }
+        while (is_even(g)) {
+            vor__mw_shr1(g, GEO_LIMBS);
+        }
+        /* g odd; each round halves u at least once (bounded by its bits) */
+        while (vor__mw_sign(u, GEO_LIMBS) != 0) {
+            while (is_even(u)) {
+                vor__mw_shr1(u, GEO_LIMBS);
+            }
+            if (vor__mw_compare(g, u, GEO_LIMBS) > 0) {
+                vor__limb t;
+                for (size_t i = 0; i < GEO_LIMBS; i++) {
+                    t = g[i];
+                    g[i] = u[i];
+                    u[i] = t;
+                }
+            }
+            vor__mw_sub(u, g, GEO_LIMBS);
+        }
+        for (unsigned i = 0; i < shift; i++) {
+            vor__mw_shl1(g, GEO_LIMBS);
+        }
+    }
+    /* divide all three by g (exact: the quotients fit 128 bits) */
+    vor__limb *numbers[3] = {mx, my, w};
+    for (unsigned k = 0; k < 3u; k++) {
+        vor__limb step[GEO_LIMBS];
+        for (size_t i = 0; i < GEO_LIMBS; i++) {
+            step[i] = g[i];
+        }
+        /* shift the divisor up past the number (below 2^101: at most
+         * 101 shifts, within the 160 bits), then subtract down */
+        unsigned shifts = 0;
+        while (vor__mw_compare(step, numbers[k], GEO_LIMBS) <= 0) {
+            vor__mw_shl1(step, GEO_LIMBS);
+            shifts++;
+        }
+        vor__limb q[GEO_LIMBS];
+        vor__mw_from_u64(q, GEO_LIMBS, 0u);
+        for (unsigned i = 0; i <= shifts; i++) {
+            vor__mw_shl1(q, GEO_LIMBS);
+            if (vor__mw_compare(numbers[k], step, GEO_LIMBS) >= 0) {
+                vor__mw_sub(numbers[k], step, GEO_LIMBS);
+                q[0] |= 1u;
+            }
+            vor__mw_shr1(step, GEO_LIMBS);
+        }
+        for (size_t i = 0; i < GEO_LIMBS; i++) {
+            numbers[k][i] = q[i];
+        }
+    }
+    for (size_t i = 0; i < GEO_LIMBS; i++) {
+        x[i] = mx[i];
+        y[i] = my[i];
+    }
+    if (sx < 0) {
+        vor__mw_neg(x, GEO_LIMBS);
+    }
+    if (sy < 0) {
+        vor__mw_neg(y, GEO_LIMBS);
+    }
+}
+
+/* The low 128 bits of a as four 32-bit limbs, least significant first. */
+static void export_number(uint32_t *out, const vor__limb *a)
+{
+    for (unsigned i = 0; i < VOR_EXACT_LIMBS; i++) {
+        unsigned bit = 32u * i;
+        out[i] = (uint32_t)(a[bit / VOR__LIMB_WIDTH] >> (bit % VOR__LIMB_WIDTH));
+    }
+}
+
+/* A piece's vertex: exact in absolute coordinates, (x + 2 w s.x) / 2w
+ * from the site's doubled frame, in lowest terms, and rounded. */
+static void exact_vertex(const clip_frame_t *f, uint32_t a, uint32_t b, vor_exact_point_t *out)
+{
+    geo_point_t p;
+    vor_vertex_t rounded;
+    vor__limb t[GEO_LIMBS];
+    const vor_point_t *s = f->cell.s;
+    clip_vertex(f, a, b, &p);
+    round_point(&p, s, &rounded);
+    VOR_ASSERT(rounded.status == VOR_VERTEX_IN_RANGE); /* in the room */
+    vor__mw_shl1(p.w, GEO_LIMBS); /* 2w < 2^66 */
+    mul_i64(t, p.w, s->x);        /* < 2^97 */
+    vor__mw_add(p.x, t, GEO_LIMBS);
+    mul_i64(t, p.w, s->y);
+    vor__mw_add(p.y, t, GEO_LIMBS);
+    lowest_terms(p.x, p.y, p.w);
+    out->point.x = rounded.point.x;
+    out->point.y = rounded.point.y;
+    export_number(out->x, p.x);
+    export_number(out->y, p.y);
+    export_number(out->w, p.w);
+}
+
+int vor_clip_next(vor_clip_t *clip, vor_exact_point_t *vertices, uint32_t capacity,
+                  uint32_t *count)
+{
+    if ((clip == NULL) || (clip->d == NULL)) {
+        return 0; /* a zeroed iterator, or a closed one */
+    }
+    if ((count == NULL) || ((vertices == NULL) && (capacity > 0u))) {
+        clip->error = VOR_ERR_ARG;
+        return 0;
+    }
+    if (clip->next_piece >= clip->pieces) {
+        clip->error = VOR_OK;
+        return 0;
+    }
+    uint32_t k = clip->next_piece;
+    uint32_t r = clip->count[k];
+    *count = r;
+    if (r > capacity) {
+        clip->error = VOR_ERR_BUFFER;
+        return 0;
+    }
+    clip_frame_t f;
+    begin_frame(&f, clip->d, clip->site, clip->room, clip->room_count, clip->reversed != 0u);
+    const uint32_t *lines = clip->lines + clip->start[k];
+    for (uint32_t i = 0; i < r; i++) {
+        exact_vertex(&f, lines[(i == 0u) ? (r - 1u) : (i - 1u)], lines[i], &vertices[i]);
+    }
+    clip->error = VOR_OK;
+    clip->next_piece++;
+    return 1;
+}
+
+int vor_clip_error(const vor_clip_t *clip)
+{
+    return (clip != NULL) ? clip->error : VOR_ERR_ARG;
+}
+
+/* One piece's boundary into the sums, a closed loop. A loop after the
+ * first begins with a zero term that brings its first vertex's w^2 into
+ * the denominator (add_edge of a point to itself), so that loops add up;
+ * sum->vertices then counts the terms (one step of the width bound each:
+ * a first loop of k vertices takes k, a later one k + 1). */
+static void add_piece(centroid_sum_t *sum, const clip_frame_t *f, const uint32_t *lines,
+                      uint32_t r)
+{
+    bool first_loop = sum->vertices == 0u;
+    geo_point_t p;
+    for (uint32_t i = 0; i < r; i++) {
+        clip_vertex(f, lines[(i == 0u) ? (r - 1u) : (i - 1u)], lines[i], &p);
+        if (first_loop) {
+            add_vertex(sum, &p);
+        } else {
+            sum->vertices++;
+            add_edge(sum, (i == 0u) ? &p : &sum->previous, &p);
+            if (i == 0u) {
+                copy_point(&sum->first, &p);
+            }
+            copy_point(&sum->previous, &p);
+        }
+    }
+    if (!first_loop) {
+        sum->vertices++;
+    }
+    add_edge(sum, &sum->previous, &sum->first);
+}
+
+int vor_clip_centroid(const vor_clip_t *clip, uint32_t piece, void *scratch,
+                      size_t scratch_bytes, vor_centroid_t *out)
+{
+    if ((clip == NULL) || (clip->d == NULL) || (out == NULL) ||
+        ((scratch == NULL) && (scratch_bytes > 0u)) ||
+        ((piece != VOR_CLIP_WHOLE) && (piece >= clip->pieces))) {
+        return VOR_ERR_ARG;
+    }
+    uint32_t from = (piece == VOR_CLIP_WHOLE) ? 0u : piece;
+    uint32_t to = (piece == VOR_CLIP_WHOLE) ? clip->pieces : (piece + 1u);
+    uint32_t vertices = 0;
+    uint32_t steps = 0;
+    for (uint32_t k = from; k < to; k++) {
+        vertices += clip->count[k];
+        steps += clip->count[k] + ((k > from) ? 1u : 0u);
+    }
+    const vor_point_t *s = &clip->d->sites[clip->site];
+    vor_centroid_t result;
+    result.point.x = s->x;
+    result.point.y = s->y;
+    result.area = 0;
+    result.vertices = 0;
+    if (vertices == 0u) {
+        write_centroid(out, &result);
+        return VOR_OK;
+    }
+    size_t usable;
+    size_t stride;
+    vor__limb *limbs = align_scratch(scratch, scratch_bytes, &usable);
+    if (!scratch_fits(usable, steps, &stride)) {
+        out->vertices = steps;
+        return VOR_ERR_BUFFER;
+    }
+    clip_frame_t f;
+    begin_frame(&f, clip->d, clip->site, clip->room, clip->room_count, clip->reversed != 0u);
+    centroid_sum_t sum;
+    begin_sums(&sum, limbs, stride);
+    for (uint32_t k = from; k < to; k++) {
+        add_piece(&sum, &f, clip->lines + clip->start[k], clip->count[k]);
+    }
+    bool positive = round_sums(&sum, sum.vertices, s, &result);
+    VOR_ASSERT(positive); /* every piece has a positive area */
+    (void)positive;
+    result.vertices = vertices;
+    write_centroid(out, &result);
+    return VOR_OK;
 }

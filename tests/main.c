@@ -23,5 +23,6 @@ int main(void)
     test_group("cdt", test_cdt);
     test_group("power", test_power);
     test_group("locate", test_locate);
+    test_group("clip", test_clip);
     return test_finish();
 }

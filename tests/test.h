@@ -132,5 +132,6 @@ void test_power(void);
 void test_interpolate(void);
 void test_field(void);
 void test_locate(void);
+void test_clip(void);
 
 #endif

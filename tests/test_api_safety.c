@@ -568,6 +568,77 @@ static void check_iterators(void)
     bad += (count != 77 || !test_same_bytes(poly, poly_before, sizeof poly));
     CHECK(bad == 0 && unchanged(), "cell: %u bad arguments accepted or wrote", bad);
 
+    /* cells clipped to a room: bad arguments and bad rooms leave the
+     * scratch and outputs alone and close the iterator; next and the
+     * centroid on a closed or zeroed iterator do nothing */
+    {
+        static const vor_point_t room[4] = {{-10, -10}, {9000, -10}, {9000, 5000}, {-10, 5000}};
+        static const vor_point_t bowtie[4] = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+        static uint8_t clip_scratch[VOR_CLIP_SCRATCH_BYTES(4, SAFE_SITES)];
+        static uint8_t clip_before[sizeof clip_scratch];
+        static vor_exact_point_t exact[VOR_CLIP_MAX_VERTICES(4, SAFE_SITES)];
+        static vor_exact_point_t exact_before[VOR_CLIP_MAX_VERTICES(4, SAFE_SITES)];
+        static vor_clip_t zero_clip;
+        uint32_t clip_capacity = VOR_CLIP_MAX_VERTICES(4, SAFE_SITES);
+        vor_clip_t clip;
+        vor_centroid_t c, c_before;
+        fill(clip_scratch, sizeof clip_scratch, 0x3C);
+        test_copy_bytes(clip_before, clip_scratch, sizeof clip_scratch);
+        fill(exact, sizeof exact, 0x77);
+        test_copy_bytes(exact_before, exact, sizeof exact);
+        fill(&c, sizeof c, 0x55);
+        test_copy_bytes(&c_before, &c, sizeof c);
+        bad = 0;
+        count = 77;
+        size_t n = sizeof clip_scratch;
+        bad += vor_clip_begin(NULL, &diagram, 0, room, 4, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, NULL, 0, room, 4, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_next(&clip, exact, clip_capacity, &count) != 0;
+        bad += vor_clip_error(&clip) != VOR_ERR_ARG;
+        bad += vor_clip_centroid(&clip, VOR_CLIP_WHOLE, NULL, 0, &c) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, 0, NULL, 4, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, 0, room, 2, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, 0, room, 0xFFFFFFFFu, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, 0, room, 4, NULL, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, SAFE_SITES, room, 4, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, VOR_NO_HINT, room, 4, clip_scratch, n) != VOR_ERR_ARG;
+        bad += vor_clip_begin(&clip, &diagram, 0, bowtie, 4, clip_scratch, n) != VOR_ERR_POLYGON;
+        bad += vor_clip_error(&clip) != VOR_ERR_POLYGON;
+        bad += vor_clip_next(&clip, exact, clip_capacity, &count) != 0;
+        bad += vor_clip_begin(&clip, &diagram, 0, room, 4, clip_scratch, 16) != VOR_ERR_BUFFER;
+        bad += vor_clip_next(&zero_clip, exact, clip_capacity, &count) != 0;
+        bad += vor_clip_error(&zero_clip) != VOR_OK;
+        bad += vor_clip_next(NULL, exact, clip_capacity, &count) != 0;
+        bad += vor_clip_error(NULL) != VOR_ERR_ARG;
+        bad += vor_clip_centroid(&zero_clip, VOR_CLIP_WHOLE, NULL, 0, &c) != VOR_ERR_ARG;
+        bad += vor_clip_centroid(NULL, VOR_CLIP_WHOLE, NULL, 0, &c) != VOR_ERR_ARG;
+        bad += (count != 77 || !test_same_bytes(exact, exact_before, sizeof exact) ||
+                !test_same_bytes(clip_scratch, clip_before, sizeof clip_scratch) ||
+                !test_same_bytes(&c, &c_before, sizeof c));
+        CHECK(bad == 0 && unchanged(), "clip: %u bad arguments accepted or wrote", bad);
+
+        /* a good room: bad outputs keep VOR_ERR_ARG, a short buffer
+         * VOR_ERR_BUFFER with the count, and next resumes */
+        bad = 0;
+        bad += vor_clip_begin(&clip, &diagram, 0, room, 4, clip_scratch, n) != VOR_OK;
+        bad += clip.pieces != 1u;
+        bad += vor_clip_next(&clip, exact, clip_capacity, NULL) != 0;
+        bad += vor_clip_error(&clip) != VOR_ERR_ARG;
+        bad += vor_clip_next(&clip, NULL, clip_capacity, &count) != 0;
+        bad += vor_clip_error(&clip) != VOR_ERR_ARG;
+        bad += vor_clip_next(&clip, exact, 2, &count) != 0;
+        bad += vor_clip_error(&clip) != VOR_ERR_BUFFER || count < 3u;
+        bad += !test_same_bytes(exact, exact_before, sizeof exact);
+        bad += vor_clip_centroid(&clip, 1, NULL, 0, &c) != VOR_ERR_ARG;
+        bad += vor_clip_centroid(&clip, 0, NULL, 0, NULL) != VOR_ERR_ARG;
+        bad += vor_clip_centroid(&clip, 0, NULL, 8, &c) != VOR_ERR_ARG;
+        bad += !test_same_bytes(&c, &c_before, sizeof c);
+        bad += vor_clip_next(&clip, exact, count, &count) != 1;
+        bad += vor_clip_next(&clip, exact, clip_capacity, &count) != 0;
+        bad += vor_clip_error(&clip) != VOR_OK;
+        CHECK(bad == 0 && unchanged(), "clip: a good room: %u wrong", bad);
+    }
+
     /* the centroid: bad arguments write neither the output nor the
      * scratch; too small a scratch writes only the vertex count */
     static uint8_t scratch[VOR_CENTROID_SCRATCH_BYTES(VOR_CELL_MAX_VERTICES(SAFE_SITES))];

@@ -49,6 +49,7 @@ links() {
     locate)         echo "bucket_grid incremental insertion_order mesh predicates queries" ;;
     move)           echo "bucket_grid dynamic incremental mesh predicates queries" ;;
     geometry)       echo "bucket_grid geometry incremental insertion_order mesh predicates queries" ;;
+    clip)           echo "bucket_grid geometry incremental insertion_order mesh predicates" ;;
     constrain)      echo "bucket_grid cdt crossing dynamic incremental insertion_order mesh predicates" ;;
     power)          echo "bucket_grid dynamic incremental insertion_order mesh power predicates queries" ;;
     power_cells)    echo "bucket_grid dynamic geometry incremental insertion_order mesh power predicates queries" ;;
@@ -77,7 +78,7 @@ print(" ".join(sorted(files)))
 PY
 }
 # In the order of the table: from the smallest firmware to everything.
-FEATURES="insert_nearest build_nearest locate move geometry constrain power power_cells interpolate laplace field raster_euclid raster_all everything"
+FEATURES="insert_nearest build_nearest locate move geometry clip constrain power power_cells interpolate laplace field raster_euclid raster_all everything"
 LEVELS="-Os -O2"
 
 # Sums the libvor input sections of a GNU ld map: "flash ram". An input

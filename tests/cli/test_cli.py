@@ -538,6 +538,150 @@ def cells_cases(rng, tmp):
               f"cells {args}: {r.returncode} {r.stderr!r}")
 
 
+def clip_cases(rng, tmp):
+    """vor cells --clip POLY [--exact] against exact checks in Fractions:
+    the exact pieces (lowest terms, w > 0) round to the printed ones, are
+    counterclockwise from their lowest vertex, lie in their site's closed
+    cell and the closed room, their areas add up to the room's exactly,
+    and random points strictly inside the room lie in a piece of their
+    nearest site; a box as a polygon gives --box's cells, --box --exact
+    rounds to --box; bad polygons and arguments exit 2 with nothing on
+    stdout."""
+    import math
+    import os
+    from fractions import Fraction as F
+    rooms = {
+        "L": [(0, 0), (60, 0), (60, 30), (30, 30), (30, 60), (0, 60)],
+        "U": [(0, 0), (60, 0), (60, 60), (40, 60), (40, 20), (20, 20), (20, 60), (0, 60)],
+        "comb": [(0, 0), (60, 0), (60, 60), (50, 10), (40, 60), (30, 10), (20, 60), (10, 10), (0, 60)],
+        "clockwise star": [(30, 0), (20, 20), (0, 25), (15, 40), (10, 60), (30, 48), (50, 60), (45, 40),
+                           (60, 25), (40, 20)],
+        "collinear edges": [(0, 0), (20, 0), (40, 0), (60, 0), (60, 30), (60, 60), (0, 60), (0, 30)],
+        "wide": [(-2**31, -2**31), (2**31 - 1, -2**31), (2**31 - 1, 2**31 - 1), (0, 0), (-2**31, 2**31 - 1)],
+    }
+    site_sets = [
+        ("random", lambda: [(rng.randint(-10, 70), rng.randint(-10, 70)) for _ in range(12)]),
+        ("grid", lambda: [(10 + 20 * i, 10 + 20 * j) for i in range(3) for j in range(3)]),
+        ("diagonal", lambda: [(5 + 10 * t, 5 + 10 * t) for t in range(6)] + [(25, 25)]),
+        ("full range", lambda: [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(10)]),
+    ]
+
+    def area2(poly):
+        return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
+                   for k in range(len(poly)))
+
+    def where(poly, q):
+        """1 strictly inside, 0 on the boundary, -1 outside (winding number)."""
+        winding = 0
+        for k in range(len(poly)):
+            a, b = poly[k], poly[(k + 1) % len(poly)]
+            o = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+            if o == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= q[1] <= max(a[1], b[1]):
+                return 0
+            if a[1] <= q[1] < b[1] and o > 0:
+                winding += 1
+            elif b[1] <= q[1] < a[1] and o < 0:
+                winding -= 1
+        return 1 if winding else -1
+
+    poly_path = os.path.join(tmp, "room.poly")
+    sites_path = os.path.join(tmp, "clip.sites")
+    for room_name, room in rooms.items():
+        with open(poly_path, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in room))
+        room_area2 = abs(area2(room))
+        xs, ys = [p[0] for p in room], [p[1] for p in room]
+        for set_name, make in site_sets:
+            if (room_name == "wide") != (set_name == "full range"):
+                continue
+            sites = make()
+            with open(sites_path, "w") as f:
+                f.write("".join(f"{x} {y}\n" for x, y in sites))
+            what = f"cells --clip {room_name} {set_name}"
+            rounded = run(["cells", "--clip", poly_path, sites_path], "")
+            exact = run(["cells", "--clip", poly_path, "--exact", sites_path], "")
+            check(rounded.returncode == 0 and exact.returncode == 0, f"{what}: {rounded.stderr!r} {exact.stderr!r}")
+            distinct = []
+            for p in sites:
+                if p not in distinct:
+                    distinct.append(p)
+            total, pieces, wrong = F(0), {}, 0
+            for line, eline in zip(rounded.stdout.splitlines(), exact.stdout.splitlines()):
+                got, egot = [int(v) for v in line.split()[1:]], [int(v) for v in eline.split()[1:]]
+                i, m = got[0], got[1]
+                if m == 0:
+                    continue
+                nums = egot[2:]
+                poly = [(F(nums[3 * k], nums[3 * k + 2]), F(nums[3 * k + 1], nums[3 * k + 2])) for k in range(m)]
+                ok = (egot[:2] == [i, m] and len(nums) == 3 * m and
+                      all(nums[3 * k + 2] > 0 and math.gcd(math.gcd(nums[3 * k], nums[3 * k + 1]), nums[3 * k + 2]) == 1
+                          for k in range(m)) and
+                      got[2:] == [round_half_up(c) for p in poly for c in p] and
+                      area2(poly) > 0 and
+                      all((poly[0][1], poly[0][0]) < (p[1], p[0]) for p in poly[1:]))
+                s = sites[i]
+                for p in poly:
+                    ok = ok and where(room, p) >= 0
+                    for n in distinct:
+                        ok = ok and 2 * (n[0] - s[0]) * p[0] + 2 * (n[1] - s[1]) * p[1] <= \
+                            n[0] ** 2 + n[1] ** 2 - s[0] ** 2 - s[1] ** 2
+                if not ok:
+                    wrong += 1
+                    if wrong <= 2:
+                        check(False, f"{what}: piece {line!r} / {eline!r} is wrong")
+                total += area2(poly)
+                pieces.setdefault(s, []).append(poly)
+            check(wrong == 0, f"{what}: {wrong} wrong pieces")
+            check(total == room_area2, f"{what}: areas add up to {total}/2, the room has {room_area2}/2")
+            for _ in range(60 if set_name != "full range" else 0):
+                q = (rng.randint(min(xs), max(xs)), rng.randint(min(ys), max(ys)))
+                if where(room, q) != 1:
+                    continue
+                best = min((q[0] - n[0]) ** 2 + (q[1] - n[1]) ** 2 for n in distinct)
+                near = [n for n in distinct if (q[0] - n[0]) ** 2 + (q[1] - n[1]) ** 2 == best]
+                check(any(where(poly, q) >= 0 for n in near for poly in pieces.get(n, [])),
+                      f"{what}: {q} in no piece of its nearest site")
+    # a box as a polygon: --box's cells; --box --exact rounds to --box
+    for _ in range(4):
+        sites = [(rng.randint(-50, 50), rng.randint(-50, 50)) for _ in range(15)]
+        box = (-40, -30, 45, 35)
+        with open(sites_path, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in sites))
+        with open(poly_path, "w") as f:
+            f.write(f"{box[0]} {box[1]}\n{box[2]} {box[1]}\n{box[2]} {box[3]}\n{box[0]} {box[3]}\n")
+        a = run(["cells", "--box", *map(str, box), sites_path], "")
+        b = run(["cells", "--clip", poly_path, sites_path], "")
+        e = run(["cells", "--box", *map(str, box), "--exact", sites_path], "")
+        check(a.returncode == 0 and a.stdout == b.stdout, f"cells --clip of a box: {b.stdout!r} vs {a.stdout!r}")
+        rounded_e = []
+        for line in e.stdout.splitlines():
+            v = [int(t) for t in line.split()[1:]]
+            rounded_e.append(" ".join(["c", str(v[0]), str(v[1])] +
+                                      [str(round_half_up(F(v[2 + 3 * k + c], v[4 + 3 * k]))) for k in range(v[1])
+                                       for c in (0, 1)]))
+        check(rounded_e == a.stdout.splitlines(), f"cells --box --exact does not round to --box")
+    r = run(["cells", "--box", "0", "5", "9", "5", "--exact", "-"], "1 1\n3 3\n")
+    check(r.returncode == 0 and r.stdout == "c 0 0\nc 1 0\n", f"cells --exact of a flat box: {r.stdout!r}")
+    # bad polygons and arguments
+    for name, poly in (("bowtie", [(0, 0), (10, 10), (10, 0), (0, 10)]),
+                       ("repeated", [(0, 0), (10, 0), (10, 0), (0, 10)]),
+                       ("touching", [(0, 0), (40, 0), (40, 40), (30, 40), (20, 0), (10, 40), (0, 40)]),
+                       ("collinear", [(0, 0), (10, 0), (20, 0)])):
+        with open(poly_path, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in poly))
+        r = run(["cells", "--clip", poly_path, "-"], "1 1\n5 5\n")
+        check(r.returncode == 2 and r.stdout == "" and "not simple" in r.stderr,
+              f"cells --clip {name}: {r.returncode} {r.stderr!r}")
+    with open(poly_path, "w") as f:
+        f.write("0 0\n10 0\n")
+    for args in (["--clip", poly_path, "-"], ["--clip", os.path.join(tmp, "missing.poly"), "-"],
+                 ["--box", "0", "0", "9", "9", "--clip", poly_path, "-"], ["--exact", "-"],
+                 ["--clip", poly_path]):
+        r = run(["cells", *args], "0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: "),
+              f"cells {args}: {r.returncode} {r.stderr!r}")
+
+
 def weighted_compare(a, b):
     """Exact order of sqrt(D)/w1 - w2 for a = (D, w1, w2), b likewise:
     brackets of sqrt(D * 4^t) with growing t (equality only when the
@@ -2144,6 +2288,7 @@ def main():
         locate_within_cases(rng, tmp)
         raster_cases(rng, tmp)
         cells_cases(rng, tmp)
+        clip_cases(random.Random(2715), tmp)
         raster_metric_cases(rng, tmp)
         contours_cases(rng, tmp)
         help_cases(tmp)

@@ -12,7 +12,9 @@
  * first occurrence, the freed ids) and brute force with exact wide-integer
  * distances; on small sets the triangles are checked for empty
  * circumcircles, positive area and the count 2n - h - 2; cell centroids
- * against vor_cell and their box. Diagrams of odd capacity carry a motion
+ * against vor_cell and their box; cells clipped to random rooms (simple
+ * or not, by brute force; a box room's one piece is vor_cell's cell).
+ * Diagrams of odd capacity carry a motion
  * cache (vor_motion_attach), whose bytes a failing call must not change
  * either.
  *
@@ -1023,6 +1025,129 @@ static void op_centroid(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
                          out.point.y == (s.y < box.y0 ? box.y0 : s.y > box.y1 ? box.y1 : s.y),
                      "centroid: an empty cell's point is not the box point nearest the site");
     }
+}
+
+/* Is the room simple, by brute force over its edges (the harness's own
+ * orientations)? */
+static int room_is_simple(const vor_point_t *v, uint32_t m)
+{
+    for (uint32_t i = 0; i < m; i++) {
+        vor_point_t a = v[i], b = v[(i + 1u) % m], c = v[(i + 2u) % m];
+        if (a.x == b.x && a.y == b.y)
+            return 0;
+        /* consecutive edges folding back */
+        if (fuzz_orient(a, b, c) == 0 &&
+            (__int128)((int64_t)b.x - a.x) * ((int64_t)c.x - b.x) +
+                    (__int128)((int64_t)b.y - a.y) * ((int64_t)c.y - b.y) <
+                0)
+            return 0;
+        for (uint32_t j = i + 2u; j < m; j++) {
+            if (i == 0u && j + 1u == m)
+                continue;
+            vor_point_t p = v[j], q = v[(j + 1u) % m];
+            int o1 = fuzz_orient(a, b, p), o2 = fuzz_orient(a, b, q);
+            int o3 = fuzz_orient(p, q, a), o4 = fuzz_orient(p, q, b);
+            if (o1 * o2 > 0 || o3 * o4 > 0)
+                continue;
+            if (o1 != 0 || o2 != 0)
+                return 0;
+            /* collinear: do the spans meet? */
+            int64_t lo1 = a.x < b.x ? a.x : b.x, hi1 = a.x < b.x ? b.x : a.x;
+            int64_t lo2 = p.x < q.x ? p.x : q.x, hi2 = p.x < q.x ? q.x : p.x;
+            int64_t ly1 = a.y < b.y ? a.y : b.y, hy1 = a.y < b.y ? b.y : a.y;
+            int64_t ly2 = p.y < q.y ? p.y : q.y, hy2 = p.y < q.y ? q.y : p.y;
+            if (lo1 <= hi2 && lo2 <= hi1 && ly1 <= hy2 && ly2 <= hy1)
+                return 0;
+        }
+    }
+    return 1;
+}
+
+/* vor_clip_begin of a random id and room (often not simple; sometimes a
+ * box, whose one piece must be vor_cell's cell), its pieces and centroids:
+ * errors leave everything alone, pieces have 3 vertices or more, in the
+ * room's bounding box, and a box's piece is the box cell vertex for
+ * vertex. */
+static void op_clip(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
+{
+#define CLIP_ROOM_MOST 8u
+    static uint8_t scratch[VOR_CLIP_SCRATCH_BYTES(CLIP_ROOM_MOST, MOST_SITES)];
+    static uint8_t before_scratch[sizeof scratch];
+    static uint8_t sums[VOR_CLIP_CENTROID_SCRATCH_BYTES(CLIP_ROOM_MOST, MOST_SITES)];
+    static vor_exact_point_t piece[VOR_CLIP_MAX_VERTICES(CLIP_ROOM_MOST, MOST_SITES)];
+    vor_point_t room[CLIP_ROOM_MOST];
+    uint8_t how = fuzz_u8(r);
+    uint32_t n = 3u + (how % (CLIP_ROOM_MOST - 2u));
+    int box_room = (how & 0x80u) != 0u;
+    if (box_room) {
+        vor_box_t box = draw_box(r, previous);
+        n = 4;
+        room[0] = (vor_point_t){box.x0, box.y0};
+        room[1] = (vor_point_t){box.x1, box.y0};
+        room[2] = (vor_point_t){box.x1, box.y1};
+        room[3] = (vor_point_t){box.x0, box.y1};
+    } else {
+        for (uint32_t i = 0; i < n; i++)
+            room[i] = fuzz_point(r, previous);
+    }
+    uint32_t site = draw_hint(r, m);
+    vor_clip_t clip;
+    memset(scratch, 0x5a, sizeof scratch);
+    memcpy(before_scratch, scratch, sizeof scratch);
+    snapshot(m);
+    int result = vor_clip_begin(&clip, &m->d, site, room, n, scratch, sizeof scratch);
+    FUZZ_REQUIRE(unchanged(m), "clip changed the diagram");
+    int simple = room_is_simple(room, n);
+    if (!is_site(m, site) || !simple) {
+        FUZZ_REQUIRE(result == (!is_site(m, site) ? VOR_ERR_ARG : VOR_ERR_POLYGON) &&
+                         vor_clip_error(&clip) == result &&
+                         memcmp(scratch, before_scratch, sizeof scratch) == 0,
+                     "clip: a bad site or room accepted, or the scratch written");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "clip failed on a simple room");
+    int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+    for (uint32_t i = 0; i < n; i++) {
+        x0 = room[i].x < x0 ? room[i].x : x0;
+        x1 = room[i].x > x1 ? room[i].x : x1;
+        y0 = room[i].y < y0 ? room[i].y : y0;
+        y1 = room[i].y > y1 ? room[i].y : y1;
+    }
+    uint32_t count = 0, pieces = 0, total = 0;
+    while (vor_clip_next(&clip, piece, VOR_CLIP_MAX_VERTICES(CLIP_ROOM_MOST, MOST_SITES), &count)) {
+        FUZZ_REQUIRE(count >= 3u, "clip: a piece of fewer than 3 vertices");
+        for (uint32_t i = 0; i < count; i++)
+            FUZZ_REQUIRE(piece[i].point.x >= x0 && piece[i].point.x <= x1 &&
+                             piece[i].point.y >= y0 && piece[i].point.y <= y1 &&
+                             (int32_t)piece[i].w[VOR_EXACT_LIMBS - 1u] >= 0,
+                         "clip: a vertex outside the room's box, or w < 0");
+        vor_centroid_t c;
+        FUZZ_REQUIRE(vor_clip_centroid(&clip, pieces, sums, sizeof sums, &c) == VOR_OK &&
+                         c.vertices == count && c.point.x >= x0 && c.point.x <= x1 &&
+                         c.point.y >= y0 && c.point.y <= y1,
+                     "clip: a piece's centroid failed or outside the room's box");
+        if (box_room) {
+            vor_box_t box = {room[0].x, room[0].y, room[2].x, room[2].y};
+            vor_point_t cell[VOR_CELL_MAX_VERTICES(MOST_SITES)];
+            uint32_t k = 0;
+            FUZZ_REQUIRE(vor_cell(&m->d, site, &box, cell, VOR_CELL_MAX_VERTICES(MOST_SITES), &k) ==
+                                 VOR_OK &&
+                             k == count && pieces == 0u,
+                         "clip: a box room's piece is not the box cell");
+            for (uint32_t i = 0; i < count; i++)
+                FUZZ_REQUIRE(cell[i].x == piece[i].point.x && cell[i].y == piece[i].point.y,
+                             "clip: a box room's vertex differs from the box cell's");
+        }
+        total += count;
+        pieces++;
+    }
+    FUZZ_REQUIRE(vor_clip_error(&clip) == VOR_OK && pieces == clip.pieces,
+                 "clip: the iterator stopped early");
+    vor_centroid_t whole;
+    FUZZ_REQUIRE(vor_clip_centroid(&clip, VOR_CLIP_WHOLE, sums, sizeof sums, &whole) == VOR_OK &&
+                     whole.vertices == total,
+                 "clip: the whole centroid failed or miscounted");
+#undef CLIP_ROOM_MOST
 }
 
 /* Hull sites counted by brute force: on the segment of a strict hull edge. */
@@ -2454,6 +2579,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         case 6: op_track(&r, &m, &previous); break;
         case 7: op_cells(&r, &m, &previous); break;
         case 8: op_triangles(&m); op_edges_neighbours(&r, &m); break;
+        case 9: op_clip(&r, &m, &previous); break;
         case 10: op_centroid(&r, &m, &previous); break;
         case 11: op_remove(&r, &m); break;
         case 12: op_move(&r, &m, &previous); break;

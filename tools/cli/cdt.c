@@ -48,24 +48,6 @@ const char cli_cdt_help[] =
 __extension__ typedef __int128 wide_t;
 __extension__ typedef unsigned __int128 uwide_t;
 
-/* The decimal digits of v. */
-static void append_wide(cli_output_t *out, wide_t v)
-{
-    char digits[48];
-    size_t n = 0;
-    uwide_t m = (v < 0) ? (uwide_t)(-(v + 1)) + 1u : (uwide_t)v;
-    do {
-        digits[n++] = (char)('0' + (int)(m % 10u));
-        m /= 10u;
-    } while (m != 0u);
-    if (v < 0) {
-        cli_append(out, "-");
-    }
-    while (n > 0u) {
-        cli_append(out, "%c", digits[--n]);
-    }
-}
-
 static wide_t gcd(wide_t a, wide_t b)
 {
     a = (a < 0) ? -a : a;
@@ -350,11 +332,11 @@ int cli_cdt(int argc, char **argv)
         }
         cli_append(&out, "s %u %u %u %u %u ", rename[i], through[0][0], through[0][1],
                    through[1][0], through[1][1]);
-        append_wide(&out, x);
+        cli_append_wide(&out, x);
         cli_append(&out, " ");
-        append_wide(&out, y);
+        cli_append_wide(&out, y);
         cli_append(&out, " ");
-        append_wide(&out, w);
+        cli_append_wide(&out, w);
         cli_append(&out, "\n");
     }
 #define RENAME(v) (((v) >= capacity) ? rename[(v) - capacity] : (v))

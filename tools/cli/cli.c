@@ -849,3 +849,21 @@ void *cli_query_diagram(vor_t *d, const vor_point_t *sites, uint32_t n, const ch
     }
     return arena;
 }
+
+void cli_append_wide(cli_output_t *out, cli_wide_t v)
+{
+    __extension__ typedef unsigned __int128 unsigned_wide_t;
+    char digits[48];
+    size_t n = 0;
+    unsigned_wide_t m = (v < 0) ? (unsigned_wide_t)(-(v + 1)) + 1u : (unsigned_wide_t)v;
+    do {
+        digits[n++] = (char)('0' + (int)(m % 10u));
+        m /= 10u;
+    } while (m != 0u);
+    if (v < 0) {
+        cli_append(out, "-");
+    }
+    while (n > 0u) {
+        cli_append(out, "%c", digits[--n]);
+    }
+}

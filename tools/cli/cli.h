@@ -154,6 +154,9 @@ void cli_append(cli_output_t *out, const char *format, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* The decimal digits of a 128-bit integer (exact coordinates). */
+__extension__ typedef __int128 cli_wide_t;
+void cli_append_wide(cli_output_t *out, cli_wide_t v);
 /* Sets d up for max_sites sites (at least 1) in a malloc'd arena, which
  * it returns for the caller to free; exits with status 2 on failure. */
 void *cli_diagram(vor_t *d, uint32_t max_sites);

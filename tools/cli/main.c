@@ -6,7 +6,7 @@
  *   vor delaunay FILE         the Delaunay triangulation of a site file
  *   vor nearest SITES QUERIES the nearest (or --k=K nearest) sites to each query
  *   vor raster ... SITES      the discrete Voronoi diagram of a frame
- *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box
+ *   vor cells --box X0 Y0 X1 Y1 SITES   Voronoi cells clipped to a box (or --clip POLY)
  *   vor ops [--capacity N] FILE   a dynamic diagram driven by a script
  *   vor interpolate SITES QUERIES  exact natural-neighbour interpolation
  *                             (Sibson's; --laplace: Laplace's)
@@ -30,7 +30,7 @@ static const struct {
     {"delaunay", cli_delaunay, "Delaunay triangles of a site file (--stats, --order=)"},
     {"nearest", cli_nearest, "nearest (--k=K: K nearest) sites to each query point"},
     {"raster", cli_raster, "discrete Voronoi diagram: --labels OUT.raw or --png OUT.png (y up)"},
-    {"cells", cli_cells, "Voronoi cells clipped to a box (--box X0 Y0 X1 Y1 SITES)"},
+    {"cells", cli_cells, "Voronoi cells clipped to a box or polygon (--box X0 Y0 X1 Y1 | --clip POLY) SITES"},
     {"draw", cli_draw, "SVG picture of the diagram (SITES -o OUT.svg; --triangles --ids --hull)"},
     {"ops", cli_ops, "insert/remove/move/nearest/triangles script ([--capacity N] FILE)"},
     {"cdt", cli_cdt, "constrained Delaunay triangulation (SITES CONSTRAINTS; --domain)"},
