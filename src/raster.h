@@ -26,7 +26,7 @@ typedef struct vor__run {
 
 /* Adds pixel i, labelled site, to the row's runs (count of them so far):
  * it extends the last run when the label repeats. Returns the new count. */
-static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t i, uint32_t site)
+VOR__ALWAYS_INLINE uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t i, uint32_t site)
 {
     if ((count > 0u) && (runs[count - 1u].site == site)) {
         runs[count - 1u].end = i + 1u;

@@ -715,7 +715,7 @@ static uint32_t power_distance(const rank_key_t *k)
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
  * (qx, qy): the floor of its distance under m's metric, saturated (ADD,
  * COMPOUND and POWER: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
-static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
+VOR__ALWAYS_INLINE uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
     m->key(m, site, qx, qy, &k);
@@ -1243,7 +1243,7 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
 
 /* VOR_OK when the metric's fields are usable (weights, exponent, form,
  * offsets); else VOR_ERR_ARG. Reads every site once. */
-static int metric_check(const vor_raster_sites_t *s)
+VOR__ALWAYS_INLINE int metric_check(const vor_raster_sites_t *s)
 {
     if ((unsigned)s->metric > (unsigned)VOR_METRIC_POWER) {
         return VOR_ERR_ARG;
@@ -1314,7 +1314,7 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
 
 /* Sets m up for the checked request r (its sites past metric_check): the
  * comparison widths from the span of sites and frame, and the tiles. */
-static void prepare(metric_t *m, const vor__raster_t *r)
+VOR__ALWAYS_INLINE void prepare(metric_t *m, const vor__raster_t *r)
 {
     const vor_raster_frame_t *frame = r->frame;
     const vor_raster_sites_t *s = r->sites;
@@ -1419,8 +1419,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
 /* ----------------------------------------------------- distance pixels */
 
 /* The floor of each pixel's own site's distance under m's metric. */
-static void distances(const void *state, uint32_t j, const vor__run_t *runs, uint32_t count,
-                      uint32_t *px)
+VOR__ALWAYS_INLINE void distances(const void *state, uint32_t j, const vor__run_t *runs,
+                                  uint32_t count, uint32_t *px)
 {
     const metric_t *m = state;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
