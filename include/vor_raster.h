@@ -101,6 +101,25 @@
  *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
  *   VOR_RASTER_DISTANCE works with every metric (DISTANCE VALUES).
  *
+ * K NEAREST (k-order diagrams, Teramoto section 2.3.4)
+ *   vor_raster_nearest ranks the K nearest sites of every pixel (K
+ *   farthest for FARTHEST), every metric, the same exact comparisons,
+ *   ties to the smaller index; K up to VOR_RASTER_MAX_NEAREST (16).
+ *
+ *     static uint32_t band[8 * 320 * 3];           // 8 rows of 3 labels
+ *     static uint8_t work[VOR_RASTER_NEAREST_WORK_BYTES(256, 320, 3)]
+ *         __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
+ *     out.kind = VOR_RASTER_NEAREST;                // nearest first
+ *     out.band = band; out.band_bytes = sizeof band; out.band_rows = 8;
+ *     int err = vor_raster_nearest(&frame, &set, 3, &out, NULL, work,
+ *                                  sizeof work);
+ *
+ *   VOR_RASTER_NEAREST gives K uint32_t a pixel (VOR_RASTER_NO_SITE past
+ *   the site count), VOR_RASTER_KSETS a picture of the k-sets (each the
+ *   mean colour of its sites, boundary565 between k-sets), and every
+ *   other kind the K-th nearest site: the K-th order diagram. A firmware
+ *   that never calls it links none of it.
+ *
  * FIELDS
  *   vor_field_raster renders a diagram's natural-neighbour interpolant
  *   (vor.h: vor_interpolate, Sibson's; or Laplace's) of int32 site values
@@ -267,9 +286,8 @@ typedef struct vor_raster_options {
 #define VOR_RASTER_MAX_NEAREST 16u
 #define VOR_RASTER_NO_SITE 0xFFFFFFFFu
 #define VOR_RASTER_NEAREST_PIXEL_BYTES(kind, k)                                \
-    ((kind) == VOR_RASTER_NEAREST ? 4u * (size_t)(k)                          \
-     : (kind) == VOR_RASTER_KSETS ? 2u                                         \
-                                  : VOR_RASTER_PIXEL_BYTES(kind))
+    (((kind) == VOR_RASTER_NEAREST) ? (4u * (size_t)(k))                      \
+     : (((kind) == VOR_RASTER_KSETS) ? 2u : VOR_RASTER_PIXEL_BYTES(kind)))
 
 /* Work memory for up to n sites and frames up to width pixels wide: 48
  * bytes per site (sort orders, candidates, envelopes) and 16 per pixel of

@@ -1540,7 +1540,8 @@ int vor_raster_nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t
     ko.site = ko.slot + k + 1u;
     sets[0] = ko.site + k + 1u;
     sets[1] = sets[0] + ((size_t)width * ko.ranked);
-    size_t used = vor__align8((size_t)((uint8_t *)(sets[1] + ((size_t)width * ko.ranked)) - r.rest));
+    size_t used = vor__align8((((size_t)k + 1u) * (sizeof(rank_key_t) + 8u)) +
+                              ((size_t)width * ko.ranked * 8u));
     r.rest += used;
     r.rest_bytes -= used;
     for (uint32_t q = 0; q <= k; q++) {

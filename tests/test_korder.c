@@ -308,11 +308,20 @@ static vor_raster_sites_t point_set(enum vor_metric metric, uint32_t n)
     return set;
 }
 
-static void random_sites(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t n)
+/* n random points (n <= 4 MAX_SITES) around the frame. */
+static void random_points(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t n)
 {
     for (uint32_t s = 0; s < n; s++) {
         points[s].x = f->origin_x + test_rng_range(rng, -12, (int32_t)f->width * f->step_x + 12);
         points[s].y = f->origin_y + test_rng_range(rng, -12, (int32_t)f->height * f->step_y + 12);
+    }
+}
+
+/* n <= MAX_SITES random point sites with weights and colours. */
+static void random_sites(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t n)
+{
+    random_points(rng, f, n);
+    for (uint32_t s = 0; s < n; s++) {
         mult[s] = 1 + test_rng_range(rng, 0, 4);
         add[s] = test_rng_range(rng, -8, 8);
         power[s] = test_rng_range(rng, -200, 200);
@@ -410,7 +419,8 @@ static void shaped_cases(test_rng_t *rng)
 {
     static const uint32_t ks[] = {2, 3};
     vor_raster_frame_t f = ref_frame(-10, -8, 1, 1, 20, 14);
-    random_sites(rng, &f, 4u * 8u);
+    random_sites(rng, &f, 8);
+    random_points(rng, &f, 4u * 8u);
     for (uint32_t s = 0; s <= 8u; s++) {
         offsets[s] = 4u * s;
     }
