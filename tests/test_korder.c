@@ -26,13 +26,16 @@ static int32_t mult[MAX_SITES], add[MAX_SITES];
 static int64_t power[MAX_SITES];
 static uint32_t offsets[MAX_SITES + 1u];
 static uint16_t palette[MAX_SITES];
+static uint32_t palette888[MAX_SITES];
 /* the reference: per pixel, MAX_K ranks */
 static uint32_t expect[MAX_PIXELS * MAX_K];
 /* the captured frame: per pixel, up to MAX_K values */
 static uint32_t got[MAX_PIXELS * MAX_K];
 static uint32_t band_memory[MAX_PIXELS * MAX_K];
-static uint8_t work[VOR_RASTER_NEAREST_WORK_BYTES(MAX_SITES, MAX_W, MAX_K)]
-    __attribute__((aligned(8)));
+/* the frames above, and the pool case's 320 x 2 frame with K = 2 */
+#define WORK_FRAMES VOR_RASTER_NEAREST_WORK_BYTES(MAX_SITES, MAX_W, MAX_K)
+#define WORK_POOL VOR_RASTER_NEAREST_WORK_BYTES(3, 320, 2)
+static uint8_t work[WORK_FRAMES > WORK_POOL ? WORK_FRAMES : WORK_POOL] __attribute__((aligned(8)));
 static uint32_t areas[MAX_SITES];
 
 static const char *const metric_names[] = {"euclid",   "l1",        "linf",    "lp",
@@ -145,8 +148,10 @@ static int capture_flush(void *user, uint32_t first_row, uint32_t rows, const vo
     }
     uint32_t n = rows * c->width * c->values;
     for (uint32_t v = 0; v < n; v++) {
+        const uint8_t *b = (const uint8_t *)pixels + 3u * v;
         uint32_t x = c->bytes == 1u   ? ((const uint8_t *)pixels)[v]
                      : c->bytes == 2u ? ((const uint16_t *)pixels)[v]
+                     : c->bytes == 3u ? (uint32_t)b[0] << 16 | (uint32_t)b[1] << 8 | b[2]
                                       : ((const uint32_t *)pixels)[v];
         got[first_row * c->width * c->values + v] = x;
     }
@@ -162,7 +167,7 @@ static void render_kind(const char *name, const vor_raster_frame_t *f,
                         uint32_t band_rows, enum vor_raster_kind kind)
 {
     uint32_t values = kind == VOR_RASTER_NEAREST ? k : 1u;
-    uint32_t bytes = kind == VOR_RASTER_BOUNDARY ? 1u : kind == VOR_RASTER_KSETS ? 2u : 4u;
+    uint32_t bytes = (uint32_t)VOR_RASTER_NEAREST_PIXEL_BYTES(kind, 1u);
     capture_t cap = {0, f->width, values, bytes, 0, 0, 0};
     vor_raster_output_t out = {0};
     out.kind = kind;
@@ -173,6 +178,7 @@ static void render_kind(const char *name, const vor_raster_frame_t *f,
     out.user = &cap;
     out.areas = areas;
     out.palette565 = palette;
+    out.palette888 = palette888;
     out.boundary565 = 0xFFFFu;
     vor_raster_options_t options = {method};
     for (uint32_t s = 0; s < set->count; s++) {
@@ -194,8 +200,13 @@ static void render_kind(const char *name, const vor_raster_frame_t *f,
             uint32_t want = 0;
             if (kind == VOR_RASTER_NEAREST) {
                 want = expect[p * MAX_K + v];
-            } else if (kind == VOR_RASTER_LABEL32) {
+            } else if (kind == VOR_RASTER_LABEL32 || kind == VOR_RASTER_LABEL16 ||
+                       kind == VOR_RASTER_LABEL8) {
                 want = kth(p, k, set->count);
+            } else if (kind == VOR_RASTER_RGB565) {
+                want = palette[kth(p, k, set->count)];
+            } else if (kind == VOR_RASTER_RGB888) {
+                want = palette888[kth(p, k, set->count)];
             } else if (kind == VOR_RASTER_BOUNDARY) {
                 want = (i + 1u < w && kth(p + 1u, k, set->count) != kth(p, k, set->count)) ||
                        (j + 1u < h && kth(p + w, k, set->count) != kth(p, k, set->count));
@@ -326,6 +337,7 @@ static void random_sites(test_rng_t *rng, const vor_raster_frame_t *f, uint32_t 
         add[s] = test_rng_range(rng, -8, 8);
         power[s] = test_rng_range(rng, -200, 200);
         palette[s] = (uint16_t)test_rng_u32(rng);
+        palette888[s] = test_rng_u32(rng) & 0xFFFFFFu;
     }
 }
 
@@ -447,6 +459,32 @@ static void band_height_cases(test_rng_t *rng)
         render_kind("bands", &f, &set, 3, VOR_RASTER_FAST, rows, VOR_RASTER_NEAREST);
         render_kind("bands", &f, &set, 2, VOR_RASTER_BRUTE, rows, VOR_RASTER_BOUNDARY);
     }
+    /* the K-th label in every label and colour kind */
+    static const enum vor_raster_kind kinds[] = {VOR_RASTER_LABEL8, VOR_RASTER_LABEL16,
+                                                 VOR_RASTER_RGB565, VOR_RASTER_RGB888};
+    for (unsigned q = 0; q < 4u; q++) {
+        render_kind("kinds", &f, &set, 3, VOR_RASTER_FAST, 4, kinds[q]);
+    }
+}
+
+/* A frame wide enough that the tile lists of far sites (whose bounds
+ * overlap) overflow the culling pool: those tiles take every site. */
+static void pool_case(void)
+{
+    vor_raster_frame_t f = ref_frame(0, 0, 1, 1, 320, 2);
+    static const enum vor_metric metrics[] = {VOR_METRIC_EUCLID, VOR_METRIC_L1,
+                                              VOR_METRIC_FARTHEST};
+    for (unsigned m = 0; m < 3u; m++) {
+        for (uint32_t s = 0; s < 3u; s++) {
+            points[s].x = 160;
+            points[s].y = 100000 + (int32_t)s;
+            palette[s] = (uint16_t)(0x0841u * (s + 1u));
+        }
+        vor_raster_sites_t set = point_set(metrics[m], 3);
+        reference_frame(&f, &set, 2, "pool");
+        render_kind("pool", &f, &set, 2, VOR_RASTER_FAST, 1, VOR_RASTER_NEAREST);
+        render_kind("pool", &f, &set, 2, VOR_RASTER_FAST, 2, VOR_RASTER_KSETS);
+    }
 }
 
 /* A flush that stops the frame: VOR_ERR_STOPPED after the bands before
@@ -508,7 +546,7 @@ static void error_cases(void)
     struct {
         int want;
         int got;
-    } r[16];
+    } r[20];
     unsigned n = 0;
     r[n].want = VOR_ERR_ARG;
     r[n++].got = vor_raster_nearest(&f, &set, 0, &out, NULL, work, need);
@@ -533,6 +571,8 @@ static void error_cases(void)
     out.band_bytes++;
     r[n].want = VOR_ERR_NOMEM;
     r[n++].got = vor_raster_nearest(&f, &set, 3, &out, NULL, work, need - 1u);
+    r[n].want = VOR_ERR_NOMEM;
+    r[n++].got = vor_raster_nearest(&f, &set, 3, &out, NULL, work, VOR_RASTER_WORK_BYTES(5, 8) - 1u);
     r[n].want = VOR_ERR_ALIGN;
     r[n++].got = vor_raster_nearest(&f, &set, 3, &out, NULL, work + 4, need);
     /* KSETS without a palette; an unknown kind; vor_raster refuses the
@@ -582,4 +622,5 @@ void test_korder(void)
     TEST_CASE("shaped") shaped_cases(test_rng_seed(&rng, 2727));
     TEST_CASE("band_heights") band_height_cases(test_rng_seed(&rng, 2727));
     TEST_CASE("stop") stop_cases(test_rng_seed(&rng, 2727));
+    TEST_CASE("pool") pool_case();
 }
