@@ -110,7 +110,7 @@ static uint64_t render(const vor_raster_sites_t *sites, const vor_raster_frame_t
     out.flush = flush;
     out.user = s;
     out.palette565 = palette;
-    vor_raster_options_t options = {method};
+    vor_raster_options_t options = {method, 0};
     uint64_t start = vor_port_counter();
     __asm__ volatile("" ::: "memory");
     int err = vor_raster(frame, sites, &out, &options, work, sizeof work);

@@ -116,7 +116,7 @@
  *
  *   VOR_RASTER_NEAREST gives K uint32_t a pixel (VOR_RASTER_NO_SITE past
  *   the site count), VOR_RASTER_KSETS a picture of the k-sets (each the
- *   mean colour of its sites, boundary565 between k-sets), and every
+ *   mean colour of its sites, options->boundary565 between k-sets), and every
  *   other kind the K-th nearest site: the K-th order diagram. A firmware
  *   that never calls it links none of it.
  *
@@ -263,13 +263,15 @@ typedef struct vor_raster_output {
     const uint16_t *palette565;  /* RGB565: colour of site k */
     const uint32_t *palette888;  /* RGB888: 0xRRGGBB of site k */
     uint32_t *areas;             /* optional: pixels of each site, [count] */
-    uint16_t boundary565;        /* KSETS: the colour of k-set boundaries */
 } vor_raster_output_t;
 
 /* How to render: NULL or a zero-initialised struct for the defaults (a
  * field added later keeps the old behaviour at 0). */
 typedef struct vor_raster_options {
     enum vor_raster_method method; /* VOR_RASTER_FAST by default */
+    uint16_t boundary565;          /* vor_raster_nearest's KSETS: the colour
+                                      of the boundaries between k-sets
+                                      (0, black, by default) */
 } vor_raster_options_t;
 
 /* Bytes per pixel of a kind (0 for an unknown kind). */
@@ -344,7 +346,8 @@ int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t 
  * The kinds (K' = min(K, count), the ranks there are):
  *   NEAREST         K uint32_t a pixel, the sites nearest first; ranks
  *                   past K' read VOR_RASTER_NO_SITE
- *   KSETS           uint16_t: boundary565 where the right or the lower
+ *   KSETS           uint16_t: options->boundary565 (0 without options)
+ *                   where the right or the lower
  *                   neighbour has another k-set (the unordered set of its
  *                   K' nearest), else the k-set's colour: per channel, the
  *                   mean (rounded down) of palette565 of its sites

@@ -168,7 +168,6 @@ int vor_field_raster(const vor_t *d, const int32_t *values, const vor_raster_fra
     band_out.palette565 = NULL;
     band_out.palette888 = NULL;
     band_out.areas = NULL;
-    band_out.boundary565 = 0;
     vor__run_t *no_runs[2];
     no_runs[0] = NULL;
     no_runs[1] = NULL;

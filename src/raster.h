@@ -156,16 +156,13 @@ VOR__ALWAYS_INLINE int vor__raster_check_order(vor__raster_t *r, const vor_raste
         return VOR_ERR_ARG;
     }
     const uint32_t n = sites->count;
-    size_t pixel_bytes = VOR_RASTER_PIXEL_BYTES(out->kind); /* 0: unknown kind */
-    if (nearest != 0u) {
-        if (nearest > VOR_RASTER_MAX_NEAREST) {
-            return VOR_ERR_ARG;
-        }
-        pixel_bytes = VOR_RASTER_NEAREST_PIXEL_BYTES(out->kind, nearest);
-        if ((out->kind == VOR_RASTER_KSETS) && (out->palette565 == NULL)) {
-            return VOR_ERR_ARG;
-        }
+    if ((nearest > VOR_RASTER_MAX_NEAREST) ||
+        ((nearest != 0u) && (out->kind == VOR_RASTER_KSETS) && (out->palette565 == NULL))) {
+        return VOR_ERR_ARG;
     }
+    /* 0: an unknown kind (NEAREST and KSETS are known with nearest only) */
+    const size_t pixel_bytes = (nearest != 0u) ? VOR_RASTER_NEAREST_PIXEL_BYTES(out->kind, nearest)
+                                               : VOR_RASTER_PIXEL_BYTES(out->kind);
     if (pixel_bytes == 0u) {
         return VOR_ERR_ARG;
     }
@@ -185,14 +182,12 @@ VOR__ALWAYS_INLINE int vor__raster_check_order(vor__raster_t *r, const vor_raste
     if (err != VOR_OK) {
         return err;
     }
-    const size_t need = VOR_RASTER_WORK_BYTES(n, frame->width);
-    if (work_bytes < need) {
-        return VOR_ERR_NOMEM;
-    }
-    /* VOR_RASTER_NEAREST_WORK_BYTES less need, in 64 bits (below 2^35) */
-    if ((nearest != 0u) &&
-        ((uint64_t)(work_bytes - need) <
-         (vor__mul_u32(nearest + 1u, 112u) + vor__mul_u32(frame->width, 8u * nearest)))) {
+    /* nearest: VOR_RASTER_NEAREST_WORK_BYTES beyond VOR_RASTER_WORK_BYTES,
+     * compared in 64 bits (below 2^35) */
+    if ((work_bytes < VOR_RASTER_WORK_BYTES(n, frame->width)) ||
+        ((nearest != 0u) &&
+         ((uint64_t)(work_bytes - VOR_RASTER_WORK_BYTES(n, frame->width)) <
+          (vor__mul_u32(nearest + 1u, 112u) + vor__mul_u32(frame->width, 8u * nearest))))) {
         return VOR_ERR_NOMEM;
     }
     if (((uintptr_t)work & (VOR_RASTER_WORK_ALIGN - 1u)) != 0u) {

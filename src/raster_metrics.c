@@ -1497,9 +1497,10 @@ static bool sets_differ(const uint32_t *a, const uint32_t *b, uint32_t d)
 }
 
 /* The KSETS pixels of a row from its k-sets (row) and the next row's
- * (below; NULL for the last row), d sites each. */
-static void write_ksets(const vor_raster_output_t *out, uint32_t width, uint32_t d,
-                        const uint32_t *row_sets, const uint32_t *below, uint16_t *px)
+ * (below; NULL for the last row), d sites each; boundary: the colour of
+ * a pixel whose right or lower neighbour has another k-set. */
+static void write_ksets(const vor_raster_output_t *out, uint16_t boundary, uint32_t width,
+                        uint32_t d, const uint32_t *row_sets, const uint32_t *below, uint16_t *px)
 {
     for (uint32_t i = 0; i < width; i++) {
         const uint32_t *set = row_sets + ((size_t)i * d);
@@ -1507,7 +1508,7 @@ static void write_ksets(const vor_raster_output_t *out, uint32_t width, uint32_t
         if (!edge && (below != NULL)) {
             edge = sets_differ(set, below + ((size_t)i * d), d);
         }
-        px[i] = edge ? out->boundary565 : kset_colour(out->palette565, set, d);
+        px[i] = edge ? boundary : kset_colour(out->palette565, set, d);
     }
 }
 
@@ -1577,7 +1578,8 @@ int vor_raster_nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t
         }
         if ((kind == VOR_RASTER_KSETS) && (j > 0u)) {
             uint8_t *row_px = (uint8_t *)out->band + ((size_t)(j - 1u - r.bands.band_first) * r.row_bytes);
-            write_ksets(out, width, ko.ranked, sets[(j - 1u) & 1u],
+            write_ksets(out, (options != NULL) ? options->boundary565 : 0u, width, ko.ranked,
+                        sets[(j - 1u) & 1u],
                         (j < r.frame->height) ? sets[j & 1u] : NULL, (uint16_t *)(void *)row_px);
         }
         if (vor__bands_put_flush(&r.bands, count) != 0) {

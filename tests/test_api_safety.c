@@ -631,7 +631,7 @@ static void check_raster(void)
     vor_raster_frame_t frame = {0, 0, 100, 100, 8, 4};
     vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0, NULL};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
-                               NULL, NULL, areas, 0};
+                               NULL, NULL, areas};
     vor_raster_frame_t empty = frame, inverted = frame;
     empty.width = 0;
     inverted.step_x = -100;
@@ -650,7 +650,7 @@ static void check_raster(void)
     int (*const entries[3])(const vor_raster_frame_t *, const vor_raster_sites_t *,
                             const vor_raster_output_t *, const vor_raster_options_t *, void *,
                             size_t) = {vor_raster, vor_raster_euclid, raster_nearest2};
-    vor_raster_options_t bad_method = {(enum vor_raster_method)7};
+    vor_raster_options_t bad_method = {(enum vor_raster_method)7, 0};
     vor_raster_output_t ksets = out;
     ksets.kind = VOR_RASTER_KSETS;
     for (unsigned e = 0; e < 3u; e++) {
@@ -886,7 +886,7 @@ static void check_each_argument(void)
     frames[7].origin_x = INT32_MAX - 700; /* the widest frame that fits: valid */
     vor_raster_sites_t set = {VOR_METRIC_EUCLID, points, SAFE_SITES, NULL, NULL, NULL, 0, 0, 0, 0, NULL};
     vor_raster_output_t out = {VOR_RASTER_LABEL8, band, sizeof band, 4, never_flush, &flushes,
-                               NULL, NULL, NULL, 0};
+                               NULL, NULL, NULL};
     bad = 0;
     for (unsigned k = 0; k < 7u; k++) {
         bad += vor_raster(&frames[k], &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;

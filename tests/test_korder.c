@@ -179,8 +179,7 @@ static void render_kind(const char *name, const vor_raster_frame_t *f,
     out.areas = areas;
     out.palette565 = palette;
     out.palette888 = palette888;
-    out.boundary565 = 0xFFFFu;
-    vor_raster_options_t options = {method};
+    vor_raster_options_t options = {method, 0xFFFFu};
     for (uint32_t s = 0; s < set->count; s++) {
         areas[s] = 0xDEADu;
     }
@@ -513,6 +512,34 @@ static void stop_cases(test_rng_t *rng)
     }
 }
 
+/* KSETS without options: boundaries black (0). */
+static void default_boundary_case(test_rng_t *rng)
+{
+    vor_raster_frame_t f = ref_frame(-2, 1, 1, 2, 14, 9);
+    random_sites(rng, &f, 7);
+    vor_raster_sites_t set = point_set(VOR_METRIC_LINF, 7);
+    reference_frame(&f, &set, 2, "default");
+    capture_t cap = {0, f.width, 1, 2, 0, 0, 0};
+    vor_raster_output_t out = {0};
+    out.kind = VOR_RASTER_KSETS;
+    out.band = band_memory;
+    out.band_bytes = sizeof band_memory;
+    out.band_rows = 4;
+    out.flush = capture_flush;
+    out.user = &cap;
+    out.palette565 = palette;
+    int err = vor_raster_nearest(&f, &set, 2, &out, NULL, work, sizeof work);
+    uint32_t wrong = 0, w = f.width, h = f.height, edges = 0;
+    for (uint32_t p = 0; p < w * h; p++) {
+        uint32_t i = p % w, j = p / w;
+        int edge = (i + 1u < w && !same_kset(p, p + 1u, 2, 7)) || (j + 1u < h && !same_kset(p, p + w, 2, 7));
+        edges += (uint32_t)edge;
+        wrong += got[p] != (edge ? 0u : kset_colour(p, 2, 7));
+    }
+    CHECK(err == VOR_OK && wrong == 0 && edges > 0, "default boundary: err %d, %u pixels wrong", err,
+          wrong);
+}
+
 /* Every argument error, with nothing written. */
 static void error_cases(void)
 {
@@ -540,7 +567,7 @@ static void error_cases(void)
     for (uint32_t s = 0; s < 5u; s++) {
         areas[s] = 0xBEEFu;
     }
-    vor_raster_options_t bad_method = {(enum vor_raster_method)2};
+    vor_raster_options_t bad_method = {(enum vor_raster_method)2, 0};
     vor_raster_frame_t zero = f;
     zero.width = 0;
     struct {
@@ -623,4 +650,5 @@ void test_korder(void)
     TEST_CASE("band_heights") band_height_cases(test_rng_seed(&rng, 2727));
     TEST_CASE("stop") stop_cases(test_rng_seed(&rng, 2727));
     TEST_CASE("pool") pool_case();
+    TEST_CASE("default_boundary") default_boundary_case(test_rng_seed(&rng, 2727));
 }

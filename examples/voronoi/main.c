@@ -83,7 +83,7 @@ static int render_frame(void)
     vor_raster_sites_t set = {.metric = VOR_METRIC_EUCLID, .points = sites, .count = FRAME_SITES};
     stream_t stream = {vor_port_file_open("build/demo.rgb565"), 0, 0, 0};
     vor_raster_output_t out = {VOR_RASTER_RGB565, band, sizeof band, BAND_ROWS, send_band,
-                               &stream, colours, NULL, NULL, 0};
+                               &stream, colours, NULL, NULL};
     uint64_t start = vor_port_counter();
     int err = vor_raster(&frame, &set, &out, NULL, raster_work, sizeof raster_work);
     uint64_t spent = vor_port_counter() - start - stream.spent;

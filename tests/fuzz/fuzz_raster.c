@@ -169,7 +169,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     uint32_t nk = fuzz_u8(&r) % (MOST_K + 2u); /* K; 0 and MOST_K + 1: out of range */
     /* 7 NEAREST and 8 KSETS: vor_raster_nearest's; 9: unknown */
     out.kind = (enum vor_raster_kind)(how % 10u);
-    vor_raster_options_t options = {(enum vor_raster_method)((how >> 4) % 3u)}; /* 2: unknown */
+    vor_raster_options_t options = {(enum vor_raster_method)((how >> 4) % 3u), 0xF00Du}; /* 2: unknown */
     out.band_rows = fuzz_u8(&r) % (MOST_SIDE + 3u);
     uint32_t pixel_bytes = nearest_entry ? (uint32_t)VOR_RASTER_NEAREST_PIXEL_BYTES(out.kind, nk)
                                          : VOR_RASTER_PIXEL_BYTES(out.kind);
@@ -179,7 +179,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     out.palette565 = (memory & 0x10u) ? NULL : palette565; /* KSETS needs it */
     out.palette888 = palette888;
     out.areas = areas;
-    out.boundary565 = 0xF00Du;
     uint32_t values = nearest_entry && out.kind == VOR_RASTER_NEAREST ? nk : 1u;
     capture_t capture = {&frame, out.kind, values, 0, fuzz_u8(&r) % 4u, 0, 0};
     out.flush = capture_flush;
@@ -302,6 +301,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                         below |= 1u << ranks[((j + 1u) * w + i) * MOST_K + q];
                 }
                 int edge = (i + 1u < w && right != here) || (j + 1u < h && below != here);
+                /* the boundary colour of the options */
                 want = edge ? 0xF00Du : (red / ranked) << 11 | (green / ranked) << 5 | blue / ranked;
                 break;
             }

@@ -171,7 +171,6 @@ static int nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t *go
     int r = 0;
     out.band = kband;
     out.band_bytes = sizeof kband;
-    out.boundary565 = 0xFFFFu;
     /*@ loop unroll 14; */
     for (int metric = 0; metric < 14; metric++) {
         sites.metric = (enum vor_metric)metric;
@@ -179,6 +178,7 @@ static int nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t *go
         for (int q = 0; q < 3; q++) {
             out.kind = kinds[q];
             options.method = (enum vor_raster_method)Frama_C_interval(0, 1);
+            options.boundary565 = 0xFFFFu;
             r |= vor_raster_nearest(frame, &sites, ks[q], &out, &options, kwork, sizeof kwork);
         }
     }
@@ -188,9 +188,11 @@ static int nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t *go
     /* K out of range, KSETS without its palette, too small a band or
      * work, no sites */
     out.kind = VOR_RASTER_NEAREST;
+    /* (0 and the interval apart: EVA would join them into one interval,
+     * valid K included) */
+    r |= vor_raster_nearest(frame, &sites, 0u, &out, NULL, kwork, sizeof kwork);
     r |= vor_raster_nearest(frame, &sites,
-                            Frama_C_nondet(0, Frama_C_unsigned_int_interval(
-                                                  VOR_RASTER_MAX_NEAREST + 1u, UINT32_MAX)),
+                            Frama_C_unsigned_int_interval(VOR_RASTER_MAX_NEAREST + 1u, UINT32_MAX),
                             &out, NULL, kwork, sizeof kwork);
     r |= vor_raster_nearest(NULL, &sites, 2u, &out, NULL, kwork, sizeof kwork);
     r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork,
