@@ -632,8 +632,8 @@ VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
  * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
  * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
  * at most 33 steps, each one power below 2^256. */
-static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
-                            uint32_t ay)
+VOR__ALWAYS_INLINE uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
+                                        uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
     vor__limb sum[LP_LIMBS];
@@ -672,7 +672,7 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
  * squared distance's floor, then its integer root. The true squared
  * distance is below 2^65 (at most a vertex's), so the root saturates only
  * from 2^64 on. */
-static uint32_t rational_distance(const rank_key_t *k)
+VOR__ALWAYS_INLINE uint32_t rational_distance(const rank_key_t *k)
 {
     if (!k->squared && (k->den.lo == 1u) && (k->den.hi == 0u)) {
         return saturate_u32(isqrt128(&k->num));
@@ -698,7 +698,7 @@ static uint32_t rational_distance(const rank_key_t *k)
  * below 2^66) as an int32 bit pattern, clamped to [INT32_MIN, INT32_MAX]:
  * no rounding, it is an integer. num >= 2^64 puts it above
  * 2^64 - 2^63 + 1 > INT32_MAX; below, one subtraction either way. */
-static uint32_t power_distance(const rank_key_t *k)
+VOR__ALWAYS_INLINE uint32_t power_distance(const rank_key_t *k)
 {
     const uint64_t bias = (uint64_t)INT64_MAX;
     if (k->num.hi != 0u) {
