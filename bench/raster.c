@@ -23,6 +23,14 @@
  * frame on those rows; "bench valid ok" ends a good run.
  * tools/peer-bench/raster.sh turns the lines into docs/benchmarks.md.
  *
+ * vor_raster_nearest (the K nearest sites, VOR_RASTER_NEAREST in 16-row
+ * bands, the fast path) prints
+ *
+ *   bench korder METRIC W H N k K fast F UNIT
+ *
+ * for Euclidean and L1 sites, 16 and 256 of them, K = 1, 2, 4 and 8, on
+ * 320x240 (targets and host).
+ *
  * Sites of the other metrics: weights mult 1..4, add 0..s/4, compound
  * w1 1..4 and w2 0..s/8 (s: the mean site spacing); the form (2, 1, 3);
  * p = 3; Hausdorff sets of 3 points, segments and polygons (3 to 5
@@ -52,6 +60,12 @@ static uint16_t palette[MAX_SITES];
 static uint16_t band[BAND_ROWS * MAX_WIDTH];
 static uint16_t first_band[BAND_ROWS * MAX_WIDTH];
 static uint8_t work[VOR_RASTER_WORK_BYTES(MAX_SITES, MAX_WIDTH)]
+    __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
+#define KORDER_MOST 8u
+#define KORDER_WIDTH 320u
+#define KORDER_SITES 256u
+static uint32_t korder_band[BAND_ROWS * KORDER_WIDTH * KORDER_MOST];
+static uint8_t korder_work[VOR_RASTER_NEAREST_WORK_BYTES(KORDER_SITES, KORDER_WIDTH, KORDER_MOST)]
     __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
 
 typedef struct sink {
@@ -96,7 +110,7 @@ static uint64_t render(const vor_raster_sites_t *sites, const vor_raster_frame_t
     out.flush = flush;
     out.user = s;
     out.palette565 = palette;
-    vor_raster_options_t options = {method};
+    vor_raster_options_t options = {method, 0};
     uint64_t start = vor_port_counter();
     __asm__ volatile("" ::: "memory");
     int err = vor_raster(frame, sites, &out, &options, work, sizeof work);
@@ -219,6 +233,46 @@ static bool run(enum vor_metric metric, uint32_t w, uint32_t h, uint32_t n, bool
     return ok;
 }
 
+static int korder_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
+{
+    (void)first_row;
+    (void)rows;
+    *(uint32_t *)user += ((const uint32_t *)pixels)[0];
+    return 0;
+}
+
+/* vor_raster_nearest, K = k, the fast path: the cost per pixel. */
+static bool run_korder(enum vor_metric metric, uint32_t n, uint32_t k)
+{
+    const int host = vor_port_counter_unit[0] == 'n';
+    const uint32_t w = KORDER_WIDTH, h = 240u;
+    vor_raster_sites_t sites = make_sites(metric, w, h, n, false);
+    vor_raster_frame_t frame = {0, 0, 1, 1, w, h};
+    uint32_t checksum = 0;
+    vor_raster_output_t out = {0};
+    out.kind = VOR_RASTER_NEAREST;
+    out.band = korder_band;
+    out.band_bytes = sizeof korder_band;
+    out.band_rows = BAND_ROWS;
+    out.flush = korder_flush;
+    out.user = &checksum;
+    uint64_t best = UINT64_MAX;
+    int err = VOR_OK;
+    for (unsigned r = 0; r < (host ? HOST_RUNS : 1u); r++) {
+        uint64_t start = vor_port_counter();
+        __asm__ volatile("" ::: "memory");
+        err |= vor_raster_nearest(&frame, &sites, k, &out, NULL, korder_work, sizeof korder_work);
+        __asm__ volatile("" ::: "memory");
+        uint64_t spent = vor_port_counter() - start;
+        best = spent < best ? spent : best;
+    }
+    test_printf("bench korder %s %u %u %u k %u", metric_names[metric], (unsigned)w, (unsigned)h,
+                (unsigned)n, (unsigned)k);
+    print_cost("fast", best, (uint64_t)w * h, host);
+    test_printf(" %s%s\n", host ? "Mpx/s" : "instructions/px", err == VOR_OK ? "" : " FAILED");
+    return err == VOR_OK;
+}
+
 int main(void)
 {
     vor_port_init();
@@ -245,6 +299,15 @@ int main(void)
             ok &= run((enum vor_metric)metric, 1920, 1080, sizes[i], false);
         }
 #endif
+    }
+    static const enum vor_metric korder_metrics[2] = {VOR_METRIC_EUCLID, VOR_METRIC_L1};
+    static const uint32_t korder_ks[4] = {1u, 2u, 4u, KORDER_MOST};
+    for (unsigned m = 0; m < 2u; m++) {
+        for (uint32_t n = 16u; n <= KORDER_SITES; n *= 16u) {
+            for (unsigned q = 0; q < 4u; q++) {
+                ok &= run_korder(korder_metrics[m], n, korder_ks[q]);
+            }
+        }
     }
     test_printf("bench valid %s\n", ok ? "ok" : "FAILED");
     return ok ? 0 : 1;

@@ -87,7 +87,7 @@
  * VOR_ERR_CONFIG, touching nothing, when it was compiled with another.
  * VOR_ASSERT and VOR_LIMB_BITS change only the library's code: not part
  * of it. Bump VOR_LAYOUT_VERSION whenever a public structure changes. */
-#define VOR_LAYOUT_VERSION 4u
+#define VOR_LAYOUT_VERSION 5u
 
 #if VOR_SITES_PER_BUCKET < 1 || VOR_SITES_PER_BUCKET > 2047
 #error "VOR_SITES_PER_BUCKET must be 1 .. 2047"

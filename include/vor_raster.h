@@ -101,6 +101,25 @@
  *   tile; VOR_RASTER_BRUTE compares every site at every pixel.
  *   VOR_RASTER_DISTANCE works with every metric (DISTANCE VALUES).
  *
+ * K NEAREST (k-order diagrams, Teramoto section 2.3.4)
+ *   vor_raster_nearest ranks the K nearest sites of every pixel (K
+ *   farthest for FARTHEST), every metric, the same exact comparisons,
+ *   ties to the smaller index; K up to VOR_RASTER_MAX_NEAREST (16).
+ *
+ *     static uint32_t band[8 * 320 * 3];           // 8 rows of 3 labels
+ *     static uint8_t work[VOR_RASTER_NEAREST_WORK_BYTES(256, 320, 3)]
+ *         __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
+ *     out.kind = VOR_RASTER_NEAREST;                // nearest first
+ *     out.band = band; out.band_bytes = sizeof band; out.band_rows = 8;
+ *     int err = vor_raster_nearest(&frame, &set, 3, &out, NULL, work,
+ *                                  sizeof work);
+ *
+ *   VOR_RASTER_NEAREST gives K uint32_t a pixel (VOR_RASTER_NO_SITE past
+ *   the site count), VOR_RASTER_KSETS a picture of the k-sets (each the
+ *   mean colour of its sites, options->boundary565 between k-sets), and every
+ *   other kind the K-th nearest site: the K-th order diagram. A firmware
+ *   that never calls it links none of it.
+ *
  * FIELDS
  *   vor_field_raster renders a diagram's natural-neighbour interpolant
  *   (vor.h: vor_interpolate, Sibson's; or Laplace's) of int32 site values
@@ -217,7 +236,9 @@ enum vor_raster_kind {
     VOR_RASTER_RGB565 = 3,
     VOR_RASTER_RGB888 = 4,
     VOR_RASTER_BOUNDARY = 5,
-    VOR_RASTER_DISTANCE = 6
+    VOR_RASTER_DISTANCE = 6,
+    VOR_RASTER_NEAREST = 7, /* vor_raster_nearest only: K uint32_t labels a pixel */
+    VOR_RASTER_KSETS = 8    /* vor_raster_nearest only: RGB565 of the pixel's k-set */
 };
 
 enum vor_raster_method {
@@ -248,6 +269,9 @@ typedef struct vor_raster_output {
  * field added later keeps the old behaviour at 0). */
 typedef struct vor_raster_options {
     enum vor_raster_method method; /* VOR_RASTER_FAST by default */
+    uint16_t boundary565;          /* vor_raster_nearest's KSETS: the colour
+                                      of the boundaries between k-sets
+                                      (0, black, by default) */
 } vor_raster_options_t;
 
 /* Bytes per pixel of a kind (0 for an unknown kind). */
@@ -258,12 +282,29 @@ typedef struct vor_raster_options {
      : (kind) == VOR_RASTER_LABEL32 || (kind) == VOR_RASTER_DISTANCE ? 4u      \
                                                                      : 0u)
 
+/* vor_raster_nearest: the largest K, the label of a rank past the last
+ * site (K > count), and the bytes per pixel of a kind with K ranks (4 K
+ * for NEAREST, 2 for KSETS, else VOR_RASTER_PIXEL_BYTES). */
+#define VOR_RASTER_MAX_NEAREST 16u
+#define VOR_RASTER_NO_SITE 0xFFFFFFFFu
+#define VOR_RASTER_NEAREST_PIXEL_BYTES(kind, k)                                \
+    (((kind) == VOR_RASTER_NEAREST) ? (4u * (size_t)(k))                      \
+     : (((kind) == VOR_RASTER_KSETS) ? 2u : VOR_RASTER_PIXEL_BYTES(kind)))
+
 /* Work memory for up to n sites and frames up to width pixels wide: 48
  * bytes per site (sort orders, candidates, envelopes) and 16 per pixel of
  * width (two rows of runs), plus alignment slack. A constant expression. */
 #define VOR_RASTER_WORK_BYTES(n, width)                                        \
     (((size_t)(n) * 48u) + ((size_t)(width) * 16u) + 64u)
 #define VOR_RASTER_WORK_ALIGN 8u
+
+/* Work memory of vor_raster_nearest for up to n sites, frames up to width
+ * pixels wide and K = k: VOR_RASTER_WORK_BYTES plus 112 bytes per rank
+ * and one more (the ranked distances) and 8 k bytes per pixel of width
+ * (two rows of k-sets). A constant expression. */
+#define VOR_RASTER_NEAREST_WORK_BYTES(n, width, k)                             \
+    (VOR_RASTER_WORK_BYTES(n, width) + (((size_t)(k) + 1u) * 112u) +            \
+     ((size_t)(width) * (size_t)(k) * 8u))
 
 /*
  * Renders the discrete Voronoi diagram of sites over frame, band by band,
@@ -296,6 +337,43 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
 int vor_raster_euclid(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
                       const vor_raster_output_t *out, const vor_raster_options_t *options,
                       void *work, size_t work_bytes);
+
+/*
+ * Renders the K = k nearest sites of every pixel of frame (K farthest for
+ * VOR_METRIC_FARTHEST, farthest first), ranked by the same exact
+ * comparisons as vor_raster, ties to the smaller index, band by band into
+ * out, with options (NULL: the defaults). Every metric of vor_raster.
+ * The kinds (K' = min(K, count), the ranks there are):
+ *   NEAREST         K uint32_t a pixel, the sites nearest first; ranks
+ *                   past K' read VOR_RASTER_NO_SITE
+ *   KSETS           uint16_t: options->boundary565 (0 without options)
+ *                   where the right or the lower
+ *                   neighbour has another k-set (the unordered set of its
+ *                   K' nearest), else the k-set's colour: per channel, the
+ *                   mean (rounded down) of palette565 of its sites
+ *   LABEL8 .. BOUNDARY, DISTANCE
+ *                   as for vor_raster, of each pixel's K'-th nearest site:
+ *                   the K-th order diagram (DISTANCE: the distance to it)
+ *   areas (optional) count each site's pixels as the K'-th nearest.
+ * k = 1 gives vor_raster's pixels. Work: VOR_RASTER_NEAREST_WORK_BYTES(
+ * count, width, k), aligned to VOR_RASTER_WORK_ALIGN. Cost: per pixel,
+ * each candidate site (VOR_RASTER_FAST: the sites of its 16-row tile that
+ * can rank within K there; VOR_RASTER_BRUTE: every site) is compared once
+ * with the K-th ranked and, when it ranks before it, inserted in order:
+ * O(candidates + K * insertions) comparisons a pixel.
+ *   VOR_ERR_ARG    as vor_raster; also k == 0 or k > VOR_RASTER_MAX_NEAREST,
+ *                  KSETS with palette565 NULL
+ *   VOR_ERR_EMPTY  sites->count == 0
+ *   VOR_ERR_NOMEM  band_bytes < band_rows * width *
+ *                  VOR_RASTER_NEAREST_PIXEL_BYTES(kind, k), or work_bytes <
+ *                  VOR_RASTER_NEAREST_WORK_BYTES(count, width, k)
+ *   VOR_ERR_ALIGN  work not aligned to VOR_RASTER_WORK_ALIGN
+ *   VOR_ERR_STOPPED  a flush returned nonzero (as vor_raster)
+ * On an error before the first pixel, nothing is written (areas included).
+ */
+int vor_raster_nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                       uint32_t k, const vor_raster_output_t *out,
+                       const vor_raster_options_t *options, void *work, size_t work_bytes);
 
 /* ================================================================== */
 /* Fields: natural-neighbour interpolation rendered in bands          */

@@ -132,7 +132,8 @@ static void write_boundary(uint32_t width, const vor__run_t *runs, uint32_t coun
 }
 
 /* Writes a row (runs) into dst in the output's kind, except DISTANCE,
- * which the entry point writes (it knows the metric). below: the runs of
+ * NEAREST and KSETS (the kinds after BOUNDARY), which the entry point
+ * writes (it knows the metric, the ranks and the k-sets). below: the runs of
  * the next row (BOUNDARY only; NULL on the last row). The writer comes
  * from a table: a switch on the kind, or a chain of == tests, which
  * compilers turn into one, is a case table, and GCC for ARMv6-M at -Os
@@ -147,7 +148,7 @@ static void write_row(const vor_raster_output_t *out, uint32_t width, const vor_
     };
     if (out->kind == VOR_RASTER_BOUNDARY) {
         write_boundary(width, runs, count, below, below_count, dst);
-    } else if (out->kind != VOR_RASTER_DISTANCE) {
+    } else if (out->kind < VOR_RASTER_DISTANCE) {
         writers[out->kind](out, runs, count, dst);
     } else {
         /* no other case */
@@ -251,70 +252,11 @@ int vor__raster_band_check(uint32_t width, size_t pixel_bytes, size_t band_bytes
     return VOR_OK;
 }
 
-/* Rounds an offset up to a multiple of 8 (the work memory's alignment). */
-static size_t align8(size_t x)
-{
-    return (x + 7u) & ~(size_t)7u;
-}
-
 int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       const vor_raster_sites_t *sites, const vor_raster_output_t *out,
                       const vor_raster_options_t *options, void *work, size_t work_bytes)
 {
-    enum vor_raster_method method = (options != NULL) ? options->method : VOR_RASTER_FAST;
-    if ((frame == NULL) || (sites == NULL) || (out == NULL) || (work == NULL) ||
-        !vor__raster_frame_ok(frame)) {
-        return VOR_ERR_ARG;
-    }
-    if (sites->count == 0u) {
-        return VOR_ERR_EMPTY;
-    }
-    if ((sites->points == NULL) || (out->band == NULL) ||
-        (out->flush == NULL) || (out->band_rows == 0u) ||
-        ((method != VOR_RASTER_FAST) && (method != VOR_RASTER_BRUTE))) {
-        return VOR_ERR_ARG;
-    }
-    const uint32_t n = sites->count;
-    const size_t pixel_bytes = VOR_RASTER_PIXEL_BYTES(out->kind); /* 0: unknown kind */
-    if (pixel_bytes == 0u) {
-        return VOR_ERR_ARG;
-    }
-    /* the sites a label tells apart, the palette a colour needs */
-    if (((out->kind == VOR_RASTER_LABEL8) && (n > 256u)) ||
-        ((out->kind == VOR_RASTER_LABEL16) && (n > 65536u)) ||
-        ((out->kind == VOR_RASTER_RGB565) && (out->palette565 == NULL)) ||
-        ((out->kind == VOR_RASTER_RGB888) && (out->palette888 == NULL))) {
-        return VOR_ERR_ARG;
-    }
-    if (n > 0x07FFFFFFu) {
-        return VOR_ERR_ARG; /* the work size below must not overflow */
-    }
-    size_t row_bytes = 0;
-    int err = vor__raster_band_check(frame->width, pixel_bytes, out->band_bytes, out->band_rows,
-                                     &row_bytes);
-    if (err != VOR_OK) {
-        return err;
-    }
-    if (work_bytes < VOR_RASTER_WORK_BYTES(n, frame->width)) {
-        return VOR_ERR_NOMEM;
-    }
-    if (((uintptr_t)work & (VOR_RASTER_WORK_ALIGN - 1u)) != 0u) {
-        return VOR_ERR_ALIGN;
-    }
-    r->frame = frame;
-    r->sites = sites;
-    r->out = out;
-    r->brute = method == VOR_RASTER_BRUTE;
-    r->row_bytes = row_bytes;
-    /* the two rows of runs first (16 width + 16 bytes at most), the
-     * family's state after them (45 n or 48 n + 48 bytes): together
-     * within VOR_RASTER_WORK_BYTES */
-    size_t rows8 = align8((size_t)frame->width * sizeof(vor__run_t));
-    r->rows[0] = (vor__run_t *)work;
-    r->rows[1] = (vor__run_t *)(void *)((uint8_t *)work + rows8);
-    r->rest = (uint8_t *)work + (2u * rows8);
-    r->rest_bytes = work_bytes - (2u * rows8);
-    return VOR_OK;
+    return vor__raster_check_order(r, frame, sites, out, options, work, work_bytes, 0u);
 }
 
 void vor__raster_start(vor__raster_t *r)

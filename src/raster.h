@@ -26,7 +26,7 @@ typedef struct vor__run {
 
 /* Adds pixel i, labelled site, to the row's runs (count of them so far):
  * it extends the last run when the label repeats. Returns the new count. */
-static inline uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t i, uint32_t site)
+VOR__ALWAYS_INLINE uint32_t vor__run_push(vor__run_t *runs, uint32_t count, uint32_t i, uint32_t site)
 {
     if ((count > 0u) && (runs[count - 1u].site == site)) {
         runs[count - 1u].end = i + 1u;
@@ -122,9 +122,95 @@ int vor__raster_frame_ok(const vor_raster_frame_t *f);
 int vor__raster_band_check(uint32_t width, size_t pixel_bytes, size_t band_bytes,
                            uint32_t band_rows, size_t *row_bytes);
 
-/* The checks every entry point makes, all but the metric's own fields:
- * VOR_OK with r filled in and the work memory divided (nothing written
- * there yet), or the error vor_raster documents. */
+/* Rounds an offset up to a multiple of 8 (the work memory's alignment). */
+static inline size_t vor__align8(size_t x)
+{
+    return (x + 7u) & ~(size_t)7u;
+}
+
+/* The checks every entry point makes, all but the metric's own fields,
+ * for nearest = 0 (vor_raster, vor_raster_euclid: the kinds of
+ * VOR_RASTER_PIXEL_BYTES) or nearest = K >= 1 (vor_raster_nearest: K up
+ * to VOR_RASTER_MAX_NEAREST, the kinds NEAREST and KSETS too, and the
+ * work of VOR_RASTER_NEAREST_WORK_BYTES): VOR_OK with r filled in and the
+ * work memory divided (nothing written there yet), or the error
+ * vor_raster (vor_raster_nearest) documents. Forced inline, so that the
+ * entry points with nearest = 0 compile no k-order branch at all. */
+VOR__ALWAYS_INLINE int vor__raster_check_order(vor__raster_t *r, const vor_raster_frame_t *frame,
+                                               const vor_raster_sites_t *sites,
+                                               const vor_raster_output_t *out,
+                                               const vor_raster_options_t *options, void *work,
+                                               size_t work_bytes, uint32_t nearest)
+{
+    enum vor_raster_method method = (options != NULL) ? options->method : VOR_RASTER_FAST;
+    if ((frame == NULL) || (sites == NULL) || (out == NULL) || (work == NULL) ||
+        !vor__raster_frame_ok(frame)) {
+        return VOR_ERR_ARG;
+    }
+    if (sites->count == 0u) {
+        return VOR_ERR_EMPTY;
+    }
+    if ((sites->points == NULL) || (out->band == NULL) ||
+        (out->flush == NULL) || (out->band_rows == 0u) ||
+        ((method != VOR_RASTER_FAST) && (method != VOR_RASTER_BRUTE))) {
+        return VOR_ERR_ARG;
+    }
+    const uint32_t n = sites->count;
+    if ((nearest > VOR_RASTER_MAX_NEAREST) ||
+        ((nearest != 0u) && (out->kind == VOR_RASTER_KSETS) && (out->palette565 == NULL))) {
+        return VOR_ERR_ARG;
+    }
+    /* 0: an unknown kind (NEAREST and KSETS are known with nearest only) */
+    const size_t pixel_bytes = (nearest != 0u) ? VOR_RASTER_NEAREST_PIXEL_BYTES(out->kind, nearest)
+                                               : VOR_RASTER_PIXEL_BYTES(out->kind);
+    if (pixel_bytes == 0u) {
+        return VOR_ERR_ARG;
+    }
+    /* the sites a label tells apart, the palette a colour needs */
+    if (((out->kind == VOR_RASTER_LABEL8) && (n > 256u)) ||
+        ((out->kind == VOR_RASTER_LABEL16) && (n > 65536u)) ||
+        ((out->kind == VOR_RASTER_RGB565) && (out->palette565 == NULL)) ||
+        ((out->kind == VOR_RASTER_RGB888) && (out->palette888 == NULL))) {
+        return VOR_ERR_ARG;
+    }
+    if (n > 0x07FFFFFFu) {
+        return VOR_ERR_ARG; /* the work size below must not overflow */
+    }
+    size_t row_bytes = 0;
+    int err = vor__raster_band_check(frame->width, pixel_bytes, out->band_bytes, out->band_rows,
+                                     &row_bytes);
+    if (err != VOR_OK) {
+        return err;
+    }
+    /* nearest: VOR_RASTER_NEAREST_WORK_BYTES beyond VOR_RASTER_WORK_BYTES,
+     * compared in 64 bits (below 2^35) */
+    if ((work_bytes < VOR_RASTER_WORK_BYTES(n, frame->width)) ||
+        ((nearest != 0u) &&
+         ((uint64_t)(work_bytes - VOR_RASTER_WORK_BYTES(n, frame->width)) <
+          (vor__mul_u32(nearest + 1u, 112u) + vor__mul_u32(frame->width, 8u * nearest))))) {
+        return VOR_ERR_NOMEM;
+    }
+    if (((uintptr_t)work & (VOR_RASTER_WORK_ALIGN - 1u)) != 0u) {
+        return VOR_ERR_ALIGN;
+    }
+    r->frame = frame;
+    r->sites = sites;
+    r->out = out;
+    r->brute = method == VOR_RASTER_BRUTE;
+    r->row_bytes = row_bytes;
+    /* the two rows of runs first (16 width + 16 bytes at most), the
+     * family's state after them (45 n or 48 n + 48 bytes; the k-order
+     * arrays before it): together within the work macro */
+    size_t rows8 = vor__align8((size_t)frame->width * sizeof(vor__run_t));
+    r->rows[0] = (vor__run_t *)work;
+    r->rows[1] = (vor__run_t *)(void *)((uint8_t *)work + rows8);
+    r->rest = (uint8_t *)work + (2u * rows8);
+    r->rest_bytes = work_bytes - (2u * rows8);
+    return VOR_OK;
+}
+
+/* vor__raster_check_order with nearest = 0: the checks of vor_raster and
+ * vor_raster_euclid. */
 int vor__raster_check(vor__raster_t *r, const vor_raster_frame_t *frame,
                       const vor_raster_sites_t *sites, const vor_raster_output_t *out,
                       const vor_raster_options_t *options, void *work, size_t work_bytes);

@@ -632,8 +632,8 @@ VOR__ALWAYS_INLINE uint32_t signed_distance(uint64_t v, int32_t w)
  * keeps lo^p <= sum < hi^p from lo = max(ax, ay) and hi = min(ax + ay + 1,
  * 2^32) ((ax + ay + 1)^p > ax^p + ay^p); the bracket halves each step, so
  * at most 33 steps, each one power below 2^256. */
-static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
-                            uint32_t ay)
+VOR__ALWAYS_INLINE uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
+                                        uint32_t ay)
 {
     uint32_t p = m->sites->lp_exponent;
     vor__limb sum[LP_LIMBS];
@@ -672,7 +672,7 @@ static uint32_t lp_distance(const metric_t *m, const rank_key_t *k, uint32_t ax,
  * squared distance's floor, then its integer root. The true squared
  * distance is below 2^65 (at most a vertex's), so the root saturates only
  * from 2^64 on. */
-static uint32_t rational_distance(const rank_key_t *k)
+VOR__ALWAYS_INLINE uint32_t rational_distance(const rank_key_t *k)
 {
     if (!k->squared && (k->den.lo == 1u) && (k->den.hi == 0u)) {
         return saturate_u32(isqrt128(&k->num));
@@ -698,7 +698,7 @@ static uint32_t rational_distance(const rank_key_t *k)
  * below 2^66) as an int32 bit pattern, clamped to [INT32_MIN, INT32_MAX]:
  * no rounding, it is an integer. num >= 2^64 puts it above
  * 2^64 - 2^63 + 1 > INT32_MAX; below, one subtraction either way. */
-static uint32_t power_distance(const rank_key_t *k)
+VOR__ALWAYS_INLINE uint32_t power_distance(const rank_key_t *k)
 {
     const uint64_t bias = (uint64_t)INT64_MAX;
     if (k->num.hi != 0u) {
@@ -715,7 +715,7 @@ static uint32_t power_distance(const rank_key_t *k)
 /* The VOR_RASTER_DISTANCE value of site `site` at the pixel centre
  * (qx, qy): the floor of its distance under m's metric, saturated (ADD,
  * COMPOUND and POWER: an int32 bit pattern); vor_raster.h, OUTPUT KINDS. */
-static uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
+VOR__ALWAYS_INLINE uint32_t metric_distance(const metric_t *m, uint32_t site, int32_t qx, int32_t qy)
 {
     rank_key_t k;
     m->key(m, site, qx, qy, &k);
@@ -922,6 +922,10 @@ METRIC_OPS(SEGMENT)
 METRIC_OPS(POLYGON)
 METRIC_OPS(POLYLINE)
 METRIC_OPS(POWER)
+/* EUCLID: the generic point key (the squared distance) and its plain
+ * comparison, as FARTHEST's reversed; vor_raster_nearest's only (vor_raster
+ * hands Euclidean frames to raster_euclid.c). */
+METRIC_OPS(EUCLID)
 
 typedef struct metric_ops {
     void (*key)(const metric_t *m, uint32_t site, int32_t qx, int32_t qy, rank_key_t *k);
@@ -944,6 +948,101 @@ static const metric_ops_t metric_ops[] = {
 
 #define ALL_SITES 0xFFFFFFFFu
 #define TILES_PER_BLOCK 8u
+
+/* ------------------------------------------------------------- ranks */
+
+/*
+ * The K best of a stream of offered sites (vor_raster_nearest): the kept
+ * ones in rank order, a later offer ranking before an earlier one only
+ * when strictly better, so that offers in index order break ties to the
+ * smaller index. The keys live in the work memory, K + 1 slots: slot[r]
+ * holds the key of rank r < kept, slot[kept] is the free one the next
+ * offer's key is made in; an insertion moves slot numbers and sites, never
+ * a key.
+ */
+typedef struct ranks {
+    uint32_t k;       /* K */
+    uint32_t ranked;  /* K' = min(K, sites): the ranks every pixel gets */
+    uint32_t kept;    /* ranked so far, <= k */
+    rank_key_t *keys; /* [k + 1] */
+    uint32_t *slot;   /* [k + 1], a permutation of 0 .. k */
+    uint32_t *site;   /* [k + 1]: the site of rank r */
+    uint32_t *labels; /* NEAREST: the pixels of the row being made, else NULL */
+    uint32_t *sets;   /* KSETS: the k-sets of the row being made, else NULL */
+} ranks_t;
+
+/* The bytes of a rank: its key, slot and site (VOR_RASTER_NEAREST_WORK_BYTES
+ * counts 112). */
+typedef char vor__rank_size_check[((sizeof(rank_key_t) + 8u) <= 112u) ? 1 : -1];
+
+/* The key slot of the next offer. */
+static rank_key_t *ranks_free(const ranks_t *ko)
+{
+    return &ko->keys[ko->slot[ko->kept]];
+}
+
+/* Offers site, its key made in the free slot (ranks_free): it takes rank
+ * r when it ranks strictly before the kept site of rank r and not before
+ * that of r - 1, and r < K; the K-th then drops out when K were kept. */
+static void ranks_offer(const metric_t *m, ranks_t *ko, uint32_t site)
+{
+    const uint32_t free_slot = ko->slot[ko->kept];
+    const rank_key_t *key = &ko->keys[free_slot];
+    uint32_t at = ko->kept;
+    while ((at > 0u) && (m->compare(m, key, &ko->keys[ko->slot[at - 1u]]) < 0)) {
+        at--;
+    }
+    if (at == ko->k) {
+        return; /* not before the K-th */
+    }
+    for (uint32_t q = ko->kept; q > at; q--) {
+        ko->slot[q] = ko->slot[q - 1u];
+        ko->site[q] = ko->site[q - 1u];
+    }
+    ko->slot[at] = free_slot;
+    ko->site[at] = site;
+    if (ko->kept < ko->k) {
+        ko->kept++;
+    }
+}
+
+/* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
+ * within K at some pixel of r, in index order, into out; returns their
+ * number, or ALL_SITES when more than capacity survive. K sites whose
+ * worst cases are at most the K-th smallest worst case W rank no later
+ * than W at every pixel of r; a site whose best case is strictly later
+ * than W is strictly behind each of them there, so it is never within K
+ * (select_sites is the case K = 1). Fewer than K sites: all can. */
+static uint32_t select_ranked(const metric_t *m, ranks_t *ko, const rect_t *r,
+                              const uint32_t *list, uint32_t count, uint32_t *out,
+                              size_t capacity)
+{
+    ko->kept = 0;
+    for (uint32_t c = 0; c < count; c++) {
+        uint32_t site = (list != NULL) ? list[c] : c;
+        m->bounds(m, site, r, 1, ranks_free(ko));
+        ranks_offer(m, ko, site);
+    }
+    const rank_key_t *bar = (ko->kept == ko->k) ? &ko->keys[ko->slot[ko->k - 1u]] : NULL;
+    rank_key_t *best_case = ranks_free(ko);
+    uint32_t kept = 0;
+    for (uint32_t c = 0; c < count; c++) {
+        uint32_t site = (list != NULL) ? list[c] : c;
+        bool can = true;
+        if (bar != NULL) {
+            m->bounds(m, site, r, 0, best_case);
+            can = m->compare(m, best_case, bar) <= 0;
+        }
+        if (can) {
+            if (kept == capacity) {
+                return ALL_SITES;
+            }
+            out[kept] = site;
+            kept++;
+        }
+    }
+    return kept;
+}
 
 /* The sites of list[0..count) (NULL: sites 0..count-1) that can rank
  * first (alone or tied) at some pixel of r, in index order, into out;
@@ -989,8 +1088,10 @@ static rect_t columns_rect(const metric_t *m, uint32_t first, uint32_t last, int
 }
 
 /* Fills the pool with the tile lists of the band starting at band_first:
- * per tile, a count (or ALL_SITES) and that many site ids. */
-static void cull_band(metric_t *m)
+ * per tile, a count (or ALL_SITES) and that many site ids: the sites that
+ * can rank first there (ko NULL), or within K (ko's; select_ranked).
+ * Forced inline, so that vor_raster's instance has no k-order branch. */
+VOR__ALWAYS_INLINE void cull_with(metric_t *m, ranks_t *ko)
 {
     uint32_t last_row = m->band_first + TILE_ROWS - 1u;
     if (last_row >= m->frame->height) {
@@ -1007,18 +1108,32 @@ static void cull_band(metric_t *m)
     for (uint32_t first = 0; first < m->frame->width; first += block_columns) {
         uint32_t end = ((m->frame->width - first) > block_columns) ? (first + block_columns) : m->frame->width;
         rect_t r = columns_rect(m, first, end - 1u, y0, y1);
-        uint32_t block_count = select_sites(m, &r, NULL, m->n, block, m->n);
+        uint32_t block_count = (ko == NULL) ? select_sites(m, &r, NULL, m->n, block, m->n)
+                                            : select_ranked(m, ko, &r, NULL, m->n, block, m->n);
         for (uint32_t column = first; column < end; column += m->tile_width) {
             uint32_t tile_end = ((end - column) > m->tile_width) ? (column + m->tile_width) : end;
             rect_t t = columns_rect(m, column, tile_end - 1u, y0, y1);
             size_t later = m->tiles - tile - 1u; /* one word kept for each later tile */
             size_t capacity = room - at - 1u - later;
-            uint32_t kept = select_sites(m, &t, block, block_count, lists + at + 1u, capacity);
+            uint32_t kept =
+                (ko == NULL)
+                    ? select_sites(m, &t, block, block_count, lists + at + 1u, capacity)
+                    : select_ranked(m, ko, &t, block, block_count, lists + at + 1u, capacity);
             lists[at] = kept;
             at += 1u + ((kept == ALL_SITES) ? 0u : kept);
             tile++;
         }
     }
+}
+
+static void cull_band(metric_t *m)
+{
+    cull_with(m, NULL);
+}
+
+static void cull_ranked(metric_t *m, ranks_t *ko)
+{
+    cull_with(m, ko);
 }
 
 /* The first-ranked site at (qx, qy) among list[0..count) (NULL: all),
@@ -1042,15 +1157,53 @@ static uint32_t nearest(const metric_t *m, const uint32_t *list, uint32_t count,
     return best;
 }
 
-/* The family's producers for the scan (vor__raster_row_fn,
- * vor__raster_distances_fn). */
-static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
+/* Ranks the sites of list[0..count) (NULL: all; in increasing index
+ * order) at pixel i of row qy, the one at (qx, qy), into ko: its NEAREST
+ * labels and its k-set (sorted by index) are written where ko says.
+ * Returns the K'-th ranked site, the pixel's label. */
+static uint32_t rank_pixel(const metric_t *m, ranks_t *ko, const uint32_t *list, uint32_t count,
+                           int32_t qx, int32_t qy, uint32_t i)
 {
-    metric_t *m = state;
+    ko->kept = 0;
+    for (uint32_t c = 0; c < count; c++) {
+        uint32_t site = (list != NULL) ? list[c] : c;
+        m->key(m, site, qx, qy, ranks_free(ko));
+        ranks_offer(m, ko, site);
+    }
+    /* ko->kept == ko->ranked: the culling keeps the K' ranked sites */
+    if (ko->labels != NULL) {
+        uint32_t *px = ko->labels + ((size_t)i * ko->k);
+        for (uint32_t r = 0; r < ko->k; r++) {
+            px[r] = (r < ko->kept) ? ko->site[r] : VOR_RASTER_NO_SITE;
+        }
+    }
+    if (ko->sets != NULL) {
+        uint32_t *set = ko->sets + ((size_t)i * ko->ranked);
+        for (uint32_t r = 0; r < ko->kept; r++) { /* insertion by index */
+            uint32_t at = r;
+            while ((at > 0u) && (set[at - 1u] > ko->site[r])) {
+                set[at] = set[at - 1u];
+                at--;
+            }
+            set[at] = ko->site[r];
+        }
+    }
+    return ko->site[ko->kept - 1u];
+}
+
+/* The runs of row j: each pixel's nearest site (ko NULL), or its K'-th
+ * ranked (ko's: rank_pixel). Forced inline, so that vor_raster's
+ * instance has no k-order branch. */
+VOR__ALWAYS_INLINE uint32_t scan_row(metric_t *m, ranks_t *ko, uint32_t j, vor__run_t *runs)
+{
     if (!m->brute && (!m->band_valid || (j >= (m->band_first + TILE_ROWS)))) {
         m->band_first = j - (j % TILE_ROWS);
         m->band_valid = 1;
-        cull_band(m);
+        if (ko == NULL) {
+            cull_band(m);
+        } else {
+            cull_ranked(m, ko);
+        }
     }
     const uint32_t width = m->frame->width;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
@@ -1071,17 +1224,26 @@ static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
         }
         for (uint32_t i = first; i < end; i++) {
             int32_t qx = (int32_t)(m->origin_x + vor__offset(i, m->step_x));
-            count = vor__run_push(runs, count, i, nearest(m, list, candidates, qx, qy));
+            uint32_t site = (ko == NULL) ? nearest(m, list, candidates, qx, qy)
+                                         : rank_pixel(m, ko, list, candidates, qx, qy, i);
+            count = vor__run_push(runs, count, i, site);
         }
     }
     return count;
+}
+
+/* The family's producers for the scan (vor__raster_row_fn,
+ * vor__raster_distances_fn). */
+static uint32_t row(void *state, uint32_t j, vor__run_t *runs)
+{
+    return scan_row(state, NULL, j, runs);
 }
 
 /* ------------------------------------------------------------ set up */
 
 /* VOR_OK when the metric's fields are usable (weights, exponent, form,
  * offsets); else VOR_ERR_ARG. Reads every site once. */
-static int metric_check(const vor_raster_sites_t *s)
+VOR__ALWAYS_INLINE int metric_check(const vor_raster_sites_t *s)
 {
     if ((unsigned)s->metric > (unsigned)VOR_METRIC_POWER) {
         return VOR_ERR_ARG;
@@ -1152,7 +1314,7 @@ static uint32_t additive_limbs(uint32_t a_bits, uint32_t delta_bits)
 
 /* Sets m up for the checked request r (its sites past metric_check): the
  * comparison widths from the span of sites and frame, and the tiles. */
-static void prepare(metric_t *m, const vor__raster_t *r)
+VOR__ALWAYS_INLINE void prepare(metric_t *m, const vor__raster_t *r)
 {
     const vor_raster_frame_t *frame = r->frame;
     const vor_raster_sites_t *s = r->sites;
@@ -1257,8 +1419,8 @@ static void prepare(metric_t *m, const vor__raster_t *r)
 /* ----------------------------------------------------- distance pixels */
 
 /* The floor of each pixel's own site's distance under m's metric. */
-static void distances(const void *state, uint32_t j, const vor__run_t *runs, uint32_t count,
-                      uint32_t *px)
+VOR__ALWAYS_INLINE void distances(const void *state, uint32_t j, const vor__run_t *runs,
+                                  uint32_t count, uint32_t *px)
 {
     const metric_t *m = state;
     int32_t qy = (int32_t)(m->frame->origin_y + vor__offset(j, m->frame->step_y));
@@ -1292,4 +1454,137 @@ int vor_raster(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
     metric_t m;
     prepare(&m, &r);
     return vor__raster_scan(&r, &m, row, distances);
+}
+
+/* ------------------------------------------------------- k-order frames */
+
+/* floor(s / d) = (s ceil(2^16 / d)) >> 16 for d = 1 .. 16 and s < 2^10:
+ * the error s (d ceil(2^16 / d) - 2^16) / (d 2^16) < s 15 / (d 2^16) is
+ * below 1 / d, so the floor holds (no divider on Cortex-M0). */
+static const uint32_t reciprocal16[VOR_RASTER_MAX_NEAREST + 1u] = {
+    0u,    65536u, 32768u, 21846u, 16384u, 13108u, 10923u, 9363u, 8192u,
+    7282u, 6554u,  5958u,  5462u,  5042u,  4682u,  4370u,  4096u,
+};
+
+/* The KSETS colour of a k-set of d sites: per channel, the mean of their
+ * palette colours, rounded down. */
+static uint16_t kset_colour(const uint16_t *palette, const uint32_t *set, uint32_t d)
+{
+    uint32_t red = 0;
+    uint32_t green = 0;
+    uint32_t blue = 0;
+    for (uint32_t r = 0; r < d; r++) {
+        uint32_t c = palette[set[r]];
+        red += c >> 11;
+        green += (c >> 5) & 0x3Fu;
+        blue += c & 0x1Fu;
+    }
+    red = (red * reciprocal16[d]) >> 16;
+    green = (green * reciprocal16[d]) >> 16;
+    blue = (blue * reciprocal16[d]) >> 16;
+    return (uint16_t)((red << 11) | (green << 5) | blue);
+}
+
+/* Do the sets a[0..d) and b[0..d) (sorted) differ? */
+static bool sets_differ(const uint32_t *a, const uint32_t *b, uint32_t d)
+{
+    for (uint32_t r = 0; r < d; r++) {
+        if (a[r] != b[r]) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/* The KSETS pixels of a row from its k-sets (row) and the next row's
+ * (below; NULL for the last row), d sites each; boundary: the colour of
+ * a pixel whose right or lower neighbour has another k-set. */
+static void write_ksets(const vor_raster_output_t *out, uint16_t boundary, uint32_t width,
+                        uint32_t d, const uint32_t *row_sets, const uint32_t *below, uint16_t *px)
+{
+    for (uint32_t i = 0; i < width; i++) {
+        const uint32_t *set = row_sets + ((size_t)i * d);
+        bool edge = ((i + 1u) < width) && sets_differ(set, set + d, d);
+        if (!edge && (below != NULL)) {
+            edge = sets_differ(set, below + ((size_t)i * d), d);
+        }
+        px[i] = edge ? boundary : kset_colour(out->palette565, set, d);
+    }
+}
+
+int vor_raster_nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                       uint32_t k, const vor_raster_output_t *out,
+                       const vor_raster_options_t *options, void *work, size_t work_bytes)
+{
+    if (k == 0u) {
+        return VOR_ERR_ARG;
+    }
+    vor__raster_t r;
+    int status = vor__raster_check_order(&r, frame, sites, out, options, work, work_bytes, k);
+    if (status != VOR_OK) {
+        return status;
+    }
+    VOR_ASSERT((sites != NULL) && (out != NULL)); /* rejected by the check */
+    if ((sites->metric != VOR_METRIC_EUCLID) && (metric_check(sites) != VOR_OK)) {
+        return VOR_ERR_ARG;
+    }
+    /* the ranks and the two rows of k-sets before the family's pool
+     * (within VOR_RASTER_NEAREST_WORK_BYTES, less VOR_RASTER_WORK_BYTES) */
+    const uint32_t width = r.frame->width;
+    ranks_t ko;
+    uint32_t *sets[2];
+    ko.k = k;
+    ko.ranked = (k < sites->count) ? k : sites->count;
+    ko.kept = 0;
+    ko.keys = (rank_key_t *)(void *)r.rest;
+    ko.slot = (uint32_t *)(void *)(r.rest + (((size_t)k + 1u) * sizeof(rank_key_t)));
+    ko.site = ko.slot + k + 1u;
+    sets[0] = ko.site + k + 1u;
+    sets[1] = sets[0] + ((size_t)width * ko.ranked);
+    size_t used = vor__align8((((size_t)k + 1u) * (sizeof(rank_key_t) + 8u)) +
+                              ((size_t)width * ko.ranked * 8u));
+    r.rest += used;
+    r.rest_bytes -= used;
+    for (uint32_t q = 0; q <= k; q++) {
+        ko.slot[q] = q;
+    }
+    ko.labels = NULL;
+    ko.sets = NULL;
+    metric_t m;
+    prepare(&m, &r);
+    if (sites->metric == VOR_METRIC_EUCLID) {
+        m.key = key_EUCLID;
+        m.compare = compare_EUCLID;
+        m.bounds = bounds_EUCLID;
+    }
+    /* the scan (vor__raster_scan's), with the rows of k-order kinds:
+     * NEAREST rows written in place, KSETS rows one row late, when the
+     * k-sets of the row below are known */
+    const enum vor_raster_kind kind = out->kind;
+    vor__raster_start(&r);
+    if (kind == VOR_RASTER_KSETS) {
+        r.bands.hold = 1;
+    }
+    for (uint32_t j = 0; j <= r.frame->height; j++) { /* j = height: the end */
+        uint32_t count = 0;
+        if (j < r.frame->height) {
+            vor__run_t *runs = vor__bands_runs(&r.bands);
+            ko.labels = (kind == VOR_RASTER_NEAREST) ? (uint32_t *)vor__bands_pixels(&r.bands) : NULL;
+            ko.sets = (kind == VOR_RASTER_KSETS) ? sets[j & 1u] : NULL;
+            count = scan_row(&m, &ko, j, runs);
+            if (kind == VOR_RASTER_DISTANCE) {
+                distances(&m, j, runs, count, vor__bands_pixels(&r.bands));
+            }
+        }
+        if ((kind == VOR_RASTER_KSETS) && (j > 0u)) {
+            uint8_t *row_px = (uint8_t *)out->band + ((size_t)(j - 1u - r.bands.band_first) * r.row_bytes);
+            write_ksets(out, (options != NULL) ? options->boundary565 : 0u, width, ko.ranked,
+                        sets[(j - 1u) & 1u],
+                        (j < r.frame->height) ? sets[j & 1u] : NULL, (uint16_t *)(void *)row_px);
+        }
+        if (vor__bands_put_flush(&r.bands, count) != 0) {
+            return VOR_ERR_STOPPED;
+        }
+    }
+    return VOR_OK;
 }

@@ -12,6 +12,7 @@ int main(void)
     test_group("raster", test_raster);
     test_group("geometry", test_geometry);
     test_group("raster_metrics", test_raster_metrics);
+    test_group("korder", test_korder);
     test_group("true_output", test_true_output);
     test_group("api_safety", test_api_safety);
     test_group("centroid", test_centroid);

@@ -710,6 +710,57 @@ uint32_t ref_nearest_metric(const vor_raster_sites_t *s, int32_t qx, int32_t qy,
     }
 }
 
+/* The reference's exact image of site k's distance at q for the shaped
+ * sites (segments, polygons, polylines). */
+static void shape_square(ref_ratio_t *r, const vor_raster_sites_t *s, uint32_t k, int32_t qx,
+                         int32_t qy)
+{
+    if (s->metric == VOR_METRIC_SEGMENT) {
+        segment_square(r, qx, qy, &s->points[2u * k], &s->points[2u * k + 1u]);
+    } else if (s->metric == VOR_METRIC_POLYLINE) {
+        polyline_square(r, qx, qy, &s->points[s->offsets[k]], s->offsets[k + 1u] - s->offsets[k],
+                        s->mult_weights != NULL ? s->mult_weights[k] : 1);
+    } else {
+        polygon_square(r, qx, qy, &s->points[s->offsets[k]], s->offsets[k + 1u] - s->offsets[k]);
+    }
+}
+
+int ref_rank_compare(const vor_raster_sites_t *s, uint32_t a, uint32_t b, int32_t qx, int32_t qy,
+                     int *undecided)
+{
+    switch (s->metric) {
+    case VOR_METRIC_POWER:
+        return power_compare(s, a, b, qx, qy);
+    case VOR_METRIC_MULT:
+    case VOR_METRIC_ADD:
+    case VOR_METRIC_COMPOUND: {
+        ref_big_t da, db;
+        ref_euclid_square(&da, qx, qy, &s->points[a]);
+        ref_euclid_square(&db, qx, qy, &s->points[b]);
+        int64_t w1a = s->metric != VOR_METRIC_ADD ? s->mult_weights[a] : 1;
+        int64_t w2a = s->metric != VOR_METRIC_MULT ? s->add_weights[a] : 0;
+        int64_t w1b = s->metric != VOR_METRIC_ADD ? s->mult_weights[b] : 1;
+        int64_t w2b = s->metric != VOR_METRIC_MULT ? s->add_weights[b] : 0;
+        return weighted_compare(&da, w1a, w2a, &db, w1b, w2b, undecided);
+    }
+    case VOR_METRIC_SEGMENT:
+    case VOR_METRIC_POLYGON:
+    case VOR_METRIC_POLYLINE: {
+        ref_ratio_t ra, rb;
+        shape_square(&ra, s, a, qx, qy);
+        shape_square(&rb, s, b, qx, qy);
+        return ratio_compare(&ra, &rb);
+    }
+    default: {
+        ref_big_t va, vb;
+        plain_value(&va, s, a, qx, qy);
+        plain_value(&vb, s, b, qx, qy);
+        int c = ref_big_compare(&va, &vb);
+        return s->metric == VOR_METRIC_FARTHEST ? -c : c;
+    }
+    }
+}
+
 /* ------------------------------------------------- distance values */
 
 /* What "the distance is at least r" means for one site at one pixel:

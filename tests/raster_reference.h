@@ -43,6 +43,12 @@ void ref_euclid_square(ref_big_t *r, int32_t qx, int32_t qy, const vor_point_t *
  * decided within the reference's precision (a test must then fail). */
 uint32_t ref_nearest_metric(const vor_raster_sites_t *sites, int32_t qx, int32_t qy, int *undecided);
 
+/* Sign of the rank of site a against site b at (qx, qy) under sites'
+ * metric: negative when a is nearer (farther for VOR_METRIC_FARTHEST),
+ * 0 on a tie. *undecided as for ref_nearest_metric. */
+int ref_rank_compare(const vor_raster_sites_t *sites, uint32_t a, uint32_t b, int32_t qx,
+                     int32_t qy, int *undecided);
+
 /* The nearest site to (qx, qy), Euclidean point sites; ties: smaller index. */
 uint32_t ref_nearest(const vor_raster_sites_t *sites, int32_t qx, int32_t qy);
 

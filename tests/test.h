@@ -121,6 +121,7 @@ void test_queries(void);
 void test_raster(void);
 void test_geometry(void);
 void test_raster_metrics(void);
+void test_korder(void);
 void test_true_output(void);
 void test_api_safety(void);
 void test_centroid(void);

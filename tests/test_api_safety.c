@@ -719,9 +719,17 @@ static int never_flush(void *user, uint32_t first_row, uint32_t rows, const void
     return 0;
 }
 
+/* vor_raster_nearest with K = 2, in the entry points' type. */
+static int raster_nearest2(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
+                           const vor_raster_output_t *out, const vor_raster_options_t *options,
+                           void *work, size_t work_bytes)
+{
+    return vor_raster_nearest(frame, sites, 2, out, options, work, work_bytes);
+}
+
 static void check_raster(void)
 {
-    static uint8_t work[VOR_RASTER_WORK_BYTES(SAFE_SITES, 8)]
+    static uint8_t work[VOR_RASTER_NEAREST_WORK_BYTES(SAFE_SITES, 8, 2)]
         __attribute__((aligned(VOR_RASTER_WORK_ALIGN)));
     uint8_t band[8 * 4], band_before[sizeof band];
     uint32_t areas[SAFE_SITES], areas_before[SAFE_SITES];
@@ -746,12 +754,16 @@ static void check_raster(void)
     l1.metric = VOR_METRIC_L1;
     vor_raster_sites_t weightless = set; /* power diagram without its weights */
     weightless.metric = VOR_METRIC_POWER;
-    /* both entry points; vor_raster_euclid also refuses another metric */
-    int (*const entries[2])(const vor_raster_frame_t *, const vor_raster_sites_t *,
+    /* the three entry points; vor_raster_euclid also refuses another
+     * metric, vor_raster_nearest a K of 0 or past its largest and the
+     * k-set picture without a palette */
+    int (*const entries[3])(const vor_raster_frame_t *, const vor_raster_sites_t *,
                             const vor_raster_output_t *, const vor_raster_options_t *, void *,
-                            size_t) = {vor_raster, vor_raster_euclid};
-    vor_raster_options_t bad_method = {(enum vor_raster_method)7};
-    for (unsigned e = 0; e < 2u; e++) {
+                            size_t) = {vor_raster, vor_raster_euclid, raster_nearest2};
+    vor_raster_options_t bad_method = {(enum vor_raster_method)7, 0};
+    vor_raster_output_t ksets = out;
+    ksets.kind = VOR_RASTER_KSETS;
+    for (unsigned e = 0; e < 3u; e++) {
         unsigned bad = 0;
         bad += entries[e](NULL, &set, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         bad += entries[e](&frame, NULL, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
@@ -767,6 +779,14 @@ static void check_raster(void)
         if (e == 1u) {
             bad += vor_raster_euclid(&frame, &l1, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
         }
+        if (e == 2u) {
+            bad += vor_raster_nearest(&frame, &set, 0, &out, NULL, work, sizeof work) != VOR_ERR_ARG;
+            bad += vor_raster_nearest(&frame, &set, VOR_RASTER_MAX_NEAREST + 1u, &out, NULL, work,
+                                      sizeof work) != VOR_ERR_ARG;
+            bad += vor_raster_nearest(&frame, &set, 2, &ksets, NULL, work, sizeof work) != VOR_ERR_ARG;
+        } else {
+            bad += entries[e](&frame, &set, &ksets, NULL, work, sizeof work) != VOR_ERR_ARG;
+        }
         bad += (flushes != 0u || !test_same_bytes(band, band_before, sizeof band) ||
                 !test_same_bytes(areas, areas_before, sizeof areas));
         CHECK(bad == 0, "raster entry %u: %u bad arguments accepted or wrote", e, bad);
@@ -775,6 +795,9 @@ static void check_raster(void)
           "raster: the good call");
     CHECK(vor_raster_euclid(&frame, &set, &out, NULL, work, sizeof work) == VOR_OK && flushes == 2u,
           "raster_euclid: the good call");
+    CHECK(vor_raster_nearest(&frame, &set, 2, &out, NULL, work, sizeof work) == VOR_OK &&
+              flushes == 3u,
+          "raster_nearest: the good call");
 }
 
 /* vor_field_raster: each bad argument refused before the first pixel,

@@ -112,7 +112,7 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
     out.palette565 = palette565;
     out.palette888 = palette888;
     out.areas = areas;
-    vor_raster_options_t options = {method};
+    vor_raster_options_t options = {method, 0};
     for (uint32_t k = 0; k < set->count; k++) {
         areas[k] = 0xDEADu;
     }
@@ -630,7 +630,7 @@ static void error_cases(void)
     vor_raster_output_t bad_out = out;
     bad_out.kind = (enum vor_raster_kind)42;
     CHECK(vor_raster(&f, &set, &bad_out, NULL, work, sizeof work) == VOR_ERR_ARG, "errors: kind");
-    vor_raster_options_t bad_method = {(enum vor_raster_method)3};
+    vor_raster_options_t bad_method = {(enum vor_raster_method)3, 0};
     CHECK(vor_raster(&f, &set, &out, &bad_method, work, sizeof work) == VOR_ERR_ARG, "errors: method");
     bad_out = out;
     bad_out.kind = VOR_RASTER_RGB565;

@@ -74,7 +74,7 @@ static void render_and_compare(const char *name, const vor_raster_frame_t *f,
     out.flush = capture_flush;
     out.user = &cap;
     out.areas = areas;
-    vor_raster_options_t options = {method};
+    vor_raster_options_t options = {method, 0};
     for (uint32_t k = 0; k < set->count; k++) {
         areas[k] = 0xDEADu;
     }

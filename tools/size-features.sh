@@ -58,6 +58,7 @@ links() {
     field)          echo "bucket_grid field incremental insertion_order interpolate mesh predicates queries raster" ;;
     raster_euclid)  echo "raster raster_euclid" ;;
     raster_all)     echo "predicates raster raster_euclid raster_metrics" ;;
+    raster_korder)  echo "predicates raster raster_metrics" ;;
     everything)     echo "$ALL_FILES" ;;
     esac
 }
@@ -78,7 +79,7 @@ print(" ".join(sorted(files)))
 PY
 }
 # In the order of the table: from the smallest firmware to everything.
-FEATURES="insert_nearest build_nearest locate move geometry clip constrain power power_cells interpolate laplace field raster_euclid raster_all everything"
+FEATURES="insert_nearest build_nearest locate move geometry clip constrain power power_cells interpolate laplace field raster_euclid raster_all raster_korder everything"
 LEVELS="-Os -O2"
 
 # Sums the libvor input sections of a GNU ld map: "flash ram". An input

@@ -138,5 +138,17 @@ int main(void)
         acc++;
     }
     acc |= vor_power_validate(&pd, &violation);
+    vor_raster_sites_t korder_sites = {0};
+    korder_sites.metric = (enum vor_metric)size_x(11);
+    korder_sites.points = raster_points;
+    korder_sites.count = SIZE_SITES;
+    vor_raster_output_t korder_out = {0};
+    korder_out.kind = (enum vor_raster_kind)size_x(12);
+    korder_out.band = raster_band;
+    korder_out.band_bytes = sizeof raster_band;
+    korder_out.band_rows = 1;
+    korder_out.flush = raster_flush;
+    acc |= vor_raster_nearest(&field_frame, &korder_sites, (uint32_t)size_x(13), &korder_out, NULL,
+                              raster_work, sizeof raster_work);
     return acc + raster_render(vor_raster, (enum vor_metric)size_x(5)) + (int)raster_sum;
 }

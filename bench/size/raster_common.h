@@ -30,7 +30,7 @@ typedef int (*raster_entry_t)(const vor_raster_frame_t *, const vor_raster_sites
                               const vor_raster_output_t *, const vor_raster_options_t *,
                               void *, size_t);
 
-static int raster_render(raster_entry_t entry, enum vor_metric metric)
+static inline int raster_render(raster_entry_t entry, enum vor_metric metric)
 {
     for (uint32_t i = 0; i < SIZE_SITES; i++) {
         raster_points[i].x = size_x(i);

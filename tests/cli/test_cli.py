@@ -329,6 +329,105 @@ def raster_cases(rng, tmp):
     r = run(["raster", "--size", "30", "20", "--origin", "0", "0", "--step", "1", "1",
              os.path.join(tmp, "lattice-ties.sites"), "--png", png], "")
     check(r.returncode == 0 and open(png, "rb").read(8) == b"\x89PNG\r\n\x1a\n", f"raster --png: {r.returncode} {r.stderr!r}")
+def nearest_k_cases(rng, tmp):
+    """vor raster --nearest K: --labels against a Python ranking (the keys
+    of metric_nearest, sorted with the index breaking ties), K past the
+    site count padded with 4294967295; --png against the k-sets: black
+    where the right or lower neighbour's k-set differs, else the mean of
+    the members' colours in RGB565, widened back to 8 bits."""
+    import functools
+    import os
+    import struct
+    metrics = [("euclid", None, "euclid"), ("l1", None, "l1"), ("linf", None, "linf"),
+               ("lp", 3, "lp:3"), ("ellip", (3, -1, 2), "ellip:3,-1,2"), ("mult", None, "mult"),
+               ("add", None, "add"), ("comp", None, "comp"), ("farthest", None, "farthest"),
+               ("power", None, "power")]
+
+    def ranking(metric, param, sites, q):
+        key_metric = "farthest" if metric == "euclid" else metric
+        keys = []
+        for k, site in enumerate(sites):
+            # euclid ranks as farthest's negated key; the rest as metric_nearest
+            kk = metric_key(key_metric, param, site, q)
+            keys.append((-kk if metric == "euclid" else kk, k))
+        if metric in ("mult", "add", "comp"):
+            def cmp(a, b):
+                c = weighted_compare(a[0], b[0])
+                return c if c != 0 else (a[1] > b[1]) - (a[1] < b[1])
+            keys.sort(key=functools.cmp_to_key(cmp))
+        else:
+            keys.sort()
+        return [k for _, k in keys]
+
+    for metric, param, arg in metrics:
+        w, h = rng.randint(3, 17), rng.randint(2, 13)
+        ox, oy, sx, sy = rng.randint(-20, 20), rng.randint(-20, 20), rng.randint(1, 3), rng.randint(1, 3)
+        sites = []
+        for k in range(rng.randint(2, 9)):
+            p = (ox + rng.randint(-6, w * sx + 6), oy + rng.randint(-6, h * sy + 6))
+            if metric == "mult":
+                p += (rng.randint(1, 3),)
+            elif metric == "add":
+                p += (rng.randint(-4, 4),)
+            elif metric == "comp":
+                p += (rng.randint(1, 3), rng.randint(-4, 4))
+            elif metric == "power":
+                p += (rng.randint(-40, 40),)
+            sites.append(p)
+        sites.append(sites[0])  # a coincident pair: ranked by index
+        sp = os.path.join(tmp, f"k-{metric}.sites")
+        with open(sp, "w") as f:
+            f.write("".join(" ".join(str(v) for v in site) + "\n" for site in sites))
+        ranks = [[ranking(metric, param, sites, (ox + i * sx, oy + j * sy)) for i in range(w)] for j in range(h)]
+        for kk in (1, 2, 3, len(sites) + 1):
+            out = os.path.join(tmp, f"k-{metric}-{kk}.raw")
+            r = run(["raster", "--size", str(w), str(h), "--origin", str(ox), str(oy), "--step", str(sx),
+                     str(sy), "--metric", arg, "--nearest", str(kk), "--band", str(rng.choice([1, 4, 16])),
+                     sp, "--labels", out], "")
+            check(r.returncode == 0, f"raster --nearest {kk} {metric}: status {r.returncode} {r.stderr}")
+            if r.returncode != 0:
+                continue
+            data = open(out, "rb").read()
+            check(len(data) == 4 * w * h * kk, f"raster --nearest {kk} {metric}: {len(data)} bytes")
+            got = struct.unpack(f"<{w * h * kk}I", data) if len(data) == 4 * w * h * kk else None
+            wrong = 0
+            for j in range(h):
+                for i in range(w):
+                    want = (ranks[j][i] + [2**32 - 1] * kk)[:kk]
+                    p = (j * w + i) * kk
+                    wrong += got is None or list(got[p:p + kk]) != want
+            check(wrong == 0, f"raster --nearest {kk} {metric}: {wrong} of {w * h} pixels differ")
+        # the k-set picture, y down
+        kk = 2
+        png = os.path.join(tmp, f"k-{metric}.png")
+        r = run(["raster", "--size", str(w), str(h), "--origin", str(ox), str(oy), "--step", str(sx), str(sy),
+                 "--metric", arg, "--nearest", str(kk), sp, "--png", png, "--y-down"], "")
+        check(r.returncode == 0, f"raster --nearest --png {metric}: {r.returncode} {r.stderr!r}")
+        if r.returncode != 0:
+            continue
+        picture = read_png(png)
+        sets = [[sorted(ranks[j][i][:kk]) for i in range(w)] for j in range(h)]
+        wrong = 0
+        for j in range(h):
+            for i in range(w):
+                edge = (i + 1 < w and sets[j][i + 1] != sets[j][i]) or (j + 1 < h and sets[j + 1][i] != sets[j][i])
+                if edge:
+                    want = (0, 0, 0)
+                else:
+                    cs = [draw_colour(s) for s in sets[j][i]]
+                    r5 = sum(c[0] >> 3 for c in cs) // len(cs)
+                    g6 = sum(c[1] >> 2 for c in cs) // len(cs)
+                    b5 = sum(c[2] >> 3 for c in cs) // len(cs)
+                    want = ((r5 * 255 + 15) // 31, (g6 * 255 + 31) // 63, (b5 * 255 + 15) // 31)
+                wrong += picture[j][i] != want
+        check(wrong == 0, f"raster --nearest --png {metric}: {wrong} of {w * h} pixels differ")
+    # bad K: status 2
+    for bad in ("0", "17", "x"):
+        r = run(["raster", "--size", "4", "4", "--nearest", bad, os.path.join(tmp, "k-l1.sites"), "--labels",
+                 os.path.join(tmp, "bad.raw")], "")
+        check(r.returncode == 2 and r.stderr.startswith("error: --nearest"), f"raster --nearest {bad}: {r.returncode} {r.stderr!r}")
+
+
 def brute_cell(sites, i, box):
     """Cell of sites[i] in the box, exactly: the box clipped by the closed
     half-plane |p - s|^2 <= |p - n|^2 of every other distinct site n, with
@@ -735,37 +834,43 @@ def polygon_square(q, poly):
     return min(segment_square(q, a, b) for a, b in edges)
 
 
+def metric_key(metric, param, site, q):
+    """The exact image of site's distance at q under metric (mult, add,
+    comp: a tuple for weighted_compare; farthest: negated)."""
+    if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp", "power"):
+        dx, dy = abs(site[0] - q[0]), abs(site[1] - q[1])
+    if metric == "power":  # the power distance, an exact Python integer
+        return dx * dx + dy * dy - site[2]
+    if metric == "l1":
+        return dx + dy
+    if metric == "linf":
+        return max(dx, dy)
+    if metric == "lp":
+        return dx ** param + dy ** param
+    if metric == "ellip":
+        a, b, c = param
+        sx, sy = q[0] - site[0], q[1] - site[1]
+        return a * sx * sx + 2 * b * sx * sy + c * sy * sy
+    if metric == "farthest":
+        return -(dx * dx + dy * dy)
+    if metric == "hausdorff":
+        return max((x - q[0]) ** 2 + (y - q[1]) ** 2 for x, y in site)
+    if metric == "segment":
+        return segment_square(q, site[0], site[1])
+    if metric == "polygon":
+        return polygon_square(q, site)
+    if metric == "polyline":
+        pts = site[1:]
+        edges = [(pts[0], pts[0])] if len(pts) == 1 else list(zip(pts, pts[1:]))
+        return min(segment_square(q, a, b) for a, b in edges) / (site[0] * site[0])
+    d = dx * dx + dy * dy
+    return (d, site[2] if metric != "add" else 1, site[-1] if metric != "mult" else 0)
+
+
 def metric_nearest(metric, param, sites, q):
     """Index of the first-ranked site at q (ties: the smaller index)."""
     def key(site):
-        if metric in ("l1", "linf", "lp", "ellip", "farthest", "mult", "add", "comp", "power"):
-            dx, dy = abs(site[0] - q[0]), abs(site[1] - q[1])
-        if metric == "power":  # the power distance, an exact Python integer
-            return dx * dx + dy * dy - site[2]
-        if metric == "l1":
-            return dx + dy
-        if metric == "linf":
-            return max(dx, dy)
-        if metric == "lp":
-            return dx ** param + dy ** param
-        if metric == "ellip":
-            a, b, c = param
-            sx, sy = q[0] - site[0], q[1] - site[1]
-            return a * sx * sx + 2 * b * sx * sy + c * sy * sy
-        if metric == "farthest":
-            return -(dx * dx + dy * dy)
-        if metric == "hausdorff":
-            return max((x - q[0]) ** 2 + (y - q[1]) ** 2 for x, y in site)
-        if metric == "segment":
-            return segment_square(q, site[0], site[1])
-        if metric == "polygon":
-            return polygon_square(q, site)
-        if metric == "polyline":
-            pts = site[1:]
-            edges = [(pts[0], pts[0])] if len(pts) == 1 else list(zip(pts, pts[1:]))
-            return min(segment_square(q, a, b) for a, b in edges) / (site[0] * site[0])
-        d = dx * dx + dy * dy
-        return (d, site[2] if metric != "add" else 1, site[-1] if metric != "mult" else 0)
+        return metric_key(metric, param, site, q)
     best = 0
     best_key = key(sites[0])
     for k in range(1, len(sites)):
@@ -2290,6 +2395,7 @@ def main():
         cells_cases(rng, tmp)
         clip_cases(random.Random(2715), tmp)
         raster_metric_cases(rng, tmp)
+        nearest_k_cases(random.Random(27), tmp)
         contours_cases(rng, tmp)
         help_cases(tmp)
         file_error_cases(tmp)

@@ -4,10 +4,12 @@
  * the int32 limits, some with centres outside int32), every metric and
  * output kind, both methods, band heights from 1 to past the frame, band
  * and work buffers exactly as large as documented or too small or
- * misaligned, flushes that stop the render. Valid renders are compared
- * pixel by pixel (and the areas) with the brute-force reference of
- * tests/raster_reference.c; a call that fails before the first pixel
- * must write nothing: no band byte, no area, no flush.
+ * misaligned, flushes that stop the render; vor_raster, vor_raster_euclid
+ * and vor_raster_nearest (K from 0 to past its largest, the k-order kinds
+ * too). Valid renders are compared pixel by pixel (and the areas) with
+ * the brute-force reference of tests/raster_reference.c (for K: a
+ * selection of the ranks by ref_rank_compare); a call that fails before
+ * the first pixel must write nothing: no band byte, no area, no flush.
  */
 #include <string.h>
 
@@ -19,13 +21,17 @@
 #define MOST_POINTS 24u
 #define MOST_SIDE 24u
 
-static uint8_t band[MOST_SIDE * (MOST_SIDE + 2u) * 4u + 8u];
-static uint64_t work[VOR_RASTER_WORK_BYTES(MOST_SITES, MOST_SIDE) / 8u + 2u];
-static uint32_t frame_pixels[MOST_SIDE * MOST_SIDE];
+#define MOST_K VOR_RASTER_MAX_NEAREST
+
+static uint8_t band[MOST_SIDE * (MOST_SIDE + 2u) * 4u * MOST_K + 8u];
+static uint64_t work[VOR_RASTER_NEAREST_WORK_BYTES(MOST_SITES, MOST_SIDE, MOST_K) / 8u + 2u];
+static uint32_t frame_pixels[MOST_SIDE * MOST_SIDE * MOST_K];
+static uint32_t ranks[MOST_SIDE * MOST_SIDE * MOST_K];
 
 typedef struct {
     const vor_raster_frame_t *frame;
     enum vor_raster_kind kind;
+    uint32_t values; /* values a pixel: K for NEAREST, else 1 */
     uint32_t next_row;
     uint32_t stop_after; /* flushes until a nonzero return; 0: never */
     uint32_t flushes;
@@ -39,7 +45,8 @@ static uint32_t pixel_value(enum vor_raster_kind kind, const uint8_t *p)
     case VOR_RASTER_BOUNDARY:
         return p[0];
     case VOR_RASTER_LABEL16:
-    case VOR_RASTER_RGB565: {
+    case VOR_RASTER_RGB565:
+    case VOR_RASTER_KSETS: {
         uint16_t v;
         memcpy(&v, p, 2);
         return v;
@@ -57,7 +64,8 @@ static uint32_t pixel_value(enum vor_raster_kind kind, const uint8_t *p)
 static int capture_flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
 {
     capture_t *c = user;
-    uint32_t w = c->frame->width, bytes = VOR_RASTER_PIXEL_BYTES(c->kind);
+    uint32_t w = c->frame->width * c->values;
+    uint32_t bytes = c->kind == VOR_RASTER_NEAREST ? 4u : VOR_RASTER_NEAREST_PIXEL_BYTES(c->kind, 1u);
     if (first_row != c->next_row || rows == 0 || first_row + rows > c->frame->height)
         c->bad = 1;
     else
@@ -155,23 +163,30 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     vor_raster_output_t out = {0};
     uint8_t how = fuzz_u8(&r);
-    out.kind = (enum vor_raster_kind)(how % 8u); /* 7: unknown */
-    vor_raster_options_t options = {(enum vor_raster_method)((how >> 3) % 3u)}; /* 2: unknown */
+    uint8_t memory = fuzz_u8(&r);
+    int euclid_entry = (memory & 4u) != 0;
+    int nearest_entry = !euclid_entry && (memory & 8u) != 0;
+    uint32_t nk = fuzz_u8(&r) % (MOST_K + 2u); /* K; 0 and MOST_K + 1: out of range */
+    /* 7 NEAREST and 8 KSETS: vor_raster_nearest's; 9: unknown */
+    out.kind = (enum vor_raster_kind)(how % 10u);
+    vor_raster_options_t options = {(enum vor_raster_method)((how >> 4) % 3u), 0xF00Du}; /* 2: unknown */
     out.band_rows = fuzz_u8(&r) % (MOST_SIDE + 3u);
-    uint32_t pixel_bytes = VOR_RASTER_PIXEL_BYTES(out.kind);
+    uint32_t pixel_bytes = nearest_entry ? (uint32_t)VOR_RASTER_NEAREST_PIXEL_BYTES(out.kind, nk)
+                                         : VOR_RASTER_PIXEL_BYTES(out.kind);
     size_t band_needed = (size_t)out.band_rows * frame.width * pixel_bytes;
     out.band = band;
     out.band_bytes = band_needed - (how & 0x40u && band_needed ? 1u : 0u);
-    out.palette565 = palette565;
+    out.palette565 = (memory & 0x10u) ? NULL : palette565; /* KSETS needs it */
     out.palette888 = palette888;
     out.areas = areas;
-    capture_t capture = {&frame, out.kind, 0, fuzz_u8(&r) % 4u, 0, 0};
+    uint32_t values = nearest_entry && out.kind == VOR_RASTER_NEAREST ? nk : 1u;
+    capture_t capture = {&frame, out.kind, values, 0, fuzz_u8(&r) % 4u, 0, 0};
     out.flush = capture_flush;
     out.user = &capture;
-    uint8_t memory = fuzz_u8(&r);
-    size_t work_bytes = VOR_RASTER_WORK_BYTES(sites.count, frame.width) - (memory & 1u);
+    size_t work_bytes = (nearest_entry ? VOR_RASTER_NEAREST_WORK_BYTES(sites.count, frame.width, nk)
+                                       : VOR_RASTER_WORK_BYTES(sites.count, frame.width)) -
+                        (memory & 1u);
     uint8_t *work_at = (uint8_t *)work + (memory & 2u ? 4u : 0u);
-    int euclid_entry = (memory & 4u) != 0;
 
     /* What the header promises an error for, checked here independently. */
     int params = sites.metric <= VOR_METRIC_POWER;
@@ -186,7 +201,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
          (sites.metric == VOR_METRIC_POLYLINE && sites.mult_weights)) && sites.count)
         for (uint32_t k = 0; k < sites.count; k++)
             params &= mult[k] >= 1;
-    int valid = params && frame_valid(&frame) && out.kind <= VOR_RASTER_DISTANCE &&
+    int kind_ok = nearest_entry ? nk >= 1u && nk <= MOST_K && out.kind <= VOR_RASTER_KSETS
+                                : out.kind <= VOR_RASTER_DISTANCE;
+    int palette_ok = !((out.kind == VOR_RASTER_RGB565 || out.kind == VOR_RASTER_KSETS) &&
+                       out.palette565 == NULL);
+    int valid = params && frame_valid(&frame) && kind_ok && palette_ok &&
                 options.method <= VOR_RASTER_BRUTE && out.band_rows >= 1u &&
                 !(out.kind == VOR_RASTER_LABEL8 && sites.count > 256u) &&
                 (!euclid_entry || sites.metric == VOR_METRIC_EUCLID);
@@ -194,8 +213,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 
     memset(band, 0x5a, sizeof band);
     memset(areas, 0x5a, sizeof areas);
-    int result = (euclid_entry ? vor_raster_euclid : vor_raster)(&frame, &sites, &out, &options,
-                                                                 work_at, work_bytes);
+    int result = nearest_entry ? vor_raster_nearest(&frame, &sites, nk, &out, &options, work_at,
+                                                    work_bytes)
+                 : (euclid_entry ? vor_raster_euclid : vor_raster)(&frame, &sites, &out, &options,
+                                                                   work_at, work_bytes);
     if (!valid || !sized) {
         FUZZ_REQUIRE(result != VOR_OK, "raster: an invalid request succeeded");
         if (result < 0) {
@@ -218,14 +239,40 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     uint32_t w = frame.width, h = frame.height, labels[MOST_SIDE * MOST_SIDE];
     uint32_t counted[MOST_SITES] = {0};
     int undecided = 0;
+    /* K' = min(K, count) ranks a pixel (1 for the other entries) */
+    uint32_t ranked = !nearest_entry ? 1u : nk < sites.count ? nk : sites.count;
     for (uint32_t j = 0; j < h; j++)
         for (uint32_t i = 0; i < w; i++) {
-            labels[j * w + i] = ref_nearest_metric(&sites, ref_centre_x(&frame, i),
-                                                   ref_centre_y(&frame, j), &undecided);
+            int32_t qx = ref_centre_x(&frame, i), qy = ref_centre_y(&frame, j);
+            uint32_t *rank = &ranks[(j * w + i) * MOST_K];
+            if (!nearest_entry) {
+                rank[0] = ref_nearest_metric(&sites, qx, qy, &undecided);
+            } else { /* per rank, the first best of the sites not ranked yet */
+                uint32_t taken = 0;
+                for (uint32_t q = 0; q < ranked; q++) {
+                    uint32_t best = MOST_SITES;
+                    for (uint32_t s = 0; s < sites.count; s++)
+                        if (!(taken >> s & 1u) &&
+                            (best == MOST_SITES || ref_rank_compare(&sites, s, best, qx, qy, &undecided) < 0))
+                            best = s;
+                    taken |= 1u << best;
+                    rank[q] = best;
+                }
+            }
+            labels[j * w + i] = rank[ranked - 1u];
             counted[labels[j * w + i]]++;
         }
     if (undecided)
         return 0; /* beyond the reference's precision: nothing to compare */
+    if (out.kind == VOR_RASTER_NEAREST) {
+        for (uint32_t p = 0; p < w * h; p++)
+            for (uint32_t q = 0; q < nk; q++)
+                FUZZ_REQUIRE(frame_pixels[p * nk + q] == (q < ranked ? ranks[p * MOST_K + q] : VOR_RASTER_NO_SITE),
+                             "raster: a rank differs from the reference");
+        for (uint32_t s = 0; s < sites.count; s++)
+            FUZZ_REQUIRE(areas[s] == counted[s], "raster: an area differs from the reference");
+        return 0;
+    }
     for (uint32_t j = 0; j < h; j++)
         for (uint32_t i = 0; i < w; i++) {
             uint32_t label = labels[j * w + i], want = label;
@@ -240,6 +287,24 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 want = ref_distance_metric(&sites, label, ref_centre_x(&frame, i),
                                            ref_centre_y(&frame, j));
                 break;
+            case VOR_RASTER_KSETS: { /* k-sets as bit sets of the sites */
+                uint32_t here = 0, right = 0, below = 0, red = 0, green = 0, blue = 0;
+                for (uint32_t q = 0; q < ranked; q++) {
+                    uint32_t s = ranks[(j * w + i) * MOST_K + q];
+                    here |= 1u << s;
+                    red += palette565[s] >> 11;
+                    green += palette565[s] >> 5 & 63u;
+                    blue += palette565[s] & 31u;
+                    if (i + 1u < w)
+                        right |= 1u << ranks[(j * w + i + 1u) * MOST_K + q];
+                    if (j + 1u < h)
+                        below |= 1u << ranks[((j + 1u) * w + i) * MOST_K + q];
+                }
+                int edge = (i + 1u < w && right != here) || (j + 1u < h && below != here);
+                /* the boundary colour of the options */
+                want = edge ? 0xF00Du : (red / ranked) << 11 | (green / ranked) << 5 | blue / ranked;
+                break;
+            }
             default: break;
             }
             FUZZ_REQUIRE(frame_pixels[j * w + i] == want, "raster: a pixel differs from the reference");

@@ -3,7 +3,7 @@
  * vor raster --size W H --origin OX OY --step SX SY
  *            [--metric euclid|l1|linf|lp:P|ellip:A,B,C|mult|add|comp|farthest|
  *                      hausdorff|segment|polygon|polyline|power]
- *            [--band R] [--scale S] SITES (--labels OUT.raw |
+ *            [--band R] [--scale S] [--nearest K] SITES (--labels OUT.raw |
  *            --png OUT.png [--y-down] [--dots])
  *
  * Renders the exact discrete Voronoi diagram of SITES with vor_raster in
@@ -27,6 +27,12 @@
  * `vor draw` gives it (cli_site_colour), black boundaries, and with
  * --dots each site's points as black dots (stb_image_write:
  * tools/png_write.h).
+ * --nearest K ranks the K nearest sites of every pixel (vor_raster_nearest;
+ * farthest first for farthest): --labels writes K uint32 a pixel, nearest
+ * first (VOR_RASTER_NO_SITE, 4294967295, past the site count), --png draws
+ * each k-set (the set of a pixel's K nearest) in the mean of its sites'
+ * colours (RGB565, VOR_RASTER_KSETS) with black boundaries between
+ * k-sets.
  * Fields are separated by blanks or commas; --scale S scales coordinates
  * and additive weights (not multiplicative ones), and power weights by
  * S^2. Bad input: "error:
@@ -44,7 +50,8 @@
 
 #define USAGE                                                                                   \
     "usage: vor raster --size W H [--origin OX OY] [--step SX SY] [--metric M] [--band R]\n"      \
-    "                  [--scale S] SITES (--labels OUT.raw | --png OUT.png [--y-down] [--dots])"
+    "                  [--scale S] [--nearest K] SITES (--labels OUT.raw | --png OUT.png [--y-down]\n" \
+    "                  [--dots])"
 
 const char cli_raster_help[] =
     USAGE "\n"
@@ -77,6 +84,12 @@ const char cli_raster_help[] =
     "                segment, polygon, polyline, power (the power diagram:\n"
     "                |q - s|^2 - w, ties to the smaller index)\n"
     "  --band R      rows rendered per band (default 16)\n"
+    "  --nearest K   the K nearest sites of each pixel (1 <= K <= 16; farthest\n"
+    "                first for farthest): --labels writes K uint32 a pixel,\n"
+    "                nearest first (4294967295 past the site count); --png\n"
+    "                colours each k-set (the set of a pixel's K nearest) with\n"
+    "                the mean of its sites' colours, black boundaries between\n"
+    "                k-sets\n"
     "  --y-down      --png: row j = 0 at the top (screen order)\n"
     "  --dots        --png: each site's points as black dots\n"
     "\n"
@@ -116,16 +129,19 @@ static int32_t int_arg(const char *text, const char *what)
     return v;
 }
 
-/* Renders one kind into a whole frame (the host has the memory). */
+/* Renders one kind into a whole frame (the host has the memory), with
+ * vor_raster (k = 0) or vor_raster_nearest (K = k). */
 static uint8_t *render(const vor_raster_frame_t *frame, const vor_raster_sites_t *sites,
-                       enum vor_raster_kind kind, uint32_t band_rows, const uint32_t *palette888)
+                       enum vor_raster_kind kind, uint32_t band_rows, const uint32_t *palette888,
+                       uint32_t k, const uint16_t *palette565)
 {
-    size_t bytes = VOR_RASTER_PIXEL_BYTES(kind);
+    size_t bytes = VOR_RASTER_NEAREST_PIXEL_BYTES(kind, k);
     collect_t c;
     c.row_bytes = (size_t)frame->width * bytes;
     c.frame = malloc(c.row_bytes * frame->height);
     void *band = malloc(c.row_bytes * band_rows);
-    size_t work_bytes = VOR_RASTER_WORK_BYTES(sites->count, frame->width);
+    size_t work_bytes = k != 0u ? VOR_RASTER_NEAREST_WORK_BYTES(sites->count, frame->width, k)
+                                : VOR_RASTER_WORK_BYTES(sites->count, frame->width);
     void *work = malloc(work_bytes);
     if (c.frame == NULL || band == NULL || work == NULL) {
         cli_error("out of memory");
@@ -139,9 +155,11 @@ static uint8_t *render(const vor_raster_frame_t *frame, const vor_raster_sites_t
     out.flush = collect_band;
     out.user = &c;
     out.palette888 = palette888;
-    int err = vor_raster(frame, sites, &out, NULL, work, work_bytes);
+    out.palette565 = palette565;
+    int err = k != 0u ? vor_raster_nearest(frame, sites, k, &out, NULL, work, work_bytes)
+                      : vor_raster(frame, sites, &out, NULL, work, work_bytes);
     if (err != VOR_OK) {
-        cli_library_error("vor_raster", err);
+        cli_library_error(k != 0u ? "vor_raster_nearest" : "vor_raster", err);
     }
     free(work);
     free(band);
@@ -388,13 +406,14 @@ int cli_raster(int argc, char **argv)
     sites.metric = VOR_METRIC_EUCLID;
     int have_size = 0;
     bool y_down = false, dots = false;
-    uint32_t band_rows = 16;
+    uint32_t band_rows = 16, nearest = 0;
     const char *sites_path = NULL, *labels_path = NULL, *png_path = NULL;
-    enum { SIZE, ORIGIN, STEP, METRIC, BAND, LABELS, PNG, Y_DOWN, DOTS };
+    enum { SIZE, ORIGIN, STEP, METRIC, BAND, LABELS, PNG, Y_DOWN, DOTS, NEAREST };
     static const cli_option_t options[] = {
         [SIZE] = {"--size", 2},     [ORIGIN] = {"--origin", 2}, [STEP] = {"--step", 2},
         [METRIC] = {"--metric", 1}, [BAND] = {"--band", 1},     [LABELS] = {"--labels", 1},
-        [PNG] = {"--png", 1},       [Y_DOWN] = {"--y-down", 0}, [DOTS] = {"--dots", 0}};
+        [PNG] = {"--png", 1},       [Y_DOWN] = {"--y-down", 0}, [DOTS] = {"--dots", 0},
+        [NEAREST] = {"--nearest", 1}};
     cli_arguments_t args;
     cli_arguments_begin(&args, argc, argv, "raster", USAGE, options, sizeof options / sizeof options[0]);
     for (int o; (o = cli_next_argument(&args)) != CLI_END;) {
@@ -424,6 +443,12 @@ int cli_raster(int argc, char **argv)
                 cli_error("--band: rows must be positive");
             }
             band_rows = (uint32_t)r;
+        } else if (o == NEAREST) {
+            int32_t k = int_arg(v[0], "--nearest");
+            if (k < 1 || k > (int32_t)VOR_RASTER_MAX_NEAREST) {
+                cli_error("--nearest: K must be 1 to 16");
+            }
+            nearest = (uint32_t)k;
         } else if (o == LABELS) {
             labels_path = v[0];
         } else if (o == PNG) {
@@ -474,8 +499,10 @@ int cli_raster(int argc, char **argv)
     size_t pixels = (size_t)frame.width * frame.height;
     if (labels_path != NULL) {
         FILE *f = cli_create_output(labels_path);
-        uint8_t *labels = render(&frame, &sites, VOR_RASTER_LABEL32, band_rows, NULL);
-        for (size_t p = 0; p < pixels; p++) { /* little-endian whatever the host */
+        enum vor_raster_kind kind = nearest != 0u ? VOR_RASTER_NEAREST : VOR_RASTER_LABEL32;
+        uint8_t *labels = render(&frame, &sites, kind, band_rows, NULL, nearest, NULL);
+        size_t values = pixels * (nearest != 0u ? nearest : 1u);
+        for (size_t p = 0; p < values; p++) { /* little-endian whatever the host */
             uint32_t v;
             memcpy(&v, labels + 4u * p, 4);
             uint8_t le[4] = {(uint8_t)v, (uint8_t)(v >> 8), (uint8_t)(v >> 16), (uint8_t)(v >> 24)};
@@ -492,11 +519,34 @@ int cli_raster(int argc, char **argv)
         for (uint32_t k = 0; k < n; k++) {
             palette[k] = cli_site_colour(k);
         }
-        uint8_t *rgb = render(&frame, &sites, VOR_RASTER_RGB888, band_rows, palette);
-        uint8_t *edges = render(&frame, &sites, VOR_RASTER_BOUNDARY, band_rows, NULL);
-        for (size_t p = 0; p < pixels; p++) {
-            if (edges[p] != 0u) {
-                rgb[3u * p] = rgb[3u * p + 1u] = rgb[3u * p + 2u] = 0;
+        uint8_t *rgb, *edges = NULL;
+        if (nearest != 0u) { /* the k-sets, boundaries black, RGB565 to RGB888 */
+            uint16_t *palette565 = malloc((size_t)n * sizeof *palette565);
+            rgb = malloc(3u * pixels);
+            if (palette565 == NULL || rgb == NULL) {
+                cli_error("out of memory");
+            }
+            for (uint32_t k = 0; k < n; k++) {
+                palette565[k] = (uint16_t)(((palette[k] >> 8) & 0xF800u) | ((palette[k] >> 5) & 0x07E0u) |
+                                           ((palette[k] >> 3) & 0x001Fu));
+            }
+            uint8_t *sets = render(&frame, &sites, VOR_RASTER_KSETS, band_rows, NULL, nearest, palette565);
+            for (size_t p = 0; p < pixels; p++) {
+                uint16_t c;
+                memcpy(&c, sets + 2u * p, 2);
+                rgb[3u * p] = (uint8_t)(((c >> 11) * 255u + 15u) / 31u);
+                rgb[3u * p + 1u] = (uint8_t)((((c >> 5) & 63u) * 255u + 31u) / 63u);
+                rgb[3u * p + 2u] = (uint8_t)(((c & 31u) * 255u + 15u) / 31u);
+            }
+            free(sets);
+            free(palette565);
+        } else {
+            rgb = render(&frame, &sites, VOR_RASTER_RGB888, band_rows, palette, 0, NULL);
+            edges = render(&frame, &sites, VOR_RASTER_BOUNDARY, band_rows, NULL, 0, NULL);
+            for (size_t p = 0; p < pixels; p++) {
+                if (edges[p] != 0u) {
+                    rgb[3u * p] = rgb[3u * p + 1u] = rgb[3u * p + 2u] = 0;
+                }
             }
         }
         if (dots) {

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * raster.c - the harness of `make prove` for vor_raster and
- * vor_raster_euclid: every metric with each output kind and method, on a
+ * raster.c - the harness of `make prove` for vor_raster,
+ * vor_raster_euclid and vor_raster_nearest (K = 1, 2 and past the site
+ * count, the k-order kinds): every metric with each output kind and method, on a
  * small frame (W x H pixels in bands of BAND rows, so that a band seam
  * and a partial last band are crossed) over small site sets of each
  * shape, and every bad argument the header lists with any value.
@@ -29,6 +30,9 @@ static const uint32_t palette888[SITES] = {0x0000FF, 0x00FF00, 0xFF0000};
 static uint32_t band[BAND * W];
 static uint64_t work[(VOR_RASTER_WORK_BYTES(SITES, W) + 7u) / 8u];
 static uint32_t areas[SITES];
+#define KMOST (SITES + 1u) /* vor_raster_nearest's K past the site count */
+static uint32_t kband[BAND * W * KMOST];
+static uint64_t kwork[(VOR_RASTER_NEAREST_WORK_BYTES(SITES, W, KMOST) + 7u) / 8u];
 
 /* the caller's flush: goes on or asks to stop, either way */
 static int flush(void *user, uint32_t first_row, uint32_t rows, const void *pixels)
@@ -152,6 +156,62 @@ static int bad_arguments(const vor_raster_frame_t *good, const vor_raster_sites_
     return r;
 }
 
+/* vor_raster_nearest: every metric, the k-order kinds and the K-th
+ * label, K = 1, 2 and past the site count, both methods; then its own
+ * bad arguments with any value (only failures). */
+static int nearest(const vor_raster_frame_t *frame, const vor_raster_sites_t *good_sites,
+                   const vor_raster_output_t *good_out)
+{
+    vor_raster_sites_t sites = *good_sites;
+    vor_raster_output_t out = *good_out;
+    vor_raster_options_t options = {0};
+    static const enum vor_raster_kind kinds[3] = {VOR_RASTER_NEAREST, VOR_RASTER_KSETS,
+                                                  VOR_RASTER_DISTANCE};
+    static const uint32_t ks[3] = {1u, 2u, KMOST};
+    int r = 0;
+    out.band = kband;
+    out.band_bytes = sizeof kband;
+    /*@ loop unroll 14; */
+    for (int metric = 0; metric < 14; metric++) {
+        sites.metric = (enum vor_metric)metric;
+        /*@ loop unroll 3; */
+        for (int q = 0; q < 3; q++) {
+            out.kind = kinds[q];
+            options.method = (enum vor_raster_method)Frama_C_interval(0, 1);
+            options.boundary565 = 0xFFFFu;
+            r |= vor_raster_nearest(frame, &sites, ks[q], &out, &options, kwork, sizeof kwork);
+        }
+    }
+    sites.metric = VOR_METRIC_EUCLID;
+    out.kind = VOR_RASTER_BOUNDARY;
+    r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork, sizeof kwork);
+    /* K out of range, KSETS without its palette, too small a band or
+     * work, no sites */
+    out.kind = VOR_RASTER_NEAREST;
+    /* (0 and the interval apart: EVA would join them into one interval,
+     * valid K included) */
+    r |= vor_raster_nearest(frame, &sites, 0u, &out, NULL, kwork, sizeof kwork);
+    r |= vor_raster_nearest(frame, &sites,
+                            Frama_C_unsigned_int_interval(VOR_RASTER_MAX_NEAREST + 1u, UINT32_MAX),
+                            &out, NULL, kwork, sizeof kwork);
+    r |= vor_raster_nearest(NULL, &sites, 2u, &out, NULL, kwork, sizeof kwork);
+    r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork,
+                            Frama_C_unsigned_int_interval(
+                                0u, VOR_RASTER_NEAREST_WORK_BYTES(SITES, W, 2u) - 1u));
+    out.band_bytes = Frama_C_unsigned_int_interval(0u, BAND * W * 4u * 2u - 1u);
+    r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork, sizeof kwork);
+    out.band_bytes = sizeof kband;
+    out.kind = (enum vor_raster_kind)Frama_C_interval(9, INT32_MAX);
+    r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork, sizeof kwork);
+    out.kind = VOR_RASTER_KSETS;
+    out.palette565 = NULL;
+    r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork, sizeof kwork);
+    out.palette565 = good_out->palette565;
+    sites.count = 0u;
+    r |= vor_raster_nearest(frame, &sites, 2u, &out, NULL, kwork, sizeof kwork);
+    return r;
+}
+
 int main(void)
 {
     vor_raster_frame_t frame = {-1, -2, 2, 3, W, H};
@@ -230,6 +290,7 @@ int main(void)
             r |= render(&frame, &sites, &out, &options);
         }
     }
+    r |= nearest(&frame, &sites, &out);
     r |= bad_arguments(&frame, &sites, &out);
     return r;
 }
