@@ -2238,7 +2238,10 @@ static void finish_clip(vor_clip_t *clip, clip_work_t *w, const clip_frame_t *f)
     clip->d = f->cell.d;
     clip->room = f->room;
     clip->room_count = f->room_count;
-    clip->reversed = f->reversed ? 1u : 0u;
+    clip->reversed = 0u;
+    if (f->reversed) {
+        clip->reversed = 1u;
+    }
     clip->site = f->cell.site;
     clip->lines = w->in;
     clip->start = starts;
@@ -2424,7 +2427,8 @@ static int order_cell(vor_clip_t *clip, const vor_t *d, const uint32_t *set, uin
      * below 2^32 */
     uint32_t lines = (uint32_t)vor__mul_u32(k, others);
     uint32_t capacity = VOR_CLIP_MAX_VERTICES(m, lines + 1u);
-    uint64_t needed = vor__mul_u32(28u, capacity) + 36u + (uint64_t)(4u * ((2u * k) + others));
+    uint32_t set_words = (2u * k) + others;
+    uint64_t needed = vor__mul_u32(28u, capacity) + 36u + vor__mul_u32(4u, set_words);
     if ((uint64_t)scratch_bytes < needed) {
         return too_small(clip, needed);
     }
@@ -2587,7 +2591,10 @@ int vor_order_cells_begin(vor_order_iter_t *it, const vor_t *d, uint32_t k,
     it->d = d;
     it->room = room;
     it->room_count = m;
-    it->reversed = clockwise ? 1u : 0u;
+    it->reversed = 0u;
+    if (clockwise) {
+        it->reversed = 1u;
+    }
     it->order = k;
     it->sets = sets;
     it->index = sets + ((size_t)max_sets * k);
@@ -2687,6 +2694,28 @@ static bool meet_neighbours(vor_order_iter_t *it, const vor_clip_t *clip, uint32
     return true;
 }
 
+/* *to = *from, field by field (a structure assignment may become a call
+ * to memcpy, which a freestanding library does not have). */
+static void copy_clip(vor_clip_t *to, const vor_clip_t *from)
+{
+    to->d = from->d;
+    to->room = from->room;
+    to->room_count = from->room_count;
+    to->reversed = from->reversed;
+    to->site = from->site;
+    to->lines = from->lines;
+    to->start = from->start;
+    to->count = from->count;
+    to->pieces = from->pieces;
+    to->next_piece = from->next_piece;
+    to->error = from->error;
+    to->set = from->set;
+    to->order = from->order;
+    to->others = from->others;
+    to->shift = from->shift;
+    to->needed = from->needed;
+}
+
 int vor_order_cells_next(vor_order_iter_t *it, uint32_t *set, vor_clip_t *clip)
 {
     if ((it == NULL) || (it->d == NULL)) {
@@ -2720,7 +2749,7 @@ int vor_order_cells_next(vor_order_iter_t *it, uint32_t *set, vor_clip_t *clip)
         for (uint32_t i = 0; i < k; i++) {
             set[i] = s[i];
         }
-        *clip = cell;
+        copy_clip(clip, &cell);
         it->done++;
         it->error = VOR_OK;
         return 1;
