@@ -63,6 +63,7 @@ const char *cli_error_text(int err)
     case VOR_ERR_STOPPED: return "VOR_ERR_STOPPED: the raster's flush asked to stop";
     case VOR_ERR_CONSTRAINED: return "VOR_ERR_CONSTRAINED: a constrained edge ends at the site";
     case VOR_ERR_OUTSIDE: return "VOR_ERR_OUTSIDE: the point is outside the convex hull of the sites";
+    case VOR_ERR_POLYGON: return "VOR_ERR_POLYGON: the room is not a simple polygon";
     default: return "unknown error code";
     }
 }
