@@ -1553,6 +1553,12 @@ static void test_order_errors(void)
               clip.needed == 0u &&
               vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, sc + 3, needed) == VOR_OK,
           "order scratch: needed %u", (unsigned)needed);
+    /* more edges than a room may have; no scratch at all */
+    CHECK(vor_order_cell_begin(&clip, &d, good, 2, L->v, VOR_CLIP_MAX_ROOM + 1u, sc, bytes) ==
+                  VOR_ERR_ARG &&
+              vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, NULL, 0) == VOR_ERR_BUFFER &&
+              clip.needed == needed,
+          "order: a room too large, no scratch");
     /* the walk */
     vor_order_iter_t it;
     uint32_t set[2] = {77, 78};
@@ -1575,6 +1581,17 @@ static void test_order_errors(void)
               !vor_order_cells_next(NULL, set, &clip) && set[0] == 77u,
           "walk begin errors: %d %d %d %d %d %d %d %d %d", w[0], w[1], w[2], w[3], w[4], w[5],
           w[6], w[7], w[8]);
+    uint32_t none_set[2] = {88, 89};
+    CHECK(vor_order_cells_begin(&it, &d, VOR_ORDER_MAX + 1u, L->v, L->m, order_sets, 4, sc,
+                                bytes) == VOR_ERR_ARG &&
+              vor_order_cells_begin(&it, &d, 2, L->v, VOR_CLIP_MAX_ROOM + 1u, order_sets, 4, sc,
+                                    bytes) == VOR_ERR_ARG &&
+              vor_order_cells_begin(&it, &d, 2, L->v, L->m, NULL, 0, sc, bytes) ==
+                  VOR_ERR_BUFFER &&
+              vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 4, NULL, 0) == VOR_OK &&
+              !vor_order_cells_next(&it, none_set, &clip) &&
+              vor_order_cells_error(&it) == VOR_ERR_BUFFER && it.needed > 0u && none_set[0] == 88u,
+          "walk: K too large, a room too large, no store, no scratch");
     /* bad outputs; a store too small; a scratch too small */
     CHECK(vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 4, sc, bytes) == VOR_OK &&
               !vor_order_cells_next(&it, NULL, &clip) && vor_order_cells_error(&it) == VOR_ERR_ARG &&
