@@ -1054,6 +1054,7 @@ static void test_errors(void)
     /* the scratch the site needs: 2 neighbours here */
     size_t need = VOR_CLIP_SCRATCH_BYTES(L->m, 3);
     CHECK(vor_clip_begin(&clip, &d, 0, L->v, L->m, scratch, need - 1u) == VOR_ERR_BUFFER &&
+              clip.needed == need &&
               vor_clip_begin(&clip, &d, 0, L->v, L->m, NULL, 0) == VOR_ERR_BUFFER &&
               vor_clip_begin(&clip, &d, 0, L->v, L->m, scratch + 1, need) == VOR_OK &&
               vor_clip_begin(&clip, &d, 0, L->v, L->m, scratch, need) == VOR_OK,
