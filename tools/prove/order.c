@@ -6,7 +6,8 @@
  * order-2 cells of an L room around the sites (each cell's pieces read
  * and its centroid taken), the single call for a set given backwards;
  * then a room that crosses itself, a store of one set, a scratch too
- * small, any order, any id, any scratch size below what the call needs,
+ * small, any order and id that is no site, any scratch size below what
+ * the call needs,
  * and each pointer the header allows to be NULL, NULL in turn. Each call
  * has concrete arguments but for those, so that EVA follows each
  * clipping and each step of the walk exactly.
@@ -81,7 +82,9 @@ static int orders(const vor_t *d)
                               order_scratch, Frama_C_unsigned_int_interval(0u, 64u)) == VOR_OK) {
         r |= vor_order_cells_next(&it, set, &clip);
     }
-    r |= vor_order_cells_begin(&it, d, Frama_C_unsigned_int_interval(0u, UINT32_MAX), room,
+    r |= vor_order_cells_begin(&it, d, 0u, room, MOST_ROOM, sets, (uint32_t)MOST_SETS,
+                               order_scratch, ORDER_BYTES);
+    r |= vor_order_cells_begin(&it, d, Frama_C_unsigned_int_interval(N - 1u, UINT32_MAX), room,
                                MOST_ROOM, sets, (uint32_t)MOST_SETS, order_scratch, ORDER_BYTES);
     r |= vor_order_cells_begin(NULL, d, 2u, room, MOST_ROOM, sets, 4u, order_scratch, ORDER_BYTES);
     r |= vor_order_cells_begin(&it, NULL, 2u, room, MOST_ROOM, sets, 4u, order_scratch, ORDER_BYTES);
@@ -92,11 +95,12 @@ static int orders(const vor_t *d)
     r |= vor_order_cells_next(&it, NULL, &clip);
     r |= vor_order_cells_next(&it, set, NULL);
     r |= vor_order_cells_error(NULL);
-    uint32_t any[2] = {Frama_C_unsigned_int_interval(0u, UINT32_MAX),
-                       Frama_C_unsigned_int_interval(0u, UINT32_MAX)};
+    /* ids and orders only where they are errors: a valid value among
+     * them would merge with the others and blur the clipping */
+    uint32_t any[2] = {0u, Frama_C_unsigned_int_interval(N, UINT32_MAX)};
     r |= vor_order_cell_begin(&clip, d, any, 2u, room, MOST_ROOM, order_scratch, ORDER_BYTES);
     uint32_t first[2] = {0u, 1u};
-    r |= vor_order_cell_begin(&clip, d, first, Frama_C_unsigned_int_interval(0u, UINT32_MAX), room,
+    r |= vor_order_cell_begin(&clip, d, first, Frama_C_unsigned_int_interval(N - 1u, UINT32_MAX), room,
                               MOST_ROOM, order_scratch, ORDER_BYTES);
     r |= vor_order_cell_begin(&clip, d, first, 2u, room, MOST_ROOM, order_scratch,
                               Frama_C_unsigned_int_interval(0u, 64u));
