@@ -24,7 +24,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid clip raster field interpolate large cdt power power_cells power_dynamic}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid clip order raster field interpolate large cdt power power_cells power_dynamic}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
