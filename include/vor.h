@@ -147,7 +147,10 @@
  *   pieces (a non-convex room can cut a cell in several) with exact
  *   rational vertices, and their area and centroid (vor_clip_begin,
  *   vor_clip_next, vor_clip_centroid; VOR_ERR_POLYGON for a room that
- *   crosses itself).
+ *   crosses itself). Order-K cells (the points whose K nearest sites are
+ *   a given set) clipped the same way, and a walk over all the order-K
+ *   cells of a room, which tile it (vor_order_cell_begin,
+ *   vor_order_cells_begin, vor_order_cells_next).
  *
  * NATURAL-NEIGHBOUR INTERPOLATION
  *   Sibson's coordinates of a point q (the areas its cell would take from
@@ -1051,6 +1054,13 @@ typedef struct vor_clip {
     uint32_t pieces;         /* the pieces, once begun */
     uint32_t next_piece;
     int error;               /* why next returned 0 (vor_clip_error) */
+    const uint32_t *set;     /* order K (vor_order_cell_begin): its K sites,
+                                increasing, then the others met; else NULL */
+    uint32_t order;          /* K */
+    uint32_t others;
+    uint32_t shift;          /* a pair's line name: (other << shift) | i */
+    size_t needed;           /* after VOR_ERR_BUFFER from a begin: the
+                                scratch bytes it needs (else 0) */
 } vor_clip_t;
 
 /*
@@ -1070,7 +1080,8 @@ typedef struct vor_clip {
  *                    one line
  *   VOR_ERR_BUFFER   scratch_bytes < VOR_CLIP_SCRATCH_BYTES(m, k + 1)
  *                    for the site's k Delaunay neighbours (never with
- *                    VOR_CLIP_SCRATCH_BYTES(m, n) for n sites)
+ *                    VOR_CLIP_SCRATCH_BYTES(m, n) for n sites);
+ *                    clip->needed is then that size
  * On failure the iterator is closed (next returns 0, error the reason)
  * and nothing else is written.
  */
@@ -1113,6 +1124,152 @@ int vor_clip_error(const vor_clip_t *clip);
  */
 int vor_clip_centroid(const vor_clip_t *clip, uint32_t piece, void *scratch,
                       size_t scratch_bytes, vor_centroid_t *out);
+
+/* ------------------------------------------------------------------ */
+/* Order-K cells clipped to a simple polygon                          */
+/*
+ *     static const uint32_t pair[2] = {3, 7};                // K = 2
+ *     static uint32_t scratch[VOR_ORDER_SCRATCH_BYTES(6, N, 2) / 4];
+ *     vor_order_cell_begin(&clip, &d, pair, 2, room, 6, scratch, sizeof scratch);
+ *     while (vor_clip_next(&clip, piece, cap, &m)) { ... }  // CCW pieces
+ *
+ *     // every non-empty order-K cell of the room: they tile it
+ *     static uint32_t sets[VOR_ORDER_SETS_WORDS(VOR_ORDER_MAX_CELLS(N, 2), 2)];
+ *     vor_order_iter_t it;
+ *     uint32_t set[2];
+ *     vor_order_cells_begin(&it, &d, 2, room, 6, sets, VOR_ORDER_MAX_CELLS(N, 2),
+ *                           scratch, sizeof scratch);
+ *     while (vor_order_cells_next(&it, set, &clip)) {
+ *         while (vor_clip_next(&clip, piece, cap, &m)) { ... }
+ *     }
+ *
+ * The order-K cell of a set S of K distinct sites is the closed region
+ * of the points whose K nearest sites are S: the points at least as
+ * close to every site of S as to every other site (the intersection of
+ * the half-planes of the bisectors of s in S and t not in S). Cells are
+ * closed, so a point where the K-th and (K+1)-th nearest sites are at
+ * the same distance lies on the boundary of every cell that tie allows:
+ * in particular in the cell of the K sites vor_raster_nearest labels it
+ * with (ties to the smaller index). Duplicates count once: the sites
+ * are the distinct ones, named by the ids in the mesh. The cells with
+ * an area tile the room. Pieces, vertices, areas and centroids are those
+ * of vor_clip_begin (vor_clip_next, vor_clip_centroid), exact; order 1
+ * gives vor_clip_begin's pieces.
+ */
+
+/* Most K the order-K calls take. */
+#define VOR_ORDER_MAX 1024u
+
+/* Bytes of scratch vor_order_cell_begin needs for a room of m vertices,
+ * n distinct sites and order k (a constant expression, 1 <= k < n; any
+ * alignment): the pieces of up to k (n - k) bisectors' cuts, as
+ * VOR_CLIP_SCRATCH_BYTES, and n + k words for the sites. A set whose K
+ * sites have c other Delaunay neighbours needs only
+ * VOR_CLIP_SCRATCH_BYTES(m, k c + 1) + 4 (2 k + c) bytes (clip->needed
+ * after VOR_ERR_BUFFER): typically c is near 2 k + 4. */
+#define VOR_ORDER_SCRATCH_BYTES(m, n, k)                                       \
+    (VOR_CLIP_SCRATCH_BYTES((m), ((size_t)(k) * ((size_t)(n) - (size_t)(k))) + 1u) + \
+     ((size_t)4u * ((size_t)(n) + (size_t)(k))))
+
+/*
+ * The order-K cell of the k sites set[0 .. k) (any order) clipped to the
+ * room room[0 .. m) (a simple polygon, as vor_clip_begin's), computed
+ * exactly into the caller's scratch: read its pieces with vor_clip_next
+ * and their area and centroid with vor_clip_centroid (whose point, when
+ * there are no pieces, is the set's site of the smallest id). The set
+ * and room arrays may change after the call; the diagram, the room and
+ * the scratch must not while the pieces are read. Cost: O(m^2)
+ * orientation tests to check the room, O(k^2 d^2) neighbour steps for
+ * k sites of d neighbours each, then O((m + k c) k c) exact line tests
+ * for the k c half-planes of the set and its c other neighbours.
+ *   VOR_ERR_ARG      clip, d, set or room NULL; k == 0, k > VOR_ORDER_MAX
+ *                    or k >= the number of distinct sites; an id not a
+ *                    site in the mesh (unknown, or a duplicate's id); an
+ *                    id twice; m < 3 or m > VOR_CLIP_MAX_ROOM; scratch
+ *                    NULL with scratch_bytes > 0
+ *   VOR_ERR_POLYGON  the room is not simple (as vor_clip_begin)
+ *   VOR_ERR_BUFFER   the scratch is smaller than the set needs (never
+ *                    with VOR_ORDER_SCRATCH_BYTES(m, n, k) for n distinct
+ *                    sites): clip->needed is then that size
+ * On failure the iterator is closed (next returns 0, error the reason)
+ * and nothing else is written.
+ */
+int vor_order_cell_begin(vor_clip_t *clip, const vor_t *d, const uint32_t *set, uint32_t k,
+                         const vor_point_t *room, uint32_t m, void *scratch,
+                         size_t scratch_bytes);
+
+/* Most order-k cells of n distinct sites, 1 <= k < n (a constant
+ * expression): 2 k n - k^2 - n + 1, Lee's bound for sites in general
+ * position (D. T. Lee, "On k-nearest neighbor Voronoi diagrams in the
+ * plane", IEEE Trans. Computers, 1982), which holds for any sites: a
+ * cell with an area keeps one under a small enough perturbation. */
+#define VOR_ORDER_MAX_CELLS(n, k)                                              \
+    ((((size_t)2u * (size_t)(k) * (size_t)(n)) - ((size_t)(k) * (size_t)(k))) - \
+     (size_t)(n) + 1u)
+
+/* Words of the store vor_order_cells_begin keeps the k-sets met in, for
+ * up to `cells` of them (a constant expression): k + 1 a set. */
+#define VOR_ORDER_SETS_WORDS(cells, k) ((size_t)(cells) * ((size_t)(k) + 1u))
+
+/* A walk over the non-empty order-K cells of a room, its state on the
+ * caller's stack and in the caller's memory: fields are private except
+ * `met` (the k-sets met so far) and `needed` (see next). */
+typedef struct vor_order_iter {
+    const vor_t *d;          /* NULL: closed (a failed begin) */
+    const vor_point_t *room;
+    uint32_t room_count;
+    uint32_t reversed;       /* 1: the room is clockwise */
+    uint32_t order;          /* K */
+    uint32_t *sets;          /* [max_sets] k-sets met, K ids each, in order */
+    uint32_t *index;         /* [max_sets] those sets in increasing order */
+    uint32_t max_sets;
+    uint32_t met;            /* sets met */
+    uint32_t done;           /* sets whose cells were computed */
+    void *scratch;           /* one cell's, as vor_order_cell_begin's */
+    size_t scratch_bytes;
+    size_t needed;           /* after VOR_ERR_BUFFER for a cell: its bytes */
+    int error;               /* why next returned 0 (vor_order_cells_error) */
+} vor_order_iter_t;
+
+/*
+ * Begins a walk over every order-k cell that meets the room room[0 .. m)
+ * in an area (a simple polygon, as vor_clip_begin's): they tile the
+ * room. The walk starts from the k sites nearest a point just inside
+ * the room's lowest corner and crosses every piece edge that lies on a
+ * bisector: a cell of set S across its edge on the bisector of s in S
+ * and t outside is the cell of S - s + t (no other pair ties along an
+ * edge, even where bisectors coincide). The k-sets met are kept in sets[0 ..
+ * VOR_ORDER_SETS_WORDS(max_sets, k)), which belongs to the walk until it
+ * ends (no recursion, no other memory); the scratch holds the current
+ * cell (VOR_ORDER_SCRATCH_BYTES(m, n, k) for n distinct sites always
+ * does). max_sets = VOR_ORDER_MAX_CELLS(n, k) never runs out; a smaller
+ * store may (next gives VOR_ERR_BUFFER). Cost: begin O(m^2 + n k)
+ * exact tests; each cell as vor_order_cell_begin's, and O(log M) set
+ * comparisons for each of its edges (M sets met).
+ *   VOR_ERR_ARG      it, d or room NULL; k == 0, k > VOR_ORDER_MAX or
+ *                    k >= the number of distinct sites; m < 3 or
+ *                    m > VOR_CLIP_MAX_ROOM; sets NULL with max_sets > 0;
+ *                    scratch NULL with scratch_bytes > 0
+ *   VOR_ERR_POLYGON  the room is not simple
+ *   VOR_ERR_BUFFER   max_sets == 0
+ * On failure the iterator is closed and nothing else is written.
+ */
+int vor_order_cells_begin(vor_order_iter_t *it, const vor_t *d, uint32_t k,
+                          const vor_point_t *room, uint32_t m, uint32_t *sets,
+                          uint32_t max_sets, void *scratch, size_t scratch_bytes);
+/* Returns 1 with the next non-empty cell: its k sites in set[0 .. k),
+ * increasing, and *clip begun on it (pieces >= 1; read as from
+ * vor_order_cell_begin, valid until the next call). Each k-set comes
+ * once. Returns 0 at the end, and 0 when it cannot go on, with the
+ * reason kept for vor_order_cells_error: set or clip NULL (nothing
+ * written), the scratch too small for the next cell (it->needed is the
+ * bytes that cell needs) or the store of sets full: VOR_ERR_BUFFER,
+ * after which the walk stays where it is (begin again with more). */
+int vor_order_cells_next(vor_order_iter_t *it, uint32_t *set, vor_clip_t *clip);
+/* Why the last vor_order_cells_next returned 0: VOR_OK at the end (and
+ * before the first next), VOR_ERR_ARG for bad outputs, VOR_ERR_BUFFER,
+ * and a failed begin's error (VOR_ERR_ARG for a NULL it). */
+int vor_order_cells_error(const vor_order_iter_t *it);
 
 /* ================================================================== */
 /* Natural-neighbour interpolation (src/interpolate.c)                */

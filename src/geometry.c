@@ -97,6 +97,33 @@ static void bisector(geo_line_t *l, const vor_point_t *s, const vor_point_t *n)
     vor__mw_add(l->c, t, GEO_LIMBS); /* < 2^65 */
 }
 
+/* r = |p - o|^2 (< 2^65). */
+static void squared_distance(vor__limb *r, const vor_point_t *o, const vor_point_t *p)
+{
+    uint32_t mx = vor__mw_magnitude((int64_t)p->x - o->x);
+    uint32_t my = vor__mw_magnitude((int64_t)p->y - o->y);
+    vor__limb t[GEO_LIMBS];
+    vor__mw_from_u64(r, GEO_LIMBS, vor__mul_u32(mx, mx));
+    vor__mw_from_u64(t, GEO_LIMBS, vor__mul_u32(my, my));
+    vor__mw_add(r, t, GEO_LIMBS);
+}
+
+/* The bisector of s and t in the doubled frame of origin o, the
+ * half-plane of points at least as close to s as to t: for a point
+ * o + q / 2, (t - s).q <= |t - o|^2 - |s - o|^2. |a|, |b| <= 2^32 - 1 and
+ * |c| < 2^65, the bounds of the bisectors above; with o = s it is
+ * bisector(s, t). */
+static void pair_bisector(geo_line_t *l, const vor_point_t *o, const vor_point_t *s,
+                          const vor_point_t *t)
+{
+    vor__limb u[GEO_LIMBS];
+    l->a = (int64_t)t->x - s->x;
+    l->b = (int64_t)t->y - s->y;
+    squared_distance(l->c, o, t);
+    squared_distance(u, o, s);
+    vor__mw_sub(l->c, u, GEO_LIMBS);
+}
+
 /* The power bisector of s and n, weights ws and wn: the half-plane of
  * points whose power distance to s is at most that to n. Equal weights
  * give the bisector; others move it along e by (ws - wn) / 2|e|, so it
@@ -1691,6 +1718,13 @@ typedef struct clip_frame {
     const vor_point_t *room;
     uint32_t room_count;
     bool reversed;
+    /* order K: the set's K sites, then its `others` other neighbours;
+     * line (j << shift) | i is the bisector of set[i] and other j. NULL
+     * for order 1, whose lines are named by the neighbour alone. */
+    const uint32_t *set;
+    uint32_t order;
+    uint32_t others;
+    uint32_t shift;
 } clip_frame_t;
 
 /* The room's vertex i in counterclockwise order. */
@@ -1722,8 +1756,13 @@ static void clip_line(const clip_frame_t *f, uint32_t name, geo_line_t *l)
 {
     if (name >= ROOM_LINE) {
         room_line(f, name - ROOM_LINE, l);
-    } else {
+    } else if (f->set == NULL) {
         cell_bisector(&f->cell, name, l);
+    } else {
+        const vor_point_t *p = f->cell.d->sites;
+        uint32_t i = name & ((1u << f->shift) - 1u);
+        uint32_t j = name >> f->shift;
+        pair_bisector(l, f->cell.s, &p[f->set[i]], &p[f->set[f->order + j]]);
     }
 }
 
@@ -1775,7 +1814,7 @@ static bool same_vertex(const vor_point_t *a, const vor_point_t *b)
     return (a->x == b->x) && (a->y == b->y);
 }
 
-static int check_room(const vor_point_t *room, uint32_t m, bool *clockwise)
+static int check_room(const vor_point_t *room, uint32_t m, bool *clockwise, uint32_t *low)
 {
     uint32_t lowest = 0;
     for (uint32_t i = 0; i < m; i++) {
@@ -1810,6 +1849,7 @@ static int check_room(const vor_point_t *room, uint32_t m, bool *clockwise)
     int turn = vor__orient2d_sign(before, &room[lowest], after);
     VOR_ASSERT(turn != 0);
     *clockwise = turn < 0;
+    *low = lowest;
     return VOR_OK;
 }
 
@@ -2090,6 +2130,11 @@ static void close_clip(vor_clip_t *clip, int error)
     clip->pieces = 0;
     clip->next_piece = 0;
     clip->error = error;
+    clip->set = NULL;
+    clip->order = 0;
+    clip->others = 0;
+    clip->shift = 0;
+    clip->needed = 0;
 }
 
 static void begin_frame(clip_frame_t *f, const vor_t *d, uint32_t site, const vor_point_t *room,
@@ -2103,6 +2148,127 @@ static void begin_frame(clip_frame_t *f, const vor_t *d, uint32_t site, const vo
     f->room = room;
     f->room_count = m;
     f->reversed = reversed;
+    f->set = NULL;
+    f->order = 1;
+    f->others = 0;
+    f->shift = 0;
+}
+
+/* The frame of a begun iterator. */
+static void frame_of(clip_frame_t *f, const vor_clip_t *clip)
+{
+    begin_frame(f, clip->d, clip->site, clip->room, clip->room_count, clip->reversed != 0u);
+    f->set = clip->set;
+    f->order = clip->order;
+    f->others = clip->others;
+    f->shift = clip->shift;
+}
+
+/* The work lists laid out in words[] for lines of `capacity` (the layout
+ * below takes 4 v + 5 (v / 2 + 1) words for v = capacity), and the room,
+ * its straight angles dropped, as the one piece to cut. */
+static void start_work(clip_work_t *w, const clip_frame_t *f, uint32_t *words, uint32_t capacity)
+{
+    /* pieces of 3 lines at least, chains of 2: half the lines bound both
+     * (a shift: no division helper on ARMv6-M) */
+    uint32_t pieces = (capacity / 2u) + 1u;
+    uint32_t chains = pieces;
+    uint32_t m = f->room_count;
+    w->f = f;
+    w->capacity = capacity;
+    w->in = words;
+    w->out = words + capacity;
+    w->in_ends = words + (2u * capacity);
+    w->out_ends = w->in_ends + pieces;
+    w->sides = w->out_ends + pieces;
+    w->events = w->sides + capacity;
+    w->first = w->events + capacity;
+    w->last = w->first + chains;
+    w->next = w->last + chains;
+    /* edge i's line is dropped when edge i + 1 goes on along it */
+    w->out_count = 0;
+    w->out_pieces = 0;
+    for (uint32_t i = 0; i < m; i++) {
+        const vor_point_t *p = room_point(f, i);
+        const vor_point_t *q = room_point(f, (i + 1u == m) ? 0u : (i + 1u));
+        const vor_point_t *r = room_point(f, (i + 2u >= m) ? (i + 2u - m) : (i + 2u));
+        if (vor__orient2d_sign(p, q, r) != 0) {
+            emit_line(w, ROOM_LINE + i);
+        }
+    }
+    end_piece(w);
+    swap_lists(w);
+}
+
+/* Each piece from its lowest vertex, the pieces by them (selection over
+ * the pieces' starts and counts, kept in sides and events), and the
+ * iterator over them. */
+static void finish_clip(vor_clip_t *clip, clip_work_t *w, const clip_frame_t *f)
+{
+    uint32_t *starts = w->sides;
+    uint32_t *counts = w->events;
+    uint32_t from = 0;
+    for (uint32_t k = 0; k < w->in_pieces; k++) {
+        starts[k] = from;
+        counts[k] = w->in_ends[k] - from;
+        from = w->in_ends[k];
+    }
+    for (uint32_t k = 0; k < w->in_pieces; k++) {
+        lowest_first(f, w->in + starts[k], counts[k]);
+    }
+    for (uint32_t k = 0; (k + 1u) < w->in_pieces; k++) {
+        geo_point_t best;
+        geo_point_t p;
+        uint32_t at = k;
+        clip_vertex(f, w->in[starts[k] + counts[k] - 1u], w->in[starts[k]], &best);
+        for (uint32_t j = k + 1u; j < w->in_pieces; j++) {
+            clip_vertex(f, w->in[starts[j] + counts[j] - 1u], w->in[starts[j]], &p);
+            if (compare_vertices(&p, &best) < 0) {
+                copy_point(&best, &p);
+                at = j;
+            }
+        }
+        uint32_t t = starts[k];
+        starts[k] = starts[at];
+        starts[at] = t;
+        t = counts[k];
+        counts[k] = counts[at];
+        counts[at] = t;
+    }
+    clip->d = f->cell.d;
+    clip->room = f->room;
+    clip->room_count = f->room_count;
+    clip->reversed = 0u;
+    if (f->reversed) {
+        clip->reversed = 1u;
+    }
+    clip->site = f->cell.site;
+    clip->lines = w->in;
+    clip->start = starts;
+    clip->count = counts;
+    clip->pieces = w->in_pieces;
+    clip->next_piece = 0;
+    clip->error = VOR_OK;
+    clip->set = f->set;
+    clip->order = f->order;
+    clip->others = f->others;
+    clip->shift = f->shift;
+    clip->needed = 0;
+}
+
+/* The scratch's first word-aligned byte (the sizes' 36 bytes cover it). */
+static uint32_t *scratch_words(void *scratch)
+{
+    size_t skip = (size_t)(0u - (uintptr_t)scratch) & 3u;
+    return (uint32_t *)(void *)((unsigned char *)scratch + skip);
+}
+
+/* VOR_ERR_BUFFER with the bytes needed (saturated). */
+static int too_small(vor_clip_t *clip, uint64_t needed)
+{
+    close_clip(clip, VOR_ERR_BUFFER);
+    clip->needed = (needed > (uint64_t)SIZE_MAX) ? SIZE_MAX : (size_t)needed;
+    return VOR_ERR_BUFFER;
 }
 
 int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_point_t *room,
@@ -2117,7 +2283,8 @@ int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_po
         return VOR_ERR_ARG;
     }
     bool clockwise = false;
-    int error = check_room(room, m, &clockwise);
+    uint32_t lowest = 0;
+    int error = check_room(room, m, &clockwise, &lowest);
     if (error != VOR_OK) {
         close_clip(clip, error);
         return error;
@@ -2127,44 +2294,13 @@ int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_po
     uint32_t degree = site_degree(&f.cell);
 
     /* the macro is the contract; its 36 bytes cover the alignment */
-    size_t skip = (size_t)(0u - (uintptr_t)scratch) & 3u;
     uint32_t sites = degree + 1u; /* the site and its neighbours */
     uint32_t capacity = VOR_CLIP_MAX_VERTICES(m, sites);
     if (scratch_bytes < VOR_CLIP_SCRATCH_BYTES(m, sites)) {
-        close_clip(clip, VOR_ERR_BUFFER);
-        return VOR_ERR_BUFFER;
+        return too_small(clip, VOR_CLIP_SCRATCH_BYTES(m, sites));
     }
-    uint32_t *words = (uint32_t *)(void *)((unsigned char *)scratch + skip);
-    /* pieces of 3 lines at least, chains of 2: half the lines bound both
-     * (a shift: no division helper on ARMv6-M) */
-    uint32_t pieces = (capacity / 2u) + 1u;
-    uint32_t chains = pieces;
     clip_work_t w;
-    w.f = &f;
-    w.capacity = capacity;
-    w.in = words;
-    w.out = words + capacity;
-    w.in_ends = words + (2u * capacity);
-    w.out_ends = w.in_ends + pieces;
-    w.sides = w.out_ends + pieces;
-    w.events = w.sides + capacity;
-    w.first = w.events + capacity;
-    w.last = w.first + chains;
-    w.next = w.last + chains;
-    /* the room, its straight angles dropped: edge i's line is dropped
-     * when edge i + 1 goes on along it */
-    w.out_count = 0;
-    w.out_pieces = 0;
-    for (uint32_t i = 0; i < m; i++) {
-        const vor_point_t *p = room_point(&f, i);
-        const vor_point_t *q = room_point(&f, (i + 1u == m) ? 0u : (i + 1u));
-        const vor_point_t *r = room_point(&f, (i + 2u >= m) ? (i + 2u - m) : (i + 2u));
-        if (vor__orient2d_sign(p, q, r) != 0) {
-            emit_line(&w, ROOM_LINE + i);
-        }
-    }
-    end_piece(&w);
-    swap_lists(&w);
+    start_work(&w, &f, scratch_words(scratch), capacity);
     /* cut by every neighbour's half-plane, around the fan */
     if (d->vertex_count >= 2u) {
         uint32_t slot = site;
@@ -2182,53 +2318,449 @@ int vor_clip_begin(vor_clip_t *clip, const vor_t *d, uint32_t site, const vor_po
             }
         }
     }
-    /* each piece from its lowest vertex, the pieces by them (selection
-     * over the pieces' starts and counts, kept in sides and events) */
-    uint32_t *starts = w.sides;
-    uint32_t *counts = w.events;
-    uint32_t from = 0;
-    for (uint32_t k = 0; k < w.in_pieces; k++) {
-        starts[k] = from;
-        counts[k] = w.in_ends[k] - from;
-        from = w.in_ends[k];
+    finish_clip(clip, &w, &f);
+    return VOR_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Order-K cells clipped to a simple polygon                          */
+
+/*
+ * The cell of a set S is the intersection of the half-planes of the
+ * bisectors of s in S and t outside. Only the sites next to S in the
+ * Delaunay triangulation matter: the cell is the intersection over s of
+ * s's cell among the sites outside S and s, bounded by s's Delaunay
+ * neighbours there, and taking a site out of a Delaunay triangulation
+ * joins only its own neighbours, so removing S - s one site at a time
+ * gives s no neighbour outside the neighbours of S. With c such "other"
+ * sites, k c pair lines cut the room, named (j << shift) | i, and every
+ * line keeps the bounds of "Arithmetic" in the frame of S's first site:
+ * the same 160-bit code cuts, orders and reports the pieces.
+ * docs/design/geometry.md has the argument and the walk.
+ */
+
+static bool in_list(const uint32_t *list, uint32_t count, uint32_t id)
+{
+    for (uint32_t i = 0; i < count; i++) {
+        if (list[i] == id) {
+            return true;
+        }
     }
-    for (uint32_t k = 0; k < w.in_pieces; k++) {
-        lowest_first(&f, w.in + starts[k], counts[k]);
+    return false;
+}
+
+/* Is y a neighbour of one of set[0 .. i)? */
+static bool next_to_earlier(const vor_t *d, uint32_t y, const uint32_t *set, uint32_t i)
+{
+    bool found = false;
+    if (i > 0u) {
+        vor_neighbour_iter_t ni;
+        uint32_t z;
+        (void)vor_neighbours_begin(&ni, d, y); /* a neighbour: in the mesh */
+        while ((vor_neighbours_next(&ni, &z) != 0) && !found) {
+            found = in_list(set, i, z);
+        }
     }
-    for (uint32_t k = 0; (k + 1u) < w.in_pieces; k++) {
-        geo_point_t best;
-        geo_point_t p;
-        uint32_t at = k;
-        clip_vertex(&f, w.in[starts[k] + counts[k] - 1u], w.in[starts[k]], &best);
-        for (uint32_t j = k + 1u; j < w.in_pieces; j++) {
-            clip_vertex(&f, w.in[starts[j] + counts[j] - 1u], w.in[starts[j]], &p);
-            if (compare_vertices(&p, &best) < 0) {
-                copy_point(&best, &p);
-                at = j;
+    return found;
+}
+
+/* The set's other neighbours, each once (at the first of the set it is
+ * next to): their count, and when out is not NULL the ids in out[]. */
+static uint32_t set_neighbours(const vor_t *d, const uint32_t *set, uint32_t k, uint32_t *out)
+{
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < k; i++) {
+        vor_neighbour_iter_t ni;
+        uint32_t y;
+        (void)vor_neighbours_begin(&ni, d, set[i]); /* checked: in the mesh */
+        while (vor_neighbours_next(&ni, &y) != 0) {
+            if (!in_list(set, k, y) && !next_to_earlier(d, y, set, i)) {
+                if (out != NULL) {
+                    out[count] = y;
+                }
+                count++;
             }
         }
-        uint32_t t = starts[k];
-        starts[k] = starts[at];
-        starts[at] = t;
-        t = counts[k];
-        counts[k] = counts[at];
-        counts[at] = t;
     }
-    clip->d = d;
-    clip->room = room;
-    clip->room_count = m;
-    clip->reversed = 0u;
-    if (clockwise) {
-        clip->reversed = 1u;
+    return count;
+}
+
+/* VOR_OK when set[0 .. k) are k distinct sites of the mesh, 0 < k <
+ * distinct sites, k <= VOR_ORDER_MAX. */
+static int check_set(const vor_t *d, const uint32_t *set, uint32_t k)
+{
+    if ((d == NULL) || (set == NULL) || (k == 0u) || (k > VOR_ORDER_MAX) ||
+        (k >= d->vertex_count)) {
+        return VOR_ERR_ARG;
     }
-    clip->site = site;
-    clip->lines = w.in;
-    clip->start = starts;
-    clip->count = counts;
-    clip->pieces = w.in_pieces;
-    clip->next_piece = 0;
-    clip->error = VOR_OK;
+    for (uint32_t i = 0; i < k; i++) {
+        if (!vor__site_in_mesh(d, set[i]) || in_list(set, i, set[i])) {
+            return VOR_ERR_ARG;
+        }
+    }
     return VOR_OK;
+}
+
+/* Sorts ids[0 .. k) increasing (insertion: k is small). */
+static void sort_ids(uint32_t *ids, uint32_t k)
+{
+    for (uint32_t i = 1; i < k; i++) {
+        uint32_t v = ids[i];
+        uint32_t j = i;
+        while ((j > 0u) && (ids[j - 1u] > v)) {
+            ids[j] = ids[j - 1u];
+            j--;
+        }
+        ids[j] = v;
+    }
+}
+
+/* The order-k cell of a checked set in a checked room, into the scratch:
+ * the set sorted, its other neighbours, k spare words (*spare, for the
+ * walk), then the work lists. */
+static int order_cell(vor_clip_t *clip, const vor_t *d, const uint32_t *set, uint32_t k,
+                      const vor_point_t *room, uint32_t m, bool clockwise, void *scratch,
+                      size_t scratch_bytes, uint32_t **spare)
+{
+    uint32_t others = set_neighbours(d, set, k, NULL);
+    /* k <= 2^10, others < 2^21: the lines are below 2^31, the capacity
+     * below 2^32 */
+    uint32_t lines = (uint32_t)vor__mul_u32(k, others);
+    uint32_t capacity = VOR_CLIP_MAX_VERTICES(m, lines + 1u);
+    uint32_t set_words = (2u * k) + others;
+    uint64_t needed = vor__mul_u32(28u, capacity) + 36u + vor__mul_u32(4u, set_words);
+    if ((uint64_t)scratch_bytes < needed) {
+        return too_small(clip, needed);
+    }
+    uint32_t *words = scratch_words(scratch);
+    for (uint32_t i = 0; i < k; i++) {
+        words[i] = set[i];
+    }
+    sort_ids(words, k);
+    (void)set_neighbours(d, words, k, words + k);
+    if (spare != NULL) {
+        *spare = words + k + others;
+    }
+    clip_frame_t f;
+    begin_frame(&f, d, words[0], room, m, clockwise);
+    f.set = words;
+    f.order = k;
+    f.others = others;
+    f.shift = vor__mw_bit_length32(k - 1u);
+    clip_work_t w;
+    start_work(&w, &f, words + (2u * k) + others, capacity);
+    for (uint32_t j = 0; (j < others) && (w.in_pieces > 0u); j++) {
+        for (uint32_t i = 0; (i < k) && (w.in_pieces > 0u); i++) {
+            clip_all(&w, (j << f.shift) | i);
+        }
+    }
+    finish_clip(clip, &w, &f);
+    return VOR_OK;
+}
+
+int vor_order_cell_begin(vor_clip_t *clip, const vor_t *d, const uint32_t *set, uint32_t k,
+                         const vor_point_t *room, uint32_t m, void *scratch,
+                         size_t scratch_bytes)
+{
+    if (clip == NULL) {
+        return VOR_ERR_ARG;
+    }
+    int error = check_set(d, set, k);
+    if ((room == NULL) || (m < 3u) || (m > VOR_CLIP_MAX_ROOM) ||
+        ((scratch == NULL) && (scratch_bytes > 0u))) {
+        error = VOR_ERR_ARG;
+    }
+    bool clockwise = false;
+    uint32_t lowest = 0;
+    if (error == VOR_OK) {
+        error = check_room(room, m, &clockwise, &lowest);
+    }
+    if (error != VOR_OK) {
+        close_clip(clip, error);
+        return error;
+    }
+    return order_cell(clip, d, set, k, room, m, clockwise, scratch, scratch_bytes, NULL);
+}
+
+/* ------------------------------------------------------------------ */
+/* The walk over a room's order-K cells                                */
+
+/* Sign of a.b for |a| < 2^32, |b| < 2^34 (in GEO_LIMBS). */
+static int dot_sign(int64_t ax, int64_t ay, int64_t bx, int64_t by)
+{
+    vor__limb r[GEO_LIMBS];
+    vor__limb t[GEO_LIMBS];
+    mul_i64_i64(r, ax, bx);
+    mul_i64_i64(t, ay, by);
+    vor__mw_add(r, t, GEO_LIMBS);
+    return vor__mw_sign(r, GEO_LIMBS);
+}
+
+/* Is site a nearer than site b to p = v + e u + e^2 u' (u' = u turned a
+ * quarter counterclockwise) for every small enough e > 0? |p - a|^2 -
+ * |p - b|^2 = (|v - a|^2 - |v - b|^2) + 2 e (b - a).u + 2 e^2 (b - a).u':
+ * its first nonzero term's sign. Distinct sites always differ. */
+static bool nearer_at(const vor_point_t *v, int64_t ux, int64_t uy, const vor_point_t *a,
+                      const vor_point_t *b)
+{
+    int s = vor__closer_sign(v, a, b, NULL);
+    int64_t ex = (int64_t)b->x - a->x;
+    int64_t ey = (int64_t)b->y - a->y;
+    if (s == 0) {
+        s = dot_sign(ex, ey, ux, uy);
+    }
+    if (s == 0) {
+        s = dot_sign(ex, ey, -uy, ux);
+    }
+    return s < 0;
+}
+
+/* The k sites nearest a point just inside the room's lowest corner v
+ * (which is convex), along u = (before - v) + (after - v), strictly
+ * inside its angle: that point lies in no bisector, so its cell meets
+ * the room in an area. k rounds of a scan, each for the nearest site
+ * beyond the last one taken; the ids sorted. */
+static void corner_sites(const vor_t *d, const vor_point_t *room, uint32_t m, uint32_t lowest,
+                         uint32_t k, uint32_t *out)
+{
+    const vor_point_t *v = &room[lowest];
+    const vor_point_t *before = &room[(lowest == 0u) ? (m - 1u) : (lowest - 1u)];
+    const vor_point_t *after = &room[(lowest + 1u == m) ? 0u : (lowest + 1u)];
+    int64_t ux = ((int64_t)before->x - v->x) + ((int64_t)after->x - v->x);
+    int64_t uy = ((int64_t)before->y - v->y) + ((int64_t)after->y - v->y);
+    const vor_point_t *p = d->sites;
+    for (uint32_t r = 0; r < k; r++) {
+        uint32_t best = VOR__NONE;
+        for (uint32_t x = 0; x < d->site_count; x++) {
+            if (!vor__site_in_mesh(d, x) ||
+                ((r > 0u) && !nearer_at(v, ux, uy, &p[out[r - 1u]], &p[x]))) {
+                continue; /* a duplicate's id, or taken */
+            }
+            if ((best == VOR__NONE) || nearer_at(v, ux, uy, &p[x], &p[best])) {
+                best = x;
+            }
+        }
+        out[r] = best; /* k < distinct sites: one is left */
+    }
+    sort_ids(out, k);
+}
+
+static void close_walk(vor_order_iter_t *it, int error)
+{
+    it->d = NULL;
+    it->room = NULL;
+    it->room_count = 0;
+    it->reversed = 0;
+    it->order = 0;
+    it->sets = NULL;
+    it->index = NULL;
+    it->max_sets = 0;
+    it->met = 0;
+    it->done = 0;
+    it->scratch = NULL;
+    it->scratch_bytes = 0;
+    it->needed = 0;
+    it->error = error;
+}
+
+int vor_order_cells_begin(vor_order_iter_t *it, const vor_t *d, uint32_t k,
+                          const vor_point_t *room, uint32_t m, uint32_t *sets,
+                          uint32_t max_sets, void *scratch, size_t scratch_bytes)
+{
+    if (it == NULL) {
+        return VOR_ERR_ARG;
+    }
+    int error = VOR_OK;
+    if ((d == NULL) || (k == 0u) || (k > VOR_ORDER_MAX) || (k >= d->vertex_count) ||
+        (room == NULL) || (m < 3u) || (m > VOR_CLIP_MAX_ROOM) ||
+        ((sets == NULL) && (max_sets > 0u)) || ((scratch == NULL) && (scratch_bytes > 0u))) {
+        error = VOR_ERR_ARG;
+    }
+    bool clockwise = false;
+    uint32_t lowest = 0;
+    if (error == VOR_OK) {
+        error = check_room(room, m, &clockwise, &lowest);
+    }
+    if ((error == VOR_OK) && (max_sets == 0u)) {
+        error = VOR_ERR_BUFFER;
+    }
+    if (error != VOR_OK) {
+        close_walk(it, error);
+        return error;
+    }
+    it->d = d;
+    it->room = room;
+    it->room_count = m;
+    it->reversed = 0u;
+    if (clockwise) {
+        it->reversed = 1u;
+    }
+    it->order = k;
+    it->sets = sets;
+    it->index = sets + ((size_t)max_sets * k);
+    it->max_sets = max_sets;
+    corner_sites(d, room, m, lowest, k, sets);
+    it->index[0] = 0;
+    it->met = 1;
+    it->done = 0;
+    it->scratch = scratch;
+    it->scratch_bytes = scratch_bytes;
+    it->needed = 0;
+    it->error = VOR_OK;
+    return VOR_OK;
+}
+
+/* The set across the piece edge on the bisector of set[i] and other j
+ * (name (j << shift) | i) into across[0 .. k), sorted: set[i] swapped
+ * for other j. Only that pair ties along the edge: a second pair (s, t)
+ * on the same line would give, at every point of the edge, |p - set[i]|
+ * <= |p - t| = |p - s| <= |p - other j| = |p - set[i]|, so the line
+ * would also be the bisector of set[i] and s, and s would be the mirror
+ * image of set[i], other j, which is not in the set. Every other pair
+ * is strictly on its side inside the edge (a line crossing it would cut
+ * the cell), so just across it the K nearest are the set swapped. */
+static void set_across(const clip_frame_t *f, uint32_t name, uint32_t *across)
+{
+    uint32_t i = name & ((1u << f->shift) - 1u);
+    uint32_t j = name >> f->shift;
+    for (uint32_t h = 0; h < f->order; h++) {
+        across[h] = f->set[h];
+    }
+    across[i] = f->set[f->order + j];
+    sort_ids(across, f->order);
+}
+
+/* Sign of a - b, sets of k ids compared from the first. */
+static int compare_sets(const uint32_t *a, const uint32_t *b, uint32_t k)
+{
+    for (uint32_t i = 0; i < k; i++) {
+        if (a[i] != b[i]) {
+            return (a[i] < b[i]) ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+/* The set met before, or added to the store (false when it is full). */
+static bool meet(vor_order_iter_t *it, const uint32_t *set)
+{
+    uint32_t k = it->order;
+    uint32_t lo = 0;
+    uint32_t hi = it->met;
+    while (lo < hi) { /* binary search over the increasing index */
+        uint32_t mid = lo + ((hi - lo) >> 1);
+        int c = compare_sets(it->sets + ((size_t)it->index[mid] * k), set, k);
+        if (c == 0) {
+            return true;
+        }
+        if (c < 0) {
+            lo = mid + 1u;
+        } else {
+            hi = mid;
+        }
+    }
+    if (it->met == it->max_sets) {
+        return false;
+    }
+    uint32_t *to = it->sets + ((size_t)it->met * k);
+    for (uint32_t i = 0; i < k; i++) {
+        to[i] = set[i];
+    }
+    for (uint32_t i = it->met; i > lo; i--) {
+        it->index[i] = it->index[i - 1u];
+    }
+    it->index[lo] = it->met;
+    it->met++;
+    return true;
+}
+
+/* The cells across every bisector edge of the cell's pieces, met. */
+static bool meet_neighbours(vor_order_iter_t *it, const vor_clip_t *clip, uint32_t *spare)
+{
+    clip_frame_t f;
+    frame_of(&f, clip);
+    for (uint32_t k = 0; k < clip->pieces; k++) {
+        const uint32_t *lines = clip->lines + clip->start[k];
+        for (uint32_t i = 0; i < clip->count[k]; i++) {
+            if (lines[i] >= ROOM_LINE) {
+                continue;
+            }
+            set_across(&f, lines[i], spare);
+            if (!meet(it, spare)) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+/* *to = *from, field by field (a structure assignment may become a call
+ * to memcpy, which a freestanding library does not have). */
+static void copy_clip(vor_clip_t *to, const vor_clip_t *from)
+{
+    to->d = from->d;
+    to->room = from->room;
+    to->room_count = from->room_count;
+    to->reversed = from->reversed;
+    to->site = from->site;
+    to->lines = from->lines;
+    to->start = from->start;
+    to->count = from->count;
+    to->pieces = from->pieces;
+    to->next_piece = from->next_piece;
+    to->error = from->error;
+    to->set = from->set;
+    to->order = from->order;
+    to->others = from->others;
+    to->shift = from->shift;
+    to->needed = from->needed;
+}
+
+int vor_order_cells_next(vor_order_iter_t *it, uint32_t *set, vor_clip_t *clip)
+{
+    if ((it == NULL) || (it->d == NULL)) {
+        return 0;
+    }
+    if ((set == NULL) || (clip == NULL)) {
+        it->error = VOR_ERR_ARG;
+        return 0;
+    }
+    uint32_t k = it->order;
+    /* each round computes one set met, and met <= max_sets */
+    while (it->done < it->met) {
+        const uint32_t *s = it->sets + ((size_t)it->done * k);
+        vor_clip_t cell;
+        uint32_t *spare = NULL;
+        int error = order_cell(&cell, it->d, s, k, it->room, it->room_count, it->reversed != 0u,
+                               it->scratch, it->scratch_bytes, &spare);
+        if (error != VOR_OK) {
+            it->needed = cell.needed;
+            it->error = error;
+            return 0;
+        }
+        if (cell.pieces == 0u) {
+            it->done++; /* met across a room edge: outside the room */
+            continue;
+        }
+        if (!meet_neighbours(it, &cell, spare)) {
+            it->error = VOR_ERR_BUFFER;
+            return 0;
+        }
+        for (uint32_t i = 0; i < k; i++) {
+            set[i] = s[i];
+        }
+        copy_clip(clip, &cell);
+        it->done++;
+        it->error = VOR_OK;
+        return 1;
+    }
+    it->error = VOR_OK;
+    return 0;
+}
+
+int vor_order_cells_error(const vor_order_iter_t *it)
+{
+    return (it != NULL) ? it->error : VOR_ERR_ARG;
 }
 
 /* |a| over n limbs, two's complement, into magnitude; a's sign. */
@@ -2395,7 +2927,7 @@ int vor_clip_next(vor_clip_t *clip, vor_exact_point_t *vertices, uint32_t capaci
         return 0;
     }
     clip_frame_t f;
-    begin_frame(&f, clip->d, clip->site, clip->room, clip->room_count, clip->reversed != 0u);
+    frame_of(&f, clip);
     const uint32_t *lines = clip->lines + clip->start[k];
     for (uint32_t i = 0; i < r; i++) {
         exact_vertex(&f, lines[(i == 0u) ? (r - 1u) : (i - 1u)], lines[i], &vertices[i]);
@@ -2473,7 +3005,7 @@ int vor_clip_centroid(const vor_clip_t *clip, uint32_t piece, void *scratch,
         return VOR_ERR_BUFFER;
     }
     clip_frame_t f;
-    begin_frame(&f, clip->d, clip->site, clip->room, clip->room_count, clip->reversed != 0u);
+    frame_of(&f, clip);
     centroid_sum_t sum;
     begin_sums(&sum, limbs, stride);
     for (uint32_t k = from; k < to; k++) {

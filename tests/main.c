@@ -25,5 +25,6 @@ int main(void)
     test_group("power", test_power);
     test_group("locate", test_locate);
     test_group("clip", test_clip);
+    test_group("order", test_order);
     return test_finish();
 }

@@ -134,5 +134,6 @@ void test_interpolate(void);
 void test_field(void);
 void test_locate(void);
 void test_clip(void);
+void test_order(void);
 
 #endif

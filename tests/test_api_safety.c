@@ -637,6 +637,84 @@ static void check_iterators(void)
         bad += vor_clip_next(&clip, exact, clip_capacity, &count) != 0;
         bad += vor_clip_error(&clip) != VOR_OK;
         CHECK(bad == 0 && unchanged(), "clip: a good room: %u wrong", bad);
+
+        /* order-K cells and the walk: bad arguments write neither the
+         * scratch, the store nor the outputs */
+        static uint8_t order_scratch[VOR_ORDER_SCRATCH_BYTES(4, SAFE_SITES, 2)];
+        static uint8_t order_before[sizeof order_scratch];
+        static uint32_t sets[VOR_ORDER_SETS_WORDS(VOR_ORDER_MAX_CELLS(SAFE_SITES, 2), 2)];
+        static uint32_t sets_before[sizeof sets / sizeof sets[0]];
+        static vor_order_iter_t zero_it;
+        const uint32_t pair[2] = {0, 1}, twice[2] = {1, 1}, far[2] = {0, SAFE_SITES},
+                       none[2] = {0, VOR_NO_HINT};
+        uint32_t out_set[2] = {55, 56};
+        uint32_t max_sets = (uint32_t)VOR_ORDER_MAX_CELLS(SAFE_SITES, 2);
+        vor_order_iter_t it;
+        vor_clip_t clip_before_copy;
+        fill(order_scratch, sizeof order_scratch, 0x4B);
+        test_copy_bytes(order_before, order_scratch, sizeof order_scratch);
+        fill(sets, sizeof sets, 0x2D);
+        test_copy_bytes(sets_before, sets, sizeof sets);
+        size_t o = sizeof order_scratch;
+        bad = 0;
+        bad += vor_order_cell_begin(NULL, &diagram, pair, 2, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, NULL, pair, 2, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, NULL, 2, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 0, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 0xFFFFFFFFu, room, 4, order_scratch, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, twice, 2, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, far, 2, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, none, 2, room, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 2, NULL, 4, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 2, room, 2, order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 2, room, 4, NULL, o) != VOR_ERR_ARG;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 2, bowtie, 4, order_scratch, o) !=
+               VOR_ERR_POLYGON;
+        bad += vor_order_cell_begin(&clip, &diagram, pair, 2, room, 4, order_scratch, 16) !=
+               VOR_ERR_BUFFER;
+        bad += clip.needed <= 16u;
+        bad += vor_clip_next(&clip, exact, clip_capacity, &count) != 0;
+        bad += vor_order_cells_begin(NULL, &diagram, 2, room, 4, sets, max_sets, order_scratch, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, NULL, 2, room, 4, sets, max_sets, order_scratch, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, 0, room, 4, sets, max_sets, order_scratch, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, SAFE_SITES, room, 4, sets, max_sets,
+                                     order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, 2, NULL, 4, sets, max_sets, order_scratch, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, 2, room, 0xFFFFFFFFu, sets, max_sets,
+                                     order_scratch, o) != VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, 2, room, 4, NULL, max_sets, order_scratch, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, 2, room, 4, sets, max_sets, NULL, o) !=
+               VOR_ERR_ARG;
+        bad += vor_order_cells_begin(&it, &diagram, 2, bowtie, 4, sets, max_sets, order_scratch, o) !=
+               VOR_ERR_POLYGON;
+        bad += vor_order_cells_begin(&it, &diagram, 2, room, 4, sets, 0, order_scratch, o) !=
+               VOR_ERR_BUFFER;
+        test_copy_bytes(&clip_before_copy, &clip, sizeof clip);
+        bad += vor_order_cells_next(&it, out_set, &clip) != 0;
+        bad += vor_order_cells_error(&it) != VOR_ERR_BUFFER;
+        bad += vor_order_cells_next(&zero_it, out_set, &clip) != 0;
+        bad += vor_order_cells_error(&zero_it) != VOR_OK;
+        bad += vor_order_cells_next(NULL, out_set, &clip) != 0;
+        bad += vor_order_cells_error(NULL) != VOR_ERR_ARG;
+        bad += (out_set[0] != 55u || !test_same_bytes(&clip, &clip_before_copy, sizeof clip));
+        bad += (!test_same_bytes(order_scratch, order_before, sizeof order_scratch) ||
+                !test_same_bytes(sets, sets_before, sizeof sets));
+        /* a good walk: bad outputs keep VOR_ERR_ARG and write nothing */
+        bad += vor_order_cells_begin(&it, &diagram, 2, room, 4, sets, max_sets, order_scratch, o) !=
+               VOR_OK;
+        bad += vor_order_cells_next(&it, NULL, &clip) != 0;
+        bad += vor_order_cells_error(&it) != VOR_ERR_ARG;
+        bad += vor_order_cells_next(&it, out_set, NULL) != 0;
+        bad += vor_order_cells_error(&it) != VOR_ERR_ARG;
+        bad += (out_set[0] != 55u || !test_same_bytes(&clip, &clip_before_copy, sizeof clip));
+        bad += vor_order_cells_next(&it, out_set, &clip) != 1 || clip.pieces < 1u;
+        CHECK(bad == 0 && unchanged(), "order cells: %u bad arguments accepted or wrote", bad);
     }
 
     /* the centroid: bad arguments write neither the output nor the

@@ -39,7 +39,7 @@
 #define CLIP_SITES 16u
 #define CLIP_ROOM 12u
 #define CLIP_VERTICES VOR_CLIP_MAX_VERTICES(CLIP_ROOM, CLIP_SITES)
-#define CLIP_EDGES 600u
+#define CLIP_EDGES 900u
 
 static vor_point_t sites[CLIP_SITES];
 static uint32_t first_of[CLIP_SITES];
@@ -61,7 +61,7 @@ static bool edge_used[CLIP_EDGES];
 static uint32_t edges;
 
 /* A piece's vertices, kept for the point tests: per site, per piece. */
-#define KEPT_PIECES 64u
+#define KEPT_PIECES 160u
 static vor_exact_point_t kept[CLIP_EDGES];
 static uint32_t kept_site[KEPT_PIECES];
 static uint32_t kept_start[KEPT_PIECES];
@@ -1054,6 +1054,7 @@ static void test_errors(void)
     /* the scratch the site needs: 2 neighbours here */
     size_t need = VOR_CLIP_SCRATCH_BYTES(L->m, 3);
     CHECK(vor_clip_begin(&clip, &d, 0, L->v, L->m, scratch, need - 1u) == VOR_ERR_BUFFER &&
+              clip.needed == need &&
               vor_clip_begin(&clip, &d, 0, L->v, L->m, NULL, 0) == VOR_ERR_BUFFER &&
               vor_clip_begin(&clip, &d, 0, L->v, L->m, scratch + 1, need) == VOR_OK &&
               vor_clip_begin(&clip, &d, 0, L->v, L->m, scratch, need) == VOR_OK,
@@ -1131,4 +1132,491 @@ void test_clip(void)
     TEST_CASE("orientation") test_orientation(test_rng_seed(&rng, 0xC11F0005u));
     TEST_CASE("random") test_random(test_rng_seed(&rng, 0xC11F0006u));
     TEST_CASE("wide") test_wide(test_rng_seed(&rng, 0xC11F0007u));
+}
+
+/* ================================================================== */
+/* Order-K cells (vor_order_cell_begin, vor_order_cells_*)             */
+/*
+ * Against the same independent checks: every vertex exactly in the
+ * closed order-K cell of its set (every half-plane of s in the set
+ * against t outside, over all sites, brute force) and in the closed
+ * room, every edge on such a bisector or a room edge, rounding, lowest
+ * terms, counterclockwise, centroids against the shoelace; the tiling of
+ * the room by the pieces of all the walk's cells (edges cancelling and
+ * chaining along the room: the exact areas add up to the room's); every
+ * set met once, increasing, at most VOR_ORDER_MAX_CELLS; the single-cell
+ * call giving the walk's pieces for the set in any order; random integer
+ * points in a piece of their brute-force K nearest sites (ties to the
+ * smaller index) and strictly inside no piece of another set; order 1
+ * against vor_clip_begin; errors leaving everything unchanged.
+ */
+
+#define ORDER_MAX_K 8u
+#define ORDER_SITES 10u
+#define ORDER_CELLS VOR_ORDER_MAX_CELLS(ORDER_SITES, ORDER_SITES / 2u)
+static uint32_t order_sets[VOR_ORDER_SETS_WORDS(ORDER_CELLS, ORDER_MAX_K + 1u)];
+static uint8_t order_scratch[VOR_ORDER_SCRATCH_BYTES(CLIP_ROOM, CLIP_SITES, CLIP_SITES / 2u) + 4u];
+static uint8_t order_scratch2[sizeof order_scratch];
+static uint32_t kept_set[KEPT_PIECES][ORDER_MAX_K];
+
+/* Is p in the closed order-k cell of set[0 .. k)? */
+static bool in_order_cell(const uint32_t *set, uint32_t k, uint32_t n, const exact_t *p)
+{
+    for (uint32_t t = 0; t < n; t++) {
+        bool inside = false;
+        for (uint32_t i = 0; i < k; i++) {
+            inside = inside || (sites[set[i]].x == sites[t].x && sites[set[i]].y == sites[t].y);
+        }
+        for (uint32_t i = 0; i < k && !inside; i++) {
+            vor_point_t a = sites[set[i]], o = sites[t];
+            int64_t ca = 2 * ((int64_t)o.x - a.x), cb = 2 * ((int64_t)o.y - a.y);
+            int64_t cc = (int64_t)o.x * o.x + (int64_t)o.y * o.y - (int64_t)a.x * a.x -
+                         (int64_t)a.y * a.y;
+            if (line_side(p, ca, cb, cc) > 0) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+/* Does the edge a -> b lie on a bisector of a site of the set with a site
+ * outside, or on a room edge? */
+static bool edge_on_order_line(const room_t *r, const uint32_t *set, uint32_t k, uint32_t n,
+                               const exact_t *a, const exact_t *b)
+{
+    for (uint32_t i = 0; i < k; i++) {
+        for (uint32_t t = 0; t < n; t++) {
+            vor_point_t p = sites[set[i]], o = sites[t];
+            if (p.x == o.x && p.y == o.y) {
+                continue;
+            }
+            int64_t ca = 2 * ((int64_t)o.x - p.x), cb = 2 * ((int64_t)o.y - p.y);
+            int64_t cc = (int64_t)o.x * o.x + (int64_t)o.y * o.y - (int64_t)p.x * p.x -
+                         (int64_t)p.y * p.y;
+            if (line_side(a, ca, cb, cc) == 0 && line_side(b, ca, cb, cc) == 0) {
+                return true;
+            }
+        }
+    }
+    return edge_on_a_line(r, set[0], 0, a, b);
+}
+
+/* The k nearest distinct sites of q, ties to the smaller index, sorted. */
+static void brute_nearest(vor_point_t q, uint32_t n, uint32_t k, uint32_t *out, bool *tie)
+{
+    static int64_t dist[CLIP_SITES];
+    static bool taken[CLIP_SITES];
+    for (uint32_t s = 0; s < n; s++) {
+        int64_t dx = (int64_t)q.x - sites[s].x, dy = (int64_t)q.y - sites[s].y;
+        dist[s] = dx * dx + dy * dy;
+        taken[s] = first_of[s] != s;
+    }
+    int64_t last = 0;
+    for (uint32_t r = 0; r < k; r++) {
+        uint32_t best = n;
+        for (uint32_t s = 0; s < n; s++) {
+            if (!taken[s] && (best == n || dist[s] < dist[best])) {
+                best = s;
+            }
+        }
+        taken[best] = true;
+        out[r] = best;
+        last = dist[best];
+    }
+    /* a tie between the k-th and the (k+1)-th: q is on a cell boundary */
+    *tie = false;
+    for (uint32_t s = 0; s < n; s++) {
+        *tie = *tie || (!taken[s] && dist[s] == last);
+    }
+    for (uint32_t i = 1; i < k; i++) {
+        for (uint32_t j = i; j > 0u && out[j - 1u] > out[j]; j--) {
+            uint32_t t = out[j];
+            out[j] = out[j - 1u];
+            out[j - 1u] = t;
+        }
+    }
+}
+
+/* Random integer points: in a piece of their K nearest sites' cell, and
+ * strictly inside no piece of another set (nor any outside the room). */
+static void check_order_points(const room_t *r, uint32_t n, uint32_t k, test_rng_t *rng,
+                               uint32_t samples, const char *name)
+{
+    int32_t x0 = r->v[0].x, x1 = x0, y0 = r->v[0].y, y1 = y0;
+    for (uint32_t i = 1; i < r->m; i++) {
+        x0 = (r->v[i].x < x0) ? r->v[i].x : x0;
+        x1 = (r->v[i].x > x1) ? r->v[i].x : x1;
+        y0 = (r->v[i].y < y0) ? r->v[i].y : y0;
+        y1 = (r->v[i].y > y1) ? r->v[i].y : y1;
+    }
+    for (uint32_t sample = 0; sample < samples; sample++) {
+        vor_point_t q = {test_rng_range(rng, x0 - 2, x1 + 2), test_rng_range(rng, y0 - 2, y1 + 2)};
+        int where = in_room(r, q);
+        uint32_t near[ORDER_MAX_K];
+        bool tie;
+        brute_nearest(q, n, k, near, &tie);
+        bool in_own = false, wrong = false;
+        for (uint32_t p = 0; p < kept_pieces; p++) {
+            bool own = test_same_bytes(kept_set[p], near, k * sizeof near[0]);
+            int at = in_piece(p, q);
+            if (own) {
+                in_own = in_own || (at >= 0);
+            } else {
+                wrong = wrong || (at > 0);
+            }
+            wrong = wrong || ((where < 0) && (at > 0)) || (tie && at > 0);
+        }
+        CHECK(!wrong && (where <= 0 || in_own),
+              "%s k %u: point (%d, %d) (room %d): in another set's piece or not in its own", name,
+              k, q.x, q.y, where);
+    }
+}
+
+/* The walk's cells in one room: every check above. */
+static void check_order_case(const room_t *r, uint32_t n, uint32_t k, test_rng_t *rng,
+                             const char *name)
+{
+    static exact_t v[CLIP_VERTICES];
+    static shoelace_t one;
+    static vor_exact_point_t other[CLIP_VERTICES];
+    vor_t d;
+    if (!build(&d, n)) {
+        return;
+    }
+    uint32_t distinct = 0;
+    for (uint32_t s = 0; s < n; s++) {
+        distinct += (first_of[s] == s) ? 1u : 0u;
+    }
+    edges = 0;
+    kept_pieces = 0;
+    vor_order_iter_t it;
+    vor_clip_t clip;
+    uint32_t set[ORDER_MAX_K];
+    uint32_t cells = 0;
+    int err = vor_order_cells_begin(&it, &d, k, r->v, r->m, order_sets, ORDER_CELLS,
+                                    order_scratch, sizeof order_scratch);
+    if (!CHECK(err == VOR_OK, "%s k %u: begin error %d", name, k, err)) {
+        return;
+    }
+    while (vor_order_cells_next(&it, set, &clip)) {
+        bool ok = CHECK(clip.pieces >= 1u, "%s k %u: an empty cell", name, k);
+        for (uint32_t i = 0; ok && i < k; i++) {
+            ok = CHECK(first_of[set[i]] == set[i] && (i == 0u || set[i - 1u] < set[i]),
+                       "%s k %u: set not increasing distinct sites", name, k);
+        }
+        /* the same set from the single call, given backwards */
+        uint32_t backwards[ORDER_MAX_K];
+        for (uint32_t i = 0; i < k; i++) {
+            backwards[i] = set[k - 1u - i];
+        }
+        vor_clip_t single;
+        ok = ok && CHECK(vor_order_cell_begin(&single, &d, backwards, k, r->v, r->m,
+                                              order_scratch2, sizeof order_scratch2) == VOR_OK &&
+                             single.pieces == clip.pieces,
+                         "%s k %u: the single call disagrees on the pieces", name, k);
+        uint32_t count = 0, pieces = 0;
+        while (ok && vor_clip_next(&clip, piece, CLIP_VERTICES, &count)) {
+            uint32_t count2 = 0;
+            ok = CHECK(vor_clip_next(&single, other, CLIP_VERTICES, &count2) && count2 == count &&
+                           test_same_bytes(piece, other, count * sizeof piece[0]),
+                       "%s k %u: piece %u differs from the single call's", name, k, pieces) &&
+                 CHECK(count >= 3u, "%s k %u: %u vertices", name, k, count);
+            for (uint32_t i = 0; ok && i < count; i++) {
+                to_exact(&v[i], &piece[i]);
+                wide_t zero;
+                wide_set(&zero, 0);
+                ok = CHECK(wide_compare(&v[i].w, &zero) > 0 &&
+                               coprime3(&v[i].x, &v[i].y, &v[i].w) &&
+                               rounds_to(&v[i].x, &v[i].w, piece[i].point.x) &&
+                               rounds_to(&v[i].y, &v[i].w, piece[i].point.y),
+                           "%s k %u: vertex %u: w, lowest terms or rounding", name, k, i) &&
+                     CHECK(in_order_cell(set, k, n, &v[i]) && in_closed_room(r, &v[i]),
+                           "%s k %u: vertex %u (%d, %d) outside the cell or room", name, k, i,
+                           piece[i].point.x, piece[i].point.y);
+            }
+            for (uint32_t i = 0; ok && i < count; i++) {
+                const exact_t *a = &v[i], *b = &v[(i + 1u) % count], *c = &v[(i + 2u) % count];
+                ok = CHECK(!same_exact(a, b) && turn(a, b, c) != 0 &&
+                               edge_on_order_line(r, set, k, n, a, b) &&
+                               (i == 0u || compare_low(&v[0], &v[i]) < 0),
+                           "%s k %u: piece %u edge %u", name, k, pieces, i);
+            }
+            if (ok) {
+                shoelace_begin(&one);
+                shoelace_add(&one, v, count);
+                vor_centroid_t c;
+                wide_t zero;
+                wide_set(&zero, 0);
+                int e = vor_clip_centroid(&clip, pieces, sums, sizeof sums, &c);
+                CHECK(wide_compare(&one.area2, &zero) > 0 && e == VOR_OK && c.vertices == count &&
+                          centroid_matches(&one, &c),
+                      "%s k %u: piece %u: area or centroid", name, k, pieces);
+                if (CHECK(edges + count <= CLIP_EDGES && kept_pieces < KEPT_PIECES,
+                          "%s: too many edges to keep", name)) {
+                    for (uint32_t i = 0; i < k; i++) {
+                        kept_set[kept_pieces][i] = set[i];
+                    }
+                    kept_start[kept_pieces] = edges;
+                    kept_count[kept_pieces] = count;
+                    kept_pieces++;
+                    for (uint32_t i = 0; i < count; i++) {
+                        kept[edges] = piece[i];
+                        edge_from[edges] = piece[i];
+                        edge_to[edges] = piece[(i + 1u) % count];
+                        edge_used[edges] = false;
+                        edges++;
+                    }
+                }
+            }
+            pieces++;
+        }
+        CHECK(vor_clip_error(&clip) == VOR_OK && pieces == clip.pieces,
+              "%s k %u: pieces %u of %u", name, k, pieces, clip.pieces);
+        cells++;
+    }
+    CHECK(vor_order_cells_error(&it) == VOR_OK && it.met <= VOR_ORDER_MAX_CELLS(distinct, k),
+          "%s k %u: walk error %d, %u sets met", name, k, vor_order_cells_error(&it), it.met);
+    /* every set once: the yielded ones are distinct (sorted index) */
+    for (uint32_t a = 0; a < kept_pieces; a++) {
+        for (uint32_t b = a + 1u; b < kept_pieces; b++) {
+            /* pieces of one cell are consecutive */
+            bool same = test_same_bytes(kept_set[a], kept_set[b], k * sizeof set[0]);
+            bool between = true;
+            for (uint32_t c = a + 1u; c < b && between; c++) {
+                between = test_same_bytes(kept_set[a], kept_set[c], k * sizeof set[0]);
+            }
+            CHECK(!same || between, "%s k %u: a set yielded twice", name, k);
+        }
+    }
+    check_tiling(r, name);
+    check_order_points(r, n, k, rng, 60u, name);
+    (void)cells;
+}
+
+/* Order 1: vor_clip_begin's pieces, the walk's sets every site meeting
+ * the room. */
+static void check_order_one(const room_t *r, uint32_t n, const char *name)
+{
+    static vor_exact_point_t other[CLIP_VERTICES];
+    vor_t d;
+    if (!build(&d, n)) {
+        return;
+    }
+    for (uint32_t s = 0; s < n; s++) {
+        if (first_of[s] != s) {
+            continue;
+        }
+        vor_clip_t a, b;
+        uint32_t ca, cb;
+        bool same = vor_clip_begin(&a, &d, s, r->v, r->m, scratch, sizeof scratch) == VOR_OK &&
+                    vor_order_cell_begin(&b, &d, &s, 1, r->v, r->m, order_scratch,
+                                         sizeof order_scratch) == VOR_OK &&
+                    a.pieces == b.pieces;
+        while (same && vor_clip_next(&a, piece, CLIP_VERTICES, &ca)) {
+            same = vor_clip_next(&b, other, CLIP_VERTICES, &cb) && ca == cb &&
+                   test_same_bytes(piece, other, ca * sizeof piece[0]);
+        }
+        CHECK(same, "%s: site %u: order 1 differs from vor_clip_begin", name, s);
+    }
+}
+
+static void order_cases(const room_t *r, uint32_t n, test_rng_t *rng, const char *name)
+{
+    uint32_t distinct = 0;
+    for (uint32_t s = 0; s < n; s++) {
+        distinct += 1u;
+        for (uint32_t t = 0; t < s; t++) {
+            if (sites[s].x == sites[t].x && sites[s].y == sites[t].y) {
+                distinct -= 1u;
+                break;
+            }
+        }
+    }
+    check_order_one(r, n, name);
+    for (uint32_t k = 1; k < distinct && k <= ORDER_MAX_K; k++) {
+        if (k <= 3u || k + 1u == distinct) {
+            check_order_case(r, n, k, rng, name);
+        }
+    }
+}
+
+static void test_order_random(test_rng_t *rng)
+{
+    for (uint32_t k = 0; k < ROOMS; k++) {
+        uint32_t n = 3u + (test_rng_u32(rng) % (ORDER_SITES - 2u));
+        random_sites(rng, n);
+        order_cases(&rooms[k], n, rng, rooms[k].name);
+    }
+}
+
+/* Grids (cocircular sites, coinciding bisectors: x = 30 is the bisector
+ * of two pairs), a ring with its centre, collinear sites, duplicates. */
+static void test_order_degenerate(test_rng_t *rng)
+{
+    static const vor_point_t ring[9] = {{30, 30}, {35, 30}, {33, 34}, {30, 35}, {27, 34},
+                                        {25, 30}, {27, 26}, {30, 25}, {33, 26}};
+    static const uint32_t some[4] = {0, 1, 2, 8};
+    for (uint32_t j = 0; j < 4u; j++) {
+        const room_t *r = &rooms[some[j]];
+        grid_sites(2, 2, 15, 15, 30);
+        order_cases(r, 4, rng, "grid2");
+        grid_sites(3, 3, 10, 10, 20);
+        order_cases(r, 9, rng, "grid3");
+        for (uint32_t i = 0; i < 9u; i++) {
+            sites[i] = ring[i];
+        }
+        order_cases(r, 9, rng, "ring");
+        for (uint32_t i = 0; i < 5u; i++) {
+            sites[i].x = 5 + 12 * (int32_t)i;
+            sites[i].y = 30;
+        }
+        order_cases(r, 5, rng, "collinear");
+        /* two pairs mirrored in one line: x = 30 bounds S = {0, 1} */
+        sites[0] = (vor_point_t){20, 20};
+        sites[1] = (vor_point_t){20, 40};
+        sites[2] = (vor_point_t){40, 20};
+        sites[3] = (vor_point_t){40, 40};
+        sites[4] = (vor_point_t){20, 20};
+        sites[5] = (vor_point_t){90, 30};
+        order_cases(r, 6, rng, "mirrored");
+    }
+    /* a band across x = 30 where only the cells of {0, 1} and {2, 3}
+     * meet: the walk crosses there by swapping both pairs at once */
+    static const room_t band = {"band", 4, {{22, 26}, {38, 26}, {38, 34}, {22, 34}}};
+    sites[0] = (vor_point_t){20, 20};
+    sites[1] = (vor_point_t){20, 40};
+    sites[2] = (vor_point_t){40, 20};
+    sites[3] = (vor_point_t){40, 40};
+    sites[4] = (vor_point_t){90, 30};
+    order_cases(&band, 5, rng, "band");
+    /* collinear room edges */
+    random_sites(rng, 7);
+    order_cases(&rooms[3], 7, rng, "collinear_room");
+}
+
+static void test_order_errors(void)
+{
+    vor_t d;
+    vor_clip_t clip;
+    const room_t *L = &rooms[1];
+    sites[0] = (vor_point_t){10, 10};
+    sites[1] = (vor_point_t){50, 10};
+    sites[2] = (vor_point_t){10, 10};
+    sites[3] = (vor_point_t){10, 50};
+    sites[4] = (vor_point_t){40, 45};
+    if (!build(&d, 5)) {
+        return;
+    }
+    for (uint32_t i = 0; i < sizeof order_scratch; i++) {
+        order_scratch[i] = 0x5A;
+    }
+    static const vor_point_t bowtie[4] = {{0, 0}, {10, 10}, {10, 0}, {0, 10}};
+    const uint32_t good[2] = {0, 3}, dup[2] = {3, 3}, dupsite[2] = {0, 2}, unknown[2] = {0, 5},
+                   four[4] = {0, 1, 3, 4};
+    int bad[14];
+    size_t bytes = sizeof order_scratch;
+    uint8_t *sc = order_scratch;
+    bad[0] = vor_order_cell_begin(NULL, &d, good, 2, L->v, L->m, sc, bytes);
+    bad[1] = vor_order_cell_begin(&clip, NULL, good, 2, L->v, L->m, sc, bytes);
+    bad[2] = vor_order_cell_begin(&clip, &d, NULL, 2, L->v, L->m, sc, bytes);
+    bad[3] = vor_order_cell_begin(&clip, &d, good, 0, L->v, L->m, sc, bytes);
+    bad[4] = vor_order_cell_begin(&clip, &d, four, 4, L->v, L->m, sc, bytes); /* k = n */
+    bad[5] = vor_order_cell_begin(&clip, &d, dup, 2, L->v, L->m, sc, bytes);
+    bad[6] = vor_order_cell_begin(&clip, &d, dupsite, 2, L->v, L->m, sc, bytes);
+    bad[7] = vor_order_cell_begin(&clip, &d, unknown, 2, L->v, L->m, sc, bytes);
+    bad[8] = vor_order_cell_begin(&clip, &d, good, 2, NULL, L->m, sc, bytes);
+    bad[9] = vor_order_cell_begin(&clip, &d, good, 2, L->v, 2, sc, bytes);
+    bad[10] = vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, NULL, bytes);
+    bad[11] = vor_order_cell_begin(&clip, &d, good, 2, bowtie, 4, sc, bytes);
+    bad[12] = vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, sc, 100);
+    size_t needed = clip.needed;
+    bad[13] = vor_order_cell_begin(&clip, &d, good, VOR_ORDER_MAX + 1u, L->v, L->m, sc, bytes);
+    bool untouched = true;
+    for (uint32_t i = 0; i < sizeof order_scratch; i++) {
+        untouched = untouched && order_scratch[i] == 0x5A;
+    }
+    CHECK(bad[0] == VOR_ERR_ARG && bad[1] == VOR_ERR_ARG && bad[2] == VOR_ERR_ARG &&
+              bad[3] == VOR_ERR_ARG && bad[4] == VOR_ERR_ARG && bad[5] == VOR_ERR_ARG &&
+              bad[6] == VOR_ERR_ARG && bad[7] == VOR_ERR_ARG && bad[8] == VOR_ERR_ARG &&
+              bad[9] == VOR_ERR_ARG && bad[10] == VOR_ERR_ARG && bad[11] == VOR_ERR_POLYGON &&
+              bad[12] == VOR_ERR_BUFFER && bad[13] == VOR_ERR_ARG && untouched &&
+              vor_clip_error(&clip) == VOR_ERR_ARG,
+          "order begin errors: %d %d %d %d %d %d %d %d %d %d %d %d %d %d", bad[0], bad[1], bad[2],
+          bad[3], bad[4], bad[5], bad[6], bad[7], bad[8], bad[9], bad[10], bad[11], bad[12],
+          bad[13]);
+    /* the size reported is the size needed, at any alignment */
+    CHECK(needed > 100u && needed <= VOR_ORDER_SCRATCH_BYTES(L->m, 4, 2) &&
+              vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, sc, needed - 1u) ==
+                  VOR_ERR_BUFFER &&
+              clip.needed == needed &&
+              vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, sc + 1, needed) == VOR_OK &&
+              clip.needed == 0u &&
+              vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, sc + 3, needed) == VOR_OK,
+          "order scratch: needed %u", (unsigned)needed);
+    /* more edges than a room may have; no scratch at all */
+    CHECK(vor_order_cell_begin(&clip, &d, good, 2, L->v, VOR_CLIP_MAX_ROOM + 1u, sc, bytes) ==
+                  VOR_ERR_ARG &&
+              vor_order_cell_begin(&clip, &d, good, 2, L->v, L->m, NULL, 0) == VOR_ERR_BUFFER &&
+              clip.needed == needed,
+          "order: a room too large, no scratch");
+    /* the walk */
+    vor_order_iter_t it;
+    uint32_t set[2] = {77, 78};
+    static uint32_t few_sets[VOR_ORDER_SETS_WORDS(2, 2)];
+    int w[9];
+    w[0] = vor_order_cells_begin(NULL, &d, 2, L->v, L->m, order_sets, 4, sc, bytes);
+    w[1] = vor_order_cells_begin(&it, NULL, 2, L->v, L->m, order_sets, 4, sc, bytes);
+    w[2] = vor_order_cells_begin(&it, &d, 0, L->v, L->m, order_sets, 4, sc, bytes);
+    w[3] = vor_order_cells_begin(&it, &d, 4, L->v, L->m, order_sets, 4, sc, bytes);
+    w[4] = vor_order_cells_begin(&it, &d, 2, NULL, L->m, order_sets, 4, sc, bytes);
+    w[5] = vor_order_cells_begin(&it, &d, 2, L->v, L->m, NULL, 4, sc, bytes);
+    w[6] = vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 4, NULL, bytes);
+    w[7] = vor_order_cells_begin(&it, &d, 2, bowtie, 4, order_sets, 4, sc, bytes);
+    w[8] = vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 0, sc, bytes);
+    CHECK(w[0] == VOR_ERR_ARG && w[1] == VOR_ERR_ARG && w[2] == VOR_ERR_ARG &&
+              w[3] == VOR_ERR_ARG && w[4] == VOR_ERR_ARG && w[5] == VOR_ERR_ARG &&
+              w[6] == VOR_ERR_ARG && w[7] == VOR_ERR_POLYGON && w[8] == VOR_ERR_BUFFER &&
+              vor_order_cells_error(&it) == VOR_ERR_BUFFER &&
+              !vor_order_cells_next(&it, set, &clip) && vor_order_cells_error(NULL) == VOR_ERR_ARG &&
+              !vor_order_cells_next(NULL, set, &clip) && set[0] == 77u,
+          "walk begin errors: %d %d %d %d %d %d %d %d %d", w[0], w[1], w[2], w[3], w[4], w[5],
+          w[6], w[7], w[8]);
+    uint32_t none_set[2] = {88, 89};
+    CHECK(vor_order_cells_begin(&it, &d, VOR_ORDER_MAX + 1u, L->v, L->m, order_sets, 4, sc,
+                                bytes) == VOR_ERR_ARG &&
+              vor_order_cells_begin(&it, &d, 2, L->v, VOR_CLIP_MAX_ROOM + 1u, order_sets, 4, sc,
+                                    bytes) == VOR_ERR_ARG &&
+              vor_order_cells_begin(&it, &d, 2, L->v, L->m, NULL, 0, sc, bytes) ==
+                  VOR_ERR_BUFFER &&
+              vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 4, NULL, 0) == VOR_OK &&
+              !vor_order_cells_next(&it, none_set, &clip) &&
+              vor_order_cells_error(&it) == VOR_ERR_BUFFER && it.needed > 0u && none_set[0] == 88u,
+          "walk: K too large, a room too large, no store, no scratch");
+    /* bad outputs; a store too small; a scratch too small */
+    CHECK(vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 4, sc, bytes) == VOR_OK &&
+              !vor_order_cells_next(&it, NULL, &clip) && vor_order_cells_error(&it) == VOR_ERR_ARG &&
+              !vor_order_cells_next(&it, set, NULL) && vor_order_cells_error(&it) == VOR_ERR_ARG &&
+              set[0] == 77u,
+          "walk: bad outputs");
+    uint32_t yielded = 0;
+    bool began = vor_order_cells_begin(&it, &d, 2, L->v, L->m, few_sets, 1, sc, bytes) == VOR_OK;
+    while (began && vor_order_cells_next(&it, set, &clip)) {
+        yielded++;
+    }
+    CHECK(began && vor_order_cells_error(&it) == VOR_ERR_BUFFER && yielded == 0u,
+          "walk: a store of one set: %d after %u", vor_order_cells_error(&it), yielded);
+    began = vor_order_cells_begin(&it, &d, 2, L->v, L->m, order_sets, 4, sc, 100) == VOR_OK;
+    CHECK(began && !vor_order_cells_next(&it, set, &clip) &&
+              vor_order_cells_error(&it) == VOR_ERR_BUFFER && it.needed > 100u && set[0] == 77u,
+          "walk: a scratch too small: %d, needed %u", vor_order_cells_error(&it),
+          (unsigned)it.needed);
+}
+
+void test_order(void)
+{
+    test_rng_t rng;
+    TEST_CASE("errors") test_order_errors();
+    TEST_CASE("degenerate") test_order_degenerate(test_rng_seed(&rng, 0x0DE20001u));
+    TEST_CASE("random") test_order_random(test_rng_seed(&rng, 0x0DE20002u));
 }

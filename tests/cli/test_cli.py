@@ -781,6 +781,122 @@ def clip_cases(rng, tmp):
               f"cells {args}: {r.returncode} {r.stderr!r}")
 
 
+def order_cells_cases(rng, tmp):
+    """vor cells --order K against a brute force in Fractions: every set
+    increasing and printed in increasing order, each set's pieces round to
+    the --exact ones and lie in the closed room and in the closed order-K
+    cell of their set (every site of the set at least as close as every
+    other site, by the bisectors' exact inequalities), their areas add up
+    to the room's exactly, random points of the room lie in a piece of
+    their brute-force K nearest sites (ties to the smaller index); --order
+    1 is the "c" output; bad orders exit 2 with nothing on stdout."""
+    import os
+    from fractions import Fraction as F
+    rooms = {
+        "box": [(0, 0), (60, 0), (60, 60), (0, 60)],
+        "L": [(0, 0), (60, 0), (60, 30), (30, 30), (30, 60), (0, 60)],
+        "U": [(0, 0), (60, 0), (60, 60), (40, 60), (40, 20), (20, 20), (20, 60), (0, 60)],
+        "clockwise comb": [(0, 60), (10, 10), (20, 60), (30, 10), (40, 60), (50, 10), (60, 60), (60, 0), (0, 0)],
+    }
+    site_sets = [
+        ("random", lambda: [(rng.randint(-10, 70), rng.randint(-10, 70)) for _ in range(9)]),
+        ("grid", lambda: [(10 + 20 * i, 10 + 20 * j) for i in range(3) for j in range(3)]),
+        ("ring", lambda: [(30, 30), (35, 30), (33, 34), (30, 35), (27, 34), (25, 30), (27, 26), (30, 25), (33, 26)]),
+        ("collinear", lambda: [(5 + 12 * t, 30) for t in range(5)] + [(5, 30)]),
+    ]
+
+    def area2(poly):
+        return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
+                   for k in range(len(poly)))
+
+    def where(poly, q):
+        """1 strictly inside, 0 on the boundary, -1 outside (winding number)."""
+        winding = 0
+        for k in range(len(poly)):
+            a, b = poly[k], poly[(k + 1) % len(poly)]
+            o = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+            if o == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= q[1] <= max(a[1], b[1]):
+                return 0
+            if a[1] <= q[1] < b[1] and o > 0:
+                winding += 1
+            elif b[1] <= q[1] < a[1] and o < 0:
+                winding -= 1
+        return 1 if winding else -1
+
+    poly_path = os.path.join(tmp, "order.poly")
+    sites_path = os.path.join(tmp, "order.sites")
+    for room_name, room in rooms.items():
+        with open(poly_path, "w") as f:
+            f.write("".join(f"{x} {y}\n" for x, y in room))
+        room_area2 = abs(area2(room))
+        xs, ys = [p[0] for p in room], [p[1] for p in room]
+        for set_name, make in site_sets:
+            sites = make()
+            with open(sites_path, "w") as f:
+                f.write("".join(f"{x} {y}\n" for x, y in sites))
+            first = {}
+            for i, p in enumerate(sites):
+                first.setdefault(p, i)
+            ids = sorted(first.values())
+            for k in (2, 3, len(ids) - 1):
+                what = f"cells --clip {room_name} --order {k} {set_name}"
+                rounded = run(["cells", "--clip", poly_path, "--order", str(k), sites_path], "")
+                exact = run(["cells", "--clip", poly_path, "--order", str(k), "--exact", sites_path], "")
+                check(rounded.returncode == 0 and exact.returncode == 0, f"{what}: {rounded.stderr!r} {exact.stderr!r}")
+                total, pieces, wrong, previous = F(0), {}, 0, None
+                for line, eline in zip(rounded.stdout.splitlines(), exact.stdout.splitlines()):
+                    got, egot = line.split(), [int(v) for v in eline.split()[1:]]
+                    v = [int(t) for t in got[1:]]
+                    group = tuple(v[1:1 + k])
+                    m = v[1 + k]
+                    nums = egot[2 + k:]
+                    poly = [(F(nums[3 * j], nums[3 * j + 2]), F(nums[3 * j + 1], nums[3 * j + 2])) for j in range(m)]
+                    ok = (got[0] == "o" and eline.startswith("o ") and v[0] == k and egot[:2 + k] == v[:2 + k] and
+                          list(group) == sorted(set(group)) and all(g in ids for g in group) and
+                          (previous is None or previous <= group) and len(nums) == 3 * m and
+                          v[2 + k:] == [round_half_up(c) for p in poly for c in p] and area2(poly) > 0)
+                    previous = group
+                    for p in poly:
+                        ok = ok and where(room, p) >= 0
+                        for i in group:
+                            s = sites[i]
+                            for j in ids:
+                                if j in group:
+                                    continue
+                                n = sites[j]
+                                ok = ok and 2 * (n[0] - s[0]) * p[0] + 2 * (n[1] - s[1]) * p[1] <= \
+                                    n[0] ** 2 + n[1] ** 2 - s[0] ** 2 - s[1] ** 2
+                    if not ok:
+                        wrong += 1
+                        if wrong <= 2:
+                            check(False, f"{what}: piece {line!r} / {eline!r} is wrong")
+                    total += area2(poly)
+                    pieces.setdefault(group, []).append(poly)
+                check(wrong == 0, f"{what}: {wrong} wrong pieces")
+                check(total == room_area2, f"{what}: areas add up to {total}/2, the room has {room_area2}/2")
+                for _ in range(40):
+                    q = (rng.randint(min(xs), max(xs)), rng.randint(min(ys), max(ys)))
+                    if where(room, q) != 1:
+                        continue
+                    near = tuple(sorted(sorted(ids, key=lambda i: ((q[0] - sites[i][0]) ** 2 +
+                                                                   (q[1] - sites[i][1]) ** 2, i))[:k]))
+                    check(any(where(poly, q) >= 0 for poly in pieces.get(near, [])),
+                          f"{what}: {q} in no piece of its {k} nearest sites {near}")
+            one = run(["cells", "--clip", poly_path, "--order", "1", sites_path], "")
+            plain = run(["cells", "--clip", poly_path, sites_path], "")
+            check(one.returncode == 0 and one.stdout == plain.stdout, f"--order 1 differs from the c lines")
+    # a box room, a flat box
+    r = run(["cells", "--box", "0", "-10", "40", "10", "--order", "2", "-"], "0 0\n20 0\n40 0\n")
+    check(r.returncode == 0 and r.stdout == "o 2 0 1 4 0 -10 20 -10 20 10 0 10\no 2 1 2 4 20 -10 40 -10 40 10 20 10\n",
+          f"cells --box --order 2: {r.stdout!r}")
+    r = run(["cells", "--box", "0", "5", "9", "5", "--order", "2", "-"], "1 1\n3 3\n5 5\n")
+    check(r.returncode == 0 and r.stdout == "", f"cells --order 2 of a flat box: {r.stdout!r}")
+    for args in (["--order", "0"], ["--order", "3"], ["--order", "x"], ["--order", "1025"], ["--order"]):
+        r = run(["cells", "--box", "0", "0", "9", "9", *args, "-"], "0 0\n5 5\n7 1\n0 0\n")
+        check(r.returncode == 2 and r.stdout == "" and r.stderr.startswith("error: "),
+              f"cells {args}: {r.returncode} {r.stderr!r}")
+
+
 def weighted_compare(a, b):
     """Exact order of sqrt(D)/w1 - w2 for a = (D, w1, w2), b likewise:
     brackets of sqrt(D * 4^t) with growing t (equality only when the
@@ -2394,6 +2510,7 @@ def main():
         raster_cases(rng, tmp)
         cells_cases(rng, tmp)
         clip_cases(random.Random(2715), tmp)
+        order_cells_cases(random.Random(2716), tmp)
         raster_metric_cases(rng, tmp)
         nearest_k_cases(random.Random(27), tmp)
         contours_cases(rng, tmp)

@@ -1063,6 +1063,102 @@ static int room_is_simple(const vor_point_t *v, uint32_t m)
     return 1;
 }
 
+/* The walk over the order-k cells of a simple room (no byte read: the
+ * corpora keep their meaning): each set once, of k distinct sites
+ * increasing, with pieces in the room's box, the single call giving the
+ * same pieces, and the rounded areas adding up to the room's within
+ * half a unit a piece; then the single call's errors for a bad set. */
+static void op_order(model_t *m, const vor_point_t *room, uint32_t n, uint32_t k)
+{
+#define ORDER_ROOM_MOST 8u
+#define ORDER_MOST_CELLS VOR_ORDER_MAX_CELLS(MOST_SITES, 3u)
+    static uint32_t sets[VOR_ORDER_SETS_WORDS(ORDER_MOST_CELLS, 3u)];
+    static uint32_t seen[ORDER_MOST_CELLS][3];
+    static uint8_t scratch[VOR_ORDER_SCRATCH_BYTES(ORDER_ROOM_MOST, MOST_SITES, 3u)];
+    static uint8_t single_scratch[sizeof scratch];
+    static uint8_t before_scratch[sizeof scratch];
+    static vor_exact_point_t piece[VOR_CLIP_MAX_VERTICES(ORDER_ROOM_MOST, MOST_SITES * 3u)];
+    static vor_exact_point_t other[VOR_CLIP_MAX_VERTICES(ORDER_ROOM_MOST, MOST_SITES * 3u)];
+    uint32_t capacity = VOR_CLIP_MAX_VERTICES(ORDER_ROOM_MOST, MOST_SITES * 3u);
+    uint32_t distinct = 0;
+    for (uint32_t i = 0; i < m->count; i++)
+        distinct += is_site(m, i) ? 1u : 0u;
+    vor_order_iter_t it;
+    snapshot(m);
+    int result = vor_order_cells_begin(&it, &m->d, k, room, n, sets, (uint32_t)ORDER_MOST_CELLS,
+                                       scratch, sizeof scratch);
+    if (k >= distinct) {
+        FUZZ_REQUIRE(result == VOR_ERR_ARG && unchanged(m), "order: k >= the sites accepted");
+        return;
+    }
+    FUZZ_REQUIRE(result == VOR_OK, "order: the walk failed to begin on a simple room");
+    __int128 room_area2 = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        vor_point_t a = room[i], b = room[(i + 1u) % n];
+        room_area2 += (__int128)a.x * b.y - (__int128)b.x * a.y;
+    }
+    room_area2 = room_area2 < 0 ? -room_area2 : room_area2;
+    int64_t x0 = INT64_MAX, y0 = INT64_MAX, x1 = INT64_MIN, y1 = INT64_MIN;
+    for (uint32_t i = 0; i < n; i++) {
+        x0 = room[i].x < x0 ? room[i].x : x0;
+        x1 = room[i].x > x1 ? room[i].x : x1;
+        y0 = room[i].y < y0 ? room[i].y : y0;
+        y1 = room[i].y > y1 ? room[i].y : y1;
+    }
+    uint32_t set[3], cells = 0, all_pieces = 0;
+    __int128 area2 = 0;
+    vor_clip_t clip;
+    while (vor_order_cells_next(&it, set, &clip)) {
+        FUZZ_REQUIRE(cells < ORDER_MOST_CELLS && clip.pieces >= 1u, "order: too many cells, or empty");
+        for (uint32_t i = 0; i < k; i++)
+            FUZZ_REQUIRE(is_site(m, set[i]) && (i == 0u || set[i - 1u] < set[i]),
+                         "order: a set not of increasing sites");
+        for (uint32_t c = 0; c < cells; c++)
+            FUZZ_REQUIRE(memcmp(seen[c], set, k * sizeof set[0]) != 0, "order: a set twice");
+        memcpy(seen[cells], set, k * sizeof set[0]);
+        cells++;
+        vor_clip_t single;
+        FUZZ_REQUIRE(vor_order_cell_begin(&single, &m->d, set, k, room, n, single_scratch,
+                                          sizeof single_scratch) == VOR_OK &&
+                         single.pieces == clip.pieces,
+                     "order: the single call disagrees");
+        uint32_t count, count2, pieces = 0;
+        while (vor_clip_next(&clip, piece, capacity, &count)) {
+            FUZZ_REQUIRE(vor_clip_next(&single, other, capacity, &count2) && count2 == count &&
+                             memcmp(piece, other, count * sizeof piece[0]) == 0,
+                         "order: a piece differs from the single call's");
+            for (uint32_t i = 0; i < count; i++)
+                FUZZ_REQUIRE(piece[i].point.x >= x0 && piece[i].point.x <= x1 &&
+                                 piece[i].point.y >= y0 && piece[i].point.y <= y1,
+                             "order: a vertex outside the room's box");
+            static uint8_t sums[VOR_CENTROID_SCRATCH_BYTES(
+                VOR_CLIP_MAX_VERTICES(ORDER_ROOM_MOST, MOST_SITES * 3u))];
+            vor_centroid_t c;
+            FUZZ_REQUIRE(vor_clip_centroid(&clip, pieces, sums, sizeof sums, &c) == VOR_OK,
+                         "order: a piece's centroid failed");
+            area2 += 2 * (__int128)c.area;
+            pieces++;
+        }
+        all_pieces += pieces;
+        FUZZ_REQUIRE(vor_clip_error(&clip) == VOR_OK && pieces == clip.pieces,
+                     "order: the pieces stopped early");
+    }
+    FUZZ_REQUIRE(vor_order_cells_error(&it) == VOR_OK && unchanged(m), "order: the walk failed");
+    __int128 gap = area2 - room_area2;
+    FUZZ_REQUIRE(cells >= 1u && gap <= (__int128)all_pieces && -gap <= (__int128)all_pieces,
+                 "order: the cells' areas do not add up to the room's");
+    /* a set with an id twice, or not a site: nothing written */
+    uint32_t bad_set[3] = {set[0], set[0], set[0]};
+    memset(scratch, 0x5a, sizeof scratch);
+    memcpy(before_scratch, scratch, sizeof scratch);
+    FUZZ_REQUIRE(vor_order_cell_begin(&clip, &m->d, bad_set, k, room, n, scratch, sizeof scratch) ==
+                         VOR_ERR_ARG &&
+                     memcmp(scratch, before_scratch, sizeof scratch) == 0,
+                 "order: a set with an id twice accepted, or the scratch written");
+#undef ORDER_MOST_CELLS
+#undef ORDER_ROOM_MOST
+}
+
 /* vor_clip_begin of a random id and room (often not simple; sometimes a
  * box, whose one piece must be vor_cell's cell), its pieces and centroids:
  * errors leave everything alone, pieces have 3 vertices or more, in the
@@ -1147,6 +1243,7 @@ static void op_clip(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
     FUZZ_REQUIRE(vor_clip_centroid(&clip, VOR_CLIP_WHOLE, sums, sizeof sums, &whole) == VOR_OK &&
                      whole.vertices == total,
                  "clip: the whole centroid failed or miscounted");
+    op_order(m, room, n, 2u + ((uint32_t)(how >> 3) & 1u));
 #undef CLIP_ROOM_MOST
 }
 

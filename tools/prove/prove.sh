@@ -24,7 +24,7 @@ status=0
 named=$#
 passed=0
 failed=0
-harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid clip raster field interpolate large cdt power power_cells power_dynamic}
+harnesses=${*:-predicates predicates_os multiword multiword_armv6m diagram queries nearest_k locate geometry cells centroid clip order raster field interpolate large cdt power power_cells power_dynamic}
 
 # Options every harness shares.
 # -machdep x86_32 and __ARM_ARCH_PROFILE 'M' (below): the configuration of
@@ -49,9 +49,9 @@ options_of() {
     # kept apart (a slevel no loop reaches) and EVA follows each build,
     # cell trace, constraint and flip exactly
     large | cells | cdt | power) echo "-eva-split-return full -eva-slevel 1000000" ;;
-    # centroid, clip, power_cells, field, interpolate: the same, and the
+    # centroid, clip, order, power_cells, field, interpolate: the same, and the
     # scratch at a fixed address (far_sites.h)
-    centroid | clip | power_cells | field | interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
+    centroid | clip | order | power_cells | field | interpolate) echo "-eva-split-return full -eva-slevel 1000000 -absolute-valid-range 0x10000-0x1FFFF" ;;
     # queries, nearest_k, locate, power_dynamic: loops over a site's fan
     # (the walk, the k nearest's rounds, the disc's tree) run up to 7 turns
     # on these diagrams;
