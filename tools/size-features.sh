@@ -50,6 +50,7 @@ links() {
     move)           echo "bucket_grid dynamic incremental mesh predicates queries" ;;
     geometry)       echo "bucket_grid geometry incremental insertion_order mesh predicates queries" ;;
     clip)           echo "bucket_grid geometry incremental insertion_order mesh predicates" ;;
+    order)          echo "bucket_grid geometry incremental insertion_order mesh predicates queries" ;;
     constrain)      echo "bucket_grid cdt crossing dynamic incremental insertion_order mesh predicates" ;;
     power)          echo "bucket_grid dynamic incremental insertion_order mesh power predicates queries" ;;
     power_cells)    echo "bucket_grid dynamic geometry incremental insertion_order mesh power predicates queries" ;;
@@ -79,7 +80,7 @@ print(" ".join(sorted(files)))
 PY
 }
 # In the order of the table: from the smallest firmware to everything.
-FEATURES="insert_nearest build_nearest locate move geometry clip constrain power power_cells interpolate laplace field raster_euclid raster_all raster_korder everything"
+FEATURES="insert_nearest build_nearest locate move geometry clip order constrain power power_cells interpolate laplace field raster_euclid raster_all raster_korder everything"
 LEVELS="-Os -O2"
 
 # Sums the libvor input sections of a GNU ld map: "flash ram". An input
