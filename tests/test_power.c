@@ -20,6 +20,7 @@
  */
 #include "test.h"
 #include "vor_power.h"
+#include "mesh.h" /* white box: the mesh's triangles, for the flags' check */
 
 #define POWER_SITES 320u
 #define POWER_BRUTE 14u
@@ -183,6 +184,30 @@ static int line_status(const scene_t *s, uint32_t i)
     return status;
 }
 
+/* The object's flags as vor_power.h states them: `area` exactly when a
+ * triangle of nonzero area is reported (got of them), and with area,
+ * `flats` whenever the mesh holds a finite triangle of no area (the
+ * exact orientation of its stored corners): the changes settle flat
+ * triangles only while it is set. (Without area every triangle is flat
+ * and the one-dimensional rules decide, whatever `flats` says.) */
+static void check_flags(const vor_power_t *pd, uint32_t got)
+{
+    const vor_t *d = &pd->mesh;
+    CHECK(pd->area == (got > 0u), "area %d with %u triangles", (int)pd->area, got);
+    uint32_t flat = 0;
+    uint32_t end = vor__used_slots_end(d);
+    for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
+         slot = vor__next_used_slot(d, slot + 1u)) {
+        vor_index_t v[3];
+        vor__vertices(&d->triangles[slot], v);
+        if ((v[0] != VOR__INFINITE) && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
+            (vor_orient2d(d->sites[v[0]], d->sites[v[1]], d->sites[v[2]]) == 0)) {
+            flat++;
+        }
+    }
+    CHECK(!pd->area || pd->flats || (flat == 0u), "%u flat triangles, flats not set", flat);
+}
+
 /*
  * The brute-force check. V: the sites vor_power reports as vertices.
  *   1. the reported triangles are those of nonzero area of the perturbed
@@ -239,6 +264,7 @@ static void check_oracle(const vor_power_t *pd_in, const scene_t *s, const uint3
     }
     sort_tris(tris_b, expected);
     uint32_t got = read_tris(pd, tris_a);
+    check_flags(pd, got);
     if (!CHECK(same_tris(tris_a, got, tris_b, expected), "triangles: %u, brute force %u", got,
                expected)) {
         for (uint32_t i = 0; i < s->n; i++) {
@@ -545,6 +571,32 @@ static void check_coincident(void)
     check_rounds(21, 4u, POWER_BRUTE - 3u, coincident_site);
 }
 
+/* Tiny scenes on small lattices (7 x 2, 5 x 3, 3 x 3) with small
+ * weights: many sites on the lines of hull edges, many lifted points on
+ * planes and chains (the degenerate cases of the flips and of the
+ * settling of flat triangles). */
+static int32_t lattice_w;
+static int32_t lattice_h;
+static int32_t lattice_weight;
+
+static void lattice_site(test_rng_t *rng, uint32_t i)
+{
+    scene.p[i].x = test_rng_range(rng, 0, lattice_w - 1);
+    scene.p[i].y = test_rng_range(rng, 0, lattice_h - 1);
+    scene.w[i] = test_rng_range(rng, 0, lattice_weight);
+}
+
+static void check_lattice(void)
+{
+    static const int32_t shapes[4][3] = {{7, 2, 12}, {5, 3, 8}, {3, 3, 4}, {9, 2, 30}};
+    for (uint64_t seed = 0; seed < 20u; seed++) {
+        lattice_w = shapes[seed % 4u][0];
+        lattice_h = shapes[seed % 4u][1];
+        lattice_weight = shapes[seed % 4u][2];
+        check_rounds(500u + seed, 4u, 7u, lattice_site);
+    }
+}
+
 /* Coordinates near 2^30, weights near 2^61. */
 static void far_site(test_rng_t *rng, uint32_t i)
 {
@@ -840,7 +892,8 @@ static void check_line_build(void)
  *   0 random (small and wide spans), 1 grid with equal weights,
  *   2 grid with small weights, 3 coincident (two points, many weights),
  *   4 far (coordinates near 2^30, weights near 2^61), 5 on one line,
- *   6 on one line with a point off it now and then.
+ *   6 on one line with a point off it now and then, 7 on a 5 x 3 lattice
+ *   with weights up to 8.
  * Grids use even coordinates, so that integer queries hit midpoints. */
 static void family_site(unsigned family, test_rng_t *rng, vor_point_t *p, int64_t *w)
 {
@@ -868,6 +921,11 @@ static void family_site(unsigned family, test_rng_t *rng, vor_point_t *p, int64_
         p->x = (int32_t)(1073741824 - test_rng_range(rng, 0, 3) * 1000000);
         p->y = (int32_t)(-1073741824 + test_rng_range(rng, 0, 3) * 1000000);
         *w = ((int64_t)1 << 61) + (int64_t)test_rng_range(rng, 0, 1 << 30) * 4096;
+        break;
+    case 7:
+        p->x = test_rng_range(rng, 0, 4);
+        p->y = test_rng_range(rng, 0, 2);
+        *w = test_rng_range(rng, 0, 8);
         break;
     default:
         p->x = 2 * t;
@@ -1220,6 +1278,7 @@ void test_power(void)
     TEST_CASE("brute/grid_weights") check_grid_brute(false);
     TEST_CASE("brute/coincident") check_coincident();
     TEST_CASE("brute/far") check_far();
+    TEST_CASE("brute/lattice") check_lattice();
     TEST_CASE("collinear") check_collinear();
     TEST_CASE("large/random") check_large(0, 100);
     TEST_CASE("large/full_range") check_large(1, 200);
@@ -1227,7 +1286,7 @@ void test_power(void)
     TEST_CASE("dynamic/arguments") check_dynamic_arguments();
     TEST_CASE("dynamic/nearest_hidden_tie") check_nearest_hidden_tie();
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
-    for (unsigned family = 0; family < 7u; family++) {
+    for (unsigned family = 0; family < 8u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
         }
