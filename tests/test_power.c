@@ -386,6 +386,14 @@ static void check_brute(const scene_t *s)
                   "insert %u: %d", k, err);
         }
     }
+    /* every site again, vertex or hidden: its twin, the diagram unchanged */
+    uint32_t refused = 0;
+    for (uint32_t k = 0; k < grown.n; k++) {
+        uint32_t id = UINT32_MAX;
+        int err = vor_power_insert(&pd, grown.p[k], grown.w[k], &id);
+        refused += ((err == VOR_ERR_DUPLICATE) && (id == k)) ? 1u : 0u;
+    }
+    CHECK(refused == grown.n, "%u of %u sites refused as their own twins", refused, grown.n);
     unsigned long before2 = test_failures();
     check_oracle(&pd, &grown, NULL);
     if (test_failures() != before2) {
@@ -589,7 +597,7 @@ static void lattice_site(test_rng_t *rng, uint32_t i)
 static void check_lattice(void)
 {
     static const int32_t shapes[4][3] = {{7, 2, 12}, {5, 3, 8}, {3, 3, 4}, {9, 2, 30}};
-    for (uint64_t seed = 0; seed < 20u; seed++) {
+    for (uint64_t seed = 0; seed < 100u; seed++) {
         lattice_w = shapes[seed % 4u][0];
         lattice_h = shapes[seed % 4u][1];
         lattice_weight = shapes[seed % 4u][2];
