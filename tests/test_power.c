@@ -819,21 +819,27 @@ static void check_validate_detects(void)
 static void check_line_at_limit(void)
 {
     static vor_power_t pd;
-    for (unsigned k = 0; k < 4u; k++) {
+    /* also at INT32_MAX - 1 and INT32_MIN, where a point moved by two or
+     * the other way would leave int32 (host-sanitize traps on it) */
+    static const int32_t limits[3] = {INT32_MAX, INT32_MAX - 1, INT32_MIN};
+    for (unsigned k = 0; k < 12u; k++) {
         bool vertical = (k % 2u) == 0u;
-        int64_t w = (k < 2u) ? -1000001 : -999999; /* lifted above the chain (hidden), below */
+        int64_t w = ((k / 2u) % 2u == 0u) ? -1000001 : -999999; /* above the chain (hidden), below */
+        int32_t limit = limits[k / 4u];
         vor_point_t p[3];
         for (int32_t i = 0; i < 3; i++) {
             int32_t along = 1000 * (i - 1);
-            p[i] = vertical ? (vor_point_t){INT32_MAX, along} : (vor_point_t){along, INT32_MAX};
+            p[i] = vertical ? (vor_point_t){limit, along} : (vor_point_t){along, limit};
         }
         const int64_t weights[3] = {0, 0, 0};
         CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
                   vor_power_insert(&pd, p[0], weights[0], NULL) == VOR_OK &&
                   vor_power_insert(&pd, p[2], weights[2], NULL) == VOR_OK &&
                   vor_power_insert(&pd, p[1], w, NULL) == VOR_OK &&
-                  vor_power_hidden(&pd, 2) == ((k < 2u) ? 1 : 0) && vor_power_validate(&pd, NULL) == VOR_OK,
-              "a line at the int32 limit (%s, weight %d)", vertical ? "vertical" : "horizontal", (int)w);
+                  vor_power_hidden(&pd, 2) == (((k / 2u) % 2u == 0u) ? 1 : 0) &&
+                  vor_power_validate(&pd, NULL) == VOR_OK,
+              "a line at %d (%s, weight %d)", (int)limit, vertical ? "vertical" : "horizontal",
+              (int)w);
     }
 }
 
