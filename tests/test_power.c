@@ -1305,8 +1305,8 @@ void test_power(void)
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
         }
     }
-    /* more lattice runs, the seeds where a removal meets a junction that
-     * the seeds above miss */
+    /* more lattice runs: 248 moves a site off a line of three, whose
+     * flat triangle beyond the line stays (flats must be set then) */
     static const unsigned lattice_seeds[] = {248};
     for (unsigned k = 0; k < sizeof lattice_seeds / sizeof lattice_seeds[0]; k++) {
         TEST_CASE("dynamic/7/%u", lattice_seeds[k]) check_dynamic(7, 7000u + lattice_seeds[k]);
