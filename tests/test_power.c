@@ -1237,6 +1237,45 @@ static void check_remove_degenerate(void)
     }
 }
 
+/* Removals whose ring has 16 neighbours (RING_MAX, the most a removal
+ * keeps on its stack) or more: a centre among 16 sites near a circle,
+ * no three on a line, so that no triangle is ever flat (the ring's
+ * stars are each looked at, and none is flat); and an apex over 20
+ * sites on a line, whose removal leaves every site on it (no ring
+ * vertex keeps a triangle of area, and the look at every id decides). */
+static void check_remove_wide_ring(void)
+{
+    static const vor_point_t circle[16] = {
+        {9950, 998},   {8814, 4725},   {6336, 7732},   {2894, 9560},   {-986, 9930},  {-4715, 8786},
+        {-7724, 6300}, {-9554, 2850},  {-9926, -1038}, {-8784, -4775}, {-6300, -7792}, {-2852, -9630},
+        {1034, -10010}, {4769, -8876}, {7784, -6400},  {9620, -2960}};
+    static vor_power_t pd;
+    static scene_t model;
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    for (unsigned set = 0; set < 2u; set++) {
+        uint32_t n = (set == 0u) ? 17u : 21u;
+        model.n = n;
+        for (uint32_t i = 0; i < n; i++) {
+            if (set == 0u) {
+                model.p[i] = (i == 0u) ? (vor_point_t){13, -7} : circle[i - 1u];
+            } else {
+                model.p[i] = (i == 0u) ? (vor_point_t){10, 9} : (vor_point_t){(int32_t)i, 0};
+            }
+            model.w[i] = 0;
+            model.dead[i] = false;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
+                  vor_power_build(&pd, model.p, model.w, n, NULL) == VOR_OK,
+              "build set %u", set);
+        CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle");
+        CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove the centre of set %u", set);
+        model.dead[0] = true;
+        check_oracle(&pd, &model, NULL);
+        check_nearest(&pd, &model, &rng);
+    }
+}
+
 /* Failing removals and moves: the arguments the header names. */
 static void check_dynamic_arguments(void)
 {
@@ -1300,6 +1339,7 @@ void test_power(void)
     TEST_CASE("dynamic/arguments") check_dynamic_arguments();
     TEST_CASE("dynamic/nearest_hidden_tie") check_nearest_hidden_tie();
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
+    TEST_CASE("dynamic/remove_wide_ring") check_remove_wide_ring();
     for (unsigned family = 0; family < 8u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
