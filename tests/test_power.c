@@ -684,6 +684,9 @@ static void check_arguments(void)
     vor_power_t before = pd;
     CHECK(vor_power_insert(&pd, (vor_point_t){7, 7}, 0, &id) == VOR_ERR_FULL, "full");
     CHECK(vor_power_insert(&pd, b, 0, &id) == VOR_ERR_DUPLICATE && id == 1u, "duplicate when full");
+    CHECK(vor_power_insert(&pd, a, 0, &id) == VOR_ERR_DUPLICATE && id == 0u, "id 0's when full");
+    CHECK(vor_power_insert(&pd, m, -1000, &id) == VOR_ERR_DUPLICATE && id == 3u,
+          "a hidden site's when full");
     bool same = true;
     for (size_t i = 0; i < sizeof small; i++) {
         same = same && (saved[i] == small[i]);
@@ -697,6 +700,8 @@ static void check_arguments(void)
     static vor_point_t five[5];
     static int64_t five_w[5];
     CHECK(vor_power_build(&pd, five, five_w, 5, NULL) == VOR_ERR_FULL, "build full");
+    CHECK(vor_power_build(&pd, NULL, NULL, 0, NULL) == VOR_OK && vor_power_hidden(&pd, 0) == VOR_ERR_ARG,
+          "build nothing, NULL arrays");
     CHECK(vor_power_hidden(NULL, 0) == VOR_ERR_ARG, "hidden NULL");
     /* one vertex: a lighter site at its point is hidden, and its repeat a
      * duplicate of the hidden one */
