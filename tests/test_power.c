@@ -24,6 +24,7 @@
 
 #define POWER_SITES 320u
 #define POWER_BRUTE 14u
+#define ORACLE_MAX 24u /* the most sites check_oracle takes */
 
 static uint8_t arena[VOR_POWER_ARENA_BYTES(POWER_SITES)]
     __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
@@ -225,8 +226,11 @@ static void check_oracle(const vor_power_t *pd_in, const scene_t *s, const uint3
     vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
     CHECK(vor_power_validate(pd, &why) == VOR_OK, "validate: check %d at %u, site %u",
           (int)why.check, why.triangle, why.site);
-    bool vertex[POWER_BRUTE] = {false};
-    bool cornered[POWER_BRUTE] = {false};
+    bool vertex[ORACLE_MAX] = {false};
+    bool cornered[ORACLE_MAX] = {false};
+    if (!CHECK(s->n <= ORACLE_MAX, "%u sites for the oracle", s->n)) {
+        return;
+    }
     for (uint32_t i = 0; i < s->n; i++) {
         CHECK((dup == NULL) || (dup[i] == first_twin(s, i)), "duplicate_of[%u]", i);
         int hidden = vor_power_hidden(pd, i);
@@ -602,6 +606,37 @@ static void check_lattice(void)
         lattice_h = shapes[seed % 4u][1];
         lattice_weight = shapes[seed % 4u][2];
         check_rounds(500u + seed, 4u, 7u, lattice_site);
+    }
+}
+
+/* vor_power_build in an arena for exactly its n sites (3 to 12): the
+ * plan then sits at the very end of the triangle slots, and for n < 8 so
+ * close to the home slots that it is copied out first; n = 7 in a buffer
+ * of exactly that size (a read past it is AddressSanitizer's). Lattice
+ * scenes, duplicates among them. */
+static void check_tight_build(void)
+{
+    static uint8_t tight[VOR_POWER_ARENA_BYTES(7)] __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+    static vor_power_t pd;
+    static uint32_t dup[POWER_BRUTE];
+    test_rng_t rng;
+    test_rng_seed(&rng, 88);
+    lattice_w = 5;
+    lattice_h = 3;
+    lattice_weight = 8;
+    for (uint32_t n = 3; n <= 12u; n++) {
+        for (unsigned round = 0; round < 20u; round++) {
+            scene.n = n;
+            for (uint32_t i = 0; i < n; i++) {
+                lattice_site(&rng, i);
+            }
+            uint8_t *mem = (n == 7u) ? tight : arena;
+            size_t bytes = (n == 7u) ? sizeof tight : sizeof arena;
+            CHECK(vor_power_init(&pd, mem, bytes, n) == VOR_OK &&
+                      vor_power_build(&pd, scene.p, scene.w, n, dup) == VOR_OK,
+                  "build %u sites in an arena for %u", n, n);
+            check_oracle(&pd, &scene, dup);
+        }
     }
 }
 
@@ -1337,6 +1372,7 @@ void test_power(void)
     TEST_CASE("brute/coincident") check_coincident();
     TEST_CASE("brute/far") check_far();
     TEST_CASE("brute/lattice") check_lattice();
+    TEST_CASE("brute/tight") check_tight_build();
     TEST_CASE("collinear") check_collinear();
     TEST_CASE("large/random") check_large(0, 100);
     TEST_CASE("large/full_range") check_large(1, 200);
