@@ -132,6 +132,9 @@ static int power_of(const scene_t *s, uint32_t a, uint32_t b, uint32_t c, uint32
 /* Builds the scene with vor_power_build into pd (arena). */
 static void build(vor_power_t *pd, uint8_t *mem, const scene_t *s, uint32_t *dup)
 {
+    for (uint32_t i = 0; (dup != NULL) && (i < s->n); i++) {
+        dup[i] = 0xdeadu; /* every entry must be written */
+    }
     CHECK(vor_power_init(pd, mem, sizeof arena, POWER_SITES) == VOR_OK, "init");
     CHECK(vor_power_build(pd, s->p, s->w, s->n, dup) == VOR_OK, "build");
 }
@@ -612,8 +615,9 @@ static void check_lattice(void)
 /* vor_power_build in an arena for exactly its n sites (3 to 12): the
  * plan then sits at the very end of the triangle slots, and for n < 8 so
  * close to the home slots that it is copied out first; n = 7 in a buffer
- * of exactly that size, from arrays of exactly 7 (a read past them is
- * AddressSanitizer's). Lattice scenes, duplicates among them. */
+ * of exactly that size, from and into arrays of exactly 7 (a read or a
+ * write past them is AddressSanitizer's). Lattice scenes, duplicates
+ * among them. */
 static void check_tight_build(void)
 {
     static uint8_t tight[VOR_POWER_ARENA_BYTES(7)] __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
@@ -636,15 +640,20 @@ static void check_tight_build(void)
              * AddressSanitizer's too) */
             static vor_point_t p7[7];
             static int64_t w7[7];
-            for (uint32_t i = 0; (i < n) && (n == 7u); i++) {
-                p7[i] = scene.p[i];
-                w7[i] = scene.w[i];
+            static uint32_t dup7[7];
+            for (uint32_t i = 0; i < n; i++) {
+                dup[i] = 0xdeadu; /* every entry must be written */
+                if (n == 7u) {
+                    p7[i] = scene.p[i];
+                    w7[i] = scene.w[i];
+                    dup7[i] = 0xdeadu;
+                }
             }
             CHECK(vor_power_init(&pd, mem, bytes, n) == VOR_OK &&
                       vor_power_build(&pd, (n == 7u) ? p7 : scene.p, (n == 7u) ? w7 : scene.w, n,
-                                      dup) == VOR_OK,
+                                      (n == 7u) ? dup7 : dup) == VOR_OK,
                   "build %u sites in an arena for %u", n, n);
-            check_oracle(&pd, &scene, dup);
+            check_oracle(&pd, &scene, (n == 7u) ? dup7 : dup);
         }
     }
 }
