@@ -764,6 +764,17 @@ static void check_arguments(void)
           "hidden under the only vertex");
     CHECK((vor_power_insert(&pd, a, 1, &id) == VOR_ERR_DUPLICATE) && (id == 1u),
           "a repeat of the hidden site");
+    /* the arena again, where id 3 was hidden: with three sites, id 3 is
+     * none (its slot still holds the old hidden site's mark) */
+    CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK &&
+              vor_power_insert(&pd, a, 0, NULL) == VOR_OK && vor_power_insert(&pd, b, 0, NULL) == VOR_OK &&
+              vor_power_insert(&pd, c, 0, NULL) == VOR_OK && vor_power_insert(&pd, m, -1000, NULL) == VOR_OK &&
+              vor_power_hidden(&pd, 3) == 1,
+          "id 3 hidden");
+    CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK &&
+              vor_power_insert(&pd, a, 0, NULL) == VOR_OK && vor_power_insert(&pd, b, 0, NULL) == VOR_OK &&
+              vor_power_insert(&pd, c, 0, NULL) == VOR_OK && vor_power_hidden(&pd, 3) == VOR_ERR_ARG,
+          "id 3 no site in a diagram of three");
     vor_power_hidden_iter_t hit;
     uint32_t h;
     CHECK(vor_power_hidden_begin(NULL, &pd) == VOR_ERR_ARG, "hidden begin NULL");
@@ -1328,6 +1339,7 @@ static void check_remove_wide_ring(void)
               "build set %u", set);
         CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle");
         CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove the centre of set %u", set);
+        CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle after the removal");
         model.dead[0] = true;
         check_oracle(&pd, &model, NULL);
         check_nearest(&pd, &model, &rng);
