@@ -1356,6 +1356,17 @@ static void check_dynamic_arguments(void)
     CHECK(vor_power_move(NULL, 0, (vor_point_t){0, 0}, 0, &id) == VOR_ERR_ARG, "move NULL");
     CHECK(vor_power_nearest(NULL, (vor_point_t){0, 0}, VOR_NO_HINT, &id) == VOR_ERR_ARG,
           "nearest NULL");
+    /* two sites at most, one hidden under the other */
+    static uint8_t two[VOR_POWER_ARENA_BYTES(2)] __attribute__((aligned(8)));
+    CHECK(vor_power_init(&pd, two, sizeof two, 2) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){3, 4}, 7, NULL) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){3, 4}, 2, &id) == VOR_OK && id == 1u &&
+              vor_power_hidden(&pd, 1) == 1 && vor_power_hidden(&pd, 0) == 0 &&
+              vor_power_validate(&pd, NULL) == VOR_OK,
+          "a hidden site in a diagram of two");
+    CHECK(vor_power_remove(&pd, 1) == VOR_OK && vor_power_hidden(&pd, 1) == VOR_ERR_ARG &&
+              vor_power_hidden(&pd, 0) == 0,
+          "the hidden one removed");
     /* one site at most: no triangle slots */
     CHECK(vor_power_init(&pd, one, sizeof one, 1) == VOR_OK, "init one");
     CHECK(vor_power_remove(&pd, 0) == VOR_ERR_ARG, "remove unused");
