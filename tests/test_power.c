@@ -1346,6 +1346,56 @@ static void check_remove_wide_ring(void)
     }
 }
 
+/* A removal that leaves a flat ear in a diagram with no flat triangle
+ * before: b on the segment a-c with its lifted point on theirs, x above
+ * the line, v and y below, none of the others three on a line; v goes.
+ * The ears below the line may take a, b, c (the perturbation decides),
+ * whose flat triangle then holds b inside the edge of the true one
+ * across: its settling needs flats set by some ring vertex's star. In
+ * shuffled insertion orders, so that the ring starts anywhere, and under
+ * the square's symmetries. */
+static void check_remove_flat_ear(void)
+{
+    static const vor_point_t pts[7] = {{0, 0}, {2, 0}, {4, 0}, {1, 3}, {3, -1}, {1, -4}, {5, -3}};
+    static const int64_t ws[7] = {0, -4, 0, 0, 0, 0, 0};
+    static vor_power_t pd;
+    static scene_t model;
+    test_rng_t rng;
+    test_rng_seed(&rng, 99);
+    for (unsigned round = 0; round < 240u; round++) {
+        unsigned sym = round % 8u; /* the square's symmetries: swap, negate x, negate y */
+        uint32_t order[7] = {0, 1, 2, 3, 4, 5, 6};
+        for (uint32_t i = 7; i > 1u; i--) {
+            uint32_t j = test_rng_u32(&rng) % i;
+            uint32_t t = order[i - 1u];
+            order[i - 1u] = order[j];
+            order[j] = t;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+        model.n = 7;
+        uint32_t victim = 0;
+        for (uint32_t i = 0; i < 7u; i++) {
+            vor_point_t q = pts[order[i]];
+            q = ((sym & 1u) != 0u) ? (vor_point_t){q.y, q.x} : q;
+            q.x = ((sym & 2u) != 0u) ? -q.x : q.x;
+            q.y = ((sym & 4u) != 0u) ? -q.y : q.y;
+            model.p[i] = q;
+            model.w[i] = ws[order[i]];
+            model.dead[i] = false;
+            victim = (order[i] == 4u) ? i : victim;
+            CHECK(vor_power_insert(&pd, model.p[i], model.w[i], NULL) == VOR_OK, "insert");
+        }
+        unsigned long before = test_failures();
+        CHECK(vor_power_remove(&pd, victim) == VOR_OK, "remove v");
+        model.dead[victim] = true;
+        check_oracle(&pd, &model, NULL);
+        if (test_failures() != before) {
+            test_printf("round %u\n", round);
+            return;
+        }
+    }
+}
+
 /* Failing removals and moves: the arguments the header names. */
 static void check_dynamic_arguments(void)
 {
@@ -1422,6 +1472,7 @@ void test_power(void)
     TEST_CASE("dynamic/nearest_hidden_tie") check_nearest_hidden_tie();
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
     TEST_CASE("dynamic/remove_wide_ring") check_remove_wide_ring();
+    TEST_CASE("dynamic/remove_flat_ear") check_remove_flat_ear();
     for (unsigned family = 0; family < 8u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
