@@ -614,13 +614,14 @@ static void check_lattice(void)
 
 /* vor_power_build in an arena for exactly its n sites (3 to 12): the
  * plan then sits at the very end of the triangle slots, and for n < 8 so
- * close to the home slots that it is copied out first; n = 7 in a buffer
- * of exactly that size, from and into arrays of exactly 7 (a read or a
- * write past them is AddressSanitizer's). Lattice scenes, duplicates
+ * close to the home slots that it is copied out first; n = 6 and 7 in
+ * buffers of exactly that size, n = 7 from and into arrays of exactly 7
+ * (a read or a write past them is AddressSanitizer's). Lattice scenes, duplicates
  * among them. */
 static void check_tight_build(void)
 {
     static uint8_t tight[VOR_POWER_ARENA_BYTES(7)] __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+    static uint8_t tight6[VOR_POWER_ARENA_BYTES(6)] __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
     static vor_power_t pd;
     static uint32_t dup[POWER_BRUTE];
     test_rng_t rng;
@@ -634,8 +635,8 @@ static void check_tight_build(void)
             for (uint32_t i = 0; i < n; i++) {
                 lattice_site(&rng, i);
             }
-            uint8_t *mem = (n == 7u) ? tight : arena;
-            size_t bytes = (n == 7u) ? sizeof tight : sizeof arena;
+            uint8_t *mem = (n == 7u) ? tight : (n == 6u) ? tight6 : arena;
+            size_t bytes = (n == 7u) ? sizeof tight : (n == 6u) ? sizeof tight6 : sizeof arena;
             /* n = 7 from arrays of exactly 7 (a read past them is
              * AddressSanitizer's too) */
             static vor_point_t p7[7];
