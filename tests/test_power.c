@@ -1415,6 +1415,11 @@ static void check_dynamic_arguments(void)
               vor_power_hidden(&pd, 1) == 1 && vor_power_hidden(&pd, 0) == 0 &&
               vor_power_validate(&pd, NULL) == VOR_OK,
           "a hidden site in a diagram of two");
+    vor_power_hidden_iter_t it;
+    uint32_t h = 99;
+    CHECK(vor_power_hidden_begin(&it, &pd) == VOR_OK && vor_power_hidden_next(&it, NULL) == 0 &&
+              vor_power_hidden_next(&it, &h) == 1 && h == 1u && vor_power_hidden_next(&it, &h) == 0,
+          "the hidden list of a diagram of two (and no place to report one)");
     CHECK(vor_power_remove(&pd, 1) == VOR_OK && vor_power_hidden(&pd, 1) == VOR_ERR_ARG &&
               vor_power_hidden(&pd, 0) == 0,
           "the hidden one removed");
