@@ -865,6 +865,18 @@ static void check_validate_detects(void)
     pd.mesh.low = (vor_point_t){-2, -1};
     CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY),
           "a reflex hull: check %d", (int)why.check);
+    /* three sites, one moved across the line of the other two: the one
+     * finite triangle turns clockwise (the box widened to keep it in) */
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){10, 0}, 0, &id) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){0, 10}, 0, &id) == VOR_OK &&
+              vor_power_validate(&pd, NULL) == VOR_OK,
+          "a triangle");
+    pd.mesh.sites[2] = (vor_point_t){0, -10};
+    pd.mesh.low = (vor_point_t){0, -10};
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_ORIENTATION),
+          "a clockwise triangle: check %d", (int)why.check);
     /* on a line: the middle site hidden above the chain, then made heavy */
     CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
     CHECK((vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK) &&
