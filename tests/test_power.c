@@ -840,6 +840,17 @@ static void check_validate_detects(void)
           "a heavier vertex");
     CHECK(vor_power_validate(&pd, NULL) == VOR_ERR_INVALID, "a heavier vertex, no report asked");
     pd.weights[12] = 0;
+    /* each vertex made heavy in turn: some edge of its link is no longer
+     * regular, whichever corner of the triangles it is opposite */
+    uint32_t missed = 0;
+    for (uint32_t v = 0; v < 25u; v++) {
+        pd.weights[v] = 1000000;
+        missed += (vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY)
+                      ? 0u
+                      : 1u;
+        pd.weights[v] = 0;
+    }
+    CHECK(missed == 0u, "%u heavy vertices not found", missed);
     /* the hidden site made heavy: below the surface */
     pd.weights[id] = 1000000;
     CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
