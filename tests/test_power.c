@@ -863,6 +863,20 @@ static void check_validate_detects(void)
           "the hidden list");
     pd.hidden_count--;
     CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid again");
+    /* the count says fewer: the list's last entry is one too many */
+    pd.hidden_count--;
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
+              (why.site == id),
+          "a hidden list longer than its count: check %d", (int)why.check);
+    pd.hidden_count++;
+    /* a neighbour link broken: the topology's check reports it, before
+     * any geometric one */
+    vor_index_t link = pd.mesh.triangles[0].n[0];
+    pd.mesh.triangles[0].n[0] = pd.mesh.triangles[0].n[1];
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_NEIGHBOURS),
+          "a broken link: check %d", (int)why.check);
+    pd.mesh.triangles[0].n[0] = link;
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid once more");
     /* a hull made reflex: a corner moved beyond the line of an edge, its
      * triangle still counterclockwise (the box widened to keep it in) */
     CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
