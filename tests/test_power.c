@@ -717,6 +717,7 @@ static void check_arguments(void)
     CHECK(vor_power_init(&pd, small, sizeof small, 0) == VOR_ERR_ARG, "0 sites");
     CHECK(vor_power_init(&pd, small + 4, sizeof small - 4, 3) == VOR_ERR_ALIGN, "align");
     CHECK(vor_power_init(&pd, small, sizeof small - 1, 4) == VOR_ERR_NOMEM, "nomem");
+    CHECK(vor_power_init(&pd, small, sizeof small, VOR_MAX_SITES) == VOR_ERR_NOMEM, "nomem at the most");
     CHECK(vor_power_init_checked(&pd, small, sizeof small, 4, 0u) == VOR_ERR_CONFIG, "config");
     CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK, "init");
     uint32_t id = 99;
@@ -854,8 +855,8 @@ static void check_validate_detects(void)
     /* the hidden site made heavy: below the surface */
     pd.weights[id] = 1000000;
     CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
-              (why.site == id),
-          "a hidden site below the surface");
+              (why.site == id) && (why.triangle == 0u),
+          "a hidden site below the surface (in no triangle: 0)");
     pd.weights[id] = -500;
     /* the count says more hidden sites than the list holds */
     pd.hidden_count++;
@@ -869,6 +870,13 @@ static void check_validate_detects(void)
               (why.site == id),
           "a hidden list longer than its count: check %d", (int)why.check);
     pd.hidden_count++;
+    /* the hidden list naming a vertex */
+    uint32_t first = pd.first_hidden;
+    pd.first_hidden = 1; /* site 0, a vertex */
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
+              (why.site == 0u),
+          "a vertex on the hidden list: check %d, site %u", (int)why.check, why.site);
+    pd.first_hidden = first;
     /* a neighbour link broken: the topology's check reports it, before
      * any geometric one */
     vor_index_t link = pd.mesh.triangles[0].n[0];
