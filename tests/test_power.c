@@ -860,8 +860,9 @@ static void check_validate_detects(void)
     pd.weights[id] = -500;
     /* the count says more hidden sites than the list holds */
     pd.hidden_count++;
-    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_COUNTS),
-          "the hidden list");
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_COUNTS) &&
+              (why.triangle == 0u),
+          "the hidden list (in no triangle: 0)");
     pd.hidden_count--;
     CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid again");
     /* the count says fewer: the list's last entry is one too many */
