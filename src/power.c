@@ -689,6 +689,9 @@ static int place(vor_power_t *pd, uint32_t p, uint32_t start_in, uint32_t twins,
         }
         pd->area = true; /* p off the line: its triangles have area */
         hidden = false;  /* a new hull vertex */
+        /* three vertices or more on the line hold flat triangles, and
+         * those beyond the line from p stay */
+        pd->flats = pd->flats || (d->vertex_count >= 3u);
     }
     if (hidden || ((under != VOR__NONE) && (w[p] < w[under]))) {
         hide(pd, p);

@@ -20,9 +20,11 @@
  */
 #include "test.h"
 #include "vor_power.h"
+#include "mesh.h" /* white box: the mesh's triangles, for the flags' check */
 
 #define POWER_SITES 320u
 #define POWER_BRUTE 14u
+#define ORACLE_MAX 24u /* the most sites check_oracle takes */
 
 static uint8_t arena[VOR_POWER_ARENA_BYTES(POWER_SITES)]
     __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
@@ -130,6 +132,9 @@ static int power_of(const scene_t *s, uint32_t a, uint32_t b, uint32_t c, uint32
 /* Builds the scene with vor_power_build into pd (arena). */
 static void build(vor_power_t *pd, uint8_t *mem, const scene_t *s, uint32_t *dup)
 {
+    for (uint32_t i = 0; (dup != NULL) && (i < s->n); i++) {
+        dup[i] = 0xdeadu; /* every entry must be written */
+    }
     CHECK(vor_power_init(pd, mem, sizeof arena, POWER_SITES) == VOR_OK, "init");
     CHECK(vor_power_build(pd, s->p, s->w, s->n, dup) == VOR_OK, "build");
 }
@@ -183,6 +188,30 @@ static int line_status(const scene_t *s, uint32_t i)
     return status;
 }
 
+/* The object's flags as vor_power.h states them: `area` exactly when a
+ * triangle of nonzero area is reported (got of them), and with area,
+ * `flats` whenever the mesh holds a finite triangle of no area (the
+ * exact orientation of its stored corners): the changes settle flat
+ * triangles only while it is set. (Without area every triangle is flat
+ * and the one-dimensional rules decide, whatever `flats` says.) */
+static void check_flags(const vor_power_t *pd, uint32_t got)
+{
+    const vor_t *d = &pd->mesh;
+    CHECK(pd->area == (got > 0u), "area %d with %u triangles", (int)pd->area, got);
+    uint32_t flat = 0;
+    uint32_t end = vor__used_slots_end(d);
+    for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
+         slot = vor__next_used_slot(d, slot + 1u)) {
+        vor_index_t v[3];
+        vor__vertices(&d->triangles[slot], v);
+        if ((v[0] != VOR__INFINITE) && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
+            (vor_orient2d(d->sites[v[0]], d->sites[v[1]], d->sites[v[2]]) == 0)) {
+            flat++;
+        }
+    }
+    CHECK(!pd->area || pd->flats || (flat == 0u), "%u flat triangles, flats not set", flat);
+}
+
 /*
  * The brute-force check. V: the sites vor_power reports as vertices.
  *   1. the reported triangles are those of nonzero area of the perturbed
@@ -200,8 +229,11 @@ static void check_oracle(const vor_power_t *pd_in, const scene_t *s, const uint3
     vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
     CHECK(vor_power_validate(pd, &why) == VOR_OK, "validate: check %d at %u, site %u",
           (int)why.check, why.triangle, why.site);
-    bool vertex[POWER_BRUTE] = {false};
-    bool cornered[POWER_BRUTE] = {false};
+    bool vertex[ORACLE_MAX] = {false};
+    bool cornered[ORACLE_MAX] = {false};
+    if (!CHECK(s->n <= ORACLE_MAX, "%u sites for the oracle", s->n)) {
+        return;
+    }
     for (uint32_t i = 0; i < s->n; i++) {
         CHECK((dup == NULL) || (dup[i] == first_twin(s, i)), "duplicate_of[%u]", i);
         int hidden = vor_power_hidden(pd, i);
@@ -239,6 +271,7 @@ static void check_oracle(const vor_power_t *pd_in, const scene_t *s, const uint3
     }
     sort_tris(tris_b, expected);
     uint32_t got = read_tris(pd, tris_a);
+    check_flags(pd, got);
     if (!CHECK(same_tris(tris_a, got, tris_b, expected), "triangles: %u, brute force %u", got,
                expected)) {
         for (uint32_t i = 0; i < s->n; i++) {
@@ -360,6 +393,14 @@ static void check_brute(const scene_t *s)
                   "insert %u: %d", k, err);
         }
     }
+    /* every site again, vertex or hidden: its twin, the diagram unchanged */
+    uint32_t refused = 0;
+    for (uint32_t k = 0; k < grown.n; k++) {
+        uint32_t id = UINT32_MAX;
+        int err = vor_power_insert(&pd, grown.p[k], grown.w[k], &id);
+        refused += ((err == VOR_ERR_DUPLICATE) && (id == k)) ? 1u : 0u;
+    }
+    CHECK(refused == grown.n, "%u of %u sites refused as their own twins", refused, grown.n);
     unsigned long before2 = test_failures();
     check_oracle(&pd, &grown, NULL);
     if (test_failures() != before2) {
@@ -545,6 +586,79 @@ static void check_coincident(void)
     check_rounds(21, 4u, POWER_BRUTE - 3u, coincident_site);
 }
 
+/* Tiny scenes on small lattices (7 x 2, 5 x 3, 3 x 3) with small
+ * weights: many sites on the lines of hull edges, many lifted points on
+ * planes and chains (the degenerate cases of the flips and of the
+ * settling of flat triangles). */
+static int32_t lattice_w;
+static int32_t lattice_h;
+static int32_t lattice_weight;
+
+static void lattice_site(test_rng_t *rng, uint32_t i)
+{
+    scene.p[i].x = test_rng_range(rng, 0, lattice_w - 1);
+    scene.p[i].y = test_rng_range(rng, 0, lattice_h - 1);
+    scene.w[i] = test_rng_range(rng, 0, lattice_weight);
+}
+
+static void check_lattice(void)
+{
+    static const int32_t shapes[4][3] = {{7, 2, 12}, {5, 3, 8}, {3, 3, 4}, {9, 2, 30}};
+    for (uint64_t seed = 0; seed < 1000u; seed++) {
+        lattice_w = shapes[seed % 4u][0];
+        lattice_h = shapes[seed % 4u][1];
+        lattice_weight = shapes[seed % 4u][2];
+        check_rounds(500u + seed, 4u, 7u, lattice_site);
+    }
+}
+
+/* vor_power_build in an arena for exactly its n sites (3 to 12): the
+ * plan then sits at the very end of the triangle slots, and for n < 8 so
+ * close to the home slots that it is copied out first; n = 6 and 7 in
+ * buffers of exactly that size, n = 7 from and into arrays of exactly 7
+ * (a read or a write past them is AddressSanitizer's). Lattice scenes, duplicates
+ * among them. */
+static void check_tight_build(void)
+{
+    static uint8_t tight[VOR_POWER_ARENA_BYTES(7)] __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+    static uint8_t tight6[VOR_POWER_ARENA_BYTES(6)] __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
+    static vor_power_t pd;
+    static uint32_t dup[POWER_BRUTE];
+    test_rng_t rng;
+    test_rng_seed(&rng, 88);
+    lattice_w = 5;
+    lattice_h = 3;
+    lattice_weight = 8;
+    for (uint32_t n = 3; n <= 12u; n++) {
+        for (unsigned round = 0; round < 20u; round++) {
+            scene.n = n;
+            for (uint32_t i = 0; i < n; i++) {
+                lattice_site(&rng, i);
+            }
+            uint8_t *mem = (n == 7u) ? tight : (n == 6u) ? tight6 : arena;
+            size_t bytes = (n == 7u) ? sizeof tight : (n == 6u) ? sizeof tight6 : sizeof arena;
+            /* n = 7 from arrays of exactly 7 (a read past them is
+             * AddressSanitizer's too) */
+            static vor_point_t p7[7];
+            static int64_t w7[7];
+            static uint32_t dup7[7];
+            for (uint32_t i = 0; i < n; i++) {
+                dup[i] = 0xdeadu; /* every entry must be written */
+                if (n == 7u) {
+                    p7[i] = scene.p[i];
+                    w7[i] = scene.w[i];
+                    dup7[i] = 0xdeadu;
+                }
+            }
+            CHECK(vor_power_init(&pd, mem, bytes, n) == VOR_OK &&
+                      vor_power_build(&pd, (n == 7u) ? p7 : scene.p, (n == 7u) ? w7 : scene.w, n,
+                                      (n == 7u) ? dup7 : dup) == VOR_OK,
+                  "build %u sites in an arena for %u", n, n);
+            check_oracle(&pd, &scene, (n == 7u) ? dup7 : dup);
+        }
+    }
+}
+
 /* Coordinates near 2^30, weights near 2^61. */
 static void far_site(test_rng_t *rng, uint32_t i)
 {
@@ -603,6 +717,7 @@ static void check_arguments(void)
     CHECK(vor_power_init(&pd, small, sizeof small, 0) == VOR_ERR_ARG, "0 sites");
     CHECK(vor_power_init(&pd, small + 4, sizeof small - 4, 3) == VOR_ERR_ALIGN, "align");
     CHECK(vor_power_init(&pd, small, sizeof small - 1, 4) == VOR_ERR_NOMEM, "nomem");
+    CHECK(vor_power_init(&pd, small, sizeof small, VOR_MAX_SITES) == VOR_ERR_NOMEM, "nomem at the most");
     CHECK(vor_power_init_checked(&pd, small, sizeof small, 4, 0u) == VOR_ERR_CONFIG, "config");
     CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK, "init");
     uint32_t id = 99;
@@ -624,6 +739,9 @@ static void check_arguments(void)
     vor_power_t before = pd;
     CHECK(vor_power_insert(&pd, (vor_point_t){7, 7}, 0, &id) == VOR_ERR_FULL, "full");
     CHECK(vor_power_insert(&pd, b, 0, &id) == VOR_ERR_DUPLICATE && id == 1u, "duplicate when full");
+    CHECK(vor_power_insert(&pd, a, 0, &id) == VOR_ERR_DUPLICATE && id == 0u, "id 0's when full");
+    CHECK(vor_power_insert(&pd, m, -1000, &id) == VOR_ERR_DUPLICATE && id == 3u,
+          "a hidden site's when full");
     bool same = true;
     for (size_t i = 0; i < sizeof small; i++) {
         same = same && (saved[i] == small[i]);
@@ -637,6 +755,8 @@ static void check_arguments(void)
     static vor_point_t five[5];
     static int64_t five_w[5];
     CHECK(vor_power_build(&pd, five, five_w, 5, NULL) == VOR_ERR_FULL, "build full");
+    CHECK(vor_power_build(&pd, NULL, NULL, 0, NULL) == VOR_OK && vor_power_hidden(&pd, 0) == VOR_ERR_ARG,
+          "build nothing, NULL arrays");
     CHECK(vor_power_hidden(NULL, 0) == VOR_ERR_ARG, "hidden NULL");
     /* one vertex: a lighter site at its point is hidden, and its repeat a
      * duplicate of the hidden one */
@@ -646,6 +766,17 @@ static void check_arguments(void)
           "hidden under the only vertex");
     CHECK((vor_power_insert(&pd, a, 1, &id) == VOR_ERR_DUPLICATE) && (id == 1u),
           "a repeat of the hidden site");
+    /* the arena again, where id 3 was hidden: with three sites, id 3 is
+     * none (its slot still holds the old hidden site's mark) */
+    CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK &&
+              vor_power_insert(&pd, a, 0, NULL) == VOR_OK && vor_power_insert(&pd, b, 0, NULL) == VOR_OK &&
+              vor_power_insert(&pd, c, 0, NULL) == VOR_OK && vor_power_insert(&pd, m, -1000, NULL) == VOR_OK &&
+              vor_power_hidden(&pd, 3) == 1,
+          "id 3 hidden");
+    CHECK(vor_power_init(&pd, small, sizeof small, 4) == VOR_OK &&
+              vor_power_insert(&pd, a, 0, NULL) == VOR_OK && vor_power_insert(&pd, b, 0, NULL) == VOR_OK &&
+              vor_power_insert(&pd, c, 0, NULL) == VOR_OK && vor_power_hidden(&pd, 3) == VOR_ERR_ARG,
+          "id 3 no site in a diagram of three");
     vor_power_hidden_iter_t hit;
     uint32_t h;
     CHECK(vor_power_hidden_begin(NULL, &pd) == VOR_ERR_ARG, "hidden begin NULL");
@@ -710,18 +841,51 @@ static void check_validate_detects(void)
           "a heavier vertex");
     CHECK(vor_power_validate(&pd, NULL) == VOR_ERR_INVALID, "a heavier vertex, no report asked");
     pd.weights[12] = 0;
+    /* each vertex made heavy in turn: some edge of its link is no longer
+     * regular, whichever corner of the triangles it is opposite */
+    uint32_t missed = 0;
+    for (uint32_t v = 0; v < 25u; v++) {
+        pd.weights[v] = 1000000;
+        missed += (vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY)
+                      ? 0u
+                      : 1u;
+        pd.weights[v] = 0;
+    }
+    CHECK(missed == 0u, "%u heavy vertices not found", missed);
     /* the hidden site made heavy: below the surface */
     pd.weights[id] = 1000000;
     CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
-              (why.site == id),
-          "a hidden site below the surface");
+              (why.site == id) && (why.triangle == 0u),
+          "a hidden site below the surface (in no triangle: 0)");
     pd.weights[id] = -500;
     /* the count says more hidden sites than the list holds */
     pd.hidden_count++;
-    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_COUNTS),
-          "the hidden list");
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_COUNTS) &&
+              (why.triangle == 0u),
+          "the hidden list (in no triangle: 0)");
     pd.hidden_count--;
     CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid again");
+    /* the count says fewer: the list's last entry is one too many */
+    pd.hidden_count--;
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
+              (why.site == id),
+          "a hidden list longer than its count: check %d", (int)why.check);
+    pd.hidden_count++;
+    /* the hidden list naming a vertex */
+    uint32_t first = pd.first_hidden;
+    pd.first_hidden = 1; /* site 0, a vertex */
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY) &&
+              (why.site == 0u),
+          "a vertex on the hidden list: check %d, site %u", (int)why.check, why.site);
+    pd.first_hidden = first;
+    /* a neighbour link broken: the topology's check reports it, before
+     * any geometric one */
+    vor_index_t link = pd.mesh.triangles[0].n[0];
+    pd.mesh.triangles[0].n[0] = pd.mesh.triangles[0].n[1];
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_NEIGHBOURS),
+          "a broken link: check %d", (int)why.check);
+    pd.mesh.triangles[0].n[0] = link;
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid once more");
     /* a hull made reflex: a corner moved beyond the line of an edge, its
      * triangle still counterclockwise (the box widened to keep it in) */
     CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
@@ -735,6 +899,18 @@ static void check_validate_detects(void)
     pd.mesh.low = (vor_point_t){-2, -1};
     CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_DELAUNAY),
           "a reflex hull: check %d", (int)why.check);
+    /* three sites, one moved across the line of the other two: the one
+     * finite triangle turns clockwise (the box widened to keep it in) */
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){10, 0}, 0, &id) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){0, 10}, 0, &id) == VOR_OK &&
+              vor_power_validate(&pd, NULL) == VOR_OK,
+          "a triangle");
+    pd.mesh.sites[2] = (vor_point_t){0, -10};
+    pd.mesh.low = (vor_point_t){0, -10};
+    CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) && (why.check == VOR_CHECK_ORIENTATION),
+          "a clockwise triangle: check %d", (int)why.check);
     /* on a line: the middle site hidden above the chain, then made heavy */
     CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
     CHECK((vor_power_insert(&pd, (vor_point_t){0, 0}, 0, &id) == VOR_OK) &&
@@ -759,21 +935,27 @@ static void check_validate_detects(void)
 static void check_line_at_limit(void)
 {
     static vor_power_t pd;
-    for (unsigned k = 0; k < 4u; k++) {
+    /* also at INT32_MAX - 1 and INT32_MIN, where a point moved by two or
+     * the other way would leave int32 (host-sanitize traps on it) */
+    static const int32_t limits[3] = {INT32_MAX, INT32_MAX - 1, INT32_MIN};
+    for (unsigned k = 0; k < 12u; k++) {
         bool vertical = (k % 2u) == 0u;
-        int64_t w = (k < 2u) ? -1000001 : -999999; /* lifted above the chain (hidden), below */
+        int64_t w = ((k / 2u) % 2u == 0u) ? -1000001 : -999999; /* above the chain (hidden), below */
+        int32_t limit = limits[k / 4u];
         vor_point_t p[3];
         for (int32_t i = 0; i < 3; i++) {
             int32_t along = 1000 * (i - 1);
-            p[i] = vertical ? (vor_point_t){INT32_MAX, along} : (vor_point_t){along, INT32_MAX};
+            p[i] = vertical ? (vor_point_t){limit, along} : (vor_point_t){along, limit};
         }
         const int64_t weights[3] = {0, 0, 0};
         CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
                   vor_power_insert(&pd, p[0], weights[0], NULL) == VOR_OK &&
                   vor_power_insert(&pd, p[2], weights[2], NULL) == VOR_OK &&
                   vor_power_insert(&pd, p[1], w, NULL) == VOR_OK &&
-                  vor_power_hidden(&pd, 2) == ((k < 2u) ? 1 : 0) && vor_power_validate(&pd, NULL) == VOR_OK,
-              "a line at the int32 limit (%s, weight %d)", vertical ? "vertical" : "horizontal", (int)w);
+                  vor_power_hidden(&pd, 2) == (((k / 2u) % 2u == 0u) ? 1 : 0) &&
+                  vor_power_validate(&pd, NULL) == VOR_OK,
+              "a line at %d (%s, weight %d)", (int)limit, vertical ? "vertical" : "horizontal",
+              (int)w);
     }
 }
 
@@ -840,7 +1022,8 @@ static void check_line_build(void)
  *   0 random (small and wide spans), 1 grid with equal weights,
  *   2 grid with small weights, 3 coincident (two points, many weights),
  *   4 far (coordinates near 2^30, weights near 2^61), 5 on one line,
- *   6 on one line with a point off it now and then.
+ *   6 on one line with a point off it now and then, 7 on a 5 x 3 lattice
+ *   with weights up to 8.
  * Grids use even coordinates, so that integer queries hit midpoints. */
 static void family_site(unsigned family, test_rng_t *rng, vor_point_t *p, int64_t *w)
 {
@@ -868,6 +1051,11 @@ static void family_site(unsigned family, test_rng_t *rng, vor_point_t *p, int64_
         p->x = (int32_t)(1073741824 - test_rng_range(rng, 0, 3) * 1000000);
         p->y = (int32_t)(-1073741824 + test_rng_range(rng, 0, 3) * 1000000);
         *w = ((int64_t)1 << 61) + (int64_t)test_rng_range(rng, 0, 1 << 30) * 4096;
+        break;
+    case 7:
+        p->x = test_rng_range(rng, 0, 4);
+        p->y = test_rng_range(rng, 0, 2);
+        *w = test_rng_range(rng, 0, 8);
         break;
     default:
         p->x = 2 * t;
@@ -1165,6 +1353,96 @@ static void check_remove_degenerate(void)
     }
 }
 
+/* Removals whose ring has 16 neighbours (RING_MAX, the most a removal
+ * keeps on its stack) or more: a centre among 16 sites near a circle,
+ * no three on a line, so that no triangle is ever flat (the ring's
+ * stars are each looked at, and none is flat); and an apex over 20
+ * sites on a line, whose removal leaves every site on it (no ring
+ * vertex keeps a triangle of area, and the look at every id decides). */
+static void check_remove_wide_ring(void)
+{
+    static const vor_point_t circle[16] = {
+        {9950, 998},   {8814, 4725},   {6336, 7732},   {2894, 9560},   {-986, 9930},  {-4715, 8786},
+        {-7724, 6300}, {-9554, 2850},  {-9926, -1038}, {-8784, -4775}, {-6300, -7792}, {-2852, -9630},
+        {1034, -10010}, {4769, -8876}, {7784, -6400},  {9620, -2960}};
+    static vor_power_t pd;
+    static scene_t model;
+    test_rng_t rng;
+    test_rng_seed(&rng, 77);
+    for (unsigned set = 0; set < 2u; set++) {
+        uint32_t n = (set == 0u) ? 17u : 21u;
+        model.n = n;
+        for (uint32_t i = 0; i < n; i++) {
+            if (set == 0u) {
+                model.p[i] = (i == 0u) ? (vor_point_t){13, -7} : circle[i - 1u];
+            } else {
+                model.p[i] = (i == 0u) ? (vor_point_t){10, 9} : (vor_point_t){(int32_t)i, 0};
+            }
+            model.w[i] = 0;
+            model.dead[i] = false;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
+                  vor_power_build(&pd, model.p, model.w, n, NULL) == VOR_OK,
+              "build set %u", set);
+        CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle");
+        CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove the centre of set %u", set);
+        CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle after the removal");
+        model.dead[0] = true;
+        check_oracle(&pd, &model, NULL);
+        check_nearest(&pd, &model, &rng);
+    }
+}
+
+/* A removal that leaves a flat ear in a diagram with no flat triangle
+ * before: b on the segment a-c with its lifted point on theirs, x above
+ * the line, v and y below, none of the others three on a line; v goes.
+ * The ears below the line may take a, b, c (the perturbation decides),
+ * whose flat triangle then holds b inside the edge of the true one
+ * across: its settling needs flats set by some ring vertex's star. In
+ * shuffled insertion orders, so that the ring starts anywhere, and under
+ * the square's symmetries. */
+static void check_remove_flat_ear(void)
+{
+    static const vor_point_t pts[7] = {{0, 0}, {2, 0}, {4, 0}, {1, 3}, {3, -1}, {1, -4}, {5, -3}};
+    static const int64_t ws[7] = {0, -4, 0, 0, 0, 0, 0};
+    static vor_power_t pd;
+    static scene_t model;
+    test_rng_t rng;
+    test_rng_seed(&rng, 99);
+    for (unsigned round = 0; round < 240u; round++) {
+        unsigned sym = round % 8u; /* the square's symmetries: swap, negate x, negate y */
+        uint32_t order[7] = {0, 1, 2, 3, 4, 5, 6};
+        for (uint32_t i = 7; i > 1u; i--) {
+            uint32_t j = test_rng_u32(&rng) % i;
+            uint32_t t = order[i - 1u];
+            order[i - 1u] = order[j];
+            order[j] = t;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+        model.n = 7;
+        uint32_t victim = 0;
+        for (uint32_t i = 0; i < 7u; i++) {
+            vor_point_t q = pts[order[i]];
+            q = ((sym & 1u) != 0u) ? (vor_point_t){q.y, q.x} : q;
+            q.x = ((sym & 2u) != 0u) ? -q.x : q.x;
+            q.y = ((sym & 4u) != 0u) ? -q.y : q.y;
+            model.p[i] = q;
+            model.w[i] = ws[order[i]];
+            model.dead[i] = false;
+            victim = (order[i] == 4u) ? i : victim;
+            CHECK(vor_power_insert(&pd, model.p[i], model.w[i], NULL) == VOR_OK, "insert");
+        }
+        unsigned long before = test_failures();
+        CHECK(vor_power_remove(&pd, victim) == VOR_OK, "remove v");
+        model.dead[victim] = true;
+        check_oracle(&pd, &model, NULL);
+        if (test_failures() != before) {
+            test_printf("round %u\n", round);
+            return;
+        }
+    }
+}
+
 /* Failing removals and moves: the arguments the header names. */
 static void check_dynamic_arguments(void)
 {
@@ -1175,6 +1453,22 @@ static void check_dynamic_arguments(void)
     CHECK(vor_power_move(NULL, 0, (vor_point_t){0, 0}, 0, &id) == VOR_ERR_ARG, "move NULL");
     CHECK(vor_power_nearest(NULL, (vor_point_t){0, 0}, VOR_NO_HINT, &id) == VOR_ERR_ARG,
           "nearest NULL");
+    /* two sites at most, one hidden under the other */
+    static uint8_t two[VOR_POWER_ARENA_BYTES(2)] __attribute__((aligned(8)));
+    CHECK(vor_power_init(&pd, two, sizeof two, 2) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){3, 4}, 7, NULL) == VOR_OK &&
+              vor_power_insert(&pd, (vor_point_t){3, 4}, 2, &id) == VOR_OK && id == 1u &&
+              vor_power_hidden(&pd, 1) == 1 && vor_power_hidden(&pd, 0) == 0 &&
+              vor_power_validate(&pd, NULL) == VOR_OK,
+          "a hidden site in a diagram of two");
+    vor_power_hidden_iter_t it;
+    uint32_t h = 99;
+    CHECK(vor_power_hidden_begin(&it, &pd) == VOR_OK && vor_power_hidden_next(&it, NULL) == 0 &&
+              vor_power_hidden_next(&it, &h) == 1 && h == 1u && vor_power_hidden_next(&it, &h) == 0,
+          "the hidden list of a diagram of two (and no place to report one)");
+    CHECK(vor_power_remove(&pd, 1) == VOR_OK && vor_power_hidden(&pd, 1) == VOR_ERR_ARG &&
+              vor_power_hidden(&pd, 0) == 0,
+          "the hidden one removed");
     /* one site at most: no triangle slots */
     CHECK(vor_power_init(&pd, one, sizeof one, 1) == VOR_OK, "init one");
     CHECK(vor_power_remove(&pd, 0) == VOR_ERR_ARG, "remove unused");
@@ -1220,6 +1514,8 @@ void test_power(void)
     TEST_CASE("brute/grid_weights") check_grid_brute(false);
     TEST_CASE("brute/coincident") check_coincident();
     TEST_CASE("brute/far") check_far();
+    TEST_CASE("brute/lattice") check_lattice();
+    TEST_CASE("brute/tight") check_tight_build();
     TEST_CASE("collinear") check_collinear();
     TEST_CASE("large/random") check_large(0, 100);
     TEST_CASE("large/full_range") check_large(1, 200);
@@ -1227,9 +1523,17 @@ void test_power(void)
     TEST_CASE("dynamic/arguments") check_dynamic_arguments();
     TEST_CASE("dynamic/nearest_hidden_tie") check_nearest_hidden_tie();
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
-    for (unsigned family = 0; family < 7u; family++) {
+    TEST_CASE("dynamic/remove_wide_ring") check_remove_wide_ring();
+    TEST_CASE("dynamic/remove_flat_ear") check_remove_flat_ear();
+    for (unsigned family = 0; family < 8u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
         }
+    }
+    /* more lattice runs: 248 moves a site off a line of three, whose
+     * flat triangle beyond the line stays (flats must be set then) */
+    static const unsigned lattice_seeds[] = {248};
+    for (unsigned k = 0; k < sizeof lattice_seeds / sizeof lattice_seeds[0]; k++) {
+        TEST_CASE("dynamic/7/%u", lattice_seeds[k]) check_dynamic(7, 7000u + lattice_seeds[k]);
     }
 }
