@@ -97,13 +97,16 @@ COMMON = ['-std=c99', '-O1', '-Iinclude', '-Isrc', '-Iport', '-Itests', '-Itests
           '-DVOR_STATS=1']
 # The library traps on a failed assertion, as in the test build, on a
 # shift by the operand's width or more (x86 masks the count, so such a
-# mutant would pass here where ARM and RISC-V give 0) and on an index past
-# an array's end: the sanitizer suites of make test reject both.
+# mutant would pass here where ARM and RISC-V give 0), on an index past
+# an array's end and on a signed overflow (which x86 wraps, so that a
+# mutant overflowing at the int32 limits can compute the same answer by
+# luck): the sanitizer suites of make test reject all three.
 # A mutant that is not ISO C99 (a zero-size array: gcc's extension, which
 # the bounds sanitizer does not check) does not compile, as in the
 # -pedantic -Werror builds of make test; other warnings are only printed.
 LIB_FLAGS = ['-ffreestanding', '-DVOR_ASSERT(x)=do { if (!(x)) __builtin_trap(); } while (0)',
-             '-fsanitize=shift,bounds-strict', '-fsanitize-undefined-trap-on-error', '-pedantic-errors']
+             '-fsanitize=shift,bounds-strict,signed-integer-overflow',
+             '-fsanitize-undefined-trap-on-error', '-pedantic-errors']
 TEST_FLAGS = ['-w', '-DTEST_STOP_AT_FAILURE']
 
 # ------------------------------------------------------------ C tokens
