@@ -2952,7 +2952,8 @@ static void add_piece(centroid_sum_t *sum, const clip_frame_t *f, const uint32_t
 {
     bool first_loop = sum->vertices == 0u;
     geo_point_t p;
-    for (uint32_t i = 0; i < r; i++) {
+    uint32_t i = 0;
+    do { /* a piece has 3 lines at least: the first and last are set here */
         clip_vertex(f, lines[(i == 0u) ? (r - 1u) : (i - 1u)], lines[i], &p);
         if (first_loop) {
             add_vertex(sum, &p);
@@ -2964,7 +2965,8 @@ static void add_piece(centroid_sum_t *sum, const clip_frame_t *f, const uint32_t
             }
             copy_point(&sum->previous, &p);
         }
-    }
+        i++;
+    } while (i < r);
     if (!first_loop) {
         sum->vertices++;
     }
