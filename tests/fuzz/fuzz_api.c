@@ -1223,7 +1223,8 @@ static void op_clip(fuzz_reader_t *r, model_t *m, vor_point_t *previous)
                          c.point.y >= y0 && c.point.y <= y1,
                      "clip: a piece's centroid failed or outside the room's box");
         if (box_room) {
-            vor_box_t box = {room[0].x, room[0].y, room[2].x, room[2].y};
+            /* the room's box: its corners in either orientation */
+            vor_box_t box = {(int32_t)x0, (int32_t)y0, (int32_t)x1, (int32_t)y1};
             vor_point_t cell[VOR_CELL_MAX_VERTICES(MOST_SITES)];
             uint32_t k = 0;
             FUZZ_REQUIRE(vor_cell(&m->d, site, &box, cell, VOR_CELL_MAX_VERTICES(MOST_SITES), &k) ==
