@@ -1042,6 +1042,10 @@ typedef struct vor_exact_point {
  * private except `pieces`, how many there are (0: the cell does not meet
  * the room in an area). Valid while the diagram, the room and the scratch
  * are unchanged. */
+struct vor__clip_frame;
+struct vor__line;
+typedef void vor__pair_line_fn(const struct vor__clip_frame *f, uint32_t name,
+                               struct vor__line *line);
 typedef struct vor_clip {
     const vor_t *d;          /* NULL: closed (a failed begin) */
     const vor_point_t *room;
@@ -1059,6 +1063,9 @@ typedef struct vor_clip {
     uint32_t order;          /* K */
     uint32_t others;
     uint32_t shift;          /* a pair's line name: (other << shift) | i */
+    vor__pair_line_fn *pair_line; /* order K: a pair's line, else NULL
+                                (stored by the order-K begin, so that a
+                                firmware without it links none of it) */
     size_t needed;           /* after VOR_ERR_BUFFER from a begin: the
                                 scratch bytes it needs (else 0) */
 } vor_clip_t;

@@ -47,7 +47,7 @@
 #define U64_LIMBS VOR__LIMBS(64u)
 
 /* A line a x + b y = c in a site's doubled frame. */
-typedef struct geo_line {
+typedef struct vor__line {
     int64_t a;
     int64_t b;
     vor__limb c[GEO_LIMBS];
@@ -1713,18 +1713,20 @@ int vor_power_cell_centroid(const vor_power_t *pd, uint32_t site, const vor_box_
 #define CLIP_ENTRY 1u
 #define CLIP_SAME 0x80000000u /* a chain's join to the next has length 0 */
 
-typedef struct clip_frame {
+typedef struct vor__clip_frame {
     cell_t cell; /* d, site, s: the bisectors and their frame */
     const vor_point_t *room;
     uint32_t room_count;
     bool reversed;
     /* order K: the set's K sites, then its `others` other neighbours;
-     * line (j << shift) | i is the bisector of set[i] and other j. NULL
-     * for order 1, whose lines are named by the neighbour alone. */
+     * line (j << shift) | i is the bisector of set[i] and other j, which
+     * pair_line computes. NULL for order 1, whose lines are named by
+     * the neighbour alone. */
     const uint32_t *set;
     uint32_t order;
     uint32_t others;
     uint32_t shift;
+    vor__pair_line_fn *pair_line;
 } clip_frame_t;
 
 /* The room's vertex i in counterclockwise order. */
@@ -1756,13 +1758,10 @@ static void clip_line(const clip_frame_t *f, uint32_t name, geo_line_t *l)
 {
     if (name >= ROOM_LINE) {
         room_line(f, name - ROOM_LINE, l);
-    } else if (f->set == NULL) {
+    } else if (f->pair_line == NULL) {
         cell_bisector(&f->cell, name, l);
     } else {
-        const vor_point_t *p = f->cell.d->sites;
-        uint32_t i = name & ((1u << f->shift) - 1u);
-        uint32_t j = name >> f->shift;
-        pair_bisector(l, f->cell.s, &p[f->set[i]], &p[f->set[f->order + j]]);
+        f->pair_line(f, name, l);
     }
 }
 
@@ -2134,6 +2133,7 @@ static void close_clip(vor_clip_t *clip, int error)
     clip->order = 0;
     clip->others = 0;
     clip->shift = 0;
+    clip->pair_line = NULL;
     clip->needed = 0;
 }
 
@@ -2152,6 +2152,7 @@ static void begin_frame(clip_frame_t *f, const vor_t *d, uint32_t site, const vo
     f->order = 1;
     f->others = 0;
     f->shift = 0;
+    f->pair_line = NULL;
 }
 
 /* The frame of a begun iterator. */
@@ -2162,6 +2163,7 @@ static void frame_of(clip_frame_t *f, const vor_clip_t *clip)
     f->order = clip->order;
     f->others = clip->others;
     f->shift = clip->shift;
+    f->pair_line = clip->pair_line;
 }
 
 /* The work lists laid out in words[] for lines of `capacity` (the layout
@@ -2253,6 +2255,7 @@ static void finish_clip(vor_clip_t *clip, clip_work_t *w, const clip_frame_t *f)
     clip->order = f->order;
     clip->others = f->others;
     clip->shift = f->shift;
+    clip->pair_line = f->pair_line;
     clip->needed = 0;
 }
 
@@ -2415,6 +2418,18 @@ static void sort_ids(uint32_t *ids, uint32_t k)
     }
 }
 
+/* Line (j << shift) | i of an order-K frame: the bisector of set[i] and
+ * other j. Reached only through the frame's pointer, which
+ * vor_order_cell_begin sets, so that a firmware clipping order-1 cells
+ * links none of it. */
+static void pair_line(const clip_frame_t *f, uint32_t name, geo_line_t *l)
+{
+    const vor_point_t *p = f->cell.d->sites;
+    uint32_t i = name & ((1u << f->shift) - 1u);
+    uint32_t j = name >> f->shift;
+    pair_bisector(l, f->cell.s, &p[f->set[i]], &p[f->set[f->order + j]]);
+}
+
 /* The order-k cell of a checked set in a checked room, into the scratch:
  * the set sorted, its other neighbours, k spare words (*spare, for the
  * walk), then the work lists. */
@@ -2447,6 +2462,7 @@ static int order_cell(vor_clip_t *clip, const vor_t *d, const uint32_t *set, uin
     f.order = k;
     f.others = others;
     f.shift = vor__mw_bit_length32(k - 1u);
+    f.pair_line = pair_line;
     clip_work_t w;
     start_work(&w, &f, words + (2u * k) + others, capacity);
     for (uint32_t j = 0; (j < others) && (w.in_pieces > 0u); j++) {
@@ -2713,6 +2729,7 @@ static void copy_clip(vor_clip_t *to, const vor_clip_t *from)
     to->order = from->order;
     to->others = from->others;
     to->shift = from->shift;
+    to->pair_line = from->pair_line;
     to->needed = from->needed;
 }
 

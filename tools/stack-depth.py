@@ -71,7 +71,8 @@ TABLE_CALLS = {"raster.c": (r"write_(label8|label16|label32|rgb565|rgb888)",
                                               "the constraints' or the motion cache's upkeep"),
                "incremental.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)"),
                "mesh.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)"),
-               "divide_conquer.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)")}
+               "divide_conquer.c": (r"vor__cdt_update", "the constraints' upkeep (vor_cdt_attach)"),
+               "geometry.c": (r"pair_line", "an order-K cell's pair lines (vor_order_cell_begin)")}
 CALLER_CALLBACKS = {"vor_raster": "the caller's flush callback",
                     "vor_raster_euclid": "the caller's flush callback",
                     "vor_field_raster": "the caller's flush callback",
