@@ -4,10 +4,9 @@
  * (what a coverage controller in a non-convex room calls). */
 #include "common.h"
 
-#define ROOM 6u
 static vor_point_t points[SIZE_SITES];
-static uint32_t clip_scratch[VOR_CLIP_SCRATCH_BYTES(ROOM, SIZE_SITES) / 4u + 1u];
-static vor_exact_point_t piece[VOR_CLIP_MAX_VERTICES(ROOM, SIZE_SITES)];
+static uint32_t clip_scratch[VOR_CLIP_SCRATCH_BYTES(SIZE_L_ROOM, SIZE_SITES) / 4u + 1u];
+static vor_exact_point_t piece[VOR_CLIP_MAX_VERTICES(SIZE_L_ROOM, SIZE_SITES)];
 static uint8_t centroid_scratch[VOR_CENTROID_SCRATCH_BYTES(16)];
 
 SIZE_ARENA(size_arena);
@@ -19,14 +18,16 @@ int main(void)
     size_points(points);
     int acc = vor_init(&d, size_arena, sizeof size_arena, SIZE_SITES);
     acc |= vor_build(&d, points, SIZE_SITES, NULL, NULL);
-    int32_t x0 = size_x(2), y0 = size_y(2), x1 = size_x(3), y1 = size_y(3);
-    vor_point_t room[ROOM] = {{x0, y0}, {x1, y0}, {x1, y1 / 2}, {x1 / 2, y1 / 2}, {x1 / 2, y1}, {x0, y1}};
+    vor_point_t room[SIZE_L_ROOM];
+    size_l_room(room);
     for (uint32_t s = 0; s < SIZE_SITES; s++) {
         vor_clip_t clip;
-        if (vor_clip_begin(&clip, &d, s, room, ROOM, clip_scratch, sizeof clip_scratch) != VOR_OK) {
+        if (vor_clip_begin(&clip, &d, s, room, SIZE_L_ROOM, clip_scratch, sizeof clip_scratch) !=
+            VOR_OK) {
             continue;
         }
-        while (vor_clip_next(&clip, piece, VOR_CLIP_MAX_VERTICES(ROOM, SIZE_SITES), &count) > 0) {
+        while (vor_clip_next(&clip, piece, VOR_CLIP_MAX_VERTICES(SIZE_L_ROOM, SIZE_SITES),
+                             &count) > 0) {
             acc += (int)count;
         }
         vor_centroid_t centroid;

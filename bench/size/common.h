@@ -31,4 +31,19 @@ static inline void size_points(vor_point_t *points)
     }
 }
 
+/* An L-shaped room of SIZE_L_ROOM vertices, counterclockwise, in the box
+ * (x0, y0) - (x1, y1) of the input's sites 2 and 3: the room the clipping
+ * programs cut cells by. */
+#define SIZE_L_ROOM 6u
+static inline void size_l_room(vor_point_t *room)
+{
+    int32_t x0 = size_x(2), y0 = size_y(2), x1 = size_x(3), y1 = size_y(3);
+    int32_t xs[SIZE_L_ROOM] = {x0, x1, x1, x1 / 2, x1 / 2, x0};
+    int32_t ys[SIZE_L_ROOM] = {y0, y0, y1 / 2, y1 / 2, y1, y1};
+    for (uint32_t i = 0; i < SIZE_L_ROOM; i++) {
+        room[i].x = xs[i];
+        room[i].y = ys[i];
+    }
+}
+
 #endif

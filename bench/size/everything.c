@@ -20,12 +20,11 @@ SIZE_ARENA(size_arena);
 static uint8_t power_arena[VOR_POWER_ARENA_BYTES(SIZE_SITES)]
     __attribute__((aligned(VOR_POWER_ARENA_ALIGN)));
 static int64_t power_weights[SIZE_SITES];
-#define ROOM 6u
 static uint32_t triangles_flat[3u * VOR_TRIANGLES_MAX(SIZE_SITES)];
 static uint32_t halfedges[3u * VOR_TRIANGLES_MAX(SIZE_SITES)];
-static uint32_t order_scratch[VOR_ORDER_SCRATCH_BYTES(ROOM, SIZE_SITES, 2u) / 4u + 1u];
+static uint32_t order_scratch[VOR_ORDER_SCRATCH_BYTES(SIZE_L_ROOM, SIZE_SITES, 2u) / 4u + 1u];
 static uint32_t order_sets[VOR_ORDER_SETS_WORDS(VOR_ORDER_MAX_CELLS(SIZE_SITES, 2u), 2u)];
-static vor_exact_point_t piece[VOR_CLIP_MAX_VERTICES(ROOM, SIZE_SITES)];
+static vor_exact_point_t piece[VOR_CLIP_MAX_VERTICES(SIZE_L_ROOM, SIZE_SITES)];
 
 int main(void)
 {
@@ -81,20 +80,22 @@ int main(void)
     acc |= vor_cell(&d, site, &box, cell, VOR_CELL_MAX_VERTICES(SIZE_SITES), &count);
     vor_centroid_t centroid;
     acc |= vor_cell_centroid(&d, site, &box, centroid_scratch, sizeof centroid_scratch, &centroid);
-    vor_point_t room[ROOM] = {{box.x0, box.y0}, {box.x1, box.y0}, {box.x1, box.y1 / 2},
-                              {box.x1 / 2, box.y1 / 2}, {box.x1 / 2, box.y1}, {box.x0, box.y1}};
+    vor_point_t room[SIZE_L_ROOM];
+    size_l_room(room);
     vor_clip_t clip;
-    acc |= vor_clip_begin(&clip, &d, site, room, ROOM, order_scratch, sizeof order_scratch);
-    while (vor_clip_next(&clip, piece, VOR_CLIP_MAX_VERTICES(ROOM, SIZE_SITES), &count) > 0) {
+    acc |= vor_clip_begin(&clip, &d, site, room, SIZE_L_ROOM, order_scratch,
+                          sizeof order_scratch);
+    while (vor_clip_next(&clip, piece, VOR_CLIP_MAX_VERTICES(SIZE_L_ROOM, SIZE_SITES), &count) >
+           0) {
         acc += (int)count;
     }
     acc |= vor_clip_error(&clip);
     acc |= vor_clip_centroid(&clip, VOR_CLIP_WHOLE, centroid_scratch, sizeof centroid_scratch,
                              &centroid);
-    acc |= vor_order_cell_begin(&clip, &d, ids, 2u, room, ROOM, order_scratch,
+    acc |= vor_order_cell_begin(&clip, &d, ids, 2u, room, SIZE_L_ROOM, order_scratch,
                                 sizeof order_scratch);
     vor_order_iter_t order;
-    acc |= vor_order_cells_begin(&order, &d, 2u, room, ROOM, order_sets,
+    acc |= vor_order_cells_begin(&order, &d, 2u, room, SIZE_L_ROOM, order_sets,
                                  (uint32_t)VOR_ORDER_MAX_CELLS(SIZE_SITES, 2u), order_scratch,
                                  sizeof order_scratch);
     while (vor_order_cells_next(&order, ids, &clip) > 0) {
