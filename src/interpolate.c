@@ -257,47 +257,10 @@ enum ip_walk {
     WALK_BROKEN = 3   /* the step bound ran out: only on a broken mesh */
 };
 
-/* The index (0..2) of the vertex of t that is neither a nor b. */
-static unsigned third_index(const vor__tri_t *t, vor_index_t a, vor_index_t b)
-{
-    unsigned i = 0;
-    while ((i < 2u) && ((vor__vertex(t, i) == a) || (vor__vertex(t, i) == b))) {
-        i++;
-    }
-    return i;
-}
-
 /* Is p strictly between a and b, for p on the line ab? */
 static bool between(const vor_point_t *p, const vor_point_t *a, const vor_point_t *b)
 {
     return (vor__closer_sign(a, p, b, NULL) < 0) && (vor__closer_sign(b, p, a, NULL) < 0);
-}
-
-/* q strictly inside hull edge (edge[0], edge[1]) with slot behind it:
- * narrows the edge through flat triangles to the two sites around q on
- * the hull line (q is no site). Each step drops a site: bounded by the
- * vertex count. */
-static void narrow_edge(const vor_t *d, vor_index_t behind, const vor_point_t *q, uint32_t edge[2])
-{
-    const vor_point_t *s = d->sites;
-    vor_index_t slot = behind;
-    for (uint32_t left = d->vertex_count; left > 0u; left--) {
-        const vor__tri_t *t = &d->triangles[slot];
-        vor_index_t a = (vor_index_t)edge[0];
-        vor_index_t b = (vor_index_t)edge[1];
-        unsigned i = third_index(t, a, b);
-        vor_index_t m = vor__vertex(t, i);
-        if ((m == VOR__INFINITE) || !hull_side(d, slot) || !between(&s[m], &s[a], &s[b])) {
-            return;
-        }
-        if (vor__closer_sign(&s[a], q, &s[m], NULL) < 0) {
-            edge[1] = m; /* q between a and m: on to the triangle across a m */
-            slot = t->n[vor__vertex_index(t, b)];
-        } else {
-            edge[0] = m;
-            slot = t->n[vor__vertex_index(t, a)];
-        }
-    }
 }
 
 /* Records the circumcentre of triangle `slot` in p_{i+1}'s run (once per
@@ -379,10 +342,12 @@ static enum ip_walk walk_boundary(const vor_t *d, const vor_point_t *q, vor_inde
                     return WALK_OUTSIDE;
                 }
                 if (side == 0) {
-                    /* on the line, inside the circle: inside the edge */
+                    /* on the line, inside the circle: inside the edge.
+                     * No site lies strictly between v and x: it would
+                     * lie strictly inside the circle of the Delaunay
+                     * triangle t, so q's neighbours are v and x. */
                     edge[0] = v;
                     edge[1] = x;
-                    narrow_edge(d, across, q, edge);
                     return WALK_EDGE;
                 }
             }
