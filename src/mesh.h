@@ -336,7 +336,7 @@ static inline bool vor__fan_next(vor_neighbour_iter_t *it, uint32_t *neighbour, 
  * iterator and geometry.c walk them). vor__used_slots_end is one past the
  * last extra slot (v - 2 extras for v >= 2 sites); vor__next_used_slot is
  * the next used slot at or after `slot`, or that end when none is left. */
-VOR__ALWAYS_INLINE uint32_t vor__used_slots_end(const vor_t *d)
+VOR__SHARED_INLINE uint32_t vor__used_slots_end(const vor_t *d)
 {
     return d->max_sites + ((d->vertex_count >= 2u) ? (d->vertex_count - 2u) : 0u);
 }

@@ -49,6 +49,16 @@
 #else
 #define VOR__INLINE VOR__ALWAYS_INLINE
 #endif
+/* The reverse, for a small helper several public calls share: forced
+ * inline at -Os, where its one out-of-line copy would come with any of
+ * them (a firmware iterating triangles would link what only vor_locate
+ * needs); left to the compiler otherwise, which inlines it where that
+ * pays. */
+#if defined(__OPTIMIZE_SIZE__)
+#define VOR__SHARED_INLINE VOR__ALWAYS_INLINE
+#else
+#define VOR__SHARED_INLINE static inline
+#endif
 
 /* Loops that only colder code calls: the compiler weighs inlining as for
  * a file's own static function (a header's static inline is inlined far

@@ -175,7 +175,7 @@ static inline int vor__orient_query(const vor_point_t *a, const vor_point_t *b,
  * circumcircle is a half-plane in the limit, empty only on a side of a
  * hull line, so dropping those leaves a triangulation of the hull.
  * Of a triangle's decoded vertices v. */
-VOR__ALWAYS_INLINE bool vor__reported_vertices(const vor_point_t *s, const vor_index_t v[3])
+VOR__SHARED_INLINE bool vor__reported_vertices(const vor_point_t *s, const vor_index_t v[3])
 {
     return v[0] != VOR__INFINITE && (v[1] != VOR__INFINITE) && (v[2] != VOR__INFINITE) &&
            vor__orient2d_exact(&s[v[0]], &s[v[1]], &s[v[2]], NULL) != 0;
