@@ -344,9 +344,10 @@ enum vor_error {
                                vor_config.h options (VOR_CONFIG_FINGERPRINT) */
     VOR_ERR_STOPPED = -10,  /* vor_raster: the caller's flush asked to stop */
     VOR_ERR_CONSTRAINED = -11, /* vor_remove, vor_move: the site ends a constrained edge */
-    VOR_ERR_OUTSIDE = -12,    /* vor_sibson, vor_interpolate: the point is outside the
-                                 convex hull of the sites */
-    VOR_ERR_POLYGON = -13     /* vor_clip_begin: the room is not a simple polygon */
+    VOR_ERR_OUTSIDE = -12,    /* vor_locate, vor_sibson, vor_interpolate: the point is
+                                 outside the convex hull of the sites */
+    VOR_ERR_POLYGON = -13     /* vor_clip_begin, vor_order_cell(s)_begin: the room is
+                                 not a simple polygon */
 };
 
 #if VOR_INDEX_BITS == 16
@@ -1026,7 +1027,8 @@ typedef struct vor_exact_point {
 #define VOR_CLIP_MAX_VERTICES(m, n) ((4u * (uint32_t)(m)) + (uint32_t)(n) + 3u)
 
 /* Bytes of scratch vor_clip_begin needs for a room of m vertices and a
- * diagram of n sites (a constant expression; any alignment): 7 words a
+ * diagram of n sites (max_sites is enough; a constant expression; any
+ * alignment): 7 words a
  * vertex of VOR_CLIP_MAX_VERTICES(m, n), 4m + n + 3, and 36 bytes. It holds the
  * pieces while the iterator reads them. */
 #define VOR_CLIP_SCRATCH_BYTES(m, n)                                           \
@@ -1157,8 +1159,11 @@ int vor_clip_centroid(const vor_clip_t *clip, uint32_t piece, void *scratch,
  * closed, so a point where the K-th and (K+1)-th nearest sites are at
  * the same distance lies on the boundary of every cell that tie allows:
  * in particular in the cell of the K sites vor_raster_nearest labels it
- * with (ties to the smaller index). Duplicates count once: the sites
- * are the distinct ones, named by the ids in the mesh. The cells with
+ * with (ties to the smaller index) when given the distinct sites.
+ * Duplicates count once: the sites are the distinct ones, named by the
+ * ids in the mesh. Where more than K + 1 sites are equally far, a cell
+ * the tie allows may be a point or a segment only, which the walk (cells
+ * with an area) does not visit. The cells with
  * an area tile the room. Pieces, vertices, areas and centroids are those
  * of vor_clip_begin (vor_clip_next, vor_clip_centroid), exact; order 1
  * gives vor_clip_begin's pieces.
@@ -1168,7 +1173,8 @@ int vor_clip_centroid(const vor_clip_t *clip, uint32_t piece, void *scratch,
 #define VOR_ORDER_MAX 1024u
 
 /* Bytes of scratch vor_order_cell_begin needs for a room of m vertices,
- * n distinct sites and order k (a constant expression, 1 <= k < n; any
+ * n distinct sites (or more: the bytes grow with n, so max_sites is
+ * enough) and order k (a constant expression, 1 <= k < n; any
  * alignment): the pieces of up to k (n - k) bisectors' cuts, as
  * VOR_CLIP_SCRATCH_BYTES, and n + k words for the sites. A set whose K
  * sites have c other Delaunay neighbours needs only
