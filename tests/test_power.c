@@ -1356,9 +1356,12 @@ static void check_remove_degenerate(void)
 /* Removals whose ring has 16 neighbours (RING_MAX, the most a removal
  * keeps on its stack) or more: a centre among 16 sites near a circle,
  * no three on a line, so that no triangle is ever flat (the ring's
- * stars are each looked at, and none is flat); and an apex over 20
- * sites on a line, whose removal leaves every site on it (no ring
- * vertex keeps a triangle of area, and the look at every id decides). */
+ * stars are each looked at, and none is flat); an apex over 20 sites
+ * on a line, whose removal leaves every site on it (no ring vertex
+ * keeps a triangle of area, and the look at every id decides); and a
+ * heavy centre among the 16 sites of a square's sides, 5 a side, whose
+ * removal leaves flat ears along the sides: the 16 stars are settled
+ * (a ring that fills the stack exactly). */
 static void check_remove_wide_ring(void)
 {
     static const vor_point_t circle[16] = {
@@ -1369,24 +1372,43 @@ static void check_remove_wide_ring(void)
     static scene_t model;
     test_rng_t rng;
     test_rng_seed(&rng, 77);
-    for (unsigned set = 0; set < 2u; set++) {
-        uint32_t n = (set == 0u) ? 17u : 21u;
+    for (unsigned set = 0; set < 3u; set++) {
+        uint32_t n = (set == 1u) ? 21u : 17u;
         model.n = n;
         for (uint32_t i = 0; i < n; i++) {
             if (set == 0u) {
                 model.p[i] = (i == 0u) ? (vor_point_t){13, -7} : circle[i - 1u];
-            } else {
+            } else if (set == 1u) {
                 model.p[i] = (i == 0u) ? (vor_point_t){10, 9} : (vor_point_t){(int32_t)i, 0};
+            } else { /* the square's sides from (0, 0), counterclockwise */
+                uint32_t k = i - 1u;
+                int32_t t = (int32_t)(k % 4u) * 10;
+                static const vor_point_t corner[4] = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
+                static const vor_point_t step[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+                model.p[i] = (i == 0u) ? (vor_point_t){20, 20}
+                                       : (vor_point_t){corner[k / 4u].x + (step[k / 4u].x * t),
+                                                       corner[k / 4u].y + (step[k / 4u].y * t)};
             }
-            model.w[i] = 0;
+            model.w[i] = ((set == 2u) && (i == 0u)) ? 600 : 0;
             model.dead[i] = false;
         }
         CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK &&
                   vor_power_build(&pd, model.p, model.w, n, NULL) == VOR_OK,
               "build set %u", set);
-        CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle");
+        CHECK(!pd.flats || (set != 0u), "no flat triangle in the circle");
+        if (set == 2u) {
+            vor_neighbour_iter_t it;
+            uint32_t neighbours = 0;
+            uint32_t id;
+            CHECK(vor_neighbours_begin(&it, &pd.mesh, 0) == VOR_OK, "the square's centre");
+            while (vor_neighbours_next(&it, &id) > 0) {
+                neighbours++;
+            }
+            CHECK(neighbours == 16u, "the square's centre has %u neighbours, not 16", neighbours);
+        }
         CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove the centre of set %u", set);
-        CHECK(!pd.flats || (set == 1u), "no flat triangle in the circle after the removal");
+        CHECK(!pd.flats || (set != 0u), "no flat triangle in the circle after the removal");
+        CHECK(pd.flats || (set != 2u), "flat ears along the square's sides");
         model.dead[0] = true;
         check_oracle(&pd, &model, NULL);
         check_nearest(&pd, &model, &rng);
