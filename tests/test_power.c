@@ -927,6 +927,77 @@ static void check_validate_detects(void)
     CHECK(vor_power_validate(&pd, &why) == VOR_ERR_INVALID, "a hidden site off the line");
 }
 
+/* vor_power_validate's regularity check looks at every edge of every
+ * triangle: a convex quadrilateral inserted in each of its 24 orders (the
+ * order decides at which corners the mesh stores its diagonal), one end
+ * of the diagonal's far side made heavy, so that the diagonal is the one
+ * edge no longer regular; it must be found whichever corner of its two
+ * triangles it is opposite. At least one order stores it opposite no
+ * corner 0 (white box: the mesh's slots), else the check looking at one
+ * corner only would pass. */
+static void check_validate_each_corner(void)
+{
+    static const vor_point_t quad[4] = {{0, 0}, {10, 1}, {11, 10}, {1, 9}};
+    static vor_power_t pd;
+    uint32_t off_zero = 0;
+    for (uint32_t k = 0; k < 24u; k++) {
+        uint32_t order[4] = {0, 1, 2, 3};
+        uint32_t rest = k;
+        for (uint32_t i = 0; i < 3u; i++) { /* the k-th permutation */
+            uint32_t j = i + (rest % (4u - i));
+            rest /= 4u - i;
+            uint32_t t = order[i];
+            order[i] = order[j];
+            order[j] = t;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+        for (uint32_t i = 0; i < 4u; i++) {
+            CHECK(vor_power_insert(&pd, quad[order[i]], 0, NULL) == VOR_OK, "insert");
+        }
+        CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid (order %u)", k);
+        /* the two finite triangles: a vertex in one only is a far corner */
+        const vor_t *d = &pd.mesh;
+        uint32_t in[4] = {0, 0, 0, 0};
+        uint32_t end = vor__used_slots_end(d);
+        for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
+             slot = vor__next_used_slot(d, slot + 1u)) {
+            vor_index_t v[3];
+            vor__vertices(&d->triangles[slot], v);
+            if (vor__vertex_index(&d->triangles[slot], VOR__INFINITE) == 3u) {
+                in[v[0]]++;
+                in[v[1]]++;
+                in[v[2]]++;
+            }
+        }
+        uint32_t far = 4;
+        for (uint32_t i = 0; i < 4u; i++) {
+            far = (in[i] == 1u) ? i : far;
+        }
+        if (!CHECK(far < 4u, "no far corner (order %u)", k)) {
+            continue;
+        }
+        /* the far corners are opposite the diagonal: at corner 0 in
+         * neither of the two triangles? */
+        bool zero = false;
+        for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
+             slot = vor__next_used_slot(d, slot + 1u)) {
+            vor_index_t v[3];
+            vor__vertices(&d->triangles[slot], v);
+            if (vor__vertex_index(&d->triangles[slot], VOR__INFINITE) == 3u) {
+                zero = zero || (in[v[0]] == 1u);
+            }
+        }
+        off_zero += zero ? 0u : 1u;
+        vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
+        pd.weights[far] = 1000000;
+        CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) &&
+                  (why.check == VOR_CHECK_DELAUNAY),
+              "a heavy far corner not found (order %u, diagonal %s corner 0)", k,
+              zero ? "opposite" : "not opposite");
+    }
+    CHECK(off_zero > 0u, "no order stores the diagonal away from corner 0");
+}
+
 /* Sites on a vertical and a horizontal line at the int32 limit: the
  * exact one-dimensional test takes its point off the line on the side
  * that stays in int32. The middle site is hidden exactly when the lifted
@@ -1528,6 +1599,7 @@ void test_power(void)
     TEST_CASE("arguments") check_arguments();
     TEST_CASE("heavy_centre") check_heavy_centre();
     TEST_CASE("validate_detects") check_validate_detects();
+    TEST_CASE("validate_each_corner") check_validate_each_corner();
     TEST_CASE("line_at_limit") check_line_at_limit();
     TEST_CASE("remove_on_line") check_remove_on_line();
     TEST_CASE("line_build") check_line_build();
