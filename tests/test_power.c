@@ -1536,6 +1536,59 @@ static void check_remove_flat_ear(void)
     }
 }
 
+/* A removal after which no ring vertex looked at keeps a triangle of
+ * area while the diagram does: an apex over 20 sites on a line whose
+ * lifted points are on one line too (weights x^2 - 4x, the lift 4x), so
+ * that the apex's removal leaves ears the perturbation makes flat, and
+ * one site off the line, beyond its end, whose one true triangle spans
+ * most of the line. The removal's first 16 ring vertices (RING_MAX) then
+ * keep only flat triangles (their cells have no area: the settling hides
+ * them), and the look at every id must find the site off the line, not
+ * id 0 (the apex, removed). The insertion order and so the ids decide
+ * the perturbation: the apex first, the sites from x = 19 up, then down
+ * from x = 18, the site off the line last; the hidden sites are removed
+ * before the apex, so that none is placed again. */
+static void check_remove_flat_run(void)
+{
+    static vor_power_t pd;
+    static scene_t model;
+    model.n = 22;
+    model.p[0] = (vor_point_t){1, 2};
+    model.w[0] = 22;
+    for (uint32_t i = 1; i < 21u; i++) {
+        int32_t x = (i == 1u) ? 19 : ((i == 2u) ? 20 : (int32_t)(21u - i));
+        model.p[i] = (vor_point_t){x, 0};
+        model.w[i] = (int64_t)x * x - 4 * (int64_t)x;
+    }
+    model.p[21] = (vor_point_t){32, 5};
+    model.w[21] = 878;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    for (uint32_t i = 0; i < model.n; i++) {
+        uint32_t id = 99;
+        model.dead[i] = false;
+        CHECK((vor_power_insert(&pd, model.p[i], model.w[i], &id) == VOR_OK) && (id == i),
+              "insert %u", i);
+    }
+    CHECK(vor_power_hidden(&pd, 0) == 0, "the apex is a vertex");
+    for (uint32_t i = 1; i < model.n; i++) {
+        if (vor_power_hidden(&pd, i) == 1) {
+            CHECK(vor_power_remove(&pd, i) == VOR_OK, "remove hidden %u", i);
+            model.dead[i] = true;
+        }
+    }
+    vor_neighbour_iter_t it;
+    uint32_t neighbours = 0;
+    uint32_t id;
+    CHECK(vor_neighbours_begin(&it, &pd.mesh, 0) == VOR_OK, "the apex");
+    while (vor_neighbours_next(&it, &id) > 0) {
+        neighbours++;
+    }
+    CHECK(neighbours > 16u, "the apex has %u neighbours", neighbours);
+    CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove the apex");
+    model.dead[0] = true;
+    check_oracle(&pd, &model, NULL);
+}
+
 /* Failing removals and moves: the arguments the header names. */
 static void check_dynamic_arguments(void)
 {
@@ -1619,6 +1672,7 @@ void test_power(void)
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
     TEST_CASE("dynamic/remove_wide_ring") check_remove_wide_ring();
     TEST_CASE("dynamic/remove_flat_ear") check_remove_flat_ear();
+    TEST_CASE("dynamic/remove_flat_run") check_remove_flat_run();
     for (unsigned family = 0; family < 8u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
