@@ -994,6 +994,47 @@ static void check_validate_each_corner(void)
     }
 }
 
+/* A hidden site exactly on the chain of a one-dimensional diagram (a
+ * cell of no area, which the header lets be hidden): sites at 0 and 10
+ * of a line, weight 0 (lifts 0 and 100, the chain 50 at 5), and one at 5
+ * hidden above the chain (weight -1000), its weight then set to -26,
+ * -25 and -24 (lifts 51, 50 and 49): valid above and on the chain, not
+ * below; on it, the oracle's line check too. On a horizontal and a
+ * vertical line. */
+static void check_validate_on_chain(void)
+{
+    static vor_power_t pd;
+    static scene_t model;
+    for (unsigned k = 0; k < 2u; k++) {
+        bool vertical = k == 1u;
+        model.n = 3;
+        for (uint32_t i = 0; i < 3u; i++) {
+            int32_t along = (i == 2u) ? 5 : (int32_t)(10u * i);
+            model.p[i] = vertical ? (vor_point_t){3, along} : (vor_point_t){along, -2};
+            model.w[i] = (i == 2u) ? -1000 : 0;
+            model.dead[i] = false;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+        for (uint32_t i = 0; i < 3u; i++) {
+            CHECK(vor_power_insert(&pd, model.p[i], model.w[i], NULL) == VOR_OK, "insert %u", i);
+        }
+        CHECK((vor_power_hidden(&pd, 2) == 1) && !pd.area, "hidden above the chain");
+        /* (the other coordinate, the same for all, lifts all alike) */
+        for (int64_t above = 1; above >= -1; above--) {
+            pd.weights[2] = -25 - above;
+            model.w[2] = pd.weights[2];
+            int valid = vor_power_validate(&pd, NULL);
+            CHECK(valid == ((above >= 0) ? VOR_OK : VOR_ERR_INVALID),
+                  "a hidden site %s the chain (%s): %d",
+                  (above > 0) ? "above" : ((above == 0) ? "on" : "below"),
+                  vertical ? "vertical" : "horizontal", valid);
+            if (above == 0) {
+                check_oracle(&pd, &model, NULL);
+            }
+        }
+    }
+}
+
 /* Sites on a vertical and a horizontal line at the int32 limit: the
  * exact one-dimensional test takes its point off the line on the side
  * that stays in int32. The middle site is hidden exactly when the lifted
@@ -1696,6 +1737,7 @@ void test_power(void)
     TEST_CASE("heavy_centre") check_heavy_centre();
     TEST_CASE("validate_detects") check_validate_detects();
     TEST_CASE("validate_each_corner") check_validate_each_corner();
+    TEST_CASE("validate_on_chain") check_validate_on_chain();
     TEST_CASE("line_at_limit") check_line_at_limit();
     TEST_CASE("remove_on_line") check_remove_on_line();
     TEST_CASE("line_build") check_line_build();
