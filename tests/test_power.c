@@ -927,6 +927,114 @@ static void check_validate_detects(void)
     CHECK(vor_power_validate(&pd, &why) == VOR_ERR_INVALID, "a hidden site off the line");
 }
 
+/* vor_power_validate's regularity check looks at every edge of every
+ * triangle: a convex quadrilateral, whose two finite triangles are
+ * rotated in their slots (white box: the same triangles, stored from
+ * another corner; still a valid mesh) so that their shared diagonal is
+ * opposite corner 0, 1, then 2 in both; a far corner made heavy then
+ * leaves the diagonal the one edge no longer regular, which must be
+ * found from whichever corner it is stored opposite. */
+static void check_validate_each_corner(void)
+{
+    static const vor_point_t quad[4] = {{0, 0}, {10, 1}, {11, 10}, {1, 9}};
+    static vor_power_t pd;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    for (uint32_t i = 0; i < 4u; i++) {
+        CHECK(vor_power_insert(&pd, quad[i], 0, NULL) == VOR_OK, "insert");
+    }
+    CHECK(vor_power_validate(&pd, NULL) == VOR_OK, "valid");
+    vor_t *d = &pd.mesh;
+    /* the two finite triangles; a vertex in one only is a far corner */
+    uint32_t slots[2] = {0, 0};
+    uint32_t found = 0;
+    uint32_t in[4] = {0, 0, 0, 0};
+    uint32_t end = vor__used_slots_end(d);
+    for (uint32_t slot = vor__next_used_slot(d, 0); slot < end;
+         slot = vor__next_used_slot(d, slot + 1u)) {
+        vor_index_t v[3];
+        vor__vertices(&d->triangles[slot], v);
+        if ((vor__vertex_index(&d->triangles[slot], VOR__INFINITE) == 3u) && (found < 2u)) {
+            slots[found++] = slot;
+            in[v[0]]++;
+            in[v[1]]++;
+            in[v[2]]++;
+        }
+    }
+    uint32_t far = 4;
+    for (uint32_t i = 0; i < 4u; i++) {
+        far = (in[i] == 1u) ? i : far;
+    }
+    if (!CHECK((found == 2u) && (far < 4u), "two finite triangles and a far corner")) {
+        return;
+    }
+    for (unsigned corner = 0; corner < 3u; corner++) {
+        for (uint32_t k = 0; k < 2u; k++) {
+            vor__tri_t *t = &d->triangles[slots[k]];
+            vor_index_t v[3];
+            vor_index_t n[3];
+            vor__vertices(t, v);
+            unsigned at = 0; /* the far corner of this triangle */
+            for (unsigned i = 0; i < 3u; i++) {
+                n[i] = t->n[i];
+                at = (in[v[i]] == 1u) ? i : at;
+            }
+            /* rotate: the far corner (and the diagonal across) to `corner` */
+            unsigned s = (at + 3u - corner) % 3u;
+            vor__tri_set(t, v[s], v[(s + 1u) % 3u], v[(s + 2u) % 3u], n[s], n[(s + 1u) % 3u],
+                         n[(s + 2u) % 3u]);
+        }
+        vor_violation_t why = {VOR_CHECK_COUNTS, 0, 0};
+        CHECK(vor_power_validate(&pd, &why) == VOR_OK, "valid, rotated to corner %u: check %d",
+              corner, (int)why.check);
+        pd.weights[far] = 1000000;
+        CHECK((vor_power_validate(&pd, &why) == VOR_ERR_INVALID) &&
+                  (why.check == VOR_CHECK_DELAUNAY),
+              "a heavy far corner, the diagonal opposite corner %u, not found", corner);
+        pd.weights[far] = 0;
+    }
+}
+
+/* A hidden site exactly on the chain of a one-dimensional diagram (a
+ * cell of no area, which the header lets be hidden): sites at 0 and 10
+ * of a line, weight 0 (lifts 0 and 100, the chain 50 at 5), and one at 5
+ * hidden above the chain (weight -1000), its weight then set to -26,
+ * -25 and -24 (lifts 51, 50 and 49): valid above and on the chain, not
+ * below; on it, the oracle's line check too. On a horizontal and a
+ * vertical line. */
+static void check_validate_on_chain(void)
+{
+    static vor_power_t pd;
+    static scene_t model;
+    for (unsigned k = 0; k < 2u; k++) {
+        bool vertical = k == 1u;
+        model.n = 3;
+        for (uint32_t i = 0; i < 3u; i++) {
+            int32_t along = (i == 2u) ? 5 : (int32_t)(10u * i);
+            model.p[i] = vertical ? (vor_point_t){3, along} : (vor_point_t){along, -2};
+            model.w[i] = (i == 2u) ? -1000 : 0;
+            model.dead[i] = false;
+        }
+        CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+        for (uint32_t i = 0; i < 3u; i++) {
+            CHECK(vor_power_insert(&pd, model.p[i], model.w[i], NULL) == VOR_OK, "insert %u", i);
+        }
+        CHECK((vor_power_hidden(&pd, 2) == 1) && !pd.area, "hidden above the chain");
+        /* (the other coordinate, the same for all, lifts all alike) */
+        for (int64_t above = 1; above >= -1; above--) {
+            pd.weights[2] = -25 - above;
+            model.w[2] = pd.weights[2];
+            int valid = vor_power_validate(&pd, NULL);
+            CHECK(valid == ((above >= 0) ? VOR_OK : VOR_ERR_INVALID),
+                  "a hidden site %s the chain (%s): %d",
+                  (above > 0) ? "above" : ((above == 0) ? "on" : "below"),
+                  vertical ? "vertical" : "horizontal", valid);
+            if (above == 0) {
+                check_oracle(&pd, &model, NULL);
+            }
+        }
+    }
+}
+
 /* Sites on a vertical and a horizontal line at the int32 limit: the
  * exact one-dimensional test takes its point off the line on the side
  * that stays in int32. The middle site is hidden exactly when the lifted
@@ -1465,6 +1573,106 @@ static void check_remove_flat_ear(void)
     }
 }
 
+/* Removes the hidden sites of model (built into pd, every id its index),
+ * then vertex `apex`, which must have more than 16 (RING_MAX) neighbours;
+ * then the oracle. */
+static void remove_apex(vor_power_t *pd, scene_t *model, uint32_t apex)
+{
+    for (uint32_t i = 0; i < model->n; i++) {
+        model->dead[i] = false;
+        if (vor_power_hidden(pd, i) == 1) {
+            CHECK(vor_power_remove(pd, i) == VOR_OK, "remove hidden %u", i);
+            model->dead[i] = true;
+        }
+    }
+    CHECK(vor_power_hidden(pd, apex) == 0, "the apex is a vertex");
+    vor_neighbour_iter_t it;
+    uint32_t neighbours = 0;
+    uint32_t id;
+    CHECK(vor_neighbours_begin(&it, &pd->mesh, apex) == VOR_OK, "the apex");
+    while (vor_neighbours_next(&it, &id) > 0) {
+        neighbours++;
+    }
+    CHECK(neighbours > 16u, "the apex has %u neighbours", neighbours);
+    CHECK(vor_power_remove(pd, apex) == VOR_OK, "remove the apex");
+    model->dead[apex] = true;
+    check_oracle(pd, model, NULL);
+}
+
+/* A removal after which no ring vertex looked at keeps a triangle of
+ * area while the diagram does: an apex over 20 sites on a line whose
+ * lifted points are on one line too (weights x^2 - 4x, the lift 4x), so
+ * that the apex's removal leaves ears the perturbation makes flat, and
+ * one site off the line, beyond its end, whose one true triangle spans
+ * most of the line. The removal's first 16 ring vertices (RING_MAX) then
+ * keep only flat triangles (their cells have no area: the settling hides
+ * them), and the look at every id must find the site off the line, not
+ * id 0 (the apex, removed). The insertion order and so the ids decide
+ * the perturbation: the apex first, the sites from x = 19 up, then down
+ * from x = 18, the site off the line last; the hidden sites are removed
+ * before the apex, so that none is placed again. */
+static void check_remove_flat_run(void)
+{
+    static vor_power_t pd;
+    static scene_t model;
+    model.n = 22;
+    model.p[0] = (vor_point_t){1, 2};
+    model.w[0] = 22;
+    for (uint32_t i = 1; i < 21u; i++) {
+        int32_t x = (i == 1u) ? 19 : ((i == 2u) ? 20 : (int32_t)(21u - i));
+        model.p[i] = (vor_point_t){x, 0};
+        model.w[i] = (int64_t)x * x - 4 * (int64_t)x;
+    }
+    model.p[21] = (vor_point_t){32, 5};
+    model.w[21] = 878;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    for (uint32_t i = 0; i < model.n; i++) {
+        uint32_t id = 99;
+        CHECK((vor_power_insert(&pd, model.p[i], model.w[i], &id) == VOR_OK) && (id == i),
+              "insert %u", i);
+    }
+    remove_apex(&pd, &model, 0);
+}
+
+/* The same with the site off the line as id 0, so that the look at every
+ * id must start at 0: the apex goes in over a lighter site at its point
+ * (id 0, hidden at once, removed before the site off the line takes its
+ * id), then 18 sites on the line with weights x^2 (lift 0) from x = 17
+ * up, then down from x = 16; last one more site on the line, far to the
+ * left, so that the last site and its mate, which give the look's line,
+ * are on the line. */
+static void check_remove_flat_run_id0(void)
+{
+    static vor_power_t pd;
+    static scene_t model;
+    uint32_t id = 99;
+    model.n = 21;
+    model.p[0] = (vor_point_t){35, 5};
+    model.w[0] = 1204;
+    model.p[1] = (vor_point_t){16, 9};
+    model.w[1] = 376;
+    for (uint32_t i = 2; i < 20u; i++) {
+        int32_t x = (i == 2u) ? 17 : ((i == 3u) ? 18 : (int32_t)(20u - i));
+        model.p[i] = (vor_point_t){x, 0};
+        model.w[i] = (int64_t)x * x;
+    }
+    model.p[20] = (vor_point_t){-5, 0};
+    model.w[20] = 25;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    CHECK((vor_power_insert(&pd, model.p[1], model.w[1] - 1, &id) == VOR_OK) && (id == 0u),
+          "the site under the apex");
+    for (uint32_t i = 1; i < model.n; i++) {
+        if (i == 20u) {
+            CHECK((vor_power_hidden(&pd, 0) == 1) && (vor_power_remove(&pd, 0) == VOR_OK) &&
+                      (vor_power_insert(&pd, model.p[0], model.w[0], &id) == VOR_OK) && (id == 0u),
+                  "the site under the apex out, the site off the line in");
+        }
+        CHECK((vor_power_insert(&pd, model.p[i], model.w[i], &id) == VOR_OK) && (id == i),
+              "insert %u", i);
+    }
+    remove_apex(&pd, &model, 1);
+}
+
 /* Failing removals and moves: the arguments the header names. */
 static void check_dynamic_arguments(void)
 {
@@ -1528,6 +1736,8 @@ void test_power(void)
     TEST_CASE("arguments") check_arguments();
     TEST_CASE("heavy_centre") check_heavy_centre();
     TEST_CASE("validate_detects") check_validate_detects();
+    TEST_CASE("validate_each_corner") check_validate_each_corner();
+    TEST_CASE("validate_on_chain") check_validate_on_chain();
     TEST_CASE("line_at_limit") check_line_at_limit();
     TEST_CASE("remove_on_line") check_remove_on_line();
     TEST_CASE("line_build") check_line_build();
@@ -1547,6 +1757,8 @@ void test_power(void)
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
     TEST_CASE("dynamic/remove_wide_ring") check_remove_wide_ring();
     TEST_CASE("dynamic/remove_flat_ear") check_remove_flat_ear();
+    TEST_CASE("dynamic/remove_flat_run") check_remove_flat_run();
+    TEST_CASE("dynamic/remove_flat_run_id0") check_remove_flat_run_id0();
     for (unsigned family = 0; family < 8u; family++) {
         for (unsigned seed = 0; seed < 4u; seed++) {
             TEST_CASE("dynamic/%u/%u", family, seed) check_dynamic(family, 1000u * family + seed);
