@@ -94,6 +94,10 @@ void test_copy_bytes(void *to, const void *from, size_t n);
  * the motion cache's fast path. UINT32_MAX from a library without them. */
 uint32_t test_predicate_calls(const vor_t *d);
 
+/* The number of site's neighbours in d (vor_neighbours; 0 when it is no
+ * vertex). */
+uint32_t test_degree(const vor_t *d, uint32_t site);
+
 /* Builder options with a split and the other fields' defaults, for
  * vor_build_dc and vor_build_dc_forked. */
 #define TEST_SPLIT(split)                                                      \

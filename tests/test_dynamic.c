@@ -698,18 +698,6 @@ static void grid_at_two_sites(void)
     }
 }
 
-/* A site's number of neighbours (vor_neighbours). */
-static uint32_t degree_of(const vor_t *d, uint32_t site)
-{
-    uint32_t degree = 0, n;
-    vor_neighbour_iter_t it;
-    vor_neighbours_begin(&it, d, site);
-    while (vor_neighbours_next(&it, &n)) {
-        degree++;
-    }
-    return degree;
-}
-
 /* The point at angle k 15 degrees and radius r around the origin (the
  * cosine and sine times 2^14, rounded). */
 static vor_point_t ring_point(uint32_t k, int32_t r)
@@ -734,7 +722,7 @@ static void fan(void)
     for (int32_t k = -8; k <= 8; k++) {
         do_insert(&d, &m, (vor_point_t){100 * k, 1000}, "fan", 1);
     }
-    uint32_t degree = degree_of(&d, 0);
+    uint32_t degree = test_degree(&d, 0);
     CHECK(degree == 17u && d.vertex_count == 18u, "fan: the apex has %u neighbours of %u",
           degree, d.vertex_count - 1u);
     remove_as_modelled(&d, &m, 0, "fan", 2);
@@ -768,7 +756,7 @@ static void big_star(void)
     CHECK(found == 45u && m.handed_out == 32u, "ring: %u lattice points, %u sites", found,
           m.handed_out);
     do_insert(&d, &m, (vor_point_t){0, 0}, "ring", step++);
-    uint32_t degree = degree_of(&d, 32);
+    uint32_t degree = test_degree(&d, 32);
     CHECK(degree == 32u, "ring: the centre has %u neighbours, expected 32", degree);
     remove_as_modelled(&d, &m, 32, "ring", step);
     check_state(&d, &m, "ring", step++);
@@ -795,7 +783,7 @@ static void big_star_reflex(uint32_t turn)
         do_insert(&d, &m, p, "reflex ring", k);
     }
     do_insert(&d, &m, (vor_point_t){1, 2}, "reflex ring", 24);
-    uint32_t degree = degree_of(&d, 24);
+    uint32_t degree = test_degree(&d, 24);
     CHECK(degree == 24u, "reflex ring %u: the centre has %u neighbours, expected 24", turn, degree);
     remove_as_modelled(&d, &m, 24, "reflex ring", 25);
     check_state(&d, &m, "reflex ring", 25);
@@ -818,7 +806,7 @@ static void big_star_irregular(void)
         do_insert(&d, &m, p, "irregular ring", step++);
     }
     do_insert(&d, &m, (vor_point_t){3, -2}, "irregular ring", step++);
-    uint32_t degree = degree_of(&d, 24);
+    uint32_t degree = test_degree(&d, 24);
     CHECK(degree > 16u, "irregular ring: the centre has %u neighbours, expected more than 16",
           degree);
     remove_as_modelled(&d, &m, 24, "irregular ring", step);

@@ -1506,12 +1506,8 @@ static void check_remove_wide_ring(void)
         CHECK(!pd.flats || (set != 0u), "no flat triangle in the circle");
         if (set == 2u) {
             vor_neighbour_iter_t it;
-            uint32_t neighbours = 0;
-            uint32_t id;
             CHECK(vor_neighbours_begin(&it, &pd.mesh, 0) == VOR_OK, "the square's centre");
-            while (vor_neighbours_next(&it, &id) > 0) {
-                neighbours++;
-            }
+            uint32_t neighbours = test_degree(&pd.mesh, 0);
             CHECK(neighbours == 16u, "the square's centre has %u neighbours, not 16", neighbours);
         }
         CHECK(vor_power_remove(&pd, 0) == VOR_OK, "remove the centre of set %u", set);
@@ -1587,12 +1583,8 @@ static void remove_apex(vor_power_t *pd, scene_t *model, uint32_t apex)
     }
     CHECK(vor_power_hidden(pd, apex) == 0, "the apex is a vertex");
     vor_neighbour_iter_t it;
-    uint32_t neighbours = 0;
-    uint32_t id;
     CHECK(vor_neighbours_begin(&it, &pd->mesh, apex) == VOR_OK, "the apex");
-    while (vor_neighbours_next(&it, &id) > 0) {
-        neighbours++;
-    }
+    uint32_t neighbours = test_degree(&pd->mesh, apex);
     CHECK(neighbours > 16u, "the apex has %u neighbours", neighbours);
     CHECK(vor_power_remove(pd, apex) == VOR_OK, "remove the apex");
     model->dead[apex] = true;

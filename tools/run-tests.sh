@@ -232,7 +232,7 @@ done
 # MUTANTS_FLOOR % killed: the share the sample reaches (issue 24's 95 %);
 # its self-test shows an unmutated build passes and a broken one is
 # killed. make mutants runs them all. It runs in the lane, after the
-# emulated targets: the host's suites are the longer half.
+# emulated targets, whose QEMU runs leave a core free beside them.
 mutants() {
     make -s build/gen/predicate_vectors.c &&
         nice -n 10 python3 tools/mutants.py --jobs "$jobs" --every "${MUTANTS_EVERY:-16}" \
