@@ -1569,6 +1569,35 @@ static void check_remove_flat_ear(void)
     }
 }
 
+/* A removal whose settling finds a T-junction only across an edge
+ * opposite the third corner of a triangle as stored: the lifted points
+ * of (4,1), (2,1), (1,1), (0,1) and (0,0) lie on the plane z = x + y + 1,
+ * (4,2) above it; removing (1,2) leaves a true triangle whose edge from
+ * (0,1) to (4,1), opposite its third corner, holds (2,1) and then (1,1)
+ * across on flat ears. Both have cells of no area; kept, either would
+ * lie inside an edge of the reported triangles (the oracle's check). The
+ * scene was found by a random search over small lattices. */
+static void check_remove_junction(void)
+{
+    static const vor_point_t pts[8] = {{4, 1}, {2, 1}, {1, 1}, {0, 0},
+                                       {2, 0}, {0, 1}, {1, 2}, {4, 2}};
+    static const int64_t ws[8] = {11, 1, -1, -1, 0, -1, 1, 8};
+    static vor_power_t pd;
+    static scene_t model;
+    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    model.n = 8;
+    for (uint32_t i = 0; i < model.n; i++) {
+        uint32_t id = 99;
+        model.p[i] = pts[i];
+        model.w[i] = ws[i];
+        model.dead[i] = false;
+        CHECK((vor_power_insert(&pd, pts[i], ws[i], &id) == VOR_OK) && (id == i), "insert %u", i);
+    }
+    CHECK(vor_power_remove(&pd, 6) == VOR_OK, "remove (1,2)");
+    model.dead[6] = true;
+    check_oracle(&pd, &model, NULL);
+}
+
 /* Removes the hidden sites of model (built into pd, every id its index),
  * then vertex `apex`, which must have more than 16 (RING_MAX) neighbours;
  * then the oracle. */
@@ -1749,6 +1778,7 @@ void test_power(void)
     TEST_CASE("dynamic/remove_degenerate") check_remove_degenerate();
     TEST_CASE("dynamic/remove_wide_ring") check_remove_wide_ring();
     TEST_CASE("dynamic/remove_flat_ear") check_remove_flat_ear();
+    TEST_CASE("dynamic/remove_junction") check_remove_junction();
     TEST_CASE("dynamic/remove_flat_run") check_remove_flat_run();
     TEST_CASE("dynamic/remove_flat_run_id0") check_remove_flat_run_id0();
     for (unsigned family = 0; family < 8u; family++) {
