@@ -238,7 +238,8 @@ typedef struct vor_stats {
     uint32_t closer[VOR_TIERS];
     uint32_t orient2d_perturbed; /* perturbed calls decided by the perturbation */
     uint32_t incircle_perturbed;
-    uint32_t closer_perturbed;
+    uint32_t closer_perturbed;  /* stays 0: no diagram call compares distances
+                                   under the perturbation (kept: the layout) */
     uint32_t power;           /* power tests and comparisons of unequal weights */
     uint32_t power_perturbed; /* of those, the ties the perturbation decided */
 } vor_stats_t;

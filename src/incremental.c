@@ -97,18 +97,6 @@ vor_index_t vor__locate(vor_t *d, vor_index_t start, uint32_t p, bool *on_line)
     return slot;
 }
 
-/* The site nearest to site p (not in the mesh) under the perturbation, by
- * the walk (walk.h) from site `from`. Out of line, as it is rarely taken:
- * vor_insert_near's frame stays as small as without it. */
-static VOR__NOINLINE uint32_t nearest_site(vor_t *d, uint32_t from, uint32_t p)
-{
-    vor__walk_t w;
-    vor__walk_begin(&w, d, VOR__WALK_SITE);
-    w.counted = d;
-    w.p = p;
-    return vor__walk(&w, from);
-}
-
 /* ------------------------------------------------------------------ */
 /* Updating the mesh                                                   */
 
@@ -319,7 +307,9 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
         vor_index_t root = vor__locate(d, (vor_index_t)start, p, &on_line);
         /* strictly inside its triangle (or strictly outside the hull) p can
          * only coincide with a vertex of it; on an edge line, degenerate
-         * thin triangles can put its twin elsewhere: find the nearest site */
+         * thin triangles can put its twin elsewhere: the nearest site (the
+         * query's walk, which vor_insert_near links anyway for a full
+         * diagram) is the twin if there is one, the only site at distance 0 */
         uint32_t twin = VOR__NONE;
         uint32_t corner = 0;
         for (unsigned i = 0; i < 3u; i++) {
@@ -329,9 +319,10 @@ int vor_insert_near(vor_t *d, vor_point_t point, uint32_t hint, uint32_t *site)
                 twin = same_point(&d->sites[v], &point) ? v : twin;
             }
         }
-        if (twin == VOR__NONE && on_line) {
-            uint32_t nearest = nearest_site(d, corner, p);
-            twin = same_point(&d->sites[nearest], &point) ? nearest : twin;
+        uint32_t nearest;
+        if ((twin == VOR__NONE) && on_line && (vor_nearest(d, point, corner, &nearest) == VOR_OK) &&
+            same_point(&d->sites[nearest], &point)) {
+            twin = nearest;
         }
         if (twin != VOR__NONE) {
             d->sites[p] = saved_point;

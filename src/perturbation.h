@@ -83,11 +83,6 @@ VOR__INLINE int vor__incircle(vor_t *d, uint32_t a, uint32_t b, uint32_t c, uint
     return vor__incircle_counted(d, VOR__STATS_OF(d), a, b, c, p);
 }
 
-static inline int vor__closer(vor_t *d, uint32_t p, uint32_t a, uint32_t b)
-{
-    return vor__with_faults(d, vor__closer_sos(d->sites, p, a, b, VOR__STATS_OF(d)));
-}
-
 /* Does the triangle (v0, v1, v2) (finite or at infinity) conflict with
  * site p, i.e. is p strictly inside its circumcircle (for a hull triangle:
  * strictly outside its hull edge, left of a -> b in (a, b, inf))? The

@@ -868,23 +868,16 @@ int vor_power_test_sos(const vor_point_t *sites, const int64_t *weights, uint32_
  */
 int vor_closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b)
 {
-    return vor__closer_sos(sites, q, a, b, NULL);
-}
-
-int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
-                    vor_stats_t *stats)
-{
     if ((sites == NULL) || (q == a) || (q == b) || (a == b)) {
         return 0; /* the only 0 it returns: no perturbation orders these */
     }
     const vor_point_t *pq = &sites[q];
     const vor_point_t *pa = &sites[a];
     const vor_point_t *pb = &sites[b];
-    int sign = vor__closer_sign(pq, pa, pb, stats);
+    int sign = vor__closer_sign(pq, pa, pb, NULL);
     if (sign != 0) {
         return sign;
     }
-    VOR__COUNT(stats, closer_perturbed);
     VOR_ASSERT(q != a && q != b && a != b);
     if ((a < q) || (b < q)) {
         bool a_first = a < b;

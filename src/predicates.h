@@ -51,9 +51,6 @@ int vor__incircle_sign(const vor_point_t *a, const vor_point_t *b, const vor_poi
                        const vor_point_t *d);
 int vor__closer_sign(const vor_point_t *q, const vor_point_t *a, const vor_point_t *b,
                      vor_stats_t *stats);
-/* vor_closer_sos, counted in stats (NULL: not counted). */
-int vor__closer_sos(const vor_point_t *sites, uint32_t q, uint32_t a, uint32_t b,
-                    vor_stats_t *stats);
 
 /* The power test (vor_power_test) of points in place, w their weights in
  * order (a, b, c, d), counted in stats; and the power distance comparison

@@ -5,9 +5,6 @@
  * mesh neighbour that comes strictly before it in a goal's order, until
  * none does. The goals:
  *
- *   VOR__WALK_SITE    the site nearest to a site p not in the mesh, under
- *                     the perturbation, counted in the diagram's stats
- *                     (incremental.c: the twin of a site on an edge line);
  *   VOR__WALK_POINT   a site nearest to a query point, exactly, noting a
  *                     tie among the last site's neighbours (queries.c);
  *   VOR__WALK_LOWEST  the site with the smallest (y, x) (geometry.c).
@@ -39,13 +36,11 @@
 #include "predicates.h"
 #include "vor.h"
 
-enum vor__walk_goal { VOR__WALK_SITE, VOR__WALK_POINT, VOR__WALK_LOWEST };
+enum vor__walk_goal { VOR__WALK_POINT, VOR__WALK_LOWEST };
 
 typedef struct {
     const vor_t *d;
     enum vor__walk_goal goal;
-    vor_t *counted;       /* VOR__WALK_SITE: d, whose stats count the tests */
-    uint32_t p;           /* VOR__WALK_SITE: the site placed */
     const vor_point_t *q; /* VOR__WALK_POINT: the query */
     bool narrow;          /* VOR__WALK_POINT: vor__walk_is_narrow */
     bool tie;             /* out: a neighbour of the end is as close as it */
@@ -57,8 +52,6 @@ static inline void vor__walk_begin(vor__walk_t *w, const vor_t *d, enum vor__wal
 {
     w->d = d;
     w->goal = goal;
-    w->counted = NULL;
-    w->p = 0;
     w->q = NULL;
     w->narrow = false;
     w->tie = false;
@@ -100,9 +93,6 @@ static inline int vor__walk_compare(vor__walk_t *w, const vor_point_t *s, uint32
                                     uint32_t best, const vor_point_t *at, int32_t ex,
                                     int32_t ey)
 {
-    if (w->goal == VOR__WALK_SITE) {
-        return vor__closer(w->counted, w->p, n, best);
-    }
     if (w->goal == VOR__WALK_POINT) {
         return w->narrow ? vor__narrow_closer(ex, ey, at, &s[n])
                          : vor__closer_sign(w->q, &s[n], at, NULL);
@@ -113,9 +103,9 @@ static inline int vor__walk_compare(vor__walk_t *w, const vor_point_t *s, uint32
 /* The walk from site `from` (in the mesh, which has two or more sites);
  * returns where it ends. A query walk moves at the first neighbour
  * closer than the current site, so that its comparisons are all against
- * that site, whose offset to q is computed once a move; the others move
- * to the best neighbour, as they always have (the same tests, the same
- * counts). The neighbours come in fan order from the site's home slot. */
+ * that site, whose offset to q is computed once a move; the walk to the
+ * lowest site moves to the lowest neighbour. The neighbours come in fan
+ * order from the site's home slot. */
 static inline uint32_t vor__walk(vor__walk_t *w, uint32_t from)
 {
     const vor_t *d = w->d;

@@ -235,7 +235,7 @@ done
 # emulated targets, whose QEMU runs leave a core free beside them.
 mutants() {
     make -s build/gen/predicate_vectors.c &&
-        nice -n 10 python3 tools/mutants.py --jobs "$jobs" --every "${MUTANTS_EVERY:-16}" \
+        nice -n 10 python3 tools/mutants.py --jobs "$jobs" --every "${MUTANTS_EVERY:-32}" \
             --floor "${MUTANTS_FLOOR:-95}"
 }
 LANE=1 check mutants mutants
