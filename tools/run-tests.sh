@@ -82,12 +82,18 @@ patterns_for() {
     echo "$out"
 }
 
+# closing_counts FILE: the last "N passed, N failed" line of FILE as
+# "N N", or nothing if it has none (the run did not finish).
+closing_counts() {
+    sed -n -E 's/^([0-9]+) passed, ([0-9]+) failed$/\1 \2/p' "$1" | tail -n 1
+}
+
 # record NAME LOG STATUS BEGAN: add the suite's closing counts to the
 # totals; its line says how long it took since BEGAN ($SECONDS).
 record() {
     local name=$1 log=$2 status=$3 counts passed failed cases took
     took="[$((SECONDS - $4)) s]"
-    counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+    counts=$(closing_counts "$log")
     if [ -z "$counts" ]; then
         echo "$name: did not run to the end (exit $status) $took; last lines of $log:"
         tail -n 15 "$log" | sed 's/^/    /'
@@ -95,9 +101,7 @@ record() {
         broken+=("$name")
         return
     fi
-    passed=${counts%% passed*}
-    failed=${counts#*, }
-    failed=${failed%% failed}
+    read -r passed failed <<<"$counts"
     if [ "$failed" = 0 ] && [ "$status" != 0 ]; then
         echo "$name: all checks passed but the program exited with status $status"
         failed=1
@@ -307,7 +311,7 @@ check coverage coverage
 # ("HOOK after PORT"), where its status counts as one more check (it
 # prints its own FAIL line).
 example_on_ports() {
-    local name=$1 hook=${2:-} passed=0 failed=0 port exe out status counts
+    local name=$1 hook=${2:-} passed=0 failed=0 port exe out status counts p f
     for port in host $targets; do
         exe=$([ "$port" = host ] || echo .elf)
         out=$logs/$name-$port.out
@@ -316,13 +320,15 @@ example_on_ports() {
             make -s PORT="$port" "run-example-$name" >>"$out" 2>&1
         status=$?
         sed -n "s/^FAIL /FAIL $port: /p" "$out"
-        counts=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$out" | tail -n 1)
+        counts=$(closing_counts "$out")
+        p=0
+        f=0
         if [ -n "$counts" ]; then
-            passed=$((passed + ${counts%% passed*}))
-            counts=${counts#*, }
-            failed=$((failed + ${counts%% failed}))
+            read -r p f <<<"$counts"
+            passed=$((passed + p))
+            failed=$((failed + f))
         fi
-        if [ "$status" != 0 ] && { [ -z "$counts" ] || [ "${counts%% failed}" = 0 ]; }; then
+        if [ "$status" != 0 ] && [ "$f" = 0 ]; then
             echo "FAIL $port: examples/$name exited with status $status ($out)"
             failed=$((failed + 1))
         fi
@@ -611,7 +617,7 @@ check spdx tools/check-spdx.sh
 # a warning, and every relative link and #anchor of the Markdown docs
 # leads to a file and heading that exist.
 docs() {
-    local passed=0 failed=0 links
+    local passed=0 failed=0 links p f
     if make -s docs 2>&1; then
         passed=1
     else
@@ -621,11 +627,11 @@ docs() {
     fi
     python3 tools/check-doc-links.py >"$logs/doc-links.log" 2>&1
     cat "$logs/doc-links.log"
-    links=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$logs/doc-links.log")
+    links=$(closing_counts "$logs/doc-links.log")
     if [ -n "$links" ]; then
-        passed=$((passed + ${links%% passed*}))
-        links=${links#*, }
-        failed=$((failed + ${links%% failed}))
+        read -r p f <<<"$links"
+        passed=$((passed + p))
+        failed=$((failed + f))
     else
         echo "FAIL tools/check-doc-links.py did not finish"
         failed=$((failed + 1))
