@@ -16,6 +16,11 @@
 #include "predicates.h"
 #include "vor.h"
 
+/* The test's own integers (tests/wide.h): 256 bits hold every exact value
+ * checked here (an incircle determinant of 49-bit differences). */
+#define WIDE_LIMBS 8u
+#include "wide.h"
+
 static const char *const op_names[] = {"orient2d", "incircle", "closer"};
 
 static vor_point_t point_of(const struct predicate_vector *v, unsigned k)
@@ -978,71 +983,35 @@ static void check_tier_edges(void)
     }
 }
 
-/* The test's own exact integers for check_magnitudes: 16 digits of 16
- * bits in uint32_t words, two's complement modulo 2^256, schoolbook
- * arithmetic sharing nothing with src/multiword.h. */
-typedef struct {
-    uint32_t d[16];
-} big_t;
-
-static big_t big_of(int64_t v)
+/* r = the incircle determinant of the differences d (a - d, b - d, c - d
+ * as x, y pairs): the sum of lift(k) cross(k + 1, k + 2). */
+static void exact_incircle(wide_t *r, const int64_t d[6])
 {
-    big_t r;
-    for (unsigned i = 0; i < 16u; i++) {
-        r.d[i] = (i < 4u) ? (uint32_t)(((uint64_t)v >> (16u * i)) & 0xFFFFu)
-                          : (v < 0 ? 0xFFFFu : 0u);
-    }
-    return r;
-}
-
-static big_t big_add(big_t a, big_t b, bool subtract)
-{
-    uint32_t carry = subtract ? 1u : 0u;
-    for (unsigned i = 0; i < 16u; i++) {
-        uint32_t sum = a.d[i] + (subtract ? (~b.d[i] & 0xFFFFu) : b.d[i]) + carry;
-        a.d[i] = sum & 0xFFFFu;
-        carry = sum >> 16;
-    }
-    return a;
-}
-
-static big_t big_mul(big_t a, big_t b)
-{
-    uint64_t column[16] = {0};
-    for (unsigned i = 0; i < 16u; i++) {
-        for (unsigned j = 0; i + j < 16u; j++) {
-            column[i + j] += (uint64_t)a.d[i] * b.d[j];
-        }
-    }
-    big_t r;
-    uint64_t carry = 0;
-    for (unsigned i = 0; i < 16u; i++) {
-        carry += column[i];
-        r.d[i] = (uint32_t)(carry & 0xFFFFu);
-        carry >>= 16;
-    }
-    return r;
-}
-
-/* The incircle determinant of the differences d (a - d, b - d, c - d as
- * x, y pairs): the sum of lift(k) cross(k + 1, k + 2). */
-static big_t big_incircle(const int64_t d[6])
-{
-    big_t sum = big_of(0);
+    wide_t x, y, lift, cross, t;
+    wide_set(r, 0);
     for (unsigned k = 0; k < 3u; k++) {
         unsigned u = (k + 1u) % 3u, v = (k + 2u) % 3u;
-        big_t x = big_of(d[2u * k]), y = big_of(d[(2u * k) + 1u]);
-        big_t lift = big_add(big_mul(x, x), big_mul(y, y), false);
-        big_t cross = big_add(big_mul(big_of(d[2u * u]), big_of(d[(2u * v) + 1u])),
-                              big_mul(big_of(d[(2u * u) + 1u]), big_of(d[2u * v])), true);
-        sum = big_add(sum, big_mul(lift, cross), false);
+        wide_set(&x, d[2u * k]);
+        wide_set(&y, d[(2u * k) + 1u]);
+        wide_mul(&lift, &x, &x);
+        wide_mul(&y, &y, &y);
+        wide_add(&lift, &y);
+        wide_set(&cross, d[2u * u]);
+        wide_mul_i64(&cross, &cross, d[(2u * v) + 1u]);
+        wide_set(&t, d[(2u * u) + 1u]);
+        wide_mul_i64(&t, &t, d[2u * v]);
+        wide_sub(&cross, &t);
+        wide_mul(&lift, &lift, &cross);
+        wide_add(r, &lift);
     }
-    return sum;
 }
 
-static bool big_negative(big_t a)
+/* r = |r| */
+static void wide_abs(wide_t *r)
 {
-    return (a.d[15] & 0x8000u) != 0u;
+    if (wide_negative(r)) {
+        wide_neg(r);
+    }
 }
 
 /* The mid incircle filter's second error bound against the error it
@@ -1065,7 +1034,7 @@ static void check_point_bound(void)
     static const int32_t scales[5] = {1, 30, 1000, 1 << 12, 1 << 14};
     test_rng_t rng;
     test_rng_seed(&rng, 4417);
-    const big_t shift = big_of((int64_t)1 << 34); /* 2^68 = shift^2 */
+    const int64_t shift = (int64_t)1 << 34; /* 2^68 = shift^2 */
     const int64_t r_max = ((int64_t)1 << 17) - 1;
     unsigned long checked = 0, bad = 0;
     for (unsigned n = 0; n < 64u; n++) {
@@ -1074,18 +1043,22 @@ static void check_point_bound(void)
             int32_t s = scales[test_rng_u32(&rng) % 5u];
             u[k] = (n < 4u) ? climbed[n][k] : test_rng_range(&rng, -s, s - 1);
         }
-        big_t scaled = big_mul(big_mul(big_of(vor__incircle_narrow(u)), shift), shift);
-        big_t bound = big_mul(big_mul(big_of((int64_t)vor__incircle_point_bound(u)), shift), shift);
+        wide_t scaled, bound, error;
+        wide_set(&scaled, vor__incircle_narrow(u));
+        wide_mul_i64(&scaled, &scaled, shift);
+        wide_mul_i64(&scaled, &scaled, shift);
+        wide_set(&bound, (int64_t)vor__incircle_point_bound(u));
+        wide_mul_i64(&bound, &bound, shift);
+        wide_mul_i64(&bound, &bound, shift);
         for (unsigned corner = 0; corner < 64u; corner++) {
             int64_t d[6];
             for (unsigned k = 0; k < 6u; k++) {
                 d[k] = ((int64_t)u[k] * (r_max + 1)) + (((corner >> k) & 1u) ? r_max : 0);
             }
-            big_t error = big_add(big_incircle(d), scaled, true);
-            if (big_negative(error)) {
-                error = big_add(big_of(0), error, true);
-            }
-            bool over = big_negative(big_add(bound, error, true));
+            exact_incircle(&error, d);
+            wide_sub(&error, &scaled);
+            wide_abs(&error);
+            bool over = wide_compare(&bound, &error) < 0;
             bad += over ? 1u : 0u;
             CHECK(!over || bad > 3u, "point bound: u %d %d %d %d %d %d, corner %u: error above it",
                   u[0], u[1], u[2], u[3], u[4], u[5], corner);
@@ -1097,18 +1070,17 @@ static void check_point_bound(void)
 }
 
 /* Bit length of |a|: the least k with |a| < 2^k. */
-static unsigned big_bits(big_t a)
+static unsigned bit_length(const wide_t *a)
 {
-    if (big_negative(a)) {
-        a = big_add(big_of(0), a, true);
-    }
-    for (unsigned i = 16; i-- > 0;) {
-        if (a.d[i] != 0u) {
+    wide_t m = *a;
+    wide_abs(&m);
+    for (unsigned i = WIDE_LIMBS; i-- > 0;) {
+        if (m.v[i] != 0u) {
             unsigned k = 0;
-            while ((a.d[i] >> k) != 0u) {
+            while ((k < 32u) && ((m.v[i] >> k) != 0u)) {
                 k++;
             }
-            return 16u * i + k;
+            return (32u * i) + k;
         }
     }
     return 0;
@@ -1175,15 +1147,19 @@ static void check_magnitudes(void)
             d[(2u * k) + 1u] = (int64_t)p[k].y - p[3].y;
         }
         /* orient2d of p0, p1, p3: (p0 - p3) x (p1 - p3) */
-        big_t orient = big_add(big_mul(big_of(d[0]), big_of(d[3])),
-                               big_mul(big_of(d[1]), big_of(d[2])), true);
-        big_t incircle = big_incircle(d);
+        wide_t orient, t, incircle;
+        wide_set(&orient, d[0]);
+        wide_mul_i64(&orient, &orient, d[3]);
+        wide_set(&t, d[1]);
+        wide_mul_i64(&t, &t, d[2]);
+        wide_sub(&orient, &t);
+        exact_incircle(&incircle, d);
         unsigned got_orient = vor__orient2d_bits(&p[0], &p[1], &p[3]);
         unsigned got_incircle = vor__incircle_bits(&p[0], &p[1], &p[2], &p[3]);
-        if (got_orient != big_bits(orient) || got_incircle != big_bits(incircle)) {
+        if (got_orient != bit_length(&orient) || got_incircle != bit_length(&incircle)) {
             bad++;
             CHECK(bad > 5u, "case %u: orient2d %u bits (want %u), incircle %u bits (want %u)", n,
-                  got_orient, big_bits(orient), got_incircle, big_bits(incircle));
+                  got_orient, bit_length(&orient), got_incircle, bit_length(&incircle));
         }
     }
     CHECK(bad == 0u, "%u of 5000 magnitudes wrong", bad);
@@ -1335,13 +1311,14 @@ static void check_wide_helpers(void)
         uint32_t y = (n < 32u) ? ys[n / 8u] : test_rng_u32(&rng) >> 1;
         vor__mw_i96_t r;
         vor__mw_i96_mul(&r, x, y);
-        big_t got = big_add(big_mul(big_of(r.hi), big_of(INT64_C(0x100000000))), big_of(r.lo), false);
-        big_t want = big_mul(big_of(x), big_of(y));
-        bool same = true;
-        for (unsigned i = 0; i < 16u; i++) {
-            same = same && got.d[i] == want.d[i];
-        }
-        if (!same && bad++ < 5u) {
+        wide_t got, low, want;
+        wide_set(&got, r.hi);
+        wide_mul_i64(&got, &got, INT64_C(0x100000000));
+        wide_set(&low, (int64_t)r.lo);
+        wide_add(&got, &low);
+        wide_set(&want, x);
+        wide_mul_i64(&want, &want, (int64_t)y);
+        if (!wide_equal(&got, &want) && bad++ < 5u) {
             CHECK(false, "vor__mw_i96_mul, case %u: x = %lx %08lx, y = %lu", n,
                   (unsigned long)((uint64_t)x >> 32), (unsigned long)((uint64_t)x & 0xFFFFFFFFu),
                   (unsigned long)y);
@@ -1361,26 +1338,24 @@ static void check_wide_helpers(void)
           (unsigned long)(w.hi >> 32), (unsigned long)(w.hi & 0xFFFFFFFFu));
 }
 
-/* Limbs as the test's integers: n limbs (n * VOR_LIMB_BITS <= 256 bits),
- * unsigned, 16 bits a digit. */
-#define LIMB_DIGITS (VOR_LIMB_BITS / 16)
-static big_t big_of_limbs(const vor__limb *a, size_t n)
+/* r = the unsigned number of n library limbs (n * VOR_LIMB_BITS <= 256). */
+#define LIMB_WORDS (VOR_LIMB_BITS / 32)
+static void wide_of_limbs(wide_t *r, const vor__limb *a, size_t n)
 {
-    big_t r = {{0}};
+    wide_set(r, 0);
     for (size_t i = 0; i < n; i++) {
-        for (unsigned k = 0; k < LIMB_DIGITS; k++) {
-            r.d[(i * LIMB_DIGITS) + k] = (uint32_t)(a[i] >> (16u * k)) & 0xFFFFu;
+        for (unsigned k = 0; k < LIMB_WORDS; k++) {
+            r->v[(i * LIMB_WORDS) + k] = (uint32_t)(a[i] >> (32u * k));
         }
     }
-    return r;
 }
 
-/* Do a and b agree on their low `digits` digits? */
-static bool big_low_equal(big_t a, big_t b, size_t digits)
+/* Do a and b agree on their low `words` 32-bit words? */
+static bool low_words_equal(const wide_t *a, const wide_t *b, size_t words)
 {
     bool same = true;
-    for (size_t i = 0; i < digits; i++) {
-        same = same && (a.d[i] == b.d[i]);
+    for (size_t i = 0; i < words; i++) {
+        same = same && (a->v[i] == b->v[i]);
     }
     return same;
 }
@@ -1402,8 +1377,10 @@ static void check_limb_edges(void)
     for (unsigned k = 0; k < 6u; k++) {
         r[N] = guard;
         vor__mw_from_i64(r, N, values[k]);
-        CHECK(r[N] == guard && big_low_equal(big_of_limbs(r, N), big_of(values[k]), 16u),
-              "vor__mw_from_i64, value %u", k);
+        wide_t got, want;
+        wide_of_limbs(&got, r, N);
+        wide_set(&want, values[k]);
+        CHECK(r[N] == guard && wide_equal(&got, &want), "vor__mw_from_i64, value %u", k);
     }
     /* the top limb's second bit alone: positive; its top bit: negative */
     for (size_t i = 0; i < N; i++) {
@@ -1421,35 +1398,36 @@ static void check_limb_edges(void)
 #endif
             a[i] |= (n % 2u == 0u) ? ((vor__limb)7u << (VOR_LIMB_BITS - 3)) : 0u;
         }
-        big_t before = big_of_limbs(a, N);
+        wide_t before, half, got;
+        wide_of_limbs(&before, a, N);
         /* a / 2, unsigned */
         a[N] = guard;
         vor__mw_shr1(a, N);
-        big_t half = before;
-        for (unsigned i = 0; i < 16u; i++) {
-            half.d[i] = (before.d[i] >> 1) | ((i + 1u < 16u) ? ((before.d[i + 1u] & 1u) << 15) : 0u);
+        for (unsigned i = 0; i < WIDE_LIMBS; i++) {
+            half.v[i] = (before.v[i] >> 1) |
+                        (((i + 1u) < WIDE_LIMBS) ? (before.v[i + 1u] << 31) : 0u);
         }
-        CHECK(a[N] == guard && big_low_equal(big_of_limbs(a, N), half, 16u),
-              "vor__mw_shr1, value %u", n);
+        wide_of_limbs(&got, a, N);
+        CHECK(a[N] == guard && wide_equal(&got, &half), "vor__mw_shr1, value %u", n);
         /* 4 a modulo 2^256 */
         r[N] = guard;
         vor__mw_times4(r, a, N);
-        big_t twice = big_add(big_of_limbs(a, N), big_of_limbs(a, N), false);
-        CHECK(r[N] == guard && big_low_equal(big_of_limbs(r, N), big_add(twice, twice, false), 16u),
-              "vor__mw_times4, value %u", n);
+        wide_t four;
+        wide_of_limbs(&four, a, N);
+        wide_mul_i64(&four, &four, 4);
+        wide_of_limbs(&got, r, N);
+        CHECK(r[N] == guard && wide_equal(&got, &four), "vor__mw_times4, value %u", n);
     }
 }
 
-/* 64-bit words as the test's integers, unsigned. */
-static big_t big_of_words(const uint64_t *w, unsigned n)
+/* r = the unsigned number of n 64-bit words. */
+static void wide_of_words(wide_t *r, const uint64_t *w, unsigned n)
 {
-    big_t r = {{0}};
+    wide_set(r, 0);
     for (unsigned i = 0; i < n; i++) {
-        for (unsigned k = 0; k < 4u; k++) {
-            r.d[(4u * i) + k] = (uint32_t)(w[i] >> (16u * k)) & 0xFFFFu;
-        }
+        r->v[2u * i] = (uint32_t)w[i];
+        r->v[(2u * i) + 1u] = (uint32_t)(w[i] >> 32);
     }
-    return r;
 }
 
 static uint64_t random_u64(test_rng_t *rng)
@@ -1479,8 +1457,12 @@ static void check_word_edges(void)
         const uint64_t aw[2] = {a.lo, a.hi};
         const uint64_t bw[2] = {b.lo, b.hi};
         const uint64_t rw[2] = {r.lo, r.hi};
-        big_t difference = big_add(big_of_words(aw, 2u), big_of_words(bw, 2u), true);
-        if (!big_low_equal(big_of_words(rw, 2u), difference, 8u)) {
+        wide_t difference, subtrahend, got;
+        wide_of_words(&difference, aw, 2u);
+        wide_of_words(&subtrahend, bw, 2u);
+        wide_sub(&difference, &subtrahend);
+        wide_of_words(&got, rw, 2u);
+        if (!low_words_equal(&got, &difference, 4u)) {
             bad_sub++;
         }
         CHECK(vor__mw_u128_compare(&a, &b) == 1 && vor__mw_u128_compare(&b, &a) == -1,
@@ -1499,10 +1481,15 @@ static void check_word_edges(void)
         uint64_t yh = (n / 2u) % 2u;
         const uint64_t xw[2] = {x, xh};
         const uint64_t yw[2] = {y, yh};
-        big_t product = big_mul(big_of_words(xw, 2u), big_of_words(yw, 2u));
-        big_t want = big_add(big_of_words(acc.w, 3u), product, false);
+        wide_t product, factor, want;
+        wide_of_words(&product, xw, 2u);
+        wide_of_words(&factor, yw, 2u);
+        wide_mul(&product, &product, &factor);
+        wide_of_words(&want, acc.w, 3u);
+        wide_add(&want, &product);
         vor__mw_u192_add_product(&acc, x, xh, y, yh);
-        if (!big_low_equal(big_of_words(acc.w, 3u), want, 12u)) {
+        wide_of_words(&got, acc.w, 3u);
+        if (!low_words_equal(&got, &want, 6u)) {
             bad_product++;
         }
     }
@@ -1512,10 +1499,15 @@ static void check_word_edges(void)
         vor__mw_u192_t acc = {{1u, 0u, 0u}};
         const uint64_t xw[2] = {1u, 1u};
         const uint64_t yw[2] = {UINT64_MAX, 0u};
-        big_t want = big_add(big_of_words(acc.w, 3u),
-                             big_mul(big_of_words(xw, 2u), big_of_words(yw, 2u)), false);
+        wide_t product, factor, want, got;
+        wide_of_words(&product, xw, 2u);
+        wide_of_words(&factor, yw, 2u);
+        wide_mul(&product, &product, &factor);
+        wide_of_words(&want, acc.w, 3u);
+        wide_add(&want, &product);
         vor__mw_u192_add_product(&acc, 1u, 1u, UINT64_MAX, 0u);
-        bad_product += big_low_equal(big_of_words(acc.w, 3u), want, 12u) ? 0u : 1u;
+        wide_of_words(&got, acc.w, 3u);
+        bad_product += low_words_equal(&got, &want, 6u) ? 0u : 1u;
     }
     CHECK(bad_sub == 0u, "vor__mw_u128_sub wrong %u times", bad_sub);
     CHECK(bad_product == 0u, "vor__mw_u192_add_product wrong %u times", bad_product);
