@@ -4,8 +4,9 @@
  * limbs, least significant first, written apart from the library's
  * src/multiword.h so that exact results are checked with other code.
  * A test file defines WIDE_LIMBS before including this header, for the
- * width its values need (64: 2048 bits, test_centroid.c; 128: 4096 bits,
- * test_interpolate.c). Every operation is exact while its result fits;
+ * width its values need (8: 256 bits, test_predicates.c; 64: 2048 bits,
+ * test_centroid.c and test_clip.c; 128: 4096 bits, test_interpolate.c).
+ * Every operation is exact while its result fits;
  * r may be one of the operands. Temporaries are static (test files run
  * on one thread), to keep the targets' stacks small.
  */
