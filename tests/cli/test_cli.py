@@ -637,6 +637,21 @@ def cells_cases(rng, tmp):
               f"cells {args}: {r.returncode} {r.stderr!r}")
 
 
+def polygon_where(poly, q):
+    """1 strictly inside, 0 on the boundary, -1 outside (winding number)."""
+    winding = 0
+    for k in range(len(poly)):
+        a, b = poly[k], poly[(k + 1) % len(poly)]
+        o = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
+        if o == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= q[1] <= max(a[1], b[1]):
+            return 0
+        if a[1] <= q[1] < b[1] and o > 0:
+            winding += 1
+        elif b[1] <= q[1] < a[1] and o < 0:
+            winding -= 1
+    return 1 if winding else -1
+
+
 def clip_cases(rng, tmp):
     """vor cells --clip POLY [--exact] against exact checks in Fractions:
     the exact pieces (lowest terms, w > 0) round to the printed ones, are
@@ -665,30 +680,12 @@ def clip_cases(rng, tmp):
         ("full range", lambda: [(rng.randint(MIN, MAX), rng.randint(MIN, MAX)) for _ in range(10)]),
     ]
 
-    def area2(poly):
-        return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
-                   for k in range(len(poly)))
-
-    def where(poly, q):
-        """1 strictly inside, 0 on the boundary, -1 outside (winding number)."""
-        winding = 0
-        for k in range(len(poly)):
-            a, b = poly[k], poly[(k + 1) % len(poly)]
-            o = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
-            if o == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= q[1] <= max(a[1], b[1]):
-                return 0
-            if a[1] <= q[1] < b[1] and o > 0:
-                winding += 1
-            elif b[1] <= q[1] < a[1] and o < 0:
-                winding -= 1
-        return 1 if winding else -1
-
     poly_path = os.path.join(tmp, "room.poly")
     sites_path = os.path.join(tmp, "clip.sites")
     for room_name, room in rooms.items():
         with open(poly_path, "w") as f:
             f.write("".join(f"{x} {y}\n" for x, y in room))
-        room_area2 = abs(area2(room))
+        room_area2 = abs(polygon_area2(room))
         xs, ys = [p[0] for p in room], [p[1] for p in room]
         for set_name, make in site_sets:
             if (room_name == "wide") != (set_name == "full range"):
@@ -716,11 +713,11 @@ def clip_cases(rng, tmp):
                       all(nums[3 * k + 2] > 0 and math.gcd(math.gcd(nums[3 * k], nums[3 * k + 1]), nums[3 * k + 2]) == 1
                           for k in range(m)) and
                       got[2:] == [round_half_up(c) for p in poly for c in p] and
-                      area2(poly) > 0 and
+                      polygon_area2(poly) > 0 and
                       all((poly[0][1], poly[0][0]) < (p[1], p[0]) for p in poly[1:]))
                 s = sites[i]
                 for p in poly:
-                    ok = ok and where(room, p) >= 0
+                    ok = ok and polygon_where(room, p) >= 0
                     for n in distinct:
                         ok = ok and 2 * (n[0] - s[0]) * p[0] + 2 * (n[1] - s[1]) * p[1] <= \
                             n[0] ** 2 + n[1] ** 2 - s[0] ** 2 - s[1] ** 2
@@ -728,17 +725,17 @@ def clip_cases(rng, tmp):
                     wrong += 1
                     if wrong <= 2:
                         check(False, f"{what}: piece {line!r} / {eline!r} is wrong")
-                total += area2(poly)
+                total += polygon_area2(poly)
                 pieces.setdefault(s, []).append(poly)
             check(wrong == 0, f"{what}: {wrong} wrong pieces")
             check(total == room_area2, f"{what}: areas add up to {total}/2, the room has {room_area2}/2")
             for _ in range(60 if set_name != "full range" else 0):
                 q = (rng.randint(min(xs), max(xs)), rng.randint(min(ys), max(ys)))
-                if where(room, q) != 1:
+                if polygon_where(room, q) != 1:
                     continue
                 best = min((q[0] - n[0]) ** 2 + (q[1] - n[1]) ** 2 for n in distinct)
                 near = [n for n in distinct if (q[0] - n[0]) ** 2 + (q[1] - n[1]) ** 2 == best]
-                check(any(where(poly, q) >= 0 for n in near for poly in pieces.get(n, [])),
+                check(any(polygon_where(poly, q) >= 0 for n in near for poly in pieces.get(n, [])),
                       f"{what}: {q} in no piece of its nearest site")
     # a box as a polygon: --box's cells; --box --exact rounds to --box
     for _ in range(4):
@@ -805,30 +802,12 @@ def order_cells_cases(rng, tmp):
         ("collinear", lambda: [(5 + 12 * t, 30) for t in range(5)] + [(5, 30)]),
     ]
 
-    def area2(poly):
-        return sum(poly[k][0] * poly[(k + 1) % len(poly)][1] - poly[(k + 1) % len(poly)][0] * poly[k][1]
-                   for k in range(len(poly)))
-
-    def where(poly, q):
-        """1 strictly inside, 0 on the boundary, -1 outside (winding number)."""
-        winding = 0
-        for k in range(len(poly)):
-            a, b = poly[k], poly[(k + 1) % len(poly)]
-            o = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0])
-            if o == 0 and min(a[0], b[0]) <= q[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= q[1] <= max(a[1], b[1]):
-                return 0
-            if a[1] <= q[1] < b[1] and o > 0:
-                winding += 1
-            elif b[1] <= q[1] < a[1] and o < 0:
-                winding -= 1
-        return 1 if winding else -1
-
     poly_path = os.path.join(tmp, "order.poly")
     sites_path = os.path.join(tmp, "order.sites")
     for room_name, room in rooms.items():
         with open(poly_path, "w") as f:
             f.write("".join(f"{x} {y}\n" for x, y in room))
-        room_area2 = abs(area2(room))
+        room_area2 = abs(polygon_area2(room))
         xs, ys = [p[0] for p in room], [p[1] for p in room]
         for set_name, make in site_sets:
             sites = make()
@@ -854,10 +833,10 @@ def order_cells_cases(rng, tmp):
                     ok = (got[0] == "o" and eline.startswith("o ") and v[0] == k and egot[:2 + k] == v[:2 + k] and
                           list(group) == sorted(set(group)) and all(g in ids for g in group) and
                           (previous is None or previous <= group) and len(nums) == 3 * m and
-                          v[2 + k:] == [round_half_up(c) for p in poly for c in p] and area2(poly) > 0)
+                          v[2 + k:] == [round_half_up(c) for p in poly for c in p] and polygon_area2(poly) > 0)
                     previous = group
                     for p in poly:
-                        ok = ok and where(room, p) >= 0
+                        ok = ok and polygon_where(room, p) >= 0
                         for i in group:
                             s = sites[i]
                             for j in ids:
@@ -870,17 +849,17 @@ def order_cells_cases(rng, tmp):
                         wrong += 1
                         if wrong <= 2:
                             check(False, f"{what}: piece {line!r} / {eline!r} is wrong")
-                    total += area2(poly)
+                    total += polygon_area2(poly)
                     pieces.setdefault(group, []).append(poly)
                 check(wrong == 0, f"{what}: {wrong} wrong pieces")
                 check(total == room_area2, f"{what}: areas add up to {total}/2, the room has {room_area2}/2")
                 for _ in range(40):
                     q = (rng.randint(min(xs), max(xs)), rng.randint(min(ys), max(ys)))
-                    if where(room, q) != 1:
+                    if polygon_where(room, q) != 1:
                         continue
                     near = tuple(sorted(sorted(ids, key=lambda i: ((q[0] - sites[i][0]) ** 2 +
                                                                    (q[1] - sites[i][1]) ** 2, i))[:k]))
-                    check(any(where(poly, q) >= 0 for poly in pieces.get(near, [])),
+                    check(any(polygon_where(poly, q) >= 0 for poly in pieces.get(near, [])),
                           f"{what}: {q} in no piece of its {k} nearest sites {near}")
             one = run(["cells", "--clip", poly_path, "--order", "1", sites_path], "")
             plain = run(["cells", "--clip", poly_path, sites_path], "")
