@@ -601,7 +601,10 @@ programs() {
     local passed=0 failed=0 name port exe
     for name in $(ls bench/*.c | sed 's|bench/\(.*\)\.c|bench-\1|') \
         $(ls -d examples/*/ | sed 's|examples/\(.*\)/|example-\1|' | grep -v '^example-common$'); do
-        for port in host cortex-m3; do
+        ports="host cortex-m3"
+        # examples/dual runs on the two cores of mps2-an521 only (suite dual)
+        [ "$name" = example-dual ] && ports=cortex-m33
+        for port in $ports; do
             [ "$port" != host ] && [ "$name" = example-contours ] && continue
             exe=$([ "$port" = host ] || echo .elf)
             if make -s PORT="$port" "build/$port/$name$exe" 2>&1; then
