@@ -303,7 +303,7 @@ check coverage coverage
 
 # examples/dual on the two Cortex-M33 cores of the emulated mps2-an521:
 # vor_build_dc_forked with core 1 building one half through the example's
-# fork/join hook, at 1,000 to 20,000 sites; each forked diagram must be the
+# fork/join hook, at 100 to 20,000 sites; each forked diagram must be the
 # one-core build's byte for byte, and the hook must have been used (a
 # fork, a join, core 1 running the work). Instructions and the speedup
 # are printed, never checked.

@@ -28,7 +28,7 @@
 #define MAX_SITES 20000u
 
 
-static const uint32_t sizes[] = {1000u, 10000u, 20000u};
+static const uint32_t sizes[] = {100u, 300u, 1000u, 3000u, 10000u, 20000u};
 #define SIZES (sizeof sizes / sizeof sizes[0])
 
 static vor_point_t points[MAX_SITES];
