@@ -33,8 +33,8 @@
 
 #include <stdint.h>
 
-/* Core 1's stack: vor_build_dc needs about 1.6 KB on Cortex-M
- * (docs/benchmarks.md, "Memory: stack and RAM budget"); the rest is margin. */
+/* Core 1's stack: about vor_build_dc's (docs/benchmarks.md, "Memory: stack
+ * and RAM budget") and a wide margin; the example prints what it used. */
 #define AN521_CORE1_STACK_BYTES 8192u
 
 typedef struct an521_fork_join {
