@@ -68,11 +68,12 @@ static void barrier_dsb(void)
     __asm__ volatile("dsb" ::: "memory");
 }
 
-/* Sleep until the MHU0 doorbell of this core rings or done() holds. The
- * interrupt is enabled in this core's NVIC but masked by PRIMASK, so it
- * wakes wfi without being taken (no handler). The doorbell is cleared
- * before the condition is read: a ring after the read leaves the
- * interrupt pending, and wfi then returns at once. */
+/* Sleep until *a == *b, waking at each ring of this core's MHU0 doorbell
+ * (clear: its clear register). The interrupt is enabled in this core's
+ * NVIC but masked by PRIMASK, so it wakes wfi without being taken (no
+ * handler). The doorbell is cleared before the condition is read: a ring
+ * after the read leaves the interrupt pending, and wfi then returns at
+ * once. */
 static void sleep_until(volatile uint32_t *a, volatile uint32_t *b, volatile uint32_t *clear)
 {
     uint32_t primask;
