@@ -19,6 +19,10 @@
 #   make run-example-contours  contour interpolation (host): build/contours.png
 #   make coverage           Lloyd coverage control of 64 robots on the
 #                           emulated Cortex-M3: build/coverage.svg
+#   make dual               vor_build_dc_forked on the two Cortex-M33 cores of
+#                           QEMU's mps2-an521 (examples/dual): each core's
+#                           instructions, the speedup over one core, and
+#                           whether the diagram is the one-core build's
 #   make field              a field of 50 sensors interpolated (Sibson) into a
 #                           320x240 RGB565 frame on the emulated Cortex-M3:
 #                           build/field.png, checked by tools/check_field.py
@@ -126,7 +130,7 @@ TEST_OBJS := $(TEST_SRCS:tests/%.c=$(B)/tests/%.o) $(B)/tests/predicate_vectors.
 PORT_OBJS := $(addprefix $(B)/port/,$(addsuffix .o,$(basename $(notdir $(PORT_SRCS)))))
 TEST_EXE := $(B)/vor-tests$(EXE)
 
-.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage field coverage-report pictures size bench-predicates bench-raster docs prove misra mutants clean
+.PHONY: all lib tests run-tests fault-tests run-fault-tests config-tests run-config-tests test demo coverage dual field coverage-report pictures size bench-predicates bench-raster docs prove misra mutants clean
 .DELETE_ON_ERROR:
 
 ifeq ($(PORT),host)
@@ -379,6 +383,14 @@ coverage: $(B)/vor
 	@echo "picture: build/coverage.svg"
 	@$(B)/vor draw --cells build/coverage-room.cells -o build/coverage-room.svg
 	@echo "picture: build/coverage-room.svg (the L-shaped hall)"
+
+# examples/dual on the two cores of the emulated mps2-an521 (PORT
+# cortex-m33): vor_build_dc_forked with core 1 building one half through
+# the fork/join hook of examples/dual/fork_join_an521.c; fails unless each
+# forked diagram is the one-core build's.
+dual:
+	@tools/install-deps.sh toolchains
+	+@$(MAKE) -s PORT=cortex-m33 run-example-dual
 
 # examples/field (50 sensors, their Sibson interpolant rendered into a
 # 320x240 RGB565 frame in 16-row bands, every pixel checked on the target)

@@ -7,7 +7,7 @@
 # configuration contract (an application and a library compiled with
 # different vor_config.h options get VOR_ERR_CONFIG) on every port, the
 # line and branch coverage of src/ by the host suites (gcov), the
-# command-line tool,
+# command-line tool, the two-core build on the dual Cortex-M33 board,
 # the same tests as firmware under QEMU for every target, the check
 # that no target's library calls libc, a soft-float routine or anything
 # else outside itself (also built with GCC and clang at -O1 to -Oz), GCC's
@@ -43,7 +43,7 @@ skipped=()
 only=${ONLY:-}
 unset ONLY LIST # each make below is given its own
 targets="cortex-m0 cortex-m3 cortex-m4f riscv32"
-suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference interpolate-reference fuzz coverage room field harness"
+suites="host host-sanitize host-faults host-config host-limb32 coverage-report cli cdt-reference power-reference interpolate-reference fuzz coverage room field harness dual"
 suites="$suites mutants freestanding analyzer misra prove linking programs memory-tables manifests layers consumers spdx docs"
 for target in $targets; do
     suites="$suites $target $target-faults $target-config"
@@ -304,6 +304,18 @@ coverage() {
         make -s PORT=cortex-m3 run-example-coverage
 }
 check coverage coverage
+
+# examples/dual on the two Cortex-M33 cores of the emulated mps2-an521:
+# vor_build_dc_forked with core 1 building one half through the example's
+# fork/join hook, at 100 to 20,000 sites; each forked diagram must be the
+# one-core build's byte for byte, and the hook must have been used (a
+# fork, a join, core 1 running the work). Instructions and the speedup
+# are printed, never checked.
+dual() {
+    make -s -j"$jobs" PORT=cortex-m33 build/cortex-m33/example-dual.elf &&
+        make -s PORT=cortex-m33 run-example-dual
+}
+check dual dual
 
 # Builds and runs examples/NAME (make target example-NAME) on the host
 # and on every emulated target, adding up the checks each run prints. A
@@ -595,7 +607,10 @@ programs() {
     local passed=0 failed=0 name port exe
     for name in $(ls bench/*.c | sed 's|bench/\(.*\)\.c|bench-\1|') \
         $(ls -d examples/*/ | sed 's|examples/\(.*\)/|example-\1|' | grep -v '^example-common$'); do
-        for port in host cortex-m3; do
+        ports="host cortex-m3"
+        # examples/dual runs on the two cores of mps2-an521 only (suite dual)
+        [ "$name" = example-dual ] && ports=cortex-m33
+        for port in $ports; do
             [ "$port" != host ] && [ "$name" = example-contours ] && continue
             exe=$([ "$port" = host ] || echo .elf)
             if make -s PORT="$port" "build/$port/$name$exe" 2>&1; then

@@ -21,7 +21,9 @@
  * On ARMv7-M cores with an MPU it also makes the __stack_guard_size bytes
  * at __stack_guard, just below the stack, inaccessible: a stack overflow
  * then faults ("fatal: MemManage sp=0x... outside the stack (overflow)")
- * instead of silently writing past the stack.
+ * instead of silently writing past the stack. On ARMv8-M Mainline
+ * (cortex-m33) the main stack limit register does it: MSPLIM =
+ * __stack_bottom, and an overflow is a UsageFault.
  *
  * Symbols the linker script must define (see port/cortex-m3/link.ld):
  *   __stack_top, __stack_bottom   initial SP (8-byte aligned) and stack end
@@ -235,7 +237,15 @@ void vor__cm_fault(uint32_t pc, uint32_t lr, uint32_t sp)
     vor_port_exit(VOR_PORT_FAULT_STATUS);
 }
 
-#if VOR_PORT_HAVE_CFSR
+#if VOR_PORT_HAVE_CFSR && defined(__ARM_ARCH_8M_MAIN__)
+/* ARMv8-M: the main stack limit register. A push below __stack_bottom
+ * raises a UsageFault (STKOF) instead of writing into the guard; the
+ * PMSAv8 MPU has no no-access region to make one. */
+static void guard_stack(void)
+{
+    __asm__ volatile("msr msplim, %0" : : "r"(__stack_bottom) : "memory");
+}
+#elif VOR_PORT_HAVE_CFSR
 /* MPU region 0: __stack_guard, no access, never execute; everything else
  * keeps the default memory map (PRIVDEFENA). Skipped without an MPU. */
 static void guard_stack(void)
