@@ -139,6 +139,18 @@ static void build(vor_power_t *pd, uint8_t *mem, const scene_t *s, uint32_t *dup
     CHECK(vor_power_build(pd, s->p, s->w, s->n, dup) == VOR_OK, "build");
 }
 
+/* Inserts the scene's sites one by one into pd (arena), in order: site i
+ * must get id i (the order decides the perturbation). */
+static void insert_scene(vor_power_t *pd, const scene_t *s)
+{
+    CHECK(vor_power_init(pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
+    for (uint32_t i = 0; i < s->n; i++) {
+        uint32_t id = 99;
+        CHECK((vor_power_insert(pd, s->p[i], s->w[i], &id) == VOR_OK) && (id == i), "insert %u",
+              i);
+    }
+}
+
 /* ------------------------------------------------------------------ */
 /* Brute force                                                         */
 
@@ -1584,15 +1596,13 @@ static void check_remove_junction(void)
     static const int64_t ws[8] = {11, 1, -1, -1, 0, -1, 1, 8};
     static vor_power_t pd;
     static scene_t model;
-    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
     model.n = 8;
     for (uint32_t i = 0; i < model.n; i++) {
-        uint32_t id = 99;
         model.p[i] = pts[i];
         model.w[i] = ws[i];
         model.dead[i] = false;
-        CHECK((vor_power_insert(&pd, pts[i], ws[i], &id) == VOR_OK) && (id == i), "insert %u", i);
     }
+    insert_scene(&pd, &model);
     CHECK(vor_power_remove(&pd, 6) == VOR_OK, "remove (1,2)");
     model.dead[6] = true;
     check_oracle(&pd, &model, NULL);
@@ -1646,12 +1656,7 @@ static void check_remove_flat_run(void)
     }
     model.p[21] = (vor_point_t){32, 5};
     model.w[21] = 878;
-    CHECK(vor_power_init(&pd, arena, sizeof arena, POWER_SITES) == VOR_OK, "init");
-    for (uint32_t i = 0; i < model.n; i++) {
-        uint32_t id = 99;
-        CHECK((vor_power_insert(&pd, model.p[i], model.w[i], &id) == VOR_OK) && (id == i),
-              "insert %u", i);
-    }
+    insert_scene(&pd, &model);
     remove_apex(&pd, &model, 0);
 }
 

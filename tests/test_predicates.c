@@ -1430,6 +1430,17 @@ static void wide_of_words(wide_t *r, const uint64_t *w, unsigned n)
     }
 }
 
+/* r = acc + x y for the words acc[0..3), x[0..2), y[0..2). */
+static void sum_of_product(wide_t *r, const uint64_t *acc, const uint64_t *x, const uint64_t *y)
+{
+    wide_t product, factor;
+    wide_of_words(&product, x, 2u);
+    wide_of_words(&factor, y, 2u);
+    wide_mul(&product, &product, &factor);
+    wide_of_words(r, acc, 3u);
+    wide_add(r, &product);
+}
+
 static uint64_t random_u64(test_rng_t *rng)
 {
     uint64_t high = test_rng_u32(rng);
@@ -1481,12 +1492,8 @@ static void check_word_edges(void)
         uint64_t yh = (n / 2u) % 2u;
         const uint64_t xw[2] = {x, xh};
         const uint64_t yw[2] = {y, yh};
-        wide_t product, factor, want;
-        wide_of_words(&product, xw, 2u);
-        wide_of_words(&factor, yw, 2u);
-        wide_mul(&product, &product, &factor);
-        wide_of_words(&want, acc.w, 3u);
-        wide_add(&want, &product);
+        wide_t want;
+        sum_of_product(&want, acc.w, xw, yw);
         vor__mw_u192_add_product(&acc, x, xh, y, yh);
         wide_of_words(&got, acc.w, 3u);
         if (!low_words_equal(&got, &want, 6u)) {
@@ -1499,12 +1506,8 @@ static void check_word_edges(void)
         vor__mw_u192_t acc = {{1u, 0u, 0u}};
         const uint64_t xw[2] = {1u, 1u};
         const uint64_t yw[2] = {UINT64_MAX, 0u};
-        wide_t product, factor, want, got;
-        wide_of_words(&product, xw, 2u);
-        wide_of_words(&factor, yw, 2u);
-        wide_mul(&product, &product, &factor);
-        wide_of_words(&want, acc.w, 3u);
-        wide_add(&want, &product);
+        wide_t want, got;
+        sum_of_product(&want, acc.w, xw, yw);
         vor__mw_u192_add_product(&acc, 1u, 1u, UINT64_MAX, 0u);
         wide_of_words(&got, acc.w, 3u);
         bad_product += low_words_equal(&got, &want, 6u) ? 0u : 1u;
